@@ -1,0 +1,50 @@
+#include "app/gui/language.h"
+
+#include <QCoreApplication>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QSettings>
+#include <QTranslator>
+
+namespace metrofit {
+
+QStringList languageChoices() {
+  return {QString::fromLatin1(kSystemLanguage), QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("pl")};
+}
+
+QString languageSetting() {
+  const QString value = QSettings().value(QString::fromLatin1(kLanguageSettingsKey)).toString();
+  return languageChoices().contains(value) ? value : QString::fromLatin1(kSystemLanguage);
+}
+
+void setLanguageSetting(const QString& choice) {
+  QSettings().setValue(QString::fromLatin1(kLanguageSettingsKey), choice);
+}
+
+QString effectiveLanguage(const QString& choice) {
+  if (choice != QLatin1String(kSystemLanguage)) return choice;
+  for (const QString& ui : QLocale::system().uiLanguages()) {
+    const QString language = ui.left(2).toLower();
+    if (languageChoices().contains(language)) return language;
+  }
+  return QStringLiteral("en");
+}
+
+bool installTranslators(QCoreApplication& app, const QString& language) {
+  if (language == QLatin1String("en")) return true;
+  auto* qt = new QTranslator(&app);
+  if (qt->load(QStringLiteral("qtbase_") + language, QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
+    QCoreApplication::installTranslator(qt);
+  } else {
+    delete qt;
+  }
+  auto* own = new QTranslator(&app);
+  if (!own->load(QStringLiteral(":/i18n/metrofit_") + language)) {
+    delete own;
+    return false;
+  }
+  QCoreApplication::installTranslator(own);
+  return true;
+}
+
+}  // namespace metrofit

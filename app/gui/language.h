@@ -1,0 +1,26 @@
+#pragma once
+// The user interface language: stored in QSettings under "ui/language" ("system", "en", "de",
+// "pl") and applied at start-up by installing the translator ":/i18n/metrofit_<lang>.qm".
+#include <QString>
+#include <QStringList>
+
+class QCoreApplication;
+
+namespace metrofit {
+
+inline constexpr const char* kLanguageSettingsKey = "ui/language";
+inline constexpr const char* kSystemLanguage = "system";
+
+/// The language codes a user can choose: "system" then "en", "de", "pl".
+QStringList languageChoices();
+/// The stored choice ("system" when none or unknown).
+QString languageSetting();
+void setLanguageSetting(const QString& choice);
+/// The language a choice means: "system" resolves to the system locale's language when Metrofit
+/// has a translation for it, else "en".
+QString effectiveLanguage(const QString& choice);
+/// Installs Metrofit's (and, when present, Qt's own) translators for a language. Returns true when
+/// Metrofit's translation was found (always true for "en", which needs none).
+bool installTranslators(QCoreApplication& app, const QString& language);
+
+}  // namespace metrofit

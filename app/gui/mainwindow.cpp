@@ -1,0 +1,355 @@
+#include "app/gui/mainwindow.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QStackedWidget>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <exception>
+
+#include <Eigen/Core>
+
+#include "app/gui/filechangedbar.h"
+#include "app/gui/matchingpage.h"
+#include "app/gui/overviewpage.h"
+#include "app/gui/preferencesdialog.h"
+#include "app/gui/projectnavigator.h"
+#include "app/gui/recentfiles.h"
+#include "app/gui/reportexporter.h"
+#include "app/gui/studypage.h"
+#include "app/gui/thermalpage.h"
+#include "metrofit/version.h"
+#include "widgets/document/demoproject.h"
+#include "widgets/document/projectdocument.h"
+#include "widgets/document/studyinfo.h"
+
+namespace metrofit {
+
+namespace {
+constexpr int kStatusTimeoutMs = 5000;
+const char* const kProjectFilter = QT_TRANSLATE_NOOP("metrofit::MainWindow", "Metrofit projects (*.metrofit)");
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      document_(new ProjectDocument(this)),
+      navigator_(new ProjectNavigator(document_, this)),
+      navigatorDock_(new QDockWidget(tr("Project"), this)),
+      pages_(new QStackedWidget(this)),
+      overview_(new OverviewPage(document_, pages_)),
+      thermal_(new ThermalPage(document_, pages_)),
+      matching_(new MatchingPage(document_, pages_)),
+      fileChangedBar_(new FileChangedBar(this)),
+      exporter_(new ReportExporter(this)) {
+  setObjectName(QStringLiteral("mainWindow"));
+  // Pages in the order of metrofit::Page.
+  pages_->addWidget(overview_);
+  pages_->addWidget(new StudyPage(document_, QString::fromLatin1(study::kSetup), pages_));
+  pages_->addWidget(matching_);
+  pages_->addWidget(new StudyPage(document_, QString::fromLatin1(study::kKinematics), pages_));
+  pages_->addWidget(thermal_);
+  pages_->addWidget(new StudyPage(document_, QString::fromLatin1(study::kDiagnosis), pages_));
+
+  auto* central = new QWidget(this);
+  auto* layout = new QVBoxLayout(central);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->setSpacing(0);
+  layout->addWidget(fileChangedBar_);
+  layout->addWidget(pages_, 1);
+  setCentralWidget(central);
+
+  navigatorDock_->setObjectName(QStringLiteral("navigatorDock"));
+  navigatorDock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetClosable);
+  navigatorDock_->setWidget(navigator_);
+  navigator_->setMinimumWidth(220);
+  addDockWidget(Qt::LeftDockWidgetArea, navigatorDock_);
+
+  createActions();
+  createMenus();
+
+  connect(navigator_, &ProjectNavigator::pageActivated, this, [this](Page page, const QString& dataset) {
+    if (page == Page::Thermal && !dataset.isEmpty()) thermal_->selectDataset(dataset);
+    if (page == Page::Matching && !dataset.isEmpty()) matching_->selectDataset(dataset);
+    showPage(page);
+  });
+  connect(document_, &ProjectDocument::changed, this, &MainWindow::updateTitle);
+  connect(document_, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(document_, &ProjectDocument::fileChangedOnDisk, this,
+          [this](const QString& file) { fileChangedBar_->showFor(file, document_->isModified()); });
+  connect(fileChangedBar_, &FileChangedBar::reloadRequested, this, &MainWindow::reloadFromDisk);
+  connect(exporter_, &ReportExporter::finished, this, [this](bool ok, const QString& message) {
+    exportAction_->setEnabled(true);
+    if (ok) {
+      statusBar()->showMessage(message, kStatusTimeoutMs);
+    } else {
+      statusBar()->clearMessage();
+      showError(tr("Cannot export the report"), message);
+    }
+  });
+
+  resize(1280, 800);
+  updateTitle();
+  showPage(Page::Overview);
+  statusBar()->showMessage(tr("Ready"), kStatusTimeoutMs);
+}
+
+MainWindow::~MainWindow() = default;
+
+QWidget* MainWindow::page(Page page) const { return pages_->widget(static_cast<int>(page)); }
+
+Page MainWindow::currentPage() const { return static_cast<Page>(pages_->currentIndex()); }
+
+void MainWindow::createActions() {
+  auto* group = new QActionGroup(this);
+  const QStringList titles = {tr("&Overview"),
+                              studyTitle(QString::fromLatin1(study::kSetup)),
+                              studyTitle(QString::fromLatin1(study::kMatching)),
+                              studyTitle(QString::fromLatin1(study::kKinematics)),
+                              studyTitle(QString::fromLatin1(study::kThermal)),
+                              studyTitle(QString::fromLatin1(study::kDiagnosis))};
+  for (int i = 0; i < kPageCount; ++i) {
+    QAction* action = group->addAction(titles[i]);
+    action->setCheckable(true);
+    action->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_1 + i)));
+    action->setObjectName(QStringLiteral("showPage%1").arg(i + 1));
+    connect(action, &QAction::triggered, this, [this, i] { showPage(static_cast<Page>(i)); });
+    pageActions_[static_cast<std::size_t>(i)] = action;
+  }
+}
+
+void MainWindow::createMenus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newProject);
+  file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::open);
+  file->addAction(tr("Open &demo project"), this, &MainWindow::openDemo);
+  recentMenu_ = file->addMenu(tr("&Recent files"));
+  connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::updateRecentMenu);
+  updateRecentMenu();
+  file->addSeparator();
+  saveAction_ = file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+  file->addAction(tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this, &MainWindow::saveAs);
+  exportAction_ = file->addAction(tr("&Export report PDF…"), this, &MainWindow::exportReport);
+  file->addSeparator();
+  QAction* quit = file->addAction(tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), this, &QWidget::close);
+  quit->setMenuRole(QAction::QuitRole);
+
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcuts(QKeySequence::Undo);
+  QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcuts(QKeySequence::Redo);
+  edit->addAction(undo);
+  edit->addAction(redo);
+  edit->addSeparator();
+  edit->addAction(tr("&Preferences…"), this, &MainWindow::preferences)->setMenuRole(QAction::PreferencesRole);
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  QAction* toggleNavigator = navigatorDock_->toggleViewAction();
+  toggleNavigator->setText(tr("Project &navigator"));
+  view->addAction(toggleNavigator);
+  view->addSeparator();
+  for (QAction* action : pageActions_) view->addAction(action);
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&About Metrofit"), this, &MainWindow::about)->setMenuRole(QAction::AboutRole);
+  help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt)->setMenuRole(QAction::AboutQtRole);
+}
+
+void MainWindow::showPage(Page page) {
+  const int index = static_cast<int>(page);
+  pages_->setCurrentIndex(index);
+  navigator_->selectPage(page);
+  pageActions_[static_cast<std::size_t>(index)]->setChecked(true);
+  const QString study = studyForPage(page);
+  statusBar()->showMessage(study.isEmpty() ? tr("Project overview") : studyTitle(study), kStatusTimeoutMs);
+}
+
+void MainWindow::updateTitle() {
+  setWindowTitle(tr("%1[*] — Metrofit").arg(document_->displayName()));
+  setWindowModified(document_->isModified());
+}
+
+void MainWindow::updateRecentMenu() {
+  recentMenu_->clear();
+  const QStringList files = recentFiles();
+  int number = 1;
+  for (const QString& path : files) {
+    QAction* action = recentMenu_->addAction(QStringLiteral("&%1 %2").arg(number++).arg(QFileInfo(path).fileName()));
+    action->setToolTip(QDir::toNativeSeparators(path));
+    action->setStatusTip(QDir::toNativeSeparators(path));
+    connect(action, &QAction::triggered, this, [this, path] {
+      if (maybeSave()) openProject(path);
+    });
+  }
+  if (files.isEmpty()) recentMenu_->addAction(tr("No recent files"))->setEnabled(false);
+  recentMenu_->addSeparator();
+  QAction* clear = recentMenu_->addAction(tr("&Clear list"), this, [] { clearRecentFiles(); });
+  clear->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::showError(const QString& title, const QString& message) {
+  QMessageBox::critical(this, title, message);
+}
+
+bool MainWindow::openProject(const QString& path, QString* error) {
+  try {
+    document_->load(path);
+  } catch (const std::exception& e) {
+    const QString message = QString::fromStdString(e.what());
+    if (error) {
+      *error = message;
+    } else {
+      showError(tr("Cannot open the project"), message);
+    }
+    return false;
+  }
+  fileChangedBar_->hide();
+  addRecentFile(document_->fileName());
+  statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(document_->fileName())), kStatusTimeoutMs);
+  return true;
+}
+
+bool MainWindow::maybeSave() {
+  if (!document_->isModified()) return true;
+  QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
+                  tr("The project \"%1\" has unsaved changes. Do you want to save them?").arg(document_->displayName()),
+                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+  box.setObjectName(QStringLiteral("unsavedChangesBox"));
+  box.button(QMessageBox::Save)->setText(tr("&Save"));
+  box.button(QMessageBox::Discard)->setText(tr("&Discard"));
+  box.button(QMessageBox::Cancel)->setText(tr("Cancel"));
+  box.setDefaultButton(QMessageBox::Save);
+  switch (box.exec()) {
+    case QMessageBox::Save:
+      return save();
+    case QMessageBox::Discard:
+      return true;
+    default:
+      return false;
+  }
+}
+
+void MainWindow::newProject() {
+  if (!maybeSave()) return;
+  document_->newProject();
+  fileChangedBar_->hide();
+  showPage(Page::Overview);
+  statusBar()->showMessage(tr("New project"), kStatusTimeoutMs);
+}
+
+void MainWindow::open() {
+  if (!maybeSave()) return;
+  const QString start = document_->fileName().isEmpty() ? QDir::homePath() : QFileInfo(document_->fileName()).path();
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open project"), start, tr(kProjectFilter));
+  if (!path.isEmpty()) openProject(path);
+}
+
+void MainWindow::openDemo() {
+  if (!maybeSave()) return;
+  const QString folder =
+      QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/demo");
+  QString path;
+  try {
+    path = extractDemoProject(folder);
+  } catch (const std::exception& e) {
+    showError(tr("Cannot open the demo project"), QString::fromStdString(e.what()));
+    return;
+  }
+  if (openProject(path)) {
+    statusBar()->showMessage(tr("Demo project copied to %1").arg(QDir::toNativeSeparators(folder)), kStatusTimeoutMs);
+  }
+}
+
+bool MainWindow::save() {
+  if (document_->fileName().isEmpty()) return saveAs();
+  try {
+    document_->save();
+  } catch (const std::exception& e) {
+    showError(tr("Cannot save the project"), QString::fromStdString(e.what()));
+    return false;
+  }
+  fileChangedBar_->hide();
+  statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->fileName())), kStatusTimeoutMs);
+  return true;
+}
+
+bool MainWindow::saveAs() {
+  const QString suggested = document_->fileName().isEmpty()
+                                ? QDir::home().filePath(document_->displayName() + QLatin1String(Project::kFileSuffix))
+                                : document_->fileName();
+  QString path = QFileDialog::getSaveFileName(this, tr("Save project as"), suggested, tr(kProjectFilter));
+  if (path.isEmpty()) return false;
+  if (!path.endsWith(QLatin1String(Project::kFileSuffix))) path += QLatin1String(Project::kFileSuffix);
+  try {
+    document_->saveAs(path);
+  } catch (const std::exception& e) {
+    showError(tr("Cannot save the project"), QString::fromStdString(e.what()));
+    return false;
+  }
+  fileChangedBar_->hide();
+  addRecentFile(document_->fileName());
+  statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->fileName())), kStatusTimeoutMs);
+  return true;
+}
+
+void MainWindow::exportReport() {
+  if (exporter_->isRunning()) return;
+  const QString base = document_->fileName().isEmpty() ? QDir::home().filePath(document_->displayName())
+                                                       : QFileInfo(document_->fileName()).path() + QLatin1Char('/') +
+                                                             QFileInfo(document_->fileName()).completeBaseName();
+  QString path = QFileDialog::getSaveFileName(this, tr("Export report"), base + QStringLiteral(".pdf"),
+                                              tr("PDF documents (*.pdf)"));
+  if (path.isEmpty()) return;
+  if (!path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)) path += QStringLiteral(".pdf");
+  if (exporter_->start(document_->project(), document_->fileName(), path)) {
+    exportAction_->setEnabled(false);
+    statusBar()->showMessage(tr("Writing the report…"));
+  }
+}
+
+void MainWindow::preferences() {
+  PreferencesDialog dialog(this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  if (dialog.apply()) statusBar()->showMessage(tr("The new language is applied at the next start."), kStatusTimeoutMs);
+}
+
+void MainWindow::about() {
+  QMessageBox::about(
+      this, tr("About Metrofit"),
+      tr("<h3>Metrofit %1</h3>"
+         "<p>A workbench for machining error compensation: setup-data correction, posture matching, kinematic "
+         "compensation with SPC, thermal error models, and the closed-loop diagnosis of what a model lacks.</p>"
+         "<p>Licensed under the GNU General Public License, version 3 or later (GPL-3.0-or-later).</p>"
+         "<p>Built with Qt %2 (Qt Widgets, Qt Charts), VTK, Eigen %3 and GLPK.</p>"
+         "<p>The real thermal log of the demo project comes from the CAIVIAC data set and is used under the MIT "
+         "licence.</p>")
+          .arg(QString::fromLatin1(kVersion), QString::fromLatin1(qVersion()),
+               QStringLiteral("%1.%2.%3").arg(EIGEN_WORLD_VERSION).arg(EIGEN_MAJOR_VERSION).arg(EIGEN_MINOR_VERSION)));
+}
+
+void MainWindow::reloadFromDisk() {
+  const QString file = document_->fileName();
+  if (!file.isEmpty()) openProject(file);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybeSave()) {
+    event->ignore();
+    return;
+  }
+  exporter_->waitForFinished();
+  event->accept();
+}
+
+}  // namespace metrofit

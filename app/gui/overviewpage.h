@@ -1,0 +1,42 @@
+#pragma once
+// The project overview: name and description (edited through the document's undo stack), the
+// project file and the table of datasets.
+#include <QWidget>
+#include <vector>
+
+#include "core/project/project.h"
+
+class QLabel;
+class QLineEdit;
+class QPlainTextEdit;
+
+namespace metrofit {
+class DatasetTable;
+class ProjectDocument;
+
+class OverviewPage : public QWidget {
+  Q_OBJECT
+ public:
+  explicit OverviewPage(ProjectDocument* document, QWidget* parent = nullptr);
+
+  QLineEdit* nameEdit() const { return name_; }
+  QPlainTextEdit* descriptionEdit() const { return description_; }
+  DatasetTable* datasetTable() const { return datasets_; }
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  void refresh();
+
+  ProjectDocument* document_;
+  QLineEdit* name_;
+  QPlainTextEdit* description_;
+  QLabel* file_;
+  DatasetTable* datasets_;
+  bool updating_ = false;
+  std::vector<DatasetRef> shownDatasets_;  ///< what the table shows (rebuilt only when it changes)
+  QString shownFile_;
+};
+
+}  // namespace metrofit

@@ -1,0 +1,52 @@
+#include "app/gui/preferencesdialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <algorithm>
+
+#include "app/gui/language.h"
+
+namespace metrofit {
+
+PreferencesDialog::PreferencesDialog(QWidget* parent) : QDialog(parent), language_(new QComboBox(this)) {
+  setWindowTitle(tr("Preferences"));
+  language_->setObjectName(QStringLiteral("languageCombo"));
+  // Language names are shown in their own language, so a user can find theirs in any UI language.
+  language_->addItem(tr("System"), QString::fromLatin1(kSystemLanguage));
+  language_->addItem(QStringLiteral("English"), QStringLiteral("en"));
+  language_->addItem(QStringLiteral("Deutsch"), QStringLiteral("de"));
+  language_->addItem(QStringLiteral("Polski"), QStringLiteral("pl"));
+  language_->setCurrentIndex(std::max(0, language_->findData(languageSetting())));
+
+  auto* note = new QLabel(tr("The language is applied at the next start of Metrofit."), this);
+  note->setWordWrap(true);
+
+  auto* form = new QFormLayout;
+  form->addRow(tr("&Language:"), language_);
+
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+  buttons->button(QDialogButtonBox::Ok)->setText(tr("OK"));
+  buttons->button(QDialogButtonBox::Cancel)->setText(tr("Cancel"));
+  connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(form);
+  layout->addWidget(note);
+  layout->addStretch(1);
+  layout->addWidget(buttons);
+}
+
+QString PreferencesDialog::language() const { return language_->currentData().toString(); }
+
+bool PreferencesDialog::apply() {
+  const bool changed = language() != languageSetting();
+  setLanguageSetting(language());
+  return changed;
+}
+
+}  // namespace metrofit

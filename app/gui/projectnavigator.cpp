@@ -1,0 +1,82 @@
+#include "app/gui/projectnavigator.h"
+
+#include <QSignalBlocker>
+
+#include "widgets/document/projectdocument.h"
+#include "widgets/document/studyinfo.h"
+
+namespace metrofit {
+
+ProjectNavigator::ProjectNavigator(ProjectDocument* document, QWidget* parent)
+    : QTreeWidget(parent), document_(document) {
+  setObjectName(QStringLiteral("projectNavigator"));
+  setHeaderHidden(true);
+  setColumnCount(1);
+  setRootIsDecorated(true);
+  setUniformRowHeights(true);
+  connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* current) {
+    if (!current) return;
+    emit pageActivated(static_cast<Page>(current->data(0, PageRole).toInt()), current->data(0, DatasetRole).toString());
+  });
+  connect(document_, &ProjectDocument::changed, this, &ProjectNavigator::refresh);
+  rebuild();
+}
+
+QTreeWidgetItem* ProjectNavigator::itemForPage(Page page) const {
+  if (page == Page::Overview) return root_;
+  for (int i = 0; i < root_->childCount(); ++i) {
+    QTreeWidgetItem* item = root_->child(i);
+    if (item->data(0, PageRole).toInt() == static_cast<int>(page)) return item;
+  }
+  return root_;
+}
+
+void ProjectNavigator::selectPage(Page page) {
+  QTreeWidgetItem* item = itemForPage(page);
+  // Keep a dataset child selected when it already belongs to the page.
+  QTreeWidgetItem* current = currentItem();
+  if (current && current->parent() == item) return;
+  const QSignalBlocker blocker(this);
+  setCurrentItem(item);
+}
+
+void ProjectNavigator::refresh() {
+  if (shown_ != document_->project().datasets) {
+    rebuild();
+    return;
+  }
+  root_->setText(0, document_->displayName());
+}
+
+void ProjectNavigator::rebuild() {
+  const Page page = currentItem() ? static_cast<Page>(currentItem()->data(0, PageRole).toInt()) : Page::Overview;
+  const QSignalBlocker blocker(this);
+  clear();
+  shown_ = document_->project().datasets;
+  root_ = new QTreeWidgetItem(this, {document_->displayName()});
+  root_->setData(0, PageRole, static_cast<int>(Page::Overview));
+  root_->setToolTip(0, tr("Project overview (Ctrl+1)"));
+  QFont bold = root_->font(0);
+  bold.setBold(true);
+  root_->setFont(0, bold);
+  int shortcut = 2;
+  for (const QString& study : studyKeys()) {
+    const Page studyPage = pageForStudy(study);
+    auto* item = new QTreeWidgetItem(root_, {studyTitle(study)});
+    item->setData(0, PageRole, static_cast<int>(studyPage));
+    item->setToolTip(0, tr("%1 (Ctrl+%2)").arg(studyTitle(study)).arg(shortcut++));
+    const QStringList kinds = studyDatasetKinds(study);
+    for (const DatasetRef& d : shown_) {
+      if (!kinds.contains(QString::fromStdString(d.kind))) continue;
+      auto* child = new QTreeWidgetItem(item, {QString::fromStdString(d.id)});
+      child->setData(0, PageRole, static_cast<int>(studyPage));
+      child->setData(0, DatasetRole, QString::fromStdString(d.id));
+      const QString description = QString::fromStdString(d.description);
+      child->setToolTip(0, description.isEmpty() ? QString::fromStdString(d.path) : description);
+    }
+  }
+  expandAll();
+  setCurrentItem(itemForPage(page));
+}
+
+}  // namespace metrofit

@@ -1,0 +1,38 @@
+#pragma once
+// The project navigator: the project as root, its studies below it and each study's datasets as
+// children. Selecting an item asks for its page (and dataset).
+#include <QTreeWidget>
+#include <vector>
+
+#include "app/gui/pageid.h"
+#include "core/project/project.h"
+
+namespace metrofit {
+class ProjectDocument;
+
+class ProjectNavigator : public QTreeWidget {
+  Q_OBJECT
+ public:
+  enum Role { PageRole = Qt::UserRole + 1, DatasetRole };
+
+  explicit ProjectNavigator(ProjectDocument* document, QWidget* parent = nullptr);
+
+  /// The item of a page (the root for the overview).
+  QTreeWidgetItem* itemForPage(Page page) const;
+  /// Selects a page's item without emitting pageActivated.
+  void selectPage(Page page);
+
+ signals:
+  /// An item was selected: its page and, for a dataset item, the dataset id (else empty).
+  void pageActivated(metrofit::Page page, const QString& datasetId);
+
+ private:
+  void refresh();
+  void rebuild();
+
+  ProjectDocument* document_;
+  QTreeWidgetItem* root_ = nullptr;
+  std::vector<DatasetRef> shown_;
+};
+
+}  // namespace metrofit

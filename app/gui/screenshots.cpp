@@ -1,0 +1,130 @@
+#include "app/gui/screenshots.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QFileInfo>
+#include <QImage>
+#include <QPixmap>
+#include <QTemporaryDir>
+#include <QTextStream>
+#include <QTimer>
+#include <QWindow>
+#include <exception>
+#include <functional>
+#include <vector>
+
+#include "app/gui/mainwindow.h"
+#include "app/gui/matchingpage.h"
+#include "app/gui/thermalpage.h"
+#include "core/project/project.h"
+#include "widgets/document/demoproject.h"
+#include "widgets/document/projectdocument.h"
+
+namespace metrofit {
+
+namespace {
+
+constexpr int kWidth = 1280;
+constexpr int kHeight = 800;
+/// Time for a view to lay out and render (the first VTK frame takes about 0.4 s).
+constexpr int kSettleMs = 700;
+
+void settle(int ms) {
+  QEventLoop loop;
+  QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+  loop.exec();
+}
+
+bool waitExposed(QWidget& window, int timeoutMs) {
+  QElapsedTimer timer;
+  timer.start();
+  while (!(window.windowHandle() && window.windowHandle()->isExposed())) {
+    if (timer.elapsed() > timeoutMs) return false;
+    settle(20);
+  }
+  return true;
+}
+
+struct View {
+  QString name;
+  std::function<void(MainWindow&)> show;
+};
+
+}  // namespace
+
+bool environmentHasXServer() {
+  const QString platform = qEnvironmentVariable("QT_QPA_PLATFORM");
+  const bool xcb = platform.isEmpty() || platform == QLatin1String("xcb") || platform.startsWith(QLatin1String("xcb:"));
+  return xcb && !qEnvironmentVariableIsEmpty("DISPLAY");
+}
+
+int runScreenshots(const QString& outDir, QTextStream& err) {
+  const QString dir = QDir(outDir).absolutePath();
+  if (!QDir().mkpath(dir)) {
+    err << "metrofit: cannot create the screenshot folder " << QDir::toNativeSeparators(dir) << Qt::endl;
+    return 1;
+  }
+  QTemporaryDir work;
+  if (!work.isValid()) {
+    err << "metrofit: cannot create a temporary folder for the demo project: " << work.errorString() << Qt::endl;
+    return 1;
+  }
+  QString projectPath;
+  try {
+    projectPath = extractDemoProject(work.path());
+  } catch (const std::exception& e) {
+    err << "metrofit: " << e.what() << Qt::endl;
+    return 1;
+  }
+
+  MainWindow window;
+  QString error;
+  if (!window.openProject(projectPath, &error)) {
+    err << "metrofit: cannot open the demo project: " << error << Qt::endl;
+    return 1;
+  }
+  window.resize(kWidth, kHeight);
+  window.show();
+  if (!waitExposed(window, 10000)) {
+    err << "metrofit: the window was not shown by the X server" << Qt::endl;
+    return 1;
+  }
+
+  std::vector<View> views = {
+      {QStringLiteral("overview"), [](MainWindow& w) { w.showPage(Page::Overview); }},
+      {QStringLiteral("thermal-trend"), [](MainWindow& w) { w.showPage(Page::Thermal); }},
+      {QStringLiteral("matching-3d"), [](MainWindow& w) { w.showPage(Page::Matching); }},
+      {QStringLiteral("setup-correction"), [](MainWindow& w) { w.showPage(Page::Setup); }},
+      {QStringLiteral("kinematics-spc"), [](MainWindow& w) { w.showPage(Page::Kinematics); }},
+      {QStringLiteral("diagnosis"), [](MainWindow& w) { w.showPage(Page::Diagnosis); }},
+  };
+  // Every further thermal log of the project (the demo has a real one besides the simulated one).
+  const ThermalPage* thermal = window.thermalPage();
+  const QString firstLog = thermal->currentDataset();
+  for (const DatasetRef& d : window.document()->project().datasets) {
+    const QString id = QString::fromStdString(d.id);
+    if (d.kind != dataset_kind::kThermalLog || id == firstLog) continue;
+    views.push_back({QStringLiteral("thermal-trend-") + id, [id](MainWindow& w) {
+                       w.showPage(Page::Thermal);
+                       w.thermalPage()->selectDataset(id);
+                     }});
+  }
+
+  int number = 1;
+  for (const View& view : views) {
+    view.show(window);
+    settle(kSettleMs);
+    const QImage image = window.grab().toImage();
+    const QString file = dir + QStringLiteral("/%1-%2.png").arg(number++, 2, 10, QLatin1Char('0')).arg(view.name);
+    if (image.isNull() || !image.save(file, "PNG")) {
+      err << "metrofit: cannot write the screenshot " << QDir::toNativeSeparators(file) << Qt::endl;
+      return 1;
+    }
+  }
+  window.thermalPage()->selectDataset(firstLog);
+  err << "metrofit: " << views.size() << " screenshots written to " << QDir::toNativeSeparators(dir) << Qt::endl;
+  return 0;
+}
+
+}  // namespace metrofit

@@ -1,0 +1,381 @@
+#include "core/io/csv.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <unordered_set>
+
+#include "core/common/error.h"
+#include "core/io/file_io.h"
+
+namespace metrofit {
+namespace {
+
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
+
+std::string_view trimBlanks(std::string_view s) {
+  while (!s.empty() && isBlank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && isBlank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::string printable(std::string_view s) {
+  std::string out;
+  for (char c : s.substr(0, 40)) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", u);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  if (s.size() > 40) out += "...";
+  return out;
+}
+
+/// Length of the valid UTF-8 sequence starting at s[i], or 0 if invalid.
+std::size_t utf8Length(std::string_view s, std::size_t i) {
+  const auto c = static_cast<unsigned char>(s[i]);
+  std::size_t n;
+  if (c < 0x80) return 1;
+  if (c >= 0xC2 && c <= 0xDF) n = 2;
+  else if (c >= 0xE0 && c <= 0xEF) n = 3;
+  else if (c >= 0xF0 && c <= 0xF4) n = 4;
+  else return 0;
+  if (i + n > s.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    const auto cc = static_cast<unsigned char>(s[i + k]);
+    if ((cc & 0xC0) != 0x80) return 0;
+  }
+  const auto c1 = static_cast<unsigned char>(s[i + 1]);
+  if (c == 0xE0 && c1 < 0xA0) return 0;  // overlong
+  if (c == 0xED && c1 > 0x9F) return 0;  // surrogates
+  if (c == 0xF0 && c1 < 0x90) return 0;  // overlong
+  if (c == 0xF4 && c1 > 0x8F) return 0;  // > U+10FFFF
+  return n;
+}
+
+/// A record as split by the tokenizer: fields, the line it starts on, the line/column of each field.
+struct Record {
+  std::vector<std::string> fields;
+  long line = 0;
+  bool isComment = false;
+  bool isBlank = false;
+};
+
+class Tokenizer {
+ public:
+  Tokenizer(std::string_view text, const std::string& source) : t_(text), source_(source) {}
+
+  bool done() const { return pos_ >= t_.size(); }
+
+  Record next() {
+    Record rec;
+    rec.line = line_;
+    std::string field;
+    bool quoted = false;       // this field started with a quote
+    bool afterQuote = false;   // the closing quote of this field was seen
+    bool anyContent = false;   // anything but blanks on this record
+    long col = 1;              // 1-based field index
+    long quoteLine = line_;
+    auto fail = [&](const std::string& what) -> void {
+      throw ParseError(ErrorContext{source_, line_, col, {}}, what);
+    };
+    auto endField = [&]() {
+      if (quoted) {
+        rec.fields.push_back(std::move(field));
+      } else {
+        rec.fields.emplace_back(trimBlanks(field));
+      }
+      field.clear();
+      quoted = false;
+      afterQuote = false;
+      ++col;
+    };
+    bool inQuotes = false;
+    while (pos_ < t_.size()) {
+      const char c = t_[pos_];
+      const auto u = static_cast<unsigned char>(c);
+      if (u == 0) fail("binary data (a NUL byte); this is not a CSV text file");
+      if (u >= 0x80) {
+        const std::size_t n = utf8Length(t_, pos_);
+        if (n == 0) {
+          char buf[64];
+          std::snprintf(buf, sizeof buf, "invalid UTF-8 byte 0x%02X; save the file as UTF-8", u);
+          fail(buf);
+        }
+        if (afterQuote) fail("text after the closing quote of a quoted field");
+        field.append(t_.substr(pos_, n));
+        anyContent = true;
+        pos_ += n;
+        continue;
+      }
+      if (inQuotes) {
+        if (c == '"') {
+          if (pos_ + 1 < t_.size() && t_[pos_ + 1] == '"') {
+            field += '"';
+            pos_ += 2;
+            continue;
+          }
+          inQuotes = false;
+          afterQuote = true;
+          ++pos_;
+          continue;
+        }
+        if (c == '\n') ++line_;
+        if (c != '\r' || pos_ + 1 >= t_.size() || t_[pos_ + 1] != '\n') field += c;
+        ++pos_;
+        if (field.size() > CsvTable::kMaxFieldBytes) fail(tooLong());
+        continue;
+      }
+      if (c == '\r' && pos_ + 1 < t_.size() && t_[pos_ + 1] == '\n') {
+        ++pos_;
+        continue;
+      }
+      if (c == '\n' || c == '\r') {
+        ++pos_;
+        ++line_;
+        break;
+      }
+      if (!anyContent && rec.fields.empty() && field.empty() && c == '#' && !seenHeader_) {
+        // Comment line: up to the end of the line.
+        const std::size_t end = t_.find('\n', pos_);
+        std::string_view body = t_.substr(pos_ + 1, (end == std::string_view::npos ? t_.size() : end) - pos_ - 1);
+        if (!body.empty() && body.back() == '\r') body.remove_suffix(1);
+        for (std::size_t i = 0; i < body.size(); ++i) {
+          const auto b = static_cast<unsigned char>(body[i]);
+          if (b == 0) fail("binary data (a NUL byte); this is not a CSV text file");
+          if (b >= 0x80) {
+            const std::size_t n = utf8Length(body, i);
+            if (n == 0) fail("invalid UTF-8 in a comment line; save the file as UTF-8");
+            i += n - 1;
+          }
+        }
+        rec.isComment = true;
+        rec.fields.emplace_back(body);
+        pos_ = end == std::string_view::npos ? t_.size() : end + 1;
+        ++line_;
+        return rec;
+      }
+      if (c == ',') {
+        endField();
+        anyContent = true;
+        ++pos_;
+        continue;
+      }
+      if (c == '"') {
+        if (afterQuote) fail("text after the closing quote of a quoted field");
+        if (!trimBlanks(field).empty()) fail("a quote inside an unquoted field; quote the whole field and double inner quotes");
+        field.clear();
+        quoted = true;
+        inQuotes = true;
+        quoteLine = line_;
+        anyContent = true;
+        ++pos_;
+        continue;
+      }
+      if (afterQuote) {
+        if (isBlank(c)) {
+          ++pos_;
+          continue;
+        }
+        fail("text after the closing quote of a quoted field");
+      }
+      if (!isBlank(c)) anyContent = true;
+      field += c;
+      if (field.size() > CsvTable::kMaxFieldBytes) fail(tooLong());
+      ++pos_;
+    }
+    if (inQuotes) {
+      throw ParseError(ErrorContext{source_, quoteLine, col, {}}, "unterminated quoted field (the closing quote is missing)");
+    }
+    if (!anyContent && rec.fields.empty()) {
+      rec.isBlank = true;
+      return rec;
+    }
+    endField();
+    return rec;
+  }
+
+  void headerSeen() { seenHeader_ = true; }
+
+ private:
+  static std::string tooLong() {
+    return "field longer than " + std::to_string(CsvTable::kMaxFieldBytes / 1024) + " KiB; is this a CSV file?";
+  }
+  std::string_view t_;
+  const std::string& source_;
+  std::size_t pos_ = 0;
+  long line_ = 1;
+  bool seenHeader_ = false;
+};
+
+}  // namespace
+
+bool parseNumber(std::string_view text, double* out) {
+  text = trimBlanks(text);
+  if (text.empty()) return false;
+  if (text.front() == '+') text.remove_prefix(1);
+  if (text.empty()) return false;
+  double v = 0.0;
+  const auto* first = text.data();
+  const auto* last = text.data() + text.size();
+  const auto res = std::from_chars(first, last, v, std::chars_format::general);
+  if (res.ec != std::errc() || res.ptr != last) return false;
+  if (!std::isfinite(v)) return false;
+  *out = v;
+  return true;
+}
+
+CsvTable parseCsv(std::string_view text, const std::string& source) {
+  CsvTable table;
+  table.source_ = source;
+  if (text.size() >= 2 && ((static_cast<unsigned char>(text[0]) == 0xFF && static_cast<unsigned char>(text[1]) == 0xFE) ||
+                           (static_cast<unsigned char>(text[0]) == 0xFE && static_cast<unsigned char>(text[1]) == 0xFF))) {
+    throw ParseError(ErrorContext{source, 1, 0, {}}, "the file is UTF-16 encoded; save it as UTF-8 (comma separated)");
+  }
+  if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  if (trimBlanks(text).empty() || text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    throw ParseError(ErrorContext{source, 0, 0, {}}, "the file is empty (expected a header row and data rows)");
+  }
+
+  Tokenizer tok(text, source);
+  bool haveHeader = false;
+  long headerLine = 0;
+  while (!tok.done()) {
+    Record rec = tok.next();
+    if (rec.isBlank) continue;
+    if (rec.isComment) {
+      table.comments_.push_back(std::move(rec.fields.front()));
+      continue;
+    }
+    if (!haveHeader) {
+      haveHeader = true;
+      headerLine = rec.line;
+      tok.headerSeen();
+      std::unordered_set<std::string> seen;
+      for (std::size_t i = 0; i < rec.fields.size(); ++i) {
+        const std::string& name = rec.fields[i];
+        ErrorContext at{source, rec.line, static_cast<long>(i + 1), {}};
+        if (name.empty()) throw ParseError(at, "empty column name in the header row");
+        if (!seen.insert(name).second) throw ParseError(at, "duplicate column name '" + printable(name) + "' in the header row");
+      }
+      if (rec.fields.size() == 1 && rec.fields[0].find(';') != std::string::npos) {
+        throw ParseError(ErrorContext{source, rec.line, 1, {}},
+                         "the header is separated by ';'; Metrofit reads comma-separated CSV with '.' as the decimal point");
+      }
+      if (rec.fields.size() == 1 && rec.fields[0].find('\t') != std::string::npos) {
+        throw ParseError(ErrorContext{source, rec.line, 1, {}},
+                         "the header is separated by tabs; Metrofit reads comma-separated CSV");
+      }
+      table.header_ = std::move(rec.fields);
+      continue;
+    }
+    if (rec.fields.size() != table.header_.size()) {
+      const long col = static_cast<long>(std::min(rec.fields.size(), table.header_.size()) + 1);
+      throw ParseError(ErrorContext{source, rec.line, col, {}},
+                       "row has " + std::to_string(rec.fields.size()) + " fields, the header (line " +
+                           std::to_string(headerLine) + ") has " + std::to_string(table.header_.size()));
+    }
+    table.rows_.push_back(std::move(rec.fields));
+    table.lines_.push_back(rec.line);
+  }
+  if (!haveHeader) {
+    throw ParseError(ErrorContext{source, 0, 0, {}}, "no header row (the file has only comments or blank lines)");
+  }
+  return table;
+}
+
+CsvTable readCsvFile(const std::string& path) { return parseCsv(readFile(path), path); }
+
+int CsvTable::columnIndex(std::string_view name) const {
+  for (std::size_t i = 0; i < header_.size(); ++i) {
+    if (header_[i] == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::size_t CsvTable::requireColumn(std::string_view name) const {
+  const int i = columnIndex(name);
+  if (i >= 0) return static_cast<std::size_t>(i);
+  std::string have;
+  for (const auto& h : header_) have += (have.empty() ? "" : ", ") + h;
+  throw ValidationError(ErrorContext{source_, 0, 0, std::string(name)}, "missing column (the file has: " + have + ")");
+}
+
+void CsvTable::requireRows(std::size_t n) const {
+  if (rows_.size() < n) {
+    throw ValidationError(ErrorContext{source_, 0, 0, {}},
+                          "has " + std::to_string(rows_.size()) + " data row" + (rows_.size() == 1 ? "" : "s") +
+                              ", at least " + std::to_string(n) + " needed");
+  }
+}
+
+void CsvTable::failAt(std::size_t row, std::size_t col, const std::string& what) const {
+  throw ParseError(ErrorContext{source_, lines_[row], static_cast<long>(col + 1), header_[col]}, what);
+}
+
+double CsvTable::number(std::size_t row, std::size_t col) const {
+  double v = 0.0;
+  const std::string& s = rows_[row][col];
+  if (parseNumber(s, &v)) return v;
+  if (trimBlanks(s).empty()) failAt(row, col, "empty value where a number is expected");
+  std::string low;
+  for (char c : trimBlanks(s)) low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (low == "nan" || low == "-nan" || low == "inf" || low == "-inf" || low == "+inf" || low == "infinity" || low == "-infinity") {
+    failAt(row, col, "'" + printable(s) + "' is not a finite number");
+  }
+  if (s.find(',') != std::string::npos || (s.find('.') == std::string::npos && s.find(';') != std::string::npos)) {
+    failAt(row, col, "'" + printable(s) + "' is not a number (use '.' as the decimal point)");
+  }
+  failAt(row, col, "'" + printable(s) + "' is not a number");
+}
+
+std::vector<double> CsvTable::numericColumn(std::size_t col) const {
+  std::vector<double> out(rows_.size());
+  for (std::size_t r = 0; r < rows_.size(); ++r) out[r] = number(r, col);
+  return out;
+}
+
+void CsvWriter::comment(std::string_view text) {
+  text_ += '#';
+  if (!text.empty() && text.front() != ' ') text_ += ' ';
+  text_.append(text);
+  text_ += '\n';
+}
+
+void CsvWriter::row(const std::vector<std::string>& fields) {
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i) text_ += ',';
+    const std::string& f = fields[i];
+    const bool needsQuotes = f.find_first_of(",\"\r\n") != std::string::npos || (!f.empty() && (isBlank(f.front()) || isBlank(f.back()))) ||
+                             (i == 0 && !f.empty() && f.front() == '#');
+    if (!needsQuotes) {
+      text_ += f;
+      continue;
+    }
+    text_ += '"';
+    for (char c : f) {
+      if (c == '"') text_ += '"';
+      text_ += c;
+    }
+    text_ += '"';
+  }
+  text_ += '\n';
+}
+
+std::string CsvWriter::formatNumber(double value, int precision) {
+  char buf[64];
+  if (precision <= 0) {
+    const auto res = std::to_chars(buf, buf + sizeof buf, value);
+    return std::string(buf, res.ptr);
+  }
+  const auto res = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::general, precision);
+  return std::string(buf, res.ptr);
+}
+
+}  // namespace metrofit

@@ -1,0 +1,25 @@
+#pragma once
+// Whole-file reads and atomic writes. Every output Metrofit writes goes through writeFileAtomic:
+// a temporary file in the same folder, written, flushed and fsync'ed, then renamed over the
+// target, so a crash or a kill at any point leaves either the old file or the new one, never a
+// half-written one (CONTRACT.md, STYLE.md §7).
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace metrofit {
+
+/// Reads a whole file; FileError naming the path when it is missing, a folder, unreadable or
+/// larger than maxBytes.
+std::string readFile(const std::string& path, std::size_t maxBytes = std::size_t{1} << 30);
+
+/// Writes `content` to `path` atomically (see above); FileError on failure (the target is untouched
+/// and no temporary file is left behind).
+void writeFileAtomic(const std::string& path, std::string_view content);
+
+/// The folder part of a path ("." when there is none).
+std::string parentFolder(const std::string& path);
+/// Joins a folder and a relative path; absolute `rel` is returned unchanged.
+std::string joinPath(const std::string& folder, const std::string& rel);
+
+}  // namespace metrofit

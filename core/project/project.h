@@ -1,0 +1,83 @@
+#pragma once
+// The Metrofit project file (.metrofit): versioned JSON holding the studies' models, references to
+// (or embedded) data, method settings and the last results. The GUI document wraps it with an undo
+// stack; the CLI and the report read the same file.
+//
+// {
+//   "format": "metrofit-project", "version": 1,
+//   "name": "Demo cell", "description": "...",
+//   "datasets": [ {"id": "thermal", "kind": "thermal_log", "path": "data/thermal_demo.csv",
+//                  "description": "..."} ],
+//   "studies": { "setup": {...}, "matching": {...}, "kinematics": {...}, "thermal": {...},
+//                "diagnosis": {...} },
+//   "results": { ... }
+// }
+// Dataset paths are relative to the project file's folder (absolute paths are kept as they are).
+// Study objects are owned by the method that uses them; unknown keys are preserved on save.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace metrofit {
+
+/// Kinds of dataset a project may reference.
+namespace dataset_kind {
+inline constexpr const char* kThermalLog = "thermal_log";
+inline constexpr const char* kProbePoints = "probe_points";
+inline constexpr const char* kCircularTest = "circular_test";
+inline constexpr const char* kCmmReport = "cmm_report";
+inline constexpr const char* kSetupModel = "setup_model";
+}  // namespace dataset_kind
+
+/// The studies of a project, in navigator order.
+namespace study {
+inline constexpr const char* kSetup = "setup";
+inline constexpr const char* kMatching = "matching";
+inline constexpr const char* kKinematics = "kinematics";
+inline constexpr const char* kThermal = "thermal";
+inline constexpr const char* kDiagnosis = "diagnosis";
+inline constexpr const char* kAll[] = {kSetup, kMatching, kKinematics, kThermal, kDiagnosis};
+}  // namespace study
+
+struct DatasetRef {
+  std::string id;           ///< unique within the project
+  std::string kind;         ///< one of dataset_kind
+  std::string path;         ///< relative to the project folder, or absolute
+  std::string description;
+  std::string licence;      ///< e.g. "MIT (CAIVIAC), see LICENSE-MIT.txt" for real data
+  bool operator==(const DatasetRef&) const = default;
+};
+
+class Project {
+ public:
+  static constexpr int kFormatVersion = 1;
+  static constexpr const char* kFormatName = "metrofit-project";
+  static constexpr const char* kFileSuffix = ".metrofit";
+
+  std::string name = "Untitled";
+  std::string description;
+  std::vector<DatasetRef> datasets;
+  nlohmann::json studies = nlohmann::json::object();   ///< study name -> settings object
+  nlohmann::json results = nlohmann::json::object();   ///< study name -> last results
+
+  /// The dataset with this id, or nullptr.
+  const DatasetRef* dataset(const std::string& id) const;
+  /// The first dataset of a kind, or nullptr.
+  const DatasetRef* firstOfKind(const std::string& kind) const;
+
+  nlohmann::json toJson() const;
+  /// Validates format, version, field types, unique dataset ids. `source` names the file in errors.
+  static Project fromJson(const nlohmann::json& j, const std::string& source);
+
+  bool operator==(const Project&) const = default;
+};
+
+/// Reads and validates a project file (FileError / ParseError / ValidationError on bad input).
+Project loadProject(const std::string& path);
+/// Writes the project atomically (temporary file in the same folder, fsync, rename).
+void saveProject(const Project& project, const std::string& path);
+/// Resolves a dataset path against the folder of the project file.
+std::string resolveDatasetPath(const std::string& projectPath, const DatasetRef& dataset);
+
+}  // namespace metrofit

@@ -1,0 +1,41 @@
+#pragma once
+// A thermal log (CONTRACT.md "Thermal log"): a time column (time_s, time_min or time_h), then
+// sensor columns and the target column(s). Time is kept in minutes internally.
+#include <string>
+#include <vector>
+
+namespace metrofit {
+class CsvTable;
+
+struct ThermalChannel {
+  std::string name;            ///< column name as in the file, e.g. "T1", "disp_z_um"
+  std::string unit;            ///< derived from the name suffix: "um", "mm", "degC", "rpm", ... or ""
+  std::vector<double> values;  ///< one per row
+};
+
+/// What a channel measures, guessed from its name and unit (for chart axes and defaults).
+enum class ChannelKind { Temperature, Displacement, Strain, Speed, Other };
+ChannelKind channelKind(const ThermalChannel& c);
+
+struct ThermalLog {
+  std::string source;                 ///< file name for messages
+  std::string timeColumn;             ///< "time_s", "time_min" or "time_h" as in the file
+  std::vector<double> timeMin;        ///< time in minutes, strictly increasing
+  std::vector<ThermalChannel> channels;
+
+  std::size_t rows() const { return timeMin.size(); }
+  /// Index of a channel by name, or -1.
+  int indexOf(const std::string& name) const;
+  /// The channel or a ValidationError naming the log and the missing column.
+  const ThermalChannel& channel(const std::string& name) const;
+};
+
+/// Reads a thermal log from a parsed CSV table: finds the time column, requires strictly
+/// increasing time, at least `minRows` rows, finite numbers everywhere (errors name file, line, column).
+ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows = 3);
+/// Reads and validates a thermal log file.
+ThermalLog readThermalLog(const std::string& path, std::size_t minRows = 3);
+/// Serialises a thermal log as CSV (time column as in `timeColumn`, 6 significant decimals).
+std::string thermalLogToCsv(const ThermalLog& log);
+
+}  // namespace metrofit

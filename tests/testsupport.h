@@ -1,0 +1,75 @@
+#pragma once
+// Shared helpers for Metrofit tests: temporary folders, file helpers, fuzzy comparison, and the
+// paths ctest passes in (METROFIT_SOURCE_DIR, METROFIT_BIN_DIR, METROFIT_TEST_OUT).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace metrofit::test {
+
+inline std::string env(const char* name, const char* fallback = "") {
+  const char* v = std::getenv(name);
+  return v ? v : fallback;
+}
+inline std::filesystem::path sourceDir() { return env("METROFIT_SOURCE_DIR", "."); }
+inline std::filesystem::path binDir() { return env("METROFIT_BIN_DIR", "bin"); }
+inline std::filesystem::path outDir() {
+  std::filesystem::path p = env("METROFIT_TEST_OUT", "test-output");
+  std::filesystem::create_directories(p);
+  return p;
+}
+
+/// A fresh temporary folder, removed with its content when the object dies.
+class TempDir {
+ public:
+  TempDir() {
+    std::string tmpl = (std::filesystem::temp_directory_path() / "metrofit-test-XXXXXX").string();
+    if (!::mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
+    path_ = tmpl;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline void writeText(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  f << text;
+}
+
+inline std::string readText(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+/// |a - b| <= abs + rel * max(|a|, |b|)
+inline ::testing::AssertionResult near(double a, double b, double abs, double rel = 0.0) {
+  const double tol = abs + rel * std::max(std::abs(a), std::abs(b));
+  if (std::abs(a - b) <= tol) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << a << " vs " << b << " differ by " << std::abs(a - b) << " > " << tol;
+}
+
+/// Files in a folder (names only), for "no file left behind" checks.
+inline std::vector<std::string> listFolder(const std::filesystem::path& dir) {
+  std::vector<std::string> out;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) out.push_back(e.path().filename().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace metrofit::test

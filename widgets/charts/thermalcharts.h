@@ -1,0 +1,62 @@
+#pragma once
+// Construction of the thermal trend chart without a widget, shared by ThermalTrendView (on screen)
+// and the PDF report (rendered as vector graphics through a QGraphicsScene).
+//
+// Layout of the chart:
+//  * x: time in hours when the log spans more than 3 h, else in minutes ("time (h)" / "time (min)");
+//  * left y: temperatures, "temperature (°C)";
+//  * right y: one axis per other kind of channel and unit, e.g. "displacement (µm)", "speed (rpm)";
+//    when no temperature is shown, the first of those goes on the left;
+//  * background bands: heating and cooling phases (trendanalysis.h), one legend entry each;
+//  * every series decimated to at most ThermalChartOptions::maxPointsPerSeries points (min/max per
+//    time bucket), no animations.
+// Qt Charts stays out of this header: QChart is only forward-declared.
+#include <QColor>
+#include <QString>
+#include <QStringList>
+
+#include <string>
+
+#include "widgets/charts/trendanalysis.h"
+
+QT_BEGIN_NAMESPACE
+class QChart;
+QT_END_NAMESPACE
+
+namespace metrofit {
+struct ThermalLog;
+struct ThermalChannel;
+
+struct ThermalChartOptions {
+  int maxPointsPerSeries = 2000;  ///< decimation limit per series (>= 4)
+  bool shadePhases = true;        ///< draw heating / cooling bands
+  bool channelLegend = true;      ///< legend entries for the channels (the bands always have one)
+  QString title;                  ///< chart title, none when empty
+};
+
+/// Channels shown by default: every channel, but at most the first 8 temperatures.
+QStringList defaultThermalChannels(const ThermalLog& log);
+
+/// Colour of the log's channel number `channelIndex`: temperatures take a palette of light-to-read
+/// hues in their order among temperatures, other channels a second, darker palette in their order
+/// among those (stable, whatever else is shown).
+QColor thermalChannelColor(const ThermalLog& log, int channelIndex);
+
+/// Fill colour of the background band of a phase (opaque, light).
+QColor thermalPhaseColor(ThermalPhaseKind kind);
+
+/// Unit of a channel as printed: "um" -> "µm", "degC" -> "°C", "mm" -> "mm", "" -> "".
+QString displayUnit(const std::string& unit);
+
+/// Axis title of a channel: "temperature (°C)", "displacement (µm)", "speed (rpm)", ...
+QString channelAxisTitle(const ThermalChannel& channel);
+
+/// True when the time axis is in hours (the log spans more than 180 min).
+bool thermalTimeAxisInHours(const ThermalLog& log);
+
+/// A new chart (owned by the caller) of the named channels of `log`, in the log's channel order;
+/// unknown names are ignored. Without a QApplication this must not be called.
+QChart* makeThermalTrendChart(const ThermalLog& log, const QStringList& channels,
+                              const ThermalChartOptions& options = {});
+
+}  // namespace metrofit

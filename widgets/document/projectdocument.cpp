@@ -1,0 +1,230 @@
+#include "widgets/document/projectdocument.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QFileSystemWatcher>
+#include <QTimer>
+#include <QUndoStack>
+
+#include "core/common/error.h"
+#include "widgets/document/studyinfo.h"
+
+namespace metrofit {
+namespace {
+
+std::string toStd(const QString& s) { return s.toStdString(); }
+QString fromStd(const std::string& s) { return QString::fromStdString(s); }
+std::string fileNameToStd(const QString& path) { return QFile::encodeName(path).toStdString(); }
+
+QString commandText(const ProjectField& field) {
+  switch (field.kind) {
+    case ProjectField::Kind::Name:
+      return ProjectDocument::tr("Rename project");
+    case ProjectField::Kind::Description:
+      return ProjectDocument::tr("Edit project description");
+    case ProjectField::Kind::StudyNotes:
+      return ProjectDocument::tr("Edit notes of %1").arg(studyTitle(field.study));
+  }
+  return {};
+}
+
+constexpr int kDiskCheckDelayMs = 200;
+
+}  // namespace
+
+// ---- ChangeProjectValue ----
+
+ChangeProjectValue::ChangeProjectValue(ProjectDocument* document, const ProjectField& field,
+                                       const QString& value, QUndoCommand* parent)
+    : QUndoCommand(commandText(field), parent),
+      document_(document),
+      field_(field),
+      oldValue_(document->rawValue(field)),
+      createdStudy_(field.kind == ProjectField::Kind::StudyNotes && !document->hasStudy(field.study)),
+      newValue_(value),
+      sequence_(document->editSequence()) {}
+
+void ChangeProjectValue::undo() { document_->applyValue(field_, oldValue_, createdStudy_); }
+
+void ChangeProjectValue::redo() { document_->applyValue(field_, newValue_); }
+
+bool ChangeProjectValue::mergeWith(const QUndoCommand* other) {
+  const auto* o = static_cast<const ChangeProjectValue*>(other);  // same id() guarantees the type
+  if (o->document_ != document_ || !(o->field_ == field_) || o->sequence_ != sequence_) return false;
+  newValue_ = o->newValue_;
+  // Typing back to where the sequence started leaves nothing to undo.
+  setObsolete(!createdStudy_ && oldValue_.has_value() && *oldValue_ == newValue_);
+  return true;
+}
+
+// ---- ProjectDocument ----
+
+ProjectDocument::ProjectDocument(QObject* parent)
+    : QObject(parent),
+      undoStack_(new QUndoStack(this)),
+      watcher_(new QFileSystemWatcher(this)),
+      diskCheck_(new QTimer(this)) {
+  diskCheck_->setSingleShot(true);
+  diskCheck_->setInterval(kDiskCheckDelayMs);
+  connect(undoStack_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+  connect(watcher_, &QFileSystemWatcher::fileChanged, this, &ProjectDocument::onWatchedFileChanged);
+  connect(diskCheck_, &QTimer::timeout, this, &ProjectDocument::checkFileOnDisk);
+}
+
+ProjectDocument::~ProjectDocument() = default;
+
+QString ProjectDocument::displayName() const {
+  const QString name = fromStd(project_.name).trimmed();
+  return name.isEmpty() ? tr("Untitled") : name;
+}
+
+bool ProjectDocument::isModified() const { return !undoStack_->isClean(); }
+
+bool ProjectDocument::hasStudy(const QString& study) const { return project_.studies.contains(toStd(study)); }
+
+std::optional<QString> ProjectDocument::rawValue(const ProjectField& field) const {
+  switch (field.kind) {
+    case ProjectField::Kind::Name:
+      return fromStd(project_.name);
+    case ProjectField::Kind::Description:
+      return fromStd(project_.description);
+    case ProjectField::Kind::StudyNotes: {
+      const auto s = project_.studies.find(toStd(field.study));
+      if (s == project_.studies.end() || !s->is_object()) return std::nullopt;
+      const auto n = s->find("notes");
+      if (n == s->end() || !n->is_string()) return std::nullopt;
+      return fromStd(n->get<std::string>());
+    }
+  }
+  return std::nullopt;
+}
+
+QString ProjectDocument::value(const ProjectField& field) const { return rawValue(field).value_or(QString()); }
+
+void ProjectDocument::setValue(const ProjectField& field, const QString& value) {
+  if (this->value(field) == value) return;
+  undoStack_->push(new ChangeProjectValue(this, field, value));
+}
+
+void ProjectDocument::applyValue(const ProjectField& field, const std::optional<QString>& value, bool removeStudy) {
+  switch (field.kind) {
+    case ProjectField::Kind::Name:
+      project_.name = toStd(value.value_or(QString()));
+      break;
+    case ProjectField::Kind::Description:
+      project_.description = toStd(value.value_or(QString()));
+      break;
+    case ProjectField::Kind::StudyNotes: {
+      const std::string key = toStd(field.study);
+      nlohmann::json& study = project_.studies[key];
+      if (!study.is_object()) study = nlohmann::json::object();
+      if (value) {
+        study["notes"] = toStd(*value);
+      } else {
+        study.erase("notes");
+        if (removeStudy && study.empty()) project_.studies.erase(key);
+      }
+      break;
+    }
+  }
+  emit changed();
+  emit fieldChanged(field);
+}
+
+void ProjectDocument::newProject() {
+  project_ = Project{};
+  setFileName(QString());
+  undoStack_->clear();
+  ++editSequence_;
+  emit changed();
+}
+
+void ProjectDocument::load(const QString& path) {
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  Project loaded = loadProject(fileNameToStd(absolute));  // throws; nothing changed yet
+  project_ = std::move(loaded);
+  setFileName(absolute);
+  undoStack_->clear();
+  ++editSequence_;
+  emit changed();
+}
+
+void ProjectDocument::save() {
+  if (fileName_.isEmpty()) {
+    throw FileError(ErrorContext{},
+                    toStd(tr("the project has not been saved yet; choose a file name with Save As")));
+  }
+  saveAs(fileName_);
+}
+
+void ProjectDocument::saveAs(const QString& path) {
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  // Relative dataset paths are relative to the project's folder: saved elsewhere, they are rewritten
+  // so that they still name the same files.
+  Project toSave = project_;
+  const QDir newFolder = QFileInfo(absolute).absoluteDir();
+  for (DatasetRef& d : toSave.datasets) {
+    const QString current = fromStd(d.path);
+    if (QDir::isAbsolutePath(current)) continue;
+    d.path = toStd(QDir::fromNativeSeparators(newFolder.relativeFilePath(datasetPath(d))));
+  }
+  // Our own write must not look like a change by another program: stop watching while we write.
+  if (!fileName_.isEmpty()) watcher_->removePath(fileName_);
+  try {
+    saveProject(toSave, fileNameToStd(absolute));
+  } catch (...) {
+    watch(fileName_);
+    throw;
+  }
+  const bool rebased = toSave.datasets != project_.datasets;
+  project_ = std::move(toSave);
+  setFileName(absolute);
+  undoStack_->setClean();
+  ++editSequence_;
+  if (rebased) emit changed();
+}
+
+QString ProjectDocument::datasetPath(const DatasetRef& dataset) const {
+  if (fileName_.isEmpty()) return QDir::current().absoluteFilePath(fromStd(dataset.path));
+  return QDir::cleanPath(QFile::decodeName(QByteArray::fromStdString(resolveDatasetPath(fileNameToStd(fileName_), dataset))));
+}
+
+void ProjectDocument::setFileName(const QString& path) {
+  if (!watcher_->files().isEmpty()) watcher_->removePaths(watcher_->files());
+  diskCheck_->stop();
+  const bool renamed = path != fileName_;
+  fileName_ = path;
+  watch(path);
+  if (renamed) emit fileNameChanged(fileName_);
+}
+
+void ProjectDocument::watch(const QString& path) {
+  if (path.isEmpty()) return;
+  stamp_ = stampOf(path);
+  if (QFileInfo::exists(path)) watcher_->addPath(path);
+}
+
+ProjectDocument::Stamp ProjectDocument::stampOf(const QString& path) {
+  const QFileInfo info(path);
+  if (!info.exists()) return {};
+  return {info.size(), info.lastModified().toMSecsSinceEpoch()};
+}
+
+void ProjectDocument::onWatchedFileChanged(const QString& path) {
+  if (path != fileName_) return;
+  diskCheck_->start();
+}
+
+void ProjectDocument::checkFileOnDisk() {
+  if (fileName_.isEmpty()) return;
+  // Programs that save atomically replace the file; the watcher then drops it, so watch again.
+  if (QFileInfo::exists(fileName_) && !watcher_->files().contains(fileName_)) watcher_->addPath(fileName_);
+  const Stamp now = stampOf(fileName_);
+  if (now == stamp_) return;
+  stamp_ = now;
+  emit fileChangedOnDisk(fileName_);
+}
+
+}  // namespace metrofit

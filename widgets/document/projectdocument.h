@@ -1,0 +1,147 @@
+#pragma once
+// The project document (STYLE.md §6-8): owns a metrofit::Project, the path it was loaded from or
+// saved to, and the QUndoStack every edit goes through. "Modified" means "the undo stack is not
+// clean". Views are editors of the document: they read project(), change it only through
+// setValue() (which pushes a ChangeProjectValue command) and listen to the signals.
+//
+// Files are read and written by core (loadProject / saveProject, atomic write-then-rename); their
+// metrofit::InputError / FileError exceptions pass through with their one-line messages, and a
+// failed load or save leaves the document exactly as it was. A QFileSystemWatcher reports when the
+// open file is changed on disk by another program (never for the document's own saves).
+#include <QObject>
+#include <QString>
+#include <QUndoCommand>
+#include <memory>
+#include <optional>
+
+#include "core/project/project.h"
+
+class QFileSystemWatcher;
+class QTimer;
+class QUndoStack;
+
+namespace metrofit {
+
+class ProjectDocument;
+
+/// Ids of the document's undo commands (QUndoCommand::id(), used for merging).
+enum class UndoCommandId : int {
+  ChangeProjectValue = 1,
+};
+
+/// A text field of the project that can be edited through the undo stack.
+struct ProjectField {
+  enum class Kind { Name, Description, StudyNotes };
+  Kind kind = Kind::Name;
+  QString study;  ///< for StudyNotes: a name from metrofit::study (studies[<study>]["notes"])
+
+  static ProjectField name() { return {Kind::Name, {}}; }
+  static ProjectField description() { return {Kind::Description, {}}; }
+  static ProjectField studyNotes(const QString& study) { return {Kind::StudyNotes, study}; }
+
+  bool operator==(const ProjectField&) const = default;
+};
+
+/// The generic change-value command (Tiled's ChangeValue): sets one project field and restores the
+/// previous value on undo. Consecutive commands on the same field within one edit sequence merge
+/// into one (typing a name is one undo step); a merge that returns to the original value makes the
+/// command obsolete, so the stack drops it.
+class ChangeProjectValue : public QUndoCommand {
+ public:
+  ChangeProjectValue(ProjectDocument* document, const ProjectField& field, const QString& value,
+                     QUndoCommand* parent = nullptr);
+
+  void undo() override;
+  void redo() override;
+  int id() const override { return static_cast<int>(UndoCommandId::ChangeProjectValue); }
+  bool mergeWith(const QUndoCommand* other) override;
+
+  const ProjectField& field() const { return field_; }
+
+ private:
+  ProjectDocument* document_;
+  ProjectField field_;
+  std::optional<QString> oldValue_;  ///< nullopt: the field did not exist (study notes)
+  bool createdStudy_ = false;        ///< the study object did not exist before
+  QString newValue_;
+  quint64 sequence_;
+};
+
+class ProjectDocument : public QObject {
+  Q_OBJECT
+ public:
+  explicit ProjectDocument(QObject* parent = nullptr);
+  ~ProjectDocument() override;
+
+  const Project& project() const { return project_; }
+  /// Absolute path of the project file; empty for a new, never saved project.
+  QString fileName() const { return fileName_; }
+  /// The project name for titles ("Untitled" when it is empty).
+  QString displayName() const;
+  QUndoStack* undoStack() const { return undoStack_; }
+  bool isModified() const;
+
+  /// Current value of a field ("" for absent study notes).
+  QString value(const ProjectField& field) const;
+  /// Changes a field through the undo stack (nothing happens when the value is unchanged).
+  void setValue(const ProjectField& field, const QString& value);
+  /// Ends the current edit sequence: the next change does not merge with the previous one
+  /// (editors call it when an input field loses focus or editing is finished).
+  void endEditSequence() { ++editSequence_; }
+
+  /// A new empty project without a file; clears the undo stack.
+  void newProject();
+  /// Replaces the project with the file's content; clears the undo stack. Throws
+  /// metrofit::InputError (FileError, ParseError, ValidationError); the document is unchanged then.
+  void load(const QString& path);
+  /// Saves to fileName(). Throws FileError (also when there is no file name yet: use saveAs).
+  void save();
+  /// Saves to a new path and makes it the document's file. Throws FileError; on failure the
+  /// document keeps its file name and stays modified.
+  void saveAs(const QString& path);
+
+  /// Absolute path of a dataset of the project (resolved against the project's folder; relative to
+  /// the working directory when the project has no file yet).
+  QString datasetPath(const DatasetRef& dataset) const;
+
+ signals:
+  /// The project content changed (load, new, undo, redo, any edit).
+  void changed();
+  /// One field changed (after changed()).
+  void fieldChanged(const metrofit::ProjectField& field);
+  void fileNameChanged(const QString& fileName);
+  void modifiedChanged(bool modified);
+  /// The open file was changed or removed on disk by another program.
+  void fileChangedOnDisk(const QString& fileName);
+
+ private:
+  friend class ChangeProjectValue;
+  /// Applies a value without the undo stack (nullopt removes study notes; removeStudy drops an
+  /// emptied study object).
+  void applyValue(const ProjectField& field, const std::optional<QString>& value, bool removeStudy = false);
+  std::optional<QString> rawValue(const ProjectField& field) const;
+  bool hasStudy(const QString& study) const;
+  quint64 editSequence() const { return editSequence_; }
+
+  void setFileName(const QString& path);
+  void watch(const QString& path);
+  void onWatchedFileChanged(const QString& path);
+  void checkFileOnDisk();
+
+  Project project_;
+  QString fileName_;
+  QUndoStack* undoStack_;
+  QFileSystemWatcher* watcher_;
+  QTimer* diskCheck_;  ///< coalesces the watcher's bursts of notifications
+  quint64 editSequence_ = 0;
+  /// Size and modification time of the file as the document last wrote or read it.
+  struct Stamp {
+    qint64 size = -1;
+    qint64 mtimeMs = -1;
+    bool operator==(const Stamp&) const = default;
+  };
+  Stamp stamp_;
+  static Stamp stampOf(const QString& path);
+};
+
+}  // namespace metrofit

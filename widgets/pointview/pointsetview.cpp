@@ -1,0 +1,456 @@
+// PointSetView: what the scene shows (all lengths in mm, in the point set's frame).
+//
+// - Nominal points q_i: small grey spheres.
+// - Measured points, drawn at the exaggerated tip  t_i = q_i + k * v_i,  k = exaggeration (100x by
+//   default), with the displacement
+//       v_i = d_i * n_i   when the set has normals (d_i = (p_i - q_i) . n_i, the deviation along the
+//                         nominal normal; tangential probe offsets are not errors and are not drawn),
+//       v_i = p_i - q_i   otherwise (d_i = |p_i - q_i|).
+//   A line joins q_i and t_i; the tip sphere is coloured by d_i.
+// - After matching (setAfter): tips t'_i = q'_i + k * v'_i with v'_i = d'_i * n_i (with normals; the
+//   matching rotation is far too small to turn n_i visibly) or p_i - q'_i, coloured by d'_i, drawn
+//   solid while the "before" markers and lines fade.
+// - Colour: Moreland's diverging cool-warm map (blue - light grey - red) over a symmetric range
+//   [-r, r], r = max |d| over before and after rounded up to 1, 2 or 5 x 10^n, shown by a scalar
+//   bar "deviation (mm)".
+// - An axes marker (X red, Y green, Z blue) in the lower left corner follows the camera; a caption
+//   states the exaggeration. White background so that screenshots print well.
+#include "widgets/pointview/pointsetview.h"
+
+#include <QGuiApplication>
+#include <QImage>
+#include <QLabel>
+#include <QSurfaceFormat>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <vtkActor.h>
+#include <vtkAxesActor.h>
+#include <vtkCamera.h>
+#include <vtkCaptionActor2D.h>
+#include <vtkCellArray.h>
+#include <vtkColorTransferFunction.h>
+#include <vtkCommand.h>
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include "core/matching/probe_points.h"
+#include "widgets/pointview/vtkglwidget.h"
+
+namespace metrofit {
+
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+constexpr double kBackground[3] = {1.0, 1.0, 1.0};
+// Moreland, "Diverging Color Maps for Scientific Visualization" (ISVC 2009), cool-warm end points.
+constexpr double kColdEnd[3] = {0.230, 0.299, 0.754};
+constexpr double kWarmEnd[3] = {0.706, 0.016, 0.150};
+constexpr double kNominalGrey[3] = {0.50, 0.50, 0.50};
+constexpr double kTextColour[3] = {0.10, 0.10, 0.10};
+constexpr double kFadedOpacity = 0.25;
+constexpr double kNominalPointSize = 5.0;
+constexpr double kMeasuredPointSize = 9.0;
+/// Colour range used when every deviation is zero (1 µm).
+constexpr double kMinimumRange = 1e-3;
+
+/// Smallest 1, 2 or 5 x 10^n that is >= x (x > 0).
+double niceCeil(double x) {
+  const double decade = std::pow(10.0, std::floor(std::log10(x)));
+  for (const double step : {1.0, 2.0, 5.0, 10.0}) {
+    if (step * decade >= x * (1.0 - 1e-12)) return step * decade;
+  }
+  return 10.0 * decade;
+}
+
+vtkSmartPointer<vtkPolyData> makeVertices(const std::vector<Vec3>& positions, const std::vector<double>* scalars) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
+  vtkNew<vtkCellArray> verts;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const auto id = static_cast<vtkIdType>(i);
+    points->SetPoint(id, positions[i].x(), positions[i].y(), positions[i].z());
+    verts->InsertNextCell(1, &id);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetVerts(verts);
+  if (scalars != nullptr) {
+    vtkNew<vtkDoubleArray> values;
+    values->SetName("deviation");
+    values->SetNumberOfValues(static_cast<vtkIdType>(scalars->size()));
+    for (std::size_t i = 0; i < scalars->size(); ++i) values->SetValue(static_cast<vtkIdType>(i), (*scalars)[i]);
+    poly->GetPointData()->SetScalars(values);
+  }
+  return poly;
+}
+
+vtkSmartPointer<vtkPolyData> makeSegments(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(2 * from.size()));
+  vtkNew<vtkCellArray> lines;
+  for (std::size_t i = 0; i < from.size(); ++i) {
+    const vtkIdType ids[2] = {static_cast<vtkIdType>(2 * i), static_cast<vtkIdType>(2 * i + 1)};
+    points->SetPoint(ids[0], from[i].x(), from[i].y(), from[i].z());
+    points->SetPoint(ids[1], to[i].x(), to[i].y(), to[i].z());
+    lines->InsertNextCell(2, ids);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetLines(lines);
+  return poly;
+}
+
+void styleText(vtkTextProperty* text, int fontSize) {
+  text->SetColor(kTextColour[0], kTextColour[1], kTextColour[2]);
+  text->SetFontFamilyToArial();
+  text->SetFontSize(fontSize);
+  text->BoldOff();
+  text->ItalicOff();
+  text->ShadowOff();
+}
+
+/// One drawn set: spheres at the tips, optionally coloured by deviation, and the lines q -> tip.
+struct MarkerLayer {
+  vtkNew<vtkPolyDataMapper> pointMapper;
+  vtkNew<vtkActor> points;
+  vtkNew<vtkPolyDataMapper> lineMapper;
+  vtkNew<vtkActor> lines;
+
+  void init(vtkRenderer* renderer, double pointSize, vtkColorTransferFunction* colours, const double* lineColour) {
+    points->SetMapper(pointMapper);
+    vtkProperty* p = points->GetProperty();
+    p->SetRepresentationToPoints();
+    p->RenderPointsAsSpheresOn();
+    p->SetPointSize(static_cast<float>(pointSize));
+    p->SetAmbient(0.25);
+    p->SetDiffuse(0.75);
+    p->SetSpecular(0.0);
+    if (colours != nullptr) {
+      pointMapper->SetLookupTable(colours);
+      pointMapper->UseLookupTableScalarRangeOn();
+      pointMapper->SetScalarModeToUsePointData();
+      pointMapper->SetColorModeToMapScalars();
+      pointMapper->ScalarVisibilityOn();
+    } else {
+      pointMapper->ScalarVisibilityOff();
+      p->SetColor(kNominalGrey[0], kNominalGrey[1], kNominalGrey[2]);
+    }
+    renderer->AddActor(points);
+    if (lineColour != nullptr) {
+      lines->SetMapper(lineMapper);
+      lineMapper->ScalarVisibilityOff();
+      lines->GetProperty()->SetColor(lineColour[0], lineColour[1], lineColour[2]);
+      lines->GetProperty()->SetLineWidth(1.5f);
+      lines->GetProperty()->LightingOff();
+      renderer->AddActor(lines);
+    }
+  }
+
+  void set(const std::vector<Vec3>& tips, const std::vector<double>* deviations, const std::vector<Vec3>* bases) {
+    pointMapper->SetInputData(makeVertices(tips, deviations));
+    points->SetVisibility(!tips.empty());
+    if (bases != nullptr) {
+      lineMapper->SetInputData(makeSegments(*bases, tips));
+      lines->SetVisibility(!tips.empty());
+    }
+  }
+
+  void hide() {
+    points->VisibilityOff();
+    lines->VisibilityOff();
+  }
+
+  void setOpacity(double opacity) {
+    points->GetProperty()->SetOpacity(opacity);
+    lines->GetProperty()->SetOpacity(opacity);
+  }
+};
+
+constexpr double kBeforeLineColour[3] = {0.40, 0.40, 0.40};
+constexpr double kAfterLineColour[3] = {0.10, 0.10, 0.10};
+
+/// The VTK scene; exists only when the process can render 3D.
+struct PointSetScene {
+  VtkGlWidget* gl = nullptr;
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkColorTransferFunction> colours;
+  MarkerLayer nominal;
+  MarkerLayer before;
+  MarkerLayer after;
+  vtkNew<vtkScalarBarActor> scalarBar;
+  vtkNew<vtkTextActor> caption;
+  vtkNew<vtkRenderer> axesRenderer;
+  vtkNew<vtkAxesActor> axes;
+  unsigned long syncObserver = 0;
+
+  explicit PointSetScene(QWidget* parent) : gl(new VtkGlWidget(parent)) {
+    renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+    colours->SetColorSpaceToDiverging();
+    nominal.init(renderer, kNominalPointSize, nullptr, nullptr);
+    before.init(renderer, kMeasuredPointSize, colours, kBeforeLineColour);
+    after.init(renderer, kMeasuredPointSize, colours, kAfterLineColour);
+    nominal.hide();
+    before.hide();
+    after.hide();
+
+    scalarBar->SetLookupTable(colours);
+    scalarBar->SetTitle("deviation (mm)");
+    scalarBar->SetNumberOfLabels(5);
+    scalarBar->SetLabelFormat("%.3g");
+    scalarBar->SetMaximumNumberOfColors(256);
+    scalarBar->SetOrientationToVertical();
+    scalarBar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    scalarBar->GetPositionCoordinate()->SetValue(0.86, 0.10);
+    scalarBar->SetWidth(0.12);
+    scalarBar->SetHeight(0.78);
+    styleText(scalarBar->GetTitleTextProperty(), 14);
+    styleText(scalarBar->GetLabelTextProperty(), 12);
+    scalarBar->VisibilityOff();
+    renderer->AddActor2D(scalarBar);
+
+    caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    caption->GetPositionCoordinate()->SetValue(0.015, 0.975);
+    styleText(caption->GetTextProperty(), 13);
+    caption->GetTextProperty()->SetVerticalJustificationToTop();
+    caption->VisibilityOff();
+    renderer->AddActor2D(caption);
+
+    // Axes marker: a second, non-interactive renderer in the lower left corner on layer 1 whose
+    // camera copies the main camera's orientation before every frame.
+    axesRenderer->SetViewport(0.0, 0.0, 0.18, 0.22);
+    axesRenderer->SetLayer(1);
+    axesRenderer->InteractiveOff();
+    axes->SetShaftTypeToCylinder();
+    axes->SetTotalLength(1.0, 1.0, 1.0);
+    for (vtkCaptionActor2D* label :
+         {axes->GetXAxisCaptionActor2D(), axes->GetYAxisCaptionActor2D(), axes->GetZAxisCaptionActor2D()}) {
+      styleText(label->GetCaptionTextProperty(), 14);
+      label->GetCaptionTextProperty()->BoldOn();
+    }
+    axesRenderer->AddActor(axes);
+
+    vtkGenericOpenGLRenderWindow* window = gl->renderWindow();
+    window->SetNumberOfLayers(2);
+    window->AddRenderer(renderer);
+    window->AddRenderer(axesRenderer);
+    syncObserver = renderer->AddObserver(vtkCommand::StartEvent, this, &PointSetScene::syncAxesCamera);
+  }
+
+  ~PointSetScene() { renderer->RemoveObserver(syncObserver); }
+  PointSetScene(const PointSetScene&) = delete;
+  PointSetScene& operator=(const PointSetScene&) = delete;
+
+  void syncAxesCamera(vtkObject* /*caller*/, unsigned long /*eventId*/, void* /*callData*/) {
+    vtkCamera* main = renderer->GetActiveCamera();
+    double direction[3];
+    main->GetDirectionOfProjection(direction);
+    vtkCamera* camera = axesRenderer->GetActiveCamera();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(-direction[0], -direction[1], -direction[2]);
+    camera->SetViewUp(main->GetViewUp());
+    axesRenderer->ResetCamera();
+  }
+
+  void setColourRange(double range) {
+    colours->RemoveAllPoints();
+    colours->AddRGBPoint(-range, kColdEnd[0], kColdEnd[1], kColdEnd[2]);
+    colours->AddRGBPoint(range, kWarmEnd[0], kWarmEnd[1], kWarmEnd[2]);
+  }
+
+  void resetCamera(bool planar) {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    if (planar) {
+      camera->SetPosition(0.0, 0.0, 1.0);  // looking down on the XY plane
+      camera->SetViewUp(0.0, 1.0, 0.0);
+    } else {
+      camera->SetPosition(1.0, -1.4, 0.9);  // isometric-like, Z up
+      camera->SetViewUp(0.0, 0.0, 1.0);
+    }
+    renderer->ResetCamera();
+    renderer->ResetCameraClippingRange();
+  }
+};
+
+}  // namespace
+
+struct PointSetView::Impl {
+  QLabel* message = nullptr;
+  std::unique_ptr<PointSetScene> scene;
+
+  // The data are kept also without a scene, so the view behaves the same with and without 3D.
+  bool hasNormals = false;
+  bool planar = false;
+  std::vector<Vec3> nominal;
+  std::vector<Vec3> normal;
+  std::vector<Vec3> measured;
+  std::vector<double> deviations;
+  bool hasAfter = false;
+  std::vector<Vec3> afterNominal;
+  std::vector<double> afterDeviations;
+  double exaggeration = 100.0;
+
+  /// q + k * v (see the file comment).
+  Vec3 tip(std::size_t i, const Vec3& base, double deviation) const {
+    const Vec3 displacement = hasNormals ? Vec3(deviation * normal[i]) : Vec3(measured[i] - base);
+    return base + exaggeration * displacement;
+  }
+
+  void rebuild() {
+    if (!scene) return;
+    std::vector<Vec3> tips(nominal.size());
+    for (std::size_t i = 0; i < nominal.size(); ++i) tips[i] = tip(i, nominal[i], deviations[i]);
+    double maxAbs = 0.0;
+    for (const double d : deviations) maxAbs = std::max(maxAbs, std::abs(d));
+
+    scene->nominal.set(nominal, nullptr, nullptr);
+    scene->before.set(tips, &deviations, &nominal);
+    if (hasAfter) {
+      std::vector<Vec3> afterTips(afterNominal.size());
+      for (std::size_t i = 0; i < afterNominal.size(); ++i) {
+        afterTips[i] = tip(i, afterNominal[i], afterDeviations[i]);
+        maxAbs = std::max(maxAbs, std::abs(afterDeviations[i]));
+      }
+      scene->after.set(afterTips, &afterDeviations, &afterNominal);
+      scene->before.setOpacity(kFadedOpacity);
+    } else {
+      scene->after.hide();
+      scene->before.setOpacity(1.0);
+    }
+    scene->setColourRange(maxAbs > 0.0 ? niceCeil(maxAbs) : kMinimumRange);
+    scene->scalarBar->SetVisibility(!nominal.empty());
+
+    const std::string factor = QString::number(exaggeration, 'g', 4).toStdString();
+    std::string text = "grey: nominal points; coloured: measured, displacement x" + factor;
+    if (hasAfter) text += "\nafter matching: solid; before: faded";
+    scene->caption->SetInput(text.c_str());
+    scene->caption->SetVisibility(!nominal.empty());
+    scene->gl->update();
+  }
+};
+
+PointSetView::PointSetView(QWidget* parent) : QWidget(parent), d(std::make_unique<Impl>()) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  if (canRender3D()) {
+    d->scene = std::make_unique<PointSetScene>(this);
+    layout->addWidget(d->scene->gl);
+  } else {
+    d->message = new QLabel(tr("3D view needs an X11 display (run under xvfb-run for headless use)"), this);
+    d->message->setAlignment(Qt::AlignCenter);
+    d->message->setWordWrap(true);
+    layout->addWidget(d->message);
+  }
+  setMinimumSize(200, 150);
+}
+
+PointSetView::~PointSetView() = default;
+
+bool PointSetView::canRender3D() {
+  if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) return false;
+  if (QGuiApplication::platformName() != QLatin1String("xcb")) return false;
+  return !qEnvironmentVariableIsEmpty("DISPLAY");
+}
+
+QSurfaceFormat PointSetView::surfaceFormat() {
+  QSurfaceFormat format;
+  format.setRenderableType(QSurfaceFormat::OpenGL);
+  format.setVersion(3, 2);
+  format.setProfile(QSurfaceFormat::CoreProfile);
+  format.setDepthBufferSize(24);
+  return format;
+}
+
+void PointSetView::setPoints(const ProbePointSet& points) {
+  const std::size_t n = points.points.size();
+  d->hasNormals = points.hasNormals;
+  d->planar = points.planar;
+  d->nominal.resize(n);
+  d->normal.resize(n);
+  d->measured.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    d->nominal[i] = points.points[i].nominal;
+    d->normal[i] = points.points[i].normal;
+    d->measured[i] = points.points[i].measured;
+  }
+  d->deviations = points.deviations();
+  d->hasAfter = false;
+  d->afterNominal.clear();
+  d->afterDeviations.clear();
+  d->rebuild();
+  resetCamera();
+}
+
+void PointSetView::setAfter(const std::vector<std::array<double, 3>>& transformedNominal,
+                            const std::vector<double>& deviationsAfter) {
+  if (transformedNominal.size() != d->nominal.size() || deviationsAfter.size() != d->nominal.size()) {
+    throw std::invalid_argument("PointSetView::setAfter: " + std::to_string(transformedNominal.size()) +
+                                " transformed nominal points and " + std::to_string(deviationsAfter.size()) +
+                                " deviations for a set of " + std::to_string(d->nominal.size()) + " points");
+  }
+  d->afterNominal.resize(transformedNominal.size());
+  for (std::size_t i = 0; i < transformedNominal.size(); ++i) {
+    d->afterNominal[i] = Vec3(transformedNominal[i][0], transformedNominal[i][1], transformedNominal[i][2]);
+  }
+  d->afterDeviations = deviationsAfter;
+  d->hasAfter = true;
+  d->rebuild();
+}
+
+void PointSetView::clearAfter() {
+  d->hasAfter = false;
+  d->afterNominal.clear();
+  d->afterDeviations.clear();
+  d->rebuild();
+}
+
+void PointSetView::setExaggeration(double factor) {
+  if (!std::isfinite(factor) || factor <= 0.0) {
+    throw std::invalid_argument("PointSetView::setExaggeration: factor must be positive and finite, got " +
+                                std::to_string(factor));
+  }
+  d->exaggeration = factor;
+  d->rebuild();
+}
+
+void PointSetView::resetCamera() {
+  if (!d->scene) return;
+  d->scene->resetCamera(d->planar);
+  d->scene->gl->update();
+}
+
+std::array<double, 3> PointSetView::cameraPosition() const {
+  std::array<double, 3> out{0.0, 0.0, 0.0};
+  if (d->scene) d->scene->renderer->GetActiveCamera()->GetPosition(out.data());
+  return out;
+}
+
+std::array<double, 3> PointSetView::cameraFocalPoint() const {
+  std::array<double, 3> out{0.0, 0.0, 0.0};
+  if (d->scene) d->scene->renderer->GetActiveCamera()->GetFocalPoint(out.data());
+  return out;
+}
+
+QImage PointSetView::renderImage() {
+  if (!d->scene) return QImage();
+  return d->scene->gl->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+}
+
+}  // namespace metrofit

@@ -1,0 +1,28 @@
+#pragma once
+// The PDF report of a project: cover page with the project summary, then one section per study
+// that has something to show (inputs, settings, charts as vector graphics, tables, corrections,
+// error before/after). The same code serves the GUI's "Export report" and `metrofit-cli report`.
+// Needs a QGuiApplication (QApplication for charts); works with QT_QPA_PLATFORM=offscreen and does
+// not use VTK (3D point sets are drawn as 2D projections with QPainter).
+#include <QString>
+#include <functional>
+
+namespace metrofit {
+class Project;
+
+struct ReportOptions {
+  QString projectPath;   ///< where the project was loaded from (resolves dataset paths)
+  QString title;         ///< defaults to the project name
+  int resolutionDpi = 300;
+};
+
+struct ReportSummary {
+  int pages = 0;
+  QStringList sections;  ///< titles of the sections written, in order
+};
+
+/// Writes the report atomically (QSaveFile) to pdfPath. Throws metrofit::InputError when a dataset
+/// of the project cannot be read, metrofit::FileError when the PDF cannot be written.
+ReportSummary writeReport(const Project& project, const QString& pdfPath, const ReportOptions& options);
+
+}  // namespace metrofit

@@ -1,0 +1,50 @@
+#pragma once
+// The sections of the PDF report, one function each, and what they share: the project's datasets,
+// read once before the first page is drawn (so a dataset that cannot be read fails the report
+// before anything is written). report.cpp lists the sections and decides which ones a project has;
+// a new section is a new write...Section function plus one line in that list.
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+#include "core/matching/probe_points.h"
+#include "core/project/project.h"
+#include "core/thermal/thermal_log.h"
+
+namespace metrofit {
+class ReportPainter;
+
+/// A dataset of the project as the report sees it.
+struct ReportDataset {
+  DatasetRef ref;
+  QString path;    ///< resolved against the project folder
+  long rows = -1;  ///< data rows or points; -1 when the kind has no rows (setup model)
+  std::optional<ThermalLog> thermal;     ///< for thermal_log datasets
+  std::optional<ProbePointSet> probes;  ///< for probe_points datasets
+};
+
+/// Everything a section may draw from.
+struct ReportContext {
+  const Project* project = nullptr;
+  QString title;  ///< report title (the project name unless the options say otherwise)
+  QString date;   ///< when the report was made, as printed
+  std::vector<ReportDataset> datasets;
+
+  /// The datasets of one kind (dataset_kind::...), in project order.
+  std::vector<const ReportDataset*> ofKind(const char* kind) const;
+};
+
+/// Symmetric tolerance (mm) the probe-point section counts deviations against.
+inline constexpr double kReportProbeToleranceMm = 0.05;
+
+QString thermalSectionTitle();
+/// "Thermal": per thermal log, the trend chart (vector) and a table of its channels.
+void writeThermalSection(ReportPainter& out, const ReportContext& context);
+
+QString probePointsSectionTitle();
+/// "Posture matching — probe points": per probe set, XY and XZ projections coloured by deviation,
+/// the deviation statistics before matching and a table per surface.
+void writeProbePointsSection(ReportPainter& out, const ReportContext& context);
+
+}  // namespace metrofit
