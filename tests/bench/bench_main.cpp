@@ -1,0 +1,132 @@
+// metrofit-bench: speed measured against a peer in the same run, reported as ratios (DESIGN.md
+// "Performance"). Not a test: run it by hand or in a benchmark job.
+//
+//   metrofit-bench [--io] [--rng] [--repeat N] [--json OUT]     (no section flag: all sections)
+//
+// Sections now: --io (CSV reader on the real CAIVIAC log vs a naive getline/strtod reader that
+// does no validation), --rng (our portable normal generator vs std::normal_distribution on
+// mt19937_64). Later issues add --optimizers (pagmo2 side by side), --matching, --thermal,
+// --diagnose, --real.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/rng.h"
+#include "core/io/csv.h"
+#include "core/io/file_io.h"
+#include "core/io/json_util.h"
+#include "metrofit/version.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <class F>
+double medianSeconds(int repeat, F&& f) {
+  std::vector<double> t;
+  for (int i = 0; i < repeat; ++i) {
+    const auto a = Clock::now();
+    f();
+    t.push_back(std::chrono::duration<double>(Clock::now() - a).count());
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+volatile double g_sink = 0.0;
+
+/// The peer: what a quick script-like C++ reader does (no quoting, no validation, no locations).
+double naiveCsvSum(const std::string& text) {
+  std::istringstream in(text);
+  std::string line, cell;
+  std::getline(in, line);  // header
+  double sum = 0.0;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    while (std::getline(ls, cell, ',')) sum += std::strtod(cell.c_str(), nullptr);
+  }
+  return sum;
+}
+
+nlohmann::json benchIo(const std::string& sourceDir, int repeat) {
+  const std::string path = sourceDir + "/resources/demo/data/thermal_caiviac.csv";
+  const std::string text = metrofit::readFile(path);
+  std::size_t fields = 0;
+  const double ours = medianSeconds(repeat, [&] {
+    const metrofit::CsvTable t = metrofit::parseCsv(text, path);
+    double s = 0.0;
+    for (std::size_t c = 0; c < t.columnCount(); ++c)
+      for (double v : t.numericColumn(c)) s += v;
+    fields = t.rowCount() * t.columnCount();
+    g_sink = s;
+  });
+  const double peer = medianSeconds(repeat, [&] { g_sink = naiveCsvSum(text); });
+  std::printf("io   CSV parse + numbers, CAIVIAC log (%zu fields, %.1f MB): metrofit %.1f ms (%.1f ns/field), "
+              "naive getline/strtod %.1f ms; ratio metrofit/peer = %.2f\n",
+              fields, static_cast<double>(text.size()) / 1e6, ours * 1e3, ours * 1e9 / static_cast<double>(fields),
+              peer * 1e3, ours / peer);
+  return {{"fields", fields}, {"metrofit_ms", ours * 1e3}, {"peer_ms", peer * 1e3}, {"ratio", ours / peer}};
+}
+
+nlohmann::json benchRng(int repeat) {
+  const int n = 2'000'000;
+  const double ours = medianSeconds(repeat, [&] {
+    metrofit::Rng r(1);
+    double s = 0;
+    for (int i = 0; i < n; ++i) s += r.normal();
+    g_sink = s;
+  });
+  const double peer = medianSeconds(repeat, [&] {
+    std::mt19937_64 g(1);
+    std::normal_distribution<double> d;
+    double s = 0;
+    for (int i = 0; i < n; ++i) s += d(g);
+    g_sink = s;
+  });
+  std::printf("rng  %d normals: metrofit::Rng %.2f ns each, std::normal_distribution<mt19937_64> %.2f ns; ratio = %.2f\n", n,
+              ours * 1e9 / n, peer * 1e9 / n, ours / peer);
+  return {{"n", n}, {"metrofit_ns", ours * 1e9 / n}, {"peer_ns", peer * 1e9 / n}, {"ratio", ours / peer}};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool io = false, rng = false;
+  int repeat = 5;
+  std::string jsonOut;
+  std::string sourceDir = METROFIT_SOURCE_DIR;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--io") io = true;
+    else if (a == "--rng") rng = true;
+    else if (a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--json" && i + 1 < argc) jsonOut = argv[++i];
+    else if (a == "--source-dir" && i + 1 < argc) sourceDir = argv[++i];
+    else if (a == "--help" || a == "-h") {
+      std::printf("usage: metrofit-bench [--io] [--rng] [--repeat N] [--json OUT] [--source-dir DIR]\n");
+      return 0;
+    } else {
+      std::fprintf(stderr, "metrofit-bench: unknown option '%s' (see --help)\n", a.c_str());
+      return 2;
+    }
+  }
+  if (!io && !rng) io = rng = true;
+  nlohmann::json result{{"version", metrofit::kVersion}, {"repeat", repeat}};
+  try {
+    if (io) result["io"] = benchIo(sourceDir, repeat);
+    if (rng) result["rng"] = benchRng(repeat);
+    if (!jsonOut.empty()) metrofit::writeFileAtomic(jsonOut, metrofit::dumpJson(result));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "metrofit-bench: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
