@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <QApplication>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <cstdio>
 #include <functional>
@@ -32,6 +33,14 @@ char** g_argv = nullptr;
 /// Qt is needed only for the PDF report (QPdfWriter, Qt Charts). Headless by default.
 std::unique_ptr<QApplication> makeQtApp() {
   if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+    // Qt warns on stderr without one; the CLI keeps stderr to its one-line summary.
+    const QString runtime = QDir::temp().filePath(QStringLiteral("metrofit-runtime-%1").arg(::getuid()));
+    if (QDir().mkpath(runtime)) {
+      QFile::setPermissions(runtime, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+      qputenv("XDG_RUNTIME_DIR", runtime.toLocal8Bit());
+    }
+  }
   static int argc = 1;
   static char name[] = "metrofit-cli";
   static char* argv[] = {name, nullptr};
@@ -167,14 +176,14 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     auto a = std::make_shared<DemoArgs>();
     auto* sub = app.add_subcommand("demo", "Run the main job on the bundled sample project and write the PDF report");
     sub->add_option("--out-dir", a->outDir, "Folder for the demo project, its data and the report")->capture_default_str();
-    sub->callback([a] { g_selected = [a] { return runDemo(*a); }; });
+    sub->callback([a] { g_selected = [a]() -> int { return runDemo(*a); }; });
   }
   {
     auto a = std::make_shared<ReportArgs>();
     auto* sub = app.add_subcommand("report", "Write the PDF report of a saved project");
     existingFile(sub->add_option("--project", a->project, "Project file (.metrofit)")->required());
     sub->add_option("--out", a->out, "PDF file to write")->required();
-    sub->callback([a] { g_selected = [a] { return runReport(*a); }; });
+    sub->callback([a] { g_selected = [a]() -> int { return runReport(*a); }; });
   }
   {
     auto* sim = app.add_subcommand("simulate", "Make test data with the built-in simulator");
@@ -183,11 +192,11 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     auto* th = sim->add_subcommand("thermal", "A spindle heating/cooling test: time_min, rpm, T1..T4, T_amb, disp_z_um");
     addOut(th, a->out);
     addSeed(th, a->seed);
-    th->callback([a] { g_selected = [a] { return runSimulateThermal(*a); }; });
+    th->callback([a] { g_selected = [a]() -> int { return runSimulateThermal(*a); }; });
     auto* pr = sim->add_subcommand("probe", "Contact-probed points of a block with a posture error");
     addOut(pr, a->out);
     addSeed(pr, a->seed);
-    pr->callback([a] { g_selected = [a] { return runSimulateProbe(*a); }; });
+    pr->callback([a] { g_selected = [a]() -> int { return runSimulateProbe(*a); }; });
   }
   {
     auto a = std::make_shared<MethodArgs>();
@@ -201,7 +210,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     addSeed(sub, a->seed);
     addOut(sub, a->out);
     sub->callback([a] {
-      g_selected = [a] {
+      g_selected = [a]() -> int {
         (void)readJsonFile(a->model);
         (void)readCsvFile(a->data);
         notInThisBuild("setup-data correction", "issue 4");
@@ -221,7 +230,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     addSeed(sub, a->seed);
     addOut(sub, a->out);
     sub->callback([a] {
-      g_selected = [a] {
+      g_selected = [a]() -> int {
         (void)readProbePoints(a->data);
         notInThisBuild("posture matching", "issue 5");
       };
@@ -235,7 +244,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     existingFile(id->add_option("--data", a->data, "Measured path (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm)")->required());
     addOut(id, a->out);
     id->callback([a] {
-      g_selected = [a] {
+      g_selected = [a]() -> int {
         const CsvTable t = readCsvFile(a->data);
         for (const char* c : {"x_cmd_mm", "y_cmd_mm", "x_meas_mm", "y_meas_mm"}) (void)t.numericColumn(c);
         notInThisBuild("kinematic identification", "issue 6");
@@ -247,7 +256,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     existingFile(comp->add_option("--path", b->path, "Nominal path (CSV x_mm,y_mm)")->required());
     addOut(comp, b->out);
     comp->callback([b] {
-      g_selected = [b] {
+      g_selected = [b]() -> int {
         (void)readJsonFile(b->errors);
         const CsvTable t = readCsvFile(b->path);
         for (const char* c : {"x_mm", "y_mm"}) (void)t.numericColumn(c);
@@ -270,7 +279,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     addSeed(fit, a->seed);
     addOut(fit, a->out);
     fit->callback([a] {
-      g_selected = [a] {
+      g_selected = [a]() -> int {
         (void)readThermalArgs(*a);
         notInThisBuild("thermal model fitting", "issue 7");
       };
@@ -298,7 +307,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
       addOut(sub, a->out);
       const std::string d = domain;
       sub->callback([a, d] {
-        g_selected = [a, d] {
+        g_selected = [a, d]() -> int {
           if (d == "thermal") (void)readThermalArgs(*a);
           else if (d == "matching") (void)readProbePoints(a->data);
           else (void)readCsvFile(a->data);

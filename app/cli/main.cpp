@@ -14,6 +14,20 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.fallthrough(false);
   metrofit::cli::registerCommands(app, argc, argv);
+  // CLI11 reports a stray word as "A subcommand is required"; name it instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    std::string names;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      known |= sub->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::fprintf(stderr, "metrofit-cli: unknown subcommand '%s' (one of: %s; see metrofit-cli --help)\n", argv[1],
+                   names.c_str());
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
