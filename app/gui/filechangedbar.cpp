@@ -33,15 +33,18 @@ FileChangedBar::FileChangedBar(QWidget* parent) : QFrame(parent), label_(new QLa
 }
 
 void FileChangedBar::showFor(const QString& fileName, bool modified) {
-  QString text = QFileInfo::exists(fileName)
-                     ? tr("The project file %1 was changed by another program.").arg(QDir::toNativeSeparators(fileName))
-                     : tr("The project file %1 was removed or renamed by another program.")
-                           .arg(QDir::toNativeSeparators(fileName));
+  QString text =
+      QFileInfo::exists(fileName)
+          ? tr("The project file %1 was changed by another program.").arg(QDir::toNativeSeparators(fileName))
+          : tr("The project file %1 was removed or renamed by another program.")
+                .arg(QDir::toNativeSeparators(fileName));
   if (modified) text += QLatin1Char(' ') + tr("Reloading discards your unsaved changes.");
   label_->setText(text);
   show();
 }
 
-QString FileChangedBar::message() const { return label_->text(); }
+QString FileChangedBar::message() const {
+  return label_->text();
+}
 
 }  // namespace metrofit

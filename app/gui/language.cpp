@@ -9,7 +9,8 @@
 namespace metrofit {
 
 QStringList languageChoices() {
-  return {QString::fromLatin1(kSystemLanguage), QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("pl")};
+  return {QString::fromLatin1(kSystemLanguage), QStringLiteral("en"), QStringLiteral("de"),
+          QStringLiteral("pl")};
 }
 
 QString languageSetting() {

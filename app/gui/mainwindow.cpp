@@ -38,7 +38,8 @@ namespace metrofit {
 
 namespace {
 constexpr int kStatusTimeoutMs = 5000;
-const char* const kProjectFilter = QT_TRANSLATE_NOOP("metrofit::MainWindow", "Metrofit projects (*.metrofit)");
+const char* const kProjectFilter =
+    QT_TRANSLATE_NOOP("metrofit::MainWindow", "Metrofit projects (*.metrofit)");
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -88,15 +89,16 @@ MainWindow::MainWindow(QWidget* parent)
   connect(document_, &ProjectDocument::fileChangedOnDisk, this,
           [this](const QString& file) { fileChangedBar_->showFor(file, document_->isModified()); });
   connect(fileChangedBar_, &FileChangedBar::reloadRequested, this, &MainWindow::reloadFromDisk);
-  connect(exporter_, &ReportExporter::finished, this, [this](bool ok, const QString& message) {
-    exportAction_->setEnabled(true);
-    if (ok) {
-      statusBar()->showMessage(message, kStatusTimeoutMs);
-    } else {
-      statusBar()->clearMessage();
-      showError(tr("Cannot export the report"), message);
-    }
-  });
+  connect(exporter_, &ReportExporter::finished, this,
+          [this](ReportExporter::Outcome outcome, const QString& message) {
+            exportAction_->setEnabled(true);
+            if (outcome == ReportExporter::Outcome::Failed) {
+              statusBar()->clearMessage();
+              showError(tr("Cannot export the report"), message);
+            } else {
+              statusBar()->showMessage(message, kStatusTimeoutMs);
+            }
+          });
 
   resize(1280, 800);
   updateTitle();
@@ -106,20 +108,22 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow() = default;
 
-QWidget* MainWindow::page(Page page) const { return pages_->widget(static_cast<int>(page)); }
+QWidget* MainWindow::page(Page page) const {
+  return pages_->widget(static_cast<int>(page));
+}
 
-Page MainWindow::currentPage() const { return static_cast<Page>(pages_->currentIndex()); }
+Page MainWindow::currentPage() const {
+  return static_cast<Page>(pages_->currentIndex());
+}
 
 void MainWindow::createActions() {
   auto* group = new QActionGroup(this);
-  const QStringList titles = {tr("&Overview"),
-                              studyTitle(QString::fromLatin1(study::kSetup)),
-                              studyTitle(QString::fromLatin1(study::kMatching)),
-                              studyTitle(QString::fromLatin1(study::kKinematics)),
-                              studyTitle(QString::fromLatin1(study::kThermal)),
-                              studyTitle(QString::fromLatin1(study::kDiagnosis))};
   for (int i = 0; i < kPageCount; ++i) {
-    QAction* action = group->addAction(titles[i]);
+    const QString study = studyForPage(static_cast<Page>(i));
+    // '&' in a study title is text, not a mnemonic ("Kinematics & SPC").
+    QAction* action =
+        group->addAction(study.isEmpty() ? tr("&Overview")
+                                         : studyTitle(study).replace(QLatin1Char('&'), QStringLiteral("&&")));
     action->setCheckable(true);
     action->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_1 + i)));
     action->setObjectName(QStringLiteral("showPage%1").arg(i + 1));
@@ -132,12 +136,12 @@ void MainWindow::createMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newProject);
   file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::open);
-  file->addAction(tr("Open &demo project"), this, &MainWindow::openDemo);
+  QAction* demo = file->addAction(tr("Open &demo project"), this, &MainWindow::openDemo);
   recentMenu_ = file->addMenu(tr("&Recent files"));
   connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::updateRecentMenu);
   updateRecentMenu();
   file->addSeparator();
-  saveAction_ = file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+  file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
   file->addAction(tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this, &MainWindow::saveAs);
   exportAction_ = file->addAction(tr("&Export report PDF…"), this, &MainWindow::exportReport);
   file->addSeparator();
@@ -145,10 +149,18 @@ void MainWindow::createMenus() {
   quit->setMenuRole(QAction::QuitRole);
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-  QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+  QUndoStack* stack = document_->undoStack();
+  QAction* undo = stack->createUndoAction(this, tr("&Undo"));
   undo->setShortcuts(QKeySequence::Undo);
-  QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+  QAction* redo = stack->createRedoAction(this, tr("&Redo"));
   redo->setShortcuts(QKeySequence::Redo);
+  // The whole text is translatable (word order differs between languages), not just a prefix.
+  connect(stack, &QUndoStack::undoTextChanged, undo, [undo](const QString& text) {
+    undo->setText(text.isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(text));
+  });
+  connect(stack, &QUndoStack::redoTextChanged, redo, [redo](const QString& text) {
+    redo->setText(text.isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(text));
+  });
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();
@@ -162,6 +174,8 @@ void MainWindow::createMenus() {
   for (QAction* action : pageActions_) view->addAction(action);
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(demo);
+  help->addSeparator();
   help->addAction(tr("&About Metrofit"), this, &MainWindow::about)->setMenuRole(QAction::AboutRole);
   help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt)->setMenuRole(QAction::AboutQtRole);
 }
@@ -185,7 +199,8 @@ void MainWindow::updateRecentMenu() {
   const QStringList files = recentFiles();
   int number = 1;
   for (const QString& path : files) {
-    QAction* action = recentMenu_->addAction(QStringLiteral("&%1 %2").arg(number++).arg(QFileInfo(path).fileName()));
+    QAction* action =
+        recentMenu_->addAction(QStringLiteral("&%1 %2").arg(number++).arg(QFileInfo(path).fileName()));
     action->setToolTip(QDir::toNativeSeparators(path));
     action->setStatusTip(QDir::toNativeSeparators(path));
     connect(action, &QAction::triggered, this, [this, path] {
@@ -216,15 +231,17 @@ bool MainWindow::openProject(const QString& path, QString* error) {
   }
   fileChangedBar_->hide();
   addRecentFile(document_->fileName());
-  statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(document_->fileName())), kStatusTimeoutMs);
+  statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(document_->fileName())),
+                           kStatusTimeoutMs);
   return true;
 }
 
 bool MainWindow::maybeSave() {
   if (!document_->isModified()) return true;
-  QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
-                  tr("The project \"%1\" has unsaved changes. Do you want to save them?").arg(document_->displayName()),
-                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+  QMessageBox box(
+      QMessageBox::Warning, tr("Unsaved changes"),
+      tr("The project \"%1\" has unsaved changes. Do you want to save them?").arg(document_->displayName()),
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
   box.setObjectName(QStringLiteral("unsavedChangesBox"));
   box.button(QMessageBox::Save)->setText(tr("&Save"));
   box.button(QMessageBox::Discard)->setText(tr("&Discard"));
@@ -250,7 +267,8 @@ void MainWindow::newProject() {
 
 void MainWindow::open() {
   if (!maybeSave()) return;
-  const QString start = document_->fileName().isEmpty() ? QDir::homePath() : QFileInfo(document_->fileName()).path();
+  const QString start =
+      document_->fileName().isEmpty() ? QDir::homePath() : QFileInfo(document_->fileName()).path();
   const QString path = QFileDialog::getOpenFileName(this, tr("Open project"), start, tr(kProjectFilter));
   if (!path.isEmpty()) openProject(path);
 }
@@ -267,7 +285,8 @@ void MainWindow::openDemo() {
     return;
   }
   if (openProject(path)) {
-    statusBar()->showMessage(tr("Demo project copied to %1").arg(QDir::toNativeSeparators(folder)), kStatusTimeoutMs);
+    statusBar()->showMessage(tr("Demo project copied to %1").arg(QDir::toNativeSeparators(folder)),
+                             kStatusTimeoutMs);
   }
 }
 
@@ -280,14 +299,16 @@ bool MainWindow::save() {
     return false;
   }
   fileChangedBar_->hide();
-  statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->fileName())), kStatusTimeoutMs);
+  statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->fileName())),
+                           kStatusTimeoutMs);
   return true;
 }
 
 bool MainWindow::saveAs() {
-  const QString suggested = document_->fileName().isEmpty()
-                                ? QDir::home().filePath(document_->displayName() + QLatin1String(Project::kFileSuffix))
-                                : document_->fileName();
+  const QString suggested =
+      document_->fileName().isEmpty()
+          ? QDir::home().filePath(document_->displayName() + QLatin1String(Project::kFileSuffix))
+          : document_->fileName();
   QString path = QFileDialog::getSaveFileName(this, tr("Save project as"), suggested, tr(kProjectFilter));
   if (path.isEmpty()) return false;
   if (!path.endsWith(QLatin1String(Project::kFileSuffix))) path += QLatin1String(Project::kFileSuffix);
@@ -299,20 +320,22 @@ bool MainWindow::saveAs() {
   }
   fileChangedBar_->hide();
   addRecentFile(document_->fileName());
-  statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->fileName())), kStatusTimeoutMs);
+  statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->fileName())),
+                           kStatusTimeoutMs);
   return true;
 }
 
 void MainWindow::exportReport() {
   if (exporter_->isRunning()) return;
-  const QString base = document_->fileName().isEmpty() ? QDir::home().filePath(document_->displayName())
-                                                       : QFileInfo(document_->fileName()).path() + QLatin1Char('/') +
-                                                             QFileInfo(document_->fileName()).completeBaseName();
+  const QString base = document_->fileName().isEmpty()
+                           ? QDir::home().filePath(document_->displayName())
+                           : QFileInfo(document_->fileName()).path() + QLatin1Char('/') +
+                                 QFileInfo(document_->fileName()).completeBaseName();
   QString path = QFileDialog::getSaveFileName(this, tr("Export report"), base + QStringLiteral(".pdf"),
                                               tr("PDF documents (*.pdf)"));
   if (path.isEmpty()) return;
   if (!path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)) path += QStringLiteral(".pdf");
-  if (exporter_->start(document_->project(), document_->fileName(), path)) {
+  if (exporter_->start(*document_, path)) {
     exportAction_->setEnabled(false);
     statusBar()->showMessage(tr("Writing the report…"));
   }
@@ -321,21 +344,28 @@ void MainWindow::exportReport() {
 void MainWindow::preferences() {
   PreferencesDialog dialog(this);
   if (dialog.exec() != QDialog::Accepted) return;
-  if (dialog.apply()) statusBar()->showMessage(tr("The new language is applied at the next start."), kStatusTimeoutMs);
+  if (dialog.apply())
+    statusBar()->showMessage(tr("The new language is applied at the next start."), kStatusTimeoutMs);
 }
 
 void MainWindow::about() {
   QMessageBox::about(
       this, tr("About Metrofit"),
       tr("<h3>Metrofit %1</h3>"
-         "<p>A workbench for machining error compensation: setup-data correction, posture matching, kinematic "
-         "compensation with SPC, thermal error models, and the closed-loop diagnosis of what a model lacks.</p>"
+         "<p>A workbench for machining error compensation: setup-data correction, posture matching, "
+         "kinematic "
+         "compensation with SPC, thermal error models, and the closed-loop diagnosis of what a model "
+         "lacks.</p>"
          "<p>Licensed under the GNU General Public License, version 3 or later (GPL-3.0-or-later).</p>"
          "<p>Built with Qt %2 (Qt Widgets, Qt Charts), VTK, Eigen %3 and GLPK.</p>"
-         "<p>The real thermal log of the demo project comes from the CAIVIAC data set and is used under the MIT "
+         "<p>The real thermal log of the demo project comes from the CAIVIAC data set and is used under the "
+         "MIT "
          "licence.</p>")
           .arg(QString::fromLatin1(kVersion), QString::fromLatin1(qVersion()),
-               QStringLiteral("%1.%2.%3").arg(EIGEN_WORLD_VERSION).arg(EIGEN_MAJOR_VERSION).arg(EIGEN_MINOR_VERSION)));
+               QStringLiteral("%1.%2.%3")
+                   .arg(EIGEN_WORLD_VERSION)
+                   .arg(EIGEN_MAJOR_VERSION)
+                   .arg(EIGEN_MINOR_VERSION)));
 }
 
 void MainWindow::reloadFromDisk() {

@@ -73,7 +73,6 @@ class MainWindow : public QMainWindow {
   FileChangedBar* fileChangedBar_;
   ReportExporter* exporter_;
   QMenu* recentMenu_ = nullptr;
-  QAction* saveAction_ = nullptr;
   QAction* exportAction_ = nullptr;
   std::array<QAction*, kPageCount> pageActions_{};
 };

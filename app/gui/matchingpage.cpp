@@ -45,7 +45,8 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   title->setToolTip(studySummary(QString::fromLatin1(study::kMatching)));
 
   combo_->setObjectName(QStringLiteral("probePointsCombo"));
-  combo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  combo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  combo_->setMinimumContentsLength(16);
   info_->setWordWrap(true);
   info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   message_->setObjectName(QStringLiteral("matchingMessage"));
@@ -58,6 +59,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setAlternatingRowColors(true);
   table_->verticalHeader()->hide();
+  table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setStretchLastSection(true);
 
@@ -66,6 +68,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   content_->setStretchFactor(0, 3);
   content_->setStretchFactor(1, 1);
   content_->setChildrenCollapsible(false);
+  content_->setSizes({760, 300});
   view_->setMinimumSize(320, 240);
   table_->setMinimumWidth(260);
   stack_->addWidget(content_);
@@ -94,7 +97,9 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   refresh();
 }
 
-QString MatchingPage::currentDataset() const { return combo_->currentData().toString(); }
+QString MatchingPage::currentDataset() const {
+  return combo_->currentData().toString();
+}
 
 void MatchingPage::selectDataset(const QString& id) {
   const int index = combo_->findData(id);
@@ -115,13 +120,12 @@ void MatchingPage::refresh() {
     combo_->clear();
     for (const DatasetRef& d : sets_) {
       const QString id = QString::fromStdString(d.id);
-      const QString description = QString::fromStdString(d.description);
-      combo_->addItem(description.isEmpty() ? id : QStringLiteral("%1 — %2").arg(id, description), id);
+      combo_->addItem(id, id);
+      combo_->setItemData(combo_->count() - 1, QString::fromStdString(d.description), Qt::ToolTipRole);
     }
     const int keep = combo_->findData(previous);
     combo_->setCurrentIndex(keep >= 0 ? keep : 0);
   }
-  combo_->setEnabled(combo_->count() > 1);
   showPoints(combo_->currentIndex());
 }
 
@@ -129,8 +133,9 @@ void MatchingPage::showPoints(int comboIndex) {
   error_.clear();
   if (comboIndex < 0 || comboIndex >= static_cast<int>(sets_.size())) {
     info_->clear();
-    message_->setText(tr("This project has no probe points. Add a dataset of kind \"probe_points\" to the "
-                         "project file (id, surface, nominal point, normal, measured point)."));
+    message_->setText(
+        tr("This project has no probe points. Add a dataset of kind \"probe_points\" to the "
+           "project file (id, surface, nominal point, normal, measured point)."));
     stack_->setCurrentWidget(message_);
     return;
   }
@@ -157,13 +162,17 @@ void MatchingPage::showPoints(int comboIndex) {
       sumSquares += deviations[i] * deviations[i];
       maxAbs = std::max(maxAbs, std::abs(deviations[i]));
     }
-    const double rms = points.points.empty() ? 0.0 : std::sqrt(sumSquares / static_cast<double>(points.points.size()));
+    const double rms =
+        points.points.empty() ? 0.0 : std::sqrt(sumSquares / static_cast<double>(points.points.size()));
     QString info = tr("%1 points on %2 surfaces, %3. Before matching: RMS deviation %4 mm, largest %5 mm.")
                        .arg(points.points.size())
                        .arg(surfaces.size())
                        .arg(points.hasNormals ? tr("with normals") : tr("positions only"))
                        .arg(locale.toString(rms, 'f', 4), locale.toString(maxAbs, 'f', 4));
-    if (!dataset.licence.empty()) info += QLatin1Char(' ') + tr("Licence: %1.").arg(QString::fromStdString(dataset.licence));
+    if (!dataset.licence.empty())
+      info += QLatin1Char(' ') + tr("Licence: %1.").arg(QString::fromStdString(dataset.licence));
+    if (!dataset.description.empty())
+      info.prepend(QString::fromStdString(dataset.description) + QLatin1Char('\n'));
     info_->setText(info);
     stack_->setCurrentWidget(content_);
   } catch (const std::exception& e) {

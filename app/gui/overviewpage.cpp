@@ -78,7 +78,8 @@ void OverviewPage::refresh() {
   updating_ = false;
   const QString fileName = document_->fileName();
   file_->setText(fileName.isEmpty() ? tr("not saved yet") : QDir::toNativeSeparators(fileName));
-  if (shownDatasets_ != document_->project().datasets || shownFile_ != fileName || datasets_->rowCount() == 0) {
+  if (shownDatasets_ != document_->project().datasets || shownFile_ != fileName ||
+      datasets_->rowCount() == 0) {
     shownDatasets_ = document_->project().datasets;
     shownFile_ = fileName;
     datasets_->setDatasets(*document_, shownDatasets_);

@@ -41,7 +41,9 @@ PreferencesDialog::PreferencesDialog(QWidget* parent) : QDialog(parent), languag
   layout->addWidget(buttons);
 }
 
-QString PreferencesDialog::language() const { return language_->currentData().toString(); }
+QString PreferencesDialog::language() const {
+  return language_->currentData().toString();
+}
 
 bool PreferencesDialog::apply() {
   const bool changed = language() != languageSetting();

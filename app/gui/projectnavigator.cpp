@@ -16,7 +16,8 @@ ProjectNavigator::ProjectNavigator(ProjectDocument* document, QWidget* parent)
   setUniformRowHeights(true);
   connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* current) {
     if (!current) return;
-    emit pageActivated(static_cast<Page>(current->data(0, PageRole).toInt()), current->data(0, DatasetRole).toString());
+    emit pageActivated(static_cast<Page>(current->data(0, PageRole).toInt()),
+                       current->data(0, DatasetRole).toString());
   });
   connect(document_, &ProjectDocument::changed, this, &ProjectNavigator::refresh);
   rebuild();
@@ -46,16 +47,18 @@ void ProjectNavigator::refresh() {
     return;
   }
   root_->setText(0, document_->displayName());
+  root_->setToolTip(0, tr("%1: project overview (Ctrl+1)").arg(document_->displayName()));
 }
 
 void ProjectNavigator::rebuild() {
-  const Page page = currentItem() ? static_cast<Page>(currentItem()->data(0, PageRole).toInt()) : Page::Overview;
+  const Page page =
+      currentItem() ? static_cast<Page>(currentItem()->data(0, PageRole).toInt()) : Page::Overview;
   const QSignalBlocker blocker(this);
   clear();
   shown_ = document_->project().datasets;
   root_ = new QTreeWidgetItem(this, {document_->displayName()});
   root_->setData(0, PageRole, static_cast<int>(Page::Overview));
-  root_->setToolTip(0, tr("Project overview (Ctrl+1)"));
+  root_->setToolTip(0, tr("%1: project overview (Ctrl+1)").arg(document_->displayName()));
   QFont bold = root_->font(0);
   bold.setBold(true);
   root_->setFont(0, bold);

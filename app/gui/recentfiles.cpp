@@ -5,8 +5,10 @@
 
 namespace metrofit {
 namespace {
-QString key() { return QStringLiteral("recentFiles"); }
+QString key() {
+  return QStringLiteral("recentFiles");
 }
+}  // namespace
 
 QStringList recentFiles() {
   QSettings settings;
@@ -29,6 +31,8 @@ void addRecentFile(const QString& path) {
   QSettings().setValue(key(), files);
 }
 
-void clearRecentFiles() { QSettings().remove(key()); }
+void clearRecentFiles() {
+  QSettings().remove(key());
+}
 
 }  // namespace metrofit

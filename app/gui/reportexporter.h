@@ -1,43 +1,64 @@
 #pragma once
-// Writes the PDF report of a project (metrofit::writeReport) on a worker thread while a busy
-// progress dialog shows that the window is working. The worker gets a copy of the project.
-#include <QFutureWatcher>
+// Writes the PDF report of the open project without blocking the window: `metrofit-cli report`
+// (which calls metrofit::writeReport) runs as a child process while a busy progress dialog with a
+// Cancel button is shown.
+//
+// Why a process and not a worker thread: writeReport draws Qt Charts, and Qt Charts is not
+// thread-safe: ChartPresenter::textBoundingRect() lays out text in one static QGraphicsTextItem
+// shared by every chart in the process, so a report written on a worker thread while the window
+// shows charts crashes (seen in QTextDocument::setHtml under LegendMarkerItem::sizeHint).
+//
+// What is reported is what the user sees: a saved, unmodified project is passed as it is; otherwise
+// a snapshot of the document (dataset paths made absolute) is written to a temporary folder.
 #include <QObject>
+#include <QProcess>
 #include <QString>
+#include <memory>
 
 class QProgressDialog;
+class QTemporaryDir;
 class QWidget;
 
 namespace metrofit {
-class Project;
+class ProjectDocument;
 
 class ReportExporter : public QObject {
   Q_OBJECT
  public:
-  /// The outcome of one export: ok, and the one-line error or the summary.
-  struct Outcome {
-    bool ok = false;
-    QString message;
-    int pages = 0;
-  };
+  enum class Outcome { Written, Failed, Cancelled };
+  Q_ENUM(Outcome)
 
   explicit ReportExporter(QWidget* dialogParent);
   ~ReportExporter() override;
 
-  /// Starts writing; false when an export is already running.
-  bool start(const Project& project, const QString& projectPath, const QString& pdfPath);
-  bool isRunning() const { return watcher_.isRunning(); }
-  /// Blocks until the running export (if any) is done (used when the window closes).
-  void waitForFinished() { watcher_.waitForFinished(); }
+  /// The metrofit-cli executable (default: next to this program).
+  QString cliPath() const { return cliPath_; }
+  void setCliPath(const QString& path) { cliPath_ = path; }
+
+  /// Starts writing the report of the document to pdfPath; false when an export is already running.
+  /// The outcome arrives with finished().
+  bool start(const ProjectDocument& document, const QString& pdfPath);
+  bool isRunning() const { return process_ != nullptr; }
+  /// Stops a running export (finished(Cancelled, ...) follows).
+  void cancel();
+  /// Blocks until a running export is done (used when the window closes).
+  void waitForFinished();
 
  signals:
-  void finished(bool ok, const QString& message);
+  /// The outcome and a status line (Written, Cancelled) or the one-line error (Failed).
+  void finished(metrofit::ReportExporter::Outcome outcome, const QString& message);
 
  private:
+  void onProcessFinished(int exitCode, QProcess::ExitStatus status);
+  void finish(Outcome outcome, const QString& message);
+
   QWidget* dialogParent_;
-  QProgressDialog* progress_ = nullptr;
+  QString cliPath_;
   QString pdfPath_;
-  QFutureWatcher<Outcome> watcher_;
+  QProcess* process_ = nullptr;
+  QProgressDialog* progress_ = nullptr;
+  std::unique_ptr<QTemporaryDir> snapshot_;
+  bool cancelled_ = false;
 };
 
 }  // namespace metrofit

@@ -55,7 +55,8 @@ struct View {
 
 bool environmentHasXServer() {
   const QString platform = qEnvironmentVariable("QT_QPA_PLATFORM");
-  const bool xcb = platform.isEmpty() || platform == QLatin1String("xcb") || platform.startsWith(QLatin1String("xcb:"));
+  const bool xcb =
+      platform.isEmpty() || platform == QLatin1String("xcb") || platform.startsWith(QLatin1String("xcb:"));
   return xcb && !qEnvironmentVariableIsEmpty("DISPLAY");
 }
 
@@ -67,7 +68,8 @@ int runScreenshots(const QString& outDir, QTextStream& err) {
   }
   QTemporaryDir work;
   if (!work.isValid()) {
-    err << "metrofit: cannot create a temporary folder for the demo project: " << work.errorString() << Qt::endl;
+    err << "metrofit: cannot create a temporary folder for the demo project: " << work.errorString()
+        << Qt::endl;
     return 1;
   }
   QString projectPath;
@@ -116,14 +118,16 @@ int runScreenshots(const QString& outDir, QTextStream& err) {
     view.show(window);
     settle(kSettleMs);
     const QImage image = window.grab().toImage();
-    const QString file = dir + QStringLiteral("/%1-%2.png").arg(number++, 2, 10, QLatin1Char('0')).arg(view.name);
+    const QString file =
+        dir + QStringLiteral("/%1-%2.png").arg(number++, 2, 10, QLatin1Char('0')).arg(view.name);
     if (image.isNull() || !image.save(file, "PNG")) {
       err << "metrofit: cannot write the screenshot " << QDir::toNativeSeparators(file) << Qt::endl;
       return 1;
     }
   }
   window.thermalPage()->selectDataset(firstLog);
-  err << "metrofit: " << views.size() << " screenshots written to " << QDir::toNativeSeparators(dir) << Qt::endl;
+  err << "metrofit: " << views.size() << " screenshots written to " << QDir::toNativeSeparators(dir)
+      << Qt::endl;
   return 0;
 }
 

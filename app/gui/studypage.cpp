@@ -15,7 +15,8 @@ StudyPage::StudyPage(ProjectDocument* document, const QString& study, QWidget* p
       document_(document),
       study_(study),
       noData_(new QLabel(this)),
-      datasets_(new DatasetTable(this)) {
+      datasets_(new DatasetTable(this)),
+      filler_(new QWidget(this)) {
   auto* title = new QLabel(studyTitle(study), this);
   QFont titleFont = title->font();
   titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
@@ -54,6 +55,9 @@ StudyPage::StudyPage(ProjectDocument* document, const QString& study, QWidget* p
   layout->addWidget(sectionLabel(tr("Datasets")));
   layout->addWidget(noData_);
   layout->addWidget(datasets_, 1);
+  // Takes the table's room when there is nothing to list, so the page keeps its shape.
+  filler_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
+  layout->addWidget(filler_, 1);
   layout->addWidget(sectionLabel(tr("Notes")));
   auto* notes = new NotesEdit(document_, study_, this);
   notes->setMaximumHeight(110);
@@ -74,7 +78,7 @@ std::vector<DatasetRef> StudyPage::studyDatasets() const {
 
 void StudyPage::refresh() {
   std::vector<DatasetRef> datasets = studyDatasets();
-  if (datasets == shown_ && datasets_->rowCount() == static_cast<int>(datasets.size())) return;
+  if (datasets == shown_ && !noData_->text().isEmpty()) return;
   shown_ = std::move(datasets);
   datasets_->setDatasets(*document_, shown_);
   QStringList kinds;
@@ -83,6 +87,7 @@ void StudyPage::refresh() {
                                         .arg(kinds.join(QStringLiteral(", ")))
                                   : tr("Data this study uses: %1.").arg(kinds.join(QStringLiteral(", "))));
   datasets_->setVisible(!shown_.empty());
+  filler_->setVisible(shown_.empty());
 }
 
 }  // namespace metrofit

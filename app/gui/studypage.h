@@ -28,6 +28,7 @@ class StudyPage : public QWidget {
   QString study_;
   QLabel* noData_;
   DatasetTable* datasets_;
+  QWidget* filler_;
   std::vector<DatasetRef> shown_;
 };
 

@@ -33,7 +33,8 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   title->setToolTip(studySummary(QString::fromLatin1(study::kThermal)));
 
   combo_->setObjectName(QStringLiteral("thermalLogCombo"));
-  combo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  combo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  combo_->setMinimumContentsLength(16);
   info_->setWordWrap(true);
   info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   message_->setObjectName(QStringLiteral("thermalMessage"));
@@ -66,7 +67,9 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   refresh();
 }
 
-QString ThermalPage::currentDataset() const { return combo_->currentData().toString(); }
+QString ThermalPage::currentDataset() const {
+  return combo_->currentData().toString();
+}
 
 void ThermalPage::selectDataset(const QString& id) {
   const int index = combo_->findData(id);
@@ -88,13 +91,12 @@ void ThermalPage::refresh() {
     combo_->clear();
     for (const DatasetRef& d : logs_) {
       const QString id = QString::fromStdString(d.id);
-      const QString description = QString::fromStdString(d.description);
-      combo_->addItem(description.isEmpty() ? id : QStringLiteral("%1 — %2").arg(id, description), id);
+      combo_->addItem(id, id);
+      combo_->setItemData(combo_->count() - 1, QString::fromStdString(d.description), Qt::ToolTipRole);
     }
     const int keep = combo_->findData(previous);
     combo_->setCurrentIndex(keep >= 0 ? keep : 0);
   }
-  combo_->setEnabled(combo_->count() > 1);
   showLog(combo_->currentIndex());
 }
 
@@ -102,8 +104,9 @@ void ThermalPage::showLog(int comboIndex) {
   error_.clear();
   if (comboIndex < 0 || comboIndex >= static_cast<int>(logs_.size())) {
     info_->clear();
-    message_->setText(tr("This project has no thermal log. Add a dataset of kind \"thermal_log\" to the project "
-                         "file (a time column, sensor columns and the displacement)."));
+    message_->setText(
+        tr("This project has no thermal log. Add a dataset of kind \"thermal_log\" to the project "
+           "file (a time column, sensor columns and the displacement)."));
     stack_->setCurrentWidget(message_);
     return;
   }
@@ -118,7 +121,10 @@ void ThermalPage::showLog(int comboIndex) {
                        .arg(log.rows())
                        .arg(log.channels.size())
                        .arg(locale.toString(spanMin / 60.0, 'f', 1));
-    if (!dataset.licence.empty()) info += QLatin1Char(' ') + tr("Licence: %1.").arg(QString::fromStdString(dataset.licence));
+    if (!dataset.licence.empty())
+      info += QLatin1Char(' ') + tr("Licence: %1.").arg(QString::fromStdString(dataset.licence));
+    if (!dataset.description.empty())
+      info.prepend(QString::fromStdString(dataset.description) + QLatin1Char('\n'));
     info_->setText(info);
     stack_->setCurrentWidget(trend_);
   } catch (const std::exception& e) {

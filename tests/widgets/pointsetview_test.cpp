@@ -6,11 +6,12 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QFile>
 #include <QImage>
 #include <QMouseEvent>
-#include <QOpenGLWidget>
 #include <QSet>
 #include <QSurfaceFormat>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QWheelEvent>
 #include <algorithm>
@@ -32,20 +33,19 @@ using Vec3 = Eigen::Vector3d;
 constexpr double kMaxDeviation = 0.05;  // mm
 
 /// 200 points on the six faces of the block [0,100] x [0,60] x [0,40] (mm) with outward normals.
-/// Deviation along the normal of point i: 0.05 * cos(2 pi i / 25), so exactly +-0.05 occur; the
+/// Deviation along the normal of point i: 0.05 * cos(2 pi i / 20), so exactly +-0.05 occur; the
 /// measured points also carry a 0.02 mm tangential offset that is not a deviation.
 ProbePointSet blockPoints() {
   struct Face {
     Vec3 origin, u, v, normal;
     int nu, nv;
   };
-  const Face faces[] = {
-      {{0, 0, 40}, {100, 0, 0}, {0, 60, 0}, {0, 0, 1}, 8, 5},   // top
-      {{0, 0, 0}, {100, 0, 0}, {0, 60, 0}, {0, 0, -1}, 8, 5},   // bottom
-      {{0, 0, 0}, {100, 0, 0}, {0, 0, 40}, {0, -1, 0}, 8, 4},   // front (y = 0)
-      {{0, 60, 0}, {100, 0, 0}, {0, 0, 40}, {0, 1, 0}, 8, 4},   // back
-      {{0, 0, 0}, {0, 60, 0}, {0, 0, 40}, {-1, 0, 0}, 7, 4},    // left (x = 0)
-      {{100, 0, 0}, {0, 60, 0}, {0, 0, 40}, {1, 0, 0}, 7, 4}};  // right
+  const Face faces[] = {{{0, 0, 40}, {100, 0, 0}, {0, 60, 0}, {0, 0, 1}, 8, 5},   // top
+                        {{0, 0, 0}, {100, 0, 0}, {0, 60, 0}, {0, 0, -1}, 8, 5},   // bottom
+                        {{0, 0, 0}, {100, 0, 0}, {0, 0, 40}, {0, -1, 0}, 8, 4},   // front (y = 0)
+                        {{0, 60, 0}, {100, 0, 0}, {0, 0, 40}, {0, 1, 0}, 8, 4},   // back
+                        {{0, 0, 0}, {0, 60, 0}, {0, 0, 40}, {-1, 0, 0}, 7, 4},    // left (x = 0)
+                        {{100, 0, 0}, {0, 60, 0}, {0, 0, 40}, {1, 0, 0}, 7, 4}};  // right
   ProbePointSet set;
   set.source = "synthetic block";
   set.hasNormals = true;
@@ -58,7 +58,8 @@ ProbePointSet blockPoints() {
         p.surface = "face";
         p.nominal = f.origin + (a + 0.5) / f.nu * f.u + (b + 0.5) / f.nv * f.v;
         p.normal = f.normal;
-        const double deviation = kMaxDeviation * std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / 25.0);
+        const double deviation =
+            kMaxDeviation * std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / 20.0);
         p.measured = p.nominal + deviation * p.normal + 0.02 * f.u.normalized();
         set.points.push_back(p);
       }
@@ -81,17 +82,24 @@ int countNear(const QImage& image, Rgb colour, int tolerance, const QRect& area)
   int count = 0;
   const QRect r = area.intersected(image.rect());
   for (int y = r.top(); y <= r.bottom(); ++y) {
-    for (int x = r.left(); x <= r.right(); ++x) count += near(image.pixel(x, y), colour, tolerance) ? 1 : 0;
+    for (int x = r.left(); x <= r.right(); ++x) {
+      count += near(image.pixel(x, y), colour, tolerance) ? 1 : 0;
+    }
   }
   return count;
 }
 
 int countDifferent(const QImage& a, const QImage& b) {
   EXPECT_EQ(a.size(), b.size());
-  if (a.size() != b.size()) return -1;
+  if (a.size() != b.size()) {
+    return -1;
+  }
   int count = 0;
   for (int y = 0; y < a.height(); ++y) {
-    for (int x = 0; x < a.width(); ++x) count += near(a.pixel(x, y), {qRed(b.pixel(x, y)), qGreen(b.pixel(x, y)), qBlue(b.pixel(x, y))}, 8) ? 0 : 1;
+    for (int x = 0; x < a.width(); ++x) {
+      count +=
+          near(a.pixel(x, y), {qRed(b.pixel(x, y)), qGreen(b.pixel(x, y)), qBlue(b.pixel(x, y))}, 8) ? 0 : 1;
+    }
   }
   return count;
 }
@@ -106,26 +114,50 @@ constexpr Rgb kBlueEnd{59, 76, 192};
 constexpr Rgb kWhite{255, 255, 255};
 constexpr int kColourTolerance = 30;
 
-class PointSetViewTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    static int argc = 1;
-    static char name[] = "pointsetview_test";
-    static char* argv[] = {name, nullptr};
-    if (QApplication::instance() == nullptr) {
-      // The GL format must be the default before the QApplication exists (VTK-QT6.md).
-      QSurfaceFormat::setDefaultFormat(PointSetView::surfaceFormat());
-      static QApplication app(argc, argv);
+/// Owns the QApplication for the whole run and destroys it before main() returns (a function-local
+/// static QApplication is destroyed after Qt's own globals and crashes at exit).
+class QtApplicationEnvironment : public ::testing::Environment {
+ public:
+  void SetUp() override {
+    // The GL format must be the default before the QApplication exists (VTK-QT6.md).
+    QSurfaceFormat::setDefaultFormat(PointSetView::surfaceFormat());
+    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+      runtime_ = std::make_unique<QTemporaryDir>();  // mode 0700, as Qt wants it
+      ASSERT_TRUE(runtime_->isValid());
+      qputenv("XDG_RUNTIME_DIR", QFile::encodeName(runtime_->path()));
     }
+    app_ = std::make_unique<QApplication>(argc_, argv_);
+  }
+  void TearDown() override {
+    app_.reset();
+    runtime_.reset();
   }
 
+ private:
+  int argc_ = 1;
+  char name_[18] = "pointsetview_test";
+  char* argv_[2] = {name_, nullptr};
+  std::unique_ptr<QTemporaryDir> runtime_;
+  std::unique_ptr<QApplication> app_;
+};
+
+[[maybe_unused]] ::testing::Environment* const kQtEnvironment =
+    ::testing::AddGlobalTestEnvironment(new QtApplicationEnvironment);
+
+class PointSetViewTest : public ::testing::Test {
+ protected:
   void SetUp() override {
     ASSERT_TRUE(PointSetView::canRender3D()) << "run under xvfb-run with QT_QPA_PLATFORM=xcb";
     view = std::make_unique<PointSetView>();
     view->resize(800, 600);
     view->show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(view.get()));
-    gl = view->findChild<QOpenGLWidget*>();
+    // The GL widget is private to the view: find it by its class (no OpenGLWidgets link needed).
+    for (QWidget* child : view->findChildren<QWidget*>()) {
+      if (child->inherits("QOpenGLWidget")) {
+        gl = child;
+      }
+    }
     ASSERT_NE(gl, nullptr);
     points = blockPoints();
     view->setPoints(points);
@@ -155,8 +187,8 @@ class PointSetViewTest : public ::testing::Test {
 
   void wheel(int angleDelta) {
     const QPoint at = gl->rect().center();
-    QWheelEvent event(QPointF(at), QPointF(gl->mapToGlobal(at)), QPoint(), QPoint(0, angleDelta), Qt::NoButton,
-                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QWheelEvent event(QPointF(at), QPointF(gl->mapToGlobal(at)), QPoint(), QPoint(0, angleDelta),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
     QCoreApplication::sendEvent(gl, &event);
     QCoreApplication::processEvents();
   }
@@ -165,7 +197,7 @@ class PointSetViewTest : public ::testing::Test {
 
   ProbePointSet points;
   std::unique_ptr<PointSetView> view;
-  QOpenGLWidget* gl = nullptr;
+  QWidget* gl = nullptr;
 };
 
 TEST_F(PointSetViewTest, SyntheticBlockShowsDeviationColoursOnLightBackground) {
@@ -196,7 +228,7 @@ TEST_F(PointSetViewTest, SyntheticBlockShowsDeviationColoursOnLightBackground) {
                          countNear(image, kRedEnd, kColourTolerance, lowerScene);
   const int blueInScene = countNear(image, kBlueEnd, kColourTolerance, upperScene) +
                           countNear(image, kBlueEnd, kColourTolerance, lowerScene);
-  // 16 points have |deviation| = 0.05 and more lie within the tolerance: each sphere is ~60 px.
+  // 20 points have |deviation| = 0.05 and more lie within the tolerance: each sphere is ~60 px.
   EXPECT_GE(redInScene, 100);
   EXPECT_GE(blueInScene, 100);
   EXPECT_GE(countNear(image, kRedEnd, kColourTolerance, scalarBar), 50);
@@ -208,7 +240,9 @@ TEST_F(PointSetViewTest, SyntheticBlockShowsDeviationColoursOnLightBackground) {
   // Not uniform, and not just background and two colours.
   QSet<QRgb> distinct;
   for (int y = 0; y < h; y += 2) {
-    for (int x = 0; x < w; x += 2) distinct.insert(image.pixel(x, y));
+    for (int x = 0; x < w; x += 2) {
+      distinct.insert(image.pixel(x, y));
+    }
   }
   EXPECT_GT(distinct.size(), 50);
 
@@ -274,9 +308,13 @@ TEST_F(PointSetViewTest, AfterStateChangesImageAndResetCameraRestoresView) {
   view->setAfter(transformed, devAfter);
   const QImage after = render();
   EXPECT_GT(countDifferent(before, after), 500);
+  const QString outDir = qEnvironmentVariable("METROFIT_TEST_OUT", QDir::tempPath());
+  QDir().mkpath(outDir);
+  EXPECT_TRUE(after.save(QDir(outDir).filePath("pointsetview_block_after.png")));
   // The red end of the map is gone from the scene at full strength once the "before" fades.
   const QRect scene(0, 0, static_cast<int>(0.84 * after.width()), static_cast<int>(0.76 * after.height()));
-  EXPECT_LT(countNear(after, kRedEnd, kColourTolerance, scene), countNear(before, kRedEnd, kColourTolerance, scene) / 4);
+  EXPECT_LT(countNear(after, kRedEnd, kColourTolerance, scene),
+            countNear(before, kRedEnd, kColourTolerance, scene) / 4);
   // setAfter does not move the camera.
   EXPECT_LT(distance(view->cameraPosition(), position0), 1e-9);
 
@@ -300,6 +338,58 @@ TEST_F(PointSetViewTest, AfterStateChangesImageAndResetCameraRestoresView) {
   EXPECT_LT(distance(view->cameraPosition(), position0), 1e-6 * d0);
   EXPECT_LT(distance(view->cameraFocalPoint(), focal0), 1e-6 * d0);
   EXPECT_LE(countDifferent(before, render()), 20);
+}
+
+// The report renders the view into an image without showing it on screen.
+TEST(PointSetViewHiddenTest, RendersWithoutBeingShown) {
+  ASSERT_TRUE(PointSetView::canRender3D());
+  PointSetView view;
+  view.resize(640, 480);
+  view.setPoints(blockPoints());
+  const QImage image = view.renderImage();
+  ASSERT_FALSE(image.isNull());
+  EXPECT_EQ(image.size(), QSize(640, 480));
+  const QString outDir = qEnvironmentVariable("METROFIT_TEST_OUT", QDir::tempPath());
+  QDir().mkpath(outDir);
+  EXPECT_TRUE(image.save(QDir(outDir).filePath("pointsetview_hidden.png")));
+  EXPECT_GE(countNear(image, kRedEnd, kColourTolerance, image.rect()), 100);
+  EXPECT_GE(countNear(image, kBlueEnd, kColourTolerance, image.rect()), 100);
+  EXPECT_GT(countNear(image, kWhite, 4, image.rect()), image.width() * image.height() / 2);
+}
+
+// A view that never rendered is destroyed cleanly; so is one destroyed right after its first frame.
+TEST(PointSetViewHiddenTest, DestroysCleanly) {
+  { PointSetView neverShown; }
+  {
+    PointSetView view;
+    view.setPoints(blockPoints());
+    view.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    EXPECT_FALSE(view.renderImage().isNull());
+  }
+}
+
+// Moving the view to another top-level window (a floating dock) gives it a new GL context.
+TEST(PointSetViewHiddenTest, RendersAfterMovingToAnotherWindow) {
+  QWidget first;
+  QWidget second;
+  auto* view = new PointSetView(&first);
+  view->resize(400, 300);
+  view->setPoints(blockPoints());
+  first.resize(400, 300);
+  first.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&first));
+  ASSERT_FALSE(view->renderImage().isNull());
+
+  view->setParent(&second);
+  view->show();
+  second.resize(400, 300);
+  second.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&second));
+  const QImage image = view->renderImage();
+  ASSERT_FALSE(image.isNull());
+  EXPECT_GE(countNear(image, kRedEnd, kColourTolerance, image.rect()), 50);
+  EXPECT_GE(countNear(image, kBlueEnd, kColourTolerance, image.rect()), 50);
 }
 
 }  // namespace

@@ -14,7 +14,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <vector>
 
 #include "core/thermal/thermal_log.h"
@@ -29,6 +28,7 @@ struct ThermalChartsText {
 constexpr double kHoursThresholdMin = 180.0;
 constexpr int kMaxDefaultTemperatures = 8;
 constexpr int kTargetTicks = 6;
+constexpr int kMaxLegendRow = 8;  ///< legend entries that still fit in one row below the plot
 
 // Temperatures: Tableau-like hues. Other channels: darker, distinct hues, drawn dashed.
 constexpr std::array<QRgb, 10> kTemperaturePalette = {0xd62728, 0xff7f0e, 0x2ca02c, 0x1f77b4, 0x9467bd,
@@ -39,22 +39,32 @@ constexpr std::array<QRgb, 7> kOtherPalette = {0x202020, 0xb8007a, 0x3b6e00, 0x4
 /// Sort rank of an axis group: temperatures first (left), speed last (outermost on the right).
 int kindRank(ChannelKind kind) {
   switch (kind) {
-    case ChannelKind::Temperature: return 0;
-    case ChannelKind::Displacement: return 1;
-    case ChannelKind::Strain: return 2;
-    case ChannelKind::Other: return 3;
-    case ChannelKind::Speed: return 4;
+    case ChannelKind::Temperature:
+      return 0;
+    case ChannelKind::Displacement:
+      return 1;
+    case ChannelKind::Strain:
+      return 2;
+    case ChannelKind::Other:
+      return 3;
+    case ChannelKind::Speed:
+      return 4;
   }
   return 3;
 }
 
 QString kindWord(ChannelKind kind) {
   switch (kind) {
-    case ChannelKind::Temperature: return ThermalChartsText::tr("temperature");
-    case ChannelKind::Displacement: return ThermalChartsText::tr("displacement");
-    case ChannelKind::Strain: return ThermalChartsText::tr("strain");
-    case ChannelKind::Speed: return ThermalChartsText::tr("speed");
-    case ChannelKind::Other: break;
+    case ChannelKind::Temperature:
+      return ThermalChartsText::tr("temperature");
+    case ChannelKind::Displacement:
+      return ThermalChartsText::tr("displacement");
+    case ChannelKind::Strain:
+      return ThermalChartsText::tr("strain");
+    case ChannelKind::Speed:
+      return ThermalChartsText::tr("speed");
+    case ChannelKind::Other:
+      break;
   }
   return ThermalChartsText::tr("value");
 }
@@ -166,16 +176,18 @@ QColor thermalPhaseColor(ThermalPhaseKind kind) {
 }
 
 QString displayUnit(const std::string& unit) {
-  if (unit == "um") {
+  QString u = QString::fromStdString(unit);
+  const QString key = u.toLower();
+  if (key == QLatin1String("um")) {
     return QStringLiteral("µm");
   }
-  if (unit == "degC" || unit == "C") {
+  if (key == QLatin1String("degc") || key == QLatin1String("c")) {
     return QStringLiteral("°C");
   }
-  if (unit == "ustrain" || unit == "ue") {
+  if (key == QLatin1String("ue") || key == QLatin1String("microstrain")) {
     return QStringLiteral("µε");
   }
-  return QString::fromStdString(unit);
+  return u;
 }
 
 QString channelAxisTitle(const ThermalChannel& channel) {
@@ -200,7 +212,6 @@ QChart* makeThermalTrendChart(const ThermalLog& log, const QStringList& channels
   if (!options.title.isEmpty()) {
     chart->setTitle(options.title);
   }
-  chart->legend()->setAlignment(Qt::AlignBottom);
 
   const bool hours = thermalTimeAxisInHours(log);
   const double timeScale = hours ? 1.0 / 60.0 : 1.0;
@@ -238,8 +249,9 @@ QChart* makeThermalTrendChart(const ThermalLog& log, const QStringList& channels
     }
     it->channels.push_back(i);
   }
-  std::stable_sort(groups.begin(), groups.end(),
-                   [](const AxisGroup& a, const AxisGroup& b) { return kindRank(a.kind) < kindRank(b.kind); });
+  std::stable_sort(groups.begin(), groups.end(), [](const AxisGroup& a, const AxisGroup& b) {
+    return kindRank(a.kind) < kindRank(b.kind);
+  });
 
   // Phase bands first, so the lines are drawn over them; on a hidden 0..1 axis spanning the plot.
   if (options.shadePhases && log.rows() >= 3) {
@@ -296,8 +308,8 @@ QChart* makeThermalTrendChart(const ThermalLog& log, const QStringList& channels
     }
     for (int index : group.channels) {
       const ThermalChannel& c = log.channels[index];
-      const std::vector<std::size_t> rows =
-          decimateMinMax(log.timeMin, c.values, static_cast<std::size_t>(std::max(4, options.maxPointsPerSeries)));
+      const std::vector<std::size_t> rows = decimateMinMax(
+          log.timeMin, c.values, static_cast<std::size_t>(std::max(4, options.maxPointsPerSeries)));
       QList<QPointF> points;
       points.reserve(static_cast<qsizetype>(rows.size()));
       for (std::size_t row : rows) {
@@ -320,13 +332,15 @@ QChart* makeThermalTrendChart(const ThermalLog& log, const QStringList& channels
   }
 
   // Legend: channel entries only when asked for; hidden when there is nothing to explain.
-  bool anyMarker = false;
+  // Many entries do not fit in one row below the plot (Qt Charts elides them): list them on the right.
+  int markers = 0;
   for (QLegendMarker* marker : chart->legend()->markers()) {
-    const bool band = marker->type() == QLegendMarker::LegendMarkerTypeArea;
-    marker->setVisible(band || options.channelLegend);
-    anyMarker = anyMarker || band || options.channelLegend;
+    const bool visible = marker->type() == QLegendMarker::LegendMarkerTypeArea || options.channelLegend;
+    marker->setVisible(visible);
+    markers += visible ? 1 : 0;
   }
-  chart->legend()->setVisible(anyMarker);
+  chart->legend()->setVisible(markers > 0);
+  chart->legend()->setAlignment(markers > kMaxLegendRow ? Qt::AlignRight : Qt::AlignBottom);
   return chart;
 }
 

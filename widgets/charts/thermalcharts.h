@@ -45,7 +45,7 @@ QColor thermalChannelColor(const ThermalLog& log, int channelIndex);
 /// Fill colour of the background band of a phase (opaque, light).
 QColor thermalPhaseColor(ThermalPhaseKind kind);
 
-/// Unit of a channel as printed: "um" -> "µm", "degC" -> "°C", "mm" -> "mm", "" -> "".
+/// Unit of a channel as printed: "um" -> "µm", "degC" -> "°C", "ue" -> "µε", others as they are.
 QString displayUnit(const std::string& unit);
 
 /// Axis title of a channel: "temperature (°C)", "displacement (µm)", "speed (rpm)", ...

@@ -89,7 +89,7 @@ ThermalTrendView::ThermalTrendView(QWidget* parent) : QWidget(parent), d(std::ma
   side->addWidget(d->channelList, 1);
 
   auto* layout = new QHBoxLayout(this);
-  layout->setContentsMargins(0, 0, 0, 0);
+  layout->setContentsMargins(4, 4, 4, 4);
   layout->addWidget(d->chartView, 1);
   layout->addLayout(side);
 
@@ -114,8 +114,9 @@ void ThermalTrendView::setLog(const ThermalLog& log) {
     for (int i = 0; i < static_cast<int>(log.channels.size()); ++i) {
       const ThermalChannel& c = log.channels[i];
       const QString name = QString::fromStdString(c.name);
-      auto* item = new QListWidgetItem(
-          swatch(thermalChannelColor(log, i), channelKind(c) != ChannelKind::Temperature), name, d->channelList);
+      auto* item =
+          new QListWidgetItem(swatch(thermalChannelColor(log, i), channelKind(c) != ChannelKind::Temperature),
+                              name, d->channelList);
       item->setData(Qt::UserRole, name);
       item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable | Qt::ItemIsSelectable);
       item->setToolTip(channelAxisTitle(c));
@@ -127,7 +128,9 @@ void ThermalTrendView::setLog(const ThermalLog& log) {
   emit visibleChannelsChanged(d->visible);
 }
 
-QStringList ThermalTrendView::visibleChannels() const { return d->visible; }
+QStringList ThermalTrendView::visibleChannels() const {
+  return d->visible;
+}
 
 void ThermalTrendView::setVisibleChannels(const QStringList& names) {
   d->setChecks(names);

@@ -2,6 +2,7 @@
 #include "widgets/charts/trendanalysis.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <numeric>
 
@@ -51,14 +52,16 @@ void mergeEqualNeighbours(std::vector<Run>& runs) {
 }
 
 /// Absorbs runs shorter than minDuration into their longer neighbour, shortest first; idle runs at
-/// either end are kept. Every step removes at least one run, so this terminates.
-void absorbShortRuns(const std::vector<double>& t, std::vector<Run>& runs, double minDuration) {
+/// either end are kept, and so is any end run when keepEndRuns. Every step removes at least one
+/// run, so this terminates.
+void absorbShortRuns(const std::vector<double>& t, std::vector<Run>& runs, double minDuration,
+                     bool keepEndRuns) {
   while (runs.size() > 1) {
     std::size_t shortest = runs.size();
     double shortestDuration = minDuration;
     for (std::size_t k = 0; k < runs.size(); ++k) {
       const bool atEnd = k == 0 || k + 1 == runs.size();
-      if (atEnd && runs[k].label == 0) {
+      if (atEnd && (keepEndRuns || runs[k].label == 0)) {
         continue;
       }
       const double duration = runEnd(t, runs[k]) - runStart(t, runs[k]);
@@ -183,8 +186,8 @@ std::vector<double> localSlope(const std::vector<double>& timeMin, const std::ve
   return slope;
 }
 
-std::vector<ThermalPhase> phasesFromSlope(const std::vector<double>& timeMin, const std::vector<double>& value,
-                                          const PhaseOptions& options) {
+std::vector<ThermalPhase> phasesFromSlope(const std::vector<double>& timeMin,
+                                          const std::vector<double>& value, const PhaseOptions& options) {
   if (!usable(timeMin, value)) {
     return {};
   }
@@ -208,7 +211,7 @@ std::vector<ThermalPhase> phasesFromSlope(const std::vector<double>& timeMin, co
   }
   std::vector<Run> runs = runsOf(labels);
   const double minDuration = options.minPhaseFraction * span;
-  absorbShortRuns(timeMin, runs, minDuration);
+  absorbShortRuns(timeMin, runs, minDuration, false);
 
   // A phase must change the smoothed signal by at least minPhaseChange: integrate the slope.
   bool dropped = false;
@@ -229,13 +232,13 @@ std::vector<ThermalPhase> phasesFromSlope(const std::vector<double>& timeMin, co
   }
   if (dropped) {
     mergeEqualNeighbours(runs);
-    absorbShortRuns(timeMin, runs, minDuration);
+    absorbShortRuns(timeMin, runs, minDuration, false);
   }
   return phasesOf(timeMin, runs);
 }
 
-std::vector<ThermalPhase> phasesFromSpeed(const std::vector<double>& timeMin, const std::vector<double>& speed,
-                                          const PhaseOptions& options) {
+std::vector<ThermalPhase> phasesFromSpeed(const std::vector<double>& timeMin,
+                                          const std::vector<double>& speed, const PhaseOptions& options) {
   if (!usable(timeMin, speed)) {
     return {};
   }
@@ -255,27 +258,37 @@ std::vector<ThermalPhase> phasesFromSpeed(const std::vector<double>& timeMin, co
     labels[i] = running ? 1 : (ranBefore ? -1 : 0);
   }
   std::vector<Run> runs = runsOf(labels);
-  absorbShortRuns(timeMin, runs, options.minPhaseFraction * (timeMin.back() - timeMin.front()));
+  // A stop or start at either end of the log is real, however short: keep end runs.
+  absorbShortRuns(timeMin, runs, options.minPhaseFraction * (timeMin.back() - timeMin.front()), true);
   return phasesOf(timeMin, runs);
 }
 
 std::vector<double> meanTemperature(const ThermalLog& log) {
-  std::vector<double> mean;
-  int count = 0;
+  const auto isAmbient = [](const ThermalChannel& c) {
+    std::string name = c.name;
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    return name.find("amb") != std::string::npos;
+  };
+  std::vector<const ThermalChannel*> machine;
+  std::vector<const ThermalChannel*> ambient;
   for (const ThermalChannel& c : log.channels) {
-    if (channelKind(c) != ChannelKind::Temperature || c.values.size() != log.rows()) {
-      continue;
+    if (channelKind(c) == ChannelKind::Temperature && c.values.size() == log.rows()) {
+      (isAmbient(c) ? ambient : machine).push_back(&c);
     }
-    if (mean.empty()) {
-      mean.assign(log.rows(), 0.0);
-    }
+  }
+  const std::vector<const ThermalChannel*>& used = machine.empty() ? ambient : machine;
+  if (used.empty()) {
+    return {};
+  }
+  std::vector<double> mean(log.rows(), 0.0);
+  for (const ThermalChannel* c : used) {
     for (std::size_t i = 0; i < mean.size(); ++i) {
-      mean[i] += c.values[i];
+      mean[i] += c->values[i];
     }
-    ++count;
   }
   for (double& m : mean) {
-    m /= count;
+    m /= static_cast<double>(used.size());
   }
   return mean;
 }

@@ -8,14 +8,17 @@
 //    a row is "running" when |speed| > speedOnFraction * max|speed|. Running intervals are heating
 //    phases, stopped intervals that follow a running one are cooling phases; an idle start is
 //    neither.
-//  * Otherwise from the mean temperature T(t) of the temperature channels: the local slope s_i is
-//    the least-squares slope of T over the rows with |t - t_i| <= w/2 (a moving linear fit, which
-//    smooths and differentiates in one step), with w = max(smoothingFraction * span, 4 * median
-//    row spacing). With S = the 95th percentile of |s|, a row is heating when s_i > slopeDeadBand * S,
-//    cooling when s_i < -slopeDeadBand * S, and neither otherwise.
+//  * Otherwise from the mean temperature T(t) of the machine's temperature channels (ambient
+//    sensors left out, see meanTemperature): the local slope s_i is the least-squares slope of T
+//    over the rows with |t - t_i| <= w/2 (a moving linear fit, which smooths and differentiates in
+//    one step), with w = max(smoothingFraction * span, 4 * median row spacing). With S = the 95th
+//    percentile of |s|, a row is heating when s_i > slopeDeadBand * S, cooling when
+//    s_i < -slopeDeadBand * S, and neither otherwise. A slope phase whose integrated change
+//    sum(s_i * dt_i) is smaller than minPhaseChange (degC) is noise and counts as neither.
 // In both cases a run of equally labelled rows shorter than minPhaseFraction * span is absorbed
 // into its longer neighbour (noise flicker, a short tool change), shortest first; an idle run at
-// either end of the log is kept. Boundaries lie halfway between the rows where the label changes.
+// either end of the log is kept, and with a speed channel every end run is kept (a short final
+// stop is a real cooling start). Boundaries lie halfway between the rows where the label changes.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -36,8 +39,8 @@ struct ThermalPhase {
 enum class PhaseSource { None, Speed, TemperatureSlope };
 
 struct PhaseOptions {
-  double smoothingFraction = 0.02;  ///< slope window as a fraction of the log's time span
-  double slopeDeadBand = 0.05;      ///< |slope| below this fraction of its 95th percentile is neither
+  double smoothingFraction = 0.03;  ///< slope window as a fraction of the log's time span
+  double slopeDeadBand = 0.01;      ///< |slope| below this fraction of its 95th percentile is neither
   double speedOnFraction = 0.02;    ///< |speed| above this fraction of max|speed| counts as running
   double minPhaseFraction = 0.01;   ///< runs shorter than this fraction of the span are absorbed
   double minPhaseChange = 0.1;      ///< slope phases must change the signal by this much (degC)
@@ -58,14 +61,15 @@ std::vector<double> localSlope(const std::vector<double>& timeMin, const std::ve
                                double windowMin);
 
 /// Phases from the slope of one temperature-like signal (see the header comment).
-std::vector<ThermalPhase> phasesFromSlope(const std::vector<double>& timeMin, const std::vector<double>& value,
-                                          const PhaseOptions& options = {});
+std::vector<ThermalPhase> phasesFromSlope(const std::vector<double>& timeMin,
+                                          const std::vector<double>& value, const PhaseOptions& options = {});
 
 /// Phases from a speed signal (see the header comment). Empty when the speed is zero throughout.
-std::vector<ThermalPhase> phasesFromSpeed(const std::vector<double>& timeMin, const std::vector<double>& speed,
-                                          const PhaseOptions& options = {});
+std::vector<ThermalPhase> phasesFromSpeed(const std::vector<double>& timeMin,
+                                          const std::vector<double>& speed, const PhaseOptions& options = {});
 
-/// Mean of the log's temperature channels per row (empty when the log has none).
+/// Mean of the log's machine temperature channels per row: ambient channels (name containing
+/// "amb", e.g. T_amb) are left out unless there are no others. Empty when the log has none.
 std::vector<double> meanTemperature(const ThermalLog& log);
 
 /// Phases of a log: from its first speed channel when the machine ran, else from the slope of the

@@ -45,7 +45,8 @@ QString extractDemoProject(const QString& dir) {
   const QStringList files = data.entryList(QDir::Files, QDir::Name);
   if (files.isEmpty()) fail(QStringLiteral(":/demo/data"), QStringLiteral("bundled demo data are missing"));
   for (const QString& name : files) copyResource(data.filePath(name), dataDir + QLatin1Char('/') + name);
-  const QString project = root + QLatin1Char('/') + QFileInfo(QString::fromLatin1(kDemoProjectResource)).fileName();
+  const QString project =
+      root + QLatin1Char('/') + QFileInfo(QString::fromLatin1(kDemoProjectResource)).fileName();
   copyResource(QString::fromLatin1(kDemoProjectResource), project);
   return project;
 }

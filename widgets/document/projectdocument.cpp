@@ -14,9 +14,15 @@
 namespace metrofit {
 namespace {
 
-std::string toStd(const QString& s) { return s.toStdString(); }
-QString fromStd(const std::string& s) { return QString::fromStdString(s); }
-std::string fileNameToStd(const QString& path) { return QFile::encodeName(path).toStdString(); }
+std::string toStd(const QString& s) {
+  return s.toStdString();
+}
+QString fromStd(const std::string& s) {
+  return QString::fromStdString(s);
+}
+std::string fileNameToStd(const QString& path) {
+  return QFile::encodeName(path).toStdString();
+}
 
 QString commandText(const ProjectField& field) {
   switch (field.kind) {
@@ -46,9 +52,13 @@ ChangeProjectValue::ChangeProjectValue(ProjectDocument* document, const ProjectF
       newValue_(value),
       sequence_(document->editSequence()) {}
 
-void ChangeProjectValue::undo() { document_->applyValue(field_, oldValue_, createdStudy_); }
+void ChangeProjectValue::undo() {
+  document_->applyValue(field_, oldValue_, createdStudy_);
+}
 
-void ChangeProjectValue::redo() { document_->applyValue(field_, newValue_); }
+void ChangeProjectValue::redo() {
+  document_->applyValue(field_, newValue_);
+}
 
 bool ChangeProjectValue::mergeWith(const QUndoCommand* other) {
   const auto* o = static_cast<const ChangeProjectValue*>(other);  // same id() guarantees the type
@@ -80,9 +90,13 @@ QString ProjectDocument::displayName() const {
   return name.isEmpty() ? tr("Untitled") : name;
 }
 
-bool ProjectDocument::isModified() const { return !undoStack_->isClean(); }
+bool ProjectDocument::isModified() const {
+  return !undoStack_->isClean();
+}
 
-bool ProjectDocument::hasStudy(const QString& study) const { return project_.studies.contains(toStd(study)); }
+bool ProjectDocument::hasStudy(const QString& study) const {
+  return project_.studies.contains(toStd(study));
+}
 
 std::optional<QString> ProjectDocument::rawValue(const ProjectField& field) const {
   switch (field.kind) {
@@ -101,14 +115,17 @@ std::optional<QString> ProjectDocument::rawValue(const ProjectField& field) cons
   return std::nullopt;
 }
 
-QString ProjectDocument::value(const ProjectField& field) const { return rawValue(field).value_or(QString()); }
+QString ProjectDocument::value(const ProjectField& field) const {
+  return rawValue(field).value_or(QString());
+}
 
 void ProjectDocument::setValue(const ProjectField& field, const QString& value) {
   if (this->value(field) == value) return;
   undoStack_->push(new ChangeProjectValue(this, field, value));
 }
 
-void ProjectDocument::applyValue(const ProjectField& field, const std::optional<QString>& value, bool removeStudy) {
+void ProjectDocument::applyValue(const ProjectField& field, const std::optional<QString>& value,
+                                 bool removeStudy) {
   switch (field.kind) {
     case ProjectField::Kind::Name:
       project_.name = toStd(value.value_or(QString()));
@@ -188,7 +205,8 @@ void ProjectDocument::saveAs(const QString& path) {
 
 QString ProjectDocument::datasetPath(const DatasetRef& dataset) const {
   if (fileName_.isEmpty()) return QDir::current().absoluteFilePath(fromStd(dataset.path));
-  return QDir::cleanPath(QFile::decodeName(QByteArray::fromStdString(resolveDatasetPath(fileNameToStd(fileName_), dataset))));
+  return QDir::cleanPath(
+      QFile::decodeName(QByteArray::fromStdString(resolveDatasetPath(fileNameToStd(fileName_), dataset))));
 }
 
 void ProjectDocument::setFileName(const QString& path) {

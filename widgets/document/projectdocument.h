@@ -145,3 +145,5 @@ class ProjectDocument : public QObject {
 };
 
 }  // namespace metrofit
+
+Q_DECLARE_METATYPE(metrofit::ProjectField)

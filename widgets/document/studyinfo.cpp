@@ -14,8 +14,10 @@ QStringList studyKeys() {
 
 QString studyTitle(const QString& s) {
   if (s == QLatin1String(study::kSetup)) return QCoreApplication::translate("StudyInfo", "Setup correction");
-  if (s == QLatin1String(study::kMatching)) return QCoreApplication::translate("StudyInfo", "Posture matching");
-  if (s == QLatin1String(study::kKinematics)) return QCoreApplication::translate("StudyInfo", "Kinematics & SPC");
+  if (s == QLatin1String(study::kMatching))
+    return QCoreApplication::translate("StudyInfo", "Posture matching");
+  if (s == QLatin1String(study::kKinematics))
+    return QCoreApplication::translate("StudyInfo", "Kinematics & SPC");
   if (s == QLatin1String(study::kThermal)) return QCoreApplication::translate("StudyInfo", "Thermal");
   if (s == QLatin1String(study::kDiagnosis)) return QCoreApplication::translate("StudyInfo", "Diagnosis");
   return s;
@@ -77,15 +79,18 @@ QStringList studyDatasetKinds(const QString& s) {
 }
 
 QString datasetKindTitle(const QString& kind) {
-  if (kind == QLatin1String(dataset_kind::kThermalLog)) return QCoreApplication::translate("StudyInfo", "Thermal log");
+  if (kind == QLatin1String(dataset_kind::kThermalLog))
+    return QCoreApplication::translate("StudyInfo", "Thermal log");
   if (kind == QLatin1String(dataset_kind::kProbePoints)) {
     return QCoreApplication::translate("StudyInfo", "Probe points");
   }
   if (kind == QLatin1String(dataset_kind::kCircularTest)) {
     return QCoreApplication::translate("StudyInfo", "Circular test");
   }
-  if (kind == QLatin1String(dataset_kind::kCmmReport)) return QCoreApplication::translate("StudyInfo", "CMM report");
-  if (kind == QLatin1String(dataset_kind::kSetupModel)) return QCoreApplication::translate("StudyInfo", "Setup model");
+  if (kind == QLatin1String(dataset_kind::kCmmReport))
+    return QCoreApplication::translate("StudyInfo", "CMM report");
+  if (kind == QLatin1String(dataset_kind::kSetupModel))
+    return QCoreApplication::translate("StudyInfo", "Setup model");
   return kind;
 }
 

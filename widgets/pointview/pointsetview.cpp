@@ -9,7 +9,7 @@
 //   A line joins q_i and t_i; the tip sphere is coloured by d_i.
 // - After matching (setAfter): tips t'_i = q'_i + k * v'_i with v'_i = d'_i * n_i (with normals; the
 //   matching rotation is far too small to turn n_i visibly) or p_i - q'_i, coloured by d'_i, drawn
-//   solid while the "before" markers and lines fade.
+//   solid while the "before" nominal points, tips and lines fade.
 // - Colour: Moreland's diverging cool-warm map (blue - light grey - red) over a symmetric range
 //   [-r, r], r = max |d| over before and after rounded up to 1, 2 or 5 x 10^n, shown by a scalar
 //   bar "deviation (mm)".
@@ -20,6 +20,7 @@
 #include <QGuiApplication>
 #include <QImage>
 #include <QLabel>
+#include <QResizeEvent>
 #include <QSurfaceFormat>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -72,12 +73,15 @@ constexpr double kMinimumRange = 1e-3;
 double niceCeil(double x) {
   const double decade = std::pow(10.0, std::floor(std::log10(x)));
   for (const double step : {1.0, 2.0, 5.0, 10.0}) {
-    if (step * decade >= x * (1.0 - 1e-12)) return step * decade;
+    if (step * decade >= x * (1.0 - 1e-12)) {
+      return step * decade;
+    }
   }
   return 10.0 * decade;
 }
 
-vtkSmartPointer<vtkPolyData> makeVertices(const std::vector<Vec3>& positions, const std::vector<double>* scalars) {
+vtkSmartPointer<vtkPolyData> makeVertices(const std::vector<Vec3>& positions,
+                                          const std::vector<double>* scalars) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
@@ -94,7 +98,9 @@ vtkSmartPointer<vtkPolyData> makeVertices(const std::vector<Vec3>& positions, co
     vtkNew<vtkDoubleArray> values;
     values->SetName("deviation");
     values->SetNumberOfValues(static_cast<vtkIdType>(scalars->size()));
-    for (std::size_t i = 0; i < scalars->size(); ++i) values->SetValue(static_cast<vtkIdType>(i), (*scalars)[i]);
+    for (std::size_t i = 0; i < scalars->size(); ++i) {
+      values->SetValue(static_cast<vtkIdType>(i), (*scalars)[i]);
+    }
     poly->GetPointData()->SetScalars(values);
   }
   return poly;
@@ -103,10 +109,11 @@ vtkSmartPointer<vtkPolyData> makeVertices(const std::vector<Vec3>& positions, co
 vtkSmartPointer<vtkPolyData> makeSegments(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(2 * from.size()));
+  points->SetNumberOfPoints(2 * static_cast<vtkIdType>(from.size()));
   vtkNew<vtkCellArray> lines;
   for (std::size_t i = 0; i < from.size(); ++i) {
-    const vtkIdType ids[2] = {static_cast<vtkIdType>(2 * i), static_cast<vtkIdType>(2 * i + 1)};
+    const auto first = 2 * static_cast<vtkIdType>(i);
+    const vtkIdType ids[2] = {first, first + 1};
     points->SetPoint(ids[0], from[i].x(), from[i].y(), from[i].z());
     points->SetPoint(ids[1], to[i].x(), to[i].y(), to[i].z());
     lines->InsertNextCell(2, ids);
@@ -133,14 +140,17 @@ struct MarkerLayer {
   vtkNew<vtkPolyDataMapper> lineMapper;
   vtkNew<vtkActor> lines;
 
-  void init(vtkRenderer* renderer, double pointSize, vtkColorTransferFunction* colours, const double* lineColour) {
+  void init(vtkRenderer* renderer, double pointSize, vtkColorTransferFunction* colours,
+            const double* lineColour) {
     points->SetMapper(pointMapper);
     vtkProperty* p = points->GetProperty();
     p->SetRepresentationToPoints();
     p->RenderPointsAsSpheresOn();
     p->SetPointSize(static_cast<float>(pointSize));
-    p->SetAmbient(0.25);
-    p->SetDiffuse(0.75);
+    // Ambient + diffuse = 1: the sphere centre shows the map colour exactly; the strong ambient part
+    // keeps the sphere edges from turning dark, so small markers still read as their colour.
+    p->SetAmbient(0.6);
+    p->SetDiffuse(0.4);
     p->SetSpecular(0.0);
     if (colours != nullptr) {
       pointMapper->SetLookupTable(colours);
@@ -163,7 +173,8 @@ struct MarkerLayer {
     }
   }
 
-  void set(const std::vector<Vec3>& tips, const std::vector<double>* deviations, const std::vector<Vec3>* bases) {
+  void set(const std::vector<Vec3>& tips, const std::vector<double>* deviations,
+           const std::vector<Vec3>* bases) {
     pointMapper->SetInputData(makeVertices(tips, deviations));
     points->SetVisibility(!tips.empty());
     if (bases != nullptr) {
@@ -198,7 +209,11 @@ struct PointSetScene {
   vtkNew<vtkTextActor> caption;
   vtkNew<vtkRenderer> axesRenderer;
   vtkNew<vtkAxesActor> axes;
-  unsigned long syncObserver = 0;
+  unsigned long startObserver = 0;
+  bool planar = false;
+  /// The framing depends on the window's aspect ratio, unknown until the first frame of a hidden
+  /// or not yet laid out view: a reset is repeated once just before the next frame.
+  bool cameraResetPending = false;
 
   explicit PointSetScene(QWidget* parent) : gl(new VtkGlWidget(parent)) {
     renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
@@ -216,12 +231,17 @@ struct PointSetScene {
     scalarBar->SetLabelFormat("%.3g");
     scalarBar->SetMaximumNumberOfColors(256);
     scalarBar->SetOrientationToVertical();
+    scalarBar->SetTextPositionToPrecedeScalarBar();  // labels left of the bar, away from the edge
     scalarBar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    scalarBar->GetPositionCoordinate()->SetValue(0.86, 0.10);
-    scalarBar->SetWidth(0.12);
-    scalarBar->SetHeight(0.78);
+    scalarBar->GetPositionCoordinate()->SetValue(0.84, 0.08);
+    scalarBar->SetWidth(0.14);
+    scalarBar->SetHeight(0.76);
+    scalarBar->SetMaximumWidthInPixels(130);
+    scalarBar->SetBarRatio(0.3);
+    scalarBar->SetVerticalTitleSeparation(6);
+    scalarBar->UnconstrainedFontSizeOn();  // readable fixed sizes instead of sizes fitted to the box
     styleText(scalarBar->GetTitleTextProperty(), 14);
-    styleText(scalarBar->GetLabelTextProperty(), 12);
+    styleText(scalarBar->GetLabelTextProperty(), 13);
     scalarBar->VisibilityOff();
     renderer->AddActor2D(scalarBar);
 
@@ -250,14 +270,19 @@ struct PointSetScene {
     window->SetNumberOfLayers(2);
     window->AddRenderer(renderer);
     window->AddRenderer(axesRenderer);
-    syncObserver = renderer->AddObserver(vtkCommand::StartEvent, this, &PointSetScene::syncAxesCamera);
+    startObserver = renderer->AddObserver(vtkCommand::StartEvent, this, &PointSetScene::onStartRender);
   }
 
-  ~PointSetScene() { renderer->RemoveObserver(syncObserver); }
+  ~PointSetScene() { renderer->RemoveObserver(startObserver); }
   PointSetScene(const PointSetScene&) = delete;
   PointSetScene& operator=(const PointSetScene&) = delete;
 
-  void syncAxesCamera(vtkObject* /*caller*/, unsigned long /*eventId*/, void* /*callData*/) {
+  /// Called by the main renderer before every frame.
+  void onStartRender(vtkObject* /*caller*/, unsigned long /*eventId*/, void* /*callData*/) {
+    if (cameraResetPending) {
+      resetCamera();
+      cameraResetPending = false;
+    }
     vtkCamera* main = renderer->GetActiveCamera();
     double direction[3];
     main->GetDirectionOfProjection(direction);
@@ -266,6 +291,7 @@ struct PointSetScene {
     camera->SetPosition(-direction[0], -direction[1], -direction[2]);
     camera->SetViewUp(main->GetViewUp());
     axesRenderer->ResetCamera();
+    camera->Zoom(1.5);  // ResetCamera fits the bounding sphere: too small for a corner marker
   }
 
   void setColourRange(double range) {
@@ -274,7 +300,7 @@ struct PointSetScene {
     colours->AddRGBPoint(range, kWarmEnd[0], kWarmEnd[1], kWarmEnd[2]);
   }
 
-  void resetCamera(bool planar) {
+  void resetCamera() {
     vtkCamera* camera = renderer->GetActiveCamera();
     camera->SetFocalPoint(0.0, 0.0, 0.0);
     if (planar) {
@@ -285,6 +311,7 @@ struct PointSetScene {
       camera->SetViewUp(0.0, 0.0, 1.0);
     }
     renderer->ResetCamera();
+    camera->Zoom(1.2);  // ResetCamera fits the bounding sphere, which leaves a wide margin
     renderer->ResetCameraClippingRange();
   }
 };
@@ -314,11 +341,17 @@ struct PointSetView::Impl {
   }
 
   void rebuild() {
-    if (!scene) return;
+    if (!scene) {
+      return;
+    }
     std::vector<Vec3> tips(nominal.size());
-    for (std::size_t i = 0; i < nominal.size(); ++i) tips[i] = tip(i, nominal[i], deviations[i]);
+    for (std::size_t i = 0; i < nominal.size(); ++i) {
+      tips[i] = tip(i, nominal[i], deviations[i]);
+    }
     double maxAbs = 0.0;
-    for (const double d : deviations) maxAbs = std::max(maxAbs, std::abs(d));
+    for (const double d : deviations) {
+      maxAbs = std::max(maxAbs, std::abs(d));
+    }
 
     scene->nominal.set(nominal, nullptr, nullptr);
     scene->before.set(tips, &deviations, &nominal);
@@ -329,9 +362,13 @@ struct PointSetView::Impl {
         maxAbs = std::max(maxAbs, std::abs(afterDeviations[i]));
       }
       scene->after.set(afterTips, &afterDeviations, &afterNominal);
+      // The nominal points belong to the before state; faded they no longer hide the after tips,
+      // which lie close to them when the matching is good.
+      scene->nominal.setOpacity(kFadedOpacity);
       scene->before.setOpacity(kFadedOpacity);
     } else {
       scene->after.hide();
+      scene->nominal.setOpacity(1.0);
       scene->before.setOpacity(1.0);
     }
     scene->setColourRange(maxAbs > 0.0 ? niceCeil(maxAbs) : kMinimumRange);
@@ -339,7 +376,9 @@ struct PointSetView::Impl {
 
     const std::string factor = QString::number(exaggeration, 'g', 4).toStdString();
     std::string text = "grey: nominal points; coloured: measured, displacement x" + factor;
-    if (hasAfter) text += "\nafter matching: solid; before: faded";
+    if (hasAfter) {
+      text += "\nafter matching: solid; before (nominal and measured): faded";
+    }
     scene->caption->SetInput(text.c_str());
     scene->caption->SetVisibility(!nominal.empty());
     scene->gl->update();
@@ -364,8 +403,12 @@ PointSetView::PointSetView(QWidget* parent) : QWidget(parent), d(std::make_uniqu
 PointSetView::~PointSetView() = default;
 
 bool PointSetView::canRender3D() {
-  if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) return false;
-  if (QGuiApplication::platformName() != QLatin1String("xcb")) return false;
+  if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) {
+    return false;
+  }
+  if (QGuiApplication::platformName() != QLatin1String("xcb")) {
+    return false;
+  }
   return !qEnvironmentVariableIsEmpty("DISPLAY");
 }
 
@@ -431,26 +474,45 @@ void PointSetView::setExaggeration(double factor) {
 }
 
 void PointSetView::resetCamera() {
-  if (!d->scene) return;
-  d->scene->resetCamera(d->planar);
+  if (!d->scene) {
+    return;
+  }
+  d->scene->planar = d->planar;
+  d->scene->resetCamera();
+  d->scene->cameraResetPending = true;
   d->scene->gl->update();
 }
 
 std::array<double, 3> PointSetView::cameraPosition() const {
   std::array<double, 3> out{0.0, 0.0, 0.0};
-  if (d->scene) d->scene->renderer->GetActiveCamera()->GetPosition(out.data());
+  if (d->scene) {
+    d->scene->renderer->GetActiveCamera()->GetPosition(out.data());
+  }
   return out;
 }
 
 std::array<double, 3> PointSetView::cameraFocalPoint() const {
   std::array<double, 3> out{0.0, 0.0, 0.0};
-  if (d->scene) d->scene->renderer->GetActiveCamera()->GetFocalPoint(out.data());
+  if (d->scene) {
+    d->scene->renderer->GetActiveCamera()->GetFocalPoint(out.data());
+  }
   return out;
 }
 
 QImage PointSetView::renderImage() {
-  if (!d->scene) return QImage();
-  return d->scene->gl->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+  if (!d->scene) {
+    return QImage();
+  }
+  VtkGlWidget* gl = d->scene->gl;
+  if (!gl->isVisible()) {
+    // A hidden view (a report rendering it off screen) is neither laid out nor sent resize
+    // events: lay it out and deliver the resize, which creates the GL context and sizes VTK.
+    layout()->activate();
+    QResizeEvent resize(gl->size(), QSize());
+    QCoreApplication::sendEvent(gl, &resize);
+    gl->setAttribute(Qt::WA_PendingResizeEvent, false);
+  }
+  return gl->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
 }
 
 }  // namespace metrofit

@@ -64,22 +64,25 @@ VtkGlWidget::VtkGlWidget(QWidget* parent) : QOpenGLWidget(parent) {
   interactor_->EnableRenderOff();
   renderObserver_ = interactor_->AddObserver(vtkCommand::RenderEvent, this, &VtkGlWidget::onInteractorRender);
   interactor_->Initialize();
-
-  setMouseTracking(false);
-  setFocusPolicy(Qt::StrongFocus);
 }
 
 VtkGlWidget::~VtkGlWidget() {
   // The base class destroys the context after this body: do not let its aboutToBeDestroyed signal
   // reach a half-destroyed object.
-  if (QOpenGLContext* ctx = context()) disconnect(ctx, nullptr, this, nullptr);
+  if (QOpenGLContext* ctx = context()) {
+    disconnect(ctx, nullptr, this, nullptr);
+  }
   releaseVtkGraphics();
   interactor_->RemoveObserver(renderObserver_);
-  for (const unsigned long id : windowObservers_) window_->RemoveObserver(id);
+  for (const unsigned long id : windowObservers_) {
+    window_->RemoveObserver(id);
+  }
 }
 
 void VtkGlWidget::releaseVtkGraphics() {
-  if (!glInitialized_) return;
+  if (!glInitialized_) {
+    return;
+  }
   makeCurrent();
   window_->Finalize();
   window_->SetReadyForRendering(false);
@@ -104,7 +107,9 @@ void VtkGlWidget::resizeGL(int w, int h) {
 }
 
 void VtkGlWidget::paintGL() {
-  if (!glInitialized_) return;
+  if (!glInitialized_) {
+    return;
+  }
   QScopedValueRollback<bool> paintGuard(inPaint_, true);
 
   // Qt has changed the GL state behind VTK's cache: re-read it, render, restore Qt's state.
@@ -115,7 +120,9 @@ void VtkGlWidget::paintGL() {
   window_->Render();
   state->Pop();
 
-  if (QOpenGLContext::currentContext() != context()) makeCurrent();
+  if (QOpenGLContext::currentContext() != context()) {
+    makeCurrent();
+  }
   QOpenGLExtraFunctions* f = context()->extraFunctions();
 
   // VTK 9.1 has no SetDefaultFramebuffer: blit VTK's display framebuffer into the widget's FBO.
@@ -161,7 +168,9 @@ void VtkGlWidget::onWindowEvent(vtkObject* /*caller*/, unsigned long eventId, vo
       // Never QOpenGLWidget::makeCurrent() here: it rebinds Qt's FBO while VTK sets up its own
       // (incomplete framebuffer, black frame).
       QOpenGLContext* ctx = context();
-      if (ctx && QOpenGLContext::currentContext() != ctx) ctx->makeCurrent(ctx->surface());
+      if (ctx && QOpenGLContext::currentContext() != ctx) {
+        ctx->makeCurrent(ctx->surface());
+      }
       break;
     }
     case vtkCommand::WindowIsCurrentEvent: {
@@ -171,7 +180,9 @@ void VtkGlWidget::onWindowEvent(vtkObject* /*caller*/, unsigned long eventId, vo
     }
     case vtkCommand::WindowFrameEvent:
       // A render started outside paintGL (by code calling Render() directly): show it.
-      if (!inPaint_) update();
+      if (!inPaint_) {
+        update();
+      }
       break;
     default:
       break;
@@ -182,13 +193,11 @@ void VtkGlWidget::onInteractorRender(vtkObject* /*caller*/, unsigned long /*even
   update();
 }
 
-void VtkGlWidget::setEventInformation(const QPointF& position, Qt::KeyboardModifiers modifiers,
-                                      int repeat) {
+void VtkGlWidget::setEventInformation(const QPointF& position, Qt::KeyboardModifiers modifiers, int repeat) {
   const double dpr = devicePixelRatioF();
-  interactor_->SetEventInformationFlipY(static_cast<int>(std::lround(position.x() * dpr)),
-                                        static_cast<int>(std::lround(position.y() * dpr)),
-                                        (modifiers & Qt::ControlModifier) ? 1 : 0,
-                                        (modifiers & Qt::ShiftModifier) ? 1 : 0, 0, repeat);
+  interactor_->SetEventInformationFlipY(
+      static_cast<int>(std::lround(position.x() * dpr)), static_cast<int>(std::lround(position.y() * dpr)),
+      (modifiers & Qt::ControlModifier) ? 1 : 0, (modifiers & Qt::ShiftModifier) ? 1 : 0, 0, repeat);
   interactor_->SetAltKey((modifiers & Qt::AltModifier) ? 1 : 0);
 }
 

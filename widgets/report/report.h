@@ -5,14 +5,14 @@
 // Needs a QGuiApplication (QApplication for charts); works with QT_QPA_PLATFORM=offscreen and does
 // not use VTK (3D point sets are drawn as 2D projections with QPainter).
 #include <QString>
-#include <functional>
+#include <QStringList>
 
 namespace metrofit {
 class Project;
 
 struct ReportOptions {
-  QString projectPath;   ///< where the project was loaded from (resolves dataset paths)
-  QString title;         ///< defaults to the project name
+  QString projectPath;  ///< where the project was loaded from (resolves dataset paths)
+  QString title;        ///< defaults to the project name
   int resolutionDpi = 300;
 };
 
@@ -22,7 +22,9 @@ struct ReportSummary {
 };
 
 /// Writes the report atomically (QSaveFile) to pdfPath. Throws metrofit::InputError when a dataset
-/// of the project cannot be read, metrofit::FileError when the PDF cannot be written.
+/// of the project cannot be read, metrofit::FileError when the PDF cannot be written,
+/// metrofit::OptionsError when resolutionDpi is outside [72, 1200]. On any error pdfPath is left
+/// as it was (absent, or the previous file).
 ReportSummary writeReport(const Project& project, const QString& pdfPath, const ReportOptions& options);
 
 }  // namespace metrofit

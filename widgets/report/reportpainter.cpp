@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 #include "metrofit/version.h"
 
@@ -51,9 +52,16 @@ ReportPainter::ReportPainter(QPdfWriter& writer, QPainter& painter, QString runn
 
 QFont ReportPainter::font(Font role) const {
   QFont f(fontFamily_);
+  // A (1/50 px) letter spacing makes Qt shape without ligatures, so "fi" stays two letters and the
+  // PDF's text can be searched and extracted as written.
+  f.setLetterSpacing(QFont::AbsoluteSpacing, 0.02);
   switch (role) {
-    case Font::Body: f.setPointSizeF(9.5); break;
-    case Font::Small: f.setPointSizeF(8.0); break;
+    case Font::Body:
+      f.setPointSizeF(9.5);
+      break;
+    case Font::Small:
+      f.setPointSizeF(8.0);
+      break;
     case Font::Bold:
       f.setPointSizeF(9.5);
       f.setBold(true);
@@ -74,7 +82,9 @@ QFont ReportPainter::font(Font role) const {
   return f;
 }
 
-double ReportPainter::lineHeight(Font role) const { return QFontMetricsF(font(role), &writer_).lineSpacing(); }
+double ReportPainter::lineHeight(Font role) const {
+  return QFontMetricsF(font(role), &writer_).lineSpacing();
+}
 
 void ReportPainter::decoratePage() {
   const double pageW = writer_.width();
@@ -127,7 +137,9 @@ void ReportPainter::ensureSpace(double height) {
   }
 }
 
-void ReportPainter::skip(double height) { y_ = std::min(y_ + height, content_.bottom()); }
+void ReportPainter::skip(double height) {
+  y_ = std::min(y_ + height, content_.bottom());
+}
 
 QRectF ReportPainter::reserve(double height) {
   ensureSpace(height);
@@ -179,13 +191,13 @@ void ReportPainter::paragraph(const QString& text, Font role) {
 }
 
 void ReportPainter::table(const ReportTable& table) {
-  const int columns = static_cast<int>(std::max<qsizetype>(table.header.size(),
-                                                           table.rows.isEmpty() ? 0 : table.rows.front().size()));
+  const int columns = static_cast<int>(
+      std::max<qsizetype>(table.header.size(), table.rows.isEmpty() ? 0 : table.rows.front().size()));
   if (columns == 0) {
     return;
   }
   QList<double> widths = table.widths;
-  widths.resize(columns, widths.isEmpty() ? 1.0 : 0.0);
+  widths.resize(columns, 1.0);
   const double totalWeight = std::accumulate(widths.begin(), widths.end(), 0.0);
   const double tableWidth = content_.width() * std::clamp(table.widthFraction, 0.1, 1.0);
   const double pad = mm(1.5);

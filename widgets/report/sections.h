@@ -1,8 +1,9 @@
 #pragma once
 // The sections of the PDF report, one function each, and what they share: the project's datasets,
 // read once before the first page is drawn (so a dataset that cannot be read fails the report
-// before anything is written). report.cpp lists the sections and decides which ones a project has;
-// a new section is a new write...Section function plus one line in that list.
+// before anything is written). report.cpp lists the sections, decides which ones a project has and
+// draws each section's heading on a new page; the write...Section function draws the body below it.
+// A new section is a new write...Section function plus one line in that list.
 #include <QString>
 
 #include <optional>
@@ -18,9 +19,9 @@ class ReportPainter;
 /// A dataset of the project as the report sees it.
 struct ReportDataset {
   DatasetRef ref;
-  QString path;    ///< resolved against the project folder
-  long rows = -1;  ///< data rows or points; -1 when the kind has no rows (setup model)
-  std::optional<ThermalLog> thermal;     ///< for thermal_log datasets
+  QString path;                         ///< resolved against the project folder
+  long rows = -1;                       ///< data rows or points; -1 when the kind has no rows (setup model)
+  std::optional<ThermalLog> thermal;    ///< for thermal_log datasets
   std::optional<ProbePointSet> probes;  ///< for probe_points datasets
 };
 

@@ -70,8 +70,9 @@ QString kindCounts(const ThermalLog& log) {
 }
 
 QString phaseSummary(const PhaseDetection& detection) {
-  const auto heating = std::count_if(detection.phases.begin(), detection.phases.end(),
-                                     [](const ThermalPhase& p) { return p.kind == ThermalPhaseKind::Heating; });
+  const auto heating =
+      std::count_if(detection.phases.begin(), detection.phases.end(),
+                    [](const ThermalPhase& p) { return p.kind == ThermalPhaseKind::Heating; });
   const auto cooling = static_cast<qsizetype>(detection.phases.size()) - heating;
   switch (detection.source) {
     case PhaseSource::Speed:
@@ -86,7 +87,8 @@ QString phaseSummary(const PhaseDetection& detection) {
       return ReportText::tr("%1 heating, %2 cooling, from the slope of the mean temperature")
           .arg(heating)
           .arg(cooling);
-    case PhaseSource::None: break;
+    case PhaseSource::None:
+      break;
   }
   return ReportText::tr("none detected");
 }
@@ -107,10 +109,10 @@ void writeThermalLog(ReportPainter& out, const ReportDataset& dataset) {
   facts.widthFraction = 1.0;
   facts.rows = {
       {ReportText::tr("file"), QString::fromStdString(dataset.ref.path)},
-      {ReportText::tr("rows"), ReportText::tr("%1, every %2 (median), time column %3")
-                                   .arg(log.rows())
-                                   .arg(formatSpacing(medianSpacingMin(log)),
-                                        QString::fromStdString(log.timeColumn))},
+      {ReportText::tr("rows"),
+       ReportText::tr("%1, every %2 (median), time column %3")
+           .arg(log.rows())
+           .arg(formatSpacing(medianSpacingMin(log)), QString::fromStdString(log.timeColumn))},
       {ReportText::tr("duration"), formatDuration(span)},
       {ReportText::tr("channels"), kindCounts(log)},
       {ReportText::tr("phases"), phaseSummary(detection)},
@@ -144,7 +146,9 @@ void writeThermalLog(ReportPainter& out, const ReportDataset& dataset) {
 
 }  // namespace
 
-QString thermalSectionTitle() { return ReportText::tr("Thermal"); }
+QString thermalSectionTitle() {
+  return ReportText::tr("Thermal");
+}
 
 void writeThermalSection(ReportPainter& out, const ReportContext& context) {
   bool first = true;

@@ -1,0 +1,111 @@
+// metrofit: the GUI workbench. Thin: command line, surface format, translations, then MainWindow.
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSettings>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTextStream>
+#include <cstdio>
+
+#include "app/gui/language.h"
+#include "app/gui/mainwindow.h"
+#include "app/gui/screenshots.h"
+#include "metrofit/version.h"
+
+namespace {
+
+const QString kScreenshotsOption = QStringLiteral("screenshots");
+
+void configureParser(QCommandLineParser& parser) {
+  parser.setApplicationDescription(
+      QCoreApplication::translate("main", "Metrofit — a workbench for machining error compensation."));
+  parser.addHelpOption();
+  parser.addVersionOption();
+  parser.addOption(
+      {kScreenshotsOption,
+       QCoreApplication::translate("main",
+                                   "Open the bundled demo project, save one PNG per main view into "
+                                   "<dir> and exit (needs an X server; Xvfb will do)."),
+       QCoreApplication::translate("main", "dir")});
+  parser.addPositionalArgument(QCoreApplication::translate("main", "project"),
+                               QCoreApplication::translate("main", "A project file (.metrofit) to open."),
+                               QCoreApplication::translate("main", "[project]"));
+}
+
+void setApplicationNames() {
+  QCoreApplication::setOrganizationName(QStringLiteral("Metrofit"));
+  QCoreApplication::setApplicationName(QStringLiteral("metrofit"));
+  QCoreApplication::setApplicationVersion(QString::fromLatin1(metrofit::kVersion));
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  // The screenshot mode needs X for the VTK views; decide before anything touches a display.
+  QStringList arguments;
+  for (int i = 0; i < argc; ++i) arguments << QString::fromLocal8Bit(argv[i]);
+  QCommandLineParser preParser;
+  configureParser(preParser);
+  // Qt's own options (-platform, -style, ...) are unknown here: errors are reported by process() below,
+  // once QApplication has taken its options out.
+  (void)preParser.parse(arguments);
+  if (preParser.isSet(QStringLiteral("help")) || preParser.isSet(QStringLiteral("help-all")) ||
+      preParser.isSet(QStringLiteral("version"))) {
+    // Help and the version need no display.
+    QCoreApplication app(argc, argv);
+    setApplicationNames();
+    metrofit::installTranslators(app, metrofit::effectiveLanguage(metrofit::languageSetting()));
+    QCommandLineParser parser;
+    configureParser(parser);
+    parser.process(app);  // prints and exits
+    return 0;
+  }
+  const bool screenshots = preParser.isSet(kScreenshotsOption);
+  if (screenshots) {
+    if (!metrofit::environmentHasXServer()) {
+      std::fprintf(stderr, "%s\n", metrofit::kScreenshotsNeedXMessage);
+      return 2;
+    }
+    // An unreachable display falls back to offscreen instead of aborting; detected below.
+    const QByteArray platform = qgetenv("QT_QPA_PLATFORM");
+    qputenv("QT_QPA_PLATFORM", (platform.isEmpty() ? QByteArray("xcb") : platform) + ";offscreen");
+  }
+
+  // VTK's OpenGL views need a 3.2 core profile with a depth buffer; set before QApplication.
+  QSurfaceFormat format;
+  format.setRenderableType(QSurfaceFormat::OpenGL);
+  format.setVersion(3, 2);
+  format.setProfile(QSurfaceFormat::CoreProfile);
+  format.setDepthBufferSize(24);
+  format.setStencilBufferSize(8);
+  QSurfaceFormat::setDefaultFormat(format);
+
+  QApplication app(argc, argv);
+  setApplicationNames();
+  QApplication::setApplicationDisplayName(QStringLiteral("Metrofit"));
+
+  if (screenshots) {
+    if (QGuiApplication::platformName() != QLatin1String("xcb")) {
+      std::fprintf(stderr, "%s\n", metrofit::kScreenshotsNeedXMessage);
+      return 2;
+    }
+    // Screenshots are in English and leave the user's settings (recent files) alone.
+    QTemporaryDir settingsDir;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
+    QCommandLineParser parser;
+    configureParser(parser);
+    parser.process(app);
+    QTextStream err(stderr);
+    return metrofit::runScreenshots(parser.value(kScreenshotsOption), err);
+  }
+
+  metrofit::installTranslators(app, metrofit::effectiveLanguage(metrofit::languageSetting()));
+  QCommandLineParser parser;
+  configureParser(parser);
+  parser.process(app);
+
+  metrofit::MainWindow window;
+  window.show();
+  if (!parser.positionalArguments().isEmpty()) window.openProject(parser.positionalArguments().constFirst());
+  return app.exec();
+}

@@ -1,0 +1,314 @@
+// Tests of the PDF report: a small project written by the test (thermal log + probe points) goes
+// through writeReport, and poppler-utils (pdfinfo, pdftotext, pdftoppm, pdfimages) check the
+// result: page count, text, a non-blank chart page, vector graphics only. Errors: an unwritable
+// target throws FileError, a missing dataset throws InputError, and neither leaves a PDF behind.
+// Rendered pages are saved into $METROFIT_TEST_OUT for a look.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/project/project.h"
+#include "metrofit/version.h"
+#include "widgets/report/report.h"
+
+namespace metrofit {
+namespace {
+
+class QtEnvironment : public ::testing::Environment {
+ public:
+  void SetUp() override {
+    static int argc = 1;
+    static char arg0[] = "report_test";
+    static char* argv[] = {arg0, nullptr};
+    // ctest sets offscreen; when run by hand, stay offscreen too (same fonts and pixels, no window).
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
+      qputenv("QT_QPA_PLATFORM", "offscreen");
+    }
+    app_ = std::make_unique<QApplication>(argc, argv);
+  }
+  void TearDown() override { app_.reset(); }
+
+ private:
+  std::unique_ptr<QApplication> app_;
+};
+[[maybe_unused]] auto* const kQtEnvironment = ::testing::AddGlobalTestEnvironment(new QtEnvironment);
+
+QString outputDir() {
+  const QString dir = qEnvironmentVariable("METROFIT_TEST_OUT", QDir::tempPath());
+  QDir().mkpath(dir);
+  return dir;
+}
+
+void writeText(const QString& path, const std::string& text) {
+  QDir().mkpath(QFileInfo(path).absolutePath());
+  std::ofstream(path.toStdString()) << text;
+}
+
+/// 240 rows, one a minute: heating to 120 min, then cooling; four temperatures, a displacement.
+std::string thermalCsv() {
+  std::ostringstream s;
+  s << "# synthetic heating / cooling run\ntime_min,T1,T2,T3,T_amb,disp_z_um\n";
+  for (int i = 0; i < 240; ++i) {
+    const double h =
+        i < 120 ? 1.0 - std::exp(-i / 30.0) : (1.0 - std::exp(-4.0)) * std::exp(-(i - 120) / 45.0);
+    s << i << ',' << 21.0 + 6.0 * h << ',' << 21.5 + 4.0 * h << ',' << 20.8 + 2.5 * h << ','
+      << 20.0 + 0.3 * std::sin(i / 40.0) << ',' << -18.0 * h << '\n';
+  }
+  return s.str();
+}
+
+/// 36 probe points on three faces of a 120 x 80 x 50 mm block, measured p = q + d n with a
+/// deviation d that grows along X (so some points are outside +-0.05 mm).
+std::string probeCsv() {
+  std::ostringstream s;
+  s << "id,surface,qx,qy,qz,nx,ny,nz,px,py,pz\n";
+  int id = 0;
+  const auto point = [&](const char* surface, double qx, double qy, double qz, double nx, double ny,
+                         double nz) {
+    const double d = -0.03 + 0.0009 * qx + 0.01 * std::sin(id * 1.7);
+    s << "P" << ++id << ',' << surface << ',' << qx << ',' << qy << ',' << qz << ',' << nx << ',' << ny << ','
+      << nz << ',' << qx + d * nx << ',' << qy + d * ny << ',' << qz + d * nz << '\n';
+  };
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      point("top", 10 + 33.0 * i, 10 + 30.0 * j, 50, 0, 0, 1);
+      point("front", 10 + 33.0 * i, 0, 10 + 15.0 * j, 0, -1, 0);
+      point("right", 120, 10 + 20.0 * i, 10 + 15.0 * j, 1, 0, 0);
+    }
+  }
+  return s.str();
+}
+
+struct ProcessResult {
+  int exitCode = -1;
+  QString out;
+};
+
+ProcessResult run(const QString& program, const QStringList& args) {
+  QProcess p;
+  p.start(program, args);
+  if (!p.waitForFinished(60000)) {
+    return {};
+  }
+  return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
+          QString::fromUtf8(p.readAllStandardOutput())};
+}
+
+int pdfPages(const QString& pdf) {
+  const ProcessResult r = run(QStringLiteral("pdfinfo"), {pdf});
+  const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("Pages:\\s+(\\d+)")).match(r.out);
+  return r.exitCode == 0 && m.hasMatch() ? m.captured(1).toInt() : -1;
+}
+
+/// Fraction of pixels that are not (near) white.
+double inkFraction(const QImage& image) {
+  const QImage img = image.convertToFormat(QImage::Format_RGB32);
+  long ink = 0;
+  for (int y = 0; y < img.height(); ++y) {
+    const auto* line = reinterpret_cast<const QRgb*>(img.constScanLine(y));
+    for (int x = 0; x < img.width(); ++x) {
+      if (qRed(line[x]) < 235 || qGreen(line[x]) < 235 || qBlue(line[x]) < 235) {
+        ++ink;
+      }
+    }
+  }
+  return static_cast<double>(ink) / (static_cast<double>(img.width()) * img.height());
+}
+
+class ReportTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(dir_.isValid());
+    writeText(dir_.filePath(QStringLiteral("data/thermal.csv")), thermalCsv());
+    writeText(dir_.filePath(QStringLiteral("data/probes.csv")), probeCsv());
+    Project p;
+    p.name = "Report test cell";
+    p.description = "A synthetic project: one heating / cooling run and one probed block.";
+    p.datasets.push_back({"thermal_run", dataset_kind::kThermalLog, "data/thermal.csv",
+                          "Spindle warm-up and cool-down (synthetic).", "CC0-1.0"});
+    p.datasets.push_back({"probe_block", dataset_kind::kProbePoints, "data/probes.csv", "Probed block.", ""});
+    projectPath_ = dir_.filePath(QStringLiteral("cell.metrofit"));
+    saveProject(p, projectPath_.toStdString());
+    project_ = loadProject(projectPath_.toStdString());
+  }
+
+  ReportOptions options() const {
+    ReportOptions o;
+    o.projectPath = projectPath_;
+    return o;
+  }
+
+  QTemporaryDir dir_;
+  QString projectPath_;
+  Project project_;
+};
+
+TEST_F(ReportTest, WritesCoverThermalAndProbeSections) {
+  const QString pdf = dir_.filePath(QStringLiteral("report.pdf"));
+  const ReportSummary summary = writeReport(project_, pdf, options());
+  ASSERT_TRUE(QFileInfo::exists(pdf));
+  const QString copy = QDir(outputDir()).filePath(QStringLiteral("report.pdf"));
+  QFile::remove(copy);
+  QFile::copy(pdf, copy);
+  EXPECT_EQ(summary.sections,
+            (QStringList{QStringLiteral("Thermal"), QStringLiteral("Posture matching — probe points")}));
+
+  const int pages = pdfPages(pdf);
+  EXPECT_GE(pages, 3);
+  EXPECT_EQ(pages, summary.pages);
+
+  const ProcessResult text =
+      run(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+  ASSERT_EQ(text.exitCode, 0);
+  for (const QString& needle :
+       {QStringLiteral("Metrofit report"), QStringLiteral("Report test cell"), QStringLiteral("Thermal"),
+        QStringLiteral("thermal_run"), QStringLiteral("probe_block"), QStringLiteral("CC0-1.0"),
+        QStringLiteral("temperature (°C)"), QStringLiteral("displacement (µm)"),
+        QStringLiteral("Top view (XY)"), QString::fromUtf8(kVersion),
+        QStringLiteral("page 2 of %1").arg(pages)}) {
+    EXPECT_TRUE(text.out.contains(needle)) << "missing: " << needle.toStdString();
+  }
+  // 36 points, computed outside-tolerance count appears in the facts table.
+  EXPECT_TRUE(text.out.contains(QRegularExpression(QStringLiteral("points\\s+36"))))
+      << text.out.toStdString();
+
+  // Charts and projections are vector graphics: no raster image in the PDF.
+  const ProcessResult images = run(QStringLiteral("pdfimages"), {QStringLiteral("-list"), pdf});
+  ASSERT_EQ(images.exitCode, 0);
+  EXPECT_LE(images.out.trimmed().split('\n').size(), 2) << images.out.toStdString();  // header lines only
+
+  // Every page rendered for a look; the chart page and the probe page carry ink.
+  const QString prefix = QDir(outputDir()).filePath(QStringLiteral("report_page"));
+  ASSERT_EQ(run(QStringLiteral("pdftoppm"),
+                {QStringLiteral("-r"), QStringLiteral("50"), QStringLiteral("-png"), pdf, prefix})
+                .exitCode,
+            0);
+  const QString page2 = pages >= 10 ? prefix + QStringLiteral("-02.png") : prefix + QStringLiteral("-2.png");
+  const QString page3 = pages >= 10 ? prefix + QStringLiteral("-03.png") : prefix + QStringLiteral("-3.png");
+  const QImage image2(page2);
+  ASSERT_FALSE(image2.isNull()) << page2.toStdString();
+  EXPECT_GT(inkFraction(image2), 0.08);
+  const QImage image3(page3);
+  ASSERT_FALSE(image3.isNull()) << page3.toStdString();
+  EXPECT_GT(inkFraction(image3), 0.03);
+  // A sharper copy of the chart page for people.
+  run(QStringLiteral("pdftoppm"),
+      {QStringLiteral("-r"), QStringLiteral("110"), QStringLiteral("-png"), QStringLiteral("-f"),
+       QStringLiteral("2"), QStringLiteral("-l"), QStringLiteral("3"), pdf,
+       QDir(outputDir()).filePath(QStringLiteral("report_hires"))});
+}
+
+TEST_F(ReportTest, TitleOptionOverridesTheProjectName) {
+  const QString pdf = dir_.filePath(QStringLiteral("titled.pdf"));
+  ReportOptions o = options();
+  o.title = QStringLiteral("Acceptance run 42");
+  writeReport(project_, pdf, o);
+  const ProcessResult text = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+  EXPECT_TRUE(text.out.contains(QStringLiteral("Acceptance run 42")));
+  EXPECT_TRUE(text.out.contains(QStringLiteral("Report test cell")));  // still named on the cover
+}
+
+TEST_F(ReportTest, UnwritableTargetThrowsFileErrorAndLeavesNothing) {
+  const QString pdf = dir_.filePath(QStringLiteral("no/such/folder/report.pdf"));
+  EXPECT_THROW(writeReport(project_, pdf, options()), FileError);
+  EXPECT_FALSE(QFileInfo::exists(pdf));
+  EXPECT_FALSE(QFileInfo::exists(dir_.filePath(QStringLiteral("no"))));
+}
+
+TEST_F(ReportTest, MissingDatasetThrowsInputErrorAndLeavesNoPdf) {
+  Project broken = project_;
+  broken.datasets.push_back({"gone", dataset_kind::kThermalLog, "data/missing.csv", "", ""});
+  const QString pdf = dir_.filePath(QStringLiteral("broken.pdf"));
+  try {
+    writeReport(broken, pdf, options());
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing.csv"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(QFileInfo::exists(pdf));
+  // An older report at the target survives a failed run untouched, and no temporary file is left.
+  writeText(pdf, "old report");
+  EXPECT_THROW(writeReport(broken, pdf, options()), InputError);
+  QFile old(pdf);
+  ASSERT_TRUE(old.open(QIODevice::ReadOnly));
+  EXPECT_EQ(old.readAll(), QByteArray("old report"));
+  EXPECT_EQ(QDir(dir_.path()).entryList(QDir::Files).size(), 2);  // cell.metrofit, broken.pdf
+}
+
+TEST_F(ReportTest, InvalidProbeDataPropagatesTheCoreError) {
+  writeText(dir_.filePath(QStringLiteral("data/probes.csv")),
+            "id,surface,qx,qy,qz,nx,ny,nz,px,py,pz\nA,s,0,0,0,0,0,2,0,0,0\nB,s,1,0,0,0,0,1,1,0,0\n"
+            "C,s,0,1,0,0,0,1,0,1,0\n");
+  const QString pdf = dir_.filePath(QStringLiteral("bad.pdf"));
+  EXPECT_THROW(writeReport(project_, pdf, options()), InputError);
+  EXPECT_FALSE(QFileInfo::exists(pdf));
+}
+
+TEST_F(ReportTest, ProjectWithoutDatasetsIsACoverPage) {
+  Project empty;
+  empty.name = "Empty cell";
+  const QString pdf = dir_.filePath(QStringLiteral("empty.pdf"));
+  const ReportSummary summary = writeReport(empty, pdf, options());
+  EXPECT_EQ(summary.pages, 1);
+  EXPECT_TRUE(summary.sections.isEmpty());
+  EXPECT_EQ(pdfPages(pdf), 1);
+}
+
+TEST_F(ReportTest, ResolutionOutOfRangeIsAnOptionsError) {
+  ReportOptions o = options();
+  o.resolutionDpi = 10;
+  const QString pdf = dir_.filePath(QStringLiteral("lowres.pdf"));
+  EXPECT_THROW(writeReport(project_, pdf, o), OptionsError);
+  EXPECT_FALSE(QFileInfo::exists(pdf));
+}
+
+// The real CAIVIAC spindle log (11 115 rows x 22 channels) once the demo bundles it: the report
+// stays small (decimated vector chart) and lists all 22 channels.
+TEST(ReportReal, CaiviacSpindleLog) {
+  const QString csv = QDir(qEnvironmentVariable("METROFIT_SOURCE_DIR"))
+                          .filePath(QStringLiteral("resources/demo/data/thermal_caiviac.csv"));
+  if (!QFileInfo::exists(csv)) {
+    GTEST_SKIP() << "not bundled yet: " << csv.toStdString();
+  }
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  Project p;
+  p.name = "CAIVIAC spindle";
+  p.datasets.push_back({"caiviac", dataset_kind::kThermalLog, QFileInfo(csv).absoluteFilePath().toStdString(),
+                        "Spindle thermal drift, 16 temperatures, 5 displacements.", "MIT (CAIVIAC)"});
+  const QString projectPath = dir.filePath(QStringLiteral("caiviac.metrofit"));
+  saveProject(p, projectPath.toStdString());
+  ReportOptions o;
+  o.projectPath = projectPath;
+  const QString pdf = dir.filePath(QStringLiteral("caiviac.pdf"));
+  const ReportSummary summary = writeReport(p, pdf, o);
+  EXPECT_EQ(summary.sections, QStringList{QStringLiteral("Thermal")});
+  EXPECT_EQ(pdfPages(pdf), summary.pages);
+  EXPECT_LT(QFileInfo(pdf).size(), 3 * 1024 * 1024);
+  const ProcessResult text = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+  for (const char* needle : {"t16_degC", "ch5_um", "spindle_rpm", "speed (rpm)", "6 heating, 6 cooling"}) {
+    EXPECT_TRUE(text.out.contains(QString::fromUtf8(needle))) << "missing: " << needle;
+  }
+  const QString prefix = QDir(outputDir()).filePath(QStringLiteral("report_caiviac"));
+  ASSERT_EQ(run(QStringLiteral("pdftoppm"),
+                {QStringLiteral("-r"), QStringLiteral("110"), QStringLiteral("-png"), QStringLiteral("-f"),
+                 QStringLiteral("2"), QStringLiteral("-l"), QStringLiteral("2"), pdf, prefix})
+                .exitCode,
+            0);
+}
+
+}  // namespace
+}  // namespace metrofit
