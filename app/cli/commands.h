@@ -2,13 +2,18 @@
 // metrofit-cli subcommands. main.cpp only builds the CLI11 parser and maps errors to exit codes:
 //   0 success, 2 bad input (metrofit::InputError or a command-line error: one line naming the
 //   file / line / field / option), 1 any other failure. Results go to --out (atomically) or stdout.
+#include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "core/thermal/thermal_log.h"
+
 namespace CLI {
 class App;
-}
+class Option;
+}  // namespace CLI
 
 namespace metrofit::cli {
 
@@ -25,5 +30,24 @@ int runSelected();
 
 /// Writes `text` to `outPath` atomically, or to stdout when outPath is empty.
 void writeResult(const std::string& outPath, const std::string& text);
+
+// ---- shared by the subcommand files (cmd_*.cpp) ----
+/// A subcommand's parse callback hands its runner over with this; runSelected() calls it.
+void selectRunner(std::function<int()> runner);
+/// Throws NotAvailable: "<what> is not in this build yet (<issue>); the inputs were read and are valid".
+[[noreturn]] void notInThisBuild(const std::string& what, const std::string& issue);
+CLI::Option* existingFile(CLI::Option* option);
+void addOut(CLI::App* sub, std::string& out);
+void addSeed(CLI::App* sub, std::uint64_t& seed);
+std::vector<std::string> splitList(const std::string& commaSeparated);
+/// Reads a thermal log and checks that target and every input name a column (inputs != target).
+ThermalLog readThermalArgs(const std::string& data, const std::string& target, const std::string& inputList);
+
+// One registration function per subcommand family, each in its own cmd_*.cpp.
+void registerSetupCommand(CLI::App& app);
+void registerMatchCommand(CLI::App& app);
+void registerKinematicCommands(CLI::App& app);
+void registerThermalCommands(CLI::App& app);
+void registerDiagnoseCommands(CLI::App& app);
 
 }  // namespace metrofit::cli

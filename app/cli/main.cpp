@@ -10,7 +10,8 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"Metrofit: machining error compensation from measured data (headless).", "metrofit-cli"};
-  app.set_version_flag("--version", std::string("metrofit ") + metrofit::kVersion, "Print the version and exit");
+  app.set_version_flag("--version", std::string("metrofit ") + metrofit::kVersion,
+                       "Print the version and exit");
   app.require_subcommand(1);
   app.fallthrough(false);
   metrofit::cli::registerCommands(app, argc, argv);
@@ -23,8 +24,8 @@ int main(int argc, char** argv) {
       names += (names.empty() ? "" : ", ") + sub->get_name();
     }
     if (!known) {
-      std::fprintf(stderr, "metrofit-cli: unknown subcommand '%s' (one of: %s; see metrofit-cli --help)\n", argv[1],
-                   names.c_str());
+      std::fprintf(stderr, "metrofit-cli: unknown subcommand '%s' (one of: %s; see metrofit-cli --help)\n",
+                   argv[1], names.c_str());
       return 2;
     }
   }

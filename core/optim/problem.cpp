@@ -1,0 +1,58 @@
+#include "core/optim/problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace metrofit::optim {
+
+void Problem::snap(std::span<double> x) const {
+  const double step = gridStep();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double lo = lower(i), hi = upper(i);
+    double v = std::isfinite(x[i]) ? x[i] : lo;
+    v = std::clamp(v, lo, hi);
+    if (step > 0.0) {
+      const double kMax = std::floor((hi - lo) / step + 1e-9);
+      const double k = std::clamp(std::round((v - lo) / step), 0.0, kMax);
+      v = lo + k * step;
+    }
+    x[i] = v;
+  }
+}
+
+bool Problem::isFeasible(std::span<const double> x) const {
+  if (x.size() != dimension()) return false;
+  const double step = gridStep();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!(x[i] >= lower(i) && x[i] <= upper(i))) return false;
+    if (step > 0.0) {
+      const double k = (x[i] - lower(i)) / step;
+      if (std::abs(k - std::round(k)) > 1e-9 * std::max(1.0, std::abs(k))) return false;
+    }
+  }
+  return true;
+}
+
+double sphere(std::span<const double> x) {
+  double s = 0.0;
+  for (double v : x) s += v * v;
+  return s;
+}
+
+double rosenbrock(std::span<const double> x) {
+  double s = 0.0;
+  for (std::size_t i = 0; i + 1 < x.size(); ++i) {
+    const double a = x[i + 1] - x[i] * x[i], b = 1.0 - x[i];
+    s += 100.0 * a * a + b * b;
+  }
+  return s;
+}
+
+double rastrigin(std::span<const double> x) {
+  double s = 10.0 * static_cast<double>(x.size());
+  for (double v : x) s += v * v - 10.0 * std::cos(2.0 * std::numbers::pi * v);
+  return s;
+}
+
+}  // namespace metrofit::optim

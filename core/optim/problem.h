@@ -1,0 +1,68 @@
+#pragma once
+// The optimisation problem interface shared by every metaheuristic (pagmo-like: the problem knows
+// nothing of algorithms; STYLE.md §2).
+//
+// Convention: MINIMISATION of `evaluate`. A problem that maximises (the setup problem's
+// f = 10 f1 - f2) returns -f and reports f1, f2, f as named components.
+// Decision space: a box [lower_i, upper_i]; optionally a grid (step > 0) anchored at lower_i:
+// feasible values are lower_i + k * step, k integer, within the bounds (the setup problem's
+// 0.001 mm grid). `snap` maps any point onto the feasible set; algorithms evaluate only snapped
+// points, so "bounds are respected exactly" holds for every evaluated x.
+// `evaluate` is const and must be thread-safe: many algorithm instances may share one problem.
+#include <span>
+#include <string>
+#include <vector>
+
+namespace metrofit::optim {
+
+class Problem {
+ public:
+  virtual ~Problem() = default;
+
+  virtual std::string name() const = 0;
+  virtual std::size_t dimension() const = 0;
+  virtual double lower(std::size_t i) const = 0;
+  virtual double upper(std::size_t i) const = 0;
+  /// Grid step of the decision space (0: continuous).
+  virtual double gridStep() const { return 0.0; }
+  /// Names of the components `evaluate` fills in (e.g. {"f1", "f2", "f"}); empty by default.
+  virtual std::vector<std::string> componentNames() const { return {}; }
+  /// Objective to MINIMISE at x (x.size() == dimension()); writes componentNames().size() values
+  /// into `components` (which has exactly that size).
+  virtual double evaluate(std::span<const double> x, std::span<double> components) const = 0;
+
+  /// Clamps x into the bounds and, on a grid, rounds each coordinate to the nearest grid point
+  /// inside the bounds.
+  void snap(std::span<double> x) const;
+  /// True when x is inside the bounds (and on the grid, within 1e-9 of a step).
+  bool isFeasible(std::span<const double> x) const;
+};
+
+/// A problem given by box bounds and a callable; for tests, benchmarks and simple uses.
+class FunctionProblem : public Problem {
+ public:
+  using Fn = double (*)(std::span<const double>);
+  FunctionProblem(std::string name, std::vector<double> lower, std::vector<double> upper, Fn fn,
+                  double step = 0.0)
+      : name_(std::move(name)), lower_(std::move(lower)), upper_(std::move(upper)), fn_(fn), step_(step) {}
+
+  std::string name() const override { return name_; }
+  std::size_t dimension() const override { return lower_.size(); }
+  double lower(std::size_t i) const override { return lower_[i]; }
+  double upper(std::size_t i) const override { return upper_[i]; }
+  double gridStep() const override { return step_; }
+  double evaluate(std::span<const double> x, std::span<double>) const override { return fn_(x); }
+
+ private:
+  std::string name_;
+  std::vector<double> lower_, upper_;
+  Fn fn_;
+  double step_;
+};
+
+/// Classic test functions (minimum 0): sphere at 0, Rosenbrock at (1,...,1), Rastrigin at 0.
+double sphere(std::span<const double> x);
+double rosenbrock(std::span<const double> x);
+double rastrigin(std::span<const double> x);
+
+}  // namespace metrofit::optim
