@@ -16,8 +16,12 @@ inline std::string env(const char* name, const char* fallback = "") {
   const char* v = std::getenv(name);
   return v ? v : fallback;
 }
-inline std::filesystem::path sourceDir() { return env("METROFIT_SOURCE_DIR", "."); }
-inline std::filesystem::path binDir() { return env("METROFIT_BIN_DIR", "bin"); }
+inline std::filesystem::path sourceDir() {
+  return env("METROFIT_SOURCE_DIR", ".");
+}
+inline std::filesystem::path binDir() {
+  return env("METROFIT_BIN_DIR", "bin");
+}
 inline std::filesystem::path outDir() {
   std::filesystem::path p = env("METROFIT_TEST_OUT", "test-output");
   std::filesystem::create_directories(p);
@@ -61,7 +65,8 @@ inline std::string readText(const std::string& path) {
 inline ::testing::AssertionResult near(double a, double b, double abs, double rel = 0.0) {
   const double tol = abs + rel * std::max(std::abs(a), std::abs(b));
   if (std::abs(a - b) <= tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << a << " vs " << b << " differ by " << std::abs(a - b) << " > " << tol;
+  return ::testing::AssertionFailure()
+         << a << " vs " << b << " differ by " << std::abs(a - b) << " > " << tol;
 }
 
 /// Files in a folder (names only), for "no file left behind" checks.

@@ -20,11 +20,11 @@ namespace metrofit {
 
 /// Why an iterative run ended.
 enum class Termination {
-  Converged,         ///< the method's own convergence test was met
-  BudgetExhausted,   ///< the evaluation budget was used up
-  MaxIterations,     ///< the iteration limit was reached
-  Cancelled,         ///< an observer asked to stop
-  Failed,            ///< numerical failure (message says why)
+  Converged,        ///< the method's own convergence test was met
+  BudgetExhausted,  ///< the evaluation budget was used up
+  MaxIterations,    ///< the iteration limit was reached
+  Cancelled,        ///< an observer asked to stop
+  Failed,           ///< numerical failure (message says why)
 };
 
 const char* toString(Termination t);
@@ -37,12 +37,12 @@ struct NamedValue {
 
 /// What an iterative method reports after every iteration.
 struct IterationSummary {
-  long iteration = 0;                 ///< 0-based iteration (generation) index
-  long evaluations = 0;               ///< objective evaluations so far
-  double best = 0.0;                  ///< best objective so far (method's own sense, see Result)
-  std::vector<NamedValue> components; ///< e.g. f1, f2 for the setup problem
-  std::vector<double> bestX;          ///< best decision vector so far (may be empty if large)
-  double progress = -1.0;             ///< fraction done in [0,1], or -1 if unknown
+  long iteration = 0;                  ///< 0-based iteration (generation) index
+  long evaluations = 0;                ///< objective evaluations so far
+  double best = 0.0;                   ///< best objective so far (method's own sense, see Result)
+  std::vector<NamedValue> components;  ///< e.g. f1, f2 for the setup problem
+  std::vector<double> bestX;           ///< best decision vector so far (may be empty if large)
+  double progress = -1.0;              ///< fraction done in [0,1], or -1 if unknown
 };
 
 enum class ObserverDecision { Continue, Stop };
@@ -59,7 +59,9 @@ class FunctionObserver final : public Observer {
  public:
   using Fn = std::function<ObserverDecision(const IterationSummary&)>;
   explicit FunctionObserver(Fn fn) : fn_(std::move(fn)) {}
-  ObserverDecision onIteration(const IterationSummary& s) override { return fn_ ? fn_(s) : ObserverDecision::Continue; }
+  ObserverDecision onIteration(const IterationSummary& s) override {
+    return fn_ ? fn_(s) : ObserverDecision::Continue;
+  }
 
  private:
   Fn fn_;

@@ -13,7 +13,9 @@
 namespace metrofit {
 namespace {
 
-bool isBlank(char c) { return c == ' ' || c == '\t'; }
+bool isBlank(char c) {
+  return c == ' ' || c == '\t';
+}
 
 std::string_view trimBlanks(std::string_view s) {
   while (!s.empty() && isBlank(s.front())) s.remove_prefix(1);
@@ -42,10 +44,14 @@ std::size_t utf8Length(std::string_view s, std::size_t i) {
   const auto c = static_cast<unsigned char>(s[i]);
   std::size_t n;
   if (c < 0x80) return 1;
-  if (c >= 0xC2 && c <= 0xDF) n = 2;
-  else if (c >= 0xE0 && c <= 0xEF) n = 3;
-  else if (c >= 0xF0 && c <= 0xF4) n = 4;
-  else return 0;
+  if (c >= 0xC2 && c <= 0xDF)
+    n = 2;
+  else if (c >= 0xE0 && c <= 0xEF)
+    n = 3;
+  else if (c >= 0xF0 && c <= 0xF4)
+    n = 4;
+  else
+    return 0;
   if (i + n > s.size()) return 0;
   for (std::size_t k = 1; k < n; ++k) {
     const auto cc = static_cast<unsigned char>(s[i + k]);
@@ -77,10 +83,10 @@ class Tokenizer {
     Record rec;
     rec.line = line_;
     std::string field;
-    bool quoted = false;       // this field started with a quote
-    bool afterQuote = false;   // the closing quote of this field was seen
-    bool anyContent = false;   // anything but blanks on this record
-    long col = 1;              // 1-based field index
+    bool quoted = false;      // this field started with a quote
+    bool afterQuote = false;  // the closing quote of this field was seen
+    bool anyContent = false;  // anything but blanks on this record
+    long col = 1;             // 1-based field index
     long quoteLine = line_;
     auto fail = [&](const std::string& what) -> void {
       throw ParseError(ErrorContext{source_, line_, col, {}}, what);
@@ -144,7 +150,8 @@ class Tokenizer {
       if (!anyContent && rec.fields.empty() && field.empty() && c == '#' && !seenHeader_) {
         // Comment line: up to the end of the line.
         const std::size_t end = t_.find('\n', pos_);
-        std::string_view body = t_.substr(pos_ + 1, (end == std::string_view::npos ? t_.size() : end) - pos_ - 1);
+        std::string_view body =
+            t_.substr(pos_ + 1, (end == std::string_view::npos ? t_.size() : end) - pos_ - 1);
         if (!body.empty() && body.back() == '\r') body.remove_suffix(1);
         for (std::size_t i = 0; i < body.size(); ++i) {
           const auto b = static_cast<unsigned char>(body[i]);
@@ -169,7 +176,8 @@ class Tokenizer {
       }
       if (c == '"') {
         if (afterQuote) fail("text after the closing quote of a quoted field");
-        if (!trimBlanks(field).empty()) fail("a quote inside an unquoted field; quote the whole field and double inner quotes");
+        if (!trimBlanks(field).empty())
+          fail("a quote inside an unquoted field; quote the whole field and double inner quotes");
         field.clear();
         quoted = true;
         inQuotes = true;
@@ -191,7 +199,8 @@ class Tokenizer {
       ++pos_;
     }
     if (inQuotes) {
-      throw ParseError(ErrorContext{source_, quoteLine, col, {}}, "unterminated quoted field (the closing quote is missing)");
+      throw ParseError(ErrorContext{source_, quoteLine, col, {}},
+                       "unterminated quoted field (the closing quote is missing)");
     }
     if (!anyContent && rec.fields.empty()) {
       rec.isBlank = true;
@@ -205,7 +214,8 @@ class Tokenizer {
 
  private:
   static std::string tooLong() {
-    return "field longer than " + std::to_string(CsvTable::kMaxFieldBytes / 1024) + " KiB; is this a CSV file?";
+    return "field longer than " + std::to_string(CsvTable::kMaxFieldBytes / 1024) +
+           " KiB; is this a CSV file?";
   }
   std::string_view t_;
   const std::string& source_;
@@ -234,13 +244,16 @@ bool parseNumber(std::string_view text, double* out) {
 CsvTable parseCsv(std::string_view text, const std::string& source) {
   CsvTable table;
   table.source_ = source;
-  if (text.size() >= 2 && ((static_cast<unsigned char>(text[0]) == 0xFF && static_cast<unsigned char>(text[1]) == 0xFE) ||
-                           (static_cast<unsigned char>(text[0]) == 0xFE && static_cast<unsigned char>(text[1]) == 0xFF))) {
-    throw ParseError(ErrorContext{source, 1, 0, {}}, "the file is UTF-16 encoded; save it as UTF-8 (comma separated)");
+  if (text.size() >= 2 &&
+      ((static_cast<unsigned char>(text[0]) == 0xFF && static_cast<unsigned char>(text[1]) == 0xFE) ||
+       (static_cast<unsigned char>(text[0]) == 0xFE && static_cast<unsigned char>(text[1]) == 0xFF))) {
+    throw ParseError(ErrorContext{source, 1, 0, {}},
+                     "the file is UTF-16 encoded; save it as UTF-8 (comma separated)");
   }
   if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   if (trimBlanks(text).empty() || text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
-    throw ParseError(ErrorContext{source, 0, 0, {}}, "the file is empty (expected a header row and data rows)");
+    throw ParseError(ErrorContext{source, 0, 0, {}},
+                     "the file is empty (expected a header row and data rows)");
   }
 
   Tokenizer tok(text, source);
@@ -262,11 +275,13 @@ CsvTable parseCsv(std::string_view text, const std::string& source) {
         const std::string& name = rec.fields[i];
         ErrorContext at{source, rec.line, static_cast<long>(i + 1), {}};
         if (name.empty()) throw ParseError(at, "empty column name in the header row");
-        if (!seen.insert(name).second) throw ParseError(at, "duplicate column name '" + printable(name) + "' in the header row");
+        if (!seen.insert(name).second)
+          throw ParseError(at, "duplicate column name '" + printable(name) + "' in the header row");
       }
       if (rec.fields.size() == 1 && rec.fields[0].find(';') != std::string::npos) {
         throw ParseError(ErrorContext{source, rec.line, 1, {}},
-                         "the header is separated by ';'; Metrofit reads comma-separated CSV with '.' as the decimal point");
+                         "the header is separated by ';'; Metrofit reads comma-separated CSV with '.' as the "
+                         "decimal point");
       }
       if (rec.fields.size() == 1 && rec.fields[0].find('\t') != std::string::npos) {
         throw ParseError(ErrorContext{source, rec.line, 1, {}},
@@ -285,12 +300,15 @@ CsvTable parseCsv(std::string_view text, const std::string& source) {
     table.lines_.push_back(rec.line);
   }
   if (!haveHeader) {
-    throw ParseError(ErrorContext{source, 0, 0, {}}, "no header row (the file has only comments or blank lines)");
+    throw ParseError(ErrorContext{source, 0, 0, {}},
+                     "no header row (the file has only comments or blank lines)");
   }
   return table;
 }
 
-CsvTable readCsvFile(const std::string& path) { return parseCsv(readFile(path), path); }
+CsvTable readCsvFile(const std::string& path) {
+  return parseCsv(readFile(path), path);
+}
 
 int CsvTable::columnIndex(std::string_view name) const {
   for (std::size_t i = 0; i < header_.size(); ++i) {
@@ -304,14 +322,15 @@ std::size_t CsvTable::requireColumn(std::string_view name) const {
   if (i >= 0) return static_cast<std::size_t>(i);
   std::string have;
   for (const auto& h : header_) have += (have.empty() ? "" : ", ") + h;
-  throw ValidationError(ErrorContext{source_, 0, 0, std::string(name)}, "missing column (the file has: " + have + ")");
+  throw ValidationError(ErrorContext{source_, 0, 0, std::string(name)},
+                        "missing column (the file has: " + have + ")");
 }
 
 void CsvTable::requireRows(std::size_t n) const {
   if (rows_.size() < n) {
-    throw ValidationError(ErrorContext{source_, 0, 0, {}},
-                          "has " + std::to_string(rows_.size()) + " data row" + (rows_.size() == 1 ? "" : "s") +
-                              ", at least " + std::to_string(n) + " needed");
+    throw ValidationError(ErrorContext{source_, 0, 0, {}}, "has " + std::to_string(rows_.size()) +
+                                                               " data row" + (rows_.size() == 1 ? "" : "s") +
+                                                               ", at least " + std::to_string(n) + " needed");
   }
 }
 
@@ -326,10 +345,12 @@ double CsvTable::number(std::size_t row, std::size_t col) const {
   if (trimBlanks(s).empty()) failAt(row, col, "empty value where a number is expected");
   std::string low;
   for (char c : trimBlanks(s)) low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (low == "nan" || low == "-nan" || low == "inf" || low == "-inf" || low == "+inf" || low == "infinity" || low == "-infinity") {
+  if (low == "nan" || low == "-nan" || low == "inf" || low == "-inf" || low == "+inf" || low == "infinity" ||
+      low == "-infinity") {
     failAt(row, col, "'" + printable(s) + "' is not a finite number");
   }
-  if (s.find(',') != std::string::npos || (s.find('.') == std::string::npos && s.find(';') != std::string::npos)) {
+  if (s.find(',') != std::string::npos ||
+      (s.find('.') == std::string::npos && s.find(';') != std::string::npos)) {
     failAt(row, col, "'" + printable(s) + "' is not a number (use '.' as the decimal point)");
   }
   failAt(row, col, "'" + printable(s) + "' is not a number");
@@ -352,7 +373,8 @@ void CsvWriter::row(const std::vector<std::string>& fields) {
   for (std::size_t i = 0; i < fields.size(); ++i) {
     if (i) text_ += ',';
     const std::string& f = fields[i];
-    const bool needsQuotes = f.find_first_of(",\"\r\n") != std::string::npos || (!f.empty() && (isBlank(f.front()) || isBlank(f.back()))) ||
+    const bool needsQuotes = f.find_first_of(",\"\r\n") != std::string::npos ||
+                             (!f.empty() && (isBlank(f.front()) || isBlank(f.back()))) ||
                              (i == 0 && !f.empty() && f.front() == '#');
     if (!needsQuotes) {
       text_ += f;

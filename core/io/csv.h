@@ -39,7 +39,9 @@ class CsvTable {
   /// Strict finite number, or ParseError "file:line:col: field 'name': 'abc' is not a number".
   double number(std::size_t row, std::size_t col) const;
   std::vector<double> numericColumn(std::size_t col) const;
-  std::vector<double> numericColumn(std::string_view name) const { return numericColumn(requireColumn(name)); }
+  std::vector<double> numericColumn(std::string_view name) const {
+    return numericColumn(requireColumn(name));
+  }
 
   /// Throws ParseError at a cell (for readers that validate cell content themselves).
   [[noreturn]] void failAt(std::size_t row, std::size_t col, const std::string& what) const;

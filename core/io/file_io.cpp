@@ -46,7 +46,8 @@ std::string readFile(const std::string& path, std::size_t maxBytes) {
   Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (fd.get() < 0) {
     const int err = errno;
-    fileFail(path, err == ENOENT ? "cannot open file (it does not exist)" : "cannot open file", err == ENOENT ? 0 : err);
+    fileFail(path, err == ENOENT ? "cannot open file (it does not exist)" : "cannot open file",
+             err == ENOENT ? 0 : err);
   }
   struct stat st {};
   if (::fstat(fd.get(), &st) != 0) fileFail(path, "cannot read file", errno);
@@ -65,7 +66,8 @@ std::string readFile(const std::string& path, std::size_t maxBytes) {
     }
     if (n == 0) break;
     out.append(buf, static_cast<std::size_t>(n));
-    if (out.size() > maxBytes) fileFail(path, "file is larger than " + std::to_string(maxBytes >> 20) + " MiB", 0);
+    if (out.size() > maxBytes)
+      fileFail(path, "file is larger than " + std::to_string(maxBytes >> 20) + " MiB", 0);
   }
   return out;
 }
@@ -79,7 +81,9 @@ void writeFileAtomic(const std::string& path, std::string_view content) {
   Fd fd(::mkstemp(tmpl.data()));
   if (fd.get() < 0) {
     const int err = errno;
-    fileFail(path, err == ENOENT ? "cannot write: the folder '" + folder + "' does not exist" : "cannot write", err == ENOENT ? 0 : err);
+    fileFail(path,
+             err == ENOENT ? "cannot write: the folder '" + folder + "' does not exist" : "cannot write",
+             err == ENOENT ? 0 : err);
   }
   auto cleanupFail = [&](const std::string& what, int err) {
     ::unlink(tmpl.c_str());

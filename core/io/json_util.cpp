@@ -21,13 +21,16 @@ void lineColumn(std::string_view text, std::size_t offset, long* line, long* col
   }
 }
 
-const char* typeName(const nlohmann::json& j) { return j.type_name(); }
+const char* typeName(const nlohmann::json& j) {
+  return j.type_name();
+}
 
 }  // namespace
 
 nlohmann::json parseJson(std::string_view text, const std::string& source) {
   if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-  if (text.size() >= 2 && (static_cast<unsigned char>(text[0]) == 0xFF || static_cast<unsigned char>(text[0]) == 0xFE)) {
+  if (text.size() >= 2 &&
+      (static_cast<unsigned char>(text[0]) == 0xFF || static_cast<unsigned char>(text[0]) == 0xFE)) {
     throw ParseError(ErrorContext{source, 1, 1, {}}, "the file is UTF-16 encoded; save it as UTF-8");
   }
   // Nesting check before parsing (outside strings).
@@ -36,11 +39,14 @@ nlohmann::json parseJson(std::string_view text, const std::string& source) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (inString) {
-      if (c == '\\') ++i;
-      else if (c == '"') inString = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        inString = false;
       continue;
     }
-    if (c == '"') inString = true;
+    if (c == '"')
+      inString = true;
     else if (c == '{' || c == '[') {
       if (++depth > kMaxJsonDepth) {
         long line, col;
@@ -58,22 +64,28 @@ nlohmann::json parseJson(std::string_view text, const std::string& source) {
     long line, col;
     lineColumn(text, e.byte > 0 ? e.byte - 1 : 0, &line, &col);
     std::string what = e.what();
-    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error while parsing value - invalid literal; last read: 'x'"
+    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error
+    // while parsing value - invalid literal; last read: 'x'"
     const auto pos = what.find("syntax error");
-    if (pos != std::string::npos) what = what.substr(pos);
-    else if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) what = "the file is empty (expected JSON)";
+    if (pos != std::string::npos)
+      what = what.substr(pos);
+    else if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+      what = "the file is empty (expected JSON)";
     throw ParseError(ErrorContext{source, line, col, {}}, "invalid JSON: " + what);
   }
 }
 
-nlohmann::json readJsonFile(const std::string& path) { return parseJson(readFile(path, 256u << 20), path); }
+nlohmann::json readJsonFile(const std::string& path) {
+  return parseJson(readFile(path, 256u << 20), path);
+}
 
 std::string dumpJson(const nlohmann::json& j) {
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 void JsonReader::fail(const std::string& what, const std::string& key) const {
-  throw ValidationError(ErrorContext{source_, 0, 0, key.empty() ? (path_.empty() ? "(top level)" : path_) : sub(key)}, what);
+  throw ValidationError(
+      ErrorContext{source_, 0, 0, key.empty() ? (path_.empty() ? "(top level)" : path_) : sub(key)}, what);
 }
 
 void JsonReader::requireObject() const {
@@ -105,7 +117,9 @@ double JsonReader::number(const std::string& key) const {
   return d;
 }
 
-double JsonReader::number(const std::string& key, double fallback) const { return has(key) ? number(key) : fallback; }
+double JsonReader::number(const std::string& key, double fallback) const {
+  return has(key) ? number(key) : fallback;
+}
 
 long JsonReader::integer(const std::string& key) const {
   const auto& v = member(key);

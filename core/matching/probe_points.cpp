@@ -47,16 +47,20 @@ ProbePointSet probePointsFromCsv(const CsvTable& t, std::size_t minPoints) {
     p.id = t.cell(r, id);
     if (p.id.empty()) t.failAt(r, id, "empty point id");
     if (auto [it, fresh] = seen.emplace(p.id, r); !fresh) {
-      t.failAt(r, id, "duplicate point id '" + p.id + "' (first on line " + std::to_string(t.lineOf(it->second)) + ")");
+      t.failAt(
+          r, id,
+          "duplicate point id '" + p.id + "' (first on line " + std::to_string(t.lineOf(it->second)) + ")");
     }
     p.surface = surface >= 0 ? t.cell(r, static_cast<std::size_t>(surface)) : std::string();
     p.nominal = {t.number(r, qx), t.number(r, qy), qz >= 0 ? t.number(r, static_cast<std::size_t>(qz)) : 0.0};
-    p.measured = {t.number(r, px), t.number(r, py), pz >= 0 ? t.number(r, static_cast<std::size_t>(pz)) : 0.0};
+    p.measured = {t.number(r, px), t.number(r, py),
+                  pz >= 0 ? t.number(r, static_cast<std::size_t>(pz)) : 0.0};
     if (set.hasNormals) {
       p.normal = {t.number(r, static_cast<std::size_t>(nx)), t.number(r, static_cast<std::size_t>(ny)),
                   nz >= 0 ? t.number(r, static_cast<std::size_t>(nz)) : 0.0};
       const double len = p.normal.norm();
-      if (len == 0.0) t.failAt(r, static_cast<std::size_t>(nx), "zero normal vector; every point needs a unit normal");
+      if (len == 0.0)
+        t.failAt(r, static_cast<std::size_t>(nx), "zero normal vector; every point needs a unit normal");
       if (std::abs(len - 1.0) > 1e-3) {
         t.failAt(r, static_cast<std::size_t>(nx),
                  "normal is not a unit vector (length " + CsvWriter::formatNumber(len, 6) + ")");
@@ -65,9 +69,9 @@ ProbePointSet probePointsFromCsv(const CsvTable& t, std::size_t minPoints) {
     set.points.push_back(std::move(p));
   }
   if (set.points.size() < minPoints) {
-    throw ValidationError(ErrorContext{t.source(), 0, 0, {}},
-                          "has " + std::to_string(set.points.size()) + " points, at least " + std::to_string(minPoints) +
-                              " needed");
+    throw ValidationError(ErrorContext{t.source(), 0, 0, {}}, "has " + std::to_string(set.points.size()) +
+                                                                  " points, at least " +
+                                                                  std::to_string(minPoints) + " needed");
   }
   return set;
 }
@@ -92,7 +96,8 @@ std::string probePointsToCsv(const ProbePointSet& set) {
     std::vector<std::string> row{p.id, p.surface, f(p.nominal.x()), f(p.nominal.y())};
     if (!set.planar) row.push_back(f(p.nominal.z()));
     if (set.hasNormals) {
-      row.insert(row.end(), {CsvWriter::formatNumber(p.normal.x(), 9), CsvWriter::formatNumber(p.normal.y(), 9)});
+      row.insert(row.end(),
+                 {CsvWriter::formatNumber(p.normal.x(), 9), CsvWriter::formatNumber(p.normal.y(), 9)});
       if (!set.planar) row.push_back(CsvWriter::formatNumber(p.normal.z(), 9));
     }
     row.insert(row.end(), {f(p.measured.x()), f(p.measured.y())});

@@ -44,12 +44,13 @@ Project Project::fromJson(const nlohmann::json& j, const std::string& source) {
   JsonReader r(j, source);
   r.requireObject();
   const std::string format = r.string("format");
-  if (format != kFormatName) r.fail("is '" + format + "', expected '" + kFormatName + "' (not a Metrofit project)", "format");
+  if (format != kFormatName)
+    r.fail("is '" + format + "', expected '" + kFormatName + "' (not a Metrofit project)", "format");
   const long version = r.integer("version");
   if (version < 1) r.fail("must be 1 or more", "version");
   if (version > kFormatVersion) {
-    r.fail("format version " + std::to_string(version) + " was written by a newer Metrofit; this build reads up to " +
-               std::to_string(kFormatVersion),
+    r.fail("format version " + std::to_string(version) +
+               " was written by a newer Metrofit; this build reads up to " + std::to_string(kFormatVersion),
            "version");
   }
   Project p;
@@ -78,9 +79,13 @@ Project Project::fromJson(const nlohmann::json& j, const std::string& source) {
   return p;
 }
 
-Project loadProject(const std::string& path) { return Project::fromJson(readJsonFile(path), path); }
+Project loadProject(const std::string& path) {
+  return Project::fromJson(readJsonFile(path), path);
+}
 
-void saveProject(const Project& project, const std::string& path) { writeFileAtomic(path, dumpJson(project.toJson())); }
+void saveProject(const Project& project, const std::string& path) {
+  writeFileAtomic(path, dumpJson(project.toJson()));
+}
 
 std::string resolveDatasetPath(const std::string& projectPath, const DatasetRef& dataset) {
   return joinPath(parentFolder(projectPath), dataset.path);

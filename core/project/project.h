@@ -41,11 +41,11 @@ inline constexpr const char* kAll[] = {kSetup, kMatching, kKinematics, kThermal,
 }  // namespace study
 
 struct DatasetRef {
-  std::string id;           ///< unique within the project
-  std::string kind;         ///< one of dataset_kind
-  std::string path;         ///< relative to the project folder, or absolute
+  std::string id;    ///< unique within the project
+  std::string kind;  ///< one of dataset_kind
+  std::string path;  ///< relative to the project folder, or absolute
   std::string description;
-  std::string licence;      ///< e.g. "MIT (CAIVIAC), see LICENSE-MIT.txt" for real data
+  std::string licence;  ///< e.g. "MIT (CAIVIAC), see LICENSE-MIT.txt" for real data
   bool operator==(const DatasetRef&) const = default;
 };
 
@@ -58,8 +58,8 @@ class Project {
   std::string name = "Untitled";
   std::string description;
   std::vector<DatasetRef> datasets;
-  nlohmann::json studies = nlohmann::json::object();   ///< study name -> settings object
-  nlohmann::json results = nlohmann::json::object();   ///< study name -> last results
+  nlohmann::json studies = nlohmann::json::object();  ///< study name -> settings object
+  nlohmann::json results = nlohmann::json::object();  ///< study name -> last results
 
   /// The dataset with this id, or nullptr.
   const DatasetRef* dataset(const std::string& id) const;

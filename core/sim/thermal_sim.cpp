@@ -14,7 +14,8 @@ bool ThermalSimOptions::isValid(std::string* why) const {
     return false;
   };
   if (!(durationMin > 0.0)) return no("durationMin must be positive");
-  if (!(stepMin > 0.0) || stepMin > durationMin) return no("stepMin must be positive and at most durationMin");
+  if (!(stepMin > 0.0) || stepMin > durationMin)
+    return no("stepMin must be positive and at most durationMin");
   if (durationMin / stepMin > 5e6) return no("too many samples (durationMin / stepMin > 5e6)");
   if (!(tauS > stepMin) || !(tauC > stepMin)) return no("time constants must exceed the step");
   for (double lag : sensorLagMin) {
@@ -23,7 +24,8 @@ bool ThermalSimOptions::isValid(std::string* why) const {
   if (noiseTempK < 0.0 || noiseDispUm < 0.0) return no("noise levels must not be negative");
   if (shareC < 0.0 || shareC > 1.0) return no("shareC must be in [0, 1]");
   for (std::size_t i = 1; i < programme.size(); ++i) {
-    if (!(programme[i].startMin > programme[i - 1].startMin)) return no("programme steps must be in increasing time");
+    if (!(programme[i].startMin > programme[i - 1].startMin))
+      return no("programme steps must be in increasing time");
   }
   return true;
 }
@@ -40,7 +42,9 @@ ThermalLog simulateThermalTest(const ThermalSimOptions& o) {
   const char* units[] = {"rpm", "", "", "", "", "", "um"};
   for (int c = 0; c < 7; ++c) log.channels.push_back({names[c], units[c], std::vector<double>(n)});
 
-  auto ambient = [&](double t) { return o.ambient0 + o.ambientAmp * std::sin(2.0 * std::numbers::pi * t / 1440.0); };
+  auto ambient = [&](double t) {
+    return o.ambient0 + o.ambientAmp * std::sin(2.0 * std::numbers::pi * t / 1440.0);
+  };
   double ts = ambient(0.0), tc = ambient(0.0);
   const double ts0 = ts, tc0 = tc;
   double sensor[4] = {ts, ts, tc, tc};

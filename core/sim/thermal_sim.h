@@ -28,9 +28,9 @@ struct ThermalSimOptions {
   double stepMin = 1.0;
   std::vector<SpeedStep> programme{{0.0, 0.0}, {10.0, 6000.0}, {250.0, 0.0}};
   double ambient0 = 20.0, ambientAmp = 0.4;
-  double gainS = 2.5, tauS = 35.0;   ///< K per power unit, min
+  double gainS = 2.5, tauS = 35.0;  ///< K per power unit, min
   double shareC = 0.55, tauC = 110.0;
-  double kS = 4.0, kC = 2.5;         ///< um per K
+  double kS = 4.0, kC = 2.5;  ///< um per K
   double sensorLagMin[4] = {4.0, 12.0, 6.0, 25.0};
   double noiseTempK = 0.02;
   double noiseDispUm = 0.25;

@@ -18,7 +18,8 @@ std::string unitOf(const std::string& name) {
   const auto us = name.rfind('_');
   if (us == std::string::npos || us + 1 >= name.size()) return {};
   const std::string u = lower(name.substr(us + 1));
-  static const char* known[] = {"um", "mm", "nm", "degc", "c", "k", "rpm", "ue", "microstrain", "pm", "nm_per_m", "w", "s", "min", "h"};
+  static const char* known[] = {"um",          "mm", "nm",       "degc", "c", "k",   "rpm", "ue",
+                                "microstrain", "pm", "nm_per_m", "w",    "s", "min", "h"};
   for (const char* k : known) {
     if (u == k) return name.substr(us + 1);
   }
@@ -34,7 +35,8 @@ ChannelKind channelKind(const ThermalChannel& c) {
   if (u == "um" || u == "mm" || u == "nm") return ChannelKind::Displacement;
   if (u == "ue" || u == "microstrain" || u == "pm") return ChannelKind::Strain;
   if (u == "rpm") return ChannelKind::Speed;
-  if (n.starts_with("disp") || n.starts_with("delta") || n.starts_with("ch")) return ChannelKind::Displacement;
+  if (n.starts_with("disp") || n.starts_with("delta") || n.starts_with("ch"))
+    return ChannelKind::Displacement;
   if (n.starts_with("fbg") || n.starts_with("strain")) return ChannelKind::Strain;
   if (n.starts_with("t") || n.find("temp") != std::string::npos) return ChannelKind::Temperature;
   if (n.find("rpm") != std::string::npos || n.find("speed") != std::string::npos) return ChannelKind::Speed;
@@ -53,7 +55,8 @@ const ThermalChannel& ThermalLog::channel(const std::string& name) const {
   if (i < 0) {
     std::string have;
     for (const auto& c : channels) have += (have.empty() ? "" : ", ") + c.name;
-    throw ValidationError(ErrorContext{source, 0, 0, name}, "no such column in the thermal log (it has: " + have + ")");
+    throw ValidationError(ErrorContext{source, 0, 0, name},
+                          "no such column in the thermal log (it has: " + have + ")");
   }
   return channels[static_cast<std::size_t>(i)];
 }
@@ -63,7 +66,8 @@ ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows) {
   log.source = table.source();
   double scale = 0.0;
   int timeCol = -1;
-  for (const auto& [name, s] : {std::pair<const char*, double>{"time_s", 1.0 / 60.0}, {"time_min", 1.0}, {"time_h", 60.0}}) {
+  for (const auto& [name, s] :
+       {std::pair<const char*, double>{"time_s", 1.0 / 60.0}, {"time_min", 1.0}, {"time_h", 60.0}}) {
     const int c = table.columnIndex(name);
     if (c < 0) continue;
     if (timeCol >= 0) {
@@ -75,11 +79,13 @@ ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows) {
     log.timeColumn = name;
   }
   if (timeCol < 0) {
-    throw ValidationError(ErrorContext{table.source(), 0, 0, "time_s|time_min|time_h"},
-                          "no time column; the first column of a thermal log must be time_s, time_min or time_h");
+    throw ValidationError(
+        ErrorContext{table.source(), 0, 0, "time_s|time_min|time_h"},
+        "no time column; the first column of a thermal log must be time_s, time_min or time_h");
   }
   if (table.columnCount() < 2) {
-    throw ValidationError(ErrorContext{table.source(), 0, 0, {}}, "a thermal log needs sensor columns besides time");
+    throw ValidationError(ErrorContext{table.source(), 0, 0, {}},
+                          "a thermal log needs sensor columns besides time");
   }
   table.requireRows(minRows);
   const std::size_t n = table.rowCount();
@@ -89,7 +95,8 @@ ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows) {
     if (r > 0 && !(log.timeMin[r] > log.timeMin[r - 1])) {
       table.failAt(r, static_cast<std::size_t>(timeCol),
                    "time does not increase (" + table.cell(r, static_cast<std::size_t>(timeCol)) + " after " +
-                       table.cell(r - 1, static_cast<std::size_t>(timeCol)) + "); rows must be in strictly increasing time");
+                       table.cell(r - 1, static_cast<std::size_t>(timeCol)) +
+                       "); rows must be in strictly increasing time");
     }
   }
   for (std::size_t c = 0; c < table.columnCount(); ++c) {

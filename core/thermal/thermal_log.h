@@ -18,9 +18,9 @@ enum class ChannelKind { Temperature, Displacement, Strain, Speed, Other };
 ChannelKind channelKind(const ThermalChannel& c);
 
 struct ThermalLog {
-  std::string source;                 ///< file name for messages
-  std::string timeColumn;             ///< "time_s", "time_min" or "time_h" as in the file
-  std::vector<double> timeMin;        ///< time in minutes, strictly increasing
+  std::string source;           ///< file name for messages
+  std::string timeColumn;       ///< "time_s", "time_min" or "time_h" as in the file
+  std::vector<double> timeMin;  ///< time in minutes, strictly increasing
   std::vector<ThermalChannel> channels;
 
   std::size_t rows() const { return timeMin.size(); }

@@ -25,8 +25,9 @@ struct CliRun {
 /// Runs metrofit-cli with `args` (shell words) in `cwd`, capturing stdout and stderr.
 CliRun cli(const std::string& args, const test::TempDir& tmp) {
   const std::string out = tmp.file(".stdout"), err = tmp.file(".stderr");
-  const std::string cmd = "cd '" + tmp.path().string() + "' && '" + (test::binDir() / "metrofit-cli").string() + "' " +
-                          args + " >'" + out + "' 2>'" + err + "'";
+  const std::string cmd = "cd '" + tmp.path().string() + "' && '" +
+                          (test::binDir() / "metrofit-cli").string() + "' " + args + " >'" + out + "' 2>'" +
+                          err + "'";
   const int status = std::system(cmd.c_str());
   CliRun r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -37,7 +38,9 @@ CliRun cli(const std::string& args, const test::TempDir& tmp) {
   return r;
 }
 
-int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+int lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
 
 TEST(Cli, VersionAndHelp) {
   test::TempDir tmp;
@@ -46,21 +49,24 @@ TEST(Cli, VersionAndHelp) {
   EXPECT_EQ(v.out, std::string("metrofit ") + kVersion + "\n");
   const CliRun h = cli("--help", tmp);
   EXPECT_EQ(h.code, 0);
-  for (const char* sub : {"demo", "setup", "match", "kinematic", "thermal", "diagnose", "report", "simulate"}) {
+  for (const char* sub :
+       {"demo", "setup", "match", "kinematic", "thermal", "diagnose", "report", "simulate"}) {
     EXPECT_NE(h.out.find(sub), std::string::npos) << sub;
   }
 }
 
 TEST(Cli, UnknownSubcommandOrOptionExits2WithOneLine) {
   test::TempDir tmp;
-  for (const char* args : {"frobnicate", "demo --no-such-option", "", "thermal", "setup --model", "match --data x.csv"}) {
+  for (const char* args :
+       {"frobnicate", "demo --no-such-option", "", "thermal", "setup --model", "match --data x.csv"}) {
     const CliRun r = cli(args, tmp);
     EXPECT_EQ(r.code, 2) << args << ": " << r.err;
     EXPECT_EQ(lines(r.err), 1) << args << ": " << r.err;
     EXPECT_EQ(r.err.rfind("metrofit-cli: ", 0), 0u) << r.err;
   }
   const CliRun u = cli("frobnicate", tmp);
-  EXPECT_EQ(u.err.rfind("metrofit-cli: unknown subcommand 'frobnicate' (one of: demo, report,", 0), 0u) << u.err;
+  EXPECT_EQ(u.err.rfind("metrofit-cli: unknown subcommand 'frobnicate' (one of: demo, report,", 0), 0u)
+      << u.err;
   const CliRun r = cli("match --data missing.csv", tmp);
   EXPECT_NE(r.err.find("missing.csv"), std::string::npos) << r.err;
   test::writeText(tmp.file("p.csv"), "id,qx,qy,px,py\n1,0,0,0,0\n2,1,0,1,0\n3,0,1,0,1\n");
@@ -126,14 +132,15 @@ TEST(Cli, DemoWritesProjectDataAndReport) {
   ASSERT_EQ(r.code, 0) << r.err;
   const auto dir = tmp.path() / "demo";
   const std::string pdf = (dir / "metrofit-demo-report.pdf").string();
-  EXPECT_EQ(r.out, pdf + "\n");  // prints where the report is
+  EXPECT_EQ(r.out, pdf + "\n");         // prints where the report is
   EXPECT_EQ(lines(r.err), 1) << r.err;  // and one summary line, no Qt chatter
   ASSERT_TRUE(std::filesystem::exists(pdf));
   EXPECT_EQ(test::readText(pdf).rfind("%PDF-", 0), 0u);
   EXPECT_GT(std::filesystem::file_size(pdf), 20000u);
   const Project p = loadProject((dir / "demo.metrofit").string());
   EXPECT_EQ(p.datasets.size(), 3u);
-  for (const auto& d : p.datasets) EXPECT_TRUE(std::filesystem::exists(resolveDatasetPath((dir / "demo.metrofit").string(), d))) << d.id;
+  for (const auto& d : p.datasets)
+    EXPECT_TRUE(std::filesystem::exists(resolveDatasetPath((dir / "demo.metrofit").string(), d))) << d.id;
   EXPECT_TRUE(std::filesystem::exists(dir / "data" / "LICENSE-MIT-CAIVIAC.txt"));
   // `report` on the saved project gives a PDF too.
   const CliRun rep = cli("report --project demo/demo.metrofit --out again.pdf", tmp);

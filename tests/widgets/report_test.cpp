@@ -221,6 +221,24 @@ TEST_F(ReportTest, TitleOptionOverridesTheProjectName) {
   EXPECT_TRUE(text.out.contains(QStringLiteral("Report test cell")));  // still named on the cover
 }
 
+TEST_F(ReportTest, ProbeToleranceComesFromTheMatchingStudy) {
+  Project p = project_;
+  p.studies["matching"] = {{"tolerance_mm", 0.2}};
+  const QString pdf = dir_.filePath(QStringLiteral("tol.pdf"));
+  writeReport(p, pdf, options());
+  const ProcessResult text = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+  EXPECT_TRUE(text.out.contains(QStringLiteral("outside ±0.200 mm"))) << text.out.toStdString();
+  EXPECT_FALSE(text.out.contains(QStringLiteral("outside ±0.050 mm")));
+  p.studies["matching"] = {{"tolerance_mm", -1}};
+  try {
+    writeReport(p, dir_.filePath(QStringLiteral("bad.pdf")), options());
+    FAIL() << "negative tolerance accepted";
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("studies.matching.tolerance_mm"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(QFileInfo::exists(dir_.filePath(QStringLiteral("bad.pdf"))));
+}
+
 TEST_F(ReportTest, UnwritableTargetThrowsFileErrorAndLeavesNothing) {
   const QString pdf = dir_.filePath(QStringLiteral("no/such/folder/report.pdf"));
   EXPECT_THROW(writeReport(project_, pdf, options()), FileError);

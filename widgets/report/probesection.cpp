@@ -4,7 +4,7 @@
 //
 // Deviation of point i (ProbePointSet::deviations): d_i = n_i . (p_i - q_i) when the file has
 // normals (signed, positive out of the material), else |p_i - q_i| (>= 0). Statistics: mean |d|,
-// RMS = sqrt(mean d^2), max |d|, and the count of |d| > kReportProbeToleranceMm.
+// RMS = sqrt(mean d^2), max |d|, and the count of |d| > the matching study's tolerance.
 #include <QCoreApplication>
 #include <QFontMetricsF>
 #include <QPainter>
@@ -36,7 +36,8 @@ struct DeviationStats {
   std::size_t outside = 0;
 };
 
-DeviationStats statsOf(const std::vector<double>& d, const std::vector<std::size_t>& rows) {
+DeviationStats statsOf(const std::vector<double>& d, const std::vector<std::size_t>& rows,
+                       double toleranceMm) {
   DeviationStats s;
   s.points = rows.size();
   if (rows.empty()) {
@@ -54,7 +55,7 @@ DeviationStats statsOf(const std::vector<double>& d, const std::vector<std::size
       s.maxAbs = a;
       s.maxIndex = i;
     }
-    if (a > kReportProbeToleranceMm) {
+    if (a > toleranceMm) {
       ++s.outside;
     }
   }
@@ -105,7 +106,7 @@ constexpr QRgb kSequential[] = {0xffffcc, 0xfeb24c, 0xfc4e2a, 0xbd0026};
 /// The colour scale of a probe set: [-limit, limit] for signed deviations, [0, limit] otherwise.
 struct ColourScale {
   bool signedScale = true;
-  double limit = kReportProbeToleranceMm;
+  double limit = kDefaultProbeToleranceMm;
   double step = 0.01;
 
   QColor colour(double d) const {
@@ -117,7 +118,7 @@ struct ColourScale {
 ColourScale scaleFor(const ProbePointSet& set, double maxAbs) {
   ColourScale s;
   s.signedScale = set.hasNormals;
-  const double m = maxAbs > 0.0 ? maxAbs : kReportProbeToleranceMm;
+  const double m = maxAbs > 0.0 ? maxAbs : kDefaultProbeToleranceMm;
   s.step = niceStep(m / (s.signedScale ? 2.0 : 4.0));
   s.limit = std::ceil(m / s.step - 1e-9) * s.step;
   return s;
@@ -257,7 +258,7 @@ void drawColourBar(ReportPainter& out, const QRectF& box, const ColourScale& sca
   }
 }
 
-void writeProbeSet(ReportPainter& out, const ReportDataset& dataset) {
+void writeProbeSet(ReportPainter& out, const ReportDataset& dataset, double toleranceMm) {
   const ProbePointSet& set = *dataset.probes;
   out.subheading(ReportText::tr("Probe points “%1”").arg(QString::fromStdString(dataset.ref.id)),
                  out.mm(40.0));
@@ -268,7 +269,7 @@ void writeProbeSet(ReportPainter& out, const ReportDataset& dataset) {
   const std::vector<double> d = set.deviations();
   std::vector<std::size_t> all(set.points.size());
   std::iota(all.begin(), all.end(), std::size_t{0});
-  const DeviationStats stats = statsOf(d, all);
+  const DeviationStats stats = statsOf(d, all, toleranceMm);
   std::vector<std::string> surfaces;
   for (const ProbePoint& pt : set.points) {
     if (std::find(surfaces.begin(), surfaces.end(), pt.surface) == surfaces.end()) {
@@ -276,7 +277,7 @@ void writeProbeSet(ReportPainter& out, const ReportDataset& dataset) {
     }
   }
 
-  const QString tolerance = QString::number(kReportProbeToleranceMm, 'f', 3);
+  const QString tolerance = QString::number(toleranceMm, 'f', 3);
   ReportTable facts;
   facts.widths = {1.3, 3.0};
   facts.rows = {
@@ -332,7 +333,7 @@ void writeProbeSet(ReportPainter& out, const ReportDataset& dataset) {
         rows.push_back(i);
       }
     }
-    const DeviationStats s = statsOf(d, rows);
+    const DeviationStats s = statsOf(d, rows, toleranceMm);
     bySurface.rows.push_back({surface.empty() ? ReportText::tr("(none)") : QString::fromStdString(surface),
                               QString::number(s.points), QString::number(s.meanSigned, 'f', 4),
                               QString::number(s.maxAbs, 'f', 4), QString::number(s.outside)});
@@ -353,7 +354,7 @@ void writeProbePointsSection(ReportPainter& out, const ReportContext& context) {
       out.newPage();
     }
     first = false;
-    writeProbeSet(out, *dataset);
+    writeProbeSet(out, *dataset, context.probeToleranceMm);
   }
 }
 

@@ -183,6 +183,16 @@ ReportSummary writeReport(const Project& project, const QString& pdfPath, const 
   context.title = options.title.isEmpty() ? QString::fromStdString(project.name) : options.title;
   context.date = QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"));
   context.datasets = readDatasets(project, options.projectPath);
+  context.probeToleranceMm = kDefaultProbeToleranceMm;
+  if (const auto m = project.studies.find(study::kMatching); m != project.studies.end() && m->is_object()) {
+    if (const auto t = m->find("tolerance_mm"); t != m->end()) {
+      if (!t->is_number() || !(t->get<double>() > 0.0)) {
+        throw ValidationError({options.projectPath.toStdString(), 0, 0, "studies.matching.tolerance_mm"},
+                              "must be a positive number (mm)");
+      }
+      context.probeToleranceMm = t->get<double>();
+    }
+  }
 
   std::vector<const SectionEntry*> sections;
   for (const SectionEntry& s : kSections) {

@@ -31,13 +31,16 @@ struct ReportContext {
   QString title;  ///< report title (the project name unless the options say otherwise)
   QString date;   ///< when the report was made, as printed
   std::vector<ReportDataset> datasets;
+  /// Symmetric tolerance (mm) the probe-point section counts deviations against: the matching
+  /// study's "tolerance_mm" when the project sets one, else kDefaultProbeToleranceMm.
+  double probeToleranceMm = 0.05;
 
   /// The datasets of one kind (dataset_kind::...), in project order.
   std::vector<const ReportDataset*> ofKind(const char* kind) const;
 };
 
-/// Symmetric tolerance (mm) the probe-point section counts deviations against.
-inline constexpr double kReportProbeToleranceMm = 0.05;
+/// Tolerance (mm) of the probe-point section when the project's matching study sets none.
+inline constexpr double kDefaultProbeToleranceMm = 0.05;
 
 QString thermalSectionTitle();
 /// "Thermal": per thermal log, the trend chart (vector) and a table of its channels.

@@ -23,9 +23,12 @@ TEST(Error, OmitsUnknownParts) {
 
 TEST(Error, HierarchyMapsToExitCodes) {
   // Everything a user can cause is an InputError (CLI exit code 2).
-  EXPECT_NO_THROW((void)dynamic_cast<const InputError&>(static_cast<const Error&>(ParseError(ErrorContext{}, "a"))));
-  EXPECT_NO_THROW((void)dynamic_cast<const InputError&>(static_cast<const Error&>(FileError(ErrorContext{}, "a"))));
-  EXPECT_NO_THROW((void)dynamic_cast<const InputError&>(static_cast<const Error&>(OptionsError(ErrorContext{}, "a"))));
+  EXPECT_NO_THROW(
+      (void)dynamic_cast<const InputError&>(static_cast<const Error&>(ParseError(ErrorContext{}, "a"))));
+  EXPECT_NO_THROW(
+      (void)dynamic_cast<const InputError&>(static_cast<const Error&>(FileError(ErrorContext{}, "a"))));
+  EXPECT_NO_THROW(
+      (void)dynamic_cast<const InputError&>(static_cast<const Error&>(OptionsError(ErrorContext{}, "a"))));
 }
 
 struct DemoOptions {

@@ -16,7 +16,8 @@ void expectParseError(const std::string& text, std::initializer_list<std::string
   } catch (const ParseError& e) {
     const std::string what = e.what();
     EXPECT_EQ(what.find('\n'), std::string::npos) << "message must be one line: " << what;
-    for (const auto& f : fragments) EXPECT_NE(what.find(f), std::string::npos) << "'" << f << "' not in: " << what;
+    for (const auto& f : fragments)
+      EXPECT_NE(what.find(f), std::string::npos) << "'" << f << "' not in: " << what;
   }
 }
 
@@ -67,9 +68,15 @@ TEST(Csv, MalformedInputsGiveOneLineErrorsWithLocation) {
   expectParseError("", {"in.csv", "empty"});
   expectParseError("\n\n  \n", {"empty"});
   expectParseError("# only a comment\n", {"no header row"});
-  expectParseError(std::string("\xFF\xFE" "a\0,\0b\0", 8), {"in.csv:1", "UTF-16"});
+  expectParseError(std::string("\xFF\xFE"
+                               "a\0,\0b\0",
+                               8),
+                   {"in.csv:1", "UTF-16"});
   expectParseError(std::string("a,b\n1,\0\n", 8), {"in.csv:2:2", "NUL"});
-  expectParseError("a,b\n1,\xB0" "C\n", {"in.csv:2:2", "invalid UTF-8 byte 0xB0"});
+  expectParseError(
+      "a,b\n1,\xB0"
+      "C\n",
+      {"in.csv:2:2", "invalid UTF-8 byte 0xB0"});
   expectParseError("a,b\n1,\"open\n2,3\n", {"in.csv:2:2", "unterminated quoted field"});
   expectParseError("a,b\n1,\"x\"y\n", {"in.csv:2:2", "after the closing quote"});
   expectParseError("a,b\n1,ab\"c\n", {"in.csv:2:2", "quote inside an unquoted field"});
@@ -79,7 +86,8 @@ TEST(Csv, MalformedInputsGiveOneLineErrorsWithLocation) {
   expectParseError("a,b,a\n1,2,3\n", {"in.csv:1:3", "duplicate column name 'a'"});
   expectParseError("a;b;c\n1;2;3\n", {"in.csv:1:1", "separated by ';'"});
   expectParseError("a\tb\n1\t2\n", {"in.csv:1:1", "separated by tabs"});
-  expectParseError("a\n" + std::string(CsvTable::kMaxFieldBytes + 10, 'x') + "\n", {"in.csv:2:1", "longer than"});
+  expectParseError("a\n" + std::string(CsvTable::kMaxFieldBytes + 10, 'x') + "\n",
+                   {"in.csv:2:1", "longer than"});
 }
 
 TEST(Csv, NumbersAreStrictAndErrorsNameTheCell) {
@@ -147,7 +155,8 @@ TEST(Csv, ReadsFilesAndReportsMissingOnes) {
     (void)readCsvFile(dir.file("nope.csv"));
     FAIL();
   } catch (const FileError& e) {
-    EXPECT_NE(std::string(e.what()).find("nope.csv: cannot open file (it does not exist)"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("nope.csv: cannot open file (it does not exist)"),
+              std::string::npos);
   }
   EXPECT_THROW((void)readCsvFile(dir.path().string()), FileError);
 }

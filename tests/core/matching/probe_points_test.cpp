@@ -21,11 +21,11 @@ std::string error(const std::string& text) {
 const char* kHeader = "id,surface,qx,qy,qz,nx,ny,nz,px,py,pz\n";
 
 TEST(ProbePoints, FullFormWithNormals) {
-  const ProbePointSet s = probePointsFromCsv(parseCsv(std::string(kHeader) +
-                                                          "A,top,0,0,10,0,0,1,0,0,10.02\n"
-                                                          "B,top,10,0,10,0,0,1,10,0,9.99\n"
-                                                          "C,side,0,5,5,-1,0,0,-0.03,5,5\n",
-                                                      "p"));
+  const ProbePointSet s =
+      probePointsFromCsv(parseCsv(std::string(kHeader) + "A,top,0,0,10,0,0,1,0,0,10.02\n"
+                                                         "B,top,10,0,10,0,0,1,10,0,9.99\n"
+                                                         "C,side,0,5,5,-1,0,0,-0.03,5,5\n",
+                                  "p"));
   EXPECT_TRUE(s.hasNormals);
   EXPECT_FALSE(s.planar);
   const auto d = s.deviations();
@@ -35,12 +35,14 @@ TEST(ProbePoints, FullFormWithNormals) {
 }
 
 TEST(ProbePoints, PositionOnlyAndPlanarForms) {
-  const ProbePointSet pos = probePointsFromCsv(parseCsv("id,surface,qx,qy,qz,px,py,pz\nH1,holes,0,0,0,0.03,0.04,0\n"
-                                                        "H2,holes,1,0,0,1,0,0\nH3,holes,0,1,0,0,1,0\n",
-                                                        "p"));
+  const ProbePointSet pos =
+      probePointsFromCsv(parseCsv("id,surface,qx,qy,qz,px,py,pz\nH1,holes,0,0,0,0.03,0.04,0\n"
+                                  "H2,holes,1,0,0,1,0,0\nH3,holes,0,1,0,0,1,0\n",
+                                  "p"));
   EXPECT_FALSE(pos.hasNormals);
   EXPECT_TRUE(test::near(pos.deviations()[0], 0.05, 1e-12));  // full distance
-  const ProbePointSet planar = probePointsFromCsv(parseCsv("id,qx,qy,px,py\n1,0,0,0.1,0\n2,5,0,5,0\n3,0,5,0,5\n", "p"));
+  const ProbePointSet planar =
+      probePointsFromCsv(parseCsv("id,qx,qy,px,py\n1,0,0,0.1,0\n2,5,0,5,0\n3,0,5,0,5\n", "p"));
   EXPECT_TRUE(planar.planar);
   EXPECT_EQ(planar.points[0].surface, "");
   EXPECT_EQ(planar.points[0].nominal.z(), 0.0);
@@ -54,8 +56,10 @@ TEST(ProbePoints, ValidationErrors) {
             "pts.csv:2:6: field 'nx': zero normal vector; every point needs a unit normal");
   EXPECT_EQ(error(h + "A,top,0,0,0,0,0,2,0,0,0\nB,top,1,0,0,0,0,1,1,0,0\nC,top,0,1,0,0,0,1,0,1,0\n"),
             "pts.csv:2:6: field 'nx': normal is not a unit vector (length 2)");
-  EXPECT_EQ(error(h + "A,top,0,0,0,0,0,1,0,0,0\nB,top,1,0,0,0,0,1,1,0,0\n"), "pts.csv: has 2 points, at least 3 needed");
-  EXPECT_EQ(error("id,qx,qy,px\n1,0,0,0\n"), "pts.csv: field 'py': missing column (the file has: id, qx, qy, px)");
+  EXPECT_EQ(error(h + "A,top,0,0,0,0,0,1,0,0,0\nB,top,1,0,0,0,0,1,1,0,0\n"),
+            "pts.csv: has 2 points, at least 3 needed");
+  EXPECT_EQ(error("id,qx,qy,px\n1,0,0,0\n"),
+            "pts.csv: field 'py': missing column (the file has: id, qx, qy, px)");
   EXPECT_EQ(error("id,qx,qy,qz,nx,px,py,pz\n1,0,0,0,1,0,0,0\n"),
             "pts.csv: field 'ny': missing column (the file has: id, qx, qy, qz, nx, px, py, pz)");
   EXPECT_EQ(error(h + ",top,0,0,0,0,0,1,0,0,0\n"), "pts.csv:2:1: field 'id': empty point id");

@@ -53,20 +53,23 @@ TEST(Project, LookupAndPaths) {
 
 TEST(Project, InvalidFilesGiveOneLineErrors) {
   EXPECT_EQ(loadError("{\"format\": \"metrofit-project\", \"version\": 1,}"),
-            "p.metrofit:1:45: invalid JSON: syntax error while parsing object key - unexpected '}'; expected string literal");
+            "p.metrofit:1:45: invalid JSON: syntax error while parsing object key - unexpected '}'; expected "
+            "string literal");
   EXPECT_EQ(loadError("[]"), "p.metrofit: field '(top level)': expected a JSON object, found array");
   EXPECT_EQ(loadError("{\"version\": 1}"), "p.metrofit: field 'format': missing");
   EXPECT_EQ(loadError("{\"format\": \"x\", \"version\": 1}"),
             "p.metrofit: field 'format': is 'x', expected 'metrofit-project' (not a Metrofit project)");
   EXPECT_EQ(loadError("{\"format\": \"metrofit-project\", \"version\": 9}"),
-            "p.metrofit: field 'version': format version 9 was written by a newer Metrofit; this build reads up to 1");
+            "p.metrofit: field 'version': format version 9 was written by a newer Metrofit; this build reads "
+            "up to 1");
   EXPECT_EQ(loadError("{\"format\": \"metrofit-project\", \"version\": \"1\"}"),
             "p.metrofit: field 'version': expected an integer, found string");
   EXPECT_EQ(loadError(R"({"format": "metrofit-project", "version": 1, "datasets": [
       {"id": "a", "kind": "thermal_log", "path": "a.csv"}, {"id": "a", "kind": "thermal_log", "path": "b.csv"}]})"),
             "p.metrofit: field 'datasets[1].id': duplicate dataset id 'a'");
-  EXPECT_EQ(loadError(R"({"format": "metrofit-project", "version": 1, "datasets": [{"id": "a", "kind": "x"}]})"),
-            "p.metrofit: field 'datasets[0].path': missing");
+  EXPECT_EQ(
+      loadError(R"({"format": "metrofit-project", "version": 1, "datasets": [{"id": "a", "kind": "x"}]})"),
+      "p.metrofit: field 'datasets[0].path': missing");
   EXPECT_EQ(loadError(R"({"format": "metrofit-project", "version": 1, "studies": []})"),
             "p.metrofit: field 'studies': expected an object, found array");
 }

@@ -19,7 +19,8 @@ std::string error(const std::string& text, std::size_t minRows = 3) {
 }
 
 TEST(ThermalLog, TimeUnitsAreConvertedToMinutes) {
-  const ThermalLog s = thermalLogFromCsv(parseCsv("time_s,T1_degC,disp_z_um\n0,20,0\n30,21,1\n90,22,2\n", "a"));
+  const ThermalLog s =
+      thermalLogFromCsv(parseCsv("time_s,T1_degC,disp_z_um\n0,20,0\n30,21,1\n90,22,2\n", "a"));
   EXPECT_EQ(s.timeMin, (std::vector<double>{0.0, 0.5, 1.5}));
   EXPECT_EQ(s.timeColumn, "time_s");
   ASSERT_EQ(s.channels.size(), 2u);
@@ -34,12 +35,15 @@ TEST(ThermalLog, TimeUnitsAreConvertedToMinutes) {
 
 TEST(ThermalLog, ValidationErrors) {
   EXPECT_EQ(error("t,T1\n0,1\n1,2\n2,3\n"),
-            "log.csv: field 'time_s|time_min|time_h': no time column; the first column of a thermal log must be time_s, "
+            "log.csv: field 'time_s|time_min|time_h': no time column; the first column of a thermal log must "
+            "be time_s, "
             "time_min or time_h");
   EXPECT_EQ(error("time_min,T1\n0,1\n2,2\n1,3\n"),
-            "log.csv:4:1: field 'time_min': time does not increase (1 after 2); rows must be in strictly increasing time");
+            "log.csv:4:1: field 'time_min': time does not increase (1 after 2); rows must be in strictly "
+            "increasing time");
   EXPECT_EQ(error("time_min,T1\n0,1\n0,2\n1,3\n"),
-            "log.csv:3:1: field 'time_min': time does not increase (0 after 0); rows must be in strictly increasing time");
+            "log.csv:3:1: field 'time_min': time does not increase (0 after 0); rows must be in strictly "
+            "increasing time");
   EXPECT_EQ(error("time_min,T1\n0,1\n1,2\n"), "log.csv: has 2 data rows, at least 3 needed");
   EXPECT_EQ(error("time_min\n0\n1\n2\n"), "log.csv: a thermal log needs sensor columns besides time");
   EXPECT_EQ(error("time_min,time_s,T1\n0,0,1\n1,60,2\n2,120,3\n"),
@@ -58,7 +62,8 @@ TEST(ThermalLog, UnknownChannelListsTheColumns) {
 }
 
 TEST(ThermalLog, CsvRoundTrip) {
-  const ThermalLog a = thermalLogFromCsv(parseCsv("time_s,T1,d_um\n0,20.125,0\n15,20.5,-0.25\n30,21,-1\n", "r"));
+  const ThermalLog a =
+      thermalLogFromCsv(parseCsv("time_s,T1,d_um\n0,20.125,0\n15,20.5,-0.25\n30,21,-1\n", "r"));
   const ThermalLog b = thermalLogFromCsv(parseCsv(thermalLogToCsv(a), "r2"));
   EXPECT_EQ(a.timeMin, b.timeMin);
   EXPECT_EQ(b.timeColumn, "time_s");
@@ -66,7 +71,8 @@ TEST(ThermalLog, CsvRoundTrip) {
 }
 
 TEST(ThermalLog, RealCaiviacLog) {
-  const ThermalLog log = readThermalLog((test::sourceDir() / "resources/demo/data/thermal_caiviac.csv").string());
+  const ThermalLog log =
+      readThermalLog((test::sourceDir() / "resources/demo/data/thermal_caiviac.csv").string());
   EXPECT_EQ(log.rows(), 11115u);
   EXPECT_EQ(log.channels.size(), 22u);
   EXPECT_TRUE(test::near(log.timeMin.back(), 166710.0 / 60.0, 1e-9));
