@@ -1,47 +1,139 @@
-// metrofit-cli match: posture matching (CONTRACT.md). The method lands with issue 5.
+// metrofit-cli match: posture matching and 5-axis machine adjustment (CONTRACT.md "match", issue 5).
+//
+//   match --data P.csv [--tolerance T] [--method sade|ga-simplex|closed-form|minimax] [--allow-scale]
+//         [--machine xfyzba|ac-table|bc-table] [--machine-def M.json] [--lock rx,ry,...]
+//         [--reference ID,ID,ID] [--seed N] [--out F]
+//
+// Writes the CONTRACT JSON (core/matching/matching.h toJson) plus "machine": the adjustment values of
+// the chosen topology (core/machine/machine.h) and its definition. One summary line on stderr.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "app/cli/commands.h"
 #include "core/common/error.h"
-#include "core/io/csv.h"
 #include "core/io/json_util.h"
+#include "core/machine/machine.h"
+#include "core/matching/matching.h"
 #include "core/matching/probe_points.h"
-#include "core/thermal/thermal_log.h"
 
 namespace metrofit::cli {
 namespace {
 
-struct MethodArgs {
-  std::string model, data, method, machine, errors, path, target, inputs, out;
-  long budget = 5000;
+struct MatchArgs {
+  std::string data, method = "sade", machine = "xfyzba", machineDef, lock, reference, out;
   std::uint64_t seed = 1;
-  double tolerance = 0.05, trainFraction = 0.5;
+  double tolerance = 0.05;
   bool allowScale = false;
 };
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+machine::MachineDefinition machineFor(const MatchArgs& a, bool machineGiven) {
+  const machine::Topology topology = machine::parseTopology(a.machine, "--machine");
+  if (a.machineDef.empty()) return machine::MachineDefinition::preset(topology);
+  const nlohmann::json j = readJsonFile(a.machineDef);
+  machine::MachineDefinition def = machine::MachineDefinition::fromJson(j, a.machineDef);
+  if (!j.is_object() || !j.contains("topology")) {
+    // The file holds geometry only: its values on top of the --machine preset.
+    nlohmann::json merged = machine::MachineDefinition::preset(topology).toJson();
+    merged.update(j);
+    def = machine::MachineDefinition::fromJson(merged, a.machineDef);
+  } else if (machineGiven && def.topology != topology) {
+    throw OptionsError(ErrorContext{{}, 0, 0, "--machine"}, "'" + a.machine + "' contradicts the topology '" +
+                                                                machine::topologyName(def.topology) +
+                                                                "' of " + a.machineDef);
+  }
+  return def;
+}
+
+int runMatch(const MatchArgs& a, bool machineGiven) {
+  using namespace matching;
+  const ProbePointSet set = readProbePoints(a.data, 1);
+  MatchOptions o;
+  o.method = parseMatchMethod(a.method, "--method");
+  o.toleranceMm = a.tolerance;
+  o.allowScale = a.allowScale;
+  o.locks = DofLocks::parse(a.lock, "--lock");
+  o.seed = a.seed;
+  if (!a.reference.empty()) {
+    o.referenceIds = splitList(a.reference);
+    if (o.referenceIds.size() != 3) {
+      throw OptionsError(
+          ErrorContext{{}, 0, 0, "--reference"},
+          "takes exactly three point ids, " + std::to_string(o.referenceIds.size()) + " given");
+    }
+  }
+  const machine::MachineDefinition def = machineFor(a, machineGiven);
+
+  // Progress on a terminal only (the run takes milliseconds on typical sets, longer on large ones).
+  const bool tty = ::isatty(::fileno(stderr)) != 0;
+  FunctionObserver progress([&](const IterationSummary& s) {
+    if (tty && s.iteration % 20 == 0) {
+      std::fprintf(stderr, "\rmatch: iteration %ld, best %s mm", s.iteration, fmt(s.best).c_str());
+      std::fflush(stderr);
+    }
+    return ObserverDecision::Continue;
+  });
+  const MatchResult r = matchPosture(set, o, &progress);
+  if (tty) std::fprintf(stderr, "\r\033[K");
+
+  const machine::Adjustment adj = machine::adjustmentFor(def, r.pose.rotation, r.pose.translation);
+  nlohmann::json j = toJson(r, set);
+  nlohmann::json m = machine::adjustmentToJson(adj);
+  m["definition"] = def.toJson();
+  j["machine"] = std::move(m);
+  j["data"] = a.data;
+  writeResult(a.out, dumpJson(j));
+
+  const auto names = machine::rotaryAxisNames(def.topology);
+  std::string line = "match: " + std::string(toString(r.method)) + " on " +
+                     std::to_string(set.points.size()) + " points of " + a.data + ": rmse " +
+                     fmt(r.after.overall.rmseMm) + " mm, max |dev| " + fmt(r.after.overall.maxAbsMm) +
+                     " mm, out of tolerance " + std::to_string(r.before.overall.outOfTolerance) + " -> " +
+                     std::to_string(r.after.overall.outOfTolerance) + " (+-" + fmt(o.toleranceMm) + " mm); " +
+                     machine::topologyName(def.topology) + " S" + names[0] + " " + fmt(adj.rotaryDeg[0]) +
+                     " deg, S" + names[1] + " " + fmt(adj.rotaryDeg[1]) + " deg";
+  if (!adj.withinTravel) line += " (OUTSIDE TRAVEL: " + adj.travelMessage + ")";
+  std::fprintf(stderr, "%s\n", line.c_str());
+  return 0;
+}
 
 }  // namespace
 
 void registerMatchCommand(CLI::App& app) {
-  auto a = std::make_shared<MethodArgs>();
+  auto a = std::make_shared<MatchArgs>();
   auto* sub = app.add_subcommand("match", "Workpiece posture matching and 5-axis machine adjustment");
   existingFile(sub->add_option("--data", a->data, "Probe points (CSV)")->required());
-  sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")->check(CLI::PositiveNumber);
+  sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   sub->add_option("--method", a->method, "sade|ga-simplex|closed-form|minimax")
       ->check(CLI::IsMember({"sade", "ga-simplex", "closed-form", "minimax"}))
-      ->default_val("sade");
+      ->capture_default_str();
   sub->add_flag("--allow-scale", a->allowScale, "Fit an isotropic scale too");
-  sub->add_option("--machine", a->machine, "Machine topology, e.g. xfyzba")->default_val("xfyzba");
+  auto* machineOpt = sub->add_option("--machine", a->machine, "Machine topology: xfyzba|ac-table|bc-table")
+                         ->check(CLI::IsMember(machine::topologyNames()))
+                         ->capture_default_str();
+  existingFile(
+      sub->add_option("--machine-def", a->machineDef, "Machine definition (JSON: pivot lengths, travel)"));
+  sub->add_option("--lock", a->lock, "Degrees of freedom held at 0: any of rx,ry,rz,x,y,z");
+  sub->add_option("--reference", a->reference, "Three point ids for the rough matching (default: automatic)");
   addSeed(sub, a->seed);
   addOut(sub, a->out);
-  sub->callback([a] {
-    selectRunner([a]() -> int {
-      (void)readProbePoints(a->data);
-      notInThisBuild("posture matching", "issue 5");
-    });
+  sub->callback([a, machineOpt] {
+    const bool machineGiven = machineOpt->count() > 0;
+    selectRunner([a, machineGiven]() -> int { return runMatch(*a, machineGiven); });
   });
 }
 

@@ -1,48 +1,293 @@
-// metrofit-cli setup: setup-data correction (CONTRACT.md). The method lands with issue 4.
+// metrofit-cli setup: setup-data correction (CONTRACT.md "setup", issue 4).
+//
+//   setup --model M.json --data R.csv [--data R2.dmo ...] [--method exact|cripso|pso|ga|coa]
+//         [--budget N] [--seed N] [--time-limit S] [--out F]
+//         [--export fanuc|heidenhain|siemens|csv --export-out F] [--tool-offset wear|geometry]
+//
+// Reads the relation-graph model (core/setup/model.h) and the measurement reports (CSV of
+// CONTRACT.md or DMIS output, core/setup/report.h), corrects the setup data with the chosen method
+// and writes the CONTRACT JSON: method, corrections_mm {setup datum id: mm}, f1_mm, f2_mm, f,
+// bonus_mm, evaluations, trace; plus f1_before_mm, per-dimension before/after values, the exact
+// method's certificate, and for a metaheuristic the exact optimum and its gap (the exact method
+// always runs: it takes well under a millisecond on the paper's size). One summary line on stderr.
+//
+//   simulate setup --model M.json [--parts N] [--w1 MM] [--w2 MM] [--seed N] [--out R.csv]
+//
+// A simulated CMM report series (core/sim/setup_sim.h). registerSimulateSetupCommand() is called by
+// commands.cpp on the `simulate` subcommand.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+#include <chrono>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
-#include "core/io/csv.h"
+#include "core/io/file_io.h"
 #include "core/io/json_util.h"
-#include "core/matching/probe_points.h"
-#include "core/thermal/thermal_log.h"
+#include "core/setup/exact.h"
+#include "core/setup/export.h"
+#include "core/setup/methods.h"
+#include "core/setup/model.h"
+#include "core/setup/objective.h"
+#include "core/setup/report.h"
+#include "core/sim/setup_sim.h"
 
 namespace metrofit::cli {
 namespace {
 
-struct MethodArgs {
-  std::string model, data, method, machine, errors, path, target, inputs, out;
+struct SetupArgs {
+  std::string model, method = "exact", out, exportFormat, exportOut, toolOffset = "wear";
+  std::vector<std::string> data;
   long budget = 5000;
   std::uint64_t seed = 1;
-  double tolerance = 0.05, trainFraction = 0.5;
-  bool allowScale = false;
+  double timeLimit = 0.0;
 };
+
+std::string fmt(double v, int decimals = 4) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+/// Rounds away binary noise (grid values like 0.004000000000000001) for the JSON.
+double clean(double v) {
+  const double r = std::round(v * 1e9) / 1e9;
+  return r == 0.0 ? 0.0 : r;
+}
+
+struct SimulateSetupArgs {
+  std::string model, out;
+  int parts = 5;
+  double w1 = 0.03, w2 = 0.02;
+  std::uint64_t seed = 1;
+};
+
+int runSimulateSetup(const SimulateSetupArgs& a) {
+  const setup::Model model = setup::readModel(a.model);
+  SetupSimOptions o;
+  o.parts = a.parts;
+  o.w1 = a.w1;
+  o.w2 = a.w2;
+  o.seed = a.seed;
+  const std::string csv = simulateSetupReport(model, o);
+  writeResult(a.out, csv);
+  std::fprintf(stderr, "simulate setup: %d parts x %zu dimensions of %s, w1 %s mm, w2 %s mm, seed %llu\n",
+               a.parts, model.dimensions.size(), a.model.c_str(), fmt(a.w1, 3).c_str(), fmt(a.w2, 3).c_str(),
+               static_cast<unsigned long long>(a.seed));
+  return 0;
+}
+
+nlohmann::json traceEntry(const IterationSummary& s, const char* stage = nullptr) {
+  nlohmann::json e{{"iteration", s.iteration}, {"evaluations", s.evaluations}};
+  if (stage) e["stage"] = stage;
+  for (const auto& c : s.components) {
+    const std::string key = c.name == "f" ? "f" : c.name + "_mm";
+    e[key] = clean(c.value);
+  }
+  return e;
+}
+
+nlohmann::json certificateJson(const setup::ExactCertificate& c) {
+  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(clean(v)) : nlohmann::json(nullptr); };
+  return {{"solver", c.solver},
+          {"lp_status", c.lpStatus},
+          {"lp_f1_mm", num(c.lpF1)},
+          {"grid_status", c.milpStatus},
+          {"f1_optimal_on_grid", c.f1Optimal},
+          {"grid_f1_mm", num(c.gridF1)},
+          {"next_f1_infeasible_mm", num(c.nextF1Infeasible)},
+          {"feasibility_probes", c.feasibilityProbes},
+          {"least_norm_status", c.normStatus},
+          {"f2_minimal", c.f2Optimal},
+          {"f2_lower_bound_mm", num(c.f2LowerBound)},
+          {"least_norm_rounds", c.normRounds},
+          {"cuts", c.cuts},
+          {"solver_calls", c.solverCalls}};
+}
+
+int runSetup(const SetupArgs& a) {
+  if (!a.exportFormat.empty() && a.exportOut.empty())
+    throw OptionsError(ErrorContext{{}, 0, 0, "--export"}, "needs --export-out FILE");
+  if (a.exportFormat.empty() && !a.exportOut.empty())
+    throw OptionsError(ErrorContext{{}, 0, 0, "--export-out"}, "needs --export fanuc|heidenhain|siemens|csv");
+  const setup::Model model = setup::readModel(a.model);
+  const setup::Measurements meas = setup::readMeasurements(a.data, model);
+  const setup::SetupInstance inst(model, meas);
+
+  setup::ExactOptions eo;
+  eo.timeLimitSeconds = a.timeLimit;
+  const auto t0 = std::chrono::steady_clock::now();
+  const setup::ExactResult exact = setup::solveExact(inst, eo);
+  const double exactMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  std::vector<double> x;
+  nlohmann::json trace = nlohmann::json::array();
+  long evaluations = 0;
+  std::string termination;
+  if (a.method == "exact") {
+    x = exact.x;
+    evaluations = exact.certificate.solverCalls;
+    const char* stages[] = {"lp", "grid"};
+    for (std::size_t i = 0; i < exact.run.trace.size(); ++i)
+      trace.push_back(traceEntry(exact.run.trace[i], i < 2 ? stages[i] : "least_norm"));
+    termination = toString(exact.run.termination);
+  } else {
+    const setup::SetupProblem problem(inst);
+    const auto algorithm = setup::makeSetupAlgorithm(a.method, a.budget, a.seed);
+    const bool tty = ::isatty(::fileno(stderr)) != 0;
+    auto last = std::chrono::steady_clock::now();
+    FunctionObserver progress([&](const IterationSummary& s) {
+      const auto now = std::chrono::steady_clock::now();
+      if (tty && now - last > std::chrono::milliseconds(200)) {
+        last = now;
+        std::fprintf(stderr, "\rsetup: %s %3.0f%%, f1 %s mm", a.method.c_str(),
+                     100.0 * std::max(0.0, s.progress),
+                     s.components.empty() ? "?" : fmt(s.components[0].value).c_str());
+        std::fflush(stderr);
+      }
+      return ObserverDecision::Continue;
+    });
+    const optim::Result r = algorithm->optimise(problem, &progress);
+    if (tty) std::fprintf(stderr, "\r\033[K");
+    x = r.bestX;
+    evaluations = r.run.evaluations;
+    for (const auto& s : r.run.trace) trace.push_back(traceEntry(s));
+    termination = toString(r.run.termination);
+  }
+  const setup::SetupScore score = inst.score(x);
+  const double f1Before = inst.f1Before();
+
+  nlohmann::json j;
+  j["method"] = a.method;
+  j["corrections_mm"] = nlohmann::json::object();
+  for (std::size_t i = 0; i < x.size(); ++i) j["corrections_mm"][inst.datumIds()[i]] = clean(x[i]);
+  j["f1_mm"] = clean(score.f1);
+  j["f2_mm"] = clean(score.f2);
+  j["f"] = clean(score.f);
+  j["bonus_mm"] = clean(score.f1 - f1Before);
+  j["evaluations"] = evaluations;
+  j["trace"] = std::move(trace);
+  j["f1_before_mm"] = clean(f1Before);
+  j["termination"] = termination;
+  j["model"] = a.model;
+  j["data"] = a.data;
+  j["parts"] = meas.parts.size();
+  j["step_mm"] = model.stepMm;
+  {
+    const std::vector<double> zero(x.size(), 0.0);
+    const auto devAfter = inst.deviationsAfter(x);
+    const auto budBefore = inst.budgets(zero), budAfter = inst.budgets(x);
+    nlohmann::json dims = nlohmann::json::array();
+    for (std::size_t q = 0; q < inst.dimensions(); ++q) {
+      dims.push_back({{"id", inst.dimensionIds()[q]},
+                      {"lower_mm", inst.lowerLimit(q)},
+                      {"upper_mm", inst.upperLimit(q)},
+                      {"deviation_before_mm", clean(inst.deviation(q))},
+                      {"deviation_after_mm", clean(devAfter[q])},
+                      {"budget_before_mm", clean(budBefore[q])},
+                      {"budget_after_mm", clean(budAfter[q])}});
+    }
+    j["dimensions"] = std::move(dims);
+  }
+  nlohmann::json ex{{"f1_mm", clean(exact.score.f1)},
+                    {"f2_mm", clean(exact.score.f2)},
+                    {"f", clean(exact.score.f)},
+                    {"certificate", certificateJson(exact.certificate)}};
+  if (a.method == "exact") {
+    j["certificate"] = certificateJson(exact.certificate);
+  } else {
+    j["seed"] = a.seed;
+    j["budget"] = a.budget;
+    j["exact"] = ex;
+    j["gap_f1_mm"] = clean(exact.score.f1 - score.f1);
+    j["gap_f2_mm"] = clean(score.f2 - exact.score.f2);
+  }
+
+  if (!a.exportFormat.empty()) {
+    setup::ExportOptions xo;
+    xo.toolOffset = a.toolOffset == "geometry" ? setup::ToolOffset::Geometry : setup::ToolOffset::Wear;
+    const std::string text =
+        setup::exportCorrections(model, x, setup::parseControllerFormat(a.exportFormat, "--export"), xo);
+    writeFileAtomic(a.exportOut, text);
+    j["export"] = {{"format", a.exportFormat}, {"file", a.exportOut}};
+  }
+  writeResult(a.out, dumpJson(j));
+
+  std::string line = "setup: " + a.method + " on " + std::to_string(inst.dimensions()) + " dimensions of " +
+                     std::to_string(meas.parts.size()) + (meas.parts.size() == 1 ? " part" : " parts") +
+                     ", " + std::to_string(inst.variables()) + " setup data: f1 " + fmt(f1Before) + " -> " +
+                     fmt(score.f1) + " mm (bonus " + fmt(score.f1 - f1Before) + "), |x| " + fmt(score.f2) +
+                     " mm";
+  if (a.method == "exact") {
+    line += std::string("; f1 ") + (exact.certificate.f1Optimal ? "optimal" : "NOT proven optimal") +
+            " on the grid, |x| " + (exact.certificate.f2Optimal ? "minimal" : "not proven minimal") + " (" +
+            fmt(exactMs, 2) + " ms)";
+  } else {
+    line += ", " + std::to_string(evaluations) + " evaluations; gap to exact f1 " +
+            fmt(exact.score.f1 - score.f1) + " mm";
+  }
+  if (!a.exportFormat.empty()) line += "; " + a.exportFormat + " -> " + a.exportOut;
+  std::fprintf(stderr, "%s\n", line.c_str());
+  return 0;
+}
 
 }  // namespace
 
 void registerSetupCommand(CLI::App& app) {
-  auto a = std::make_shared<MethodArgs>();
+  auto a = std::make_shared<SetupArgs>();
   auto* sub = app.add_subcommand("setup", "Setup-data correction (work and tool offsets) from CMM reports");
   existingFile(sub->add_option("--model", a->model, "Setup model (relation graph, JSON)")->required());
-  existingFile(sub->add_option("--data", a->data, "CMM report series (CSV)")->required());
+  existingFile(sub->add_option("--data", a->data, "Measurement report(s): CMM series CSV or DMIS output")
+                   ->required()
+                   ->take_all());
   sub->add_option("--method", a->method, "exact|cripso|pso|ga|coa")
-      ->check(CLI::IsMember({"exact", "cripso", "pso", "ga", "coa"}))
-      ->default_val("exact");
-  sub->add_option("--budget", a->budget, "Evaluation budget of a metaheuristic")->check(CLI::PositiveNumber);
+      ->check(CLI::IsMember(setup::setupMethodNames()))
+      ->capture_default_str();
+  sub->add_option("--budget", a->budget, "Evaluation budget of a metaheuristic")
+      ->check(CLI::Range(1L, 100000000L))
+      ->capture_default_str();
+  sub->add_option("--time-limit", a->timeLimit,
+                  "Time limit of every LP/MILP solve of the exact method, s (0: none)")
+      ->check(CLI::Range(0.0, 1.0e6));
+  sub->add_option("--export", a->exportFormat,
+                  "Also write the corrections for a controller: fanuc|heidenhain|siemens|csv")
+      ->check(CLI::IsMember({"fanuc", "heidenhain", "siemens", "csv"}));
+  sub->add_option("--export-out", a->exportOut, "File for --export (written atomically)");
+  sub->add_option("--tool-offset", a->toolOffset, "Tool register of the exports: wear|geometry")
+      ->check(CLI::IsMember({"wear", "geometry"}))
+      ->capture_default_str();
   addSeed(sub, a->seed);
   addOut(sub, a->out);
-  sub->callback([a] {
-    selectRunner([a]() -> int {
-      (void)readJsonFile(a->model);
-      (void)readCsvFile(a->data);
-      notInThisBuild("setup-data correction", "issue 4");
-    });
-  });
+  sub->callback([a] { selectRunner([a]() -> int { return runSetup(*a); }); });
+}
+
+void registerSimulateSetupCommand(CLI::App& simulate) {
+  auto a = std::make_shared<SimulateSetupArgs>();
+  auto* sub = simulate.add_subcommand(
+      "setup", "A CMM report series of a setup model: setup-data and random errors (seed 000 Eq. 12-13)");
+  existingFile(sub->add_option("--model", a->model, "Setup model (relation graph, JSON)")->required());
+  sub->add_option("--parts", a->parts, "Parts in the series")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  sub->add_option("--w1", a->w1, "Weight of the setup-data errors, mm (Eq. 12)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  sub->add_option("--w2", a->w2, "Weight of the random errors, mm (Eq. 13)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  addSeed(sub, a->seed);
+  addOut(sub, a->out);
+  sub->callback([a] { selectRunner([a]() -> int { return runSimulateSetup(*a); }); });
 }
 
 }  // namespace metrofit::cli

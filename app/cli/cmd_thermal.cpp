@@ -1,53 +1,370 @@
-// metrofit-cli thermal fit (CONTRACT.md). The models land with issue 7.
+// metrofit-cli thermal fit|predict|hysteresis|modular|simulate (CONTRACT.md; issue 7, seed 004).
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include <chrono>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
 #include "core/io/csv.h"
 #include "core/io/json_util.h"
-#include "core/matching/probe_points.h"
+#include "core/sim/thermal_modular_sim.h"
+#include "core/thermal/hysteresis.h"
 #include "core/thermal/thermal_log.h"
+#include "core/thermal/thermal_model.h"
 
 namespace metrofit::cli {
 namespace {
 
-struct MethodArgs {
-  std::string model, data, method, machine, errors, path, target, inputs, out;
-  long budget = 5000;
+using thermal::ThermalModelKind;
+
+struct FitArgs {
+  std::string data, target, inputs, model = "gnnmci", training = "pso-ls", out, saveModel;
+  double trainFraction = 0.5;
   std::uint64_t seed = 1;
-  double tolerance = 0.05, trainFraction = 0.5;
-  bool allowScale = false;
+  int iterations = 0;
 };
+
+struct PredictArgs {
+  std::string modelFile, data, out;
+};
+
+struct HysteresisArgs {
+  std::string data, target, inputs, out;
+  double smoothingMin = 10.0;
+};
+
+struct ModularArgs {
+  std::vector<std::string> train;
+  std::string test, target, inputs, model = "gnnmci", training = "pso-ls", out, saveModel;
+  std::uint64_t seed = 1;
+};
+
+struct SimulateArgs {
+  std::string test = "z", out;
+  std::uint64_t seed = 1;
+};
+
+void summary(const std::string& line) {
+  std::fprintf(stderr, "%s\n", line.c_str());
+}
+
+std::string num(double v, int digits = 4) {
+  return std::isfinite(v) ? CsvWriter::formatNumber(v, digits) : "n/a";
+}
+
+/// Progress on stderr when it is a terminal (CONTRACT.md), erased before the summary line.
+class Progress {
+ public:
+  explicit Progress(std::string what)
+      : what_(std::move(what)),
+        tty_(::isatty(::fileno(stderr)) == 1),
+        observer_([this](const IterationSummary& s) {
+          if (tty_ && s.progress >= 0.0) {
+            const int pct = static_cast<int>(100.0 * s.progress);
+            if (pct != last_) {
+              std::fprintf(stderr, "\r%s: %3d %%", what_.c_str(), pct);
+              std::fflush(stderr);
+              last_ = pct;
+            }
+          }
+          return ObserverDecision::Continue;
+        }) {}
+  ~Progress() {
+    if (tty_ && last_ >= 0) std::fprintf(stderr, "\r%*s\r", static_cast<int>(what_.size()) + 8, "");
+  }
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+  Observer* observer() { return &observer_; }
+
+ private:
+  std::string what_;
+  bool tty_;
+  int last_ = -1;
+  FunctionObserver observer_;
+};
+
+double seconds(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+nlohmann::json metricsJson(const thermal::ThermalMetrics& m) {
+  return {{"rows", m.n}, {"R", m.r}, {"RMSE", m.rmse}, {"E", m.e}, {"residual_band", m.residualBand}};
+}
+
+nlohmann::json trainingJson(const thermal::ThermalTraining& t) {
+  nlohmann::json j{{"termination", toString(t.run.termination)},
+                   {"message", t.run.message},
+                   {"iterations", t.run.iterations},
+                   {"evaluations", t.run.evaluations},
+                   {"fitness", t.fitness},
+                   {"first_fitness", t.firstFitness}};
+  return j;
+}
+
+nlohmann::json traceJson(const RunInfo& run) {
+  nlohmann::json trace = nlohmann::json::array();
+  for (const auto& s : run.trace) {
+    trace.push_back({{"iteration", s.iteration}, {"evaluations", s.evaluations}, {"best", s.best}});
+  }
+  return trace;
+}
+
+thermal::ThermalFitOptions fitOptions(const std::string& model, const std::string& training,
+                                      std::uint64_t seed, int iterations) {
+  thermal::ThermalFitOptions o;
+  o.model = thermal::thermalModelKind(model);
+  o.gnnmci.training = training == "pso" ? thermal::GnnmciOptions::Training::Pso
+                                        : thermal::GnnmciOptions::Training::PsoLeastSquares;
+  o.setSeed(seed);
+  if (iterations > 0) {
+    o.gnnmci.iterations = iterations;
+    o.mlp.maxEpochs = iterations;
+  }
+  return o;
+}
+
+std::string unitOf(const ThermalLog& log, const std::string& column) {
+  const std::string u = log.channel(column).unit;
+  return u.empty() ? "" : " " + u;
+}
+
+/// A note for the summary line when least squares gave an unstable grey model.
+std::string unstableNote(const thermal::ThermalModel& m) {
+  if (m.kind == ThermalModelKind::Mlp || m.grey.b1 > 0.0) return "";
+  return "; unstable model: b1 = " + num(m.grey.b1) + " <= 0";
+}
+
+int runFit(const FitArgs& a, bool fractionGiven) {
+  const ThermalLog log = readThermalArgs(a.data, a.target, a.inputs);
+  const thermal::ThermalFitOptions o = fitOptions(a.model, a.training, a.seed, a.iterations);
+  const double fraction = fractionGiven ? a.trainFraction : thermal::defaultTrainFraction(o.model);
+  const thermal::ThermalSeries series = thermal::selectThermalSeries(log, a.target, splitList(a.inputs));
+  const auto start = std::chrono::steady_clock::now();
+  thermal::ThermalEvaluation ev;
+  {
+    Progress progress("thermal fit");
+    ev = thermal::fitAndEvaluate(series, fraction, o, progress.observer());
+  }
+  const double secs = seconds(start);
+  const thermal::ThermalTraining& t = ev.training;
+  if (t.run.termination == Termination::Cancelled) throw std::runtime_error("training was cancelled");
+  nlohmann::json j;
+  j["model"] = toString(o.model);
+  j["target"] = a.target;
+  j["inputs"] = t.model.inputs;
+  j["train_fraction"] = fraction;
+  j["train_rows"] = ev.fitRows;
+  j["heldout_rows"] = ev.heldoutRows;
+  j["fit_rmse"] = ev.fit.rmse;
+  j["heldout_rmse"] = ev.heldout.rmse;
+  // Table 4's indices are those of the testing data: the held-out rows.
+  j["R"] = ev.heldout.r;
+  j["E"] = ev.heldout.e;
+  j["residual_band"] = ev.heldout.residualBand;
+  j["fit"] = metricsJson(ev.fit);
+  j["heldout"] = metricsJson(ev.heldout);
+  j["parameters"] = thermal::thermalModelParameters(t.model);
+  j["training"] = trainingJson(t);
+  if (o.model != ThermalModelKind::Gmc) j["seed"] = a.seed;
+  if (o.model == ThermalModelKind::Gnnmci) {
+    j["training"]["method"] = toString(o.gnnmci.training);
+    j["trace"] = traceJson(t.run);
+  }
+  if (!a.saveModel.empty()) writeResult(a.saveModel, dumpJson(thermal::thermalModelToJson(t.model)));
+  writeResult(a.out, dumpJson(j));
+  const std::string unit = unitOf(log, a.target);
+  summary("thermal fit: " + std::string(toString(o.model)) + " on " + a.data + ", " +
+          std::to_string(ev.fitRows) + " fit / " + std::to_string(ev.heldoutRows) +
+          " held-out rows: fit RMSE " + num(ev.fit.rmse) + unit + ", held-out RMSE " + num(ev.heldout.rmse) +
+          unit + ", R " + num(ev.heldout.r, 3) + ", E " + num(ev.heldout.e, 3) + ", band " +
+          num(ev.heldout.residualBand) + unit + " (" + num(secs, 2) + " s)" + unstableNote(t.model));
+  return 0;
+}
+
+int runPredict(const PredictArgs& a) {
+  const thermal::ThermalModel model = thermal::thermalModelFromJson(readJsonFile(a.modelFile), a.modelFile);
+  const ThermalLog log = readThermalLog(a.data);
+  const thermal::ThermalSeries series = thermal::selectThermalSeries(log, model.target, model.inputs, false);
+  const thermal::Compensation c = thermal::compensationValues(model, series);
+  writeResult(a.out, thermal::compensationToCsv(c));
+  double peak = 0.0;
+  for (double v : c.predicted) peak = std::max(peak, std::abs(v));
+  const std::string unit = series.hasTarget() ? unitOf(log, model.target) : "";
+  std::string line = "thermal predict: " + std::string(toString(model.kind)) + " model on " + a.data + ", " +
+                     std::to_string(series.rows()) + " rows, predicted error up to " + num(peak) + unit;
+  if (series.hasTarget()) {
+    const auto y = thermal::change(series.target);
+    const thermal::ThermalMetrics m = thermal::thermalMetrics(y, c.predicted);
+    line +=
+        "; against " + model.target + ": RMSE " + num(m.rmse) + unit + ", band " + num(m.residualBand) + unit;
+  }
+  summary(line);
+  return 0;
+}
+
+int runHysteresis(const HysteresisArgs& a) {
+  const ThermalLog log = readThermalArgs(a.data, a.target, a.inputs);
+  const thermal::ThermalSeries series = thermal::selectThermalSeries(log, a.target, splitList(a.inputs));
+  thermal::HysteresisOptions o;
+  o.smoothingMin = a.smoothingMin;
+  const thermal::HysteresisAnalysis h = thermal::analyseHysteresis(series, o);
+  writeResult(a.out, dumpJson(thermal::hysteresisToJson(h)));
+  std::string line = "thermal hysteresis: " + std::to_string(h.heatingRows) + " heating / " +
+                     std::to_string(h.coolingRows) + " cooling rows;";
+  for (const auto& s : h.sensors)
+    line += " " + s.sensor + " tau " + num(s.tauMin, 3) + " min, loop " + num(s.normalisedLoopArea, 2) + ";";
+  line.pop_back();
+  summary(line);
+  return 0;
+}
+
+int runModular(const ModularArgs& a) {
+  const auto inputs = splitList(a.inputs);
+  std::vector<thermal::ThermalSeries> train;
+  for (const auto& f : a.train) {
+    train.push_back(thermal::selectThermalSeries(readThermalArgs(f, a.target, a.inputs), a.target, inputs));
+  }
+  const ThermalLog testLog = readThermalArgs(a.test, a.target, a.inputs);
+  const thermal::ThermalSeries test = thermal::selectThermalSeries(testLog, a.target, inputs);
+  const thermal::ThermalFitOptions o = fitOptions(a.model, a.training, a.seed, 0);
+  thermal::ModularEvaluation m;
+  {
+    Progress progress("thermal modular");
+    m = thermal::fitModular(train, test, o, progress.observer());
+  }
+  if (m.training.run.termination == Termination::Cancelled)
+    throw std::runtime_error("training was cancelled");
+  nlohmann::json j;
+  j["model"] = toString(o.model);
+  j["target"] = a.target;
+  j["inputs"] = inputs;
+  j["train"] = a.train;
+  j["test"] = a.test;
+  j["R"] = m.test.r;
+  j["RMSE"] = m.test.rmse;
+  j["E"] = m.test.e;
+  j["residual_band"] = m.test.residualBand;
+  j["error_peak"] = m.errorPeak;
+  j["error_rms"] = m.errorRms;
+  j["reduction_peak"] = m.reductionPeak;
+  j["reduction_rms"] = m.reductionRms;
+  j["parameters"] = thermal::thermalModelParameters(m.training.model);
+  j["training"] = trainingJson(m.training);
+  if (!a.saveModel.empty()) writeResult(a.saveModel, dumpJson(thermal::thermalModelToJson(m.training.model)));
+  writeResult(a.out, dumpJson(j));
+  const std::string unit = unitOf(testLog, a.target);
+  summary("thermal modular: " + std::string(toString(o.model)) + " fitted on " +
+          std::to_string(a.train.size()) + " tests, on " + a.test + ": error " + num(m.errorPeak) + unit +
+          " -> +-" + num(m.residualPeak) + unit + " (" + num(100.0 * m.reductionPeak, 3) + " % less), RMSE " +
+          num(m.test.rmse) + unit + ", R " + num(m.test.r, 3) + ", E " + num(m.test.e, 3) +
+          unstableNote(m.training.model));
+  return 0;
+}
+
+int runSimulate(const SimulateArgs& a) {
+  ModularSimOptions o;
+  o.seed = a.seed;
+  const ModularTest test = a.test == "z"   ? ModularTest::ZHeating
+                           : a.test == "c" ? ModularTest::CHeating
+                                           : ModularTest::Combined;
+  const ThermalLog log = simulateModularTest(test, o);
+  writeResult(a.out, thermalLogToCsv(log));
+  summary("thermal simulate: " + a.test + " heating test, " + std::to_string(log.rows()) + " rows, seed " +
+          std::to_string(a.seed));
+  return 0;
+}
+
+void addColumns(CLI::App* sub, std::string& target, std::string& inputs) {
+  sub->add_option("--target", target, "Column to model (e.g. disp_z_um)")->required();
+  sub->add_option("--inputs", inputs, "Comma-separated input columns")->required();
+}
 
 }  // namespace
 
 void registerThermalCommands(CLI::App& app) {
-  auto* th = app.add_subcommand("thermal", "Thermal error modelling");
+  auto* th = app.add_subcommand("thermal", "Thermal error modelling (GNNMCI(1,N), GMC(1,N), MLP; seed 004)");
   th->require_subcommand(1);
-  auto a = std::make_shared<MethodArgs>();
+
+  auto f = std::make_shared<FitArgs>();
   auto* fit =
       th->add_subcommand("fit", "Fit a thermal error model on the first part of a log, test on the rest");
-  existingFile(fit->add_option("--data", a->data, "Thermal log (CSV)")->required());
-  fit->add_option("--target", a->target, "Column to model (e.g. disp_z_um)")->required();
-  fit->add_option("--inputs", a->inputs, "Comma-separated input columns")->required();
-  fit->add_option("--model", a->method, "gnnmci|gmc|mlp")
+  existingFile(fit->add_option("--data", f->data, "Thermal log (CSV)")->required());
+  addColumns(fit, f->target, f->inputs);
+  fit->add_option("--model", f->model, "gnnmci|gmc|mlp")
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp"}))
-      ->default_val("gnnmci");
-  fit->add_option("--train-fraction", a->trainFraction, "Fraction of rows used for fitting")
-      ->check(CLI::Range(0.05, 0.95))
       ->capture_default_str();
-  addSeed(fit, a->seed);
-  addOut(fit, a->out);
-  fit->callback([a] {
-    selectRunner([a]() -> int {
-      (void)readThermalArgs(a->data, a->target, a->inputs);
-      notInThisBuild("thermal model fitting", "issue 7");
-    });
+  auto* fraction = fit->add_option("--train-fraction", f->trainFraction,
+                                   "Fraction of rows (from the start) used for fitting; default 0.5, 0.7 for "
+                                   "mlp (Table 3)")
+                       ->check(CLI::Range(0.05, 0.95));
+  fit->add_option("--training", f->training,
+                  "gnnmci: pso-ls (swarm over w11, layer-C weights by least squares) or pso (all weights)")
+      ->check(CLI::IsMember({"pso", "pso-ls"}))
+      ->capture_default_str();
+  fit->add_option("--iterations", f->iterations, "PSO iterations (gnnmci) or maximum LM epochs (mlp)")
+      ->check(CLI::Range(1, 1000000));
+  fit->add_option("--save-model", f->saveModel, "Also write the fitted model (JSON) for 'thermal predict'");
+  addSeed(fit, f->seed);
+  addOut(fit, f->out);
+  fit->callback([f, fraction] {
+    const bool given = fraction->count() > 0;
+    selectRunner([f, given]() -> int { return runFit(*f, given); });
   });
+
+  auto p = std::make_shared<PredictArgs>();
+  auto* pred = th->add_subcommand(
+      "predict",
+      "Compensation values from a fitted model on new data (CSV time, predicted error, compensation)");
+  existingFile(pred->add_option("--model-file", p->modelFile, "Model written by 'thermal fit --save-model'")
+                   ->required());
+  existingFile(pred->add_option("--data", p->data, "Thermal log with the model's input columns")->required());
+  pred->add_option("--out", p->out, "Result file (CSV; written atomically). Default: stdout");
+  pred->callback([p] { selectRunner([p]() -> int { return runPredict(*p); }); });
+
+  auto h = std::make_shared<HysteresisArgs>();
+  auto* hys = th->add_subcommand(
+      "hysteresis", "Displacement against each sensor over heating and cooling: loop areas and sensor lags");
+  existingFile(hys->add_option("--data", h->data, "Thermal log (CSV)")->required());
+  addColumns(hys, h->target, h->inputs);
+  hys->add_option("--smoothing-min", h->smoothingMin, "Window (min) of the heating / cooling phase detection")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  addOut(hys, h->out);
+  hys->callback([h] { selectRunner([h]() -> int { return runHysteresis(*h); }); });
+
+  auto m = std::make_shared<ModularArgs>();
+  auto* mod = th->add_subcommand(
+      "modular", "Fit one model on several tests (e.g. Z and C heating), predict another (Section 4.3)");
+  existingFile(
+      mod->add_option("--train", m->train, "Training test log (CSV); repeat for each test")->required());
+  existingFile(mod->add_option("--test", m->test, "Test log to predict (CSV)")->required());
+  addColumns(mod, m->target, m->inputs);
+  mod->add_option("--model", m->model, "gnnmci|gmc|mlp")
+      ->check(CLI::IsMember({"gnnmci", "gmc", "mlp"}))
+      ->capture_default_str();
+  mod->add_option("--training", m->training, "gnnmci: pso-ls or pso (see thermal fit)")
+      ->check(CLI::IsMember({"pso", "pso-ls"}))
+      ->capture_default_str();
+  mod->add_option("--save-model", m->saveModel, "Also write the fitted model (JSON)");
+  addSeed(mod, m->seed);
+  addOut(mod, m->out);
+  mod->callback([m] { selectRunner([m]() -> int { return runModular(*m); }); });
+
+  auto s = std::make_shared<SimulateArgs>();
+  auto* sim = th->add_subcommand("simulate", "A simulated ram heating test (Z axis, C axis or both)");
+  sim->add_option("--test", s->test, "z|c|combined")
+      ->check(CLI::IsMember({"z", "c", "combined"}))
+      ->capture_default_str();
+  addSeed(sim, s->seed);
+  sim->add_option("--out", s->out, "Thermal log to write (CSV; written atomically). Default: stdout");
+  sim->callback([s] { selectRunner([s]() -> int { return runSimulate(*s); }); });
 }
 
 }  // namespace metrofit::cli

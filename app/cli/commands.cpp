@@ -191,6 +191,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
   registerSetupCommand(app);
   registerMatchCommand(app);
   registerKinematicCommands(app);
+  registerSpcCommand(app);
   registerThermalCommands(app);
   registerDiagnoseCommands(app);
   {
@@ -206,6 +207,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     addOut(pr, a->out);
     addSeed(pr, a->seed);
     pr->callback([a] { g_selected = [a]() -> int { return runSimulateProbe(*a); }; });
+    registerSimulateSetupCommand(*sim);
   }
 }
 

@@ -45,8 +45,11 @@ ThermalLog readThermalArgs(const std::string& data, const std::string& target, c
 
 // One registration function per subcommand family, each in its own cmd_*.cpp.
 void registerSetupCommand(CLI::App& app);
+/// `simulate setup` (in cmd_setup.cpp), registered inside the `simulate` family.
+void registerSimulateSetupCommand(CLI::App& simulate);
 void registerMatchCommand(CLI::App& app);
 void registerKinematicCommands(CLI::App& app);
+void registerSpcCommand(CLI::App& app);
 void registerThermalCommands(CLI::App& app);
 void registerDiagnoseCommands(CLI::App& app);
 

@@ -1,12 +1,14 @@
 // metrofit-bench: speed measured against a peer in the same run, reported as ratios (DESIGN.md
 // "Performance"). Not a test: run it by hand or in a benchmark job.
 //
-//   metrofit-bench [--io] [--rng] [--repeat N] [--json OUT]     (no section flag: all sections)
+//   metrofit-bench [--io] [--rng] [--optimizers [--quick]] [--repeat N] [--json OUT]
+//                                                               (no section flag: all sections)
 //
 // Sections now: --io (CSV reader on the real CAIVIAC log vs a naive getline/strtod reader that
 // does no validation), --rng (our portable normal generator vs std::normal_distribution on
-// mt19937_64). Later issues add --optimizers (pagmo2 side by side), --matching, --thermal,
-// --diagnose, --real.
+// mt19937_64), --optimizers (our metaheuristics and pagmo2's pso / sade side by side at equal
+// budget, bench_optim.cpp; --quick: 5 seeds instead of 25). Later issues add --matching,
+// --thermal, --diagnose, --real.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -19,6 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench_optim.h"
 #include "core/common/rng.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
@@ -69,10 +72,11 @@ nlohmann::json benchIo(const std::string& sourceDir, int repeat) {
     g_sink = s;
   });
   const double peer = medianSeconds(repeat, [&] { g_sink = naiveCsvSum(text); });
-  std::printf("io   CSV parse + numbers, CAIVIAC log (%zu fields, %.1f MB): metrofit %.1f ms (%.1f ns/field), "
-              "naive getline/strtod %.1f ms; ratio metrofit/peer = %.2f\n",
-              fields, static_cast<double>(text.size()) / 1e6, ours * 1e3, ours * 1e9 / static_cast<double>(fields),
-              peer * 1e3, ours / peer);
+  std::printf(
+      "io   CSV parse + numbers, CAIVIAC log (%zu fields, %.1f MB): metrofit %.1f ms (%.1f ns/field), "
+      "naive getline/strtod %.1f ms; ratio metrofit/peer = %.2f\n",
+      fields, static_cast<double>(text.size()) / 1e6, ours * 1e3, ours * 1e9 / static_cast<double>(fields),
+      peer * 1e3, ours / peer);
   return {{"fields", fields}, {"metrofit_ms", ours * 1e3}, {"peer_ms", peer * 1e3}, {"ratio", ours / peer}};
 }
 
@@ -91,38 +95,53 @@ nlohmann::json benchRng(int repeat) {
     for (int i = 0; i < n; ++i) s += d(g);
     g_sink = s;
   });
-  std::printf("rng  %d normals: metrofit::Rng %.2f ns each, std::normal_distribution<mt19937_64> %.2f ns; ratio = %.2f\n", n,
-              ours * 1e9 / n, peer * 1e9 / n, ours / peer);
+  std::printf(
+      "rng  %d normals: metrofit::Rng %.2f ns each, std::normal_distribution<mt19937_64> %.2f ns; ratio = "
+      "%.2f\n",
+      n, ours * 1e9 / n, peer * 1e9 / n, ours / peer);
   return {{"n", n}, {"metrofit_ns", ours * 1e9 / n}, {"peer_ns", peer * 1e9 / n}, {"ratio", ours / peer}};
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool io = false, rng = false;
+  bool io = false, rng = false, optimizers = false;
+  metrofit::bench::OptimBenchOptions optimOptions;
   int repeat = 5;
   std::string jsonOut;
   std::string sourceDir = METROFIT_SOURCE_DIR;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--io") io = true;
-    else if (a == "--rng") rng = true;
-    else if (a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--json" && i + 1 < argc) jsonOut = argv[++i];
-    else if (a == "--source-dir" && i + 1 < argc) sourceDir = argv[++i];
+    if (a == "--io")
+      io = true;
+    else if (a == "--rng")
+      rng = true;
+    else if (a == "--optimizers")
+      optimizers = true;
+    else if (a == "--quick")
+      optimOptions.seeds = 5;
+    else if (a == "--repeat" && i + 1 < argc)
+      repeat = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--json" && i + 1 < argc)
+      jsonOut = argv[++i];
+    else if (a == "--source-dir" && i + 1 < argc)
+      sourceDir = argv[++i];
     else if (a == "--help" || a == "-h") {
-      std::printf("usage: metrofit-bench [--io] [--rng] [--repeat N] [--json OUT] [--source-dir DIR]\n");
+      std::printf(
+          "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick]] [--repeat N] [--json OUT] "
+          "[--source-dir DIR]\n");
       return 0;
     } else {
       std::fprintf(stderr, "metrofit-bench: unknown option '%s' (see --help)\n", a.c_str());
       return 2;
     }
   }
-  if (!io && !rng) io = rng = true;
+  if (!io && !rng && !optimizers) io = rng = optimizers = true;
   nlohmann::json result{{"version", metrofit::kVersion}, {"repeat", repeat}};
   try {
     if (io) result["io"] = benchIo(sourceDir, repeat);
     if (rng) result["rng"] = benchRng(repeat);
+    if (optimizers) result["optimizers"] = metrofit::bench::benchOptimizers(optimOptions);
     if (!jsonOut.empty()) metrofit::writeFileAtomic(jsonOut, metrofit::dumpJson(result));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "metrofit-bench: %s\n", e.what());

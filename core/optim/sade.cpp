@@ -1,0 +1,141 @@
+#include "core/optim/sade.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace metrofit::optim {
+
+bool Sade::Options::isValid(std::string* why) const {
+  auto no = [&](std::string w) {
+    if (why) *why = std::move(w);
+    return false;
+  };
+  std::string common_why;
+  if (!common.isValid(&common_why)) return no(common_why);
+  if (populationSize < 4)
+    return no(
+        "the population size NP must be at least 4 (DE/rand/1 needs "
+        "three partners besides the target), "
+        "got " +
+        std::to_string(populationSize));
+  if (!(f0 > 0.0 && f0 <= 1.0)) return no("F0 must be in (0, 1], got " + std::to_string(f0));
+  if (maxGenerations < 0)
+    return no(
+        "the maximum generation Gm must be >= 1 (or 0: derived from the "
+        "budget), got " +
+        std::to_string(maxGenerations));
+  if (!(crMin >= 0.0 && crMin <= 1.0)) return no("CRmin must be in [0, 1], got " + std::to_string(crMin));
+  if (!(crMax >= 0.0 && crMax <= 1.0)) return no("CRmax must be in [0, 1], got " + std::to_string(crMax));
+  if (crMin > crMax)
+    return no("CRmin must not exceed CRmax, got CRmin " + std::to_string(crMin) + " > CRmax " +
+              std::to_string(crMax));
+  return true;
+}
+
+long Sade::Options::effectiveMaxGenerations() const {
+  if (maxGenerations > 0) return maxGenerations;
+  const long np = std::max(1, populationSize);
+  const long rest = common.maxEvaluations - np;
+  return std::max(1L, (rest + np - 1) / np);
+}
+
+namespace {
+
+/// Uniform index in [0, n) by a multiplication instead of a division (bias below n / 2^53).
+std::size_t pick(Rng& rng, std::size_t n) {
+  return std::min(n - 1, static_cast<std::size_t>(rng.uniform() * static_cast<double>(n)));
+}
+
+}  // namespace
+
+double Sade::mutationFactor(double f0, long g, long gm) {
+  const double lambda =
+      std::exp(1.0 - static_cast<double>(gm) / static_cast<double>(gm + 1 - std::clamp(g, 1L, gm)));
+  return f0 * std::exp2(lambda);
+}
+
+double Sade::crossoverRate(double crMin, double crMax, long g, long gm) {
+  return crMin + static_cast<double>(std::clamp(g, 1L, gm)) * (crMax - crMin) / static_cast<double>(gm);
+}
+
+Result Sade::optimise(const Problem& problem, Observer* observer) const {
+  requireValid(options_, "sade options");
+  Tracker tracker(name(), problem, options_.common, observer);
+  Rng& rng = tracker.rng();
+  const std::size_t n = tracker.dimension();
+  const std::size_t np = static_cast<std::size_t>(options_.populationSize);
+  const long gm = options_.effectiveMaxGenerations();
+
+  std::vector<double> lo(n), hi(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    lo[j] = problem.lower(j);
+    hi[j] = problem.upper(j);
+  }
+
+  // Generation 0: NP uniform random feasible points.
+  std::vector<double> pop(np * n), next(np * n), trial(n);
+  std::vector<double> fit(np, std::numeric_limits<double>::infinity()), nextFit(np);
+  for (std::size_t i = 0; i < np && !tracker.exhausted(); ++i) {
+    const std::vector<double> x = tracker.randomPoint();
+    std::span<double> row(pop.data() + i * n, n);
+    std::copy(x.begin(), x.end(), row.begin());
+    fit[i] = tracker.evaluate(row);
+  }
+  bool stop = tracker.endIteration();
+
+  bool reachedGm = false;
+  for (long g = 1; !stop; ++g) {
+    const double f = mutationFactor(options_.f0, g, gm);                     // Eq. (10)
+    const double cr = crossoverRate(options_.crMin, options_.crMax, g, gm);  // Eq. (11)
+    std::copy(pop.begin(), pop.end(), next.begin());
+    std::copy(fit.begin(), fit.end(), nextFit.begin());
+    for (std::size_t i = 0; i < np && !tracker.exhausted(); ++i) {
+      std::size_t r1, r2, r3;
+      do r1 = pick(rng, np);
+      while (r1 == i);
+      do r2 = pick(rng, np);
+      while (r2 == i || r2 == r1);
+      do r3 = pick(rng, np);
+      while (r3 == i || r3 == r1 || r3 == r2);
+      const double* xi = pop.data() + i * n;
+      const double* x1 = pop.data() + r1 * n;
+      const double* x2 = pop.data() + r2 * n;
+      const double* x3 = pop.data() + r3 * n;
+      const std::size_t jrand = pick(rng, n);
+      for (std::size_t j = 0; j < n; ++j) {
+        // Binomial crossover without an unpredictable branch: one draw per coordinate.
+        const bool take = (rng.uniform() < cr) | (j == jrand);
+        double v = x1[j] + f * (x2[j] - x3[j]);
+        if (take & ((v < lo[j]) | (v > hi[j]))) {
+          // Bounce-back between the (feasible) base vector and the violated bound.
+          v = v < lo[j] ? lo[j] + rng.uniform() * (x1[j] - lo[j]) : hi[j] - rng.uniform() * (hi[j] - x1[j]);
+        }
+        trial[j] = take ? v : xi[j];
+      }
+      const double ft = tracker.evaluate(trial);
+      if (ft <= fit[i]) {
+        std::copy(trial.begin(), trial.end(), next.begin() + static_cast<std::ptrdiff_t>(i * n));
+        nextFit[i] = ft;
+      }
+    }
+    pop.swap(next);
+    fit.swap(nextFit);
+    stop = tracker.endIteration();
+    if (!stop && g >= gm) {
+      stop = true;
+      reachedGm = true;
+    }
+  }
+
+  Result result = tracker.finish();
+  if (reachedGm && result.run.termination == Termination::BudgetExhausted) {
+    result.run.termination = Termination::MaxIterations;
+    result.run.message = "reached the maximum generation Gm = " + std::to_string(gm) + " after " +
+                         std::to_string(result.run.evaluations) + " evaluations";
+  }
+  return result;
+}
+
+}  // namespace metrofit::optim

@@ -1,0 +1,412 @@
+#include "core/setup/report.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/io/csv.h"
+#include "core/io/file_io.h"
+
+namespace metrofit::setup {
+namespace {
+
+constexpr double kLimitTolMm = 1e-6;  ///< report limits / nominals must match the model this closely
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(12);
+  s << v;
+  return s.str();
+}
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string trim(std::string_view s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string_view::npos) return {};
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return std::string(s.substr(b, e - b + 1));
+}
+
+std::string baseName(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+/// Fills deviationMm / samples from rows; every dimension needs a row.
+void finish(Measurements& m, const Model& model, const std::string& source) {
+  const std::size_t n = model.dimensions.size();
+  m.deviationMm.assign(n, 0.0);
+  m.samples.assign(n, 0);
+  for (const auto& r : m.rows) {
+    m.deviationMm[r.dimension] += r.deviationMm;
+    ++m.samples[r.dimension];
+  }
+  for (std::size_t q = 0; q < n; ++q) {
+    if (m.samples[q] == 0) {
+      const Dimension& d = model.dimensions[q];
+      const std::string name =
+          "'" + d.id + "'" + (d.dmisLabel() != d.id ? " (label '" + d.dmisLabel() + "')" : std::string());
+      throw ValidationError(ErrorContext{source, 0, 0, "dimension"},
+                            "the report has no measurement of dimension " + name + " of the model" +
+                                (model.source.empty() ? std::string() : " (" + model.source + ")"));
+    }
+    m.deviationMm[q] /= m.samples[q];
+  }
+}
+
+void addPart(Measurements& m, const std::string& part) {
+  if (std::find(m.parts.begin(), m.parts.end(), part) == m.parts.end()) m.parts.push_back(part);
+}
+
+// ---- DMIS -------------------------------------------------------------------------------------
+
+struct Statement {
+  long line = 0;
+  std::string lhsKind;             ///< "F", "FA", "T", "TA", ... (upper case) or empty without '='
+  std::string label;               ///< inside the parentheses
+  std::string major;               ///< major word (upper case), e.g. FEAT, TOL, UNITS
+  std::vector<std::string> minor;  ///< comma separated words after '/', trimmed
+};
+
+/// Splits the text into statements (continuations joined, comments removed).
+std::vector<Statement> dmisStatements(std::string_view text, const std::string& source) {
+  std::vector<Statement> out;
+  std::string pending;
+  long pendingLine = 0;
+  long lineNo = 0;
+  std::size_t pos = 0;
+  if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
+  while (pos < text.size()) {
+    const auto nl = text.find('\n', pos);
+    std::string_view raw = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
+    pos = nl == std::string_view::npos ? text.size() : nl + 1;
+    ++lineNo;
+    // Remove a "$$" comment (outside quotes).
+    bool inQuote = false;
+    std::size_t cut = raw.size();
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (raw[i] == '\'') inQuote = !inQuote;
+      if (!inQuote && raw[i] == '$' && i + 1 < raw.size() && raw[i + 1] == '$') {
+        cut = i;
+        break;
+      }
+    }
+    std::string line = trim(raw.substr(0, cut));
+    if (pending.empty()) pendingLine = lineNo;
+    if (!line.empty() && line.back() == '@') {
+      line.pop_back();
+      pending += line;
+      continue;
+    }
+    pending += line;
+    const std::string stmt = trim(pending);
+    pending.clear();
+    if (stmt.empty()) continue;
+    Statement s;
+    s.line = pendingLine;
+    std::string rhs = stmt;
+    const auto eq = stmt.find('=');
+    const auto slash0 = stmt.find('/');
+    if (eq != std::string::npos && (slash0 == std::string::npos || eq < slash0)) {
+      const std::string lhs = trim(std::string_view(stmt).substr(0, eq));
+      const auto open = lhs.find('('), close = lhs.rfind(')');
+      if (open == std::string::npos || close == std::string::npos || close < open) {
+        throw ParseError(ErrorContext{source, s.line, 0, {}},
+                         "expected 'KIND(label)=...', found '" + lhs + "'");
+      }
+      s.lhsKind = upper(trim(std::string_view(lhs).substr(0, open)));
+      s.label = trim(std::string_view(lhs).substr(open + 1, close - open - 1));
+      rhs = trim(std::string_view(stmt).substr(eq + 1));
+    }
+    const auto slash = rhs.find('/');
+    s.major = upper(trim(std::string_view(rhs).substr(0, slash)));
+    if (slash != std::string::npos) {
+      std::stringstream ss(rhs.substr(slash + 1));
+      std::string item;
+      while (std::getline(ss, item, ',')) s.minor.push_back(trim(item));
+    }
+    out.push_back(std::move(s));
+  }
+  if (!trim(pending).empty())
+    throw ParseError(ErrorContext{source, pendingLine, 0, {}},
+                     "the last statement ends in '@' (continuation) but the file ends");
+  return out;
+}
+
+double dmisNumber(const Statement& s, std::size_t i, const std::string& source, const std::string& what) {
+  const std::string field = s.lhsKind + "(" + s.label + ")";
+  if (i >= s.minor.size()) throw ParseError(ErrorContext{source, s.line, 0, field}, "missing " + what);
+  double v = 0.0;
+  if (!parseNumber(s.minor[i], &v))
+    throw ParseError(ErrorContext{source, s.line, 0, field}, what + ": '" + s.minor[i] + "' is not a number");
+  return v;
+}
+
+int axisIndex(const std::string& axis) {
+  return axis == "X" ? 0 : axis == "Y" ? 1 : 2;
+}
+
+}  // namespace
+
+Measurements cmmReportFromCsv(const CsvTable& t, const Model& model) {
+  const std::size_t cPart = t.requireColumn("part"), cTime = t.requireColumn("time_min"),
+                    cDim = t.requireColumn("dimension"), cNom = t.requireColumn("nominal_mm"),
+                    cMeas = t.requireColumn("measured_mm"), cLo = t.requireColumn("lower_tol_mm"),
+                    cUp = t.requireColumn("upper_tol_mm");
+  t.requireRows(1);
+  Measurements m;
+  m.sources.push_back(t.source());
+  std::map<std::pair<std::string, std::size_t>, long> seen;
+  for (std::size_t r = 0; r < t.rowCount(); ++r) {
+    const std::string part = trim(t.cell(r, cPart));
+    if (part.empty()) t.failAt(r, cPart, "empty part name");
+    const double time = t.number(r, cTime);
+    const std::string dim = trim(t.cell(r, cDim));
+    const int q = model.dimensionIndex(dim);
+    if (q < 0) {
+      t.failAt(r, cDim,
+               "unknown dimension '" + dim + "' (not in the model" +
+                   (model.source.empty() ? std::string() : " " + model.source) + ")");
+    }
+    const Dimension& d = model.dimensions[static_cast<std::size_t>(q)];
+    const double nominal = t.number(r, cNom), measured = t.number(r, cMeas);
+    const double lo = t.number(r, cLo), up = t.number(r, cUp);
+    if (lo >= up) t.failAt(r, cLo, "lower limit " + fmt(lo) + " is not below upper limit " + fmt(up));
+    if (std::abs(lo - d.lower) > kLimitTolMm)
+      t.failAt(r, cLo,
+               fmt(lo) + " differs from the model's lower limit " + fmt(d.lower) + " of '" + dim + "'");
+    if (std::abs(up - d.upper) > kLimitTolMm)
+      t.failAt(r, cUp,
+               fmt(up) + " differs from the model's upper limit " + fmt(d.upper) + " of '" + dim + "'");
+    if (d.nominal && std::abs(nominal - *d.nominal) > kLimitTolMm)
+      t.failAt(r, cNom,
+               fmt(nominal) + " differs from the model's nominal " + fmt(*d.nominal) + " of '" + dim + "'");
+    const auto key = std::make_pair(part, static_cast<std::size_t>(q));
+    const auto it = seen.find(key);
+    if (it != seen.end()) {
+      t.failAt(r, cDim,
+               "duplicate row for part '" + part + "' and dimension '" + dim + "' (first on line " +
+                   std::to_string(it->second) + ")");
+    }
+    seen.emplace(key, t.lineOf(r));
+    addPart(m, part);
+    m.rows.push_back({part, time, static_cast<std::size_t>(q), measured - nominal, t.source(), t.lineOf(r)});
+  }
+  finish(m, model, t.source());
+  return m;
+}
+
+Measurements readCmmReport(const std::string& path, const Model& model) {
+  return cmmReportFromCsv(readCsvFile(path), model);
+}
+
+bool looksLikeDmis(std::string_view text) {
+  std::size_t pos = 0;
+  if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
+  while (pos < text.size()) {
+    const auto nl = text.find('\n', pos);
+    const std::string line =
+        trim(text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos));
+    pos = nl == std::string_view::npos ? text.size() : nl + 1;
+    if (line.empty() || line.rfind("$$", 0) == 0) continue;
+    const std::string u = upper(line);
+    return u.rfind("DMISMN", 0) == 0 || u.rfind("DMISMD", 0) == 0;
+  }
+  return false;
+}
+
+Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model) {
+  const auto statements = dmisStatements(text, source);
+  // Dimensions by upper-case DMIS label.
+  std::map<std::string, std::size_t> byLabel;
+  for (std::size_t q = 0; q < model.dimensions.size(); ++q)
+    byLabel[upper(model.dimensions[q].dmisLabel())] = q;
+
+  double unit = 1.0;  // mm per file unit
+  std::string part = baseName(source);
+  struct Found {
+    double value = 0.0;
+    long line = 0;
+  };
+  std::map<std::size_t, Found> ta;                                        // tolerance actuals (deviation, mm)
+  std::map<std::size_t, std::array<double, 3>> nominalF;                  // F(label) positions
+  std::map<std::size_t, std::pair<std::array<double, 3>, long>> actualF;  // FA(label)
+  std::map<std::pair<std::string, std::size_t>, long> firstLine;
+  const int ax = axisIndex(model.axis);
+
+  for (const Statement& s : statements) {
+    const std::string field = s.lhsKind.empty() ? s.major : s.lhsKind + "(" + s.label + ")";
+    if (s.lhsKind.empty()) {
+      if (s.major == "UNITS") {
+        const std::string u = s.minor.empty() ? std::string() : upper(s.minor[0]);
+        if (u == "MM")
+          unit = 1.0;
+        else if (u == "CM")
+          unit = 10.0;
+        else if (u == "INCH")
+          unit = 25.4;
+        else if (u == "FEET")
+          unit = 304.8;
+        else
+          throw ParseError(ErrorContext{source, s.line, 0, "UNITS"}, "unknown length unit '" + u + "'");
+      } else if (s.major == "FILNAM" && !s.minor.empty()) {
+        std::string name = s.minor[0];
+        if (name.size() >= 2 && name.front() == '\'' && name.back() == '\'')
+          name = name.substr(1, name.size() - 2);
+        if (!name.empty()) part = name;
+      }
+      continue;
+    }
+    const auto lab = byLabel.find(upper(s.label));
+    if (lab == byLabel.end()) continue;  // a datum or another feature: not a dimension of the model
+    const std::size_t q = lab->second;
+    const Dimension& d = model.dimensions[q];
+    const auto dupKey = std::make_pair(s.lhsKind, q);
+    if (const auto it = firstLine.find(dupKey); it != firstLine.end()) {
+      throw ValidationError(ErrorContext{source, s.line, 0, field},
+                            "duplicate " + s.lhsKind + " statement for '" + s.label + "' (first on line " +
+                                std::to_string(it->second) + ")");
+    }
+    if (s.lhsKind == "F" || s.lhsKind == "FA") {
+      if (s.major != "FEAT") continue;
+      if (s.minor.size() < 2)
+        throw ParseError(ErrorContext{source, s.line, 0, field}, "expected FEAT/type,CART,x,y,z,...");
+      const std::string coords = upper(s.minor[1]);
+      if (coords == "POL")
+        throw ParseError(ErrorContext{source, s.line, 0, field},
+                         "polar (POL) coordinates are not supported; use CART");
+      if (coords != "CART")
+        throw ParseError(ErrorContext{source, s.line, 0, field},
+                         "expected CART after the feature type, found '" + s.minor[1] + "'");
+      std::array<double, 3> p{};
+      for (std::size_t k = 0; k < 3; ++k)
+        p[k] = unit * dmisNumber(s, 2 + k, source, std::string(1, "xyz"[k]) + " coordinate");
+      firstLine.emplace(dupKey, s.line);
+      if (s.lhsKind == "F")
+        nominalF[q] = p;
+      else
+        actualF[q] = {p, s.line};
+    } else if (s.lhsKind == "T" || s.lhsKind == "TA") {
+      if (s.major != "TOL") continue;
+      if (s.minor.empty()) throw ParseError(ErrorContext{source, s.line, 0, field}, "expected TOL/type,...");
+      const std::string type = upper(s.minor[0]);
+      const bool cortol = type == "CORTOL";
+      if (!cortol && type != "DISTB" && type != "DISTWRT" && type != "DIAM" && type != "RAD" &&
+          type != "WIDTH") {
+        throw ParseError(ErrorContext{source, s.line, 0, field},
+                         "tolerance type '" + s.minor[0] +
+                             "' is not supported for a dimension (use DISTB, DISTWRT, "
+                             "DIAM, RAD, WIDTH or CORTOL)");
+      }
+      std::size_t first = 1;
+      if (cortol) {
+        const std::string axisWord = s.minor.size() > 1 ? upper(s.minor[1]) : std::string();
+        if (axisWord != model.axis + "AXIS") {
+          throw ValidationError(ErrorContext{source, s.line, 0, field},
+                                "CORTOL along '" + (s.minor.size() > 1 ? s.minor[1] : std::string()) +
+                                    "' but the model's axis is " + model.axis);
+        }
+        first = 2;
+      }
+      firstLine.emplace(dupKey, s.line);
+      if (s.lhsKind == "TA") {
+        ta[q] = {unit * dmisNumber(s, first, source, "deviation"), s.line};
+        continue;
+      }
+      // Tolerance definition: check against the model.
+      std::optional<double> nominal;
+      if (!cortol && first < s.minor.size() && upper(s.minor[first]) == "NOMINL") {
+        nominal = unit * dmisNumber(s, first + 1, source, "nominal");
+        first += 2;
+      }
+      const double lo = unit * dmisNumber(s, first, source, "lower tolerance");
+      const double up = unit * dmisNumber(s, first + 1, source, "upper tolerance");
+      if (std::abs(lo - d.lower) > kLimitTolMm || std::abs(up - d.upper) > kLimitTolMm) {
+        throw ValidationError(ErrorContext{source, s.line, 0, field},
+                              "tolerance " + fmt(lo) + " / " + fmt(up) + " differs from the model's limits " +
+                                  fmt(d.lower) + " / " + fmt(d.upper) + " of '" + d.id + "'");
+      }
+      if (nominal && d.nominal && std::abs(*nominal - *d.nominal) > kLimitTolMm) {
+        throw ValidationError(ErrorContext{source, s.line, 0, field},
+                              "nominal " + fmt(*nominal) + " differs from the model's nominal " +
+                                  fmt(*d.nominal) + " of '" + d.id + "'");
+      }
+    }
+  }
+
+  Measurements m;
+  m.sources.push_back(source);
+  addPart(m, part);
+  for (std::size_t q = 0; q < model.dimensions.size(); ++q) {
+    if (const auto it = ta.find(q); it != ta.end()) {
+      m.rows.push_back({part, 0.0, q, it->second.value, source, it->second.line});
+      continue;
+    }
+    const auto a = actualF.find(q);
+    if (a == actualF.end()) continue;  // finish() reports the missing dimension
+    const auto n = nominalF.find(q);
+    if (n == nominalF.end()) {
+      throw ValidationError(
+          ErrorContext{source, a->second.second, 0, "FA(" + model.dimensions[q].dmisLabel() + ")"},
+          "feature actual without its nominal F(" + model.dimensions[q].dmisLabel() +
+              ") and without a tolerance actual TA(" + model.dimensions[q].dmisLabel() + ")");
+    }
+    m.rows.push_back({part, 0.0, q,
+                      a->second.first[static_cast<std::size_t>(ax)] - n->second[static_cast<std::size_t>(ax)],
+                      source, a->second.second});
+  }
+  finish(m, model, source);
+  return m;
+}
+
+Measurements readDmisReport(const std::string& path, const Model& model) {
+  return dmisReportFromText(readFile(path, 256u << 20), path, model);
+}
+
+Measurements mergeMeasurements(const std::vector<Measurements>& sets, const Model& model) {
+  if (sets.empty()) throw ValidationError(ErrorContext{}, "no measurement report given");
+  if (sets.size() == 1) return sets.front();
+  Measurements out;
+  std::map<std::pair<std::string, std::size_t>, const Measurements::Row*> seen;
+  for (const auto& s : sets) {
+    out.sources.insert(out.sources.end(), s.sources.begin(), s.sources.end());
+    for (const auto& r : s.rows) {
+      const auto key = std::make_pair(r.part, r.dimension);
+      if (const auto it = seen.find(key); it != seen.end()) {
+        throw ValidationError(ErrorContext{r.source, r.line, 0, "part"},
+                              "part '" + r.part + "', dimension '" + model.dimensions[r.dimension].id +
+                                  "' is measured twice (first in " + it->second->source + " line " +
+                                  std::to_string(it->second->line) + ")");
+      }
+      seen.emplace(key, &r);
+      addPart(out, r.part);
+      out.rows.push_back(r);
+    }
+  }
+  finish(out, model, out.sources.front());
+  return out;
+}
+
+Measurements readMeasurements(const std::vector<std::string>& paths, const Model& model) {
+  std::vector<Measurements> sets;
+  for (const auto& p : paths) {
+    const std::string text = readFile(p, 256u << 20);
+    if (looksLikeDmis(text))
+      sets.push_back(dmisReportFromText(text, p, model));
+    else
+      sets.push_back(cmmReportFromCsv(parseCsv(text, p), model));
+  }
+  return mergeMeasurements(sets, model);
+}
+
+}  // namespace metrofit::setup

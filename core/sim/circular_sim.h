@@ -1,0 +1,52 @@
+#pragma once
+// Simulated circular test on a Cartesian XY machine (the simulator plays machine and measuring
+// instrument, e.g. a ballbar or a grid encoder). Lengths in mm, angles in degrees.
+//
+// Commands: one loop counter-clockwise and then one clockwise (CONTRACT.md "Circular test"), each
+// of `pointsPerLoop` points on the circle of radius R about the centre c, without repeating the
+// start point:
+//   CCW  Pr_k = c + R (cos t_k, sin t_k),  t_k = t0 + 2 pi k / n,  k = 0..n-1
+//   CW   Pr_k = c + R (cos t_k, sin t_k),  t_k = t0 - 2 pi k / n,  k = 0..n-1
+// Machine: the direct kinematics of the kinematic-compensation paper (seed 002, Eq. 9) with the
+// actuator errors of CONTRACT.md, P = o + (cos a, sin a) Pr_x + (-sin b, cos b) Pr_y, and
+// measurement noise N(0, noise^2) added independently to x and y. Deterministic by seed
+// (metrofit::Rng).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/kinematics/cartesian_model.h"
+#include "core/kinematics/measured_path.h"
+
+namespace metrofit {
+
+struct CircularSimOptions {
+  double radiusMm = 100.0;
+  Eigen::Vector2d centreMm = Eigen::Vector2d::Zero();
+  int pointsPerLoop = 360;
+  double startAngleDeg = 0.0;  ///< t0
+  ActuatorErrors2 errors = defaultErrors();
+  double noiseMm = 0.0005;  ///< 1 sigma per coordinate
+  std::uint64_t seed = 1;
+
+  /// A plausible machine: origin (4, -3) um, X axis +0.0006 deg (about 2 arcsec), Y axis
+  /// -0.0020 deg: squareness b - a = -0.0026 deg (about 45 um/m).
+  static ActuatorErrors2 defaultErrors();
+  bool isValid(std::string* why) const;
+};
+
+/// The commands of the test: one CCW loop, then one CW loop (2 * pointsPerLoop points).
+std::vector<Eigen::Vector2d> circularTestCommands(const CircularSimOptions& options);
+
+/// Runs commands through the simulated machine: Eq. 9 with `errors`, plus N(0, noise^2) per
+/// coordinate drawn from Rng(seed). noiseMm = 0 gives the modelled path exactly.
+std::vector<Eigen::Vector2d> simulateMachine(const ActuatorErrors2& errors,
+                                             const std::vector<Eigen::Vector2d>& commands, double noiseMm,
+                                             std::uint64_t seed);
+
+/// The whole test: commands and measured positions (source "simulated circular test").
+MeasuredPath simulateCircularTest(const CircularSimOptions& options);
+
+}  // namespace metrofit

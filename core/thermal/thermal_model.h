@@ -1,0 +1,145 @@
+#pragma once
+// Thermal error models of seed 004 behind one interface: fit, predict, evaluate (Table 4), modular
+// composition (Section 4.3), persistence (JSON) and compensation values.
+//
+//   gnnmci  GNNMCI(1,N) trained by PSO on Eq. 2.9 (gnnmci.h)            — the paper's model
+//   gmc     GMC(1,N) with least-squares parameters (grey.h)               — the paper's grey baseline
+//   mlp     N-10-1 logistic MLP trained by Levenberg-Marquardt (mlp.h)    — the paper's ANN baseline
+//
+// Data: every model works on changes since the first row of each log (thermal_data.h); a prediction
+// is the change of the target since the first row, and in the target's units ŷ(k) = y(1) + change.
+// Grey models keep their time unit h (the mean step of the fitting data) so that a log sampled
+// differently is integrated in the same unit (grey.h).
+//
+// Fit on part of a log (`fitAndEvaluate`): the first round(F n) rows fit, the rest is held out
+// (`--train-fraction F`). Grey models are dynamic: they run over the whole log from its first row with
+// the parameters fitted on the first part, so the held-out prediction continues the fitted one. The
+// MLP is static (one row in, one value out).
+//
+// Modular models (`fitModular`, Section 4.3): one model is fitted on several tests at once (e.g. a
+// Z-axis and a C-axis heating test; each test from its own start, the fitness / least squares summed
+// over them), then predicts an unseen test (the combined helical test). Error reduction is reported as
+// the paper does ("from 95 um to +-9 um"): 1 - max|residual| / max|error|, and by RMS.
+//
+// Validation (errors name the file and the column): constant inputs or target on the fitting rows,
+// too few fitting rows for the model (GMC: equations >= parameters; GNNMCI: >= 3 rows per segment, the
+// paper trains on 5 samples; MLP: rows > weights), fewer than 2 held-out rows.
+#include <cstddef>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/common/run.h"
+#include "core/thermal/gnnmci.h"
+#include "core/thermal/grey.h"
+#include "core/thermal/mlp.h"
+#include "core/thermal/thermal_data.h"
+#include "core/thermal/thermal_metrics.h"
+
+namespace metrofit::thermal {
+
+enum class ThermalModelKind { Gnnmci, Gmc, Mlp };
+
+/// "gnnmci", "gmc", "mlp".
+const char* toString(ThermalModelKind kind);
+/// The kind named `name`; OptionsError naming `field` otherwise.
+ThermalModelKind thermalModelKind(const std::string& name, const std::string& field = "--model");
+
+struct ThermalFitOptions {
+  ThermalModelKind model = ThermalModelKind::Gnnmci;
+  GnnmciOptions gnnmci;
+  MlpOptions mlp;
+
+  bool isValid(std::string* why) const;
+  /// Sets the seed of the stochastic models (GNNMCI's swarm, the MLP's initial weights).
+  void setSeed(std::uint64_t seed) {
+    gnnmci.seed = seed;
+    mlp.seed = seed;
+  }
+};
+
+/// The train fraction when none is given: 0.7 for the MLP (Table 3's 70 / 30 split), 0.5 for the grey
+/// models (CONTRACT.md's default for `diagnose thermal`).
+double defaultTrainFraction(ThermalModelKind kind);
+
+/// A fitted model: predicts on any log that has its input columns.
+struct ThermalModel {
+  ThermalModelKind kind = ThermalModelKind::Gnnmci;
+  std::string target;
+  std::vector<std::string> inputs;
+  double timeUnitMin = 1.0;  ///< grey models: the time unit h [min]
+  GmcParameters grey;        ///< gmc: least squares; gnnmci: the trained weights (w11, w2j, w2,N+1 = u)
+  Mlp mlp;                   ///< mlp only
+};
+
+struct ThermalTraining {
+  ThermalModel model;
+  RunInfo run;                ///< PSO iterations (gnnmci), LM epochs (mlp), empty (gmc)
+  double fitness = 0.0;       ///< gnnmci: Eq. 2.9 at the end; others: the same sum of squares
+  double firstFitness = 0.0;  ///< gnnmci: Eq. 2.9 after the first PSO iteration; others = fitness
+  std::size_t fitRows = 0;    ///< rows of all segments together
+};
+
+/// Fits a model on one or more segments (each with the target column, the same inputs, each from its
+/// own first row). Throws ValidationError for constant inputs / target or too few rows.
+ThermalTraining fitThermalModel(const std::vector<ThermalSeries>& segments, const ThermalFitOptions& options,
+                                Observer* observer = nullptr);
+
+/// The predicted change of the target since the log's first row, one per row. A grey model with
+/// b1 <= 0 (least squares can give one) is unstable: its values grow without bound and may overflow
+/// to inf; they are returned as computed so that evaluations show it (compensationValues refuses).
+std::vector<double> predictChange(const ThermalModel& model, const ThermalSeries& series);
+/// In the target's units: y(1) + predictChange (y(1) = 0 when the series has no target).
+std::vector<double> predictTarget(const ThermalModel& model, const ThermalSeries& series);
+
+/// Number of fitting rows for a train fraction: round(F n), at least 1.
+std::size_t fitRowCount(std::size_t rows, double trainFraction);
+
+struct ThermalEvaluation {
+  ThermalTraining training;
+  double trainFraction = 0.5;
+  std::size_t fitRows = 0, heldoutRows = 0;
+  std::vector<double> predicted;  ///< every row, the target's units
+  ThermalMetrics fit, heldout;
+};
+/// Fits on the first fraction of `series`, predicts every row, Table 4 on both parts. ValidationError
+/// when fewer than 2 rows are held out or the model's own checks fail.
+ThermalEvaluation fitAndEvaluate(const ThermalSeries& series, double trainFraction,
+                                 const ThermalFitOptions& options, Observer* observer = nullptr);
+
+struct ModularEvaluation {
+  ThermalTraining training;
+  std::vector<double> predicted;  ///< on the test log, target units
+  ThermalMetrics test;
+  double errorPeak = 0.0;      ///< max |y - y(1)| on the test log (the error without compensation)
+  double residualPeak = 0.0;   ///< max |y - ŷ|
+  double reductionPeak = 0.0;  ///< 1 - residualPeak / errorPeak
+  double errorRms = 0.0;       ///< RMS of y - y(1)
+  double reductionRms = 0.0;   ///< 1 - RMSE / errorRms
+};
+/// Section 4.3: fit on the training tests together, predict the test log.
+ModularEvaluation fitModular(const std::vector<ThermalSeries>& trainingTests, const ThermalSeries& test,
+                             const ThermalFitOptions& options, Observer* observer = nullptr);
+
+/// JSON form of a fitted model ({"format": "metrofit-thermal-model", "version": 1, ...}).
+nlohmann::json thermalModelToJson(const ThermalModel& model);
+/// Reads a model written by thermalModelToJson; ValidationError naming `source` and the field.
+ThermalModel thermalModelFromJson(const nlohmann::json& j, const std::string& source);
+/// The model's parameters by their paper names (w11, w22, ..., b1, b_T1, u, ...), for reports.
+nlohmann::json thermalModelParameters(const ThermalModel& model);
+
+/// Compensation values for new data (item 9): predicted error = predicted change of the target since
+/// the log's first row, compensation = -predicted error.
+struct Compensation {
+  std::string timeColumn;
+  std::string target;
+  std::vector<double> timeMin;
+  std::vector<double> predicted;
+  std::vector<double> compensation;
+};
+/// ValidationError for an unstable grey model (b1 <= 0) or a non-finite prediction.
+Compensation compensationValues(const ThermalModel& model, const ThermalSeries& series);
+/// CSV: <time column>,predicted_<target>,compensation_<target> (time in the log's own unit).
+std::string compensationToCsv(const Compensation& c);
+
+}  // namespace metrofit::thermal

@@ -1,0 +1,313 @@
+// metrofit-bench --optimizers: our metaheuristics against pagmo2 2.19 in the same process
+// (DESIGN.md "Performance": our PSO / SADE at least as good at equal budget and at least as fast per
+// evaluation as pagmo2's pso / sade).
+//
+// Protocol
+//  * Problems, all 10-D, identical objective code on both sides:
+//      rosenbrock   optim::rosenbrock on [-5, 10]^10   (pagmo gets a UDP calling the same function)
+//      rastrigin    optim::rastrigin  on [-5.12, 5.12]^10
+//      cec2014-fN   pagmo::cec2014(N, 10), N = 1, 4, 6, 10, on [-100, 100]^10; ours calls that object's
+//                   fitness through an optim::Problem adapter, pagmo runs it natively. The reported
+//                   objective is the error f - 100 N (the known optimum value).
+//  * Budget B evaluations per run (default 10000 at 10-D), seeds 1..25 (--quick: 1..5), the same
+//    seeds for every method. A method and its pagmo peer share the population size and get the
+//    same number of evaluations: NP * floor(B / NP) (pagmo: generation 0 plus gen = B/NP - 1
+//    generations of NP evaluations; SADE NP 30 -> 9990, PSO 100 particles -> 10000). Methods
+//    without a peer get B. pagmo's counts are read back from problem::get_fevals().
+//  * Methods, each with its defaults: ours sade (seed 001: DE/rand/1/bin, Eq. 10-11), pso (seed
+//    000 settings), ga-simplex, nelder-mead (random start; it stops when converged), cripso, ga,
+//    coa. pagmo: sade with variant 7 = DE/rand/1/bin (the same operator as ours) and variant_adptv 1
+//    = jDE self-adaptation (Brest et al. 2006): the peer of our sade; sade variant 2 (rand/1/exp,
+//    pagmo's default) as an extra row; pso with its defaults (omega 0.7298, eta1 = eta2 = 2.05,
+//    max_vel 0.5, variant 5, neighb_type 2, neighb_param 4) and our PSO's swarm size (100): the
+//    peer of our pso. sade's ftol = xtol = 0 so that it never stops before the budget.
+//  * Time: wall clock of the whole run (ours: optimise(); pagmo: population construction, which
+//    evaluates generation 0, plus evolve()) divided by the evaluations, summed over the seeds: the
+//    ns per evaluation include each method's own overhead and the objective.
+//  * pagmo is quiet: verbosity 0 (its default) for both algorithms.
+#include "bench_optim.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <pagmo/algorithms/pso.hpp>
+#include <pagmo/algorithms/sade.hpp>
+#include <pagmo/population.hpp>
+#include <pagmo/problem.hpp>
+#include <pagmo/problems/cec2014.hpp>
+#include <pagmo/types.hpp>
+
+#include "core/optim/coa.h"
+#include "core/optim/cripso.h"
+#include "core/optim/ga.h"
+#include "core/optim/gasimplex.h"
+#include "core/optim/neldermead.h"
+#include "core/optim/problem.h"
+#include "core/optim/pso.h"
+#include "core/optim/sade.h"
+
+namespace metrofit::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr unsigned kDim = 10;
+volatile double g_optimSink = 0.0;
+
+/// Our side of a CEC-2014 function: pagmo's implementation, error relative to the optimum 100 id.
+/// Not thread-safe (pagmo::cec2014 keeps mutable work buffers, so does x_); the bench is sequential.
+class Cec2014Problem final : public optim::Problem {
+ public:
+  Cec2014Problem(unsigned id, unsigned dim) : cec_(id, dim), id_(id), x_(dim) {
+    const auto b = cec_.get_bounds();
+    lower_ = b.first;
+    upper_ = b.second;
+  }
+  std::string name() const override { return "cec2014-f" + std::to_string(id_); }
+  std::size_t dimension() const override { return x_.size(); }
+  double lower(std::size_t i) const override { return lower_[i]; }
+  double upper(std::size_t i) const override { return upper_[i]; }
+  double evaluate(std::span<const double> x, std::span<double>) const override {
+    std::copy(x.begin(), x.end(), x_.begin());
+    return cec_.fitness(x_)[0] - 100.0 * id_;
+  }
+
+ private:
+  pagmo::cec2014 cec_;
+  unsigned id_;
+  mutable pagmo::vector_double x_;
+  std::vector<double> lower_, upper_;
+};
+
+/// pagmo's side of a FunctionProblem: a user-defined problem calling the very same function.
+struct FunctionUdp {
+  optim::FunctionProblem::Fn fn = nullptr;
+  double lo = 0.0, hi = 0.0;
+  unsigned dim = kDim;
+  pagmo::vector_double fitness(const pagmo::vector_double& x) const { return {fn(x)}; }
+  std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const {
+    return {pagmo::vector_double(dim, lo), pagmo::vector_double(dim, hi)};
+  }
+  std::string get_name() const { return "metrofit function"; }
+};
+
+struct BenchProblem {
+  std::string name;
+  std::shared_ptr<const optim::Problem> ours;
+  pagmo::problem peer;
+  double peerOffset = 0.0;  ///< subtracted from pagmo's objective (CEC: 100 id)
+};
+
+std::vector<BenchProblem> makeProblems() {
+  std::vector<BenchProblem> out;
+  auto fn = [&](const char* name, optim::FunctionProblem::Fn f, double lo, double hi) {
+    out.push_back({name,
+                   std::make_shared<optim::FunctionProblem>(name, std::vector<double>(kDim, lo),
+                                                            std::vector<double>(kDim, hi), f),
+                   pagmo::problem(FunctionUdp{f, lo, hi, kDim}), 0.0});
+  };
+  fn("rosenbrock", optim::rosenbrock, -5.0, 10.0);
+  fn("rastrigin", optim::rastrigin, -5.12, 5.12);
+  for (unsigned id : {1u, 4u, 6u, 10u}) {
+    out.push_back({"cec2014-f" + std::to_string(id), std::make_shared<Cec2014Problem>(id, kDim),
+                   pagmo::problem(pagmo::cec2014(id, kDim)), 100.0 * id});
+  }
+  return out;
+}
+
+struct Stats {
+  std::vector<double> finals;
+  double seconds = 0.0;
+  long evaluations = 0;
+
+  double median() const {
+    std::vector<double> v = finals;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  }
+  double best() const { return *std::min_element(finals.begin(), finals.end()); }
+  double worst() const { return *std::max_element(finals.begin(), finals.end()); }
+  double nsPerEval() const { return seconds * 1e9 / static_cast<double>(std::max(1L, evaluations)); }
+  long evaluationsPerRun() const {
+    return evaluations / static_cast<long>(std::max<std::size_t>(1, finals.size()));
+  }
+};
+
+/// One of our methods: runs it on a problem with a seed and a budget.
+struct OurMethod {
+  std::string name;
+  int populationForBudget = 1;  ///< budget is rounded down to a multiple of this (the peer's NP)
+  std::string peer;             ///< pagmo peer method name, or empty
+  std::function<optim::Result(const optim::Problem&, std::uint64_t, long)> run;
+};
+
+template <class Algo>
+OurMethod ours(std::string name, int population = 1, std::string peer = {}) {
+  return {std::move(name), population, std::move(peer),
+          [](const optim::Problem& p, std::uint64_t seed, long budget) {
+            typename Algo::Options o;
+            o.common.seed = seed;
+            o.common.maxEvaluations = budget;
+            return Algo(o).optimise(p);
+          }};
+}
+
+struct PeerMethod {
+  std::string name;
+  unsigned population = 30;
+  std::function<pagmo::population(pagmo::population, unsigned gen, unsigned seed)> evolve;
+};
+
+Stats runOurs(const BenchProblem& p, const OurMethod& m, int seeds, long budget) {
+  Stats s;
+  const long b = std::max(1L, budget / m.populationForBudget * m.populationForBudget);
+  for (int seed = 1; seed <= seeds; ++seed) {
+    const auto t0 = Clock::now();
+    const optim::Result r = m.run(*p.ours, static_cast<std::uint64_t>(seed), b);
+    s.seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+    s.finals.push_back(r.bestObjective);
+    s.evaluations += r.run.evaluations;
+    g_optimSink = g_optimSink + r.bestObjective;
+  }
+  return s;
+}
+
+Stats runPeer(const BenchProblem& p, const PeerMethod& m, int seeds, long budget) {
+  Stats s;
+  const unsigned gen = static_cast<unsigned>(std::max(0L, budget / static_cast<long>(m.population) - 1));
+  for (int seed = 1; seed <= seeds; ++seed) {
+    pagmo::problem prob = p.peer;  // fresh copy (fevals 0), made outside the timing
+    const auto t0 = Clock::now();
+    pagmo::population pop(std::move(prob), m.population, static_cast<unsigned>(seed));
+    pop = m.evolve(std::move(pop), gen, static_cast<unsigned>(seed));
+    s.seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+    s.finals.push_back(pop.champion_f()[0] - p.peerOffset);
+    s.evaluations += static_cast<long>(pop.get_problem().get_fevals());
+    g_optimSink = g_optimSink + pop.champion_f()[0];
+  }
+  return s;
+}
+
+nlohmann::json nullable(double v, bool present) {
+  return present ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::json benchOptimizers(const OptimBenchOptions& options) {
+  const int seeds = std::max(1, options.seeds);
+  const long budget = std::max(1L, options.budget);
+  const std::vector<BenchProblem> problems = makeProblems();
+
+  const int psoSwarm = optim::Pso::Options{}.swarmSize;
+  const int sadeNp = optim::Sade::Options{}.populationSize;
+  const std::vector<OurMethod> ourMethods = {
+      ours<optim::Sade>("sade", sadeNp, "pagmo-sade"),
+      ours<optim::Pso>("pso", psoSwarm, "pagmo-pso"),
+      ours<optim::GaSimplex>("ga-simplex"),
+      ours<optim::NelderMead>("nelder-mead"),
+      ours<optim::Cripso>("cripso"),
+      ours<optim::Ga>("ga"),
+      ours<optim::Coa>("coa"),
+  };
+  const std::vector<PeerMethod> peers = {
+      {"pagmo-sade", static_cast<unsigned>(sadeNp),
+       [](pagmo::population pop, unsigned gen, unsigned seed) {
+         // variant 7 = DE/rand/1/bin, variant_adptv 1 = jDE; ftol = xtol = 0: never stop early.
+         return pagmo::sade(gen, 7u, 1u, 0.0, 0.0, false, seed).evolve(std::move(pop));
+       }},
+      {"pagmo-sade-exp", static_cast<unsigned>(sadeNp),
+       [](pagmo::population pop, unsigned gen, unsigned seed) {
+         // variant 2 = DE/rand/1/exp (pagmo's default variant), jDE.
+         return pagmo::sade(gen, 2u, 1u, 0.0, 0.0, false, seed).evolve(std::move(pop));
+       }},
+      {"pagmo-pso", static_cast<unsigned>(psoSwarm),
+       [](pagmo::population pop, unsigned gen, unsigned seed) {
+         return pagmo::pso(gen, 0.7298, 2.05, 2.05, 0.5, 5u, 2u, 4u, false, seed).evolve(std::move(pop));
+       }},
+  };
+
+  std::printf(
+      "optimizers: %u-D, budget %ld evaluations per run (a method and its pagmo peer: NP * floor(B/NP)), "
+      "%d seeds; objective = error to the known optimum (minimised)\n",
+      kDim, budget, seeds);
+  std::printf("%-14s %-15s %6s %11s %11s %11s %9s   %-11s %11s %9s %7s\n", "problem", "method", "evals",
+              "median", "best", "worst", "ns/eval", "peer", "peer median", "peer ns", "ns/peer");
+
+  nlohmann::json rows = nlohmann::json::array(), targets = nlohmann::json::array();
+  for (const BenchProblem& p : problems) {
+    std::vector<std::pair<std::string, Stats>> peerStats;
+    for (const PeerMethod& m : peers) peerStats.emplace_back(m.name, runPeer(p, m, seeds, budget));
+    const auto findPeer = [&](const std::string& name) -> const Stats* {
+      for (const auto& [n, s] : peerStats)
+        if (n == name) return &s;
+      return nullptr;
+    };
+    for (const OurMethod& m : ourMethods) {
+      const Stats s = runOurs(p, m, seeds, budget);
+      const Stats* ps = m.peer.empty() ? nullptr : findPeer(m.peer);
+      std::printf("%-14s %-15s %6ld %11.4g %11.4g %11.4g %9.1f", p.name.c_str(), m.name.c_str(),
+                  s.evaluationsPerRun(), s.median(), s.best(), s.worst(), s.nsPerEval());
+      if (ps) {
+        std::printf("   %-11s %11.4g %9.1f %7.2f", m.peer.c_str(), ps->median(), ps->nsPerEval(),
+                    s.nsPerEval() / ps->nsPerEval());
+        const bool qualityMet = s.median() <= ps->median();
+        const double ratio = s.nsPerEval() / ps->nsPerEval();
+        targets.push_back({{"problem", p.name},
+                           {"method", m.name},
+                           {"peer", m.peer},
+                           {"median_best", s.median()},
+                           {"peer_median_best", ps->median()},
+                           {"quality_met", qualityMet},
+                           {"ns_ratio", ratio},
+                           {"speed_met", ratio <= 1.0}});
+      }
+      std::printf("\n");
+      rows.push_back({{"problem", p.name},
+                      {"method", m.name},
+                      {"median_best", s.median()},
+                      {"best", s.best()},
+                      {"worst", s.worst()},
+                      {"ns_per_eval", s.nsPerEval()},
+                      {"peer", ps ? nlohmann::json(m.peer) : nlohmann::json(nullptr)},
+                      {"peer_median_best", nullable(ps ? ps->median() : 0.0, ps != nullptr)},
+                      {"peer_ns_per_eval", nullable(ps ? ps->nsPerEval() : 0.0, ps != nullptr)},
+                      {"hit_rate", nullptr}});
+    }
+    for (const auto& [name, s] : peerStats) {
+      std::printf("%-14s %-15s %6ld %11.4g %11.4g %11.4g %9.1f\n", p.name.c_str(), name.c_str(),
+                  s.evaluationsPerRun(), s.median(), s.best(), s.worst(), s.nsPerEval());
+      rows.push_back({{"problem", p.name},
+                      {"method", name},
+                      {"median_best", s.median()},
+                      {"best", s.best()},
+                      {"worst", s.worst()},
+                      {"ns_per_eval", s.nsPerEval()},
+                      {"peer", nullptr},
+                      {"peer_median_best", nullptr},
+                      {"peer_ns_per_eval", nullptr},
+                      {"hit_rate", nullptr}});
+    }
+  }
+
+  std::printf("targets (median <= peer median at equal budget; ns/eval ratio <= 1.0):\n");
+  int missed = 0;
+  for (const auto& t : targets) {
+    const bool q = t["quality_met"].get<bool>(), sp = t["speed_met"].get<bool>();
+    missed += !q + !sp;
+    std::printf("  %-14s %-5s vs %-11s median %11.4g vs %11.4g %-6s  ns ratio %5.2f %s\n",
+                t["problem"].get<std::string>().c_str(), t["method"].get<std::string>().c_str(),
+                t["peer"].get<std::string>().c_str(), t["median_best"].get<double>(),
+                t["peer_median_best"].get<double>(), q ? "met" : "MISSED", t["ns_ratio"].get<double>(),
+                sp ? "met" : "MISSED");
+  }
+  std::printf("  %d of %zu target checks missed\n", missed, 2 * targets.size());
+  return {{"dimension", kDim}, {"budget", budget}, {"seeds", seeds}, {"rows", rows}, {"targets", targets}};
+}
+
+}  // namespace metrofit::bench

@@ -1,0 +1,18 @@
+#pragma once
+// metrofit-bench --optimizers: our metaheuristics side by side with pagmo2's pso and sade on the
+// same problems at the same evaluation budget (see bench_optim.cpp for the protocol).
+#include <nlohmann/json.hpp>
+
+namespace metrofit::bench {
+
+struct OptimBenchOptions {
+  int seeds = 25;       ///< runs per problem and method (seeds 1..N); --quick: 5
+  long budget = 10000;  ///< objective evaluations per run (10-D problems)
+};
+
+/// Runs the section, prints the table to stdout and returns {"budget", "seeds", "dimension",
+/// "rows": [{"problem", "method", "median_best", "best", "worst", "ns_per_eval", "peer",
+/// "peer_median_best", "peer_ns_per_eval", "hit_rate"}, ...], "targets": [...]}.
+nlohmann::json benchOptimizers(const OptimBenchOptions& options);
+
+}  // namespace metrofit::bench

@@ -1,0 +1,299 @@
+// End-to-end tests of metrofit-cli kinematic identify|compensate and spc (issue 6, CONTRACT.md):
+// results, one-line summaries, atomic outputs, and every bad input (exit 2, one line naming the
+// file / line / field).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/io/csv.h"
+#include "core/io/json_util.h"
+#include "core/kinematics/cartesian_model.h"
+#include "core/kinematics/identification.h"
+#include "core/kinematics/measured_path.h"
+#include "core/kinematics/part21.h"
+#include "core/sim/circular_sim.h"
+#include "testsupport.h"
+
+namespace metrofit {
+namespace {
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+/// Runs metrofit-cli with `args` (shell words) in the temporary folder, capturing stdout and stderr.
+CliRun cli(const std::string& args, const test::TempDir& tmp) {
+  const std::string out = tmp.file(".stdout"), err = tmp.file(".stderr");
+  const std::string cmd = "cd '" + tmp.path().string() + "' && '" +
+                          (test::binDir() / "metrofit-cli").string() + "' " + args + " >'" + out + "' 2>'" +
+                          err + "'";
+  const int status = std::system(cmd.c_str());
+  CliRun r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = test::readText(out);
+  r.err = test::readText(err);
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return r;
+}
+
+int lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
+
+CircularSimOptions demoMachine() {
+  CircularSimOptions o;
+  o.seed = 4;
+  o.errors.originMm = Eigen::Vector2d(0.012, -0.008);
+  o.errors.xAxisAngleDeg = 0.003;
+  o.errors.yAxisAngleDeg = -0.004;
+  return o;
+}
+
+void writeCircularTest(const test::TempDir& tmp, const std::string& name) {
+  test::writeText(tmp.file(name), measuredPathToCsv(simulateCircularTest(demoMachine())));
+}
+
+std::string circleCsv(int n, double r) {
+  std::vector<Eigen::Vector2d> pts;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2.0 * std::numbers::pi * k / n;
+    pts.emplace_back(r * std::cos(t), r * std::sin(t));
+  }
+  return nominalPathToCsv(pts);
+}
+
+/// Expects exit 2, exactly one stderr line equal to "metrofit-cli: " + message, and no new files.
+void expectBadInput(const std::string& args, const std::string& message, const test::TempDir& tmp) {
+  const auto before = test::listFolder(tmp.path());
+  const CliRun r = cli(args, tmp);
+  EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+  EXPECT_EQ(r.err, "metrofit-cli: " + message + "\n") << args;
+  EXPECT_EQ(lines(r.err), 1) << args;
+  EXPECT_EQ(test::listFolder(tmp.path()), before) << args;
+}
+
+TEST(KinematicCli, IdentifyWritesTheContractJson) {
+  test::TempDir tmp;
+  writeCircularTest(tmp, "c.csv");
+  const CliRun r = cli("kinematic identify --data c.csv --out e.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("kinematic identify: 720 points, origin (", 0), 0u) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  const nlohmann::json j = readJsonFile(tmp.file("e.json"));
+  const CircularSimOptions o = demoMachine();
+  ASSERT_TRUE(j["origin_mm"].is_array());
+  EXPECT_NEAR(j["origin_mm"][0].get<double>(), o.errors.originMm.x(), 1e-3);
+  EXPECT_NEAR(j["origin_mm"][1].get<double>(), o.errors.originMm.y(), 1e-3);
+  EXPECT_NEAR(j["x_axis_angle_deg"].get<double>(), 0.003, 1e-3);
+  EXPECT_NEAR(j["y_axis_angle_deg"].get<double>(), -0.004, 1e-3);
+  EXPECT_NEAR(j["rmse_mm"].get<double>(), 0.0005 * std::sqrt(2.0), 2e-4);
+  EXPECT_NEAR(j["squareness_deg"].get<double>(), -0.007, 1e-3);
+  EXPECT_EQ(j["points"], 720);
+  EXPECT_TRUE(j["standard_errors"].contains("x_axis_angle_deg"));
+  EXPECT_GE(j["iterations"].get<long>(), 1);
+  // Without --out the JSON goes to stdout.
+  const CliRun s = cli("kinematic identify --data c.csv", tmp);
+  ASSERT_EQ(s.code, 0);
+  EXPECT_EQ(parseJson(s.out, "stdout"), j);
+  EXPECT_EQ(test::listFolder(tmp.path()), (std::vector<std::string>{"c.csv", "e.json"}));
+}
+
+TEST(KinematicCli, CompensateWritesReferencesGcodeAndStepNc) {
+  test::TempDir tmp;
+  writeCircularTest(tmp, "c.csv");
+  ASSERT_EQ(cli("kinematic identify --data c.csv --out e.json", tmp).code, 0);
+  test::writeText(tmp.file("n.csv"), circleCsv(72, 100.0));
+  const CliRun r =
+      cli("kinematic compensate --errors e.json --path n.csv --out f.csv --gcode f.nc --step-nc f.p21", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("kinematic compensate: 72 points of n.csv, largest correction ", 0), 0u) << r.err;
+
+  const CsvTable t = readCsvFile(tmp.file("f.csv"));
+  EXPECT_EQ(t.header(), (std::vector<std::string>{"x_cmd_mm", "y_cmd_mm"}));
+  ASSERT_EQ(t.rowCount(), 72u);
+  // The references are Eq. 15 of the identified machine, and through the true machine they land
+  // on the nominal circle within 2 um.
+  const ActuatorErrors2 e = readActuatorErrors(tmp.file("e.json"));
+  const NominalPath nominal = readNominalPath(tmp.file("n.csv"));
+  const auto expected = compensatePath(CartesianMachine2::fromErrors(e), nominal.points);
+  std::vector<Eigen::Vector2d> refs;
+  for (std::size_t k = 0; k < t.rowCount(); ++k) refs.emplace_back(t.number(k, 0), t.number(k, 1));
+  const auto landed = simulateMachine(demoMachine().errors, refs, 0.0, 1);
+  for (std::size_t k = 0; k < refs.size(); ++k) {
+    EXPECT_EQ(refs[k], expected[k]) << k;
+    EXPECT_LT((landed[k] - nominal.points[k]).norm(), 0.002) << k;
+  }
+  const std::string g = test::readText(tmp.file("f.nc"));
+  EXPECT_EQ(g.rfind("%\n(Metrofit ", 0), 0u);
+  EXPECT_NE(g.find("(points: 72, mm, absolute)\nG21 G90 G17\nG01 X"), std::string::npos);
+  EXPECT_EQ(std::count(g.begin(), g.end(), '\n'), 72 + 11);  // %, 7 comments, G21, blocks, M30, %
+  const StepNcToolpath tp = stepNcToolpath(readPart21(tmp.file("f.p21")));
+  ASSERT_EQ(tp.points.size(), 72u);
+  for (std::size_t k = 0; k < refs.size(); ++k) {
+    EXPECT_EQ(tp.points[k].x(), refs[k].x());
+    EXPECT_EQ(tp.points[k].y(), refs[k].y());
+  }
+  // CSV to stdout without --out.
+  const CliRun s = cli("kinematic compensate --errors e.json --path n.csv", tmp);
+  ASSERT_EQ(s.code, 0);
+  EXPECT_EQ(s.out, test::readText(tmp.file("f.csv")));
+}
+
+TEST(KinematicCli, SpcWritesLimitsAndIndices) {
+  test::TempDir tmp;
+  std::string csv = "# feature D1 of 20 parts\npart,d_mm\n";
+  const double values[] = {10.0, 10.2, 9.9, 10.1, 9.8, 10.1, 10.3, 10.0,
+                           10.2, 9.9,  9.9, 10.1, 9.8, 10.0, 9.7};
+  for (int i = 0; i < 15; ++i) csv += std::to_string(i + 1) + "," + CsvWriter::formatNumber(values[i]) + "\n";
+  test::writeText(tmp.file("f.csv"), csv);
+  const CliRun r = cli(
+      "spc --data f.csv --column d_mm --subgroup 5 --lsl 9.4 --usl 10.8 --nominal 10.2 --out s.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("spc: column 'd_mm', 3 subgroups of 5, in control, sigma 0.172, Cp 1.36, Cpk 1.16; "
+                        "compensate +0.2",
+                        0),
+            0u)
+      << r.err;
+  const nlohmann::json j = readJsonFile(tmp.file("s.json"));
+  EXPECT_NEAR(j["xbar_chart"]["ucl"].get<double>(), 10.2308, 2e-4);
+  EXPECT_NEAR(j["xbar_chart"]["lcl"].get<double>(), 9.7692, 2e-4);
+  EXPECT_NEAR(j["r_chart"]["ucl"].get<double>(), 0.8456, 2e-4);
+  EXPECT_NEAR(j["cp"].get<double>(), 1.3568, 1e-3);
+  EXPECT_NEAR(j["cpk"].get<double>(), 1.1630, 1e-3);
+  EXPECT_TRUE(j["compensation"]["apply"].get<bool>());
+  const CliRun plain = cli("spc --data f.csv --column d_mm --subgroup 5", tmp);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_FALSE(parseJson(plain.out, "stdout").contains("cp"));
+}
+
+TEST(KinematicCli, IdentifyBadInputExits2WithOneLine) {
+  test::TempDir tmp;
+  test::writeText(tmp.file("nocol.csv"), "x_cmd_mm,y_cmd_mm,x_meas_mm\n0,0,0\n1,0,1\n0,1,0\n");
+  expectBadInput("kinematic identify --data nocol.csv",
+                 "nocol.csv: field 'y_meas_mm': missing column (the file has: x_cmd_mm, y_cmd_mm, x_meas_mm)",
+                 tmp);
+  test::writeText(tmp.file("text.csv"),
+                  "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n0,0,0,0\n1,abc,1,0\n0,1,0,1\n");
+  expectBadInput("kinematic identify --data text.csv --out e.json",
+                 "text.csv:3:2: field 'y_cmd_mm': 'abc' is not a number", tmp);
+  test::writeText(tmp.file("few.csv"), "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n0,0,0,0\n1,0,1,0\n");
+  expectBadInput(
+      "kinematic identify --data few.csv --out e.json",
+      "few.csv: has 2 points, at least 3 not on one line are needed to identify origin and both axis "
+      "angles",
+      tmp);
+  test::writeText(tmp.file("line.csv"),
+                  "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n0,0,0,0\n1,0,1,0\n2,0,2,0.001\n");
+  expectBadInput(
+      "kinematic identify --data line.csv",
+      "line.csv: field 'x_cmd_mm,y_cmd_mm': all 3 command points lie on one line: the path must span "
+      "both axes (a circular test does)",
+      tmp);
+  test::writeText(tmp.file("nan.csv"),
+                  "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n0,0,0,0\n1,0,nan,0\n0,1,0,1\n");
+  expectBadInput("kinematic identify --data nan.csv",
+                 "nan.csv:3:3: field 'x_meas_mm': 'nan' is not a finite number", tmp);
+  const CliRun missing = cli("kinematic identify --data missing.csv", tmp);
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("missing.csv"), std::string::npos) << missing.err;
+  EXPECT_EQ(lines(missing.err), 1);
+}
+
+TEST(KinematicCli, CompensateBadInputExits2WithOneLine) {
+  test::TempDir tmp;
+  test::writeText(tmp.file("n.csv"), circleCsv(8, 10.0));
+  const std::string good = R"({"origin_mm": [0.01, 0], "x_axis_angle_deg": 0.001, "y_axis_angle_deg": 0})";
+  test::writeText(tmp.file("good.json"), good);
+  test::writeText(tmp.file("syntax.json"), "{\"origin_mm\": [0, 0],\n \"x_axis_angle_deg\": }");
+  expectBadInput(
+      "kinematic compensate --errors syntax.json --path n.csv --out f.csv",
+      "syntax.json:2:22: invalid JSON: syntax error while parsing value - unexpected '}'; expected '[', "
+      "'{', or a literal",
+      tmp);
+  test::writeText(tmp.file("nofield.json"), R"({"origin_mm": [0, 0], "x_axis_angle_deg": 0})");
+  expectBadInput("kinematic compensate --errors nofield.json --path n.csv --out f.csv",
+                 "nofield.json: field 'y_axis_angle_deg': missing", tmp);
+  test::writeText(tmp.file("origin.json"),
+                  R"({"origin_mm": [0, "x"], "x_axis_angle_deg": 0, "y_axis_angle_deg": 0})");
+  expectBadInput("kinematic compensate --errors origin.json --path n.csv",
+                 "origin.json: field 'origin_mm[1]': expected a number, found string", tmp);
+  test::writeText(tmp.file("short.json"),
+                  R"({"origin_mm": [0], "x_axis_angle_deg": 0, "y_axis_angle_deg": 0})");
+  expectBadInput("kinematic compensate --errors short.json --path n.csv",
+                 "short.json: field 'origin_mm': expected 2 numbers [x, y], found 1 element", tmp);
+  test::writeText(tmp.file("angle.json"),
+                  R"({"origin_mm": [0, 0], "x_axis_angle_deg": 90, "y_axis_angle_deg": 0})");
+  expectBadInput(
+      "kinematic compensate --errors angle.json --path n.csv",
+      "angle.json: field 'x_axis_angle_deg': 90 deg is beyond +-45 deg (an actuator orientation error)", tmp);
+  test::writeText(tmp.file("nocol.csv"), "x_mm,z_mm\n0,0\n");
+  expectBadInput("kinematic compensate --errors good.json --path nocol.csv",
+                 "nocol.csv: field 'y_mm': missing column (the file has: x_mm, z_mm)", tmp);
+  test::writeText(tmp.file("text.csv"), "x_mm,y_mm\n0,0\n1,1..5\n");
+  expectBadInput("kinematic compensate --errors good.json --path text.csv --out f.csv",
+                 "text.csv:3:2: field 'y_mm': '1..5' is not a number", tmp);
+  test::writeText(tmp.file("empty.csv"), "x_mm,y_mm\n");
+  expectBadInput("kinematic compensate --errors good.json --path empty.csv",
+                 "empty.csv: has 0 data rows, at least 1 needed", tmp);
+  test::writeText(tmp.file("one.csv"), "x_mm,y_mm\n1,2\n");
+  expectBadInput("kinematic compensate --errors good.json --path one.csv --out f.csv --step-nc f.p21",
+                 "one.csv: has 1 point: a STEP-NC toolpath (--step-nc) needs at least 2", tmp);
+  // An unwritable output leaves nothing behind.
+  const auto before = test::listFolder(tmp.path());
+  const CliRun w = cli("kinematic compensate --errors good.json --path n.csv --gcode no/such/dir/f.nc", tmp);
+  EXPECT_EQ(w.code, 2) << w.err;
+  EXPECT_EQ(lines(w.err), 1);
+  EXPECT_NE(w.err.find("no/such/dir/f.nc"), std::string::npos) << w.err;
+  EXPECT_EQ(test::listFolder(tmp.path()), before);
+}
+
+TEST(KinematicCli, SpcBadInputExits2WithOneLine) {
+  test::TempDir tmp;
+  std::string csv = "part,d_mm\n";
+  for (int i = 0; i < 12; ++i)
+    csv += std::to_string(i + 1) + "," + std::to_string(10.0 + 0.01 * (i % 3)) + "\n";
+  test::writeText(tmp.file("f.csv"), csv);
+  expectBadInput("spc --data f.csv --column d_mm --subgroup 1",
+                 "field '--subgroup': must be between 2 and 25 (the range of the A2/D3/D4 table), got 1",
+                 tmp);
+  expectBadInput("spc --data f.csv --column d_mm --subgroup 26 --out s.json",
+                 "field '--subgroup': must be between 2 and 25 (the range of the A2/D3/D4 table), got 26",
+                 tmp);
+  expectBadInput("spc --data f.csv --column d_mm --subgroup 5 --lsl 10.5 --usl 10.5",
+                 "field '--lsl': lower specification limit 10.5 is not below --usl 10.5", tmp);
+  expectBadInput("spc --data f.csv --column d_mm --subgroup 5 --lsl 9",
+                 "field '--usl': missing: give --lsl and --usl together (Cp and Cpk need both limits)", tmp);
+  expectBadInput("spc --data f.csv --column D1 --subgroup 5",
+                 "f.csv: field 'D1': missing column (the file has: part, d_mm)", tmp);
+  expectBadInput("spc --data f.csv --column d_mm --subgroup 7 --out s.json",
+                 "f.csv: field 'd_mm': has 12 values: at least 2 subgroups of 7 (14 values) are needed", tmp);
+  test::writeText(tmp.file("text.csv"), "part,d_mm\n1,10\n2,10.1\n3,ten\n4,10\n");
+  expectBadInput("spc --data text.csv --column d_mm --subgroup 2",
+                 "text.csv:4:2: field 'd_mm': 'ten' is not a number", tmp);
+  test::writeText(tmp.file("flat.csv"), "d_mm\n5\n5\n5\n5\n");
+  expectBadInput(
+      "spc --data flat.csv --column d_mm --subgroup 2",
+      "flat.csv: field 'd_mm': every subgroup has a range of 0: no within-subgroup variation to set "
+      "control limits from (is the measurement resolution too coarse?)",
+      tmp);
+  const CliRun notNumber = cli("spc --data f.csv --column d_mm --subgroup 5 --usl abc --lsl 1", tmp);
+  EXPECT_EQ(notNumber.code, 2);
+  EXPECT_NE(notNumber.err.find("--usl"), std::string::npos) << notNumber.err;
+  EXPECT_EQ(lines(notNumber.err), 1);
+}
+
+}  // namespace
+}  // namespace metrofit

@@ -1,0 +1,154 @@
+// End-to-end tests of `metrofit-cli match` (CONTRACT.md "match"): JSON keys, exit codes, one-line
+// stderr, reproducibility, locks, scale, machines, bad input.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "core/io/json_util.h"
+#include "testsupport.h"
+
+namespace metrofit {
+namespace {
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+CliRun cli(const std::string& args, const test::TempDir& tmp) {
+  const std::string out = tmp.file(".stdout"), err = tmp.file(".stderr");
+  const std::string cmd = "cd '" + tmp.path().string() + "' && '" +
+                          (test::binDir() / "metrofit-cli").string() + "' " + args + " >'" + out + "' 2>'" +
+                          err + "'";
+  const int status = std::system(cmd.c_str());
+  CliRun r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = test::readText(out);
+  r.err = test::readText(err);
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return r;
+}
+
+int lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
+
+nlohmann::json runJson(const std::string& args, const test::TempDir& tmp) {
+  const CliRun r = cli(args + " --out r.json", tmp);
+  EXPECT_EQ(r.code, 0) << args << ": " << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("match: ", 0), 0u) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  return parseJson(test::readText(tmp.file("r.json")), "r.json");
+}
+
+class MatchCli : public ::testing::Test {
+ protected:
+  void SetUp() override { ASSERT_EQ(cli("simulate probe --seed 2 --out p.csv", tmp).code, 0); }
+  test::TempDir tmp;
+};
+
+TEST_F(MatchCli, ClosedFormWritesTheContractJson) {
+  const nlohmann::json j = runJson("match --data p.csv --method closed-form --tolerance 0.035", tmp);
+  EXPECT_EQ(j.at("method"), "closed-form");
+  // The simulator's default posture (core/sim/probe_sim.h): rx, ry, rz = 0.02, -0.015, 0.05 deg.
+  const auto& rot = j.at("rotation_deg");
+  ASSERT_EQ(rot.size(), 3u);
+  EXPECT_NEAR(rot[0].get<double>(), 0.02, 0.002);
+  EXPECT_NEAR(rot[1].get<double>(), -0.015, 0.002);
+  EXPECT_NEAR(rot[2].get<double>(), 0.05, 0.002);
+  const auto& t = j.at("translation_mm");
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_NEAR(t[0].get<double>(), 0.12, 0.01);
+  EXPECT_NEAR(t[1].get<double>(), -0.08, 0.01);
+  EXPECT_NEAR(t[2].get<double>(), 0.05, 0.01);
+  EXPECT_LT(j.at("rmse_mm").get<double>(), 0.005);
+  EXPECT_GT(j.at("max_abs_mm").get<double>(), 0.0);
+  EXPECT_GT(j.at("out_of_tolerance").at("before").get<int>(), 0);
+  EXPECT_EQ(j.at("out_of_tolerance").at("after").get<int>(), 0);
+  EXPECT_FALSE(j.contains("scale"));
+  const auto& m = j.at("machine");
+  EXPECT_EQ(m.at("topology"), "xfyzba");
+  for (const char* k : {"SX_mm", "SY_mm", "SZ_mm", "SA_deg", "SB_deg", "frame_rotation_deg", "definition"})
+    EXPECT_TRUE(m.contains(k)) << k;
+  EXPECT_EQ(j.at("after").at("surfaces").size(), 4u);
+}
+
+TEST_F(MatchCli, SadeIsReproducibleBySeedAndHasATrace) {
+  const CliRun a = cli("match --data p.csv --seed 5", tmp);
+  const CliRun b = cli("match --data p.csv --seed 5", tmp);
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);  // stdout when --out is omitted
+  const nlohmann::json j = parseJson(a.out, "stdout");
+  EXPECT_EQ(j.at("method"), "sade");
+  EXPECT_EQ(j.at("trace").size(), 201u);
+  EXPECT_GT(j.at("evaluations").get<long>(), 6000);
+  EXPECT_EQ(j.at("seed"), 5);
+  const nlohmann::json cf = runJson("match --data p.csv --method closed-form", tmp);
+  EXPECT_LE(j.at("rmse_mm").get<double>() - cf.at("rmse_mm").get<double>(), 1e-6);
+}
+
+TEST_F(MatchCli, MinimaxIsNeverWorseThanClosedForm) {
+  const nlohmann::json cf = runJson("match --data p.csv --method closed-form", tmp);
+  const nlohmann::json mm = runJson("match --data p.csv --method minimax", tmp);
+  EXPECT_EQ(mm.at("method"), "minimax");
+  EXPECT_LE(mm.at("max_abs_mm").get<double>(), cf.at("max_abs_mm").get<double>());
+  EXPECT_GE(mm.at("minimax").at("active_points").size(), 7u);
+}
+
+TEST_F(MatchCli, LocksScaleAndMachines) {
+  const nlohmann::json l = runJson("match --data p.csv --method closed-form --lock rx,ry,z", tmp);
+  EXPECT_EQ(l.at("rotation_deg")[0].get<double>(), 0.0);
+  EXPECT_EQ(l.at("rotation_deg")[1].get<double>(), 0.0);
+  EXPECT_EQ(l.at("translation_mm")[2].get<double>(), 0.0);
+  EXPECT_EQ(l.at("locked"), nlohmann::json({"rx", "ry", "z"}));
+  const nlohmann::json s = runJson("match --data p.csv --method closed-form --allow-scale", tmp);
+  ASSERT_TRUE(s.contains("scale"));
+  EXPECT_NEAR(s.at("scale").get<double>(), 1.0, 1e-4);
+  const nlohmann::json ac = runJson("match --data p.csv --method closed-form --machine ac-table", tmp);
+  EXPECT_EQ(ac.at("machine").at("topology"), "ac-table");
+  EXPECT_TRUE(ac.at("machine").contains("SC_deg"));
+  test::writeText(tmp.file("m.json"), R"({"LZ_mm": -250, "LAB_mm": -80})");
+  const nlohmann::json d = runJson("match --data p.csv --method closed-form --machine-def m.json", tmp);
+  EXPECT_EQ(d.at("machine").at("definition").at("LZ_mm").get<double>(), -250.0);
+}
+
+TEST_F(MatchCli, BadInputExits2WithOneLine) {
+  struct Case {
+    std::string args, needle;
+  };
+  test::writeText(tmp.file("line.csv"),
+                  "id,qx,qy,qz,px,py,pz\nA,0,0,0,0,0,0\nB,1,1,1,1,1,1\nC,2,2,2,2,2,2\n");
+  test::writeText(tmp.file("two.csv"), "id,qx,qy,qz,px,py,pz\nA,0,0,0,0,0,0\nB,1,0,0,1,0,0\n");
+  test::writeText(tmp.file("bad.json"), R"({"topology": "hexapod"})");
+  for (const Case& c :
+       {Case{"match --data p.csv --lock rx,w", "--lock"},
+        Case{"match --data p.csv --reference P001,P002", "--reference"},
+        Case{"match --data p.csv --reference P001,P002,Q9", "no point with id 'Q9'"},
+        Case{"match --data line.csv --method closed-form", "line.csv: the nominal points are collinear"},
+        Case{"match --data two.csv", "two.csv: has 2 points"},
+        Case{"match --data p.csv --machine hexapod", "--machine"},
+        Case{"match --data p.csv --machine-def bad.json", "bad.json"},
+        Case{"match --data p.csv --method icp", "--method"}}) {
+    const CliRun r = cli(c.args + " --out r.json", tmp);
+    EXPECT_EQ(r.code, 2) << c.args << ": " << r.err;
+    EXPECT_EQ(lines(r.err), 1) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(tmp.file("r.json"))) << c.args;
+  }
+}
+
+TEST_F(MatchCli, GaSimplexIsThePapersComparison) {
+  const nlohmann::json g = runJson("match --data p.csv --method ga-simplex --seed 3", tmp);
+  EXPECT_EQ(g.at("method"), "ga-simplex");
+  EXPECT_FALSE(g.at("trace").empty());
+  EXPECT_EQ(g.at("out_of_tolerance").at("after").get<int>(), 0);
+  EXPECT_EQ(g.at("rough").at("reference_ids").size(), 3u);
+}
+
+}  // namespace
+}  // namespace metrofit

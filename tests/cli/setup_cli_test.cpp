@@ -1,0 +1,206 @@
+// End-to-end tests of `metrofit-cli setup` and `metrofit-cli simulate setup` (CONTRACT.md "setup"):
+// the JSON keys, exit codes, one-line errors naming file / line / field, determinism, exports.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "core/io/json_util.h"
+#include "testsupport.h"
+
+namespace metrofit {
+namespace {
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+/// Runs metrofit-cli with `args` (shell words) in `cwd`, capturing stdout and stderr.
+CliRun cli(const std::string& args, const test::TempDir& tmp) {
+  const std::string out = tmp.file(".stdout"), err = tmp.file(".stderr");
+  const std::string cmd = "cd '" + tmp.path().string() + "' && '" +
+                          (test::binDir() / "metrofit-cli").string() + "' " + args + " >'" + out + "' 2>'" +
+                          err + "'";
+  const int status = std::system(cmd.c_str());
+  CliRun r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = test::readText(out);
+  r.err = test::readText(err);
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return r;
+}
+
+int lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
+
+std::string demo(const char* name) {
+  return "'" + (test::sourceDir() / "resources/demo/setup" / name).string() + "'";
+}
+
+const char* kSmallModel = R"({"name": "small", "step_mm": 0.001, "bounds_mm": [-0.1, 0.1],
+  "setup": [{"id": "W1", "kind": "wks"}, {"id": "T5", "kind": "tool"}],
+  "features": [{"id": "F1"}, {"id": "F2"}],
+  "dimensions": [{"id": "D1", "nominal": 42.0, "lower": -0.02, "upper": 0.02, "label": "POS_D1"},
+                 {"id": "D2", "nominal": 18.5, "lower": -0.05, "upper": 0.03}],
+  "arcs": [{"from": "W1", "to": "F1", "weight": 1}, {"from": "T5", "to": "F1", "weight": 1},
+           {"from": "W1", "to": "F2", "weight": -1}, {"from": "F1", "to": "D1", "weight": 1},
+           {"from": "F1", "to": "D2", "weight": 1}, {"from": "F2", "to": "D2", "weight": -1}]})";
+
+const char* kSmallReport =
+    "part,time_min,dimension,nominal_mm,measured_mm,lower_tol_mm,upper_tol_mm\n"
+    "1,10,D1,42,42.010,-0.02,0.02\n"
+    "1,10,D2,18.5,18.495,-0.05,0.03\n";
+
+TEST(SetupCli, ExactOnThePaperExampleWritesTheContractKeys) {
+  test::TempDir tmp;
+  const CliRun r = cli("setup --model " + demo("paper_example.json") + " --data " +
+                           demo("paper_example_report.csv") + " --out result.json",
+                       tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("setup: exact on 28 dimensions of 3 parts, 10 setup data: f1 0.0237 -> 0.0797 mm", 0),
+            0u)
+      << r.err;
+  const nlohmann::json j = readJsonFile(tmp.file("result.json"));
+  for (const char* key :
+       {"method", "corrections_mm", "f1_mm", "f2_mm", "f", "bonus_mm", "evaluations", "trace"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["method"], "exact");
+  EXPECT_EQ(j["corrections_mm"].size(), 10u);
+  for (const char* id : {"W1", "W2", "W3", "W4", "W5", "W6", "W7", "W8", "T5", "T23"})
+    EXPECT_TRUE(j["corrections_mm"].contains(id)) << id;
+  const double f1 = j["f1_mm"], f2 = j["f2_mm"], f = j["f"];
+  EXPECT_NEAR(f, 10.0 * f1 - f2, 1e-8);
+  EXPECT_NEAR(j["bonus_mm"].get<double>(), f1 - j["f1_before_mm"].get<double>(), 1e-8);
+  EXPECT_NEAR(f1, 0.0796667, 1e-6);  // means over 3 parts: thirds of a micrometre
+  double sq = 0.0;
+  for (const auto& [id, v] : j["corrections_mm"].items()) {
+    sq += v.get<double>() * v.get<double>();
+    EXPECT_NEAR(v.get<double>() * 1000.0, std::round(v.get<double>() * 1000.0), 1e-6)
+        << id << " off the grid";
+  }
+  EXPECT_NEAR(std::sqrt(sq), f2, 1e-8);
+  EXPECT_TRUE(j["certificate"]["f1_optimal_on_grid"].get<bool>());
+  EXPECT_TRUE(j["certificate"]["f2_minimal"].get<bool>());
+  EXPECT_GE(j["certificate"]["lp_f1_mm"].get<double>(), f1);
+  EXPECT_GE(j["trace"].size(), 3u);
+  EXPECT_EQ(j["trace"][0]["stage"], "lp");
+  EXPECT_EQ(j["dimensions"].size(), 28u);
+  EXPECT_EQ(j["parts"], 3);
+}
+
+TEST(SetupCli, MetaheuristicsAreReproducibleAndReportTheirGap) {
+  test::TempDir tmp;
+  for (const char* method : {"cripso", "pso", "ga", "coa"}) {
+    const std::string args = "setup --model " + demo("paper_example.json") + " --data " +
+                             demo("paper_example_report.csv") + " --method " + method +
+                             " --budget 1500 --seed 4";
+    const CliRun a = cli(args, tmp), b = cli(args, tmp);
+    ASSERT_EQ(a.code, 0) << method << ": " << a.err;
+    EXPECT_EQ(a.out, b.out) << method;  // stdout when --out is omitted; bit for bit
+    EXPECT_EQ(lines(a.err), 1) << a.err;
+    const nlohmann::json j = nlohmann::json::parse(a.out);
+    EXPECT_EQ(j["method"], method);
+    EXPECT_EQ(j["evaluations"], 1500);
+    EXPECT_GE(j["trace"].size(), 2u);
+    EXPECT_TRUE(j["trace"][0].contains("f1_mm"));
+    const double gap = j["gap_f1_mm"];
+    EXPECT_GE(gap, 0.0) << method;
+    EXPECT_NEAR(gap, j["exact"]["f1_mm"].get<double>() - j["f1_mm"].get<double>(), 1e-8);
+    EXPECT_NE(a.err.find("gap to exact f1"), std::string::npos) << a.err;
+  }
+}
+
+TEST(SetupCli, ExportAndDmisData) {
+  test::TempDir tmp;
+  test::writeText(tmp.file("m.json"), kSmallModel);
+  const std::string dmo = "'" + (test::sourceDir() / "tests/core/setup/data/part_17.dmo").string() + "'";
+  const CliRun r =
+      cli("setup --model m.json --data " + dmo + " --export fanuc --export-out offsets.nc --out r.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string nc = test::readText(tmp.file("offsets.nc"));
+  EXPECT_EQ(nc.rfind("%\nO9001 (METROFIT SETUP CORRECTIONS)\n(SMALL)\n", 0), 0u) << nc;
+  EXPECT_NE(nc.find("G10 L2 P1 Z"), std::string::npos);
+  EXPECT_NE(nc.find("G10 L11 P5 R"), std::string::npos);
+  const nlohmann::json j = readJsonFile(tmp.file("r.json"));
+  EXPECT_EQ(j["export"]["format"], "fanuc");
+  EXPECT_EQ(j["parts"], 1);
+  EXPECT_NE(r.err.find("fanuc -> offsets.nc"), std::string::npos) << r.err;
+  // Several reports are merged.
+  test::writeText(tmp.file("r.csv"), kSmallReport);
+  const CliRun m = cli(
+      "setup --model m.json --data r.csv " + dmo + " --export csv --export-out x.csv --tool-offset geometry",
+      tmp);
+  ASSERT_EQ(m.code, 0) << m.err;
+  EXPECT_EQ(nlohmann::json::parse(m.out)["parts"], 2);
+  EXPECT_NE(test::readText(tmp.file("x.csv")).find("id,kind,register,axis,correction_mm\n"),
+            std::string::npos);
+}
+
+TEST(SetupCli, BadInputExits2WithOneLineNamingFileLineAndField) {
+  test::TempDir tmp;
+  test::writeText(tmp.file("m.json"), kSmallModel);
+  test::writeText(tmp.file("r.csv"), kSmallReport);
+  nlohmann::json bad = nlohmann::json::parse(kSmallModel);
+  bad["arcs"][1]["weight"] = 2;
+  test::writeText(tmp.file("bad.json"), bad.dump());
+  struct Case {
+    std::string args, err;
+  };
+  const Case cases[] = {
+      {"setup --model bad.json --data r.csv",
+       "metrofit-cli: bad.json: field 'arcs[1].weight': weight 2 is not +1 or -1\n"},
+      {"setup --model m.json --data r.csv --export fanuc",
+       "metrofit-cli: field '--export': needs --export-out FILE\n"},
+      {"setup --model m.json --data r.csv --export-out x.nc",
+       "metrofit-cli: field '--export-out': needs --export fanuc|heidenhain|siemens|csv\n"},
+  };
+  for (const Case& c : cases) {
+    const CliRun r = cli(c.args, tmp);
+    EXPECT_EQ(r.code, 2) << c.args;
+    EXPECT_EQ(r.err, c.err) << c.args;
+    EXPECT_EQ(r.out, "");
+  }
+  test::writeText(tmp.file("unknown.csv"), std::string(kSmallReport) + "2,20,D9,1,1,-0.1,0.1\n");
+  const CliRun u = cli("setup --model m.json --data unknown.csv", tmp);
+  EXPECT_EQ(u.code, 2);
+  EXPECT_EQ(
+      u.err,
+      "metrofit-cli: unknown.csv:4:3: field 'dimension': unknown dimension 'D9' (not in the model m.json)\n");
+  for (const char* args :
+       {"setup --model m.json --data r.csv --method simplex", "setup --model m.json --data r.csv --budget 0",
+        "setup --model m.json --data missing.csv", "setup --model m.json",
+        "setup --model m.json --data r.csv --export haas --export-out x"}) {
+    const CliRun r = cli(args, tmp);
+    EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+    EXPECT_EQ(lines(r.err), 1) << args << ": " << r.err;
+  }
+  // An unwritable --out leaves nothing behind; the export is not written either.
+  const CliRun w = cli("setup --model m.json --data r.csv --out no/such/dir/r.json", tmp);
+  EXPECT_EQ(w.code, 2);
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("no")));
+}
+
+// resources/demo/setup/paper_example_report.csv is reproducible from the command line, as
+// resources/demo/setup/README.md says.
+TEST(SetupCli, SimulateSetupMakesTheDemoReport) {
+  test::TempDir tmp;
+  const CliRun r = cli(
+      "simulate setup --model " + demo("paper_example.json") + " --parts 3 --seed 6 --out report.csv", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(test::readText(tmp.file("report.csv")),
+            test::readText((test::sourceDir() / "resources/demo/setup/paper_example_report.csv").string()));
+  const CliRun s = cli("simulate setup --model " + demo("paper_example.json") + " --parts 0", tmp);
+  EXPECT_EQ(s.code, 2);
+}
+
+}  // namespace
+}  // namespace metrofit
