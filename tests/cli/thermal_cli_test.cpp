@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "cli/cli_runner.h"
 #include "core/io/csv.h"
 #include "core/io/json_util.h"
 #include "testsupport.h"
@@ -16,30 +17,9 @@
 namespace metrofit {
 namespace {
 
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
-
-/// Runs metrofit-cli with `args` (shell words) in the temporary folder, capturing stdout and stderr.
-CliRun cli(const std::string& args, const test::TempDir& tmp) {
-  const std::string out = tmp.file(".stdout"), err = tmp.file(".stderr");
-  const std::string cmd = "cd '" + tmp.path().string() + "' && '" +
-                          (test::binDir() / "metrofit-cli").string() + "' " + args + " >'" + out + "' 2>'" +
-                          err + "'";
-  const int status = std::system(cmd.c_str());
-  CliRun r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = test::readText(out);
-  r.err = test::readText(err);
-  std::filesystem::remove(out);
-  std::filesystem::remove(err);
-  return r;
-}
-
-int lines(const std::string& s) {
-  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
-}
+using test::cli;
+using test::CliRun;
+using test::lines;
 
 nlohmann::json readJson(const test::TempDir& tmp, const std::string& name) {
   return parseJson(test::readText(tmp.file(name)), name);

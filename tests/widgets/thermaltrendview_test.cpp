@@ -387,13 +387,11 @@ TEST_F(ThermalTrendViewTest, OnlyDisplacementMovesItToTheLeftAxis) {
   EXPECT_TRUE(displacementLeft);
 }
 
-// The real CAIVIAC spindle log once the demo bundles it: speed-based phases and a readable chart.
+// The real CAIVIAC spindle log the demo bundles: speed-based phases and a readable chart.
 TEST(ThermalTrendViewReal, CaiviacSpindleLog) {
   const QString path = QDir(qEnvironmentVariable("METROFIT_SOURCE_DIR"))
                            .filePath(QStringLiteral("resources/demo/data/thermal_caiviac.csv"));
-  if (!QFileInfo::exists(path)) {
-    GTEST_SKIP() << "not bundled yet: " << path.toStdString();
-  }
+  ASSERT_TRUE(QFileInfo::exists(path)) << "the demo bundles the real log: " << path.toStdString();
   const ThermalLog log = readThermalLog(path.toStdString());
   const PhaseDetection detection = detectThermalPhases(log);
   EXPECT_EQ(detection.source, PhaseSource::Speed);
