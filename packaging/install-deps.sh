@@ -7,7 +7,7 @@ PACKAGES=(
   # toolchain
   build-essential cmake ninja-build ccache pkg-config git clang-format clang-tidy
   # GUI: Qt 6 widgets, charts, OpenGL widgets, tools (linguist), svg; fonts for headless rendering
-  qt6-base-dev qt6-base-dev-tools qt6-charts-dev libqt6opengl6-dev libqt6svg6-dev qt6-svg-dev
+  qt6-base-dev qt6-base-dev-tools qt6-charts-dev libqt6opengl6-dev qt6-svg-dev
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-qpa-plugins libgl1-mesa-dev fonts-dejavu-core
   # 3D (VTK 9 without its Qt 5 module)
   libvtk9-dev

@@ -75,7 +75,25 @@ std::string readFile(const std::string& path, std::size_t maxBytes) {
 void writeFileAtomic(const std::string& path, std::string_view content) {
   if (path.empty()) fileFail(path, "no output file name given", 0);
   struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) fileFail(path, "is a folder, not a file", 0);
+  if (::stat(path.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) fileFail(path, "is a folder, not a file", 0);
+    if (!S_ISREG(st.st_mode)) {
+      // A device, FIFO or socket (e.g. --out /dev/null or /dev/stdout): write straight into it.
+      // Renaming a temporary file over it would replace the device with a regular file.
+      Fd out(::open(path.c_str(), O_WRONLY | O_CLOEXEC));
+      if (out.get() < 0) fileFail(path, "cannot write", errno);
+      std::size_t done = 0;
+      while (done < content.size()) {
+        const ssize_t n = ::write(out.get(), content.data() + done, content.size() - done);
+        if (n < 0) {
+          if (errno == EINTR) continue;
+          fileFail(path, "cannot write", errno);
+        }
+        done += static_cast<std::size_t>(n);
+      }
+      return;
+    }
+  }
   const std::string folder = parentFolder(path);
   std::string tmpl = path + ".tmp-XXXXXX";
   Fd fd(::mkstemp(tmpl.data()));

@@ -14,7 +14,9 @@ namespace metrofit {
 std::string readFile(const std::string& path, std::size_t maxBytes = std::size_t{1} << 30);
 
 /// Writes `content` to `path` atomically (see above); FileError on failure (the target is untouched
-/// and no temporary file is left behind).
+/// and no temporary file is left behind). A target that exists and is not a regular file (a device
+/// such as /dev/null, a FIFO) is written directly: it has no old content to protect and must not be
+/// replaced by a regular file.
 void writeFileAtomic(const std::string& path, std::string_view content);
 
 /// The folder part of a path ("." when there is none).

@@ -1,6 +1,7 @@
 #include "core/io/file_io.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -54,6 +55,35 @@ TEST(FileIo, KilledWriterLeavesOldOrNewFileNeverAHalfOne) {
     const std::string now = readFile(path);
     EXPECT_TRUE(now == a || now == b) << "round " << round << ": size " << now.size();
   }
+}
+
+TEST(FileIo, SpecialFilesAreWrittenInPlaceNotReplaced) {
+  // Regression: `--out /dev/null` once renamed a temporary file over /dev/null.
+  struct stat before {};
+  ASSERT_EQ(::stat("/dev/null", &before), 0);
+  ASSERT_TRUE(S_ISCHR(before.st_mode));
+  writeFileAtomic("/dev/null", "discarded");
+  struct stat after {};
+  ASSERT_EQ(::stat("/dev/null", &after), 0);
+  EXPECT_TRUE(S_ISCHR(after.st_mode)) << "/dev/null is no longer a character device";
+  EXPECT_EQ(before.st_rdev, after.st_rdev);
+  // A FIFO with a reader gets the content.
+  test::TempDir dir;
+  const std::string fifo = dir.file("pipe");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    writeFileAtomic(fifo, "through the pipe");
+    ::_exit(0);
+  }
+  EXPECT_EQ(readFile(fifo), "through the pipe");
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  struct stat st {};
+  ASSERT_EQ(::stat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  EXPECT_EQ(test::listFolder(dir.path()), (std::vector<std::string>{"pipe"}));
 }
 
 TEST(FileIo, ReadFileErrors) {
