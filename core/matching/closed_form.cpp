@@ -43,20 +43,7 @@ double sumSquares(const ProbePointSet& set, const Pose& pose) {
   return ss;
 }
 
-/// Parameters of the constrained fit: angles (rad), translation (mm), scale.
-struct Params {
-  Eigen::Vector3d angles = Eigen::Vector3d::Zero();
-  Eigen::Vector3d t = Eigen::Vector3d::Zero();
-  double s = 1.0;
-
-  Pose pose() const {
-    Pose p;
-    p.rotation = rotationZyx(angles);
-    p.translation = t;
-    p.scale = s;
-    return p;
-  }
-};
+using Params = PoseParams;
 
 }  // namespace
 

@@ -69,6 +69,22 @@ struct Pose {
 
 /// R = Rz(a.z) Ry(a.y) Rx(a.x), angles in radians.
 Eigen::Matrix3d rotationZyx(const Eigen::Vector3d& anglesRad);
+
+/// The parameters the iterative fits (constrained closed form, minimax) work on: angles (rad),
+/// translation (mm), scale; pose() builds the map p = s R q + t.
+struct PoseParams {
+  Eigen::Vector3d angles = Eigen::Vector3d::Zero();
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+  double s = 1.0;
+
+  Pose pose() const {
+    Pose p;
+    p.rotation = rotationZyx(angles);
+    p.translation = t;
+    p.scale = s;
+    return p;
+  }
+};
 /// The angles (radians) of R = Rz Ry Rx: x = atan2(R21, R22), y = atan2(-R20, hypot(R21, R22)),
 /// z = atan2(R10, R00) (0-based indices; the paper's Eq. 5 with atan2 instead of arctan so that the
 /// quadrant is kept). Unique for |y| < 90 deg.
