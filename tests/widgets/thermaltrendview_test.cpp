@@ -23,31 +23,13 @@
 
 #include "core/common/error.h"
 #include "core/thermal/thermal_log.h"
+#include "qtapp.h"
 #include "widgets/charts/thermalcharts.h"
 #include "widgets/charts/thermaltrendview.h"
 #include "widgets/charts/trendanalysis.h"
 
 namespace metrofit {
 namespace {
-
-class QtEnvironment : public ::testing::Environment {
- public:
-  void SetUp() override {
-    static int argc = 1;
-    static char arg0[] = "thermaltrendview_test";
-    static char* argv[] = {arg0, nullptr};
-    // ctest sets offscreen; when run by hand, stay offscreen too (same fonts and pixels, no window).
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
-      qputenv("QT_QPA_PLATFORM", "offscreen");
-    }
-    app_ = std::make_unique<QApplication>(argc, argv);
-  }
-  void TearDown() override { app_.reset(); }
-
- private:
-  std::unique_ptr<QApplication> app_;
-};
-[[maybe_unused]] auto* const kQtEnvironment = ::testing::AddGlobalTestEnvironment(new QtEnvironment);
 
 QString outputDir() {
   const QString dir = qEnvironmentVariable("METROFIT_TEST_OUT", QDir::tempPath());

@@ -1,9 +1,9 @@
 #pragma once
-// A QApplication for the GUI tests, created once in a GoogleTest environment (gtest_main is
-// linked, so there is no main() of our own). The tests are written for the offscreen platform (no
-// X server, the 3D view shows its fallback), so the environment sets it whatever the caller's
-// environment says. Settings go to a private temporary folder, so tests never see or change the
-// user's recent files or language; XDG_RUNTIME_DIR gets a private folder when it is not set.
+// A QApplication for the offscreen GUI and widget tests, created once in a GoogleTest environment (gtest_main
+// is linked, so there is no main() of our own). The tests are written for the offscreen platform (no X
+// server, the 3D view shows its fallback), so the environment sets it whatever the caller's environment says.
+// Settings go to a private temporary folder, so tests never see or change the user's recent files or
+// language; XDG_RUNTIME_DIR gets a private folder when it is not set.
 #include <gtest/gtest.h>
 
 #include <QApplication>
