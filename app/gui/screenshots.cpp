@@ -5,6 +5,7 @@
 #include <QEventLoop>
 #include <QFileInfo>
 #include <QImage>
+#include <QMetaObject>
 #include <QPixmap>
 #include <QTemporaryDir>
 #include <QTextStream>
@@ -93,13 +94,28 @@ int runScreenshots(const QString& outDir, QTextStream& err) {
     return 1;
   }
 
+  // The views of CONTRACT.md in a fixed order. Each shows a page and then asks the page for one of
+  // its views through `Q_INVOKABLE void showView(const QString&)` when the page has it (pages
+  // without sub-views just show themselves), so adding a view to a page needs no change here.
+  const auto pageView = [](Page page, const QString& view) {
+    return [page, view](MainWindow& w) {
+      w.showPage(page);
+      QWidget* widget = w.page(page);
+      if (widget->metaObject()->indexOfMethod("showView(QString)") >= 0)
+        QMetaObject::invokeMethod(widget, "showView", Qt::DirectConnection, Q_ARG(QString, view));
+    };
+  };
   std::vector<View> views = {
-      {QStringLiteral("overview"), [](MainWindow& w) { w.showPage(Page::Overview); }},
-      {QStringLiteral("thermal-trend"), [](MainWindow& w) { w.showPage(Page::Thermal); }},
-      {QStringLiteral("matching-3d"), [](MainWindow& w) { w.showPage(Page::Matching); }},
-      {QStringLiteral("setup-correction"), [](MainWindow& w) { w.showPage(Page::Setup); }},
-      {QStringLiteral("kinematics-spc"), [](MainWindow& w) { w.showPage(Page::Kinematics); }},
-      {QStringLiteral("diagnosis"), [](MainWindow& w) { w.showPage(Page::Diagnosis); }},
+      {QStringLiteral("overview"), pageView(Page::Overview, {})},
+      {QStringLiteral("setup-graph"), pageView(Page::Setup, QStringLiteral("graph"))},
+      {QStringLiteral("setup-convergence"), pageView(Page::Setup, QStringLiteral("convergence"))},
+      {QStringLiteral("matching-3d"), pageView(Page::Matching, QStringLiteral("3d"))},
+      {QStringLiteral("kinematics-path"), pageView(Page::Kinematics, QStringLiteral("path"))},
+      {QStringLiteral("kinematics-spc"), pageView(Page::Kinematics, QStringLiteral("spc"))},
+      {QStringLiteral("thermal-trend"), pageView(Page::Thermal, QStringLiteral("trend"))},
+      {QStringLiteral("thermal-hysteresis"), pageView(Page::Thermal, QStringLiteral("hysteresis"))},
+      {QStringLiteral("thermal-models"), pageView(Page::Thermal, QStringLiteral("models"))},
+      {QStringLiteral("diagnosis"), pageView(Page::Diagnosis, QStringLiteral("diagnosis"))},
   };
   // Every further thermal log of the project (the demo has a real one besides the simulated one).
   const ThermalPage* thermal = window.thermalPage();
@@ -107,8 +123,8 @@ int runScreenshots(const QString& outDir, QTextStream& err) {
   for (const DatasetRef& d : window.document()->project().datasets) {
     const QString id = QString::fromStdString(d.id);
     if (d.kind != dataset_kind::kThermalLog || id == firstLog) continue;
-    views.push_back({QStringLiteral("thermal-trend-") + id, [id](MainWindow& w) {
-                       w.showPage(Page::Thermal);
+    views.push_back({QStringLiteral("thermal-trend-") + id, [id, pageView](MainWindow& w) {
+                       pageView(Page::Thermal, QStringLiteral("trend"))(w);
                        w.thermalPage()->selectDataset(id);
                      }});
   }

@@ -95,12 +95,16 @@ QString outputDir(const QString& name) {
 /// The views every screenshot run must show (the demo project has two thermal logs).
 const QStringList kExpected = {
     QStringLiteral("01-overview.png"),
-    QStringLiteral("02-thermal-trend.png"),
-    QStringLiteral("03-matching-3d.png"),
-    QStringLiteral("04-setup-correction.png"),
-    QStringLiteral("05-kinematics-spc.png"),
-    QStringLiteral("06-diagnosis.png"),
-    QStringLiteral("07-thermal-trend-thermal_caiviac.png"),
+    QStringLiteral("02-setup-graph.png"),
+    QStringLiteral("03-setup-convergence.png"),
+    QStringLiteral("04-matching-3d.png"),
+    QStringLiteral("05-kinematics-path.png"),
+    QStringLiteral("06-kinematics-spc.png"),
+    QStringLiteral("07-thermal-trend.png"),
+    QStringLiteral("08-thermal-hysteresis.png"),
+    QStringLiteral("09-thermal-models.png"),
+    QStringLiteral("10-diagnosis.png"),
+    QStringLiteral("11-thermal-trend-thermal_caiviac.png"),
 };
 
 TEST(ScreenshotsTest, WritesOneNonBlankPngPerView) {
@@ -134,7 +138,7 @@ TEST(ScreenshotsTest, WritesOneNonBlankPngPerView) {
   // The matching view shows the VTK scene, not the fallback text: the measured points are coloured
   // by deviation with a diverging map, so there are saturated red and blue pixels.
   const QImage matching =
-      QImage(QDir(dir).filePath(QStringLiteral("03-matching-3d.png"))).convertToFormat(QImage::Format_RGB32);
+      QImage(QDir(dir).filePath(QStringLiteral("04-matching-3d.png"))).convertToFormat(QImage::Format_RGB32);
   ASSERT_FALSE(matching.isNull());
   int reddish = 0;
   int bluish = 0;

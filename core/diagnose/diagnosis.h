@@ -1,0 +1,80 @@
+#pragma once
+// The result of the closed loop (CONTRACT.md "diagnose result"): the declared model's residual,
+// every candidate effect tried with its parameters and evidence, and the error after the accepted
+// effects were added. Shared by the four domains (thermal, kinematic, setup, matching), the CLI,
+// the GUI's diagnosis view and the report.
+//
+// The loop (diagnoseLoop below) is the same in every domain: fit the declared model plus the
+// effects accepted so far; try every remaining candidate; accept the best one only when its
+// evidence passes the domain's test (out-of-sample improvement for thermal, an information
+// criterion with a conservative threshold elsewhere) *and* it reduces the rmse by a practically
+// relevant amount; repeat until nothing more is accepted.
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace metrofit::diagnose {
+
+/// Error figures of one model state, in the data's own units (um for thermal, mm elsewhere).
+struct ErrorSummary {
+  double rmse = 0.0;                  ///< residual rms of the fitted data
+  double maxAbs = 0.0;                ///< largest |residual| of the fitted data
+  std::optional<double> heldoutRmse;  ///< residual rms on held-out rows (thermal)
+};
+
+/// One estimated parameter of an effect. Numbers carry a standard error when one is known.
+struct Parameter {
+  std::string name;                         ///< CONTRACT.md key, e.g. "tau_min", "x_mm", "axis"
+  std::variant<double, std::string> value;  ///< numeric, or text (e.g. cyclic "axis": "x")
+  std::optional<double> standardError;      ///< 1-sigma, same unit as value
+};
+
+/// What explains a residual, for plotting (GUI diagnosis view, report): residual before and after
+/// the effect against the explaining variable (time, path angle, part number, surface index...).
+struct ResidualPlot {
+  std::string xLabel;  ///< e.g. "time (min)", "path angle (deg)", "part"
+  std::string yLabel;  ///< e.g. "residual (um)"
+  std::vector<double> x;
+  std::vector<double> before;  ///< residual of the model without this effect
+  std::vector<double> after;   ///< residual with it
+  /// For 2D vector-field plots (matching distortion): per point x, y, dx, dy (before).
+  std::vector<std::vector<double>> vectors;
+};
+
+/// A candidate effect tried in one round.
+struct Candidate {
+  std::string name;  ///< CONTRACT.md name, e.g. "lag", "lag:T1", "backlash"
+  bool accepted = false;
+  std::vector<Parameter> parameters;
+  double rmseBefore = 0.0;              ///< fit rmse of the model it was tried on
+  double rmseAfter = 0.0;               ///< fit rmse with this effect added
+  std::optional<double> heldoutBefore;  ///< held-out rmse (thermal)
+  std::optional<double> heldoutAfter;
+  double score = 0.0;                ///< the test statistic the decision used (e.g. delta BIC)
+  std::string evidence;              ///< one line a person can read
+  int round = 0;                     ///< loop round in which it was tried (0-based)
+  std::optional<ResidualPlot> plot;  ///< filled for accepted effects (and may be for others)
+};
+
+struct Diagnosis {
+  std::string domain;  ///< "thermal", "kinematic", "setup", "matching"
+  std::string units;   ///< units of rmse / max_abs, e.g. "um", "mm"
+  ErrorSummary baseline;
+  std::vector<Candidate> effects;  ///< every candidate tried, in the order tried
+  ErrorSummary final;
+  /// The declared model's description and its fitted parameters, for the report (free text).
+  std::vector<std::string> notes;
+
+  std::vector<const Candidate*> accepted() const;
+};
+
+/// The JSON of CONTRACT.md: {"domain", "baseline": {"rmse","max_abs"[,"heldout_rmse"]},
+/// "effects": [{"name","accepted","parameters":{name: value},"rmse_before","rmse_after",
+/// "evidence", ...}], "final": {...}}. Additive keys: "units", "uncertainty" per effect
+/// ({name: standard error}), "heldout_rmse_before/after", "score", "round".
+nlohmann::json toJson(const Diagnosis& d);
+
+}  // namespace metrofit::diagnose
