@@ -28,6 +28,10 @@ bool Pso::Options::isValid(std::string* why) const {
   if (!(maxVelocity > 0.0 && maxVelocity <= 1.0)) {
     return no("maxVelocity must be in (0, 1] of the range (got " + std::to_string(maxVelocity) + ")");
   }
+  if (neighbours < 0 || 2L * neighbours + 1 > swarmSize) {
+    return no("neighbours must be in [0, (swarmSize - 1) / 2] (got " + std::to_string(neighbours) +
+              " with a swarm of " + std::to_string(swarmSize) + ")");
+  }
   return true;
 }
 
@@ -44,6 +48,17 @@ Pso::Options Pso::Options::abdulshahed2016() {
   o.c2 = 2.0;
   o.acceleration = Acceleration::Constant;
   o.update = Update::Synchronous;
+  return o;
+}
+
+Pso::Options Pso::Options::ring() {
+  Options o;
+  o.swarmSize = 100;
+  o.inertiaStart = o.inertiaEnd = 0.7298;
+  o.c1 = o.c2 = 1.49618;
+  o.acceleration = Acceleration::Cosine;
+  o.update = Update::Asynchronous;
+  o.neighbours = 2;
   return o;
 }
 
@@ -109,19 +124,40 @@ Result Pso::optimise(const Problem& problem, Observer* observer) const {
     }
   };
 
+  // The guide of particle k: the swarm's gbest, or the best pbest of its ring neighbourhood.
+  const std::size_t reach = static_cast<std::size_t>(o.neighbours);
+  auto guide = [&](std::size_t k) {
+    if (reach == 0) return best;
+    const std::size_t m = swarm.size();
+    std::size_t b = k;
+    for (std::size_t d = 1; d <= reach; ++d) {
+      const std::size_t left = (k + m - d % m) % m, right = (k + d) % m;
+      if (swarm[left].fbest < swarm[b].fbest) b = left;
+      if (swarm[right].fbest < swarm[b].fbest) b = right;
+    }
+    return b;
+  };
+
   std::vector<double> gbest;
   while (!stop) {
     if (o.update == Update::Asynchronous) {
       for (std::size_t k = 0; k < size && !tracker.exhausted(); ++k) {
         const double s = static_cast<double>(tracker.evaluations()) / budget;
-        gbest = swarm[best].pbest;
+        gbest = swarm[guide(k)].pbest;
         move(swarm[k], gbest, s);
         if (swarm[k].fbest < swarm[best].fbest) best = k;  // gbest updated after every new solution
       }
     } else {
       const double s = static_cast<double>(tracker.evaluations()) / budget;
-      gbest = swarm[best].pbest;
-      for (std::size_t k = 0; k < size && !tracker.exhausted(); ++k) move(swarm[k], gbest, s);
+      if (reach == 0) {
+        gbest = swarm[best].pbest;
+        for (std::size_t k = 0; k < size && !tracker.exhausted(); ++k) move(swarm[k], gbest, s);
+      } else {
+        // Guides from the previous iteration's pbests, fixed before anyone moves.
+        std::vector<std::vector<double>> fixed(size);
+        for (std::size_t k = 0; k < size; ++k) fixed[k] = swarm[guide(k)].pbest;
+        for (std::size_t k = 0; k < size && !tracker.exhausted(); ++k) move(swarm[k], fixed[k], s);
+      }
       for (std::size_t k = 0; k < size; ++k) {
         if (swarm[k].fbest < swarm[best].fbest) best = k;  // gbest updated after the sweep
       }

@@ -34,6 +34,17 @@
 // and rounds it to the grid in place; the particle lives on at the snapped point. A component that
 // had left the box gets v_i = 0 (absorbing wall), so that the particle does not keep pushing into it.
 //
+// (c) Options::ring() — beyond the papers: the local-best ("lbest") swarm of Kennedy & Mendes
+//     (2002): particles sit on a ring and each follows the best pbest among itself and its
+//     `neighbours` nearest particles on each side instead of the swarm's gbest (information spreads
+//     slowly, so the swarm explores longer), with Clerc & Kennedy's (2002) constriction values as
+//     inertia form, w = 0.7298, c1 = c2 = 1.49618, scaled by seed 000's cosine schedule, updated
+//     asynchronously like (a). It is the library's general-purpose PSO; metrofit-bench --optimizers
+//     measures all three presets against pagmo2's pso (which is also an lbest swarm by default).
+//     With neighbours > 0, the guide of particle k is read when k moves, so in the asynchronous
+//     swarm it includes every move before it; in the synchronous swarm it is taken from the
+//     pbests of the previous iteration.
+//
 // Iterations: iteration 0 evaluates the initial swarm; every following iteration moves each
 // particle once (M evaluations; the last one may be cut short by the budget).
 #include <string>
@@ -59,6 +70,9 @@ class Pso final : public Algorithm {
     Acceleration acceleration = Acceleration::Cosine;
     Update update = Update::Asynchronous;
     double maxVelocity = 0.5;  ///< Vmax as a fraction of each variable's range; in (0, 1]
+    /// 0: every particle follows the swarm's gbest (both papers). k > 0: ring topology, a particle
+    /// follows the best pbest among itself and k particles on each side (2k + 1 <= swarmSize).
+    int neighbours = 0;
 
     bool isValid(std::string* why) const;
 
@@ -66,6 +80,9 @@ class Pso final : public Algorithm {
     static Options stryczek2016();
     /// Seed 004 (Abdulshahed et al. 2016): 90 particles, synchronous, w 0.9 -> 0.4, c1 = 1.5, c2 = 2.
     static Options abdulshahed2016();
+    /// Beyond the papers: lbest ring with 2 neighbours each side, w = 0.7298, c1 = c2 = 1.49618
+    /// with the cosine schedule, asynchronous, 100 particles (see (c) above).
+    static Options ring();
   };
 
   Pso();

@@ -85,10 +85,22 @@ Result Sade::optimise(const Problem& problem, Observer* observer) const {
   }
   bool stop = tracker.endIteration();
 
+  // jDE state (SelfAdaptive only): each individual's F_i and CR_i.
+  const bool jde = options_.adaptation == Adaptation::SelfAdaptive;
+  std::vector<double> fi, cri;
+  if (jde) {
+    fi.resize(np);
+    cri.resize(np);
+    for (std::size_t i = 0; i < np; ++i) {
+      fi[i] = 0.1 + 0.9 * rng.uniform();
+      cri[i] = rng.uniform();
+    }
+  }
+
   bool reachedGm = false;
   for (long g = 1; !stop; ++g) {
-    const double f = mutationFactor(options_.f0, g, gm);                     // Eq. (10)
-    const double cr = crossoverRate(options_.crMin, options_.crMax, g, gm);  // Eq. (11)
+    const double fG = mutationFactor(options_.f0, g, gm);                     // Eq. (10)
+    const double crG = crossoverRate(options_.crMin, options_.crMax, g, gm);  // Eq. (11)
     std::copy(pop.begin(), pop.end(), next.begin());
     std::copy(fit.begin(), fit.end(), nextFit.begin());
     for (std::size_t i = 0; i < np && !tracker.exhausted(); ++i) {
@@ -103,18 +115,31 @@ Result Sade::optimise(const Problem& problem, Observer* observer) const {
       const double* x1 = pop.data() + r1 * n;
       const double* x2 = pop.data() + r2 * n;
       const double* x3 = pop.data() + r3 * n;
+      double f = fG, cr = crG;
+      if (jde) {
+        f = rng.uniform() < 0.1 ? 0.1 + 0.9 * rng.uniform() : fi[i];
+        cr = rng.uniform() < 0.1 ? rng.uniform() : cri[i];
+      }
       const std::size_t jrand = pick(rng, n);
       for (std::size_t j = 0; j < n; ++j) {
         // Binomial crossover without an unpredictable branch: one draw per coordinate.
         const bool take = (rng.uniform() < cr) | (j == jrand);
         double v = x1[j] + f * (x2[j] - x3[j]);
         if (take & ((v < lo[j]) | (v > hi[j]))) {
-          // Bounce-back between the (feasible) base vector and the violated bound.
-          v = v < lo[j] ? lo[j] + rng.uniform() * (x1[j] - lo[j]) : hi[j] - rng.uniform() * (hi[j] - x1[j]);
+          if (jde)  // re-drawn uniformly in the box
+            v = lo[j] + rng.uniform() * (hi[j] - lo[j]);
+          else  // bounce-back between the (feasible) base vector and the violated bound
+            v = v < lo[j] ? lo[j] + rng.uniform() * (x1[j] - lo[j]) : hi[j] - rng.uniform() * (hi[j] - x1[j]);
         }
         trial[j] = take ? v : xi[j];
       }
       const double ft = tracker.evaluate(trial);
+      if (jde && ft <= fit[i]) {  // steady state: the trial replaces its target at once
+        std::copy(trial.begin(), trial.end(), pop.begin() + static_cast<std::ptrdiff_t>(i * n));
+        fit[i] = ft;
+        fi[i] = f;
+        cri[i] = cr;
+      }
       if (ft <= fit[i]) {
         std::copy(trial.begin(), trial.end(), next.begin() + static_cast<std::ptrdiff_t>(i * n));
         nextFit[i] = ft;

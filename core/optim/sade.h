@@ -34,6 +34,15 @@
 // Bounds: a mutant coordinate outside [lower, upper] is moved to a uniform random point between the
 // base vector x_r1 and the violated bound (bounce-back, keeps the search direction and the
 // distribution inside the box); the tracker then snaps it onto the grid, if any.
+//
+// Adaptation::SelfAdaptive — beyond the paper (its title says "self-adaptive", its operators are a
+// fixed schedule): jDE, Brest et al., IEEE TEC 10(6) 2006, the scheme pagmo2's sade uses by
+// default. Every individual i carries its own F_i and CR_i, drawn at the start from U(0.1, 1) and
+// U(0, 1). A trial for i uses F' = U(0.1, 1) with probability 0.1, else F_i, and CR' = U(0, 1) with
+// probability 0.1, else CR_i; F' and CR' survive with the trial. In this mode a trial replaces its
+// target as soon as it is not worse (steady state: later trials of the same generation already see
+// it) and a mutant coordinate outside the box is re-drawn uniformly inside it. Gm only sets the run
+// length here. metrofit-bench --optimizers compares both modes with pagmo2's sade at equal budget.
 #include <string>
 
 #include "core/optim/algorithm.h"
@@ -42,8 +51,13 @@ namespace metrofit::optim {
 
 class Sade final : public Algorithm {
  public:
+  /// How F and CR change: the paper's generation schedule (Eq. 10-11, the default), or jDE
+  /// per-individual self-adaptation (beyond the paper, see above).
+  enum class Adaptation { Schedule, SelfAdaptive };
+
   struct Options {
     CommonOptions common;
+    Adaptation adaptation = Adaptation::Schedule;
     int populationSize = 30;  ///< NP (>= 4: DE/rand/1 needs three partners besides the target)
     double f0 = 0.3;          ///< F0 of Eq. (10), in (0, 1]; F runs from 2 F0 down to ~F0
     int maxGenerations = 0;   ///< Gm of Eq. (10)-(11), >= 1; 0: derived from the budget (see above)

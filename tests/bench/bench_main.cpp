@@ -141,6 +141,7 @@ int main(int argc, char** argv) {
   try {
     if (io) result["io"] = benchIo(sourceDir, repeat);
     if (rng) result["rng"] = benchRng(repeat);
+    optimOptions.sourceDir = sourceDir;
     if (optimizers) result["optimizers"] = metrofit::bench::benchOptimizers(optimOptions);
     if (!jsonOut.empty()) metrofit::writeFileAtomic(jsonOut, metrofit::dumpJson(result));
   } catch (const std::exception& e) {

@@ -14,18 +14,31 @@
 //    same number of evaluations: NP * floor(B / NP) (pagmo: generation 0 plus gen = B/NP - 1
 //    generations of NP evaluations; SADE NP 30 -> 9990, PSO 100 particles -> 10000). Methods
 //    without a peer get B. pagmo's counts are read back from problem::get_fevals().
-//  * Methods, each with its defaults: ours sade (seed 001: DE/rand/1/bin, Eq. 10-11), pso (seed
-//    000 settings), ga-simplex, nelder-mead (random start; it stops when converged), cripso, ga,
-//    coa. pagmo: sade with variant 7 = DE/rand/1/bin (the same operator as ours) and variant_adptv 1
-//    = jDE self-adaptation (Brest et al. 2006): the peer of our sade; sade variant 2 (rand/1/exp,
-//    pagmo's default) as an extra row; pso with its defaults (omega 0.7298, eta1 = eta2 = 2.05,
-//    max_vel 0.5, variant 5, neighb_type 2, neighb_param 4) and our PSO's swarm size (100): the
-//    peer of our pso. sade's ftol = xtol = 0 so that it never stops before the budget.
+//  * Methods, each with its defaults: ours sade (seed 001: DE/rand/1/bin, Eq. 10-11), sade-jde
+//    (the same operator with jDE self-adaptation, Sade::Adaptation::SelfAdaptive), pso (seed 000
+//    settings), pso-ring (Pso::Options::ring(): lbest ring, constriction values), ga-simplex, nelder-mead
+//    (random start; it stops when converged), cripso, ga, coa. pagmo: sade with variant 7 = DE/rand/1/bin
+//    (the same operator as ours) and variant_adptv 1 = jDE self-adaptation (Brest et al. 2006): the peer of
+//    our sade; sade variant 2 (rand/1/exp, pagmo's default) as an extra row; pso with its defaults (omega
+//    0.7298, eta1 = eta2 = 2.05, max_vel 0.5, variant 5, neighb_type 2, neighb_param 4) and our PSO's swarm
+//    size (100): the peer of our pso. sade's ftol = xtol = 0 so that it never stops before the budget.
 //  * Time: wall clock of the whole run (ours: optimise(); pagmo: population construction, which
 //    evaluates generation 0, plus evolve()) divided by the evaluations, summed over the seeds: the
 //    ns per evaluation include each method's own overhead and the objective.
+//  * setup-paper: the setup-correction paper's example (seed 000; resources/demo/setup), 10
+//    corrections on the 0.001 mm grid, the paper's budget of 5000 solutions for every method; the
+//    objective is -f = f2 - 10 f1, reported as the error f(exact) - f(x) against GLPK's exact
+//    optimum, and "hits" counts runs whose f1 is within one grid step of the exact f1 (the
+//    issue's CRIPSO target: at least 9 of 10). pagmo evaluates the same function with x snapped
+//    to the same grid.
 //  * pagmo is quiet: verbosity 0 (its default) for both algorithms.
 #include "bench_optim.h"
+
+#include "core/setup/exact.h"
+#include "core/setup/methods.h"
+#include "core/setup/model.h"
+#include "core/setup/objective.h"
+#include "core/setup/report.h"
 
 #include <algorithm>
 #include <chrono>
@@ -100,7 +113,48 @@ struct BenchProblem {
   std::shared_ptr<const optim::Problem> ours;
   pagmo::problem peer;
   double peerOffset = 0.0;  ///< subtracted from pagmo's objective (CEC: 100 id)
+  double oursOffset = 0.0;  ///< subtracted from our objective (setup: -f of the exact optimum)
+  long budget = 0;          ///< evaluations per run; 0: the section's budget
+  /// When set: does a final x hit the known optimum? (setup: f1 within one grid step)
+  std::function<bool(const std::vector<double>&)> hit;
 };
+
+/// pagmo's side of the setup problem: the same objective on the same grid (x is snapped to the
+/// 0.001 mm grid before it is evaluated, as our Tracker does, so both sides search the same space).
+struct SetupUdp {
+  std::shared_ptr<const setup::SetupProblem> problem;
+  pagmo::vector_double fitness(const pagmo::vector_double& x) const {
+    std::vector<double> g = x, components(3);
+    problem->snap(g);
+    return {problem->evaluate(g, components)};
+  }
+  std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const {
+    pagmo::vector_double lo(problem->dimension()), hi(problem->dimension());
+    for (std::size_t i = 0; i < lo.size(); ++i) {
+      lo[i] = problem->lower(i);
+      hi[i] = problem->upper(i);
+    }
+    return {lo, hi};
+  }
+};
+
+/// The setup-correction paper's example (seed 000, bundled demo data), 10 corrections on the
+/// 0.001 mm grid, the paper's budget of 5000 solutions; error = f(exact optimum) - f(x) (>= 0);
+/// a hit = f1 within one grid step (0.001 mm) of the exact optimum's f1.
+BenchProblem setupPaperProblem(const std::string& sourceDir) {
+  const std::string dir = sourceDir + "/resources/demo/setup/";
+  const setup::Model model = setup::readModel(dir + "paper_example.json");
+  setup::SetupInstance instance(model, setup::readCmmReport(dir + "paper_example_report.csv", model));
+  const setup::ExactResult exact = setup::solveExact(instance);
+  auto problem = std::make_shared<const setup::SetupProblem>(instance);
+  const double fExact = exact.score.f, f1Exact = exact.score.f1, step = instance.step();
+  BenchProblem p{"setup-paper",       problem, pagmo::problem(SetupUdp{problem}), -fExact, -fExact,
+                 setup::kPaperBudget, {}};
+  p.hit = [problem, f1Exact, step](const std::vector<double>& x) {
+    return problem->instance().f1(x) >= f1Exact - step - 1e-12;
+  };
+  return p;
+}
 
 std::vector<BenchProblem> makeProblems() {
   std::vector<BenchProblem> out;
@@ -108,19 +162,29 @@ std::vector<BenchProblem> makeProblems() {
     out.push_back({name,
                    std::make_shared<optim::FunctionProblem>(name, std::vector<double>(kDim, lo),
                                                             std::vector<double>(kDim, hi), f),
-                   pagmo::problem(FunctionUdp{f, lo, hi, kDim}), 0.0});
+                   pagmo::problem(FunctionUdp{f, lo, hi, kDim}),
+                   0.0,
+                   0.0,
+                   0,
+                   {}});
   };
   fn("rosenbrock", optim::rosenbrock, -5.0, 10.0);
   fn("rastrigin", optim::rastrigin, -5.12, 5.12);
   for (unsigned id : {1u, 4u, 6u, 10u}) {
-    out.push_back({"cec2014-f" + std::to_string(id), std::make_shared<Cec2014Problem>(id, kDim),
-                   pagmo::problem(pagmo::cec2014(id, kDim)), 100.0 * id});
+    out.push_back({"cec2014-f" + std::to_string(id),
+                   std::make_shared<Cec2014Problem>(id, kDim),
+                   pagmo::problem(pagmo::cec2014(id, kDim)),
+                   100.0 * id,
+                   0.0,
+                   0,
+                   {}});
   }
   return out;
 }
 
 struct Stats {
   std::vector<double> finals;
+  int hits = -1;  ///< runs that hit the known optimum (-1: the problem has no hit test)
   double seconds = 0.0;
   long evaluations = 0;
 
@@ -147,10 +211,11 @@ struct OurMethod {
 };
 
 template <class Algo>
-OurMethod ours(std::string name, int population = 1, std::string peer = {}) {
+OurMethod ours(std::string name, int population = 1, std::string peer = {},
+               typename Algo::Options preset = {}) {
   return {std::move(name), population, std::move(peer),
-          [](const optim::Problem& p, std::uint64_t seed, long budget) {
-            typename Algo::Options o;
+          [preset](const optim::Problem& p, std::uint64_t seed, long budget) {
+            typename Algo::Options o = preset;
             o.common.seed = seed;
             o.common.maxEvaluations = budget;
             return Algo(o).optimise(p);
@@ -165,12 +230,14 @@ struct PeerMethod {
 
 Stats runOurs(const BenchProblem& p, const OurMethod& m, int seeds, long budget) {
   Stats s;
+  if (p.budget > 0) budget = p.budget;
   const long b = std::max(1L, budget / m.populationForBudget * m.populationForBudget);
   for (int seed = 1; seed <= seeds; ++seed) {
     const auto t0 = Clock::now();
     const optim::Result r = m.run(*p.ours, static_cast<std::uint64_t>(seed), b);
     s.seconds += std::chrono::duration<double>(Clock::now() - t0).count();
-    s.finals.push_back(r.bestObjective);
+    s.finals.push_back(r.bestObjective - p.oursOffset);
+    if (p.hit) s.hits = std::max(0, s.hits) + (p.hit(r.bestX) ? 1 : 0);
     s.evaluations += r.run.evaluations;
     g_optimSink = g_optimSink + r.bestObjective;
   }
@@ -179,6 +246,7 @@ Stats runOurs(const BenchProblem& p, const OurMethod& m, int seeds, long budget)
 
 Stats runPeer(const BenchProblem& p, const PeerMethod& m, int seeds, long budget) {
   Stats s;
+  if (p.budget > 0) budget = p.budget;
   const unsigned gen = static_cast<unsigned>(std::max(0L, budget / static_cast<long>(m.population) - 1));
   for (int seed = 1; seed <= seeds; ++seed) {
     pagmo::problem prob = p.peer;  // fresh copy (fevals 0), made outside the timing
@@ -187,10 +255,21 @@ Stats runPeer(const BenchProblem& p, const PeerMethod& m, int seeds, long budget
     pop = m.evolve(std::move(pop), gen, static_cast<unsigned>(seed));
     s.seconds += std::chrono::duration<double>(Clock::now() - t0).count();
     s.finals.push_back(pop.champion_f()[0] - p.peerOffset);
+    if (p.hit) {
+      // pagmo's champion snapped to the grid, as its fitness saw it.
+      std::vector<double> x = pop.champion_x();
+      p.ours->snap(x);
+      s.hits = std::max(0, s.hits) + (p.hit(x) ? 1 : 0);
+    }
     s.evaluations += static_cast<long>(pop.get_problem().get_fevals());
     g_optimSink = g_optimSink + pop.champion_f()[0];
   }
   return s;
+}
+
+nlohmann::json hitRate(const Stats& s) {
+  if (s.hits < 0 || s.finals.empty()) return nullptr;
+  return static_cast<double>(s.hits) / static_cast<double>(s.finals.size());
 }
 
 nlohmann::json nullable(double v, bool present) {
@@ -202,13 +281,18 @@ nlohmann::json nullable(double v, bool present) {
 nlohmann::json benchOptimizers(const OptimBenchOptions& options) {
   const int seeds = std::max(1, options.seeds);
   const long budget = std::max(1L, options.budget);
-  const std::vector<BenchProblem> problems = makeProblems();
+  std::vector<BenchProblem> problems = makeProblems();
+  problems.push_back(setupPaperProblem(options.sourceDir));
 
   const int psoSwarm = optim::Pso::Options{}.swarmSize;
   const int sadeNp = optim::Sade::Options{}.populationSize;
+  optim::Sade::Options sadeJde;
+  sadeJde.adaptation = optim::Sade::Adaptation::SelfAdaptive;
   const std::vector<OurMethod> ourMethods = {
       ours<optim::Sade>("sade", sadeNp, "pagmo-sade"),
+      ours<optim::Sade>("sade-jde", sadeNp, "pagmo-sade", sadeJde),
       ours<optim::Pso>("pso", psoSwarm, "pagmo-pso"),
+      ours<optim::Pso>("pso-ring", psoSwarm, "pagmo-pso", optim::Pso::Options::ring()),
       ours<optim::GaSimplex>("ga-simplex"),
       ours<optim::NelderMead>("nelder-mead"),
       ours<optim::Cripso>("cripso"),
@@ -267,6 +351,7 @@ nlohmann::json benchOptimizers(const OptimBenchOptions& options) {
                            {"ns_ratio", ratio},
                            {"speed_met", ratio <= 1.0}});
       }
+      if (s.hits >= 0) std::printf("   hits %d/%zu", s.hits, s.finals.size());
       std::printf("\n");
       rows.push_back({{"problem", p.name},
                       {"method", m.name},
@@ -277,11 +362,13 @@ nlohmann::json benchOptimizers(const OptimBenchOptions& options) {
                       {"peer", ps ? nlohmann::json(m.peer) : nlohmann::json(nullptr)},
                       {"peer_median_best", nullable(ps ? ps->median() : 0.0, ps != nullptr)},
                       {"peer_ns_per_eval", nullable(ps ? ps->nsPerEval() : 0.0, ps != nullptr)},
-                      {"hit_rate", nullptr}});
+                      {"hit_rate", hitRate(s)}});
     }
     for (const auto& [name, s] : peerStats) {
-      std::printf("%-14s %-15s %6ld %11.4g %11.4g %11.4g %9.1f\n", p.name.c_str(), name.c_str(),
+      std::printf("%-14s %-15s %6ld %11.4g %11.4g %11.4g %9.1f", p.name.c_str(), name.c_str(),
                   s.evaluationsPerRun(), s.median(), s.best(), s.worst(), s.nsPerEval());
+      if (s.hits >= 0) std::printf("   hits %d/%zu", s.hits, s.finals.size());
+      std::printf("\n");
       rows.push_back({{"problem", p.name},
                       {"method", name},
                       {"median_best", s.median()},
@@ -291,7 +378,7 @@ nlohmann::json benchOptimizers(const OptimBenchOptions& options) {
                       {"peer", nullptr},
                       {"peer_median_best", nullptr},
                       {"peer_ns_per_eval", nullptr},
-                      {"hit_rate", nullptr}});
+                      {"hit_rate", hitRate(s)}});
     }
   }
 

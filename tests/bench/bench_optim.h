@@ -1,13 +1,16 @@
 #pragma once
 // metrofit-bench --optimizers: our metaheuristics side by side with pagmo2's pso and sade on the
 // same problems at the same evaluation budget (see bench_optim.cpp for the protocol).
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 namespace metrofit::bench {
 
 struct OptimBenchOptions {
-  int seeds = 25;       ///< runs per problem and method (seeds 1..N); --quick: 5
-  long budget = 10000;  ///< objective evaluations per run (10-D problems)
+  int seeds = 25;         ///< runs per problem and method (seeds 1..N); --quick: 5
+  long budget = 10000;    ///< objective evaluations per run (10-D problems)
+  std::string sourceDir;  ///< the source tree (for the setup example in resources/demo/setup)
 };
 
 /// Runs the section, prints the table to stdout and returns {"budget", "seeds", "dimension",
