@@ -198,6 +198,8 @@ ExactResult solveExact(const SetupInstance& inst, const ExactOptions& options, O
   glp_init_iocp(&iocp);
   iocp.msg_lev = GLP_MSG_OFF;
   iocp.mip_gap = 0.0;
+  iocp.br_tech = GLP_BR_MFV;  // stage 2 looks for any grid point: dive on the most fractional variable
+  iocp.bt_tech = GLP_BT_DFS;
   iocp.tm_lim = tmLim;
 
   std::vector<double> bestX(n, 0.0);
@@ -288,19 +290,52 @@ ExactResult solveExact(const SetupInstance& inst, const ExactOptions& options, O
     }
     return true;
   };
-  enum class Probe { Feasible, Infeasible, Unknown };
-  auto probe = [&](double t, std::vector<long>* found) {
-    ++cert.feasibilityProbes;
+  enum class Probe { Feasible, Infeasible, Unknown, Fractional };
+  auto readPoint = [&](std::vector<long>* found, bool mip) {
+    found->resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const int col = static_cast<int>(i) + 1;
+      (*found)[i] =
+          std::clamp(std::lround(mip ? glp_mip_col_val(feas, col) : glp_get_col_prim(feas, col)), 0L, K[i]);
+    }
+  };
+  // The LP relaxation at level t, warm-started from the previous probe's basis: only row bounds change
+  // and the objective is zero (every basis stays dual feasible), so the dual simplex re-solves it in a
+  // few pivots. No LP point: no grid point either (Infeasible). An integral vertex is a grid point
+  // (Feasible, in *found). Otherwise Fractional (or Unknown when the solver fails).
+  auto lpProbe = [&](double t, std::vector<long>* found) {
     if (!setLevel(t)) return Probe::Infeasible;
     ++cert.solverCalls;
-    iocp.presolve = GLP_ON;
+    int ret = glp_simplex(feas, &smcp);
+    if (ret == GLP_EBADB || ret == GLP_ESING || ret == GLP_ECOND) {
+      glp_std_basis(feas);
+      ++cert.solverCalls;
+      ret = glp_simplex(feas, &smcp);
+    }
+    if (ret != 0) return Probe::Unknown;
+    const int st = glp_get_status(feas);
+    if (st == GLP_NOFEAS) return Probe::Infeasible;
+    if (st != GLP_OPT) return Probe::Unknown;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double v = glp_get_col_prim(feas, static_cast<int>(i) + 1);
+      if (std::abs(v - std::round(v)) > kEps) return Probe::Fractional;
+    }
+    readPoint(found, false);
+    return Probe::Feasible;
+  };
+  // The MILP at level t: the LP first, branch and bound (depth first, most fractional variable, from
+  // the LP's basis) only for a fractional vertex.
+  auto probe = [&](double t, std::vector<long>* found) {
+    ++cert.feasibilityProbes;
+    const Probe lp = lpProbe(t, found);
+    if (lp == Probe::Feasible || lp == Probe::Infeasible) return lp;
+    ++cert.solverCalls;
+    iocp.presolve = lp == Probe::Fractional ? GLP_OFF : GLP_ON;
     iocp.cb_func = nullptr;
     const int ret = glp_intopt(feas, &iocp);
     const int st = glp_mip_status(feas);
     if (st == GLP_OPT || st == GLP_FEAS) {
-      found->resize(n);
-      for (std::size_t i = 0; i < n; ++i)
-        (*found)[i] = std::clamp(std::lround(glp_mip_col_val(feas, static_cast<int>(i) + 1)), 0L, K[i]);
+      readPoint(found, true);
       return Probe::Feasible;
     }
     if ((ret == 0 && st == GLP_NOFEAS) || ret == GLP_ENOPFS) return Probe::Infeasible;
@@ -327,12 +362,43 @@ ExactResult solveExact(const SetupInstance& inst, const ExactOptions& options, O
     // Bisection: every value <= lo is reached (by k), every value >= hi is not (LP bound or probe).
     double lo = tInc, hi = tLp + 2.0 * kEps;
     bool hiProbed = false;
+    std::vector<long> found;
+    // Phase A, LP relaxations only (a millisecond each): the largest level whose integer-rounded
+    // polytope has an LP point. Every level above it has no grid point. An integral vertex on the way
+    // raises lo like a MILP probe does.
+    double lpTop = lo;
+    for (;;) {
+      const double next = above(lpTop);
+      if (!(next < hi - kEps)) break;
+      double tp = atOrAbove(0.5 * (lpTop + hi));
+      if (!(tp < hi - kEps)) tp = next;
+      ++cert.feasibilityProbes;
+      const Probe p = lpProbe(tp, &found);
+      if (p == Probe::Infeasible) {
+        hi = tp;
+        hiProbed = true;
+        continue;
+      }
+      lpTop = tp;
+      if (p == Probe::Feasible) {
+        const double tFound = tOf(found);
+        if (tFound > tInc) {
+          k = found;
+          tInc = tFound;
+        }
+        lo = std::max(tInc, tp);
+        lpTop = std::max(lpTop, lo);
+      }
+    }
+    // Phase B, MILP probes: the grid optimum is usually the LP's top level itself (probed first), else
+    // bisection below it.
+    bool first = true;
     for (;;) {
       const double next = above(lo);
       if (!(next < hi - kEps)) break;
-      double tp = atOrAbove(0.5 * (lo + hi));
+      double tp = first && lpTop > lo + kEps ? lpTop : atOrAbove(0.5 * (lo + hi));
+      first = false;
       if (!(tp < hi - kEps)) tp = next;
-      std::vector<long> found;
       const Probe p = probe(tp, &found);
       if (p == Probe::Feasible) {
         const double tFound = tOf(found);
@@ -394,7 +460,11 @@ ExactResult solveExact(const SetupInstance& inst, const ExactOptions& options, O
   }
   iocp.presolve = GLP_OFF;
   iocp.cb_func = intoptCallback;
-  glp_std_basis(feas);
+  glp_iocp defaults;
+  glp_init_iocp(&defaults);
+  iocp.br_tech = defaults.br_tech;  // least norm: a real objective, GLPK's default branching
+  iocp.bt_tech = defaults.bt_tech;
+  // The stage-2 basis stays valid (new rows basic, new columns at a bound): warm start from it.
   auto lpSolve = [&]() {
     ++cert.solverCalls;
     int ret = glp_simplex(feas, &smcp);

@@ -19,9 +19,15 @@
 //   y_q, so the optimum is one of the finitely many values bp_q + j, bm_q + j (j integer) in
 //   [t_0, t_LP]. Feasibility is monotone in t, and for a FIXED t the constraints become integer
 //   intervals  ceil(t - bm_q) <= (G k)_q <= floor(bp_q - t)  (a tighter, integer-rounded
-//   polytope). The largest feasible candidate is found by bisection; every probe is a MILP
-//   feasibility problem (glp_intopt with presolve) that either returns a grid point (whose exact
-//   f1 then raises the lower end) or proves that no grid point reaches that value. f1 is
+//   polytope). The largest feasible candidate is found by bisection in two phases, on one
+//   problem object whose row bounds change from probe to probe (dual simplex, warm-started: the
+//   objective is zero, so every basis stays dual feasible). Phase A probes only LP relaxations
+//   (about a millisecond each at 500 x 5000): an infeasible relaxation proves that no grid point
+//   reaches that value (nor any higher one); an integral vertex is a grid point. It ends with
+//   the largest level whose relaxation is feasible. Phase B probes MILPs (glp_intopt from the LP
+//   basis, depth first on the most fractional variable), that level first: usually it has a grid
+//   point and f1 is settled by one branch and bound; else bisection continues below it. Every
+//   feasible probe returns a grid point (whose exact f1 then raises the lower end). f1 is
 //   certified optimal on the grid when the next larger candidate value is proven infeasible (or
 //   no candidate lies between t_0 and t_LP). This is far faster than branch and bound on
 //   "maximise t" directly, whose LP bound is flat (20-90 ms instead of 0.05-0.3 ms on the
@@ -78,7 +84,7 @@ struct ExactCertificate {
   /// The smallest f1 value above gridF1 that some grid point could have, proven unreachable (NaN when gridF1
   /// already equals the LP bound).
   double nextF1Infeasible = std::numeric_limits<double>::quiet_NaN();
-  int feasibilityProbes = 0;  ///< stage-2 MILP feasibility problems
+  int feasibilityProbes = 0;  ///< stage-2 feasibility probes (LP relaxations and MILPs)
   std::string normStatus;     ///< "optimal", "round limit", "skipped", ...
   bool f2Optimal = false;     ///< |x| proven minimal among f1-optimal
   double f2LowerBound = 0.0;  ///< proven lower bound on that |x|, mm

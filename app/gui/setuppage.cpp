@@ -1,0 +1,570 @@
+#include "app/gui/setuppage.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QFileInfo>
+#include <QFutureWatcher>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QTimer>
+#include <QToolBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+#include <atomic>
+#include <exception>
+#include <mutex>
+
+#include "app/gui/notesedit.h"
+#include "core/io/file_io.h"
+#include "core/io/json_util.h"
+#include "core/setup/exact.h"
+#include "core/setup/methods.h"
+#include "core/setup/objective.h"
+#include "widgets/document/projectdocument.h"
+#include "widgets/document/studyinfo.h"
+#include "widgets/setup/setupcharts.h"
+#include "widgets/setup/setupconvergenceview.h"
+#include "widgets/setup/setupgrapheditor.h"
+#include "widgets/setup/setupmodeleditor.h"
+#include "widgets/setup/setupresultsview.h"
+#include "widgets/setup/setupstudy.h"
+#include "widgets/setup/setupvalidationview.h"
+
+namespace metrofit {
+
+namespace {
+
+constexpr int kFlushMs = 100;
+constexpr int kProgressSteps = 1000;
+
+struct RunResult {
+  SetupRunOutcome outcome;
+  QString error;
+};
+
+/// What the worker shares with the GUI thread while a run goes on.
+struct LiveTrace {
+  std::mutex mutex;
+  std::vector<SetupTracePoint> pending;
+  std::atomic<double> progress{0.0};
+};
+
+}  // namespace
+
+struct SetupPage::Impl {
+  SetupStudyFiles files;
+  QString loadedKey;
+  bool loaded = false;
+  setup::Model measModel;  ///< the model the measurements were read against
+  std::optional<setup::Measurements> measurements;
+  QString dataError;  ///< model or report could not be read
+  std::optional<setup::SetupInstance> instance;
+  std::optional<SetupRunOutcome> exact;
+  // The running run.
+  QFutureWatcher<RunResult> watcher;
+  std::shared_ptr<CancelToken> token;
+  std::shared_ptr<LiveTrace> live;
+  std::optional<setup::SetupInstance> runInstance;
+  int chartRun = -1;
+  QTimer flush;
+};
+
+SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
+    : QWidget(parent),
+      d(std::make_unique<Impl>()),
+      document_(document),
+      editor_(new SetupModelEditor(this)),
+      info_(new QLabel(this)),
+      tabs_(new QTabWidget(this)),
+      graph_(new SetupGraphEditor(editor_, this)),
+      saveModel_(new QPushButton(tr("&Save model"), this)),
+      revertModel_(new QPushButton(tr("Re&vert"), this)),
+      method_(new QComboBox(this)),
+      budget_(new QSpinBox(this)),
+      seed_(new QSpinBox(this)),
+      run_(new QPushButton(tr("&Run"), this)),
+      cancel_(new QPushButton(tr("Cancel"), this)),
+      clearRuns_(new QPushButton(tr("C&lear chart"), this)),
+      progress_(new QProgressBar(this)),
+      runStatus_(new QLabel(this)),
+      convergence_(new SetupConvergenceView(this)),
+      results_(new SetupResultsView(this)),
+      validation_(new SetupValidationView(this)) {
+  setObjectName(QStringLiteral("setupPage"));
+  auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kSetup)), this);
+  QFont titleFont = title->font();
+  titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
+  titleFont.setBold(true);
+  title->setFont(titleFont);
+  title->setToolTip(studySummary(QString::fromLatin1(study::kSetup)));
+  info_->setObjectName(QStringLiteral("setupInfo"));
+  info_->setWordWrap(true);
+  info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+  // ---- Graph tab ----
+  auto* graphTab = new QWidget(this);
+  auto* graphLayout = new QVBoxLayout(graphTab);
+  graphLayout->setContentsMargins(4, 4, 4, 4);
+  graphLayout->addWidget(graph_, 1);
+  saveModel_->setToolTip(tr("Write the edited model to its dataset file"));
+  revertModel_->setToolTip(tr("Drop the edits and read the model file again"));
+  graph_->toolBar()->addSeparator();
+  graph_->toolBar()->addWidget(revertModel_);
+  graph_->toolBar()->addWidget(saveModel_);
+  connect(saveModel_, &QPushButton::clicked, this, [this] {
+    QString error;
+    if (!saveModel(&error)) QMessageBox::critical(this, tr("Cannot save the setup model"), error);
+  });
+  connect(revertModel_, &QPushButton::clicked, this, [this] { reload(); });
+
+  // ---- Run tab ----
+  for (const std::string& m : setup::setupMethodNames()) {
+    const QString name = QString::fromStdString(m);
+    method_->addItem(setupMethodTitle(name), name);
+  }
+  method_->setToolTip(tr("exact: the LP/MILP optimum (GLPK); the metaheuristics with the paper's settings"));
+  budget_->setRange(100, 100000000);
+  budget_->setSingleStep(1000);
+  budget_->setValue(static_cast<int>(setup::kPaperBudget));
+  budget_->setSuffix(tr(" solutions"));
+  budget_->setToolTip(tr("Solutions a metaheuristic evaluates (the paper: 5000)"));
+  seed_->setRange(0, 1000000000);
+  seed_->setValue(1);
+  seed_->setToolTip(tr("Seed of the metaheuristic: the same seed gives the same run"));
+  run_->setToolTip(tr("Run the method (Ctrl+R)"));
+  cancel_->setEnabled(false);
+  progress_->setObjectName(QStringLiteral("setupRunProgress"));
+  progress_->setRange(0, kProgressSteps);
+  progress_->setValue(0);
+  progress_->setTextVisible(false);
+  progress_->setMaximumWidth(220);
+  runStatus_->setObjectName(QStringLiteral("setupRunStatus"));
+  runStatus_->setWordWrap(true);
+  auto* panel = new QHBoxLayout;
+  auto* methodLabel = new QLabel(tr("&Method:"), this);
+  methodLabel->setBuddy(method_);
+  auto* budgetLabel = new QLabel(tr("&Budget:"), this);
+  budgetLabel->setBuddy(budget_);
+  auto* seedLabel = new QLabel(tr("S&eed:"), this);
+  seedLabel->setBuddy(seed_);
+  panel->addWidget(methodLabel);
+  panel->addWidget(method_);
+  panel->addWidget(budgetLabel);
+  panel->addWidget(budget_);
+  panel->addWidget(seedLabel);
+  panel->addWidget(seed_);
+  panel->addWidget(run_);
+  panel->addWidget(cancel_);
+  panel->addWidget(progress_);
+  panel->addWidget(clearRuns_);
+  panel->addStretch(1);
+  auto* runTab = new QWidget(this);
+  runTab->setObjectName(QStringLiteral("setupRunTab"));
+  auto* runLayout = new QVBoxLayout(runTab);
+  runLayout->setContentsMargins(4, 4, 4, 4);
+  runLayout->addLayout(panel);
+  runLayout->addWidget(runStatus_);
+  runLayout->addWidget(convergence_, 1);
+  auto* resultsTab = new QWidget(this);
+  auto* resultsLayout = new QVBoxLayout(resultsTab);
+  resultsLayout->setContentsMargins(4, 4, 4, 4);
+  resultsLayout->addWidget(results_);
+  auto* validationTab = new QWidget(this);
+  auto* validationLayout = new QVBoxLayout(validationTab);
+  validationLayout->setContentsMargins(4, 4, 4, 4);
+  validationLayout->addWidget(validation_);
+
+  tabs_->addTab(graphTab, tr("&Graph"));
+  tabs_->addTab(runTab, tr("R&un"));
+  tabs_->addTab(resultsTab, tr("Res&ults"));
+  tabs_->addTab(validationTab, tr("Va&lidation"));
+
+  auto* runAction = new QAction(tr("Run"), this);
+  runAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+  runAction->setShortcutContext(Qt::WindowShortcut);  // only while the page is shown
+  addAction(runAction);
+  connect(runAction, &QAction::triggered, this, [this] {
+    if (!isRunning()) {
+      tabs_->setCurrentIndex(1);
+      startRun();
+    }
+  });
+  connect(run_, &QPushButton::clicked, this, [this] { startRun(); });
+  connect(cancel_, &QPushButton::clicked, this, &SetupPage::cancelRun);
+  connect(clearRuns_, &QPushButton::clicked, this, [this] { convergence_->clearRuns(); });
+  connect(budget_, &QSpinBox::valueChanged, this, [this](int v) { convergence_->setBudget(v); });
+
+  auto* top = new QHBoxLayout;
+  top->addWidget(title);
+  top->addStretch(1);
+  auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kSetup), this);
+  notes->setMaximumHeight(48);
+  notes->setPlaceholderText(tr("Notes on this study"));
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(top);
+  layout->addWidget(info_);
+  layout->addWidget(tabs_, 1);
+  layout->addWidget(notes);
+
+  d->flush.setInterval(kFlushMs);
+  connect(&d->flush, &QTimer::timeout, this, &SetupPage::flushTrace);
+  connect(&d->watcher, &QFutureWatcher<RunResult>::finished, this, &SetupPage::onRunFinished);
+  connect(editor_, &SetupModelEditor::modelChanged, this, &SetupPage::onModelEdited);
+  connect(editor_->undoStack(), &QUndoStack::cleanChanged, this, [this] {
+    updateInfo();
+    updateControls();
+  });
+  connect(document_, &ProjectDocument::changed, this, &SetupPage::refresh);
+  refresh();
+}
+
+SetupPage::~SetupPage() {
+  if (d->token) d->token->cancel();
+  d->watcher.waitForFinished();
+  // The editor (a child) outlives this object's members: no more calls back into them.
+  disconnect(editor_, nullptr, this, nullptr);
+  disconnect(editor_->undoStack(), nullptr, this, nullptr);
+}
+
+void SetupPage::refresh() {
+  const SetupStudyFiles files = setupStudyFiles(document_->project(), document_->fileName().toStdString());
+  const QString key = document_->fileName() + QLatin1Char('\n') + QString::fromStdString(files.modelPath) +
+                      QLatin1Char('\n') + QString::fromStdString(files.reportPath);
+  if (d->loaded && key == d->loadedKey) return;
+  d->loadedKey = key;
+  reload();
+}
+
+void SetupPage::reload() {
+  if (isRunning()) {
+    cancelRun();
+    waitForRun();
+  }
+  d->loaded = true;
+  d->files = setupStudyFiles(document_->project(), document_->fileName().toStdString());
+  d->dataError.clear();
+  d->measurements.reset();
+  const int methodIndex = method_->findData(QString::fromStdString(d->files.method));
+  if (methodIndex >= 0) method_->setCurrentIndex(methodIndex);
+  budget_->setValue(static_cast<int>(d->files.budget));
+  seed_->setValue(static_cast<int>(d->files.seed));
+  setup::Model model;
+  if (d->files.modelPath.empty()) {
+    d->dataError =
+        tr("This project has no setup model. Add a dataset of kind \"setup_model\" (the relation "
+           "graph, JSON) and a \"cmm_report\" to the project file.");
+  } else {
+    try {
+      model = setup::readModel(d->files.modelPath);
+      d->measModel = model;
+      if (d->files.reportPath.empty()) {
+        d->dataError =
+            tr("This project has no CMM report for the setup study (a dataset of kind \"cmm_report\").");
+      } else {
+        d->measurements = setup::readMeasurements({d->files.reportPath}, model);
+      }
+    } catch (const std::exception& e) {
+      d->dataError = QString::fromStdString(e.what());
+    }
+  }
+  editor_->setModel(model);
+  validation_->setModel(model);
+  convergence_->clearRuns();
+}
+
+void SetupPage::onModelEdited() {
+  // The runs, the exact optimum and the result belong to the previous model.
+  d->instance.reset();
+  d->exact.reset();
+  convergence_->setExact(std::nullopt);
+  convergence_->clearRuns();
+  results_->clear(tr("No result for this model yet: choose a method and press Run (Ctrl+R)."));
+  validation_->setModel(editor_->model());
+  error_.clear();
+  if (!d->dataError.isEmpty()) {
+    error_ = d->dataError;
+  } else if (!editor_->isValid()) {
+    const auto& issue = editor_->issues().front();
+    error_ = tr("The edited model has %n problem(s), the first: %1", nullptr,
+                static_cast<int>(editor_->issues().size()))
+                 .arg(QString::fromStdString(issue.field + ": " + issue.message));
+  } else {
+    try {
+      d->instance.emplace(editor_->model(), deviationsFor(editor_->model(), d->measModel, *d->measurements));
+    } catch (const std::exception& e) {
+      error_ = QString::fromStdString(e.what());
+    }
+  }
+  updateInfo();
+  updateControls();
+}
+
+void SetupPage::updateInfo() {
+  const setup::Model& m = editor_->model();
+  const QLocale locale;
+  if (m.setup.empty() && m.features.empty() && m.dimensions.empty() && !d->dataError.isEmpty()) {
+    info_->setText(d->dataError);
+    info_->setStyleSheet(QStringLiteral("color: #b01818;"));
+    return;
+  }
+  int wks = 0, tools = 0, machine = 0;
+  for (const auto& s : m.setup) {
+    wks += s.kind == setup::DatumKind::Wks ? 1 : 0;
+    tools += s.kind == setup::DatumKind::Tool ? 1 : 0;
+    machine += s.kind == setup::DatumKind::Machine ? 1 : 0;
+  }
+  QString text =
+      tr("Model “%1” (%2): %3 setup data (%4 work offsets, %5 tools, %6 machine points), %7 features, "
+         "%8 dimensions, %9 arcs; axis %10, grid %11 mm, bounds [%12, %13] mm.")
+          .arg(QString::fromStdString(m.name), QString::fromStdString(d->files.modelId))
+          .arg(m.setup.size())
+          .arg(wks)
+          .arg(tools)
+          .arg(machine)
+          .arg(m.features.size())
+          .arg(m.dimensions.size())
+          .arg(m.arcs.size())
+          .arg(QString::fromStdString(m.axis), locale.toString(m.stepMm, 'g', 6),
+               locale.toString(m.boundsMm.first, 'f', 3), locale.toString(m.boundsMm.second, 'f', 3));
+  if (editor_->isModified()) text += QLatin1Char(' ') + tr("Edited, not saved.");
+  if (d->measurements) {
+    text += QLatin1Char('\n') + tr("Report “%1”: %2 parts, %3 rows.")
+                                    .arg(QString::fromStdString(d->files.reportId))
+                                    .arg(d->measurements->parts.size())
+                                    .arg(d->measurements->rows.size());
+    if (d->instance)
+      text += QLatin1Char(' ') + tr("Smallest error budget before correction f1 = %1 mm.")
+                                     .arg(locale.toString(d->instance->f1Before(), 'f', 4));
+  }
+  if (!error_.isEmpty()) text += QLatin1Char('\n') + error_;
+  info_->setText(text);
+  info_->setStyleSheet(error_.isEmpty() ? QString() : QStringLiteral("color: #b01818;"));
+}
+
+void SetupPage::updateControls() {
+  const bool running = isRunning();
+  run_->setEnabled(!running && d->instance.has_value());
+  cancel_->setEnabled(running);
+  method_->setEnabled(!running);
+  budget_->setEnabled(!running);
+  seed_->setEnabled(!running);
+  graph_->setEnabled(!running);
+  saveModel_->setEnabled(!running && editor_->isModified());
+  revertModel_->setEnabled(!running && editor_->isModified());
+}
+
+bool SetupPage::ensureExact() {
+  if (!d->instance) {
+    if (error_.isEmpty()) error_ = tr("The setup study has no model or report to run on.");
+    return false;
+  }
+  if (d->exact) return true;
+  try {
+    d->exact = runSetupMethod(*d->instance, "exact", 0, 0);
+  } catch (const std::exception& e) {
+    error_ = QString::fromStdString(e.what());
+    updateInfo();
+    return false;
+  }
+  convergence_->setExact(d->exact->score);
+  return true;
+}
+
+bool SetupPage::isRunning() const {
+  return d->watcher.isRunning() || d->token != nullptr;
+}
+
+bool SetupPage::startRun() {
+  if (isRunning() || !ensureExact()) return false;
+  const std::string method = method_->currentData().toString().toStdString();
+  const long budget = budget_->value();
+  const auto seed = static_cast<std::uint64_t>(seed_->value());
+  if (method == "exact") {
+    showOutcome(*d->exact);
+    runStatus_->setText(tr("Exact optimum: %1 solver calls in %2 ms.")
+                            .arg(d->exact->evaluations)
+                            .arg(QLocale().toString(d->exact->seconds * 1e3, 'f', 2)));
+    progress_->setValue(kProgressSteps);
+    emit runFinished();
+    return true;
+  }
+  d->token = std::make_shared<CancelToken>();
+  d->live = std::make_shared<LiveTrace>();
+  d->runInstance = d->instance;
+  d->chartRun = convergence_->addRun(QString::fromStdString(method), seed);
+  progress_->setValue(0);
+  runStatus_->setText(tr("Running %1…").arg(setupRunLabel(QString::fromStdString(method), seed)));
+  updateControls();
+  d->flush.start();
+  const setup::SetupInstance instance = *d->instance;
+  std::shared_ptr<CancelToken> token = d->token;
+  std::shared_ptr<LiveTrace> live = d->live;
+  d->watcher.setFuture(QtConcurrent::run([instance, method, budget, seed, token, live]() -> RunResult {
+    RunResult out;
+    FunctionObserver observer([&](const IterationSummary& s) {
+      {
+        const std::lock_guard<std::mutex> lock(live->mutex);
+        live->pending.push_back(tracePoint(s));
+      }
+      live->progress.store(s.progress);
+      return token->isCancelled() ? ObserverDecision::Stop : ObserverDecision::Continue;
+    });
+    try {
+      out.outcome = runSetupMethod(instance, method, budget, seed, &observer);
+    } catch (const std::exception& e) {
+      out.error = QString::fromStdString(e.what());
+    }
+    return out;
+  }));
+  return true;
+}
+
+bool SetupPage::runSynchronously(const QString& method, long budget, unsigned long long seed) {
+  if (isRunning() || !ensureExact()) return false;
+  if (method == QLatin1String("exact")) {
+    showOutcome(*d->exact);
+    return true;
+  }
+  try {
+    const SetupRunOutcome outcome = runSetupMethod(*d->instance, method.toStdString(), budget, seed);
+    const int run = convergence_->addRun(method, seed);
+    convergence_->appendPoints(run, outcome.trace);
+    showOutcome(outcome);
+    progress_->setValue(kProgressSteps);
+  } catch (const std::exception& e) {
+    error_ = QString::fromStdString(e.what());
+    updateInfo();
+    return false;
+  }
+  return true;
+}
+
+void SetupPage::cancelRun() {
+  if (d->token) d->token->cancel();
+}
+
+void SetupPage::waitForRun() {
+  if (!d->token) return;
+  d->watcher.waitForFinished();
+  onRunFinished();
+}
+
+void SetupPage::flushTrace() {
+  if (!d->live) return;
+  std::vector<SetupTracePoint> points;
+  {
+    const std::lock_guard<std::mutex> lock(d->live->mutex);
+    points.swap(d->live->pending);
+  }
+  convergence_->appendPoints(d->chartRun, points);
+  const double p = d->live->progress.load();
+  if (p >= 0.0) progress_->setValue(static_cast<int>(p * kProgressSteps));
+}
+
+void SetupPage::onRunFinished() {
+  if (!d->token) return;  // handled already (waitForRun and the watcher's signal)
+  d->flush.stop();
+  flushTrace();
+  const RunResult r = d->watcher.result();
+  d->token.reset();
+  d->live.reset();
+  if (!r.error.isEmpty()) {
+    runStatus_->setText(tr("The run failed: %1").arg(r.error));
+  } else {
+    const SetupRunOutcome& o = r.outcome;
+    const bool cancelled = o.termination == Termination::Cancelled;
+    progress_->setValue(cancelled ? progress_->value() : kProgressSteps);
+    QString text = tr("%1: f1 %2 mm after %3 solutions in %4 ms")
+                       .arg(setupRunLabel(QString::fromStdString(o.method), o.seed))
+                       .arg(QLocale().toString(o.score.f1, 'f', 4))
+                       .arg(o.evaluations)
+                       .arg(QLocale().toString(o.seconds * 1e3, 'f', 1));
+    if (d->exact)
+      text += tr(", gap to the exact optimum %1 mm")
+                  .arg(QLocale().toString(d->exact->score.f1 - o.score.f1, 'f', 4));
+    text += cancelled ? tr(" — cancelled.") : QStringLiteral(".");
+    runStatus_->setText(text);
+    if (d->runInstance && d->instance) showOutcome(o);
+  }
+  d->runInstance.reset();
+  updateControls();
+  emit runFinished();
+}
+
+void SetupPage::showOutcome(const SetupRunOutcome& outcome) {
+  if (!d->instance || !d->measurements) return;
+  const SetupPartsSummary parts = partsSummary(*d->instance, d->measModel, *d->measurements, outcome.x);
+  results_->setResult(editor_->model(), *d->instance, outcome,
+                      d->exact ? std::optional<setup::SetupScore>(d->exact->score) : std::nullopt, parts);
+}
+
+bool SetupPage::saveModel(QString* error) {
+  auto fail = [&](const QString& message) {
+    if (error) *error = message;
+    return false;
+  };
+  if (d->files.modelPath.empty()) return fail(tr("The project has no setup model dataset to save to."));
+  if (!editor_->isValid()) {
+    const auto& issue = editor_->issues().front();
+    return fail(tr("The model has %n problem(s); fix them before saving. The first: %1", nullptr,
+                   static_cast<int>(editor_->issues().size()))
+                    .arg(QString::fromStdString(issue.field + ": " + issue.message)));
+  }
+  setup::Model saved = editor_->model();
+  saved.source = d->files.modelPath;
+  try {
+    writeFileAtomic(d->files.modelPath, dumpJson(setup::modelToJson(saved)));
+  } catch (const std::exception& e) {
+    return fail(QString::fromStdString(e.what()));
+  }
+  editor_->markSaved();
+  // The report is checked against the saved model from now on, when it still matches it.
+  if (!d->files.reportPath.empty()) {
+    try {
+      d->measurements = setup::readMeasurements({d->files.reportPath}, saved);
+      d->measModel = saved;
+      d->dataError.clear();
+    } catch (const std::exception& e) {
+      error_ = tr("The model was saved, but the CMM report does not match it any more (the runs use the "
+                  "report as read against the previous model): %1")
+                   .arg(QString::fromStdString(e.what()));
+    }
+  }
+  updateInfo();
+  updateControls();
+  return true;
+}
+
+void SetupPage::showView(const QString& view) {
+  if (view == QLatin1String("graph")) {
+    tabs_->setCurrentIndex(0);
+    graph_->setFocus();
+  } else if (view == QLatin1String("convergence")) {
+    tabs_->setCurrentIndex(1);
+    if (convergence_->runs().empty() && ensureExact()) {
+      runSynchronously(QStringLiteral("cripso"), setup::kPaperBudget, 1);
+      runSynchronously(QStringLiteral("pso"), setup::kPaperBudget, 1);
+      runStatus_->setText(tr("CRIPSO and PSO, seed 1, %1 solutions each, against the exact optimum.")
+                              .arg(setup::kPaperBudget));
+    }
+  } else if (view == QLatin1String("results")) {
+    tabs_->setCurrentIndex(2);
+    if (!results_->hasResult()) runSynchronously(QStringLiteral("exact"), 0, 0);
+  } else if (view == QLatin1String("validation")) {
+    tabs_->setCurrentIndex(3);
+    if (validation_->result() == nullptr && !validation_->isRunning()) {
+      validation_->setSets(20);
+      validation_->setTrials(3);
+      if (validation_->start()) validation_->waitForFinished();
+    }
+  }
+}
+
+}  // namespace metrofit

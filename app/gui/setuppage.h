@@ -1,0 +1,114 @@
+#pragma once
+// The setup-correction study page (issue 4): the study's model and CMM report (studies.setup.model
+// and .dataset, else the first setup_model / cmm_report datasets of the project) in four tabs:
+//  * Graph: the relation-graph editor (its own undo stack); "Save model" writes the edited model
+//    back to the dataset file atomically, "Revert" reloads it.
+//  * Run: method (exact, CRIPSO, PSO, GA, COA), budget, seed, Run (Ctrl+R) / Cancel with a progress
+//    bar; the run works in a worker thread and feeds the live convergence chart, where earlier runs
+//    stay overlaid and the exact optimum is the reference line.
+//  * Results: the last run's corrections, margins, parts rescued and exports.
+//  * Validation: the paper's statistical validation (Fig. 18).
+// The runs use the EDITED model (tolerance edits can be tried before saving); the measured
+// deviations come from the report read against the model file, matched by dimension id.
+#include <QWidget>
+#include <memory>
+#include <optional>
+
+#include "core/setup/model.h"
+#include "core/setup/report.h"
+
+class QComboBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTabWidget;
+
+namespace metrofit {
+class ProjectDocument;
+class SetupConvergenceView;
+class SetupGraphEditor;
+class SetupModelEditor;
+class SetupResultsView;
+class SetupValidationView;
+struct SetupRunOutcome;
+
+class SetupPage : public QWidget {
+  Q_OBJECT
+ public:
+  explicit SetupPage(ProjectDocument* document, QWidget* parent = nullptr);
+  ~SetupPage() override;
+
+  /// "graph", "convergence" (runs exact, CRIPSO and PSO synchronously when nothing ran yet),
+  /// "results" (the exact result when nothing ran yet), "validation".
+  Q_INVOKABLE void showView(const QString& view);
+
+  SetupModelEditor* modelEditor() const { return editor_; }
+  SetupGraphEditor* graphEditor() const { return graph_; }
+  SetupConvergenceView* convergenceView() const { return convergence_; }
+  SetupResultsView* resultsView() const { return results_; }
+  SetupValidationView* validationView() const { return validation_; }
+  QTabWidget* tabs() const { return tabs_; }
+  QComboBox* methodCombo() const { return method_; }
+  QSpinBox* budgetSpin() const { return budget_; }
+  QSpinBox* seedSpin() const { return seed_; }
+  QPushButton* runButton() const { return run_; }
+  QPushButton* cancelButton() const { return cancel_; }
+  QProgressBar* progressBar() const { return progress_; }
+  /// Why the study cannot run (unreadable model or report, invalid edited model); empty when it can.
+  QString errorMessage() const { return error_; }
+
+  /// Starts a run in the worker thread with the panel's settings (false when one runs or the
+  /// study cannot run; errorMessage() says why).
+  bool startRun();
+  /// Runs a method to the end on the calling thread (no progress), shows it like a finished run.
+  bool runSynchronously(const QString& method, long budget, unsigned long long seed);
+  void cancelRun();
+  bool isRunning() const;
+  /// Waits until the running run has finished and its result is shown (tests).
+  void waitForRun();
+
+  /// Writes the edited model to its dataset file (atomically); false with the message in *error.
+  bool saveModel(QString* error = nullptr);
+  /// Reloads the model and the report from the files (drops the edits).
+  void reload();
+
+ signals:
+  /// A run finished (also cancelled ones) and its result is on the Results tab.
+  void runFinished();
+
+ private:
+  void refresh();
+  void onModelEdited();
+  void flushTrace();
+  void onRunFinished();
+  void showOutcome(const SetupRunOutcome& outcome);
+  void updateInfo();
+  void updateControls();
+  /// The instance of the edited model with the report's deviations; nullopt (and error_) if not possible.
+  bool ensureExact();
+
+  struct Impl;
+  std::unique_ptr<Impl> d;
+  ProjectDocument* document_;
+  SetupModelEditor* editor_;
+  QLabel* info_;
+  QTabWidget* tabs_;
+  SetupGraphEditor* graph_;
+  QPushButton* saveModel_;
+  QPushButton* revertModel_;
+  QComboBox* method_;
+  QSpinBox* budget_;
+  QSpinBox* seed_;
+  QPushButton* run_;
+  QPushButton* cancel_;
+  QPushButton* clearRuns_;
+  QProgressBar* progress_;
+  QLabel* runStatus_;
+  SetupConvergenceView* convergence_;
+  SetupResultsView* results_;
+  SetupValidationView* validation_;
+  QString error_;
+};
+
+}  // namespace metrofit

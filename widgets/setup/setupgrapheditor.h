@@ -1,0 +1,65 @@
+#pragma once
+// The relation-graph editor: a toolbar (add / edit / remove nodes and arcs, undo / redo, zoom,
+// fit, columns or rows, export SVG / PNG), the graph (SetupGraphView) and a side table of the
+// dimensions whose nominal and tolerance limits are editable (each cell edit is one undo step),
+// with the model's problems listed under the graph. It edits a SetupModelEditor: a model value
+// with its own undo stack, so it works (and is tested) without a main window.
+//
+// Keys while the editor has focus: Ctrl+Z / Ctrl+Shift+Z (its own undo stack), Delete (remove
+// the selection), Ctrl+= / Ctrl+- (zoom), Ctrl+0 (fit).
+#include <QWidget>
+
+class QAction;
+class QToolBar;
+class QLabel;
+class QTableWidget;
+class QTableWidgetItem;
+
+namespace metrofit {
+class SetupGraphView;
+class SetupModelEditor;
+
+class SetupGraphEditor : public QWidget {
+  Q_OBJECT
+ public:
+  explicit SetupGraphEditor(SetupModelEditor* editor, QWidget* parent = nullptr);
+
+  SetupModelEditor* editor() const { return editor_; }
+  SetupGraphView* view() const { return view_; }
+  QTableWidget* dimensionTable() const { return table_; }
+  /// The editor's tool bar (the page adds its save / revert buttons there).
+  QToolBar* toolBar() const { return toolbar_; }
+  /// The problems list shown under the graph (empty text when the model is valid).
+  QString problemsText() const;
+
+  /// Removes the selected node or arc (false when nothing is selected).
+  bool removeSelection();
+  /// Opens the edit dialog of the selection (a node: id and kind; an arc: flips its weight).
+  void editSelection();
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  void refresh();
+  void fillTable();
+  void onCellChanged(QTableWidgetItem* item);
+  void addNodeDialog();
+  void addArcDialog();
+  void editNodeDialog(const QString& id);
+  void exportDialog(bool svg);
+  void updateActions();
+
+  SetupModelEditor* editor_;
+  SetupGraphView* view_;
+  QTableWidget* table_;
+  QLabel* problems_;
+  QToolBar* toolbar_ = nullptr;
+  QAction* undo_ = nullptr;
+  QAction* redo_ = nullptr;
+  QAction* remove_ = nullptr;
+  QAction* edit_ = nullptr;
+  bool filling_ = false;
+};
+
+}  // namespace metrofit

@@ -1,0 +1,287 @@
+#include "widgets/setup/setupvalidationview.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QFutureWatcher>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QPointer>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+#include <exception>
+#include <map>
+
+#include "core/setup/exact.h"
+#include "core/setup/validation.h"
+#include "widgets/setup/setupcharts.h"
+
+namespace metrofit {
+
+namespace {
+struct Outcome {
+  setup::ValidationResult result;
+  QString error;
+};
+}  // namespace
+
+struct SetupValidationView::Impl {
+  setup::Model model;
+  bool hasModel = false;
+  QSpinBox* sets = nullptr;
+  QSpinBox* trials = nullptr;
+  QSpinBox* budget = nullptr;
+  QDoubleSpinBox* w1 = nullptr;
+  QDoubleSpinBox* w2 = nullptr;
+  QSpinBox* seed = nullptr;
+  std::map<std::string, QCheckBox*> methods;
+  QPushButton* run = nullptr;
+  QPushButton* cancel = nullptr;
+  QProgressBar* progress = nullptr;
+  QLabel* summary = nullptr;
+  QChartView* chartView = nullptr;
+  QFutureWatcher<Outcome> watcher;
+  std::shared_ptr<CancelToken> token;
+  std::unique_ptr<setup::ValidationResult> result;
+};
+
+SetupValidationView::SetupValidationView(QWidget* parent) : QWidget(parent), d(std::make_unique<Impl>()) {
+  setObjectName(QStringLiteral("setupValidationView"));
+  d->sets = new QSpinBox(this);
+  d->sets->setRange(1, 10000);
+  d->sets->setValue(20);
+  d->sets->setToolTip(tr("Simulated measurement sets N (the paper: 100)"));
+  d->trials = new QSpinBox(this);
+  d->trials->setRange(1, 1000);
+  d->trials->setValue(5);
+  d->trials->setToolTip(tr("Trials M of every method on every set (the paper: 10)"));
+  d->budget = new QSpinBox(this);
+  d->budget->setRange(100, 10000000);
+  d->budget->setSingleStep(1000);
+  d->budget->setValue(static_cast<int>(setup::kPaperBudget));
+  d->budget->setSuffix(tr(" solutions"));
+  d->w1 = new QDoubleSpinBox(this);
+  d->w2 = new QDoubleSpinBox(this);
+  for (QDoubleSpinBox* w : {d->w1, d->w2}) {
+    w->setDecimals(3);
+    w->setRange(0.0, 10.0);
+    w->setSingleStep(0.005);
+    w->setSuffix(tr(" mm"));
+  }
+  d->w1->setValue(0.03);
+  d->w2->setValue(0.02);
+  d->w1->setToolTip(tr("Weight of the setup-data errors, Eq. 12: E = w1 (1 − 2r)"));
+  d->w2->setToolTip(tr("Weight of the random errors, Eq. 13: E = w2 (1 − 2r)"));
+  d->seed = new QSpinBox(this);
+  d->seed->setRange(0, 1000000000);
+  d->seed->setValue(1);
+  auto* methodRow = new QHBoxLayout;
+  for (const std::string& m : setup::setupMetaheuristicNames()) {
+    auto* box = new QCheckBox(setupMethodTitle(QString::fromStdString(m)), this);
+    box->setChecked(m == "cripso");
+    d->methods[m] = box;
+    methodRow->addWidget(box);
+  }
+  methodRow->addStretch(1);
+  d->run = new QPushButton(tr("Run &validation"), this);
+  d->cancel = new QPushButton(tr("Cancel"), this);
+  d->cancel->setEnabled(false);
+  d->progress = new QProgressBar(this);
+  d->progress->setObjectName(QStringLiteral("setupValidationProgress"));
+  d->progress->setRange(0, 1);
+  d->progress->setValue(0);
+  d->summary = new QLabel(this);
+  d->summary->setObjectName(QStringLiteral("setupValidationSummary"));
+  d->summary->setWordWrap(true);
+  d->summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  d->summary->setText(
+      tr("The paper's statistical validation: simulated measurement sets with setup-data and "
+         "random errors (Eq. 12–13), each corrected by the exact method and by M trials of the "
+         "chosen metaheuristics; the sets sorted by their budget before correction (Fig. 18)."));
+  d->chartView = new QChartView(this);
+  d->chartView->setObjectName(QStringLiteral("setupValidationChart"));
+  d->chartView->setRenderHint(QPainter::Antialiasing);
+  d->chartView->setMinimumSize(360, 240);
+
+  auto* form = new QFormLayout;
+  form->addRow(tr("Measurement sets N:"), d->sets);
+  form->addRow(tr("Trials per set M:"), d->trials);
+  form->addRow(tr("Budget per trial:"), d->budget);
+  form->addRow(tr("w1 (setup data):"), d->w1);
+  form->addRow(tr("w2 (random):"), d->w2);
+  form->addRow(tr("Seed:"), d->seed);
+  form->addRow(tr("Methods:"), methodRow);
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(d->run);
+  buttons->addWidget(d->cancel);
+  auto* controls = new QVBoxLayout;
+  controls->addLayout(form);
+  controls->addLayout(buttons);
+  controls->addWidget(d->progress);
+  controls->addWidget(d->summary);
+  controls->addStretch(1);
+  auto* controlsBox = new QWidget(this);
+  controlsBox->setLayout(controls);
+  controlsBox->setMaximumWidth(380);
+
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(controlsBox);
+  layout->addWidget(d->chartView, 1);
+
+  connect(d->run, &QPushButton::clicked, this, [this] { start(); });
+  connect(d->cancel, &QPushButton::clicked, this, &SetupValidationView::cancel);
+  connect(&d->watcher, &QFutureWatcher<Outcome>::finished, this, &SetupValidationView::onFinished);
+}
+
+SetupValidationView::~SetupValidationView() {
+  cancel();
+  d->watcher.waitForFinished();
+}
+
+void SetupValidationView::setModel(const setup::Model& model) {
+  d->model = model;
+  d->hasModel = setup::checkModel(model).empty();
+  d->run->setEnabled(d->hasModel && !isRunning());
+}
+
+void SetupValidationView::setSets(int sets) {
+  d->sets->setValue(sets);
+}
+
+void SetupValidationView::setTrials(int trials) {
+  d->trials->setValue(trials);
+}
+
+void SetupValidationView::setBudget(long budget) {
+  d->budget->setValue(static_cast<int>(budget));
+}
+
+bool SetupValidationView::isRunning() const {
+  return d->watcher.isRunning();
+}
+
+QProgressBar* SetupValidationView::progressBar() const {
+  return d->progress;
+}
+
+const setup::ValidationResult* SetupValidationView::result() const {
+  return d->result.get();
+}
+
+QString SetupValidationView::summaryText() const {
+  return d->summary->text();
+}
+
+bool SetupValidationView::start() {
+  if (isRunning() || !d->hasModel) return false;
+  setup::ValidationOptions options;
+  options.sets = static_cast<std::size_t>(d->sets->value());
+  options.trials = d->trials->value();
+  options.budget = d->budget->value();
+  options.simulation.w1 = d->w1->value();
+  options.simulation.w2 = d->w2->value();
+  options.seed = static_cast<std::uint64_t>(d->seed->value());
+  options.methods.clear();
+  for (const auto& [name, box] : d->methods)
+    if (box->isChecked()) options.methods.push_back(name);
+  if (options.methods.empty()) {
+    d->summary->setText(tr("Choose at least one method."));
+    return false;
+  }
+  d->token = std::make_shared<CancelToken>();
+  d->progress->setRange(0, static_cast<int>(options.sets));
+  d->progress->setValue(0);
+  d->run->setEnabled(false);
+  d->cancel->setEnabled(true);
+  d->summary->setText(tr("Running %1 sets x %2 trials…").arg(options.sets).arg(options.trials));
+  QPointer<QProgressBar> bar = d->progress;
+  const setup::Model model = d->model;
+  std::shared_ptr<CancelToken> token = d->token;
+  d->watcher.setFuture(QtConcurrent::run([model, options, token, bar]() -> Outcome {
+    Outcome out;
+    try {
+      out.result = setup::runValidation(model, options, token.get(), [bar](std::size_t done, std::size_t) {
+        QMetaObject::invokeMethod(
+            bar.data(),
+            [bar, done] {
+              if (bar) bar->setValue(static_cast<int>(done));
+            },
+            Qt::QueuedConnection);
+      });
+    } catch (const std::exception& e) {
+      out.error = QString::fromStdString(e.what());
+    }
+    setup::releaseExactSolverThread();
+    return out;
+  }));
+  return true;
+}
+
+void SetupValidationView::cancel() {
+  if (d->token) d->token->cancel();
+}
+
+void SetupValidationView::waitForFinished() {
+  d->watcher.waitForFinished();
+  QCoreApplication::processEvents();
+  if (d->run->isEnabled() == false && !isRunning() && d->cancel->isEnabled()) onFinished();
+}
+
+void SetupValidationView::onFinished() {
+  if (!d->cancel->isEnabled()) return;  // already handled
+  d->run->setEnabled(d->hasModel);
+  d->cancel->setEnabled(false);
+  const Outcome outcome = d->watcher.result();
+  if (!outcome.error.isEmpty()) {
+    d->summary->setText(tr("The validation failed: %1").arg(outcome.error));
+    emit finished();
+    return;
+  }
+  d->result = std::make_unique<setup::ValidationResult>(outcome.result);
+  const setup::ValidationResult& r = *d->result;
+  d->progress->setValue(static_cast<int>(r.sets.size()));
+  QChart* old = d->chartView->chart();
+  d->chartView->setChart(makeSetupValidationChart(r));
+  delete old;
+
+  // Per method: mean f1 gap to the exact optimum, trials within one grid step (0.001 mm).
+  std::map<std::string, std::pair<double, int>> gaps;
+  std::map<std::string, int> hits;
+  double beforeLo = 0.0, beforeHi = 0.0;
+  bool first = true;
+  for (const setup::ValidationSet& s : r.sets) {
+    beforeLo = first ? s.f1Before : std::min(beforeLo, s.f1Before);
+    beforeHi = first ? s.f1Before : std::max(beforeHi, s.f1Before);
+    first = false;
+    for (const setup::ValidationTrial& t : s.trials) {
+      gaps[t.method].first += t.gapF1;
+      ++gaps[t.method].second;
+      if (t.gapF1 <= d->model.stepMm + 1e-9) ++hits[t.method];
+    }
+  }
+  const QLocale locale;
+  QStringList lines;
+  lines << tr("%1 sets%2: f1 before correction from %3 to %4 mm.")
+               .arg(r.sets.size())
+               .arg(r.cancelled ? tr(" (cancelled)") : QString())
+               .arg(locale.toString(beforeLo, 'f', 4), locale.toString(beforeHi, 'f', 4));
+  for (const auto& [method, g] : gaps) {
+    lines << tr("%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.")
+                 .arg(setupMethodTitle(QString::fromStdString(method)))
+                 .arg(locale.toString(g.second > 0 ? g.first / g.second : 0.0, 'f', 4))
+                 .arg(hits[method])
+                 .arg(g.second);
+  }
+  d->summary->setText(lines.join(QLatin1Char('\n')));
+  emit finished();
+}
+
+}  // namespace metrofit

@@ -1,0 +1,51 @@
+#pragma once
+// The paper's statistical validation in the GUI (core/setup/validation.h, Fig. 18): N simulated
+// measurement sets (Eq. 12-13, weights w1 and w2) x M trials per chosen method, run in a worker
+// thread with a progress bar and Cancel, then the sorted-results chart and a summary per method
+// (mean gap to the exact optimum, trials within one grid step of it).
+#include <QWidget>
+#include <memory>
+
+#include "core/setup/model.h"
+
+class QProgressBar;
+class QPushButton;
+
+namespace metrofit {
+namespace setup {
+struct ValidationResult;
+}
+
+class SetupValidationView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit SetupValidationView(QWidget* parent = nullptr);
+  ~SetupValidationView() override;
+
+  /// The model the validation simulates (a new model clears the result).
+  void setModel(const setup::Model& model);
+  void setSets(int sets);
+  void setTrials(int trials);
+  void setBudget(long budget);
+
+  /// Starts the validation in the worker thread (false when one runs or there is no valid model).
+  bool start();
+  void cancel();
+  bool isRunning() const;
+  /// Blocks until the running validation has finished and its result is shown (tests).
+  void waitForFinished();
+  /// The last result (nullptr before the first one).
+  const setup::ValidationResult* result() const;
+  QString summaryText() const;
+  QProgressBar* progressBar() const;
+
+ signals:
+  void finished();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> d;
+  void onFinished();
+};
+
+}  // namespace metrofit
