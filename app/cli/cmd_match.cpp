@@ -1,6 +1,7 @@
 // metrofit-cli match: posture matching and 5-axis machine adjustment (CONTRACT.md "match", issue 5).
 //
-//   match --data P.csv [--tolerance T] [--method sade|ga-simplex|closed-form|minimax] [--allow-scale]
+//   match --data P.csv|HOLES.txt [--tolerance T] [--method sade|ga-simplex|closed-form|minimax]
+//   [--allow-scale]
 //         [--machine xfyzba|ac-table|bc-table] [--machine-def M.json] [--lock rx,ry,...]
 //         [--reference ID,ID,ID] [--seed N] [--out F]
 //
@@ -20,6 +21,7 @@
 #include "core/common/error.h"
 #include "core/io/json_util.h"
 #include "core/machine/machine.h"
+#include "core/matching/hole_table.h"
 #include "core/matching/matching.h"
 #include "core/matching/probe_points.h"
 
@@ -34,6 +36,7 @@ struct MatchArgs {
 };
 
 std::string fmt(double v) {
+  if (v == 0.0) v = 0.0;  // no "-0" in the summary line
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", v);
   return buf;
@@ -59,7 +62,7 @@ machine::MachineDefinition machineFor(const MatchArgs& a, bool machineGiven) {
 
 int runMatch(const MatchArgs& a, bool machineGiven) {
   using namespace matching;
-  const ProbePointSet set = readProbePoints(a.data, 1);
+  const ProbePointSet set = readProbePointsAnyFormat(a.data, 1);
   MatchOptions o;
   o.method = parseMatchMethod(a.method, "--method");
   o.toleranceMm = a.tolerance;
@@ -114,7 +117,9 @@ int runMatch(const MatchArgs& a, bool machineGiven) {
 void registerMatchCommand(CLI::App& app) {
   auto a = std::make_shared<MatchArgs>();
   auto* sub = app.add_subcommand("match", "Workpiece posture matching and 5-axis machine adjustment");
-  existingFile(sub->add_option("--data", a->data, "Probe points (CSV)")->required());
+  existingFile(
+      sub->add_option("--data", a->data, "Probe points: CSV (CONTRACT.md) or a PC-DMIS hole-table report")
+          ->required());
   sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -1,42 +1,142 @@
 #include "app/gui/matchingpage.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QKeySequence>
 #include <QLabel>
 #include <QLocale>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QStackedWidget>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
 #include <exception>
 #include <set>
 
 #include "app/gui/notesedit.h"
-#include "core/matching/probe_points.h"
+#include "core/matching/hole_table.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
+#include "widgets/pointview/matchingcurveview.h"
 #include "widgets/pointview/pointsetview.h"
 
 namespace metrofit {
 
 namespace {
-enum Column { ColId, ColSurface, ColDeviation, ColumnCount };
+enum Column { ColId, ColSurface, ColDeviation, ColAfter, ColumnCount };
+
+using matching::MatchMethod;
+
+constexpr MatchMethod kMethods[] = {MatchMethod::Sade, MatchMethod::GaSimplex, MatchMethod::ClosedForm,
+                                    MatchMethod::Minimax};
+constexpr const char* kDofNames[] = {"rx", "ry", "rz", "x", "y", "z"};
+
+QString methodTitle(MatchMethod m) {
+  switch (m) {
+    case MatchMethod::Sade:
+      return MatchingPage::tr("SADE (rough + fine, paper settings)");
+    case MatchMethod::GaSimplex:
+      return MatchingPage::tr("GA-simplex (rough + fine)");
+    case MatchMethod::ClosedForm:
+      return MatchingPage::tr("Closed form (least-squares optimum)");
+    case MatchMethod::Minimax:
+      return MatchingPage::tr("Minimax (smallest largest deviation)");
+  }
+  return {};
 }
+
+QString methodShort(MatchMethod m) {
+  switch (m) {
+    case MatchMethod::Sade:
+      return QStringLiteral("SADE");
+    case MatchMethod::GaSimplex:
+      return QStringLiteral("GA-simplex");
+    case MatchMethod::ClosedForm:
+      return MatchingPage::tr("closed form");
+    case MatchMethod::Minimax:
+      return MatchingPage::tr("minimax");
+  }
+  return {};
+}
+
+/// The largest 1, 2 or 5 x 10^n that is <= x (x > 0).
+double niceFloor(double x) {
+  const double decade = std::pow(10.0, std::floor(std::log10(x)));
+  for (const double step : {5.0, 2.0, 1.0}) {
+    if (step * decade <= x * (1.0 + 1e-12)) return step * decade;
+  }
+  return decade;
+}
+
+QTableWidget* makeTable(QWidget* parent, const QStringList& header) {
+  auto* t = new QTableWidget(parent);
+  t->setColumnCount(static_cast<int>(header.size()));
+  t->setHorizontalHeaderLabels(header);
+  t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  t->setSelectionBehavior(QAbstractItemView::SelectRows);
+  t->setAlternatingRowColors(true);
+  t->verticalHeader()->hide();
+  t->verticalHeader()->setDefaultSectionSize(t->fontMetrics().height() + 6);
+  t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  t->horizontalHeader()->setStretchLastSection(true);
+  return t;
+}
+
+QTableWidgetItem* textItem(const QString& s) {
+  return new QTableWidgetItem(s);
+}
+
+QTableWidgetItem* numberItem(double v, int decimals) {
+  auto* item = new QTableWidgetItem(QLocale().toString(v, 'f', decimals));
+  item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  return item;
+}
+
+QTableWidgetItem* countItem(std::size_t n, std::size_t of, bool highlight) {
+  auto* item = new QTableWidgetItem(QStringLiteral("%1 / %2").arg(n).arg(of));
+  item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  if (highlight) item->setForeground(n > 0 ? QColor(0xb2, 0x18, 0x2b) : QColor(0x1b, 0x7a, 0x1b));
+  return item;
+}
+
+}  // namespace
 
 MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
     : QWidget(parent),
       document_(document),
       combo_(new QComboBox(this)),
+      methodCombo_(new QComboBox(this)),
+      toleranceSpin_(new QDoubleSpinBox(this)),
+      allowScale_(new QCheckBox(tr("Allow &scale"), this)),
+      runButton_(new QPushButton(tr("&Run"), this)),
+      cancelButton_(new QPushButton(tr("Cancel"), this)),
+      progress_(new QProgressBar(this)),
       info_(new QLabel(this)),
+      status_(new QLabel(this)),
       stack_(new QStackedWidget(this)),
-      content_(new QSplitter(Qt::Horizontal, this)),
-      view_(new PointSetView(content_)),
-      table_(new QTableWidget(content_)),
-      message_(new QLabel(this)) {
+      content_(new QSplitter(Qt::Vertical, this)),
+      beforeView_(nullptr),
+      afterView_(nullptr),
+      tabs_(new QTabWidget(this)),
+      methodsTable_(nullptr),
+      machineLabel_(new QLabel(this)),
+      machineTable_(nullptr),
+      remeasureTable_(nullptr),
+      remeasureLabel_(new QLabel(this)),
+      curve_(nullptr),
+      table_(nullptr),
+      message_(new QLabel(this)),
+      watcher_(new QFutureWatcher<void>(this)) {
   auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kMatching)), this);
   QFont titleFont = title->font();
   titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
@@ -47,30 +147,100 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   combo_->setObjectName(QStringLiteral("probePointsCombo"));
   combo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   combo_->setMinimumContentsLength(16);
+  for (MatchMethod m : kMethods) methodCombo_->addItem(methodTitle(m), static_cast<int>(m));
+  methodCombo_->setObjectName(QStringLiteral("matchingMethod"));
+  methodCombo_->setToolTip(
+      tr("The posture shown after matching and used for the machine adjustment (every method is run for "
+         "the comparison table)"));
+  toleranceSpin_->setObjectName(QStringLiteral("matchingTolerance"));
+  toleranceSpin_->setDecimals(3);
+  toleranceSpin_->setRange(0.001, 10.0);
+  toleranceSpin_->setSingleStep(0.005);
+  toleranceSpin_->setSuffix(tr(" mm"));
+  toleranceSpin_->setToolTip(tr("Symmetric tolerance ±T of every point (mm)"));
+  allowScale_->setToolTip(tr("Fit an isotropic scale too (e.g. thermal expansion of the part)"));
+  runButton_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+  runButton_->setToolTip(tr("Run every matching method on these points (Ctrl+R)"));
+  cancelButton_->setShortcut(QKeySequence(Qt::Key_Escape));
+  cancelButton_->setToolTip(tr("Stop the running SADE / GA-simplex search (Esc)"));
+  cancelButton_->setEnabled(false);
+  progress_->setRange(0, 100);
+  progress_->setValue(0);
+  progress_->setMaximumWidth(160);
+  progress_->setTextVisible(true);
+  progress_->setVisible(false);
   info_->setWordWrap(true);
   info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  status_->setObjectName(QStringLiteral("matchingStatus"));
+  status_->setWordWrap(true);
   message_->setObjectName(QStringLiteral("matchingMessage"));
   message_->setWordWrap(true);
   message_->setAlignment(Qt::AlignCenter);
 
-  table_->setColumnCount(ColumnCount);
-  table_->setHorizontalHeaderLabels({tr("Point"), tr("Surface"), tr("Deviation before (mm)")});
-  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-  table_->setAlternatingRowColors(true);
-  table_->verticalHeader()->hide();
-  table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
-  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  table_->horizontalHeader()->setStretchLastSection(true);
+  // Before / after, side by side with one camera.
+  auto* views = new QSplitter(Qt::Horizontal, content_);
+  beforeView_ = new PointSetView(views);
+  afterView_ = new PointSetView(views);
+  beforeView_->setObjectName(QStringLiteral("beforeView"));
+  afterView_->setObjectName(QStringLiteral("afterView"));
+  beforeView_->setDisplay(PointSetView::Display::Before);
+  afterView_->setDisplay(PointSetView::Display::After);
+  afterView_->linkCamera(beforeView_);
+  beforeView_->setMinimumSize(280, 240);
+  afterView_->setMinimumSize(280, 240);
+  views->addWidget(beforeView_);
+  views->addWidget(afterView_);
+  views->setChildrenCollapsible(false);
 
-  content_->addWidget(view_);
-  content_->addWidget(table_);
+  // Results tabs.
+  methodsTable_ = makeTable(tabs_, {tr("Method"), tr("rx (deg)"), tr("ry (deg)"), tr("rz (deg)"),
+                                    tr("x (mm)"), tr("y (mm)"), tr("z (mm)"), tr("scale"), tr("RMSE (mm)"),
+                                    tr("max |d| (mm)"), tr("out before"), tr("out after"), tr("time (ms)")});
+  methodsTable_->setObjectName(QStringLiteral("matchingMethodsTable"));
+  machineTable_ = makeTable(tabs_, {tr("Axis"), tr("Value"), tr("Unit")});
+  machineTable_->setObjectName(QStringLiteral("matchingMachineTable"));
+  auto* machineBox = new QWidget(tabs_);
+  auto* machineLayout = new QVBoxLayout(machineBox);
+  machineLayout->setContentsMargins(4, 4, 4, 4);
+  machineLabel_->setWordWrap(true);
+  machineLayout->addWidget(machineLabel_);
+  machineLayout->addWidget(machineTable_, 1);
+  auto* resultsTab = new QSplitter(Qt::Horizontal, tabs_);
+  resultsTab->addWidget(methodsTable_);
+  resultsTab->addWidget(machineBox);
+  resultsTab->setStretchFactor(0, 3);
+  resultsTab->setStretchFactor(1, 1);
+  resultsTab->setChildrenCollapsible(false);
+
+  curve_ = new MatchingCurveView(tabs_);
+  curve_->setObjectName(QStringLiteral("matchingCurve"));
+
+  remeasureTable_ = makeTable(tabs_, {tr("Round"), tr("max |d| measured (mm)"), tr("out of tolerance"),
+                                      tr("RMSE (mm)"), tr("SX (mm)"), tr("SY (mm)"), tr("SZ (mm)"),
+                                      tr("rotary 1 (deg)"), tr("rotary 2 (deg)"), tr("frame rot. (deg)")});
+  remeasureTable_->setObjectName(QStringLiteral("matchingRemeasureTable"));
+  auto* remeasureTab = new QWidget(tabs_);
+  auto* remeasureLayout = new QVBoxLayout(remeasureTab);
+  remeasureLayout->setContentsMargins(4, 4, 4, 4);
+  remeasureLabel_->setWordWrap(true);
+  remeasureLayout->addWidget(remeasureLabel_);
+  remeasureLayout->addWidget(remeasureTable_, 1);
+
+  table_ =
+      makeTable(tabs_, {tr("Point"), tr("Surface"), tr("Deviation before (mm)"), tr("Deviation after (mm)")});
+
+  tabs_->addTab(resultsTab, tr("Methods and &machine"));
+  tabs_->addTab(curve_, tr("&Optimisation curve"));
+  tabs_->addTab(remeasureTab, tr("Re&measure loop"));
+  tabs_->addTab(table_, tr("&Points"));
+
+  content_->addWidget(views);
+  content_->addWidget(tabs_);
   content_->setStretchFactor(0, 3);
   content_->setStretchFactor(1, 1);
   content_->setChildrenCollapsible(false);
-  content_->setSizes({760, 300});
-  view_->setMinimumSize(320, 240);
-  table_->setMinimumWidth(260);
+  content_->setSizes({560, 250});  // the 3D views get most of the height
+  tabs_->setMinimumHeight(150);
   stack_->addWidget(content_);
   stack_->addWidget(message_);
 
@@ -83,18 +253,75 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   top->addWidget(combo_);
   top->addStretch(1);
 
+  auto* controls = new QHBoxLayout;
+  auto* methodLabel = new QLabel(tr("M&ethod:"), this);
+  methodLabel->setBuddy(methodCombo_);
+  auto* toleranceLabel = new QLabel(tr("&Tolerance ±"), this);
+  toleranceLabel->setBuddy(toleranceSpin_);
+  controls->addWidget(methodLabel);
+  controls->addWidget(methodCombo_);
+  controls->addSpacing(8);
+  controls->addWidget(toleranceLabel);
+  controls->addWidget(toleranceSpin_);
+  controls->addSpacing(8);
+  controls->addWidget(allowScale_);
+  controls->addSpacing(8);
+  controls->addWidget(new QLabel(tr("Lock:"), this));
+  for (int k = 0; k < 6; ++k) {
+    locks_[static_cast<std::size_t>(k)] = new QCheckBox(QString::fromLatin1(kDofNames[k]), this);
+    locks_[static_cast<std::size_t>(k)]->setToolTip(
+        tr("Hold %1 at 0 (a constrained optimum over the other parameters)")
+            .arg(QLatin1String(kDofNames[k])));
+    controls->addWidget(locks_[static_cast<std::size_t>(k)]);
+  }
+  controls->addStretch(1);
+  controls->addWidget(progress_);
+  controls->addWidget(runButton_);
+  controls->addWidget(cancelButton_);
+
   auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kMatching), this);
-  notes->setMaximumHeight(60);
+  notes->setMaximumHeight(50);
 
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);
+  layout->addLayout(controls);
   layout->addWidget(info_);
+  layout->addWidget(status_);
   layout->addWidget(stack_, 1);
   layout->addWidget(notes);
 
   connect(combo_, &QComboBox::currentIndexChanged, this, &MatchingPage::showPoints);
+  connect(methodCombo_, &QComboBox::currentIndexChanged, this, [this] {
+    if (result_) {
+      result_->primary = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
+      applyResult();
+    }
+  });
+  connect(toleranceSpin_, &QDoubleSpinBox::valueChanged, this, [this] { reevaluate(); });
+  connect(allowScale_, &QCheckBox::toggled, this, [this] { settingsChanged(); });
+  for (QCheckBox* box : locks_) connect(box, &QCheckBox::toggled, this, [this] { settingsChanged(); });
+  connect(runButton_, &QPushButton::clicked, this, &MatchingPage::startRun);
+  connect(cancelButton_, &QPushButton::clicked, this, &MatchingPage::cancelRun);
+  connect(watcher_, &QFutureWatcher<void>::finished, this, [this] {
+    setRunning(false);
+    if (pendingError_ && !pendingError_->isEmpty()) {
+      error_ = *pendingError_;
+      status_->setText(tr("Matching failed: %1").arg(error_));
+    } else if (pending_ && pending_->has_value()) {
+      result_ = std::move(**pending_);
+      applyResult();
+    }
+    pending_.reset();
+    pendingError_.reset();
+    emit finished();
+  });
   connect(document_, &ProjectDocument::changed, this, &MatchingPage::refresh);
   refresh();
+}
+
+MatchingPage::~MatchingPage() {
+  if (cancel_) cancel_->store(true);
+  watcher_->waitForFinished();
 }
 
 QString MatchingPage::currentDataset() const {
@@ -106,6 +333,24 @@ void MatchingPage::selectDataset(const QString& id) {
   if (index >= 0) combo_->setCurrentIndex(index);
 }
 
+bool MatchingPage::isRunning() const {
+  // pending_ lives from startRun until the finished handler took the result.
+  return pending_ != nullptr || watcher_->isRunning();
+}
+
+void MatchingPage::setMethod(MatchMethod method) {
+  const int index = methodCombo_->findData(static_cast<int>(method));
+  if (index >= 0) methodCombo_->setCurrentIndex(index);
+}
+
+void MatchingPage::setTolerance(double toleranceMm) {
+  toleranceSpin_->setValue(toleranceMm);
+}
+
+void MatchingPage::setLocked(int dof, bool locked) {
+  if (dof >= 0 && dof < 6) locks_[static_cast<std::size_t>(dof)]->setChecked(locked);
+}
+
 void MatchingPage::refresh() {
   std::vector<DatasetRef> sets;
   for (const DatasetRef& d : document_->project().datasets) {
@@ -113,8 +358,23 @@ void MatchingPage::refresh() {
   }
   if (sets == sets_ && projectFile_ == document_->fileName() && combo_->count() > 0) return;
   sets_ = std::move(sets);
+  const bool newProject = projectFile_ != document_->fileName() || combo_->count() == 0;
   projectFile_ = document_->fileName();
-  const QString previous = currentDataset();
+  QString previous = currentDataset();
+  try {
+    settings_ = matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
+  } catch (const std::exception& e) {
+    settings_ = {};
+    status_->setText(tr("The matching study's settings are invalid: %1").arg(QString::fromUtf8(e.what())));
+  }
+  if (newProject) {
+    previous = QString::fromStdString(settings_.datasetId);
+    const QSignalBlocker b1(toleranceSpin_), b2(methodCombo_);
+    toleranceSpin_->setValue(settings_.options.toleranceMm);
+    methodCombo_->setCurrentIndex(
+        std::max(0, methodCombo_->findData(static_cast<int>(settings_.options.primary))));
+    allowScale_->setChecked(settings_.options.allowScale);
+  }
   {
     const QSignalBlocker blocker(combo_);
     combo_->clear();
@@ -131,56 +391,381 @@ void MatchingPage::refresh() {
 
 void MatchingPage::showPoints(int comboIndex) {
   error_.clear();
+  result_.reset();
+  set_.reset();
   if (comboIndex < 0 || comboIndex >= static_cast<int>(sets_.size())) {
     info_->clear();
     message_->setText(
         tr("This project has no probe points. Add a dataset of kind \"probe_points\" to the "
            "project file (id, surface, nominal point, normal, measured point)."));
     stack_->setCurrentWidget(message_);
+    runButton_->setEnabled(false);
     return;
   }
   const DatasetRef& dataset = sets_[static_cast<std::size_t>(comboIndex)];
   try {
-    const ProbePointSet points = readProbePoints(document_->datasetPath(dataset).toStdString());
-    const std::vector<double> deviations = points.deviations();
-    view_->setPoints(points);
-
-    const QLocale locale;
-    table_->setRowCount(static_cast<int>(points.points.size()));
+    set_ = readProbePointsAnyFormat(document_->datasetPath(dataset).toStdString());
+    const ProbePointSet& points = *set_;
     std::set<std::string> surfaces;
-    double sumSquares = 0.0;
-    double maxAbs = 0.0;
-    for (std::size_t i = 0; i < points.points.size(); ++i) {
-      const ProbePoint& p = points.points[i];
-      const int row = static_cast<int>(i);
-      surfaces.insert(p.surface);
-      table_->setItem(row, ColId, new QTableWidgetItem(QString::fromStdString(p.id)));
-      table_->setItem(row, ColSurface, new QTableWidgetItem(QString::fromStdString(p.surface)));
-      auto* deviation = new QTableWidgetItem(locale.toString(deviations[i], 'f', 4));
-      deviation->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-      table_->setItem(row, ColDeviation, deviation);
-      sumSquares += deviations[i] * deviations[i];
-      maxAbs = std::max(maxAbs, std::abs(deviations[i]));
-    }
-    const double rms =
-        points.points.empty() ? 0.0 : std::sqrt(sumSquares / static_cast<double>(points.points.size()));
-    QString info = tr("%1 points on %2 surfaces, %3. Before matching: RMS deviation %4 mm, largest %5 mm.")
+    for (const ProbePoint& p : points.points) surfaces.insert(p.surface);
+    QString info = tr("%1 points on %2 surfaces, %3%4.")
                        .arg(points.points.size())
                        .arg(surfaces.size())
                        .arg(points.hasNormals ? tr("with normals") : tr("positions only"))
-                       .arg(locale.toString(rms, 'f', 4), locale.toString(maxAbs, 'f', 4));
+                       .arg(points.planar ? tr(", planar") : QString());
     if (!dataset.licence.empty())
       info += QLatin1Char(' ') + tr("Licence: %1.").arg(QString::fromStdString(dataset.licence));
-    if (!dataset.description.empty())
-      info.prepend(QString::fromStdString(dataset.description) + QLatin1Char('\n'));
     info_->setText(info);
+    info_->setToolTip(QString::fromStdString(dataset.description));
+    status_->setText(tr("Not matched yet: press Run (Ctrl+R)."));
+    runButton_->setEnabled(true);
     stack_->setCurrentWidget(content_);
   } catch (const std::exception& e) {
-    error_ = QString::fromStdString(e.what());
+    error_ = QString::fromUtf8(e.what());
     info_->clear();
     message_->setText(tr("Cannot show these probe points:\n%1").arg(error_));
     stack_->setCurrentWidget(message_);
+    runButton_->setEnabled(false);
+    return;
   }
+  curve_->clear();
+  methodsTable_->setRowCount(0);
+  machineTable_->setRowCount(0);
+  remeasureTable_->setRowCount(0);
+  remeasureLabel_->clear();
+  machineLabel_->clear();
+  updateViews();
+  fillPointTable();
+}
+
+matching::MatchingStudyOptions MatchingPage::currentOptions() const {
+  matching::MatchingStudyOptions o = settings_.options;
+  o.toleranceMm = toleranceSpin_->value();
+  o.allowScale = allowScale_->isChecked();
+  o.primary = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
+  std::string list;
+  for (int k = 0; k < 6; ++k) {
+    if (locks_[static_cast<std::size_t>(k)]->isChecked())
+      list += std::string(list.empty() ? "" : ",") + kDofNames[k];
+  }
+  o.locks = matching::DofLocks::parse(list, "lock");
+  return o;
+}
+
+void MatchingPage::settingsChanged() {
+  if (result_) status_->setText(tr("Settings changed: press Run (Ctrl+R) to match again."));
+}
+
+bool MatchingPage::runNow() {
+  if (!set_ || isRunning()) return false;
+  try {
+    result_ = matching::runMatchingStudy(*set_, currentOptions());
+    error_.clear();
+    applyResult();
+    return true;
+  } catch (const std::exception& e) {
+    error_ = QString::fromUtf8(e.what());
+    status_->setText(tr("Matching failed: %1").arg(error_));
+    return false;
+  }
+}
+
+void MatchingPage::startRun() {
+  if (!set_ || isRunning()) return;
+  matching::MatchingStudyOptions options;
+  try {
+    options = currentOptions();
+  } catch (const std::exception& e) {
+    error_ = QString::fromUtf8(e.what());
+    status_->setText(tr("Matching failed: %1").arg(error_));
+    return;
+  }
+  cancel_ = std::make_shared<std::atomic<bool>>(false);
+  pending_ = std::make_shared<std::optional<matching::MatchingStudyResult>>();
+  pendingError_ = std::make_shared<QString>();
+  setRunning(true);
+  status_->setText(tr("Matching …"));
+  const ProbePointSet set = *set_;
+  auto cancel = cancel_;
+  auto pending = pending_;
+  auto pendingError = pendingError_;
+  QProgressBar* progress = progress_;
+  const long generations = matching::paperSadeOptions().maxGenerations;
+  watcher_->setFuture(QtConcurrent::run([set, options, cancel, pending, pendingError, progress, generations] {
+    FunctionObserver observer([&](const IterationSummary& s) {
+      if (s.iteration % 10 == 0) {
+        const int percent =
+            static_cast<int>(std::min<long>(100, 100 * s.iteration / std::max(1L, generations)));
+        QMetaObject::invokeMethod(
+            progress, [progress, percent] { progress->setValue(percent); }, Qt::QueuedConnection);
+      }
+      return cancel->load() ? ObserverDecision::Stop : ObserverDecision::Continue;
+    });
+    try {
+      *pending = matching::runMatchingStudy(set, options, &observer);
+    } catch (const std::exception& e) {
+      *pendingError = QString::fromUtf8(e.what());
+    }
+  }));
+}
+
+void MatchingPage::cancelRun() {
+  if (cancel_) cancel_->store(true);
+}
+
+void MatchingPage::setRunning(bool running) {
+  runButton_->setEnabled(!running && set_.has_value());
+  cancelButton_->setEnabled(running);
+  progress_->setVisible(running);
+  progress_->setValue(0);
+  combo_->setEnabled(!running);
+}
+
+void MatchingPage::reevaluate() {
+  if (!result_ || !set_) {
+    updateViews();
+    return;
+  }
+  const double tol = toleranceSpin_->value();
+  for (matching::MatchResult& r : result_->runs) {
+    r.before = matching::evaluateTolerance(*set_, matching::Pose{}, tol);
+    r.after = matching::evaluateTolerance(*set_, r.pose, tol);
+    if (r.rough) r.roughEvaluation = matching::evaluateTolerance(*set_, r.rough->posture, tol);
+  }
+  applyResult();
+  if (result_->remeasure)
+    remeasureLabel_->setText(remeasureLabel_->text() + QLatin1Char(' ') +
+                             tr("(The loop ran with the previous tolerance: Run again.)"));
+}
+
+void MatchingPage::applyResult() {
+  if (!result_) return;
+  const matching::MatchResult& primary = result_->primaryRun();
+  result_->adjustment =
+      machine::adjustmentFor(result_->machine, primary.pose.rotation, primary.pose.translation);
+  const bool cancelled = primary.run.termination == Termination::Cancelled;
+  status_->setText(tr("%1: %2 of %3 points out of ±%4 mm before, %5 after; RMSE %6 mm, max |d| %7 mm.%8")
+                       .arg(methodShort(primary.method))
+                       .arg(primary.before.overall.outOfTolerance)
+                       .arg(primary.before.overall.points)
+                       .arg(QLocale().toString(primary.after.toleranceMm, 'f', 3))
+                       .arg(primary.after.overall.outOfTolerance)
+                       .arg(QLocale().toString(primary.after.overall.rmseMm, 'f', 4),
+                            QLocale().toString(primary.after.overall.maxAbsMm, 'f', 4),
+                            cancelled ? tr(" Cancelled: the best posture found so far.") : QString()));
+  updateViews();
+  fillMethodsTable();
+  fillMachineTable();
+  fillRemeasureTable();
+  fillPointTable();
+  std::vector<std::pair<double, double>> optimum;
+  curve_->clear();
+  for (const matching::MatchResult& r : result_->runs) {
+    if (r.method != MatchMethod::Sade && r.method != MatchMethod::GaSimplex) continue;
+    std::vector<std::pair<double, double>> points;
+    for (const IterationSummary& s : r.run.trace)
+      points.emplace_back(static_cast<double>(s.iteration), s.best);
+    curve_->setCurve(methodShort(r.method), points);
+  }
+  if (const matching::MatchResult* cf = result_->of(MatchMethod::ClosedForm))
+    curve_->setOptimum(cf->after.overall.rmseMm);
+}
+
+void MatchingPage::updateViews() {
+  if (!set_) return;
+  const ProbePointSet& set = *set_;
+  const double tol = toleranceSpin_->value();
+  const std::vector<double> before = set.deviations();
+  double maxBefore = 0.0;
+  std::size_t outBefore = 0;
+  for (double v : before) {
+    maxBefore = std::max(maxBefore, std::abs(v));
+    outBefore += std::abs(v) > tol;
+  }
+  // Deviation vectors magnified so that the largest before is about 15 % of the part's size (rounded
+  // down to 1, 2 or 5 x 10^n); the same factor in both views.
+  Eigen::Vector3d lo = set.points.empty() ? Eigen::Vector3d::Zero() : set.points.front().nominal, hi = lo;
+  for (const ProbePoint& p : set.points) {
+    lo = lo.cwiseMin(p.nominal);
+    hi = hi.cwiseMax(p.nominal);
+  }
+  const double extent = std::max((hi - lo).maxCoeff(), 1.0);
+  const double factor = maxBefore > 0.0 ? std::clamp(niceFloor(0.15 * extent / maxBefore), 1.0, 1e5) : 100.0;
+  const QLocale locale;
+  for (PointSetView* v : {beforeView_, afterView_}) {
+    v->setTolerance(tol);
+    v->setExaggeration(factor);
+  }
+  beforeView_->setPoints(set);
+  beforeView_->setTitle(tr("BEFORE matching\n%1 of %2 out of ±%3 mm, max |d| %4 mm")
+                            .arg(outBefore)
+                            .arg(set.points.size())
+                            .arg(locale.toString(tol, 'f', 3), locale.toString(maxBefore, 'f', 3)));
+  if (!result_) {
+    afterView_->setPoints(ProbePointSet{});
+    afterView_->setTitle(tr("AFTER matching\nnot run yet: press Run (Ctrl+R)"));
+    return;
+  }
+  const matching::MatchResult& r = result_->primaryRun();
+  std::vector<std::array<double, 3>> transformed;
+  transformed.reserve(set.points.size());
+  for (const ProbePoint& p : set.points) {
+    const Eigen::Vector3d q = r.pose.apply(p.nominal);
+    transformed.push_back({q.x(), q.y(), q.z()});
+  }
+  afterView_->setPoints(set);
+  afterView_->setAfter(transformed, r.after.deviations);
+  afterView_->setTitle(
+      tr("AFTER matching (%1)\n%2 of %3 out of ±%4 mm, max |d| %5 mm")
+          .arg(methodShort(r.method))
+          .arg(r.after.overall.outOfTolerance)
+          .arg(set.points.size())
+          .arg(locale.toString(tol, 'f', 3), locale.toString(r.after.overall.maxAbsMm, 'f', 3)));
+}
+
+void MatchingPage::fillMethodsTable() {
+  const matching::MatchingStudyResult& res = *result_;
+  methodsTable_->setRowCount(0);
+  auto addRow = [&](const QString& name, const QString& tooltip, const matching::Pose& pose,
+                    const matching::ToleranceEvaluation& before, const matching::ToleranceEvaluation& after,
+                    double seconds, bool primary) {
+    const int row = methodsTable_->rowCount();
+    methodsTable_->insertRow(row);
+    auto* nameItem = textItem(name);
+    nameItem->setToolTip(tooltip);
+    if (primary) {
+      QFont f = nameItem->font();
+      f.setBold(true);
+      nameItem->setFont(f);
+      nameItem->setToolTip(tooltip + QLatin1Char('\n') +
+                           tr("Shown after matching and used for the machine adjustment"));
+    }
+    methodsTable_->setItem(row, 0, nameItem);
+    const Eigen::Vector3d a = pose.anglesDeg();
+    for (int k = 0; k < 3; ++k) methodsTable_->setItem(row, 1 + k, numberItem(a[k], 4));
+    for (int k = 0; k < 3; ++k) methodsTable_->setItem(row, 4 + k, numberItem(pose.translation[k], 4));
+    methodsTable_->setItem(row, 7, numberItem(pose.scale, 7));
+    methodsTable_->setItem(row, 8, numberItem(after.overall.rmseMm, 5));
+    methodsTable_->setItem(row, 9, numberItem(after.overall.maxAbsMm, 5));
+    methodsTable_->setItem(row, 10, countItem(before.overall.outOfTolerance, before.overall.points, false));
+    methodsTable_->setItem(row, 11, countItem(after.overall.outOfTolerance, after.overall.points, true));
+    methodsTable_->setItem(row, 12, seconds >= 0.0 ? numberItem(seconds * 1e3, 1) : textItem(QString()));
+  };
+  for (std::size_t i = 0; i < res.runs.size(); ++i) {
+    const matching::MatchResult& r = res.runs[i];
+    if (r.rough && r.roughEvaluation && r.method == MatchMethod::Sade)
+      addRow(tr("Rough"), tr("Rough matching: 3-point local frames, Eq. 3–7"), r.rough->posture, r.before,
+             *r.roughEvaluation, -1.0, false);
+    addRow(methodShort(r.method), methodTitle(r.method), r.pose, r.before, r.after, res.seconds[i],
+           r.method == res.primary);
+  }
+  methodsTable_->setColumnHidden(7, !allowScale_->isChecked());
+}
+
+void MatchingPage::fillMachineTable() {
+  const machine::Adjustment& a = result_->adjustment;
+  const auto names = machine::rotaryAxisNames(a.topology);
+  machineLabel_->setText(
+      tr("Machine adjustment values for %1 (%2), posture of %3. %4")
+          .arg(QString::fromLatin1(machine::topologyName(a.topology)))
+          .arg(a.topology == machine::Topology::Xfyzba ? tr("head-head, Eq. 12–13")
+                                                       : tr("table-table trunnion"))
+          .arg(methodShort(result_->primary))
+          .arg(a.withinTravel ? tr("Within travel.")
+                              : tr("OUTSIDE TRAVEL: %1").arg(QString::fromStdString(a.travelMessage))));
+  machineTable_->setRowCount(0);
+  auto addRow = [&](const QString& axis, double value, const QString& unit, int decimals) {
+    const int row = machineTable_->rowCount();
+    machineTable_->insertRow(row);
+    machineTable_->setItem(row, 0, textItem(axis));
+    machineTable_->setItem(row, 1, numberItem(value, decimals));
+    machineTable_->setItem(row, 2, textItem(unit));
+  };
+  addRow(QStringLiteral("SX"), a.linearMm.x(), tr("mm"), 4);
+  addRow(QStringLiteral("SY"), a.linearMm.y(), tr("mm"), 4);
+  addRow(QStringLiteral("SZ"), a.linearMm.z(), tr("mm"), 4);
+  addRow(QStringLiteral("S") + QLatin1String(names[0]), a.rotaryDeg[0], tr("deg"), 5);
+  addRow(QStringLiteral("S") + QLatin1String(names[1]), a.rotaryDeg[1], tr("deg"), 5);
+  addRow(tr("frame rotation"), a.frameRotationDeg, tr("deg"), 5);
+}
+
+void MatchingPage::fillRemeasureTable() {
+  remeasureTable_->setRowCount(0);
+  if (!result_->remeasure) {
+    remeasureLabel_->setText(tr("The remeasure loop did not run."));
+    return;
+  }
+  const matching::RemeasureResult& loop = *result_->remeasure;
+  const auto names = machine::rotaryAxisNames(result_->machine.topology);
+  remeasureTable_->setHorizontalHeaderItem(7, textItem(tr("S%1 (deg)").arg(QLatin1String(names[0]))));
+  remeasureTable_->setHorizontalHeaderItem(8, textItem(tr("S%1 (deg)").arg(QLatin1String(names[1]))));
+  remeasureLabel_->setText(
+      tr("Step 7 with the simulator as machine and CMM (true posture: the %1 fit, probing noise %2 mm): "
+         "measure, match, adjust the WCS, remeasure. %3")
+          .arg(methodShort(result_->primary))
+          .arg(QLocale().toString(settings_.options.remeasureNoiseMm, 'f', 3))
+          .arg(loop.inTolerance ? tr("Every point is inside the tolerance after %n adjustment(s).", "",
+                                     static_cast<int>(loop.rounds.size()) - 1)
+                                : tr("Still out of tolerance after the last adjustment.")));
+  for (const matching::RemeasureRound& r : loop.rounds) {
+    const int row = remeasureTable_->rowCount();
+    remeasureTable_->insertRow(row);
+    remeasureTable_->setItem(row, 0, numberItem(r.round, 0));
+    remeasureTable_->setItem(row, 1, numberItem(r.measured.overall.maxAbsMm, 4));
+    remeasureTable_->setItem(row, 2,
+                             countItem(r.measured.overall.outOfTolerance, r.measured.overall.points, true));
+    remeasureTable_->setItem(row, 3, numberItem(r.measured.overall.rmseMm, 4));
+    if (r.adjustment) {
+      for (int k = 0; k < 3; ++k)
+        remeasureTable_->setItem(row, 4 + k, numberItem(r.adjustment->linearMm[k], 4));
+      remeasureTable_->setItem(row, 7, numberItem(r.adjustment->rotaryDeg[0], 5));
+      remeasureTable_->setItem(row, 8, numberItem(r.adjustment->rotaryDeg[1], 5));
+      remeasureTable_->setItem(row, 9, numberItem(r.adjustment->frameRotationDeg, 5));
+    } else {
+      remeasureTable_->setItem(row, 4, textItem(tr("in tolerance: no adjustment")));
+      remeasureTable_->setSpan(row, 4, 1, 6);
+    }
+  }
+}
+
+void MatchingPage::fillPointTable() {
+  if (!set_) return;
+  const ProbePointSet& points = *set_;
+  const std::vector<double> deviations = points.deviations();
+  const matching::MatchResult* r = result_ ? &result_->primaryRun() : nullptr;
+  const double tol = toleranceSpin_->value();
+  table_->setRowCount(static_cast<int>(points.points.size()));
+  for (std::size_t i = 0; i < points.points.size(); ++i) {
+    const ProbePoint& p = points.points[i];
+    const int row = static_cast<int>(i);
+    table_->setItem(row, ColId, textItem(QString::fromStdString(p.id)));
+    table_->setItem(row, ColSurface, textItem(QString::fromStdString(p.surface)));
+    auto* before = numberItem(deviations[i], 4);
+    if (std::abs(deviations[i]) > tol) before->setForeground(QColor(0xb2, 0x18, 0x2b));
+    table_->setItem(row, ColDeviation, before);
+    if (r != nullptr) {
+      const double after = r->after.deviations[i];
+      auto* item = numberItem(after, 4);
+      if (std::abs(after) > tol) item->setForeground(QColor(0xb2, 0x18, 0x2b));
+      table_->setItem(row, ColAfter, item);
+    } else {
+      table_->setItem(row, ColAfter, textItem(QString()));
+    }
+  }
+}
+
+void MatchingPage::showView(const QString& view) {
+  if (set_ && !result_) runNow();
+  if (view == QLatin1String("convergence") || view == QLatin1String("curve")) {
+    tabs_->setCurrentWidget(curve_);
+  } else if (view == QLatin1String("remeasure")) {
+    tabs_->setCurrentIndex(2);
+  } else if (view == QLatin1String("points")) {
+    tabs_->setCurrentWidget(table_);
+  } else {  // "3d", "matching", "results", "machine"
+    tabs_->setCurrentIndex(0);
+  }
+  beforeView_->resetCamera();
 }
 
 }  // namespace metrofit

@@ -1,19 +1,38 @@
 #pragma once
-// The posture-matching study page: a combo of the project's probe point sets, the 3D point view of
-// the chosen one (the first by default) and a table of the points with their deviation before
-// matching (measured against nominal, along the normal where the set has normals).
+// The posture-matching study page (issue 5): the project's probe point sets, the matching settings
+// (method, tolerance, degree-of-freedom locks, scale), Run with progress and Cancel, and the results:
+// two linked 3D views before and after matching side by side, the optimisation curve of SADE and
+// GA-simplex, one table of rough / SADE / GA-simplex / closed-form / minimax, the machine adjustment
+// values for the study's machine, the remeasure loop's rounds and the points with their deviations.
+//
+// A run computes every method (core/matching/study.h) in a worker thread; the method selector picks
+// the posture shown "after" and used for the machine adjustment. Settings come from the project's
+// studies.matching (dataset, tolerance_mm, method, machine) and are not written back.
+#include <QFutureWatcher>
 #include <QWidget>
+#include <array>
+#include <atomic>
+#include <memory>
+#include <optional>
 #include <vector>
 
+#include "core/matching/probe_points.h"
+#include "core/matching/study.h"
 #include "core/project/project.h"
 
+class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
+class QProgressBar;
+class QPushButton;
 class QSplitter;
 class QStackedWidget;
+class QTabWidget;
 class QTableWidget;
 
 namespace metrofit {
+class MatchingCurveView;
 class PointSetView;
 class ProjectDocument;
 
@@ -21,29 +40,93 @@ class MatchingPage : public QWidget {
   Q_OBJECT
  public:
   explicit MatchingPage(ProjectDocument* document, QWidget* parent = nullptr);
+  ~MatchingPage() override;
 
   /// Shows the probe point set with this dataset id (no effect for an unknown id).
   void selectDataset(const QString& id);
   QString currentDataset() const;
-  PointSetView* pointView() const { return view_; }
+  /// The "before" view (kept under this name for the existing callers).
+  PointSetView* pointView() const { return beforeView_; }
+  PointSetView* beforeView() const { return beforeView_; }
+  PointSetView* afterView() const { return afterView_; }
   QTableWidget* pointTable() const { return table_; }
+  QTableWidget* methodsTable() const { return methodsTable_; }
+  QTableWidget* machineTable() const { return machineTable_; }
+  QTableWidget* remeasureTable() const { return remeasureTable_; }
+  MatchingCurveView* curveView() const { return curve_; }
   QString errorMessage() const { return error_; }
+  const std::optional<matching::MatchingStudyResult>& result() const { return result_; }
+  bool isRunning() const;
+
+  /// Settings (also through the controls).
+  void setMethod(matching::MatchMethod method);
+  void setTolerance(double toleranceMm);
+  /// Lock a degree of freedom: 0..5 = rx, ry, rz, x, y, z.
+  void setLocked(int dof, bool locked);
+
+  /// Runs the study synchronously (tests, screenshots); returns false with errorMessage() set on
+  /// bad input.
+  bool runNow();
+  /// Starts the run in a worker thread (the Run button); finished() when done.
+  void startRun();
+  void cancelRun();
+
+  /// Switches to a view with results on it for the demo: "3d" (before / after), "convergence",
+  /// "results", "machine", "remeasure", "points". Runs the study synchronously first if needed.
+  Q_INVOKABLE void showView(const QString& view);
+
+ signals:
+  void finished();
 
  private:
   void refresh();
   void showPoints(int comboIndex);
+  void settingsChanged();
+  matching::MatchingStudyOptions currentOptions() const;
+  void applyResult();
+  void updateViews();
+  void fillMethodsTable();
+  void fillMachineTable();
+  void fillRemeasureTable();
+  void fillPointTable();
+  void reevaluate();
+  void setRunning(bool running);
 
   ProjectDocument* document_;
   QComboBox* combo_;
+  QComboBox* methodCombo_;
+  QDoubleSpinBox* toleranceSpin_;
+  QCheckBox* allowScale_;
+  std::array<QCheckBox*, 6> locks_{};
+  QPushButton* runButton_;
+  QPushButton* cancelButton_;
+  QProgressBar* progress_;
   QLabel* info_;
+  QLabel* status_;
   QStackedWidget* stack_;
   QSplitter* content_;
-  PointSetView* view_;
+  PointSetView* beforeView_;
+  PointSetView* afterView_;
+  QTabWidget* tabs_;
+  QTableWidget* methodsTable_;
+  QLabel* machineLabel_;
+  QTableWidget* machineTable_;
+  QTableWidget* remeasureTable_;
+  QLabel* remeasureLabel_;
+  MatchingCurveView* curve_;
   QTableWidget* table_;
   QLabel* message_;
   QString error_;
   std::vector<DatasetRef> sets_;
   QString projectFile_;
+
+  std::optional<ProbePointSet> set_;
+  matching::MatchingStudySettings settings_;
+  std::optional<matching::MatchingStudyResult> result_;
+  QFutureWatcher<void>* watcher_;
+  std::shared_ptr<std::atomic<bool>> cancel_;
+  std::shared_ptr<std::optional<matching::MatchingStudyResult>> pending_;
+  std::shared_ptr<QString> pendingError_;
 };
 
 }  // namespace metrofit

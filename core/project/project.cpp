@@ -5,6 +5,7 @@
 #include "core/common/error.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
+#include "core/machine/machine.h"
 
 namespace metrofit {
 
@@ -76,7 +77,39 @@ Project Project::fromJson(const nlohmann::json& j, const std::string& source) {
   }
   if (r.has("studies")) p.studies = r.object("studies").json();
   if (r.has("results")) p.results = r.object("results").json();
+  if (p.studies.contains(study::kMatching) && !p.studies[study::kMatching].is_object())
+    r.fail("must be an object", std::string("studies.") + study::kMatching);
+  machine::MachineDefinition unused;
+  matchingMachine(p, &unused, source);
   return p;
+}
+
+bool matchingMachine(const Project& project, machine::MachineDefinition* out, const std::string& source) {
+  const std::string field = std::string("studies.") + study::kMatching + ".machine";
+  const auto matching = project.studies.find(study::kMatching);
+  if (matching == project.studies.end() || !matching->is_object() || !matching->contains("machine"))
+    return false;
+  nlohmann::json j = (*matching)["machine"];
+  if (!j.is_object()) throw ValidationError(ErrorContext{source, 0, 0, field}, "must be an object");
+  // Short topology names as people write them.
+  if (j.contains("topology") && j["topology"].is_string()) {
+    const std::string t = j["topology"].get<std::string>();
+    if (t == "ac" || t == "bc") j["topology"] = t + "-table";
+  }
+  try {
+    *out = machine::MachineDefinition::fromJson(j, source);
+  } catch (const ValidationError& e) {
+    const std::string& inner = e.context().field;
+    throw ValidationError(ErrorContext{source, 0, 0, inner.empty() ? field : field + "." + inner},
+                          e.detail());
+  }
+  return true;
+}
+
+void setMatchingMachine(Project& project, const machine::MachineDefinition& definition) {
+  nlohmann::json& matching = project.studies[study::kMatching];
+  if (!matching.is_object()) matching = nlohmann::json::object();
+  matching["machine"] = definition.toJson();
 }
 
 Project loadProject(const std::string& path) {

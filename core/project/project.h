@@ -19,6 +19,10 @@
 
 #include <nlohmann/json.hpp>
 
+namespace metrofit::machine {
+struct MachineDefinition;  // core/machine/machine.h
+}
+
 namespace metrofit {
 
 /// Kinds of dataset a project may reference.
@@ -28,6 +32,8 @@ inline constexpr const char* kProbePoints = "probe_points";
 inline constexpr const char* kCircularTest = "circular_test";
 inline constexpr const char* kCmmReport = "cmm_report";
 inline constexpr const char* kSetupModel = "setup_model";
+/// A CSV of measured feature values in production order (e.g. bore diameters), charted by SPC.
+inline constexpr const char* kFeatureSeries = "feature_series";
 }  // namespace dataset_kind
 
 /// The studies of a project, in navigator order.
@@ -72,6 +78,17 @@ class Project {
 
   bool operator==(const Project&) const = default;
 };
+
+/// The machine of the matching study, studies.matching.machine (issue 5):
+///   {"topology": "xfyzba" | "ac-table" | "bc-table" (also "ac", "bc"), "LX_mm": .., "LY_mm": ..,
+///    "LZ_mm": .., "LAB_mm": .., "tilt_axis_point_mm": [..], "rotary_axis_point_mm": [..],
+///    "rotary_travel_deg": [[min, max], [min, max]]}   (machine::MachineDefinition::toJson; missing
+/// keys take the topology's preset). Returns false (and leaves *out alone) when the study has none;
+/// ValidationError naming `source` and the field "studies.matching.machine.<key>" when it is invalid.
+/// Project::fromJson runs this check, so a loaded project's machine is valid.
+bool matchingMachine(const Project& project, machine::MachineDefinition* out, const std::string& source = {});
+/// Sets studies.matching.machine to the definition (canonical topology names).
+void setMatchingMachine(Project& project, const machine::MachineDefinition& definition);
 
 /// Reads and validates a project file (FileError / ParseError / ValidationError on bad input).
 Project loadProject(const std::string& path);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -129,6 +130,56 @@ TEST_F(MatchCli, GaSimplexIsThePapersComparison) {
   EXPECT_FALSE(g.at("trace").empty());
   EXPECT_EQ(g.at("out_of_tolerance").at("after").get<int>(), 0);
   EXPECT_EQ(g.at("rough").at("reference_ids").size(), 3u);
+}
+
+TEST_F(MatchCli, HoleTableReportIsReadByContent) {
+  // A PC-DMIS hole table (the layout of the plug-plate reports), no extension: planar, position-only.
+  std::string text =
+      "Plug Plate: 9003\r\nDate: 2021-01-01\r\n\r\n"
+      "    Meas X    Meas Y     Nom X     Nom Y     Err X     Err Y  Meas D   Nom D   Round\r\n";
+  const double nominal[][2] = {{-250, -100}, {-120, 240}, {0, 0}, {60, -280}, {200, 150}, {290, -40}};
+  for (const auto& q : nominal) {
+    // Shifted by (0.04, -0.02) mm and rotated by 0.01 deg (x' = x - y th, y' = y + x th).
+    const double th = 0.01 * 3.14159265358979 / 180.0;
+    const double mx = std::round((q[0] - q[1] * th + 0.04) * 1000) / 1000;
+    const double my = std::round((q[1] + q[0] * th - 0.02) * 1000) / 1000;
+    char line[200];
+    std::snprintf(line, sizeof line, "%10.3f%10.3f%10.3f%10.3f%10.3f%10.3f%8.3f%8.3f%8.3f\r\n", mx, my, q[0],
+                  q[1], mx - q[0], my - q[1], 2.170, 2.167, 0.004);
+    text += line;
+  }
+  test::writeText(tmp.file("D9003_1"), text);
+  const nlohmann::json j = runJson("match --data D9003_1 --method closed-form --tolerance 0.009", tmp);
+  EXPECT_EQ(j.at("points"), 6);
+  EXPECT_EQ(j.at("planar"), true);
+  EXPECT_EQ(j.at("normals"), false);
+  EXPECT_NEAR(j.at("rotation_deg")[2].get<double>(), 0.01, 2e-4);
+  EXPECT_EQ(j.at("rotation_deg")[0].get<double>(), 0.0);
+  EXPECT_NEAR(j.at("translation_mm")[0].get<double>(), 0.04, 1e-3);
+  EXPECT_NEAR(j.at("translation_mm")[1].get<double>(), -0.02, 1e-3);
+  EXPECT_EQ(j.at("after").at("surfaces")[0].at("surface"), "hole D2.167");
+
+  // A bad value: exit 2, one line naming file, line and column.
+  text.replace(text.find("2.170"), 5, "2.1x0");
+  test::writeText(tmp.file("D9003_2"), text);
+  const CliRun bad = cli("match --data D9003_2 --method closed-form", tmp);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(lines(bad.err), 1) << bad.err;
+  EXPECT_NE(bad.err.find("D9003_2:5:7: field 'Meas D': '2.1x0' is not a finite number"), std::string::npos)
+      << bad.err;
+}
+
+TEST_F(MatchCli, SimulatedSPieceIsThePapersCase) {
+  const CliRun sim = cli("simulate probe --shape s-piece --seed 7 --out s.csv", tmp);
+  ASSERT_EQ(sim.code, 0) << sim.err;
+  EXPECT_EQ(test::readText(tmp.file("s.csv")),
+            test::readText((test::sourceDir() / "resources/demo/data/probe_s_piece.csv").string()));
+  const nlohmann::json j = runJson("match --data s.csv --method sade --tolerance 0.035", tmp);
+  EXPECT_EQ(j.at("points"), 40);
+  EXPECT_EQ(j.at("out_of_tolerance").at("before"), 40);
+  EXPECT_EQ(j.at("out_of_tolerance").at("after"), 0);
+  EXPECT_NEAR(j.at("before").at("mean_over_tolerance_mm").get<double>(), 1.88, 0.05);
+  EXPECT_EQ(cli("simulate probe --shape cube", tmp).code, 2);
 }
 
 }  // namespace

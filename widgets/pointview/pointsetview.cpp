@@ -6,25 +6,32 @@
 //       v_i = d_i * n_i   when the set has normals (d_i = (p_i - q_i) . n_i, the deviation along the
 //                         nominal normal; tangential probe offsets are not errors and are not drawn),
 //       v_i = p_i - q_i   otherwise (d_i = |p_i - q_i|).
-//   A line joins q_i and t_i; the tip sphere is coloured by d_i.
+//   A line joins q_i and t_i (the deviation vector); the tip sphere is coloured by d_i.
 // - After matching (setAfter): tips t'_i = q'_i + k * v'_i with v'_i = d'_i * n_i (with normals; the
-//   matching rotation is far too small to turn n_i visibly) or p_i - q'_i, coloured by d'_i, drawn
-//   solid while the "before" nominal points, tips and lines fade.
+//   matching rotation is far too small to turn n_i visibly) or p_i - q'_i, coloured by d'_i. Display
+//   Combined draws them solid while the "before" nominal points, tips and lines fade; Display::After
+//   draws only the after state (the transformed nominal points in grey), Display::Before only the
+//   before state.
 // - Colour: Moreland's diverging cool-warm map (blue - light grey - red) over a symmetric range
-//   [-r, r], r = max |d| over before and after rounded up to 1, 2 or 5 x 10^n, shown by a scalar
-//   bar "deviation (mm)".
-// - An axes marker (X red, Y green, Z blue) in the lower left corner follows the camera; a caption
-//   states the exaggeration. White background so that screenshots print well.
+//   [-r, r], r = max |d| of the shown states rounded up to 1, 2 or 5 x 10^n (or setColourRange),
+//   shown by a scalar bar "deviation (mm)" in its own strip right of the scene (so it never covers
+//   points). With a tolerance T > 0 the map has a tolerance band: green within [-T, T], light to dark
+//   blue below -T, light to dark red above T, and points with |d| > T are drawn larger.
+// - An axes marker (X red, Y green, Z blue) in the lower left corner follows the camera; a title at
+//   the top, a caption at the bottom states the exaggeration. White background so that screenshots
+//   print well.
 #include "widgets/pointview/pointsetview.h"
 
 #include <QGuiApplication>
 #include <QImage>
 #include <QLabel>
+#include <QPointer>
 #include <QResizeEvent>
 #include <QSurfaceFormat>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -42,11 +49,13 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <Eigen/Geometry>
 
 #include "core/matching/probe_points.h"
 #include "widgets/pointview/vtkglwidget.h"
@@ -66,6 +75,12 @@ constexpr double kTextColour[3] = {0.10, 0.10, 0.10};
 constexpr double kFadedOpacity = 0.25;
 constexpr double kNominalPointSize = 5.0;
 constexpr double kMeasuredPointSize = 9.0;
+constexpr double kOutOfTolerancePointSize = 15.0;
+constexpr double kToleranceGreen[3] = {0.20, 0.63, 0.17};
+constexpr double kColdLight[3] = {0.55, 0.70, 0.95};
+constexpr double kWarmLight[3] = {0.98, 0.62, 0.45};
+/// The scene takes the left part of the window, the scalar bar the strip right of it.
+constexpr double kSceneWidth = 0.84;
 /// Colour range used when every deviation is zero (1 µm).
 constexpr double kMinimumRange = 1e-3;
 
@@ -197,15 +212,51 @@ struct MarkerLayer {
 constexpr double kBeforeLineColour[3] = {0.40, 0.40, 0.40};
 constexpr double kAfterLineColour[3] = {0.10, 0.10, 0.10};
 
+/// One drawn set: spheres at the tips coloured by deviation (the out-of-tolerance ones larger) and
+/// the lines q -> tip.
+struct TipLayer {
+  MarkerLayer inside;   ///< spheres within tolerance (all of them without a tolerance) and the lines
+  MarkerLayer outside;  ///< larger spheres out of tolerance (no lines)
+
+  void init(vtkRenderer* renderer, vtkColorTransferFunction* colours, const double* lineColour) {
+    inside.init(renderer, kMeasuredPointSize, colours, lineColour);
+    outside.init(renderer, kOutOfTolerancePointSize, colours, nullptr);
+  }
+  void set(const std::vector<Vec3>& tips, const std::vector<double>& deviations,
+           const std::vector<Vec3>& bases, double tolerance) {
+    std::vector<Vec3> inTips, outTips;
+    std::vector<double> inDev, outDev;
+    for (std::size_t i = 0; i < tips.size(); ++i) {
+      const bool out = tolerance > 0.0 && std::abs(deviations[i]) > tolerance;
+      (out ? outTips : inTips).push_back(tips[i]);
+      (out ? outDev : inDev).push_back(deviations[i]);
+    }
+    inside.set(inTips, &inDev, nullptr);
+    inside.lineMapper->SetInputData(makeSegments(bases, tips));
+    inside.lines->SetVisibility(!tips.empty());
+    outside.set(outTips, &outDev, nullptr);
+  }
+  void hide() {
+    inside.hide();
+    outside.hide();
+  }
+  void setOpacity(double opacity) {
+    inside.setOpacity(opacity);
+    outside.setOpacity(opacity);
+  }
+};
+
 /// The VTK scene; exists only when the process can render 3D.
 struct PointSetScene {
   VtkGlWidget* gl = nullptr;
   vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkRenderer> barRenderer;
   vtkNew<vtkColorTransferFunction> colours;
   MarkerLayer nominal;
-  MarkerLayer before;
-  MarkerLayer after;
+  TipLayer before;
+  TipLayer after;
   vtkNew<vtkScalarBarActor> scalarBar;
+  vtkNew<vtkTextActor> title;
   vtkNew<vtkTextActor> caption;
   vtkNew<vtkRenderer> axesRenderer;
   vtkNew<vtkAxesActor> axes;
@@ -214,28 +265,35 @@ struct PointSetScene {
   /// The framing depends on the window's aspect ratio, unknown until the first frame of a hidden
   /// or not yet laid out view: a reset is repeated once just before the next frame.
   bool cameraResetPending = false;
+  int titleLines = 0;  ///< lines of the title; the caption starts below them
+  /// Called after a pending reset was done (views sharing the camera repaint).
+  std::function<void()> onCameraReset;
 
   explicit PointSetScene(QWidget* parent) : gl(new VtkGlWidget(parent)) {
     renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+    renderer->SetViewport(0.0, 0.0, kSceneWidth, 1.0);
+    barRenderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+    barRenderer->SetViewport(kSceneWidth, 0.0, 1.0, 1.0);
+    barRenderer->InteractiveOff();
     colours->SetColorSpaceToDiverging();
     nominal.init(renderer, kNominalPointSize, nullptr, nullptr);
-    before.init(renderer, kMeasuredPointSize, colours, kBeforeLineColour);
-    after.init(renderer, kMeasuredPointSize, colours, kAfterLineColour);
+    before.init(renderer, colours, kBeforeLineColour);
+    after.init(renderer, colours, kAfterLineColour);
     nominal.hide();
     before.hide();
     after.hide();
 
     scalarBar->SetLookupTable(colours);
-    scalarBar->SetTitle("deviation (mm)");
+    scalarBar->SetTitle("deviation\n(mm)");
     scalarBar->SetNumberOfLabels(5);
     scalarBar->SetLabelFormat("%.3g");
     scalarBar->SetMaximumNumberOfColors(256);
     scalarBar->SetOrientationToVertical();
     scalarBar->SetTextPositionToPrecedeScalarBar();  // labels left of the bar, away from the edge
     scalarBar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    scalarBar->GetPositionCoordinate()->SetValue(0.84, 0.08);
-    scalarBar->SetWidth(0.14);
-    scalarBar->SetHeight(0.76);
+    scalarBar->GetPositionCoordinate()->SetValue(0.06, 0.06);
+    scalarBar->SetWidth(0.88);
+    scalarBar->SetHeight(0.80);
     scalarBar->SetMaximumWidthInPixels(130);
     scalarBar->SetBarRatio(0.3);
     scalarBar->SetVerticalTitleSeparation(6);
@@ -243,7 +301,15 @@ struct PointSetScene {
     styleText(scalarBar->GetTitleTextProperty(), 14);
     styleText(scalarBar->GetLabelTextProperty(), 13);
     scalarBar->VisibilityOff();
-    renderer->AddActor2D(scalarBar);
+    barRenderer->AddActor2D(scalarBar);
+
+    title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    title->GetPositionCoordinate()->SetValue(0.015, 0.975);
+    styleText(title->GetTextProperty(), 16);
+    title->GetTextProperty()->BoldOn();
+    title->GetTextProperty()->SetVerticalJustificationToTop();
+    title->VisibilityOff();
+    renderer->AddActor2D(title);
 
     caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     caption->GetPositionCoordinate()->SetValue(0.015, 0.975);
@@ -254,7 +320,7 @@ struct PointSetScene {
 
     // Axes marker: a second, non-interactive renderer in the lower left corner on layer 1 whose
     // camera copies the main camera's orientation before every frame.
-    axesRenderer->SetViewport(0.0, 0.0, 0.18, 0.22);
+    axesRenderer->SetViewport(0.0, 0.0, 0.18 * kSceneWidth, 0.22);
     axesRenderer->SetLayer(1);
     axesRenderer->InteractiveOff();
     axes->SetShaftTypeToCylinder();
@@ -269,6 +335,7 @@ struct PointSetScene {
     vtkGenericOpenGLRenderWindow* window = gl->renderWindow();
     window->SetNumberOfLayers(2);
     window->AddRenderer(renderer);
+    window->AddRenderer(barRenderer);
     window->AddRenderer(axesRenderer);
     startObserver = renderer->AddObserver(vtkCommand::StartEvent, this, &PointSetScene::onStartRender);
   }
@@ -282,8 +349,15 @@ struct PointSetScene {
     if (cameraResetPending) {
       resetCamera();
       cameraResetPending = false;
+      if (onCameraReset) onCameraReset();
+    }
+    const int* size = renderer->GetSize();
+    if (size[1] > 0) {
+      const double below = titleLines > 0 ? 6.0 + 21.0 * titleLines : 0.0;  // title: 16 pt lines
+      caption->GetPositionCoordinate()->SetValue(0.015, 0.975 - below / size[1]);
     }
     vtkCamera* main = renderer->GetActiveCamera();
+    renderer->ResetCameraClippingRange();  // a shared camera may have been moved from the other view
     double direction[3];
     main->GetDirectionOfProjection(direction);
     vtkCamera* camera = axesRenderer->GetActiveCamera();
@@ -294,10 +368,28 @@ struct PointSetScene {
     camera->Zoom(1.5);  // ResetCamera fits the bounding sphere: too small for a corner marker
   }
 
-  void setColourRange(double range) {
+  void setColourRange(double range, double tolerance) {
     colours->RemoveAllPoints();
-    colours->AddRGBPoint(-range, kColdEnd[0], kColdEnd[1], kColdEnd[2]);
-    colours->AddRGBPoint(range, kWarmEnd[0], kWarmEnd[1], kWarmEnd[2]);
+    if (tolerance > 0.0 && tolerance < range) {
+      // Tolerance band: green inside, a visible step to the light ends outside.
+      const double step = 1e-6 * range;
+      colours->AddRGBPoint(-range, kColdEnd[0], kColdEnd[1], kColdEnd[2]);
+      colours->AddRGBPoint(-tolerance - step, kColdLight[0], kColdLight[1], kColdLight[2]);
+      colours->AddRGBPoint(-tolerance, kToleranceGreen[0], kToleranceGreen[1], kToleranceGreen[2]);
+      colours->AddRGBPoint(tolerance, kToleranceGreen[0], kToleranceGreen[1], kToleranceGreen[2]);
+      colours->AddRGBPoint(tolerance + step, kWarmLight[0], kWarmLight[1], kWarmLight[2]);
+      colours->AddRGBPoint(range, kWarmEnd[0], kWarmEnd[1], kWarmEnd[2]);
+      colours->SetColorSpaceToRGB();
+    } else if (tolerance > 0.0) {
+      // Everything shown lies within the tolerance.
+      colours->AddRGBPoint(-range, kToleranceGreen[0], kToleranceGreen[1], kToleranceGreen[2]);
+      colours->AddRGBPoint(range, kToleranceGreen[0], kToleranceGreen[1], kToleranceGreen[2]);
+      colours->SetColorSpaceToRGB();
+    } else {
+      colours->AddRGBPoint(-range, kColdEnd[0], kColdEnd[1], kColdEnd[2]);
+      colours->AddRGBPoint(range, kWarmEnd[0], kWarmEnd[1], kWarmEnd[2]);
+      colours->SetColorSpaceToDiverging();
+    }
   }
 
   void resetCamera() {
@@ -311,7 +403,34 @@ struct PointSetScene {
       camera->SetViewUp(0.0, 0.0, 1.0);
     }
     renderer->ResetCamera();
-    camera->Zoom(1.2);  // ResetCamera fits the bounding sphere, which leaves a wide margin
+    // ResetCamera fits the bounding sphere, which leaves a wide margin: zoom in by up to 1.2, as far
+    // as the corners of the bounding box still fit the viewport (flat, wide parts seen obliquely
+    // would otherwise be cut at the sides).
+    double bounds[6];
+    renderer->ComputeVisiblePropBounds(bounds);
+    double zoom = 1.2;
+    if (bounds[0] <= bounds[1]) {
+      double focal[3], position[3], up[3], direction[3];
+      camera->GetFocalPoint(focal);
+      camera->GetPosition(position);
+      camera->GetViewUp(up);
+      camera->GetDirectionOfProjection(direction);
+      const Vec3 f(focal[0], focal[1], focal[2]), d(direction[0], direction[1], direction[2]);
+      const Vec3 u = Vec3(up[0], up[1], up[2]).normalized();
+      const Vec3 r = d.cross(u).normalized();
+      const double distance = (f - Vec3(position[0], position[1], position[2])).norm();
+      const double halfHeight = distance * std::tan(0.5 * camera->GetViewAngle() * 3.14159265358979 / 180.0);
+      const double aspect = std::max(renderer->GetTiledAspectRatio(), 1e-3);
+      double maxX = 0.0, maxY = 0.0;
+      for (int i = 0; i < 8; ++i) {
+        const Vec3 corner(bounds[i & 1], bounds[2 + ((i >> 1) & 1)], bounds[4 + ((i >> 2) & 1)]);
+        maxX = std::max(maxX, std::abs((corner - f).dot(r)));
+        maxY = std::max(maxY, std::abs((corner - f).dot(u)));
+      }
+      if (maxX > 0.0) zoom = std::min(zoom, 0.95 * halfHeight * aspect / maxX);
+      if (maxY > 0.0) zoom = std::min(zoom, 0.95 * halfHeight / maxY);
+    }
+    camera->Zoom(std::max(zoom, 0.2));
     renderer->ResetCameraClippingRange();
   }
 };
@@ -320,6 +439,10 @@ struct PointSetScene {
 
 struct PointSetView::Impl {
   QLabel* message = nullptr;
+  /// linkCamera: the view whose camera this one uses (it frames the shared camera), and the views
+  /// that use this one's camera.
+  QPointer<PointSetView> cameraMaster;
+  std::vector<QPointer<PointSetView>> cameraFollowers;
   std::unique_ptr<PointSetScene> scene;
 
   // The data are kept also without a scene, so the view behaves the same with and without 3D.
@@ -333,6 +456,11 @@ struct PointSetView::Impl {
   std::vector<Vec3> afterNominal;
   std::vector<double> afterDeviations;
   double exaggeration = 100.0;
+  double tolerance = 0.0;
+  double fixedRange = 0.0;
+  double usedRange = kMinimumRange;
+  Display display = Display::Combined;
+  std::string title;
 
   /// q + k * v (see the file comment).
   Vec3 tip(std::size_t i, const Vec3& base, double deviation) const {
@@ -341,46 +469,63 @@ struct PointSetView::Impl {
   }
 
   void rebuild() {
+    const bool showBefore = !hasAfter || display != Display::After;
+    const bool showAfter = hasAfter && display != Display::Before;
+    double maxAbs = 0.0;
+    if (showBefore)
+      for (const double v : deviations) maxAbs = std::max(maxAbs, std::abs(v));
+    if (showAfter)
+      for (const double v : afterDeviations) maxAbs = std::max(maxAbs, std::abs(v));
+    if (tolerance > 0.0) maxAbs = std::max(maxAbs, 2.0 * tolerance);  // the band stays readable
+    usedRange = fixedRange > 0.0 ? fixedRange : (maxAbs > 0.0 ? niceCeil(maxAbs) : kMinimumRange);
     if (!scene) {
       return;
     }
-    std::vector<Vec3> tips(nominal.size());
-    for (std::size_t i = 0; i < nominal.size(); ++i) {
-      tips[i] = tip(i, nominal[i], deviations[i]);
+    if (showBefore) {
+      std::vector<Vec3> tips(nominal.size());
+      for (std::size_t i = 0; i < nominal.size(); ++i) {
+        tips[i] = tip(i, nominal[i], deviations[i]);
+      }
+      scene->nominal.set(nominal, nullptr, nullptr);
+      scene->before.set(tips, deviations, nominal, tolerance);
+    } else {
+      scene->nominal.set(afterNominal, nullptr, nullptr);
+      scene->before.hide();
     }
-    double maxAbs = 0.0;
-    for (const double d : deviations) {
-      maxAbs = std::max(maxAbs, std::abs(d));
-    }
-
-    scene->nominal.set(nominal, nullptr, nullptr);
-    scene->before.set(tips, &deviations, &nominal);
-    if (hasAfter) {
+    if (showAfter) {
       std::vector<Vec3> afterTips(afterNominal.size());
       for (std::size_t i = 0; i < afterNominal.size(); ++i) {
         afterTips[i] = tip(i, afterNominal[i], afterDeviations[i]);
-        maxAbs = std::max(maxAbs, std::abs(afterDeviations[i]));
       }
-      scene->after.set(afterTips, &afterDeviations, &afterNominal);
-      // The nominal points belong to the before state; faded they no longer hide the after tips,
-      // which lie close to them when the matching is good.
-      scene->nominal.setOpacity(kFadedOpacity);
-      scene->before.setOpacity(kFadedOpacity);
+      scene->after.set(afterTips, afterDeviations, afterNominal, tolerance);
     } else {
       scene->after.hide();
-      scene->nominal.setOpacity(1.0);
-      scene->before.setOpacity(1.0);
     }
-    scene->setColourRange(maxAbs > 0.0 ? niceCeil(maxAbs) : kMinimumRange);
+    // Combined: the nominal points belong to the before state; faded they no longer hide the after
+    // tips, which lie close to them when the matching is good.
+    const bool fade = showBefore && showAfter;
+    scene->nominal.setOpacity(fade ? kFadedOpacity : 1.0);
+    scene->before.setOpacity(fade ? kFadedOpacity : 1.0);
+    scene->setColourRange(usedRange, tolerance);
     scene->scalarBar->SetVisibility(!nominal.empty());
+    const std::string tolText = tolerance > 0.0 ? "\ngreen: within +-" +
+                                                      QString::number(tolerance, 'g', 4).toStdString() +
+                                                      " mm; large: out of tolerance"
+                                                : std::string();
 
     const std::string factor = QString::number(exaggeration, 'g', 4).toStdString();
-    std::string text = "grey: nominal points; coloured: measured, displacement x" + factor;
-    if (hasAfter) {
+    std::string text = "grey: nominal points; coloured: measured, deviation vectors x" + factor;
+    if (fade) {
       text += "\nafter matching: solid; before (nominal and measured): faded";
     }
+    text += tolText;
     scene->caption->SetInput(text.c_str());
     scene->caption->SetVisibility(!nominal.empty());
+    scene->title->SetInput(title.c_str());
+    scene->title->SetVisibility(!title.empty());
+    // The caption goes below the title (placed in pixels before each frame, onStartRender).
+    scene->titleLines =
+        title.empty() ? 0 : static_cast<int>(std::count(title.begin(), title.end(), '\n')) + 1;
     scene->gl->update();
   }
 };
@@ -464,6 +609,19 @@ void PointSetView::clearAfter() {
   d->rebuild();
 }
 
+bool PointSetView::hasAfter() const {
+  return d->hasAfter;
+}
+
+void PointSetView::setDisplay(Display display) {
+  d->display = display;
+  d->rebuild();
+}
+
+PointSetView::Display PointSetView::display() const {
+  return d->display;
+}
+
 void PointSetView::setExaggeration(double factor) {
   if (!std::isfinite(factor) || factor <= 0.0) {
     throw std::invalid_argument("PointSetView::setExaggeration: factor must be positive and finite, got " +
@@ -473,14 +631,69 @@ void PointSetView::setExaggeration(double factor) {
   d->rebuild();
 }
 
+double PointSetView::exaggeration() const {
+  return d->exaggeration;
+}
+
+void PointSetView::setTolerance(double toleranceMm) {
+  if (!std::isfinite(toleranceMm) || toleranceMm < 0.0) {
+    throw std::invalid_argument("PointSetView::setTolerance: tolerance must be >= 0 and finite, got " +
+                                std::to_string(toleranceMm));
+  }
+  d->tolerance = toleranceMm;
+  d->rebuild();
+}
+
+void PointSetView::setColourRange(double rangeMm) {
+  if (!std::isfinite(rangeMm) || rangeMm < 0.0) {
+    throw std::invalid_argument("PointSetView::setColourRange: range must be >= 0 and finite, got " +
+                                std::to_string(rangeMm));
+  }
+  d->fixedRange = rangeMm;
+  d->rebuild();
+}
+
+double PointSetView::colourRange() const {
+  return d->usedRange;
+}
+
+void PointSetView::setTitle(const QString& title) {
+  d->title = title.toStdString();
+  d->rebuild();
+}
+
 void PointSetView::resetCamera() {
   if (!d->scene) {
+    return;
+  }
+  if (d->cameraMaster) {
+    d->cameraMaster->resetCamera();  // one framing for the shared camera: the master's
     return;
   }
   d->scene->planar = d->planar;
   d->scene->resetCamera();
   d->scene->cameraResetPending = true;
   d->scene->gl->update();
+}
+
+void PointSetView::linkCamera(PointSetView* other) {
+  if (other == nullptr || other == this || !d->scene || !other->d->scene) {
+    return;
+  }
+  d->scene->renderer->SetActiveCamera(other->d->scene->renderer->GetActiveCamera());
+  VtkGlWidget* mine = d->scene->gl;
+  VtkGlWidget* theirs = other->d->scene->gl;
+  connect(mine, &VtkGlWidget::interactorRendered, theirs, qOverload<>(&QWidget::update));
+  connect(theirs, &VtkGlWidget::interactorRendered, mine, qOverload<>(&QWidget::update));
+  d->cameraMaster = other;
+  other->d->cameraFollowers.emplace_back(this);
+  other->d->scene->onCameraReset = [master = other] {
+    for (const QPointer<PointSetView>& f : master->d->cameraFollowers) {
+      if (f && f->d->scene)
+        QMetaObject::invokeMethod(f->d->scene->gl, qOverload<>(&QWidget::update), Qt::QueuedConnection);
+    }
+  };
+  mine->update();
 }
 
 std::array<double, 3> PointSetView::cameraPosition() const {

@@ -191,6 +191,7 @@ void VtkGlWidget::onWindowEvent(vtkObject* /*caller*/, unsigned long eventId, vo
 
 void VtkGlWidget::onInteractorRender(vtkObject* /*caller*/, unsigned long /*eventId*/, void* /*callData*/) {
   update();
+  emit interactorRendered();
 }
 
 void VtkGlWidget::setEventInformation(const QPointF& position, Qt::KeyboardModifiers modifiers, int repeat) {

@@ -35,6 +35,10 @@ class VtkGlWidget : public QOpenGLWidget {
   vtkGenericOpenGLRenderWindow* renderWindow() const { return window_; }
   vtkGenericRenderWindowInteractor* interactor() const { return interactor_; }
 
+ signals:
+  /// The interactor asked for a frame (the user moved the camera): views sharing the camera repaint.
+  void interactorRendered();
+
  protected:
   void initializeGL() override;
   void resizeGL(int w, int h) override;

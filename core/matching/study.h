@@ -1,0 +1,70 @@
+#pragma once
+// The matching study of a project end to end (issue 5), shared by the GUI page and the report:
+// every method on the study's probe points (rough + SADE, rough + GA-simplex, closed form,
+// minimax), the machine adjustment values of the primary method's posture for the study's machine,
+// and the remeasure loop of Step 7 with the simulator as machine and CMM.
+//
+// Project keys (studies.matching, all optional): "dataset" (a probe_points dataset id; default the
+// first of that kind), "tolerance_mm" (>= 0, default 0.05), "method" (sade | ga-simplex |
+// closed-form | minimax, the primary method, default sade), "allow_scale" (bool), "seed" (>= 0),
+// "machine" (project.h matchingMachine; default the XFYZBA preset).
+//
+// The remeasure loop's cell: the workpiece's true posture is the primary fit's rigid posture (R, t),
+// the probe repeats the nominal points with `remeasureNoiseMm` noise; see remeasure.h.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/machine/machine.h"
+#include "core/matching/matching.h"
+#include "core/matching/remeasure.h"
+
+namespace metrofit {
+class Project;
+}
+
+namespace metrofit::matching {
+
+struct MatchingStudyOptions {
+  double toleranceMm = 0.05;
+  bool allowScale = false;
+  DofLocks locks;  ///< user locks
+  std::uint64_t seed = 1;
+  MatchMethod primary = MatchMethod::Sade;
+  /// Methods to run, in the order of the results table (the primary one is always run).
+  std::vector<MatchMethod> methods{MatchMethod::Sade, MatchMethod::GaSimplex, MatchMethod::ClosedForm,
+                                   MatchMethod::Minimax};
+  machine::MachineDefinition machine;
+  bool remeasure = true;
+  double remeasureNoiseMm = 0.006;
+};
+
+struct MatchingStudyResult {
+  std::vector<MatchResult> runs;  ///< in the order of options.methods
+  std::vector<double> seconds;    ///< wall time per run
+  MatchMethod primary = MatchMethod::Sade;
+  machine::MachineDefinition machine;
+  machine::Adjustment adjustment;  ///< for the primary run's posture
+  std::optional<RemeasureResult> remeasure;
+
+  /// The run of a method, or nullptr when it was not run.
+  const MatchResult* of(MatchMethod method) const;
+  /// The primary run (always present).
+  const MatchResult& primaryRun() const;
+};
+
+/// Runs the study. InputError on bad data or options (as matchPosture). The observer sees the
+/// iterations of every run and may stop the study.
+MatchingStudyResult runMatchingStudy(const ProbePointSet& set, const MatchingStudyOptions& options,
+                                     Observer* observer = nullptr);
+
+/// The study's dataset id and options from the project's studies.matching (see above); an empty id
+/// when the project has no probe_points dataset. ValidationError naming `source` and the field.
+struct MatchingStudySettings {
+  std::string datasetId;
+  MatchingStudyOptions options;
+};
+MatchingStudySettings matchingStudySettings(const Project& project, const std::string& source = {});
+
+}  // namespace metrofit::matching

@@ -1,0 +1,264 @@
+// The matching page (app/gui/matchingpage.h) under xvfb-run (QT_QPA_PLATFORM=xcb, the 3D views render):
+// the S-piece project, Run in the worker with progress and Cancel, the results tables against
+// core/matching, method / tolerance / lock controls, showView, the before / after views (pixels, linked
+// camera) and bad data. Grabs go to $METROFIT_TEST_OUT/matchingpage for people to look at.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSurfaceFormat>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <cmath>
+#include <memory>
+
+#include "app/gui/matchingpage.h"
+#include "core/project/project.h"
+#include "core/sim/probe_sim.h"
+#include "testsupport.h"
+#include "widgets/document/projectdocument.h"
+#include "widgets/pointview/matchingcurveview.h"
+#include "widgets/pointview/pointsetview.h"
+
+namespace metrofit {
+namespace {
+
+class QtApplicationEnvironment : public ::testing::Environment {
+ public:
+  void SetUp() override {
+    QSurfaceFormat::setDefaultFormat(PointSetView::surfaceFormat());
+    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+      runtime_ = std::make_unique<QTemporaryDir>();
+      ASSERT_TRUE(runtime_->isValid());
+      qputenv("XDG_RUNTIME_DIR", QFile::encodeName(runtime_->path()));
+    }
+    app_ = std::make_unique<QApplication>(argc_, argv_);
+  }
+  void TearDown() override {
+    app_.reset();
+    runtime_.reset();
+  }
+
+ private:
+  int argc_ = 1;
+  char name_[18] = "matchingpage_test";
+  char* argv_[2] = {name_, nullptr};
+  std::unique_ptr<QTemporaryDir> runtime_;
+  std::unique_ptr<QApplication> app_;
+};
+
+[[maybe_unused]] ::testing::Environment* const kQtEnvironment =
+    ::testing::AddGlobalTestEnvironment(new QtApplicationEnvironment);
+
+int countWhere(const QImage& image, const std::function<bool(QColor)>& f) {
+  int n = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) n += f(QColor(image.pixel(x, y))) ? 1 : 0;
+  return n;
+}
+bool reddish(QColor c) {
+  return c.red() > 150 && c.green() < 110 && c.blue() < 110;
+}
+bool bluish(QColor c) {
+  return c.blue() > 150 && c.red() < 120 && c.green() < 150;
+}
+bool greenish(QColor c) {
+  return c.green() > 120 && c.red() < 100 && c.blue() < 100;
+}
+
+class MatchingPageTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(PointSetView::canRender3D()) << "run under xvfb-run with QT_QPA_PLATFORM=xcb";
+    ASSERT_TRUE(dir_.isValid());
+    ProbeSimOptions o = ProbeSimOptions::sPieceDefaults();
+    o.seed = 7;
+    set_ = simulateProbing(o);
+    test::writeText(dir_.filePath(QStringLiteral("s.csv")).toStdString(), probePointsToCsv(set_));
+    test::writeText(dir_.filePath(QStringLiteral("bad.csv")).toStdString(),
+                    "id,qx,qy,px,py\nA,0,0,0,0\nA,1,0,1,0\n");
+    Project p;
+    p.name = "matching page test";
+    p.datasets.push_back({"s_piece", dataset_kind::kProbePoints, "s.csv", "S-piece", ""});
+    p.datasets.push_back({"bad", dataset_kind::kProbePoints, "bad.csv", "duplicate ids", ""});
+    p.studies["matching"] = {
+        {"dataset", "s_piece"}, {"tolerance_mm", 0.035}, {"machine", {{"topology", "ac"}}}};
+    const QString path = dir_.filePath(QStringLiteral("p.metrofit"));
+    saveProject(p, path.toStdString());
+    document_.load(path);
+    page_ = std::make_unique<MatchingPage>(&document_);
+    page_->resize(1400, 900);
+    page_->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(page_.get()));
+  }
+
+  void save(const QImage& image, const QString& name) {
+    const QDir out(QString::fromStdString((test::outDir() / "matchingpage").string()));
+    QDir().mkpath(out.path());
+    EXPECT_TRUE(image.save(out.filePath(name)));
+  }
+
+  QTemporaryDir dir_;
+  ProbePointSet set_;
+  ProjectDocument document_;
+  std::unique_ptr<MatchingPage> page_;
+};
+
+TEST_F(MatchingPageTest, RunFillsEveryTableWithTheCoreResults) {
+  EXPECT_EQ(page_->currentDataset(), QStringLiteral("s_piece"));  // the study's dataset
+  EXPECT_TRUE(page_->errorMessage().isEmpty()) << page_->errorMessage().toStdString();
+  ASSERT_TRUE(page_->runNow()) << page_->errorMessage().toStdString();
+  const auto& res = page_->result();
+  ASSERT_TRUE(res.has_value());
+  EXPECT_EQ(res->runs.size(), 4u);
+  EXPECT_EQ(res->machine.topology, machine::Topology::AcTable);
+
+  // Methods: rough + four methods; the SADE row's numbers are the core result's.
+  QTableWidget* methods = page_->methodsTable();
+  ASSERT_EQ(methods->rowCount(), 5);
+  const matching::MatchResult& sade = *res->of(matching::MatchMethod::Sade);
+  EXPECT_EQ(methods->item(1, 11)->text(), QStringLiteral("0 / 40"));
+  EXPECT_EQ(methods->item(1, 10)->text(), QStringLiteral("40 / 40"));
+  EXPECT_NEAR(QLocale().toDouble(methods->item(1, 8)->text()), sade.after.overall.rmseMm, 1e-5);
+  EXPECT_NEAR(QLocale().toDouble(methods->item(1, 3)->text()), sade.pose.anglesDeg().z(), 1e-4);
+
+  // Machine: AC trunnion, SA / SC.
+  QTableWidget* machine = page_->machineTable();
+  ASSERT_EQ(machine->rowCount(), 6);
+  EXPECT_EQ(machine->item(3, 0)->text(), QStringLiteral("SA"));
+  EXPECT_EQ(machine->item(4, 0)->text(), QStringLiteral("SC"));
+  EXPECT_NEAR(QLocale().toDouble(machine->item(0, 1)->text()), res->adjustment.linearMm.x(), 1e-4);
+
+  // Remeasure loop: first round all out, last none.
+  QTableWidget* loop = page_->remeasureTable();
+  ASSERT_GE(loop->rowCount(), 2);
+  EXPECT_EQ(loop->item(0, 2)->text(), QStringLiteral("40 / 40"));
+  EXPECT_EQ(loop->item(loop->rowCount() - 1, 2)->text(), QStringLiteral("0 / 40"));
+
+  // Curve: SADE and GA-simplex; points: before and after deviations.
+  EXPECT_EQ(page_->curveView()->curveNames(),
+            (QStringList{QStringLiteral("GA-simplex"), QStringLiteral("SADE")}));
+  ASSERT_EQ(page_->pointTable()->rowCount(), 40);
+  EXPECT_NEAR(QLocale().toDouble(page_->pointTable()->item(0, 3)->text()), sade.after.deviations[0], 1e-4);
+
+  // The method selector switches the posture shown and adjusted, without running again.
+  page_->setMethod(matching::MatchMethod::Minimax);
+  EXPECT_EQ(page_->result()->primary, matching::MatchMethod::Minimax);
+  const matching::MatchResult& mm = *res->of(matching::MatchMethod::Minimax);
+  const machine::Adjustment a = machine::adjustmentFor(res->machine, mm.pose.rotation, mm.pose.translation);
+  EXPECT_NEAR(QLocale().toDouble(machine->item(3, 1)->text()), a.rotaryDeg[0], 1e-5);
+
+  // A tighter tolerance re-evaluates the counts.
+  page_->setTolerance(0.001);
+  EXPECT_NE(methods->item(1, 11)->text(), QStringLiteral("0 / 40"));
+}
+
+TEST_F(MatchingPageTest, WorkerRunReportsFinishesAndCanBeCancelled) {
+  QSignalSpy finished(page_.get(), &MatchingPage::finished);
+  page_->startRun();
+  EXPECT_TRUE(page_->isRunning());  // until finished() is delivered
+  EXPECT_FALSE(page_->runNow()) << "no second run while the worker runs";
+  ASSERT_TRUE(finished.count() == 1 || finished.wait(30000));
+  EXPECT_FALSE(page_->isRunning());
+  ASSERT_TRUE(page_->result().has_value());
+  EXPECT_EQ(page_->result()->runs.size(), 4u);
+
+  // Locks: rz and z held at 0 give a constrained optimum with exactly those values.
+  page_->setLocked(2, true);
+  page_->setLocked(5, true);
+  ASSERT_TRUE(page_->runNow());
+  for (const matching::MatchResult& r : page_->result()->runs) {
+    EXPECT_NEAR(r.pose.anglesDeg().z(), 0.0, 1e-9) << matching::toString(r.method);
+    EXPECT_NEAR(r.pose.translation.z(), 0.0, 1e-12) << matching::toString(r.method);
+  }
+
+  // Cancel right after the start: the run ends early (SADE stops, the study stops after it). A
+  // large set (20000 points: a full SADE run takes far longer than the cancel) keeps this
+  // deterministic on a loaded machine.
+  page_->setLocked(2, false);
+  page_->setLocked(5, false);
+  ProbeSimOptions big = ProbeSimOptions::sPieceDefaults();
+  ProbePointSet large;
+  large.hasNormals = true;
+  for (int copy = 0; copy < 500; ++copy) {
+    big.seed = static_cast<std::uint64_t>(copy + 1);
+    for (ProbePoint p : simulateProbing(big).points) {
+      p.id = "C" + std::to_string(copy) + "_" + p.id;
+      large.points.push_back(std::move(p));
+    }
+  }
+  test::writeText(dir_.filePath(QStringLiteral("large.csv")).toStdString(), probePointsToCsv(large));
+  Project p = document_.project();
+  p.datasets.push_back({"large", dataset_kind::kProbePoints, "large.csv", "20000 points", ""});
+  saveProject(p, document_.fileName().toStdString());
+  document_.load(document_.fileName());
+  page_->selectDataset(QStringLiteral("large"));
+  ASSERT_EQ(page_->currentDataset(), QStringLiteral("large"));
+  ASSERT_TRUE(page_->errorMessage().isEmpty()) << page_->errorMessage().toStdString();
+  finished.clear();
+  page_->startRun();
+  page_->cancelRun();
+  ASSERT_TRUE(finished.count() == 1 || finished.wait(30000));
+  ASSERT_TRUE(page_->result().has_value());
+  EXPECT_EQ(page_->result()->runs.size(), 1u);
+  EXPECT_EQ(page_->result()->runs[0].run.termination, Termination::Cancelled);
+}
+
+TEST_F(MatchingPageTest, BeforeAndAfterViewsAreReadableAndShareTheCamera) {
+  page_->showView(QStringLiteral("3d"));
+  ASSERT_TRUE(page_->result().has_value());
+  QTest::qWait(100);
+  const QImage before = page_->beforeView()->renderImage();
+  const QImage after = page_->afterView()->renderImage();
+  ASSERT_FALSE(before.isNull());
+  ASSERT_FALSE(after.isNull());
+  save(before, QStringLiteral("before.png"));
+  save(after, QStringLiteral("after.png"));
+  save(page_->grab().toImage(), QStringLiteral("page_3d.png"));
+  // Scene only (left of the scalar bar strip, above the axes marker row).
+  const QRect scene(0, 0, static_cast<int>(0.82 * before.width()), static_cast<int>(0.78 * before.height()));
+  const int redBefore = countWhere(before.copy(scene), reddish),
+            blueBefore = countWhere(before.copy(scene), bluish);
+  const int greenAfter = countWhere(after.copy(scene), greenish),
+            redAfter = countWhere(after.copy(scene), reddish);
+  EXPECT_GT(redBefore + blueBefore, 400) << "before: the out-of-tolerance points are red / blue";
+  EXPECT_GT(greenAfter, 200) << "after: the points are green (inside the tolerance)";
+  EXPECT_LT(redAfter, 50);
+  EXPECT_LT(countWhere(before.copy(scene), greenish), greenAfter / 4);
+  // The scalar bar has its own strip: its colours are right of the scene.
+  const QRect strip(static_cast<int>(0.86 * before.width()), 0,
+                    before.width() - static_cast<int>(0.86 * before.width()), before.height());
+  EXPECT_GT(countWhere(before.copy(strip), greenish), 20);
+  EXPECT_GT(countWhere(before.copy(strip), reddish), 20);
+  // One camera for both views.
+  EXPECT_EQ(page_->beforeView()->cameraPosition(), page_->afterView()->cameraPosition());
+  EXPECT_EQ(page_->beforeView()->exaggeration(), page_->afterView()->exaggeration());
+
+  page_->showView(QStringLiteral("convergence"));
+  QTest::qWait(50);
+  save(page_->grab().toImage(), QStringLiteral("page_convergence.png"));
+  page_->showView(QStringLiteral("remeasure"));
+  QTest::qWait(50);
+  save(page_->grab().toImage(), QStringLiteral("page_remeasure.png"));
+}
+
+TEST_F(MatchingPageTest, BadDataShowAReadableMessage) {
+  page_->selectDataset(QStringLiteral("bad"));
+  EXPECT_EQ(page_->currentDataset(), QStringLiteral("bad"));
+  EXPECT_TRUE(page_->errorMessage().contains(QStringLiteral("duplicate point id 'A'")))
+      << page_->errorMessage().toStdString();
+  EXPECT_FALSE(page_->runNow());
+  EXPECT_FALSE(page_->result().has_value());
+  page_->selectDataset(QStringLiteral("s_piece"));
+  EXPECT_TRUE(page_->errorMessage().isEmpty());
+  EXPECT_TRUE(page_->runNow());
+}
+
+}  // namespace
+}  // namespace metrofit
