@@ -275,5 +275,141 @@ TEST(KinematicCli, SpcBadInputExits2WithOneLine) {
   EXPECT_EQ(lines(notNumber.err), 1);
 }
 
+// ---- simulate circular / simulate bores --------------------------------------------------------
+
+/// The documented commands of the bundled demo data (resources/demo/README.md, demo.metrofit).
+const char* const kDemoCircular =
+    "simulate circular --radius 50 --points 360 --x-angle 0.01 --y-angle -0.02 --origin 0.004,-0.003 "
+    "--noise 0.0005 --seed 7";
+const char* const kDemoBores =
+    "simulate bores --parts 25 --radius 50 --points 90 --x-angle 0.01 --y-angle -0.02 --origin 0.004,-0.003 "
+    "--noise 0.0005 --scatter 0.002 --drift 0.0001 --seed 7";
+
+TEST(KinematicCli, SimulateCircularWritesTheCircularTestOfTheSimulator) {
+  test::TempDir tmp;
+  const CliRun r =
+      cli("simulate circular --radius 50 --centre 10,-5 --points 36 --x-angle 0.01 --y-angle -0.02 --origin "
+          "0.004,-0.003 --noise 0 --seed 7 --out c.csv",
+          tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err,
+            "simulate circular: 72 points (36 CCW, then 36 CW), R 50 mm, squareness -0.03 deg, noise 0 mm, "
+            "seed 7\n");
+  EXPECT_TRUE(r.out.empty());
+  const std::string text = test::readText(tmp.file("c.csv"));
+  EXPECT_EQ(text.rfind("# metrofit-cli simulate circular: R 50 mm about (10, -5) mm, 36 points per loop", 0),
+            0u)
+      << text.substr(0, 200);
+  const MeasuredPath path = readMeasuredPath(tmp.file("c.csv"));
+  CircularSimOptions o;
+  o.radiusMm = 50.0;
+  o.centreMm = Eigen::Vector2d(10.0, -5.0);
+  o.pointsPerLoop = 36;
+  o.errors.originMm = Eigen::Vector2d(0.004, -0.003);
+  o.errors.xAxisAngleDeg = 0.01;
+  o.errors.yAxisAngleDeg = -0.02;
+  o.noiseMm = 0.0;
+  o.seed = 7;
+  const MeasuredPath expected = simulateCircularTest(o);
+  ASSERT_EQ(path.size(), 72u);
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    EXPECT_EQ(path.command[i], expected.command[i]) << i;  // shortest round-trip numbers: exact
+    EXPECT_EQ(path.measured[i], expected.measured[i]) << i;
+  }
+  // CCW first (the angle grows), then CW.
+  EXPECT_NEAR(path.command[1].y() - (-5.0), 50.0 * std::sin(2.0 * std::numbers::pi / 36), 1e-12);
+  EXPECT_NEAR(path.command[37].y() - (-5.0), -50.0 * std::sin(2.0 * std::numbers::pi / 36), 1e-12);
+  // Noise free: identification recovers the errors to rounding.
+  const IdentifyResult id = identifyActuatorErrors(path);
+  EXPECT_NEAR(id.errors.xAxisAngleDeg, 0.01, 1e-9);
+  EXPECT_NEAR(id.errors.yAxisAngleDeg, -0.02, 1e-9);
+  EXPECT_NEAR(id.errors.originMm.x(), 0.004, 1e-9);
+  EXPECT_NEAR(id.errors.originMm.y(), -0.003, 1e-9);
+}
+
+TEST(KinematicCli, SimulateCircularIsDeterministicBySeedAndDefaultsToStdout) {
+  test::TempDir tmp;
+  const CliRun a = cli("simulate circular --seed 3", tmp);
+  const CliRun b = cli("simulate circular --seed 3", tmp);
+  const CliRun c = cli("simulate circular --seed 4", tmp);
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_NE(a.out, c.out);
+  const MeasuredPath path = measuredPathFromCsv(parseCsv(a.out, "stdout"));
+  CircularSimOptions o;
+  o.seed = 3;
+  const MeasuredPath expected = simulateCircularTest(o);  // the simulator's defaults
+  ASSERT_EQ(path.size(), expected.size());
+  for (std::size_t i = 0; i < path.size(); ++i) EXPECT_EQ(path.measured[i], expected.measured[i]) << i;
+  EXPECT_EQ(test::listFolder(tmp.path()), std::vector<std::string>{});
+}
+
+TEST(KinematicCli, SimulateBadOptionsExit2WithOneLineAndNoFile) {
+  test::TempDir tmp;
+  for (const std::string args :
+       {"simulate circular --radius 0 --out c.csv", "simulate circular --points 2 --out c.csv",
+        "simulate circular --x-angle 50 --out c.csv", "simulate circular --y-angle -46 --out c.csv",
+        "simulate circular --noise -1 --out c.csv", "simulate circular --centre 1 --out c.csv",
+        "simulate circular --origin 1,2,3 --out c.csv", "simulate circular --radius abc --out c.csv",
+        "simulate bores --parts 0 --out b.csv", "simulate bores --scatter -0.1 --out b.csv"}) {
+    const CliRun r = cli(args, tmp);
+    EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+    EXPECT_EQ(lines(r.err), 1) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("metrofit-cli: ", 0), 0u) << r.err;
+    const std::string option =
+        args.substr(args.find("--"), args.find(' ', args.find("--")) - args.find("--"));
+    EXPECT_NE(r.err.find(option), std::string::npos) << args << ": " << r.err;
+    EXPECT_EQ(test::listFolder(tmp.path()), std::vector<std::string>{}) << args;
+  }
+}
+
+TEST(KinematicCli, SimulateBoresIsTheLeastSquaresDiameterPlusTheToolError) {
+  test::TempDir tmp;
+  // A round machine (origin error only), no noise, no scatter: every bore is the nominal circle
+  // shifted by the origin error, diameter 2 R.
+  const CliRun r =
+      cli("simulate bores --parts 4 --radius 50 --points 90 --x-angle 0 --y-angle 0 --origin 0.004,-0.003 "
+          "--noise 0 "
+          "--scatter 0 --drift 0 --out b.csv",
+          tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.rfind("simulate bores: 4 parts, nominal diameter 100 mm, mean 100 mm", 0), 0u) << r.err;
+  const CsvTable t = readCsvFile(tmp.file("b.csv"));
+  ASSERT_EQ(t.rowCount(), 4u);
+  const auto d = t.numericColumn("diameter_mm");
+  const auto cx = t.numericColumn("centre_x_mm");
+  const auto cy = t.numericColumn("centre_y_mm");
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(d[i], 100.0, 1e-9) << i;
+    EXPECT_NEAR(cx[i], 0.004, 1e-9) << i;
+    EXPECT_NEAR(cy[i], -0.003, 1e-9) << i;
+  }
+  // A drift of 1 um per part widens the bore by 2 um per part.
+  ASSERT_EQ(
+      cli("simulate bores --parts 4 --x-angle 0 --y-angle 0 --noise 0 --scatter 0 --drift 0.001 --out c.csv",
+          tmp)
+          .code,
+      0);
+  const auto dd = readCsvFile(tmp.file("c.csv")).numericColumn("diameter_mm");
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(dd[i], 100.0 + 0.002 * static_cast<double>(i), 1e-9) << i;
+}
+
+TEST(KinematicCli, DemoDataIsWhatTheDocumentedCommandsWrite) {
+  test::TempDir tmp;
+  ASSERT_EQ(cli(std::string(kDemoCircular) + " --out c.csv", tmp).code, 0);
+  ASSERT_EQ(cli(std::string(kDemoBores) + " --out b.csv", tmp).code, 0);
+  const auto data = test::sourceDir() / "resources/demo/data";
+  EXPECT_EQ(test::readText(tmp.file("c.csv")), test::readText((data / "circular_demo.csv").string()))
+      << "regenerate with: metrofit-cli " << kDemoCircular << " --out resources/demo/data/circular_demo.csv";
+  EXPECT_EQ(test::readText(tmp.file("b.csv")), test::readText((data / "bores_demo.csv").string()))
+      << "regenerate with: metrofit-cli " << kDemoBores << " --out resources/demo/data/bores_demo.csv";
+  // The demo meets the identification targets (0.5 um noise).
+  const IdentifyResult id = identifyActuatorErrors(readMeasuredPath((data / "circular_demo.csv").string()));
+  EXPECT_NEAR(id.errors.xAxisAngleDeg, 0.01, 1e-3);
+  EXPECT_NEAR(id.errors.yAxisAngleDeg, -0.02, 1e-3);
+  EXPECT_NEAR(id.errors.originMm.x(), 0.004, 1e-3);
+  EXPECT_NEAR(id.errors.originMm.y(), -0.003, 1e-3);
+}
+
 }  // namespace
 }  // namespace metrofit

@@ -1,0 +1,468 @@
+#include "app/gui/kinematicspage.h"
+
+#include <QComboBox>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <exception>
+
+#include "app/gui/notesedit.h"
+#include "core/io/file_io.h"
+#include "core/kinematics/export.h"
+#include "widgets/document/projectdocument.h"
+#include "widgets/document/studyinfo.h"
+#include "widgets/kinematics/kinematicsviews.h"
+
+namespace metrofit {
+namespace {
+
+QTableWidget* makeTable(QWidget* parent, const QStringList& header, const QString& name) {
+  auto* t = new QTableWidget(parent);
+  t->setObjectName(name);
+  t->setColumnCount(static_cast<int>(header.size()));
+  t->setHorizontalHeaderLabels(header);
+  t->verticalHeader()->hide();
+  t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  t->setSelectionBehavior(QAbstractItemView::SelectRows);
+  t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  t->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  t->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  t->verticalHeader()->setDefaultSectionSize(t->fontMetrics().height() + 6);
+  return t;
+}
+
+void setRow(QTableWidget* t, int row, const QStringList& cells, const QString& tip = {}) {
+  for (int c = 0; c < cells.size(); ++c) {
+    auto* item = new QTableWidgetItem(cells[c]);
+    if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    if (!tip.isEmpty()) item->setToolTip(tip);
+    t->setItem(row, c, item);
+  }
+}
+
+QString um(double mm, int decimals = 3) {
+  return QString::number(mm * 1000.0, 'f', decimals);
+}
+
+QString deg(double d) {
+  return QString::number(d, 'f', 6);
+}
+
+/// mm with 4 decimals, without "-0.0000".
+QString mm4(double v) {
+  const QString t = QString::number(v, 'f', 4);
+  return t == QLatin1String("-0.0000") ? QStringLiteral("0.0000") : t;
+}
+
+}  // namespace
+
+KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
+    : QWidget(parent),
+      document_(document),
+      combo_(new QComboBox(this)),
+      info_(new QLabel(this)),
+      stack_(new QStackedWidget(this)),
+      message_(new QLabel(this)),
+      tabs_(new QTabWidget(this)),
+      path_(new CircularPathView(this)),
+      polar_(new PolarDeviationView(this)),
+      errors_(nullptr),
+      compensationTable_(nullptr),
+      spc_(new SpcView(this)),
+      identifyButton_(new QPushButton(tr("&Identify"), this)),
+      compensateButton_(new QPushButton(tr("&Compensate"), this)),
+      gcodeButton_(new QPushButton(tr("Export &G-code…"), this)),
+      stepNcButton_(new QPushButton(tr("Export &STEP-NC…"), this)) {
+  setObjectName(QStringLiteral("kinematicsPage"));
+  auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kKinematics)), this);
+  QFont titleFont = title->font();
+  titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
+  titleFont.setBold(true);
+  title->setFont(titleFont);
+  title->setToolTip(studySummary(QString::fromLatin1(study::kKinematics)));
+
+  combo_->setObjectName(QStringLiteral("circularTestCombo"));
+  combo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  combo_->setMinimumContentsLength(14);
+  info_->setWordWrap(true);
+  info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  message_->setObjectName(QStringLiteral("kinematicsMessage"));
+  message_->setWordWrap(true);
+  message_->setAlignment(Qt::AlignCenter);
+  message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+  identifyButton_->setShortcut(QKeySequence(Qt::Key_F5));
+  identifyButton_->setToolTip(
+      tr("Identify the actuator origin and orientation errors of the circular test "
+         "(Levenberg-Marquardt, standard errors from the residuals) (F5)"));
+  compensateButton_->setObjectName(QStringLiteral("compensateButton"));
+  compensateButton_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+  compensateButton_->setToolTip(
+      tr("Compensated references for the nominal circle (Eq. 15 with the identified "
+         "errors), and what they give (Ctrl+K)"));
+  gcodeButton_->setToolTip(tr("Write the compensated references as G-code (G01 blocks)"));
+  stepNcButton_->setToolTip(tr("Write the compensated references as a STEP-NC (ISO 10303-21) file"));
+
+  errors_ = makeTable(this, {tr("error"), tr("identified"), tr("std. error"), tr("simulated")},
+                      QStringLiteral("identifiedErrorTable"));
+  compensationTable_ =
+      makeTable(this, {tr("max radial deviation"), tr("µm")}, QStringLiteral("compensationTable"));
+
+  auto* side = new QWidget(this);
+  auto* sideLayout = new QVBoxLayout(side);
+  sideLayout->setContentsMargins(0, 0, 0, 0);
+  auto* errorsLabel = new QLabel(tr("<b>Identified errors</b> (origin in µm, angles in deg)"), side);
+  auto* compLabel = new QLabel(tr("<b>Compensation</b> of the nominal circle"), side);
+  sideLayout->addWidget(errorsLabel);
+  sideLayout->addWidget(errors_, 3);
+  sideLayout->addWidget(compLabel);
+  sideLayout->addWidget(compensationTable_, 2);
+  side->setMinimumWidth(340);
+
+  auto* pathTab = new QSplitter(Qt::Horizontal, this);
+  pathTab->addWidget(path_);
+  pathTab->addWidget(polar_);
+  pathTab->addWidget(side);
+  pathTab->setStretchFactor(0, 3);
+  pathTab->setStretchFactor(1, 3);
+  pathTab->setStretchFactor(2, 2);
+  pathTab->setChildrenCollapsible(false);
+  pathTab->setSizes({330, 360, 360});
+  tabs_->addTab(pathTab, tr("&Path"));
+  tabs_->addTab(spc_, tr("S&PC"));
+  stack_->addWidget(tabs_);
+  stack_->addWidget(message_);
+
+  auto* top = new QHBoxLayout;
+  auto* comboLabel = new QLabel(tr("C&ircular test:"), this);
+  comboLabel->setBuddy(combo_);
+  top->addWidget(title);
+  top->addSpacing(16);
+  top->addWidget(comboLabel);
+  top->addWidget(combo_);
+  top->addSpacing(12);
+  top->addWidget(identifyButton_);
+  top->addWidget(compensateButton_);
+  top->addWidget(gcodeButton_);
+  top->addWidget(stepNcButton_);
+  top->addStretch(1);
+
+  auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kKinematics), this);
+  notes->setMaximumHeight(60);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(top);
+  layout->addWidget(info_);
+  layout->addWidget(stack_, 1);
+  layout->addWidget(notes);
+
+  connect(combo_, &QComboBox::currentIndexChanged, this, &KinematicsPage::onDatasetChosen);
+  connect(identifyButton_, &QPushButton::clicked, this, [this] { identify(); });
+  connect(compensateButton_, &QPushButton::clicked, this, [this] {
+    if (!compensate()) QMessageBox::warning(this, tr("Compensate"), error_);
+  });
+  connect(gcodeButton_, &QPushButton::clicked, this, &KinematicsPage::onExportGcode);
+  connect(stepNcButton_, &QPushButton::clicked, this, &KinematicsPage::onExportStepNc);
+  connect(document_, &ProjectDocument::changed, this, &KinematicsPage::refresh);
+  refresh();
+}
+
+KinematicsPage::~KinematicsPage() = default;
+
+QString KinematicsPage::currentDataset() const {
+  return combo_->currentData().toString();
+}
+
+void KinematicsPage::selectDataset(const QString& id) {
+  const int index = combo_->findData(id);
+  if (index >= 0) combo_->setCurrentIndex(index);
+}
+
+void KinematicsPage::refresh() {
+  std::vector<DatasetRef> sets = circularTestDatasets(document_->project());
+  const auto it = document_->project().studies.find(study::kKinematics);
+  nlohmann::json settings = it != document_->project().studies.end() ? *it : nlohmann::json();
+  if (settings.is_object()) settings.erase("notes");  // notes edits must not re-run the study
+  std::string json = settings.dump();
+  for (const DatasetRef& d : document_->project().datasets) json += d.id + d.kind + d.path;
+  if (sets == datasets_ && json == studyJson_ && projectFile_ == document_->fileName() && combo_->count() > 0)
+    return;
+  datasets_ = std::move(sets);
+  studyJson_ = std::move(json);
+  projectFile_ = document_->fileName();
+  const QString previous = currentDataset();
+  {
+    const QSignalBlocker blocker(combo_);
+    combo_->clear();
+    for (const DatasetRef& d : datasets_) {
+      const QString id = QString::fromStdString(d.id);
+      combo_->addItem(id, id);
+      combo_->setItemData(combo_->count() - 1, QString::fromStdString(d.description), Qt::ToolTipRole);
+    }
+    int keep = combo_->findData(previous);
+    if (keep < 0) {
+      try {
+        keep = combo_->findData(QString::fromStdString(kinematicStudySettings(document_->project()).dataset));
+      } catch (const std::exception&) {
+        keep = -1;
+      }
+    }
+    combo_->setCurrentIndex(keep >= 0 ? keep : 0);
+  }
+  onDatasetChosen(combo_->currentIndex());
+}
+
+void KinematicsPage::onDatasetChosen(int) {
+  study_.reset();
+  compensation_.reset();
+  identify();
+}
+
+bool KinematicsPage::identify() {
+  error_.clear();
+  study_.reset();
+  compensation_.reset();
+  const QString id = currentDataset();
+  if (id.isEmpty()) {
+    info_->clear();
+    error_ =
+        tr("This project has no circular test. Add a dataset of kind \"circular_test\" (CSV "
+           "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by "
+           "metrofit-cli simulate circular.");
+    message_->setText(error_);
+    stack_->setCurrentWidget(message_);
+    updateButtons();
+    return false;
+  }
+  try {
+    const ProjectDocument* doc = document_;
+    study_ = loadKinematicStudy(
+        document_->project(), [doc](const DatasetRef& d) { return doc->datasetPath(d).toStdString(); },
+        id.toStdString());
+  } catch (const std::exception& e) {
+    error_ = QString::fromStdString(e.what());
+    info_->clear();
+    message_->setText(tr("Cannot identify this circular test:\n%1").arg(error_));
+    stack_->setCurrentWidget(message_);
+    updateButtons();
+    return false;
+  }
+  showStudy();
+  updateButtons();
+  return true;
+}
+
+void KinematicsPage::showStudy() {
+  const KinematicStudyData& s = *study_;
+  const IdentifyResult& r = s.identification;
+  QString info = tr("%1 points, nominal circle R %2 mm about (%3, %4) mm; %n loop(s).", nullptr,
+                    static_cast<int>(s.analysis.loops.size()))
+                     .arg(s.measured.size())
+                     .arg(s.analysis.radiusMm, 0, 'g', 6)
+                     .arg(mm4(s.analysis.centreMm.x()), mm4(s.analysis.centreMm.y()));
+  if (!s.dataset.description.empty())
+    info.prepend(QString::fromStdString(s.dataset.description) + QLatin1Char('\n'));
+  info_->setText(info);
+
+  const std::optional<ActuatorErrors2>& truth = s.settings.simulatedMachine;
+  auto sim = [&](double v, bool micro) {
+    if (!truth) return QStringLiteral("—");
+    return micro ? um(v) : deg(v);
+  };
+  errors_->setRowCount(7);
+  setRow(errors_, 0,
+         {tr("origin x (µm)"), um(r.errors.originMm.x()), um(r.standardErrors.originMm.x()),
+          sim(truth ? truth->originMm.x() : 0.0, true)},
+         tr("Where the tool is at command 0 (Oyr of Eq. 9), x"));
+  setRow(errors_, 1,
+         {tr("origin y (µm)"), um(r.errors.originMm.y()), um(r.standardErrors.originMm.y()),
+          sim(truth ? truth->originMm.y() : 0.0, true)},
+         tr("Where the tool is at command 0 (Oyr of Eq. 9), y"));
+  setRow(errors_, 2,
+         {tr("X axis angle a (deg)"), deg(r.errors.xAxisAngleDeg), deg(r.standardErrors.xAxisAngleDeg),
+          sim(truth ? truth->xAxisAngleDeg : 0.0, false)},
+         tr("The X actuator moves along (cos a, sin a); counter-clockwise positive"));
+  setRow(errors_, 3,
+         {tr("Y axis angle b (deg)"), deg(r.errors.yAxisAngleDeg), deg(r.standardErrors.yAxisAngleDeg),
+          sim(truth ? truth->yAxisAngleDeg : 0.0, false)},
+         tr("The Y actuator moves along (-sin b, cos b); counter-clockwise positive"));
+  setRow(errors_, 4,
+         {tr("squareness b − a (deg)"), deg(r.errors.squarenessDeg()), deg(r.squarenessStdErrDeg),
+          sim(truth ? truth->squarenessDeg() : 0.0, false)},
+         tr("The angle between the axes is 90° + (b − a)"));
+  setRow(errors_, 5, {tr("RMS residual (µm)"), um(r.rmseMm), QString(), QString()},
+         tr("Root mean square of the residual distances after identification"));
+  setRow(errors_, 6,
+         {tr("iterations"), QString::number(r.run.iterations),
+          QString::fromLatin1(toString(r.run.termination)), QString()});
+  errors_->setColumnHidden(3, !truth);
+
+  // Measured path and its radial deviations.
+  PathPlotData pd;
+  pd.centreMm = s.analysis.centreMm;
+  pd.radiusMm = s.analysis.radiusMm;
+  pd.nominal = s.measured.command;
+  pd.measured = s.measured.measured;
+  pd.counterClockwise.assign(s.measured.size(), true);
+  for (const CircularLoop& l : s.analysis.loops) {
+    for (std::size_t i = 0; i < l.points.size(); ++i) pd.counterClockwise[l.first + i] = l.counterClockwise;
+  }
+  pd.title = tr("Path (XY)");
+  path_->setData(pd);
+  PolarPlotData polar;
+  polar.radiusMm = s.analysis.radiusMm;
+  polar.loops = s.analysis.loops;
+  polar.title = tr("Radial deviation (polar, magnified)");
+  polar_->setData(polar);
+
+  compensationTable_->setRowCount(1);
+  setRow(compensationTable_, 0, {tr("measured"), um(s.analysis.maxAbsDeviationMm)});
+
+  if (s.spc) {
+    spc_->setResult(s.spc->result, s.spc->values, QString::fromStdString(s.spc->column),
+                    QString::fromStdString(s.spc->unit));
+  } else if (!s.spcError.empty()) {
+    spc_->setMessage(tr("Cannot chart the SPC series:\n%1").arg(QString::fromStdString(s.spcError)));
+  } else {
+    spc_->setMessage(
+        tr("The kinematics study names no SPC series. Set \"spc\": {\"dataset\", \"column\", \"subgroup\", "
+           "\"lsl\", \"usl\", \"nominal\"} in the project's kinematics study."));
+  }
+  stack_->setCurrentWidget(tabs_);
+}
+
+bool KinematicsPage::compensate() {
+  if (!study_ && !identify()) return false;
+  try {
+    compensation_ = compensateStudy(*study_);
+  } catch (const std::exception& e) {
+    error_ = QString::fromStdString(e.what());
+    updateButtons();
+    return false;
+  }
+  showCompensation();
+  updateButtons();
+  return true;
+}
+
+void KinematicsPage::showCompensation() {
+  const CompensationPreview& c = *compensation_;
+  PathPlotData pd = path_->data();
+  pd.references = c.references;
+  pd.expected = c.expected;
+  path_->setData(pd);
+  PolarPlotData polar = polar_->data();
+  polar.magnification = 0.0;
+  polar.ringStepMm = 0.0;
+  polar.compensated = radialDeviations(c.expected, study_->analysis.centreMm, study_->analysis.radiusMm);
+  polar_->setData(polar);
+
+  int rows = 4 + (c.maxSimulatedMm ? 1 : 0);
+  compensationTable_->setRowCount(rows);
+  int row = 0;
+  setRow(compensationTable_, row++, {tr("measured (before)"), um(c.maxBeforeMm)},
+         tr("Largest |radial deviation| of the measured path from the nominal circle"));
+  setRow(compensationTable_, row++, {tr("identified model, after"), um(c.maxModelMm, 6)},
+         tr("The compensated references run through the identified model (Eq. 9): on the circle up to "
+            "rounding"));
+  setRow(compensationTable_, row++, {tr("expected after (measured residual)"), um(c.maxExpectedMm)},
+         tr("The measured path moved by what the references change: the residual the model does not explain "
+            "(noise, unmodelled effects) stays"));
+  if (c.maxSimulatedMm) {
+    setRow(compensationTable_, row++, {tr("simulated machine, after"), um(*c.maxSimulatedMm)},
+           tr("The references run through the simulated machine (the true errors of the study), noise free"));
+  }
+  setRow(compensationTable_, row++, {tr("largest correction"), um(c.largestCorrectionMm)},
+         tr("Largest |reference − nominal point|"));
+}
+
+void KinematicsPage::updateButtons() {
+  const bool ok = study_.has_value();
+  identifyButton_->setEnabled(!currentDataset().isEmpty());
+  compensateButton_->setEnabled(ok);
+  gcodeButton_->setEnabled(ok);
+  stepNcButton_->setEnabled(ok);
+}
+
+void KinematicsPage::showView(const QString& view) {
+  if (!study_) identify();
+  if (view == QLatin1String("spc")) {
+    tabs_->setCurrentIndex(1);
+  } else {
+    tabs_->setCurrentIndex(0);
+    if (study_ && !compensation_) compensate();
+  }
+}
+
+bool KinematicsPage::exportGcode(const QString& path, QString* error) {
+  if (!compensation_ && !compensate()) {
+    if (error) *error = error_;
+    return false;
+  }
+  try {
+    GcodeOptions o;
+    o.programName = "compensated " + study_->dataset.id;
+    writeFileAtomic(path.toStdString(),
+                    compensatedPathToGcode(compensation_->references, study_->identification.errors, o));
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromStdString(e.what());
+    return false;
+  }
+  return true;
+}
+
+bool KinematicsPage::exportStepNc(const QString& path, QString* error) {
+  if (!compensation_ && !compensate()) {
+    if (error) *error = error_;
+    return false;
+  }
+  try {
+    StepNcOptions o;
+    o.fileName = QFileInfo(path).fileName().toStdString();
+    o.timestamp = QDateTime::currentDateTimeUtc().toString(Qt::ISODate).chopped(1).toStdString();
+    o.projectName = "Metrofit compensated " + study_->dataset.id;
+    writeFileAtomic(path.toStdString(),
+                    compensatedPathToStepNc(compensation_->references, study_->identification.errors, o));
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromStdString(e.what());
+    return false;
+  }
+  return true;
+}
+
+void KinematicsPage::onExportGcode() {
+  const QString dir = QFileInfo(document_->fileName()).absolutePath();
+  const QString file =
+      QFileDialog::getSaveFileName(this, tr("Export compensated path as G-code"),
+                                   QDir(dir).filePath(currentDataset() + QStringLiteral("_compensated.nc")),
+                                   tr("G-code (*.nc *.ngc *.gcode)"));
+  if (file.isEmpty()) return;
+  QString error;
+  if (!exportGcode(file, &error)) QMessageBox::warning(this, tr("Export G-code"), error);
+}
+
+void KinematicsPage::onExportStepNc() {
+  const QString dir = QFileInfo(document_->fileName()).absolutePath();
+  const QString file =
+      QFileDialog::getSaveFileName(this, tr("Export compensated path as STEP-NC"),
+                                   QDir(dir).filePath(currentDataset() + QStringLiteral("_compensated.p21")),
+                                   tr("STEP-NC Part 21 (*.p21 *.stp)"));
+  if (file.isEmpty()) return;
+  QString error;
+  if (!exportStepNc(file, &error)) QMessageBox::warning(this, tr("Export STEP-NC"), error);
+}
+
+}  // namespace metrofit

@@ -1,0 +1,93 @@
+#pragma once
+// The kinematics & SPC study page (issue 6, seed 002): the circular test of the study, identified
+// on load (Levenberg-Marquardt of core/kinematics, milliseconds) with the errors and their standard
+// errors; Compensate makes the compensated references for the nominal circle and shows what they
+// give; Export writes them as G-code or STEP-NC. Two views: "path" (path view, polar deviation plot,
+// tables) and "spc" (X-bar / R charts, histogram, indices of the study's feature series).
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/project/project.h"
+#include "widgets/kinematics/kinematicstudy.h"
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QStackedWidget;
+class QTabWidget;
+class QTableWidget;
+
+namespace metrofit {
+class CircularPathView;
+class PolarDeviationView;
+class ProjectDocument;
+class SpcView;
+
+class KinematicsPage : public QWidget {
+  Q_OBJECT
+ public:
+  explicit KinematicsPage(ProjectDocument* document, QWidget* parent = nullptr);
+  ~KinematicsPage() override;
+
+  /// "path" or "spc": switches to that view with results on it (compensates when not done yet).
+  Q_INVOKABLE void showView(const QString& view);
+
+  /// Identifies the circular test shown (again). False with errorMessage() when it cannot.
+  bool identify();
+  /// Compensated references for the nominal circle; identifies first when needed.
+  bool compensate();
+  /// Write the compensated references (compensating first when needed). False with `error`.
+  bool exportGcode(const QString& path, QString* error = nullptr);
+  bool exportStepNc(const QString& path, QString* error = nullptr);
+
+  void selectDataset(const QString& id);
+  QString currentDataset() const;
+  /// The study as identified, or nullptr.
+  const KinematicStudyData* study() const { return study_ ? &*study_ : nullptr; }
+  const CompensationPreview* compensation() const { return compensation_ ? &*compensation_ : nullptr; }
+  QString errorMessage() const { return error_; }
+
+  QTabWidget* tabs() const { return tabs_; }
+  QTableWidget* errorTable() const { return errors_; }
+  QTableWidget* compensationTable() const { return compensationTable_; }
+  CircularPathView* pathView() const { return path_; }
+  PolarDeviationView* polarView() const { return polar_; }
+  SpcView* spcView() const { return spc_; }
+  QPushButton* compensateButton() const { return compensateButton_; }
+
+ private:
+  void refresh();
+  void onDatasetChosen(int index);
+  void showStudy();
+  void showCompensation();
+  void onExportGcode();
+  void onExportStepNc();
+  void updateButtons();
+
+  ProjectDocument* document_;
+  QComboBox* combo_;
+  QLabel* info_;
+  QStackedWidget* stack_;
+  QLabel* message_;
+  QTabWidget* tabs_;
+  CircularPathView* path_;
+  PolarDeviationView* polar_;
+  QTableWidget* errors_;
+  QTableWidget* compensationTable_;
+  SpcView* spc_;
+  QPushButton* identifyButton_;
+  QPushButton* compensateButton_;
+  QPushButton* gcodeButton_;
+  QPushButton* stepNcButton_;
+  std::optional<KinematicStudyData> study_;
+  std::optional<CompensationPreview> compensation_;
+  QString error_;
+  std::vector<DatasetRef> datasets_;
+  QString projectFile_;
+  std::string studyJson_;
+};
+
+}  // namespace metrofit

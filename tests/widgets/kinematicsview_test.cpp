@@ -1,0 +1,311 @@
+// Tests of the kinematics & SPC views (widgets/kinematics): the polar plot's geometry (a point with
+// +10 um radial deviation at 90 deg lands at R + k d on the screen, in the loop's colour), the
+// automatic magnification, the path view's magnified mapping, the control limits drawn at the
+// values core/spc computes, the histogram bins and the specification limits. Rendered offscreen;
+// grabbed images are saved into $METROFIT_TEST_OUT for a look.
+#include <gtest/gtest.h>
+
+#include <QColor>
+#include <QDir>
+#include <QImage>
+#include <QPainter>
+#include <QTableWidget>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/spc/control_chart.h"
+#include "core/spc/spc.h"
+#include "qtapp.h"
+#include "testsupport.h"
+#include "widgets/kinematics/circularanalysis.h"
+#include "widgets/kinematics/kinematicplots.h"
+#include "widgets/kinematics/kinematicsviews.h"
+
+namespace metrofit {
+namespace {
+
+/// True when pixel `a` is colour `b` drawn over white with at least 45 % coverage (antialiased
+/// lines blend with the white background): a = white - alpha (white - b), alpha >= 0.45.
+bool close(const QColor& a, const QColor& b) {
+  const double pa[3] = {255.0 - a.red(), 255.0 - a.green(), 255.0 - a.blue()};
+  const double pb[3] = {255.0 - b.red(), 255.0 - b.green(), 255.0 - b.blue()};
+  double ab = 0.0, bb = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    ab += pa[i] * pb[i];
+    bb += pb[i] * pb[i];
+  }
+  const double alpha = bb > 0.0 ? ab / bb : 0.0;
+  double residual = 0.0;
+  for (int i = 0; i < 3; ++i) residual += std::abs(pa[i] - alpha * pb[i]);
+  return alpha >= 0.45 && residual <= 30.0 * std::max(alpha, 0.5);
+}
+
+/// True when a pixel within `radius` of p has colour c.
+bool colourNear(const QImage& img, QPointF p, const QColor& c, int radius = 1) {
+  const int x0 = static_cast<int>(std::lround(p.x())), y0 = static_cast<int>(std::lround(p.y()));
+  for (int y = y0 - radius; y <= y0 + radius; ++y) {
+    for (int x = x0 - radius; x <= x0 + radius; ++x) {
+      if (img.valid(x, y) && close(img.pixelColor(x, y), c)) return true;
+    }
+  }
+  return false;
+}
+
+/// Fraction of the pixels of row y between x0 and x1 that have colour c (also y +- 1).
+double rowFraction(const QImage& img, double y, double x0, double x1, const QColor& c) {
+  int hits = 0, total = 0;
+  for (int x = static_cast<int>(x0); x <= static_cast<int>(x1); ++x) {
+    ++total;
+    bool hit = false;
+    for (int dy = -1; dy <= 1; ++dy)
+      hit = hit || close(img.pixelColor(x, static_cast<int>(std::lround(y)) + dy), c);
+    if (hit) ++hits;
+  }
+  return total ? static_cast<double>(hits) / total : 0.0;
+}
+
+void save(const QImage& img, const char* name) {
+  img.save(QDir(QString::fromStdString(test::outDir().string())).filePath(QString::fromLatin1(name)));
+}
+
+/// A CCW loop on R = 50 with zero deviation except +10 um at 90 deg.
+PolarPlotData bumpAt90() {
+  PolarPlotData d;
+  d.radiusMm = 50.0;
+  CircularLoop loop;
+  for (int a = 0; a < 360; ++a) loop.points.push_back({static_cast<double>(a), a == 90 ? 0.010 : 0.0});
+  d.loops.push_back(loop);
+  return d;
+}
+
+TEST(PolarPlot, AutoScaleChoosesRingStepAndMagnification) {
+  PolarPlotData d = bumpAt90();
+  d.autoScale();
+  // Largest deviation 10 um: ring step niceStep(10 um, 2) = 5 um, two rings outside, k the largest
+  // 1/2/5 value with k * 10 um <= 0.4 R = 20 mm: 2000.
+  EXPECT_DOUBLE_EQ(d.ringStepMm, 0.005);
+  EXPECT_DOUBLE_EQ(d.magnification, 2000.0);
+}
+
+TEST(PolarPlot, PlusTenMicrometresAt90DegLandsAtRPlusKd) {
+  PolarDeviationView view;
+  view.resize(520, 600);
+  PolarPlotData d = bumpAt90();
+  d.magnification = 1000.0;
+  d.ringStepMm = 0.005;
+  view.setData(d);
+  const PolarPlotLayout L = view.layout();
+  EXPECT_DOUBLE_EQ(L.magnification(), 1000.0);
+  EXPECT_EQ(L.outerRing(), 2);
+  EXPECT_EQ(L.innerRing(), -1);
+
+  // The centre and the pixel scale from the nominal circle at 0 and 180 deg.
+  const QPointF p0 = view.mapToWidget(0.0, 0.0), p180 = view.mapToWidget(180.0, 0.0);
+  const QPointF centre = (p0 + p180) / 2.0;
+  const double s = (p0.x() - p180.x()) / (2.0 * 50.0);
+  EXPECT_NEAR(centre.x(), L.centre().x(), 1e-9);
+  EXPECT_NEAR(centre.y(), L.centre().y(), 1e-9);
+  EXPECT_NEAR(p0.y(), centre.y(), 1e-9);
+  // The outer ring (50 + 1000 * 2 * 5 um = 60 mm) fills the plot's circle area.
+  EXPECT_GT(s * 60.0, 0.3 * 520);
+  EXPECT_LE(s * 60.0, 0.5 * 520);
+  // +10 um at 90 deg: straight above the centre, at (R + k d) = 60 plot mm.
+  const QPointF p = view.mapToWidget(90.0, 0.010);
+  EXPECT_NEAR(p.x(), centre.x(), 1e-9);
+  EXPECT_NEAR(centre.y() - p.y(), s * (50.0 + 1000.0 * 0.010), 1e-9);
+  // 0 deviation at 90 deg sits on the nominal circle, 10 mm of plot (10 * s px) lower.
+  EXPECT_NEAR(view.mapToWidget(90.0, 0.0).y() - p.y(), s * 10.0, 1e-9);
+  // Angles run counter-clockwise on screen: 45 deg is up and right.
+  const QPointF p45 = view.mapToWidget(45.0, 0.0);
+  EXPECT_NEAR(p45.x() - centre.x(), s * 50.0 * std::sqrt(0.5), 1e-9);
+  EXPECT_NEAR(centre.y() - p45.y(), s * 50.0 * std::sqrt(0.5), 1e-9);
+
+  // In the pixels: the CCW colour at the bump's tip and on the loop at 0 deg; at twice the
+  // magnification the tip moves out by another 10 plot-mm.
+  const QImage img = view.grab().toImage();
+  save(img, "kinematics-polar-bump.png");
+  EXPECT_TRUE(colourNear(img, p, kinematic_colour::counterClockwise()));
+  EXPECT_TRUE(colourNear(img, view.mapToWidget(200.0, 0.0), kinematic_colour::counterClockwise()));
+  EXPECT_FALSE(colourNear(img, centre, kinematic_colour::counterClockwise(), 3));
+}
+
+TEST(PolarPlot, CcwAndCwLoopsHaveTheirColours) {
+  PolarDeviationView view;
+  view.resize(500, 560);
+  PolarPlotData d;
+  d.radiusMm = 100.0;
+  CircularLoop ccw, cw;
+  cw.counterClockwise = false;
+  for (int a = 0; a < 360; ++a) {
+    const double t = a * std::numbers::pi / 180.0;
+    ccw.points.push_back({static_cast<double>(a), 0.004 * std::cos(2 * t)});
+    cw.points.push_back({static_cast<double>(a), -0.004 * std::cos(2 * t)});
+  }
+  d.loops = {ccw, cw};
+  view.setData(d);
+  const QImage img = view.grab().toImage();
+  save(img, "kinematics-polar-loops.png");
+  EXPECT_TRUE(colourNear(img, view.mapToWidget(0.0, 0.004), kinematic_colour::counterClockwise()));
+  EXPECT_TRUE(colourNear(img, view.mapToWidget(0.0, -0.004), kinematic_colour::clockwise()));
+  EXPECT_TRUE(colourNear(img, view.mapToWidget(90.0, 0.004), kinematic_colour::clockwise()));
+}
+
+TEST(PathPlot, DeviationsAreMagnifiedAboutTheNominalPoint) {
+  CircularPathView view;
+  view.resize(500, 500);
+  PathPlotData d;
+  d.radiusMm = 50.0;
+  d.magnification = 100.0;
+  for (int a = 0; a < 360; a += 10) {
+    const double t = a * std::numbers::pi / 180.0;
+    const Eigen::Vector2d n(50.0 * std::cos(t), 50.0 * std::sin(t));
+    d.nominal.push_back(n);
+    d.measured.push_back(n + Eigen::Vector2d(0.01, 0.0));  // shifted 10 um in x
+  }
+  view.setData(d);
+  const PathPlotLayout L = view.layout();
+  // Equal scales in x and y.
+  const QPointF o = L.map({0.0, 0.0}), ex = L.map({10.0, 0.0}), ey = L.map({0.0, 10.0});
+  EXPECT_NEAR(ex.x() - o.x(), o.y() - ey.y(), 1e-9);
+  // The measured point is drawn k * 10 um = 1 mm right of its nominal point.
+  const QPointF m = L.mapMagnified(d.nominal[0], d.measured[0]);
+  EXPECT_NEAR(m.x() - L.map(d.nominal[0]).x(), (ex.x() - o.x()) / 10.0, 1e-9);
+  const QImage img = view.grab().toImage();
+  save(img, "kinematics-path.png");
+  EXPECT_TRUE(
+      colourNear(img, L.mapMagnified(d.nominal[9], d.measured[9]), kinematic_colour::counterClockwise()));
+}
+
+std::vector<double> series() {
+  // 8 subgroups of 5 with a known spread.
+  std::vector<double> v;
+  const double pattern[5] = {0.0, 0.004, -0.003, 0.002, -0.001};
+  for (int g = 0; g < 8; ++g)
+    for (int i = 0; i < 5; ++i)
+      v.push_back(100.0 + 0.001 * (g % 3) + (1.0 + 0.25 * (g % 4)) * pattern[(i + g) % 5]);
+  return v;
+}
+
+TEST(ControlChart, LimitsAreDrawnAtTheCoresValues) {
+  const XbarRChart chart = xbarRChart(series(), 5);
+  const ControlChartConstants& k = controlChartConstants(5);
+  ASSERT_NEAR(chart.xbarUcl, chart.grandMean + k.A2 * chart.meanRange, 1e-12);
+
+  for (const ControlChartKind kind : {ControlChartKind::Mean, ControlChartKind::Range}) {
+    ControlChartView view(kind);
+    view.resize(640, 280);
+    view.setChart(chart, QStringLiteral("mm"));
+    const ControlChartLayout L = view.layout();
+    const QImage img = view.grab().toImage();
+    save(img, kind == ControlChartKind::Mean ? "kinematics-xbar.png" : "kinematics-r.png");
+    const double ucl = kind == ControlChartKind::Mean ? chart.xbarUcl : chart.rUcl;
+    const double cl = kind == ControlChartKind::Mean ? chart.grandMean : chart.meanRange;
+    const double lcl = kind == ControlChartKind::Mean ? chart.xbarLcl : chart.rLcl;
+    // The limits lie inside the plot, in order.
+    EXPECT_LT(L.yOf(ucl), L.yOf(cl));
+    EXPECT_GE(L.yOf(ucl), L.plotArea().top());
+    EXPECT_LE(L.yOf(lcl), L.plotArea().bottom() + 1e-9);
+    // Dashed red lines at UCL and LCL, a solid green line at CL, over the plot's width (the labels
+    // cover the right end).
+    const double x0 = L.plotArea().left() + 2, x1 = L.plotArea().left() + 0.6 * L.plotArea().width();
+    EXPECT_GT(rowFraction(img, L.yOf(ucl), x0, x1, kinematic_colour::limit()), 0.35)
+        << static_cast<int>(kind);
+    EXPECT_GT(rowFraction(img, L.yOf(cl), x0, x1, kinematic_colour::centreLine()), 0.6)
+        << static_cast<int>(kind);
+    if (lcl > L.yMin()) {
+      EXPECT_GT(rowFraction(img, L.yOf(lcl), x0, x1, kinematic_colour::limit()), 0.35)
+          << static_cast<int>(kind);
+    }
+    // Halfway between the lines there is no line.
+    EXPECT_LT(rowFraction(img, (L.yOf(ucl) + L.yOf(cl)) / 2 + 0.5, x0, x1, kinematic_colour::limit()), 0.1);
+  }
+  // R chart with n = 5: D3 = 0, so the LCL is 0 on the axis.
+  EXPECT_DOUBLE_EQ(chart.rLcl, 0.0);
+}
+
+TEST(Histogram, BinsCoverMinToMaxWithEqualWidths) {
+  const std::vector<double> v{1, 2, 2, 3, 3, 3, 4, 4, 4, 4};
+  const HistogramBins h = histogramBins(v, 4);
+  EXPECT_DOUBLE_EQ(h.first, 1.0);
+  EXPECT_DOUBLE_EQ(h.width, 0.75);
+  EXPECT_EQ(h.counts, (std::vector<int>{1, 2, 3, 4}));
+  EXPECT_DOUBLE_EQ(h.edge(4), 4.0);
+  // Automatic count: ceil(sqrt(N)) clamped to [5, 20].
+  EXPECT_EQ(histogramBins(v).counts.size(), 5u);
+  EXPECT_EQ(histogramBins(std::vector<double>(1000, 0.0)).counts.size(), 20u);
+  std::vector<double> many;
+  for (int i = 0; i < 100; ++i) many.push_back(i * 0.1);
+  const HistogramBins m = histogramBins(many);
+  ASSERT_EQ(m.counts.size(), 10u);
+  for (int c : m.counts) EXPECT_EQ(c, 10);
+  // All values equal: every value in a bin.
+  const HistogramBins flat = histogramBins(std::vector<double>(7, 5.0));
+  int total = 0;
+  for (int c : flat.counts) total += c;
+  EXPECT_EQ(total, 7);
+  EXPECT_TRUE(histogramBins({}).counts.size() == 5u);
+}
+
+TEST(Histogram, SpecificationLimitsAreDrawnAtTheirValues) {
+  HistogramView view;
+  view.resize(600, 280);
+  HistogramData d;
+  d.values = series();
+  d.bins = histogramBins(d.values);
+  d.lsl = 99.99;
+  d.usl = 100.01;
+  view.setData(d);
+  const HistogramLayout L = view.layout();
+  EXPECT_LE(L.xMin(), 99.99);
+  EXPECT_GE(L.xMax(), 100.01);
+  const QImage img = view.grab().toImage();
+  save(img, "kinematics-histogram.png");
+  for (const double limit : {99.99, 100.01}) {
+    const QPointF top = L.map(limit, 0);
+    int hits = 0;
+    for (int y = static_cast<int>(L.plotArea().top()) + 20; y < static_cast<int>(L.plotArea().bottom()) - 2;
+         ++y) {
+      if (colourNear(img, QPointF(top.x(), y), kinematic_colour::specification(), 1)) ++hits;
+    }
+    EXPECT_GT(hits, static_cast<int>(0.8 * (L.plotArea().height() - 22))) << limit;
+  }
+  // A bar's top at its count.
+  const std::size_t tallest = static_cast<std::size_t>(
+      std::max_element(d.bins.counts.begin(), d.bins.counts.end()) - d.bins.counts.begin());
+  const QPointF mid = L.map(d.bins.edge(tallest) + d.bins.width / 2, d.bins.counts[tallest] / 2.0);
+  EXPECT_TRUE(colourNear(img, mid, kinematic_colour::bars(), 0));
+}
+
+TEST(SpcView, TableShowsTheIndicesOfTheAnalysis) {
+  SpcOptions o;
+  o.subgroupSize = 5;
+  o.lsl = 99.99;
+  o.usl = 100.01;
+  o.nominal = 100.0;
+  const std::vector<double> v = series();
+  const SpcResult r = analyseSpc(v, o);
+  SpcView view;
+  view.resize(900, 700);
+  view.setResult(r, v, QStringLiteral("diameter_mm"), QStringLiteral("mm"));
+  EXPECT_TRUE(view.meanChart()->hasChart());
+  QStringList keys;
+  QTableWidget* t = view.indexTable();
+  for (int i = 0; i < t->rowCount(); ++i) keys << t->item(i, 0)->text();
+  const int cp = static_cast<int>(keys.indexOf(QStringLiteral("Cp (Eq. 16)")));
+  ASSERT_GE(cp, 0);
+  EXPECT_EQ(t->item(cp, 1)->text(), QString::number(*r.capability.cp, 'f', 2));
+  const int cpk = static_cast<int>(keys.indexOf(QStringLiteral("Cpk")));
+  ASSERT_GE(cpk, 0);
+  EXPECT_EQ(t->item(cpk, 1)->text(), QString::number(*r.capability.cpk, 'f', 2));
+  EXPECT_GE(keys.indexOf(QStringLiteral("natural tolerance (Eq. 17)")), 0);
+  EXPECT_GE(keys.indexOf(QStringLiteral("systematic error (Eq. 20)")), 0);
+  EXPECT_GE(keys.indexOf(QStringLiteral("regression offset angle")), 0);
+  save(view.grab().toImage(), "kinematics-spcview.png");
+  view.setMessage(QStringLiteral("nothing"));
+  EXPECT_FALSE(view.meanChart()->hasChart());
+}
+
+}  // namespace
+}  // namespace metrofit

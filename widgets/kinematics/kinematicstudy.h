@@ -1,0 +1,74 @@
+#pragma once
+// The kinematics & SPC study of a project, as the page and the report run it. Settings
+// (project "studies" -> "kinematics", every key optional):
+//   "dataset": "<id of a circular_test dataset>"          (default: the first of that kind)
+//   "simulated_machine": {"origin_mm": [x, y], "x_axis_angle_deg": a, "y_axis_angle_deg": b}
+//        the true errors when the study's circular test ("dataset") was simulated: compensated
+//        references are then also run through that machine (the simulator plays the machine)
+//   "spc": {"dataset": "<id>", "column": "diameter_mm", "subgroup": 5, "lsl": L, "usl": U,
+//           "nominal": V, "coverage": k}
+//        the feature series charted on the SPC view (a CSV dataset, rows in production order)
+// A wrong type or value is a ValidationError naming studies/kinematics/<key>.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/kinematics/identification.h"
+#include "core/kinematics/measured_path.h"
+#include "core/project/project.h"
+#include "core/spc/spc.h"
+#include "widgets/kinematics/circularanalysis.h"
+
+namespace metrofit {
+
+struct KinematicSpcSettings {
+  std::string dataset;
+  std::string column;
+  SpcOptions options;
+};
+
+struct KinematicStudySettings {
+  std::string dataset;  ///< empty: the first circular_test dataset
+  std::optional<ActuatorErrors2> simulatedMachine;
+  std::optional<KinematicSpcSettings> spc;
+};
+
+KinematicStudySettings kinematicStudySettings(const Project& project);
+
+/// The unit at the end of a column name ("diameter_mm" -> "mm", "dev_um" -> "µm"; else empty).
+std::string columnUnit(const std::string& column);
+
+struct KinematicSpcSeries {
+  DatasetRef dataset;
+  std::string column, unit;
+  std::vector<double> values;
+  SpcResult result;
+};
+
+struct KinematicStudyData {
+  KinematicStudySettings settings;
+  DatasetRef dataset;  ///< the circular test
+  std::string path;    ///< its resolved file
+  MeasuredPath measured;
+  CircularAnalysis analysis;
+  IdentifyResult identification;
+  std::optional<KinematicSpcSeries> spc;
+  std::string spcError;  ///< why the SPC series could not be charted (empty when it was)
+};
+
+/// The circular_test datasets of the project, in project order.
+std::vector<DatasetRef> circularTestDatasets(const Project& project);
+
+/// Reads the circular test `datasetId` (empty: the study's dataset), analyses and identifies it, and
+/// charts the SPC series when the study names one (a bad series sets spcError, it does not throw).
+/// `resolve` gives the file of a dataset. Throws InputError for a missing or unreadable test, and
+/// std::runtime_error when the identification fails.
+KinematicStudyData loadKinematicStudy(const Project& project,
+                                      const std::function<std::string(const DatasetRef&)>& resolve,
+                                      const std::string& datasetId = {});
+
+/// Compensation preview of the study's circular test (the simulated machine when the settings give one).
+CompensationPreview compensateStudy(const KinematicStudyData& study);
+
+}  // namespace metrofit

@@ -1,0 +1,244 @@
+#include "widgets/kinematics/kinematicsviews.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPainter>
+#include <QStackedLayout>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace metrofit {
+namespace {
+
+void fillWhite(QPainter& p, const QWidget* w) {
+  p.fillRect(w->rect(), Qt::white);
+}
+
+}  // namespace
+
+// ---- path ----------------------------------------------------------------------------------------
+
+CircularPathView::CircularPathView(QWidget* parent) : QWidget(parent) {
+  setMinimumSize(260, 260);
+  setToolTip(
+      tr("The XY path in mm: the nominal circle true to scale; the measured path, the compensated "
+         "references and the expected result as deviations from the nominal point, magnified by the "
+         "factor shown."));
+}
+
+void CircularPathView::setData(const PathPlotData& data) {
+  data_ = data;
+  update();
+}
+
+PathPlotLayout CircularPathView::layout() const {
+  return PathPlotLayout(QRectF(rect()), data_);
+}
+
+void CircularPathView::paintEvent(QPaintEvent*) {
+  QPainter p(this);
+  fillWhite(p, this);
+  if (data_.radiusMm > 0.0) paintPathPlot(p, QRectF(rect()), data_);
+}
+
+// ---- polar ----------------------------------------------------------------------------------------
+
+PolarDeviationView::PolarDeviationView(QWidget* parent) : QWidget(parent) {
+  setMinimumSize(260, 260);
+  setToolTip(
+      tr("Radial deviation of the measured path from the nominal circle, magnified (ballbar plot): "
+         "plotted radius = R + k × deviation. Blue: CCW loop, orange: CW loop; the rings are labelled "
+         "in µm."));
+}
+
+void PolarDeviationView::setData(const PolarPlotData& data) {
+  data_ = data;
+  data_.autoScale();
+  update();
+}
+
+PolarPlotLayout PolarDeviationView::layout() const {
+  return PolarPlotLayout(QRectF(rect()), data_);
+}
+
+void PolarDeviationView::paintEvent(QPaintEvent*) {
+  QPainter p(this);
+  fillWhite(p, this);
+  if (data_.radiusMm > 0.0) paintPolarPlot(p, QRectF(rect()), data_);
+}
+
+// ---- control chart ----------------------------------------------------------------------------------
+
+ControlChartView::ControlChartView(ControlChartKind kind, QWidget* parent) : QWidget(parent), kind_(kind) {
+  setMinimumSize(300, 160);
+  setToolTip(kind == ControlChartKind::Mean
+                 ? tr("Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ "
+                      "(seed 002, Eq. 18-19); red points are out of control.")
+                 : tr("Subgroup ranges with the centre line R̄ and the limits D4 · R̄ and D3 · R̄."));
+}
+
+void ControlChartView::setChart(const XbarRChart& chart, const QString& unit) {
+  chart_ = chart;
+  unit_ = unit;
+  update();
+}
+
+void ControlChartView::clear() {
+  chart_.reset();
+  update();
+}
+
+ControlChartLayout ControlChartView::layout() const {
+  return ControlChartLayout(QRectF(rect()), chart_ ? *chart_ : XbarRChart{}, kind_);
+}
+
+void ControlChartView::paintEvent(QPaintEvent*) {
+  QPainter p(this);
+  fillWhite(p, this);
+  if (chart_) paintControlChart(p, QRectF(rect()), *chart_, kind_, unit_);
+}
+
+// ---- histogram -------------------------------------------------------------------------------------
+
+HistogramView::HistogramView(QWidget* parent) : QWidget(parent) {
+  setMinimumSize(300, 160);
+  setToolTip(
+      tr("Distribution of the values with the specification limits LSL/USL, the nominal and the mean."));
+}
+
+void HistogramView::setData(const HistogramData& data) {
+  data_ = data;
+  update();
+}
+
+HistogramLayout HistogramView::layout() const {
+  return HistogramLayout(QRectF(rect()), data_);
+}
+
+void HistogramView::paintEvent(QPaintEvent*) {
+  QPainter p(this);
+  fillWhite(p, this);
+  if (!data_.values.empty()) paintHistogram(p, QRectF(rect()), data_);
+}
+
+// ---- SPC view ---------------------------------------------------------------------------------------
+
+SpcView::SpcView(QWidget* parent)
+    : QWidget(parent),
+      mean_(new ControlChartView(ControlChartKind::Mean, this)),
+      range_(new ControlChartView(ControlChartKind::Range, this)),
+      histogram_(new HistogramView(this)),
+      table_(new QTableWidget(this)),
+      message_(new QLabel(this)) {
+  table_->setObjectName(QStringLiteral("spcIndexTable"));
+  table_->setColumnCount(2);
+  table_->setHorizontalHeaderLabels({tr("index"), tr("value")});
+  table_->verticalHeader()->hide();
+  table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setStretchLastSection(true);
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setWordWrap(true);
+  table_->setMinimumWidth(300);
+  table_->setMaximumWidth(380);
+  message_->setObjectName(QStringLiteral("spcMessage"));
+  message_->setWordWrap(true);
+  message_->setAlignment(Qt::AlignCenter);
+
+  auto* charts = new QVBoxLayout;
+  charts->addWidget(mean_, 1);
+  charts->addWidget(range_, 1);
+  charts->addWidget(histogram_, 1);
+  auto* content = new QWidget(this);
+  auto* row = new QHBoxLayout(content);
+  row->setContentsMargins(0, 0, 0, 0);
+  row->addLayout(charts, 1);
+  row->addWidget(table_);
+  auto* stack = new QStackedLayout(this);
+  stack->addWidget(content);
+  stack->addWidget(message_);
+  setMessage(tr("No SPC series yet."));
+}
+
+void SpcView::setMessage(const QString& text) {
+  message_->setText(text);
+  static_cast<QStackedLayout*>(layout())->setCurrentWidget(message_);
+  mean_->clear();
+  range_->clear();
+}
+
+void SpcView::setResult(const SpcResult& r, const std::vector<double>& values, const QString& name,
+                        const QString& unit) {
+  mean_->setChart(r.chart, unit);
+  range_->setChart(r.chart, unit);
+  HistogramData h;
+  h.values.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(r.valuesUsed));
+  h.bins = histogramBins(h.values);
+  h.lsl = r.options.lsl;
+  h.usl = r.options.usl;
+  h.nominal = r.options.nominal;
+  h.mean = r.chart.grandMean;
+  h.unit = unit;
+  h.title = tr("Histogram of %1 (%2 values)").arg(name).arg(h.values.size());
+  histogram_->setData(h);
+
+  const QString u = unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
+  auto num = [](double v, int sig = 6) { return QString::number(v, 'g', sig); };
+  QList<QPair<QString, QString>> rows;
+  rows.append({tr("feature"), name});
+  rows.append({tr("subgroups × size"),
+               tr("%1 × %2").arg(r.chart.subgroups()).arg(r.chart.subgroupSize) +
+                   (r.valuesIgnored ? tr(" (%1 left out)").arg(r.valuesIgnored) : QString())});
+  rows.append({tr("in control"), r.chart.inControl() ? tr("yes")
+                                                     : tr("no: %1 X-bar, %2 R points beyond limits")
+                                                           .arg(r.chart.xbarOutOfControl.size())
+                                                           .arg(r.chart.rOutOfControl.size())});
+  rows.append(
+      {tr("A2 / D3 / D4"), QStringLiteral("%1 / %2 / %3")
+                               .arg(num(r.constants.A2, 4), num(r.constants.D3, 4), num(r.constants.D4, 4))});
+  rows.append({tr("X-bar CL / UCL / LCL"),
+               QStringLiteral("%1 / %2 / %3")
+                       .arg(num(r.chart.grandMean, 8), num(r.chart.xbarUcl, 8), num(r.chart.xbarLcl, 8)) +
+                   u});
+  rows.append({tr("R CL / UCL / LCL"),
+               QStringLiteral("%1 / %2 / %3")
+                       .arg(num(r.chart.meanRange, 4), num(r.chart.rUcl, 4), num(r.chart.rLcl, 4)) +
+                   u});
+  rows.append({tr("σ within (R̄/d2)"), num(r.capability.sigmaWithin, 4) + u});
+  if (r.options.lsl && r.options.usl) {
+    rows.append(
+        {tr("LSL / USL"), QStringLiteral("%1 / %2").arg(num(*r.options.lsl, 8), num(*r.options.usl, 8)) + u});
+  }
+  rows.append(
+      {tr("Cp (Eq. 16)"), r.capability.cp ? QString::number(*r.capability.cp, 'f', 2) : tr("— (no limits)")});
+  rows.append(
+      {tr("Cpk"), r.capability.cpk ? QString::number(*r.capability.cpk, 'f', 2) : tr("— (no limits)")});
+  rows.append({tr("natural tolerance (Eq. 17)"), num(r.capability.naturalTolerance, 4) + u});
+  if (r.systematic) {
+    const SystematicError& s = *r.systematic;
+    rows.append({tr("systematic error (Eq. 20)"),
+                 tr("%1%2 ± %3 (%4)")
+                     .arg(num(s.error, 4), u, num(s.halfWidth, 2))
+                     .arg(s.significant ? tr("significant") : tr("not significant"))});
+  } else {
+    rows.append({tr("systematic error (Eq. 20)"), tr("— (no nominal)")});
+  }
+  rows.append({tr("regression offset angle"),
+               tr("%1° (slope %2%3 per sample, r² %4)")
+                   .arg(QString::number(r.trend.angleDeg, 'g', 3), num(r.trend.slope, 3), u,
+                        QString::number(r.trend.r2, 'f', 2))});
+  rows.append({tr("compensation"), QString::fromStdString(r.decision.reason)});
+  table_->setRowCount(static_cast<int>(rows.size()));
+  for (int i = 0; i < rows.size(); ++i) {
+    table_->setItem(i, 0, new QTableWidgetItem(rows[i].first));
+    auto* item = new QTableWidgetItem(rows[i].second);
+    item->setToolTip(rows[i].second);
+    table_->setItem(i, 1, item);
+  }
+  table_->resizeRowsToContents();
+  static_cast<QStackedLayout*>(layout())->setCurrentIndex(0);
+}
+
+}  // namespace metrofit

@@ -1,0 +1,270 @@
+// Report section "Kinematic compensation and SPC" (issue 6, seed 002): per circular test the
+// identified actuator errors with their standard errors, the path and the ballbar-style polar plot
+// (the same drawings as the GUI, kinematicplots.h), the compensation of the nominal circle (largest
+// radial deviation before and after), and the SPC charts and indices of the study's feature series.
+#include <QCoreApplication>
+#include <QPainter>
+
+#include <cmath>
+#include <exception>
+#include <functional>
+
+#include "widgets/kinematics/kinematicplots.h"
+#include "widgets/kinematics/kinematicstudy.h"
+#include "widgets/report/reportpainter.h"
+#include "widgets/report/sections.h"
+
+namespace metrofit {
+namespace {
+
+struct ReportText {
+  Q_DECLARE_TR_FUNCTIONS(metrofit::Report)
+};
+
+/// Draws `paint` into `rect` at a design width of `designWidth` logical pixels (sets text size).
+void drawScaled(ReportPainter& out, const QRectF& rect, double designWidth,
+                const std::function<void(QPainter&, const QRectF&)>& paint) {
+  QPainter& p = out.painter();
+  p.save();
+  p.translate(rect.topLeft());
+  const double s = rect.width() / designWidth;
+  p.scale(s, s);
+  paint(p, QRectF(0.0, 0.0, designWidth, rect.height() / s));
+  p.restore();
+}
+
+QString um(double mm, int decimals = 3) {
+  return QString::number(mm * 1000.0, 'f', decimals);
+}
+
+QString deg(double d) {
+  return QString::number(d, 'f', 6);
+}
+
+void writeErrors(ReportPainter& out, const KinematicStudyData& s) {
+  const IdentifyResult& r = s.identification;
+  const auto& truth = s.settings.simulatedMachine;
+  ReportTable t;
+  t.header = {ReportText::tr("error"), ReportText::tr("identified"), ReportText::tr("standard error")};
+  if (truth) t.header << ReportText::tr("simulated (true)");
+  t.widths = truth ? QList<double>{2.2, 1.3, 1.3, 1.3} : QList<double>{2.2, 1.3, 1.3};
+  t.alignment = {Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
+  auto row = [&](const QString& name, const QString& v, const QString& se, const QString& tv) {
+    QStringList cells{name, v, se};
+    if (truth) cells << tv;
+    t.rows.push_back(cells);
+  };
+  row(ReportText::tr("origin x (µm)"), um(r.errors.originMm.x()), um(r.standardErrors.originMm.x()),
+      truth ? um(truth->originMm.x()) : QString());
+  row(ReportText::tr("origin y (µm)"), um(r.errors.originMm.y()), um(r.standardErrors.originMm.y()),
+      truth ? um(truth->originMm.y()) : QString());
+  row(ReportText::tr("X axis angle a (deg)"), deg(r.errors.xAxisAngleDeg),
+      deg(r.standardErrors.xAxisAngleDeg), truth ? deg(truth->xAxisAngleDeg) : QString());
+  row(ReportText::tr("Y axis angle b (deg)"), deg(r.errors.yAxisAngleDeg),
+      deg(r.standardErrors.yAxisAngleDeg), truth ? deg(truth->yAxisAngleDeg) : QString());
+  row(ReportText::tr("squareness b − a (deg)"), deg(r.errors.squarenessDeg()), deg(r.squarenessStdErrDeg),
+      truth ? deg(truth->squarenessDeg()) : QString());
+  row(ReportText::tr("RMS residual (µm)"), um(r.rmseMm), QString(), QString());
+  out.table(t);
+}
+
+void writeCircularTest(ReportPainter& out, const KinematicStudyData& s) {
+  out.subheading(ReportText::tr("Circular test “%1”").arg(QString::fromStdString(s.dataset.id)),
+                 out.mm(60.0));
+  if (!s.dataset.description.empty()) out.paragraph(QString::fromStdString(s.dataset.description));
+  const auto mm4 = [](double v) {
+    const QString t = QString::number(v, 'f', 4);
+    return t == QLatin1String("-0.0000") ? QStringLiteral("0.0000") : t;
+  };
+  out.paragraph(
+      ReportText::tr("%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). "
+                     "The actuator errors of the Cartesian machine (seed 002, Eq. 9: P = o + ir·x + "
+                     "jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by "
+                     "Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.")
+          .arg(s.measured.size())
+          .arg(s.analysis.radiusMm, 0, 'g', 6)
+          .arg(mm4(s.analysis.centreMm.x()), mm4(s.analysis.centreMm.y()))
+          .arg(s.analysis.loops.size())
+          .arg(QString::fromLatin1(toString(s.identification.run.termination)))
+          .arg(s.identification.run.iterations));
+  writeErrors(out, s);
+
+  const CompensationPreview c = compensateStudy(s);
+  PathPlotData pd;
+  pd.centreMm = s.analysis.centreMm;
+  pd.radiusMm = s.analysis.radiusMm;
+  pd.nominal = s.measured.command;
+  pd.measured = s.measured.measured;
+  pd.counterClockwise.assign(s.measured.size(), true);
+  for (const CircularLoop& l : s.analysis.loops) {
+    for (std::size_t i = 0; i < l.points.size(); ++i) pd.counterClockwise[l.first + i] = l.counterClockwise;
+  }
+  pd.references = c.references;
+  pd.expected = c.expected;
+  pd.title = ReportText::tr("Path (XY)");
+  PolarPlotData polar;
+  polar.radiusMm = s.analysis.radiusMm;
+  polar.loops = s.analysis.loops;
+  polar.compensated = radialDeviations(c.expected, s.analysis.centreMm, s.analysis.radiusMm);
+  polar.title = ReportText::tr("Radial deviation (polar, magnified)");
+  polar.autoScale();
+
+  out.skip(out.mm(2.0));
+  const QRectF box = out.reserve(out.mm(92.0));
+  const double gap = out.mm(3.0);
+  const QRectF left(box.left(), box.top(), (box.width() - gap) / 2.0, box.height());
+  const QRectF right(left.right() + gap, box.top(), left.width(), box.height());
+  PlotStyle style;
+  style.fontPx = 10.0;
+  style.lineWidth = 1.1;
+  drawScaled(out, left, 400.0, [&](QPainter& p, const QRectF& r) { paintPathPlot(p, r, pd, style); });
+  drawScaled(out, right, 400.0, [&](QPainter& p, const QRectF& r) { paintPolarPlot(p, r, polar, style); });
+
+  out.subheading(ReportText::tr("Compensation"), out.mm(30.0));
+  out.paragraph(
+      ReportText::tr("Compensated references for the nominal circle (the commanded points of the "
+                     "test) from the identified errors (Eq. 15), and the largest |radial deviation| "
+                     "from the nominal circle before and after:"));
+  ReportTable t;
+  t.header = {ReportText::tr("path"), ReportText::tr("max. dev. (µm)")};
+  t.widths = {3.4, 1.0};
+  t.alignment = {Qt::AlignLeft, Qt::AlignRight};
+  t.widthFraction = 0.8;
+  t.rows.push_back({ReportText::tr("measured, before compensation"), um(c.maxBeforeMm)});
+  if (c.maxSimulatedMm) {
+    t.rows.push_back({ReportText::tr("after, through the simulated machine (true errors, noise free)"),
+                      um(*c.maxSimulatedMm)});
+  }
+  t.rows.push_back(
+      {ReportText::tr("after, expected from the measured residual (noise stays)"), um(c.maxExpectedMm)});
+  t.rows.push_back({ReportText::tr("after, through the identified model"), um(c.maxModelMm, 6)});
+  t.rows.push_back({ReportText::tr("largest correction |reference − nominal|"), um(c.largestCorrectionMm)});
+  out.table(t);
+}
+
+void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
+  if (!s.spc) {
+    if (!s.spcError.empty()) {
+      out.subheading(ReportText::tr("Statistical process control"));
+      out.paragraph(
+          ReportText::tr("The SPC series could not be charted: %1").arg(QString::fromStdString(s.spcError)));
+    }
+    return;
+  }
+  const KinematicSpcSeries& k = *s.spc;
+  const SpcResult& r = k.result;
+  const QString unit = QString::fromStdString(k.unit);
+  const QString u = unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
+  out.newPage();
+  out.subheading(ReportText::tr("Statistical process control of “%1” (%2)")
+                     .arg(QString::fromStdString(k.column), QString::fromStdString(k.dataset.id)),
+                 out.mm(60.0));
+  if (!k.dataset.description.empty()) out.paragraph(QString::fromStdString(k.dataset.description));
+  PlotStyle style;
+  style.fontPx = 10.0;
+  style.lineWidth = 1.1;
+  style.pointRadius = 2.2;
+  for (const ControlChartKind kind : {ControlChartKind::Mean, ControlChartKind::Range}) {
+    const QRectF box = out.reserve(out.mm(48.0));
+    drawScaled(out, box, 700.0,
+               [&](QPainter& p, const QRectF& rr) { paintControlChart(p, rr, r.chart, kind, unit, style); });
+  }
+  HistogramData h;
+  h.values.assign(k.values.begin(), k.values.begin() + static_cast<std::ptrdiff_t>(r.valuesUsed));
+  h.bins = histogramBins(h.values);
+  h.lsl = r.options.lsl;
+  h.usl = r.options.usl;
+  h.nominal = r.options.nominal;
+  h.mean = r.chart.grandMean;
+  h.unit = unit;
+  h.title = ReportText::tr("Histogram of %1 (%2 values)")
+                .arg(QString::fromStdString(k.column))
+                .arg(h.values.size());
+  const QRectF hbox = out.reserve(out.mm(48.0));
+  drawScaled(out, hbox, 700.0, [&](QPainter& p, const QRectF& rr) { paintHistogram(p, rr, h, style); });
+
+  ReportTable t;
+  t.header = {ReportText::tr("index"), ReportText::tr("value")};
+  t.widths = {1.6, 3.0};
+  t.rows.push_back({ReportText::tr("subgroups × size"),
+                    QStringLiteral("%1 × %2").arg(r.chart.subgroups()).arg(r.chart.subgroupSize)});
+  t.rows.push_back({ReportText::tr("A2 / D3 / D4"), QStringLiteral("%1 / %2 / %3")
+                                                        .arg(r.constants.A2, 0, 'f', 3)
+                                                        .arg(r.constants.D3, 0, 'f', 3)
+                                                        .arg(r.constants.D4, 0, 'f', 3)});
+  t.rows.push_back({ReportText::tr("X-bar chart CL / UCL / LCL"), QStringLiteral("%1 / %2 / %3")
+                                                                          .arg(r.chart.grandMean, 0, 'g', 8)
+                                                                          .arg(r.chart.xbarUcl, 0, 'g', 8)
+                                                                          .arg(r.chart.xbarLcl, 0, 'g', 8) +
+                                                                      u});
+  t.rows.push_back({ReportText::tr("R chart CL / UCL / LCL"), QStringLiteral("%1 / %2 / %3")
+                                                                      .arg(r.chart.meanRange, 0, 'g', 4)
+                                                                      .arg(r.chart.rUcl, 0, 'g', 4)
+                                                                      .arg(r.chart.rLcl, 0, 'g', 4) +
+                                                                  u});
+  t.rows.push_back(
+      {ReportText::tr("in control"), r.chart.inControl() ? ReportText::tr("yes") : ReportText::tr("no")});
+  t.rows.push_back(
+      {ReportText::tr("σ within (R̄ / d2)"), QString::number(r.capability.sigmaWithin, 'g', 4) + u});
+  if (r.capability.cp) {
+    t.rows.push_back(
+        {ReportText::tr("LSL / USL"),
+         QStringLiteral("%1 / %2").arg(*r.options.lsl, 0, 'g', 8).arg(*r.options.usl, 0, 'g', 8) + u});
+    t.rows.push_back(
+        {ReportText::tr("Cp (Eq. 16) / Cpk"),
+         QStringLiteral("%1 / %2").arg(*r.capability.cp, 0, 'f', 2).arg(*r.capability.cpk, 0, 'f', 2)});
+  }
+  t.rows.push_back({ReportText::tr("natural tolerance (Eq. 17)"),
+                    QString::number(r.capability.naturalTolerance, 'g', 4) + u});
+  if (r.systematic) {
+    t.rows.push_back({ReportText::tr("systematic error (Eq. 20)"),
+                      ReportText::tr("%1%2 ± %3 (%4)")
+                          .arg(QString::number(r.systematic->error, 'g', 4), u,
+                               QString::number(r.systematic->halfWidth, 'g', 2),
+                               r.systematic->significant ? ReportText::tr("significant")
+                                                         : ReportText::tr("not significant"))});
+  }
+  t.rows.push_back(
+      {ReportText::tr("regression offset angle (Fig. 10)"),
+       ReportText::tr("%1° (slope %2%3 per sample, r² %4)")
+           .arg(QString::number(r.trend.angleDeg, 'g', 3), QString::number(r.trend.slope, 'g', 3), u,
+                QString::number(r.trend.r2, 'f', 2))});
+  out.table(t);
+  out.paragraph(ReportText::tr("SPC-gated compensation: %1").arg(QString::fromStdString(r.decision.reason)));
+}
+
+}  // namespace
+
+QString kinematicSectionTitle() {
+  return ReportText::tr("Kinematic compensation and SPC");
+}
+
+void writeKinematicSection(ReportPainter& out, const ReportContext& context) {
+  const Project& project = *context.project;
+  auto resolve = [&context](const DatasetRef& ref) {
+    for (const ReportDataset& d : context.datasets) {
+      if (d.ref.id == ref.id) return d.path.toStdString();
+    }
+    return ref.path;
+  };
+  bool first = true, spcShown = false;
+  for (const ReportDataset* dataset : context.ofKind(dataset_kind::kCircularTest)) {
+    if (!first) out.newPage();
+    first = false;
+    try {
+      const KinematicStudyData s = loadKinematicStudy(project, resolve, dataset->ref.id);
+      writeCircularTest(out, s);
+      // The feature series belongs to the study, not to one test: once, after the study's test.
+      if (!spcShown && (s.settings.dataset.empty() || s.settings.dataset == s.dataset.id)) {
+        writeSpc(out, s);
+        spcShown = true;
+      }
+    } catch (const std::exception& e) {
+      out.subheading(ReportText::tr("Circular test “%1”").arg(QString::fromStdString(dataset->ref.id)));
+      out.paragraph(
+          ReportText::tr("Cannot analyse this circular test: %1").arg(QString::fromStdString(e.what())));
+    }
+  }
+}
+
+}  // namespace metrofit
