@@ -6,16 +6,31 @@
 #include <QLocale>
 #include <QSignalBlocker>
 #include <QStackedWidget>
+#include <QTabWidget>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 #include <exception>
 
 #include "app/gui/notesedit.h"
 #include "core/thermal/thermal_log.h"
+#include "widgets/charts/thermalhysteresisview.h"
+#include "widgets/charts/thermalmodelview.h"
 #include "widgets/charts/thermaltrendview.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
 
 namespace metrofit {
+namespace {
+
+enum Tab { kTrendTab = 0, kHysteresisTab = 1, kModelsTab = 2 };
+
+QString settingsKey(const QString& id, const ThermalModelSettings& s) {
+  QString key = id + QLatin1Char('|') + QString::fromStdString(s.target);
+  for (const std::string& in : s.inputs) key += QLatin1Char(',') + QString::fromStdString(in);
+  return key;
+}
+
+}  // namespace
 
 ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
     : QWidget(parent),
@@ -23,8 +38,12 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
       combo_(new QComboBox(this)),
       info_(new QLabel(this)),
       stack_(new QStackedWidget(this)),
+      tabs_(new QTabWidget(this)),
       trend_(new ThermalTrendView(this)),
-      message_(new QLabel(this)) {
+      hysteresis_(new ThermalHysteresisView(this)),
+      models_(new ThermalModelView(this)),
+      message_(new QLabel(this)),
+      modularWatcher_(new QFutureWatcher<ModularRun>(this)) {
   auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kThermal)), this);
   QFont titleFont = title->font();
   titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
@@ -41,7 +60,14 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   message_->setWordWrap(true);
   message_->setAlignment(Qt::AlignCenter);
   message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  stack_->addWidget(trend_);
+  tabs_->setObjectName(QStringLiteral("thermalTabs"));
+  tabs_->addTab(trend_, tr("T&rend"));
+  tabs_->addTab(hysteresis_, tr("&Hysteresis"));
+  tabs_->addTab(models_, tr("&Models"));
+  tabs_->setTabToolTip(kTrendTab, tr("Temperatures, strains and displacement against time"));
+  tabs_->setTabToolTip(kHysteresisTab, tr("Displacement against each sensor over heating and cooling"));
+  tabs_->setTabToolTip(kModelsTab, tr("GNNMCI(1,N), GMC(1,N) and MLP fitted and compared (Table 4)"));
+  stack_->addWidget(tabs_);
   stack_->addWidget(message_);
 
   auto* top = new QHBoxLayout;
@@ -64,7 +90,17 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
 
   connect(combo_, &QComboBox::currentIndexChanged, this, &ThermalPage::showLog);
   connect(document_, &ProjectDocument::changed, this, &ThermalPage::refresh);
+  connect(tabs_, &QTabWidget::currentChanged, this, &ThermalPage::onTabChanged);
+  connect(models_, &ThermalModelView::settingsEdited, this, [this] {
+    if (!logId_.isEmpty()) settings_[logId_] = models_->settings();
+  });
+  connect(modularWatcher_, &QFutureWatcher<ModularRun>::finished, this,
+          [this] { applyModular(modularWatcher_->result()); });
   refresh();
+}
+
+ThermalPage::~ThermalPage() {
+  modularWatcher_->waitForFinished();
 }
 
 QString ThermalPage::currentDataset() const {
@@ -85,6 +121,9 @@ void ThermalPage::refresh() {
   if (logs == logs_ && projectFile_ == document_->fileName() && combo_->count() > 0) return;
   logs_ = std::move(logs);
   projectFile_ = document_->fileName();
+  settings_.clear();
+  modularDone_ = false;
+  models_->setModular(nullptr, nullptr, QString());
   const QString previous = currentDataset();
   {
     const QSignalBlocker blocker(combo_);
@@ -102,6 +141,8 @@ void ThermalPage::refresh() {
 
 void ThermalPage::showLog(int comboIndex) {
   error_.clear();
+  logId_.clear();
+  hysteresisKey_.clear();
   if (comboIndex < 0 || comboIndex >= static_cast<int>(logs_.size())) {
     info_->clear();
     message_->setText(
@@ -113,25 +154,120 @@ void ThermalPage::showLog(int comboIndex) {
   const DatasetRef& dataset = logs_[static_cast<std::size_t>(comboIndex)];
   const QString path = document_->datasetPath(dataset);
   try {
-    const ThermalLog log = readThermalLog(path.toStdString());
-    trend_->setLog(log);
+    log_ = readThermalLog(path.toStdString());
+    logId_ = QString::fromStdString(dataset.id);
+    trend_->setLog(log_);
     const QLocale locale;
-    const double spanMin = log.rows() > 1 ? log.timeMin.back() - log.timeMin.front() : 0.0;
+    const double spanMin = log_.rows() > 1 ? log_.timeMin.back() - log_.timeMin.front() : 0.0;
     QString info = tr("%1 rows, %2 channels, %3 h.")
-                       .arg(log.rows())
-                       .arg(log.channels.size())
+                       .arg(log_.rows())
+                       .arg(log_.channels.size())
                        .arg(locale.toString(spanMin / 60.0, 'f', 1));
     if (!dataset.licence.empty())
       info += QLatin1Char(' ') + tr("Licence: %1.").arg(QString::fromStdString(dataset.licence));
     if (!dataset.description.empty())
       info.prepend(QString::fromStdString(dataset.description) + QLatin1Char('\n'));
     info_->setText(info);
-    stack_->setCurrentWidget(trend_);
+    if (!settings_.contains(logId_)) {
+      const auto study = document_->project().studies.find(study::kThermal);
+      settings_[logId_] = defaultThermalModelSettings(
+          log_, study != document_->project().studies.end() ? *study : nlohmann::json::object(), dataset.id);
+    }
+    models_->setLog(log_, settings_[logId_]);
+    stack_->setCurrentWidget(tabs_);
+    onTabChanged(tabs_->currentIndex());
   } catch (const std::exception& e) {
     error_ = QString::fromStdString(e.what());
     info_->clear();
     message_->setText(tr("Cannot show this thermal log:\n%1").arg(error_));
     stack_->setCurrentWidget(message_);
+  }
+}
+
+void ThermalPage::onTabChanged(int index) {
+  if (logId_.isEmpty()) return;
+  if (index == kHysteresisTab) updateHysteresis();
+  if (index == kModelsTab) updateModular(false);
+}
+
+void ThermalPage::updateHysteresis() {
+  const ThermalModelSettings s = models_->settings();
+  const QString key = settingsKey(logId_, s);
+  if (key == hysteresisKey_) return;
+  hysteresisKey_ = key;
+  hysteresis_->setLog(log_, s.target, s.inputs);
+}
+
+void ThermalPage::updateModular(bool now) {
+  if (modularDone_ && modularKey_ == projectFile_) return;
+  if (modularWatcher_->isRunning()) {
+    if (!now) return;
+    modularWatcher_->waitForFinished();
+    applyModular(modularWatcher_->result());
+    return;
+  }
+  const DatasetRef* z = document_->project().dataset(kModularZId);
+  const DatasetRef* c = document_->project().dataset(kModularCId);
+  const DatasetRef* h = document_->project().dataset(kModularCombinedId);
+  if (!z || !c || !h) return;
+  const std::string paths[3] = {document_->datasetPath(*z).toStdString(),
+                                document_->datasetPath(*c).toStdString(),
+                                document_->datasetPath(*h).toStdString()};
+  modularKey_ = projectFile_;
+  modularDone_ = true;
+  auto job = [paths]() -> ModularRun {
+    ModularRun run;
+    try {
+      const ThermalLog zl = readThermalLog(paths[0]);
+      const ThermalLog cl = readThermalLog(paths[1]);
+      run.testLog = std::make_shared<ThermalLog>(readThermalLog(paths[2]));
+      const ThermalModelSettings s = defaultThermalModelSettings(*run.testLog, nlohmann::json::object(), {});
+      run.result = std::make_shared<ModularComparison>(
+          compareModularModels({&zl, &cl}, *run.testLog, s.target, modularInputs(*run.testLog), 1));
+    } catch (const std::exception& e) {
+      run.error = QString::fromStdString(e.what());
+    }
+    return run;
+  };
+  if (now) {
+    applyModular(job());
+  } else {
+    modularWatcher_->setFuture(QtConcurrent::run(job));
+  }
+}
+
+void ThermalPage::applyModular(const ModularRun& run) {
+  if (!run.error.isEmpty() || !run.result) {
+    models_->setModular(nullptr, nullptr, QString());
+    if (!run.error.isEmpty())
+      info_->setText(info_->text() + QLatin1Char('\n') + tr("Modular case: %1").arg(run.error));
+    return;
+  }
+  const ModularComparison& m = *run.result;
+  QStringList inputs;
+  for (const std::string& s : m.inputs) inputs << QString::fromStdString(s);
+  const double reduction = 100.0 * m.models[0].reductionPeak;
+  const QString text = tr("Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): "
+                          "GNNMCI(1,N) reduces the "
+                          "combined test's error by %6 %.")
+                           .arg(QString::fromLatin1(kModularZId), QString::fromLatin1(kModularCId),
+                                QString::fromLatin1(kModularCombinedId), QString::fromStdString(m.target),
+                                inputs.join(QStringLiteral(", ")))
+                           .arg(reduction, 0, 'f', 1);
+  models_->setModular(run.result, run.testLog.get(), text);
+}
+
+void ThermalPage::showView(const QString& view) {
+  if (view == QLatin1String("trend")) {
+    tabs_->setCurrentIndex(kTrendTab);
+  } else if (view == QLatin1String("hysteresis")) {
+    tabs_->setCurrentIndex(kHysteresisTab);
+    if (!logId_.isEmpty()) updateHysteresis();
+  } else if (view == QLatin1String("models")) {
+    tabs_->setCurrentIndex(kModelsTab);
+    if (logId_.isEmpty()) return;
+    updateModular(true);
+    if (!models_->comparison() && !models_->isRunning()) models_->trainNow();
   }
 }
 

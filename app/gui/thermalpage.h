@@ -1,46 +1,93 @@
 #pragma once
-// The thermal study page: a combo of the project's thermal logs and the sensor trend chart of the
-// chosen one (the first by default). A log that cannot be read shows its one-line error instead.
+// The thermal study page: a combo of the project's thermal logs and three tabs for the chosen one
+// (the first by default):
+//  * Trend: the sensor trend chart (widgets/charts/thermaltrendview.h);
+//  * Hysteresis: displacement against each sensor over heating and cooling, loop areas and lags;
+//  * Models: GNNMCI(1,N), GMC(1,N) and the MLP fitted on the first part and compared on the rest
+//    (Table 4), trained in a worker thread with live PSO progress; when the project has the three
+//    modular tests (datasets kModularZId, kModularCId, kModularCombinedId of thermalcomparison.h), the
+//    combined test predicted from models fitted on the Z and C tests (Section 4.3).
+// A log that cannot be read shows its one-line error instead. The model settings start from the
+// project's thermal study (studies.thermal: dataset, target, inputs) and are kept per log for the
+// session; they do not edit the project, so they are not on the undo stack.
+#include <QFutureWatcher>
+#include <QHash>
 #include <QWidget>
+#include <memory>
 #include <vector>
 
 #include "core/project/project.h"
+#include "core/thermal/thermal_log.h"
+#include "widgets/charts/thermalcomparison.h"
 
 class QComboBox;
 class QLabel;
 class QStackedWidget;
+class QTabWidget;
 
 namespace metrofit {
 class ProjectDocument;
 class ThermalTrendView;
+class ThermalHysteresisView;
+class ThermalModelView;
 
 class ThermalPage : public QWidget {
   Q_OBJECT
  public:
   explicit ThermalPage(ProjectDocument* document, QWidget* parent = nullptr);
+  ~ThermalPage() override;
 
   /// Shows the thermal log with this dataset id (no effect for an unknown id).
   void selectDataset(const QString& id);
   /// Id of the log shown; empty when the project has none.
   QString currentDataset() const;
   QComboBox* datasetCombo() const { return combo_; }
+  QTabWidget* tabs() const { return tabs_; }
   ThermalTrendView* trendView() const { return trend_; }
+  ThermalHysteresisView* hysteresisView() const { return hysteresis_; }
+  ThermalModelView* modelView() const { return models_; }
   /// The error of the last read, empty when the log was read.
   QString errorMessage() const { return error_; }
+
+  /// Switches to "trend", "hysteresis" or "models" with results on it: the hysteresis analysis and,
+  /// for "models", the three models (trained synchronously with the settings shown when none are)
+  /// and the modular case when the project has it.
+  Q_INVOKABLE void showView(const QString& view);
 
  private:
   void refresh();
   void showLog(int comboIndex);
+  void onTabChanged(int index);
+  void updateHysteresis();
+  /// Starts the modular case in a worker (or runs it now when `now`); no effect without the datasets.
+  void updateModular(bool now);
 
   ProjectDocument* document_;
   QComboBox* combo_;
   QLabel* info_;
   QStackedWidget* stack_;
+  QTabWidget* tabs_;
   ThermalTrendView* trend_;
+  ThermalHysteresisView* hysteresis_;
+  ThermalModelView* models_;
   QLabel* message_;
   QString error_;
   std::vector<DatasetRef> logs_;
   QString projectFile_;
+  ThermalLog log_;
+  QString logId_;
+  QString hysteresisKey_;  ///< what the hysteresis view shows (dataset, target, inputs)
+  QHash<QString, ThermalModelSettings> settings_;  ///< per dataset id, this session
+
+  struct ModularRun {
+    std::shared_ptr<ModularComparison> result;
+    QString error;
+    std::shared_ptr<ThermalLog> testLog;
+  };
+  QFutureWatcher<ModularRun>* modularWatcher_;
+  QString modularKey_;  ///< project file the modular result belongs to
+  bool modularDone_ = false;
+  void applyModular(const ModularRun& run);
 };
 
 }  // namespace metrofit

@@ -1,12 +1,30 @@
 // Report section "Thermal": per thermal log, a summary, the trend chart as vector graphics and a
-// table of the channels with their ranges.
+// table of the channels with their ranges; the hysteresis charts with loop areas and lags; the three
+// models of seed 004 (GNNMCI(1,N), GMC(1,N), MLP) fitted on the first part and compared on the rest
+// (chart, residuals, Table 4); and, after the combined test of the modular case, the combined test
+// predicted from models fitted on the Z and C tests (Section 4.3).
+//
+// Run time: the models are trained here (fixed seed, default budgets). Logs longer than
+// kMaxModelRows rows are fitted on every k-th row (said in the section). The report is laid out
+// twice (report.cpp: page numbers first), so results are kept in a small cache keyed by the log's
+// content and the settings.
+#include <QChart>
 #include <QCoreApplication>
+#include <QGraphicsLayout>
+#include <QGraphicsScene>
+#include <QPainter>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
+#include <memory>
+#include <mutex>
 
+#include "core/thermal/hysteresis.h"
 #include "widgets/charts/thermalcharts.h"
+#include "widgets/charts/thermalcomparison.h"
+#include "widgets/charts/thermalmodelcharts.h"
 #include "widgets/charts/trendanalysis.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
@@ -19,6 +37,133 @@ struct ReportText {
 };
 
 constexpr double kChartHeightMm = 108.0;
+constexpr double kModelChartHeightMm = 80.0;
+constexpr double kResidualChartHeightMm = 55.0;
+constexpr double kHysteresisCellMm = 52.0;
+constexpr std::size_t kMaxModelRows = 1500;      ///< longer logs are fitted on every k-th row
+constexpr std::size_t kMaxHysteresisCharts = 9;  ///< small multiples in the report
+
+/// What the report computes for one thermal log (cached across the two layout passes).
+struct ThermalResults {
+  ThermalModelSettings settings;
+  std::size_t stride = 1;
+  ThermalLog fitted;  ///< the log the models were fitted on (decimated when long)
+  thermal::ThermalSeries hysteresisSeries;
+  thermal::HysteresisAnalysis hysteresis;
+  QString hysteresisError;
+  std::shared_ptr<ThermalComparison> comparison;
+  QString modelError;
+};
+
+std::uint64_t contentHash(const ThermalLog& log, const std::string& extra) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](const void* data, std::size_t size) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 1099511628211ull;
+  };
+  mix(log.timeMin.data(), log.timeMin.size() * sizeof(double));
+  for (const ThermalChannel& c : log.channels) {
+    mix(c.name.data(), c.name.size());
+    mix(c.values.data(), c.values.size() * sizeof(double));
+  }
+  mix(extra.data(), extra.size());
+  return h;
+}
+
+std::string settingsText(const ThermalModelSettings& s) {
+  std::string t = s.target + "|" + std::to_string(s.trainFraction) + "|" + std::to_string(s.seed);
+  for (const auto& in : s.inputs) t += "," + in;
+  return t;
+}
+
+/// Hysteresis and the three models for one log (see the header comment for the cache).
+std::shared_ptr<const ThermalResults> thermalResults(const ThermalLog& log,
+                                                     const ThermalModelSettings& settings) {
+  static std::mutex mutex;
+  static std::map<std::uint64_t, std::shared_ptr<const ThermalResults>> cache;
+  const std::uint64_t key = contentHash(log, settingsText(settings));
+  {
+    const std::lock_guard lock(mutex);
+    if (const auto it = cache.find(key); it != cache.end()) return it->second;
+  }
+  auto r = std::make_shared<ThermalResults>();
+  r->settings = settings;
+  r->stride = log.rows() > kMaxModelRows ? (log.rows() + kMaxModelRows - 1) / kMaxModelRows : 1;
+  r->fitted = decimateThermalLog(log, r->stride);
+  try {
+    r->hysteresisSeries = thermal::selectThermalSeries(r->fitted, settings.target, settings.inputs);
+    r->hysteresis = thermal::analyseHysteresis(r->hysteresisSeries);
+  } catch (const std::exception& e) {
+    r->hysteresisError = QString::fromStdString(e.what());
+  }
+  try {
+    r->comparison = std::make_shared<ThermalComparison>(compareThermalModels(r->fitted, settings));
+  } catch (const std::exception& e) {
+    r->modelError = QString::fromStdString(e.what());
+  }
+  const std::lock_guard lock(mutex);
+  if (cache.size() > 16) cache.clear();
+  cache[key] = r;
+  return r;
+}
+
+/// The modular case of the project, or nullptr when it lacks one of the three tests (cached).
+std::shared_ptr<const ModularComparison> modularResults(const ReportContext& context, QString* error) {
+  const ReportDataset* tests[3] = {nullptr, nullptr, nullptr};
+  const char* ids[3] = {kModularZId, kModularCId, kModularCombinedId};
+  for (const ReportDataset* d : context.ofKind(dataset_kind::kThermalLog)) {
+    for (int i = 0; i < 3; ++i) {
+      if (d->ref.id == ids[i] && d->thermal) tests[i] = d;
+    }
+  }
+  if (!tests[0] || !tests[1] || !tests[2]) return nullptr;
+  static std::mutex mutex;
+  static std::map<std::uint64_t, std::shared_ptr<const ModularComparison>> cache;
+  const ThermalLog& test = *tests[2]->thermal;
+  const ThermalModelSettings s = defaultThermalModelSettings(test, nlohmann::json::object(), {});
+  const std::vector<std::string> inputs = modularInputs(test);
+  std::uint64_t key = contentHash(*tests[0]->thermal, "z") ^ (contentHash(*tests[1]->thermal, "c") * 3u) ^
+                      (contentHash(test, s.target) * 7u);
+  {
+    const std::lock_guard lock(mutex);
+    if (const auto it = cache.find(key); it != cache.end()) return it->second;
+  }
+  std::shared_ptr<const ModularComparison> m;
+  try {
+    m = std::make_shared<ModularComparison>(
+        compareModularModels({&*tests[0]->thermal, &*tests[1]->thermal}, test, s.target, inputs, 1));
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromStdString(e.what());
+    return nullptr;
+  }
+  const std::lock_guard lock(mutex);
+  if (cache.size() > 8) cache.clear();
+  cache[key] = m;
+  return m;
+}
+
+/// Draws a chart into `target` (device units), laid out `designWidthPx` scene pixels wide; takes
+/// ownership.
+void renderChart(QPainter& painter, QChart* chart, const QRectF& target, double designWidthPx) {
+  QGraphicsScene scene;
+  scene.addItem(chart);
+  chart->resize(designWidthPx, designWidthPx * target.height() / target.width());
+  if (chart->layout() != nullptr) chart->layout()->activate();
+  const QRectF source = chart->sceneBoundingRect();
+  scene.setSceneRect(source);
+  scene.render(&painter, target, source, Qt::KeepAspectRatio);
+}
+
+QString joined(const std::vector<std::string>& names) {
+  QStringList l;
+  for (const auto& n : names) l << QString::fromStdString(n);
+  return l.join(QStringLiteral(", "));
+}
+
+QString metric(double v, int decimals) {
+  if (!std::isfinite(v)) return QStringLiteral("—");
+  return std::abs(v) >= 1e6 ? QString::number(v, 'g', 3) : QString::number(v, 'f', decimals);
+}
 
 /// "46.3 h" above 3 h, else "95 min".
 QString formatDuration(double minutes) {
@@ -144,6 +289,193 @@ void writeThermalLog(ReportPainter& out, const ReportDataset& dataset) {
   out.table(channels);
 }
 
+QString unitOf(const ThermalLog& log, const std::string& column) {
+  const int i = log.indexOf(column);
+  return i >= 0 ? displayUnit(log.channels[static_cast<std::size_t>(i)].unit) : QString();
+}
+
+void writeHysteresis(ReportPainter& out, const ThermalResults& r) {
+  out.subheading(ReportText::tr("Hysteresis"), out.mm(60.0));
+  if (!r.hysteresisError.isEmpty()) {
+    out.paragraph(ReportText::tr("No hysteresis analysis: %1").arg(r.hysteresisError));
+    return;
+  }
+  const thermal::HysteresisAnalysis& h = r.hysteresis;
+  const std::size_t shown = std::min(h.sensors.size(), kMaxHysteresisCharts);
+  out.paragraph(
+      ReportText::tr(
+          "%1 against each sensor (Fig. 9 of seed 004): heating runs (the change of %1 grows, %2 "
+          "rows) and cooling runs (%3 rows) in the colours of the trend chart's phases. Loop area by "
+          "the shoelace formula; lag: the time constant of a first-order lag between sensor and "
+          "displacement (> 0: the sensor lags).%4")
+          .arg(QString::fromStdString(h.target))
+          .arg(h.heatingRows)
+          .arg(h.coolingRows)
+          .arg(shown < h.sensors.size()
+                   ? QLatin1Char(' ') +
+                         ReportText::tr("Charts of the first %1 of %2 sensors; the table lists all.")
+                             .arg(shown)
+                             .arg(h.sensors.size())
+                   : QString()));
+  const int columns = 3;
+  const int rows = static_cast<int>((shown + columns - 1) / columns);
+  for (int row = 0; row < rows; ++row) {
+    const QRectF band = out.reserve(out.mm(kHysteresisCellMm));
+    const double w = band.width() / columns;
+    for (int col = 0; col < columns; ++col) {
+      const std::size_t i = static_cast<std::size_t>(row * columns + col);
+      if (i >= shown) break;
+      HysteresisChartOptions o;
+      o.compactTitle = true;
+      o.legend = i == 0;
+      o.maxPoints = 800;
+      renderChart(out.painter(), makeHysteresisChart(r.fitted, r.hysteresisSeries, h, static_cast<int>(i), o),
+                  QRectF(band.left() + col * w, band.top(), w - out.mm(1.5), band.height()), 300.0);
+    }
+  }
+  out.skip(out.mm(2.0));
+  ReportTable t;
+  const QString yUnit = unitOf(r.fitted, h.target);
+  t.header = {ReportText::tr("sensor"),      ReportText::tr("loop area"),   ReportText::tr("loop / ranges"),
+              ReportText::tr("lag τ (min)"), ReportText::tr("R² with lag"), ReportText::tr("R² static")};
+  t.widths = {1.2, 1.6, 1.1, 1.0, 1.0, 1.0};
+  t.alignment = {Qt::AlignLeft,  Qt::AlignRight, Qt::AlignRight,
+                 Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
+  for (const thermal::SensorHysteresis& s : h.sensors) {
+    const QString unit = unitOf(r.fitted, s.sensor);
+    t.rows.push_back(
+        {QString::fromStdString(s.sensor), QStringLiteral("%1 %2·%3").arg(metric(s.loopArea, 2), unit, yUnit),
+         metric(s.normalisedLoopArea, 3), metric(s.tauMin, 1), metric(s.r2, 3), metric(s.r2Static, 3)});
+  }
+  out.table(t);
+}
+
+void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults& r) {
+  out.subheading(ReportText::tr("Thermal error models"), out.mm(90.0));
+  const ThermalModelSettings& s = r.settings;
+  QString text =
+      ReportText::tr(
+          "GNNMCI(1,N) (PSO, 90 particles, 100 iterations, seed %1), GMC(1,N) (least squares) and "
+          "the MLP (%2-10-1, Levenberg-Marquardt, seed %1) predict %3 from %4; each is fitted on the "
+          "first %5 % of the rows and tested on the rest (held out, shaded).")
+          .arg(s.seed)
+          .arg(s.inputs.size())
+          .arg(QString::fromStdString(s.target), joined(s.inputs))
+          .arg(100.0 * s.trainFraction, 0, 'f', 0);
+  if (r.stride > 1) {
+    text += QLatin1Char(' ') +
+            ReportText::tr(
+                "To keep the report's run time short, this %1-row log is fitted on every %2th row "
+                "(%3 rows); the GUI and metrofit-cli fit all rows.")
+                .arg(log.rows())
+                .arg(r.stride)
+                .arg(r.fitted.rows());
+  }
+  out.paragraph(text);
+  if (!r.comparison) {
+    out.paragraph(ReportText::tr("The models could not be fitted: %1").arg(r.modelError));
+    return;
+  }
+  const ThermalComparison& c = *r.comparison;
+  ModelChartOptions o;
+  out.chart(makeModelComparisonChart(r.fitted, c, o), out.mm(kModelChartHeightMm));
+  o.legend = false;
+  o.title = ReportText::tr("residual = measured − model");
+  out.chart(makeResidualChart(r.fitted, c, o), out.mm(kResidualChartHeightMm));
+
+  const QString unit = unitOf(log, s.target);
+  double scale = 0.0;
+  for (double v : c.series.target) scale = std::max(scale, std::abs(v));
+  const int dec = scale >= 100.0 ? 1 : (scale >= 1.0 ? 2 : 3);
+  ReportTable t;
+  t.header = {ReportText::tr("model"), ReportText::tr("rows"),
+              ReportText::tr("R"),     ReportText::tr("RMSE (%1)").arg(unit),
+              ReportText::tr("E"),     ReportText::tr("band (%1)").arg(unit)};
+  t.widths = {1.3, 1.3, 1.0, 1.1, 1.1, 1.1};
+  t.alignment = {Qt::AlignLeft,  Qt::AlignLeft,  Qt::AlignRight,
+                 Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
+  QStringList trainingNotes;
+  for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+    const thermal::ThermalEvaluation& ev = c.models[i];
+    if (ev.predicted.size() != c.series.rows()) continue;
+    QString training;
+    switch (kThermalModelOrder[i]) {
+      case thermal::ThermalModelKind::Gnnmci:
+        training = ReportText::tr("%1 PSO iterations, Eq. 2.9 %2 → %3")
+                       .arg(ev.training.run.iterations)
+                       .arg(ev.training.firstFitness, 0, 'g', 4)
+                       .arg(ev.training.fitness, 0, 'g', 4);
+        break;
+      case thermal::ThermalModelKind::Gmc:
+        training = ev.training.model.grey.b1 > 0.0
+                       ? ReportText::tr("least squares, b1 = %1").arg(ev.training.model.grey.b1, 0, 'g', 4)
+                       : ReportText::tr("least squares, unstable: b1 = %1 ≤ 0")
+                             .arg(ev.training.model.grey.b1, 0, 'g', 4);
+        break;
+      case thermal::ThermalModelKind::Mlp:
+        training = ReportText::tr("%1 LM epochs (%2)")
+                       .arg(ev.training.run.iterations)
+                       .arg(QString::fromLatin1(toString(ev.training.run.termination)));
+        break;
+    }
+    trainingNotes << thermalModelName(kThermalModelOrder[i]) + QStringLiteral(": ") + training +
+                         ReportText::tr(" (%1 s)").arg(c.seconds[i], 0, 'f', 2);
+    for (int part = 0; part < 2; ++part) {
+      const thermal::ThermalMetrics& m = part == 0 ? ev.fit : ev.heldout;
+      t.rows.push_back({part == 0 ? thermalModelName(kThermalModelOrder[i]) : QString(),
+                        (part == 0 ? ReportText::tr("fit, %1") : ReportText::tr("held out, %1")).arg(m.n),
+                        metric(m.r, 4), metric(m.rmse, dec), metric(m.e, 4),
+                        QStringLiteral("±") + metric(m.residualBand, dec)});
+    }
+  }
+  out.paragraph(ReportText::tr("Performance indices (Table 4 of seed 004): R correlation, RMSE, E "
+                               "Nash-Sutcliffe efficiency, band = largest |residual|."),
+                ReportPainter::Font::Small);
+  out.table(t);
+  out.paragraph(ReportText::tr("Training: %1.").arg(trainingNotes.join(QStringLiteral("; "))),
+                ReportPainter::Font::Small);
+}
+
+void writeModular(ReportPainter& out, const ReportContext& context, const ThermalLog& testLog) {
+  QString error;
+  const std::shared_ptr<const ModularComparison> m = modularResults(context, &error);
+  out.subheading(ReportText::tr("Modular models (Section 4.3)"), out.mm(80.0));
+  if (!m) {
+    out.paragraph(ReportText::tr("The modular case could not be computed: %1").arg(error));
+    return;
+  }
+  out.paragraph(ReportText::tr("Each model is fitted on the Z-heating test (%1) and the C-heating test (%2) "
+                               "together and predicts the combined helical test (%3), which it has not seen. "
+                               "Target %4, inputs %5, seed 1. Error reduction as the paper states it: "
+                               "1 − max|residual| / max|error|, and by RMS.")
+                    .arg(QString::fromLatin1(kModularZId), QString::fromLatin1(kModularCId),
+                         QString::fromLatin1(kModularCombinedId), QString::fromStdString(m->target),
+                         joined(m->inputs)));
+  ModelChartOptions o;
+  out.chart(makeModularChart(testLog, *m, o), out.mm(kModelChartHeightMm));
+  const QString unit = unitOf(testLog, m->target);
+  ReportTable t;
+  t.header = {ReportText::tr("model"),
+              ReportText::tr("error (%1)").arg(unit),
+              ReportText::tr("band (%1)").arg(unit),
+              ReportText::tr("less, peak"),
+              ReportText::tr("RMSE (%1)").arg(unit),
+              ReportText::tr("less, RMS"),
+              ReportText::tr("R"),
+              ReportText::tr("E")};
+  t.alignment = {Qt::AlignLeft,  Qt::AlignRight, Qt::AlignRight, Qt::AlignRight,
+                 Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
+  for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+    const thermal::ModularEvaluation& ev = m->models[i];
+    t.rows.push_back({thermalModelName(kThermalModelOrder[i]), metric(ev.errorPeak, 1),
+                      QStringLiteral("±") + metric(ev.residualPeak, 1),
+                      metric(100.0 * ev.reductionPeak, 1) + QStringLiteral(" %"), metric(ev.test.rmse, 2),
+                      metric(100.0 * ev.reductionRms, 1) + QStringLiteral(" %"), metric(ev.test.r, 4),
+                      metric(ev.test.e, 4)});
+  }
+  out.table(t);
+}
+
 }  // namespace
 
 QString thermalSectionTitle() {
@@ -152,12 +484,23 @@ QString thermalSectionTitle() {
 
 void writeThermalSection(ReportPainter& out, const ReportContext& context) {
   bool first = true;
+  const auto study = context.project->studies.find(study::kThermal);
+  const nlohmann::json thermalStudy =
+      study != context.project->studies.end() ? *study : nlohmann::json::object();
   for (const ReportDataset* dataset : context.ofKind(dataset_kind::kThermalLog)) {
     if (!first) {
       out.newPage();
     }
     first = false;
     writeThermalLog(out, *dataset);
+    const ThermalLog& log = *dataset->thermal;
+    const ThermalModelSettings settings = defaultThermalModelSettings(log, thermalStudy, dataset->ref.id);
+    const std::shared_ptr<const ThermalResults> results = thermalResults(log, settings);
+    writeHysteresis(out, *results);
+    writeModels(out, log, *results);
+    if (dataset->ref.id == kModularCombinedId) {
+      writeModular(out, context, log);
+    }
   }
 }
 

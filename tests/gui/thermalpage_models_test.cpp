@@ -1,0 +1,160 @@
+// The thermal page's Hysteresis and Models tabs on generated data (offscreen): the GNNMCI metrics equal
+// those of `metrofit-cli thermal fit` for the same seed, training in the worker reports live PSO
+// progress, Cancel stops it, showView switches tabs with results on them. Grabs of the page go to
+// $METROFIT_TEST_OUT/thermalpage for people to look at.
+#include <gtest/gtest.h>
+
+#include <QDir>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTest>
+
+#include <nlohmann/json.hpp>
+
+#include "app/gui/thermalpage.h"
+#include "cli/cli_runner.h"
+#include "core/io/file_io.h"
+#include "core/project/project.h"
+#include "core/sim/thermal_sim.h"
+#include "qtapp.h"
+#include "testsupport.h"
+#include "widgets/charts/thermalcomparison.h"
+#include "widgets/charts/thermalhysteresisview.h"
+#include "widgets/charts/thermalmodelview.h"
+#include "widgets/document/projectdocument.h"
+
+namespace metrofit {
+namespace {
+
+class ThermalPageModelsTest : public ::testing::Test {
+ protected:
+  /// A project with one generated log (thermal_sim.h, seed 3) of `minutes` minutes.
+  void makeProject(double minutes) {
+    ThermalSimOptions so;
+    so.seed = 3;
+    so.durationMin = minutes;
+    test::writeText(tmp_.file("log.csv"), thermalLogToCsv(simulateThermalTest(so)));
+    Project p;
+    p.name = "generated";
+    p.datasets.push_back({"gen", "thermal_log", "log.csv", "generated", ""});
+    p.studies["thermal"] = {
+        {"dataset", "gen"}, {"target", "disp_z_um"}, {"inputs", {"T1", "T2", "T3", "T4"}}};
+    saveProject(p, tmp_.file("p.metrofit"));
+    document_.load(QString::fromStdString(tmp_.file("p.metrofit")));
+  }
+
+  void grab(ThermalPage& page, const QString& name) {
+    const QDir dir(QString::fromStdString((test::outDir() / "thermalpage").string()));
+    QDir().mkpath(dir.path());
+    page.resize(1180, 760);
+    page.show();
+    QTest::qWait(50);
+    EXPECT_TRUE(page.grab().save(dir.filePath(name)));
+  }
+
+  test::TempDir tmp_;
+  ProjectDocument document_;
+};
+
+TEST_F(ThermalPageModelsTest, GnnmciMetricsEqualTheCliForTheSameSeed) {
+  makeProject(480.0);
+  ThermalPage page(&document_);
+  page.showView(QStringLiteral("models"));
+  EXPECT_EQ(page.tabs()->currentIndex(), 2);
+  const ThermalComparison* c = page.modelView()->comparison();
+  ASSERT_NE(c, nullptr) << page.modelView()->statusText().toStdString();
+  EXPECT_EQ(c->settings.inputs, (std::vector<std::string>{"T1", "T2", "T3", "T4"}));
+  EXPECT_EQ(c->settings.trainFraction, 0.5);
+  EXPECT_EQ(c->settings.seed, 1u);
+
+  const test::CliRun r = test::cli(
+      "thermal fit --data log.csv --target disp_z_um --inputs T1,T2,T3,T4 --model gnnmci --train-fraction "
+      "0.5 "
+      "--seed 1 --out fit.json",
+      tmp_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(test::readText(tmp_.file("fit.json")));
+  const thermal::ThermalEvaluation& g = c->models[0];
+  EXPECT_EQ(j["train_rows"].get<std::size_t>(), g.fitRows);
+  EXPECT_NEAR(j["fit_rmse"].get<double>(), g.fit.rmse, 1e-9);
+  EXPECT_NEAR(j["heldout_rmse"].get<double>(), g.heldout.rmse, 1e-9);
+  EXPECT_NEAR(j["R"].get<double>(), g.heldout.r, 1e-9);
+  EXPECT_NEAR(j["E"].get<double>(), g.heldout.e, 1e-9);
+  EXPECT_NEAR(j["residual_band"].get<double>(), g.heldout.residualBand, 1e-9);
+  EXPECT_NEAR(j["fit"]["E"].get<double>(), g.fit.e, 1e-9);
+
+  // Table 4 on screen: two rows (fit, held out) per model, the held-out RMSE as computed.
+  const QTableWidget* table = page.modelView()->metricsTable();
+  ASSERT_EQ(table->rowCount(), 6);
+  EXPECT_EQ(table->item(0, 0)->text(), QStringLiteral("GNNMCI(1,N)"));
+  EXPECT_EQ(table->item(1, 3)->text(), QString::number(g.heldout.rmse, 'f', 2));
+  EXPECT_EQ(table->item(2, 0)->text(), QStringLiteral("GMC(1,N)"));
+  EXPECT_EQ(table->item(4, 0)->text(), QStringLiteral("MLP"));
+  grab(page, QStringLiteral("models.png"));
+
+  page.showView(QStringLiteral("hysteresis"));
+  EXPECT_EQ(page.tabs()->currentIndex(), 1);
+  EXPECT_EQ(page.hysteresisView()->chartCount(), 4);
+  EXPECT_EQ(page.hysteresisView()->analysis().sensors.size(), 4u);
+  grab(page, QStringLiteral("hysteresis.png"));
+  page.showView(QStringLiteral("trend"));
+  EXPECT_EQ(page.tabs()->currentIndex(), 0);
+}
+
+TEST_F(ThermalPageModelsTest, WorkerReportsLiveProgressAndFinishes) {
+  makeProject(240.0);
+  ThermalPage page(&document_);
+  ThermalModelView* view = page.modelView();
+  QSignalSpy finished(view, &ThermalModelView::trainingFinished);
+  view->trainButton()->click();
+  EXPECT_TRUE(view->isRunning());
+  EXPECT_FALSE(view->trainButton()->isEnabled());
+  EXPECT_TRUE(view->cancelButton()->isEnabled());
+  ASSERT_TRUE(finished.wait(60000));
+  EXPECT_TRUE(finished.takeFirst().at(0).toBool());
+  const ThermalComparison* c = view->comparison();
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(view->liveIterations(), c->models[0].training.run.iterations);
+  EXPECT_EQ(view->progressBar()->value(), view->progressBar()->maximum());
+  EXPECT_TRUE(view->trainButton()->isEnabled());
+  EXPECT_FALSE(view->cancelButton()->isEnabled());
+}
+
+TEST_F(ThermalPageModelsTest, CancelStopsTraining) {
+  makeProject(6000.0);  // 6001 rows: long enough to cancel in the middle of the swarm
+  ThermalPage page(&document_);
+  ThermalModelView* view = page.modelView();
+  QSignalSpy finished(view, &ThermalModelView::trainingFinished);
+  view->train();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return view->liveIterations() >= 1; }, 60000));
+  view->cancelButton()->click();
+  ASSERT_TRUE(finished.wait(60000));
+  EXPECT_FALSE(finished.takeFirst().at(0).toBool());
+  EXPECT_LT(view->liveIterations(), 100);
+  EXPECT_EQ(view->comparison(), nullptr);  // nothing was trained before
+  EXPECT_TRUE(view->statusText().contains(QStringLiteral("cancelled"))) << view->statusText().toStdString();
+  EXPECT_FALSE(view->isRunning());
+  EXPECT_TRUE(view->trainButton()->isEnabled());
+}
+
+TEST_F(ThermalPageModelsTest, BadSettingsGiveAMessage) {
+  makeProject(240.0);
+  ThermalPage page(&document_);
+  ThermalModelView* view = page.modelView();
+  ThermalModelSettings s = view->settings();
+  s.inputs.clear();
+  view->setSettings(s);
+  EXPECT_FALSE(view->trainNow());
+  EXPECT_EQ(view->statusText(), QStringLiteral("Choose at least one input."));
+  s.inputs = {"spindle_rpm", "T1"};
+  s.trainFraction = 0.9;
+  view->setSettings(s);
+  // The speed is 0 for the first 10 min only, so it is not constant; training works.
+  EXPECT_TRUE(view->trainNow()) << view->statusText().toStdString();
+}
+
+}  // namespace
+}  // namespace metrofit

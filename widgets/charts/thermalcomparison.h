@@ -1,0 +1,99 @@
+#pragma once
+// Qt-free runs behind the thermal model views and the report (seed 004, Section 4 and Table 4): the
+// three models of core/thermal (GNNMCI(1,N) by PSO, GMC(1,N) by least squares, the MLP by
+// Levenberg-Marquardt) fitted on the first part of one log with the same settings and compared on
+// the rest, the modular case of Section 4.3 (Z + C heating tests -> the combined test), hysteresis
+// runs for the charts and the decimation the report uses for long logs.
+//
+// One train fraction for all three models (the CLI's `thermal fit` defaults differ by model: 0.5 for
+// the grey models, 0.7 for the MLP); the comparison needs the same held-out rows for all. Each model
+// is fitted exactly as `metrofit-cli thermal fit --model M --train-fraction F --seed S` does
+// (thermal::fitAndEvaluate with the default options and the seed), so the numbers agree bit for bit.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/common/run.h"
+#include "core/thermal/hysteresis.h"
+#include "core/thermal/thermal_log.h"
+#include "core/thermal/thermal_model.h"
+
+namespace metrofit {
+
+/// What a comparison is run with.
+struct ThermalModelSettings {
+  std::string target;
+  std::vector<std::string> inputs;
+  double trainFraction = 0.5;
+  std::uint64_t seed = 1;
+  bool operator==(const ThermalModelSettings&) const = default;
+};
+
+/// Settings for a log: the project's thermal study (`studies.thermal`: "dataset", "target",
+/// "inputs", optional "train_fraction", "seed") when it names this dataset or its columns exist in
+/// the log; otherwise the first displacement channel as target and, as inputs, the strain channels
+/// plus T2 when the log has strain sensors (the paper's choice, Section 4.3: FBG-1..4 and the ram
+/// temperature), else every non-ambient temperature (at most 8).
+ThermalModelSettings defaultThermalModelSettings(const ThermalLog& log, const nlohmann::json& thermalStudy,
+                                                 const std::string& datasetId);
+
+/// The models in the order they are trained and shown.
+inline constexpr std::array<thermal::ThermalModelKind, 3> kThermalModelOrder = {
+    thermal::ThermalModelKind::Gnnmci, thermal::ThermalModelKind::Gmc, thermal::ThermalModelKind::Mlp};
+
+/// Progress of a comparison: which model (index into kThermalModelOrder) and its iteration.
+using ThermalComparisonObserver = std::function<ObserverDecision(int model, const IterationSummary& summary)>;
+
+struct ThermalComparison {
+  ThermalModelSettings settings;
+  thermal::ThermalSeries series;
+  std::array<thermal::ThermalEvaluation, 3> models;  ///< in kThermalModelOrder
+  std::array<double, 3> seconds{};                   ///< wall time of each fit
+  bool cancelled = false;                            ///< an observer stopped a training
+};
+
+/// Fits and evaluates the three models (see above). Throws the core's InputError / OptionsError for
+/// bad columns or settings; `cancelled` is set (and the remaining models skipped) when the observer
+/// stops.
+ThermalComparison compareThermalModels(const ThermalLog& log, const ThermalModelSettings& settings,
+                                       const ThermalComparisonObserver& observer = {});
+
+struct ModularComparison {
+  std::string target;
+  std::vector<std::string> inputs;
+  thermal::ThermalSeries test;                       ///< the combined test
+  std::array<thermal::ModularEvaluation, 3> models;  ///< in kThermalModelOrder
+  bool cancelled = false;
+};
+
+/// Section 4.3: each model fitted on the training tests together, predicting `test`.
+ModularComparison compareModularModels(const std::vector<const ThermalLog*>& trainingTests,
+                                       const ThermalLog& test, const std::string& target,
+                                       const std::vector<std::string>& inputs, std::uint64_t seed,
+                                       const ThermalComparisonObserver& observer = {});
+
+/// Dataset ids of the modular case in a project (the demo's): the Z-heating, the C-heating and the
+/// combined (helical) test.
+inline constexpr const char* kModularZId = "thermal_modular_z";
+inline constexpr const char* kModularCId = "thermal_modular_c";
+inline constexpr const char* kModularCombinedId = "thermal_modular_combined";
+
+/// The inputs of the modular case: FBG strain channels and T2 when present (the paper's), else the
+/// defaults of defaultThermalModelSettings.
+std::vector<std::string> modularInputs(const ThermalLog& log);
+
+/// A contiguous run of rows of one phase (+1 heating, -1 cooling) of a hysteresis analysis.
+struct PhaseRun {
+  int phase = 1;
+  std::size_t first = 0, last = 0;  ///< rows, inclusive
+};
+/// The runs of `phase` in row order.
+std::vector<PhaseRun> phaseRuns(const std::vector<int>& phase);
+
+/// Every `stride`-th row of a log (the first and the last always), for fitting long logs in reports.
+ThermalLog decimateThermalLog(const ThermalLog& log, std::size_t stride);
+
+}  // namespace metrofit

@@ -1,0 +1,246 @@
+// ThermalHysteresisView: hysteresis charts (thermalmodelcharts.h) and the loop / lag table.
+#include "widgets/charts/thermalhysteresisview.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QComboBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QStackedWidget>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include "core/thermal/hysteresis.h"
+#include "core/thermal/thermal_data.h"
+#include "core/thermal/thermal_log.h"
+#include "widgets/charts/thermalcharts.h"
+#include "widgets/charts/thermalmodelcharts.h"
+
+namespace metrofit {
+
+struct ThermalHysteresisView::Impl {
+  ThermalLog log;
+  thermal::ThermalSeries series;
+  thermal::HysteresisAnalysis analysis;
+  QString error;
+  QString sensor;  ///< empty: all
+  QComboBox* combo = nullptr;
+  QStackedWidget* stack = nullptr;
+  QScrollArea* scroll = nullptr;
+  QWidget* grid = nullptr;
+  QLabel* message = nullptr;
+  QTableWidget* table = nullptr;
+  QLabel* phases = nullptr;
+  int charts = 0;
+
+  QChartView* chartView(QChart* chart, QWidget* parent, int minHeight) {
+    auto* view = new QChartView(chart, parent);
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setMinimumHeight(minHeight);
+    return view;
+  }
+
+  void rebuild() {
+    grid = new QWidget;
+    auto* layout = new QGridLayout(grid);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(4);
+    charts = 0;
+    const int index =
+        sensor.isEmpty()
+            ? -1
+            : static_cast<int>(std::distance(
+                  series.inputNames.begin(),
+                  std::find(series.inputNames.begin(), series.inputNames.end(), sensor.toStdString())));
+    if (index >= 0 && index < static_cast<int>(series.inputNames.size())) {
+      layout->addWidget(chartView(makeHysteresisChart(log, series, analysis, index), grid, 300), 0, 0);
+      charts = 1;
+    } else {
+      const int n = static_cast<int>(series.inputNames.size());
+      const int columns = n <= 1 ? 1 : (n <= 4 ? 2 : 3);
+      HysteresisChartOptions o;
+      o.compactTitle = true;
+      o.legend = false;
+      o.maxPoints = 600;
+      for (int i = 0; i < n; ++i) {
+        layout->addWidget(chartView(makeHysteresisChart(log, series, analysis, i, o), grid, 230), i / columns,
+                          i % columns);
+      }
+      charts = n;
+    }
+    scroll->setWidget(grid);  // deletes the previous grid
+  }
+
+  void fillTable() {
+    table->setRowCount(static_cast<int>(analysis.sensors.size()));
+    const QString targetUnit = displayUnit(series.hasTarget() && log.indexOf(series.targetName) >= 0
+                                               ? log.channel(series.targetName).unit
+                                               : std::string());
+    for (int r = 0; r < table->rowCount(); ++r) {
+      const thermal::SensorHysteresis& h = analysis.sensors[static_cast<std::size_t>(r)];
+      const QString unit = log.indexOf(h.sensor) >= 0 ? displayUnit(log.channel(h.sensor).unit) : QString();
+      const QStringList cells = {QString::fromStdString(h.sensor),
+                                 QString::number(h.loopArea, 'f', 2),
+                                 QString::number(h.normalisedLoopArea, 'f', 3),
+                                 QString::number(h.tauMin, 'f', 1),
+                                 QString::number(h.r2, 'f', 3),
+                                 QString::number(h.r2Static, 'f', 3)};
+      for (int c = 0; c < cells.size(); ++c) {
+        auto* item = new QTableWidgetItem(cells[c]);
+        item->setTextAlignment(c == 0 ? (Qt::AlignLeft | Qt::AlignVCenter)
+                                      : (Qt::AlignRight | Qt::AlignVCenter));
+        if (c == 1) item->setToolTip(ThermalHysteresisView::tr("loop area in %1 × %2").arg(unit, targetUnit));
+        if (c == 3)
+          item->setToolTip(h.tauMin >= 0.0 ? ThermalHysteresisView::tr("the sensor lags the displacement")
+                                           : ThermalHysteresisView::tr("the displacement lags the sensor"));
+        table->setItem(r, c, item);
+      }
+    }
+    table->resizeColumnsToContents();
+  }
+};
+
+ThermalHysteresisView::ThermalHysteresisView(QWidget* parent) : QWidget(parent), d(std::make_unique<Impl>()) {
+  d->combo = new QComboBox(this);
+  d->combo->setObjectName(QStringLiteral("hysteresisSensorCombo"));
+  d->combo->setToolTip(tr("Sensor plotted against the displacement, or all sensors side by side"));
+  d->scroll = new QScrollArea(this);
+  d->scroll->setWidgetResizable(true);
+  d->scroll->setFrameShape(QFrame::NoFrame);
+  d->grid = new QWidget;
+  d->scroll->setWidget(d->grid);
+  d->message = new QLabel(this);
+  d->message->setWordWrap(true);
+  d->message->setAlignment(Qt::AlignCenter);
+  d->stack = new QStackedWidget(this);
+  d->stack->addWidget(d->scroll);
+  d->stack->addWidget(d->message);
+
+  d->table = new QTableWidget(0, 6, this);
+  d->table->setObjectName(QStringLiteral("hysteresisTable"));
+  d->table->setHorizontalHeaderLabels(
+      {tr("sensor"), tr("loop area"), tr("loop / ranges"), tr("lag τ (min)"), tr("R² lag"), tr("R² static")});
+  d->table->horizontalHeaderItem(1)->setToolTip(
+      tr("Area enclosed by the trajectory (shoelace formula), sensor "
+         "unit × displacement unit"));
+  d->table->horizontalHeaderItem(2)->setToolTip(
+      tr("Loop area divided by the product of the two ranges: 0 for a line, 0.785 for a circle"));
+  d->table->horizontalHeaderItem(3)->setToolTip(
+      tr("Time constant of a first-order lag between sensor and displacement; > 0: the sensor lags"));
+  d->table->verticalHeader()->setVisible(false);
+  d->table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  d->table->setSelectionBehavior(QAbstractItemView::SelectRows);
+  d->table->setMinimumWidth(440);
+  d->table->setMaximumWidth(520);
+  d->phases = new QLabel(this);
+  d->phases->setWordWrap(true);
+
+  auto* top = new QHBoxLayout;
+  auto* label = new QLabel(tr("&Sensor:"), this);
+  label->setBuddy(d->combo);
+  top->addWidget(label);
+  top->addWidget(d->combo);
+  top->addStretch(1);
+
+  auto* side = new QVBoxLayout;
+  side->addWidget(new QLabel(tr("Loop area and lag per sensor"), this));
+  side->addWidget(d->table, 1);
+  side->addWidget(d->phases);
+
+  auto* body = new QHBoxLayout;
+  body->addWidget(d->stack, 1);
+  body->addLayout(side);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(4, 4, 4, 4);
+  layout->addLayout(top);
+  layout->addLayout(body, 1);
+
+  connect(d->combo, &QComboBox::currentIndexChanged, this,
+          [this](int) { setSensor(d->combo->currentData().toString()); });
+  connect(d->table, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
+    if (row >= 0 && row < static_cast<int>(d->analysis.sensors.size()))
+      setSensor(QString::fromStdString(d->analysis.sensors[static_cast<std::size_t>(row)].sensor));
+  });
+}
+
+ThermalHysteresisView::~ThermalHysteresisView() = default;
+
+bool ThermalHysteresisView::setLog(const ThermalLog& log, const std::string& target,
+                                   const std::vector<std::string>& inputs) {
+  d->log = log;
+  d->error.clear();
+  try {
+    d->series = thermal::selectThermalSeries(log, target, inputs);
+    d->analysis = thermal::analyseHysteresis(d->series);
+  } catch (const std::exception& e) {
+    d->error = QString::fromStdString(e.what());
+    d->series = {};
+    d->analysis = {};
+  }
+  {
+    const QSignalBlocker blocker(d->combo);
+    d->combo->clear();
+    d->combo->addItem(tr("All sensors"), QString());
+    for (const std::string& name : d->series.inputNames) {
+      d->combo->addItem(QString::fromStdString(name), QString::fromStdString(name));
+    }
+    const int keep = d->combo->findData(d->sensor);
+    d->combo->setCurrentIndex(keep >= 0 ? keep : 0);
+    d->sensor = d->combo->currentData().toString();
+  }
+  d->fillTable();
+  if (!d->error.isEmpty()) {
+    d->message->setText(tr("No hysteresis analysis for this log:\n%1").arg(d->error));
+    d->stack->setCurrentWidget(d->message);
+    d->phases->clear();
+    d->charts = 0;
+    return false;
+  }
+  d->phases->setText(tr("Target %1: %2 heating rows, %3 cooling rows (the target's change grows or shrinks).")
+                         .arg(QString::fromStdString(d->analysis.target))
+                         .arg(d->analysis.heatingRows)
+                         .arg(d->analysis.coolingRows));
+  d->rebuild();
+  d->stack->setCurrentWidget(d->scroll);
+  return true;
+}
+
+void ThermalHysteresisView::setSensor(const QString& sensor) {
+  const int index = d->combo->findData(sensor);
+  const QString value = index >= 0 ? sensor : QString();
+  {
+    const QSignalBlocker blocker(d->combo);
+    d->combo->setCurrentIndex(std::max(index, 0));
+  }
+  if (value == d->sensor && d->charts > 0) return;
+  d->sensor = value;
+  if (d->error.isEmpty()) d->rebuild();
+  emit sensorChanged(d->sensor);
+}
+
+QString ThermalHysteresisView::sensor() const {
+  return d->sensor;
+}
+
+const thermal::HysteresisAnalysis& ThermalHysteresisView::analysis() const {
+  return d->analysis;
+}
+
+int ThermalHysteresisView::chartCount() const {
+  return d->charts;
+}
+
+QString ThermalHysteresisView::errorMessage() const {
+  return d->error;
+}
+
+}  // namespace metrofit

@@ -1,0 +1,46 @@
+#pragma once
+// Hysteresis view of a thermal log (seed 004, Fig. 9): the target (displacement) against one sensor or
+// against every sensor (small multiples), heating and cooling runs coloured as the trend chart's phase
+// bands, and a side table with each sensor's loop area and lag (core/thermal/hysteresis.h). Qt Charts
+// stays behind the pimpl.
+#include <QWidget>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace metrofit {
+struct ThermalLog;
+namespace thermal {
+struct ThermalSeries;
+struct HysteresisAnalysis;
+}  // namespace thermal
+
+class ThermalHysteresisView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit ThermalHysteresisView(QWidget* parent = nullptr);
+  ~ThermalHysteresisView() override;
+
+  /// Analyses `target` against `inputs` of `log` and shows the result. Returns false (and shows the
+  /// one-line error) when the analysis fails, e.g. for a constant column.
+  bool setLog(const ThermalLog& log, const std::string& target, const std::vector<std::string>& inputs);
+  /// Shows one sensor (its name) or all of them (an empty name).
+  void setSensor(const QString& sensor);
+  /// The sensor shown, empty for all.
+  QString sensor() const;
+  /// The last analysis (empty when none).
+  const thermal::HysteresisAnalysis& analysis() const;
+  /// Number of charts currently shown (1, or one per sensor).
+  int chartCount() const;
+  /// The error of the last setLog, empty when it worked.
+  QString errorMessage() const;
+
+ signals:
+  void sensorChanged(const QString& sensor);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> d;
+};
+
+}  // namespace metrofit

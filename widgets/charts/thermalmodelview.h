@@ -1,0 +1,70 @@
+#pragma once
+// Model comparison view of a thermal log (seed 004, Fig. 10-14 and Table 4): settings (target,
+// inputs, train fraction, seed), training of GNNMCI(1,N), GMC(1,N) and the MLP in a worker thread
+// with live PSO progress (best fitness against iteration, a progress bar, Cancel), then measured
+// against the three models over time with the fit / held-out boundary, the residuals, the Table 4
+// metrics (R, RMSE, E, residual band on the fitted and the held-out rows) and, when the project has
+// the three modular tests, the combined test predicted from the Z and C tests (Section 4.3).
+// Qt Charts stays behind the pimpl.
+#include <QWidget>
+#include <memory>
+
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+
+namespace metrofit {
+struct ThermalLog;
+struct ThermalModelSettings;
+struct ThermalComparison;
+struct ModularComparison;
+
+class ThermalModelView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit ThermalModelView(QWidget* parent = nullptr);
+  ~ThermalModelView() override;
+
+  /// Shows a log with these settings; clears the results (cancels a running training).
+  void setLog(const ThermalLog& log, const ThermalModelSettings& settings);
+  /// The settings in the controls.
+  ThermalModelSettings settings() const;
+  /// Puts settings into the controls (no training).
+  void setSettings(const ThermalModelSettings& settings);
+
+  /// Starts training the three models in a worker thread (no effect while one runs).
+  void train();
+  /// Trains on the calling thread and shows the result; false (message shown) on bad settings.
+  bool trainNow();
+  /// Asks a running training to stop; trainingFinished(false) follows.
+  void cancel();
+  bool isRunning() const;
+  /// The results shown, nullptr when none.
+  const ThermalComparison* comparison() const;
+  /// Status line under the progress bar (last error, timing, cancellation).
+  QString statusText() const;
+  /// PSO iterations received live during the last training.
+  int liveIterations() const;
+
+  /// The modular case (nullptr hides the group); `testLog` is the combined test's log.
+  void setModular(std::shared_ptr<const ModularComparison> modular, const ThermalLog* testLog,
+                  const QString& description);
+
+  QProgressBar* progressBar() const;
+  QPushButton* trainButton() const;
+  QPushButton* cancelButton() const;
+  QTableWidget* metricsTable() const;
+  QTableWidget* modularTable() const;
+
+ signals:
+  /// A training ended: completed true, or false when cancelled or failed.
+  void trainingFinished(bool completed);
+  /// The user changed a setting in the controls.
+  void settingsEdited();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> d;
+};
+
+}  // namespace metrofit
