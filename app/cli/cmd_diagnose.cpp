@@ -1,15 +1,35 @@
-// metrofit-cli diagnose <domain> (CONTRACT.md). The closed loop lands with issue 8.
+// metrofit-cli diagnose thermal|kinematic|setup|matching (CONTRACT.md; issue 8): fit the declared
+// model, trace the residual to an effect the model lacks, add it, report the error before and after.
+//   diagnose thermal   --data L.csv --target COL --inputs A,B,... [--train-fraction F] [--out R.json]
+//   diagnose kinematic --data C.csv [--feed MM_PER_MIN] [--out R.json]
+//   diagnose setup     --data R.csv --model M.json [--out R.json]
+//   diagnose matching  --data P.csv [--tolerance T] [--out R.json]
+// Every domain writes the JSON of CONTRACT.md "diagnose result" (core/diagnose/diagnosis.h toJson)
+// through finishDiagnosis, which also prints the one-line summary.
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <string>
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
+#include "core/common/run.h"
+#include "core/diagnose/diagnosis.h"
+#include "core/diagnose/kinematic_diagnosis.h"
+#include "core/diagnose/matching_diagnosis.h"
+#include "core/diagnose/setup_diagnosis.h"
+#include "core/diagnose/thermal_diagnosis.h"
 #include "core/io/csv.h"
 #include "core/io/json_util.h"
+#include "core/kinematics/measured_path.h"
+#include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
+#include "core/setup/model.h"
+#include "core/setup/report.h"
 #include "core/thermal/thermal_log.h"
 
 namespace metrofit::cli {
@@ -19,9 +39,124 @@ struct MethodArgs {
   std::string model, data, method, machine, errors, path, target, inputs, out;
   long budget = 5000;
   std::uint64_t seed = 1;
-  double tolerance = 0.05, trainFraction = 0.5;
+  double tolerance = 0.05, trainFraction = 0.5, feed = 1000.0;
   bool allowScale = false;
 };
+
+std::string num(double v, int digits = 3) {
+  return std::isfinite(v) ? CsvWriter::formatNumber(v, digits) : "n/a";
+}
+
+/// Progress on stderr when it is a terminal (one line, erased before the summary).
+class Progress {
+ public:
+  explicit Progress(std::string what)
+      : what_(std::move(what)),
+        tty_(::isatty(::fileno(stderr)) == 1),
+        observer_([this](const IterationSummary& s) {
+          if (tty_) {
+            std::fprintf(stderr, "\r%s: candidate %ld", what_.c_str(), s.evaluations);
+            std::fflush(stderr);
+            shown_ = true;
+          }
+          return ObserverDecision::Continue;
+        }) {}
+  ~Progress() {
+    if (shown_) std::fprintf(stderr, "\r%*s\r", static_cast<int>(what_.size()) + 24, "");
+  }
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+  Observer* observer() { return &observer_; }
+
+ private:
+  std::string what_;
+  bool tty_;
+  bool shown_ = false;
+  FunctionObserver observer_;
+};
+
+/// Writes the CONTRACT JSON (atomically to `out`, or stdout) and prints the one-line summary:
+/// "diagnose <domain> on <data>: rmse a -> b <unit>[, held-out h0 -> h1]; accepted: x (params); N tried".
+int finishDiagnosis(const diagnose::Diagnosis& d, const std::string& data, const std::string& out) {
+  writeResult(out, dumpJson(diagnose::toJson(d)));
+  const std::string u = d.units.empty() ? "" : " " + d.units;
+  std::string line = "diagnose " + d.domain + " on " + data + ": rmse " + num(d.baseline.rmse) + " -> " +
+                     num(d.final.rmse) + u;
+  if (d.baseline.heldoutRmse && d.final.heldoutRmse)
+    line += ", held-out rmse " + num(*d.baseline.heldoutRmse) + " -> " + num(*d.final.heldoutRmse) + u;
+  const auto acc = d.accepted();
+  if (acc.empty()) {
+    line += "; no undeclared effect found";
+  } else {
+    line += "; accepted:";
+    for (std::size_t i = 0; i < acc.size(); ++i) {
+      line += (i ? ", " : " ") + acc[i]->name + " (";
+      for (std::size_t k = 0; k < acc[i]->parameters.size(); ++k) {
+        const auto& p = acc[i]->parameters[k];
+        line += (k ? " " : "") + p.name + " ";
+        if (const double* v = std::get_if<double>(&p.value))
+          line += num(*v);
+        else
+          line += std::get<std::string>(p.value);
+      }
+      line += ")";
+    }
+  }
+  line += "; " + std::to_string(d.effects.size()) + " candidates tried";
+  std::fprintf(stderr, "%s\n", line.c_str());
+  return 0;
+}
+
+int runThermal(const MethodArgs& a) {
+  const ThermalLog log = readThermalArgs(a.data, a.target, a.inputs);
+  diagnose::ThermalDiagnosisOptions o;
+  o.target = a.target;
+  o.inputs = splitList(a.inputs);
+  o.trainFraction = a.trainFraction;
+  diagnose::Diagnosis d;
+  {
+    Progress progress("diagnose thermal");
+    d = diagnose::diagnoseThermal(log, o, progress.observer());
+  }
+  return finishDiagnosis(d, a.data, a.out);
+}
+
+int runKinematic(const MethodArgs& a) {
+  const MeasuredPath path = readMeasuredPath(a.data);
+  diagnose::KinematicDiagnosisOptions o;
+  o.feedMmPerMin = a.feed;
+  diagnose::Diagnosis d;
+  {
+    Progress progress("diagnose kinematic");
+    d = diagnose::diagnoseKinematic(path, o, progress.observer());
+  }
+  return finishDiagnosis(d, a.data, a.out);
+}
+
+/// Setup (core/diagnose/setup_diagnosis.h): the report series (CSV or DMIS) against the model.
+int runSetup(const MethodArgs& a) {
+  const setup::Model model = setup::readModel(a.model);
+  const setup::Measurements m = setup::readMeasurements({a.data}, model);
+  diagnose::Diagnosis d;
+  {
+    Progress progress("diagnose setup");
+    d = diagnose::diagnoseSetup(model, m, {}, progress.observer());
+  }
+  return finishDiagnosis(d, a.data, a.out);
+}
+
+/// Matching (core/diagnose/matching_diagnosis.h): probe CSV or PC-DMIS hole table.
+int runMatching(const MethodArgs& a) {
+  const ProbePointSet set = readProbePointsAnyFormat(a.data);
+  diagnose::MatchingDiagnosisOptions o;
+  o.toleranceMm = a.tolerance;
+  diagnose::Diagnosis d;
+  {
+    Progress progress("diagnose matching");
+    d = diagnose::diagnoseMatching(set, o, progress.observer());
+  }
+  return finishDiagnosis(d, a.data, a.out);
+}
 
 }  // namespace
 
@@ -42,6 +177,11 @@ void registerDiagnoseCommands(CLI::App& app) {
           ->check(CLI::Range(0.05, 0.95))
           ->capture_default_str();
     }
+    if (std::string(domain) == "kinematic") {
+      sub->add_option("--feed", a->feed, "Feed rate of the test, mm/min (for servo_lag's tau_s)")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
+    }
     if (std::string(domain) == "matching") {
       sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")->check(CLI::PositiveNumber);
     }
@@ -50,9 +190,11 @@ void registerDiagnoseCommands(CLI::App& app) {
     const std::string d = domain;
     sub->callback([a, d] {
       selectRunner([a, d]() -> int {
-        if (d == "thermal")
-          (void)readThermalArgs(a->data, a->target, a->inputs);
-        else if (d == "matching")
+        if (d == "thermal") return runThermal(*a);
+        if (d == "kinematic") return runKinematic(*a);
+        if (d == "setup") return runSetup(*a);
+        if (d == "matching") return runMatching(*a);
+        if (d == "matching")
           (void)readProbePoints(a->data);
         else
           (void)readCsvFile(a->data);

@@ -42,6 +42,8 @@ struct ResidualPlot {
   std::vector<double> after;   ///< residual with it
   /// For 2D vector-field plots (matching distortion): per point x, y, dx, dy (before).
   std::vector<std::vector<double>> vectors;
+  /// Names of the categories when x is a category index 0, 1, ... (matching: the surfaces).
+  std::vector<std::string> categories;
 };
 
 /// A candidate effect tried in one round.

@@ -1,0 +1,620 @@
+#include "app/gui/diagnosispage.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QClipboard>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QKeySequence>
+#include <QLabel>
+#include <QLocale>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QTableWidget>
+#include <QUndoCommand>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <set>
+
+#include "app/gui/notesedit.h"
+#include "core/io/csv.h"
+#include "widgets/diagnose/residualplot.h"
+#include "widgets/document/projectdocument.h"
+#include "widgets/document/studyinfo.h"
+
+namespace metrofit {
+namespace {
+
+/// Long parameter lists (cyclic: four values) must leave room for the evidence; tooltips show all.
+constexpr int kMaxParameterColumnWidth = 360;
+
+enum Column {
+  ColRound,
+  ColEffect,
+  ColParameters,
+  ColRmse,
+  ColHeldout,
+  ColEvidence,
+  ColAccepted,
+  ColumnCount
+};
+
+QString domainTitle(DiagnosisDomain d) {
+  switch (d) {
+    case DiagnosisDomain::Thermal:
+      return DiagnosisPage::tr("Thermal");
+    case DiagnosisDomain::Kinematic:
+      return DiagnosisPage::tr("Kinematic");
+    case DiagnosisDomain::Setup:
+      return DiagnosisPage::tr("Setup");
+    case DiagnosisDomain::Matching:
+      return DiagnosisPage::tr("Matching");
+  }
+  return {};
+}
+
+/// "um" -> "µm" for display (core writes CONTRACT.md's ASCII unit names).
+QString displayUnits(const std::string& units) {
+  return units == "um" ? QStringLiteral("µm") : QString::fromStdString(units);
+}
+
+QString num(double v, int digits = 4) {
+  return std::isfinite(v) ? QString::fromStdString(CsvWriter::formatNumber(v, digits))
+                          : QStringLiteral("n/a");
+}
+
+/// Unit of a parameter from its CONTRACT.md name suffix ("tau_min" -> "min").
+QString unitOf(const std::string& name) {
+  static const std::pair<const char*, const char*> kSuffixes[] = {{"mm_per_part", "mm/part"},
+                                                                  {"mm_per_min", "mm/min"},
+                                                                  {"um_per_min", "µm/min"},
+                                                                  {"_min", "min"},
+                                                                  {"_mm", "mm"},
+                                                                  {"_um", "µm"},
+                                                                  {"_ppm", "ppm"},
+                                                                  {"_deg", "deg"},
+                                                                  {"_s", "s"}};
+  for (const auto& [suffix, unit] : kSuffixes) {
+    const std::string s = suffix;
+    if (name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0)
+      return QString::fromUtf8(unit);
+  }
+  if (name == "mm") return QStringLiteral("mm");
+  if (name == "ppm") return QStringLiteral("ppm");
+  return {};
+}
+
+QString parameterText(const diagnose::Candidate& c, const QString& units) {
+  QStringList parts;
+  for (const diagnose::Parameter& p : c.parameters) {
+    QString s = QString::fromStdString(p.name) + QStringLiteral(" = ") +
+                QString::fromStdString(formatParameterValue(p));
+    if (p.standardError) s += QStringLiteral(" ± ") + num(*p.standardError, 2);
+    const QString unit = p.name == "per_min" ? units + QStringLiteral("/min") : unitOf(p.name);
+    if (!unit.isEmpty() && std::holds_alternative<double>(p.value)) s += QLatin1Char(' ') + unit;
+    parts << s;
+  }
+  return parts.join(QStringLiteral("; "));
+}
+
+/// The document's project, for the one edit ProjectDocument has no typed field for yet (the applied
+/// effects of the diagnosis study). The document object itself is not const; the edit goes through
+/// its undo stack and ends with its changed() signal like every other edit.
+Project& mutableProject(ProjectDocument* document) {
+  return const_cast<Project&>(document->project());
+}
+
+/// Apply: sets studies.diagnosis.<domain>.applied; undo restores the study's JSON exactly.
+class ApplyDiagnosisCommand : public QUndoCommand {
+ public:
+  ApplyDiagnosisCommand(ProjectDocument* document, const std::string& domain, nlohmann::json applied)
+      : QUndoCommand(DiagnosisPage::tr("Apply diagnosed effects (%1)").arg(QString::fromStdString(domain))),
+        document_(document),
+        domain_(domain),
+        applied_(std::move(applied)) {
+    const auto& studies = document_->project().studies;
+    if (const auto it = studies.find(study::kDiagnosis); it != studies.end()) before_ = *it;
+  }
+  void redo() override {
+    nlohmann::json& studies = mutableProject(document_).studies;
+    nlohmann::json& diag = studies[study::kDiagnosis];
+    if (!diag.is_object()) diag = nlohmann::json::object();
+    nlohmann::json& block = diag[domain_];
+    if (!block.is_object()) block = nlohmann::json::object();
+    block["applied"] = applied_;
+    emit document_->changed();
+  }
+  void undo() override {
+    nlohmann::json& studies = mutableProject(document_).studies;
+    if (before_)
+      studies[study::kDiagnosis] = *before_;
+    else
+      studies.erase(study::kDiagnosis);
+    emit document_->changed();
+  }
+
+ private:
+  ProjectDocument* document_;
+  std::string domain_;
+  nlohmann::json applied_;
+  std::optional<nlohmann::json> before_;
+};
+
+std::string settingsKeyOf(const DiagnosisSettings& s) {
+  nlohmann::json j = {{"d", diagnosisDomainKey(s.domain)},
+                      {"p", s.datasetPath},
+                      {"t", s.target},
+                      {"i", s.inputs},
+                      {"f", s.trainFraction},
+                      {"m", s.modelPath},
+                      {"tol", s.toleranceMm},
+                      {"feed", s.feedMmPerMin}};
+  return j.dump();
+}
+
+}  // namespace
+
+DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
+    : QWidget(parent),
+      document_(document),
+      domainCombo_(new QComboBox(this)),
+      info_(new QLabel(this)),
+      status_(new QLabel(this)),
+      runButton_(new QPushButton(tr("&Run"), this)),
+      cancelButton_(new QPushButton(tr("Cancel"), this)),
+      applyButton_(new QPushButton(tr("&Apply to model"), this)),
+      progress_(new QProgressBar(this)),
+      stack_(new QStackedWidget(this)),
+      content_(new QSplitter(Qt::Vertical, this)),
+      message_(new QLabel(this)),
+      plotCombo_(new QComboBox(this)),
+      plot_(nullptr),
+      bars_(nullptr),
+      table_(new QTableWidget(this)),
+      watcher_(new QFutureWatcher<void>(this)) {
+  auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kDiagnosis)), this);
+  QFont titleFont = title->font();
+  titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
+  titleFont.setBold(true);
+  title->setFont(titleFont);
+  title->setToolTip(studySummary(QString::fromLatin1(study::kDiagnosis)));
+
+  domainCombo_->setObjectName(QStringLiteral("diagnosisDomain"));
+  for (DiagnosisDomain d : kDiagnosisDomains) domainCombo_->addItem(domainTitle(d), static_cast<int>(d));
+  domainCombo_->setToolTip(tr("The study whose declared model is diagnosed"));
+  runButton_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+  runButton_->setToolTip(
+      tr("Fit the declared model, try the candidate effects it lacks, accept those the evidence "
+         "supports (Ctrl+R)"));
+  cancelButton_->setShortcut(QKeySequence(Qt::Key_Escape));
+  cancelButton_->setToolTip(tr("Stop the loop; the rounds done so far are shown (Esc)"));
+  cancelButton_->setEnabled(false);
+  applyButton_->setObjectName(QStringLiteral("diagnosisApply"));
+  applyButton_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
+  applyButton_->setToolTip(
+      tr("Add the accepted effects to the study's model in the project (undoable, Ctrl+Shift+A)"));
+  applyButton_->setEnabled(false);
+  progress_->setRange(0, 0);
+  progress_->setMaximumWidth(160);
+  progress_->setVisible(false);
+  info_->setObjectName(QStringLiteral("diagnosisInfo"));
+  info_->setWordWrap(true);
+  info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  status_->setObjectName(QStringLiteral("diagnosisStatus"));
+  status_->setWordWrap(true);
+  status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  message_->setObjectName(QStringLiteral("diagnosisMessage"));
+  message_->setWordWrap(true);
+  message_->setAlignment(Qt::AlignCenter);
+  message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+  // Plot (with the effect selector) and error bars side by side, the candidate table below.
+  plot_ = new ResidualPlotView(this);
+  plot_->setObjectName(QStringLiteral("diagnosisResidualPlot"));
+  bars_ = new ErrorBarsView(this);
+  bars_->setObjectName(QStringLiteral("diagnosisErrorBars"));
+  plotCombo_->setObjectName(QStringLiteral("diagnosisPlotEffect"));
+  plotCombo_->setToolTip(tr("The effect whose residual plot is shown"));
+  auto* plotBox = new QWidget(this);
+  auto* plotLayout = new QVBoxLayout(plotBox);
+  plotLayout->setContentsMargins(0, 0, 0, 0);
+  auto* plotTop = new QHBoxLayout;
+  auto* plotLabel = new QLabel(tr("Residual &plot of:"), plotBox);
+  plotLabel->setBuddy(plotCombo_);
+  plotTop->addWidget(plotLabel);
+  plotTop->addWidget(plotCombo_, 1);
+  plotLayout->addLayout(plotTop);
+  plotLayout->addWidget(plot_, 1);
+  auto* charts = new QSplitter(Qt::Horizontal, content_);
+  charts->addWidget(plotBox);
+  charts->addWidget(bars_);
+  charts->setStretchFactor(0, 5);
+  charts->setStretchFactor(1, 2);
+  charts->setChildrenCollapsible(false);
+
+  table_->setObjectName(QStringLiteral("diagnosisCandidates"));
+  table_->setColumnCount(ColumnCount);
+  table_->setHorizontalHeaderLabels({tr("Round"), tr("Effect"), tr("Parameters (± standard error)"),
+                                     tr("rmse before → after"), tr("held-out rmse"), tr("Evidence"),
+                                     tr("Accepted")});
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  table_->setAlternatingRowColors(true);
+  table_->setWordWrap(false);
+  table_->verticalHeader()->hide();
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setSectionResizeMode(ColEvidence, QHeaderView::Stretch);
+  table_->horizontalHeader()->setSectionResizeMode(ColParameters, QHeaderView::Interactive);
+  table_->setToolTip(
+      tr("Every candidate effect tried, in the order tried (Ctrl+C copies the selected rows)"));
+  auto* copy = new QAction(tr("&Copy"), table_);
+  copy->setShortcut(QKeySequence::Copy);
+  copy->setShortcutContext(Qt::WidgetShortcut);
+  table_->addAction(copy);
+  table_->setContextMenuPolicy(Qt::ActionsContextMenu);
+  connect(copy, &QAction::triggered, this, &DiagnosisPage::copySelection);
+
+  content_->addWidget(charts);
+  content_->addWidget(table_);
+  content_->setStretchFactor(0, 3);
+  content_->setStretchFactor(1, 2);
+  content_->setChildrenCollapsible(false);
+  stack_->addWidget(content_);
+  stack_->addWidget(message_);
+
+  auto* top = new QHBoxLayout;
+  auto* domainLabel = new QLabel(tr("&Domain:"), this);
+  domainLabel->setBuddy(domainCombo_);
+  top->addWidget(title);
+  top->addSpacing(16);
+  top->addWidget(domainLabel);
+  top->addWidget(domainCombo_);
+  top->addStretch(1);
+  top->addWidget(progress_);
+  top->addWidget(runButton_);
+  top->addWidget(cancelButton_);
+  top->addWidget(applyButton_);
+
+  auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kDiagnosis), this);
+  notes->setMaximumHeight(50);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(top);
+  layout->addWidget(info_);
+  layout->addWidget(status_);
+  layout->addWidget(stack_, 1);
+  layout->addWidget(notes);
+
+  connect(domainCombo_, &QComboBox::currentIndexChanged, this, [this] {
+    result_.reset();
+    settingsKey_.clear();
+    refresh();
+  });
+  connect(plotCombo_, &QComboBox::currentIndexChanged, this, &DiagnosisPage::showPlot);
+  connect(runButton_, &QPushButton::clicked, this, &DiagnosisPage::startRun);
+  connect(cancelButton_, &QPushButton::clicked, this, &DiagnosisPage::cancelRun);
+  connect(applyButton_, &QPushButton::clicked, this, [this] { applyAccepted(); });
+  connect(watcher_, &QFutureWatcher<void>::finished, this, [this] {
+    setRunning(false);
+    if (pendingError_ && !pendingError_->isEmpty()) {
+      status_->setText(tr("The diagnosis failed: %1").arg(*pendingError_));
+    } else if (pending_ && pending_->has_value()) {
+      result_ = std::move(**pending_);
+      if (settings_) settingsKey_ = settingsKeyOf(*settings_);
+      showResult();
+    }
+    pending_.reset();
+    pendingError_.reset();
+    emit finished();
+  });
+  connect(document_, &ProjectDocument::changed, this, &DiagnosisPage::refresh);
+  refresh();
+}
+
+DiagnosisPage::~DiagnosisPage() {
+  if (cancel_) cancel_->store(true);
+  watcher_->waitForFinished();
+}
+
+void DiagnosisPage::setDomain(DiagnosisDomain domain) {
+  const int index = domainCombo_->findData(static_cast<int>(domain));
+  if (index >= 0) domainCombo_->setCurrentIndex(index);
+}
+
+DiagnosisDomain DiagnosisPage::domain() const {
+  return static_cast<DiagnosisDomain>(domainCombo_->currentData().toInt());
+}
+
+QString DiagnosisPage::message() const {
+  return stack_->currentWidget() == message_ ? message_->text() : QString();
+}
+
+QString DiagnosisPage::statusText() const {
+  return status_->text();
+}
+
+bool DiagnosisPage::isRunning() const {
+  return pending_ != nullptr || watcher_->isRunning();
+}
+
+void DiagnosisPage::showMessage(const QString& text) {
+  message_->setText(text);
+  stack_->setCurrentWidget(message_);
+  runButton_->setEnabled(false);
+  applyButton_->setEnabled(false);
+}
+
+void DiagnosisPage::refresh() {
+  if (isRunning()) return;
+  settings_.reset();
+  const DiagnosisDomain d = domain();
+  const QString key = QString::fromLatin1(diagnosisDomainKey(d));
+  try {
+    settings_ = diagnosisSettings(document_->project(), document_->fileName().toStdString(), d);
+  } catch (const std::exception& e) {
+    info_->clear();
+    status_->clear();
+    result_.reset();
+    settingsKey_.clear();
+    showMessage(tr("No usable %1 data for the diagnosis:\n%2\n\nConfigure it in the project file under "
+                   "studies.diagnosis.%3 (see the documentation of the diagnosis study).")
+                    .arg(domainTitle(d).toLower(), QString::fromUtf8(e.what()), key));
+    return;
+  }
+  const DiagnosisSettings& s = *settings_;
+  QString info = tr("Data: %1").arg(QString::fromStdString(s.datasetId));
+  switch (d) {
+    case DiagnosisDomain::Thermal: {
+      QStringList inputs;
+      for (const auto& in : s.inputs) inputs << QString::fromStdString(in);
+      info +=
+          tr("; target %1; declared inputs %2; fitted on the first %3 % of the rows, held out on the rest.")
+              .arg(QString::fromStdString(s.target), inputs.join(QStringLiteral(", ")))
+              .arg(s.trainFraction * 100.0, 0, 'g', 3);
+      break;
+    }
+    case DiagnosisDomain::Kinematic:
+      info += tr("; declared model: Cartesian actuator errors (origin, axis angles); feed %1 mm/min.")
+                  .arg(s.feedMmPerMin, 0, 'g', 6);
+      break;
+    case DiagnosisDomain::Setup:
+      info += tr("; setup model %1; declared model: constant setup-data errors.")
+                  .arg(QString::fromStdString(s.modelId));
+      break;
+    case DiagnosisDomain::Matching:
+      info += tr("; declared model: rigid posture; tolerance ±%1 mm.").arg(s.toleranceMm, 0, 'g', 4);
+      break;
+  }
+  if (!s.applied.empty()) {
+    QStringList names;
+    for (const auto& e : s.applied) {
+      if (e.is_object() && e.contains("name") && e["name"].is_string())
+        names << QString::fromStdString(e["name"].get<std::string>());
+    }
+    info += QLatin1Char(' ') + tr("Applied to the model: %1.").arg(names.join(QStringLiteral(", ")));
+  }
+  info_->setText(info);
+  stack_->setCurrentWidget(content_);
+  runButton_->setEnabled(true);
+  if (result_ && settingsKey_ == settingsKeyOf(s)) {
+    showResult();
+    return;
+  }
+  result_.reset();
+  settingsKey_.clear();
+  status_->setText(tr("Not run yet: press Run (Ctrl+R)."));
+  plotCombo_->clear();
+  plot_->clear();
+  bars_->clear();
+  table_->setRowCount(0);
+  applyButton_->setEnabled(false);
+}
+
+bool DiagnosisPage::runNow() {
+  if (isRunning()) return false;
+  if (!settings_) {
+    status_->setText(message_->text());
+    return false;
+  }
+  try {
+    result_ = runDiagnosis(*settings_);
+    settingsKey_ = settingsKeyOf(*settings_);
+    showResult();
+    return true;
+  } catch (const std::exception& e) {
+    status_->setText(tr("The diagnosis failed: %1").arg(QString::fromUtf8(e.what())));
+    return false;
+  }
+}
+
+void DiagnosisPage::startRun() {
+  if (!settings_ || isRunning()) return;
+  cancel_ = std::make_shared<std::atomic<bool>>(false);
+  pending_ = std::make_shared<std::optional<diagnose::Diagnosis>>();
+  pendingError_ = std::make_shared<QString>();
+  setRunning(true);
+  status_->setText(tr("Diagnosing …"));
+  const DiagnosisSettings settings = *settings_;
+  auto cancel = cancel_;
+  auto pending = pending_;
+  auto pendingError = pendingError_;
+  QLabel* status = status_;
+  watcher_->setFuture(QtConcurrent::run([settings, cancel, pending, pendingError, status] {
+    long steps = 0;
+    FunctionObserver observer([&](const IterationSummary& s) {
+      ++steps;
+      const QString text = tr("Diagnosing … step %1, current rmse %2").arg(steps).arg(num(s.best, 3));
+      QMetaObject::invokeMethod(
+          status, [status, text] { status->setText(text); }, Qt::QueuedConnection);
+      return cancel->load() ? ObserverDecision::Stop : ObserverDecision::Continue;
+    });
+    try {
+      *pending = runDiagnosis(settings, &observer);
+    } catch (const std::exception& e) {
+      *pendingError = QString::fromUtf8(e.what());
+    }
+  }));
+}
+
+void DiagnosisPage::cancelRun() {
+  if (cancel_) cancel_->store(true);
+}
+
+void DiagnosisPage::setRunning(bool running) {
+  runButton_->setEnabled(!running && settings_.has_value());
+  cancelButton_->setEnabled(running);
+  progress_->setVisible(running);
+  domainCombo_->setEnabled(!running);
+  applyButton_->setEnabled(!running && result_ && !result_->accepted().empty());
+}
+
+void DiagnosisPage::showResult() {
+  if (!result_) return;
+  const diagnose::Diagnosis& d = *result_;
+  const QString u = displayUnits(d.units);
+  const auto accepted = d.accepted();
+  QString text = tr("rmse %1 → %2 %3").arg(num(d.baseline.rmse), num(d.final.rmse), u);
+  if (d.baseline.heldoutRmse && d.final.heldoutRmse)
+    text += tr(", held-out rmse %1 → %2 %3").arg(num(*d.baseline.heldoutRmse), num(*d.final.heldoutRmse), u);
+  text += tr(", max |e| %1 → %2 %3").arg(num(d.baseline.maxAbs), num(d.final.maxAbs), u);
+  if (accepted.empty()) {
+    text += tr(". No undeclared effect found (%1 candidates tried).").arg(d.effects.size());
+  } else {
+    QStringList names;
+    for (const auto* c : accepted) names << QString::fromStdString(c->name);
+    text += tr(". Accepted: %1 (%2 candidates tried).")
+                .arg(names.join(QStringLiteral(", ")))
+                .arg(d.effects.size());
+  }
+  if (std::find(d.notes.begin(), d.notes.end(), "cancelled") != d.notes.end())
+    text += QLatin1Char(' ') + tr("Cancelled: the rounds done so far.");
+  status_->setText(text);
+  fillTable();
+  bars_->setDiagnosis(d);
+  {
+    const QSignalBlocker blocker(plotCombo_);
+    plotCombo_->clear();
+    for (std::size_t i = 0; i < d.effects.size(); ++i) {
+      const diagnose::Candidate& c = d.effects[i];
+      if (!c.plot) continue;
+      plotCombo_->addItem(QString::fromStdString(c.name) + (c.accepted ? tr(" (accepted)") : QString()),
+                          static_cast<int>(i));
+    }
+  }
+  showPlot(plotCombo_->currentIndex());
+  applyButton_->setEnabled(!accepted.empty() && !isRunning());
+}
+
+void DiagnosisPage::showPlot(int comboIndex) {
+  if (!result_ || comboIndex < 0) {
+    plot_->clear();
+    return;
+  }
+  const int i = plotCombo_->itemData(comboIndex).toInt();
+  if (i < 0 || i >= static_cast<int>(result_->effects.size()) ||
+      !result_->effects[static_cast<std::size_t>(i)].plot) {
+    plot_->clear();
+    return;
+  }
+  const diagnose::Candidate& c = result_->effects[static_cast<std::size_t>(i)];
+  plot_->setPlot(*c.plot, tr("Residual before and after %1").arg(QString::fromStdString(c.name)));
+}
+
+void DiagnosisPage::fillTable() {
+  const diagnose::Diagnosis& d = *result_;
+  const QString u = displayUnits(d.units);
+  table_->setRowCount(static_cast<int>(d.effects.size()));
+  for (int r = 0; r < static_cast<int>(d.effects.size()); ++r) {
+    const diagnose::Candidate& c = d.effects[static_cast<std::size_t>(r)];
+    auto set = [&](int col, const QString& text, Qt::Alignment align = Qt::AlignLeft | Qt::AlignVCenter) {
+      auto* item = new QTableWidgetItem(text);
+      item->setTextAlignment(align);
+      item->setToolTip(text);
+      table_->setItem(r, col, item);
+    };
+    const Qt::Alignment right = Qt::AlignRight | Qt::AlignVCenter;
+    set(ColRound, QString::number(c.round + 1), right);
+    set(ColEffect, QString::fromStdString(c.name));
+    set(ColParameters, parameterText(c, u));
+    set(ColRmse, QStringLiteral("%1 → %2 %3").arg(num(c.rmseBefore), num(c.rmseAfter), u), right);
+    set(ColHeldout,
+        c.heldoutBefore && c.heldoutAfter
+            ? QStringLiteral("%1 → %2 %3").arg(num(*c.heldoutBefore), num(*c.heldoutAfter), u)
+            : QStringLiteral("–"),
+        right);
+    set(ColEvidence, QString::fromStdString(c.evidence));
+    set(ColAccepted, c.accepted ? QStringLiteral("✓") : QStringLiteral("✗"), Qt::AlignCenter);
+    QTableWidgetItem* acc = table_->item(r, ColAccepted);
+    acc->setForeground(c.accepted ? QColor(0x1b, 0x7a, 0x1b) : QColor(0xb2, 0x18, 0x2b));
+    acc->setData(Qt::UserRole, c.accepted);
+    if (c.accepted) {
+      for (int col = 0; col < ColumnCount; ++col) {
+        QFont f = table_->item(r, col)->font();
+        f.setBold(true);
+        table_->item(r, col)->setFont(f);
+      }
+    }
+  }
+  table_->resizeColumnToContents(ColParameters);
+  table_->setColumnWidth(ColParameters,
+                         std::min(table_->columnWidth(ColParameters), kMaxParameterColumnWidth));
+}
+
+void DiagnosisPage::copySelection() {
+  std::set<int> rows;
+  for (const QModelIndex& index : table_->selectionModel()->selectedIndexes()) rows.insert(index.row());
+  if (rows.empty())
+    for (int r = 0; r < table_->rowCount(); ++r) rows.insert(r);
+  QStringList lines;
+  QStringList header;
+  for (int c = 0; c < table_->columnCount(); ++c) header << table_->horizontalHeaderItem(c)->text();
+  lines << header.join(QLatin1Char('\t'));
+  for (int r : rows) {
+    QStringList cells;
+    for (int c = 0; c < table_->columnCount(); ++c)
+      cells << (table_->item(r, c) ? table_->item(r, c)->text() : QString());
+    lines << cells.join(QLatin1Char('\t'));
+  }
+  QApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));
+}
+
+bool DiagnosisPage::applyAccepted() {
+  if (!result_ || result_->accepted().empty() || isRunning()) return false;
+  nlohmann::json applied = appliedEffects(*result_);
+  const std::string key = diagnosisDomainKey(domain());
+  const auto& studies = document_->project().studies;
+  if (const auto s = studies.find(study::kDiagnosis); s != studies.end() && s->is_object()) {
+    if (const auto b = s->find(key);
+        b != s->end() && b->is_object() && b->value("applied", nlohmann::json()) == applied) {
+      status_->setText(status_->text() + QLatin1Char(' ') + tr("(Already applied.)"));
+      return false;
+    }
+  }
+  document_->endEditSequence();
+  document_->undoStack()->push(new ApplyDiagnosisCommand(document_, key, std::move(applied)));
+  return true;
+}
+
+void DiagnosisPage::showView(const QString& view) {
+  std::vector<DiagnosisDomain> order = {DiagnosisDomain::Thermal, DiagnosisDomain::Setup,
+                                        DiagnosisDomain::Matching, DiagnosisDomain::Kinematic};
+  for (DiagnosisDomain d : kDiagnosisDomains) {
+    if (view == QLatin1String(diagnosisDomainKey(d))) order = {d};
+  }
+  if (result_ && std::find(order.begin(), order.end(), domain()) != order.end()) return;
+  for (DiagnosisDomain d : order) {
+    setDomain(d);
+    if (settings_ && runNow()) return;
+  }
+  if (!order.empty()) setDomain(order.front());
+}
+
+}  // namespace metrofit

@@ -1,0 +1,99 @@
+#pragma once
+// The diagnosis study page (issue 8, the closed loop): a domain selector (thermal, kinematic, setup,
+// matching), the data and settings of the project's studies.diagnosis.<domain>
+// (widgets/diagnose/diagnosisstudy.h), Run (Ctrl+R) in a worker thread with progress and Cancel,
+// then the residual plot of each accepted effect, the candidate table (effect, parameters ±
+// standard error, rmse before -> after, evidence, accepted; Ctrl+C copies) and the before / after
+// error bars. Apply (Ctrl+Shift+A) writes the accepted effects to studies.diagnosis.<domain>.applied
+// as one undoable edit of the project document.
+#include <QFutureWatcher>
+#include <QWidget>
+#include <atomic>
+#include <memory>
+#include <optional>
+
+#include "core/diagnose/diagnosis.h"
+#include "widgets/diagnose/diagnosisstudy.h"
+
+class QComboBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSplitter;
+class QStackedWidget;
+class QTableWidget;
+
+namespace metrofit {
+class ErrorBarsView;
+class ProjectDocument;
+class ResidualPlotView;
+
+class DiagnosisPage : public QWidget {
+  Q_OBJECT
+ public:
+  explicit DiagnosisPage(ProjectDocument* document, QWidget* parent = nullptr);
+  ~DiagnosisPage() override;
+
+  void setDomain(DiagnosisDomain domain);
+  DiagnosisDomain domain() const;
+  /// The text shown instead of the results when the settings or data are unusable ("" otherwise).
+  QString message() const;
+  QString statusText() const;
+  const std::optional<diagnose::Diagnosis>& result() const { return result_; }
+  bool isRunning() const;
+
+  QTableWidget* candidateTable() const { return table_; }
+  ResidualPlotView* residualPlot() const { return plot_; }
+  ErrorBarsView* errorBars() const { return bars_; }
+  QPushButton* applyButton() const { return applyButton_; }
+
+  /// Runs the loop synchronously (tests, screenshots); false with message()/statusText() on error.
+  bool runNow();
+  /// Runs it in a worker thread (the Run button); finished() when done.
+  void startRun();
+  void cancelRun();
+  /// Adds the accepted effects to the study (one undoable edit); false when there is nothing to add.
+  bool applyAccepted();
+
+  /// "diagnosis" (or a domain name): runs the first configured domain whose data load, in the order
+  /// thermal, setup, matching, kinematic (or the named one), and shows its result.
+  Q_INVOKABLE void showView(const QString& view);
+
+ signals:
+  void finished();
+
+ private:
+  void refresh();
+  void showResult();
+  void fillTable();
+  void showPlot(int index);
+  void setRunning(bool running);
+  void copySelection();
+  void showMessage(const QString& text);
+
+  ProjectDocument* document_;
+  QComboBox* domainCombo_;
+  QLabel* info_;
+  QLabel* status_;
+  QPushButton* runButton_;
+  QPushButton* cancelButton_;
+  QPushButton* applyButton_;
+  QProgressBar* progress_;
+  QStackedWidget* stack_;
+  QSplitter* content_;
+  QLabel* message_;
+  QComboBox* plotCombo_;
+  ResidualPlotView* plot_;
+  ErrorBarsView* bars_;
+  QTableWidget* table_;
+
+  std::optional<DiagnosisSettings> settings_;
+  std::string settingsKey_;  ///< the settings the shown result was computed with
+  std::optional<diagnose::Diagnosis> result_;
+  QFutureWatcher<void>* watcher_;
+  std::shared_ptr<std::atomic<bool>> cancel_;
+  std::shared_ptr<std::optional<diagnose::Diagnosis>> pending_;
+  std::shared_ptr<QString> pendingError_;
+};
+
+}  // namespace metrofit

@@ -1,0 +1,510 @@
+#include "core/diagnose/kinematic_diagnosis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include <Eigen/Dense>
+
+#include "core/common/error.h"
+#include "core/io/csv.h"
+#include "core/kinematics/identification.h"
+#include "core/sim/effects_kinematic.h"
+
+namespace metrofit::diagnose {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = kPi / 180.0;
+
+std::string fmt(double v, int digits = 3) {
+  return std::isfinite(v) ? CsvWriter::formatNumber(v, digits) : "n/a";
+}
+std::string um(double mm, int digits = 3) {
+  return fmt(mm * 1000.0, digits);
+}
+
+/// Which effects the model has.
+struct State {
+  bool backlash = false, scale = false, servo = false;
+  bool cyclic[2] = {false, false};
+};
+
+/// All parameters (angles in rad, scale in ppm, cyclic as c sin + s cos with frequency f in 1/mm).
+struct Params {
+  double ox = 0, oy = 0, a = 0, b = 0;
+  double bx = 0, by = 0, sx = 0, sy = 0, tau = 0;
+  double cc[2] = {0, 0}, cs[2] = {0, 0}, f[2] = {0, 0};
+};
+
+/// Index of each parameter in the packed vector of a state (-1: absent).
+struct Layout {
+  int bx = -1, sx = -1, tau = -1, cy[2] = {-1, -1};
+  int p = 4;
+};
+
+Layout layoutOf(const State& s) {
+  Layout l;
+  if (s.backlash) {
+    l.bx = l.p;
+    l.p += 2;
+  }
+  if (s.scale) {
+    l.sx = l.p;
+    l.p += 2;
+  }
+  if (s.servo) l.tau = l.p++;
+  for (int a = 0; a < 2; ++a) {
+    if (s.cyclic[a]) {
+      l.cy[a] = l.p;
+      l.p += 3;
+    }
+  }
+  return l;
+}
+
+Eigen::VectorXd pack(const State& s, const Params& q) {
+  const Layout l = layoutOf(s);
+  Eigen::VectorXd v(l.p);
+  v.head<4>() << q.ox, q.oy, q.a, q.b;
+  if (l.bx >= 0) v.segment<2>(l.bx) << q.bx, q.by;
+  if (l.sx >= 0) v.segment<2>(l.sx) << q.sx, q.sy;
+  if (l.tau >= 0) v(l.tau) = q.tau;
+  for (int a = 0; a < 2; ++a)
+    if (l.cy[a] >= 0) v.segment<3>(l.cy[a]) << q.cc[a], q.cs[a], q.f[a];
+  return v;
+}
+
+Params unpack(const State& s, const Eigen::VectorXd& v, Params q) {
+  const Layout l = layoutOf(s);
+  q.ox = v(0);
+  q.oy = v(1);
+  q.a = v(2);
+  q.b = v(3);
+  if (l.bx >= 0) q.bx = v(l.bx), q.by = v(l.bx + 1);
+  if (l.sx >= 0) q.sx = v(l.sx), q.sy = v(l.sx + 1);
+  if (l.tau >= 0) q.tau = v(l.tau);
+  for (int a = 0; a < 2; ++a)
+    if (l.cy[a] >= 0) q.cc[a] = v(l.cy[a]), q.cs[a] = v(l.cy[a] + 1), q.f[a] = v(l.cy[a] + 2);
+  return q;
+}
+
+struct Data {
+  const MeasuredPath* path = nullptr;
+  PathMotion motion;
+  double speed = 0.0;  ///< mm/s
+  std::size_t n = 0;
+};
+
+/// Residuals P(theta) - Pmeas (x0, y0, x1, ...) and, when J is given, their Jacobian.
+void evaluate(const Data& d, const State& s, const Params& q, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+  const Layout l = layoutOf(s);
+  const auto m = static_cast<Eigen::Index>(2 * d.n);
+  r.resize(m);
+  if (J) J->setZero(m, l.p);
+  const Eigen::Vector2d ir(std::cos(q.a), std::sin(q.a)), jr(-std::sin(q.b), std::cos(q.b));
+  const Eigen::Vector2d dira(-std::sin(q.a), std::cos(q.a)), dirb(-std::cos(q.b), -std::sin(q.b));
+  for (std::size_t k = 0; k < d.n; ++k) {
+    const Eigen::Vector2d c = d.path->command[k];
+    const Eigen::Vector2d& dir = d.motion.direction[k];
+    const Eigen::Vector2d& t = d.motion.tangent[k];
+    double je[2] = {c.x(), c.y()};
+    if (s.backlash) je[0] -= dir.x() * q.bx / 2.0, je[1] -= dir.y() * q.by / 2.0;
+    if (s.scale) je[0] += c.x() * q.sx * 1e-6, je[1] += c.y() * q.sy * 1e-6;
+    if (s.servo) je[0] -= q.tau * d.speed * t.x(), je[1] -= q.tau * d.speed * t.y();
+    double ph[2] = {0, 0};
+    for (int a = 0; a < 2; ++a) {
+      if (!s.cyclic[a]) continue;
+      ph[a] = 2.0 * kPi * q.f[a] * c(a);
+      je[a] += q.cc[a] * std::sin(ph[a]) + q.cs[a] * std::cos(ph[a]);
+    }
+    const Eigen::Vector2d P = Eigen::Vector2d(q.ox, q.oy) + ir * je[0] + jr * je[1];
+    const auto i = static_cast<Eigen::Index>(2 * k);
+    r.segment<2>(i) = P - d.path->measured[k];
+    if (!J) continue;
+    auto set = [&](int col, const Eigen::Vector2d& g) { J->block<2, 1>(i, col) = g; };
+    set(0, Eigen::Vector2d(1, 0));
+    set(1, Eigen::Vector2d(0, 1));
+    set(2, dira * je[0]);
+    set(3, dirb * je[1]);
+    if (l.bx >= 0) set(l.bx, -ir * dir.x() / 2.0), set(l.bx + 1, -jr * dir.y() / 2.0);
+    if (l.sx >= 0) set(l.sx, ir * c.x() * 1e-6), set(l.sx + 1, jr * c.y() * 1e-6);
+    if (l.tau >= 0) set(l.tau, -(ir * t.x() + jr * t.y()) * d.speed);
+    for (int a = 0; a < 2; ++a) {
+      if (l.cy[a] < 0) continue;
+      const Eigen::Vector2d& ax = a == 0 ? ir : jr;
+      set(l.cy[a], ax * std::sin(ph[a]));
+      set(l.cy[a] + 1, ax * std::cos(ph[a]));
+      set(l.cy[a] + 2, ax * 2.0 * kPi * c(a) * (q.cc[a] * std::cos(ph[a]) - q.cs[a] * std::sin(ph[a])));
+    }
+  }
+}
+
+struct Solution {
+  bool ok = false;
+  Params q;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd cov;  ///< packed parameters
+  double sse = 0.0, rmse = 0.0, maxAbs = 0.0;
+  int p = 4;
+};
+
+/// Levenberg-Marquardt (Marquardt scaling, Nielsen's damping update) from q0.
+Solution solve(const Data& d, const State& s, const Params& q0) {
+  Solution sol;
+  const Layout l = layoutOf(s);
+  sol.p = l.p;
+  Eigen::VectorXd th = pack(s, q0);
+  Eigen::VectorXd r, rt;
+  Eigen::MatrixXd J, Jt;
+  evaluate(d, s, q0, r, &J);
+  double cost = r.squaredNorm();
+  Eigen::VectorXd D = J.colwise().norm().transpose();
+  double lambda = 1e-3, nu = 2.0;
+  const Eigen::Index m = r.size();
+  for (int it = 0; it < 200; ++it) {
+    D = D.cwiseMax(J.colwise().norm().transpose());
+    Eigen::MatrixXd A(m + l.p, l.p);
+    A.topRows(m) = J;
+    A.bottomRows(l.p) = (std::sqrt(lambda) * D).asDiagonal();
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m + l.p);
+    rhs.head(m) = -r;
+    const Eigen::VectorXd delta = A.householderQr().solve(rhs);
+    const Eigen::VectorXd jd = J * delta;
+    const double predicted = cost - (r + jd).squaredNorm();
+    const Eigen::VectorXd next = th + delta;
+    const Params qn = unpack(s, next, q0);
+    evaluate(d, s, qn, rt, &Jt);
+    const double nc = rt.squaredNorm();
+    if (std::isfinite(nc) && nc < cost) {
+      const double dec = cost - nc;
+      const double rho = predicted > 0.0 ? dec / predicted : 0.0;
+      th = next;
+      std::swap(r, rt);
+      std::swap(J, Jt);
+      cost = nc;
+      lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
+      nu = 2.0;
+      if (dec <= 1e-13 * (cost + dec) || cost == 0.0) break;
+    } else {
+      lambda *= nu;
+      nu *= 2.0;
+      if (lambda > 1e20) break;
+    }
+  }
+  sol.q = unpack(s, th, q0);
+  sol.r = r;
+  sol.sse = cost;
+  const double n = static_cast<double>(d.n);
+  sol.rmse = std::sqrt(cost / n);
+  for (std::size_t k = 0; k < d.n; ++k)
+    sol.maxAbs = std::max(sol.maxAbs, r.segment<2>(static_cast<Eigen::Index>(2 * k)).norm());
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J);
+  if (qr.rank() < l.p || 2.0 * n <= l.p) return sol;
+  const Eigen::MatrixXd R = qr.matrixR().topLeftCorner(l.p, l.p).triangularView<Eigen::Upper>();
+  const Eigen::MatrixXd Rinv = R.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(l.p, l.p));
+  const Eigen::MatrixXd P = qr.colsPermutation().toDenseMatrix().cast<double>();
+  sol.cov = cost / (2.0 * n - l.p) * (P * Rinv * Rinv.transpose() * P.transpose());
+  sol.ok = true;
+  return sol;
+}
+
+double bic(const Solution& s, std::size_t n) {
+  const double m = 2.0 * static_cast<double>(n);
+  return m * std::log(std::max(s.sse, 1e-300) / m) + s.p * std::log(m);
+}
+
+double se(const Solution& s, int i) {
+  return i >= 0 && s.ok ? std::sqrt(std::max(0.0, s.cov(i, i))) : 0.0;
+}
+
+struct CyclicStart {
+  bool ok = false;
+  Params q;
+  int frequencies = 0;
+};
+
+/// Grid search of the cyclic error's frequency on axis `a` (linearised about the current solution).
+CyclicStart cyclicStart(const Data& d, const State& s, const Solution& cur, int a, double minP, double maxP) {
+  CyclicStart out;
+  double lo = d.path->command[0](a), hi = lo, maxStep = 0.0;
+  for (std::size_t k = 0; k < d.n; ++k) {
+    lo = std::min(lo, d.path->command[k](a));
+    hi = std::max(hi, d.path->command[k](a));
+    if (k > 0) maxStep = std::max(maxStep, std::abs(d.path->command[k](a) - d.path->command[k - 1](a)));
+  }
+  const double span = hi - lo;
+  if (!(span > 0.0)) return out;
+  const double pMin = minP > 0.0 ? minP : std::max(3.0 * maxStep, 1e-6);
+  const double pMax = maxP > 0.0 ? maxP : span / 2.0;
+  if (!(pMax > pMin)) return out;
+  const double fMin = 1.0 / pMax, fMax = 1.0 / pMin, df = 1.0 / (8.0 * span);
+  const int count = static_cast<int>(std::floor((fMax - fMin) / df)) + 1;
+  if (count < 1 || count > 200000) return out;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  evaluate(d, s, cur.q, r, &J);
+  const Eigen::Index m = r.size();
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(J);
+  const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(m, J.cols());
+  const Eigen::VectorXd r0 = r - Q * (Q.transpose() * r);
+  const Eigen::Vector2d ax = a == 0 ? Eigen::Vector2d(std::cos(cur.q.a), std::sin(cur.q.a))
+                                    : Eigen::Vector2d(-std::sin(cur.q.b), std::cos(cur.q.b));
+  double bestSse = r0.squaredNorm();
+  Eigen::Vector2d bestCoef = Eigen::Vector2d::Zero();
+  double bestF = 0.0;
+  Eigen::MatrixXd G(m, 2);
+  for (int i = 0; i < count; ++i) {
+    const double f = fMin + df * i;
+    for (std::size_t k = 0; k < d.n; ++k) {
+      const double ph = 2.0 * kPi * f * d.path->command[k](a);
+      const auto row = static_cast<Eigen::Index>(2 * k);
+      G.block<2, 1>(row, 0) = ax * std::sin(ph);
+      G.block<2, 1>(row, 1) = ax * std::cos(ph);
+    }
+    G -= Q * (Q.transpose() * G);
+    const Eigen::Matrix2d GtG = G.transpose() * G;
+    const Eigen::Vector2d Gtr = G.transpose() * r0;
+    if (std::abs(GtG.determinant()) < 1e-300) continue;
+    const Eigen::Vector2d coef = -GtG.ldlt().solve(Gtr);
+    const double sse = (r0 + G * coef).squaredNorm();
+    if (sse < bestSse) {
+      bestSse = sse;
+      bestCoef = coef;
+      bestF = f;
+    }
+  }
+  if (bestF == 0.0) return out;
+  out.ok = true;
+  out.q = cur.q;
+  out.q.cc[a] = bestCoef(0);
+  out.q.cs[a] = bestCoef(1);
+  out.q.f[a] = bestF;
+  out.frequencies = count;
+  return out;
+}
+
+/// Path angle (deg, [0, 360)) and radial residual of every point about the commands' centroid.
+void radialPlot(const Data& d, const Eigen::VectorXd& before, const Eigen::VectorXd& after,
+                ResidualPlot& plot) {
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (const auto& p : d.path->command) c += p;
+  c /= static_cast<double>(d.n);
+  plot.xLabel = "path angle (deg)";
+  plot.yLabel = "radial residual (mm)";
+  for (std::size_t k = 0; k < d.n; ++k) {
+    const Eigen::Vector2d v = d.path->command[k] - c;
+    double ang = std::atan2(v.y(), v.x()) / kDeg;
+    if (ang < 0.0) ang += 360.0;
+    const Eigen::Vector2d u = v.norm() > 0.0 ? Eigen::Vector2d(v / v.norm()) : Eigen::Vector2d::UnitX();
+    const auto i = static_cast<Eigen::Index>(2 * k);
+    // Residual as measured minus modelled (the declared model's convention in identification.h).
+    plot.x.push_back(ang);
+    plot.before.push_back(-u.dot(before.segment<2>(i)));
+    plot.after.push_back(-u.dot(after.segment<2>(i)));
+  }
+}
+
+ErrorSummary summaryOf(const Solution& s) {
+  ErrorSummary e;
+  e.rmse = s.rmse;
+  e.maxAbs = s.maxAbs;
+  return e;
+}
+
+}  // namespace
+
+bool KinematicDiagnosisOptions::isValid(std::string* why) const {
+  auto no = [&](const char* w) {
+    if (why) *why = w;
+    return false;
+  };
+  if (!(feedMmPerMin > 0.0) || !std::isfinite(feedMmPerMin)) return no("feed must be positive (mm/min)");
+  if (!(bicMargin >= 0.0) || !std::isfinite(bicMargin))
+    return no("bicMargin must be finite and not negative");
+  if (!(minRmseGain >= 0.0 && minRmseGain < 1.0)) return no("minRmseGain must be in [0, 1)");
+  if (maxRounds < 0) return no("maxRounds must not be negative");
+  if (!(minPeriodMm >= 0.0) || !(maxPeriodMm >= 0.0)) return no("cyclic period bounds must not be negative");
+  if (minPeriodMm > 0.0 && maxPeriodMm > 0.0 && !(maxPeriodMm > minPeriodMm))
+    return no("maxPeriodMm must exceed minPeriodMm");
+  return true;
+}
+
+Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOptions& o,
+                            Observer* observer) {
+  requireValid(o, "kinematic diagnosis options");
+  const IdentifyResult base = identifyActuatorErrors(path);  // checks the path (InputError)
+  Data d;
+  d.path = &path;
+  d.n = path.size();
+  d.motion = pathMotion(path.command);
+  d.speed = o.feedMmPerMin / 60.0;
+
+  Diagnosis dg;
+  dg.domain = "kinematic";
+  dg.units = "mm";
+  dg.baseline.rmse = base.rmseMm;
+  dg.baseline.maxAbs = base.maxAbsMm;
+  dg.notes.push_back("declared model: origin (" + um(base.errors.originMm.x()) + ", " +
+                     um(base.errors.originMm.y()) + ") um, x axis " + fmt(base.errors.xAxisAngleDeg) +
+                     " deg, y axis " + fmt(base.errors.yAxisAngleDeg) + " deg, squareness " +
+                     fmt(base.errors.squarenessDeg()) + " deg");
+
+  State state;
+  Params q0;
+  q0.ox = base.errors.originMm.x();
+  q0.oy = base.errors.originMm.y();
+  q0.a = base.errors.xAxisAngleDeg * kDeg;
+  q0.b = base.errors.yAxisAngleDeg * kDeg;
+  Solution cur = solve(d, state, q0);
+
+  long step = 0;
+  RunInfo run;
+  bool cancelled = false;
+  for (int round = 0; round < o.maxRounds && !cancelled; ++round) {
+    std::vector<std::string> names;
+    if (!state.backlash) names.push_back("backlash");
+    if (!state.scale) names.push_back("scale");
+    if (!state.cyclic[0] || !state.cyclic[1]) names.push_back("cyclic");
+    if (!state.servo) names.push_back("servo_lag");
+    if (names.empty()) break;
+    std::vector<Candidate> tried;
+    std::vector<State> states;
+    std::vector<Solution> sols;
+    std::optional<std::size_t> best;
+    const double bic0 = bic(cur, d.n);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const std::string& name = names[i];
+      Candidate c;
+      c.name = name;
+      c.round = round;
+      c.rmseBefore = cur.rmse;
+      State next = state;
+      Solution sol;
+      double penalty = 0.0;
+      int cyAxis = -1;
+      if (name == "backlash") {
+        next.backlash = true;
+        sol = solve(d, next, cur.q);
+      } else if (name == "scale") {
+        next.scale = true;
+        sol = solve(d, next, cur.q);
+      } else if (name == "servo_lag") {
+        next.servo = true;
+        sol = solve(d, next, cur.q);
+      } else {  // cyclic: the better axis
+        for (int a = 0; a < 2; ++a) {
+          if (state.cyclic[a]) continue;
+          const CyclicStart cs = cyclicStart(d, state, cur, a, o.minPeriodMm, o.maxPeriodMm);
+          if (!cs.ok) continue;
+          State sa = state;
+          sa.cyclic[a] = true;
+          Solution s = solve(d, sa, cs.q);
+          if (cyAxis < 0 || s.sse < sol.sse) {
+            sol = std::move(s);
+            next = sa;
+            cyAxis = a;
+            penalty = 2.0 * std::log(std::max(1.0, cs.frequencies / 8.0));
+          }
+        }
+      }
+      const Layout l = layoutOf(next);
+      if (!sol.ok) {
+        c.rmseAfter = cur.rmse;
+        c.evidence =
+            cyAxis < 0 && name == "cyclic"
+                ? "not estimable: no period range to search on this path"
+                : "not estimable from this path: its parameters are not observable together with the "
+                  "declared ones";
+        if (name == "cyclic" && cyAxis < 0) c.parameters.push_back({"axis", std::string("x"), std::nullopt});
+      } else {
+        const Params& q = sol.q;
+        std::string text;
+        if (name == "backlash") {
+          c.parameters = {{"x_mm", q.bx, se(sol, l.bx)}, {"y_mm", q.by, se(sol, l.bx + 1)}};
+          text = "backlash x " + um(q.bx) + " +- " + um(se(sol, l.bx), 2) + " um, y " + um(q.by) + " +- " +
+                 um(se(sol, l.bx + 1), 2) + " um";
+        } else if (name == "scale") {
+          c.parameters = {{"x_ppm", q.sx, se(sol, l.sx)}, {"y_ppm", q.sy, se(sol, l.sx + 1)}};
+          text = "scale x " + fmt(q.sx) + " +- " + fmt(se(sol, l.sx), 2) + " ppm, y " + fmt(q.sy) + " +- " +
+                 fmt(se(sol, l.sx + 1), 2) + " ppm";
+        } else if (name == "servo_lag") {
+          const double lagMm = q.tau * d.speed;
+          c.parameters = {{"tau_s", q.tau, se(sol, l.tau)}, {"lag_mm", lagMm, se(sol, l.tau) * d.speed}};
+          text = "servo lag tau " + fmt(q.tau) + " +- " + fmt(se(sol, l.tau), 2) + " s at " +
+                 fmt(o.feedMmPerMin) + " mm/min (" + um(lagMm) + " um)";
+        } else {
+          const int a = cyAxis, i0 = l.cy[a];
+          const double cc = q.cc[a], cs = q.cs[a], f = q.f[a];
+          const double amp = std::hypot(cc, cs);
+          const Eigen::Vector2d g = amp > 0.0 ? Eigen::Vector2d(cc / amp, cs / amp) : Eigen::Vector2d(1, 0);
+          const double seAmp = std::sqrt(std::max(0.0, g.dot(sol.cov.block<2, 2>(i0, i0) * g)));
+          const double period = 1.0 / std::abs(f);
+          const double sePeriod = se(sol, i0 + 2) / (f * f);
+          double phase = std::atan2(cs, cc) / kDeg;
+          if (f < 0.0) phase = 180.0 - phase;  // sin(-w x + p) = sin(w x + 180 - p)
+          phase = std::remainder(phase, 360.0);
+          c.parameters = {{"axis", std::string(a == 0 ? "x" : "y"), std::nullopt},
+                          {"period_mm", period, sePeriod},
+                          {"amplitude_mm", amp, seAmp},
+                          {"phase_deg", phase, std::nullopt}};
+          text = "cyclic on " + std::string(a == 0 ? "x" : "y") + ": period " + fmt(period, 4) + " +- " +
+                 fmt(sePeriod, 2) + " mm, amplitude " + um(amp) + " +- " + um(seAmp, 2) + " um";
+        }
+        c.rmseAfter = sol.rmse;
+        const double dBic = bic(sol, d.n) + penalty - bic0;
+        c.score = dBic;
+        const bool strong = dBic < -o.bicMargin;
+        const bool gain = sol.rmse <= (1.0 - o.minRmseGain) * cur.rmse;
+        std::string ev =
+            "rmse " + um(cur.rmse) + " -> " + um(sol.rmse) + " um (" +
+            (cur.rmse > 0 ? fmt(100.0 * (sol.rmse - cur.rmse) / cur.rmse, 2) : std::string("n/a")) +
+            " %), dBIC " + fmt(dBic, 4) + ", " + text;
+        if (!strong)
+          ev += "; rejected: dBIC above -" + fmt(o.bicMargin);
+        else if (!gain)
+          ev += "; rejected: rmse gain below " + fmt(100.0 * o.minRmseGain, 2) + " %";
+        c.evidence = ev;
+        if (strong && gain && (!best || dBic < tried[*best].score)) best = i;
+      }
+      tried.push_back(std::move(c));
+      states.push_back(next);
+      sols.push_back(std::move(sol));
+
+      IterationSummary s;
+      s.iteration = step;
+      s.evaluations = ++step;
+      s.best = cur.rmse;
+      s.components = {{"round", static_cast<double>(round)}, {"rmse_mm", cur.rmse}};
+      s.progress = static_cast<double>(i + 1) / static_cast<double>(names.size());
+      if (notify(observer, run, s, false)) {
+        cancelled = true;
+        break;
+      }
+    }
+    if (cancelled) best.reset();
+    if (best) {
+      for (std::size_t i = 0; i < tried.size(); ++i) {
+        if (i != *best && tried[i].evidence.find("; rejected") == std::string::npos &&
+            !tried[i].evidence.starts_with("not estimable"))
+          tried[i].evidence += "; passed, but " + tried[*best].name + " explains more";
+      }
+      Candidate& c = tried[*best];
+      c.accepted = true;
+      c.evidence = "accepted: " + c.evidence;
+      ResidualPlot plot;
+      radialPlot(d, cur.r, sols[*best].r, plot);
+      c.plot = std::move(plot);
+      state = states[*best];
+      cur = std::move(sols[*best]);
+    }
+    for (auto& c : tried) dg.effects.push_back(std::move(c));
+    if (!best) break;
+  }
+  if (cancelled) dg.notes.push_back("cancelled");
+  dg.final = summaryOf(cur);
+  return dg;
+}
+
+}  // namespace metrofit::diagnose

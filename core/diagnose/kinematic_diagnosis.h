@@ -1,0 +1,48 @@
+#pragma once
+// The closed loop in the kinematic domain (issue 8, CONTRACT.md "The declared models", "diagnose").
+//
+// Declared model: the Cartesian machine of cartesian_model.h, P = o + ir(a) x + jr(b) y, identified
+// by core/kinematics/identification.h (actuator origin and orientation errors, nothing else).
+//
+// Candidate effects (CONTRACT.md names) act on the joint coordinates exactly as the simulator's
+// (core/sim/effects_kinematic.h, pathMotion for directions and tangents), and are estimated
+// jointly with o, a, b by Levenberg-Marquardt on the sum of squared residual distances:
+//   `backlash`   bx, by (full lost motion, mm)               2 parameters
+//   `scale`      sx, sy (ppm)                                 2 parameters
+//   `cyclic`     on x or y: amplitude, phase, period (mm)     3 parameters; the period from a
+//                search over a frequency grid (step 1 / (8 travel), periods from 3 sampling steps
+//                of the axis to half its travel), the better axis is the candidate
+//   `servo_lag`  tau (s), with the feed rate (mm/min) the test ran at: lag distance tau feed / 60
+// Standard errors from s^2 (J^T J)^-1 at the solution, s^2 = S / (2N - p).
+//
+// Acceptance on evidence: with n = 2N residual coordinates and BIC = n ln(S / n) + p ln(n), a
+// candidate is accepted only when dBIC = BIC_after - BIC_before < -bicMargin (10: "very strong"
+// evidence; the cyclic search adds 2 ln(independent frequencies searched = grid points / 8) to
+// its penalty) *and* the fit rmse falls by at least minRmseGain (5 %). The passing candidate with
+// the lowest dBIC is accepted, the model refitted with it and the others tried again, until none
+// passes.
+#include "core/common/run.h"
+#include "core/diagnose/diagnosis.h"
+#include "core/kinematics/measured_path.h"
+
+namespace metrofit::diagnose {
+
+struct KinematicDiagnosisOptions {
+  double feedMmPerMin = 1000.0;  ///< the feed rate of the test (for servo_lag's tau_s)
+  double bicMargin = 10.0;       ///< accept when dBIC < -bicMargin
+  double minRmseGain = 0.05;     ///< relative fit rmse reduction needed
+  int maxRounds = 6;
+  double minPeriodMm = 0.0;  ///< cyclic search range; 0: automatic (see the header comment)
+  double maxPeriodMm = 0.0;
+
+  bool isValid(std::string* why) const;
+};
+
+/// Runs the loop on a measured path / circular test. InputError naming the file and field when the
+/// path cannot identify the declared model (identification.h's checks); OptionsError for invalid
+/// options. The observer sees one step per candidate (best = current rmse, mm); when it stops the
+/// loop the diagnosis so far is returned with the note "cancelled".
+Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOptions& options,
+                            Observer* observer = nullptr);
+
+}  // namespace metrofit::diagnose

@@ -1,0 +1,463 @@
+#include "core/diagnose/matching_diagnosis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include <Eigen/Geometry>
+#include <Eigen/QR>
+
+#include "core/common/error.h"
+#include "core/matching/closed_form.h"
+#include "core/matching/fit_input.h"
+
+namespace metrofit::diagnose {
+namespace {
+
+enum class Mode { Normal, Planar, Full };
+enum class Kind { Scale, Offset, Distortion };
+
+struct EffectDef {
+  std::string name;
+  Kind kind = Kind::Scale;
+  int surface = -1;
+  int params = 1;
+};
+
+std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
+  char buf[240];
+  std::snprintf(buf, sizeof buf, f, a, b, c, d);
+  return buf;
+}
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+/// The fixed data of a set.
+struct Problem {
+  const ProbePointSet* set = nullptr;
+  Mode mode = Mode::Full;
+  Eigen::Vector3d qMean = Eigen::Vector3d::Zero();
+  std::vector<std::string> surfaces;
+  std::vector<int> surfaceOf;
+  int perPoint = 3;  ///< observations per point
+  int rigid = 6;     ///< rigid parameters (rotation increments, translation)
+  std::size_t points() const { return set->points.size(); }
+  std::size_t observations() const { return points() * static_cast<std::size_t>(perPoint); }
+};
+
+/// Displacement columns of effect `e` at point i (part frame), one per parameter.
+void effectColumns(const Problem& pb, const EffectDef& e, std::size_t i, std::vector<Eigen::Vector3d>& out) {
+  const ProbePoint& p = pb.set->points[i];
+  const Eigen::Vector3d qc = p.nominal - pb.qMean;
+  switch (e.kind) {
+    case Kind::Scale:
+      out.push_back(1e-6 * qc);
+      break;
+    case Kind::Offset:
+      out.push_back(pb.surfaceOf[i] == e.surface ? p.normal : Eigen::Vector3d::Zero());
+      break;
+    case Kind::Distortion:
+      out.push_back(1e-6 * Eigen::Vector3d(qc.x(), -qc.y(), 0.0));
+      out.push_back(1e-6 * Eigen::Vector3d(qc.y(), qc.x(), 0.0));
+      break;
+  }
+}
+
+struct FitState {
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+  Eigen::VectorXd beta;
+  Eigen::VectorXd r;                          ///< observation residuals
+  std::vector<Eigen::Vector3d> partResidual;  ///< per point R^T (p - f(q)), part frame
+  std::vector<double> deviation;              ///< per point: along the normal, or |residual|
+  Eigen::MatrixXd rigidJ, effectJ;            ///< d model / d parameters at the optimum
+  EffectEstimate est;                         ///< statistics of the linearised model
+  double rss = 0.0;
+  int iterations = 0;
+};
+
+class Fitter {
+ public:
+  Fitter(const Problem& pb, int maxIterations) : pb_(pb), maxIterations_(maxIterations) {}
+
+  FitState fit(const std::vector<EffectDef>& effects, const Eigen::Matrix3d& R0,
+               const Eigen::Vector3d& t0) const {
+    int k = 0;
+    for (const EffectDef& e : effects) k += e.params;
+    FitState s;
+    s.R = R0;
+    s.t = t0;
+    s.beta = Eigen::VectorXd::Zero(k);
+    evaluate(effects, s);
+    for (int it = 0; it < maxIterations_; ++it) {
+      Eigen::MatrixXd A(s.r.size(), pb_.rigid + k);
+      A.leftCols(pb_.rigid) = s.rigidJ;
+      if (k > 0) A.rightCols(k) = s.effectJ;
+      // Column scaling, then the minimum-norm (rank-revealing) Gauss-Newton step.
+      Eigen::VectorXd scale(A.cols());
+      for (Eigen::Index j = 0; j < A.cols(); ++j) {
+        scale(j) = A.col(j).norm();
+        if (scale(j) > 0.0) A.col(j) /= scale(j);
+      }
+      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+      cod.setThreshold(1e-10);
+      cod.compute(A);
+      Eigen::VectorXd step = cod.solve(s.r);
+      for (Eigen::Index j = 0; j < step.size(); ++j) step(j) = scale(j) > 0.0 ? step(j) / scale(j) : 0.0;
+      FitState next = s;
+      applyStep(step, next);
+      evaluate(effects, next);
+      ++s.iterations;
+      const double change = s.rss - next.rss;
+      if (next.rss <= s.rss) {
+        next.iterations = s.iterations;
+        s = std::move(next);
+      } else {
+        break;  // no further decrease: converged to rounding
+      }
+      if (change <= 1e-13 * std::max(s.rss, 1e-300) || s.rss == 0.0) break;
+    }
+    // Statistics on the model linearised at the optimum: y_lin = r + Z beta.
+    const ColumnSpace declared(s.rigidJ);
+    const Eigen::VectorXd yLin = k > 0 ? Eigen::VectorXd(s.r + s.effectJ * s.beta) : s.r;
+    s.est = estimateEffects(declared, yLin, k > 0 ? s.effectJ : Eigen::MatrixXd(s.r.size(), 0));
+    return s;
+  }
+
+ private:
+  void applyStep(const Eigen::VectorXd& step, FitState& s) const {
+    Eigen::Vector3d w = Eigen::Vector3d::Zero(), dt = Eigen::Vector3d::Zero();
+    if (pb_.mode == Mode::Planar) {
+      w.z() = step(0);
+      dt.x() = step(1);
+      dt.y() = step(2);
+    } else {
+      w = step.segment<3>(0);
+      dt = step.segment<3>(3);
+    }
+    const double angle = w.norm();
+    if (angle > 0.0) s.R = s.R * Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
+    s.t += dt;
+    s.beta += step.tail(s.beta.size());
+  }
+
+  void evaluate(const std::vector<EffectDef>& effects, FitState& s) const {
+    const std::size_t n = pb_.points();
+    const int per = pb_.perPoint;
+    const auto k = s.beta.size();
+    s.r.resize(static_cast<Eigen::Index>(n) * per);
+    s.rigidJ.resize(s.r.size(), pb_.rigid);
+    s.effectJ.resize(s.r.size(), k);
+    s.partResidual.resize(n);
+    s.deviation.resize(n);
+    std::vector<Eigen::Vector3d> cols;
+    for (std::size_t i = 0; i < n; ++i) {
+      const ProbePoint& p = pb_.set->points[i];
+      cols.clear();
+      for (const EffectDef& e : effects) effectColumns(pb_, e, i, cols);
+      Eigen::Vector3d qd = p.nominal;
+      for (Eigen::Index j = 0; j < k; ++j) qd += s.beta(j) * cols[static_cast<std::size_t>(j)];
+      const Eigen::Vector3d f = s.R * qd + s.t;
+      const Eigen::Vector3d e = p.measured - f;
+      s.partResidual[i] = s.R.transpose() * e;
+      const Eigen::Matrix3d dRot = -s.R * skew(qd);  // d f / d w (right increment R Exp(w))
+      const auto row = static_cast<Eigen::Index>(i) * per;
+      if (pb_.mode == Mode::Normal) {
+        const Eigen::Vector3d nr = s.R * p.normal;
+        s.r(row) = nr.dot(e);
+        s.deviation[i] = s.r(row);
+        s.rigidJ.block(row, 0, 1, 3) = nr.transpose() * dRot;
+        s.rigidJ.block(row, 3, 1, 3) = nr.transpose();
+        for (Eigen::Index j = 0; j < k; ++j)
+          s.effectJ(row, j) = nr.dot(s.R * cols[static_cast<std::size_t>(j)]);
+      } else if (pb_.mode == Mode::Planar) {
+        s.r.segment<2>(row) = e.head<2>();
+        s.deviation[i] = e.head<2>().norm();
+        s.rigidJ.block(row, 0, 2, 1) = dRot.block<2, 1>(0, 2);
+        s.rigidJ.block(row, 1, 2, 2) = Eigen::Matrix2d::Identity();
+        for (Eigen::Index j = 0; j < k; ++j)
+          s.effectJ.block(row, j, 2, 1) = (s.R * cols[static_cast<std::size_t>(j)]).head<2>();
+      } else {
+        s.r.segment<3>(row) = e;
+        s.deviation[i] = e.norm();
+        s.rigidJ.block(row, 0, 3, 3) = dRot;
+        s.rigidJ.block(row, 3, 3, 3) = Eigen::Matrix3d::Identity();
+        for (Eigen::Index j = 0; j < k; ++j)
+          s.effectJ.block(row, j, 3, 1) = s.R * cols[static_cast<std::size_t>(j)];
+      }
+    }
+    s.rss = s.r.squaredNorm();
+  }
+
+  const Problem& pb_;
+  int maxIterations_;
+};
+
+ErrorSummary summarise(const FitState& s, std::size_t points) {
+  ErrorSummary e;
+  e.rmse = std::sqrt(s.rss / static_cast<double>(std::max<std::size_t>(points, 1)));
+  for (double d : s.deviation) e.maxAbs = std::max(e.maxAbs, std::abs(d));
+  return e;
+}
+
+/// The value plotted for a point: along the normal, or the in-plane radial component about the centroid.
+double radialValue(const Problem& pb, const FitState& s, std::size_t i) {
+  if (pb.mode == Mode::Normal) return s.deviation[i];
+  const Eigen::Vector3d qc = pb.set->points[i].nominal - pb.qMean;
+  const double r = qc.head<2>().norm();
+  return r > 0.0 ? s.partResidual[i].head<2>().dot(qc.head<2>()) / r : 0.0;
+}
+
+ResidualPlot makePlot(const Problem& pb, const EffectDef& e, const FitState& before, const FitState& after) {
+  ResidualPlot plot;
+  const std::size_t n = pb.points();
+  const bool normal = pb.mode == Mode::Normal;
+  switch (e.kind) {
+    case Kind::Scale:
+      plot.xLabel = "distance from the centroid (mm)";
+      plot.yLabel = normal ? "deviation along the normal (mm)" : "radial residual (mm)";
+      for (std::size_t i = 0; i < n; ++i) {
+        plot.x.push_back((pb.set->points[i].nominal - pb.qMean).norm());
+        plot.before.push_back(radialValue(pb, before, i));
+        plot.after.push_back(radialValue(pb, after, i));
+      }
+      break;
+    case Kind::Offset:
+      plot.xLabel = "surface";
+      plot.yLabel = "deviation along the normal (mm)";
+      plot.categories = pb.surfaces;
+      for (std::size_t i = 0; i < n; ++i) {
+        plot.x.push_back(pb.surfaceOf[i]);
+        plot.before.push_back(before.deviation[i]);
+        plot.after.push_back(after.deviation[i]);
+      }
+      break;
+    case Kind::Distortion:
+      plot.xLabel = "polar angle (deg)";
+      plot.yLabel = normal ? "deviation along the normal (mm)" : "radial residual (mm)";
+      for (std::size_t i = 0; i < n; ++i) {
+        const Eigen::Vector3d qc = pb.set->points[i].nominal - pb.qMean;
+        plot.x.push_back(std::atan2(qc.y(), qc.x()) * 180.0 / std::numbers::pi);
+        plot.before.push_back(radialValue(pb, before, i));
+        plot.after.push_back(radialValue(pb, after, i));
+        const Eigen::Vector3d& q = pb.set->points[i].nominal;
+        const Eigen::Vector3d& d = before.partResidual[i];
+        plot.vectors.push_back({q.x(), q.y(), d.x(), d.y()});
+      }
+      break;
+  }
+  return plot;
+}
+
+/// Parameters of an effect from its slice of beta / covariance.
+std::vector<Parameter> parameters(const EffectDef& e, const Eigen::VectorXd& beta, const Eigen::MatrixXd& cov,
+                                  Eigen::Index at) {
+  std::vector<Parameter> out;
+  auto se = [&](Eigen::Index j) { return std::sqrt(std::max(0.0, cov(j, j))); };
+  switch (e.kind) {
+    case Kind::Scale:
+      out.push_back({"ppm", beta(at), se(at)});
+      break;
+    case Kind::Offset:
+      out.push_back({"mm", beta(at), se(at)});
+      break;
+    case Kind::Distortion: {
+      const double c = beta(at), s = beta(at + 1);
+      const double ppm = std::hypot(c, s);
+      double angle = 0.5 * std::atan2(s, c) * 180.0 / std::numbers::pi;
+      if (angle <= -90.0) angle += 180.0;
+      const Eigen::Matrix2d C = cov.block<2, 2>(at, at);
+      std::optional<double> sePpm, seAngle;
+      if (ppm > 0.0) {
+        const Eigen::Vector2d g(c / ppm, s / ppm);
+        const Eigen::Vector2d h(-s / (ppm * ppm), c / (ppm * ppm));
+        sePpm = std::sqrt(std::max(0.0, g.dot(C * g)));
+        seAngle = 0.5 * std::sqrt(std::max(0.0, h.dot(C * h))) * 180.0 / std::numbers::pi;
+      }
+      out.push_back({"ppm", ppm, sePpm});
+      out.push_back({"angle_deg", angle, seAngle});
+      break;
+    }
+  }
+  return out;
+}
+
+std::string describe(const std::vector<Parameter>& ps) {
+  std::string s;
+  for (const Parameter& p : ps) {
+    if (!s.empty()) s += ", ";
+    s += p.name + fmt(" = %.4g", std::get<double>(p.value));
+    if (p.standardError) s += fmt(" +- %.2g", *p.standardError);
+  }
+  return s;
+}
+
+}  // namespace
+
+bool MatchingDiagnosisOptions::isValid(std::string* why) const {
+  if (!acceptance.isValid(why)) return false;
+  auto no = [&](const char* w) {
+    if (why) *why = w;
+    return false;
+  };
+  if (!(toleranceMm > 0.0) || !std::isfinite(toleranceMm)) return no("the tolerance must be positive");
+  if (!(relevantFractionOfTolerance >= 0.0 && relevantFractionOfTolerance <= 1.0))
+    return no("the relevant fraction of the tolerance must be in [0, 1]");
+  if (maxRounds < 0 || maxRounds > 1000) return no("max rounds must be in 0..1000");
+  if (maxIterations < 1 || maxIterations > 10000) return no("max iterations must be in 1..10000");
+  return true;
+}
+
+Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOptions& options,
+                           Observer* observer) {
+  requireValid(options, "matching diagnosis options");
+  const matching::DofLocks locks = matching::effectiveLocks(set, {});
+  matching::requireDeterminable(set, locks, false, matching::FitKind::LeastSquares, "matching diagnosis");
+
+  Problem pb;
+  pb.set = &set;
+  pb.mode = set.hasNormals ? Mode::Normal : (set.planar ? Mode::Planar : Mode::Full);
+  pb.perPoint = pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3);
+  pb.rigid = pb.mode == Mode::Planar ? 3 : 6;
+  for (const ProbePoint& p : set.points) pb.qMean += p.nominal;
+  pb.qMean /= static_cast<double>(set.points.size());
+  for (const ProbePoint& p : set.points) {
+    auto it = std::find(pb.surfaces.begin(), pb.surfaces.end(), p.surface);
+    if (it == pb.surfaces.end()) {
+      pb.surfaces.push_back(p.surface);
+      it = pb.surfaces.end() - 1;
+    }
+    pb.surfaceOf.push_back(static_cast<int>(it - pb.surfaces.begin()));
+  }
+  const std::size_t nObs = pb.observations(), nPts = pb.points();
+
+  std::vector<EffectDef> defs;
+  defs.push_back({"scale", Kind::Scale, -1, 1});
+  if (set.hasNormals)
+    for (std::size_t s = 0; s < pb.surfaces.size(); ++s)
+      defs.push_back({"surface_offset:" + pb.surfaces[s], Kind::Offset, static_cast<int>(s), 1});
+  defs.push_back({"distortion", Kind::Distortion, -1, 2});
+
+  matching::ClosedFormOptions cf;
+  cf.locks = locks;
+  const matching::ClosedFormResult start = matching::closedFormFit(set, cf);
+  const Fitter fitter(pb, options.maxIterations);
+
+  AcceptanceOptions acceptance = options.acceptance;
+  acceptance.minAbsoluteReduction =
+      std::max(acceptance.minAbsoluteReduction, options.relevantFractionOfTolerance * options.toleranceMm);
+
+  Diagnosis result;
+  result.domain = "matching";
+  result.units = "mm";
+  std::vector<EffectDef> acceptedDefs;
+  FitState current = fitter.fit(acceptedDefs, start.pose.rotation, start.pose.translation);
+  result.baseline = summarise(current, nPts);
+  {
+    matching::Pose pose;
+    pose.rotation = current.R;
+    pose.translation = current.t;
+    const Eigen::Vector3d a = pose.anglesDeg();
+    result.notes.push_back(std::string("declared model: rigid posture p = R q + t fitted to ") +
+                           (pb.mode == Mode::Normal
+                                ? "the deviations along the nominal normals"
+                                : (pb.mode == Mode::Planar ? "the in-plane residuals (planar, position-only)"
+                                                           : "the residual vectors (position-only)")) +
+                           ", " + std::to_string(nPts) + " points");
+    result.notes.push_back(
+        fmt("declared fit: rotation_deg [%.5f, %.5f, %.5f]", a.x(), a.y(), a.z()) +
+        fmt(", translation_mm [%.4f, %.4f, %.4f]", current.t.x(), current.t.y(), current.t.z()));
+  }
+
+  std::vector<bool> used(defs.size(), false);
+  std::vector<Candidate> acceptedCandidates, lastRound;
+  long tried = 0;
+  for (int round = 0;; ++round) {
+    std::vector<Candidate> roundCandidates;
+    std::vector<FitState> states;
+    std::vector<std::size_t> roundDefs;
+    int best = -1;
+    const double rmseBefore = summarise(current, nPts).rmse;
+    for (std::size_t c = 0; c < defs.size(); ++c) {
+      if (used[c]) continue;
+      std::vector<EffectDef> trial = acceptedDefs;
+      trial.push_back(defs[c]);
+      FitState st = fitter.fit(trial, current.R, current.t);
+      ++tried;
+      Candidate cand;
+      cand.name = defs[c].name;
+      cand.round = round;
+      cand.rmseBefore = rmseBefore;
+      const auto at = static_cast<Eigen::Index>(st.beta.size() - defs[c].params);
+      if (!st.est.identifiable) {
+        cand.rmseAfter = rmseBefore;
+        cand.parameters = parameters(defs[c], Eigen::VectorXd::Zero(st.beta.size()),
+                                     Eigen::MatrixXd::Zero(st.beta.size(), st.beta.size()), at);
+        for (Parameter& p : cand.parameters) p.standardError.reset();
+        cand.evidence =
+            "not identifiable: " + st.est.why + " (the rigid posture explains it with these points)";
+      } else {
+        cand.parameters = parameters(defs[c], st.beta, st.est.covariance, at);
+        cand.rmseAfter = summarise(st, nPts).rmse;
+        const AcceptanceDecision dec = decideAcceptance(acceptance, current.rss, st.rss, nObs,
+                                                        current.est.dof, defs[c].params, "mm", nPts);
+        cand.score = deltaBic(current.rss, st.rss, nObs, current.est.dof, defs[c].params);
+        cand.evidence = describe(cand.parameters) + "; " + dec.reason;
+        cand.plot = makePlot(pb, defs[c], current, st);
+        if (dec.accepted && round < options.maxRounds &&
+            (best < 0 || cand.score < roundCandidates[static_cast<std::size_t>(best)].score))
+          best = static_cast<int>(roundCandidates.size());
+      }
+      roundCandidates.push_back(std::move(cand));
+      states.push_back(std::move(st));
+      roundDefs.push_back(c);
+    }
+    bool cancelled = false;
+    if (best >= 0) {
+      const auto b = static_cast<std::size_t>(best);
+      Candidate& win = roundCandidates[b];
+      win.accepted = true;
+      for (std::size_t j = 0; j < roundCandidates.size(); ++j) {
+        if (j == b || !states[j].est.identifiable) continue;
+        if (std::abs(roundCandidates[j].score - win.score) <= 1e-6 * std::abs(win.score) + 1e-9)
+          win.evidence += "; indistinguishable from " + roundCandidates[j].name + " with these points";
+      }
+      used[roundDefs[b]] = true;
+      acceptedDefs.push_back(defs[roundDefs[b]]);
+      current = std::move(states[b]);
+      acceptedCandidates.push_back(win);
+    } else {
+      lastRound = std::move(roundCandidates);
+    }
+    if (observer) {
+      IterationSummary s;
+      s.iteration = round;
+      s.evaluations = tried;
+      s.best = summarise(current, nPts).rmse;
+      s.components = {{"rmse", s.best}, {"accepted", static_cast<double>(acceptedCandidates.size())}};
+      cancelled = observer->onIteration(s) == ObserverDecision::Stop;
+    }
+    if (best < 0) break;
+    if (cancelled) {
+      result.notes.push_back("stopped by the observer after round " + std::to_string(round));
+      break;
+    }
+  }
+  // Accepted effects carry the parameters of the final joint fit.
+  Eigen::Index at = 0;
+  for (std::size_t j = 0; j < acceptedCandidates.size(); ++j) {
+    acceptedCandidates[j].parameters = parameters(acceptedDefs[j], current.beta, current.est.covariance, at);
+    at += acceptedDefs[j].params;
+  }
+  result.effects = std::move(acceptedCandidates);
+  for (Candidate& c : lastRound) result.effects.push_back(std::move(c));
+  result.final = summarise(current, nPts);
+  return result;
+}
+
+}  // namespace metrofit::diagnose

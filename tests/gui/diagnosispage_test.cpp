@@ -1,0 +1,277 @@
+// The diagnosis page (app/gui/diagnosispage.h) on the bundled demo (offscreen): the candidate table
+// lists exactly the effects and accepted flags of the core loop (widgets/diagnose/diagnosisstudy.h
+// runDiagnosis on the same settings), the worker gives the same result as the synchronous run,
+// Apply writes studies.diagnosis.<domain>.applied and Undo restores the study JSON exactly, and
+// missing or invalid settings show a message naming the field instead of crashing.
+#include <gtest/gtest.h>
+
+#include <QComboBox>
+#include <QDir>
+#include <QImage>
+#include <QPainter>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <algorithm>
+#include <cmath>
+
+#include "app/gui/diagnosispage.h"
+#include "core/project/project.h"
+#include "qtapp.h"
+#include "widgets/diagnose/diagnosisstudy.h"
+#include "widgets/diagnose/residualplot.h"
+#include "widgets/document/demoproject.h"
+#include "widgets/document/projectdocument.h"
+
+namespace metrofit {
+namespace {
+
+constexpr int kEffectColumn = 1;
+constexpr int kAcceptedColumn = 6;
+
+class DiagnosisPageTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(dir_.isValid());
+    project_ = extractDemoProject(dir_.path());
+    document_.load(project_);
+  }
+
+  /// The page's table against the core loop on the same settings.
+  void expectTableMatchesCore(DiagnosisPage& page, DiagnosisDomain domain) {
+    const diagnose::Diagnosis core =
+        runDiagnosis(diagnosisSettings(document_.project(), project_.toStdString(), domain));
+    ASSERT_TRUE(page.result().has_value());
+    const QTableWidget* t = page.candidateTable();
+    ASSERT_EQ(t->rowCount(), static_cast<int>(core.effects.size()));
+    for (int r = 0; r < t->rowCount(); ++r) {
+      const diagnose::Candidate& c = core.effects[static_cast<std::size_t>(r)];
+      EXPECT_EQ(t->item(r, kEffectColumn)->text().toStdString(), c.name) << "row " << r;
+      EXPECT_EQ(t->item(r, kAcceptedColumn)->data(Qt::UserRole).toBool(), c.accepted) << c.name;
+      EXPECT_EQ(t->item(r, kAcceptedColumn)->text(), c.accepted ? QStringLiteral("✓") : QStringLiteral("✗"));
+    }
+    EXPECT_DOUBLE_EQ(page.result()->baseline.rmse, core.baseline.rmse);
+    EXPECT_DOUBLE_EQ(page.result()->final.rmse, core.final.rmse);
+  }
+
+  /// Saves a grab of the page to $METROFIT_TEST_OUT/diagnosispage/<name>.png for people to look at.
+  static void grab(DiagnosisPage& page, const QString& name) {
+    const QString out = qEnvironmentVariable("METROFIT_TEST_OUT");
+    if (out.isEmpty()) return;
+    const QString dir = QDir(out).filePath(QStringLiteral("diagnosispage"));
+    QDir().mkpath(dir);
+    page.resize(1100, 720);
+    page.grab().save(QDir(dir).filePath(name + QStringLiteral(".png")));
+  }
+
+  QTemporaryDir dir_;
+  QString project_;
+  ProjectDocument document_;
+};
+
+TEST_F(DiagnosisPageTest, SetupTableListsTheCoreLoopsEffectsAndFindsTheToolWear) {
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Setup);
+  EXPECT_TRUE(page.message().isEmpty()) << page.message().toStdString();
+  ASSERT_TRUE(page.runNow()) << page.statusText().toStdString();
+  expectTableMatchesCore(page, DiagnosisDomain::Setup);
+  // The demo report carries one undeclared effect: tool T23 wears 0.002 mm per part.
+  const auto accepted = page.result()->accepted();
+  ASSERT_EQ(accepted.size(), 1u);
+  EXPECT_EQ(accepted[0]->name, "tool_wear:T23");
+  EXPECT_LT(page.result()->final.rmse, page.result()->baseline.rmse);
+  EXPECT_TRUE(page.applyButton()->isEnabled());
+  EXPECT_FALSE(page.residualPlot()->isEmpty());
+  EXPECT_GT(page.residualPlot()->pointCount(), 0);
+  EXPECT_EQ(page.errorBars()->categoryCount(), 2);  // rmse, max |e| (no held-out rows in setup)
+  grab(page, QStringLiteral("setup"));
+}
+
+TEST_F(DiagnosisPageTest, MatchingTableListsTheCoreLoopsEffectsAndFindsTheScale) {
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Matching);
+  ASSERT_TRUE(page.runNow()) << page.statusText().toStdString();
+  expectTableMatchesCore(page, DiagnosisDomain::Matching);
+  const auto accepted = page.result()->accepted();
+  ASSERT_EQ(accepted.size(), 1u);
+  EXPECT_EQ(accepted[0]->name, "scale");  // the demo part was probed 4 K warm: +92.4 ppm
+  grab(page, QStringLiteral("matching"));
+}
+
+TEST_F(DiagnosisPageTest, KinematicAndThermalTablesListTheCoreLoopsEffects) {
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Kinematic);
+  ASSERT_TRUE(page.runNow()) << page.statusText().toStdString();
+  expectTableMatchesCore(page, DiagnosisDomain::Kinematic);
+  EXPECT_FALSE(page.result()->accepted().empty());
+  grab(page, QStringLiteral("kinematic"));
+  page.setDomain(DiagnosisDomain::Thermal);
+  EXPECT_FALSE(page.result().has_value());  // a new domain clears the result
+  ASSERT_TRUE(page.runNow()) << page.statusText().toStdString();
+  expectTableMatchesCore(page, DiagnosisDomain::Thermal);
+  EXPECT_FALSE(page.result()->accepted().empty());
+  EXPECT_EQ(page.errorBars()->categoryCount(), 3);  // rmse, max |e|, held-out rmse
+  grab(page, QStringLiteral("thermal"));
+}
+
+TEST_F(DiagnosisPageTest, WorkerGivesTheSynchronousResult) {
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Setup);
+  QSignalSpy finished(&page, &DiagnosisPage::finished);
+  page.startRun();
+  ASSERT_TRUE(page.isRunning()) << page.message().toStdString();
+  ASSERT_TRUE(finished.wait(120000));
+  EXPECT_FALSE(page.isRunning());
+  expectTableMatchesCore(page, DiagnosisDomain::Setup);
+}
+
+TEST_F(DiagnosisPageTest, CancelStopsTheWorkerAndSaysSo) {
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Thermal);
+  QSignalSpy finished(&page, &DiagnosisPage::finished);
+  page.startRun();
+  ASSERT_TRUE(page.isRunning()) << page.message().toStdString();
+  page.cancelRun();  // the loop tries 15 candidates with a lag search each: it is still in the first
+  ASSERT_TRUE(finished.wait(120000));
+  EXPECT_FALSE(page.isRunning());
+  ASSERT_TRUE(page.result().has_value());
+  const auto& notes = page.result()->notes;
+  EXPECT_NE(std::find(notes.begin(), notes.end(), "cancelled"), notes.end());
+  EXPECT_TRUE(page.statusText().contains(QStringLiteral("Cancelled"))) << page.statusText().toStdString();
+}
+
+TEST_F(DiagnosisPageTest, ApplyThenUndoRestoresTheStudyJsonExactly) {
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Setup);
+  ASSERT_TRUE(page.runNow());
+  const nlohmann::json before = document_.project().studies;
+  const int undoCount = document_.undoStack()->count();
+  ASSERT_FALSE(document_.isModified());
+
+  ASSERT_TRUE(page.applyAccepted());
+  EXPECT_TRUE(document_.isModified());
+  EXPECT_EQ(document_.undoStack()->count(), undoCount + 1);
+  const nlohmann::json applied = document_.project().studies["diagnosis"]["setup"]["applied"];
+  ASSERT_TRUE(applied.is_array());
+  ASSERT_EQ(applied.size(), 1u);
+  EXPECT_EQ(applied[0]["name"], "tool_wear:T23");
+  ASSERT_TRUE(applied[0]["parameters"].contains("mm_per_part"));
+  EXPECT_NEAR(applied[0]["parameters"]["mm_per_part"].get<double>(), 0.002, 0.0006);
+  // The other keys of the study are untouched, and the result stays on the page.
+  EXPECT_EQ(document_.project().studies["diagnosis"]["setup"]["dataset"], "diagnose_setup_report");
+  EXPECT_TRUE(page.result().has_value());
+  EXPECT_FALSE(page.applyAccepted());  // already applied: no second edit
+  EXPECT_EQ(document_.undoStack()->count(), undoCount + 1);
+
+  document_.undoStack()->undo();
+  EXPECT_EQ(document_.project().studies, before);
+  EXPECT_FALSE(document_.isModified());
+  document_.undoStack()->redo();
+  EXPECT_EQ(document_.project().studies["diagnosis"]["setup"]["applied"], applied);
+
+  // Saved with the project.
+  const QString saved = dir_.filePath(QStringLiteral("saved.metrofit"));
+  document_.saveAs(saved);
+  const Project reloaded = loadProject(saved.toStdString());
+  EXPECT_EQ(reloaded.studies["diagnosis"]["setup"]["applied"][0]["name"], "tool_wear:T23");
+}
+
+TEST_F(DiagnosisPageTest, MissingDatasetShowsAMessageNamingTheField) {
+  Project p = document_.project();
+  p.studies["diagnosis"]["thermal"]["dataset"] = "no_such_log";
+  const QString path = dir_.filePath(QStringLiteral("missing.metrofit"));
+  saveProject(p, path.toStdString());
+  document_.load(path);
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Thermal);
+  EXPECT_TRUE(page.message().contains(QStringLiteral("no_such_log"))) << page.message().toStdString();
+  EXPECT_TRUE(page.message().contains(QStringLiteral("studies.diagnosis.thermal.dataset")))
+      << page.message().toStdString();
+  EXPECT_FALSE(page.runNow());
+  EXPECT_FALSE(page.result().has_value());
+  page.showView(QStringLiteral("thermal"));  // no crash, still the message
+  EXPECT_FALSE(page.message().isEmpty());
+}
+
+TEST_F(DiagnosisPageTest, NoDiagnosisStudyAndBadKeysShowMessages) {
+  Project p = document_.project();
+  p.studies.erase("diagnosis");
+  const QString path = dir_.filePath(QStringLiteral("none.metrofit"));
+  saveProject(p, path.toStdString());
+  document_.load(path);
+  DiagnosisPage page(&document_);
+  for (DiagnosisDomain d : kDiagnosisDomains) {
+    page.setDomain(d);
+    EXPECT_TRUE(page.message().contains(QStringLiteral("studies.diagnosis"))) << page.message().toStdString();
+  }
+  page.showView(QStringLiteral("diagnosis"));
+  EXPECT_FALSE(page.result().has_value());
+
+  p.studies["diagnosis"] = {
+      {"thermal", {{"dataset", "thermal_sim"}, {"target", "disp_z_um"}, {"inputs", "T1"}}}};
+  saveProject(p, path.toStdString());
+  document_.load(path);
+  page.setDomain(DiagnosisDomain::Matching);
+  page.setDomain(DiagnosisDomain::Thermal);
+  EXPECT_TRUE(page.message().contains(QStringLiteral("studies.diagnosis.thermal.inputs")))
+      << page.message().toStdString();
+}
+
+TEST_F(DiagnosisPageTest, ShowViewRunsAConfiguredDomain) {
+  DiagnosisPage page(&document_);
+  page.showView(QStringLiteral("diagnosis"));
+  ASSERT_TRUE(page.result().has_value()) << page.statusText().toStdString();
+  EXPECT_GT(page.candidateTable()->rowCount(), 0);
+  EXPECT_FALSE(page.result()->accepted().empty());
+}
+
+TEST(ResidualPlotTest, VectorFieldIsDrawnWithARoundMagnification) {
+  // A 2D distortion field: 0.01 mm at most over a 200 x 100 mm part.
+  diagnose::ResidualPlot plot;
+  for (int i = 0; i <= 10; ++i) {
+    for (int j = 0; j <= 5; ++j) {
+      const double x = -100.0 + 20.0 * i, y = -50.0 + 20.0 * j;
+      plot.vectors.push_back({x, y, 1e-4 * x, -1e-4 * y});
+    }
+  }
+  double longest = 0.0;
+  for (const auto& v : plot.vectors) longest = std::max(longest, std::hypot(v[2], v[3]));
+  const QRectF rect(0, 0, 480, 360);
+  const double mag = vectorMagnification(plot, rect);
+  // 1, 2 or 5 x 10^n, the largest arrow about 1/8 of the 200 mm span (at most, at least 2/5 of it).
+  const double mantissa = mag / std::pow(10.0, std::floor(std::log10(mag) + 1e-9));
+  EXPECT_TRUE(std::abs(mantissa - 1.0) < 1e-9 || std::abs(mantissa - 2.0) < 1e-9 ||
+              std::abs(mantissa - 5.0) < 1e-9)
+      << mag;
+  EXPECT_LE(mag * longest, 200.0 / 8.0 + 1e-9);
+  EXPECT_GT(mag * longest, 200.0 / 8.0 * 0.4);
+
+  QImage image(480, 360, QImage::Format_RGB32);
+  image.fill(Qt::white);
+  {
+    QPainter p(&image);
+    EXPECT_DOUBLE_EQ(paintResidualVectors(p, rect, plot, QStringLiteral("distortion"), 11.0), mag);
+  }
+  int blue = 0;
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      const QColor c = image.pixelColor(x, y);
+      if (c.blue() > 150 && c.red() < 90) ++blue;
+    }
+  }
+  EXPECT_GT(blue, 300);  // the arrows
+  if (const QString out = qEnvironmentVariable("METROFIT_TEST_OUT"); !out.isEmpty()) {
+    QDir().mkpath(out);
+    image.save(QDir(out).filePath(QStringLiteral("diagnosis-vectors.png")));
+  }
+
+  ResidualPlotView view;
+  view.setPlot(plot, QStringLiteral("distortion"));
+  EXPECT_TRUE(view.showsVectorField());
+  EXPECT_EQ(view.pointCount(), 0);
+}
+
+}  // namespace
+}  // namespace metrofit

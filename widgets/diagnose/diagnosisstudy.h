@@ -1,0 +1,63 @@
+#pragma once
+// The project's "diagnosis" study (issue 8), shared by the GUI's diagnosis page and the report:
+//
+//   "diagnosis": {
+//     "thermal":   {"dataset": ID, "target": COL, "inputs": [COL, ...], "train_fraction": 0.5},
+//     "kinematic": {"dataset": ID, "feed_mm_per_min": 1000},
+//     "setup":     {"model": SETUP_MODEL_ID, "dataset": CMM_REPORT_ID},
+//     "matching":  {"dataset": ID, "tolerance_mm": 0.035},
+//     "<domain>":  {..., "applied": [{"name": EFFECT, "parameters": {NAME: VALUE}}]}
+//   }
+//
+// Every key is read defensively: a missing or ill-typed key gives a ValidationError whose message
+// names the field ("studies.diagnosis.thermal.target"), never a crash. "applied" holds the effects
+// the user added to the domain's model with Apply (diagnosis page, undoable).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/run.h"
+#include "core/diagnose/diagnosis.h"
+#include "core/project/project.h"
+
+namespace metrofit {
+
+enum class DiagnosisDomain { Thermal, Kinematic, Setup, Matching };
+inline constexpr DiagnosisDomain kDiagnosisDomains[] = {DiagnosisDomain::Thermal, DiagnosisDomain::Kinematic,
+                                                        DiagnosisDomain::Setup, DiagnosisDomain::Matching};
+
+/// "thermal", "kinematic", "setup", "matching" (the CLI's and the study block's names).
+const char* diagnosisDomainKey(DiagnosisDomain domain);
+
+struct DiagnosisSettings {
+  DiagnosisDomain domain = DiagnosisDomain::Thermal;
+  std::string datasetId;
+  std::string datasetPath;  ///< resolved against the project file's folder
+  std::string target;       ///< thermal
+  std::vector<std::string> inputs;
+  double trainFraction = 0.5;
+  std::string modelId;  ///< setup
+  std::string modelPath;
+  double toleranceMm = 0.05;                         ///< matching
+  double feedMmPerMin = 1000.0;                      ///< kinematic
+  nlohmann::json applied = nlohmann::json::array();  ///< effects added with Apply
+};
+
+/// True when studies.diagnosis.<domain> exists (it may still be invalid).
+bool hasDiagnosisSettings(const Project& project, DiagnosisDomain domain);
+/// Reads studies.diagnosis.<domain>. ValidationError naming the field (source = projectPath) when the
+/// block or a key is missing or has the wrong type, or a dataset id is not in the project.
+DiagnosisSettings diagnosisSettings(const Project& project, const std::string& projectPath,
+                                    DiagnosisDomain domain);
+/// Reads the data and runs the domain's loop (core/diagnose/*_diagnosis.h). Core's InputError when
+/// the data cannot be read or do not fit the declared model.
+diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& settings, Observer* observer = nullptr);
+
+/// The accepted effects as stored under "applied": [{"name": ..., "parameters": {name: value}}].
+nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis);
+
+/// A parameter's value as text ("12.3" or the text value), `digits` significant digits.
+std::string formatParameterValue(const diagnose::Parameter& parameter, int digits = 4);
+
+}  // namespace metrofit

@@ -1,0 +1,258 @@
+// Report section "Closed loop: diagnosis" (issue 8): for every domain the project's diagnosis study
+// configures (widgets/diagnose/diagnosisstudy.h), the loop step by step: the declared model's error,
+// each candidate effect with its parameters, evidence and decision, the final error; the residual
+// plot before / after of each accepted effect (painted like the GUI's, widgets/diagnose/residualplot.h)
+// and a before / after table.
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFileInfo>
+#include <QPainter>
+
+#include <cmath>
+#include <exception>
+#include <functional>
+#include <map>
+#include <string>
+
+#include "core/io/csv.h"
+#include "widgets/diagnose/diagnosisstudy.h"
+#include "widgets/diagnose/residualplot.h"
+#include "widgets/report/reportpainter.h"
+#include "widgets/report/sections.h"
+
+namespace metrofit {
+namespace {
+
+struct ReportText {
+  Q_DECLARE_TR_FUNCTIONS(metrofit::Report)
+};
+
+QString num(double v, int digits = 4) {
+  return std::isfinite(v) ? QString::fromStdString(CsvWriter::formatNumber(v, digits))
+                          : QStringLiteral("n/a");
+}
+
+QString domainTitle(DiagnosisDomain d) {
+  switch (d) {
+    case DiagnosisDomain::Thermal:
+      return ReportText::tr("Thermal");
+    case DiagnosisDomain::Kinematic:
+      return ReportText::tr("Kinematic");
+    case DiagnosisDomain::Setup:
+      return ReportText::tr("Setup data");
+    case DiagnosisDomain::Matching:
+      return ReportText::tr("Posture matching");
+  }
+  return {};
+}
+
+/// Draws `paint` into `rect` at a design width of `designWidth` logical pixels (sets text size).
+void drawScaled(ReportPainter& out, const QRectF& rect, double designWidth,
+                const std::function<void(QPainter&, const QRectF&)>& paint) {
+  QPainter& p = out.painter();
+  p.save();
+  p.translate(rect.topLeft());
+  const double s = rect.width() / designWidth;
+  p.scale(s, s);
+  paint(p, QRectF(0.0, 0.0, designWidth, rect.height() / s));
+  p.restore();
+}
+
+/// The report is laid out twice (page numbers first); the loop runs once per data state.
+std::string cacheKey(const DiagnosisSettings& s) {
+  auto stamp = [](const std::string& path) {
+    const QFileInfo f(QString::fromStdString(path));
+    return std::to_string(f.size()) + "@" + std::to_string(f.lastModified().toMSecsSinceEpoch());
+  };
+  nlohmann::json j = {{"d", diagnosisDomainKey(s.domain)},
+                      {"p", s.datasetPath},
+                      {"ps", stamp(s.datasetPath)},
+                      {"t", s.target},
+                      {"i", s.inputs},
+                      {"f", s.trainFraction},
+                      {"m", s.modelPath},
+                      {"ms", s.modelPath.empty() ? std::string() : stamp(s.modelPath)},
+                      {"tol", s.toleranceMm},
+                      {"feed", s.feedMmPerMin}};
+  return j.dump();
+}
+
+const diagnose::Diagnosis& cachedDiagnosis(const DiagnosisSettings& s) {
+  static std::map<std::string, diagnose::Diagnosis> cache;
+  const std::string key = cacheKey(s);
+  auto it = cache.find(key);
+  if (it == cache.end()) it = cache.emplace(key, runDiagnosis(s)).first;
+  return it->second;
+}
+
+QString parameters(const diagnose::Candidate& c) {
+  QStringList parts;
+  for (const diagnose::Parameter& p : c.parameters) {
+    QString s = QString::fromStdString(p.name) + QStringLiteral(" ") +
+                QString::fromStdString(formatParameterValue(p));
+    if (p.standardError) s += QStringLiteral(" ± ") + num(*p.standardError, 2);
+    parts << s;
+  }
+  return parts.join(QStringLiteral("; "));
+}
+
+QString errorLine(const diagnose::ErrorSummary& e, const QString& u) {
+  QString s = ReportText::tr("rmse %1 %2, max |e| %3 %2").arg(num(e.rmse), u, num(e.maxAbs));
+  if (e.heldoutRmse) s += ReportText::tr(", held-out rmse %1 %2").arg(num(*e.heldoutRmse), u);
+  return s;
+}
+
+void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDomain domain) {
+  DiagnosisSettings s;
+  const diagnose::Diagnosis* d = nullptr;
+  QString failure;
+  try {
+    s = diagnosisSettings(*context.project, std::string(), domain);
+    // Paths as the report resolved them (against the project file's folder).
+    for (const ReportDataset& rd : context.datasets) {
+      if (rd.ref.id == s.datasetId) s.datasetPath = rd.path.toStdString();
+      if (!s.modelId.empty() && rd.ref.id == s.modelId) s.modelPath = rd.path.toStdString();
+    }
+    d = &cachedDiagnosis(s);
+  } catch (const std::exception& e) {
+    failure = QString::fromUtf8(e.what());
+  }
+  out.subheading(ReportText::tr("%1: %2").arg(domainTitle(domain), QString::fromStdString(s.datasetId)),
+                 out.mm(40.0));
+  if (!d) {
+    out.paragraph(ReportText::tr("The diagnosis could not run: %1").arg(failure));
+    return;
+  }
+  const QString u = d->units == "um" ? QStringLiteral("µm") : QString::fromStdString(d->units);
+  QString declared;
+  switch (domain) {
+    case DiagnosisDomain::Thermal: {
+      QStringList in;
+      for (const auto& i : s.inputs) in << QString::fromStdString(i);
+      declared = ReportText::tr(
+                     "Declared model: %1 a static linear function of %2, fitted on the first %3 % of "
+                     "the rows and held out on the rest.")
+                     .arg(QString::fromStdString(s.target), in.join(QStringLiteral(", ")))
+                     .arg(s.trainFraction * 100.0, 0, 'g', 3);
+      break;
+    }
+    case DiagnosisDomain::Kinematic:
+      declared =
+          ReportText::tr("Declared model: the Cartesian machine's actuator errors (origin, axis angles).");
+      break;
+    case DiagnosisDomain::Setup:
+      declared = ReportText::tr(
+                     "Declared model: constant setup-data errors acting through the relation graph "
+                     "of %1.")
+                     .arg(QString::fromStdString(s.modelId));
+      break;
+    case DiagnosisDomain::Matching:
+      declared = ReportText::tr(
+                     "Declared model: a rigid posture error (rotation and translation); tolerance "
+                     "±%1 mm.")
+                     .arg(s.toleranceMm, 0, 'g', 4);
+      break;
+  }
+  out.paragraph(declared);
+  for (const std::string& note : d->notes)
+    out.paragraph(QString::fromStdString(note), ReportPainter::Font::Small);
+  out.paragraph(ReportText::tr("Step 0, the declared model: %1.").arg(errorLine(d->baseline, u)));
+
+  const bool heldout = d->baseline.heldoutRmse.has_value();
+  ReportTable t;
+  t.header = {ReportText::tr("#"), ReportText::tr("effect"), ReportText::tr("parameters ± standard error"),
+              ReportText::tr("rmse (%1)").arg(u)};
+  if (heldout) t.header << ReportText::tr("held-out (%1)").arg(u);
+  t.header << ReportText::tr("accepted");
+  t.widths =
+      heldout ? QList<double>{0.35, 2.0, 3.2, 1.5, 1.5, 1.05} : QList<double>{0.35, 2.0, 4.0, 1.8, 1.05};
+  t.alignment = {Qt::AlignRight, Qt::AlignLeft, Qt::AlignLeft, Qt::AlignRight};
+  if (heldout) t.alignment << Qt::AlignRight;
+  t.alignment << Qt::AlignHCenter;
+  for (const diagnose::Candidate& c : d->effects) {
+    QStringList row{QString::number(c.round + 1), QString::fromStdString(c.name), parameters(c),
+                    QStringLiteral("%1 → %2").arg(num(c.rmseBefore, 3), num(c.rmseAfter, 3))};
+    if (heldout) {
+      row << (c.heldoutBefore && c.heldoutAfter
+                  ? QStringLiteral("%1 → %2").arg(num(*c.heldoutBefore, 3), num(*c.heldoutAfter, 3))
+                  : QStringLiteral("–"));
+    }
+    row << (c.accepted ? ReportText::tr("yes") : ReportText::tr("no"));
+    t.rows.push_back(row);
+  }
+  out.table(t);
+  out.paragraph(ReportText::tr("Evidence, per candidate (# = loop round):"), ReportPainter::Font::Small);
+  for (const diagnose::Candidate& c : d->effects) {
+    out.paragraph(QStringLiteral("%1 %2: %3")
+                      .arg(QString::number(c.round + 1), QString::fromStdString(c.name),
+                           QString::fromStdString(c.evidence)),
+                  ReportPainter::Font::Small);
+  }
+  const auto accepted = d->accepted();
+  if (accepted.empty()) {
+    out.paragraph(ReportText::tr("No candidate passed the evidence test: the declared model is kept. %1.")
+                      .arg(errorLine(d->final, u)));
+  } else {
+    QStringList names;
+    for (const auto* c : accepted) names << QString::fromStdString(c->name);
+    out.paragraph(ReportText::tr("Accepted: %1. Final model: %2.")
+                      .arg(names.join(QStringLiteral(", ")), errorLine(d->final, u)));
+  }
+  for (const diagnose::Candidate* c : accepted) {
+    if (!c->plot) continue;
+    const diagnose::ResidualPlot& plot = *c->plot;
+    const QString title = ReportText::tr("Residual before and after %1").arg(QString::fromStdString(c->name));
+    out.skip(out.mm(2.0));
+    const QRectF box = out.reserve(out.mm(hasVectorField(plot) ? 95.0 : 70.0));
+    if (hasVectorField(plot)) {
+      const QRectF left(box.left() + box.width() * 0.15, box.top(), box.width() * 0.7, box.height());
+      drawScaled(out, left, 480.0,
+                 [&](QPainter& p, const QRectF& r) { paintResidualVectors(p, r, plot, title, 11.0); });
+    } else {
+      drawScaled(out, box, 700.0,
+                 [&](QPainter& p, const QRectF& r) { paintResidualScatter(p, r, plot, title, 11.0); });
+    }
+  }
+  ReportTable ba;
+  ba.header = {ReportText::tr("error (%1)").arg(u), ReportText::tr("declared model"),
+               ReportText::tr("with accepted effects")};
+  ba.widths = {1.6, 1.2, 1.5};
+  ba.alignment = {Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight};
+  ba.widthFraction = 0.8;
+  ba.rows.push_back({ReportText::tr("rmse (fitted data)"), num(d->baseline.rmse), num(d->final.rmse)});
+  ba.rows.push_back({ReportText::tr("max |e| (fitted data)"), num(d->baseline.maxAbs), num(d->final.maxAbs)});
+  if (d->baseline.heldoutRmse && d->final.heldoutRmse)
+    ba.rows.push_back(
+        {ReportText::tr("rmse (held-out rows)"), num(*d->baseline.heldoutRmse), num(*d->final.heldoutRmse)});
+  out.skip(out.mm(2.0));
+  out.table(ba);
+}
+
+}  // namespace
+
+QString diagnosisSectionTitle() {
+  return ReportText::tr("Closed loop: diagnosis");
+}
+
+bool hasDiagnosisStudy(const ReportContext& context) {
+  if (!context.project) return false;
+  for (DiagnosisDomain d : kDiagnosisDomains) {
+    if (hasDiagnosisSettings(*context.project, d)) return true;
+  }
+  return false;
+}
+
+void writeDiagnosisSection(ReportPainter& out, const ReportContext& context) {
+  out.paragraph(ReportText::tr(
+      "For each study the declared model is fitted and its residual computed; candidate effects "
+      "the model lacks are tried one by one, each estimated with its parameters and their "
+      "standard errors. An effect is accepted only on evidence (out-of-sample improvement for "
+      "thermal, an information criterion with a conservative threshold elsewhere) and when it "
+      "reduces the error by a practically relevant amount; the model is refitted with it and "
+      "the search repeated until nothing more is found."));
+  for (DiagnosisDomain d : kDiagnosisDomains) {
+    if (hasDiagnosisSettings(*context.project, d)) writeDomain(out, context, d);
+  }
+}
+
+}  // namespace metrofit
