@@ -5,7 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   # toolchain
-  build-essential cmake ninja-build ccache pkg-config git clang-format clang-tidy
+  build-essential cmake ninja-build ccache pkg-config git clang-format clang-tidy clang libclang-rt-14-dev
   # GUI: Qt 6 widgets, charts, OpenGL widgets, tools (linguist), svg; fonts for headless rendering
   qt6-base-dev qt6-base-dev-tools qt6-charts-dev libqt6opengl6-dev qt6-svg-dev
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-qpa-plugins libgl1-mesa-dev fonts-dejavu-core

@@ -93,6 +93,7 @@ int runReport(const ReportArgs& a) {
 struct SimArgs {
   std::string out;
   std::uint64_t seed = 1;
+  std::string shape = "block";  ///< simulate probe: block | s-piece
 };
 
 int runSimulateThermal(const SimArgs& a) {
@@ -105,11 +106,14 @@ int runSimulateThermal(const SimArgs& a) {
 }
 
 int runSimulateProbe(const SimArgs& a) {
-  ProbeSimOptions o;
+  ProbeSimOptions o = parseProbeShape(a.shape, "--shape") == ProbeShape::SPiece
+                          ? ProbeSimOptions::sPieceDefaults()
+                          : ProbeSimOptions();
   o.seed = a.seed;
   const ProbePointSet set = simulateProbing(o);
   writeResult(a.out, probePointsToCsv(set));
-  summary("simulate probe: " + std::to_string(set.points.size()) + " points, seed " + std::to_string(a.seed));
+  summary("simulate probe: " + a.shape + ", " + std::to_string(set.points.size()) + " points, seed " +
+          std::to_string(a.seed));
   return 0;
 }
 
@@ -203,11 +207,15 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     addOut(th, a->out);
     addSeed(th, a->seed);
     th->callback([a] { g_selected = [a]() -> int { return runSimulateThermal(*a); }; });
-    auto* pr = sim->add_subcommand("probe", "Contact-probed points of a block with a posture error");
+    auto* pr = sim->add_subcommand("probe", "Contact-probed points of a workpiece with a posture error");
+    pr->add_option("--shape", a->shape, "block | s-piece (ISO 10791-7 S-shaped test piece, 40 points)")
+        ->check(CLI::IsMember({"block", "s-piece"}))
+        ->capture_default_str();
     addOut(pr, a->out);
     addSeed(pr, a->seed);
     pr->callback([a] { g_selected = [a]() -> int { return runSimulateProbe(*a); }; });
     registerSimulateSetupCommand(*sim);
+    registerSimulateKinematicCommands(*sim);
   }
 }
 

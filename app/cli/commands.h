@@ -49,6 +49,8 @@ void registerSetupCommand(CLI::App& app);
 void registerSimulateSetupCommand(CLI::App& simulate);
 void registerMatchCommand(CLI::App& app);
 void registerKinematicCommands(CLI::App& app);
+/// `simulate circular` and `simulate bores` (in cmd_kinematic.cpp), inside the `simulate` family.
+void registerSimulateKinematicCommands(CLI::App& simulate);
 void registerSpcCommand(CLI::App& app);
 void registerThermalCommands(CLI::App& app);
 void registerDiagnoseCommands(CLI::App& app);

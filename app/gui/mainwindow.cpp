@@ -20,14 +20,16 @@
 
 #include <Eigen/Core>
 
+#include "app/gui/diagnosispage.h"
 #include "app/gui/filechangedbar.h"
+#include "app/gui/kinematicspage.h"
 #include "app/gui/matchingpage.h"
 #include "app/gui/overviewpage.h"
 #include "app/gui/preferencesdialog.h"
 #include "app/gui/projectnavigator.h"
 #include "app/gui/recentfiles.h"
 #include "app/gui/reportexporter.h"
-#include "app/gui/studypage.h"
+#include "app/gui/setuppage.h"
 #include "app/gui/thermalpage.h"
 #include "metrofit/version.h"
 #include "widgets/document/demoproject.h"
@@ -56,11 +58,11 @@ MainWindow::MainWindow(QWidget* parent)
   setObjectName(QStringLiteral("mainWindow"));
   // Pages in the order of metrofit::Page.
   pages_->addWidget(overview_);
-  pages_->addWidget(new StudyPage(document_, QString::fromLatin1(study::kSetup), pages_));
+  pages_->addWidget(new SetupPage(document_, pages_));
   pages_->addWidget(matching_);
-  pages_->addWidget(new StudyPage(document_, QString::fromLatin1(study::kKinematics), pages_));
+  pages_->addWidget(new KinematicsPage(document_, pages_));
   pages_->addWidget(thermal_);
-  pages_->addWidget(new StudyPage(document_, QString::fromLatin1(study::kDiagnosis), pages_));
+  pages_->addWidget(new DiagnosisPage(document_, pages_));
 
   auto* central = new QWidget(this);
   auto* layout = new QVBoxLayout(central);

@@ -1,13 +1,15 @@
 // metrofit-bench: speed measured against a peer in the same run, reported as ratios (DESIGN.md
 // "Performance"). Not a test: run it by hand or in a benchmark job.
 //
-//   metrofit-bench [--io] [--rng] [--optimizers [--quick]] [--repeat N] [--json OUT]
+//   metrofit-bench [--io] [--rng] [--optimizers [--quick]] [--matching] [--real-matching] [--thermal]
+//   [--real-thermal] [--repeat N] [--json OUT]
 //                                                               (no section flag: all sections)
 //
 // Sections now: --io (CSV reader on the real CAIVIAC log vs a naive getline/strtod reader that
 // does no validation), --rng (our portable normal generator vs std::normal_distribution on
 // mt19937_64), --optimizers (our metaheuristics and pagmo2's pso / sade side by side at equal
-// budget, bench_optim.cpp; --quick: 5 seeds instead of 25). Later issues add --matching,
+// budget, bench_optim.cpp; --quick: 5 seeds instead of 25), --matching / --real-matching (posture
+// matching targets and the SDSS plug plates against their own fits, bench_matching.cpp). Later issues add
 // --thermal, --diagnose, --real.
 #include <algorithm>
 #include <chrono>
@@ -21,7 +23,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench_diagnose.h"
+#include "bench_diagnose_sm.h"
+#include "bench_kinematic.h"
+#include "bench_matching.h"
 #include "bench_optim.h"
+#include "bench_setup.h"
+#include "bench_thermal.h"
 #include "core/common/rng.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
@@ -105,7 +113,12 @@ nlohmann::json benchRng(int repeat) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool io = false, rng = false, optimizers = false;
+  bool io = false, rng = false, optimizers = false, matching = false, realMatching = false;
+  bool thermal = false, realThermal = false;    // issue 7 (bench_thermal.cpp)
+  bool kinematic = false;                       // issue 6 (bench_kinematic.cpp)
+  bool diagnose = false, realDiagnose = false;  // issue 8 (bench_diagnose.cpp)
+  bool setupBench = false;                      // issue 4 (bench_setup.cpp)
+  metrofit::bench::DiagnoseBenchOptions diagnoseOptions;
   metrofit::bench::OptimBenchOptions optimOptions;
   int repeat = 5;
   std::string jsonOut;
@@ -118,9 +131,31 @@ int main(int argc, char** argv) {
       rng = true;
     else if (a == "--optimizers")
       optimizers = true;
-    else if (a == "--quick")
+    else if (a == "--setup")
+      setupBench = true;
+    else if (a == "--kinematic")
+      kinematic = true;
+    else if (a == "--matching")
+      matching = true;
+    else if (a == "--real-matching")
+      realMatching = true;
+    else if (a == "--thermal")
+      thermal = true;
+    else if (a == "--real-thermal")
+      realThermal = true;
+    else if (a == "--diagnose")
+      diagnose = true;
+    else if (a == "--real-diagnose")
+      realDiagnose = true;
+    else if (a == "--diagnose-demo" && i + 1 < argc) {  // writes the closed loop's demo data and exits
+      for (const auto& line : metrofit::bench::writeDiagnoseDemo(argv[++i]))
+        std::printf("%s\n", line.c_str());
+      return 0;
+    } else if (a == "--quick") {
       optimOptions.seeds = 5;
-    else if (a == "--repeat" && i + 1 < argc)
+      diagnoseOptions.seeds = 10;
+      diagnoseOptions.cleanSeeds = 20;
+    } else if (a == "--repeat" && i + 1 < argc)
       repeat = std::max(1, std::atoi(argv[++i]));
     else if (a == "--json" && i + 1 < argc)
       jsonOut = argv[++i];
@@ -128,7 +163,10 @@ int main(int argc, char** argv) {
       sourceDir = argv[++i];
     else if (a == "--help" || a == "-h") {
       std::printf(
-          "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick]] [--repeat N] [--json OUT] "
+          "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick]] [--matching] [--real-matching] "
+          "[--thermal] [--real-thermal] [--kinematic] [--setup] [--diagnose [--quick]] [--real-diagnose] "
+          "[--repeat N] "
+          "[--json OUT] "
           "[--source-dir DIR]\n");
       return 0;
     } else {
@@ -136,13 +174,41 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (!io && !rng && !optimizers) io = rng = optimizers = true;
+  if (!io && !rng && !optimizers && !matching && !realMatching && !thermal && !realThermal && !kinematic &&
+      !diagnose && !realDiagnose && !setupBench)
+    io = rng = optimizers = true;
   nlohmann::json result{{"version", metrofit::kVersion}, {"repeat", repeat}};
   try {
     if (io) result["io"] = benchIo(sourceDir, repeat);
     if (rng) result["rng"] = benchRng(repeat);
     optimOptions.sourceDir = sourceDir;
     if (optimizers) result["optimizers"] = metrofit::bench::benchOptimizers(optimOptions);
+    if (setupBench) result["setup"] = metrofit::bench::benchSetup(sourceDir, repeat);
+    if (kinematic) result["kinematic"] = metrofit::bench::benchKinematic(repeat);
+    // --matching: issue 5 targets (bench_matching.cpp); --real-matching: the SDSS plug plates in
+    // ../shared/data/real/cmm-plugplate-sdss (not in the repository: no licence) against their own fits.
+    if (matching) result["matching"] = metrofit::bench::benchMatching({});
+    if (realMatching)
+      result["real_matching"] =
+          metrofit::bench::benchRealMatching(sourceDir + "/../shared/data/real/cmm-plugplate-sdss");
+    if (thermal)
+      result["thermal"] = metrofit::bench::benchThermal(sourceDir + "/resources/demo/data", repeat);
+    if (realThermal)
+      result["real_thermal"] = metrofit::bench::benchRealThermal(
+          sourceDir + "/resources/demo/data/thermal_caiviac.csv",
+          sourceDir + "/../shared/data/real/thermal-spindle-sjtu/thermal_expansion_error_original.csv");
+    if (diagnose) {
+      std::vector<metrofit::bench::DomainRunner> runners = metrofit::bench::thermalKinematicRunners();
+      // setup / matching runners are appended here.
+      for (auto& r : metrofit::bench::setupMatchingRunners(sourceDir)) runners.push_back(std::move(r));
+      result["diagnose"] = metrofit::bench::benchDiagnose(runners, diagnoseOptions);
+    }
+    if (realDiagnose) {
+      result["real_diagnose"] =
+          metrofit::bench::benchRealDiagnose(sourceDir + "/resources/demo/data/thermal_caiviac.csv");
+      result["real_diagnose_sdss"] =
+          metrofit::bench::benchRealDiagnoseSdss(sourceDir + "/../shared/data/real/cmm-plugplate-sdss");
+    }
     if (!jsonOut.empty()) metrofit::writeFileAtomic(jsonOut, metrofit::dumpJson(result));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "metrofit-bench: %s\n", e.what());

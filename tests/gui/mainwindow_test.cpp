@@ -27,14 +27,16 @@
 #include <functional>
 
 #include "app/gui/datasettable.h"
+#include "app/gui/diagnosispage.h"
 #include "app/gui/filechangedbar.h"
+#include "app/gui/kinematicspage.h"
 #include "app/gui/mainwindow.h"
 #include "app/gui/matchingpage.h"
 #include "app/gui/overviewpage.h"
 #include "app/gui/projectnavigator.h"
 #include "app/gui/recentfiles.h"
 #include "app/gui/reportexporter.h"
-#include "app/gui/studypage.h"
+#include "app/gui/setuppage.h"
 #include "app/gui/thermalpage.h"
 #include "core/matching/probe_points.h"
 #include "qtapp.h"
@@ -42,6 +44,7 @@
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/pointview/pointsetview.h"
+#include "widgets/setup/setupmodeleditor.h"
 
 namespace metrofit {
 namespace {
@@ -202,15 +205,22 @@ TEST_F(MainWindowTest, PagesShowTheDemoData) {
   const ProbePointSet set = readProbePoints(window_.document()->datasetPath(*points).toStdString());
   EXPECT_EQ(matching->pointTable()->rowCount(), static_cast<int>(set.points.size()));
 
-  // Studies without views say so and list their data; none shows results.
-  auto* setup = qobject_cast<StudyPage*>(window_.page(Page::Setup));
-  auto* diagnosis = qobject_cast<StudyPage*>(window_.page(Page::Diagnosis));
+  // Every study has its own page on the demo, and none reports a problem with the demo data.
+  window_.showPage(Page::Setup);
+  auto* setup = qobject_cast<SetupPage*>(window_.page(Page::Setup));
   ASSERT_NE(setup, nullptr);
+  EXPECT_TRUE(setup->errorMessage().isEmpty()) << setup->errorMessage().toStdString();
+  EXPECT_EQ(setup->modelEditor()->model().dimensions.size(), 28u) << "the paper example's 28 dimensions";
+
+  window_.showPage(Page::Kinematics);
+  auto* kinematics = qobject_cast<KinematicsPage*>(window_.page(Page::Kinematics));
+  ASSERT_NE(kinematics, nullptr);
+  EXPECT_TRUE(kinematics->errorMessage().isEmpty()) << kinematics->errorMessage().toStdString();
+
+  window_.showPage(Page::Diagnosis);
+  auto* diagnosis = qobject_cast<DiagnosisPage*>(window_.page(Page::Diagnosis));
   ASSERT_NE(diagnosis, nullptr);
-  EXPECT_EQ(diagnosis->studyDatasets().size(), window_.document()->project().datasets.size());
-  auto* status = setup->findChild<QLabel*>(QStringLiteral("studyStatus"));
-  ASSERT_NE(status, nullptr);
-  EXPECT_TRUE(status->text().contains(QStringLiteral("not part of this version")));
+  EXPECT_TRUE(diagnosis->message().isEmpty()) << diagnosis->message().toStdString();
 }
 
 TEST_F(MainWindowTest, The3DViewShowsItsFallbackOffscreen) {

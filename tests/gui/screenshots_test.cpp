@@ -14,6 +14,9 @@
 #include <algorithm>
 #include <memory>
 
+#include "core/project/project.h"
+#include "testsupport.h"
+
 namespace {
 
 constexpr const char* kNeedX =
@@ -92,20 +95,27 @@ QString outputDir(const QString& name) {
   return dir.path();
 }
 
-/// The views every screenshot run must show (the demo project has two thermal logs).
-const QStringList kExpected = {
-    QStringLiteral("01-overview.png"),
-    QStringLiteral("02-setup-graph.png"),
-    QStringLiteral("03-setup-convergence.png"),
-    QStringLiteral("04-matching-3d.png"),
-    QStringLiteral("05-kinematics-path.png"),
-    QStringLiteral("06-kinematics-spc.png"),
-    QStringLiteral("07-thermal-trend.png"),
-    QStringLiteral("08-thermal-hysteresis.png"),
-    QStringLiteral("09-thermal-models.png"),
-    QStringLiteral("10-diagnosis.png"),
-    QStringLiteral("11-thermal-trend-thermal_caiviac.png"),
-};
+/// The views every screenshot run must show: CONTRACT.md's list in a fixed order, then one trend
+/// view per further thermal log of the bundled demo project (in project order).
+QStringList expectedShots() {
+  QStringList names = {
+      QStringLiteral("overview"),          QStringLiteral("setup-graph"),
+      QStringLiteral("setup-convergence"), QStringLiteral("matching-3d"),
+      QStringLiteral("kinematics-path"),   QStringLiteral("kinematics-spc"),
+      QStringLiteral("thermal-trend"),     QStringLiteral("thermal-hysteresis"),
+      QStringLiteral("thermal-models"),    QStringLiteral("diagnosis"),
+  };
+  const metrofit::Project demo =
+      metrofit::loadProject((metrofit::test::sourceDir() / "resources/demo/demo.metrofit").string());
+  const std::string firstLog = demo.studies.value("thermal", nlohmann::json::object()).value("dataset", "");
+  for (const metrofit::DatasetRef& d : demo.datasets)
+    if (d.kind == metrofit::dataset_kind::kThermalLog && d.id != firstLog)
+      names << QStringLiteral("thermal-trend-") + QString::fromStdString(d.id);
+  QStringList files;
+  for (int i = 0; i < names.size(); ++i)
+    files << QStringLiteral("%1-%2.png").arg(i + 1, 2, 10, QLatin1Char('0')).arg(names[i]);
+  return files;
+}
 
 TEST(ScreenshotsTest, WritesOneNonBlankPngPerView) {
   const QString dir = outputDir(QStringLiteral("screenshots"));
@@ -115,8 +125,10 @@ TEST(ScreenshotsTest, WritesOneNonBlankPngPerView) {
   EXPECT_TRUE(r.stdErr.contains(QStringLiteral("screenshots written to"))) << r.stdErr.toStdString();
 
   const QStringList written = QDir(dir).entryList({QStringLiteral("*.png")}, QDir::Files, QDir::Name);
-  EXPECT_EQ(written, kExpected);
-  for (const QString& name : kExpected) {
+  const QStringList expected = expectedShots();
+  EXPECT_EQ(written, expected);
+  EXPECT_TRUE(expected.contains(QStringLiteral("11-thermal-trend-thermal_caiviac.png")));
+  for (const QString& name : expected) {
     SCOPED_TRACE(name.toStdString());
     const QImage image(QDir(dir).filePath(name));
     ASSERT_FALSE(image.isNull());

@@ -39,12 +39,19 @@ struct SectionEntry {
 
 /// Every section, in report order. Later studies add their line here.
 const SectionEntry kSections[] = {
+    {&setupSectionTitle, [](const ReportContext& c) { return !c.ofKind(dataset_kind::kSetupModel).empty(); },
+     &writeSetupSection},
     {&thermalSectionTitle,
      [](const ReportContext& c) { return !c.ofKind(dataset_kind::kThermalLog).empty(); },
      &writeThermalSection},
     {&probePointsSectionTitle,
      [](const ReportContext& c) { return !c.ofKind(dataset_kind::kProbePoints).empty(); },
      &writeProbePointsSection},
+    {&matchingSectionTitle, &hasMatchingStudy, &writeMatchingSection},
+    {&kinematicSectionTitle,
+     [](const ReportContext& c) { return !c.ofKind(dataset_kind::kCircularTest).empty(); },
+     &writeKinematicSection},
+    {&diagnosisSectionTitle, &hasDiagnosisStudy, &writeDiagnosisSection},
 };
 
 /// What one layout pass found out: page count and the first page of each section.

@@ -42,6 +42,11 @@ struct ReportContext {
 /// Tolerance (mm) of the probe-point section when the project's matching study sets none.
 inline constexpr double kDefaultProbeToleranceMm = 0.05;
 
+QString setupSectionTitle();
+/// "Setup-data correction": the model, the report data, exact / CRIPSO / PSO (fixed seeds) with the
+/// convergence chart, comparison, corrections, margins and the Fanuc export (setupsection.cpp).
+void writeSetupSection(ReportPainter& out, const ReportContext& context);
+
 QString thermalSectionTitle();
 /// "Thermal": per thermal log, the trend chart (vector) and a table of its channels.
 void writeThermalSection(ReportPainter& out, const ReportContext& context);
@@ -50,5 +55,24 @@ QString probePointsSectionTitle();
 /// "Posture matching — probe points": per probe set, XY and XZ projections coloured by deviation,
 /// the deviation statistics before matching and a table per surface.
 void writeProbePointsSection(ReportPainter& out, const ReportContext& context);
+
+QString kinematicSectionTitle();
+/// "Kinematic compensation and SPC": per circular test the identified errors, path and polar plot,
+/// the compensation result; the SPC charts and indices of the kinematics study's feature series.
+void writeKinematicSection(ReportPainter& out, const ReportContext& context);
+
+QString matchingSectionTitle();
+/// True when the project has probe points and a matching study (studies.matching, not empty).
+bool hasMatchingStudy(const ReportContext& context);
+/// "Posture matching — before and after" (matchingsection.cpp): the before / after views, the
+/// deviation table, the methods table, the machine adjustment values and the remeasure loop.
+void writeMatchingSection(ReportPainter& out, const ReportContext& context);
+
+QString diagnosisSectionTitle();
+/// True when the project's studies.diagnosis configures at least one domain.
+bool hasDiagnosisStudy(const ReportContext& context);
+/// "Closed loop: diagnosis" (diagnosissection.cpp): per configured domain the loop step by step, the
+/// residual plots of the accepted effects and the errors before / after.
+void writeDiagnosisSection(ReportPainter& out, const ReportContext& context);
 
 }  // namespace metrofit
