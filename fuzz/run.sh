@@ -3,7 +3,8 @@
 # for a fixed number of inputs, starting from the committed seed corpus in fuzz/corpus/<reader>/
 # (new inputs go to a temporary folder; the committed corpus is not changed).
 #
-#   fuzz/run.sh [RUNS]        RUNS per target, default 1000000 (FUZZ_BUILD_DIR overrides the build dir)
+#   fuzz/run.sh [RUNS]        RUNS per target, default 1000000 (FUZZ_BUILD_DIR overrides the build
+#                             dir, FUZZ_TARGETS="csv dmis" runs only those readers)
 #
 # Prints one line per target: runs, seconds, result. Exit 0 when no target found a crash, leak,
 # sanitizer report or timeout; crash inputs are kept in build-fuzz/artifacts/.
@@ -11,7 +12,7 @@ set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 runs=${1:-1000000}
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
-targets="csv project setup_model thermal_log probe_points dmis hole_table"
+targets=${FUZZ_TARGETS:-"csv project setup_model thermal_log probe_points dmis hole_table"}
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMETROFIT_FUZZ=ON -DMETROFIT_BUILD_GUI=OFF \

@@ -72,6 +72,20 @@ nlohmann::json parseJson(std::string_view text, const std::string& source) {
     else if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
       what = "the file is empty (expected JSON)";
     throw ParseError(ErrorContext{source, line, col, {}}, "invalid JSON: " + what);
+  } catch (const nlohmann::json::exception& e) {
+    // Not a syntax error but a value the parser cannot hold, e.g. out_of_range.406 for a number
+    // beyond a double ("1e999"; found by fuzz/fuzz_project). nlohmann quotes the offending text:
+    // locate it for the line and column.
+    std::string what = e.what();
+    const auto bracket = what.find("] ");
+    if (bracket != std::string::npos) what = what.substr(bracket + 2);
+    long line = 0, col = 0;
+    const auto open = what.find('\''), close = what.rfind('\'');
+    if (open != std::string::npos && close > open + 1) {
+      const auto at = text.find(std::string_view(what).substr(open + 1, close - open - 1));
+      if (at != std::string_view::npos) lineColumn(text, at, &line, &col);
+    }
+    throw ParseError(ErrorContext{source, line, col, {}}, "invalid JSON: " + what);
   }
 }
 

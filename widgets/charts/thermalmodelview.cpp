@@ -205,10 +205,17 @@ struct ThermalModelView::Impl {
                          cell(part == 0 ? ThermalModelView::tr("fit (%1)").arg(m.n)
                                         : ThermalModelView::tr("held out (%1)").arg(m.n),
                               true));
-        metrics->setItem(row, 2, cell(number(m.r, 4)));
-        metrics->setItem(row, 3, cell(number(m.rmse, dec)));
-        metrics->setItem(row, 4, cell(number(m.e, 4)));
-        metrics->setItem(row, 5, cell(QStringLiteral("±") + number(m.residualBand, dec)));
+        // A model whose output runs away (an unstable GMC) gets "diverges" instead of numbers
+        // like 1e+68 that nobody can read; the tooltip gives the reason.
+        const bool runaway = !(std::isfinite(m.rmse) && m.rmse <= 100.0 * std::max(scale, 1e-9));
+        if (runaway) {
+          for (int c = 2; c <= 5; ++c) metrics->setItem(row, c, cell(ThermalModelView::tr("diverges")));
+        } else {
+          metrics->setItem(row, 2, cell(number(m.r, 4)));
+          metrics->setItem(row, 3, cell(number(m.rmse, dec)));
+          metrics->setItem(row, 4, cell(number(m.e, 4)));
+          metrics->setItem(row, 5, cell(QStringLiteral("±") + number(m.residualBand, dec)));
+        }
         if (i == 1 && ev.training.model.grey.b1 <= 0.0) {
           metrics->item(row, 0)->setToolTip(
               ThermalModelView::tr("Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows "

@@ -422,10 +422,14 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
                          ReportText::tr(" (%1 s)").arg(c.seconds[i], 0, 'f', 2);
     for (int part = 0; part < 2; ++part) {
       const thermal::ThermalMetrics& m = part == 0 ? ev.fit : ev.heldout;
+      // A model whose output runs away (an unstable GMC) is reported as such, not as 1e+68.
+      const bool runaway = !(std::isfinite(m.rmse) && m.rmse <= 100.0 * std::max(scale, 1e-9));
+      const QString diverges = ReportText::tr("diverges");
       t.rows.push_back({part == 0 ? thermalModelName(kThermalModelOrder[i]) : QString(),
                         (part == 0 ? ReportText::tr("fit, %1") : ReportText::tr("held out, %1")).arg(m.n),
-                        metric(m.r, 4), metric(m.rmse, dec), metric(m.e, 4),
-                        QStringLiteral("±") + metric(m.residualBand, dec)});
+                        runaway ? diverges : metric(m.r, 4), runaway ? diverges : metric(m.rmse, dec),
+                        runaway ? diverges : metric(m.e, 4),
+                        runaway ? diverges : QStringLiteral("±") + metric(m.residualBand, dec)});
     }
   }
   out.paragraph(ReportText::tr("Performance indices (Table 4 of seed 004): R correlation, RMSE, E "

@@ -81,6 +81,14 @@ TEST(Project, DeeplyNestedJsonIsRejectedBeforeParsing) {
   EXPECT_NE(msg.find("p.metrofit:1:65"), std::string::npos) << msg;
 }
 
+TEST(Project, NumbersBeyondADoubleAreAParseErrorWithTheirPlace) {
+  // Found by fuzz/fuzz_project: nlohmann throws out_of_range (not parse_error) for 1e5554.
+  const std::string msg = loadError("{\n  \"format\": \"metrofit-project\",\n  \"version\": 7777e5554}");
+  EXPECT_NE(msg.find("p.metrofit:3:14"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("number overflow"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line";
+}
+
 TEST(Project, EmptyAndBinaryFiles) {
   EXPECT_NE(loadError("").find("invalid JSON"), std::string::npos);
   EXPECT_NE(loadError("\xFF\xFE{").find("UTF-16"), std::string::npos);
