@@ -105,49 +105,6 @@ QString parameterText(const diagnose::Candidate& c, const QString& units) {
   return parts.join(QStringLiteral("; "));
 }
 
-/// The document's project, for the one edit ProjectDocument has no typed field for yet (the applied
-/// effects of the diagnosis study). The document object itself is not const; the edit goes through
-/// its undo stack and ends with its changed() signal like every other edit.
-Project& mutableProject(ProjectDocument* document) {
-  return const_cast<Project&>(document->project());
-}
-
-/// Apply: sets studies.diagnosis.<domain>.applied; undo restores the study's JSON exactly.
-class ApplyDiagnosisCommand : public QUndoCommand {
- public:
-  ApplyDiagnosisCommand(ProjectDocument* document, const std::string& domain, nlohmann::json applied)
-      : QUndoCommand(DiagnosisPage::tr("Apply diagnosed effects (%1)").arg(QString::fromStdString(domain))),
-        document_(document),
-        domain_(domain),
-        applied_(std::move(applied)) {
-    const auto& studies = document_->project().studies;
-    if (const auto it = studies.find(study::kDiagnosis); it != studies.end()) before_ = *it;
-  }
-  void redo() override {
-    nlohmann::json& studies = mutableProject(document_).studies;
-    nlohmann::json& diag = studies[study::kDiagnosis];
-    if (!diag.is_object()) diag = nlohmann::json::object();
-    nlohmann::json& block = diag[domain_];
-    if (!block.is_object()) block = nlohmann::json::object();
-    block["applied"] = applied_;
-    emit document_->changed();
-  }
-  void undo() override {
-    nlohmann::json& studies = mutableProject(document_).studies;
-    if (before_)
-      studies[study::kDiagnosis] = *before_;
-    else
-      studies.erase(study::kDiagnosis);
-    emit document_->changed();
-  }
-
- private:
-  ProjectDocument* document_;
-  std::string domain_;
-  nlohmann::json applied_;
-  std::optional<nlohmann::json> before_;
-};
-
 std::string settingsKeyOf(const DiagnosisSettings& s) {
   nlohmann::json j = {{"d", diagnosisDomainKey(s.domain)},
                       {"p", s.datasetPath},
@@ -598,8 +555,12 @@ bool DiagnosisPage::applyAccepted() {
       return false;
     }
   }
+  // Apply: sets studies.diagnosis.<domain>.applied; undo restores the study's JSON exactly.
   document_->endEditSequence();
-  document_->undoStack()->push(new ApplyDiagnosisCommand(document_, key, std::move(applied)));
+  document_->setStudyValue(QString::fromLatin1(study::kDiagnosis),
+                           QStringLiteral("/%1/applied").arg(QString::fromStdString(key)), applied,
+                           tr("Apply diagnosed effects (%1)").arg(QString::fromStdString(key)));
+  document_->endEditSequence();
   return true;
 }
 

@@ -292,14 +292,33 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
 
   connect(combo_, &QComboBox::currentIndexChanged, this, &MatchingPage::showPoints);
   connect(methodCombo_, &QComboBox::currentIndexChanged, this, [this] {
+    const auto method = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
     if (result_) {
-      result_->primary = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
+      result_->primary = method;
       applyResult();
     }
+    writeStudyValue(QStringLiteral("/method"), matching::toString(method), tr("Change the matching method"),
+                    false);
   });
-  connect(toleranceSpin_, &QDoubleSpinBox::valueChanged, this, [this] { reevaluate(); });
-  connect(allowScale_, &QCheckBox::toggled, this, [this] { settingsChanged(); });
-  for (QCheckBox* box : locks_) connect(box, &QCheckBox::toggled, this, [this] { settingsChanged(); });
+  connect(toleranceSpin_, &QDoubleSpinBox::valueChanged, this, [this] {
+    reevaluate();
+    writeStudyValue(QStringLiteral("/tolerance_mm"), toleranceSpin_->value(),
+                    tr("Change the matching tolerance"), true);
+  });
+  connect(toleranceSpin_, &QDoubleSpinBox::editingFinished, document_, &ProjectDocument::endEditSequence);
+  connect(allowScale_, &QCheckBox::toggled, this, [this] {
+    settingsChanged();
+    writeStudyValue(QStringLiteral("/allow_scale"), allowScale_->isChecked(), tr("Change the matching scale"),
+                    false);
+  });
+  for (QCheckBox* box : locks_) {
+    connect(box, &QCheckBox::toggled, this, [this] {
+      settingsChanged();
+      const std::string list = currentOptions().locks.toString();
+      writeStudyValue(QStringLiteral("/locks"), list.empty() ? nlohmann::json() : nlohmann::json(list),
+                      tr("Change the matching locks"), false);
+    });
+  }
   connect(runButton_, &QPushButton::clicked, this, &MatchingPage::startRun);
   connect(cancelButton_, &QPushButton::clicked, this, &MatchingPage::cancelRun);
   connect(watcher_, &QFutureWatcher<void>::finished, this, [this] {
@@ -356,7 +375,21 @@ void MatchingPage::refresh() {
   for (const DatasetRef& d : document_->project().datasets) {
     if (d.kind == dataset_kind::kProbePoints) sets.push_back(d);
   }
-  if (sets == sets_ && projectFile_ == document_->fileName() && combo_->count() > 0) return;
+  if (sets == sets_ && projectFile_ == document_->fileName() && combo_->count() > 0) {
+    if (writingStudy_) return;
+    // Undo / redo of a settings edit: the controls follow the study.
+    try {
+      if (!syncSettingsFromStudy(
+              matching::matchingStudySettings(document_->project(), projectFile_.toStdString())))
+        return;
+    } catch (const std::exception&) {
+      return;
+    }
+    if (result_) result_->primary = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
+    reevaluate();
+    settingsChanged();
+    return;
+  }
   sets_ = std::move(sets);
   const bool newProject = projectFile_ != document_->fileName() || combo_->count() == 0;
   projectFile_ = document_->fileName();
@@ -369,11 +402,7 @@ void MatchingPage::refresh() {
   }
   if (newProject) {
     previous = QString::fromStdString(settings_.datasetId);
-    const QSignalBlocker b1(toleranceSpin_), b2(methodCombo_);
-    toleranceSpin_->setValue(settings_.options.toleranceMm);
-    methodCombo_->setCurrentIndex(
-        std::max(0, methodCombo_->findData(static_cast<int>(settings_.options.primary))));
-    allowScale_->setChecked(settings_.options.allowScale);
+    syncSettingsFromStudy(settings_);
   }
   {
     const QSignalBlocker blocker(combo_);
@@ -450,6 +479,47 @@ matching::MatchingStudyOptions MatchingPage::currentOptions() const {
   }
   o.locks = matching::DofLocks::parse(list, "lock");
   return o;
+}
+
+void MatchingPage::writeStudyValue(const QString& key, const nlohmann::json& value, const QString& text,
+                                   bool typing) {
+  if (writingStudy_) return;
+  writingStudy_ = true;
+  if (!typing) document_->endEditSequence();
+  document_->setStudyValue(QString::fromLatin1(study::kMatching), key, value, text);
+  if (!typing) document_->endEditSequence();
+  writingStudy_ = false;
+}
+
+bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& settings) {
+  matching::DofLocks locks;
+  const nlohmann::json list =
+      document_->studyValue(QString::fromLatin1(study::kMatching), QStringLiteral("/locks"));
+  if (list.is_string()) {
+    try {
+      locks = matching::DofLocks::parse(list.get<std::string>(), "studies.matching.locks");
+    } catch (const std::exception&) {
+      locks = {};
+    }
+  }
+  bool changed = false;
+  {
+    const QSignalBlocker b1(toleranceSpin_), b2(methodCombo_), b3(allowScale_);
+    const double tolerance = toleranceSpin_->value();
+    toleranceSpin_->setValue(settings.options.toleranceMm);
+    changed |= toleranceSpin_->value() != tolerance;
+    const int method = std::max(0, methodCombo_->findData(static_cast<int>(settings.options.primary)));
+    changed |= methodCombo_->currentIndex() != method;
+    methodCombo_->setCurrentIndex(method);
+    changed |= allowScale_->isChecked() != settings.options.allowScale;
+    allowScale_->setChecked(settings.options.allowScale);
+  }
+  for (std::size_t k = 0; k < locks_.size(); ++k) {
+    const QSignalBlocker blocker(locks_[k]);
+    changed |= locks_[k]->isChecked() != locks.locked[k];
+    locks_[k]->setChecked(locks.locked[k]);
+  }
+  return changed;
 }
 
 void MatchingPage::settingsChanged() {

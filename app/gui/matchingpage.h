@@ -7,7 +7,8 @@
 //
 // A run computes every method (core/matching/study.h) in a worker thread; the method selector picks
 // the posture shown "after" and used for the machine adjustment. Settings come from the project's
-// studies.matching (dataset, tolerance_mm, method, machine) and are not written back.
+// studies.matching (dataset, tolerance_mm, method, allow_scale, locks, machine); edits of the method,
+// tolerance, scale and locks are written back through the document's undo stack.
 #include <QFutureWatcher>
 #include <QWidget>
 #include <array>
@@ -82,6 +83,11 @@ class MatchingPage : public QWidget {
   void refresh();
   void showPoints(int comboIndex);
   void settingsChanged();
+  /// Writes one studies.matching value (undoable); `typing` lets consecutive edits merge.
+  void writeStudyValue(const QString& key, const nlohmann::json& value, const QString& text, bool typing);
+  /// Puts the study's settings (and studies.matching.locks) into the controls with their signals
+  /// blocked; true when a control changed.
+  bool syncSettingsFromStudy(const matching::MatchingStudySettings& settings);
   matching::MatchingStudyOptions currentOptions() const;
   void applyResult();
   void updateViews();
@@ -122,6 +128,7 @@ class MatchingPage : public QWidget {
 
   std::optional<ProbePointSet> set_;
   matching::MatchingStudySettings settings_;
+  bool writingStudy_ = false;  ///< the page's own edit of the document
   std::optional<matching::MatchingStudyResult> result_;
   QFutureWatcher<void>* watcher_;
   std::shared_ptr<std::atomic<bool>> cancel_;

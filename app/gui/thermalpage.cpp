@@ -7,6 +7,7 @@
 #include <QSignalBlocker>
 #include <QStackedWidget>
 #include <QTabWidget>
+#include <QUndoStack>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <exception>
@@ -92,7 +93,9 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   connect(document_, &ProjectDocument::changed, this, &ThermalPage::refresh);
   connect(tabs_, &QTabWidget::currentChanged, this, &ThermalPage::onTabChanged);
   connect(models_, &ThermalModelView::settingsEdited, this, [this] {
-    if (!logId_.isEmpty()) settings_[logId_] = models_->settings();
+    if (logId_.isEmpty()) return;
+    settings_[logId_] = models_->settings();
+    writeStudySettings(settings_[logId_]);
   });
   connect(modularWatcher_, &QFutureWatcher<ModularRun>::finished, this,
           [this] { applyModular(modularWatcher_->result()); });
@@ -118,7 +121,10 @@ void ThermalPage::refresh() {
     if (d.kind == dataset_kind::kThermalLog) logs.push_back(d);
   }
   // Name or notes edits must not re-read the data.
-  if (logs == logs_ && projectFile_ == document_->fileName() && combo_->count() > 0) return;
+  if (logs == logs_ && projectFile_ == document_->fileName() && combo_->count() > 0) {
+    if (!writingStudy_) syncSettingsFromStudy();  // undo / redo of a settings edit
+    return;
+  }
   logs_ = std::move(logs);
   projectFile_ = document_->fileName();
   settings_.clear();
@@ -182,6 +188,53 @@ void ThermalPage::showLog(int comboIndex) {
     message_->setText(tr("Cannot show this thermal log:\n%1").arg(error_));
     stack_->setCurrentWidget(message_);
   }
+}
+
+void ThermalPage::writeStudySettings(const ThermalModelSettings& s) {
+  const QString study = QString::fromLatin1(study::kThermal);
+  const nlohmann::json dataset = document_->studyValue(study, QStringLiteral("/dataset"));
+  // The study has one dataset: settings of other logs stay in this session.
+  if (!dataset.is_null() && dataset != nlohmann::json(logId_.toStdString())) return;
+  struct Edit {
+    QString key;
+    nlohmann::json value;
+    QString text;
+  };
+  std::vector<Edit> edits;
+  const auto add = [&](const QString& key, const nlohmann::json& value, const QString& text) {
+    if (document_->studyValue(study, key) != value) edits.push_back({key, value, text});
+  };
+  if (dataset.is_null()) add(QStringLiteral("/dataset"), logId_.toStdString(), tr("Choose the thermal log"));
+  add(QStringLiteral("/target"), s.target, tr("Change the thermal target"));
+  add(QStringLiteral("/inputs"), s.inputs, tr("Change the thermal inputs"));
+  add(QStringLiteral("/train_fraction"), s.trainFraction, tr("Change the train fraction"));
+  add(QStringLiteral("/seed"), s.seed, tr("Change the training seed"));
+  if (edits.empty()) return;
+  // Typing in the fraction or seed spin box merges into one undo step; other edits are one step each.
+  const bool typing = edits.size() == 1 && (edits.front().key == QLatin1String("/train_fraction") ||
+                                            edits.front().key == QLatin1String("/seed"));
+  writingStudy_ = true;
+  if (!typing) document_->endEditSequence();
+  if (edits.size() > 1) document_->undoStack()->beginMacro(tr("Change the thermal model settings"));
+  for (const Edit& e : edits) document_->setStudyValue(study, e.key, e.value, e.text);
+  if (edits.size() > 1) document_->undoStack()->endMacro();
+  if (!typing) document_->endEditSequence();
+  writingStudy_ = false;
+}
+
+void ThermalPage::syncSettingsFromStudy() {
+  if (logId_.isEmpty()) return;
+  const nlohmann::json study = document_->studyValue(QString::fromLatin1(study::kThermal), QString());
+  const nlohmann::json dataset =
+      study.is_object() ? study.value("dataset", nlohmann::json()) : nlohmann::json();
+  // Only the study's dataset (or any log while the study names none) follows the study.
+  if (!dataset.is_null() && dataset != nlohmann::json(logId_.toStdString())) return;
+  const ThermalModelSettings s = defaultThermalModelSettings(
+      log_, study.is_object() ? study : nlohmann::json::object(), logId_.toStdString());
+  if (s == models_->settings()) return;
+  settings_[logId_] = s;
+  models_->setSettings(s);
+  if (tabs_->currentIndex() == kHysteresisTab) updateHysteresis();
 }
 
 void ThermalPage::onTabChanged(int index) {

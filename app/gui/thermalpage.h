@@ -61,6 +61,10 @@ class ThermalPage : public QWidget {
   void updateHysteresis();
   /// Starts the modular case in a worker (or runs it now when `now`); no effect without the datasets.
   void updateModular(bool now);
+  /// Writes the model settings of the study's dataset to studies.thermal (undoable).
+  void writeStudySettings(const ThermalModelSettings& s);
+  /// Puts studies.thermal's settings into the controls after undo / redo (signals blocked).
+  void syncSettingsFromStudy();
 
   ProjectDocument* document_;
   QComboBox* combo_;
@@ -78,6 +82,7 @@ class ThermalPage : public QWidget {
   QString logId_;
   QString hysteresisKey_;  ///< what the hysteresis view shows (dataset, target, inputs)
   QHash<QString, ThermalModelSettings> settings_;  ///< per dataset id, this session
+  bool writingStudy_ = false;                      ///< the page's own edit of the document
 
   struct ModularRun {
     std::shared_ptr<ModularComparison> result;

@@ -129,6 +129,114 @@ TEST_F(DocumentTest, StudyNotesKeepTheStudySettings) {
   EXPECT_EQ(doc_.project(), before);
 }
 
+TEST_F(DocumentTest, StudyValueIsUndoableAndRedoable) {
+  QSignalSpy changed(&doc_, &ProjectDocument::changed);
+  QSignalSpy valueSpy(&doc_, &ProjectDocument::studyValueChanged);
+  EXPECT_TRUE(doc_.studyValue(QStringLiteral("matching"), QStringLiteral("/tolerance_mm")).is_null());
+  doc_.setStudyValue(QStringLiteral("matching"), QStringLiteral("/tolerance_mm"), 0.02,
+                     QStringLiteral("Change tolerance"));
+  EXPECT_EQ(doc_.project().studies, (nlohmann::json{{"matching", {{"tolerance_mm", 0.02}}}}));
+  EXPECT_EQ(doc_.studyValue(QStringLiteral("matching"), QStringLiteral("/tolerance_mm")),
+            nlohmann::json(0.02));
+  EXPECT_EQ(doc_.undoStack()->count(), 1);
+  EXPECT_EQ(doc_.undoStack()->undoText(), QStringLiteral("Change tolerance"));
+  EXPECT_TRUE(doc_.isModified());
+  EXPECT_EQ(changed.count(), 1);
+  ASSERT_EQ(valueSpy.count(), 1);
+  EXPECT_EQ(valueSpy.at(0).at(0).toString(), QStringLiteral("matching"));
+  EXPECT_EQ(valueSpy.at(0).at(1).toString(), QStringLiteral("/tolerance_mm"));
+
+  doc_.undoStack()->undo();
+  EXPECT_EQ(doc_.project().studies, nlohmann::json::object()) << "the created study is removed again";
+  EXPECT_FALSE(doc_.isModified());
+  EXPECT_EQ(changed.count(), 2);
+  doc_.undoStack()->redo();
+  EXPECT_EQ(doc_.studyValue(QStringLiteral("matching"), QStringLiteral("/tolerance_mm")),
+            nlohmann::json(0.02));
+  EXPECT_TRUE(doc_.isModified());
+  EXPECT_EQ(changed.count(), 3);
+}
+
+TEST_F(DocumentTest, NestedStudyValueIsUndoneExactly) {
+  const nlohmann::json before = {{"notes", "n"}, {"thermal", "not an object"}, {"setup", {{"applied", 1}}}};
+  doc_.setValue(ProjectField::studyNotes(QStringLiteral("diagnosis")), QStringLiteral("n"));
+  doc_.endEditSequence();
+  doc_.setStudyValue(QStringLiteral("diagnosis"), QStringLiteral("/thermal"), "not an object",
+                     QStringLiteral("a"));
+  doc_.setStudyValue(QStringLiteral("diagnosis"), QStringLiteral("/setup/applied"), 1, QStringLiteral("b"));
+  doc_.endEditSequence();
+  ASSERT_EQ(doc_.project().studies["diagnosis"], before);
+  const nlohmann::json applied = nlohmann::json::array({{{"name", "drift"}, {"per_min", 0.1}}});
+  doc_.setStudyValue(QStringLiteral("diagnosis"), QStringLiteral("/thermal/applied"), applied,
+                     QStringLiteral("Apply"));
+  EXPECT_EQ(doc_.studyValue(QStringLiteral("diagnosis"), QStringLiteral("/thermal/applied")), applied);
+  EXPECT_EQ(doc_.studyValue(QStringLiteral("diagnosis"), QStringLiteral("/setup")),
+            nlohmann::json({{"applied", 1}}));
+  EXPECT_TRUE(doc_.studyValue(QStringLiteral("diagnosis"), QStringLiteral("/kinematic/applied")).is_null());
+  EXPECT_TRUE(doc_.studyValue(QStringLiteral("nosuch"), QStringLiteral("")).is_null());
+  doc_.undoStack()->undo();
+  EXPECT_EQ(doc_.project().studies["diagnosis"], before);
+  // A null value removes the member.
+  doc_.setStudyValue(QStringLiteral("diagnosis"), QStringLiteral("/setup"), nullptr,
+                     QStringLiteral("Remove"));
+  EXPECT_FALSE(doc_.project().studies["diagnosis"].contains("setup"));
+  doc_.undoStack()->undo();
+  EXPECT_EQ(doc_.project().studies["diagnosis"], before);
+}
+
+TEST_F(DocumentTest, SettingTheSameStudyValuePushesNothing) {
+  doc_.setStudyValue(QStringLiteral("thermal"), QStringLiteral("/seed"), 7, QStringLiteral("Seed"));
+  doc_.endEditSequence();
+  QSignalSpy changed(&doc_, &ProjectDocument::changed);
+  doc_.setStudyValue(QStringLiteral("thermal"), QStringLiteral("/seed"), 7, QStringLiteral("Seed"));
+  doc_.setStudyValue(QStringLiteral("thermal"), QStringLiteral("/absent"), nullptr, QStringLiteral("Remove"));
+  EXPECT_EQ(doc_.undoStack()->count(), 1);
+  EXPECT_EQ(changed.count(), 0);
+}
+
+TEST_F(DocumentTest, StudyValueTypingMergesAndEndingTheSequenceStops) {
+  const QString study = QStringLiteral("thermal");
+  const QString key = QStringLiteral("/train_fraction");
+  doc_.setStudyValue(study, QStringLiteral("/dataset"), "log", QStringLiteral("Dataset"));
+  doc_.endEditSequence();
+  doc_.setStudyValue(study, key, 0.6, QStringLiteral("Fraction"));
+  doc_.setStudyValue(study, key, 0.65, QStringLiteral("Fraction"));
+  doc_.setStudyValue(study, key, 0.7, QStringLiteral("Fraction"));
+  EXPECT_EQ(doc_.undoStack()->count(), 2) << "typing in one field is one undo step";
+  doc_.setStudyValue(study, QStringLiteral("/seed"), 3, QStringLiteral("Seed"));
+  EXPECT_EQ(doc_.undoStack()->count(), 3) << "another key does not merge";
+  doc_.undoStack()->undo();
+  doc_.undoStack()->undo();
+  EXPECT_EQ(doc_.project().studies[study.toStdString()], nlohmann::json({{"dataset", "log"}}));
+  doc_.undoStack()->redo();
+  doc_.endEditSequence();
+  doc_.setStudyValue(study, key, 0.8, QStringLiteral("Fraction"));
+  EXPECT_EQ(doc_.undoStack()->count(), 3) << "after endEditSequence a new step starts";
+  // Typing back to the original value leaves nothing to undo.
+  doc_.endEditSequence();
+  doc_.setStudyValue(study, key, 0.75, QStringLiteral("Fraction"));
+  doc_.setStudyValue(study, key, 0.8, QStringLiteral("Fraction"));
+  EXPECT_EQ(doc_.undoStack()->count(), 3);
+  EXPECT_EQ(doc_.studyValue(study, key), nlohmann::json(0.8));
+}
+
+TEST_F(DocumentTest, StudyValueSurvivesSaveAndReload) {
+  doc_.setValue(ProjectField::studyNotes(QStringLiteral("matching")), QStringLiteral("fixture B"));
+  doc_.setStudyValue(QStringLiteral("matching"), QStringLiteral("/tolerance_mm"), 0.025,
+                     QStringLiteral("Tol"));
+  doc_.setStudyValue(QStringLiteral("matching"), QStringLiteral("/locks"), "z,rz", QStringLiteral("Locks"));
+  const QString file = path(QStringLiteral("study.metrofit"));
+  doc_.saveAs(file);
+  EXPECT_FALSE(doc_.isModified());
+  ProjectDocument other;
+  other.load(file);
+  EXPECT_EQ(other.project().studies, doc_.project().studies);
+  EXPECT_EQ(other.studyValue(QStringLiteral("matching"), QStringLiteral("/tolerance_mm")),
+            nlohmann::json(0.025));
+  EXPECT_EQ(other.studyValue(QStringLiteral("matching"), QStringLiteral("/locks")), nlohmann::json("z,rz"));
+  EXPECT_EQ(other.value(ProjectField::studyNotes(QStringLiteral("matching"))), QStringLiteral("fixture B"));
+}
+
 TEST_F(DocumentTest, ModifiedFollowsTheCleanState) {
   QSignalSpy spy(&doc_, &ProjectDocument::modifiedChanged);
   doc_.setValue(ProjectField::name(), QStringLiteral("A"));

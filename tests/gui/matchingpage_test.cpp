@@ -6,7 +6,9 @@
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
 #include <QPushButton>
@@ -15,6 +17,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUndoStack>
 #include <cmath>
 #include <memory>
 
@@ -157,6 +160,48 @@ TEST_F(MatchingPageTest, RunFillsEveryTableWithTheCoreResults) {
   // A tighter tolerance re-evaluates the counts.
   page_->setTolerance(0.001);
   EXPECT_NE(methods->item(1, 11)->text(), QStringLiteral("0 / 40"));
+}
+
+TEST_F(MatchingPageTest, SettingsEditsAreWrittenToTheStudyAndUndone) {
+  auto* tolerance = page_->findChild<QDoubleSpinBox*>(QStringLiteral("matchingTolerance"));
+  auto* method = page_->findChild<QComboBox*>(QStringLiteral("matchingMethod"));
+  QCheckBox* lockZ = nullptr;
+  for (QCheckBox* box : page_->findChildren<QCheckBox*>())
+    if (box->text() == QLatin1String("z")) lockZ = box;
+  ASSERT_TRUE(tolerance && method && lockZ);
+  const nlohmann::json before = document_.project().studies["matching"];
+  EXPECT_DOUBLE_EQ(tolerance->value(), 0.035);
+  EXPECT_FALSE(document_.isModified());
+  EXPECT_EQ(document_.undoStack()->count(), 0) << "showing the settings is no edit";
+
+  page_->setTolerance(0.02);
+  page_->setTolerance(0.025);  // typing: one undo step
+  emit tolerance->editingFinished();
+  page_->setMethod(matching::MatchMethod::Minimax);
+  page_->setLocked(2, true);
+  page_->setLocked(5, true);
+  nlohmann::json expected = before;
+  expected["tolerance_mm"] = 0.025;
+  expected["method"] = "minimax";
+  expected["locks"] = "rz,z";
+  EXPECT_EQ(document_.project().studies["matching"], expected);
+  EXPECT_TRUE(document_.isModified());
+  EXPECT_EQ(document_.undoStack()->count(), 4);
+
+  document_.undoStack()->undo();
+  EXPECT_FALSE(lockZ->isChecked());
+  EXPECT_EQ(document_.project().studies["matching"]["locks"], "rz");
+  document_.undoStack()->undo();
+  document_.undoStack()->undo();
+  EXPECT_EQ(method->currentData().toInt(), static_cast<int>(matching::MatchMethod::Sade));
+  EXPECT_DOUBLE_EQ(tolerance->value(), 0.025);
+  document_.undoStack()->undo();
+  EXPECT_EQ(document_.project().studies["matching"], before);
+  EXPECT_DOUBLE_EQ(tolerance->value(), 0.035);
+  EXPECT_FALSE(document_.isModified());
+  EXPECT_EQ(document_.undoStack()->count(), 4) << "restoring the controls pushes nothing";
+  document_.undoStack()->redo();
+  EXPECT_DOUBLE_EQ(tolerance->value(), 0.025);
 }
 
 TEST_F(MatchingPageTest, WorkerRunReportsFinishesAndCanBeCancelled) {

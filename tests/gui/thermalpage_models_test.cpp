@@ -4,13 +4,17 @@
 // $METROFIT_TEST_OUT/thermalpage for people to look at.
 #include <gtest/gtest.h>
 
+#include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTest>
+#include <QUndoStack>
 
 #include <nlohmann/json.hpp>
 
@@ -154,6 +158,55 @@ TEST_F(ThermalPageModelsTest, BadSettingsGiveAMessage) {
   view->setSettings(s);
   // The speed is 0 for the first 10 min only, so it is not constant; training works.
   EXPECT_TRUE(view->trainNow()) << view->statusText().toStdString();
+}
+
+TEST_F(ThermalPageModelsTest, SettingsEditsAreWrittenToTheStudyAndUndone) {
+  makeProject(240.0);
+  ThermalPage page(&document_);
+  ThermalModelView* view = page.modelView();
+  auto* seed = view->findChild<QSpinBox*>(QStringLiteral("thermalModelSeed"));
+  auto* fraction = view->findChild<QDoubleSpinBox*>(QStringLiteral("thermalModelTrainFraction"));
+  auto* target = view->findChild<QComboBox*>(QStringLiteral("thermalModelTarget"));
+  ASSERT_TRUE(seed && fraction && target);
+  const nlohmann::json before = document_.project().studies["thermal"];
+  EXPECT_FALSE(document_.isModified());
+  EXPECT_EQ(document_.undoStack()->count(), 0) << "showing the settings is no edit";
+
+  // The first edit writes the settings the study did not have yet (one undo step).
+  seed->setValue(7);
+  nlohmann::json expected = before;
+  expected["train_fraction"] = 0.5;
+  expected["seed"] = 7;
+  EXPECT_EQ(document_.project().studies["thermal"], expected);
+  EXPECT_TRUE(document_.isModified());
+  EXPECT_EQ(document_.undoStack()->count(), 1);
+  // Typing in the fraction box is one more step.
+  fraction->setValue(0.6);
+  fraction->setValue(0.7);
+  expected["train_fraction"] = 0.7;
+  EXPECT_EQ(document_.project().studies["thermal"], expected);
+  EXPECT_EQ(document_.undoStack()->count(), 2);
+  // A new target hides it from the inputs: target and inputs change in one step.
+  target->setCurrentIndex(target->findData(QStringLiteral("T1")));
+  expected["target"] = "T1";
+  expected["inputs"] = {"T2", "T3", "T4"};
+  EXPECT_EQ(document_.project().studies["thermal"], expected);
+  EXPECT_EQ(document_.undoStack()->count(), 3);
+
+  document_.undoStack()->undo();
+  EXPECT_EQ(view->settings().target, "disp_z_um");
+  EXPECT_EQ(view->settings().inputs, (std::vector<std::string>{"T1", "T2", "T3", "T4"}));
+  document_.undoStack()->undo();
+  EXPECT_DOUBLE_EQ(fraction->value(), 0.5);
+  EXPECT_EQ(seed->value(), 7);
+  document_.undoStack()->undo();
+  EXPECT_EQ(document_.project().studies["thermal"], before);
+  EXPECT_EQ(seed->value(), 1);
+  EXPECT_FALSE(document_.isModified());
+  EXPECT_EQ(document_.undoStack()->count(), 3) << "restoring the controls pushes nothing";
+  document_.undoStack()->redo();
+  EXPECT_EQ(seed->value(), 7);
+  EXPECT_EQ(document_.project().studies["thermal"]["seed"], 7);
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <QFileSystemWatcher>
 #include <QTimer>
 #include <QUndoStack>
+#include <string>
+#include <vector>
 
 #include "core/common/error.h"
 #include "widgets/document/studyinfo.h"
@@ -38,6 +40,39 @@ QString commandText(const ProjectField& field) {
 
 constexpr int kDiskCheckDelayMs = 200;
 
+/// The tokens of a JSON pointer relative to a study (throws json::parse_error when malformed).
+std::vector<std::string> pointerTokens(const QString& key) {
+  nlohmann::json::json_pointer pointer(toStd(key));
+  std::vector<std::string> tokens;
+  while (!pointer.empty()) {
+    tokens.insert(tokens.begin(), pointer.back());
+    pointer.pop_back();
+  }
+  return tokens;
+}
+
+/// The study's JSON with `value` set at `tokens` (null removes the member).
+std::optional<nlohmann::json> withValue(const std::optional<nlohmann::json>& study,
+                                        const std::vector<std::string>& tokens, const nlohmann::json& value) {
+  if (tokens.empty()) {
+    if (value.is_null()) return std::nullopt;
+    return value;
+  }
+  nlohmann::json root = study.value_or(nlohmann::json::object());
+  nlohmann::json* node = &root;
+  for (std::size_t i = 0; i + 1 < tokens.size(); ++i) {
+    if (!node->is_object()) *node = nlohmann::json::object();
+    node = &(*node)[tokens[i]];
+  }
+  if (!node->is_object()) *node = nlohmann::json::object();
+  if (value.is_null()) {
+    node->erase(tokens.back());
+  } else {
+    (*node)[tokens.back()] = value;
+  }
+  return root;
+}
+
 }  // namespace
 
 // ---- ChangeProjectValue ----
@@ -66,6 +101,35 @@ bool ChangeProjectValue::mergeWith(const QUndoCommand* other) {
   newValue_ = o->newValue_;
   // Typing back to where the sequence started leaves nothing to undo.
   setObsolete(!createdStudy_ && oldValue_.has_value() && *oldValue_ == newValue_);
+  return true;
+}
+
+// ---- ChangeStudyValue ----
+
+ChangeStudyValue::ChangeStudyValue(ProjectDocument* document, const QString& study, const QString& key,
+                                   const nlohmann::json& value, const QString& text, QUndoCommand* parent)
+    : QUndoCommand(text, parent),
+      document_(document),
+      study_(study),
+      key_(key),
+      before_(document->rawStudy(study)),
+      after_(withValue(before_, pointerTokens(key), value)),
+      sequence_(document->editSequence()) {}
+
+void ChangeStudyValue::undo() {
+  document_->applyStudy(study_, key_, before_);
+}
+
+void ChangeStudyValue::redo() {
+  document_->applyStudy(study_, key_, after_);
+}
+
+bool ChangeStudyValue::mergeWith(const QUndoCommand* other) {
+  const auto* o = static_cast<const ChangeStudyValue*>(other);  // same id() guarantees the type
+  if (o->document_ != document_ || o->study_ != study_ || o->key_ != key_ || o->sequence_ != sequence_)
+    return false;
+  after_ = o->after_;
+  setObsolete(before_ == after_);
   return true;
 }
 
@@ -148,6 +212,43 @@ void ProjectDocument::applyValue(const ProjectField& field, const std::optional<
   }
   emit changed();
   emit fieldChanged(field);
+}
+
+std::optional<nlohmann::json> ProjectDocument::rawStudy(const QString& study) const {
+  const auto s = project_.studies.find(toStd(study));
+  if (s == project_.studies.end()) return std::nullopt;
+  return *s;
+}
+
+nlohmann::json ProjectDocument::studyValue(const QString& study, const QString& key) const {
+  const std::vector<std::string> tokens = pointerTokens(key);
+  const auto s = project_.studies.find(toStd(study));
+  if (s == project_.studies.end()) return nullptr;
+  const nlohmann::json* node = &*s;
+  for (const std::string& token : tokens) {
+    if (!node->is_object()) return nullptr;
+    const auto it = node->find(token);
+    if (it == node->end()) return nullptr;
+    node = &*it;
+  }
+  return *node;
+}
+
+void ProjectDocument::setStudyValue(const QString& study, const QString& key, const nlohmann::json& value,
+                                    const QString& undoText) {
+  if (studyValue(study, key) == value) return;
+  undoStack_->push(new ChangeStudyValue(this, study, key, value, undoText));
+}
+
+void ProjectDocument::applyStudy(const QString& study, const QString& key,
+                                 const std::optional<nlohmann::json>& json) {
+  if (json) {
+    project_.studies[toStd(study)] = *json;
+  } else {
+    project_.studies.erase(toStd(study));
+  }
+  emit changed();
+  emit studyValueChanged(study, key);
 }
 
 void ProjectDocument::newProject() {

@@ -27,6 +27,7 @@ class ProjectDocument;
 /// Ids of the document's undo commands (QUndoCommand::id(), used for merging).
 enum class UndoCommandId : int {
   ChangeProjectValue = 1,
+  ChangeStudyValue = 2,
 };
 
 /// A text field of the project that can be edited through the undo stack.
@@ -67,6 +68,33 @@ class ChangeProjectValue : public QUndoCommand {
   quint64 sequence_;
 };
 
+/// Sets one JSON value inside a study (ProjectDocument::setStudyValue). The command keeps the whole
+/// study's JSON before and after the edit, so undo restores it exactly (intermediate objects the
+/// edit created disappear again; a study that did not exist is removed). Consecutive commands on
+/// the same study and key within one edit sequence merge (typing in a spin box is one undo step); a
+/// merge back to the original JSON makes the command obsolete.
+class ChangeStudyValue : public QUndoCommand {
+ public:
+  ChangeStudyValue(ProjectDocument* document, const QString& study, const QString& key,
+                   const nlohmann::json& value, const QString& text, QUndoCommand* parent = nullptr);
+
+  void undo() override;
+  void redo() override;
+  int id() const override { return static_cast<int>(UndoCommandId::ChangeStudyValue); }
+  bool mergeWith(const QUndoCommand* other) override;
+
+  const QString& study() const { return study_; }
+  const QString& key() const { return key_; }
+
+ private:
+  ProjectDocument* document_;
+  QString study_;
+  QString key_;
+  std::optional<nlohmann::json> before_;  ///< nullopt: the study did not exist
+  std::optional<nlohmann::json> after_;   ///< nullopt: the study is removed
+  quint64 sequence_;
+};
+
 class ProjectDocument : public QObject {
   Q_OBJECT
  public:
@@ -89,6 +117,20 @@ class ProjectDocument : public QObject {
   /// (editors call it when an input field loses focus or editing is finished).
   void endEditSequence() { ++editSequence_; }
 
+  /// A value inside a study's JSON (`studies[<study>]`). `key` is a JSON pointer relative to the
+  /// study (RFC 6901: "/tolerance_mm", "/thermal/applied" in the "diagnosis" study; "" is the whole
+  /// study); every token names an object member (arrays are read and written as whole values).
+  /// Returns null when the study, the member or an object on the way does not exist. Throws
+  /// nlohmann::json::parse_error for a malformed pointer (a programming error).
+  nlohmann::json studyValue(const QString& study, const QString& key) const;
+  /// Sets a value inside a study through the undo stack (one ChangeStudyValue command named
+  /// `undoText`). Missing objects on the way (the study itself included) are created; a member that
+  /// is not an object on the way is replaced by one. A null `value` removes the member (the whole
+  /// study for the key ""). Nothing
+  /// happens when studyValue() already equals `value`. Emits changed() and studyValueChanged().
+  void setStudyValue(const QString& study, const QString& key, const nlohmann::json& value,
+                     const QString& undoText);
+
   /// A new empty project without a file; clears the undo stack.
   void newProject();
   /// Replaces the project with the file's content; clears the undo stack. Throws
@@ -109,6 +151,8 @@ class ProjectDocument : public QObject {
   void changed();
   /// One field changed (after changed()).
   void fieldChanged(const metrofit::ProjectField& field);
+  /// A study value changed through setStudyValue, its undo or redo (after changed()).
+  void studyValueChanged(const QString& study, const QString& key);
   void fileNameChanged(const QString& fileName);
   void modifiedChanged(bool modified);
   /// The open file was changed or removed on disk by another program.
@@ -116,6 +160,10 @@ class ProjectDocument : public QObject {
 
  private:
   friend class ChangeProjectValue;
+  friend class ChangeStudyValue;
+  /// Replaces a study's JSON without the undo stack (nullopt removes the study).
+  void applyStudy(const QString& study, const QString& key, const std::optional<nlohmann::json>& json);
+  std::optional<nlohmann::json> rawStudy(const QString& study) const;
   /// Applies a value without the undo stack (nullopt removes study notes; removeStudy drops an
   /// emptied study object).
   void applyValue(const ProjectField& field, const std::optional<QString>& value, bool removeStudy = false);
