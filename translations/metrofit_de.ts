@@ -113,6 +113,27 @@
     </message>
 </context>
 <context>
+    <name>metrofit::CircularPathView</name>
+    <message>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+27"/>
+        <source>The XY path in mm: the nominal circle true to scale; the measured path, the compensated references and the expected result as deviations from the nominal point, magnified by the factor shown.</source>
+        <translation>Die XY-Bahn in mm: der Nennkreis maßstabsgetreu; die gemessene Bahn, die kompensierten Sollwerte und das erwartete Ergebnis als Abweichungen vom Nennpunkt, vergrößert um den angegebenen Faktor.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ControlChartView</name>
+    <message>
+        <location line="+51"/>
+        <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (seed 002, Eq. 18-19); red points are out of control.</source>
+        <translation>Mittelwerte der Untergruppen mit Mittellinie (CL) und den Eingriffsgrenzen UCL/LCL = Mittelwert ± A2 · R̄ (Quelle 002, Gl. 18-19); rote Punkte liegen außerhalb der Grenzen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Subgroup ranges with the centre line R̄ and the limits D4 · R̄ and D3 · R̄.</source>
+        <translation>Spannweiten der Untergruppen mit der Mittellinie R̄ und den Grenzen D4 · R̄ und D3 · R̄.</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::DatasetTable</name>
     <message>
         <location filename="../app/gui/datasettable.cpp" line="+18"/>
@@ -138,6 +159,279 @@
         <location line="+28"/>
         <source>File not found: %1</source>
         <translation>Datei nicht gefunden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::DiagnosisPage</name>
+    <message>
+        <location filename="../app/gui/diagnosispage.cpp" line="+53"/>
+        <source>Thermal</source>
+        <translation>Thermik</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kinematic</source>
+        <translation>Kinematik</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Setup</source>
+        <translation>Einrichtung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Matching</source>
+        <translation>Ausrichtung</translation>
+    </message>
+    <message>
+        <location line="+503"/>
+        <source>Apply diagnosed effects (%1)</source>
+        <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
+    </message>
+    <message>
+        <location line="-434"/>
+        <source>&amp;Run</source>
+        <translation>A&amp;usführen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Apply to model</source>
+        <translation>Ins &amp;Modell übernehmen</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>The study whose declared model is diagnosed</source>
+        <translation>Die Studie, deren deklariertes Modell diagnostiziert wird</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Fit the declared model, try the candidate effects it lacks, accept those the evidence supports (Ctrl+R)</source>
+        <translation>Das deklarierte Modell anpassen, die fehlenden Kandidateneffekte testen und die durch die Evidenz gestützten übernehmen (Strg+R)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stop the loop; the rounds done so far are shown (Esc)</source>
+        <translation>Die Schleife anhalten; die bisherigen Runden werden angezeigt (Esc)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
+        <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>The effect whose residual plot is shown</source>
+        <translation>Der Effekt, dessen Residuendiagramm angezeigt wird</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Residual &amp;plot of:</source>
+        <translation>Residuendia&amp;gramm von:</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Round</source>
+        <translation>Runde</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Effect</source>
+        <translation>Effekt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Parameters (± standard error)</source>
+        <translation>Parameter (± Standardfehler)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rmse before → after</source>
+        <translation>rmse vorher → nachher</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>held-out rmse</source>
+        <translation>rmse Testdaten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Evidence</source>
+        <translation>Evidenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Accepted</source>
+        <translation>Übernommen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Every candidate effect tried, in the order tried (Ctrl+C copies the selected rows)</source>
+        <translation>Alle getesteten Kandidateneffekte in der Reihenfolge des Tests (Strg+C kopiert die ausgewählten Zeilen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&amp;Domain:</source>
+        <translation>Ber&amp;eich:</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <location line="+125"/>
+        <source>The diagnosis failed: %1</source>
+        <translation>Die Diagnose ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="-66"/>
+        <source>No usable %1 data for the diagnosis:
+%2
+
+Configure it in the project file under studies.diagnosis.%3 (see the documentation of the diagnosis study).</source>
+        <translation>Keine verwendbaren %1-Daten für die Diagnose:
+%2
+
+Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die Dokumentation der Diagnosestudie).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Data: %1</source>
+        <translation>Daten: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>; target %1; declared inputs %2; fitted on the first %3 % of the rows, held out on the rest.</source>
+        <translation>; Zielgröße %1; deklarierte Eingänge %2; angepasst an den ersten %3 % der Zeilen, der Rest dient als Testdaten.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>; declared model: Cartesian actuator errors (origin, axis angles); feed %1 mm/min.</source>
+        <translation>; deklariertes Modell: kartesische Antriebsfehler (Ursprung, Achswinkel); Vorschub %1 mm/min.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>; setup model %1; declared model: constant setup-data errors.</source>
+        <translation>; Einrichtmodell %1; deklariertes Modell: konstante Einrichtdatenfehler.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>; declared model: rigid posture; tolerance ±%1 mm.</source>
+        <translation>; deklariertes Modell: starre Lage; Toleranz ±%1 mm.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Applied to the model: %1.</source>
+        <translation>Ins Modell übernommen: %1.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Not run yet: press Run (Ctrl+R).</source>
+        <translation>Noch nicht ausgeführt: Ausführen drücken (Strg+R).</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Diagnosing …</source>
+        <translation>Diagnose läuft …</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Diagnosing … step %1, current rmse %2</source>
+        <translation>Diagnose läuft … Schritt %1, aktueller rmse %2</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>rmse %1 → %2 %3</source>
+        <translation>rmse %1 → %2 %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, held-out rmse %1 → %2 %3</source>
+        <translation>, rmse Testdaten %1 → %2 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, max |e| %1 → %2 %3</source>
+        <translation>, max |e| %1 → %2 %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>. No undeclared effect found (%1 candidates tried).</source>
+        <translation>. Kein nicht deklarierter Effekt gefunden (%1 Kandidaten getestet).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>. Accepted: %1 (%2 candidates tried).</source>
+        <translation>. Übernommen: %1 (%2 Kandidaten getestet).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cancelled: the rounds done so far.</source>
+        <translation>Abgebrochen: die bisherigen Runden.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source> (accepted)</source>
+        <translation> (übernommen)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Residual before and after %1</source>
+        <translation>Residuen vor und nach %1</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>(Already applied.)</source>
+        <translation>(Bereits übernommen.)</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ErrorBarsView</name>
+    <message>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="+453"/>
+        <source>rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model (grey) and the model with the accepted effects (blue)</source>
+        <translation>rmse und größter |Fehler| der angepassten Daten, rmse der Testdaten (Thermik): das deklarierte Modell (grau) und das Modell mit den übernommenen Effekten (blau)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Error before / after</source>
+        <translation>Fehler vorher / nachher</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Error before / after (%1)</source>
+        <translation>Fehler vorher / nachher (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared</source>
+        <translation>deklariert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+ effects</source>
+        <translation>+ Effekte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>rmse</source>
+        <translation>rmse</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max |e|</source>
+        <translation>max |e|</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>held-out</source>
+        <translation>Testdaten</translation>
     </message>
 </context>
 <context>
@@ -169,9 +463,435 @@
     </message>
 </context>
 <context>
+    <name>metrofit::HistogramView</name>
+    <message>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+29"/>
+        <source>Distribution of the values with the specification limits LSL/USL, the nominal and the mean.</source>
+        <translation>Verteilung der Werte mit den Toleranzgrenzen LSL/USL, dem Nennwert und dem Mittelwert.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::KinematicPlots</name>
+    <message>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+314"/>
+        <source>0 µm</source>
+        <translation>0 µm</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>measured, CCW loop</source>
+        <translation>gemessen, Umlauf gegen den Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>measured, CW loop</source>
+        <translation>gemessen, Umlauf im Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>expected after compensation</source>
+        <translation>erwartet nach Kompensation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal R %1 mm</source>
+        <translation>Nenn-R %1 mm</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>plotted radius = R + k × radial deviation, k = %1; rings every %2 µm</source>
+        <translation>dargestellter Radius = R + k × radiale Abweichung, k = %1; Ringe alle %2 µm</translation>
+    </message>
+    <message>
+        <location line="+77"/>
+        <source>X (mm)</source>
+        <translation>X (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y (mm)</source>
+        <translation>Y (mm)</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>nominal circle</source>
+        <translation>Nennkreis</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>measured CCW</source>
+        <translation>gemessen, Gegenuhrzeigersinn</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>measured CW</source>
+        <translation>gemessen, Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>compensated references</source>
+        <translation>kompensierte Sollwerte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>expected after</source>
+        <translation>erwartet nachher</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>deviations from the nominal point × %1</source>
+        <translation>Abweichungen vom Nennpunkt × %1</translation>
+    </message>
+    <message>
+        <location line="+65"/>
+        <source>X-bar chart (subgroups of %1)</source>
+        <translation>x̄-Karte (Untergruppen zu %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R chart (subgroups of %1)</source>
+        <translation>R-Karte (Untergruppen zu %1)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>subgroup</source>
+        <translation>Untergruppe</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>subgroup mean</source>
+        <translation>Mittelwert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>subgroup range</source>
+        <translation>Spannweite</translation>
+    </message>
+    <message>
+        <location line="+96"/>
+        <source>Histogram</source>
+        <translation>Histogramm</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>nominal</source>
+        <translation>Nennwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mean</source>
+        <translation>Mittelwert</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::KinematicsPage</name>
+    <message>
+        <location filename="../app/gui/kinematicspage.cpp" line="+85"/>
+        <source>&amp;Identify</source>
+        <translation>&amp;Identifizieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Compensate</source>
+        <translation>&amp;Kompensieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export &amp;G-code…</source>
+        <translation>&amp;G-Code exportieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export &amp;STEP-NC…</source>
+        <translation>&amp;STEP-NC exportieren…</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Identify the actuator origin and orientation errors of the circular test (Levenberg-Marquardt, standard errors from the residuals) (F5)</source>
+        <translation>Ursprungs- und Orientierungsfehler der Antriebe aus dem Kreisformtest identifizieren (Levenberg-Marquardt, Standardfehler aus den Residuen) (F5)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Compensated references for the nominal circle (Eq. 15 with the identified errors), and what they give (Ctrl+K)</source>
+        <translation>Kompensierte Sollwerte für den Nennkreis (Gl. 15 mit den identifizierten Fehlern) und ihre Wirkung (Strg+K)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Write the compensated references as G-code (G01 blocks)</source>
+        <translation>Die kompensierten Sollwerte als G-Code schreiben (G01-Sätze)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write the compensated references as a STEP-NC (ISO 10303-21) file</source>
+        <translation>Die kompensierten Sollwerte als STEP-NC-Datei (ISO 10303-21) schreiben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>identified</source>
+        <translation>identifiziert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>std. error</source>
+        <translation>Std.-Fehler</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>simulated</source>
+        <translation>simuliert</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>max radial deviation</source>
+        <translation>max. radiale Abweichung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>µm</source>
+        <translation>µm</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;b&gt;Identified errors&lt;/b&gt; (origin in µm, angles in deg)</source>
+        <translation>&lt;b&gt;Identifizierte Fehler&lt;/b&gt; (Ursprung in µm, Winkel in Grad)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;b&gt;Compensation&lt;/b&gt; of the nominal circle</source>
+        <translation>&lt;b&gt;Kompensation&lt;/b&gt; des Nennkreises</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&amp;Path</source>
+        <translation>Bah&amp;n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;PC</source>
+        <translation>S&amp;PC</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>C&amp;ircular test:</source>
+        <translation>Kreisform&amp;test:</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Compensate</source>
+        <translation>Kompensieren</translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
+        <translation>Dieses Projekt enthält keinen Kreisformtest. Fügen Sie einen Datensatz der Art „circular_test“ hinzu (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, ein Umlauf gegen und einer im Uhrzeigersinn), z. B. erzeugt mit metrofit-cli simulate circular.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Cannot identify this circular test:
+%1</source>
+        <translation>Dieser Kreisformtest kann nicht identifiziert werden:
+%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+13"/>
+        <source>%1 points, nominal circle R %2 mm about (%3, %4) mm; %n loop(s).</source>
+        <translation>
+            <numerusform>%1 Punkte, Nennkreis R %2 mm um (%3, %4) mm; %n Umlauf.</numerusform>
+            <numerusform>%1 Punkte, Nennkreis R %2 mm um (%3, %4) mm; %n Umläufe.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>origin x (µm)</source>
+        <translation>Ursprung x (µm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
+        <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), x</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>origin y (µm)</source>
+        <translation>Ursprung y (µm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
+        <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), y</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>X axis angle a (deg)</source>
+        <translation>Winkel der X-Achse a (Grad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
+        <translation>Der X-Antrieb bewegt sich entlang (cos a, sin a); gegen den Uhrzeigersinn positiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Y axis angle b (deg)</source>
+        <translation>Winkel der Y-Achse b (Grad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
+        <translation>Der Y-Antrieb bewegt sich entlang (-sin b, cos b); gegen den Uhrzeigersinn positiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>squareness b − a (deg)</source>
+        <translation>Rechtwinkligkeit b − a (Grad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The angle between the axes is 90° + (b − a)</source>
+        <translation>Der Winkel zwischen den Achsen beträgt 90° + (b − a)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMS residual (µm)</source>
+        <translation>RMS-Residuum (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Root mean square of the residual distances after identification</source>
+        <translation>Quadratischer Mittelwert der Restabstände nach der Identifikation</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>iterations</source>
+        <translation>Iterationen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Path (XY)</source>
+        <translation>Bahn (XY)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Radial deviation (polar, magnified)</source>
+        <translation>Radiale Abweichung (polar, vergrößert)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot chart the SPC series:
+%1</source>
+        <translation>Die SPC-Reihe kann nicht dargestellt werden:
+%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The kinematics study names no SPC series. Set &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} in the project&apos;s kinematics study.</source>
+        <translation>Die Kinematikstudie nennt keine SPC-Reihe. Setzen Sie &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} in der Kinematikstudie des Projekts.</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>measured (before)</source>
+        <translation>gemessen (vorher)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest |radial deviation| of the measured path from the nominal circle</source>
+        <translation>Größte |radiale Abweichung| der gemessenen Bahn vom Nennkreis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>identified model, after</source>
+        <translation>identifiziertes Modell, nachher</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The compensated references run through the identified model (Eq. 9): on the circle up to rounding</source>
+        <translation>Die kompensierten Sollwerte durch das identifizierte Modell (Gl. 9) geführt: bis auf Rundung auf dem Kreis</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>expected after (measured residual)</source>
+        <translation>erwartet nachher (gemessenes Residuum)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The measured path moved by what the references change: the residual the model does not explain (noise, unmodelled effects) stays</source>
+        <translation>Die gemessene Bahn, verschoben um die Änderung der Sollwerte: das vom Modell nicht erklärte Residuum (Rauschen, nicht modellierte Effekte) bleibt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>simulated machine, after</source>
+        <translation>simulierte Maschine, nachher</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The references run through the simulated machine (the true errors of the study), noise free</source>
+        <translation>Die Sollwerte durch die simulierte Maschine geführt (die wahren Fehler der Studie), rauschfrei</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>largest correction</source>
+        <translation>größte Korrektur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest |reference − nominal point|</source>
+        <translation>Größter |Sollwert − Nennpunkt|</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>Export compensated path as G-code</source>
+        <translation>Kompensierte Bahn als G-Code exportieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>G-code (*.nc *.ngc *.gcode)</source>
+        <translation>G-Code (*.nc *.ngc *.gcode)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export G-code</source>
+        <translation>G-Code exportieren</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Export compensated path as STEP-NC</source>
+        <translation>Kompensierte Bahn als STEP-NC exportieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>STEP-NC Part 21 (*.p21 *.stp)</source>
+        <translation>STEP-NC Part 21 (*.p21 *.stp)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export STEP-NC</source>
+        <translation>STEP-NC exportieren</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+42"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+44"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Metrofit-Projekte (*.metrofit)</translation>
     </message>
@@ -222,12 +942,12 @@
     </message>
     <message>
         <location line="+4"/>
-        <location line="+100"/>
+        <location line="+102"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location line="-99"/>
+        <location line="-101"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
@@ -289,7 +1009,7 @@
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>&amp;About Metrofit</source>
         <translation>Ü&amp;ber Metrofit</translation>
     </message>
@@ -417,9 +1137,238 @@
     </message>
 </context>
 <context>
+    <name>metrofit::MatchingCurveView</name>
+    <message>
+        <location filename="../widgets/pointview/matchingcurveview.cpp" line="+88"/>
+        <source>generation</source>
+        <translation>Generation</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>best objective, RMS of Eq. (8) (mm)</source>
+        <translation>beste Zielfunktion, RMS aus Gl. (8) (mm)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Optimisation curve: run SADE or GA-simplex</source>
+        <translation>Optimierungsverlauf: SADE oder GA-Simplex ausführen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Optimisation curve of the fine matching</source>
+        <translation>Optimierungsverlauf der Feinausrichtung</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>least-squares optimum %1 mm</source>
+        <translation>Optimum kleinster Quadrate %1 mm</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+57"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+47"/>
+        <source>SADE (rough + fine, paper settings)</source>
+        <translation>SADE (grob + fein, Originalparameter)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GA-simplex (rough + fine)</source>
+        <translation>GA-Simplex (grob + fein)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Closed form (least-squares optimum)</source>
+        <translation>Geschlossene Form (Optimum kleinster Quadrate)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Minimax (smallest largest deviation)</source>
+        <translation>Minimax (kleinste größte Abweichung)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>closed form</source>
+        <translation>geschlossene Form</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>minimax</source>
+        <translation>Minimax</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>Allow &amp;scale</source>
+        <translation>&amp;Skalierung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Run</source>
+        <translation>A&amp;usführen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>The posture shown after matching and used for the machine adjustment (every method is run for the comparison table)</source>
+        <translation>Die nach der Ausrichtung angezeigte und für die Maschineneinstellung verwendete Lage (für die Vergleichstabelle wird jede Methode ausgeführt)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Symmetric tolerance ±T of every point (mm)</source>
+        <translation>Symmetrische Toleranz ±T jedes Punktes (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fit an isotropic scale too (e.g. thermal expansion of the part)</source>
+        <translation>Zusätzlich einen isotropen Maßstab anpassen (z. B. Wärmedehnung des Werkstücks)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run every matching method on these points (Ctrl+R)</source>
+        <translation>Alle Ausrichtungsmethoden auf diese Punkte anwenden (Strg+R)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop the running SADE / GA-simplex search (Esc)</source>
+        <translation>Die laufende SADE- / GA-Simplex-Suche anhalten (Esc)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rx (deg)</source>
+        <translation>rx (Grad)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ry (deg)</source>
+        <translation>ry (Grad)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rz (deg)</source>
+        <translation>rz (Grad)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>z (mm)</source>
+        <translation>z (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>scale</source>
+        <translation>Maßstab</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+22"/>
+        <source>RMSE (mm)</source>
+        <translation>RMSE (mm)</translation>
+    </message>
+    <message>
+        <location line="-21"/>
+        <source>max |d| (mm)</source>
+        <translation>max |d| (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out before</source>
+        <translation>außerhalb vorher</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out after</source>
+        <translation>außerhalb nachher</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>time (ms)</source>
+        <translation>Zeit (ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Round</source>
+        <translation>Runde</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max |d| measured (mm)</source>
+        <translation>max |d| gemessen (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out of tolerance</source>
+        <translation>außerhalb der Toleranz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SX (mm)</source>
+        <translation>SX (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>SY (mm)</source>
+        <translation>SY (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>SZ (mm)</source>
+        <translation>SZ (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rotary 1 (deg)</source>
+        <translation>Drehachse 1 (Grad)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rotary 2 (deg)</source>
+        <translation>Drehachse 2 (Grad)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>frame rot. (deg)</source>
+        <translation>Koord.-Drehung (Grad)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
@@ -434,22 +1383,238 @@
         <translation>Abweichung vorher (mm)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+0"/>
+        <source>Deviation after (mm)</source>
+        <translation>Abweichung nachher (mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Methods and &amp;machine</source>
+        <translation>Methoden und &amp;Maschine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Optimisation curve</source>
+        <translation>&amp;Optimierungsverlauf</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Re&amp;measure loop</source>
+        <translation>&amp;Nachmessschleife</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Points</source>
+        <translation>&amp;Punkte</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>&amp;Probe points:</source>
         <translation>&amp;Antastpunkte:</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+9"/>
+        <source>M&amp;ethod:</source>
+        <translation>M&amp;ethode:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Tolerance ±</source>
+        <translation>&amp;Toleranz ±</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Lock:</source>
+        <translation>Sperren:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Hold %1 at 0 (a constrained optimum over the other parameters)</source>
+        <translation>%1 auf 0 halten (ein beschränktes Optimum über die übrigen Parameter)</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Change the matching method</source>
+        <translation>Ausrichtungsmethode ändern</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Change the matching tolerance</source>
+        <translation>Ausrichtungstoleranz ändern</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Change the matching scale</source>
+        <translation>Skalierung der Ausrichtung ändern</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Change the matching locks</source>
+        <translation>Sperren der Ausrichtung ändern</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+210"/>
+        <location line="+12"/>
+        <source>Matching failed: %1</source>
+        <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="-149"/>
+        <source>The matching study&apos;s settings are invalid: %1</source>
+        <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig: %1</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Fügen Sie der Projektdatei einen Datensatz der Art „probe_points“ hinzu (Kennung, Fläche, Sollpunkt, Normale, Messpunkt).</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <source>%1 points on %2 surfaces, %3. Before matching: RMS deviation %4 mm, largest %5 mm.</source>
-        <translation>%1 Punkte auf %2 Flächen, %3. Vor der Ausrichtung: Effektivwert der Abweichung %4 mm, größte %5 mm.</translation>
+        <location line="+12"/>
+        <source>%1 points on %2 surfaces, %3%4.</source>
+        <translation>%1 Punkte auf %2 Flächen, %3%4.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+86"/>
+        <source>Settings changed: press Run (Ctrl+R) to match again.</source>
+        <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Matching …</source>
+        <translation>Ausrichtung läuft …</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>(The loop ran with the previous tolerance: Run again.)</source>
+        <translation>(Die Schleife lief mit der vorherigen Toleranz: erneut ausführen.)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: %2 of %3 points out of ±%4 mm before, %5 after; RMSE %6 mm, max |d| %7 mm.%8</source>
+        <translation>%1: %2 von %3 Punkten außerhalb ±%4 mm vorher, %5 nachher; RMSE %6 mm, max |d| %7 mm.%8</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source> Cancelled: the best posture found so far.</source>
+        <translation> Abgebrochen: die bisher beste gefundene Lage.</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>BEFORE matching
+%1 of %2 out of ±%3 mm, max |d| %4 mm</source>
+        <translation>VOR der Ausrichtung
+%1 von %2 außerhalb ±%3 mm, max |d| %4 mm</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>AFTER matching
+not run yet: press Run (Ctrl+R)</source>
+        <translation>NACH der Ausrichtung
+noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>AFTER matching (%1)
+%2 of %3 out of ±%4 mm, max |d| %5 mm</source>
+        <translation>NACH der Ausrichtung (%1)
+%2 von %3 außerhalb ±%4 mm, max |d| %5 mm</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Shown after matching and used for the machine adjustment</source>
+        <translation>Nach der Ausrichtung angezeigt und für die Maschineneinstellung verwendet</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Rough</source>
+        <translation>Grob</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rough matching: 3-point local frames, Eq. 3–7</source>
+        <translation>Grobausrichtung: lokale 3-Punkt-Koordinatensysteme, Gl. 3–7</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Machine adjustment values for %1 (%2), posture of %3. %4</source>
+        <translation>Maschineneinstellwerte für %1 (%2), Lage aus %3. %4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>head-head, Eq. 12–13</source>
+        <translation>Kopf-Kopf, Gl. 12–13</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table-table trunnion</source>
+        <translation>Tisch-Tisch, Schwenkbrücke</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Within travel.</source>
+        <translation>Innerhalb des Verfahrwegs.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OUTSIDE TRAVEL: %1</source>
+        <translation>AUSSERHALB DES VERFAHRWEGS: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>deg</source>
+        <translation>Grad</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>frame rotation</source>
+        <translation>Drehung des Koordinatensystems</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The remeasure loop did not run.</source>
+        <translation>Die Nachmessschleife wurde nicht ausgeführt.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+1"/>
+        <source>S%1 (deg)</source>
+        <translation>S%1 (Grad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Step 7 with the simulator as machine and CMM (true posture: the %1 fit, probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
+        <translation>Schritt 7 mit dem Simulator als Maschine und KMG (wahre Lage: die %1-Anpassung, Antastrauschen %2 mm): messen, ausrichten, WKS anpassen, nachmessen. %3</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>Every point is inside the tolerance after %n adjustment(s).</source>
+        <translation>
+            <numerusform>Nach %n Einstellung liegt jeder Punkt innerhalb der Toleranz.</numerusform>
+            <numerusform>Nach %n Einstellungen liegt jeder Punkt innerhalb der Toleranz.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Still out of tolerance after the last adjustment.</source>
+        <translation>Nach der letzten Einstellung weiterhin außerhalb der Toleranz.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>in tolerance: no adjustment</source>
+        <translation>in Toleranz: keine Einstellung</translation>
+    </message>
+    <message>
+        <location line="-352"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -459,12 +1624,22 @@
         <translation>nur Positionen</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
+        <source>, planar</source>
+        <translation>, eben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Licence: %1.</source>
         <translation>Lizenz: %1.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+3"/>
+        <source>Not matched yet: press Run (Ctrl+R).</source>
+        <translation>Noch nicht ausgerichtet: Ausführen drücken (Strg+R).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Cannot show these probe points:
 %1</source>
         <translation>Diese Antastpunkte können nicht angezeigt werden:
@@ -523,6 +1698,22 @@
     </message>
 </context>
 <context>
+    <name>metrofit::PointSetView</name>
+    <message>
+        <location filename="../widgets/pointview/pointsetview.cpp" line="+540"/>
+        <source>3D view needs an X11 display (run under xvfb-run for headless use)</source>
+        <translation>Die 3D-Ansicht benötigt eine X11-Anzeige (ohne Bildschirm unter xvfb-run starten)</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::PolarDeviationView</name>
+    <message>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-57"/>
+        <source>Radial deviation of the measured path from the nominal circle, magnified (ballbar plot): plotted radius = R + k × deviation. Blue: CCW loop, orange: CW loop; the rings are labelled in µm.</source>
+        <translation>Radiale Abweichung der gemessenen Bahn vom Nennkreis, vergrößert (Ballbar-Diagramm): dargestellter Radius = R + k × Abweichung. Blau: Umlauf gegen den Uhrzeigersinn, orange: im Uhrzeigersinn; die Ringe sind in µm beschriftet.</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::PreferencesDialog</name>
     <message>
         <location filename="../app/gui/preferencesdialog.cpp" line="+16"/>
@@ -558,7 +1749,7 @@
 <context>
     <name>metrofit::ProjectDocument</name>
     <message>
-        <location filename="../widgets/document/projectdocument.cpp" line="+30"/>
+        <location filename="../widgets/document/projectdocument.cpp" line="+32"/>
         <source>Rename project</source>
         <translation>Projekt umbenennen</translation>
     </message>
@@ -573,12 +1764,12 @@
         <translation>Notizen zu „%1“ bearbeiten</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+118"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+121"/>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>das Projekt wurde noch nicht gespeichert; wählen Sie mit „Speichern unter“ einen Dateinamen</translation>
     </message>
@@ -595,6 +1786,1399 @@
         <location line="+9"/>
         <source>%1 (Ctrl+%2)</source>
         <translation>%1 (Strg+%2)</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::Report</name>
+    <message>
+        <location filename="../widgets/report/diagnosissection.cpp" line="+38"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+486"/>
+        <source>Thermal</source>
+        <translation>Thermik</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kinematic</source>
+        <translation>Kinematik</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Setup data</source>
+        <translation>Einrichtdaten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Posture matching</source>
+        <translation>Lageausrichtung</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>rmse %1 %2, max |e| %3 %2</source>
+        <translation>rmse %1 %2, max |e| %3 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, held-out rmse %1 %2</source>
+        <translation>, rmse Testdaten %1 %2</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The diagnosis could not run: %1</source>
+        <translation>Die Diagnose konnte nicht ausgeführt werden: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Declared model: %1 a static linear function of %2, fitted on the first %3 % of the rows and held out on the rest.</source>
+        <translation>Deklariertes Modell: %1 als statische lineare Funktion von %2, angepasst an den ersten %3 % der Zeilen, der Rest dient als Testdaten.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Declared model: the Cartesian machine&apos;s actuator errors (origin, axis angles).</source>
+        <translation>Deklariertes Modell: die Antriebsfehler der kartesischen Maschine (Ursprung, Achswinkel).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Declared model: constant setup-data errors acting through the relation graph of %1.</source>
+        <translation>Deklariertes Modell: konstante Einrichtdatenfehler, die über den Beziehungsgraphen von %1 wirken.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Declared model: a rigid posture error (rotation and translation); tolerance ±%1 mm.</source>
+        <translation>Deklariertes Modell: ein starrer Lagefehler (Rotation und Translation); Toleranz ±%1 mm.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Step 0, the declared model: %1.</source>
+        <translation>Schritt 0, das deklarierte Modell: %1.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>effect</source>
+        <translation>Effekt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>parameters ± standard error</source>
+        <translation>Parameter ± Standardfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rmse (%1)</source>
+        <translation>rmse (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>held-out (%1)</source>
+        <translation>Testdaten (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accepted</source>
+        <translation>übernommen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+206"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-199"/>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+0"/>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Evidence, per candidate (# = loop round):</source>
+        <translation>Evidenz je Kandidat (# = Runde der Schleife):</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No candidate passed the evidence test: the declared model is kept. %1.</source>
+        <translation>Kein Kandidat hat den Evidenztest bestanden: das deklarierte Modell bleibt. %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Accepted: %1. Final model: %2.</source>
+        <translation>Übernommen: %1. Endgültiges Modell: %2.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Residual before and after %1</source>
+        <translation>Residuen vor und nach %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+176"/>
+        <source>error (%1)</source>
+        <translation>Fehler (%1)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>declared model</source>
+        <translation>deklariertes Modell</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>with accepted effects</source>
+        <translation>mit übernommenen Effekten</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>rmse (fitted data)</source>
+        <translation>rmse (Anpassungsdaten)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max |e| (fitted data)</source>
+        <translation>max |e| (Anpassungsdaten)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>rmse (held-out rows)</source>
+        <translation>rmse (Testdaten)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Closed loop: diagnosis</source>
+        <translation>Geschlossener Kreis: Diagnose</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>For each study the declared model is fitted and its residual computed; candidate effects the model lacks are tried one by one, each estimated with its parameters and their standard errors. An effect is accepted only on evidence (out-of-sample improvement for thermal, an information criterion with a conservative threshold elsewhere) and when it reduces the error by a practically relevant amount; the model is refitted with it and the search repeated until nothing more is found.</source>
+        <translation>Für jede Studie wird das deklarierte Modell angepasst und sein Residuum berechnet; Kandidateneffekte, die dem Modell fehlen, werden einzeln getestet und jeweils mit ihren Parametern und deren Standardfehlern geschätzt. Ein Effekt wird nur bei ausreichender Evidenz übernommen (Verbesserung auf den Testdaten bei Thermik, sonst ein Informationskriterium mit konservativer Schwelle) und wenn er den Fehler praktisch relevant verringert; das Modell wird mit ihm neu angepasst und die Suche wiederholt, bis nichts mehr gefunden wird.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-158"/>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>identified</source>
+        <translation>identifiziert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>standard error</source>
+        <translation>Standardfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>simulated (true)</source>
+        <translation>simuliert (wahr)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>origin x (µm)</source>
+        <translation>Ursprung x (µm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>origin y (µm)</source>
+        <translation>Ursprung y (µm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>X axis angle a (deg)</source>
+        <translation>Winkel der X-Achse a (Grad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Y axis angle b (deg)</source>
+        <translation>Winkel der Y-Achse b (Grad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>squareness b − a (deg)</source>
+        <translation>Rechtwinkligkeit b − a (Grad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS residual (µm)</source>
+        <translation>RMS-Residuum (µm)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+191"/>
+        <source>Circular test “%1”</source>
+        <translation>Kreisformtest „%1“</translation>
+    </message>
+    <message>
+        <location line="-183"/>
+        <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (seed 002, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
+        <translation>%1 Punkte; Nennkreis R %2 mm um (%3, %4) mm; %5 Umläufe (gegen, dann im Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (Quelle 002, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt identifiziert (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Path (XY)</source>
+        <translation>Bahn (XY)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Radial deviation (polar, magnified)</source>
+        <translation>Radiale Abweichung (polar, vergrößert)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Compensation</source>
+        <translation>Kompensation</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Compensated references for the nominal circle (the commanded points of the test) from the identified errors (Eq. 15), and the largest |radial deviation| from the nominal circle before and after:</source>
+        <translation>Kompensierte Sollwerte für den Nennkreis (die programmierten Punkte des Tests) aus den identifizierten Fehlern (Gl. 15) und die größte |radiale Abweichung| vom Nennkreis vorher und nachher:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>path</source>
+        <translation>Bahn</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max. dev. (µm)</source>
+        <translation>max. Abw. (µm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>measured, before compensation</source>
+        <translation>gemessen, vor der Kompensation</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>after, through the simulated machine (true errors, noise free)</source>
+        <translation>nachher, durch die simulierte Maschine (wahre Fehler, rauschfrei)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>after, expected from the measured residual (noise stays)</source>
+        <translation>nachher, erwartet aus dem gemessenen Residuum (Rauschen bleibt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>after, through the identified model</source>
+        <translation>nachher, durch das identifizierte Modell</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>largest correction |reference − nominal|</source>
+        <translation>größte Korrektur |Sollwert − Nennwert|</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Statistical process control</source>
+        <translation>Statistische Prozessregelung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The SPC series could not be charted: %1</source>
+        <translation>Die SPC-Reihe konnte nicht dargestellt werden: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Statistical process control of “%1” (%2)</source>
+        <translation>Statistische Prozessregelung von „%1“ (%2)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Histogram of %1 (%2 values)</source>
+        <translation>Histogramm von %1 (%2 Werte)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>index</source>
+        <translation>Index</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+366"/>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>subgroups × size</source>
+        <translation>Untergruppen × Umfang</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A2 / D3 / D4</source>
+        <translation>A2 / D3 / D4</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>X-bar chart CL / UCL / LCL</source>
+        <translation>x̄-Karte CL / UCL / LCL</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>R chart CL / UCL / LCL</source>
+        <translation>R-Karte CL / UCL / LCL</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>in control</source>
+        <translation>beherrscht</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>σ within (R̄ / d2)</source>
+        <translation>σ innerhalb (R̄ / d2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>LSL / USL</source>
+        <translation>LSL / USL</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cp (Eq. 16) / Cpk</source>
+        <translation>Cp (Gl. 16) / Cpk</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>natural tolerance (Eq. 17)</source>
+        <translation>natürliche Toleranz (Gl. 17)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>systematic error (Eq. 20)</source>
+        <translation>systematischer Fehler (Gl. 20)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%2 ± %3 (%4)</source>
+        <translation>%1%2 ± %3 (%4)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>significant</source>
+        <translation>signifikant</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not significant</source>
+        <translation>nicht signifikant</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>regression offset angle (Fig. 10)</source>
+        <translation>Versatzwinkel der Regression (Abb. 10)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1° (slope %2%3 per sample, r² %4)</source>
+        <translation>%1° (Steigung %2%3 je Probe, r² %4)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>SPC-gated compensation: %1</source>
+        <translation>SPC-gesteuerte Kompensation: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Kinematic compensation and SPC</source>
+        <translation>Kinematische Kompensation und SPC</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Cannot analyse this circular test: %1</source>
+        <translation>Dieser Kreisformtest kann nicht analysiert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/matchingsection.cpp" line="-325"/>
+        <source>SADE (paper settings)</source>
+        <translation>SADE (Originalparameter)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GA-simplex</source>
+        <translation>GA-Simplex</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>closed form (LS optimum)</source>
+        <translation>geschlossene Form (LS-Optimum)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>minimax</source>
+        <translation>Minimax</translation>
+    </message>
+    <message>
+        <location line="+189"/>
+        <source>Probe points “%1”, tolerance ±%2 mm</source>
+        <translation>Antastpunkte „%1“, Toleranz ±%2 mm</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Every method was run on the %1 points (%2). The posture after matching is that of %3; the machine adjustment values are for the study&apos;s %4 machine. Deviation: %5.</source>
+        <translation>Jede Methode wurde auf die %1 Punkte angewendet (%2). Die Lage nach der Ausrichtung ist die von %3; die Maschineneinstellwerte gelten für die %4-Maschine der Studie. Abweichung: %5.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>with normals</source>
+        <translation>mit Normalen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>positions only</source>
+        <translation>nur Positionen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>along the nominal normal</source>
+        <translation>entlang der Nennnormalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>distance |p − (sRq + t)|</source>
+        <translation>Abstand |p − (sRq + t)|</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Before matching</source>
+        <translation>Vor der Ausrichtung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+6"/>
+        <source>%1 of %2 out of ±%3 mm, max |d| %4 mm</source>
+        <translation>%1 von %2 außerhalb ±%3 mm, max |d| %4 mm</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>After %1</source>
+        <translation>Nach %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1; grey: nominal points; lines: deviation vectors ×%2 (both views); large outlined points: out of tolerance.</source>
+        <translation>%1; grau: Nennpunkte; Linien: Abweichungsvektoren ×%2 (beide Ansichten); große umrandete Punkte: außerhalb der Toleranz.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Top view</source>
+        <translation>Draufsicht</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Oblique view as in the program</source>
+        <translation>Schrägansicht wie im Programm</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>before: deviation (mm), green = within ±%1</source>
+        <translation>vorher: Abweichung (mm), grün = innerhalb ±%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>after: deviation (mm), green = within ±%1</source>
+        <translation>nachher: Abweichung (mm), grün = innerhalb ±%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location filename="../widgets/report/probesection.cpp" line="+324"/>
+        <source>surface</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location filename="../widgets/report/probesection.cpp" line="-39"/>
+        <location line="+39"/>
+        <source>points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMSE before</source>
+        <translation>RMSE vorher</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max before</source>
+        <translation>max vorher</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out before</source>
+        <translation>außerhalb vorher</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMSE after</source>
+        <translation>RMSE nachher</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max after</source>
+        <translation>max nachher</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out after</source>
+        <translation>außerhalb nachher</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location filename="../widgets/report/probesection.cpp" line="+13"/>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>all</source>
+        <translation>alle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Deviations before and after %1 (mm)</source>
+        <translation>Abweichungen vor und nach %1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+177"/>
+        <source>method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rx, ry, rz (deg)</source>
+        <translation>rx, ry, rz (Grad)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>x, y, z (mm)</source>
+        <translation>x, y, z (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMSE</source>
+        <translation>RMSE</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max |d|</source>
+        <translation>max |d|</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out</source>
+        <translation>außerhalb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>evals</source>
+        <translation>Auswert.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>rough</source>
+        <translation>grob</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Methods (RMSE and max |d| in mm)</source>
+        <translation>Methoden (RMSE und max |d| in mm)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>frame rotation</source>
+        <translation>Drehung des Koordinatensystems</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Machine adjustment values (%1%2)</source>
+        <translation>Maschineneinstellwerte (%1%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, OUTSIDE TRAVEL</source>
+        <translation>, AUSSERHALB DES VERFAHRWEGS</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>round</source>
+        <translation>Runde</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max |d| (mm)</source>
+        <translation>max |d| (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out of tol.</source>
+        <translation>außer Tol.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SX, SY, SZ (mm)</source>
+        <translation>SX, SY, SZ (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S%1, S%2 (deg)</source>
+        <translation>S%1, S%2 (Grad)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>in tolerance</source>
+        <translation>in Toleranz</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Remeasure loop (simulated machine and CMM)</source>
+        <translation>Nachmessschleife (simulierte Maschine und KMG)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Posture matching — before and after</source>
+        <translation>Lageausrichtung — vorher und nachher</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>The matching study&apos;s probe points could not be found.</source>
+        <translation>Die Antastpunkte der Ausrichtungsstudie wurden nicht gefunden.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/probesection.cpp" line="-267"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location line="+134"/>
+        <location line="+5"/>
+        <source>%1 (mm)</source>
+        <translation>%1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Probe points “%1”</source>
+        <translation>Antastpunkte „%1“</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <location filename="../widgets/report/report.cpp" line="+106"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-72"/>
+        <location line="+35"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-207"/>
+        <source>file</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>surfaces</source>
+        <translation>Flächen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deviation</source>
+        <translation>Abweichung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>along the nominal normal, before matching</source>
+        <translation>entlang der Nennnormalen, vor der Ausrichtung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>distance |p − q| (no normals), before matching</source>
+        <translation>Abstand |p − q| (ohne Normalen), vor der Ausrichtung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mean |deviation|</source>
+        <translation>mittlere |Abweichung|</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMS deviation</source>
+        <translation>RMS-Abweichung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max |deviation|</source>
+        <translation>max |Abweichung|</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (point %2)</source>
+        <translation>%1 (Punkt %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+29"/>
+        <source>outside ±%1 mm</source>
+        <translation>außerhalb ±%1 mm</translation>
+    </message>
+    <message>
+        <location line="-28"/>
+        <source>%1 of %2</source>
+        <translation>%1 von %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>mean deviation</source>
+        <translation>mittlere Abweichung</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+5"/>
+        <source>Top view (XY)</source>
+        <translation>Draufsicht (XY)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Front view (XZ)</source>
+        <translation>Vorderansicht (XZ)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>deviation along the normal (mm)</source>
+        <translation>Abweichung entlang der Normalen (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>distance |p − q| (mm)</source>
+        <translation>Abstand |p − q| (mm)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>mean deviation (mm)</source>
+        <translation>mittlere Abweichung (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>mean distance (mm)</source>
+        <translation>mittlerer Abstand (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max |deviation| (mm)</source>
+        <translation>max |Abweichung| (mm)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Posture matching — probe points</source>
+        <translation>Lageausrichtung — Antastpunkte</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/report.cpp" line="-16"/>
+        <source>Metrofit report</source>
+        <translation>Metrofit-Bericht</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>project</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Metrofit version</source>
+        <translation>Metrofit-Version</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Datasets</source>
+        <translation>Datensätze</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>id</source>
+        <translation>Kennung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+67"/>
+        <source>kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rows / points</source>
+        <translation>Zeilen / Punkte</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>licence</source>
+        <translation>Lizenz</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The project references no datasets.</source>
+        <translation>Das Projekt verweist auf keine Datensätze.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Contents</source>
+        <translation>Inhalt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The project has no data a section of this report could show yet.</source>
+        <translation>Das Projekt enthält noch keine Daten, die ein Abschnitt dieses Berichts zeigen könnte.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>section</source>
+        <translation>Abschnitt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>page</source>
+        <translation>Seite</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <location filename="../widgets/report/reportpainter.cpp" line="+106"/>
+        <source>Metrofit %1</source>
+        <translation>Metrofit %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/reportpainter.cpp" line="+12"/>
+        <source>page %1 of %2</source>
+        <translation>Seite %1 von %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>page %1</source>
+        <translation>Seite %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/setupsection.cpp" line="-157"/>
+        <source>machine point</source>
+        <translation>Maschinenpunkt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>work offset</source>
+        <translation>Nullpunktverschiebung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>tool length</source>
+        <translation>Werkzeuglänge</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Setup-data correction</source>
+        <translation>Einrichtdatenkorrektur</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Model “%1”</source>
+        <translation>Modell „%1“</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>setup data</source>
+        <translation>Einrichtdaten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1: %2 work offsets, %3 tools, %4 machine points</source>
+        <translation>%1: %2 Nullpunktverschiebungen, %3 Werkzeuge, %4 Maschinenpunkte</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>features</source>
+        <translation>Formelemente</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dimensions</source>
+        <translation>Maße</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>arcs</source>
+        <translation>Kanten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>decision space</source>
+        <translation>Entscheidungsraum</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>axis %1, grid %2 mm, bounds [%3, %4] mm</source>
+        <translation>Achse %1, Raster %2 mm, Grenzen [%3, %4] mm</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The project has no CMM report for this model: nothing to correct.</source>
+        <translation>Das Projekt hat keinen KMG-Messbericht für dieses Modell: nichts zu korrigieren.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Report data “%1”</source>
+        <translation>Berichtsdaten „%1“</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>parts</source>
+        <translation>Werkstücke</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+1"/>
+        <location line="+134"/>
+        <source>rows</source>
+        <translation>Zeilen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (deviation of a dimension: mean over its rows)</source>
+        <translation>%1 (Abweichung eines Maßes: Mittelwert über seine Zeilen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>before correction</source>
+        <translation>vor der Korrektur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>f1 = %1 mm; %2 of %3 mean deviations out of tolerance</source>
+        <translation>f1 = %1 mm; %2 von %3 mittleren Abweichungen außerhalb der Toleranz</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Objectives as the paper (Stryczek 2016, Eq. 6–10): f1 = the smallest unilateral error budget over all dimensions after correction (maximised), f2 = |x| (minimised among the f1-optimal), f = 10 f1 − f2. Exact: LP / MILP on the %1 mm grid (GLPK), then the least-norm correction. CRIPSO: 100 polyps, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 particles, asynchronous gbest, same coefficients. Budget %2 solutions, seed %3.</source>
+        <translation>Zielfunktionen wie in der Veröffentlichung (Stryczek 2016, Gl. 6–10): f1 = das kleinste einseitige Fehlerbudget über alle Maße nach der Korrektur (maximiert), f2 = |x| (minimiert unter den f1-optimalen), f = 10 f1 − f2. Exakt: LP / MILP auf dem %1-mm-Raster (GLPK), danach die Korrektur mit kleinster Norm. CRIPSO: 100 Polypen, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 Partikel, asynchrones gbest, gleiche Koeffizienten. Budget %2 Lösungen, Startwert %3.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Convergence</source>
+        <translation>Konvergenz</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Comparison</source>
+        <translation>Vergleich</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>f1 (mm)</source>
+        <translation>f1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>f2 (mm)</source>
+        <translation>f2 (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f</source>
+        <translation>f</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bonus (mm)</source>
+        <translation>Bonus (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>gap f1 (mm)</source>
+        <translation>Abstand f1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>solutions</source>
+        <translation>Lösungen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Exact certificate: f1 %1 on the grid, |x| %2 among the f1-optimal corrections (%3 LP / MILP solver calls). Gap f1: the exact f1 minus the method&apos;s.</source>
+        <translation>Exakter Nachweis: f1 %1 auf dem Raster, |x| %2 unter den f1-optimalen Korrekturen (%3 LP-/MILP-Solver-Aufrufe). Abstand f1: das exakte f1 minus das der Methode.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>proven optimal</source>
+        <translation>nachweislich optimal</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>NOT proven optimal</source>
+        <translation>NICHT nachweislich optimal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>proven minimal</source>
+        <translation>nachweislich minimal</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not proven minimal</source>
+        <translation>nicht nachweislich minimal</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Corrections (mm, to add to the registers along %1)</source>
+        <translation>Korrekturen (mm, entlang %1 zu den Registern zu addieren)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>setup datum</source>
+        <translation>Einrichtdatum</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>register</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>exact</source>
+        <translation>exakt</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Margins per dimension, before and after the exact correction</source>
+        <translation>Abstände je Maß, vor und nach der exakten Korrektur</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Export for the controller (Fanuc, exact corrections)</source>
+        <translation>Export für die Steuerung (Fanuc, exakte Korrekturen)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>metrofit-cli setup --export fanuc writes the same text; Heidenhain, Siemens and CSV are the other formats (see the sign convention in the header).</source>
+        <translation>metrofit-cli setup --export fanuc schreibt denselben Text; Heidenhain, Siemens und CSV sind die weiteren Formate (siehe die Vorzeichenkonvention im Kopf).</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/thermalsection.cpp" line="-221"/>
+        <source>%1 h</source>
+        <translation>%1 h</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+23"/>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%n temperature(s)</source>
+        <translation>Temperaturen: %n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%n displacement(s)</source>
+        <translation>Verlagerungen: %n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%n strain(s)</source>
+        <translation>Dehnungen: %n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%n speed(s)</source>
+        <translation>Drehzahlen: %n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%n other</source>
+        <translation>sonstige: %n</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 heating, %2 cooling, from the speed channel %3 (running = heating)</source>
+        <translation>%1 Erwärmung, %2 Abkühlung, aus dem Drehzahlkanal %3 (läuft = Erwärmung)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 heating, %2 cooling, from the slope of the mean temperature</source>
+        <translation>%1 Erwärmung, %2 Abkühlung, aus der Steigung der mittleren Temperatur</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>none detected</source>
+        <translation>keine erkannt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Thermal log “%1”</source>
+        <translation>Thermoprotokoll „%1“</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1, every %2 (median), time column %3</source>
+        <translation>%1, alle %2 (Median), Zeitspalte %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>channels</source>
+        <translation>Kanäle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>phases</source>
+        <translation>Phasen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chart</source>
+        <translation>Diagramm</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 of %2 channels shown; the table lists all</source>
+        <translation>%1 von %2 Kanälen angezeigt; die Tabelle listet alle</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>channel</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>quantity</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>in chart</source>
+        <translation>im Diagramm</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Hysteresis</source>
+        <translation>Hysterese</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No hysteresis analysis: %1</source>
+        <translation>Keine Hystereseanalyse: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 against each sensor (Fig. 9 of seed 004): heating runs (the change of %1 grows, %2 rows) and cooling runs (%3 rows) in the colours of the trend chart&apos;s phases. Loop area by the shoelace formula; lag: the time constant of a first-order lag between sensor and displacement (&gt; 0: the sensor lags).%4</source>
+        <translation>%1 über jedem Sensor (Abb. 9 aus Quelle 004): Erwärmungsphasen (die Änderung von %1 wächst, %2 Zeilen) und Abkühlungsphasen (%3 Zeilen) in den Farben der Phasen des Verlaufsdiagramms. Schleifenfläche nach der Gaußschen Trapezformel; Verzug: die Zeitkonstante eines Verzögerungsglieds erster Ordnung zwischen Sensor und Verlagerung (&gt; 0: der Sensor eilt nach).%4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
+        <translation>Diagramme der ersten %1 von %2 Sensoren; die Tabelle listet alle.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>sensor</source>
+        <translation>Sensor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>loop area</source>
+        <translation>Schleifenfläche</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>loop / ranges</source>
+        <translation>Schleife / Spannweiten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lag τ (min)</source>
+        <translation>Verzug τ (min)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R² with lag</source>
+        <translation>R² mit Verzug</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R² static</source>
+        <translation>R² statisch</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Thermal error models</source>
+        <translation>Modelle des thermischen Fehlers</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>GNNMCI(1,N) (PSO, 90 particles, 100 iterations, seed %1), GMC(1,N) (least squares) and the MLP (%2-10-1, Levenberg-Marquardt, seed %1) predict %3 from %4; each is fitted on the first %5 % of the rows and tested on the rest (held out, shaded).</source>
+        <translation>GNNMCI(1,N) (PSO, 90 Partikel, 100 Iterationen, Startwert %1), GMC(1,N) (kleinste Quadrate) und das MLP (%2-10-1, Levenberg-Marquardt, Startwert %1) sagen %3 aus %4 vorher; jedes wird an den ersten %5 % der Zeilen angepasst und am Rest getestet (Testdaten, schattiert).</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>To keep the report&apos;s run time short, this %1-row log is fitted on every %2th row (%3 rows); the GUI and metrofit-cli fit all rows.</source>
+        <translation>Um die Laufzeit des Berichts kurz zu halten, wird dieses Protokoll mit %1 Zeilen an jeder %2. Zeile angepasst (%3 Zeilen); die GUI und metrofit-cli verwenden alle Zeilen.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>The models could not be fitted: %1</source>
+        <translation>Die Modelle konnten nicht angepasst werden: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>residual = measured − model</source>
+        <translation>Residuum = gemessen − Modell</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+71"/>
+        <source>model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <location line="-70"/>
+        <location line="+76"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="-76"/>
+        <location line="+74"/>
+        <source>RMSE (%1)</source>
+        <translation>RMSE (%1)</translation>
+    </message>
+    <message>
+        <location line="-73"/>
+        <location line="+76"/>
+        <source>E</source>
+        <translation>E</translation>
+    </message>
+    <message>
+        <location line="-76"/>
+        <location line="+71"/>
+        <source>band (%1)</source>
+        <translation>Band (%1)</translation>
+    </message>
+    <message>
+        <location line="-60"/>
+        <source>%1 PSO iterations, Eq. 2.9 %2 → %3</source>
+        <translation>%1 PSO-Iterationen, Gl. 2.9 %2 → %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>least squares, b1 = %1</source>
+        <translation>kleinste Quadrate, b1 = %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>least squares, unstable: b1 = %1 ≤ 0</source>
+        <translation>kleinste Quadrate, instabil: b1 = %1 ≤ 0</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 LM epochs (%2)</source>
+        <translation>%1 LM-Epochen (%2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> (%1 s)</source>
+        <translation> (%1 s)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>diverges</source>
+        <translation>divergiert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fit, %1</source>
+        <translation>Anpassung, %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>held out, %1</source>
+        <translation>Testdaten, %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Performance indices (Table 4 of seed 004): R correlation, RMSE, E Nash-Sutcliffe efficiency, band = largest |residual|.</source>
+        <translation>Gütekennzahlen (Tabelle 4 aus Quelle 004): R Korrelation, RMSE, E Nash-Sutcliffe-Effizienz, Band = größtes |Residuum|.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Training: %1.</source>
+        <translation>Training: %1.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Modular models (Section 4.3)</source>
+        <translation>Modulare Modelle (Abschnitt 4.3)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The modular case could not be computed: %1</source>
+        <translation>Der modulare Fall konnte nicht berechnet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Each model is fitted on the Z-heating test (%1) and the C-heating test (%2) together and predicts the combined helical test (%3), which it has not seen. Target %4, inputs %5, seed 1. Error reduction as the paper states it: 1 − max|residual| / max|error|, and by RMS.</source>
+        <translation>Jedes Modell wird gemeinsam an den Z-Erwärmungstest (%1) und den C-Erwärmungstest (%2) angepasst und sagt den kombinierten Helix-Test (%3) vorher, den es nicht gesehen hat. Zielgröße %4, Eingänge %5, Startwert 1. Fehlerverringerung wie in der Veröffentlichung: 1 − max|Residuum| / max|Fehler| sowie nach RMS.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>less, peak</source>
+        <translation>weniger, Spitze</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>less, RMS</source>
+        <translation>weniger, RMS</translation>
     </message>
 </context>
 <context>
@@ -646,52 +3230,1726 @@
     </message>
 </context>
 <context>
-    <name>metrofit::StudyPage</name>
+    <name>metrofit::ResidualPlot</name>
     <message>
-        <location filename="../app/gui/studypage.cpp" line="+31"/>
-        <source>The views of this study are not part of this version of the workbench yet. Nothing has been computed: the datasets it will work on are listed below.</source>
-        <translation>Die Ansichten dieser Studie sind in dieser Version der Werkbank noch nicht enthalten. Es wurde nichts berechnet: Unten stehen die Datensätze, mit denen sie arbeiten wird.</translation>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="-266"/>
+        <source>before the effect</source>
+        <translation>vor dem Effekt</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <source>What this study does</source>
-        <translation>Was diese Studie leistet</translation>
+        <location line="+1"/>
+        <source>after</source>
+        <translation>nachher</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Datasets</source>
-        <translation>Datensätze</translation>
+        <location line="+23"/>
+        <source> (arrows × %1)</source>
+        <translation> (Pfeile × %1)</translation>
     </message>
+</context>
+<context>
+    <name>metrofit::ResidualPlotView</name>
     <message>
-        <location line="+6"/>
-        <source>Notes</source>
-        <translation>Notizen</translation>
+        <location line="+107"/>
+        <source>Residual plot: run the diagnosis (Ctrl+R)</source>
+        <translation>Residuendiagramm: Diagnose ausführen (Strg+R)</translation>
     </message>
     <message>
         <location line="+25"/>
-        <source>This project has no datasets for this study yet (it uses: %1).</source>
-        <translation>Dieses Projekt hat noch keine Datensätze für diese Studie (sie verwendet: %1).</translation>
+        <source>residual before the effect</source>
+        <translation>Residuum vor dem Effekt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>after</source>
+        <translation>nachher</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupCharts</name>
+    <message>
+        <location filename="../widgets/setup/setupcharts.cpp" line="+66"/>
+        <source>exact</source>
+        <translation>exakt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1, seed %2</source>
+        <translation>%1, Startwert %2</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>solid: f1</source>
+        <translation>durchgezogen: f1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dashed: f2 = |x|</source>
+        <translation>gestrichelt: f2 = |x|</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dotted: f = 10 f1 − f2 (right axis)</source>
+        <translation>gepunktet: f = 10 f1 − f2 (rechte Achse)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>solutions evaluated</source>
+        <translation>bewertete Lösungen</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Data this study uses: %1.</source>
-        <translation>Daten, die diese Studie verwendet: %1.</translation>
+        <source>f1, f2 (mm)</source>
+        <translation>f1, f2 (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+105"/>
+        <source>f1 (mm)</source>
+        <translation>f1 (mm)</translation>
+    </message>
+    <message>
+        <location line="-103"/>
+        <source>f = 10 f1 − f2 (mm)</source>
+        <translation>f = 10 f1 − f2 (mm)</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>exact optimum f1 = %1 mm</source>
+        <translation>exaktes Optimum f1 = %1 mm</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>exact f = %1</source>
+        <translation>exaktes f = %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>measurement set, sorted by f1 before correction</source>
+        <translation>Messreihe, sortiert nach f1 vor der Korrektur</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>before correction</source>
+        <translation>vor der Korrektur</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>exact optimum</source>
+        <translation>exaktes Optimum</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 trials</source>
+        <translation>%1 Versuche</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupConvergenceView</name>
+    <message>
+        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+27"/>
+        <source>Show f&amp;2 = |x|</source>
+        <translation>f&amp;2 = |x|</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show f = &amp;10 f1 − f2</source>
+        <translation>f = &amp;10 f1 − f2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The size of the correction vector, mm (minimised among the f1-optimal)</source>
+        <translation>Die Größe des Korrekturvektors, mm (minimiert unter den f1-optimalen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The single objective the metaheuristics maximise (right axis)</source>
+        <translation>Die einzelne Zielfunktion, die die Metaheuristiken maximieren (rechte Achse)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Best solution so far against the number of solutions evaluated.</source>
+        <translation>Bisher beste Lösung über der Zahl bewerteter Lösungen.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupGraphEditor</name>
+    <message>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+70"/>
+        <source>Add node…</source>
+        <translation>Knoten hinzufügen…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Add a machine point, work offset, tool, feature or dimension</source>
+        <translation>Einen Maschinenpunkt, eine Nullpunktverschiebung, ein Werkzeug, ein Formelement oder ein Maß hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add arc…</source>
+        <translation>Kante hinzufügen…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Add an arc with weight +1 or −1</source>
+        <translation>Eine Kante mit Gewicht +1 oder −1 hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Edit…</source>
+        <translation>Bearbeiten…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rename the selected node or change its kind; flip the weight of the selected arc</source>
+        <translation>Den ausgewählten Knoten umbenennen oder seine Art ändern; das Gewicht der ausgewählten Kante umkehren</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Remove the selected node (with its arcs) or arc</source>
+        <translation>Den ausgewählten Knoten (mit seinen Kanten) oder die Kante entfernen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Redo</source>
+        <translation>Wiederherstellen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Undo the last edit of the graph (Ctrl+Z while the graph has the focus)</source>
+        <translation>Die letzte Änderung am Graphen rückgängig machen (Strg+Z, wenn der Graph den Fokus hat)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Redo (Ctrl+Shift+Z while the graph has the focus)</source>
+        <translation>Wiederherstellen (Strg+Umschalt+Z, wenn der Graph den Fokus hat)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Zoom in</source>
+        <translation>Vergrößern</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Zoom in (Ctrl+wheel)</source>
+        <translation>Vergrößern (Strg+Mausrad)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Zoom out</source>
+        <translation>Verkleinern</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Zoom out (Ctrl+wheel)</source>
+        <translation>Verkleinern (Strg+Mausrad)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Fit</source>
+        <translation>Einpassen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fit the whole graph into the view</source>
+        <translation>Den ganzen Graphen in die Ansicht einpassen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rows</source>
+        <translation>Zeilen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Levels in rows instead of columns</source>
+        <translation>Ebenen in Zeilen statt in Spalten</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Export SVG…</source>
+        <translation>SVG exportieren…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Save the graph as an SVG drawing</source>
+        <translation>Den Graphen als SVG-Zeichnung speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export PNG…</source>
+        <translation>PNG exportieren…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Save the graph as a PNG image</source>
+        <translation>Den Graphen als PNG-Bild speichern</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Dimension</source>
+        <translation>Maß</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Nominal
+(mm)</source>
+        <translation>Nennmaß
+(mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Lower
+(mm)</source>
+        <translation>Unten
+(mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Upper
+(mm)</source>
+        <translation>Oben
+(mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lower tolerance limit relative to the nominal, mm</source>
+        <translation>Untere Toleranzgrenze relativ zum Nennmaß, mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Upper tolerance limit relative to the nominal, mm</source>
+        <translation>Obere Toleranzgrenze relativ zum Nennmaß, mm</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+67"/>
+        <source>… and %n more problem(s)</source>
+        <translation>
+            <numerusform>… und %n weiteres Problem</numerusform>
+            <numerusform>… und %n weitere Probleme</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>The model has %n problem(s) (outlined in red):</source>
+        <translation>
+            <numerusform>Das Modell hat %n Problem (rot umrandet):</numerusform>
+            <numerusform>Das Modell hat %n Probleme (rot umrandet):</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+97"/>
+        <location line="+20"/>
+        <source>Add node</source>
+        <translation>Knoten hinzufügen</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>&amp;Level:</source>
+        <translation>&amp;Ebene:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+64"/>
+        <source>&amp;Id:</source>
+        <translation>&amp;Kennung:</translation>
+    </message>
+    <message>
+        <location line="-59"/>
+        <location line="+68"/>
+        <source>The id &quot;%1&quot; is empty or already used by another node.</source>
+        <translation>Die Kennung „%1“ ist leer oder wird bereits von einem anderen Knoten verwendet.</translation>
+    </message>
+    <message>
+        <location line="-60"/>
+        <location line="+30"/>
+        <source>Add arc</source>
+        <translation>Kante hinzufügen</translation>
+    </message>
+    <message>
+        <location line="-13"/>
+        <source>+1 (the target moves with the source)</source>
+        <translation>+1 (das Ziel bewegt sich mit der Quelle)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>−1 (the target moves against the source)</source>
+        <translation>−1 (das Ziel bewegt sich gegen die Quelle)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;From:</source>
+        <translation>&amp;Von:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;To:</source>
+        <translation>&amp;Nach:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Weight:</source>
+        <translation>&amp;Gewicht:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The arc %1 → %2 exists already or an end is empty.</source>
+        <translation>Die Kante %1 → %2 existiert bereits oder ein Ende ist leer.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Edit %1</source>
+        <translation>%1 bearbeiten</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Art:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Edit node</source>
+        <translation>Knoten bearbeiten</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Export graph as SVG</source>
+        <translation>Graph als SVG exportieren</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Export graph as PNG</source>
+        <translation>Graph als PNG exportieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>SVG drawings (*.svg)</source>
+        <translation>SVG-Zeichnungen (*.svg)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot export the graph</source>
+        <translation>Der Graph kann nicht exportiert werden</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupGraphView</name>
+    <message>
+        <location filename="../widgets/setup/setupgraphview.cpp" line="+311"/>
+        <source>Unknown nodes</source>
+        <translation>Unbekannte Knoten</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>&apos;%1&apos; is not a node of the model (an arc names it)</source>
+        <translation>„%1“ ist kein Knoten des Modells (eine Kante verweist darauf)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>%1 → %2, weight %3</source>
+        <translation>%1 → %2, Gewicht %3</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>weight −1: the target moves against the source</source>
+        <translation>Gewicht −1: das Ziel bewegt sich gegen die Quelle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>weight +1: the target moves with the source</source>
+        <translation>Gewicht +1: das Ziel bewegt sich mit der Quelle</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>red outline: a problem of the model (see its tooltip)</source>
+        <translation>rote Umrandung: ein Problem des Modells (siehe Tooltip)</translation>
+    </message>
+    <message>
+        <location line="+143"/>
+        <location line="+22"/>
+        <location line="+18"/>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="-31"/>
+        <source>Relation graph of %1</source>
+        <translation>Beziehungsgraph von %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setup model: machine points, work offsets, tools, features, dimensions</source>
+        <translation>Einrichtmodell: Maschinenpunkte, Nullpunktverschiebungen, Werkzeuge, Formelemente, Maße</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot write %1: the SVG generator did not start</source>
+        <translation>%1 kann nicht geschrieben werden: der SVG-Generator ist nicht gestartet</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupMargins</name>
+    <message>
+        <location filename="../widgets/setup/setupmargins.cpp" line="+84"/>
+        <source>tolerance zone</source>
+        <translation>Toleranzzone</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>before: deviation and margin to the nearer limit</source>
+        <translation>vorher: Abweichung und Abstand zur näheren Grenze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>after correction</source>
+        <translation>nach der Korrektur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>out of tolerance</source>
+        <translation>außerhalb der Toleranz</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>deviation from nominal (mm)</source>
+        <translation>Abweichung vom Nennmaß (mm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>margin (mm)</source>
+        <translation>Abstand (mm)</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupMarginsWidget</name>
+    <message>
+        <location line="+52"/>
+        <source>Run a method to see the margins before and after correction.</source>
+        <translation>Eine Methode ausführen, um die Abstände vor und nach der Korrektur zu sehen.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupModelEditor</name>
+    <message>
+        <location filename="../widgets/setup/setupmodeleditor.cpp" line="+66"/>
+        <source>Machine points (M)</source>
+        <translation>Maschinenpunkte (M)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Work offsets (W)</source>
+        <translation>Nullpunktverschiebungen (W)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Tools (T)</source>
+        <translation>Werkzeuge (T)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Features (F)</source>
+        <translation>Formelemente (F)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Dimensions (D)</source>
+        <translation>Maße (D)</translation>
+    </message>
+    <message>
+        <location line="+94"/>
+        <source>Add %1</source>
+        <translation>%1 hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Remove %1</source>
+        <translation>%1 entfernen</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Rename %1 to %2</source>
+        <translation>%1 in %2 umbenennen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Change the kind of %1</source>
+        <translation>Art von %1 ändern</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Add arc %1 → %2</source>
+        <translation>Kante %1 → %2 hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Remove arc %1 → %2</source>
+        <translation>Kante %1 → %2 entfernen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Set weight of %1 → %2 to %3</source>
+        <translation>Gewicht von %1 → %2 auf %3 setzen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Edit tolerance of %1</source>
+        <translation>Toleranz von %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupPage</name>
+    <message>
+        <location filename="../app/gui/setuppage.cpp" line="+87"/>
+        <source>&amp;Save model</source>
+        <translation>Modell &amp;speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Re&amp;vert</source>
+        <translation>&amp;Zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Run</source>
+        <translation>A&amp;usführen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C&amp;lear chart</source>
+        <translation>Diagramm lee&amp;ren</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Write the edited model to its dataset file</source>
+        <translation>Das bearbeitete Modell in seine Datensatzdatei schreiben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drop the edits and read the model file again</source>
+        <translation>Die Änderungen verwerfen und die Modelldatei neu einlesen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot save the setup model</source>
+        <translation>Das Einrichtmodell kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>exact: the LP/MILP optimum (GLPK); the metaheuristics with the paper&apos;s settings</source>
+        <translation>exakt: das LP/MILP-Optimum (GLPK); die Metaheuristiken mit den Einstellungen der Veröffentlichung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> solutions</source>
+        <translation> Lösungen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Solutions a metaheuristic evaluates (the paper: 5000)</source>
+        <translation>Anzahl der Lösungen, die eine Metaheuristik bewertet (Veröffentlichung: 5000)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Seed of the metaheuristic: the same seed gives the same run</source>
+        <translation>Startwert der Metaheuristik: derselbe Startwert ergibt denselben Lauf</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run the method (Ctrl+R)</source>
+        <translation>Die Methode ausführen (Strg+R)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Method:</source>
+        <translation>&amp;Methode:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Budget:</source>
+        <translation>B&amp;udget:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>S&amp;eed:</source>
+        <translation>S&amp;tartwert:</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>&amp;Graph</source>
+        <translation>&amp;Graph</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R&amp;un</source>
+        <translation>&amp;Lauf</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Res&amp;ults</source>
+        <translation>&amp;Ergebnisse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Va&amp;lidation</source>
+        <translation>&amp;Validierung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Notes on this study</source>
+        <translation>Notizen zu dieser Studie</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>This project has no setup model. Add a dataset of kind &quot;setup_model&quot; (the relation graph, JSON) and a &quot;cmm_report&quot; to the project file.</source>
+        <translation>Dieses Projekt hat kein Einrichtmodell. Fügen Sie der Projektdatei einen Datensatz der Art „setup_model“ (der Beziehungsgraph, JSON) und einen „cmm_report“ hinzu.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>This project has no CMM report for the setup study (a dataset of kind &quot;cmm_report&quot;).</source>
+        <translation>Dieses Projekt hat keinen KMG-Messbericht für die Einrichtstudie (ein Datensatz der Art „cmm_report“).</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
+        <translation>Noch kein Ergebnis für dieses Modell: Methode wählen und Ausführen drücken (Strg+R).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>The edited model has %n problem(s), the first: %1</source>
+        <translation>
+            <numerusform>Das bearbeitete Modell hat %n Problem: %1</numerusform>
+            <numerusform>Das bearbeitete Modell hat %n Probleme, das erste: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Model “%1” (%2): %3 setup data (%4 work offsets, %5 tools, %6 machine points), %7 features, %8 dimensions, %9 arcs; axis %10, grid %11 mm, bounds [%12, %13] mm.</source>
+        <translation>Modell „%1“ (%2): %3 Einrichtdaten (%4 Nullpunktverschiebungen, %5 Werkzeuge, %6 Maschinenpunkte), %7 Formelemente, %8 Maße, %9 Kanten; Achse %10, Raster %11 mm, Grenzen [%12, %13] mm.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Edited, not saved.</source>
+        <translation>Bearbeitet, nicht gespeichert.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Report “%1”: %2 parts, %3 rows.</source>
+        <translation>Bericht „%1“: %2 Werkstücke, %3 Zeilen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Smallest error budget before correction f1 = %1 mm.</source>
+        <translation>Kleinstes Fehlerbudget vor der Korrektur f1 = %1 mm.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>The setup study has no model or report to run on.</source>
+        <translation>Die Einrichtstudie hat kein Modell oder keinen Bericht, auf dem sie laufen kann.</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Exact optimum: %1 solver calls in %2 ms.</source>
+        <translation>Exaktes Optimum: %1 Solver-Aufrufe in %2 ms.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Running %1…</source>
+        <translation>%1 läuft…</translation>
+    </message>
+    <message>
+        <location line="+76"/>
+        <source>The run failed: %1</source>
+        <translation>Der Lauf ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: f1 %2 mm after %3 solutions in %4 ms</source>
+        <translation>%1: f1 %2 mm nach %3 Lösungen in %4 ms</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>, gap to the exact optimum %1 mm</source>
+        <translation>, Abstand zum exakten Optimum %1 mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> — cancelled.</source>
+        <translation> — abgebrochen.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>The project has no setup model dataset to save to.</source>
+        <translation>Das Projekt hat keinen Einrichtmodell-Datensatz zum Speichern.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>The model has %n problem(s); fix them before saving. The first: %1</source>
+        <translation>
+            <numerusform>Das Modell hat %n Problem; beheben Sie es vor dem Speichern: %1</numerusform>
+            <numerusform>Das Modell hat %n Probleme; beheben Sie sie vor dem Speichern. Das erste: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
+        <translation>Das Modell wurde gespeichert, aber der KMG-Messbericht passt nicht mehr dazu (die Läufe verwenden den Bericht, wie er mit dem vorherigen Modell eingelesen wurde): %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>CRIPSO and PSO, seed 1, %1 solutions each, against the exact optimum.</source>
+        <translation>CRIPSO und PSO, Startwert 1, je %1 Lösungen, im Vergleich zum exakten Optimum.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupResultsView</name>
+    <message>
+        <location filename="../widgets/setup/setupresultsview.cpp" line="+29"/>
+        <source>machine point</source>
+        <translation>Maschinenpunkt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>work offset</source>
+        <translation>Nullpunktverschiebung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>tool length</source>
+        <translation>Werkzeuglänge</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Setup datum</source>
+        <translation>Einrichtdatum</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Register</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Correction (mm)</source>
+        <translation>Korrektur (mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Increment to add to the register along the model&apos;s axis (see the export headers)</source>
+        <translation>Inkrement, das entlang der Modellachse zum Register addiert wird (siehe Exportköpfe)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Export the corrections:</source>
+        <translation>Korrekturen exportieren:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Fanuc…</source>
+        <translation>&amp;Fanuc…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Heidenhain…</source>
+        <translation>&amp;Heidenhain…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Siemens…</source>
+        <translation>&amp;Siemens…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;CSV…</source>
+        <translation>&amp;CSV…</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>No result yet: choose a method and press Run (Ctrl+R).</source>
+        <translation>Noch kein Ergebnis: Methode wählen und Ausführen drücken (Strg+R).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+29"/>
+        <source>%n LP / MILP solver call(s)</source>
+        <translation>
+            <numerusform>%n LP-/MILP-Solver-Aufruf</numerusform>
+            <numerusform>%n LP-/MILP-Solver-Aufrufe</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n solution(s) evaluated</source>
+        <translation>
+            <numerusform>%n Lösung bewertet</numerusform>
+            <numerusform>%n Lösungen bewertet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: f1 %2 → %3 mm (bonus %4 mm), |x| = f2 %5 mm, f %6; %7 in %8 ms.</source>
+        <translation>%1: f1 %2 → %3 mm (Bonus %4 mm), |x| = f2 %5 mm, f %6; %7 in %8 ms.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>f1 proven optimal on the grid</source>
+        <translation>f1 auf dem Raster nachweislich optimal</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f1 NOT proven optimal</source>
+        <translation>f1 NICHT nachweislich optimal</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|x| proven minimal.</source>
+        <translation>|x| nachweislich minimal.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>|x| not proven minimal.</source>
+        <translation>|x| nicht nachweislich minimal.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Gap to the exact optimum: f1 %1 mm, f2 %2 mm.</source>
+        <translation>Abstand zum exakten Optimum: f1 %1 mm, f2 %2 mm.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(cancelled: best so far)</source>
+        <translation>(abgebrochen: bisher beste)</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Parts of the report in tolerance: %1 of %2 before, %3 of %2 after the correction; parts rescued: %4.</source>
+        <translation>Werkstücke des Berichts in Toleranz: %1 von %2 vor, %3 von %2 nach der Korrektur; gerettete Werkstücke: %4.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Parts that would leave the tolerance: %1.</source>
+        <translation>Werkstücke, die die Toleranz verlassen würden: %1.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>There are no corrections to export yet.</source>
+        <translation>Es gibt noch keine Korrekturen zum Exportieren.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Export corrections</source>
+        <translation>Korrekturen exportieren</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot export the corrections</source>
+        <translation>Die Korrekturen können nicht exportiert werden</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupValidationView</name>
+    <message>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+60"/>
+        <source>Simulated measurement sets N (the paper: 100)</source>
+        <translation>Simulierte Messreihen N (Veröffentlichung: 100)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Trials M of every method on every set (the paper: 10)</source>
+        <translation>Versuche M jeder Methode auf jeder Messreihe (Veröffentlichung: 10)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> solutions</source>
+        <translation> Lösungen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Weight of the setup-data errors, Eq. 12: E = w1 (1 − 2r)</source>
+        <translation>Gewicht der Einrichtdatenfehler, Gl. 12: E = w1 (1 − 2r)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Weight of the random errors, Eq. 13: E = w2 (1 − 2r)</source>
+        <translation>Gewicht der zufälligen Fehler, Gl. 13: E = w2 (1 − 2r)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Run &amp;validation</source>
+        <translation>Validierung aus&amp;führen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The paper&apos;s statistical validation: simulated measurement sets with setup-data and random errors (Eq. 12–13), each corrected by the exact method and by M trials of the chosen metaheuristics; the sets sorted by their budget before correction (Fig. 18).</source>
+        <translation>Die statistische Validierung der Veröffentlichung: simulierte Messreihen mit Einrichtdaten- und Zufallsfehlern (Gl. 12–13), jeweils korrigiert mit der exakten Methode und mit M Versuchen der gewählten Metaheuristiken; die Reihen sortiert nach ihrem Budget vor der Korrektur (Abb. 18).</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Measurement sets N:</source>
+        <translation>Messreihen N:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trials per set M:</source>
+        <translation>Versuche je Reihe M:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Budget per trial:</source>
+        <translation>Budget je Versuch:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>w1 (setup data):</source>
+        <translation>w1 (Einrichtdaten):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>w2 (random):</source>
+        <translation>w2 (zufällig):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Seed:</source>
+        <translation>Startwert:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Methods:</source>
+        <translation>Methoden:</translation>
+    </message>
+    <message>
+        <location line="+76"/>
+        <source>Choose at least one method.</source>
+        <translation>Wählen Sie mindestens eine Methode.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Running %1 sets x %2 trials…</source>
+        <translation>%1 Reihen x %2 Versuche laufen…</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>The validation failed: %1</source>
+        <translation>Die Validierung ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 sets%2: f1 before correction from %3 to %4 mm.</source>
+        <translation>%1 Reihen%2: f1 vor der Korrektur von %3 bis %4 mm.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> (cancelled)</source>
+        <translation> (abgebrochen)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.</source>
+        <translation>%1: mittlerer Abstand zum exakten f1 %2 mm; %3 von %4 Versuchen innerhalb eines Rasterschritts.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SpcView</name>
+    <message>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+86"/>
+        <source>index</source>
+        <translation>Kenngröße</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>No SPC series yet.</source>
+        <translation>Noch keine SPC-Reihe.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Histogram of %1 (%2 values)</source>
+        <translation>Histogramm von %1 (%2 Werte)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>feature</source>
+        <translation>Merkmal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subgroups × size</source>
+        <translation>Untergruppen × Umfang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> (%1 left out)</source>
+        <translation> (%1 ausgelassen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>in control</source>
+        <translation>beherrscht</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no: %1 X-bar, %2 R points beyond limits</source>
+        <translation>nein: %1 x̄-, %2 R-Punkte außerhalb der Grenzen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A2 / D3 / D4</source>
+        <translation>A2 / D3 / D4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>X-bar CL / UCL / LCL</source>
+        <translation>x̄ CL / UCL / LCL</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>R CL / UCL / LCL</source>
+        <translation>R CL / UCL / LCL</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>σ within (R̄/d2)</source>
+        <translation>σ innerhalb (R̄/d2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>LSL / USL</source>
+        <translation>LSL / USL</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cp (Eq. 16)</source>
+        <translation>Cp (Gl. 16)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <source>— (no limits)</source>
+        <translation>— (keine Grenzen)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cpk</source>
+        <translation>Cpk</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>natural tolerance (Eq. 17)</source>
+        <translation>natürliche Toleranz (Gl. 17)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+5"/>
+        <source>systematic error (Eq. 20)</source>
+        <translation>systematischer Fehler (Gl. 20)</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>%1%2 ± %3 (%4)</source>
+        <translation>%1%2 ± %3 (%4)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>significant</source>
+        <translation>signifikant</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not significant</source>
+        <translation>nicht signifikant</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>— (no nominal)</source>
+        <translation>— (kein Nennwert)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>regression offset angle</source>
+        <translation>Versatzwinkel der Regression</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1° (slope %2%3 per sample, r² %4)</source>
+        <translation>%1° (Steigung %2%3 je Probe, r² %4)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>compensation</source>
+        <translation>Kompensation</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ThermalCharts</name>
+    <message>
+        <location filename="../widgets/charts/thermalcharts.cpp" line="+59"/>
+        <source>temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement</source>
+        <translation>Verlagerung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>strain</source>
+        <translation>Dehnung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>speed</source>
+        <translation>Drehzahl</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location line="+130"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>time (h)</source>
+        <translation>Zeit (h)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>time (min)</source>
+        <translation>Zeit (min)</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>heating</source>
+        <translation>Erwärmung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cooling</source>
+        <translation>Abkühlung</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ThermalHysteresisView</name>
+    <message>
+        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+100"/>
+        <source>loop area in %1 × %2</source>
+        <translation>Schleifenfläche in %1 × %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the sensor lags the displacement</source>
+        <translation>der Sensor eilt der Verlagerung nach</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the displacement lags the sensor</source>
+        <translation>die Verlagerung eilt dem Sensor nach</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Sensor plotted against the displacement, or all sensors side by side</source>
+        <translation>Sensor über der Verlagerung aufgetragen oder alle Sensoren nebeneinander</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>sensor</source>
+        <translation>Sensor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>loop area</source>
+        <translation>Schleifenfläche</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>loop / ranges</source>
+        <translation>Schleife / Spannweiten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lag τ (min)</source>
+        <translation>Verzug τ (min)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R² lag</source>
+        <translation>R² Verzug</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R² static</source>
+        <translation>R² statisch</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Area enclosed by the trajectory (shoelace formula), sensor unit × displacement unit</source>
+        <translation>Von der Trajektorie eingeschlossene Fläche (Gaußsche Trapezformel), Sensoreinheit × Verlagerungseinheit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Loop area divided by the product of the two ranges: 0 for a line, 0.785 for a circle</source>
+        <translation>Schleifenfläche geteilt durch das Produkt der beiden Spannweiten: 0 für eine Linie, 0.785 für einen Kreis</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Time constant of a first-order lag between sensor and displacement; &gt; 0: the sensor lags</source>
+        <translation>Zeitkonstante eines Verzögerungsglieds erster Ordnung zwischen Sensor und Verlagerung; &gt; 0: der Sensor eilt nach</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Sensor:</source>
+        <translation>&amp;Sensor:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Loop area and lag per sensor</source>
+        <translation>Schleifenfläche und Verzug je Sensor</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>All sensors</source>
+        <translation>Alle Sensoren</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No hysteresis analysis for this log:
+%1</source>
+        <translation>Keine Hystereseanalyse für dieses Protokoll:
+%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Target %1: %2 heating rows, %3 cooling rows (the target&apos;s change grows or shrinks).</source>
+        <translation>Zielgröße %1: %2 Zeilen Erwärmung, %3 Zeilen Abkühlung (die Änderung der Zielgröße wächst bzw. schrumpft).</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ThermalModelCharts</name>
+    <message>
+        <location filename="../widgets/charts/thermalmodelcharts.cpp" line="+76"/>
+        <source>time (h)</source>
+        <translation>Zeit (h)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>time (min)</source>
+        <translation>Zeit (min)</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>held out</source>
+        <translation>Testdaten</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>fit | held-out boundary</source>
+        <translation>Grenze Anpassung | Testdaten</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>%1: lag %2 min</source>
+        <translation>%1: Verzug %2 min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 against %2: lag %3 min, loop %4</source>
+        <translation>%1 über %2: Verzug %3 min, Schleife %4</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>heating</source>
+        <translation>Erwärmung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cooling</source>
+        <translation>Abkühlung</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+46"/>
+        <source>%1 (off scale)</source>
+        <translation>%1 (außerhalb der Skala)</translation>
+    </message>
+    <message>
+        <location line="-22"/>
+        <source>residual</source>
+        <translation>Rest</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>measured (combined test)</source>
+        <translation>gemessen (kombinierter Test)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>PSO iteration</source>
+        <translation>PSO-Iteration</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>best fitness</source>
+        <translation>beste Fitness</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ThermalModelView</name>
+    <message>
+        <location filename="../widgets/charts/thermalmodelview.cpp" line="+171"/>
+        <source>fitness</source>
+        <translation>Fitness</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Best Eq. 2.9 fitness (sum of squared residuals%1) per PSO iteration</source>
+        <translation>Beste Fitness nach Gl. 2.9 (Summe der quadrierten Residuen%1) je PSO-Iteration</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>fit (%1)</source>
+        <translation>Anpassung (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>held out (%1)</source>
+        <translation>Testdaten (%1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>diverges</source>
+        <translation>divergiert</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows without bound on the held-out rows</source>
+        <translation>Die kleinsten Quadrate ergaben ein instabiles GMC(1,N): b1 = %1 ≤ 0; seine Ausgabe wächst auf den Testdaten unbeschränkt</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+52"/>
+        <location line="+111"/>
+        <source>model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <location line="-163"/>
+        <location line="+163"/>
+        <source>rows</source>
+        <translation>Zeilen</translation>
+    </message>
+    <message>
+        <location line="-162"/>
+        <location line="+162"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="-162"/>
+        <location line="+162"/>
+        <source>RMSE</source>
+        <translation>RMSE</translation>
+    </message>
+    <message>
+        <location line="-161"/>
+        <location line="+52"/>
+        <location line="+109"/>
+        <source>E</source>
+        <translation>E</translation>
+    </message>
+    <message>
+        <location line="-161"/>
+        <location line="+161"/>
+        <source>band</source>
+        <translation>Band</translation>
+    </message>
+    <message>
+        <location line="-154"/>
+        <source>%1 %2 s</source>
+        <translation>%1 %2 s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> (unstable: b1 ≤ 0)</source>
+        <translation> (instabil: b1 ≤ 0)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 fit rows, %2 held out; %3.</source>
+        <translation>%1 Zeilen zur Anpassung, %2 Testdaten; %3.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 % (GMC(1,N) %2 %, MLP %3 %).</source>
+        <translation>&lt;b&gt;Modularer Fall:&lt;/b&gt; GNNMCI(1,N), angepasst an den Z- und C-Tests, verringert den Fehler des kombinierten Tests um %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>error → band (%1)</source>
+        <translation>Fehler → Band (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>less (peak, %)</source>
+        <translation>weniger (Spitze, %)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMSE (%1)</source>
+        <translation>RMSE (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>less (RMS, %)</source>
+        <translation>weniger (RMS, %)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>%1: %p%</source>
+        <translation>%1: %p%</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The column the models predict (the thermal error)</source>
+        <translation>Die Spalte, die die Modelle vorhersagen (der thermische Fehler)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Sensor columns the models take as inputs</source>
+        <translation>Sensorspalten, die die Modelle als Eingänge verwenden</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The first fraction of the rows fits the models; the rest is held out</source>
+        <translation>Der erste Anteil der Zeilen dient der Anpassung der Modelle; der Rest sind Testdaten</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Seed of the PSO swarm and of the MLP&apos;s initial weights (same seed, same result)</source>
+        <translation>Startwert des PSO-Schwarms und der Anfangsgewichte des MLP (gleicher Startwert, gleiches Ergebnis)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Train</source>
+        <translation>&amp;Trainieren</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Fit GNNMCI(1,N) (PSO), GMC(1,N) (least squares) and the MLP (Levenberg-Marquardt) (Ctrl+R)</source>
+        <translation>GNNMCI(1,N) (PSO), GMC(1,N) (kleinste Quadrate) und das MLP (Levenberg-Marquardt) anpassen (Strg+R)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Stop the training (Esc)</source>
+        <translation>Das Training anhalten (Esc)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Best fitness of the GNNMCI(1,N) swarm (Eq. 2.9) per PSO iteration</source>
+        <translation>Beste Fitness des GNNMCI(1,N)-Schwarms (Gl. 2.9) je PSO-Iteration</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>T&amp;arget:</source>
+        <translation>&amp;Zielgröße:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Train &amp;fraction:</source>
+        <translation>Trainingsa&amp;nteil:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;eed:</source>
+        <translation>S&amp;tartwert:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Inputs:</source>
+        <translation>&amp;Eingänge:</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Correlation coefficient of measured and predicted</source>
+        <translation>Korrelationskoeffizient zwischen gemessen und vorhergesagt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Root mean square of the residual, in the target&apos;s unit</source>
+        <translation>Quadratischer Mittelwert des Residuums, in der Einheit der Zielgröße</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Nash-Sutcliffe efficiency coefficient (1: perfect)</source>
+        <translation>Nash-Sutcliffe-Effizienzkoeffizient (1: perfekt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest |residual|, in the target&apos;s unit</source>
+        <translation>Größtes |Residuum|, in der Einheit der Zielgröße</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Modular models (Section 4.3)</source>
+        <translation>Modulare Modelle (Abschnitt 4.3)</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Performance indices (Table 4)</source>
+        <translation>Gütekennzahlen (Tabelle 4)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Comparison</source>
+        <translation>Vergleich</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modular (Z + C → combined)</source>
+        <translation>Modular (Z + C → kombiniert)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location line="+128"/>
+        <source>Training failed: %1</source>
+        <translation>Das Training ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="-120"/>
+        <source>Training cancelled after %1 PSO iterations; the results shown are the previous ones.</source>
+        <translation>Training nach %1 PSO-Iterationen abgebrochen; die angezeigten Ergebnisse sind die vorherigen.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Settings changed: Train (Ctrl+R) to update the results.</source>
+        <translation>Einstellungen geändert: Trainieren (Strg+R), um die Ergebnisse zu aktualisieren.</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>Not trained yet: Train (Ctrl+R) fits the three models.</source>
+        <translation>Noch nicht trainiert: Trainieren (Strg+R) passt die drei Modelle an.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+30"/>
+        <source>Choose at least one input.</source>
+        <translation>Wählen Sie mindestens einen Eingang.</translation>
+    </message>
+    <message>
+        <location line="-18"/>
+        <source>Training…</source>
+        <translation>Training läuft…</translation>
     </message>
 </context>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+48"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+65"/>
+        <source>T&amp;rend</source>
+        <translation>&amp;Verlauf</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Hysteresis</source>
+        <translation>H&amp;ysterese</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Models</source>
+        <translation>&amp;Modelle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Temperatures, strains and displacement against time</source>
+        <translation>Temperaturen, Dehnungen und Verlagerung über der Zeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Displacement against each sensor over heating and cooling</source>
+        <translation>Verlagerung über jedem Sensor während Erwärmung und Abkühlung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GNNMCI(1,N), GMC(1,N) and MLP fitted and compared (Table 4)</source>
+        <translation>GNNMCI(1,N), GMC(1,N) und MLP angepasst und verglichen (Tabelle 4)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Thermal log:</source>
         <translation>&amp;Thermoprotokoll:</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+80"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Dieses Projekt hat kein Thermoprotokoll. Fügen Sie der Projektdatei einen Datensatz der Art „thermal_log“ hinzu (eine Zeitspalte, Sensorspalten und die Verlagerung).</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>%1 rows, %2 channels, %3 h.</source>
         <translation>%1 Zeilen, %2 Kanäle, %3 h.</translation>
     </message>
@@ -701,11 +4959,64 @@
         <translation>Lizenz: %1.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+15"/>
         <source>Cannot show this thermal log:
 %1</source>
         <translation>Dieses Thermoprotokoll kann nicht angezeigt werden:
 %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Choose the thermal log</source>
+        <translation>Thermoprotokoll wählen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change the thermal target</source>
+        <translation>Thermische Zielgröße ändern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change the thermal inputs</source>
+        <translation>Thermische Eingänge ändern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change the train fraction</source>
+        <translation>Trainingsanteil ändern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change the training seed</source>
+        <translation>Startwert des Trainings ändern</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Change the thermal model settings</source>
+        <translation>Einstellungen des thermischen Modells ändern</translation>
+    </message>
+    <message>
+        <location line="+78"/>
+        <source>Modular case: %1</source>
+        <translation>Modularer Fall: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) reduces the combined test&apos;s error by %6 %.</source>
+        <translation>Gemeinsam an %1 und %2 angepasst, Vorhersage für %3 (Zielgröße %4; Eingänge %5; Startwert 1): GNNMCI(1,N) verringert den Fehler des kombinierten Tests um %6 %.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ThermalTrendView</name>
+    <message>
+        <location filename="../widgets/charts/thermaltrendview.cpp" line="+82"/>
+        <source>Channels shown in the chart</source>
+        <translation>Im Diagramm angezeigte Kanäle</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Channels</source>
+        <translation>Kanäle</translation>
     </message>
 </context>
 </TS>

@@ -113,6 +113,27 @@
     </message>
 </context>
 <context>
+    <name>metrofit::CircularPathView</name>
+    <message>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+27"/>
+        <source>The XY path in mm: the nominal circle true to scale; the measured path, the compensated references and the expected result as deviations from the nominal point, magnified by the factor shown.</source>
+        <translation>Tor XY w mm: okrąg nominalny w skali; zmierzony tor, skompensowane wartości zadane i oczekiwany wynik jako odchyłki od punktu nominalnego, powiększone o podany współczynnik.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ControlChartView</name>
+    <message>
+        <location line="+51"/>
+        <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (seed 002, Eq. 18-19); red points are out of control.</source>
+        <translation>Średnie podgrup z linią centralną (CL) i granicami kontrolnymi UCL/LCL = średnia ± A2 · R̄ (źródło 002, równ. 18-19); czerwone punkty są poza kontrolą.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Subgroup ranges with the centre line R̄ and the limits D4 · R̄ and D3 · R̄.</source>
+        <translation>Rozstępy podgrup z linią centralną R̄ i granicami D4 · R̄ oraz D3 · R̄.</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::DatasetTable</name>
     <message>
         <location filename="../app/gui/datasettable.cpp" line="+18"/>
@@ -138,6 +159,279 @@
         <location line="+28"/>
         <source>File not found: %1</source>
         <translation>Nie znaleziono pliku: %1</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::DiagnosisPage</name>
+    <message>
+        <location filename="../app/gui/diagnosispage.cpp" line="+53"/>
+        <source>Thermal</source>
+        <translation>Termika</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kinematic</source>
+        <translation>Kinematyka</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Setup</source>
+        <translation>Ustawienie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Matching</source>
+        <translation>Dopasowanie</translation>
+    </message>
+    <message>
+        <location line="+503"/>
+        <source>Apply diagnosed effects (%1)</source>
+        <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
+    </message>
+    <message>
+        <location line="-434"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Uruchom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Apply to model</source>
+        <translation>Zastosuj do &amp;modelu</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>The study whose declared model is diagnosed</source>
+        <translation>Studium, którego zadeklarowany model jest diagnozowany</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Fit the declared model, try the candidate effects it lacks, accept those the evidence supports (Ctrl+R)</source>
+        <translation>Dopasuj zadeklarowany model, wypróbuj brakujące w nim efekty kandydujące, przyjmij te, które potwierdzają dowody (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stop the loop; the rounds done so far are shown (Esc)</source>
+        <translation>Zatrzymaj pętlę; pokazane zostaną dotychczasowe rundy (Esc)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
+        <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>The effect whose residual plot is shown</source>
+        <translation>Efekt, którego wykres residuów jest pokazany</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Residual &amp;plot of:</source>
+        <translation>Wykres &amp;residuów dla:</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Round</source>
+        <translation>Runda</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Effect</source>
+        <translation>Efekt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Parameters (± standard error)</source>
+        <translation>Parametry (± błąd standardowy)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rmse before → after</source>
+        <translation>rmse przed → po</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>held-out rmse</source>
+        <translation>rmse danych testowych</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Evidence</source>
+        <translation>Dowody</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Accepted</source>
+        <translation>Przyjęty</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Every candidate effect tried, in the order tried (Ctrl+C copies the selected rows)</source>
+        <translation>Wszystkie wypróbowane efekty kandydujące w kolejności prób (Ctrl+C kopiuje zaznaczone wiersze)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopiuj</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&amp;Domain:</source>
+        <translation>&amp;Dziedzina:</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <location line="+125"/>
+        <source>The diagnosis failed: %1</source>
+        <translation>Diagnoza nie powiodła się: %1</translation>
+    </message>
+    <message>
+        <location line="-66"/>
+        <source>No usable %1 data for the diagnosis:
+%2
+
+Configure it in the project file under studies.diagnosis.%3 (see the documentation of the diagnosis study).</source>
+        <translation>Brak użytecznych danych (%1) do diagnozy:
+%2
+
+Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studium diagnozy).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Data: %1</source>
+        <translation>Dane: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>; target %1; declared inputs %2; fitted on the first %3 % of the rows, held out on the rest.</source>
+        <translation>; wielkość docelowa %1; zadeklarowane wejścia %2; dopasowano na pierwszych %3 % wierszy, reszta to dane testowe.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>; declared model: Cartesian actuator errors (origin, axis angles); feed %1 mm/min.</source>
+        <translation>; zadeklarowany model: kartezjańskie błędy napędów (początek, kąty osi); posuw %1 mm/min.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>; setup model %1; declared model: constant setup-data errors.</source>
+        <translation>; model ustawczy %1; zadeklarowany model: stałe błędy danych ustawczych.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>; declared model: rigid posture; tolerance ±%1 mm.</source>
+        <translation>; zadeklarowany model: sztywne położenie; tolerancja ±%1 mm.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Applied to the model: %1.</source>
+        <translation>Zastosowano do modelu: %1.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Not run yet: press Run (Ctrl+R).</source>
+        <translation>Jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R).</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Diagnosing …</source>
+        <translation>Diagnozowanie …</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Diagnosing … step %1, current rmse %2</source>
+        <translation>Diagnozowanie … krok %1, bieżący rmse %2</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>rmse %1 → %2 %3</source>
+        <translation>rmse %1 → %2 %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, held-out rmse %1 → %2 %3</source>
+        <translation>, rmse danych testowych %1 → %2 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, max |e| %1 → %2 %3</source>
+        <translation>, maks. |e| %1 → %2 %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>. No undeclared effect found (%1 candidates tried).</source>
+        <translation>. Nie znaleziono niezadeklarowanego efektu (wypróbowano kandydatów: %1).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>. Accepted: %1 (%2 candidates tried).</source>
+        <translation>. Przyjęto: %1 (wypróbowano kandydatów: %2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cancelled: the rounds done so far.</source>
+        <translation>Anulowano: dotychczasowe rundy.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source> (accepted)</source>
+        <translation> (przyjęty)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Residual before and after %1</source>
+        <translation>Residua przed i po %1</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>(Already applied.)</source>
+        <translation>(Już zastosowano.)</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ErrorBarsView</name>
+    <message>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="+453"/>
+        <source>rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model (grey) and the model with the accepted effects (blue)</source>
+        <translation>rmse i największy |błąd| danych dopasowania, rmse wierszy testowych (termika): zadeklarowany model (szary) i model z przyjętymi efektami (niebieski)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Error before / after</source>
+        <translation>Błąd przed / po</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Error before / after (%1)</source>
+        <translation>Błąd przed / po (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared</source>
+        <translation>zadeklarowany</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+ effects</source>
+        <translation>+ efekty</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>rmse</source>
+        <translation>rmse</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max |e|</source>
+        <translation>maks. |e|</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>held-out</source>
+        <translation>dane testowe</translation>
     </message>
 </context>
 <context>
@@ -169,9 +463,436 @@
     </message>
 </context>
 <context>
+    <name>metrofit::HistogramView</name>
+    <message>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+29"/>
+        <source>Distribution of the values with the specification limits LSL/USL, the nominal and the mean.</source>
+        <translation>Rozkład wartości z granicami specyfikacji LSL/USL, wartością nominalną i średnią.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::KinematicPlots</name>
+    <message>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+314"/>
+        <source>0 µm</source>
+        <translation>0 µm</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>measured, CCW loop</source>
+        <translation>zmierzony, pętla przeciwnie do ruchu wskazówek zegara</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>measured, CW loop</source>
+        <translation>zmierzony, pętla zgodnie z ruchem wskazówek zegara</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>expected after compensation</source>
+        <translation>oczekiwany po kompensacji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal R %1 mm</source>
+        <translation>nominalny R %1 mm</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>plotted radius = R + k × radial deviation, k = %1; rings every %2 µm</source>
+        <translation>promień na wykresie = R + k × odchyłka promieniowa, k = %1; okręgi co %2 µm</translation>
+    </message>
+    <message>
+        <location line="+77"/>
+        <source>X (mm)</source>
+        <translation>X (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y (mm)</source>
+        <translation>Y (mm)</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>nominal circle</source>
+        <translation>okrąg nominalny</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>measured CCW</source>
+        <translation>zmierzony, przeciwnie do wskazówek</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>measured CW</source>
+        <translation>zmierzony, zgodnie ze wskazówkami</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>compensated references</source>
+        <translation>skompensowane wartości zadane</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>expected after</source>
+        <translation>oczekiwany po</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>deviations from the nominal point × %1</source>
+        <translation>odchyłki od punktu nominalnego × %1</translation>
+    </message>
+    <message>
+        <location line="+65"/>
+        <source>X-bar chart (subgroups of %1)</source>
+        <translation>Karta X-średnie (podgrupy po %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R chart (subgroups of %1)</source>
+        <translation>Karta R (podgrupy po %1)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>subgroup</source>
+        <translation>podgrupa</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>subgroup mean</source>
+        <translation>średnia</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>subgroup range</source>
+        <translation>rozstęp</translation>
+    </message>
+    <message>
+        <location line="+96"/>
+        <source>Histogram</source>
+        <translation>Histogram</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>value</source>
+        <translation>wartość</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>count</source>
+        <translation>liczność</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>nominal</source>
+        <translation>nominalna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mean</source>
+        <translation>średnia</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::KinematicsPage</name>
+    <message>
+        <location filename="../app/gui/kinematicspage.cpp" line="+85"/>
+        <source>&amp;Identify</source>
+        <translation>&amp;Identyfikuj</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Compensate</source>
+        <translation>&amp;Kompensuj</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export &amp;G-code…</source>
+        <translation>Eksportuj &amp;G-code…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export &amp;STEP-NC…</source>
+        <translation>Eksportuj &amp;STEP-NC…</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Identify the actuator origin and orientation errors of the circular test (Levenberg-Marquardt, standard errors from the residuals) (F5)</source>
+        <translation>Identyfikuj błędy początku i orientacji napędów z testu kołowego (Levenberg-Marquardt, błędy standardowe z residuów) (F5)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Compensated references for the nominal circle (Eq. 15 with the identified errors), and what they give (Ctrl+K)</source>
+        <translation>Skompensowane wartości zadane dla okręgu nominalnego (równ. 15 ze zidentyfikowanymi błędami) i ich efekt (Ctrl+K)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Write the compensated references as G-code (G01 blocks)</source>
+        <translation>Zapisz skompensowane wartości zadane jako G-code (bloki G01)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write the compensated references as a STEP-NC (ISO 10303-21) file</source>
+        <translation>Zapisz skompensowane wartości zadane jako plik STEP-NC (ISO 10303-21)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error</source>
+        <translation>błąd</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>identified</source>
+        <translation>zidentyfikowany</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>std. error</source>
+        <translation>błąd std.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>simulated</source>
+        <translation>symulowany</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>max radial deviation</source>
+        <translation>maks. odchyłka promieniowa</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>µm</source>
+        <translation>µm</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;b&gt;Identified errors&lt;/b&gt; (origin in µm, angles in deg)</source>
+        <translation>&lt;b&gt;Zidentyfikowane błędy&lt;/b&gt; (początek w µm, kąty w stopniach)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;b&gt;Compensation&lt;/b&gt; of the nominal circle</source>
+        <translation>&lt;b&gt;Kompensacja&lt;/b&gt; okręgu nominalnego</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&amp;Path</source>
+        <translation>&amp;Tor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;PC</source>
+        <translation>S&amp;PC</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>C&amp;ircular test:</source>
+        <translation>Test kołow&amp;y:</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Compensate</source>
+        <translation>Kompensuj</translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
+        <translation>Ten projekt nie zawiera testu kołowego. Dodaj zbiór danych rodzaju „circular_test” (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, jedna pętla przeciwnie do ruchu wskazówek zegara, potem jedna zgodnie), np. utworzony przez metrofit-cli simulate circular.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Cannot identify this circular test:
+%1</source>
+        <translation>Nie można zidentyfikować tego testu kołowego:
+%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+13"/>
+        <source>%1 points, nominal circle R %2 mm about (%3, %4) mm; %n loop(s).</source>
+        <translation>
+            <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3, %4) mm; %n pętla.</numerusform>
+            <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3, %4) mm; %n pętle.</numerusform>
+            <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3, %4) mm; %n pętli.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>origin x (µm)</source>
+        <translation>początek x (µm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
+        <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), x</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>origin y (µm)</source>
+        <translation>początek y (µm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
+        <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), y</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>X axis angle a (deg)</source>
+        <translation>kąt osi X a (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
+        <translation>Napęd X porusza się wzdłuż (cos a, sin a); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Y axis angle b (deg)</source>
+        <translation>kąt osi Y b (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
+        <translation>Napęd Y porusza się wzdłuż (-sin b, cos b); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>squareness b − a (deg)</source>
+        <translation>prostopadłość b − a (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The angle between the axes is 90° + (b − a)</source>
+        <translation>Kąt między osiami wynosi 90° + (b − a)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMS residual (µm)</source>
+        <translation>residuum RMS (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Root mean square of the residual distances after identification</source>
+        <translation>Średnia kwadratowa odległości resztkowych po identyfikacji</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>iterations</source>
+        <translation>iteracje</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Path (XY)</source>
+        <translation>Tor (XY)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Radial deviation (polar, magnified)</source>
+        <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>measured</source>
+        <translation>zmierzony</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot chart the SPC series:
+%1</source>
+        <translation>Nie można wykreślić serii SPC:
+%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The kinematics study names no SPC series. Set &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} in the project&apos;s kinematics study.</source>
+        <translation>Studium kinematyki nie wskazuje serii SPC. Ustaw &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} w studium kinematyki projektu.</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>measured (before)</source>
+        <translation>zmierzony (przed)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest |radial deviation| of the measured path from the nominal circle</source>
+        <translation>Największa |odchyłka promieniowa| zmierzonego toru od okręgu nominalnego</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>identified model, after</source>
+        <translation>zidentyfikowany model, po</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The compensated references run through the identified model (Eq. 9): on the circle up to rounding</source>
+        <translation>Skompensowane wartości zadane przepuszczone przez zidentyfikowany model (równ. 9): na okręgu z dokładnością do zaokrągleń</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>expected after (measured residual)</source>
+        <translation>oczekiwany po (zmierzone residuum)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The measured path moved by what the references change: the residual the model does not explain (noise, unmodelled effects) stays</source>
+        <translation>Zmierzony tor przesunięty o zmianę wartości zadanych: residuum niewyjaśnione przez model (szum, niemodelowane efekty) pozostaje</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>simulated machine, after</source>
+        <translation>maszyna symulowana, po</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The references run through the simulated machine (the true errors of the study), noise free</source>
+        <translation>Wartości zadane przepuszczone przez maszynę symulowaną (rzeczywiste błędy studium), bez szumu</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>largest correction</source>
+        <translation>największa korekcja</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest |reference − nominal point|</source>
+        <translation>Największa |wartość zadana − punkt nominalny|</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>Export compensated path as G-code</source>
+        <translation>Eksport skompensowanego toru jako G-code</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>G-code (*.nc *.ngc *.gcode)</source>
+        <translation>G-code (*.nc *.ngc *.gcode)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export G-code</source>
+        <translation>Eksport G-code</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Export compensated path as STEP-NC</source>
+        <translation>Eksport skompensowanego toru jako STEP-NC</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>STEP-NC Part 21 (*.p21 *.stp)</source>
+        <translation>STEP-NC Part 21 (*.p21 *.stp)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export STEP-NC</source>
+        <translation>Eksport STEP-NC</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+42"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+44"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Projekty Metrofit (*.metrofit)</translation>
     </message>
@@ -222,12 +943,12 @@
     </message>
     <message>
         <location line="+4"/>
-        <location line="+100"/>
+        <location line="+102"/>
         <source>&amp;Save</source>
         <translation>&amp;Zapisz</translation>
     </message>
     <message>
-        <location line="-99"/>
+        <location line="-101"/>
         <source>Save &amp;As…</source>
         <translation>Zapisz &amp;jako…</translation>
     </message>
@@ -289,7 +1010,7 @@
         <translation>Pomo&amp;c</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>&amp;About Metrofit</source>
         <translation>&amp;O programie Metrofit</translation>
     </message>
@@ -417,9 +1138,238 @@
     </message>
 </context>
 <context>
+    <name>metrofit::MatchingCurveView</name>
+    <message>
+        <location filename="../widgets/pointview/matchingcurveview.cpp" line="+88"/>
+        <source>generation</source>
+        <translation>generacja</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>best objective, RMS of Eq. (8) (mm)</source>
+        <translation>najlepsza funkcja celu, RMS z równ. (8) (mm)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Optimisation curve: run SADE or GA-simplex</source>
+        <translation>Krzywa optymalizacji: uruchom SADE lub GA-simpleks</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Optimisation curve of the fine matching</source>
+        <translation>Krzywa optymalizacji dopasowania dokładnego</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>least-squares optimum %1 mm</source>
+        <translation>optimum najmniejszych kwadratów %1 mm</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+57"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+47"/>
+        <source>SADE (rough + fine, paper settings)</source>
+        <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GA-simplex (rough + fine)</source>
+        <translation>GA-simpleks (zgrubne + dokładne)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Closed form (least-squares optimum)</source>
+        <translation>Postać zamknięta (optimum najmniejszych kwadratów)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Minimax (smallest largest deviation)</source>
+        <translation>Minimaks (najmniejsza największa odchyłka)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>closed form</source>
+        <translation>postać zamknięta</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>minimax</source>
+        <translation>minimaks</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>Allow &amp;scale</source>
+        <translation>&amp;Skala</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Uruchom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>The posture shown after matching and used for the machine adjustment (every method is run for the comparison table)</source>
+        <translation>Położenie pokazywane po dopasowaniu i używane do nastawienia maszyny (do tabeli porównawczej uruchamiana jest każda metoda)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Symmetric tolerance ±T of every point (mm)</source>
+        <translation>Symetryczna tolerancja ±T każdego punktu (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fit an isotropic scale too (e.g. thermal expansion of the part)</source>
+        <translation>Dopasuj także skalę izotropową (np. rozszerzalność cieplna przedmiotu)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run every matching method on these points (Ctrl+R)</source>
+        <translation>Uruchom każdą metodę dopasowania dla tych punktów (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop the running SADE / GA-simplex search (Esc)</source>
+        <translation>Zatrzymaj trwające przeszukiwanie SADE / GA-simpleks (Esc)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Method</source>
+        <translation>Metoda</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rx (deg)</source>
+        <translation>rx (st.)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ry (deg)</source>
+        <translation>ry (st.)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rz (deg)</source>
+        <translation>rz (st.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>z (mm)</source>
+        <translation>z (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>scale</source>
+        <translation>skala</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+22"/>
+        <source>RMSE (mm)</source>
+        <translation>RMSE (mm)</translation>
+    </message>
+    <message>
+        <location line="-21"/>
+        <source>max |d| (mm)</source>
+        <translation>maks. |d| (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out before</source>
+        <translation>poza przed</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out after</source>
+        <translation>poza po</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>time (ms)</source>
+        <translation>czas (ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Axis</source>
+        <translation>Oś</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>Wartość</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Unit</source>
+        <translation>Jednostka</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Round</source>
+        <translation>Runda</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max |d| measured (mm)</source>
+        <translation>maks. |d| zmierzone (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out of tolerance</source>
+        <translation>poza tolerancją</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SX (mm)</source>
+        <translation>SX (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>SY (mm)</source>
+        <translation>SY (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>SZ (mm)</source>
+        <translation>SZ (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rotary 1 (deg)</source>
+        <translation>oś obrotowa 1 (st.)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rotary 2 (deg)</source>
+        <translation>oś obrotowa 2 (st.)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>frame rot. (deg)</source>
+        <translation>obrót układu (st.)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
@@ -434,22 +1384,239 @@
         <translation>Odchyłka przed (mm)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+0"/>
+        <source>Deviation after (mm)</source>
+        <translation>Odchyłka po (mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Methods and &amp;machine</source>
+        <translation>Metody i &amp;maszyna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Optimisation curve</source>
+        <translation>Krzywa &amp;optymalizacji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Re&amp;measure loop</source>
+        <translation>Pętla ponownego pomia&amp;ru</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Points</source>
+        <translation>Pu&amp;nkty</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>&amp;Probe points:</source>
         <translation>&amp;Punkty sondowania:</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+9"/>
+        <source>M&amp;ethod:</source>
+        <translation>M&amp;etoda:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Tolerance ±</source>
+        <translation>&amp;Tolerancja ±</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Lock:</source>
+        <translation>Zablokuj:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Hold %1 at 0 (a constrained optimum over the other parameters)</source>
+        <translation>Utrzymaj %1 na 0 (optimum z ograniczeniem po pozostałych parametrach)</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Change the matching method</source>
+        <translation>Zmiana metody dopasowania</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Change the matching tolerance</source>
+        <translation>Zmiana tolerancji dopasowania</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Change the matching scale</source>
+        <translation>Zmiana skali dopasowania</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Change the matching locks</source>
+        <translation>Zmiana blokad dopasowania</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+210"/>
+        <location line="+12"/>
+        <source>Matching failed: %1</source>
+        <translation>Dopasowanie nie powiodło się: %1</translation>
+    </message>
+    <message>
+        <location line="-149"/>
+        <source>The matching study&apos;s settings are invalid: %1</source>
+        <translation>Ustawienia studium dopasowania są nieprawidłowe: %1</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Ten projekt nie zawiera punktów sondowania. Dodaj do pliku projektu zbiór danych rodzaju „probe_points” (identyfikator, powierzchnia, punkt nominalny, normalna, punkt zmierzony).</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <source>%1 points on %2 surfaces, %3. Before matching: RMS deviation %4 mm, largest %5 mm.</source>
-        <translation>Punkty: %1, powierzchnie: %2, %3. Przed dopasowaniem: odchyłka średniokwadratowa %4 mm, największa %5 mm.</translation>
+        <location line="+12"/>
+        <source>%1 points on %2 surfaces, %3%4.</source>
+        <translation>Punkty: %1, powierzchnie: %2, %3%4.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+86"/>
+        <source>Settings changed: press Run (Ctrl+R) to match again.</source>
+        <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Matching …</source>
+        <translation>Dopasowywanie …</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>(The loop ran with the previous tolerance: Run again.)</source>
+        <translation>(Pętla działała z poprzednią tolerancją: uruchom ponownie.)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: %2 of %3 points out of ±%4 mm before, %5 after; RMSE %6 mm, max |d| %7 mm.%8</source>
+        <translation>%1: %2 z %3 punktów poza ±%4 mm przed, %5 po; RMSE %6 mm, maks. |d| %7 mm.%8</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source> Cancelled: the best posture found so far.</source>
+        <translation> Anulowano: najlepsze dotąd znalezione położenie.</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>BEFORE matching
+%1 of %2 out of ±%3 mm, max |d| %4 mm</source>
+        <translation>PRZED dopasowaniem
+%1 z %2 poza ±%3 mm, maks. |d| %4 mm</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>AFTER matching
+not run yet: press Run (Ctrl+R)</source>
+        <translation>PO dopasowaniu
+jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>AFTER matching (%1)
+%2 of %3 out of ±%4 mm, max |d| %5 mm</source>
+        <translation>PO dopasowaniu (%1)
+%2 z %3 poza ±%4 mm, maks. |d| %5 mm</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Shown after matching and used for the machine adjustment</source>
+        <translation>Pokazywane po dopasowaniu i używane do nastawienia maszyny</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Rough</source>
+        <translation>Zgrubne</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rough matching: 3-point local frames, Eq. 3–7</source>
+        <translation>Dopasowanie zgrubne: lokalne układy 3-punktowe, równ. 3–7</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Machine adjustment values for %1 (%2), posture of %3. %4</source>
+        <translation>Wartości nastawienia maszyny dla %1 (%2), położenie z %3. %4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>head-head, Eq. 12–13</source>
+        <translation>głowica-głowica, równ. 12–13</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table-table trunnion</source>
+        <translation>stół-stół, kołyska</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Within travel.</source>
+        <translation>W zakresie przesuwu.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OUTSIDE TRAVEL: %1</source>
+        <translation>POZA ZAKRESEM PRZESUWU: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>deg</source>
+        <translation>st.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>frame rotation</source>
+        <translation>obrót układu współrzędnych</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The remeasure loop did not run.</source>
+        <translation>Pętla ponownego pomiaru nie została uruchomiona.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+1"/>
+        <source>S%1 (deg)</source>
+        <translation>S%1 (st.)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Step 7 with the simulator as machine and CMM (true posture: the %1 fit, probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
+        <translation>Krok 7 z symulatorem jako maszyną i WMP (rzeczywiste położenie: dopasowanie %1, szum sondowania %2 mm): pomiar, dopasowanie, korekta układu WCS, ponowny pomiar. %3</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>Every point is inside the tolerance after %n adjustment(s).</source>
+        <translation>
+            <numerusform>Po %n korekcie każdy punkt mieści się w tolerancji.</numerusform>
+            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji.</numerusform>
+            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Still out of tolerance after the last adjustment.</source>
+        <translation>Nadal poza tolerancją po ostatniej korekcie.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>in tolerance: no adjustment</source>
+        <translation>w tolerancji: bez korekty</translation>
+    </message>
+    <message>
+        <location line="-352"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -459,12 +1626,22 @@
         <translation>tylko położenia</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
+        <source>, planar</source>
+        <translation>, płaskie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Licence: %1.</source>
         <translation>Licencja: %1.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+3"/>
+        <source>Not matched yet: press Run (Ctrl+R).</source>
+        <translation>Jeszcze nie dopasowano: naciśnij Uruchom (Ctrl+R).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Cannot show these probe points:
 %1</source>
         <translation>Nie można wyświetlić tych punktów sondowania:
@@ -523,6 +1700,22 @@
     </message>
 </context>
 <context>
+    <name>metrofit::PointSetView</name>
+    <message>
+        <location filename="../widgets/pointview/pointsetview.cpp" line="+540"/>
+        <source>3D view needs an X11 display (run under xvfb-run for headless use)</source>
+        <translation>Widok 3D wymaga ekranu X11 (bez monitora uruchom przez xvfb-run)</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::PolarDeviationView</name>
+    <message>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-57"/>
+        <source>Radial deviation of the measured path from the nominal circle, magnified (ballbar plot): plotted radius = R + k × deviation. Blue: CCW loop, orange: CW loop; the rings are labelled in µm.</source>
+        <translation>Odchyłka promieniowa zmierzonego toru od okręgu nominalnego, powiększona (wykres ballbar): promień na wykresie = R + k × odchyłka. Niebieski: pętla przeciwnie do ruchu wskazówek zegara, pomarańczowy: zgodnie; okręgi opisano w µm.</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::PreferencesDialog</name>
     <message>
         <location filename="../app/gui/preferencesdialog.cpp" line="+16"/>
@@ -558,7 +1751,7 @@
 <context>
     <name>metrofit::ProjectDocument</name>
     <message>
-        <location filename="../widgets/document/projectdocument.cpp" line="+30"/>
+        <location filename="../widgets/document/projectdocument.cpp" line="+32"/>
         <source>Rename project</source>
         <translation>Zmiana nazwy projektu</translation>
     </message>
@@ -573,12 +1766,12 @@
         <translation>Edycja notatek: %1</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+118"/>
         <source>Untitled</source>
         <translation>Bez nazwy</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+121"/>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>projekt nie został jeszcze zapisany; wybierz nazwę pliku poleceniem „Zapisz jako”</translation>
     </message>
@@ -595,6 +1788,1399 @@
         <location line="+9"/>
         <source>%1 (Ctrl+%2)</source>
         <translation>%1 (Ctrl+%2)</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::Report</name>
+    <message>
+        <location filename="../widgets/report/diagnosissection.cpp" line="+38"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+486"/>
+        <source>Thermal</source>
+        <translation>Termika</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kinematic</source>
+        <translation>Kinematyka</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Setup data</source>
+        <translation>Dane ustawcze</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Posture matching</source>
+        <translation>Dopasowanie położenia</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>rmse %1 %2, max |e| %3 %2</source>
+        <translation>rmse %1 %2, maks. |e| %3 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, held-out rmse %1 %2</source>
+        <translation>, rmse danych testowych %1 %2</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The diagnosis could not run: %1</source>
+        <translation>Nie można było przeprowadzić diagnozy: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Declared model: %1 a static linear function of %2, fitted on the first %3 % of the rows and held out on the rest.</source>
+        <translation>Zadeklarowany model: %1 jako statyczna funkcja liniowa %2, dopasowana na pierwszych %3 % wierszy, reszta to dane testowe.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Declared model: the Cartesian machine&apos;s actuator errors (origin, axis angles).</source>
+        <translation>Zadeklarowany model: błędy napędów maszyny kartezjańskiej (początek, kąty osi).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Declared model: constant setup-data errors acting through the relation graph of %1.</source>
+        <translation>Zadeklarowany model: stałe błędy danych ustawczych działające przez graf relacji %1.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Declared model: a rigid posture error (rotation and translation); tolerance ±%1 mm.</source>
+        <translation>Zadeklarowany model: sztywny błąd położenia (obrót i przesunięcie); tolerancja ±%1 mm.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Step 0, the declared model: %1.</source>
+        <translation>Krok 0, zadeklarowany model: %1.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>effect</source>
+        <translation>efekt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>parameters ± standard error</source>
+        <translation>parametry ± błąd standardowy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rmse (%1)</source>
+        <translation>rmse (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>held-out (%1)</source>
+        <translation>dane testowe (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accepted</source>
+        <translation>przyjęty</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+206"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-199"/>
+        <source>yes</source>
+        <translation>tak</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+0"/>
+        <source>no</source>
+        <translation>nie</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Evidence, per candidate (# = loop round):</source>
+        <translation>Dowody dla każdego kandydata (# = runda pętli):</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No candidate passed the evidence test: the declared model is kept. %1.</source>
+        <translation>Żaden kandydat nie przeszedł testu dowodów: zadeklarowany model zostaje zachowany. %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Accepted: %1. Final model: %2.</source>
+        <translation>Przyjęto: %1. Model końcowy: %2.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Residual before and after %1</source>
+        <translation>Residua przed i po %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+176"/>
+        <source>error (%1)</source>
+        <translation>błąd (%1)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>declared model</source>
+        <translation>zadeklarowany model</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>with accepted effects</source>
+        <translation>z przyjętymi efektami</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>rmse (fitted data)</source>
+        <translation>rmse (dane dopasowania)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max |e| (fitted data)</source>
+        <translation>maks. |e| (dane dopasowania)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>rmse (held-out rows)</source>
+        <translation>rmse (wiersze testowe)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Closed loop: diagnosis</source>
+        <translation>Pętla zamknięta: diagnoza</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>For each study the declared model is fitted and its residual computed; candidate effects the model lacks are tried one by one, each estimated with its parameters and their standard errors. An effect is accepted only on evidence (out-of-sample improvement for thermal, an information criterion with a conservative threshold elsewhere) and when it reduces the error by a practically relevant amount; the model is refitted with it and the search repeated until nothing more is found.</source>
+        <translation>Dla każdego studium dopasowywany jest zadeklarowany model i obliczane jego residuum; brakujące w modelu efekty kandydujące są sprawdzane kolejno, każdy estymowany wraz z parametrami i ich błędami standardowymi. Efekt jest przyjmowany tylko na podstawie dowodów (poprawa na danych testowych dla termiki, w pozostałych przypadkach kryterium informacyjne z ostrożnym progiem) i gdy zmniejsza błąd o praktycznie istotną wartość; model jest ponownie dopasowywany z tym efektem, a wyszukiwanie powtarzane, dopóki nic więcej nie zostanie znalezione.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-158"/>
+        <source>error</source>
+        <translation>błąd</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>identified</source>
+        <translation>zidentyfikowany</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>standard error</source>
+        <translation>błąd standardowy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>simulated (true)</source>
+        <translation>symulowany (rzeczywisty)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>origin x (µm)</source>
+        <translation>początek x (µm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>origin y (µm)</source>
+        <translation>początek y (µm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>X axis angle a (deg)</source>
+        <translation>kąt osi X a (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Y axis angle b (deg)</source>
+        <translation>kąt osi Y b (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>squareness b − a (deg)</source>
+        <translation>prostopadłość b − a (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS residual (µm)</source>
+        <translation>residuum RMS (µm)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+191"/>
+        <source>Circular test “%1”</source>
+        <translation>Test kołowy „%1”</translation>
+    </message>
+    <message>
+        <location line="-183"/>
+        <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (seed 002, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
+        <translation>Punkty: %1; okrąg nominalny R %2 mm wokół (%3, %4) mm; pętle: %5 (przeciwnie do ruchu wskazówek zegara, potem zgodnie). Błędy napędów maszyny kartezjańskiej (źródło 002, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) zidentyfikowano metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Path (XY)</source>
+        <translation>Tor (XY)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Radial deviation (polar, magnified)</source>
+        <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Compensation</source>
+        <translation>Kompensacja</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Compensated references for the nominal circle (the commanded points of the test) from the identified errors (Eq. 15), and the largest |radial deviation| from the nominal circle before and after:</source>
+        <translation>Skompensowane wartości zadane dla okręgu nominalnego (zadane punkty testu) na podstawie zidentyfikowanych błędów (równ. 15) oraz największa |odchyłka promieniowa| od okręgu nominalnego przed i po:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>path</source>
+        <translation>tor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max. dev. (µm)</source>
+        <translation>maks. odch. (µm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>measured, before compensation</source>
+        <translation>zmierzony, przed kompensacją</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>after, through the simulated machine (true errors, noise free)</source>
+        <translation>po, przez maszynę symulowaną (rzeczywiste błędy, bez szumu)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>after, expected from the measured residual (noise stays)</source>
+        <translation>po, oczekiwany z zmierzonego residuum (szum pozostaje)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>after, through the identified model</source>
+        <translation>po, przez zidentyfikowany model</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>largest correction |reference − nominal|</source>
+        <translation>największa korekcja |wartość zadana − nominalna|</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Statistical process control</source>
+        <translation>Statystyczne sterowanie procesem</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The SPC series could not be charted: %1</source>
+        <translation>Nie można było wykreślić serii SPC: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Statistical process control of “%1” (%2)</source>
+        <translation>Statystyczne sterowanie procesem: „%1” (%2)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Histogram of %1 (%2 values)</source>
+        <translation>Histogram %1 (wartości: %2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>index</source>
+        <translation>indeks</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+366"/>
+        <source>value</source>
+        <translation>wartość</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>subgroups × size</source>
+        <translation>podgrupy × liczność</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A2 / D3 / D4</source>
+        <translation>A2 / D3 / D4</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>X-bar chart CL / UCL / LCL</source>
+        <translation>karta X-średnie CL / UCL / LCL</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>R chart CL / UCL / LCL</source>
+        <translation>karta R CL / UCL / LCL</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>in control</source>
+        <translation>pod kontrolą</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>σ within (R̄ / d2)</source>
+        <translation>σ wewnątrz (R̄ / d2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>LSL / USL</source>
+        <translation>LSL / USL</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cp (Eq. 16) / Cpk</source>
+        <translation>Cp (równ. 16) / Cpk</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>natural tolerance (Eq. 17)</source>
+        <translation>tolerancja naturalna (równ. 17)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>systematic error (Eq. 20)</source>
+        <translation>błąd systematyczny (równ. 20)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%2 ± %3 (%4)</source>
+        <translation>%1%2 ± %3 (%4)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>significant</source>
+        <translation>istotny</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not significant</source>
+        <translation>nieistotny</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>regression offset angle (Fig. 10)</source>
+        <translation>kąt przesunięcia regresji (rys. 10)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1° (slope %2%3 per sample, r² %4)</source>
+        <translation>%1° (nachylenie %2%3 na próbkę, r² %4)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>SPC-gated compensation: %1</source>
+        <translation>Kompensacja warunkowana SPC: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Kinematic compensation and SPC</source>
+        <translation>Kompensacja kinematyczna i SPC</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Cannot analyse this circular test: %1</source>
+        <translation>Nie można przeanalizować tego testu kołowego: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/matchingsection.cpp" line="-325"/>
+        <source>SADE (paper settings)</source>
+        <translation>SADE (parametry z publikacji)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GA-simplex</source>
+        <translation>GA-simpleks</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>closed form (LS optimum)</source>
+        <translation>postać zamknięta (optimum MNK)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>minimax</source>
+        <translation>minimaks</translation>
+    </message>
+    <message>
+        <location line="+189"/>
+        <source>Probe points “%1”, tolerance ±%2 mm</source>
+        <translation>Punkty sondowania „%1”, tolerancja ±%2 mm</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Every method was run on the %1 points (%2). The posture after matching is that of %3; the machine adjustment values are for the study&apos;s %4 machine. Deviation: %5.</source>
+        <translation>Każdą metodę uruchomiono dla %1 punktów (%2). Położenie po dopasowaniu pochodzi z %3; wartości nastawienia maszyny dotyczą maszyny %4 ze studium. Odchyłka: %5.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>with normals</source>
+        <translation>z normalnymi</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>positions only</source>
+        <translation>tylko położenia</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>along the nominal normal</source>
+        <translation>wzdłuż normalnej nominalnej</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>distance |p − (sRq + t)|</source>
+        <translation>odległość |p − (sRq + t)|</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Before matching</source>
+        <translation>Przed dopasowaniem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+6"/>
+        <source>%1 of %2 out of ±%3 mm, max |d| %4 mm</source>
+        <translation>%1 z %2 poza ±%3 mm, maks. |d| %4 mm</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>After %1</source>
+        <translation>Po %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1; grey: nominal points; lines: deviation vectors ×%2 (both views); large outlined points: out of tolerance.</source>
+        <translation>%1; szare: punkty nominalne; linie: wektory odchyłek ×%2 (oba widoki); duże obrysowane punkty: poza tolerancją.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Top view</source>
+        <translation>Widok z góry</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Oblique view as in the program</source>
+        <translation>Widok ukośny jak w programie</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>before: deviation (mm), green = within ±%1</source>
+        <translation>przed: odchyłka (mm), zielony = w granicach ±%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>after: deviation (mm), green = within ±%1</source>
+        <translation>po: odchyłka (mm), zielony = w granicach ±%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location filename="../widgets/report/probesection.cpp" line="+324"/>
+        <source>surface</source>
+        <translation>powierzchnia</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location filename="../widgets/report/probesection.cpp" line="-39"/>
+        <location line="+39"/>
+        <source>points</source>
+        <translation>punkty</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMSE before</source>
+        <translation>RMSE przed</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max before</source>
+        <translation>maks. przed</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out before</source>
+        <translation>poza przed</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMSE after</source>
+        <translation>RMSE po</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max after</source>
+        <translation>maks. po</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out after</source>
+        <translation>poza po</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location filename="../widgets/report/probesection.cpp" line="+13"/>
+        <source>(none)</source>
+        <translation>(brak)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>all</source>
+        <translation>wszystkie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Deviations before and after %1 (mm)</source>
+        <translation>Odchyłki przed i po %1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+177"/>
+        <source>method</source>
+        <translation>metoda</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rx, ry, rz (deg)</source>
+        <translation>rx, ry, rz (st.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>x, y, z (mm)</source>
+        <translation>x, y, z (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMSE</source>
+        <translation>RMSE</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max |d|</source>
+        <translation>maks. |d|</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out</source>
+        <translation>poza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>evals</source>
+        <translation>ocen</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>rough</source>
+        <translation>zgrubne</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Methods (RMSE and max |d| in mm)</source>
+        <translation>Metody (RMSE i maks. |d| w mm)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>axis</source>
+        <translation>oś</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>unit</source>
+        <translation>jednostka</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>frame rotation</source>
+        <translation>obrót układu współrzędnych</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Machine adjustment values (%1%2)</source>
+        <translation>Wartości nastawienia maszyny (%1%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, OUTSIDE TRAVEL</source>
+        <translation>, POZA ZAKRESEM PRZESUWU</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>round</source>
+        <translation>runda</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max |d| (mm)</source>
+        <translation>maks. |d| (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>out of tol.</source>
+        <translation>poza tol.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SX, SY, SZ (mm)</source>
+        <translation>SX, SY, SZ (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S%1, S%2 (deg)</source>
+        <translation>S%1, S%2 (st.)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>in tolerance</source>
+        <translation>w tolerancji</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Remeasure loop (simulated machine and CMM)</source>
+        <translation>Pętla ponownego pomiaru (maszyna symulowana i WMP)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Posture matching — before and after</source>
+        <translation>Dopasowanie położenia — przed i po</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>The matching study&apos;s probe points could not be found.</source>
+        <translation>Nie znaleziono punktów sondowania studium dopasowania.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/probesection.cpp" line="-267"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location line="+134"/>
+        <location line="+5"/>
+        <source>%1 (mm)</source>
+        <translation>%1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Probe points “%1”</source>
+        <translation>Punkty sondowania „%1”</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <location filename="../widgets/report/report.cpp" line="+106"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-72"/>
+        <location line="+35"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-207"/>
+        <source>file</source>
+        <translation>plik</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>surfaces</source>
+        <translation>powierzchnie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deviation</source>
+        <translation>odchyłka</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>along the nominal normal, before matching</source>
+        <translation>wzdłuż normalnej nominalnej, przed dopasowaniem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>distance |p − q| (no normals), before matching</source>
+        <translation>odległość |p − q| (bez normalnych), przed dopasowaniem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mean |deviation|</source>
+        <translation>średnia |odchyłka|</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMS deviation</source>
+        <translation>odchyłka RMS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max |deviation|</source>
+        <translation>maks. |odchyłka|</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (point %2)</source>
+        <translation>%1 (punkt %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+29"/>
+        <source>outside ±%1 mm</source>
+        <translation>poza ±%1 mm</translation>
+    </message>
+    <message>
+        <location line="-28"/>
+        <source>%1 of %2</source>
+        <translation>%1 z %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>mean deviation</source>
+        <translation>średnia odchyłka</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+5"/>
+        <source>Top view (XY)</source>
+        <translation>Widok z góry (XY)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Front view (XZ)</source>
+        <translation>Widok z przodu (XZ)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>deviation along the normal (mm)</source>
+        <translation>odchyłka wzdłuż normalnej (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>distance |p − q| (mm)</source>
+        <translation>odległość |p − q| (mm)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>mean deviation (mm)</source>
+        <translation>średnia odchyłka (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>mean distance (mm)</source>
+        <translation>średnia odległość (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max |deviation| (mm)</source>
+        <translation>maks. |odchyłka| (mm)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Posture matching — probe points</source>
+        <translation>Dopasowanie położenia — punkty sondowania</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/report.cpp" line="-16"/>
+        <source>Metrofit report</source>
+        <translation>Raport Metrofit</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>project</source>
+        <translation>projekt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>date</source>
+        <translation>data</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Metrofit version</source>
+        <translation>Wersja Metrofit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Datasets</source>
+        <translation>Zbiory danych</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>id</source>
+        <translation>identyfikator</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+67"/>
+        <source>kind</source>
+        <translation>rodzaj</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rows / points</source>
+        <translation>wiersze / punkty</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>licence</source>
+        <translation>licencja</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The project references no datasets.</source>
+        <translation>Projekt nie odwołuje się do żadnych zbiorów danych.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Contents</source>
+        <translation>Spis treści</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The project has no data a section of this report could show yet.</source>
+        <translation>Projekt nie zawiera jeszcze danych, które mogłaby pokazać którakolwiek sekcja raportu.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>section</source>
+        <translation>sekcja</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>page</source>
+        <translation>strona</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <location filename="../widgets/report/reportpainter.cpp" line="+106"/>
+        <source>Metrofit %1</source>
+        <translation>Metrofit %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/reportpainter.cpp" line="+12"/>
+        <source>page %1 of %2</source>
+        <translation>strona %1 z %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>page %1</source>
+        <translation>strona %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/setupsection.cpp" line="-157"/>
+        <source>machine point</source>
+        <translation>punkt maszyny</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>work offset</source>
+        <translation>przesunięcie punktu zerowego</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>tool length</source>
+        <translation>długość narzędzia</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Setup-data correction</source>
+        <translation>Korekcja danych ustawczych</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Model “%1”</source>
+        <translation>Model „%1”</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>name</source>
+        <translation>nazwa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>setup data</source>
+        <translation>dane ustawcze</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1: %2 work offsets, %3 tools, %4 machine points</source>
+        <translation>%1: przesunięcia punktu zerowego: %2, narzędzia: %3, punkty maszyny: %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>features</source>
+        <translation>elementy geometryczne</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dimensions</source>
+        <translation>wymiary</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>arcs</source>
+        <translation>łuki</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>decision space</source>
+        <translation>przestrzeń decyzyjna</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>axis %1, grid %2 mm, bounds [%3, %4] mm</source>
+        <translation>oś %1, siatka %2 mm, granice [%3, %4] mm</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The project has no CMM report for this model: nothing to correct.</source>
+        <translation>Projekt nie ma raportu WMP dla tego modelu: nie ma czego korygować.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Report data “%1”</source>
+        <translation>Dane raportu „%1”</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>parts</source>
+        <translation>przedmioty</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+1"/>
+        <location line="+134"/>
+        <source>rows</source>
+        <translation>wiersze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (deviation of a dimension: mean over its rows)</source>
+        <translation>%1 (odchyłka wymiaru: średnia z jego wierszy)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>before correction</source>
+        <translation>przed korekcją</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>f1 = %1 mm; %2 of %3 mean deviations out of tolerance</source>
+        <translation>f1 = %1 mm; %2 z %3 średnich odchyłek poza tolerancją</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Settings</source>
+        <translation>Ustawienia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Objectives as the paper (Stryczek 2016, Eq. 6–10): f1 = the smallest unilateral error budget over all dimensions after correction (maximised), f2 = |x| (minimised among the f1-optimal), f = 10 f1 − f2. Exact: LP / MILP on the %1 mm grid (GLPK), then the least-norm correction. CRIPSO: 100 polyps, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 particles, asynchronous gbest, same coefficients. Budget %2 solutions, seed %3.</source>
+        <translation>Funkcje celu jak w publikacji (Stryczek 2016, równ. 6–10): f1 = najmniejszy jednostronny budżet błędu ze wszystkich wymiarów po korekcji (maksymalizowany), f2 = |x| (minimalizowane wśród f1-optymalnych), f = 10 f1 − f2. Dokładna: LP / MILP na siatce %1 mm (GLPK), następnie korekcja o najmniejszej normie. CRIPSO: 100 polipów, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 cząstek, asynchroniczny gbest, te same współczynniki. Budżet %2 rozwiązań, ziarno %3.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Convergence</source>
+        <translation>Zbieżność</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Comparison</source>
+        <translation>Porównanie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>f1 (mm)</source>
+        <translation>f1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>f2 (mm)</source>
+        <translation>f2 (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f</source>
+        <translation>f</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bonus (mm)</source>
+        <translation>premia (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>gap f1 (mm)</source>
+        <translation>różnica f1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>solutions</source>
+        <translation>rozwiązania</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Exact certificate: f1 %1 on the grid, |x| %2 among the f1-optimal corrections (%3 LP / MILP solver calls). Gap f1: the exact f1 minus the method&apos;s.</source>
+        <translation>Certyfikat dokładny: f1 %1 na siatce, |x| %2 wśród f1-optymalnych korekcji (wywołania solvera LP / MILP: %3). Różnica f1: dokładne f1 minus f1 metody.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>proven optimal</source>
+        <translation>udowodnione optimum</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>NOT proven optimal</source>
+        <translation>NIE udowodnione optimum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>proven minimal</source>
+        <translation>udowodnione minimum</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not proven minimal</source>
+        <translation>nieudowodnione minimum</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Corrections (mm, to add to the registers along %1)</source>
+        <translation>Korekcje (mm, do dodania do rejestrów wzdłuż %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>setup datum</source>
+        <translation>dana ustawcza</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>register</source>
+        <translation>rejestr</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>exact</source>
+        <translation>dokładna</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Margins per dimension, before and after the exact correction</source>
+        <translation>Zapasy dla każdego wymiaru, przed i po dokładnej korekcji</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Export for the controller (Fanuc, exact corrections)</source>
+        <translation>Eksport dla sterowania (Fanuc, dokładne korekcje)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>metrofit-cli setup --export fanuc writes the same text; Heidenhain, Siemens and CSV are the other formats (see the sign convention in the header).</source>
+        <translation>metrofit-cli setup --export fanuc zapisuje ten sam tekst; Heidenhain, Siemens i CSV to pozostałe formaty (patrz konwencja znaków w nagłówku).</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/thermalsection.cpp" line="-221"/>
+        <source>%1 h</source>
+        <translation>%1 h</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+23"/>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%n temperature(s)</source>
+        <translation>temperatury: %n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%n displacement(s)</source>
+        <translation>przemieszczenia: %n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%n strain(s)</source>
+        <translation>odkształcenia: %n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%n speed(s)</source>
+        <translation>prędkości: %n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%n other</source>
+        <translation>inne: %n</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 heating, %2 cooling, from the speed channel %3 (running = heating)</source>
+        <translation>nagrzewanie: %1, chłodzenie: %2, z kanału prędkości %3 (praca = nagrzewanie)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 heating, %2 cooling, from the slope of the mean temperature</source>
+        <translation>nagrzewanie: %1, chłodzenie: %2, z nachylenia średniej temperatury</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>none detected</source>
+        <translation>nie wykryto</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Thermal log “%1”</source>
+        <translation>Rejestr termiczny „%1”</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1, every %2 (median), time column %3</source>
+        <translation>%1, co %2 (mediana), kolumna czasu %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>duration</source>
+        <translation>czas trwania</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>channels</source>
+        <translation>kanały</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>phases</source>
+        <translation>fazy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chart</source>
+        <translation>wykres</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 of %2 channels shown; the table lists all</source>
+        <translation>Pokazano %1 z %2 kanałów; tabela zawiera wszystkie</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>channel</source>
+        <translation>kanał</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>quantity</source>
+        <translation>wielkość</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max</source>
+        <translation>maks.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>in chart</source>
+        <translation>na wykresie</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Hysteresis</source>
+        <translation>Histereza</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No hysteresis analysis: %1</source>
+        <translation>Brak analizy histerezy: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 against each sensor (Fig. 9 of seed 004): heating runs (the change of %1 grows, %2 rows) and cooling runs (%3 rows) in the colours of the trend chart&apos;s phases. Loop area by the shoelace formula; lag: the time constant of a first-order lag between sensor and displacement (&gt; 0: the sensor lags).%4</source>
+        <translation>%1 względem każdego czujnika (rys. 9 ze źródła 004): fazy nagrzewania (zmiana %1 rośnie, wiersze: %2) i chłodzenia (wiersze: %3) w kolorach faz wykresu trendu. Pole pętli ze wzoru Gaussa (sznurowadłowego); opóźnienie: stała czasowa członu inercyjnego pierwszego rzędu między czujnikiem a przemieszczeniem (&gt; 0: czujnik się opóźnia).%4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
+        <translation>Wykresy pierwszych %1 z %2 czujników; tabela zawiera wszystkie.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>sensor</source>
+        <translation>czujnik</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>loop area</source>
+        <translation>pole pętli</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>loop / ranges</source>
+        <translation>pętla / rozstępy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lag τ (min)</source>
+        <translation>opóźnienie τ (min)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R² with lag</source>
+        <translation>R² z opóźnieniem</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R² static</source>
+        <translation>R² statyczny</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Thermal error models</source>
+        <translation>Modele błędu termicznego</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>GNNMCI(1,N) (PSO, 90 particles, 100 iterations, seed %1), GMC(1,N) (least squares) and the MLP (%2-10-1, Levenberg-Marquardt, seed %1) predict %3 from %4; each is fitted on the first %5 % of the rows and tested on the rest (held out, shaded).</source>
+        <translation>GNNMCI(1,N) (PSO, 90 cząstek, 100 iteracji, ziarno %1), GMC(1,N) (najmniejsze kwadraty) i MLP (%2-10-1, Levenberg-Marquardt, ziarno %1) przewidują %3 na podstawie %4; każdy jest dopasowany na pierwszych %5 % wierszy i testowany na reszcie (dane testowe, zacienione).</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>To keep the report&apos;s run time short, this %1-row log is fitted on every %2th row (%3 rows); the GUI and metrofit-cli fit all rows.</source>
+        <translation>Aby skrócić czas tworzenia raportu, ten rejestr (wiersze: %1) jest dopasowywany na co %2. wierszu (wiersze: %3); GUI i metrofit-cli dopasowują wszystkie wiersze.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>The models could not be fitted: %1</source>
+        <translation>Nie można było dopasować modeli: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>residual = measured − model</source>
+        <translation>residuum = zmierzone − model</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+71"/>
+        <source>model</source>
+        <translation>model</translation>
+    </message>
+    <message>
+        <location line="-70"/>
+        <location line="+76"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="-76"/>
+        <location line="+74"/>
+        <source>RMSE (%1)</source>
+        <translation>RMSE (%1)</translation>
+    </message>
+    <message>
+        <location line="-73"/>
+        <location line="+76"/>
+        <source>E</source>
+        <translation>E</translation>
+    </message>
+    <message>
+        <location line="-76"/>
+        <location line="+71"/>
+        <source>band (%1)</source>
+        <translation>pasmo (%1)</translation>
+    </message>
+    <message>
+        <location line="-60"/>
+        <source>%1 PSO iterations, Eq. 2.9 %2 → %3</source>
+        <translation>iteracje PSO: %1, równ. 2.9 %2 → %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>least squares, b1 = %1</source>
+        <translation>najmniejsze kwadraty, b1 = %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>least squares, unstable: b1 = %1 ≤ 0</source>
+        <translation>najmniejsze kwadraty, niestabilny: b1 = %1 ≤ 0</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 LM epochs (%2)</source>
+        <translation>epoki LM: %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> (%1 s)</source>
+        <translation> (%1 s)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>diverges</source>
+        <translation>rozbieżny</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fit, %1</source>
+        <translation>dopasowanie, %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>held out, %1</source>
+        <translation>dane testowe, %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Performance indices (Table 4 of seed 004): R correlation, RMSE, E Nash-Sutcliffe efficiency, band = largest |residual|.</source>
+        <translation>Wskaźniki jakości (tabela 4 ze źródła 004): R korelacja, RMSE, E efektywność Nasha-Sutcliffe&apos;a, pasmo = największe |residuum|.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Training: %1.</source>
+        <translation>Trenowanie: %1.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Modular models (Section 4.3)</source>
+        <translation>Modele modułowe (rozdział 4.3)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The modular case could not be computed: %1</source>
+        <translation>Nie można było obliczyć przypadku modułowego: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Each model is fitted on the Z-heating test (%1) and the C-heating test (%2) together and predicts the combined helical test (%3), which it has not seen. Target %4, inputs %5, seed 1. Error reduction as the paper states it: 1 − max|residual| / max|error|, and by RMS.</source>
+        <translation>Każdy model jest dopasowywany łącznie na teście nagrzewania Z (%1) i teście nagrzewania C (%2) i przewiduje łączony test śrubowy (%3), którego nie widział. Wielkość docelowa %4, wejścia %5, ziarno 1. Redukcja błędu jak w publikacji: 1 − max|residuum| / max|błąd| oraz według RMS.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>less, peak</source>
+        <translation>mniej, szczyt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>less, RMS</source>
+        <translation>mniej, RMS</translation>
     </message>
 </context>
 <context>
@@ -646,52 +3232,1732 @@
     </message>
 </context>
 <context>
-    <name>metrofit::StudyPage</name>
+    <name>metrofit::ResidualPlot</name>
     <message>
-        <location filename="../app/gui/studypage.cpp" line="+31"/>
-        <source>The views of this study are not part of this version of the workbench yet. Nothing has been computed: the datasets it will work on are listed below.</source>
-        <translation>Widoki tego studium nie są jeszcze częścią tej wersji warsztatu. Nic nie zostało obliczone: poniżej wymieniono zbiory danych, na których będzie ono pracować.</translation>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="-266"/>
+        <source>before the effect</source>
+        <translation>przed efektem</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <source>What this study does</source>
-        <translation>Co robi to studium</translation>
+        <location line="+1"/>
+        <source>after</source>
+        <translation>po</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Datasets</source>
-        <translation>Zbiory danych</translation>
+        <location line="+23"/>
+        <source> (arrows × %1)</source>
+        <translation> (strzałki × %1)</translation>
     </message>
+</context>
+<context>
+    <name>metrofit::ResidualPlotView</name>
     <message>
-        <location line="+6"/>
-        <source>Notes</source>
-        <translation>Notatki</translation>
+        <location line="+107"/>
+        <source>Residual plot: run the diagnosis (Ctrl+R)</source>
+        <translation>Wykres residuów: uruchom diagnozę (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+25"/>
-        <source>This project has no datasets for this study yet (it uses: %1).</source>
-        <translation>Ten projekt nie ma jeszcze zbiorów danych dla tego studium (wykorzystuje ono: %1).</translation>
+        <source>residual before the effect</source>
+        <translation>residuum przed efektem</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>after</source>
+        <translation>po</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupCharts</name>
+    <message>
+        <location filename="../widgets/setup/setupcharts.cpp" line="+66"/>
+        <source>exact</source>
+        <translation>dokładna</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1, seed %2</source>
+        <translation>%1, ziarno %2</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>solid: f1</source>
+        <translation>ciągła: f1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dashed: f2 = |x|</source>
+        <translation>kreskowana: f2 = |x|</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dotted: f = 10 f1 − f2 (right axis)</source>
+        <translation>kropkowana: f = 10 f1 − f2 (prawa oś)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>solutions evaluated</source>
+        <translation>ocenione rozwiązania</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Data this study uses: %1.</source>
-        <translation>Dane wykorzystywane przez to studium: %1.</translation>
+        <source>f1, f2 (mm)</source>
+        <translation>f1, f2 (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+105"/>
+        <source>f1 (mm)</source>
+        <translation>f1 (mm)</translation>
+    </message>
+    <message>
+        <location line="-103"/>
+        <source>f = 10 f1 − f2 (mm)</source>
+        <translation>f = 10 f1 − f2 (mm)</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>exact optimum f1 = %1 mm</source>
+        <translation>dokładne optimum f1 = %1 mm</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>exact f = %1</source>
+        <translation>dokładne f = %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>measurement set, sorted by f1 before correction</source>
+        <translation>zestaw pomiarów, sortowany wg f1 przed korekcją</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>before correction</source>
+        <translation>przed korekcją</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>exact optimum</source>
+        <translation>dokładne optimum</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 trials</source>
+        <translation>próby: %1</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupConvergenceView</name>
+    <message>
+        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+27"/>
+        <source>Show f&amp;2 = |x|</source>
+        <translation>f&amp;2 = |x|</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show f = &amp;10 f1 − f2</source>
+        <translation>f = &amp;10 f1 − f2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The size of the correction vector, mm (minimised among the f1-optimal)</source>
+        <translation>Wielkość wektora korekcji, mm (minimalizowana wśród f1-optymalnych)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The single objective the metaheuristics maximise (right axis)</source>
+        <translation>Pojedyncza funkcja celu maksymalizowana przez metaheurystyki (prawa oś)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Best solution so far against the number of solutions evaluated.</source>
+        <translation>Najlepsze dotąd rozwiązanie wobec liczby ocenionych.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupGraphEditor</name>
+    <message>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+70"/>
+        <source>Add node…</source>
+        <translation>Dodaj węzeł…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Add a machine point, work offset, tool, feature or dimension</source>
+        <translation>Dodaj punkt maszyny, przesunięcie punktu zerowego, narzędzie, element geometryczny lub wymiar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add arc…</source>
+        <translation>Dodaj łuk…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Add an arc with weight +1 or −1</source>
+        <translation>Dodaj łuk o wadze +1 lub −1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Edit…</source>
+        <translation>Edytuj…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rename the selected node or change its kind; flip the weight of the selected arc</source>
+        <translation>Zmień nazwę lub rodzaj zaznaczonego węzła; odwróć wagę zaznaczonego łuku</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Remove</source>
+        <translation>Usuń</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Remove the selected node (with its arcs) or arc</source>
+        <translation>Usuń zaznaczony węzeł (wraz z łukami) lub łuk</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Undo</source>
+        <translation>Cofnij</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Redo</source>
+        <translation>Ponów</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Undo the last edit of the graph (Ctrl+Z while the graph has the focus)</source>
+        <translation>Cofnij ostatnią zmianę grafu (Ctrl+Z, gdy graf ma fokus)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Redo (Ctrl+Shift+Z while the graph has the focus)</source>
+        <translation>Ponów (Ctrl+Shift+Z, gdy graf ma fokus)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Zoom in</source>
+        <translation>Powiększ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Zoom in (Ctrl+wheel)</source>
+        <translation>Powiększ (Ctrl+kółko)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Zoom out</source>
+        <translation>Pomniejsz</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Zoom out (Ctrl+wheel)</source>
+        <translation>Pomniejsz (Ctrl+kółko)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Fit</source>
+        <translation>Dopasuj</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fit the whole graph into the view</source>
+        <translation>Dopasuj cały graf do widoku</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rows</source>
+        <translation>Wiersze</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Levels in rows instead of columns</source>
+        <translation>Poziomy w wierszach zamiast w kolumnach</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Export SVG…</source>
+        <translation>Eksportuj SVG…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Save the graph as an SVG drawing</source>
+        <translation>Zapisz graf jako rysunek SVG</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export PNG…</source>
+        <translation>Eksportuj PNG…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Save the graph as a PNG image</source>
+        <translation>Zapisz graf jako obraz PNG</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Dimension</source>
+        <translation>Wymiar</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Nominal
+(mm)</source>
+        <translation>Nominalny
+(mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Lower
+(mm)</source>
+        <translation>Dolna
+(mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Upper
+(mm)</source>
+        <translation>Górna
+(mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lower tolerance limit relative to the nominal, mm</source>
+        <translation>Dolna granica tolerancji względem wartości nominalnej, mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Upper tolerance limit relative to the nominal, mm</source>
+        <translation>Górna granica tolerancji względem wartości nominalnej, mm</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+67"/>
+        <source>… and %n more problem(s)</source>
+        <translation>
+            <numerusform>… i jeszcze %n problem</numerusform>
+            <numerusform>… i jeszcze %n problemy</numerusform>
+            <numerusform>… i jeszcze %n problemów</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>The model has %n problem(s) (outlined in red):</source>
+        <translation>
+            <numerusform>Model ma %n problem (obrysowany na czerwono):</numerusform>
+            <numerusform>Model ma %n problemy (obrysowane na czerwono):</numerusform>
+            <numerusform>Model ma %n problemów (obrysowanych na czerwono):</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+97"/>
+        <location line="+20"/>
+        <source>Add node</source>
+        <translation>Dodaj węzeł</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>&amp;Level:</source>
+        <translation>&amp;Poziom:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+64"/>
+        <source>&amp;Id:</source>
+        <translation>&amp;Identyfikator:</translation>
+    </message>
+    <message>
+        <location line="-59"/>
+        <location line="+68"/>
+        <source>The id &quot;%1&quot; is empty or already used by another node.</source>
+        <translation>Identyfikator „%1” jest pusty lub używany już przez inny węzeł.</translation>
+    </message>
+    <message>
+        <location line="-60"/>
+        <location line="+30"/>
+        <source>Add arc</source>
+        <translation>Dodaj łuk</translation>
+    </message>
+    <message>
+        <location line="-13"/>
+        <source>+1 (the target moves with the source)</source>
+        <translation>+1 (cel porusza się zgodnie ze źródłem)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>−1 (the target moves against the source)</source>
+        <translation>−1 (cel porusza się przeciwnie do źródła)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;From:</source>
+        <translation>&amp;Od:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;To:</source>
+        <translation>&amp;Do:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Weight:</source>
+        <translation>&amp;Waga:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The arc %1 → %2 exists already or an end is empty.</source>
+        <translation>Łuk %1 → %2 już istnieje lub jeden z końców jest pusty.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Edit %1</source>
+        <translation>Edycja %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Rodzaj:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Edit node</source>
+        <translation>Edycja węzła</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Export graph as SVG</source>
+        <translation>Eksport grafu jako SVG</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Export graph as PNG</source>
+        <translation>Eksport grafu jako PNG</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>SVG drawings (*.svg)</source>
+        <translation>Rysunki SVG (*.svg)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PNG images (*.png)</source>
+        <translation>Obrazy PNG (*.png)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot export the graph</source>
+        <translation>Nie można wyeksportować grafu</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupGraphView</name>
+    <message>
+        <location filename="../widgets/setup/setupgraphview.cpp" line="+311"/>
+        <source>Unknown nodes</source>
+        <translation>Nieznane węzły</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>&apos;%1&apos; is not a node of the model (an arc names it)</source>
+        <translation>„%1” nie jest węzłem modelu (wskazuje go łuk)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>%1 → %2, weight %3</source>
+        <translation>%1 → %2, waga %3</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>weight −1: the target moves against the source</source>
+        <translation>waga −1: cel porusza się przeciwnie do źródła</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>weight +1: the target moves with the source</source>
+        <translation>waga +1: cel porusza się zgodnie ze źródłem</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>red outline: a problem of the model (see its tooltip)</source>
+        <translation>czerwony obrys: problem modelu (patrz podpowiedź)</translation>
+    </message>
+    <message>
+        <location line="+143"/>
+        <location line="+22"/>
+        <location line="+18"/>
+        <source>Cannot write %1: %2</source>
+        <translation>Nie można zapisać %1: %2</translation>
+    </message>
+    <message>
+        <location line="-31"/>
+        <source>Relation graph of %1</source>
+        <translation>Graf relacji: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setup model: machine points, work offsets, tools, features, dimensions</source>
+        <translation>Model ustawczy: punkty maszyny, przesunięcia punktu zerowego, narzędzia, elementy geometryczne, wymiary</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot write %1: the SVG generator did not start</source>
+        <translation>Nie można zapisać %1: generator SVG nie uruchomił się</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupMargins</name>
+    <message>
+        <location filename="../widgets/setup/setupmargins.cpp" line="+84"/>
+        <source>tolerance zone</source>
+        <translation>pole tolerancji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>before: deviation and margin to the nearer limit</source>
+        <translation>przed: odchyłka i zapas do bliższej granicy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>after correction</source>
+        <translation>po korekcji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>out of tolerance</source>
+        <translation>poza tolerancją</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>deviation from nominal (mm)</source>
+        <translation>odchyłka od wartości nominalnej (mm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>margin (mm)</source>
+        <translation>zapas (mm)</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupMarginsWidget</name>
+    <message>
+        <location line="+52"/>
+        <source>Run a method to see the margins before and after correction.</source>
+        <translation>Uruchom metodę, aby zobaczyć zapasy przed i po korekcji.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupModelEditor</name>
+    <message>
+        <location filename="../widgets/setup/setupmodeleditor.cpp" line="+66"/>
+        <source>Machine points (M)</source>
+        <translation>Punkty maszyny (M)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Work offsets (W)</source>
+        <translation>Przesunięcia punktu zerowego (W)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Tools (T)</source>
+        <translation>Narzędzia (T)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Features (F)</source>
+        <translation>Elementy geometryczne (F)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Dimensions (D)</source>
+        <translation>Wymiary (D)</translation>
+    </message>
+    <message>
+        <location line="+94"/>
+        <source>Add %1</source>
+        <translation>Dodanie %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Remove %1</source>
+        <translation>Usunięcie %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Rename %1 to %2</source>
+        <translation>Zmiana nazwy %1 na %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Change the kind of %1</source>
+        <translation>Zmiana rodzaju %1</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Add arc %1 → %2</source>
+        <translation>Dodanie łuku %1 → %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Remove arc %1 → %2</source>
+        <translation>Usunięcie łuku %1 → %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Set weight of %1 → %2 to %3</source>
+        <translation>Ustawienie wagi %1 → %2 na %3</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Edit tolerance of %1</source>
+        <translation>Edycja tolerancji %1</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupPage</name>
+    <message>
+        <location filename="../app/gui/setuppage.cpp" line="+87"/>
+        <source>&amp;Save model</source>
+        <translation>Zapi&amp;sz model</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Re&amp;vert</source>
+        <translation>P&amp;rzywróć</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Uruchom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C&amp;lear chart</source>
+        <translation>Wyczyść wy&amp;kres</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Write the edited model to its dataset file</source>
+        <translation>Zapisz edytowany model do pliku jego zbioru danych</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drop the edits and read the model file again</source>
+        <translation>Odrzuć zmiany i wczytaj ponownie plik modelu</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot save the setup model</source>
+        <translation>Nie można zapisać modelu ustawczego</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>exact: the LP/MILP optimum (GLPK); the metaheuristics with the paper&apos;s settings</source>
+        <translation>dokładna: optimum LP/MILP (GLPK); metaheurystyki z ustawieniami z publikacji</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> solutions</source>
+        <translation> rozwiązań</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Solutions a metaheuristic evaluates (the paper: 5000)</source>
+        <translation>Liczba rozwiązań ocenianych przez metaheurystykę (publikacja: 5000)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Seed of the metaheuristic: the same seed gives the same run</source>
+        <translation>Ziarno metaheurystyki: to samo ziarno daje ten sam przebieg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run the method (Ctrl+R)</source>
+        <translation>Uruchom metodę (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Method:</source>
+        <translation>&amp;Metoda:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Budget:</source>
+        <translation>&amp;Budżet:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>S&amp;eed:</source>
+        <translation>Zi&amp;arno:</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>&amp;Graph</source>
+        <translation>&amp;Graf</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R&amp;un</source>
+        <translation>Pr&amp;zebieg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Res&amp;ults</source>
+        <translation>W&amp;yniki</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Va&amp;lidation</source>
+        <translation>Wa&amp;lidacja</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run</source>
+        <translation>Uruchom</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Notes on this study</source>
+        <translation>Notatki do tego studium</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>This project has no setup model. Add a dataset of kind &quot;setup_model&quot; (the relation graph, JSON) and a &quot;cmm_report&quot; to the project file.</source>
+        <translation>Ten projekt nie ma modelu ustawczego. Dodaj do pliku projektu zbiór danych rodzaju „setup_model” (graf relacji, JSON) oraz „cmm_report”.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>This project has no CMM report for the setup study (a dataset of kind &quot;cmm_report&quot;).</source>
+        <translation>Ten projekt nie ma raportu WMP dla studium ustawienia (zbiór danych rodzaju „cmm_report”).</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
+        <translation>Brak jeszcze wyniku dla tego modelu: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>The edited model has %n problem(s), the first: %1</source>
+        <translation>
+            <numerusform>Edytowany model ma %n problem: %1</numerusform>
+            <numerusform>Edytowany model ma %n problemy, pierwszy: %1</numerusform>
+            <numerusform>Edytowany model ma %n problemów, pierwszy: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Model “%1” (%2): %3 setup data (%4 work offsets, %5 tools, %6 machine points), %7 features, %8 dimensions, %9 arcs; axis %10, grid %11 mm, bounds [%12, %13] mm.</source>
+        <translation>Model „%1” (%2): dane ustawcze: %3 (przesunięcia punktu zerowego: %4, narzędzia: %5, punkty maszyny: %6), elementy geometryczne: %7, wymiary: %8, łuki: %9; oś %10, siatka %11 mm, granice [%12, %13] mm.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Edited, not saved.</source>
+        <translation>Edytowano, nie zapisano.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Report “%1”: %2 parts, %3 rows.</source>
+        <translation>Raport „%1”: przedmioty: %2, wiersze: %3.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Smallest error budget before correction f1 = %1 mm.</source>
+        <translation>Najmniejszy budżet błędu przed korekcją f1 = %1 mm.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>The setup study has no model or report to run on.</source>
+        <translation>Studium ustawienia nie ma modelu ani raportu do obliczeń.</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Exact optimum: %1 solver calls in %2 ms.</source>
+        <translation>Dokładne optimum: wywołania solvera: %1 w %2 ms.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Running %1…</source>
+        <translation>Uruchamianie %1…</translation>
+    </message>
+    <message>
+        <location line="+76"/>
+        <source>The run failed: %1</source>
+        <translation>Przebieg nie powiódł się: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: f1 %2 mm after %3 solutions in %4 ms</source>
+        <translation>%1: f1 %2 mm po %3 rozwiązaniach w %4 ms</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>, gap to the exact optimum %1 mm</source>
+        <translation>, różnica do dokładnego optimum %1 mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> — cancelled.</source>
+        <translation> — anulowano.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>The project has no setup model dataset to save to.</source>
+        <translation>Projekt nie ma zbioru danych modelu ustawczego, do którego można zapisać.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>The model has %n problem(s); fix them before saving. The first: %1</source>
+        <translation>
+            <numerusform>Model ma %n problem; usuń go przed zapisaniem: %1</numerusform>
+            <numerusform>Model ma %n problemy; usuń je przed zapisaniem. Pierwszy: %1</numerusform>
+            <numerusform>Model ma %n problemów; usuń je przed zapisaniem. Pierwszy: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
+        <translation>Model zapisano, ale raport WMP już do niego nie pasuje (przebiegi używają raportu wczytanego względem poprzedniego modelu): %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>CRIPSO and PSO, seed 1, %1 solutions each, against the exact optimum.</source>
+        <translation>CRIPSO i PSO, ziarno 1, po %1 rozwiązań, w porównaniu z dokładnym optimum.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupResultsView</name>
+    <message>
+        <location filename="../widgets/setup/setupresultsview.cpp" line="+29"/>
+        <source>machine point</source>
+        <translation>punkt maszyny</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>work offset</source>
+        <translation>przesunięcie punktu zerowego</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>tool length</source>
+        <translation>długość narzędzia</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Setup datum</source>
+        <translation>Dana ustawcza</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Kind</source>
+        <translation>Rodzaj</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Register</source>
+        <translation>Rejestr</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Correction (mm)</source>
+        <translation>Korekcja (mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Increment to add to the register along the model&apos;s axis (see the export headers)</source>
+        <translation>Przyrost do dodania do rejestru wzdłuż osi modelu (patrz nagłówki eksportu)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Export the corrections:</source>
+        <translation>Eksport korekcji:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Fanuc…</source>
+        <translation>&amp;Fanuc…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Heidenhain…</source>
+        <translation>&amp;Heidenhain…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Siemens…</source>
+        <translation>&amp;Siemens…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;CSV…</source>
+        <translation>&amp;CSV…</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>No result yet: choose a method and press Run (Ctrl+R).</source>
+        <translation>Brak jeszcze wyniku: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+29"/>
+        <source>%n LP / MILP solver call(s)</source>
+        <translation>
+            <numerusform>%n wywołanie solvera LP / MILP</numerusform>
+            <numerusform>%n wywołania solvera LP / MILP</numerusform>
+            <numerusform>%n wywołań solvera LP / MILP</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n solution(s) evaluated</source>
+        <translation>
+            <numerusform>oceniono %n rozwiązanie</numerusform>
+            <numerusform>oceniono %n rozwiązania</numerusform>
+            <numerusform>oceniono %n rozwiązań</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: f1 %2 → %3 mm (bonus %4 mm), |x| = f2 %5 mm, f %6; %7 in %8 ms.</source>
+        <translation>%1: f1 %2 → %3 mm (premia %4 mm), |x| = f2 %5 mm, f %6; %7 w %8 ms.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>f1 proven optimal on the grid</source>
+        <translation>f1 udowodnione jako optymalne na siatce</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f1 NOT proven optimal</source>
+        <translation>f1 NIE udowodnione jako optymalne</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|x| proven minimal.</source>
+        <translation>|x| udowodnione jako minimalne.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>|x| not proven minimal.</source>
+        <translation>|x| nie udowodnione jako minimalne.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Gap to the exact optimum: f1 %1 mm, f2 %2 mm.</source>
+        <translation>Różnica do dokładnego optimum: f1 %1 mm, f2 %2 mm.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(cancelled: best so far)</source>
+        <translation>(anulowano: najlepsze dotąd)</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Parts of the report in tolerance: %1 of %2 before, %3 of %2 after the correction; parts rescued: %4.</source>
+        <translation>Przedmioty z raportu w tolerancji: %1 z %2 przed, %3 z %2 po korekcji; uratowane przedmioty: %4.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Parts that would leave the tolerance: %1.</source>
+        <translation>Przedmioty, które wypadłyby z tolerancji: %1.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>There are no corrections to export yet.</source>
+        <translation>Nie ma jeszcze korekcji do wyeksportowania.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Export corrections</source>
+        <translation>Eksport korekcji</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot export the corrections</source>
+        <translation>Nie można wyeksportować korekcji</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SetupValidationView</name>
+    <message>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+60"/>
+        <source>Simulated measurement sets N (the paper: 100)</source>
+        <translation>Symulowane zestawy pomiarów N (publikacja: 100)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Trials M of every method on every set (the paper: 10)</source>
+        <translation>Próby M każdej metody na każdym zestawie (publikacja: 10)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> solutions</source>
+        <translation> rozwiązań</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Weight of the setup-data errors, Eq. 12: E = w1 (1 − 2r)</source>
+        <translation>Waga błędów danych ustawczych, równ. 12: E = w1 (1 − 2r)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Weight of the random errors, Eq. 13: E = w2 (1 − 2r)</source>
+        <translation>Waga błędów losowych, równ. 13: E = w2 (1 − 2r)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Run &amp;validation</source>
+        <translation>Uruchom walidac&amp;ję</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The paper&apos;s statistical validation: simulated measurement sets with setup-data and random errors (Eq. 12–13), each corrected by the exact method and by M trials of the chosen metaheuristics; the sets sorted by their budget before correction (Fig. 18).</source>
+        <translation>Walidacja statystyczna z publikacji: symulowane zestawy pomiarów z błędami danych ustawczych i losowymi (równ. 12–13), każdy korygowany metodą dokładną i M próbami wybranych metaheurystyk; zestawy posortowane wg budżetu przed korekcją (rys. 18).</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Measurement sets N:</source>
+        <translation>Zestawy pomiarów N:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trials per set M:</source>
+        <translation>Próby na zestaw M:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Budget per trial:</source>
+        <translation>Budżet na próbę:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>w1 (setup data):</source>
+        <translation>w1 (dane ustawcze):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>w2 (random):</source>
+        <translation>w2 (losowe):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Seed:</source>
+        <translation>Ziarno:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Methods:</source>
+        <translation>Metody:</translation>
+    </message>
+    <message>
+        <location line="+76"/>
+        <source>Choose at least one method.</source>
+        <translation>Wybierz co najmniej jedną metodę.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Running %1 sets x %2 trials…</source>
+        <translation>Obliczanie: %1 zestawów x %2 prób…</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>The validation failed: %1</source>
+        <translation>Walidacja nie powiodła się: %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 sets%2: f1 before correction from %3 to %4 mm.</source>
+        <translation>Zestawy: %1%2: f1 przed korekcją od %3 do %4 mm.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> (cancelled)</source>
+        <translation> (anulowano)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.</source>
+        <translation>%1: średnia różnica do dokładnego f1 %2 mm; %3 z %4 prób w granicach jednego kroku siatki.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::SpcView</name>
+    <message>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+86"/>
+        <source>index</source>
+        <translation>wskaźnik</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>value</source>
+        <translation>wartość</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>No SPC series yet.</source>
+        <translation>Brak jeszcze serii SPC.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Histogram of %1 (%2 values)</source>
+        <translation>Histogram %1 (wartości: %2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>feature</source>
+        <translation>cecha</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subgroups × size</source>
+        <translation>podgrupy × liczność</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> (%1 left out)</source>
+        <translation> (pominięto %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>in control</source>
+        <translation>pod kontrolą</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>yes</source>
+        <translation>tak</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no: %1 X-bar, %2 R points beyond limits</source>
+        <translation>nie: punkty poza granicami: %1 X-średnie, %2 R</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A2 / D3 / D4</source>
+        <translation>A2 / D3 / D4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>X-bar CL / UCL / LCL</source>
+        <translation>X-średnie CL / UCL / LCL</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>R CL / UCL / LCL</source>
+        <translation>R CL / UCL / LCL</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>σ within (R̄/d2)</source>
+        <translation>σ wewnątrz (R̄/d2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>LSL / USL</source>
+        <translation>LSL / USL</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cp (Eq. 16)</source>
+        <translation>Cp (równ. 16)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <source>— (no limits)</source>
+        <translation>— (brak granic)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cpk</source>
+        <translation>Cpk</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>natural tolerance (Eq. 17)</source>
+        <translation>tolerancja naturalna (równ. 17)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+5"/>
+        <source>systematic error (Eq. 20)</source>
+        <translation>błąd systematyczny (równ. 20)</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>%1%2 ± %3 (%4)</source>
+        <translation>%1%2 ± %3 (%4)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>significant</source>
+        <translation>istotny</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not significant</source>
+        <translation>nieistotny</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>— (no nominal)</source>
+        <translation>— (brak wartości nominalnej)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>regression offset angle</source>
+        <translation>kąt przesunięcia regresji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1° (slope %2%3 per sample, r² %4)</source>
+        <translation>%1° (nachylenie %2%3 na próbkę, r² %4)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>compensation</source>
+        <translation>kompensacja</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ThermalCharts</name>
+    <message>
+        <location filename="../widgets/charts/thermalcharts.cpp" line="+59"/>
+        <source>temperature</source>
+        <translation>temperatura</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement</source>
+        <translation>przemieszczenie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>strain</source>
+        <translation>odkształcenie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>speed</source>
+        <translation>prędkość</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>value</source>
+        <translation>wartość</translation>
+    </message>
+    <message>
+        <location line="+130"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>time (h)</source>
+        <translation>czas (h)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>time (min)</source>
+        <translation>czas (min)</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>heating</source>
+        <translation>nagrzewanie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cooling</source>
+        <translation>chłodzenie</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ThermalHysteresisView</name>
+    <message>
+        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+100"/>
+        <source>loop area in %1 × %2</source>
+        <translation>pole pętli w %1 × %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the sensor lags the displacement</source>
+        <translation>czujnik opóźnia się względem przemieszczenia</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the displacement lags the sensor</source>
+        <translation>przemieszczenie opóźnia się względem czujnika</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Sensor plotted against the displacement, or all sensors side by side</source>
+        <translation>Czujnik względem przemieszczenia lub wszystkie czujniki obok siebie</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>sensor</source>
+        <translation>czujnik</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>loop area</source>
+        <translation>pole pętli</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>loop / ranges</source>
+        <translation>pętla / rozstępy</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lag τ (min)</source>
+        <translation>opóźnienie τ (min)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R² lag</source>
+        <translation>R² opóźnienia</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R² static</source>
+        <translation>R² statyczny</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Area enclosed by the trajectory (shoelace formula), sensor unit × displacement unit</source>
+        <translation>Pole objęte trajektorią (wzór Gaussa, sznurowadłowy), jednostka czujnika × jednostka przemieszczenia</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Loop area divided by the product of the two ranges: 0 for a line, 0.785 for a circle</source>
+        <translation>Pole pętli podzielone przez iloczyn obu rozstępów: 0 dla linii, 0.785 dla okręgu</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Time constant of a first-order lag between sensor and displacement; &gt; 0: the sensor lags</source>
+        <translation>Stała czasowa członu inercyjnego pierwszego rzędu między czujnikiem a przemieszczeniem; &gt; 0: czujnik się opóźnia</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Sensor:</source>
+        <translation>Cz&amp;ujnik:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Loop area and lag per sensor</source>
+        <translation>Pole pętli i opóźnienie dla każdego czujnika</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>All sensors</source>
+        <translation>Wszystkie czujniki</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No hysteresis analysis for this log:
+%1</source>
+        <translation>Brak analizy histerezy dla tego rejestru:
+%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Target %1: %2 heating rows, %3 cooling rows (the target&apos;s change grows or shrinks).</source>
+        <translation>Wielkość docelowa %1: wiersze nagrzewania: %2, wiersze chłodzenia: %3 (zmiana wielkości docelowej rośnie lub maleje).</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ThermalModelCharts</name>
+    <message>
+        <location filename="../widgets/charts/thermalmodelcharts.cpp" line="+76"/>
+        <source>time (h)</source>
+        <translation>czas (h)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>time (min)</source>
+        <translation>czas (min)</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>held out</source>
+        <translation>dane testowe</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>fit | held-out boundary</source>
+        <translation>granica: dopasowanie | dane testowe</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>%1: lag %2 min</source>
+        <translation>%1: opóźnienie %2 min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 against %2: lag %3 min, loop %4</source>
+        <translation>%1 względem %2: opóźnienie %3 min, pętla %4</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>heating</source>
+        <translation>nagrzewanie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cooling</source>
+        <translation>chłodzenie</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>measured</source>
+        <translation>zmierzony</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+46"/>
+        <source>%1 (off scale)</source>
+        <translation>%1 (poza skalą)</translation>
+    </message>
+    <message>
+        <location line="-22"/>
+        <source>residual</source>
+        <translation>reszta</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>measured (combined test)</source>
+        <translation>zmierzony (test łączony)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>PSO iteration</source>
+        <translation>iteracja PSO</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>best fitness</source>
+        <translation>najlepsze przystosowanie</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ThermalModelView</name>
+    <message>
+        <location filename="../widgets/charts/thermalmodelview.cpp" line="+171"/>
+        <source>fitness</source>
+        <translation>fitness</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Best Eq. 2.9 fitness (sum of squared residuals%1) per PSO iteration</source>
+        <translation>Najlepsze przystosowanie wg równ. 2.9 (suma kwadratów residuów%1) w każdej iteracji PSO</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>fit (%1)</source>
+        <translation>dopasowanie (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>held out (%1)</source>
+        <translation>dane testowe (%1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>diverges</source>
+        <translation>rozbieżny</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows without bound on the held-out rows</source>
+        <translation>Metoda najmniejszych kwadratów dała niestabilny GMC(1,N): b1 = %1 ≤ 0; jego wyjście rośnie bez ograniczeń na danych testowych</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+52"/>
+        <location line="+111"/>
+        <source>model</source>
+        <translation>model</translation>
+    </message>
+    <message>
+        <location line="-163"/>
+        <location line="+163"/>
+        <source>rows</source>
+        <translation>wiersze</translation>
+    </message>
+    <message>
+        <location line="-162"/>
+        <location line="+162"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="-162"/>
+        <location line="+162"/>
+        <source>RMSE</source>
+        <translation>RMSE</translation>
+    </message>
+    <message>
+        <location line="-161"/>
+        <location line="+52"/>
+        <location line="+109"/>
+        <source>E</source>
+        <translation>E</translation>
+    </message>
+    <message>
+        <location line="-161"/>
+        <location line="+161"/>
+        <source>band</source>
+        <translation>pasmo</translation>
+    </message>
+    <message>
+        <location line="-154"/>
+        <source>%1 %2 s</source>
+        <translation>%1 %2 s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> (unstable: b1 ≤ 0)</source>
+        <translation> (niestabilny: b1 ≤ 0)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 fit rows, %2 held out; %3.</source>
+        <translation>wiersze dopasowania: %1, dane testowe: %2; %3.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 % (GMC(1,N) %2 %, MLP %3 %).</source>
+        <translation>&lt;b&gt;Przypadek modułowy:&lt;/b&gt; GNNMCI(1,N) dopasowany na testach Z i C zmniejsza błąd testu łączonego o %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>error → band (%1)</source>
+        <translation>błąd → pasmo (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>less (peak, %)</source>
+        <translation>mniej (szczyt, %)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMSE (%1)</source>
+        <translation>RMSE (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>less (RMS, %)</source>
+        <translation>mniej (RMS, %)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>%1: %p%</source>
+        <translation>%1: %p%</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The column the models predict (the thermal error)</source>
+        <translation>Kolumna przewidywana przez modele (błąd termiczny)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Sensor columns the models take as inputs</source>
+        <translation>Kolumny czujników używane przez modele jako wejścia</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The first fraction of the rows fits the models; the rest is held out</source>
+        <translation>Pierwsza część wierszy służy do dopasowania modeli; reszta to dane testowe</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Seed of the PSO swarm and of the MLP&apos;s initial weights (same seed, same result)</source>
+        <translation>Ziarno roju PSO i początkowych wag MLP (to samo ziarno, ten sam wynik)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Train</source>
+        <translation>T&amp;renuj</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Fit GNNMCI(1,N) (PSO), GMC(1,N) (least squares) and the MLP (Levenberg-Marquardt) (Ctrl+R)</source>
+        <translation>Dopasuj GNNMCI(1,N) (PSO), GMC(1,N) (najmniejsze kwadraty) i MLP (Levenberg-Marquardt) (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Stop the training (Esc)</source>
+        <translation>Zatrzymaj trenowanie (Esc)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Best fitness of the GNNMCI(1,N) swarm (Eq. 2.9) per PSO iteration</source>
+        <translation>Najlepsze przystosowanie roju GNNMCI(1,N) (równ. 2.9) w każdej iteracji PSO</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>T&amp;arget:</source>
+        <translation>Wielkość &amp;docelowa:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Train &amp;fraction:</source>
+        <translation>Część tre&amp;ningowa:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;eed:</source>
+        <translation>Zi&amp;arno:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Inputs:</source>
+        <translation>Wejści&amp;a:</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Correlation coefficient of measured and predicted</source>
+        <translation>Współczynnik korelacji wartości zmierzonych i przewidywanych</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Root mean square of the residual, in the target&apos;s unit</source>
+        <translation>Średnia kwadratowa residuum, w jednostce wielkości docelowej</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Nash-Sutcliffe efficiency coefficient (1: perfect)</source>
+        <translation>Współczynnik efektywności Nasha-Sutcliffe&apos;a (1: idealny)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest |residual|, in the target&apos;s unit</source>
+        <translation>Największe |residuum|, w jednostce wielkości docelowej</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Modular models (Section 4.3)</source>
+        <translation>Modele modułowe (rozdział 4.3)</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Performance indices (Table 4)</source>
+        <translation>Wskaźniki jakości (tabela 4)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Comparison</source>
+        <translation>Porównanie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modular (Z + C → combined)</source>
+        <translation>Modułowy (Z + C → łączony)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location line="+128"/>
+        <source>Training failed: %1</source>
+        <translation>Trenowanie nie powiodło się: %1</translation>
+    </message>
+    <message>
+        <location line="-120"/>
+        <source>Training cancelled after %1 PSO iterations; the results shown are the previous ones.</source>
+        <translation>Trenowanie anulowano po %1 iteracjach PSO; pokazane wyniki są poprzednie.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Settings changed: Train (Ctrl+R) to update the results.</source>
+        <translation>Zmieniono ustawienia: Trenuj (Ctrl+R), aby zaktualizować wyniki.</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>Not trained yet: Train (Ctrl+R) fits the three models.</source>
+        <translation>Jeszcze nie wytrenowano: Trenuj (Ctrl+R) dopasowuje trzy modele.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+30"/>
+        <source>Choose at least one input.</source>
+        <translation>Wybierz co najmniej jedno wejście.</translation>
+    </message>
+    <message>
+        <location line="-18"/>
+        <source>Training…</source>
+        <translation>Trenowanie…</translation>
     </message>
 </context>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+48"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+65"/>
+        <source>T&amp;rend</source>
+        <translation>&amp;Trend</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Hysteresis</source>
+        <translation>&amp;Histereza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Models</source>
+        <translation>&amp;Modele</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Temperatures, strains and displacement against time</source>
+        <translation>Temperatury, odkształcenia i przemieszczenie w funkcji czasu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Displacement against each sensor over heating and cooling</source>
+        <translation>Przemieszczenie względem każdego czujnika podczas nagrzewania i chłodzenia</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GNNMCI(1,N), GMC(1,N) and MLP fitted and compared (Table 4)</source>
+        <translation>GNNMCI(1,N), GMC(1,N) i MLP dopasowane i porównane (tabela 4)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Thermal log:</source>
         <translation>&amp;Rejestr termiczny:</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+80"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Ten projekt nie zawiera rejestru termicznego. Dodaj do pliku projektu zbiór danych rodzaju „thermal_log” (kolumna czasu, kolumny czujników i przemieszczenie).</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>%1 rows, %2 channels, %3 h.</source>
         <translation>Wiersze: %1, kanały: %2, czas: %3 h.</translation>
     </message>
@@ -701,11 +4967,64 @@
         <translation>Licencja: %1.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+15"/>
         <source>Cannot show this thermal log:
 %1</source>
         <translation>Nie można wyświetlić tego rejestru termicznego:
 %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Choose the thermal log</source>
+        <translation>Wybór rejestru termicznego</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change the thermal target</source>
+        <translation>Zmiana wielkości docelowej (termika)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change the thermal inputs</source>
+        <translation>Zmiana wejść (termika)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change the train fraction</source>
+        <translation>Zmiana części treningowej</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change the training seed</source>
+        <translation>Zmiana ziarna trenowania</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Change the thermal model settings</source>
+        <translation>Zmiana ustawień modelu termicznego</translation>
+    </message>
+    <message>
+        <location line="+78"/>
+        <source>Modular case: %1</source>
+        <translation>Przypadek modułowy: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) reduces the combined test&apos;s error by %6 %.</source>
+        <translation>Dopasowano łącznie na %1 i %2, prognoza dla %3 (wielkość docelowa %4; wejścia %5; ziarno 1): GNNMCI(1,N) zmniejsza błąd testu łączonego o %6 %.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ThermalTrendView</name>
+    <message>
+        <location filename="../widgets/charts/thermaltrendview.cpp" line="+82"/>
+        <source>Channels shown in the chart</source>
+        <translation>Kanały pokazane na wykresie</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Channels</source>
+        <translation>Kanały</translation>
     </message>
 </context>
 </TS>
