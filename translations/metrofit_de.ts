@@ -2900,30 +2900,45 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+11"/>
         <source>%n temperature(s)</source>
-        <translation>Temperaturen: %n</translation>
+        <translation>
+            <numerusform>%n Temperatur</numerusform>
+            <numerusform>%n Temperaturen</numerusform>
+        </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+1"/>
         <source>%n displacement(s)</source>
-        <translation>Verlagerungen: %n</translation>
+        <translation>
+            <numerusform>%n Verlagerung</numerusform>
+            <numerusform>%n Verlagerungen</numerusform>
+        </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+1"/>
         <source>%n strain(s)</source>
-        <translation>Dehnungen: %n</translation>
+        <translation>
+            <numerusform>%n Dehnung</numerusform>
+            <numerusform>%n Dehnungen</numerusform>
+        </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+1"/>
         <source>%n speed(s)</source>
-        <translation>Drehzahlen: %n</translation>
+        <translation>
+            <numerusform>%n Drehzahl</numerusform>
+            <numerusform>%n Drehzahlen</numerusform>
+        </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+1"/>
         <source>%n other</source>
-        <translation>sonstige: %n</translation>
+        <translation>
+            <numerusform>%n sonstiger</numerusform>
+            <numerusform>%n sonstige</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+16"/>

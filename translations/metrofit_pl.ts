@@ -2902,30 +2902,50 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+11"/>
         <source>%n temperature(s)</source>
-        <translation>temperatury: %n</translation>
+        <translation>
+            <numerusform>%n temperatura</numerusform>
+            <numerusform>%n temperatury</numerusform>
+            <numerusform>%n temperatur</numerusform>
+        </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+1"/>
         <source>%n displacement(s)</source>
-        <translation>przemieszczenia: %n</translation>
+        <translation>
+            <numerusform>%n przemieszczenie</numerusform>
+            <numerusform>%n przemieszczenia</numerusform>
+            <numerusform>%n przemieszczeń</numerusform>
+        </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+1"/>
         <source>%n strain(s)</source>
-        <translation>odkształcenia: %n</translation>
+        <translation>
+            <numerusform>%n odkształcenie</numerusform>
+            <numerusform>%n odkształcenia</numerusform>
+            <numerusform>%n odkształceń</numerusform>
+        </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+1"/>
         <source>%n speed(s)</source>
-        <translation>prędkości: %n</translation>
+        <translation>
+            <numerusform>%n prędkość</numerusform>
+            <numerusform>%n prędkości</numerusform>
+            <numerusform>%n prędkości</numerusform>
+        </translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+1"/>
         <source>%n other</source>
-        <translation>inne: %n</translation>
+        <translation>
+            <numerusform>%n inny</numerusform>
+            <numerusform>%n inne</numerusform>
+            <numerusform>%n innych</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+16"/>

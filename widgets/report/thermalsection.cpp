@@ -201,11 +201,11 @@ QString kindCounts(const ThermalLog& log) {
   }
   QStringList parts;
   const std::pair<ChannelKind, const char*> names[] = {
-      {ChannelKind::Temperature, QT_TRANSLATE_NOOP("metrofit::Report", "%n temperature(s)")},
-      {ChannelKind::Displacement, QT_TRANSLATE_NOOP("metrofit::Report", "%n displacement(s)")},
-      {ChannelKind::Strain, QT_TRANSLATE_NOOP("metrofit::Report", "%n strain(s)")},
-      {ChannelKind::Speed, QT_TRANSLATE_NOOP("metrofit::Report", "%n speed(s)")},
-      {ChannelKind::Other, QT_TRANSLATE_NOOP("metrofit::Report", "%n other")}};
+      {ChannelKind::Temperature, QT_TRANSLATE_N_NOOP("metrofit::Report", "%n temperature(s)")},
+      {ChannelKind::Displacement, QT_TRANSLATE_N_NOOP("metrofit::Report", "%n displacement(s)")},
+      {ChannelKind::Strain, QT_TRANSLATE_N_NOOP("metrofit::Report", "%n strain(s)")},
+      {ChannelKind::Speed, QT_TRANSLATE_N_NOOP("metrofit::Report", "%n speed(s)")},
+      {ChannelKind::Other, QT_TRANSLATE_N_NOOP("metrofit::Report", "%n other")}};
   for (const auto& [kind, text] : names) {
     if (counts[kind] > 0) {
       parts << ReportText::tr(text, nullptr, counts[kind]);
