@@ -40,10 +40,24 @@ Tracker::Tracker(std::string method, const Problem& problem, const CommonOptions
   components_.resize(problem_.componentNames().size());
   best_.method = method_;
   best_.bestComponents.assign(components_.size(), 0.0);
+  step_ = problem_.gridStep();
+  const std::size_t n = problem_.dimension();
+  lo_.resize(n);
+  hi_.resize(n);
+  kMax_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    lo_[i] = problem_.lower(i);
+    hi_[i] = problem_.upper(i);
+    kMax_[i] = gridPoints(lo_[i], hi_[i], step_);
+  }
+}
+
+void Tracker::snap(std::span<double> x) const {
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = snapCoordinate(x[i], lo_[i], hi_[i], step_, kMax_[i]);
 }
 
 double Tracker::evaluate(std::span<double> x) {
-  problem_.snap(x);
+  snap(x);
   const double f = problem_.evaluate(x, components_);
   ++evaluations_;
   // NaN objectives never become the best (a NaN compares false).
@@ -59,8 +73,8 @@ double Tracker::evaluate(std::span<double> x) {
 
 std::vector<double> Tracker::randomPoint() {
   std::vector<double> x(dimension());
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = rng_.uniform(problem_.lower(i), problem_.upper(i));
-  problem_.snap(x);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = rng_.uniform(lo_[i], hi_[i]);
+  snap(x);
   return x;
 }
 

@@ -10,14 +10,7 @@ void Problem::snap(std::span<double> x) const {
   const double step = gridStep();
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double lo = lower(i), hi = upper(i);
-    double v = std::isfinite(x[i]) ? x[i] : lo;
-    v = std::clamp(v, lo, hi);
-    if (step > 0.0) {
-      const double kMax = std::floor((hi - lo) / step + 1e-9);
-      const double k = std::clamp(std::round((v - lo) / step), 0.0, kMax);
-      v = lo + k * step;
-    }
-    x[i] = v;
+    x[i] = snapCoordinate(x[i], lo, hi, step, gridPoints(lo, hi, step));
   }
 }
 

@@ -9,11 +9,31 @@
 // 0.001 mm grid). `snap` maps any point onto the feasible set; algorithms evaluate only snapped
 // points, so "bounds are respected exactly" holds for every evaluated x.
 // `evaluate` is const and must be thread-safe: many algorithm instances may share one problem.
+#include <algorithm>
+#include <cmath>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace metrofit::optim {
+
+/// One coordinate onto the box and grid: clamp (a non-finite value goes to lo), then on a grid
+/// round to the nearest of lo + k step, 0 <= k <= kMax (kMax = gridPoints below). Shared by
+/// Problem::snap and the Tracker's cached fast path so both give bit-identical points.
+inline double snapCoordinate(double v, double lo, double hi, double step, double kMax) {
+  v = std::isfinite(v) ? v : lo;
+  v = std::clamp(v, lo, hi);
+  if (step > 0.0) {
+    const double k = std::clamp(std::round((v - lo) / step), 0.0, kMax);
+    v = lo + k * step;
+  }
+  return v;
+}
+
+/// Largest k with lo + k step <= hi (+1e-9 step): the grid index range of a coordinate.
+inline double gridPoints(double lo, double hi, double step) {
+  return step > 0.0 ? std::floor((hi - lo) / step + 1e-9) : 0.0;
+}
 
 class Problem {
  public:
