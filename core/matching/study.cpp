@@ -95,6 +95,11 @@ MatchingStudySettings matchingStudySettings(const Project& project, const std::s
       fail("seed", "must be an integer >= 0");
     s.options.seed = j["seed"].get<std::uint64_t>();
   }
+  if (j.contains("locks")) {  // "rz,z": the degrees of freedom held at 0, as the CLI's --lock
+    if (!j["locks"].is_string())
+      fail("locks", "must be a list of rx, ry, rz, x, y, z (string, e.g. \"rz,z\")");
+    s.options.locks = DofLocks::parse(j["locks"].get<std::string>(), prefix + "locks");
+  }
   if (!matchingMachine(project, &s.options.machine, source))
     s.options.machine = machine::MachineDefinition::preset(machine::Topology::Xfyzba);
   return s;

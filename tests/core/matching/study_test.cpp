@@ -166,6 +166,15 @@ TEST(Study, SettingsFromTheProject) {
   EXPECT_EQ(s.options.seed, 3u);
   EXPECT_EQ(s.options.machine.topology, machine::Topology::BcTable);
   EXPECT_EQ(s.options.machine.rotaryAxisPoint, Eigen::Vector3d(1.0, 2.0, 0.0));
+  EXPECT_FALSE(s.options.locks.any());
+  p.studies["matching"]["locks"] = "rz,z";  // written by the matching page, read by CLI and report
+  s = matchingStudySettings(p);
+  EXPECT_EQ(s.options.locks.toString(), "rz,z");
+  EXPECT_EQ(
+      settingsError({{"locks", 3}}),
+      "cell.metrofit: field 'studies.matching.locks': must be a list of rx, ry, rz, x, y, z (string, e.g. "
+      "\"rz,z\")");
+  EXPECT_NE(settingsError({{"locks", "rz,q"}}).find("studies.matching.locks"), std::string::npos);
 
   EXPECT_EQ(settingsError({{"dataset", "nope"}}),
             "cell.metrofit: field 'studies.matching.dataset': no dataset 'nope' in the project");
