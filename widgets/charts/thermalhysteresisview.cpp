@@ -71,6 +71,7 @@ struct ThermalHysteresisView::Impl {
       o.legend = false;
       o.maxPoints = 600;
       for (int i = 0; i < n; ++i) {
+        o.legend = i == 0;  // the heating / cooling key once, on the first chart of the grid
         layout->addWidget(chartView(makeHysteresisChart(log, series, analysis, i, o), grid, 230), i / columns,
                           i % columns);
       }
