@@ -12,12 +12,25 @@
 #include <QTemporaryDir>
 #include <memory>
 
+// Tests that run under xvfb-run and render VTK views define METROFIT_TEST_QT_XVFB before including
+// this header: the platform the test executor set (xcb) is kept, and VTK's OpenGL surface format is
+// made the default before the QApplication exists (VTK-QT6.md).
+#ifdef METROFIT_TEST_QT_XVFB
+#include <QSurfaceFormat>
+
+#include "widgets/pointview/pointsetview.h"
+#endif
+
 namespace metrofit::test {
 
 class QtApplicationEnvironment : public ::testing::Environment {
  public:
   void SetUp() override {
+#ifdef METROFIT_TEST_QT_XVFB
+    QSurfaceFormat::setDefaultFormat(PointSetView::surfaceFormat());
+#else
     qputenv("QT_QPA_PLATFORM", "offscreen");
+#endif
     settings_ = std::make_unique<QTemporaryDir>();
     ASSERT_TRUE(settings_->isValid());
     if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {

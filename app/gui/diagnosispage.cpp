@@ -241,7 +241,6 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
   top->addWidget(applyButton_);
 
   auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kDiagnosis), this);
-  notes->setMaximumHeight(50);
 
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);

@@ -161,7 +161,6 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   top->addStretch(1);
 
   auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kKinematics), this);
-  notes->setMaximumHeight(60);
 
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);

@@ -280,7 +280,6 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   controls->addWidget(cancelButton_);
 
   auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kMatching), this);
-  notes->setMaximumHeight(50);
 
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);

@@ -9,6 +9,8 @@ NotesEdit::NotesEdit(ProjectDocument* document, const QString& study, QWidget* p
     : QPlainTextEdit(parent), document_(document), study_(study) {
   setPlaceholderText(tr("Notes on the %1 study (saved with the project)").arg(studyTitle(study)));
   setTabChangesFocus(true);
+  // A strip below the study's views on every page (one height for all pages).
+  setMaximumHeight(56);
   connect(this, &QPlainTextEdit::textChanged, this, [this] {
     if (!updating_) document_->setValue(ProjectField::studyNotes(study_), toPlainText());
   });

@@ -205,8 +205,6 @@ SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
   top->addWidget(title);
   top->addStretch(1);
   auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kSetup), this);
-  notes->setMaximumHeight(48);
-  notes->setPlaceholderText(tr("Notes on this study"));
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);
   layout->addWidget(info_);

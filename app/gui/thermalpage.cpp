@@ -81,7 +81,6 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   top->addStretch(1);
 
   auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kThermal), this);
-  notes->setMaximumHeight(60);
 
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);

@@ -11,6 +11,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
+#include <QLocale>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
@@ -21,9 +22,11 @@
 #include <cmath>
 #include <memory>
 
+#define METROFIT_TEST_QT_XVFB
 #include "app/gui/matchingpage.h"
 #include "core/project/project.h"
 #include "core/sim/probe_sim.h"
+#include "qtapp.h"
 #include "testsupport.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/pointview/matchingcurveview.h"
@@ -32,32 +35,18 @@
 namespace metrofit {
 namespace {
 
-class QtApplicationEnvironment : public ::testing::Environment {
- public:
-  void SetUp() override {
-    QSurfaceFormat::setDefaultFormat(PointSetView::surfaceFormat());
-    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
-      runtime_ = std::make_unique<QTemporaryDir>();
-      ASSERT_TRUE(runtime_->isValid());
-      qputenv("XDG_RUNTIME_DIR", QFile::encodeName(runtime_->path()));
-    }
-    app_ = std::make_unique<QApplication>(argc_, argv_);
+/// A table cell's number as the page formats it (locale); a cell that is not a number fails the test
+/// instead of reading as 0.
+double cellNumber(const QTableWidgetItem* item) {
+  if (item == nullptr) {
+    ADD_FAILURE() << "no such cell";
+    return std::nan("");
   }
-  void TearDown() override {
-    app_.reset();
-    runtime_.reset();
-  }
-
- private:
-  int argc_ = 1;
-  char name_[18] = "matchingpage_test";
-  char* argv_[2] = {name_, nullptr};
-  std::unique_ptr<QTemporaryDir> runtime_;
-  std::unique_ptr<QApplication> app_;
-};
-
-[[maybe_unused]] ::testing::Environment* const kQtEnvironment =
-    ::testing::AddGlobalTestEnvironment(new QtApplicationEnvironment);
+  bool ok = false;
+  const double v = QLocale().toDouble(item->text(), &ok);
+  if (!ok) ADD_FAILURE() << "not a number: '" << item->text().toStdString() << "'";
+  return ok ? v : std::nan("");
+}
 
 int countWhere(const QImage& image, const std::function<bool(QColor)>& f) {
   int n = 0;
@@ -128,15 +117,15 @@ TEST_F(MatchingPageTest, RunFillsEveryTableWithTheCoreResults) {
   const matching::MatchResult& sade = *res->of(matching::MatchMethod::Sade);
   EXPECT_EQ(methods->item(1, 11)->text(), QStringLiteral("0 / 40"));
   EXPECT_EQ(methods->item(1, 10)->text(), QStringLiteral("40 / 40"));
-  EXPECT_NEAR(QLocale().toDouble(methods->item(1, 8)->text()), sade.after.overall.rmseMm, 1e-5);
-  EXPECT_NEAR(QLocale().toDouble(methods->item(1, 3)->text()), sade.pose.anglesDeg().z(), 1e-4);
+  EXPECT_NEAR(cellNumber(methods->item(1, 8)), sade.after.overall.rmseMm, 1e-5);
+  EXPECT_NEAR(cellNumber(methods->item(1, 3)), sade.pose.anglesDeg().z(), 1e-4);
 
   // Machine: AC trunnion, SA / SC.
   QTableWidget* machine = page_->machineTable();
   ASSERT_EQ(machine->rowCount(), 6);
   EXPECT_EQ(machine->item(3, 0)->text(), QStringLiteral("SA"));
   EXPECT_EQ(machine->item(4, 0)->text(), QStringLiteral("SC"));
-  EXPECT_NEAR(QLocale().toDouble(machine->item(0, 1)->text()), res->adjustment.linearMm.x(), 1e-4);
+  EXPECT_NEAR(cellNumber(machine->item(0, 1)), res->adjustment.linearMm.x(), 1e-4);
 
   // Remeasure loop: first round all out, last none.
   QTableWidget* loop = page_->remeasureTable();
@@ -148,14 +137,14 @@ TEST_F(MatchingPageTest, RunFillsEveryTableWithTheCoreResults) {
   EXPECT_EQ(page_->curveView()->curveNames(),
             (QStringList{QStringLiteral("GA-simplex"), QStringLiteral("SADE")}));
   ASSERT_EQ(page_->pointTable()->rowCount(), 40);
-  EXPECT_NEAR(QLocale().toDouble(page_->pointTable()->item(0, 3)->text()), sade.after.deviations[0], 1e-4);
+  EXPECT_NEAR(cellNumber(page_->pointTable()->item(0, 3)), sade.after.deviations[0], 1e-4);
 
   // The method selector switches the posture shown and adjusted, without running again.
   page_->setMethod(matching::MatchMethod::Minimax);
   EXPECT_EQ(page_->result()->primary, matching::MatchMethod::Minimax);
   const matching::MatchResult& mm = *res->of(matching::MatchMethod::Minimax);
   const machine::Adjustment a = machine::adjustmentFor(res->machine, mm.pose.rotation, mm.pose.translation);
-  EXPECT_NEAR(QLocale().toDouble(machine->item(3, 1)->text()), a.rotaryDeg[0], 1e-5);
+  EXPECT_NEAR(cellNumber(machine->item(3, 1)), a.rotaryDeg[0], 1e-5);
 
   // A tighter tolerance re-evaluates the counts.
   page_->setTolerance(0.001);

@@ -22,7 +22,9 @@
 #include <stdexcept>
 #include <vector>
 
+#define METROFIT_TEST_QT_XVFB
 #include "core/matching/probe_points.h"
+#include "qtapp.h"
 #include "widgets/pointview/pointsetview.h"
 
 namespace metrofit {
@@ -113,36 +115,6 @@ constexpr Rgb kRedEnd{180, 4, 38};
 constexpr Rgb kBlueEnd{59, 76, 192};
 constexpr Rgb kWhite{255, 255, 255};
 constexpr int kColourTolerance = 30;
-
-/// Owns the QApplication for the whole run and destroys it before main() returns (a function-local
-/// static QApplication is destroyed after Qt's own globals and crashes at exit).
-class QtApplicationEnvironment : public ::testing::Environment {
- public:
-  void SetUp() override {
-    // The GL format must be the default before the QApplication exists (VTK-QT6.md).
-    QSurfaceFormat::setDefaultFormat(PointSetView::surfaceFormat());
-    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
-      runtime_ = std::make_unique<QTemporaryDir>();  // mode 0700, as Qt wants it
-      ASSERT_TRUE(runtime_->isValid());
-      qputenv("XDG_RUNTIME_DIR", QFile::encodeName(runtime_->path()));
-    }
-    app_ = std::make_unique<QApplication>(argc_, argv_);
-  }
-  void TearDown() override {
-    app_.reset();
-    runtime_.reset();
-  }
-
- private:
-  int argc_ = 1;
-  char name_[18] = "pointsetview_test";
-  char* argv_[2] = {name_, nullptr};
-  std::unique_ptr<QTemporaryDir> runtime_;
-  std::unique_ptr<QApplication> app_;
-};
-
-[[maybe_unused]] ::testing::Environment* const kQtEnvironment =
-    ::testing::AddGlobalTestEnvironment(new QtApplicationEnvironment);
 
 class PointSetViewTest : public ::testing::Test {
  protected:
