@@ -78,21 +78,9 @@ ProcessResult run(const QString& program, const QStringList& arguments, QProcess
 ProcessResult runUnderXvfb(const QStringList& metrofitArguments) {
   QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
   env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
-  // ctest runs other xvfb-run tests in parallel: start the free-display search at a number of our
-  // own (-a -n N), and run again once when the wrapper itself failed ("xvfb-run: error: ..."; seen
-  // on a fresh-clone CI run as "problem while cleaning up temporary directory", exit 5) — that is
-  // the test harness's environment, not metrofit's behaviour under test.
-  ProcessResult r;
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    const qint64 start = 200 + (QCoreApplication::applicationPid() % 400) * 2 + attempt;
-    r = run(QStringLiteral("xvfb-run"),
-            QStringList{QStringLiteral("-a"), QStringLiteral("-n"), QString::number(start),
-                        QStringLiteral("-s"), QStringLiteral("-screen 0 1280x1024x24"), metrofitBinary()} +
-                metrofitArguments,
-            env);
-    if (!r.stdErr.contains(QStringLiteral("xvfb-run: error:"))) break;
-  }
-  return r;
+  // The same wrapper as the XVFB tests' executor (display search of its own, one retry when
+  // xvfb-run itself fails).
+  return run(QStringLiteral(METROFIT_XVFB_RUN), QStringList{metrofitBinary()} + metrofitArguments, env);
 }
 
 /// A fresh folder for a run's output: below $METROFIT_TEST_OUT (kept for people to look at), else
