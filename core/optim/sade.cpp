@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <numeric>
 #include <vector>
 
 namespace metrofit::optim {
@@ -60,9 +62,147 @@ double Sade::crossoverRate(double crMin, double crMax, long g, long gm) {
   return crMin + static_cast<double>(std::clamp(g, 1L, gm)) * (crMax - crMin) / static_cast<double>(gm);
 }
 
+namespace {
+
+/// Adaptation::SuccessHistory: SHADE (Tanabe & Fukunaga 2013), see the header.
+Result optimiseShade(const Sade::Options& o, Tracker& tracker, long gm) {
+  Rng& rng = tracker.rng();
+  const Problem& problem = tracker.problem();
+  const std::size_t n = tracker.dimension();
+  const std::size_t np = static_cast<std::size_t>(o.populationSize);
+  constexpr std::size_t kMemory = 6;  // H, L-SHADE's value
+
+  std::vector<double> lo(n), hi(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    lo[j] = problem.lower(j);
+    hi[j] = problem.upper(j);
+  }
+  std::vector<double> pop(np * n), next(np * n), trial(n);
+  std::vector<double> fit(np, std::numeric_limits<double>::infinity()), nextFit(np);
+  for (std::size_t i = 0; i < np && !tracker.exhausted(); ++i) {
+    const std::vector<double> x = tracker.randomPoint();
+    std::span<double> row(pop.data() + i * n, n);
+    std::copy(x.begin(), x.end(), row.begin());
+    fit[i] = tracker.evaluate(row);
+  }
+  bool stop = tracker.endIteration();
+
+  std::vector<double> memF(kMemory, 0.5), memCr(kMemory, 0.5);
+  std::size_t memNext = 0;
+  std::vector<double> archive;  // replaced parents, at most NP rows
+  archive.reserve(np * n);
+  std::vector<std::size_t> order(np);
+  std::vector<double> sF, sCr, sW;
+  bool reachedGm = false;
+  for (long g = 1; !stop; ++g) {
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return fit[a] < fit[b]; });
+    std::copy(pop.begin(), pop.end(), next.begin());
+    std::copy(fit.begin(), fit.end(), nextFit.begin());
+    sF.clear();
+    sCr.clear();
+    sW.clear();
+    const std::size_t archived = archive.size() / n;
+    for (std::size_t i = 0; i < np && !tracker.exhausted(); ++i) {
+      const std::size_t r = pick(rng, kMemory);
+      double cr = std::clamp(rng.normal(memCr[r], 0.1), 0.0, 1.0);
+      double f;
+      do f = memF[r] + 0.1 * std::tan(std::numbers::pi * (rng.uniform() - 0.5));  // Cauchy(M_F, 0.1)
+      while (f <= 0.0);
+      f = std::min(f, 1.0);
+      if (tracker.progress() < 0.25) cr = std::max(cr, 0.5);  // jSO-style floor, first quarter
+      // current-to-pbest/1: pbest among the best p NP, p ~ U[2/NP, 0.2]
+      const double p = std::max(2.0 / static_cast<double>(np), 0.2 * rng.uniform());
+      const std::size_t top = std::max<std::size_t>(2, static_cast<std::size_t>(std::lround(p * np)));
+      const std::size_t pb = order[pick(rng, std::min(top, np))];
+      std::size_t r1, r2;
+      do r1 = pick(rng, np);
+      while (r1 == i);
+      do r2 = pick(rng, np + archived);
+      while (r2 == i || r2 == r1);
+      const double* xi = pop.data() + i * n;
+      const double* xp = pop.data() + pb * n;
+      const double* x1 = pop.data() + r1 * n;
+      const double* x2 = r2 < np ? pop.data() + r2 * n : archive.data() + (r2 - np) * n;
+      const std::size_t jrand = pick(rng, n);
+      for (std::size_t j = 0; j < n; ++j) {
+        const bool take = (rng.uniform() < cr) | (j == jrand);
+        double v = xi[j] + f * (xp[j] - xi[j]) + f * (x1[j] - x2[j]);
+        if (v < lo[j]) v = 0.5 * (lo[j] + xi[j]);  // midpoint to the violated bound
+        if (v > hi[j]) v = 0.5 * (hi[j] + xi[j]);
+        trial[j] = take ? v : xi[j];
+      }
+      const double ft = tracker.evaluate(trial);
+      if (ft <= fit[i]) {
+        std::copy(trial.begin(), trial.end(), next.begin() + static_cast<std::ptrdiff_t>(i * n));
+        nextFit[i] = ft;
+        if (ft < fit[i]) {
+          if (archive.size() / n < np) {
+            archive.insert(archive.end(), xi, xi + n);
+          } else {
+            std::copy(xi, xi + n, archive.begin() + static_cast<std::ptrdiff_t>(pick(rng, np) * n));
+          }
+          sF.push_back(f);
+          sCr.push_back(cr);
+          sW.push_back(fit[i] - ft);
+        }
+      }
+    }
+    if (!sF.empty()) {  // weighted Lehmer mean of F, weighted mean of CR (weights: improvements)
+      double w = 0.0, f2 = 0.0, f1 = 0.0, c = 0.0;
+      for (std::size_t k = 0; k < sF.size(); ++k) {
+        w += sW[k];
+        f2 += sW[k] * sF[k] * sF[k];
+        f1 += sW[k] * sF[k];
+        c += sW[k] * sCr[k];
+      }
+      if (w > 0.0 && f1 > 0.0) {
+        memF[memNext] = f2 / f1;
+        memCr[memNext] = c / w;
+        memNext = (memNext + 1) % kMemory;
+      }
+    }
+    pop.swap(next);
+    fit.swap(nextFit);
+    stop = tracker.endIteration();
+    if (!stop && g >= gm) {
+      stop = true;
+      reachedGm = true;
+    }
+    // Restart when the population has collapsed onto one point (fitness range below 1e-8
+    // relative to the best; a population converging to an optimum of 0 keeps converging): the rest of the
+    // budget goes to a fresh population; the best stays in the tracker.
+    if (!stop) {
+      const auto [mn, mx] = std::minmax_element(fit.begin(), fit.end());
+      if (*mx - *mn <= 1e-8 * std::abs(*mn)) {
+        for (std::size_t i = 0; i < np && !tracker.exhausted(); ++i) {
+          const std::vector<double> x = tracker.randomPoint();
+          std::span<double> row(pop.data() + i * n, n);
+          std::copy(x.begin(), x.end(), row.begin());
+          fit[i] = tracker.evaluate(row);
+        }
+        std::fill(memF.begin(), memF.end(), 0.5);
+        std::fill(memCr.begin(), memCr.end(), 0.5);
+        archive.clear();
+      }
+    }
+  }
+  Result result = tracker.finish();
+  if (reachedGm && result.run.termination == Termination::BudgetExhausted) {
+    result.run.termination = Termination::MaxIterations;
+    result.run.message = "reached the maximum generation Gm = " + std::to_string(gm) + " after " +
+                         std::to_string(result.run.evaluations) + " evaluations";
+  }
+  return result;
+}
+
+}  // namespace
+
 Result Sade::optimise(const Problem& problem, Observer* observer) const {
   requireValid(options_, "sade options");
   Tracker tracker(name(), problem, options_.common, observer);
+  if (options_.adaptation == Adaptation::SuccessHistory)
+    return optimiseShade(options_, tracker, options_.effectiveMaxGenerations());
   Rng& rng = tracker.rng();
   const std::size_t n = tracker.dimension();
   const std::size_t np = static_cast<std::size_t>(options_.populationSize);

@@ -42,7 +42,25 @@
 // probability 0.1, else CR_i; F' and CR' survive with the trial. In this mode a trial replaces its
 // target as soon as it is not worse (steady state: later trials of the same generation already see
 // it) and a mutant coordinate outside the box is re-drawn uniformly inside it. Gm only sets the run
-// length here. metrofit-bench --optimizers compares both modes with pagmo2's sade at equal budget.
+// length here.
+//
+// Adaptation::SuccessHistory — beyond the paper: SHADE, Tanabe & Fukunaga, IEEE CEC 2013 (the line
+// of DE that won CEC 2014 as L-SHADE). Mutation current-to-pbest/1 with an archive:
+//   v_i = x_i + F_i (x_pbest - x_i) + F_i (x_r1 - x~_r2),
+// x_pbest drawn from the best max(2, round(p NP)) vectors, p ~ U[2/NP, 0.2]; x_r1 from the
+// population, x~_r2 from the population and the archive of replaced parents (at most NP, a random
+// entry is overwritten when full); binomial crossover; a coordinate outside the box is set to the
+// midpoint between the target's coordinate and the violated bound; generational selection. F_i ~
+// Cauchy(M_F[k], 0.1) (re-drawn while <= 0, cut at 1), CR_i ~ N(M_CR[k], 0.1) clipped to [0, 1], k
+// a random slot of a history of H = 6 (L-SHADE's H); after each generation one slot (round robin)
+// takes the improvement-weighted Lehmer mean of the successful F and the weighted mean of their CR.
+// Two additions, both measured on metrofit-bench --optimizers: (1) CR_i >= 0.5 during the first
+// quarter of the budget (the floor of jSO, Brest et al. CEC 2017, who use 0.7 / 0.6 for the first
+// quarter / half): without it CR drifts to ~0 on rotated problems (coordinate-wise search) and CEC
+// f6 stalls; (2) a restart when the population has collapsed (fitness range <= 1e-8 of |best|): a
+// fresh random population and history take the rest of the budget, the best point found so far is
+// kept by the tracker (CEC f4's trap at 34.78 is left on a second attempt). Gm only limits the run
+// length. metrofit-bench --optimizers compares all three modes with pagmo2's sade at equal budget.
 #include <string>
 
 #include "core/optim/algorithm.h"
@@ -51,9 +69,9 @@ namespace metrofit::optim {
 
 class Sade final : public Algorithm {
  public:
-  /// How F and CR change: the paper's generation schedule (Eq. 10-11, the default), or jDE
-  /// per-individual self-adaptation (beyond the paper, see above).
-  enum class Adaptation { Schedule, SelfAdaptive };
+  /// How F and CR change: the paper's generation schedule (Eq. 10-11, the default), jDE
+  /// per-individual self-adaptation, or SHADE success history (both beyond the paper, see above).
+  enum class Adaptation { Schedule, SelfAdaptive, SuccessHistory };
 
   struct Options {
     CommonOptions common;

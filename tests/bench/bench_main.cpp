@@ -155,6 +155,18 @@ int main(int argc, char** argv) {
       optimOptions.seeds = 5;
       diagnoseOptions.seeds = 10;
       diagnoseOptions.cleanSeeds = 20;
+    } else if ((a == "--only" || a == "--methods") && i + 1 < argc) {
+      std::vector<std::string>& list = a == "--only" ? optimOptions.problems : optimOptions.methods;
+      std::string item;
+      for (const char* c = argv[++i];; ++c) {
+        if (*c == ',' || *c == '\0') {
+          if (!item.empty()) list.push_back(item);
+          item.clear();
+          if (*c == '\0') break;
+        } else {
+          item += *c;
+        }
+      }
     } else if (a == "--repeat" && i + 1 < argc)
       repeat = std::max(1, std::atoi(argv[++i]));
     else if (a == "--json" && i + 1 < argc)
@@ -163,7 +175,8 @@ int main(int argc, char** argv) {
       sourceDir = argv[++i];
     else if (a == "--help" || a == "-h") {
       std::printf(
-          "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick]] [--matching] [--real-matching] "
+          "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick] [--only PROBLEMS] [--methods "
+          "METHODS]] [--matching] [--real-matching] "
           "[--thermal] [--real-thermal] [--kinematic] [--setup] [--diagnose [--quick]] [--real-diagnose] "
           "[--repeat N] "
           "[--json OUT] "

@@ -2,6 +2,7 @@
 // metrofit-bench --optimizers: our metaheuristics side by side with pagmo2's pso and sade on the
 // same problems at the same evaluation budget (see bench_optim.cpp for the protocol).
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -11,6 +12,9 @@ struct OptimBenchOptions {
   int seeds = 25;         ///< runs per problem and method (seeds 1..N); --quick: 5
   long budget = 10000;    ///< objective evaluations per run (10-D problems)
   std::string sourceDir;  ///< the source tree (for the setup example in resources/demo/setup)
+  /// --only P1,P2 / --methods M1,M2: run only these problems / our methods (empty: all). pagmo's
+  /// peers always run, so every printed comparison stays a same-run comparison.
+  std::vector<std::string> problems, methods;
 };
 
 /// Runs the section, prints the table to stdout and returns {"budget", "seeds", "dimension",
