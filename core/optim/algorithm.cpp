@@ -53,7 +53,9 @@ Tracker::Tracker(std::string method, const Problem& problem, const CommonOptions
 }
 
 void Tracker::snap(std::span<double> x) const {
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = snapCoordinate(x[i], lo_[i], hi_[i], step_, kMax_[i]);
+  const double step = step_, invStep = step > 0.0 ? 1.0 / step : 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    x[i] = snapCoordinate(x[i], lo_[i], hi_[i], step, invStep, kMax_[i]);
 }
 
 double Tracker::evaluate(std::span<double> x) {

@@ -1,5 +1,6 @@
 #include "core/optim/cripso.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -75,8 +76,18 @@ Result Cripso::optimise(const Problem& problem, Observer* observer) const {
   }
   bool stop = tracker.endIteration();
 
-  std::vector<double> planula(n);
+  std::vector<double> planula(n), lo(n), hi(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    lo[i] = problem.lower(i);
+    hi[i] = problem.upper(i);
+  }
+  // Eq. 11's c = cos(pi/2 Li/L) advances by a fixed angle per contest (one evaluation each): taken
+  // exactly at the start of every iteration and rotated in between (cos was 12 % of a contest).
+  const double delta = std::numbers::pi / 2.0 / budget;
+  const double cosDelta = std::cos(delta), sinDelta = std::sin(delta);
   while (!stop) {
+    const double angle = delta * static_cast<double>(tracker.evaluations());
+    double c = std::cos(angle), sn = std::sin(angle);
     for (std::size_t contest = 0; contest < size && !tracker.exhausted(); ++contest) {
       // Contest between two distinct random polyps.
       const std::size_t a = rng.below(size);
@@ -86,8 +97,6 @@ Result Cripso::optimise(const Problem& problem, Observer* observer) const {
       const std::size_t loser = winner == a ? b : a;
       if (loser == best) best = winner;  // a tie with the best: the winner is as good
 
-      // Eq. 11 with Li = evaluations so far, L = budget.
-      const double c = std::cos(std::numbers::pi / 2.0 * static_cast<double>(tracker.evaluations()) / budget);
       Polyp& parent = reef[winner];
       const Polyp& gbest = reef[best];
       for (std::size_t i = 0; i < n; ++i) {
@@ -97,26 +106,29 @@ Result Cripso::optimise(const Problem& problem, Observer* observer) const {
                      c * r2 * (gbest.x[i] - xi);  // Eq. 1
       }
       // The planula settles inside the box (reflected at the bounds), on the grid (snapped).
-      for (std::size_t i = 0; i < n; ++i)
-        planula[i] = reflectIntoBox(planula[i], problem.lower(i), problem.upper(i));
+      for (std::size_t i = 0; i < n; ++i) planula[i] = reflectIntoBox(planula[i], lo[i], hi[i]);
       const double f = tracker.evaluate(planula);
 
       // The winner remembers its last planula and its best planula (rules I, II).
-      parent.plast = planula;
+      std::copy(planula.begin(), planula.end(), parent.plast.begin());
       if (!parent.hasPlanula || f < parent.fbest) {
-        parent.pbest = planula;
+        std::copy(planula.begin(), planula.end(), parent.pbest.begin());
         parent.fbest = f;
         parent.hasPlanula = true;
       }
       // The planula settles in the loser's place (rules I and II).
       Polyp& child = reef[loser];
       for (std::size_t i = 0; i < n; ++i) child.plast[i] = 2.0 * planula[i] - parent.x[i];
-      child.x = planula;
+      std::copy(planula.begin(), planula.end(), child.x.begin());
       child.f = f;
-      child.pbest = parent.pbest;
+      std::copy(parent.pbest.begin(), parent.pbest.end(), child.pbest.begin());
       child.fbest = parent.fbest;
       child.hasPlanula = true;
       if (f < reef[best].f) best = loser;
+      // Eq. 11 for the next contest: Li + 1.
+      const double cNext = c * cosDelta - sn * sinDelta;
+      sn = sn * cosDelta + c * sinDelta;
+      c = cNext;
     }
     stop = tracker.endIteration();
   }

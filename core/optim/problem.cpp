@@ -10,7 +10,7 @@ void Problem::snap(std::span<double> x) const {
   const double step = gridStep();
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double lo = lower(i), hi = upper(i);
-    x[i] = snapCoordinate(x[i], lo, hi, step, gridPoints(lo, hi, step));
+    x[i] = snapCoordinate(x[i], lo, hi, step, step > 0.0 ? 1.0 / step : 0.0, gridPoints(lo, hi, step));
   }
 }
 

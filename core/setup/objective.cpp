@@ -37,6 +37,14 @@ SetupInstance::SetupInstance(const Model& model, std::vector<double> deviationMm
       if (g != 0.0) rows_[q].emplace_back(i, g);
     }
   }
+  rowStart_.push_back(0);
+  for (const auto& row : rows_) {
+    for (const auto& [i, g] : row) {
+      rowIndex_.push_back(i);
+      rowGain_.push_back(g);
+    }
+    rowStart_.push_back(rowIndex_.size());
+  }
 }
 
 SetupInstance::SetupInstance(const Model& model, const Measurements& measurements)
@@ -61,9 +69,11 @@ std::vector<double> SetupInstance::budgets(std::span<const double> x) const {
 
 double SetupInstance::f1(std::span<const double> x) const {
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t q = 0; q < rows_.size(); ++q) {
+  const std::size_t* index = rowIndex_.data();
+  const double* gain = rowGain_.data();
+  for (std::size_t q = 0, m = rows_.size(); q < m; ++q) {
     double e = deviation_[q];
-    for (const auto& [i, g] : rows_[q]) e += g * x[i];
+    for (std::size_t k = rowStart_[q], end = rowStart_[q + 1]; k < end; ++k) e += gain[k] * x[index[k]];
     best = std::min(best, std::min(upper_[q] - e, e - lower_[q]));
   }
   return best;

@@ -93,6 +93,10 @@ class SetupInstance {
   std::vector<DatumKind> datumKinds_;
   Eigen::MatrixXd gain_;
   std::vector<std::vector<std::pair<std::size_t, double>>> rows_;
+  // rows_ flattened (compressed rows: row q is entries rowStart_[q] .. rowStart_[q + 1]) for f1, the
+  // inner loop of every metaheuristic evaluation.
+  std::vector<std::size_t> rowStart_, rowIndex_;
+  std::vector<double> rowGain_;
   std::vector<double> deviation_, lower_, upper_, xLower_, xUpper_;
   double step_ = 0.001;
 };
