@@ -18,7 +18,7 @@ PACKAGES=(
   # headless GUI tests and PDF checks
   xvfb xauth libgl1-mesa-dri poppler-utils
   # packaging checks
-  dpkg-dev file appstream desktop-file-utils
+  dpkg-dev file appstream desktop-file-utils man-db
 )
 
 missing=()

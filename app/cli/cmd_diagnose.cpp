@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -164,9 +165,16 @@ void registerDiagnoseCommands(CLI::App& app) {
   auto* dg =
       app.add_subcommand("diagnose", "Closed loop: residual -> missing effect -> error before and after");
   dg->require_subcommand(1);
+  const std::map<std::string, std::string> summaries = {
+      {"thermal",
+       "Thermal log: displacement as a static function of --inputs; tries lag, undeclared inputs, drift"},
+      {"kinematic",
+       "Circular test: actuator origins and orientations; tries backlash, scale, cyclic error, servo lag"},
+      {"setup", "CMM report series: constant setup-data errors; tries tool wear and drift of a datum"},
+      {"matching", "Probe points: rigid posture; tries scale, surface offsets, in-plane distortion"}};
   for (const char* domain : {"thermal", "kinematic", "setup", "matching"}) {
     auto a = std::make_shared<MethodArgs>();
-    auto* sub = dg->add_subcommand(domain, std::string("Diagnose the ") + domain + " model");
+    auto* sub = dg->add_subcommand(domain, summaries.at(domain));
     existingFile(sub->add_option("--data", a->data, "Measured data")->required());
     if (std::string(domain) == "setup")
       existingFile(sub->add_option("--model", a->model, "Setup model (JSON)")->required());
@@ -179,11 +187,11 @@ void registerDiagnoseCommands(CLI::App& app) {
     }
     if (std::string(domain) == "kinematic") {
       sub->add_option("--feed", a->feed, "Feed rate of the test, mm/min (for servo_lag's tau_s)")
-          ->check(CLI::PositiveNumber)
+          ->check(positiveNumber())
           ->capture_default_str();
     }
     if (std::string(domain) == "matching") {
-      sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")->check(CLI::PositiveNumber);
+      sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")->check(positiveNumber());
     }
     addSeed(sub, a->seed);
     addOut(sub, a->out);

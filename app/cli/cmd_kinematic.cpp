@@ -297,7 +297,7 @@ void registerKinematicCommands(CLI::App& app) {
   comp->add_option("--gcode", b->gcode, "Also write the references as G-code (G01 blocks)");
   comp->add_option("--step-nc", b->stepNc, "Also write the references as a STEP-NC Part 21 file");
   comp->add_option("--feed", b->feed, "Feed of the G-code, mm/min")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveNumber())
       ->capture_default_str();
   comp->callback([b] { selectRunner([b]() -> int { return runCompensate(*b); }); });
 }

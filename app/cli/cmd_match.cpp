@@ -121,7 +121,7 @@ void registerMatchCommand(CLI::App& app) {
       sub->add_option("--data", a->data, "Probe points: CSV (CONTRACT.md) or a PC-DMIS hole-table report")
           ->required());
   sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveNumber())
       ->capture_default_str();
   sub->add_option("--method", a->method, "sade|ga-simplex|closed-form|minimax")
       ->check(CLI::IsMember({"sade", "ga-simplex", "closed-form", "minimax"}))

@@ -91,7 +91,7 @@ void registerSpcCommand(CLI::App& app) {
   a->nominalOpt =
       sub->add_option("--nominal", a->nominal, "Nominal (desired) value: systematic error = nominal - mean");
   sub->add_option("--coverage", a->coverage, "Coverage factor k of the interval of the mean")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveNumber())
       ->capture_default_str();
   addOut(sub, a->out);
   sub->callback([a] { selectRunner([a]() -> int { return runSpc(*a); }); });

@@ -140,6 +140,16 @@ CLI::Option* existingFile(CLI::Option* option) {
   return option->check(CLI::ExistingFile);
 }
 
+CLI::Validator positiveNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double v = 0.0;
+        if (parseNumber(text, &v) && v > 0.0) return {};
+        return "must be a positive number, got '" + text + "'";
+      },
+      "POSITIVE");
+}
+
 void addOut(CLI::App* sub, std::string& out) {
   sub->add_option("--out", out, "Result file (JSON; written atomically). Default: stdout");
 }
@@ -204,14 +214,14 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     auto a = std::make_shared<SimArgs>();
     auto* th = sim->add_subcommand("thermal",
                                    "A spindle heating/cooling test: time_min, rpm, T1..T4, T_amb, disp_z_um");
-    addOut(th, a->out);
+    th->add_option("--out", a->out, "Thermal log to write (CSV; written atomically). Default: stdout");
     addSeed(th, a->seed);
     th->callback([a] { g_selected = [a]() -> int { return runSimulateThermal(*a); }; });
     auto* pr = sim->add_subcommand("probe", "Contact-probed points of a workpiece with a posture error");
     pr->add_option("--shape", a->shape, "block | s-piece (ISO 10791-7 S-shaped test piece, 40 points)")
         ->check(CLI::IsMember({"block", "s-piece"}))
         ->capture_default_str();
-    addOut(pr, a->out);
+    pr->add_option("--out", a->out, "Probe points to write (CSV; written atomically). Default: stdout");
     addSeed(pr, a->seed);
     pr->callback([a] { g_selected = [a]() -> int { return runSimulateProbe(*a); }; });
     registerSimulateSetupCommand(*sim);

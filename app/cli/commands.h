@@ -13,6 +13,7 @@
 namespace CLI {
 class App;
 class Option;
+class Validator;
 }  // namespace CLI
 
 namespace metrofit::cli {
@@ -37,6 +38,9 @@ void selectRunner(std::function<int()> runner);
 /// Throws NotAvailable: "<what> is not in this build yet (<issue>); the inputs were read and are valid".
 [[noreturn]] void notInThisBuild(const std::string& what, const std::string& issue);
 CLI::Option* existingFile(CLI::Option* option);
+/// A number > 0; says "--opt: must be a positive number, got '-1'" (CLI::PositiveNumber prints the
+/// range up to DBL_MAX in full).
+CLI::Validator positiveNumber();
 void addOut(CLI::App* sub, std::string& out);
 void addSeed(CLI::App* sub, std::uint64_t& seed);
 std::vector<std::string> splitList(const std::string& commaSeparated);

@@ -14,6 +14,13 @@ int main(int argc, char** argv) {
                        "Print the version and exit");
   app.require_subcommand(1);
   app.fallthrough(false);
+  // Set before the subcommands are added: CLI11 copies the footer into each of them.
+  app.footer(
+      "Results go to --out FILE (JSON, or CSV where the result is a table; written atomically) or to\n"
+      "stdout; a one-line summary goes to stderr. --seed N makes stochastic methods reproducible.\n"
+      "Exit status: 0 success, 2 bad input (one line naming the file, line or field, or the option),\n"
+      "1 any other failure. 'metrofit-cli SUBCOMMAND --help' lists the options of a subcommand;\n"
+      "man metrofit-cli is the manual.");
   metrofit::cli::registerCommands(app, argc, argv);
   // CLI11 reports a stray word as "A subcommand is required"; name it instead.
   if (argc > 1 && argv[1][0] != '-') {
@@ -41,6 +48,15 @@ int main(int argc, char** argv) {
     std::string what = e.what();
     for (auto& c : what) {
       if (c == '\n') c = ' ';
+    }
+    // "A subcommand is required" after `kinematic`: name the family and its subcommands.
+    const CLI::App* deepest = &app;
+    while (!deepest->get_subcommands().empty()) deepest = deepest->get_subcommands().front();
+    if (deepest != &app && what.rfind("A subcommand is required", 0) == 0) {
+      std::string names;
+      for (const CLI::App* sub : deepest->get_subcommands({}))
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+      what = deepest->get_name() + ": a subcommand is required (one of: " + names + ")";
     }
     std::fprintf(stderr, "metrofit-cli: %s (see metrofit-cli --help)\n", what.c_str());
     return 2;

@@ -110,6 +110,8 @@ class Tokenizer {
       if (u >= 0x80) {
         const std::size_t n = utf8Length(t_, pos_);
         if (n == 0) {
+          if (t_.find('\0') != std::string_view::npos)  // e.g. a PNG: 0x89 before the first NUL
+            fail("binary data (not UTF-8, NUL bytes in the file); this is not a CSV text file");
           char buf[64];
           std::snprintf(buf, sizeof buf, "invalid UTF-8 byte 0x%02X; save the file as UTF-8", u);
           fail(buf);

@@ -1,6 +1,7 @@
 #include "core/io/json_util.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/common/error.h"
 #include "core/io/file_io.h"
@@ -21,6 +22,33 @@ void lineColumn(std::string_view text, std::size_t offset, long* line, long* col
   }
 }
 
+/// The message with control characters and bytes of invalid UTF-8 ("last read: '\x89'" of a binary
+/// file) written as \xNN, so that the one-line message stays one line of valid text.
+std::string printable(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto u = static_cast<unsigned char>(s[i]);
+    std::size_t n = 0;
+    if (u >= 0x20 && u < 0x7f) {
+      n = 1;
+    } else if (u >= 0xC2 && u <= 0xF4) {
+      n = u < 0xE0 ? 2 : u < 0xF0 ? 3 : 4;
+      for (std::size_t k = 1; k < n; ++k) {
+        if (i + k >= s.size() || (static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) n = 0;
+      }
+    }
+    if (n > 0) {
+      out.append(s, i, n);
+      i += n - 1;
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", u);
+      out += buf;
+    }
+  }
+  return out;
+}
+
 const char* typeName(const nlohmann::json& j) {
   return j.type_name();
 }
@@ -32,6 +60,14 @@ nlohmann::json parseJson(std::string_view text, const std::string& source) {
   if (text.size() >= 2 &&
       (static_cast<unsigned char>(text[0]) == 0xFF || static_cast<unsigned char>(text[0]) == 0xFE)) {
     throw ParseError(ErrorContext{source, 1, 1, {}}, "the file is UTF-16 encoded; save it as UTF-8");
+  }
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+    throw ParseError(ErrorContext{source, 1, 1, {}}, "invalid JSON: the file is empty (expected JSON)");
+  if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
+    long line, col;
+    lineColumn(text, nul, &line, &col);
+    throw ParseError(ErrorContext{source, line, col, {}},
+                     "binary data (a NUL byte); this is not a JSON text file");
   }
   // Nesting check before parsing (outside strings).
   int depth = 0;
@@ -67,11 +103,8 @@ nlohmann::json parseJson(std::string_view text, const std::string& source) {
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error
     // while parsing value - invalid literal; last read: 'x'"
     const auto pos = what.find("syntax error");
-    if (pos != std::string::npos)
-      what = what.substr(pos);
-    else if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
-      what = "the file is empty (expected JSON)";
-    throw ParseError(ErrorContext{source, line, col, {}}, "invalid JSON: " + what);
+    if (pos != std::string::npos) what = what.substr(pos);
+    throw ParseError(ErrorContext{source, line, col, {}}, "invalid JSON: " + printable(what));
   } catch (const nlohmann::json::exception& e) {
     // Not a syntax error but a value the parser cannot hold, e.g. out_of_range.406 for a number
     // beyond a double ("1e999"; found by fuzz/fuzz_project). nlohmann quotes the offending text:
@@ -85,7 +118,7 @@ nlohmann::json parseJson(std::string_view text, const std::string& source) {
       const auto at = text.find(std::string_view(what).substr(open + 1, close - open - 1));
       if (at != std::string_view::npos) lineColumn(text, at, &line, &col);
     }
-    throw ParseError(ErrorContext{source, line, col, {}}, "invalid JSON: " + what);
+    throw ParseError(ErrorContext{source, line, col, {}}, "invalid JSON: " + printable(what));
   }
 }
 

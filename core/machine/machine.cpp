@@ -177,6 +177,9 @@ MachineDefinition MachineDefinition::fromJson(const nlohmann::json& j, const std
         r.fail("expected [[min, max], [min, max]]", "rotary_travel_deg");
       m.rotaryMinDeg[i] = e[0].get<double>();
       m.rotaryMaxDeg[i] = e[1].get<double>();
+      if (!(m.rotaryMinDeg[i] <= m.rotaryMaxDeg[i]))
+        a.at(i).fail(std::string("travel of rotary axis ") + rotaryAxisNames(m.topology)[i] +
+                     " must be finite with min <= max");
     }
   }
   std::string why;

@@ -91,6 +91,16 @@ std::vector<Statement> dmisStatements(std::string_view text, const std::string& 
     std::string_view raw = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
     pos = nl == std::string_view::npos ? text.size() : nl + 1;
     ++lineNo;
+    // DMIS is text: a control byte (NUL, ESC, ...) means a binary file, and echoing it would break the
+    // one-line message.
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      const auto u = static_cast<unsigned char>(raw[i]);
+      if ((u < 0x20 && u != '\t' && u != '\r') || u == 0x7f) {
+        throw ParseError(ErrorContext{source, lineNo, static_cast<long>(i + 1), {}},
+                         "binary data (control byte 0x" + std::string(1, "0123456789ABCDEF"[u >> 4]) +
+                             "0123456789ABCDEF"[u & 15] + "); this is not a DMIS text file");
+      }
+    }
     // Remove a "$$" comment (outside quotes).
     bool inQuote = false;
     std::size_t cut = raw.size();
