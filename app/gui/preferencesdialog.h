@@ -1,8 +1,9 @@
 #pragma once
-// Preferences: the user interface language (applied at the next start).
+// Preferences: the user interface language (applied at the next start) and the autosave interval.
 #include <QDialog>
 
 class QComboBox;
+class QSpinBox;
 
 namespace metrofit {
 
@@ -14,12 +15,15 @@ class PreferencesDialog : public QDialog {
   /// The chosen language code ("system", "en", "de", "pl").
   QString language() const;
   QComboBox* languageCombo() const { return language_; }
+  /// Minutes between autosaves (0: off).
+  QSpinBox* autosaveSpin() const { return autosave_; }
 
-  /// Stores the choice in QSettings; returns true when it differs from the stored one.
+  /// Stores the choices in QSettings; returns true when the language differs from the stored one.
   bool apply();
 
  private:
   QComboBox* language_;
+  QSpinBox* autosave_;
 };
 
 }  // namespace metrofit

@@ -133,6 +133,23 @@ bool ChangeStudyValue::mergeWith(const QUndoCommand* other) {
   return true;
 }
 
+// ---- ReplaceProject ----
+
+ReplaceProject::ReplaceProject(ProjectDocument* document, Project project, const QString& text,
+                               QUndoCommand* parent)
+    : QUndoCommand(text, parent),
+      document_(document),
+      before_(document->project()),
+      after_(std::move(project)) {}
+
+void ReplaceProject::undo() {
+  document_->applyProject(before_);
+}
+
+void ReplaceProject::redo() {
+  document_->applyProject(after_);
+}
+
 // ---- ProjectDocument ----
 
 ProjectDocument::ProjectDocument(QObject* parent)
@@ -249,6 +266,18 @@ void ProjectDocument::applyStudy(const QString& study, const QString& key,
   }
   emit changed();
   emit studyValueChanged(study, key);
+}
+
+void ProjectDocument::replaceProject(const Project& project, const QString& undoText) {
+  if (project == project_) return;
+  ++editSequence_;
+  undoStack_->push(new ReplaceProject(this, project, undoText));
+  ++editSequence_;
+}
+
+void ProjectDocument::applyProject(const Project& project) {
+  project_ = project;
+  emit changed();
 }
 
 void ProjectDocument::newProject() {

@@ -28,6 +28,7 @@ class ProjectDocument;
 enum class UndoCommandId : int {
   ChangeProjectValue = 1,
   ChangeStudyValue = 2,
+  ReplaceProject = 3,
 };
 
 /// A text field of the project that can be edited through the undo stack.
@@ -95,6 +96,23 @@ class ChangeStudyValue : public QUndoCommand {
   quint64 sequence_;
 };
 
+/// Replaces the whole project (ProjectDocument::replaceProject: recovering an autosaved copy); undo
+/// restores the project as it was before. Never merges.
+class ReplaceProject : public QUndoCommand {
+ public:
+  ReplaceProject(ProjectDocument* document, Project project, const QString& text,
+                 QUndoCommand* parent = nullptr);
+
+  void undo() override;
+  void redo() override;
+  int id() const override { return static_cast<int>(UndoCommandId::ReplaceProject); }
+
+ private:
+  ProjectDocument* document_;
+  Project before_;
+  Project after_;
+};
+
 class ProjectDocument : public QObject {
   Q_OBJECT
  public:
@@ -131,6 +149,10 @@ class ProjectDocument : public QObject {
   void setStudyValue(const QString& study, const QString& key, const nlohmann::json& value,
                      const QString& undoText);
 
+  /// Replaces the whole project content through the undo stack (one ReplaceProject command named
+  /// `undoText`; the file name stays). Nothing happens when the content is equal. Emits changed().
+  void replaceProject(const Project& project, const QString& undoText);
+
   /// A new empty project without a file; clears the undo stack.
   void newProject();
   /// Replaces the project with the file's content; clears the undo stack. Throws
@@ -161,6 +183,8 @@ class ProjectDocument : public QObject {
  private:
   friend class ChangeProjectValue;
   friend class ChangeStudyValue;
+  friend class ReplaceProject;
+  void applyProject(const Project& project);
   /// Replaces a study's JSON without the undo stack (nullopt removes the study).
   void applyStudy(const QString& study, const QString& key, const std::optional<nlohmann::json>& json);
   std::optional<nlohmann::json> rawStudy(const QString& study) const;

@@ -1,0 +1,301 @@
+#include "app/gui/autosave.h"
+
+#include <signal.h>
+#include <sys/types.h>
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QLocale>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTimer>
+#include <QUndoStack>
+#include <QWidget>
+#include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
+#include <cerrno>
+#include <exception>
+#include <string>
+
+#include "core/io/file_io.h"
+#include "core/io/json_util.h"
+#include "core/project/project.h"
+#include "widgets/document/projectdocument.h"
+
+namespace metrofit {
+namespace {
+
+constexpr int kMsPerMinute = 60 * 1000;
+
+std::string encodedPath(const QString& path) {
+  return QFile::encodeName(path).toStdString();
+}
+
+QString untitledFileName(qint64 pid) {
+  return QStringLiteral("untitled-%1%2%3")
+      .arg(pid)
+      .arg(QLatin1String(Project::kFileSuffix), QLatin1String(Autosave::kSuffix));
+}
+
+/// True when a process with this id is running (or exists but belongs to someone else).
+bool processIsRunning(qint64 pid) {
+  if (pid <= 0) return false;
+  if (::kill(static_cast<pid_t>(pid), 0) == 0) return true;
+  return errno == EPERM;
+}
+
+QDateTime modified(const QString& path) {
+  return QFileInfo(path).lastModified();
+}
+
+}  // namespace
+
+Autosave::Autosave(ProjectDocument* document, QObject* parent)
+    : QObject(parent),
+      document_(document),
+      timer_(new QTimer(this)),
+      untitledFolder_(defaultUntitledFolder()) {
+  connect(timer_, &QTimer::timeout, this, [this] { tick(); });
+  connect(&watcher_, &QFutureWatcher<QString>::finished, this, &Autosave::onWriteFinished);
+  connect(document_, &ProjectDocument::changed, this, [this] { ++generation_; });
+  connect(document_, &ProjectDocument::modifiedChanged, this, [this](bool modified) {
+    if (!modified) removeWritten();
+  });
+  setIntervalMs(intervalSetting() * kMsPerMinute);
+}
+
+Autosave::~Autosave() {
+  watcher_.waitForFinished();
+}
+
+int Autosave::intervalSetting() {
+  bool ok = false;
+  const int minutes =
+      QSettings().value(QString::fromLatin1(kIntervalSettingsKey), kDefaultIntervalMinutes).toInt(&ok);
+  if (!ok) return kDefaultIntervalMinutes;
+  return std::clamp(minutes, 0, kMaxIntervalMinutes);
+}
+
+void Autosave::setIntervalSetting(int minutes) {
+  QSettings().setValue(QString::fromLatin1(kIntervalSettingsKey),
+                       std::clamp(minutes, 0, kMaxIntervalMinutes));
+}
+
+QString Autosave::autosaveFileFor(const QString& projectFile) {
+  return projectFile + QLatin1String(kSuffix);
+}
+
+QString Autosave::defaultUntitledFolder() {
+  return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave");
+}
+
+void Autosave::setIntervalMs(int ms) {
+  if (ms <= 0) {
+    timer_->stop();
+    timer_->setInterval(0);
+    return;
+  }
+  timer_->start(ms);
+}
+
+int Autosave::intervalMs() const {
+  return timer_->isActive() ? timer_->interval() : 0;
+}
+
+QString Autosave::autosaveFile() const {
+  const QString file = document_->fileName();
+  if (!file.isEmpty()) return autosaveFileFor(file);
+  return QDir(untitledFolder_).filePath(untitledFileName(QCoreApplication::applicationPid()));
+}
+
+bool Autosave::tick() {
+  if (pending_ || !document_->isModified()) return false;
+  const QString target = autosaveFile();
+  if (target == writtenFile_ && generation_ == writtenGeneration_) return false;  // nothing new
+  if (document_->fileName().isEmpty() && !QDir().mkpath(untitledFolder_)) {
+    emit failed(tr("cannot create the autosave folder %1").arg(QDir::toNativeSeparators(untitledFolder_)));
+    return false;
+  }
+  // Serialising the small project JSON is quick; the write (with fsync) goes to a worker.
+  std::string text = dumpJson(document_->project().toJson());
+  pending_ = true;
+  pendingFile_ = target;
+  pendingGeneration_ = generation_;
+  watcher_.setFuture(QtConcurrent::run([path = encodedPath(target), text = std::move(text)]() -> QString {
+    try {
+      writeFileAtomic(path, text);
+    } catch (const std::exception& e) {
+      return QString::fromStdString(e.what());
+    }
+    return {};
+  }));
+  return true;
+}
+
+void Autosave::waitForWrite() {
+  if (!pending_) return;
+  watcher_.waitForFinished();
+  onWriteFinished();
+}
+
+void Autosave::onWriteFinished() {
+  if (!pending_) return;  // handled already (waitForWrite, then the watcher's signal)
+  pending_ = false;
+  const QString error = watcher_.result();
+  if (!error.isEmpty()) {
+    emit failed(error);
+    return;
+  }
+  if (!document_->isModified()) {
+    // Saved (or undone to the saved state) while the worker wrote: the copy is not needed.
+    QFile::remove(pendingFile_);
+    return;
+  }
+  if (!writtenFile_.isEmpty() && writtenFile_ != pendingFile_) QFile::remove(writtenFile_);
+  writtenFile_ = pendingFile_;
+  writtenGeneration_ = pendingGeneration_;
+  emit written(writtenFile_);
+}
+
+void Autosave::removeWritten() {
+  waitForWrite();
+  if (writtenFile_.isEmpty()) return;
+  QFile::remove(writtenFile_);
+  writtenFile_.clear();
+}
+
+RecoveryChoice Autosave::decide(const RecoveryOffer& offer) {
+  if (decider_) return decider_(offer);
+  return askUser(qobject_cast<QWidget*>(parent()), offer);
+}
+
+std::optional<RecoveryChoice> Autosave::open(const QString& path) {
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  const QString side = autosaveFileFor(absolute);
+  std::optional<Project> autosaved;
+  RecoveryOffer offer;
+  // Our own side file of this session belongs to the content being replaced (reload from disk).
+  if (side != writtenFile_ && QFileInfo::exists(side) && QFileInfo::exists(absolute) &&
+      modified(side) > modified(absolute)) {
+    try {
+      autosaved = loadProject(encodedPath(side));
+    } catch (const std::exception& e) {
+      emit failed(tr("The autosaved copy cannot be read: %1").arg(QString::fromStdString(e.what())));
+    }
+    if (autosaved) {
+      offer = {absolute, side, modified(side), modified(absolute), QString::fromStdString(autosaved->name)};
+    }
+  }
+  if (!autosaved) {
+    document_->load(absolute);
+    return std::nullopt;
+  }
+  const RecoveryChoice choice = decide(offer);
+  document_->load(absolute);  // throws: nothing changed, the side file stays
+  switch (choice) {
+    case RecoveryChoice::Recover:
+      document_->replaceProject(*autosaved, tr("Recover autosaved changes"));
+      writtenFile_ = side;  // removed again by a save or a discard
+      writtenGeneration_ = generation_;
+      break;
+    case RecoveryChoice::Discard:
+      QFile::remove(side);
+      break;
+    case RecoveryChoice::OpenOriginal:
+      break;
+  }
+  return choice;
+}
+
+QString Autosave::orphanedUntitledFile() const {
+  static const QRegularExpression pattern(
+      QStringLiteral("^untitled-(\\d+)%1%2$")
+          .arg(QRegularExpression::escape(QLatin1String(Project::kFileSuffix)),
+               QRegularExpression::escape(QLatin1String(kSuffix))));
+  const QDir folder(untitledFolder_);
+  QString newest;
+  QDateTime newestTime;
+  const QFileInfoList files = folder.entryInfoList({QStringLiteral("untitled-*")}, QDir::Files);
+  for (const QFileInfo& info : files) {
+    const QRegularExpressionMatch match = pattern.match(info.fileName());
+    if (!match.hasMatch()) continue;
+    const qint64 pid = match.captured(1).toLongLong();
+    if (pid == QCoreApplication::applicationPid() || processIsRunning(pid)) continue;
+    if (newest.isEmpty() || info.lastModified() > newestTime) {
+      newest = info.absoluteFilePath();
+      newestTime = info.lastModified();
+    }
+  }
+  return newest;
+}
+
+std::optional<RecoveryChoice> Autosave::recoverUntitled() {
+  const QString side = orphanedUntitledFile();
+  if (side.isEmpty()) return std::nullopt;
+  Project autosaved;
+  try {
+    autosaved = loadProject(encodedPath(side));
+  } catch (const std::exception& e) {
+    emit failed(tr("The autosaved copy cannot be read: %1").arg(QString::fromStdString(e.what())));
+    return std::nullopt;
+  }
+  const RecoveryOffer offer{QString(), side, modified(side), QDateTime(),
+                            QString::fromStdString(autosaved.name)};
+  const RecoveryChoice choice = decide(offer);
+  switch (choice) {
+    case RecoveryChoice::Recover:
+      document_->newProject();
+      document_->replaceProject(autosaved, tr("Recover autosaved changes"));
+      // The next autosave goes to this process's file and removes the recovered one.
+      writtenFile_ = side;
+      writtenGeneration_ = generation_;
+      break;
+    case RecoveryChoice::Discard:
+      QFile::remove(side);
+      break;
+    case RecoveryChoice::OpenOriginal:
+      break;
+  }
+  return choice;
+}
+
+RecoveryChoice Autosave::askUser(QWidget* parent, const RecoveryOffer& offer) {
+  const QLocale locale;
+  const QString when = locale.toString(offer.autosaved, QLocale::ShortFormat);
+  QString text;
+  if (offer.projectFile.isEmpty()) {
+    text = tr("Metrofit was not closed properly. An autosaved copy of the unsaved project “%1” from %2 "
+              "was found.\n\nDo you want to recover it?")
+               .arg(offer.projectName, when);
+  } else {
+    text = tr("The project %1 has an autosaved copy from %2 that is newer than the file (saved %3). "
+              "Metrofit was probably not closed properly.\n\nDo you want to recover the autosaved "
+              "changes? They are opened as unsaved changes; the project file is only overwritten "
+              "when you save.")
+               .arg(QDir::toNativeSeparators(offer.projectFile), when,
+                    locale.toString(offer.saved, QLocale::ShortFormat));
+  }
+  QMessageBox box(QMessageBox::Question, tr("Recover autosaved changes"), text, QMessageBox::NoButton,
+                  parent);
+  box.setObjectName(QStringLiteral("recoveryBox"));
+  QPushButton* recover = box.addButton(tr("&Recover"), QMessageBox::AcceptRole);
+  QPushButton* discard = box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+  QPushButton* original = box.addButton(
+      offer.projectFile.isEmpty() ? tr("&Keep for later") : tr("&Open original"), QMessageBox::RejectRole);
+  recover->setToolTip(tr("Open the autosaved content as unsaved changes"));
+  discard->setToolTip(tr("Delete the autosaved copy"));
+  original->setToolTip(tr("Leave the autosaved copy where it is and continue without it"));
+  box.setDefaultButton(recover);
+  box.setEscapeButton(original);
+  box.exec();
+  if (box.clickedButton() == recover) return RecoveryChoice::Recover;
+  if (box.clickedButton() == discard) return RecoveryChoice::Discard;
+  return RecoveryChoice::OpenOriginal;
+}
+
+}  // namespace metrofit

@@ -1,0 +1,27 @@
+#pragma once
+// Binds a page's input widget to one value of a study, through the document's undo stack
+// (ProjectDocument::setStudyValue): a user edit becomes an undoable command (typing in a spin box is
+// one undo step, ended by editingFinished), and undo / redo / load put the widget back to the value
+// the project holds. `effective` returns the value the page uses for the current project (the
+// study's value, or the page's default when the study has none or an invalid one); the widget is
+// only written to the project when it differs from that, so showing or reloading a project is
+// never an edit.
+#include <QString>
+#include <QtGlobal>
+#include <functional>
+
+class QComboBox;
+class QSpinBox;
+
+namespace metrofit {
+
+class ProjectDocument;
+
+/// A combo box whose items carry the value as their data (a string).
+void bindStudySetting(ProjectDocument* document, QComboBox* combo, const QString& study, const QString& key,
+                      std::function<QString()> effective, const QString& undoText);
+/// A spin box holding an integer; `writeUnsigned` writes a JSON unsigned number (seeds).
+void bindStudySetting(ProjectDocument* document, QSpinBox* spin, const QString& study, const QString& key,
+                      std::function<qint64()> effective, bool writeUnsigned, const QString& undoText);
+
+}  // namespace metrofit
