@@ -186,6 +186,15 @@ TEST(ThermalModel, ModularModelsPredictTheCombinedTest) {
   EXPECT_TRUE(test::near(m[0].errorPeak, 87.6, 2.0)) << m[0].errorPeak;
 }
 
+// The speed budget holds for the optimised build. The sanitize preset (Debug, ASan + UBSan; the
+// compiler defines __SANITIZE_ADDRESS__) runs the same training about ten times slower: there the
+// bound is scaled, the assertion stays.
+#ifdef __SANITIZE_ADDRESS__
+constexpr double kSpeedBudgetFactor = 25.0;
+#else
+constexpr double kSpeedBudgetFactor = 1.0;
+#endif
+
 TEST(ThermalModel, GnnmciTrainsOnAFourHourLogWellUnderASecond) {
   ThermalSimOptions so;
   so.durationMin = 240.0;  // 4 h at 1-min sampling: 241 rows
@@ -197,7 +206,8 @@ TEST(ThermalModel, GnnmciTrainsOnAFourHourLogWellUnderASecond) {
   std::printf("[ figures  ] GNNMCI training on a 4 h log (241 rows, 4 inputs, %ld evaluations): %.3f s CPU\n",
               t.run.evaluations, cpu);
   EXPECT_EQ(t.run.evaluations, 90 * 101);
-  EXPECT_LT(cpu, 1.0);  // CPU time of this process: not disturbed by other load on the machine
+  // CPU time of this process: not disturbed by other load on the machine
+  EXPECT_LT(cpu, 1.0 * kSpeedBudgetFactor);
 }
 
 TEST(ThermalModel, JsonRoundTripGivesTheSamePredictions) {
