@@ -13,6 +13,7 @@
 #include <exception>
 
 #include "app/gui/notesedit.h"
+#include "core/diagnose/thermal_applied.h"
 #include "core/thermal/thermal_log.h"
 #include "widgets/charts/thermalhysteresisview.h"
 #include "widgets/charts/thermalmodelview.h"
@@ -29,6 +30,20 @@ QString settingsKey(const QString& id, const ThermalModelSettings& s) {
   QString key = id + QLatin1Char('|') + QString::fromStdString(s.target);
   for (const std::string& in : s.inputs) key += QLatin1Char(',') + QString::fromStdString(in);
   return key;
+}
+
+/// The dataset the diagnosis of `domain` ran on when effects were applied there and it is not
+/// `datasetId` (the applied effects belong to that dataset), else empty.
+QString appliedElsewhere(const Project& project, const char* domain, const std::string& datasetId) {
+  const auto diag = project.studies.find(study::kDiagnosis);
+  if (diag == project.studies.end() || !diag->is_object()) return {};
+  const auto block = diag->find(domain);
+  if (block == diag->end() || !block->is_object()) return {};
+  const auto applied = block->find("applied");
+  if (applied == block->end() || !applied->is_array() || applied->empty()) return {};
+  const auto dataset = block->find("dataset");
+  if (dataset == block->end() || !dataset->is_string() || dataset->get<std::string>() == datasetId) return {};
+  return QString::fromStdString(dataset->get<std::string>());
 }
 
 }  // namespace
@@ -55,6 +70,7 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   combo_->setObjectName(QStringLiteral("thermalLogCombo"));
   combo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   combo_->setMinimumContentsLength(16);
+  info_->setObjectName(QStringLiteral("thermalInfo"));
   info_->setWordWrap(true);
   info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   message_->setObjectName(QStringLiteral("thermalMessage"));
@@ -122,6 +138,7 @@ void ThermalPage::refresh() {
   // Name or notes edits must not re-read the data.
   if (logs == logs_ && projectFile_ == document_->fileName() && combo_->count() > 0) {
     if (!writingStudy_) syncSettingsFromStudy();  // undo / redo of a settings edit
+    updateInfo();                                 // Apply / undo on the diagnosis page
     return;
   }
   logs_ = std::move(logs);
@@ -172,12 +189,14 @@ void ThermalPage::showLog(int comboIndex) {
       info += QLatin1Char(' ') + tr("Licence: %1.").arg(QString::fromStdString(dataset.licence));
     if (!dataset.description.empty())
       info.prepend(QString::fromStdString(dataset.description) + QLatin1Char('\n'));
-    info_->setText(info);
+    infoBase_ = info;
+    updateInfo();
     if (!settings_.contains(logId_)) {
       const auto study = document_->project().studies.find(study::kThermal);
       settings_[logId_] = defaultThermalModelSettings(
           log_, study != document_->project().studies.end() ? *study : nlohmann::json::object(), dataset.id);
     }
+    settings_[logId_].applied = diagnose::projectThermalApplied(document_->project(), dataset.id);
     models_->setLog(log_, settings_[logId_]);
     stack_->setCurrentWidget(tabs_);
     onTabChanged(tabs_->currentIndex());
@@ -187,6 +206,18 @@ void ThermalPage::showLog(int comboIndex) {
     message_->setText(tr("Cannot show this thermal log:\n%1").arg(error_));
     stack_->setCurrentWidget(message_);
   }
+}
+
+void ThermalPage::updateInfo() {
+  if (logId_.isEmpty()) return;
+  const QString elsewhere = appliedElsewhere(document_->project(), "thermal", logId_.toStdString());
+  info_->setText(elsewhere.isEmpty()
+                     ? infoBase_
+                     : infoBase_ + QLatin1Char('\n') +
+                           tr("Effects applied on the Diagnosis page belong to the log %1 (the "
+                              "one the diagnosis ran on); the models of this log do not include "
+                              "them.")
+                               .arg(elsewhere));
 }
 
 void ThermalPage::writeStudySettings(const ThermalModelSettings& s) {
@@ -226,10 +257,13 @@ void ThermalPage::syncSettingsFromStudy() {
   const nlohmann::json study = document_->studyValue(QString::fromLatin1(study::kThermal), QString());
   const nlohmann::json dataset =
       study.is_object() ? study.value("dataset", nlohmann::json()) : nlohmann::json();
-  // Only the study's dataset (or any log while the study names none) follows the study.
-  if (!dataset.is_null() && dataset != nlohmann::json(logId_.toStdString())) return;
-  const ThermalModelSettings s = defaultThermalModelSettings(
-      log_, study.is_object() ? study : nlohmann::json::object(), logId_.toStdString());
+  // Only the study's dataset (or any log while the study names none) follows the study; the applied
+  // effects (Apply / undo on the diagnosis page) follow the project for every log they apply to.
+  ThermalModelSettings s = models_->settings();
+  if (dataset.is_null() || dataset == nlohmann::json(logId_.toStdString()))
+    s = defaultThermalModelSettings(log_, study.is_object() ? study : nlohmann::json::object(),
+                                    logId_.toStdString());
+  s.applied = diagnose::projectThermalApplied(document_->project(), logId_.toStdString());
   if (s == models_->settings()) return;
   settings_[logId_] = s;
   models_->setSettings(s);

@@ -9,7 +9,10 @@
 //    combined test predicted from models fitted on the Z and C tests (Section 4.3).
 // A log that cannot be read shows its one-line error instead. The model settings start from the
 // project's thermal study (studies.thermal: dataset, target, inputs) and are kept per log for the
-// session; they do not edit the project, so they are not on the undo stack.
+// session; they do not edit the project, so they are not on the undo stack. Effects applied on the
+// diagnosis page (studies.diagnosis.thermal.applied) are part of the model of the log the diagnosis
+// ran on (core/diagnose/thermal_applied.h): for that log the Models tab fits with them and says so,
+// other logs say where they apply; Apply and its undo change the settings (Train again to update).
 #include <QFutureWatcher>
 #include <QHash>
 #include <QWidget>
@@ -65,6 +68,9 @@ class ThermalPage : public QWidget {
   void writeStudySettings(const ThermalModelSettings& s);
   /// Puts studies.thermal's settings into the controls after undo / redo (signals blocked).
   void syncSettingsFromStudy();
+  /// The log's description plus, when effects applied on the diagnosis page belong to another log,
+  /// a line that says so.
+  void updateInfo();
 
   ProjectDocument* document_;
   QComboBox* combo_;
@@ -80,6 +86,7 @@ class ThermalPage : public QWidget {
   QString projectFile_;
   ThermalLog log_;
   QString logId_;
+  QString infoBase_;       ///< the log's description (info_ without the applied-effects line)
   QString hysteresisKey_;  ///< what the hysteresis view shows (dataset, target, inputs)
   QHash<QString, ThermalModelSettings> settings_;  ///< per dataset id, this session
   bool writingStudy_ = false;                      ///< the page's own edit of the document

@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include "core/common/error.h"
+#include "core/diagnose/thermal_applied.h"
 #include "core/io/csv.h"
 #include "core/sim/effects_thermal.h"
 #include "core/thermal/thermal_data.h"
@@ -28,13 +29,9 @@ std::string pct(double before, double after) {
   return (p >= 0.0 ? "+" : "") + CsvWriter::formatNumber(p, 2) + " %";
 }
 
-/// The model state: the declared inputs plus the accepted effects.
-struct ModelState {
-  double lagAll = 0.0;                   ///< > 0: `lag` of every declared input
-  std::map<std::string, double> lagCol;  ///< `lag:<col>` (overrides lagAll for that input)
-  std::vector<std::string> extra;        ///< `input:<col>`
-  bool drift = false;                    ///< `drift`
-};
+/// The model state: the declared inputs plus the accepted effects (thermal_applied.h, shared with
+/// every fit of the thermal study that includes applied effects).
+using ModelState = ThermalEffectSet;
 
 struct Fit {
   bool ok = false;
@@ -51,7 +48,6 @@ class Problem {
  public:
   Problem(const ThermalLog& log, const ThermalDiagnosisOptions& o) : log_(log), o_(o) {
     y_ = log.channel(o.target).values;
-    for (const auto& in : o.inputs) x_.push_back(&log.channel(in).values);
     n_ = log.rows();
     nFit_ = thermal::fitRowCount(n_, o.trainFraction);
   }
@@ -63,24 +59,9 @@ class Problem {
   Fit fit(const ModelState& m) const {
     std::vector<std::vector<double>> cols;
     Fit f;
-    for (std::size_t j = 0; j < x_.size(); ++j) {
-      const auto it = m.lagCol.find(o_.inputs[j]);
-      const double tau = it != m.lagCol.end() ? it->second : m.lagAll;
-      cols.push_back(tau > 0.0 ? firstOrderLag(*x_[j], log_.timeMin, tau) : *x_[j]);
-      f.names.push_back(o_.inputs[j]);
-    }
-    for (const auto& e : m.extra) {
-      const auto& z = log_.channel(e).values;
-      std::vector<double> c(n_);
-      for (std::size_t k = 0; k < n_; ++k) c[k] = z[k] - z[0];
-      cols.push_back(std::move(c));
-      f.names.push_back("input:" + e);
-    }
-    if (m.drift) {
-      std::vector<double> c(n_);
-      for (std::size_t k = 0; k < n_; ++k) c[k] = log_.timeMin[k] - log_.timeMin[0];
-      cols.push_back(std::move(c));
-      f.names.push_back("drift");
+    for (ThermalRegressor& r : thermalRegressors(log_, o_.inputs, m)) {
+      cols.push_back(std::move(r.values));
+      f.names.push_back(std::move(r.name));
     }
     const auto p = static_cast<Eigen::Index>(cols.size());
     const auto nf = static_cast<Eigen::Index>(nFit_);
@@ -160,7 +141,6 @@ class Problem {
   const ThermalLog& log_;
   const ThermalDiagnosisOptions& o_;
   std::vector<double> y_;
-  std::vector<const std::vector<double>*> x_;
   std::size_t n_ = 0, nFit_ = 0;
 };
 

@@ -21,8 +21,14 @@ const MatchResult& MatchingStudyResult::primaryRun() const {
   return *r;
 }
 
-MatchingStudyResult runMatchingStudy(const ProbePointSet& set, const MatchingStudyOptions& o,
+ProbePointSet studyModelSet(const ProbePointSet& set, const MatchingStudyOptions& options,
+                            const std::string& source) {
+  return diagnose::applyMatchingEffects(set, options.applied, source);
+}
+
+MatchingStudyResult runMatchingStudy(const ProbePointSet& input, const MatchingStudyOptions& o,
                                      Observer* observer) {
+  const ProbePointSet set = studyModelSet(input, o);
   MatchingStudyResult res;
   res.primary = o.primary;
   res.machine = o.machine;
@@ -100,6 +106,8 @@ MatchingStudySettings matchingStudySettings(const Project& project, const std::s
       fail("locks", "must be a list of rx, ry, rz, x, y, z (string, e.g. \"rz,z\")");
     s.options.locks = DofLocks::parse(j["locks"].get<std::string>(), prefix + "locks");
   }
+  s.options.applied = diagnose::parseAppliedMatchingEffects(
+      diagnose::projectAppliedEffects(project, study::kMatching, s.datasetId, source), source);
   if (!matchingMachine(project, &s.options.machine, source))
     s.options.machine = machine::MachineDefinition::preset(machine::Topology::Xfyzba);
   return s;

@@ -7,7 +7,12 @@
 // Project keys (studies.matching, all optional): "dataset" (a probe_points dataset id; default the
 // first of that kind), "tolerance_mm" (>= 0, default 0.05), "method" (sade | ga-simplex |
 // closed-form | minimax, the primary method, default sade), "allow_scale" (bool), "seed" (>= 0),
-// "machine" (project.h matchingMachine; default the XFYZBA preset).
+// "machine" (project.h matchingMachine; default the XFYZBA preset). The effects added to the model
+// with the diagnosis page's Apply (studies.diagnosis.matching.applied: scale, surface_offset:<s>,
+// distortion; core/diagnose/applied_setup_matching.h) are part of the study's model when the
+// diagnosis ran on the study's dataset (studies.diagnosis.matching.dataset): the nominal
+// points are deformed by them before every method runs (studyModelSet), so the residual, the
+// tolerance evaluation, the machine adjustments and the remeasure loop include them.
 //
 // The remeasure loop's cell: the workpiece's true posture is the primary fit's rigid posture (R, t),
 // the probe repeats the nominal points with `remeasureNoiseMm` noise; see remeasure.h.
@@ -16,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "core/diagnose/applied_setup_matching.h"
 #include "core/machine/machine.h"
 #include "core/matching/matching.h"
 #include "core/matching/remeasure.h"
@@ -38,7 +44,14 @@ struct MatchingStudyOptions {
   machine::MachineDefinition machine;
   bool remeasure = true;
   double remeasureNoiseMm = 0.006;
+  /// Effects added to the model (studies.diagnosis.matching.applied); empty = the declared rigid model.
+  diagnose::AppliedMatchingEffects applied;
 };
+
+/// The point set the study matches: `set` with the applied effects on its nominal points (a copy of
+/// `set` without effects). ValidationError naming the applied entry for an unknown surface.
+ProbePointSet studyModelSet(const ProbePointSet& set, const MatchingStudyOptions& options,
+                            const std::string& source = {});
 
 struct MatchingStudyResult {
   std::vector<MatchResult> runs;  ///< in the order of options.methods
@@ -54,8 +67,8 @@ struct MatchingStudyResult {
   const MatchResult& primaryRun() const;
 };
 
-/// Runs the study. InputError on bad data or options (as matchPosture). The observer sees the
-/// iterations of every run and may stop the study.
+/// Runs the study on studyModelSet(set, options). InputError on bad data or options (as
+/// matchPosture). The observer sees the iterations of every run and may stop the study.
 MatchingStudyResult runMatchingStudy(const ProbePointSet& set, const MatchingStudyOptions& options,
                                      Observer* observer = nullptr);
 

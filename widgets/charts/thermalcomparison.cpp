@@ -5,7 +5,9 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
+#include "core/diagnose/thermal_applied.h"
 #include "core/thermal/thermal_data.h"
 
 namespace metrofit {
@@ -119,16 +121,36 @@ ThermalComparison compareThermalModels(const ThermalLog& log, const ThermalModel
   ThermalComparison c;
   c.settings = settings;
   c.series = thermal::selectThermalSeries(log, settings.target, settings.inputs);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  c.declaredHeldoutRmse.fill(nan);
+  c.appliedHeldoutRmse.fill(nan);
+  const diagnose::AppliedThermalEffects applied =
+      diagnose::appliedThermalEffects(settings.applied, log, settings.target, settings.inputs);
+  if (!applied.empty()) {
+    const diagnose::ThermalLogWithEffects with =
+        diagnose::withThermalEffects(log, settings.inputs, applied.effects);
+    c.appliedSeries = thermal::selectThermalSeries(with.log, settings.target, with.inputs);
+    c.appliedText = applied.text();
+  }
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
     ModelObserver forward(observer, static_cast<int>(i));
     const auto start = std::chrono::steady_clock::now();
-    c.models[i] = thermal::fitAndEvaluate(c.series, settings.trainFraction,
-                                          fitOptions(kThermalModelOrder[i], settings.seed), &forward);
-    c.seconds[i] = secondsSince(start);
-    if (c.models[i].training.run.termination == Termination::Cancelled) {
-      c.cancelled = true;
-      break;
+    const thermal::ThermalFitOptions options = fitOptions(kThermalModelOrder[i], settings.seed);
+    if (c.appliedText.empty()) {
+      c.models[i] = thermal::fitAndEvaluate(c.series, settings.trainFraction, options, &forward);
+      c.declaredHeldoutRmse[i] = c.models[i].heldout.rmse;
+      c.cancelled = c.models[i].training.run.termination == Termination::Cancelled;
+    } else {
+      diagnose::ThermalVariantFit v = diagnose::fitDeclaredAndWithEffects(
+          c.series, c.appliedSeries, settings.trainFraction, options, &forward);
+      c.declaredHeldoutRmse[i] = v.declared.heldout.rmse;
+      if (!v.cancelled || v.usesEffects) c.appliedHeldoutRmse[i] = v.withEffects.heldout.rmse;
+      c.usesApplied[i] = v.usesEffects;
+      c.cancelled = v.cancelled;
+      c.models[i] = v.usesEffects ? std::move(v.withEffects) : std::move(v.declared);
     }
+    c.seconds[i] = secondsSince(start);
+    if (c.cancelled) break;
   }
   return c;
 }

@@ -29,6 +29,11 @@ struct ThermalModelSettings {
   std::vector<std::string> inputs;
   double trainFraction = 0.5;
   std::uint64_t seed = 1;
+  /// Effects added to the model with Apply on the diagnosis page (studies.diagnosis.thermal.applied,
+  /// core/diagnose/thermal_applied.h: lagged inputs, extra input columns, a drift term): every model
+  /// is also fitted with them and keeps them where they lower its held-out error; an empty array: the
+  /// declared inputs only.
+  nlohmann::json applied = nlohmann::json::array();
   bool operator==(const ThermalModelSettings&) const = default;
 };
 
@@ -49,15 +54,26 @@ using ThermalComparisonObserver = std::function<ObserverDecision(int model, cons
 
 struct ThermalComparison {
   ThermalModelSettings settings;
-  thermal::ThermalSeries series;
-  std::array<thermal::ThermalEvaluation, 3> models;  ///< in kThermalModelOrder
-  std::array<double, 3> seconds{};                   ///< wall time of each fit
+  thermal::ThermalSeries series;         ///< the declared inputs
+  thermal::ThermalSeries appliedSeries;  ///< with the applied effects' columns as inputs (no rows: none)
+  std::string appliedText;  ///< the applied effects, e.g. "lag:T2 (15.5 min)"; empty: none applied
+  /// With applied effects every model is fitted on `series` and on `appliedSeries` and keeps the
+  /// variant with the lower held-out RMSE (ties: declared; core/diagnose/thermal_applied.h
+  /// fitDeclaredAndWithEffects): `models` holds the kept fits, `usesApplied` which one each is, and
+  /// the held-out RMSE of both variants (NaN where not fitted).
+  std::array<thermal::ThermalEvaluation, 3> models;  ///< in kThermalModelOrder, the kept variants
+  std::array<bool, 3> usesApplied{};                 ///< the model keeps the applied-effect inputs
+  std::array<double, 3> declaredHeldoutRmse{};       ///< held-out RMSE with the declared inputs
+  std::array<double, 3> appliedHeldoutRmse{};        ///< held-out RMSE with the applied effects
+  std::array<double, 3> seconds{};                   ///< wall time of each model's fit(s)
   bool cancelled = false;                            ///< an observer stopped a training
 };
 
-/// Fits and evaluates the three models (see above). Throws the core's InputError / OptionsError for
-/// bad columns or settings; `cancelled` is set (and the remaining models skipped) when the observer
-/// stops.
+/// Fits and evaluates the three models (see above); with applied effects in the settings each model
+/// is fitted with and without them and keeps the better variant on the held-out rows.
+/// Throws the core's InputError / OptionsError for bad columns or settings (a bad applied entry: a
+/// ValidationError naming studies.diagnosis.thermal.applied[i]...); `cancelled` is set (and the remaining
+/// models skipped) when the observer stops.
 ThermalComparison compareThermalModels(const ThermalLog& log, const ThermalModelSettings& settings,
                                        const ThermalComparisonObserver& observer = {});
 

@@ -68,17 +68,33 @@ CircularAnalysis analyseCircularTest(const MeasuredPath& path) {
 
 CompensationPreview previewCompensation(const MeasuredPath& path, const CircularAnalysis& analysis,
                                         const ActuatorErrors2& identified,
-                                        const std::optional<ActuatorErrors2>& trueMachine) {
+                                        const std::optional<ActuatorErrors2>& trueMachine,
+                                        const AxisEffects* effects) {
   CompensationPreview p;
   const CartesianMachine2 machine = CartesianMachine2::fromErrors(identified);
   p.nominal = path.command;
-  p.references = compensatePath(machine, p.nominal);
-  p.model = runPath(machine, p.references);
+  const bool withEffects = effects && !effects->empty();
+  p.references = withEffects ? compensatePathWithEffects(machine, *effects, p.nominal)
+                             : compensatePath(machine, p.nominal);
+  p.model = withEffects ? runPathWithEffects(machine, *effects, p.references, p.nominal)
+                        : runPath(machine, p.references);
+  const std::vector<Eigen::Vector2d> atNominal =
+      withEffects ? runPathWithEffects(machine, *effects, p.nominal, p.nominal)
+                  : std::vector<Eigen::Vector2d>{};
   const Eigen::Matrix2d axes = machine.directions();
   p.expected.reserve(path.size());
+  double sumBefore = 0.0, sumExpected = 0.0;
   for (std::size_t k = 0; k < path.size(); ++k) {
-    p.expected.push_back(path.measured[k] + axes * (p.references[k] - p.nominal[k]));
+    p.expected.push_back(withEffects
+                             ? Eigen::Vector2d(path.measured[k] + p.model[k] - atNominal[k])
+                             : Eigen::Vector2d(path.measured[k] + axes * (p.references[k] - p.nominal[k])));
     p.largestCorrectionMm = std::max(p.largestCorrectionMm, (p.references[k] - p.nominal[k]).norm());
+    sumBefore += (path.measured[k] - p.nominal[k]).squaredNorm();
+    sumExpected += (p.expected[k] - p.nominal[k]).squaredNorm();
+  }
+  if (path.size() > 0) {
+    p.rmsBeforeMm = std::sqrt(sumBefore / static_cast<double>(path.size()));
+    p.rmsExpectedMm = std::sqrt(sumExpected / static_cast<double>(path.size()));
   }
   const Eigen::Vector2d& c = analysis.centreMm;
   const double r = analysis.radiusMm;

@@ -20,12 +20,20 @@
 //   simulated    when the machine is known (a simulated test): the references run through the true
 //                machine, noise free
 // Each with its largest |radial deviation|.
+//
+// With applied effects (core/kinematics/axis_effects.h: backlash, scale, cyclic, servo lag added
+// with Apply on the diagnosis page) the model is P = o + [ir jr] je(c): the references solve
+// model(r_k) = c_k (compensatePathWithEffects), and the expected path is p_k + model(r_k) - model(c_k)
+// (the same as above for the declared model, which is linear in c), so the residual the model with
+// the effects does not explain stays. The motion of every point (backlash direction, servo-lag
+// tangent) is the nominal path's.
 #include <cstddef>
 #include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "core/kinematics/axis_effects.h"
 #include "core/kinematics/cartesian_model.h"
 #include "core/kinematics/identification.h"
 #include "core/kinematics/measured_path.h"
@@ -70,12 +78,16 @@ struct CompensationPreview {
   double maxBeforeMm = 0.0;                 ///< measured path
   double maxModelMm = 0.0;
   double maxExpectedMm = 0.0;
+  double rmsBeforeMm = 0.0;    ///< RMS of |p_k - c_k| (measured path against the nominal points)
+  double rmsExpectedMm = 0.0;  ///< RMS of |expected_k - c_k|: the identification's residual rmse
   std::optional<double> maxSimulatedMm;
   double largestCorrectionMm = 0.0;  ///< max |r_k - c_k|
 };
 
+/// `effects`: applied effects the model includes (nullptr or empty: the declared model).
 CompensationPreview previewCompensation(const MeasuredPath& path, const CircularAnalysis& analysis,
                                         const ActuatorErrors2& identified,
-                                        const std::optional<ActuatorErrors2>& trueMachine = std::nullopt);
+                                        const std::optional<ActuatorErrors2>& trueMachine = std::nullopt,
+                                        const AxisEffects* effects = nullptr);
 
 }  // namespace metrofit

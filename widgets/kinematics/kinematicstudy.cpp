@@ -88,7 +88,13 @@ KinematicStudyData loadKinematicStudy(const Project& project,
   d.path = resolve(*ref);
   d.measured = readMeasuredPath(d.path);
   d.analysis = analyseCircularTest(d.measured);
-  d.identification = identifyActuatorErrors(d.measured);
+  d.applied = projectAxisEffects(project, ref->id);
+  if (d.applied.empty()) {
+    d.identification = identifyActuatorErrors(d.measured);
+  } else {
+    d.declaredRmseMm = identifyActuatorErrors(d.measured).rmseMm;
+    d.identification = identifyActuatorErrors(withEffectiveJoints(d.measured, d.applied));
+  }
   if (d.identification.run.termination == Termination::Failed) {
     throw std::runtime_error("identification failed on " + d.path + ": " + d.identification.run.message);
   }
@@ -118,7 +124,7 @@ KinematicStudyData loadKinematicStudy(const Project& project,
 
 CompensationPreview compensateStudy(const KinematicStudyData& study) {
   return previewCompensation(study.measured, study.analysis, study.identification.errors,
-                             study.settings.simulatedMachine);
+                             study.settings.simulatedMachine, &study.applied);
 }
 
 }  // namespace metrofit

@@ -9,11 +9,18 @@
 //           "nominal": V, "coverage": k}
 //        the feature series charted on the SPC view (a CSV dataset, rows in production order)
 // A wrong type or value is a ValidationError naming studies/kinematics/<key>.
+//
+// Applied effects: the effects added with Apply on the diagnosis page
+// (studies.diagnosis.kinematic.applied, core/kinematics/axis_effects.h) belong to the machine model of
+// the circular test the diagnosis ran on (studies.diagnosis.kinematic.dataset, where they were
+// estimated): for that test the identification, the compensation and its exports include them
+// (undoing the Apply gives the declared model again); other tests keep the declared model.
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/kinematics/axis_effects.h"
 #include "core/kinematics/identification.h"
 #include "core/kinematics/measured_path.h"
 #include "core/project/project.h"
@@ -52,7 +59,9 @@ struct KinematicStudyData {
   std::string path;    ///< its resolved file
   MeasuredPath measured;
   CircularAnalysis analysis;
-  IdentifyResult identification;
+  IdentifyResult identification;         ///< with the applied effects, when any
+  AxisEffects applied;                   ///< the applied effects the model includes (empty: none)
+  std::optional<double> declaredRmseMm;  ///< rmse of the declared model alone, when effects are applied
   std::optional<KinematicSpcSeries> spc;
   std::string spcError;  ///< why the SPC series could not be charted (empty when it was)
 };

@@ -88,6 +88,18 @@ void writeCircularTest(ReportPainter& out, const KinematicStudyData& s) {
           .arg(QString::fromLatin1(toString(s.identification.run.termination)))
           .arg(s.identification.run.iterations));
   writeErrors(out, s);
+  if (!s.applied.empty()) {
+    QString text = ReportText::tr(
+                       "Includes applied effects: %1 (added with Apply on the diagnosis page). The errors "
+                       "above were identified with them and the compensated references include their "
+                       "corrections.")
+                       .arg(QString::fromStdString(s.applied.text())
+                                .replace(QStringLiteral(" um"), QStringLiteral(" µm")));
+    if (s.declaredRmseMm)
+      text += QLatin1Char(' ') +
+              ReportText::tr("RMS residual of the declared model alone: %1 µm.").arg(um(*s.declaredRmseMm));
+    out.paragraph(text);
+  }
 
   const CompensationPreview c = compensateStudy(s);
   PathPlotData pd;

@@ -123,7 +123,11 @@ void writeSetupSection(ReportPainter& out, const ReportContext& context) {
     out.paragraph(ReportText::tr("The project has no CMM report for this model: nothing to correct."));
     return;
   }
-  const setup::Measurements measurements = setup::readMeasurements({reportSet->path.toStdString()}, model);
+  setup::Measurements measurements = setup::readMeasurements({reportSet->path.toStdString()}, model);
+  // The effects added with the diagnosis page's Apply: the deviations become the next part's prediction.
+  diagnose::SetupPrediction prediction, declared;
+  const std::vector<diagnose::AppliedSetupEffect> applied =
+      applyStudyEffects(*context.project, {}, files.reportId, model, measurements, &prediction, &declared);
   const setup::SetupInstance instance(model, measurements);
 
   // ---- report data ----
@@ -147,6 +151,21 @@ void writeSetupSection(ReportPainter& out, const ReportContext& context) {
            .arg(outBefore)
            .arg(instance.dimensions())},
   };
+  if (!applied.empty()) {
+    data.rows[2][1] = ReportText::tr("%1 (deviation of a dimension: predicted for part %2)")
+                          .arg(measurements.rows.size())
+                          .arg(prediction.nextPart);
+    data.rows.push_back(
+        {ReportText::tr("applied effects"),
+         ReportText::tr("%1 (diagnosis, Apply)").arg(QString::fromStdString(diagnose::describe(applied)))});
+    data.rows.push_back(
+        {ReportText::tr("model residual"),
+         ReportText::tr("rms %1 mm (declared model %2 mm)").arg(mm(prediction.rmseMm), mm(declared.rmseMm))});
+    if (prediction.nextPartRmseMm && declared.nextPartRmseMm)
+      data.rows.push_back({ReportText::tr("last part predicted"),
+                           ReportText::tr("rms %1 mm from the other parts (declared model %2 mm)")
+                               .arg(mm(*prediction.nextPartRmseMm), mm(*declared.nextPartRmseMm))});
+  }
   out.table(data);
 
   // ---- settings and runs ----

@@ -21,6 +21,7 @@
 #include <memory>
 #include <mutex>
 
+#include "core/diagnose/thermal_applied.h"
 #include "core/thermal/hysteresis.h"
 #include "widgets/charts/thermalcharts.h"
 #include "widgets/charts/thermalcomparison.h"
@@ -73,7 +74,7 @@ std::uint64_t contentHash(const ThermalLog& log, const std::string& extra) {
 std::string settingsText(const ThermalModelSettings& s) {
   std::string t = s.target + "|" + std::to_string(s.trainFraction) + "|" + std::to_string(s.seed);
   for (const auto& in : s.inputs) t += "," + in;
-  return t;
+  return t + "|" + s.applied.dump();
 }
 
 /// Hysteresis and the three models for one log (see the header comment for the cache).
@@ -294,6 +295,44 @@ QString unitOf(const ThermalLog& log, const std::string& column) {
   return i >= 0 ? displayUnit(log.channels[static_cast<std::size_t>(i)].unit) : QString();
 }
 
+/// One sentence on the applied effects: which models keep them, with the held-out RMSE of both
+/// variants (each model keeps the lower one, widgets/charts/thermalcomparison.h).
+QString appliedChoice(const ThermalLog& log, const ThermalComparison& c) {
+  double scale = 0.0;
+  for (double v : c.series.target) scale = std::max(scale, std::abs(v));
+  const int dec = scale >= 100.0 ? 1 : (scale >= 1.0 ? 2 : 3);
+  const QString unit = unitOf(log, c.settings.target);
+  const QString u = unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
+  QStringList used, usedChange, notUsed, notUsedChange;
+  bool allRise = true;
+  for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+    const QString change =
+        ReportText::tr("%1 → %2%3")
+            .arg(metric(c.declaredHeldoutRmse[i], dec), metric(c.appliedHeldoutRmse[i], dec), u);
+    if (c.usesApplied[i]) {
+      used << thermalModelName(kThermalModelOrder[i]);
+      usedChange << change;
+    } else {
+      notUsed << thermalModelName(kThermalModelOrder[i]);
+      notUsedChange << change;
+      allRise = allRise && c.appliedHeldoutRmse[i] > c.declaredHeldoutRmse[i];
+    }
+  }
+  const QString sep = QStringLiteral(", ");
+  QStringList parts;
+  if (!used.isEmpty())
+    parts << ReportText::tr("used by %1 (held-out error %2)").arg(used.join(sep), usedChange.join(sep));
+  if (!notUsed.isEmpty()) {
+    parts << (allRise ? ReportText::tr("not used by %1 (held-out error would rise: %2)")
+                      : ReportText::tr("not used by %1 (held-out error would not fall: %2)"))
+                 .arg(notUsed.join(sep), notUsedChange.join(sep));
+  }
+  return ReportText::tr(
+             "Applied effects %1 (added with Apply on the diagnosis page; each model is fitted with and "
+             "without them and keeps the lower held-out error): %2.")
+      .arg(QString::fromStdString(c.appliedText), parts.join(QStringLiteral("; ")));
+}
+
 void writeHysteresis(ReportPainter& out, const ThermalResults& r) {
   out.subheading(ReportText::tr("Hysteresis"), out.mm(60.0));
   if (!r.hysteresisError.isEmpty()) {
@@ -371,6 +410,8 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
                 .arg(r.stride)
                 .arg(r.fitted.rows());
   }
+  if (r.comparison && !r.comparison->appliedText.empty())
+    text += QLatin1Char(' ') + appliedChoice(log, *r.comparison);
   out.paragraph(text);
   if (!r.comparison) {
     out.paragraph(ReportText::tr("The models could not be fitted: %1").arg(r.modelError));
@@ -498,7 +539,8 @@ void writeThermalSection(ReportPainter& out, const ReportContext& context) {
     first = false;
     writeThermalLog(out, *dataset);
     const ThermalLog& log = *dataset->thermal;
-    const ThermalModelSettings settings = defaultThermalModelSettings(log, thermalStudy, dataset->ref.id);
+    ThermalModelSettings settings = defaultThermalModelSettings(log, thermalStudy, dataset->ref.id);
+    settings.applied = diagnose::projectThermalApplied(*context.project, dataset->ref.id);
     const std::shared_ptr<const ThermalResults> results = thermalResults(log, settings);
     writeHysteresis(out, *results);
     writeModels(out, log, *results);

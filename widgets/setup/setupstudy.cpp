@@ -56,6 +56,20 @@ SetupStudyFiles setupStudyFiles(const Project& project, const std::string& proje
   return files;
 }
 
+std::vector<diagnose::AppliedSetupEffect> applyStudyEffects(const Project& project, const std::string& source,
+                                                            const std::string& reportId,
+                                                            const setup::Model& model,
+                                                            setup::Measurements& measurements,
+                                                            diagnose::SetupPrediction* prediction,
+                                                            diagnose::SetupPrediction* declared) {
+  const std::vector<diagnose::AppliedSetupEffect> effects = diagnose::parseAppliedSetupEffects(
+      diagnose::projectAppliedEffects(project, study::kSetup, reportId, source), model, source);
+  if (declared != nullptr) *declared = diagnose::predictSetupDeviations(model, measurements, {});
+  const diagnose::SetupPrediction p = diagnose::applySetupEffects(model, measurements, effects);
+  if (prediction != nullptr) *prediction = p;
+  return effects;
+}
+
 std::vector<double> deviationsFor(const setup::Model& model, const setup::Model& fileModel,
                                   const setup::Measurements& measurements) {
   std::unordered_map<std::string, std::size_t> byId;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/common/run.h"
+#include "core/diagnose/applied_setup_matching.h"
 #include "core/setup/methods.h"
 #include "core/setup/model.h"
 #include "core/setup/objective.h"
@@ -33,6 +34,22 @@ struct SetupStudyFiles {
 
 /// The study's datasets (see above); `projectPath` resolves relative dataset paths.
 SetupStudyFiles setupStudyFiles(const Project& project, const std::string& projectPath);
+
+/// The effects added to the setup model with the diagnosis page's Apply
+/// (studies.diagnosis.setup.applied, core/diagnose/applied_setup_matching.h), read against the
+/// model the measurements belong to, when the diagnosis ran on the report `reportId` the
+/// measurements were read from (studies.diagnosis.setup.dataset; another report keeps the
+/// declared model). With effects, measurements.deviationMm becomes the predicted
+/// deviation of the next part (tool wear x part number, drift x time), so the runs, the corrections
+/// and their exports include them; without, nothing changes. `prediction` (optional) receives the
+/// figures of the model with the effects, `declared` those of the declared model (without them).
+/// ValidationError naming `source` and the field (studies.diagnosis.setup.applied[i].name, ...).
+std::vector<diagnose::AppliedSetupEffect> applyStudyEffects(const Project& project, const std::string& source,
+                                                            const std::string& reportId,
+                                                            const setup::Model& model,
+                                                            setup::Measurements& measurements,
+                                                            diagnose::SetupPrediction* prediction = nullptr,
+                                                            diagnose::SetupPrediction* declared = nullptr);
 
 /// Deviations of the dimensions of `model` (by id) from measurements read against `fileModel`.
 /// ValidationError naming the dimension when the report has no rows for one.

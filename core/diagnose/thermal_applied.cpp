@@ -1,0 +1,187 @@
+#include "core/diagnose/thermal_applied.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/common/error.h"
+#include "core/io/csv.h"
+#include "core/project/project.h"
+#include "core/sim/effects_thermal.h"
+
+namespace metrofit::diagnose {
+namespace {
+
+std::string entryField(const std::string& field, std::size_t i, const std::string& key = {}) {
+  std::string f = field + "[" + std::to_string(i) + "]";
+  return key.empty() ? f : f + "." + key;
+}
+
+std::string listOf(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s.empty() ? "none" : s;
+}
+
+}  // namespace
+
+std::vector<ThermalRegressor> thermalRegressors(const ThermalLog& log, const std::vector<std::string>& inputs,
+                                                const ThermalEffectSet& effects) {
+  std::vector<ThermalRegressor> out;
+  const std::size_t n = log.rows();
+  for (const auto& in : inputs) {
+    const ThermalChannel& c = log.channel(in);
+    const auto it = effects.lagCol.find(in);
+    const double tau = it != effects.lagCol.end() ? it->second : effects.lagAll;
+    ThermalRegressor r;
+    r.name = in;
+    r.unit = c.unit;
+    if (tau > 0.0) {
+      r.channel = "lag:" + in;
+      r.lagMin = tau;
+      r.values = firstOrderLag(c.values, log.timeMin, tau);
+    } else {
+      r.channel = in;
+      r.values = c.values;
+    }
+    out.push_back(std::move(r));
+  }
+  for (const auto& e : effects.extra) {
+    const ThermalChannel& c = log.channel(e);
+    ThermalRegressor r;
+    r.name = r.channel = "input:" + e;
+    r.unit = c.unit;
+    r.values.resize(n);
+    for (std::size_t k = 0; k < n; ++k) r.values[k] = c.values[k] - c.values[0];
+    out.push_back(std::move(r));
+  }
+  if (effects.drift) {
+    ThermalRegressor r;
+    r.name = r.channel = "drift";
+    r.unit = "min";
+    r.values.resize(n);
+    for (std::size_t k = 0; k < n; ++k) r.values[k] = log.timeMin[k] - log.timeMin[0];
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+std::string AppliedThermalEffects::text() const {
+  std::string s;
+  for (const auto& l : labels) s += (s.empty() ? "" : ", ") + l;
+  return s;
+}
+
+AppliedThermalEffects appliedThermalEffects(const nlohmann::json& applied, const ThermalLog& log,
+                                            const std::string& target, const std::vector<std::string>& inputs,
+                                            const std::string& field) {
+  AppliedThermalEffects out;
+  if (applied.is_null()) return out;
+  if (!applied.is_array())
+    throw ValidationError(ErrorContext{{}, 0, 0, field}, "must be a list of {\"name\", \"parameters\"}");
+  std::vector<std::string> seen;
+  for (std::size_t i = 0; i < applied.size(); ++i) {
+    const nlohmann::json& e = applied[i];
+    if (!e.is_object())
+      throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i)},
+                            "must be an object {\"name\", \"parameters\"}");
+    const auto nameIt = e.find("name");
+    if (nameIt == e.end() || !nameIt->is_string())
+      throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i, "name")},
+                            "must be the effect's name (lag, lag:<column>, input:<column>, drift)");
+    const std::string name = nameIt->get<std::string>();
+    const ErrorContext where{{}, 0, 0, entryField(field, i, "name")};
+    if (std::find(seen.begin(), seen.end(), name) != seen.end())
+      throw ValidationError(where, "the effect '" + name + "' is applied twice");
+    seen.push_back(name);
+    const nlohmann::json params =
+        e.contains("parameters") && e["parameters"].is_object() ? e["parameters"] : nlohmann::json::object();
+    auto column = [&](const std::string& col) {
+      if (col.empty()) throw ValidationError(where, "'" + name + "' names no column");
+      if (log.indexOf(col) < 0)
+        throw ValidationError(where,
+                              "'" + name + "': the log " + log.source + " has no column '" + col + "'");
+    };
+    if (name == "lag" || name.starts_with("lag:")) {
+      const auto tau = params.find("tau_min");
+      if (tau == params.end() || !tau->is_number() || !(tau->get<double>() > 0.0) ||
+          !std::isfinite(tau->get<double>()))
+        throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i, "parameters.tau_min")},
+                              "'" + name + "' needs a positive lag time constant tau_min (min)");
+      const double t = tau->get<double>();
+      if (name == "lag") {
+        if (inputs.empty()) throw ValidationError(where, "'lag' needs at least one input of the model");
+        out.effects.lagAll = t;
+      } else {
+        const std::string col = name.substr(4);
+        column(col);
+        if (std::find(inputs.begin(), inputs.end(), col) == inputs.end())
+          throw ValidationError(where, "'" + name + "': '" + col +
+                                           "' is not an input of the model (inputs: " + listOf(inputs) + ")");
+        out.effects.lagCol[col] = t;
+      }
+      out.labels.push_back(name + " (" + CsvWriter::formatNumber(t, 3) + " min)");
+    } else if (name.starts_with("input:")) {
+      const std::string col = name.substr(6);
+      column(col);
+      if (col == target) throw ValidationError(where, "'" + name + "' names the target column");
+      if (std::find(inputs.begin(), inputs.end(), col) == inputs.end()) out.effects.extra.push_back(col);
+      out.labels.push_back(name);
+    } else if (name == "drift") {
+      out.effects.drift = true;
+      out.labels.push_back(name);
+    } else {
+      throw ValidationError(
+          where, "unknown thermal effect '" + name + "' (known: lag, lag:<column>, input:<column>, drift)");
+    }
+  }
+  return out;
+}
+
+ThermalLogWithEffects withThermalEffects(const ThermalLog& log, const std::vector<std::string>& inputs,
+                                         const ThermalEffectSet& effects) {
+  ThermalLogWithEffects out;
+  out.log = log;
+  for (ThermalRegressor& r : thermalRegressors(log, inputs, effects)) {
+    out.inputs.push_back(r.channel);
+    if (log.indexOf(r.channel) >= 0) continue;  // a declared input without a lag: the log's own column
+    out.log.channels.push_back(ThermalChannel{r.channel, r.unit, std::move(r.values)});
+  }
+  return out;
+}
+
+nlohmann::json projectThermalApplied(const Project& project, const std::string& datasetId) {
+  const nlohmann::json none = nlohmann::json::array();
+  const auto diag = project.studies.find(study::kDiagnosis);
+  if (diag == project.studies.end() || !diag->is_object()) return none;
+  const auto block = diag->find("thermal");
+  if (block == diag->end() || !block->is_object()) return none;
+  const auto applied = block->find("applied");
+  if (applied == block->end() || applied->is_null()) return none;
+  return block->value("dataset", nlohmann::json()) == nlohmann::json(datasetId) ? *applied : none;
+}
+
+bool keepsAppliedEffects(double declaredRmse, double withEffectsRmse) {
+  if (!std::isfinite(withEffectsRmse)) return false;
+  return !std::isfinite(declaredRmse) || withEffectsRmse < declaredRmse;
+}
+
+ThermalVariantFit fitDeclaredAndWithEffects(const thermal::ThermalSeries& declared,
+                                            const thermal::ThermalSeries& withEffects, double trainFraction,
+                                            const thermal::ThermalFitOptions& options, Observer* observer) {
+  ThermalVariantFit v;
+  v.declared = thermal::fitAndEvaluate(declared, trainFraction, options, observer);
+  if (v.declared.training.run.termination == Termination::Cancelled) {
+    v.cancelled = true;
+    return v;
+  }
+  v.withEffects = thermal::fitAndEvaluate(withEffects, trainFraction, options, observer);
+  if (v.withEffects.training.run.termination == Termination::Cancelled) {
+    v.cancelled = true;
+    v.usesEffects = true;  // the cancelled run is the one reported
+    return v;
+  }
+  v.usesEffects = keepsAppliedEffects(v.declared.heldout.rmse, v.withEffects.heldout.rmse);
+  return v;
+}
+
+}  // namespace metrofit::diagnose

@@ -1,0 +1,349 @@
+// The effects accepted by the closed loop and added with Apply (studies.diagnosis.<domain>.applied)
+// in the setup-correction and matching studies (core/diagnose/applied_setup_matching.h): on the
+// demo's data with one undeclared effect each, the study's error without them (E0) and with them
+// (E1, near the diagnosis's "after" figure), the corrections / posture they change, and the
+// field-naming errors of bad entries.
+#include "core/diagnose/applied_setup_matching.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/common/error.h"
+#include "core/diagnose/matching_diagnosis.h"
+#include "core/diagnose/setup_diagnosis.h"
+#include "core/matching/hole_table.h"
+#include "core/matching/study.h"
+#include "core/project/project.h"
+#include "core/setup/exact.h"
+#include "core/setup/objective.h"
+#include "testsupport.h"
+
+namespace metrofit::diagnose {
+namespace {
+
+setup::Model paperModel() {
+  return setup::readModel((test::sourceDir() / "resources/demo/setup/paper_example.json").string());
+}
+
+setup::Measurements wearReport(const setup::Model& model) {
+  return setup::readMeasurements(
+      {(test::sourceDir() / "resources/demo/data/diagnose_setup_report.csv").string()}, model);
+}
+
+ProbePointSet warmProbe() {
+  return readProbePointsAnyFormat((test::sourceDir() / "resources/demo/data/diagnose_probe.csv").string());
+}
+
+/// The accepted effects as the diagnosis page's Apply stores them.
+nlohmann::json appliedOf(const Diagnosis& d) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Candidate* c : d.accepted()) {
+    nlohmann::json params = nlohmann::json::object();
+    for (const Parameter& p : c->parameters)
+      if (const double* v = std::get_if<double>(&p.value)) params[p.name] = *v;
+    out.push_back({{"name", c->name}, {"parameters", params}});
+  }
+  return out;
+}
+
+/// The field of the ValidationError `f` throws ("" when it throws none or another type).
+template <class F>
+std::string errorField(F&& f) {
+  try {
+    f();
+  } catch (const ValidationError& e) {
+    return e.context().field;
+  } catch (...) {
+    return "(other exception)";
+  }
+  return "(no exception)";
+}
+
+TEST(AppliedSetupEffects, ToolWearMakesTheStudyPredictTheNextPartLikeTheDiagnosis) {
+  const setup::Model model = paperModel();
+  const setup::Measurements m = wearReport(model);
+  const Diagnosis d = diagnoseSetup(model, m);
+  ASSERT_EQ(d.accepted().size(), 1u);
+  const nlohmann::json applied = appliedOf(d);
+  const std::vector<AppliedSetupEffect> effects = parseAppliedSetupEffects(applied, model);
+  ASSERT_EQ(effects.size(), 1u);
+  EXPECT_EQ(effects[0].name, "tool_wear:T23");
+  EXPECT_TRUE(effects[0].perPart);
+  EXPECT_EQ(model.setup[effects[0].datum].id, "T23");
+  EXPECT_NEAR(effects[0].rate, 0.0021, 0.0001);
+  EXPECT_EQ(describe(effects), "tool_wear:T23 (0.002098 mm/part)");
+
+  // Diagnosis: 0.00836 mm before, 0.00569 mm after.
+  EXPECT_NEAR(d.baseline.rmse, 0.00836, 0.0002);
+  EXPECT_NEAR(d.final.rmse, 0.00569, 0.0002);
+  const SetupPrediction e0 = predictSetupDeviations(model, m, {});
+  const SetupPrediction e1 = predictSetupDeviations(model, m, effects);
+  EXPECT_NEAR(e0.rmseMm, 0.00829, 0.0002);  // the declared model: the mean deviation per dimension
+  EXPECT_NEAR(e1.rmseMm, 0.00559, 0.0002);
+  EXPECT_LT(e1.rmseMm, 0.75 * e0.rmseMm);
+  EXPECT_NEAR(e1.rmseMm, d.final.rmse, 0.0005);
+  EXPECT_NEAR(e0.rmseMm, d.baseline.rmse, 0.0005);
+  EXPECT_NEAR(e0.maxAbsMm, 0.0328, 0.001);
+  EXPECT_NEAR(e1.maxAbsMm, 0.0120, 0.001);
+  // The last part predicted from the other eleven: the worn tool's error is forecast.
+  ASSERT_TRUE(e0.nextPartRmseMm && e1.nextPartRmseMm);
+  EXPECT_NEAR(*e0.nextPartRmseMm, 0.0116, 0.0005);
+  EXPECT_NEAR(*e1.nextPartRmseMm, 0.0051, 0.0005);
+  EXPECT_LT(*e1.nextPartRmseMm, 0.5 * *e0.nextPartRmseMm);
+  EXPECT_DOUBLE_EQ(e1.nextPart, 13.0);
+  EXPECT_EQ(e1.parts, 12u);
+
+  // From the project: the study of the report the diagnosis ran on includes them (E1); a study of
+  // another report keeps the declared model (E0), the effects were estimated on this one.
+  Project project;
+  project.studies["diagnosis"]["setup"] = {{"dataset", "diagnose_setup_report"}, {"applied", applied}};
+  auto studyRmse = [&](const std::string& report) {
+    return predictSetupDeviations(
+               model, m, parseAppliedSetupEffects(projectAppliedEffects(project, "setup", report), model))
+        .rmseMm;
+  };
+  EXPECT_DOUBLE_EQ(studyRmse("diagnose_setup_report"), e1.rmseMm);
+  EXPECT_DOUBLE_EQ(studyRmse("setup_report"), e0.rmseMm);
+
+  // Without effects the deviations are the report's means (the declared study).
+  for (std::size_t q = 0; q < m.deviationMm.size(); ++q)
+    EXPECT_NEAR(e0.deviationMm[q], m.deviationMm[q], 1e-12);
+  // With them: the mean plus G[q][T23] * rate * (13 - mean part number 6.5).
+  const Eigen::MatrixXd G = setup::gainMatrix(model);
+  const auto t23 = static_cast<Eigen::Index>(effects[0].datum);
+  for (std::size_t q = 0; q < m.deviationMm.size(); ++q)
+    EXPECT_NEAR(e1.deviationMm[q] - m.deviationMm[q],
+                G(static_cast<Eigen::Index>(q), t23) * effects[0].rate * 6.5, 1e-9)
+        << model.dimensions[q].id;
+
+  // The exact corrections for the next part include the predicted wear: T23 (and W8, which feeds the
+  // same features) move from 0.008 to 0.001 mm. The paper's objective (the smallest budget, then the
+  // least norm) is set by dimensions T23 does not reach, so f1 stays 0.0795 mm: the worn tool's
+  // dimensions stay inside their zones for the next part with either correction.
+  setup::Measurements withWear = m;
+  applySetupEffects(model, withWear, effects);
+  const setup::SetupInstance next(model, withWear);
+  const setup::ExactResult x0 = setup::solveExact(setup::SetupInstance(model, m));
+  const setup::ExactResult x1 = setup::solveExact(next);
+  EXPECT_NEAR(x0.x[effects[0].datum], 0.008, 1e-9);
+  EXPECT_NEAR(x1.x[effects[0].datum], 0.001, 1e-9);
+  EXPECT_NEAR(x1.score.f1, 0.0795, 0.0005);
+  EXPECT_NEAR(next.f1(x1.x), next.f1(x0.x), 1e-9);
+}
+
+TEST(AppliedSetupEffects, DriftUsesTheTimeOfTheNextPart) {
+  const setup::Model model = paperModel();
+  const setup::Measurements m = wearReport(model);
+  const nlohmann::json applied = {{{"name", "drift:W1"}, {"parameters", {{"mm_per_min", 0.0001}}}}};
+  const std::vector<AppliedSetupEffect> effects = parseAppliedSetupEffects(applied, model);
+  ASSERT_EQ(effects.size(), 1u);
+  EXPECT_FALSE(effects[0].perPart);
+  const SetupPrediction p = predictSetupDeviations(model, m, effects);
+  // 12 parts about 12 min apart: the next one comes about 12 min after the last.
+  EXPECT_NEAR(p.nextTimeMin, 167.7, 0.1);
+  EXPECT_EQ(describe(effects), "drift:W1 (0.0001 mm/min)");
+}
+
+TEST(AppliedSetupEffects, ProjectWithoutAppliedEffectsGivesTheDeclaredModel) {
+  Project project;
+  EXPECT_TRUE(projectAppliedEffects(project, "setup", "d").empty());
+  EXPECT_EQ(appliedEffectsElsewhere(project, "setup", "d"), "");
+  project.studies["diagnosis"]["setup"] = {{"model", "m"}, {"dataset", "d"}};
+  EXPECT_TRUE(projectAppliedEffects(project, "setup", "d").empty());
+  EXPECT_EQ(appliedEffectsElsewhere(project, "setup", "other"), "");  // nothing applied
+  project.studies["diagnosis"]["setup"]["applied"] = {
+      {{"name", "tool_wear:T23"}, {"parameters", {{"mm_per_part", 0.002}}}}};
+  EXPECT_EQ(projectAppliedEffects(project, "setup", "d").size(), 1u);
+  EXPECT_EQ(appliedEffectsElsewhere(project, "setup", "d"), "");
+  // Only the dataset the diagnosis ran on: another one keeps the declared model.
+  EXPECT_TRUE(projectAppliedEffects(project, "setup", "other").empty());
+  EXPECT_TRUE(projectAppliedEffects(project, "setup", "").empty());
+  EXPECT_EQ(appliedEffectsElsewhere(project, "setup", "other"), "d");
+  project.studies["diagnosis"]["setup"].erase("dataset");  // no dataset: applies to none
+  EXPECT_TRUE(projectAppliedEffects(project, "setup", "d").empty());
+  EXPECT_TRUE(projectAppliedEffects(project, "setup", "").empty());
+  project.studies["diagnosis"]["setup"]["dataset"] = "d";
+  project.studies["diagnosis"]["setup"]["applied"] = "tool_wear:T23";
+  EXPECT_EQ(errorField([&] { projectAppliedEffects(project, "setup", "d", "p.metrofit"); }),
+            "studies.diagnosis.setup.applied");
+  EXPECT_EQ(errorField([&] { projectAppliedEffects(project, "setup", "other", "p.metrofit"); }),
+            "studies.diagnosis.setup.applied");
+  EXPECT_EQ(appliedField("matching"), "studies.diagnosis.matching.applied");
+}
+
+TEST(AppliedSetupEffects, BadEntriesNameTheField) {
+  const setup::Model model = paperModel();
+  auto field = [&](const nlohmann::json& applied) {
+    return errorField([&] { parseAppliedSetupEffects(applied, model, "demo.metrofit"); });
+  };
+  const nlohmann::json good = {{"name", "tool_wear:T23"}, {"parameters", {{"mm_per_part", 0.002}}}};
+  EXPECT_EQ(field({good, {{"name", "spin:T23"}, {"parameters", {{"mm_per_part", 0.002}}}}}),
+            "studies.diagnosis.setup.applied[1].name");
+  EXPECT_EQ(field({{{"name", "tool_wear:T99"}, {"parameters", {{"mm_per_part", 0.002}}}}}),
+            "studies.diagnosis.setup.applied[0].name");
+  EXPECT_EQ(field({{{"name", "tool_wear:W1"}, {"parameters", {{"mm_per_part", 0.002}}}}}),
+            "studies.diagnosis.setup.applied[0].name");  // W1 is a work offset, not a tool
+  EXPECT_EQ(field({{{"name", "drift:"}, {"parameters", {{"mm_per_min", 0.002}}}}}),
+            "studies.diagnosis.setup.applied[0].name");
+  EXPECT_EQ(field({{{"parameters", {{"mm_per_part", 0.002}}}}}), "studies.diagnosis.setup.applied[0].name");
+  EXPECT_EQ(field({good, good}), "studies.diagnosis.setup.applied[1].name");
+  EXPECT_EQ(field({{{"name", "tool_wear:T23"}, {"parameters", {{"mm_per_part", "fast"}}}}}),
+            "studies.diagnosis.setup.applied[0].parameters.mm_per_part");
+  EXPECT_EQ(field({{{"name", "drift:W1"}, {"parameters", {{"mm_per_part", 0.002}}}}}),
+            "studies.diagnosis.setup.applied[0].parameters.mm_per_min");
+  EXPECT_EQ(field({{{"name", "drift:W1"}}}), "studies.diagnosis.setup.applied[0].parameters");
+  EXPECT_EQ(field({42}), "studies.diagnosis.setup.applied[0]");
+  EXPECT_EQ(field(nlohmann::json::object()), "studies.diagnosis.setup.applied");
+  // The message names the file and the field.
+  try {
+    parseAppliedSetupEffects({{{"name", "tool_wear:T99"}, {"parameters", {{"mm_per_part", 0.002}}}}}, model,
+                             "demo.metrofit");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("demo.metrofit"), std::string::npos) << what;
+    EXPECT_NE(what.find("studies.diagnosis.setup.applied[0].name"), std::string::npos) << what;
+    EXPECT_NE(what.find("T99"), std::string::npos) << what;
+  }
+}
+
+matching::MatchingStudyOptions fastStudy() {
+  matching::MatchingStudyOptions o;
+  o.toleranceMm = 0.035;
+  o.primary = matching::MatchMethod::ClosedForm;
+  o.methods = {matching::MatchMethod::ClosedForm};
+  o.remeasure = false;
+  return o;
+}
+
+double normalRms(const matching::ToleranceEvaluation& e) {
+  double ss = 0.0;
+  for (double v : e.deviations) ss += v * v;
+  return std::sqrt(ss / static_cast<double>(e.deviations.size()));
+}
+
+TEST(AppliedMatchingEffects, ScaleInTheModelDropsTheResidualLikeTheDiagnosis) {
+  const ProbePointSet set = warmProbe();
+  MatchingDiagnosisOptions dopt;
+  dopt.toleranceMm = 0.035;
+  const Diagnosis d = diagnoseMatching(set, dopt);
+  ASSERT_EQ(d.accepted().size(), 1u);
+  EXPECT_NEAR(d.baseline.rmse, 0.00706, 0.0002);
+  EXPECT_NEAR(d.final.rmse, 0.00522, 0.0002);
+  const AppliedMatchingEffects applied = parseAppliedMatchingEffects(appliedOf(d));
+  ASSERT_EQ(applied.names, std::vector<std::string>{"scale"});
+  EXPECT_NEAR(applied.effects.scalePpm, 94.0, 1.0);  // simulated 92.4 ppm
+  EXPECT_EQ(applied.describe(), "scale (+93.99 ppm)");
+
+  matching::MatchingStudyOptions declared = fastStudy();
+  matching::MatchingStudyOptions withScale = fastStudy();
+  withScale.applied = applied;
+  const matching::MatchingStudyResult r0 = matching::runMatchingStudy(set, declared);
+  const matching::MatchingStudyResult r1 = matching::runMatchingStudy(set, withScale);
+  const double e0 = normalRms(r0.primaryRun().after), e1 = normalRms(r1.primaryRun().after);
+  EXPECT_NEAR(e0, 0.00731, 0.0002);  // deviation along the normal, rms
+  EXPECT_NEAR(e1, 0.00533, 0.0002);
+  EXPECT_LT(e1, 0.8 * e0);
+  EXPECT_NEAR(e1, d.final.rmse, 0.0005);
+  EXPECT_NEAR(e0, d.baseline.rmse, 0.0005);
+  EXPECT_NEAR(r0.primaryRun().after.overall.rmseMm, 0.01026, 0.0003);  // residual distance
+  EXPECT_NEAR(r1.primaryRun().after.overall.rmseMm, 0.00542, 0.0003);
+  // The machine adjustment is that of the model's posture.
+  const machine::Adjustment a1 = machine::adjustmentFor(withScale.machine, r1.primaryRun().pose.rotation,
+                                                        r1.primaryRun().pose.translation);
+  EXPECT_LT((r1.adjustment.linearMm - a1.linearMm).norm(), 1e-12);
+  EXPECT_DOUBLE_EQ(r1.adjustment.rotaryDeg[0], a1.rotaryDeg[0]);
+  EXPECT_DOUBLE_EQ(r1.adjustment.rotaryDeg[1], a1.rotaryDeg[1]);
+
+  // From the project: the study of the probe points the diagnosis ran on includes the scale (E1);
+  // a study of other points keeps the declared rigid model (E0).
+  Project project;
+  project.datasets = {{"diagnose_probe", dataset_kind::kProbePoints, "diagnose_probe.csv", "", ""},
+                      {"probe_s_piece", dataset_kind::kProbePoints, "probe_s_piece.csv", "", ""}};
+  project.studies["diagnosis"]["matching"] = {{"dataset", "diagnose_probe"}, {"applied", appliedOf(d)}};
+  auto studyRms = [&](const std::string& dataset) {
+    project.studies["matching"]["dataset"] = dataset;
+    matching::MatchingStudyOptions o = fastStudy();
+    o.applied = matching::matchingStudySettings(project).options.applied;
+    return normalRms(matching::runMatchingStudy(set, o).primaryRun().after);
+  };
+  EXPECT_NEAR(studyRms("diagnose_probe"), e1, 1e-12);
+  EXPECT_NEAR(studyRms("probe_s_piece"), e0, 1e-12);
+
+  // The model's points: q + 1e-6 ppm (q - centroid); the measured points are untouched.
+  const ProbePointSet model = matching::studyModelSet(set, withScale);
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const ProbePoint& p : set.points) c += p.nominal;
+  c /= static_cast<double>(set.points.size());
+  for (std::size_t i = 0; i < set.points.size(); ++i) {
+    const Eigen::Vector3d expected =
+        set.points[i].nominal + 1e-6 * applied.effects.scalePpm * (set.points[i].nominal - c);
+    EXPECT_LT((model.points[i].nominal - expected).norm(), 1e-12);
+    EXPECT_EQ(model.points[i].measured, set.points[i].measured);
+  }
+}
+
+TEST(AppliedMatchingEffects, SurfaceOffsetAndDistortionMoveTheNominalPoints) {
+  const ProbePointSet set = warmProbe();
+  const std::string surface = set.points.front().surface;
+  const nlohmann::json json = {
+      {{"name", "surface_offset:" + surface}, {"parameters", {{"mm", 0.02}}}},
+      {{"name", "distortion"}, {"parameters", {{"ppm", 50.0}, {"angle_deg", 30.0}}}}};
+  const AppliedMatchingEffects applied = parseAppliedMatchingEffects(json);
+  const ProbePointSet model = applyMatchingEffects(set, applied);
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const ProbePoint& p : set.points) c += p.nominal;
+  c /= static_cast<double>(set.points.size());
+  for (std::size_t i = 0; i < set.points.size(); ++i) {
+    const ProbePoint& p = set.points[i];
+    const Eigen::Vector3d q = p.nominal - c;
+    const double a = 2.0 * 30.0 * M_PI / 180.0;
+    Eigen::Vector3d d(1e-6 * 50.0 * (std::cos(a) * q.x() + std::sin(a) * q.y()),
+                      1e-6 * 50.0 * (std::sin(a) * q.x() - std::cos(a) * q.y()), 0.0);
+    if (p.surface == surface) d += 0.02 * p.normal;
+    EXPECT_LT((model.points[i].nominal - p.nominal - d).norm(), 1e-12) << p.id;
+  }
+}
+
+TEST(AppliedMatchingEffects, BadEntriesNameTheField) {
+  auto field = [](const nlohmann::json& applied) {
+    return errorField([&] { parseAppliedMatchingEffects(applied, "demo.metrofit"); });
+  };
+  EXPECT_EQ(field({{{"name", "warp"}, {"parameters", {{"ppm", 1.0}}}}}),
+            "studies.diagnosis.matching.applied[0].name");
+  EXPECT_EQ(field({{{"name", "scale"}, {"parameters", {{"mm", 1.0}}}}}),
+            "studies.diagnosis.matching.applied[0].parameters.ppm");
+  EXPECT_EQ(field({{{"name", "scale"}, {"parameters", {{"ppm", "warm"}}}}}),
+            "studies.diagnosis.matching.applied[0].parameters.ppm");
+  EXPECT_EQ(field({{{"name", "scale"}, {"parameters", {{"ppm", 1.0}}}},
+                   {{"name", "distortion"}, {"parameters", {{"ppm", 1.0}}}}}),
+            "studies.diagnosis.matching.applied[1].parameters.angle_deg");
+  EXPECT_EQ(field({{{"name", "surface_offset:top"}, {"parameters", {{"mm", nullptr}}}}}),
+            "studies.diagnosis.matching.applied[0].parameters.mm");
+  // A surface the points do not have: named when the model is built.
+  const AppliedMatchingEffects missing = parseAppliedMatchingEffects(
+      {{{"name", "scale"}, {"parameters", {{"ppm", 1.0}}}},
+       {{"name", "surface_offset:no_such_face"}, {"parameters", {{"mm", 0.01}}}}});
+  EXPECT_EQ(errorField([&] { applyMatchingEffects(warmProbe(), missing, "demo.metrofit"); }),
+            "studies.diagnosis.matching.applied[1].name");
+  // The project's settings read them, and say which entry is wrong.
+  Project project;
+  project.datasets = {{"p1", dataset_kind::kProbePoints, "p1.csv", "", ""},
+                      {"p2", dataset_kind::kProbePoints, "p2.csv", "", ""}};
+  project.studies["diagnosis"]["matching"]["dataset"] = "p1";
+  project.studies["diagnosis"]["matching"]["applied"] = {{{"name", "scale"}, {"parameters", {{"ppm", 5.0}}}}};
+  EXPECT_EQ(matching::matchingStudySettings(project).options.applied.names,
+            std::vector<std::string>{"scale"});   // the study's dataset: the first, p1
+  project.studies["matching"]["dataset"] = "p2";  // other points: the declared model
+  EXPECT_TRUE(matching::matchingStudySettings(project).options.applied.empty());
+  project.studies.erase("matching");
+  project.studies["diagnosis"]["matching"]["applied"] = {
+      {{"name", "scale"}, {"parameters", {{"ppm", true}}}}};
+  EXPECT_EQ(errorField([&] { matching::matchingStudySettings(project, "p.metrofit"); }),
+            "studies.diagnosis.matching.applied[0].parameters.ppm");
+}
+
+}  // namespace
+}  // namespace metrofit::diagnose
