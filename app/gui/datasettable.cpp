@@ -4,6 +4,7 @@
 #include <QHeaderView>
 
 #include "core/project/project.h"
+#include "widgets/common/tablecopy.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
 
@@ -14,6 +15,7 @@ enum Column { ColId, ColKind, ColPath, ColLicence, ColumnCount };
 }
 
 DatasetTable::DatasetTable(QWidget* parent) : QTableWidget(parent) {
+  enableTableCopy(this);
   setColumnCount(ColumnCount);
   setHorizontalHeaderLabels({tr("Id"), tr("Kind"), tr("Path"), tr("Licence")});
   setEditTriggers(QAbstractItemView::NoEditTriggers);

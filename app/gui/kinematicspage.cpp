@@ -8,6 +8,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -22,6 +23,7 @@
 #include "app/gui/notesedit.h"
 #include "core/io/file_io.h"
 #include "core/kinematics/export.h"
+#include "widgets/common/tablecopy.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
 #include "widgets/kinematics/kinematicsviews.h"
@@ -41,6 +43,7 @@ QTableWidget* makeTable(QWidget* parent, const QStringList& header, const QStrin
   t->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
   t->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   t->verticalHeader()->setDefaultSectionSize(t->fontMetrics().height() + 6);
+  enableTableCopy(t);
   return t;
 }
 
@@ -54,17 +57,30 @@ void setRow(QTableWidget* t, int row, const QStringList& cells, const QString& t
 }
 
 QString um(double mm, int decimals = 3) {
-  return QString::number(mm * 1000.0, 'f', decimals);
+  return QLocale().toString(mm * 1000.0, 'f', decimals);
 }
 
 QString deg(double d) {
-  return QString::number(d, 'f', 6);
+  return QLocale().toString(d, 'f', 6);
 }
 
 /// mm with 4 decimals, without "-0.0000".
 QString mm4(double v) {
-  const QString t = QString::number(v, 'f', 4);
-  return t == QLatin1String("-0.0000") ? QStringLiteral("0.0000") : t;
+  return QLocale().toString(std::abs(v) < 5e-5 ? 0.0 : v, 'f', 4);
+}
+
+/// The dataset the diagnosis of `domain` ran on when effects were applied there and it is not
+/// `datasetId` (the applied effects belong to that dataset), else empty.
+QString appliedElsewhere(const Project& project, const char* domain, const std::string& datasetId) {
+  const auto diag = project.studies.find(study::kDiagnosis);
+  if (diag == project.studies.end() || !diag->is_object()) return {};
+  const auto block = diag->find(domain);
+  if (block == diag->end() || !block->is_object()) return {};
+  const auto applied = block->find("applied");
+  if (applied == block->end() || !applied->is_array() || applied->empty()) return {};
+  const auto dataset = block->find("dataset");
+  if (dataset == block->end() || !dataset->is_string() || dataset->get<std::string>() == datasetId) return {};
+  return QString::fromStdString(dataset->get<std::string>());
 }
 
 }  // namespace
@@ -97,6 +113,7 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   combo_->setObjectName(QStringLiteral("circularTestCombo"));
   combo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   combo_->setMinimumContentsLength(14);
+  info_->setObjectName(QStringLiteral("kinematicsInfo"));
   info_->setWordWrap(true);
   info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   message_->setObjectName(QStringLiteral("kinematicsMessage"));
@@ -125,7 +142,16 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   auto* sideLayout = new QVBoxLayout(side);
   sideLayout->setContentsMargins(0, 0, 0, 0);
   auto* errorsLabel = new QLabel(tr("<b>Identified errors</b> (origin in µm, angles in deg)"), side);
+  applied_ = new QLabel(side);
+  applied_->setObjectName(QStringLiteral("kinematicsApplied"));
+  applied_->setWordWrap(true);
+  applied_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  applied_->setToolTip(
+      tr("Effects added with Apply on the Diagnosis page: the identification, the compensated references "
+         "and their exports include them. Undo the Apply to use the declared model again."));
+  applied_->setVisible(false);
   auto* compLabel = new QLabel(tr("<b>Compensation</b> of the nominal circle"), side);
+  sideLayout->addWidget(applied_);
   sideLayout->addWidget(errorsLabel);
   sideLayout->addWidget(errors_, 3);
   sideLayout->addWidget(compLabel);
@@ -196,6 +222,10 @@ void KinematicsPage::refresh() {
   nlohmann::json settings = it != document_->project().studies.end() ? *it : nlohmann::json();
   if (settings.is_object()) settings.erase("notes");  // notes edits must not re-run the study
   std::string json = settings.dump();
+  // The applied effects (Apply / undo on the diagnosis page) change the model: identify again.
+  if (const auto diag = document_->project().studies.find(study::kDiagnosis);
+      diag != document_->project().studies.end() && diag->is_object() && diag->contains("kinematic"))
+    json += (*diag)["kinematic"].dump();
   for (const DatasetRef& d : document_->project().datasets) json += d.id + d.kind + d.path;
   if (sets == datasets_ && json == studyJson_ && projectFile_ == document_->fileName() && combo_->count() > 0)
     return;
@@ -274,6 +304,13 @@ void KinematicsPage::showStudy() {
                      .arg(mm4(s.analysis.centreMm.x()), mm4(s.analysis.centreMm.y()));
   if (!s.dataset.description.empty())
     info.prepend(QString::fromStdString(s.dataset.description) + QLatin1Char('\n'));
+  if (const QString elsewhere = appliedElsewhere(document_->project(), "kinematic", s.dataset.id);
+      !elsewhere.isEmpty()) {
+    info += QLatin1Char('\n') +
+            tr("Effects applied on the Diagnosis page belong to the circular test %1 (the one "
+               "the diagnosis ran on); this test uses the declared model.")
+                .arg(elsewhere);
+  }
   info_->setText(info);
 
   const std::optional<ActuatorErrors2>& truth = s.settings.simulatedMachine;
@@ -281,7 +318,13 @@ void KinematicsPage::showStudy() {
     if (!truth) return QStringLiteral("—");
     return micro ? um(v) : deg(v);
   };
-  errors_->setRowCount(7);
+  const bool withEffects = !s.applied.empty();
+  applied_->setVisible(withEffects);
+  applied_->setText(withEffects ? tr("Includes applied effects: %1")
+                                      .arg(QString::fromStdString(s.applied.text())
+                                               .replace(QStringLiteral(" um"), QStringLiteral(" µm")))
+                                : QString());
+  errors_->setRowCount(withEffects && s.declaredRmseMm ? 8 : 7);
   setRow(errors_, 0,
          {tr("origin x (µm)"), um(r.errors.originMm.x()), um(r.standardErrors.originMm.x()),
           sim(truth ? truth->originMm.x() : 0.0, true)},
@@ -303,10 +346,16 @@ void KinematicsPage::showStudy() {
           sim(truth ? truth->squarenessDeg() : 0.0, false)},
          tr("The angle between the axes is 90° + (b − a)"));
   setRow(errors_, 5, {tr("RMS residual (µm)"), um(r.rmseMm), QString(), QString()},
-         tr("Root mean square of the residual distances after identification"));
+         withEffects ? tr("Root mean square of the residual distances after identification, with the "
+                          "applied effects")
+                     : tr("Root mean square of the residual distances after identification"));
   setRow(errors_, 6,
          {tr("iterations"), QString::number(r.run.iterations),
           QString::fromLatin1(toString(r.run.termination)), QString()});
+  if (withEffects && s.declaredRmseMm) {
+    setRow(errors_, 7, {tr("RMS, declared model only (µm)"), um(*s.declaredRmseMm), QString(), QString()},
+           tr("The residual of the declared model (origin and axis angles, no applied effects)"));
+  }
   errors_->setColumnHidden(3, !truth);
 
   // Measured path and its radial deviations.
@@ -369,7 +418,7 @@ void KinematicsPage::showCompensation() {
   polar.compensated = radialDeviations(c.expected, study_->analysis.centreMm, study_->analysis.radiusMm);
   polar_->setData(polar);
 
-  int rows = 4 + (c.maxSimulatedMm ? 1 : 0);
+  int rows = 5 + (c.maxSimulatedMm ? 1 : 0);
   compensationTable_->setRowCount(rows);
   int row = 0;
   setRow(compensationTable_, row++, {tr("measured (before)"), um(c.maxBeforeMm)},
@@ -380,6 +429,9 @@ void KinematicsPage::showCompensation() {
   setRow(compensationTable_, row++, {tr("expected after (measured residual)"), um(c.maxExpectedMm)},
          tr("The measured path moved by what the references change: the residual the model does not explain "
             "(noise, unmodelled effects) stays"));
+  setRow(compensationTable_, row++, {tr("expected after, RMS distance"), um(c.rmsExpectedMm)},
+         tr("Root mean square distance of the expected path from the nominal points (before: %1 µm)")
+             .arg(um(c.rmsBeforeMm)));
   if (c.maxSimulatedMm) {
     setRow(compensationTable_, row++, {tr("simulated machine, after"), um(*c.maxSimulatedMm)},
            tr("The references run through the simulated machine (the true errors of the study), noise free"));
@@ -414,6 +466,7 @@ bool KinematicsPage::exportGcode(const QString& path, QString* error) {
   try {
     GcodeOptions o;
     o.programName = "compensated " + study_->dataset.id;
+    if (!study_->applied.empty()) o.programName += " with applied effects " + study_->applied.text();
     writeFileAtomic(path.toStdString(),
                     compensatedPathToGcode(compensation_->references, study_->identification.errors, o));
   } catch (const std::exception& e) {
@@ -433,6 +486,7 @@ bool KinematicsPage::exportStepNc(const QString& path, QString* error) {
     o.fileName = QFileInfo(path).fileName().toStdString();
     o.timestamp = QDateTime::currentDateTimeUtc().toString(Qt::ISODate).chopped(1).toStdString();
     o.projectName = "Metrofit compensated " + study_->dataset.id;
+    if (!study_->applied.empty()) o.projectName += " with applied effects " + study_->applied.text();
     writeFileAtomic(path.toStdString(),
                     compensatedPathToStepNc(compensation_->references, study_->identification.errors, o));
   } catch (const std::exception& e) {

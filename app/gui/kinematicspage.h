@@ -4,6 +4,8 @@
 // errors; Compensate makes the compensated references for the nominal circle and shows what they
 // give; Export writes them as G-code or STEP-NC. Two views: "path" (path view, polar deviation plot,
 // tables) and "spc" (X-bar / R charts, histogram, indices of the study's feature series).
+// Effects applied on the diagnosis page (studies.diagnosis.kinematic.applied) are part of the model
+// (kinematicstudy.h): a line names them, and Apply / undo identifies again.
 #include <QWidget>
 
 #include <memory>
@@ -53,6 +55,8 @@ class KinematicsPage : public QWidget {
   QTabWidget* tabs() const { return tabs_; }
   QTableWidget* errorTable() const { return errors_; }
   QTableWidget* compensationTable() const { return compensationTable_; }
+  /// "Includes applied effects: ..." when the model includes effects applied on the diagnosis page.
+  QLabel* appliedLabel() const { return applied_; }
   CircularPathView* pathView() const { return path_; }
   PolarDeviationView* polarView() const { return polar_; }
   SpcView* spcView() const { return spc_; }
@@ -70,6 +74,7 @@ class KinematicsPage : public QWidget {
   ProjectDocument* document_;
   QComboBox* combo_;
   QLabel* info_;
+  QLabel* applied_ = nullptr;  ///< "Includes applied effects: ..." (hidden when none)
   QStackedWidget* stack_;
   QLabel* message_;
   QTabWidget* tabs_;

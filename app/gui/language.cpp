@@ -5,6 +5,7 @@
 #include <QLocale>
 #include <QSettings>
 #include <QTranslator>
+#include <cstdio>
 
 namespace metrofit {
 
@@ -45,6 +46,20 @@ bool installTranslators(QCoreApplication& app, const QString& language) {
     return false;
   }
   QCoreApplication::installTranslator(own);
+  return true;
+}
+
+bool applyLanguageOption(QCoreApplication& app, const QString& code) {
+  const QString language = code.trimmed().toLower();
+  if (language == QLatin1String(kSystemLanguage) || !languageChoices().contains(language)) {
+    std::fprintf(stderr, "metrofit: --lang takes en, de or pl, not '%s'\n", qPrintable(code));
+    return false;
+  }
+  QLocale::setDefault(QLocale(language));
+  if (!installTranslators(app, language)) {
+    std::fprintf(stderr, "metrofit: no translation for '%s' is built in\n", qPrintable(language));
+    return false;
+  }
   return true;
 }
 

@@ -22,5 +22,8 @@ QString effectiveLanguage(const QString& choice);
 /// Installs Metrofit's (and, when present, Qt's own) translators for a language. Returns true when
 /// Metrofit's translation was found (always true for "en", which needs none).
 bool installTranslators(QCoreApplication& app, const QString& language);
+/// `metrofit --lang CODE`: for this run only, the language "en", "de" or "pl" (its translators and
+/// its locale for the numbers shown). An unknown code is reported on stderr and returns false.
+bool applyLanguageOption(QCoreApplication& app, const QString& code);
 
 }  // namespace metrofit

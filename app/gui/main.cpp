@@ -15,6 +15,7 @@
 namespace {
 
 const QString kScreenshotsOption = QStringLiteral("screenshots");
+const QString kLanguageOption = QStringLiteral("lang");
 
 void configureParser(QCommandLineParser& parser) {
   parser.setApplicationDescription(
@@ -27,6 +28,12 @@ void configureParser(QCommandLineParser& parser) {
                                    "Open the bundled demo project, save one PNG per main view into "
                                    "<dir> and exit (needs an X server; Xvfb will do)."),
        QCoreApplication::translate("main", "dir")});
+  parser.addOption(
+      {kLanguageOption,
+       QCoreApplication::translate("main",
+                                   "User interface language for this run: en, de or pl (overrides "
+                                   "the Preferences; the screenshots are in English without it)."),
+       QCoreApplication::translate("main", "language")});
   parser.addPositionalArgument(QCoreApplication::translate("main", "project"),
                                QCoreApplication::translate("main", "A project file (.metrofit) to open."),
                                QCoreApplication::translate("main", "[project]"));
@@ -89,23 +96,33 @@ int main(int argc, char* argv[]) {
       std::fprintf(stderr, "%s\n", metrofit::kScreenshotsNeedXMessage);
       return 2;
     }
-    // Screenshots are in English and leave the user's settings (recent files) alone.
+    // Screenshots are in English (or the --lang language) and leave the user's settings alone.
     QTemporaryDir settingsDir;
     QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
     QCommandLineParser parser;
     configureParser(parser);
     parser.process(app);
+    if (parser.isSet(kLanguageOption) && !metrofit::applyLanguageOption(app, parser.value(kLanguageOption)))
+      return 2;
     QTextStream err(stderr);
     return metrofit::runScreenshots(parser.value(kScreenshotsOption), err);
   }
 
-  metrofit::installTranslators(app, metrofit::effectiveLanguage(metrofit::languageSetting()));
   QCommandLineParser parser;
   configureParser(parser);
   parser.process(app);
+  if (parser.isSet(kLanguageOption)) {
+    if (!metrofit::applyLanguageOption(app, parser.value(kLanguageOption))) return 2;
+  } else {
+    metrofit::installTranslators(app, metrofit::effectiveLanguage(metrofit::languageSetting()));
+  }
 
   metrofit::MainWindow window;
   window.show();
-  if (!parser.positionalArguments().isEmpty()) window.openProject(parser.positionalArguments().constFirst());
+  if (!parser.positionalArguments().isEmpty()) {
+    window.openProject(parser.positionalArguments().constFirst());  // offers its autosaved copy
+  } else {
+    window.recoverUntitled();  // an unsaved project left by a crash
+  }
   return app.exec();
 }

@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 
+#include "app/gui/autosave.h"
 #include "app/gui/diagnosispage.h"
 #include "app/gui/filechangedbar.h"
 #include "app/gui/kinematicspage.h"
@@ -30,11 +31,13 @@
 #include "app/gui/recentfiles.h"
 #include "app/gui/reportexporter.h"
 #include "app/gui/setuppage.h"
+#include "app/gui/studyactions.h"
 #include "app/gui/thermalpage.h"
 #include "metrofit/version.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
+#include "widgets/setup/setupmodeleditor.h"
 
 namespace metrofit {
 
@@ -54,7 +57,8 @@ MainWindow::MainWindow(QWidget* parent)
       thermal_(new ThermalPage(document_, pages_)),
       matching_(new MatchingPage(document_, pages_)),
       fileChangedBar_(new FileChangedBar(this)),
-      exporter_(new ReportExporter(this)) {
+      exporter_(new ReportExporter(this)),
+      autosave_(new Autosave(document_, this)) {
   setObjectName(QStringLiteral("mainWindow"));
   // Pages in the order of metrofit::Page.
   pages_->addWidget(overview_);
@@ -80,6 +84,8 @@ MainWindow::MainWindow(QWidget* parent)
 
   createActions();
   createMenus();
+  connect(overview_, &OverviewPage::openDemoRequested, this, &MainWindow::openDemo);
+  installStudyActions(this, pages_);  // Run menu: F5 / Esc on every page
 
   connect(navigator_, &ProjectNavigator::pageActivated, this, [this](Page page, const QString& dataset) {
     if (page == Page::Thermal && !dataset.isEmpty()) thermal_->selectDataset(dataset);
@@ -91,6 +97,9 @@ MainWindow::MainWindow(QWidget* parent)
   connect(document_, &ProjectDocument::fileChangedOnDisk, this,
           [this](const QString& file) { fileChangedBar_->showFor(file, document_->isModified()); });
   connect(fileChangedBar_, &FileChangedBar::reloadRequested, this, &MainWindow::reloadFromDisk);
+  connect(autosave_, &Autosave::failed, this, [this](const QString& message) {
+    statusBar()->showMessage(tr("Autosave failed: %1").arg(message), kStatusTimeoutMs);
+  });
   connect(exporter_, &ReportExporter::finished, this,
           [this](ReportExporter::Outcome outcome, const QString& message) {
             exportAction_->setEnabled(true);
@@ -145,7 +154,8 @@ void MainWindow::createMenus() {
   file->addSeparator();
   file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
   file->addAction(tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this, &MainWindow::saveAs);
-  exportAction_ = file->addAction(tr("&Export report PDF…"), this, &MainWindow::exportReport);
+  exportAction_ = file->addAction(tr("&Export report PDF…"), QKeySequence(Qt::CTRL | Qt::Key_E), this,
+                                  &MainWindow::exportReport);
   file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), this, &QWidget::close);
   quit->setMenuRole(QAction::QuitRole);
@@ -221,7 +231,7 @@ void MainWindow::showError(const QString& title, const QString& message) {
 
 bool MainWindow::openProject(const QString& path, QString* error) {
   try {
-    document_->load(path);
+    autosave_->open(path);
   } catch (const std::exception& e) {
     const QString message = QString::fromStdString(e.what());
     if (error) {
@@ -238,12 +248,50 @@ bool MainWindow::openProject(const QString& path, QString* error) {
   return true;
 }
 
+void MainWindow::recoverUntitled() {
+  if (autosave_->recoverUntitled() == RecoveryChoice::Recover)
+    statusBar()->showMessage(tr("Recovered the autosaved project; save it to keep it."), kStatusTimeoutMs);
+}
+
 bool MainWindow::maybeSave() {
-  if (!document_->isModified()) return true;
-  QMessageBox box(
-      QMessageBox::Warning, tr("Unsaved changes"),
-      tr("The project \"%1\" has unsaved changes. Do you want to save them?").arg(document_->displayName()),
-      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+  // The setup model is its own file with its own undo stack (the graph editor): its unsaved edits
+  // are asked about together with the project's.
+  auto* setup = qobject_cast<SetupPage*>(page(Page::Setup));
+  const bool modelEdited = setup && setup->modelEditor()->isModified();
+  if (!document_->isModified() && !modelEdited) return true;
+  switch (unsavedDecider_ ? unsavedDecider_() : askUnsavedChanges()) {
+    case UnsavedChoice::Save:
+      if (modelEdited) {
+        QString error;
+        if (!setup->saveModel(&error)) {
+          showError(tr("Cannot save the setup model"), error);
+          return false;
+        }
+      }
+      return !document_->isModified() || save();
+    case UnsavedChoice::Discard:
+      autosave_->removeWritten();
+      return true;
+    case UnsavedChoice::Cancel:
+      break;
+  }
+  return false;
+}
+
+MainWindow::UnsavedChoice MainWindow::askUnsavedChanges() {
+  auto* setup = qobject_cast<SetupPage*>(page(Page::Setup));
+  const bool modelEdited = setup && setup->modelEditor()->isModified();
+  QString text =
+      tr("The project \"%1\" has unsaved changes. Do you want to save them?").arg(document_->displayName());
+  if (modelEdited && !document_->isModified()) {
+    text = tr("The setup model (relation graph) has unsaved edits. Do you want to save them?");
+  } else if (modelEdited) {
+    text = tr("The project \"%1\" and the setup model (relation graph) have unsaved changes. Do you want to "
+              "save them?")
+               .arg(document_->displayName());
+  }
+  QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"), text,
+                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
   box.setObjectName(QStringLiteral("unsavedChangesBox"));
   box.button(QMessageBox::Save)->setText(tr("&Save"));
   box.button(QMessageBox::Discard)->setText(tr("&Discard"));
@@ -251,11 +299,11 @@ bool MainWindow::maybeSave() {
   box.setDefaultButton(QMessageBox::Save);
   switch (box.exec()) {
     case QMessageBox::Save:
-      return save();
+      return UnsavedChoice::Save;
     case QMessageBox::Discard:
-      return true;
+      return UnsavedChoice::Discard;
     default:
-      return false;
+      return UnsavedChoice::Cancel;
   }
 }
 
@@ -346,7 +394,9 @@ void MainWindow::exportReport() {
 void MainWindow::preferences() {
   PreferencesDialog dialog(this);
   if (dialog.exec() != QDialog::Accepted) return;
-  if (dialog.apply())
+  const bool languageChanged = dialog.apply();
+  autosave_->setIntervalMs(Autosave::intervalSetting() * 60 * 1000);
+  if (languageChanged)
     statusBar()->showMessage(tr("The new language is applied at the next start."), kStatusTimeoutMs);
 }
 
@@ -381,6 +431,9 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     return;
   }
   exporter_->waitForFinished();
+  // A clean close (saved, unchanged or discarded) leaves no autosaved copy behind.
+  autosave_->setIntervalMs(0);
+  autosave_->removeWritten();
   event->accept();
 }
 

@@ -3,6 +3,7 @@
 // pages. It holds no algorithm code; pages live in their own classes.
 #include <QMainWindow>
 #include <array>
+#include <functional>
 
 #include "app/gui/pageid.h"
 
@@ -12,6 +13,7 @@ class QMenu;
 class QStackedWidget;
 
 namespace metrofit {
+class Autosave;
 class FileChangedBar;
 class MatchingPage;
 class OverviewPage;
@@ -23,6 +25,10 @@ class ThermalPage;
 class MainWindow : public QMainWindow {
   Q_OBJECT
  public:
+  /// The answer to "save the unsaved changes?" (close, New, Open).
+  enum class UnsavedChoice { Save, Discard, Cancel };
+  using UnsavedDecider = std::function<UnsavedChoice()>;
+
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
 
@@ -32,12 +38,18 @@ class MainWindow : public QMainWindow {
   ThermalPage* thermalPage() const { return thermal_; }
   MatchingPage* matchingPage() const { return matching_; }
   FileChangedBar* fileChangedBar() const { return fileChangedBar_; }
+  Autosave* autosave() const { return autosave_; }
+  /// Replaces the unsaved-changes question (default: a message box); tests inject the answer.
+  void setUnsavedChangesDecider(UnsavedDecider decider) { unsavedDecider_ = std::move(decider); }
   QWidget* page(Page page) const;
   Page currentPage() const;
 
-  /// Opens a project without asking about unsaved changes. On failure shows the one-line error in
+  /// Opens a project without asking about unsaved changes; offers to recover its autosaved copy when
+  /// that is newer (Autosave::open). On failure shows the one-line error in
   /// a message box, or stores it in *error when given (then no box), and keeps the open project.
   bool openProject(const QString& path, QString* error = nullptr);
+  /// At a start without a project: offers to recover an untitled project left by a crash.
+  void recoverUntitled();
   /// Shows a page and selects it in the navigator.
   void showPage(Page page);
 
@@ -52,6 +64,7 @@ class MainWindow : public QMainWindow {
   void showError(const QString& title, const QString& message);
   /// Asks to save unsaved changes; false when the user cancelled (or saving failed).
   bool maybeSave();
+  UnsavedChoice askUnsavedChanges();
 
   void newProject();
   void open();
@@ -72,6 +85,8 @@ class MainWindow : public QMainWindow {
   MatchingPage* matching_;
   FileChangedBar* fileChangedBar_;
   ReportExporter* exporter_;
+  Autosave* autosave_;
+  UnsavedDecider unsavedDecider_;
   QMenu* recentMenu_ = nullptr;
   QAction* exportAction_ = nullptr;
   std::array<QAction*, kPageCount> pageActions_{};

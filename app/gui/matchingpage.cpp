@@ -25,6 +25,7 @@
 
 #include "app/gui/notesedit.h"
 #include "core/matching/hole_table.h"
+#include "widgets/common/tablecopy.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
 #include "widgets/pointview/matchingcurveview.h"
@@ -33,6 +34,17 @@
 namespace metrofit {
 
 namespace {
+
+/// studies.diagnosis.matching.applied and .dataset as text ("" when absent), to notice Apply and its
+/// undo.
+std::string appliedKeyOf(const Project& project) {
+  const auto s = project.studies.find(study::kDiagnosis);
+  if (s == project.studies.end() || !s->is_object()) return {};
+  const auto d = s->find(study::kMatching);
+  if (d == s->end() || !d->is_object()) return {};
+  const auto a = d->find("applied");
+  return a == d->end() ? std::string() : a->dump() + '\n' + d->value("dataset", nlohmann::json()).dump();
+}
 enum Column { ColId, ColSurface, ColDeviation, ColAfter, ColumnCount };
 
 using matching::MatchMethod;
@@ -89,6 +101,7 @@ QTableWidget* makeTable(QWidget* parent, const QStringList& header) {
   t->verticalHeader()->setDefaultSectionSize(t->fontMetrics().height() + 6);
   t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   t->horizontalHeader()->setStretchLastSection(true);
+  enableTableCopy(t);
   return t;
 }
 
@@ -266,13 +279,13 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   controls->addSpacing(8);
   controls->addWidget(allowScale_);
   controls->addSpacing(8);
-  controls->addWidget(new QLabel(tr("Lock:"), this));
+  top->addWidget(new QLabel(tr("Lock:"), this));  // on the first row: the page fits 1280 px in German too
   for (int k = 0; k < 6; ++k) {
     locks_[static_cast<std::size_t>(k)] = new QCheckBox(QString::fromLatin1(kDofNames[k]), this);
     locks_[static_cast<std::size_t>(k)]->setToolTip(
         tr("Hold %1 at 0 (a constrained optimum over the other parameters)")
             .arg(QLatin1String(kDofNames[k])));
-    controls->addWidget(locks_[static_cast<std::size_t>(k)]);
+    top->addWidget(locks_[static_cast<std::size_t>(k)]);
   }
   controls->addStretch(1);
   controls->addWidget(progress_);
@@ -376,6 +389,17 @@ void MatchingPage::refresh() {
   }
   if (sets == sets_ && projectFile_ == document_->fileName() && combo_->count() > 0) {
     if (writingStudy_) return;
+    // Apply on the diagnosis page (or its undo): the same points, another model of the part.
+    if (appliedKeyOf(document_->project()) != appliedKey_) {
+      if (isRunning()) cancelRun();
+      try {
+        settings_ = matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
+      } catch (const std::exception&) {
+        settings_.options.applied = {};  // showPoints says what is wrong with them
+      }
+      showPoints(combo_->currentIndex());
+      return;
+    }
     // Undo / redo of a settings edit: the controls follow the study.
     try {
       if (!syncSettingsFromStudy(
@@ -421,6 +445,9 @@ void MatchingPage::showPoints(int comboIndex) {
   error_.clear();
   result_.reset();
   set_.reset();
+  rawSet_.reset();
+  appliedText_.clear();
+  appliedKey_ = appliedKeyOf(document_->project());
   if (comboIndex < 0 || comboIndex >= static_cast<int>(sets_.size())) {
     info_->clear();
     message_->setText(
@@ -431,8 +458,24 @@ void MatchingPage::showPoints(int comboIndex) {
     return;
   }
   const DatasetRef& dataset = sets_[static_cast<std::size_t>(comboIndex)];
+  try {  // invalid applied effects: no run on a model that is not the study's
+    // The effects of the points shown: only those estimated on them (the diagnosis's dataset).
+    settings_.options.applied = diagnose::parseAppliedMatchingEffects(
+        diagnose::projectAppliedEffects(document_->project(), study::kMatching, dataset.id,
+                                        projectFile_.toStdString()),
+        projectFile_.toStdString());
+  } catch (const std::exception& e) {
+    settings_.options.applied = {};
+    error_ = QString::fromUtf8(e.what());
+    info_->clear();
+    message_->setText(tr("The effects applied to the matching model are invalid:\n%1").arg(error_));
+    stack_->setCurrentWidget(message_);
+    runButton_->setEnabled(false);
+    return;
+  }
   try {
-    set_ = readProbePointsAnyFormat(document_->datasetPath(dataset).toStdString());
+    rawSet_ = readProbePointsAnyFormat(document_->datasetPath(dataset).toStdString());
+    set_ = matching::studyModelSet(*rawSet_, settings_.options, projectFile_.toStdString());
     const ProbePointSet& points = *set_;
     std::set<std::string> surfaces;
     for (const ProbePoint& p : points.points) surfaces.insert(p.surface);
@@ -443,6 +486,20 @@ void MatchingPage::showPoints(int comboIndex) {
                        .arg(points.planar ? tr(", planar") : QString());
     if (!dataset.licence.empty())
       info += QLatin1Char(' ') + tr("Licence: %1.").arg(QString::fromStdString(dataset.licence));
+    if (!settings_.options.applied.empty()) {
+      appliedText_ =
+          tr("Includes applied effects: %1 (the nominal points are deformed by them before matching).")
+              .arg(QString::fromStdString(settings_.options.applied.describe()));
+      info += QLatin1Char('\n') + appliedText_;
+    }
+    if (const std::string elsewhere =
+            diagnose::appliedEffectsElsewhere(document_->project(), study::kMatching, dataset.id);
+        !elsewhere.empty()) {
+      info += QLatin1Char('\n') + tr("Effects applied on the Diagnosis page belong to the probe points %1 "
+                                     "(the ones the diagnosis ran on); these points use the declared "
+                                     "model.")
+                                      .arg(QString::fromStdString(elsewhere));
+    }
     info_->setText(info);
     info_->setToolTip(QString::fromStdString(dataset.description));
     status_->setText(tr("Not matched yet: press Run (Ctrl+R)."));
@@ -525,10 +582,14 @@ void MatchingPage::settingsChanged() {
   if (result_) status_->setText(tr("Settings changed: press Run (Ctrl+R) to match again."));
 }
 
+QString MatchingPage::infoText() const {
+  return info_->text();
+}
+
 bool MatchingPage::runNow() {
-  if (!set_ || isRunning()) return false;
+  if (!set_ || !rawSet_ || isRunning()) return false;
   try {
-    result_ = matching::runMatchingStudy(*set_, currentOptions());
+    result_ = matching::runMatchingStudy(*rawSet_, currentOptions());
     error_.clear();
     applyResult();
     return true;
@@ -540,7 +601,7 @@ bool MatchingPage::runNow() {
 }
 
 void MatchingPage::startRun() {
-  if (!set_ || isRunning()) return;
+  if (!set_ || !rawSet_ || isRunning()) return;
   matching::MatchingStudyOptions options;
   try {
     options = currentOptions();
@@ -554,7 +615,7 @@ void MatchingPage::startRun() {
   pendingError_ = std::make_shared<QString>();
   setRunning(true);
   status_->setText(tr("Matching …"));
-  const ProbePointSet set = *set_;
+  const ProbePointSet set = *rawSet_;  // runMatchingStudy adds the applied effects itself
   auto cancel = cancel_;
   auto pending = pending_;
   auto pendingError = pendingError_;

@@ -9,6 +9,10 @@
 // the posture shown "after" and used for the machine adjustment. Settings come from the project's
 // studies.matching (dataset, tolerance_mm, method, allow_scale, locks, machine); edits of the method,
 // tolerance, scale and locks are written back through the document's undo stack.
+// Effects added with the diagnosis page's Apply (studies.diagnosis.matching.applied: scale,
+// surface_offset:<surface>, distortion) are part of the study's model (core/matching/study.h
+// studyModelSet): the views, the tables and the runs use the nominal points deformed by them, the
+// info line names them, and undoing Apply brings the declared rigid model back.
 #include <QFutureWatcher>
 #include <QWidget>
 #include <array>
@@ -56,6 +60,10 @@ class MatchingPage : public QWidget {
   QTableWidget* remeasureTable() const { return remeasureTable_; }
   MatchingCurveView* curveView() const { return curve_; }
   QString errorMessage() const { return error_; }
+  /// The info line above the views (points, surfaces, applied effects).
+  QString infoText() const;
+  /// "Includes applied effects: ..." when studies.diagnosis.matching.applied is in use, else empty.
+  QString appliedText() const { return appliedText_; }
   const std::optional<matching::MatchingStudyResult>& result() const { return result_; }
   bool isRunning() const;
 
@@ -126,7 +134,10 @@ class MatchingPage : public QWidget {
   std::vector<DatasetRef> sets_;
   QString projectFile_;
 
-  std::optional<ProbePointSet> set_;
+  std::optional<ProbePointSet> set_;     ///< the study's model: rawSet_ with the applied effects
+  std::optional<ProbePointSet> rawSet_;  ///< as read
+  std::string appliedKey_;               ///< studies.diagnosis.matching.applied as text
+  QString appliedText_;
   matching::MatchingStudySettings settings_;
   bool writingStudy_ = false;  ///< the page's own edit of the document
   std::optional<matching::MatchingStudyResult> result_;

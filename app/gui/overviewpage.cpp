@@ -3,9 +3,14 @@
 #include <QDir>
 #include <QEvent>
 #include <QFormLayout>
+#include <QFrame>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include "app/gui/datasettable.h"
@@ -19,7 +24,8 @@ OverviewPage::OverviewPage(ProjectDocument* document, QWidget* parent)
       name_(new QLineEdit(this)),
       description_(new QPlainTextEdit(this)),
       file_(new QLabel(this)),
-      datasets_(new DatasetTable(this)) {
+      datasets_(new DatasetTable(this)),
+      hint_(new QFrame(this)) {
   auto* title = new QLabel(tr("Project overview"), this);
   QFont titleFont = title->font();
   titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
@@ -46,7 +52,38 @@ OverviewPage::OverviewPage(ProjectDocument* document, QWidget* parent)
   sectionFont.setBold(true);
   datasetsTitle->setFont(sectionFont);
 
+  hint_->setObjectName(QStringLiteral("firstRunHint"));
+  hint_->setFrameShape(QFrame::StyledPanel);
+  hint_->setAutoFillBackground(true);
+  QPalette hintPalette = hint_->palette();
+  hintPalette.setColor(QPalette::Window, QColor(0xe8, 0xf1, 0xfb));
+  hint_->setPalette(hintPalette);
+  auto* hintText = new QLabel(
+      tr("<b>New here?</b> Open the demo project: sample data for every study (setup correction, "
+         "posture matching, kinematics &amp; SPC, thermal, diagnosis) to try each page. It is also in "
+         "<i>Help › Open demo project</i>."),
+      hint_);
+  hintText->setWordWrap(true);
+  auto* hintOpen = new QPushButton(tr("&Open the demo project"), hint_);
+  hintOpen->setObjectName(QStringLiteral("firstRunOpenDemo"));
+  hintOpen->setToolTip(tr("Copies the bundled demo project into a folder of your own and opens it"));
+  auto* hintClose = new QToolButton(hint_);
+  hintClose->setObjectName(QStringLiteral("firstRunDismiss"));
+  hintClose->setText(QStringLiteral("✕"));
+  hintClose->setAutoRaise(true);
+  hintClose->setToolTip(tr("Hide this hint (it does not come back)"));
+  auto* hintLayout = new QHBoxLayout(hint_);
+  hintLayout->addWidget(hintText, 1);
+  hintLayout->addWidget(hintOpen);
+  hintLayout->addWidget(hintClose, 0, Qt::AlignTop);
+  connect(hintOpen, &QPushButton::clicked, this, [this] {
+    dismissHint();
+    emit openDemoRequested();
+  });
+  connect(hintClose, &QToolButton::clicked, this, &OverviewPage::dismissHint);
+
   auto* layout = new QVBoxLayout(this);
+  layout->addWidget(hint_);
   layout->addWidget(title);
   layout->addLayout(form);
   layout->addSpacing(8);
@@ -64,6 +101,11 @@ OverviewPage::OverviewPage(ProjectDocument* document, QWidget* parent)
   refresh();
 }
 
+void OverviewPage::dismissHint() {
+  QSettings().setValue(QString::fromLatin1(kFirstRunHintKey), true);
+  hint_->hide();
+}
+
 bool OverviewPage::eventFilter(QObject* watched, QEvent* event) {
   if (watched == description_ && event->type() == QEvent::FocusOut) document_->endEditSequence();
   return QWidget::eventFilter(watched, event);
@@ -78,6 +120,7 @@ void OverviewPage::refresh() {
   updating_ = false;
   const QString fileName = document_->fileName();
   file_->setText(fileName.isEmpty() ? tr("not saved yet") : QDir::toNativeSeparators(fileName));
+  hint_->setVisible(fileName.isEmpty() && !QSettings().value(QString::fromLatin1(kFirstRunHintKey)).toBool());
   if (shownDatasets_ != document_->project().datasets || shownFile_ != fileName ||
       datasets_->rowCount() == 0) {
     shownDatasets_ = document_->project().datasets;

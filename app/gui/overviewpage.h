@@ -6,6 +6,7 @@
 
 #include "core/project/project.h"
 
+class QFrame;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
@@ -22,18 +23,28 @@ class OverviewPage : public QWidget {
   QLineEdit* nameEdit() const { return name_; }
   QPlainTextEdit* descriptionEdit() const { return description_; }
   DatasetTable* datasetTable() const { return datasets_; }
+  /// The first-run hint ("New here? Open the demo project…"): shown until dismissed or used
+  /// (remembered in QSettings under kFirstRunHintKey), and only while no project file is open.
+  QFrame* firstRunHint() const { return hint_; }
+  static constexpr const char* kFirstRunHintKey = "ui/firstRunHintDismissed";
+
+ signals:
+  /// The hint's "Open the demo project" button was pressed.
+  void openDemoRequested();
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   void refresh();
+  void dismissHint();
 
   ProjectDocument* document_;
   QLineEdit* name_;
   QPlainTextEdit* description_;
   QLabel* file_;
   DatasetTable* datasets_;
+  QFrame* hint_;
   bool updating_ = false;
   std::vector<DatasetRef> shownDatasets_;  ///< what the table shows (rebuilt only when it changes)
   QString shownFile_;

@@ -22,6 +22,7 @@
 #include <mutex>
 
 #include "app/gui/notesedit.h"
+#include "app/gui/studysettingbinding.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/setup/exact.h"
@@ -42,6 +43,18 @@ namespace metrofit {
 namespace {
 
 constexpr int kFlushMs = 100;
+
+/// studies.diagnosis.setup.applied and .dataset as text ("" when absent), to notice Apply and its
+/// undo.
+std::string appliedKeyOf(const Project& project) {
+  const auto s = project.studies.find(study::kDiagnosis);
+  if (s == project.studies.end() || !s->is_object()) return {};
+  const auto d = s->find(study::kSetup);
+  if (d == s->end() || !d->is_object()) return {};
+  const auto a = d->find("applied");
+  return a == d->end() ? std::string() : a->dump() + '\n' + d->value("dataset", nlohmann::json()).dump();
+}
+
 constexpr int kProgressSteps = 1000;
 
 struct RunResult {
@@ -62,9 +75,14 @@ struct SetupPage::Impl {
   SetupStudyFiles files;
   QString loadedKey;
   bool loaded = false;
-  setup::Model measModel;  ///< the model the measurements were read against
-  std::optional<setup::Measurements> measurements;
-  QString dataError;  ///< model or report could not be read
+  setup::Model measModel;                              ///< the model the measurements were read against
+  std::optional<setup::Measurements> measurements;     ///< with the applied effects
+  std::optional<setup::Measurements> rawMeasurements;  ///< as read
+  std::string appliedKey;                              ///< studies.diagnosis.setup.applied as text
+  std::vector<diagnose::AppliedSetupEffect> applied;
+  std::optional<diagnose::SetupPrediction> prediction, declared;
+  QString dataError;     ///< model or report could not be read
+  QString appliedError;  ///< studies.diagnosis.setup.applied is invalid (also in dataError)
   std::optional<setup::SetupInstance> instance;
   std::optional<SetupRunOutcome> exact;
   // The running run.
@@ -200,6 +218,19 @@ SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
   connect(cancel_, &QPushButton::clicked, this, &SetupPage::cancelRun);
   connect(clearRuns_, &QPushButton::clicked, this, [this] { convergence_->clearRuns(); });
   connect(budget_, &QSpinBox::valueChanged, this, [this](int v) { convergence_->setBudget(v); });
+  // The run settings are studies.setup.method / budget / seed (undoable edits; undo moves the controls).
+  const auto files = [this] {
+    return setupStudyFiles(document_->project(), document_->fileName().toStdString());
+  };
+  bindStudySetting(
+      document_, method_, QString::fromLatin1(study::kSetup), QStringLiteral("/method"),
+      [files] { return QString::fromStdString(files().method); }, tr("Change the setup method"));
+  bindStudySetting(
+      document_, budget_, QString::fromLatin1(study::kSetup), QStringLiteral("/budget"),
+      [files] { return static_cast<qint64>(files().budget); }, false, tr("Change the setup budget"));
+  bindStudySetting(
+      document_, seed_, QString::fromLatin1(study::kSetup), QStringLiteral("/seed"),
+      [files] { return static_cast<qint64>(files().seed); }, true, tr("Change the setup seed"));
 
   auto* top = new QHBoxLayout;
   top->addWidget(title);
@@ -235,9 +266,63 @@ void SetupPage::refresh() {
   const SetupStudyFiles files = setupStudyFiles(document_->project(), document_->fileName().toStdString());
   const QString key = document_->fileName() + QLatin1Char('\n') + QString::fromStdString(files.modelPath) +
                       QLatin1Char('\n') + QString::fromStdString(files.reportPath);
-  if (d->loaded && key == d->loadedKey) return;
+  if (d->loaded && key == d->loadedKey) {
+    // Apply on the diagnosis page (or its undo): the same files, another model of the deviations.
+    const std::string applied = appliedKeyOf(document_->project());
+    if (applied == d->appliedKey) return;
+    if (isRunning()) {
+      cancelRun();
+      waitForRun();
+    }
+    d->appliedKey = applied;
+    applyEffects();
+    onModelEdited();
+    return;
+  }
   d->loadedKey = key;
   reload();
+}
+
+void SetupPage::applyEffects() {
+  d->measurements.reset();
+  d->applied.clear();
+  d->prediction.reset();
+  d->declared.reset();
+  if (!d->rawMeasurements) return;
+  if (d->dataError == d->appliedError) d->dataError.clear();
+  d->appliedError.clear();
+  try {
+    setup::Measurements m = *d->rawMeasurements;
+    diagnose::SetupPrediction prediction, declared;
+    d->applied = applyStudyEffects(document_->project(), document_->fileName().toStdString(),
+                                   d->files.reportId, d->measModel, m, &prediction, &declared);
+    d->measurements = std::move(m);
+    d->prediction = prediction;
+    d->declared = declared;
+  } catch (const std::exception& e) {
+    d->appliedError = tr("The applied effects cannot be used: %1").arg(QString::fromStdString(e.what()));
+    d->dataError = d->appliedError;
+  }
+}
+
+QString SetupPage::infoText() const {
+  return info_->text();
+}
+
+const std::vector<diagnose::AppliedSetupEffect>& SetupPage::appliedEffects() const {
+  return d->applied;
+}
+
+std::optional<diagnose::SetupPrediction> SetupPage::prediction() const {
+  return d->prediction;
+}
+
+std::optional<diagnose::SetupPrediction> SetupPage::declaredPrediction() const {
+  return d->declared;
+}
+
+const setup::SetupInstance* SetupPage::instance() const {
+  return d->instance ? &*d->instance : nullptr;
 }
 
 void SetupPage::reload() {
@@ -248,7 +333,10 @@ void SetupPage::reload() {
   d->loaded = true;
   d->files = setupStudyFiles(document_->project(), document_->fileName().toStdString());
   d->dataError.clear();
+  d->appliedError.clear();
   d->measurements.reset();
+  d->rawMeasurements.reset();
+  d->appliedKey = appliedKeyOf(document_->project());
   const int methodIndex = method_->findData(QString::fromStdString(d->files.method));
   if (methodIndex >= 0) method_->setCurrentIndex(methodIndex);
   budget_->setValue(static_cast<int>(d->files.budget));
@@ -266,7 +354,8 @@ void SetupPage::reload() {
         d->dataError =
             tr("This project has no CMM report for the setup study (a dataset of kind \"cmm_report\").");
       } else {
-        d->measurements = setup::readMeasurements({d->files.reportPath}, model);
+        d->rawMeasurements = setup::readMeasurements({d->files.reportPath}, model);
+        applyEffects();
       }
     } catch (const std::exception& e) {
       d->dataError = QString::fromStdString(e.what());
@@ -340,6 +429,26 @@ void SetupPage::updateInfo() {
     if (d->instance)
       text += QLatin1Char(' ') + tr("Smallest error budget before correction f1 = %1 mm.")
                                      .arg(locale.toString(d->instance->f1Before(), 'f', 4));
+  }
+  if (!d->applied.empty() && d->prediction && d->declared) {
+    const diagnose::SetupPrediction& p = *d->prediction;
+    const diagnose::SetupPrediction& q = *d->declared;
+    QString figures = tr("deviations predicted for part %1; residual rms %2 mm (declared model %3 mm)")
+                          .arg(locale.toString(p.nextPart, 'g', 6), locale.toString(p.rmseMm, 'f', 4),
+                               locale.toString(q.rmseMm, 'f', 4));
+    if (p.nextPartRmseMm && q.nextPartRmseMm)
+      figures +=
+          tr(", last part predicted from the others %1 mm (declared %2 mm)")
+              .arg(locale.toString(*p.nextPartRmseMm, 'f', 4), locale.toString(*q.nextPartRmseMm, 'f', 4));
+    text += QLatin1Char('\n') + tr("Includes applied effects: %1 — %2.")
+                                    .arg(QString::fromStdString(diagnose::describe(d->applied)), figures);
+  }
+  if (const std::string elsewhere =
+          diagnose::appliedEffectsElsewhere(document_->project(), study::kSetup, d->files.reportId);
+      d->measurements && !elsewhere.empty()) {
+    text += QLatin1Char('\n') + tr("Effects applied on the Diagnosis page belong to the report %1 (the one "
+                                   "the diagnosis ran on); this report uses the declared model.")
+                                    .arg(QString::fromStdString(elsewhere));
   }
   if (!error_.isEmpty()) text += QLatin1Char('\n') + error_;
   info_->setText(text);
@@ -526,9 +635,11 @@ bool SetupPage::saveModel(QString* error) {
   // The report is checked against the saved model from now on, when it still matches it.
   if (!d->files.reportPath.empty()) {
     try {
-      d->measurements = setup::readMeasurements({d->files.reportPath}, saved);
+      setup::Measurements m = setup::readMeasurements({d->files.reportPath}, saved);
+      d->rawMeasurements = std::move(m);
       d->measModel = saved;
       d->dataError.clear();
+      applyEffects();
     } catch (const std::exception& e) {
       error_ = tr("The model was saved, but the CMM report does not match it any more (the runs use the "
                   "report as read against the previous model): %1")

@@ -10,11 +10,17 @@
 //  * Validation: the paper's statistical validation (Fig. 18).
 // The runs use the EDITED model (tolerance edits can be tried before saving); the measured
 // deviations come from the report read against the model file, matched by dimension id.
+// Effects added with the diagnosis page's Apply (studies.diagnosis.setup.applied: tool wear, datum
+// drift) are part of the study's model: the deviations are then those predicted for the next part
+// (widgets/setup/setupstudy.h applyStudyEffects); the info line says so, and undoing Apply brings
+// the declared model back.
 #include <QWidget>
 #include <memory>
 #include <optional>
 
+#include "core/diagnose/applied_setup_matching.h"
 #include "core/setup/model.h"
+#include "core/setup/objective.h"
 #include "core/setup/report.h"
 
 class QComboBox;
@@ -57,6 +63,16 @@ class SetupPage : public QWidget {
   QProgressBar* progressBar() const { return progress_; }
   /// Why the study cannot run (unreadable model or report, invalid edited model); empty when it can.
   QString errorMessage() const { return error_; }
+  /// The info text (model, report, applied effects).
+  QString infoText() const;
+  /// The effects of studies.diagnosis.setup.applied in use (empty: the declared model).
+  const std::vector<diagnose::AppliedSetupEffect>& appliedEffects() const;
+  /// Figures of the study's model (with the applied effects) and of the declared model, when the
+  /// report was read.
+  std::optional<diagnose::SetupPrediction> prediction() const;
+  std::optional<diagnose::SetupPrediction> declaredPrediction() const;
+  /// The instance the runs use (edited model, deviations of the study's model), when valid.
+  const setup::SetupInstance* instance() const;
 
   /// Starts a run in the worker thread with the panel's settings (false when one runs or the
   /// study cannot run; errorMessage() says why).
@@ -84,6 +100,8 @@ class SetupPage : public QWidget {
   void onRunFinished();
   void showOutcome(const SetupRunOutcome& outcome);
   void updateInfo();
+  /// d->measurements from the raw report and studies.diagnosis.setup.applied.
+  void applyEffects();
   void updateControls();
   /// The instance of the edited model with the report's deviations; nullopt (and error_) if not possible.
   bool ensureExact();

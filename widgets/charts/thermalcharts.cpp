@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/thermal/thermal_log.h"
+#include "widgets/common/palette.h"
 
 namespace metrofit {
 namespace {
@@ -172,7 +173,7 @@ QColor thermalChannelColor(const ThermalLog& log, int channelIndex) {
 }
 
 QColor thermalPhaseColor(ThermalPhaseKind kind) {
-  return kind == ThermalPhaseKind::Heating ? QColor(0xfb, 0xe0, 0xd2) : QColor(0xd8, 0xe8, 0xf6);
+  return kind == ThermalPhaseKind::Heating ? palette::heatingFill() : palette::coolingFill();
 }
 
 QString displayUnit(const std::string& unit) {

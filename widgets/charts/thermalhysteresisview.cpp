@@ -8,6 +8,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QStackedWidget>
@@ -23,6 +24,8 @@
 #include "core/thermal/thermal_log.h"
 #include "widgets/charts/thermalcharts.h"
 #include "widgets/charts/thermalmodelcharts.h"
+#include "widgets/common/chartexport.h"
+#include "widgets/common/tablecopy.h"
 
 namespace metrofit {
 
@@ -45,6 +48,7 @@ struct ThermalHysteresisView::Impl {
     auto* view = new QChartView(chart, parent);
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumHeight(minHeight);
+    enableChartExport(view, QStringLiteral("thermal-hysteresis"));
     return view;
   }
 
@@ -89,11 +93,11 @@ struct ThermalHysteresisView::Impl {
       const thermal::SensorHysteresis& h = analysis.sensors[static_cast<std::size_t>(r)];
       const QString unit = log.indexOf(h.sensor) >= 0 ? displayUnit(log.channel(h.sensor).unit) : QString();
       const QStringList cells = {QString::fromStdString(h.sensor),
-                                 QString::number(h.loopArea, 'f', 2),
-                                 QString::number(h.normalisedLoopArea, 'f', 3),
-                                 QString::number(h.tauMin, 'f', 1),
-                                 QString::number(h.r2, 'f', 3),
-                                 QString::number(h.r2Static, 'f', 3)};
+                                 QLocale().toString(h.loopArea, 'f', 2),
+                                 QLocale().toString(h.normalisedLoopArea, 'f', 3),
+                                 QLocale().toString(h.tauMin, 'f', 1),
+                                 QLocale().toString(h.r2, 'f', 3),
+                                 QLocale().toString(h.r2Static, 'f', 3)};
       for (int c = 0; c < cells.size(); ++c) {
         auto* item = new QTableWidgetItem(cells[c]);
         item->setTextAlignment(c == 0 ? (Qt::AlignLeft | Qt::AlignVCenter)
@@ -126,6 +130,7 @@ ThermalHysteresisView::ThermalHysteresisView(QWidget* parent) : QWidget(parent),
   d->stack->addWidget(d->message);
 
   d->table = new QTableWidget(0, 6, this);
+  enableTableCopy(d->table);
   d->table->setObjectName(QStringLiteral("hysteresisTable"));
   d->table->setHorizontalHeaderLabels(
       {tr("sensor"), tr("loop area"), tr("loop / ranges"), tr("lag τ (min)"), tr("R² lag"), tr("R² static")});

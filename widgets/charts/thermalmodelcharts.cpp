@@ -16,6 +16,7 @@
 #include <limits>
 
 #include "widgets/charts/thermalcharts.h"
+#include "widgets/common/palette.h"
 
 namespace metrofit {
 namespace {
@@ -157,18 +158,17 @@ bool fitted(const thermal::ThermalEvaluation& ev, std::size_t rows) {
 }  // namespace
 
 QColor thermalPhaseLineColor(ThermalPhaseKind kind) {
-  const QColor band = thermalPhaseColor(kind);
-  return QColor::fromHsv(band.hsvHue(), 210, 210);
+  return kind == ThermalPhaseKind::Heating ? palette::heatingLine() : palette::coolingLine();
 }
 
 QColor thermalModelColor(thermal::ThermalModelKind kind) {
   switch (kind) {
     case thermal::ThermalModelKind::Gnnmci:
-      return QColor(0xd6, 0x27, 0x28);
+      return palette::modelGnnmci();
     case thermal::ThermalModelKind::Gmc:
-      return QColor(0x2c, 0xa0, 0x2c);
+      return palette::modelGmc();
     case thermal::ThermalModelKind::Mlp:
-      return QColor(0x1f, 0x77, 0xb4);
+      return palette::modelMlp();
   }
   return QColor(Qt::black);
 }
@@ -269,7 +269,7 @@ QChart* makeModelComparisonChart(const ThermalLog& log, const ThermalComparison&
   Range measured;
   QLineSeries* m = timeSeries(s.timeMin, s.target, time.scale, options.maxPointsPerSeries, &measured);
   m->setName(ModelChartsText::tr("measured"));
-  m->setPen(QPen(Qt::black, 2.0));
+  m->setPen(QPen(palette::measured(), 2.0));
   chart->addSeries(m);
   m->attachAxis(time.axis);
   m->attachAxis(y);
@@ -351,7 +351,7 @@ QChart* makeModularChart(const ThermalLog& testLog, const ModularComparison& mod
   Range measured;
   QLineSeries* m = timeSeries(s.timeMin, s.target, time.scale, options.maxPointsPerSeries, &measured);
   m->setName(ModelChartsText::tr("measured (combined test)"));
-  m->setPen(QPen(Qt::black, 2.0));
+  m->setPen(QPen(palette::measured(), 2.0));
   chart->addSeries(m);
   m->attachAxis(time.axis);
   m->attachAxis(y);

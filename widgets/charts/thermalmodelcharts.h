@@ -27,7 +27,7 @@ namespace metrofit {
 
 /// Line colour of a phase: the hue of thermalPhaseColor(kind), saturation 210, value 210.
 QColor thermalPhaseLineColor(ThermalPhaseKind kind);
-/// Colour of a model's line (measured: black).
+/// Colour of a model's line (palette::modelGnnmci/modelGmc/modelMlp; measured: palette::measured()).
 QColor thermalModelColor(thermal::ThermalModelKind kind);
 /// "GNNMCI(1,N)", "GMC(1,N)", "MLP".
 QString thermalModelName(thermal::ThermalModelKind kind);

@@ -13,6 +13,7 @@
 #include <QKeySequence>
 #include <QLabel>
 #include <QListWidget>
+#include <QLocale>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -31,10 +32,13 @@
 #include <mutex>
 
 #include "core/common/run.h"
+#include "core/diagnose/thermal_applied.h"
 #include "core/thermal/thermal_log.h"
 #include "widgets/charts/thermalcharts.h"
 #include "widgets/charts/thermalcomparison.h"
 #include "widgets/charts/thermalmodelcharts.h"
+#include "widgets/common/chartexport.h"
+#include "widgets/common/tablecopy.h"
 
 namespace metrofit {
 namespace {
@@ -48,7 +52,8 @@ struct TrainResult {
 
 QString number(double v, int decimals) {
   if (!std::isfinite(v)) return QStringLiteral("—");
-  return std::abs(v) >= 1e6 ? QString::number(v, 'g', 3) : QString::number(v, 'f', decimals);
+  const QLocale locale;
+  return std::abs(v) >= 1e6 ? locale.toString(v, 'g', 3) : locale.toString(v, 'f', decimals);
 }
 
 /// Decimals for values of this size.
@@ -56,10 +61,48 @@ int decimalsFor(double scale) {
   return scale >= 100.0 ? 1 : (scale >= 1.0 ? 2 : 3);
 }
 
+/// Which models use the applied effects after a training, with the held-out RMSE of both variants:
+/// "Applied effects lag:T2 (15.5 min): used by MLP; not used by GNNMCI(1,N), GMC(1,N) (held-out error
+/// would rise: 0.39 → 0.46 µm, 0.48 → 17.5 µm)."
+QString appliedChoiceText(const ThermalComparison& r, const QString& unit) {
+  double scale = 0.0;
+  for (double v : r.series.target) scale = std::max(scale, std::abs(v));
+  const int dec = decimalsFor(scale);
+  const QString u = unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
+  QStringList used, usedChange, notUsed, notUsedChange;
+  bool allRise = true;
+  for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+    const QString change =
+        ThermalModelView::tr("%1 → %2%3")
+            .arg(number(r.declaredHeldoutRmse[i], dec), number(r.appliedHeldoutRmse[i], dec), u);
+    if (r.usesApplied[i]) {
+      used << thermalModelName(kThermalModelOrder[i]);
+      usedChange << change;
+    } else {
+      notUsed << thermalModelName(kThermalModelOrder[i]);
+      notUsedChange << change;
+      allRise = allRise && r.appliedHeldoutRmse[i] > r.declaredHeldoutRmse[i];
+    }
+  }
+  const QString sep = QStringLiteral(", ");
+  QStringList parts;
+  if (!used.isEmpty()) {
+    parts << ThermalModelView::tr("used by %1 (held-out error %2)").arg(used.join(sep), usedChange.join(sep));
+  }
+  if (!notUsed.isEmpty()) {
+    parts << (allRise ? ThermalModelView::tr("not used by %1 (held-out error would rise: %2)")
+                      : ThermalModelView::tr("not used by %1 (held-out error would not fall: %2)"))
+                 .arg(notUsed.join(sep), notUsedChange.join(sep));
+  }
+  return ThermalModelView::tr("Applied effects %1: %2.")
+      .arg(QString::fromStdString(r.appliedText), parts.join(QStringLiteral("; ")));
+}
+
 QChartView* newChartView(QWidget* parent, int minHeight) {
   auto* view = new QChartView(parent);
   view->setRenderHint(QPainter::Antialiasing);
   view->setMinimumHeight(minHeight);
+  enableChartExport(view, QStringLiteral("thermal-models"));
   return view;
 }
 
@@ -93,6 +136,8 @@ struct ThermalModelView::Impl {
   QPushButton* cancelButton = nullptr;
   QProgressBar* progress = nullptr;
   QLabel* status = nullptr;
+  QLabel* appliedLabel = nullptr;
+  nlohmann::json applied = nlohmann::json::array();  ///< studies.diagnosis.thermal.applied for this log
   QChartView* trainingChart = nullptr;
   // Results.
   QChartView* comparisonChart = nullptr;
@@ -124,7 +169,42 @@ struct ThermalModelView::Impl {
     }
     s.trainFraction = fraction->value();
     s.seed = static_cast<std::uint64_t>(seed->value());
+    s.applied = applied;
     return s;
+  }
+
+  /// The line that says which applied effects the models use (hidden when none): before a training
+  /// (or when the settings changed since) that each model will be fitted with and without them, after
+  /// it which models keep them.
+  void updateAppliedLabel() {
+    if (!applied.is_array() || !applied.empty()) {
+      const ThermalModelSettings s = readControls();
+      try {
+        const diagnose::AppliedThermalEffects a =
+            diagnose::appliedThermalEffects(s.applied, log, s.target, s.inputs);
+        if (result && !result->cancelled && result->settings == s && !result->appliedText.empty()) {
+          appliedLabel->setText(appliedChoiceText(*result, targetUnit));
+        } else {
+          appliedLabel->setText(
+              ThermalModelView::tr("Applied effects %1: Train (Ctrl+R) fits each model with "
+                                   "and without them and keeps the lower held-out error.")
+                  .arg(QString::fromStdString(a.text())));
+        }
+        appliedLabel->setToolTip(ThermalModelView::tr(
+            "Effects added with Apply on the Diagnosis page (lagged inputs, extra input columns, a drift "
+            "term). Each model is fitted with the declared inputs and with the effects (same seed) and keeps "
+            "the variant with the lower held-out error: an effect never makes a model worse on the held-out "
+            "rows. Undo the Apply to fit the declared model only."));
+      } catch (const std::exception& e) {
+        appliedLabel->setText(
+            ThermalModelView::tr("Applied effects cannot be used: %1").arg(QString::fromStdString(e.what())));
+        appliedLabel->setToolTip(QString());
+      }
+      appliedLabel->setVisible(true);
+    } else {
+      appliedLabel->clear();
+      appliedLabel->setVisible(false);
+    }
   }
 
   void writeControls(const ThermalModelSettings& s) {
@@ -143,6 +223,8 @@ struct ThermalModelView::Impl {
     seed->setValue(static_cast<int>(std::min<std::uint64_t>(s.seed, std::numeric_limits<int>::max())));
     const int ti = log.indexOf(targetName.toStdString());
     targetUnit = ti >= 0 ? displayUnit(log.channels[static_cast<std::size_t>(ti)].unit) : QString();
+    applied = s.applied;
+    updateAppliedLabel();
   }
 
   void setRunning(bool running) {
@@ -167,7 +249,8 @@ struct ThermalModelView::Impl {
       const std::lock_guard lock(liveMutex);
       best = liveBest;
     }
-    const QString unit = targetUnit.isEmpty() ? QString() : QStringLiteral(" (%1²)").arg(targetUnit);
+    const QString unit =
+        targetUnit.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(targetUnit + QStringLiteral("²"));
     QChart* chart = makeTrainingChart(best, ThermalModelView::tr("fitness"));
     chart->setToolTip(
         ThermalModelView::tr("Best Eq. 2.9 fitness (sum of squared residuals%1) per PSO iteration")
@@ -220,7 +303,7 @@ struct ThermalModelView::Impl {
           metrics->item(row, 0)->setToolTip(
               ThermalModelView::tr("Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows "
                                    "without bound on the held-out rows")
-                  .arg(ev.training.model.grey.b1, 0, 'g', 4));
+                  .arg(QLocale().toString(ev.training.model.grey.b1, 'g', 4)));
         }
       }
     }
@@ -236,7 +319,7 @@ struct ThermalModelView::Impl {
       if (ev.predicted.size() != r.series.rows()) continue;
       QString p = ThermalModelView::tr("%1 %2 s")
                       .arg(thermalModelName(kThermalModelOrder[i]))
-                      .arg(r.seconds[i], 0, 'f', 2);
+                      .arg(QLocale().toString(r.seconds[i], 'f', 2));
       if (i == 1 && ev.training.model.grey.b1 <= 0.0) p += ThermalModelView::tr(" (unstable: b1 ≤ 0)");
       parts << p;
     }
@@ -245,6 +328,7 @@ struct ThermalModelView::Impl {
                         .arg(r.models[0].heldoutRows)
                         .arg(parts.join(QStringLiteral(", "))));
     progress->setValue(kProgressMax);
+    updateAppliedLabel();
   }
 
   void showModular() {
@@ -257,9 +341,9 @@ struct ThermalModelView::Impl {
         ThermalModelView::tr(
             "<b>Modular case:</b> GNNMCI(1,N) fitted on the Z and C tests reduces the combined "
             "test's error by %1 % (GMC(1,N) %2 %, MLP %3 %).")
-            .arg(m.models[0].reductionPeak * 100.0, 0, 'f', 1)
-            .arg(m.models[1].reductionPeak * 100.0, 0, 'f', 1)
-            .arg(m.models[2].reductionPeak * 100.0, 0, 'f', 1));
+            .arg(QLocale().toString(m.models[0].reductionPeak * 100.0, 'f', 1))
+            .arg(QLocale().toString(m.models[1].reductionPeak * 100.0, 'f', 1))
+            .arg(QLocale().toString(m.models[2].reductionPeak * 100.0, 'f', 1)));
     modularTable->setRowCount(0);
     QString unit;
     if (const int ti = modularLog.indexOf(m.target); ti >= 0)
@@ -352,6 +436,11 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   d->status->setObjectName(QStringLiteral("thermalModelStatus"));
   d->status->setWordWrap(true);
   d->status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  d->appliedLabel = new QLabel(this);
+  d->appliedLabel->setObjectName(QStringLiteral("thermalModelApplied"));
+  d->appliedLabel->setWordWrap(true);
+  d->appliedLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  d->appliedLabel->setVisible(false);
   d->trainingChart = newChartView(this, 150);
   d->trainingChart->setToolTip(tr("Best fitness of the GNNMCI(1,N) swarm (Eq. 2.9) per PSO iteration"));
   d->refresh = new QTimer(this);
@@ -375,6 +464,7 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   inputsLabel->setBuddy(d->inputs);
   side->addWidget(inputsLabel);
   side->addWidget(d->inputs, 1);
+  side->addWidget(d->appliedLabel);
   side->addLayout(buttons);
   side->addWidget(d->progress);
   side->addWidget(d->status);
@@ -387,6 +477,7 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   d->residualChart = newChartView(this, 130);
   d->residualChart->setObjectName(QStringLiteral("thermalModelResidualChart"));
   d->metrics = new QTableWidget(0, 6, this);
+  enableTableCopy(d->metrics);
   d->metrics->setObjectName(QStringLiteral("thermalModelMetrics"));
   d->metrics->setHorizontalHeaderLabels({tr("model"), tr("rows"), tr("R"), tr("RMSE"), tr("E"), tr("band")});
   d->metrics->horizontalHeaderItem(2)->setToolTip(tr("Correlation coefficient of measured and predicted"));
@@ -402,6 +493,7 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   d->modularText = new QLabel(d->modularGroup);
   d->modularText->setWordWrap(true);
   d->modularTable = new QTableWidget(0, 6, d->modularGroup);
+  enableTableCopy(d->modularTable);
   d->modularTable->setObjectName(QStringLiteral("thermalModularTable"));
   d->modularTable->verticalHeader()->setVisible(false);
   d->modularTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -474,6 +566,7 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   });
 
   auto edited = [this] {
+    d->updateAppliedLabel();
     if (d->result) d->status->setText(tr("Settings changed: Train (Ctrl+R) to update the results."));
     emit settingsEdited();
   };
@@ -522,6 +615,7 @@ void ThermalModelView::setLog(const ThermalLog& log, const ThermalModelSettings&
   }
   d->writeControls(settings);
   d->clearResults();
+  d->updateAppliedLabel();
   {
     const std::lock_guard lock(d->liveMutex);
     d->liveBest.clear();
@@ -537,7 +631,11 @@ ThermalModelSettings ThermalModelView::settings() const {
 }
 
 void ThermalModelView::setSettings(const ThermalModelSettings& settings) {
+  const bool appliedChanged = settings.applied != d->applied;
   d->writeControls(settings);
+  // Apply / undo on the diagnosis page: the results shown were fitted with the other model.
+  if (appliedChanged && d->result)
+    d->status->setText(tr("Applied effects changed: Train (Ctrl+R) to update the results."));
 }
 
 void ThermalModelView::train() {

@@ -13,6 +13,7 @@
 
 #include "core/thermal/thermal_log.h"
 #include "widgets/charts/thermalcharts.h"
+#include "widgets/common/chartexport.h"
 
 namespace metrofit {
 
@@ -72,6 +73,7 @@ QIcon swatch(const QColor& color, bool dashed) {
 
 ThermalTrendView::ThermalTrendView(QWidget* parent) : QWidget(parent), d(std::make_unique<Impl>()) {
   d->chartView = new QChartView(this);
+  enableChartExport(d->chartView, QStringLiteral("thermal-trend"));
   d->chartView->setObjectName(QStringLiteral("thermalTrendChart"));
   d->chartView->setRenderHint(QPainter::Antialiasing);
   d->chartView->setMinimumSize(360, 240);

@@ -1,4 +1,6 @@
 #include "widgets/diagnose/residualplot.h"
+#include "widgets/common/chartexport.h"
+#include "widgets/common/palette.h"
 
 #include <QBarCategoryAxis>
 #include <QBarSeries>
@@ -24,8 +26,8 @@
 namespace metrofit {
 namespace {
 
-const QColor kBefore(0x9e, 0x9e, 0x9e);
-const QColor kAfter(0x21, 0x66, 0xac);
+const QColor kBefore = palette::before();
+const QColor kAfter = palette::after();
 
 struct Range {
   double lo = std::numeric_limits<double>::infinity();
@@ -100,7 +102,7 @@ Axes drawAxes(QPainter& p, const QRectF& rect, const Range& xr, const Range& yr,
   p.setFont(bold);
   p.drawText(QRectF(rect.left(), rect.top(), rect.width(), line * 1.4), Qt::AlignCenter, title);
   p.setFont(f);
-  p.setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 0));
+  p.setPen(QPen(palette::grid(), 0));
   for (double v : yt) {
     const double y = a.map(xr.lo, v).y();
     p.drawLine(QPointF(a.area.left(), y), QPointF(a.area.right(), y));
@@ -263,7 +265,8 @@ double paintResidualVectors(QPainter& p, const QRectF& rect, const diagnose::Res
   }
   p.fillRect(rect, Qt::white);
   const Axes a =
-      drawAxes(p, rect, xp, yp, titleText, QStringLiteral("x (mm)"), QStringLiteral("y (mm)"), fontPx);
+      drawAxes(p, rect, xp, yp, titleText, QCoreApplication::translate("metrofit::ResidualPlot", "x (mm)"),
+               QCoreApplication::translate("metrofit::ResidualPlot", "y (mm)"), fontPx);
   p.setClipRect(a.area);
   const double head = std::max(2.0, fontPx * 0.45);
   for (const auto& v : plot.vectors) {
@@ -334,6 +337,7 @@ ResidualPlotView::ResidualPlotView(QWidget* parent)
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(stack_);
+  enableChartExport(this, QStringLiteral("diagnosis-residual"));
   clear();
 }
 
@@ -447,6 +451,7 @@ class ErrorBarsView::Charts {
 };
 
 ErrorBarsView::ErrorBarsView(QWidget* parent) : QWidget(parent), charts_(new Charts) {
+  enableChartExport(this, QStringLiteral("diagnosis-before-after"));
   charts_->view = new QChartView(this);
   charts_->view->setRenderHint(QPainter::Antialiasing);
   charts_->view->setMinimumSize(300, 200);

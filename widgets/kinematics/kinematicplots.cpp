@@ -1,4 +1,5 @@
 #include "widgets/kinematics/kinematicplots.h"
+#include "widgets/common/palette.h"
 
 #include <QCoreApplication>
 #include <QFont>
@@ -106,6 +107,23 @@ double drawLegend(QPainter& p, const QRectF& area, const std::vector<LegendItem>
   return height;
 }
 
+/// The height drawLegend() uses for `items` in an area `width` wide (same placement, no drawing).
+double legendHeight(double width, const std::vector<LegendItem>& items, const PlotStyle& s) {
+  if (items.empty()) return 0.0;
+  const QFontMetricsF fm(plotFont(s, 0.95));
+  const double swatch = s.fontPx * 1.6, gap = s.fontPx * 0.5, line = fm.height() * 1.2;
+  double x = 0.0, y = 0.0;
+  for (const LegendItem& item : items) {
+    const double w = swatch + gap * 0.6 + fm.horizontalAdvance(item.text);
+    if (x > 0.0 && x + w > width) {
+      x = 0.0;
+      y += line;
+    }
+    x += w + gap * 2.0;
+  }
+  return y + line;
+}
+
 /// Frame, grid, tick labels and axis titles of a Cartesian plot. mapX / mapY give pixels.
 template <class MapX, class MapY>
 void drawAxes(QPainter& p, const QRectF& plot, double x0, double x1, double xStep, double y0, double y1,
@@ -114,7 +132,7 @@ void drawAxes(QPainter& p, const QRectF& plot, double x0, double x1, double xSte
   const QFont f = plotFont(s, 0.9);
   const QFontMetricsF fm(f);
   p.setFont(f);
-  const QPen grid = pen(QColor(225, 225, 225), 0.8);
+  const QPen grid = pen(palette::grid(), 0.8);
   const int xd = integerX ? 0 : decimalsFor(xStep), yd = decimalsFor(yStep);
   for (double v : ticks(y0, y1, yStep)) {
     const double y = mapY(v);
@@ -122,7 +140,7 @@ void drawAxes(QPainter& p, const QRectF& plot, double x0, double x1, double xSte
     p.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
     p.setPen(Qt::black);
     p.drawText(QRectF(plot.left() - s.fontPx * 8.0, y - fm.height() / 2, s.fontPx * 7.5, fm.height()),
-               Qt::AlignRight | Qt::AlignVCenter, QString::number(v, 'f', yd));
+               Qt::AlignRight | Qt::AlignVCenter, s.locale.toString(v, 'f', yd));
   }
   for (double v : ticks(x0, x1, xStep)) {
     const double x = mapX(v);
@@ -130,7 +148,7 @@ void drawAxes(QPainter& p, const QRectF& plot, double x0, double x1, double xSte
     p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
     p.setPen(Qt::black);
     p.drawText(QRectF(x - s.fontPx * 5.0, plot.bottom() + s.fontPx * 0.3, s.fontPx * 10.0, fm.height()),
-               Qt::AlignHCenter | Qt::AlignTop, QString::number(v, 'f', xd));
+               Qt::AlignHCenter | Qt::AlignTop, s.locale.toString(v, 'f', xd));
   }
   p.setPen(pen(QColor(90, 90, 90), 1.0));
   p.setBrush(Qt::NoBrush);
@@ -180,33 +198,40 @@ void deviationRange(const PolarPlotData& d, double* lo, double* hi) {
 
 namespace kinematic_colour {
 QColor nominal() {
-  return QColor(110, 110, 110);
+  return palette::nominal();
 }
 QColor counterClockwise() {
-  return QColor(31, 119, 180);
+  return palette::measured();
 }
 QColor clockwise() {
-  return QColor(230, 85, 13);
+  return palette::measuredSecond();
 }
 QColor references() {
-  return QColor(44, 160, 44);
+  return palette::compensated();
 }
 QColor expected() {
-  return QColor(148, 103, 189);
+  return palette::predicted();
 }
 QColor limit() {
-  return QColor(214, 39, 40);
+  return palette::controlLimit();
 }
 QColor centreLine() {
-  return QColor(44, 160, 44);
+  return palette::centreLine();
 }
 QColor specification() {
-  return QColor(120, 30, 120);
+  return palette::specLimit();
 }
 QColor bars() {
-  return QColor(107, 174, 214);
+  return palette::histogramBars();
 }
 }  // namespace kinematic_colour
+
+PlotStyle screenPlotStyle() {
+  PlotStyle s;
+  s.locale = QLocale();
+  s.locale.setNumberOptions(s.locale.numberOptions() | QLocale::OmitGroupSeparator);
+  return s;
+}
 
 double niceFloor(double value) {
   if (!(value > 0.0) || !std::isfinite(value)) return 1.0;
@@ -244,6 +269,31 @@ void PolarPlotData::autoScale() {
   }
 }
 
+namespace {
+
+/// The polar plot's legend entries (loops present, expected result, nominal circle).
+std::vector<LegendItem> polarLegendItems(const PolarPlotData& d) {
+  std::vector<LegendItem> items;
+  bool ccw = false, cw = false;
+  for (const CircularLoop& l : d.loops) (l.counterClockwise ? ccw : cw) = true;
+  if (ccw) items.push_back({kinematic_colour::counterClockwise(), PlotText::tr("measured, CCW loop")});
+  if (cw) items.push_back({kinematic_colour::clockwise(), PlotText::tr("measured, CW loop")});
+  if (!d.compensated.empty())
+    items.push_back({kinematic_colour::expected(), PlotText::tr("expected after compensation")});
+  items.push_back({kinematic_colour::nominal(), PlotText::tr("nominal R %1 mm").arg(d.radiusMm, 0, 'g', 6),
+                   Qt::DashLine});
+  return items;
+}
+
+/// The note under the legend (d after autoScale()).
+QString polarNote(const PolarPlotData& d, const PlotStyle& s) {
+  return PlotText::tr("plotted radius = R + k × radial deviation, k = %1; rings every %2 µm")
+      .arg(s.locale.toString(d.magnification, 'g', 6))
+      .arg(s.locale.toString(d.ringStepMm * 1000.0, 'g', 4));
+}
+
+}  // namespace
+
 PolarPlotLayout::PolarPlotLayout(const QRectF& area, const PolarPlotData& data, const PlotStyle& s) {
   PolarPlotData d = data;
   if (!(d.radiusMm > 0.0)) d.radiusMm = 1.0;
@@ -259,7 +309,14 @@ PolarPlotLayout::PolarPlotLayout(const QRectF& area, const PolarPlotData& data, 
   while (jMin_ < -1 && radius_ + k_ * jMin_ * step_ <= 0.1 * radius_) ++jMin_;
 
   const double titleH = d.title.isEmpty() ? 0.0 : s.fontPx * 1.9;
-  const double legendH = s.fontPx * 1.25 * 4.3;
+  // Room for the legend and the note below it (more when a translation wraps them to more lines).
+  const double legendWidth = area.width() - 2 * s.fontPx;
+  const double noteH = QFontMetricsF(plotFont(s, 0.95))
+                           .boundingRect(QRectF(0, 0, std::max(1.0, legendWidth), 1e6),
+                                         Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, polarNote(d, s))
+                           .height();
+  const double legendH = std::max(s.fontPx * 1.25 * 4.3,
+                                  legendHeight(legendWidth, polarLegendItems(d), s) + noteH + s.fontPx * 0.3);
   title_ = QRectF(area.left(), area.top(), area.width(), titleH);
   legend_ = QRectF(area.left() + s.fontPx, area.bottom() - legendH, area.width() - 2 * s.fontPx, legendH);
   const double pad = s.fontPx * 2.4;
@@ -314,7 +371,7 @@ void paintPolarPlot(QPainter& p, const QRectF& area, const PolarPlotData& data, 
     const QString label = j == 0 ? PlotText::tr("0 µm")
                                  : QStringLiteral("%1%2 µm")
                                        .arg(j > 0 ? QStringLiteral("+") : QString())
-                                       .arg(QString::number(um, 'g', 4));
+                                       .arg(s.locale.toString(um, 'g', 4));
     const double t = 62.0 * kDegToRad;
     const QPointF at = c + QPointF(rho * std::cos(t), -rho * std::sin(t));
     p.setPen(QColor(80, 80, 80));
@@ -338,24 +395,12 @@ void paintPolarPlot(QPainter& p, const QRectF& area, const PolarPlotData& data, 
                s.lineWidth);
   }
   // Legend.
-  std::vector<LegendItem> items;
-  bool ccw = false, cw = false;
-  for (const CircularLoop& l : d.loops) (l.counterClockwise ? ccw : cw) = true;
-  if (ccw) items.push_back({kinematic_colour::counterClockwise(), PlotText::tr("measured, CCW loop")});
-  if (cw) items.push_back({kinematic_colour::clockwise(), PlotText::tr("measured, CW loop")});
-  if (!d.compensated.empty())
-    items.push_back({kinematic_colour::expected(), PlotText::tr("expected after compensation")});
-  items.push_back({kinematic_colour::nominal(), PlotText::tr("nominal R %1 mm").arg(d.radiusMm, 0, 'g', 6),
-                   Qt::DashLine});
-  const double used = drawLegend(p, L.legendArea(), items, s);
+  const double used = drawLegend(p, L.legendArea(), polarLegendItems(d), s);
   p.setFont(plotFont(s, 0.95));
   p.setPen(Qt::black);
-  p.drawText(
-      QRectF(L.legendArea().left(), L.legendArea().top() + used, L.legendArea().width(), s.fontPx * 2.8),
-      Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
-      PlotText::tr("plotted radius = R + k × radial deviation, k = %1; rings every %2 µm")
-          .arg(QString::number(L.magnification(), 'g', 6))
-          .arg(QString::number(L.ringStepMm() * 1000.0, 'g', 4)));
+  p.drawText(QRectF(L.legendArea().left(), L.legendArea().top() + used, L.legendArea().width(),
+                    std::max(0.0, L.legendArea().height() - used)),
+             Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, polarNote(d, s));
   p.restore();
 }
 
@@ -484,10 +529,10 @@ void paintPathPlot(QPainter& p, const QRectF& area, const PathPlotData& d, const
   drawLegend(p, legend, items, s, true);
   p.setFont(plotFont(s, 0.9));
   p.setPen(Qt::black);
-  p.drawText(
-      L.plotArea().adjusted(s.fontPx * 0.5, 0, -s.fontPx * 0.5, -s.fontPx * 0.4),
-      Qt::AlignRight | Qt::AlignBottom,
-      PlotText::tr("deviations from the nominal point × %1").arg(QString::number(L.magnification(), 'g', 6)));
+  p.drawText(L.plotArea().adjusted(s.fontPx * 0.5, 0, -s.fontPx * 0.5, -s.fontPx * 0.4),
+             Qt::AlignRight | Qt::AlignBottom,
+             PlotText::tr("deviations from the nominal point × %1")
+                 .arg(s.locale.toString(L.magnification(), 'g', 6)));
   p.restore();
 }
 
@@ -574,9 +619,10 @@ void paintControlChart(QPainter& p, const QRectF& area, const XbarRChart& chart,
     Qt::PenStyle style;
     QString name;
   };
-  const Line lines[] = {{ucl, kinematic_colour::limit(), Qt::DashLine, QStringLiteral("UCL")},
-                        {cl, kinematic_colour::centreLine(), Qt::SolidLine, QStringLiteral("CL")},
-                        {lcl, kinematic_colour::limit(), Qt::DashLine, QStringLiteral("LCL")}};
+  const Line lines[] = {
+      {ucl, kinematic_colour::limit(), Qt::DashLine, PlotText::tr("UCL", "upper control limit")},
+      {cl, kinematic_colour::centreLine(), Qt::SolidLine, PlotText::tr("CL", "centre line")},
+      {lcl, kinematic_colour::limit(), Qt::DashLine, PlotText::tr("LCL", "lower control limit")}};
   for (const Line& line : lines) {
     const double y = L.yOf(line.value);
     p.setPen(pen(line.colour, s.lineWidth, line.style));
@@ -585,7 +631,7 @@ void paintControlChart(QPainter& p, const QRectF& area, const XbarRChart& chart,
     p.drawText(
         QRectF(L.plotArea().right() + s.fontPx * 0.4, y - fm.height() / 2, s.fontPx * 7.4, fm.height()),
         Qt::AlignLeft | Qt::AlignVCenter,
-        QStringLiteral("%1 %2").arg(line.name, QString::number(line.value, 'f', decimals)));
+        QStringLiteral("%1 %2").arg(line.name, s.locale.toString(line.value, 'f', decimals)));
   }
   // The points, out-of-control ones in red.
   const auto& out = mean ? chart.xbarOutOfControl : chart.rOutOfControl;
@@ -682,8 +728,10 @@ void paintHistogram(QPainter& p, const QRectF& area, const HistogramData& d, con
     QColor colour;
     Qt::PenStyle style;
   };
-  const Mark marks[] = {{d.lsl, QStringLiteral("LSL"), kinematic_colour::specification(), Qt::SolidLine},
-                        {d.usl, QStringLiteral("USL"), kinematic_colour::specification(), Qt::SolidLine},
+  const Mark marks[] = {{d.lsl, PlotText::tr("LSL", "lower specification limit"),
+                         kinematic_colour::specification(), Qt::SolidLine},
+                        {d.usl, PlotText::tr("USL", "upper specification limit"),
+                         kinematic_colour::specification(), Qt::SolidLine},
                         {d.nominal, PlotText::tr("nominal"), kinematic_colour::nominal(), Qt::DashLine},
                         {d.mean, PlotText::tr("mean"), kinematic_colour::centreLine(), Qt::DashDotLine}};
   int row = 0;

@@ -18,6 +18,7 @@
 // Histogram: equal-width bins over [min, max] of the values, specification limits and the nominal
 // drawn as vertical lines.
 #include <QColor>
+#include <QLocale>
 #include <QPointF>
 #include <QRectF>
 #include <QString>
@@ -38,7 +39,13 @@ struct PlotStyle {
   double fontPx = 11.0;
   double lineWidth = 1.4;
   double pointRadius = 2.6;
+  /// Numbers on the plot: '.' decimals (C) in the report; the views use the user's locale
+  /// (screenPlotStyle()).
+  QLocale locale = QLocale::c();
 };
+
+/// The style of the on-screen views: the default sizes with the user's locale (no group separators).
+PlotStyle screenPlotStyle();
 
 /// The colours of the kinematics plots (views, legend and report agree).
 namespace kinematic_colour {

@@ -1,8 +1,11 @@
 #include "widgets/kinematics/kinematicsviews.h"
+#include "widgets/common/chartexport.h"
+#include "widgets/common/tablecopy.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QPainter>
 #include <QStackedLayout>
 #include <QTableWidget>
@@ -22,6 +25,7 @@ void fillWhite(QPainter& p, const QWidget* w) {
 // ---- path ----------------------------------------------------------------------------------------
 
 CircularPathView::CircularPathView(QWidget* parent) : QWidget(parent) {
+  enableChartExport(this, QStringLiteral("kinematics-path"));
   setMinimumSize(260, 260);
   setToolTip(
       tr("The XY path in mm: the nominal circle true to scale; the measured path, the compensated "
@@ -41,12 +45,13 @@ PathPlotLayout CircularPathView::layout() const {
 void CircularPathView::paintEvent(QPaintEvent*) {
   QPainter p(this);
   fillWhite(p, this);
-  if (data_.radiusMm > 0.0) paintPathPlot(p, QRectF(rect()), data_);
+  if (data_.radiusMm > 0.0) paintPathPlot(p, QRectF(rect()), data_, screenPlotStyle());
 }
 
 // ---- polar ----------------------------------------------------------------------------------------
 
 PolarDeviationView::PolarDeviationView(QWidget* parent) : QWidget(parent) {
+  enableChartExport(this, QStringLiteral("kinematics-polar"));
   setMinimumSize(260, 260);
   setToolTip(
       tr("Radial deviation of the measured path from the nominal circle, magnified (ballbar plot): "
@@ -67,12 +72,14 @@ PolarPlotLayout PolarDeviationView::layout() const {
 void PolarDeviationView::paintEvent(QPaintEvent*) {
   QPainter p(this);
   fillWhite(p, this);
-  if (data_.radiusMm > 0.0) paintPolarPlot(p, QRectF(rect()), data_);
+  if (data_.radiusMm > 0.0) paintPolarPlot(p, QRectF(rect()), data_, screenPlotStyle());
 }
 
 // ---- control chart ----------------------------------------------------------------------------------
 
 ControlChartView::ControlChartView(ControlChartKind kind, QWidget* parent) : QWidget(parent), kind_(kind) {
+  enableChartExport(
+      this, kind == ControlChartKind::Mean ? QStringLiteral("xbar-chart") : QStringLiteral("r-chart"));
   setMinimumSize(300, 160);
   setToolTip(kind == ControlChartKind::Mean
                  ? tr("Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ "
@@ -98,12 +105,13 @@ ControlChartLayout ControlChartView::layout() const {
 void ControlChartView::paintEvent(QPaintEvent*) {
   QPainter p(this);
   fillWhite(p, this);
-  if (chart_) paintControlChart(p, QRectF(rect()), *chart_, kind_, unit_);
+  if (chart_) paintControlChart(p, QRectF(rect()), *chart_, kind_, unit_, screenPlotStyle());
 }
 
 // ---- histogram -------------------------------------------------------------------------------------
 
 HistogramView::HistogramView(QWidget* parent) : QWidget(parent) {
+  enableChartExport(this, QStringLiteral("histogram"));
   setMinimumSize(300, 160);
   setToolTip(
       tr("Distribution of the values with the specification limits LSL/USL, the nominal and the mean."));
@@ -121,7 +129,7 @@ HistogramLayout HistogramView::layout() const {
 void HistogramView::paintEvent(QPaintEvent*) {
   QPainter p(this);
   fillWhite(p, this);
-  if (!data_.values.empty()) paintHistogram(p, QRectF(rect()), data_);
+  if (!data_.values.empty()) paintHistogram(p, QRectF(rect()), data_, screenPlotStyle());
 }
 
 // ---- SPC view ---------------------------------------------------------------------------------------
@@ -134,6 +142,7 @@ SpcView::SpcView(QWidget* parent)
       table_(new QTableWidget(this)),
       message_(new QLabel(this)) {
   table_->setObjectName(QStringLiteral("spcIndexTable"));
+  enableTableCopy(table_);
   table_->setColumnCount(2);
   table_->setHorizontalHeaderLabels({tr("index"), tr("value")});
   table_->verticalHeader()->hide();
@@ -185,7 +194,8 @@ void SpcView::setResult(const SpcResult& r, const std::vector<double>& values, c
   histogram_->setData(h);
 
   const QString u = unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
-  auto num = [](double v, int sig = 6) { return QString::number(v, 'g', sig); };
+  const QLocale locale;
+  auto num = [&locale](double v, int sig = 6) { return locale.toString(v, 'g', sig); };
   QList<QPair<QString, QString>> rows;
   rows.append({tr("feature"), name});
   rows.append({tr("subgroups × size"),
@@ -212,9 +222,9 @@ void SpcView::setResult(const SpcResult& r, const std::vector<double>& values, c
         {tr("LSL / USL"), QStringLiteral("%1 / %2").arg(num(*r.options.lsl, 8), num(*r.options.usl, 8)) + u});
   }
   rows.append(
-      {tr("Cp (Eq. 16)"), r.capability.cp ? QString::number(*r.capability.cp, 'f', 2) : tr("— (no limits)")});
+      {tr("Cp (Eq. 16)"), r.capability.cp ? locale.toString(*r.capability.cp, 'f', 2) : tr("— (no limits)")});
   rows.append(
-      {tr("Cpk"), r.capability.cpk ? QString::number(*r.capability.cpk, 'f', 2) : tr("— (no limits)")});
+      {tr("Cpk"), r.capability.cpk ? locale.toString(*r.capability.cpk, 'f', 2) : tr("— (no limits)")});
   rows.append({tr("natural tolerance (Eq. 17)"), num(r.capability.naturalTolerance, 4) + u});
   if (r.systematic) {
     const SystematicError& s = *r.systematic;
@@ -227,8 +237,8 @@ void SpcView::setResult(const SpcResult& r, const std::vector<double>& values, c
   }
   rows.append({tr("regression offset angle"),
                tr("%1° (slope %2%3 per sample, r² %4)")
-                   .arg(QString::number(r.trend.angleDeg, 'g', 3), num(r.trend.slope, 3), u,
-                        QString::number(r.trend.r2, 'f', 2))});
+                   .arg(locale.toString(r.trend.angleDeg, 'g', 3), num(r.trend.slope, 3), u,
+                        locale.toString(r.trend.r2, 'f', 2))});
   rows.append({tr("compensation"), QString::fromStdString(r.decision.reason)});
   table_->setRowCount(static_cast<int>(rows.size()));
   for (int i = 0; i < rows.size(); ++i) {

@@ -1,8 +1,11 @@
 #include "widgets/pointview/matchingcurveview.h"
+#include "widgets/common/chartexport.h"
+#include "widgets/common/palette.h"
 
 #include <QChart>
 #include <QChartView>
 #include <QLineSeries>
+#include <QLocale>
 #include <QLogValueAxis>
 #include <QPen>
 #include <QVBoxLayout>
@@ -23,9 +26,9 @@ struct MatchingCurveView::Impl {
 namespace {
 
 QColor curveColour(const QString& method, int index) {
-  if (method.contains(QLatin1String("SADE"), Qt::CaseInsensitive)) return QColor(0x1f, 0x77, 0xb4);
-  if (method.contains(QLatin1String("GA"), Qt::CaseInsensitive)) return QColor(0xd6, 0x27, 0x28);
-  static const QColor others[] = {QColor(0x2c, 0xa0, 0x2c), QColor(0x94, 0x67, 0xbd)};
+  if (method.contains(QLatin1String("SADE"), Qt::CaseInsensitive)) return palette::series(0);
+  if (method.contains(QLatin1String("GA"), Qt::CaseInsensitive)) return palette::series(3);
+  static const QColor others[] = {palette::series(2), palette::series(4)};
   return others[index % 2];
 }
 
@@ -37,6 +40,7 @@ MatchingCurveView::MatchingCurveView(QWidget* parent) : QWidget(parent), d(std::
   d->chart->legend()->setAlignment(Qt::AlignTop);
   d->chart->setMargins(QMargins(4, 4, 4, 4));
   d->view = new QChartView(d->chart, this);
+  enableChartExport(d->view, QStringLiteral("matching-optimisation"));
   d->view->setRenderHint(QPainter::Antialiasing);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -118,9 +122,9 @@ void MatchingCurveView::rebuild() {
   }
   if (d->optimum > 0.0) {
     auto* ref = new QLineSeries;
-    ref->setName(tr("least-squares optimum %1 mm").arg(d->optimum, 0, 'f', 5));
+    ref->setName(tr("least-squares optimum %1 mm").arg(QLocale().toString(d->optimum, 'f', 5)));
     ref->replace({QPointF(0.0, d->optimum), QPointF(xMax, d->optimum)});
-    QPen pen(QColor(0x40, 0x40, 0x40), 1.5, Qt::DashLine);
+    QPen pen(palette::reference(), 1.5, Qt::DashLine);
     ref->setPen(pen);
     chart->addSeries(ref);
     ref->attachAxis(x);

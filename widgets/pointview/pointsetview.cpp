@@ -25,6 +25,7 @@
 #include <QGuiApplication>
 #include <QImage>
 #include <QLabel>
+#include <QLocale>
 #include <QPointer>
 #include <QResizeEvent>
 #include <QSurfaceFormat>
@@ -58,6 +59,7 @@
 #include <Eigen/Geometry>
 
 #include "core/matching/probe_points.h"
+#include "widgets/common/palette.h"
 #include "widgets/pointview/vtkglwidget.h"
 
 namespace metrofit {
@@ -67,18 +69,22 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 
 constexpr double kBackground[3] = {1.0, 1.0, 1.0};
+/// A palette colour as VTK's RGB triple (widgets/common/palette.h: the deviation map of every view).
+std::array<double, 3> rgbOf(const QColor& c) {
+  return {c.redF(), c.greenF(), c.blueF()};
+}
 // Moreland, "Diverging Color Maps for Scientific Visualization" (ISVC 2009), cool-warm end points.
-constexpr double kColdEnd[3] = {0.230, 0.299, 0.754};
-constexpr double kWarmEnd[3] = {0.706, 0.016, 0.150};
+const std::array<double, 3> kColdEnd = rgbOf(palette::coldEnd());
+const std::array<double, 3> kWarmEnd = rgbOf(palette::warmEnd());
 constexpr double kNominalGrey[3] = {0.50, 0.50, 0.50};
 constexpr double kTextColour[3] = {0.10, 0.10, 0.10};
 constexpr double kFadedOpacity = 0.25;
 constexpr double kNominalPointSize = 5.0;
 constexpr double kMeasuredPointSize = 9.0;
 constexpr double kOutOfTolerancePointSize = 15.0;
-constexpr double kToleranceGreen[3] = {0.20, 0.63, 0.17};
-constexpr double kColdLight[3] = {0.55, 0.70, 0.95};
-constexpr double kWarmLight[3] = {0.98, 0.62, 0.45};
+const std::array<double, 3> kToleranceGreen = rgbOf(palette::inTolerance());
+const std::array<double, 3> kColdLight = rgbOf(palette::coldLight());
+const std::array<double, 3> kWarmLight = rgbOf(palette::warmLight());
 /// The scene takes the left part of the window, the scalar bar the strip right of it.
 constexpr double kSceneWidth = 0.84;
 /// Colour range used when every deviation is zero (1 µm).
@@ -284,7 +290,7 @@ struct PointSetScene {
     after.hide();
 
     scalarBar->SetLookupTable(colours);
-    scalarBar->SetTitle("deviation\n(mm)");
+    scalarBar->SetTitle(PointSetView::tr("deviation\n(mm)").toUtf8().constData());
     scalarBar->SetNumberOfLabels(5);
     scalarBar->SetLabelFormat("%.3g");
     scalarBar->SetMaximumNumberOfColors(256);
@@ -508,18 +514,18 @@ struct PointSetView::Impl {
     scene->before.setOpacity(fade ? kFadedOpacity : 1.0);
     scene->setColourRange(usedRange, tolerance);
     scene->scalarBar->SetVisibility(!nominal.empty());
-    const std::string tolText = tolerance > 0.0 ? "\ngreen: within +-" +
-                                                      QString::number(tolerance, 'g', 4).toStdString() +
-                                                      " mm; large: out of tolerance"
-                                                : std::string();
-
-    const std::string factor = QString::number(exaggeration, 'g', 4).toStdString();
-    std::string text = "grey: nominal points; coloured: measured, deviation vectors x" + factor;
+    const QLocale locale;
+    QString text = PointSetView::tr("grey: nominal points; coloured: measured, deviation vectors x%1")
+                       .arg(locale.toString(exaggeration, 'g', 4));
     if (fade) {
-      text += "\nafter matching: solid; before (nominal and measured): faded";
+      text +=
+          QLatin1Char('\n') + PointSetView::tr("after matching: solid; before (nominal and measured): faded");
     }
-    text += tolText;
-    scene->caption->SetInput(text.c_str());
+    if (tolerance > 0.0) {
+      text += QLatin1Char('\n') + PointSetView::tr("green: within +-%1 mm; large: out of tolerance")
+                                      .arg(locale.toString(tolerance, 'g', 4));
+    }
+    scene->caption->SetInput(text.toUtf8().constData());
     scene->caption->SetVisibility(!nominal.empty());
     scene->title->SetInput(title.c_str());
     scene->title->SetVisibility(!title.empty());

@@ -21,6 +21,7 @@
 #include <Eigen/Geometry>
 
 #include "core/matching/study.h"
+#include "widgets/common/palette.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
 
@@ -78,11 +79,9 @@ QColor mix(const QColor& a, const QColor& b, double t) {
 struct BandScale {
   double range = 1.0, tolerance = 0.05;
   QColor colour(double d) const {
-    static const QColor green = QColor::fromRgbF(0.20f, 0.63f, 0.17f);
-    static const QColor coldLight = QColor::fromRgbF(0.55f, 0.70f, 0.95f),
-                        coldEnd = QColor::fromRgbF(0.230f, 0.299f, 0.754f);
-    static const QColor warmLight = QColor::fromRgbF(0.98f, 0.62f, 0.45f),
-                        warmEnd = QColor::fromRgbF(0.706f, 0.016f, 0.150f);
+    static const QColor green = palette::inTolerance();
+    static const QColor coldLight = palette::coldLight(), coldEnd = palette::coldEnd();
+    static const QColor warmLight = palette::warmLight(), warmEnd = palette::warmEnd();
     if (std::abs(d) <= tolerance) return green;
     const double t = (std::abs(d) - tolerance) / std::max(range - tolerance, 1e-12);
     return d > 0 ? mix(warmLight, warmEnd, t) : mix(coldLight, coldEnd, t);
@@ -227,9 +226,10 @@ QString countText(std::size_t n, std::size_t of) {
 
 void writeStudy(ReportPainter& out, const ReportDataset& dataset,
                 const matching::MatchingStudySettings& settings) {
-  const ProbePointSet& set = *dataset.probes;
   const matching::MatchingStudyOptions& o = settings.options;
-  const matching::MatchingStudyResult res = matching::runMatchingStudy(set, o);
+  // The study's model: the probe points with the effects added by the diagnosis page's Apply.
+  const ProbePointSet set = matching::studyModelSet(*dataset.probes, o);
+  const matching::MatchingStudyResult res = matching::runMatchingStudy(*dataset.probes, o);
   const matching::MatchResult& primary = res.primaryRun();
   const double tol = o.toleranceMm;
 
@@ -246,6 +246,11 @@ void writeStudy(ReportPainter& out, const ReportDataset& dataset,
           .arg(QString::fromLatin1(machine::topologyName(o.machine.topology)))
           .arg(set.hasNormals ? ReportText::tr("along the nominal normal")
                               : ReportText::tr("distance |p − (sRq + t)|")));
+  if (!o.applied.empty())
+    out.paragraph(ReportText::tr("Includes applied effects: %1 (diagnosis, Apply). The nominal points were "
+                                 "deformed by them before matching, so the deviations and the machine "
+                                 "adjustments below are those of the model with these effects.")
+                      .arg(QString::fromStdString(o.applied.describe())));
 
   // The 3D views.
   double maxBefore = 0.0;

@@ -13,6 +13,7 @@
 #include <map>
 
 #include "core/setup/validation.h"
+#include "widgets/common/palette.h"
 
 namespace metrofit {
 
@@ -172,7 +173,7 @@ QChart* makeSetupConvergenceChart(const std::vector<SetupConvergenceRun>& runs,
     e1->setName(SetupChartsText::tr("exact optimum f1 = %1 mm").arg(exact->f1, 0, 'f', 4));
     e1->append(0.0, exact->f1);
     e1->append(x1, exact->f1);
-    e1->setPen(QPen(QColor(0x20, 0x20, 0x20), 1.5, Qt::DashDotLine));
+    e1->setPen(QPen(palette::reference(), 1.5, Qt::DashDotLine));
     chart->addSeries(e1);
     e1->attachAxis(x);
     e1->attachAxis(left);
@@ -221,10 +222,10 @@ QChart* makeSetupValidationChart(const setup::ValidationResult& result) {
 
   auto* before = new QLineSeries;
   before->setName(SetupChartsText::tr("before correction"));
-  before->setPen(QPen(QColor(0x80, 0x80, 0x80), 1.5));
+  before->setPen(QPen(palette::before(), 1.5));
   auto* exact = new QLineSeries;
   exact->setName(SetupChartsText::tr("exact optimum"));
-  exact->setPen(QPen(QColor(0x20, 0x20, 0x20), 1.5, Qt::DashLine));
+  exact->setPen(QPen(palette::reference(), 1.5, Qt::DashLine));
   std::map<std::string, QScatterSeries*> trials;
   std::map<QString, int> perMethod;
   for (std::size_t rank = 0; rank < order.size(); ++rank) {

@@ -1,4 +1,5 @@
 #include "widgets/setup/setupconvergenceview.h"
+#include "widgets/common/chartexport.h"
 
 #include <QChart>
 #include <QChartView>
@@ -21,6 +22,7 @@ struct SetupConvergenceView::Impl {
 
 SetupConvergenceView::SetupConvergenceView(QWidget* parent) : QWidget(parent), d(std::make_unique<Impl>()) {
   d->chartView = new QChartView(this);
+  enableChartExport(d->chartView, QStringLiteral("setup-convergence"));
   d->chartView->setObjectName(QStringLiteral("setupConvergenceChart"));
   d->chartView->setRenderHint(QPainter::Antialiasing);
   d->chartView->setMinimumSize(360, 240);

@@ -20,6 +20,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "widgets/common/tablecopy.h"
 #include "widgets/setup/setupgraphview.h"
 #include "widgets/setup/setupmodeleditor.h"
 
@@ -50,6 +51,7 @@ SetupGraphEditor::SetupGraphEditor(SetupModelEditor* editor, QWidget* parent)
       table_(new QTableWidget(this)),
       problems_(new QLabel(this)) {
   setObjectName(QStringLiteral("setupGraphEditor"));
+  enableTableCopy(table_);
   auto* toolbar = new QToolBar(this);
   toolbar_ = toolbar;
   toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);

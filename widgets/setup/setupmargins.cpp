@@ -1,4 +1,6 @@
 #include "widgets/setup/setupmargins.h"
+#include "widgets/common/chartexport.h"
+#include "widgets/common/palette.h"
 
 #include <QCoreApplication>
 #include <QFontMetricsF>
@@ -15,10 +17,10 @@ struct MarginsText {
 
 constexpr double kLegendRows = 1.6;  ///< legend height in row heights
 constexpr double kAxisRows = 1.6;    ///< axis height in row heights
-const QColor kZone(0xdf, 0xf1, 0xdc);
-const QColor kBefore(0x8c, 0x8c, 0x8c);
-const QColor kAfter(0x1f, 0x6f, 0xb4);
-const QColor kOut(0xd6, 0x27, 0x28);
+const QColor kZone = palette::toleranceZone();
+const QColor kBefore = palette::before();
+const QColor kAfter = palette::after();
+const QColor kOut = palette::outOfTolerance();
 
 double niceStep(double span) {
   const double raw = span / 6.0;
@@ -138,6 +140,7 @@ void paintSetupMargins(QPainter& painter, const QRectF& rect, const std::vector<
 }
 
 SetupMarginsWidget::SetupMarginsWidget(QWidget* parent) : QWidget(parent) {
+  enableChartExport(this, QStringLiteral("setup-margins"));
   setObjectName(QStringLiteral("setupMargins"));
   setMinimumWidth(420);
 }

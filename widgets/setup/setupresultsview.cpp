@@ -15,6 +15,7 @@
 #include <exception>
 
 #include "core/io/file_io.h"
+#include "widgets/common/tablecopy.h"
 #include "widgets/setup/setupcharts.h"
 #include "widgets/setup/setupmargins.h"
 
@@ -53,6 +54,7 @@ SetupResultsView::SetupResultsView(QWidget* parent)
   parts_->setWordWrap(true);
 
   table_->setObjectName(QStringLiteral("setupCorrectionsTable"));
+  enableTableCopy(table_);
   table_->setColumnCount(ColumnCount);
   table_->setHorizontalHeaderLabels({tr("Setup datum"), tr("Kind"), tr("Register"), tr("Correction (mm)")});
   table_->horizontalHeaderItem(ColCorrection)

@@ -21,6 +21,7 @@
 
 #include "core/setup/exact.h"
 #include "core/setup/validation.h"
+#include "widgets/common/chartexport.h"
 #include "widgets/setup/setupcharts.h"
 
 namespace metrofit {
@@ -106,6 +107,7 @@ SetupValidationView::SetupValidationView(QWidget* parent) : QWidget(parent), d(s
          "random errors (Eq. 12–13), each corrected by the exact method and by M trials of the "
          "chosen metaheuristics; the sets sorted by their budget before correction (Fig. 18)."));
   d->chartView = new QChartView(this);
+  enableChartExport(d->chartView, QStringLiteral("setup-validation"));
   d->chartView->setObjectName(QStringLiteral("setupValidationChart"));
   d->chartView->setRenderHint(QPainter::Antialiasing);
   d->chartView->setMinimumSize(360, 240);
