@@ -167,6 +167,8 @@ int main(int argc, char** argv) {
           item += *c;
         }
       }
+    } else if (a == "--seeds" && i + 1 < argc) {
+      optimOptions.seeds = std::max(1, std::atoi(argv[++i]));
     } else if (a == "--repeat" && i + 1 < argc)
       repeat = std::max(1, std::atoi(argv[++i]));
     else if (a == "--json" && i + 1 < argc)
