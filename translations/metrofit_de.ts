@@ -82,7 +82,7 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+21"/>
+        <location filename="../app/gui/main.cpp" line="+22"/>
         <source>Metrofit — a workbench for machining error compensation.</source>
         <translation>Metrofit — eine Werkbank für die Kompensation von Bearbeitungsfehlern.</translation>
     </message>
@@ -95,6 +95,16 @@
         <location line="+3"/>
         <source>dir</source>
         <translation>verzeichnis</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>User interface language for this run: en, de or pl (overrides the Preferences; the screenshots are in English without it).</source>
+        <translation>Sprache der Benutzeroberfläche für diesen Start: en, de oder pl (hat Vorrang vor den Einstellungen; ohne diese Option sind die Screenshots auf Englisch).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>language</source>
+        <translation>sprache</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -113,9 +123,168 @@
     </message>
 </context>
 <context>
+    <name>metrofit::Autosave</name>
+    <message>
+        <location filename="../app/gui/autosave.cpp" line="+121"/>
+        <source>cannot create the autosave folder %1</source>
+        <translation>der Ordner für die automatische Sicherung %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <location line="+56"/>
+        <source>The autosaved copy cannot be read: %1</source>
+        <translation>Die automatisch gesicherte Kopie kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="-42"/>
+        <location line="+51"/>
+        <location line="+30"/>
+        <source>Recover autosaved changes</source>
+        <translation>Automatisch gesicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <source>Metrofit was not closed properly. An autosaved copy of the unsaved project “%1” from %2 was found.
+
+Do you want to recover it?</source>
+        <translation>Metrofit wurde nicht ordnungsgemäß beendet. Eine automatisch gesicherte Kopie des ungespeicherten Projekts „%1“ vom %2 wurde gefunden.
+
+Möchten Sie sie wiederherstellen?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The project %1 has an autosaved copy from %2 that is newer than the file (saved %3). Metrofit was probably not closed properly.
+
+Do you want to recover the autosaved changes? They are opened as unsaved changes; the project file is only overwritten when you save.</source>
+        <translation>Zum Projekt %1 gibt es eine automatisch gesicherte Kopie vom %2, die neuer ist als die Datei (gespeichert %3). Metrofit wurde wahrscheinlich nicht ordnungsgemäß beendet.
+
+Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werden als ungespeicherte Änderungen geöffnet; die Projektdatei wird erst beim Speichern überschrieben.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Recover</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Discard</source>
+        <translation>&amp;Verwerfen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Keep for later</source>
+        <translation>&amp;Für später behalten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Open original</source>
+        <translation>&amp;Original öffnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open the autosaved content as unsaved changes</source>
+        <translation>Den automatisch gesicherten Inhalt als ungespeicherte Änderungen öffnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Delete the autosaved copy</source>
+        <translation>Die automatisch gesicherte Kopie löschen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Leave the autosaved copy where it is and continue without it</source>
+        <translation>Die automatisch gesicherte Kopie belassen und ohne sie fortfahren</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ChartExport</name>
+    <message>
+        <location filename="../widgets/common/chartexport.cpp" line="+190"/>
+        <source>Export chart as SVG</source>
+        <translation>Diagramm als SVG exportieren</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Export chart as PNG</source>
+        <translation>Diagramm als PNG exportieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>SVG drawings (*.svg)</source>
+        <translation>SVG-Zeichnungen (*.svg)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Chart exported to %1</source>
+        <translation>Diagramm nach %1 exportiert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cannot export the chart: %1</source>
+        <translation>Das Diagramm kann nicht exportiert werden: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Export as &amp;PNG…</source>
+        <translation>Als &amp;PNG exportieren…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save this chart as a PNG image (the size it has on screen)</source>
+        <translation>Dieses Diagramm als PNG-Bild speichern (in seiner Größe auf dem Bildschirm)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Export as &amp;SVG…</source>
+        <translation>Als &amp;SVG exportieren…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save this chart as an SVG drawing (lines and text stay sharp)</source>
+        <translation>Dieses Diagramm als SVG-Zeichnung speichern (Linien und Text bleiben scharf)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Copy image</source>
+        <translation>Bild &amp;kopieren</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Chart copied to the clipboard</source>
+        <translation>Diagramm in die Zwischenablage kopiert</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>the chart has no picture to export</source>
+        <translation>das Diagramm enthält kein Bild zum Exportieren</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+21"/>
+        <location line="+11"/>
+        <source>cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location line="-24"/>
+        <source>a 3D view can only be exported as PNG</source>
+        <translation>eine 3D-Ansicht kann nur als PNG exportiert werden</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Exported from Metrofit</source>
+        <translation>Aus Metrofit exportiert</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::CircularPathView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+27"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+31"/>
         <source>The XY path in mm: the nominal circle true to scale; the measured path, the compensated references and the expected result as deviations from the nominal point, magnified by the factor shown.</source>
         <translation>Die XY-Bahn in mm: der Nennkreis maßstabsgetreu; die gemessene Bahn, die kompensierten Sollwerte und das erwartete Ergebnis als Abweichungen vom Nennpunkt, vergrößert um den angegebenen Faktor.</translation>
     </message>
@@ -123,7 +292,7 @@
 <context>
     <name>metrofit::ControlChartView</name>
     <message>
-        <location line="+51"/>
+        <location line="+54"/>
         <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (seed 002, Eq. 18-19); red points are out of control.</source>
         <translation>Mittelwerte der Untergruppen mit Mittellinie (CL) und den Eingriffsgrenzen UCL/LCL = Mittelwert ± A2 · R̄ (Quelle 002, Gl. 18-19); rote Punkte liegen außerhalb der Grenzen.</translation>
     </message>
@@ -136,7 +305,7 @@
 <context>
     <name>metrofit::DatasetTable</name>
     <message>
-        <location filename="../app/gui/datasettable.cpp" line="+18"/>
+        <location filename="../app/gui/datasettable.cpp" line="+20"/>
         <source>Id</source>
         <translation>Kennung</translation>
     </message>
@@ -184,12 +353,12 @@
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+503"/>
+        <location line="+502"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-434"/>
+        <location line="-433"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
@@ -284,7 +453,7 @@
         <translation>Ber&amp;eich:</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+33"/>
         <location line="+125"/>
         <source>The diagnosis failed: %1</source>
         <translation>Die Diagnose ist fehlgeschlagen: %1</translation>
@@ -394,7 +563,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::ErrorBarsView</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="+453"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="+458"/>
         <source>rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model (grey) and the model with the accepted effects (blue)</source>
         <translation>rmse und größter |Fehler| der angepassten Daten, rmse der Testdaten (Thermik): das deklarierte Modell (grau) und das Modell mit den übernommenen Effekten (blau)</translation>
     </message>
@@ -465,7 +634,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::HistogramView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+29"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+30"/>
         <source>Distribution of the values with the specification limits LSL/USL, the nominal and the mean.</source>
         <translation>Verteilung der Werte mit den Toleranzgrenzen LSL/USL, dem Nennwert und dem Mittelwert.</translation>
     </message>
@@ -473,12 +642,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+314"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+371"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="-92"/>
         <source>measured, CCW loop</source>
         <translation>gemessen, Umlauf gegen den Uhrzeigersinn</translation>
     </message>
@@ -498,12 +667,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Nenn-R %1 mm</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>plotted radius = R + k × radial deviation, k = %1; rings every %2 µm</source>
         <translation>dargestellter Radius = R + k × radiale Abweichung, k = %1; Ringe alle %2 µm</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+188"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -538,12 +707,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>erwartet nachher</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>deviations from the nominal point × %1</source>
         <translation>Abweichungen vom Nennpunkt × %1</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>X-bar chart (subgroups of %1)</source>
         <translation>x̄-Karte (Untergruppen zu %1)</translation>
     </message>
@@ -568,7 +737,25 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Spannweite</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+15"/>
+        <source>UCL</source>
+        <comment>upper control limit</comment>
+        <translation>UCL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CL</source>
+        <comment>centre line</comment>
+        <translation>CL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LCL</source>
+        <comment>lower control limit</comment>
+        <translation>LCL</translation>
+    </message>
+    <message>
+        <location line="+80"/>
         <source>Histogram</source>
         <translation>Histogramm</translation>
     </message>
@@ -583,7 +770,19 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Anzahl</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+18"/>
+        <source>LSL</source>
+        <comment>lower specification limit</comment>
+        <translation>LSL</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>USL</source>
+        <comment>upper specification limit</comment>
+        <translation>USL</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>nominal</source>
         <translation>Nennwert</translation>
     </message>
@@ -596,7 +795,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+85"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+101"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -616,7 +815,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&amp;STEP-NC exportieren…</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Identify the actuator origin and orientation errors of the circular test (Levenberg-Marquardt, standard errors from the residuals) (F5)</source>
         <translation>Ursprungs- und Orientierungsfehler der Antriebe aus dem Kreisformtest identifizieren (Levenberg-Marquardt, Standardfehler aus den Residuen) (F5)</translation>
     </message>
@@ -671,12 +870,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&lt;b&gt;Identifizierte Fehler&lt;/b&gt; (Ursprung in µm, Winkel in Grad)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
+        <source>Effects added with Apply on the Diagnosis page: the identification, the compensated references and their exports include them. Undo the Apply to use the declared model again.</source>
+        <translation>Mit „Ins Modell übernehmen“ auf der Seite „Diagnose“ hinzugefügte Effekte: Die Identifikation, die kompensierten Sollwerte und deren Exporte berücksichtigen sie. Machen Sie die Übernahme rückgängig, um wieder das deklarierte Modell zu verwenden.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&lt;b&gt;Compensation&lt;/b&gt; of the nominal circle</source>
         <translation>&lt;b&gt;Kompensation&lt;/b&gt; des Nennkreises</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>&amp;Path</source>
         <translation>Bah&amp;n</translation>
     </message>
@@ -691,12 +895,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Kreisform&amp;test:</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>Compensate</source>
         <translation>Kompensieren</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+71"/>
         <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
         <translation>Dieses Projekt enthält keinen Kreisformtest. Fügen Sie einen Datensatz der Art „circular_test“ hinzu (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, ein Umlauf gegen und einer im Uhrzeigersinn), z. B. erzeugt mit metrofit-cli simulate circular.</translation>
     </message>
@@ -716,7 +920,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         </translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+10"/>
+        <source>Effects applied on the Diagnosis page belong to the circular test %1 (the one the diagnosis ran on); this test uses the declared model.</source>
+        <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zum Kreisformtest %1 (auf dem die Diagnose lief); dieser Test verwendet das deklarierte Modell.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Includes applied effects: %1</source>
+        <translation>Enthält übernommene Effekte: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
@@ -772,6 +986,11 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+1"/>
+        <source>Root mean square of the residual distances after identification, with the applied effects</source>
+        <translation>Quadratischer Mittelwert der Restabstände nach der Identifikation, mit den übernommenen Effekten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Root mean square of the residual distances after identification</source>
         <translation>Quadratischer Mittelwert der Restabstände nach der Identifikation</translation>
     </message>
@@ -779,6 +998,16 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <location line="+2"/>
         <source>iterations</source>
         <translation>Iterationen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>RMS, declared model only (µm)</source>
+        <translation>RMS, nur deklariertes Modell (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The residual of the declared model (origin and axis angles, no applied effects)</source>
+        <translation>Das Residuum des deklarierten Modells (Ursprung und Achswinkel, ohne übernommene Effekte)</translation>
     </message>
     <message>
         <location line="+14"/>
@@ -838,6 +1067,16 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die gemessene Bahn, verschoben um die Änderung der Sollwerte: das vom Modell nicht erklärte Residuum (Rauschen, nicht modellierte Effekte) bleibt</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>expected after, RMS distance</source>
+        <translation>erwartet nachher, RMS-Abstand</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Root mean square distance of the expected path from the nominal points (before: %1 µm)</source>
+        <translation>Quadratischer Mittelwert des Abstands der erwarteten Bahn von den Nennpunkten (vorher: %1 µm)</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>simulated machine, after</source>
         <translation>simulierte Maschine, nachher</translation>
@@ -858,7 +1097,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Größter |Sollwert − Nennpunkt|</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>Export compensated path as G-code</source>
         <translation>Kompensierte Bahn als G-Code exportieren</translation>
     </message>
@@ -891,7 +1130,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+44"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+47"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Metrofit-Projekte (*.metrofit)</translation>
     </message>
@@ -901,7 +1140,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+47"/>
+        <source>Autosave failed: %1</source>
+        <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Cannot export the report</source>
         <translation>Der Bericht kann nicht exportiert werden</translation>
     </message>
@@ -942,12 +1186,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+4"/>
-        <location line="+102"/>
+        <location line="+141"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-140"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
@@ -957,7 +1201,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Bericht als PDF &amp;exportieren…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -1049,17 +1293,37 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
+        <source>Recovered the autosaved project; save it to keep it.</source>
+        <translation>Das automatisch gesicherte Projekt wurde wiederhergestellt; speichern Sie es, um es zu behalten.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cannot save the setup model</source>
+        <translation>Das Einrichtmodell kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>The setup model (relation graph) has unsaved edits. Do you want to save them?</source>
+        <translation>Das Einrichtmodell (Beziehungsgraph) hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The project &quot;%1&quot; and the setup model (relation graph) have unsaved changes. Do you want to save them?</source>
+        <translation>Das Projekt „%1“ und das Einrichtmodell (Beziehungsgraph) haben ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-8"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Das Projekt „%1“ hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+12"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
@@ -1121,7 +1385,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Der Bericht wird geschrieben…</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>The new language is applied at the next start.</source>
         <translation>Die neue Sprache wird beim nächsten Start übernommen.</translation>
     </message>
@@ -1139,7 +1403,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingCurveView</name>
     <message>
-        <location filename="../widgets/pointview/matchingcurveview.cpp" line="+88"/>
+        <location filename="../widgets/pointview/matchingcurveview.cpp" line="+92"/>
         <source>generation</source>
         <translation>Generation</translation>
     </message>
@@ -1167,7 +1431,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+47"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+59"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -1197,7 +1461,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Minimax</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+54"/>
         <source>Allow &amp;scale</source>
         <translation>&amp;Skalierung</translation>
     </message>
@@ -1433,7 +1697,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1 auf 0 halten (ein beschränktes Optimum über die übrigen Parameter)</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>Change the matching method</source>
         <translation>Ausrichtungsmethode ändern</translation>
     </message>
@@ -1454,33 +1718,50 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+9"/>
-        <location line="+210"/>
+        <location line="+258"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="-149"/>
+        <location line="-186"/>
         <source>The matching study&apos;s settings are invalid: %1</source>
         <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig: %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Fügen Sie der Projektdatei einen Datensatz der Art „probe_points“ hinzu (Kennung, Fläche, Sollpunkt, Normale, Messpunkt).</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
+        <source>The effects applied to the matching model are invalid:
+%1</source>
+        <translation>Die ins Ausrichtungsmodell übernommenen Effekte sind ungültig:
+%1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1 points on %2 surfaces, %3%4.</source>
         <translation>%1 Punkte auf %2 Flächen, %3%4.</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+9"/>
+        <source>Includes applied effects: %1 (the nominal points are deformed by them before matching).</source>
+        <translation>Enthält übernommene Effekte: %1 (die Nennpunkte werden vor der Ausrichtung durch sie verformt).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Effects applied on the Diagnosis page belong to the probe points %1 (the ones the diagnosis ran on); these points use the declared model.</source>
+        <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zu den Antastpunkten %1 (auf denen die Diagnose lief); diese Punkte verwenden das deklarierte Modell.</translation>
+    </message>
+    <message>
+        <location line="+84"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+35"/>
         <source>Matching …</source>
         <translation>Ausrichtung läuft …</translation>
     </message>
@@ -1614,7 +1895,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-352"/>
+        <location line="-370"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -1634,7 +1915,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lizenz: %1.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+17"/>
         <source>Not matched yet: press Run (Ctrl+R).</source>
         <translation>Noch nicht ausgerichtet: Ausführen drücken (Strg+R).</translation>
     </message>
@@ -1657,7 +1938,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::OverviewPage</name>
     <message>
-        <location filename="../app/gui/overviewpage.cpp" line="+23"/>
+        <location filename="../app/gui/overviewpage.cpp" line="+29"/>
         <source>Project overview</source>
         <translation>Projektübersicht</translation>
     </message>
@@ -1692,7 +1973,27 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Datensätze</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+12"/>
+        <source>&lt;b&gt;New here?&lt;/b&gt; Open the demo project: sample data for every study (setup correction, posture matching, kinematics &amp;amp; SPC, thermal, diagnosis) to try each page. It is also in &lt;i&gt;Help › Open demo project&lt;/i&gt;.</source>
+        <translation>&lt;b&gt;Neu hier?&lt;/b&gt; Öffnen Sie das Demoprojekt: Beispieldaten für jede Studie (Einrichtdatenkorrektur, Lageausrichtung, Kinematik &amp;amp; SPC, Thermik, Diagnose), um jede Seite auszuprobieren. Es ist auch unter &lt;i&gt;Hilfe › Demoprojekt öffnen&lt;/i&gt; zu finden.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Open the demo project</source>
+        <translation>&amp;Demoprojekt öffnen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Copies the bundled demo project into a folder of your own and opens it</source>
+        <translation>Kopiert das mitgelieferte Demoprojekt in einen eigenen Ordner und öffnet es</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Hide this hint (it does not come back)</source>
+        <translation>Diesen Hinweis ausblenden (er erscheint nicht wieder)</translation>
+    </message>
+    <message>
+        <location line="+48"/>
         <source>not saved yet</source>
         <translation>noch nicht gespeichert</translation>
     </message>
@@ -1700,7 +2001,29 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/pointview/pointsetview.cpp" line="+540"/>
+        <location filename="../widgets/pointview/pointsetview.cpp" line="+293"/>
+        <source>deviation
+(mm)</source>
+        <translation>Abw.
+(mm)</translation>
+    </message>
+    <message>
+        <location line="+225"/>
+        <source>grey: nominal points; coloured: measured, deviation vectors x%1</source>
+        <translation>grau: Nennpunkte; farbig: gemessen, Abweichungsvektoren x%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>after matching: solid; before (nominal and measured): faded</source>
+        <translation>nach der Ausrichtung: kräftig; vorher (Nenn- und Messpunkte): blass</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>green: within +-%1 mm; large: out of tolerance</source>
+        <translation>grün: innerhalb +-%1 mm; groß: außerhalb der Toleranz</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>3D view needs an X11 display (run under xvfb-run for headless use)</source>
         <translation>Die 3D-Ansicht benötigt eine X11-Anzeige (ohne Bildschirm unter xvfb-run starten)</translation>
     </message>
@@ -1708,7 +2031,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PolarDeviationView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-57"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-60"/>
         <source>Radial deviation of the measured path from the nominal circle, magnified (ballbar plot): plotted radius = R + k × deviation. Blue: CCW loop, orange: CW loop; the rings are labelled in µm.</source>
         <translation>Radiale Abweichung der gemessenen Bahn vom Nennkreis, vergrößert (Ballbar-Diagramm): dargestellter Radius = R + k × Abweichung. Blau: Umlauf gegen den Uhrzeigersinn, orange: im Uhrzeigersinn; die Ringe sind in µm beschriftet.</translation>
     </message>
@@ -1716,7 +2039,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PreferencesDialog</name>
     <message>
-        <location filename="../app/gui/preferencesdialog.cpp" line="+16"/>
+        <location filename="../app/gui/preferencesdialog.cpp" line="+19"/>
         <source>Preferences</source>
         <translation>Einstellungen</translation>
     </message>
@@ -1726,7 +2049,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>System</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>While the project has unsaved changes, a copy is written next to it this often, and offered for recovery after a crash (0: off)</source>
+        <translation>Solange das Projekt ungespeicherte Änderungen hat, wird in diesem Abstand eine Kopie daneben geschrieben und nach einem Absturz zur Wiederherstellung angeboten (0: aus)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>The language is applied at the next start of Metrofit.</source>
         <translation>Die Sprache wird beim nächsten Start von Metrofit übernommen.</translation>
     </message>
@@ -1734,6 +2072,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+4"/>
         <source>&amp;Language:</source>
         <translation>&amp;Sprache:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Autosave every:</source>
+        <translation>&amp;Automatisch sichern alle:</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1764,12 +2107,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Notizen zu „%1“ bearbeiten</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+135"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="+133"/>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>das Projekt wurde noch nicht gespeichert; wählen Sie mit „Speichern unter“ einen Dateinamen</translation>
     </message>
@@ -1792,7 +2135,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+38"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+486"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+527"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -1888,8 +2231,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+206"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-199"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+218"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-239"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -1921,7 +2264,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+13"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+176"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+216"/>
         <source>error (%1)</source>
         <translation>Fehler (%1)</translation>
     </message>
@@ -1961,7 +2304,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Für jede Studie wird das deklarierte Modell angepasst und sein Residuum berechnet; Kandidateneffekte, die dem Modell fehlen, werden einzeln getestet und jeweils mit ihren Parametern und deren Standardfehlern geschätzt. Ein Effekt wird nur bei ausreichender Evidenz übernommen (Verbesserung auf den Testdaten bei Thermik, sonst ein Informationskriterium mit konservativer Schwelle) und wenn er den Fehler praktisch relevant verringert; das Modell wird mit ihm neu angepasst und die Suche wiederholt, bis nichts mehr gefunden wird.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-158"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-170"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
@@ -2012,17 +2355,27 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+191"/>
+        <location line="+203"/>
         <source>Circular test “%1”</source>
         <translation>Kreisformtest „%1“</translation>
     </message>
     <message>
-        <location line="-183"/>
+        <location line="-195"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (seed 002, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 Punkte; Nennkreis R %2 mm um (%3, %4) mm; %5 Umläufe (gegen, dann im Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (Quelle 002, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt identifiziert (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+12"/>
+        <source>Includes applied effects: %1 (added with Apply on the diagnosis page). The errors above were identified with them and the compensated references include their corrections.</source>
+        <translation>Enthält übernommene Effekte: %1 (mit „Ins Modell übernehmen“ auf der Diagnoseseite hinzugefügt). Die obigen Fehler wurden mit ihnen identifiziert, und die kompensierten Sollwerte enthalten ihre Korrekturen.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>RMS residual of the declared model alone: %1 µm.</source>
+        <translation>RMS-Residuum des deklarierten Modells allein: %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Path (XY)</source>
         <translation>Bahn (XY)</translation>
     </message>
@@ -2103,7 +2456,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+366"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+371"/>
         <source>value</source>
         <translation>Wert</translation>
     </message>
@@ -2198,7 +2551,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Dieser Kreisformtest kann nicht analysiert werden: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-325"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="-329"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (Originalparameter)</translation>
     </message>
@@ -2218,7 +2571,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Minimax</translation>
     </message>
     <message>
-        <location line="+189"/>
+        <location line="+188"/>
         <source>Probe points “%1”, tolerance ±%2 mm</source>
         <translation>Antastpunkte „%1“, Toleranz ±%2 mm</translation>
     </message>
@@ -2248,7 +2601,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Abstand |p − (sRq + t)|</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+2"/>
+        <source>Includes applied effects: %1 (diagnosis, Apply). The nominal points were deformed by them before matching, so the deviations and the machine adjustments below are those of the model with these effects.</source>
+        <translation>Enthält übernommene Effekte: %1 (Diagnose, Übernehmen). Die Nennpunkte wurden vor der Ausrichtung durch sie verformt; die Abweichungen und Maschineneinstellungen unten gelten daher für das Modell mit diesen Effekten.</translation>
+    </message>
+    <message>
+        <location line="+39"/>
         <source>Before matching</source>
         <translation>Vor der Ausrichtung</translation>
     </message>
@@ -2349,7 +2707,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+177"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+196"/>
         <source>method</source>
         <translation>Methode</translation>
     </message>
@@ -2482,9 +2840,9 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+21"/>
         <location filename="../widgets/report/report.cpp" line="+106"/>
-        <location filename="../widgets/report/setupsection.cpp" line="-72"/>
-        <location line="+35"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-207"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-91"/>
+        <location line="+39"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-247"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
@@ -2617,7 +2975,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+67"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+82"/>
         <source>kind</source>
         <translation>Art</translation>
     </message>
@@ -2673,7 +3031,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Seite %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/setupsection.cpp" line="-157"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-176"/>
         <source>machine point</source>
         <translation>Maschinenpunkt</translation>
     </message>
@@ -2743,7 +3101,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Das Projekt hat keinen KMG-Messbericht für dieses Modell: nichts zu korrigieren.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
         <source>Report data “%1”</source>
         <translation>Berichtsdaten „%1“</translation>
     </message>
@@ -2755,7 +3113,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+1"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+1"/>
-        <location line="+134"/>
+        <location line="+174"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
@@ -2775,7 +3133,42 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>f1 = %1 mm; %2 von %3 mittleren Abweichungen außerhalb der Toleranz</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+6"/>
+        <source>%1 (deviation of a dimension: predicted for part %2)</source>
+        <translation>%1 (Abweichung eines Maßes: vorhergesagt für Werkstück %2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>applied effects</source>
+        <translation>übernommene Effekte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (diagnosis, Apply)</source>
+        <translation>%1 (Diagnose, Übernehmen)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>model residual</source>
+        <translation>Modellresiduum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rms %1 mm (declared model %2 mm)</source>
+        <translation>rms %1 mm (deklariertes Modell %2 mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>last part predicted</source>
+        <translation>Vorhersage des letzten Werkstücks</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rms %1 mm from the other parts (declared model %2 mm)</source>
+        <translation>rms %1 mm aus den übrigen Werkstücken (deklariertes Modell %2 mm)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Settings</source>
         <translation>Einstellungen</translation>
     </message>
@@ -2885,7 +3278,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>metrofit-cli setup --export fanuc schreibt denselben Text; Heidenhain, Siemens und CSV sind die weiteren Formate (siehe die Vorzeichenkonvention im Kopf).</translation>
     </message>
     <message>
-        <location filename="../widgets/report/thermalsection.cpp" line="-221"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-261"/>
         <source>%1 h</source>
         <translation>%1 h</translation>
     </message>
@@ -3016,7 +3409,32 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>im Diagramm</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+33"/>
+        <source>%1 → %2%3</source>
+        <translation>%1 → %2%3</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>used by %1 (held-out error %2)</source>
+        <translation>verwendet von %1 (Fehler auf den Testdaten %2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not used by %1 (held-out error would rise: %2)</source>
+        <translation>nicht verwendet von %1 (Fehler auf den Testdaten würde steigen: %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not used by %1 (held-out error would not fall: %2)</source>
+        <translation>nicht verwendet von %1 (Fehler auf den Testdaten würde nicht sinken: %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Applied effects %1 (added with Apply on the diagnosis page; each model is fitted with and without them and keeps the lower held-out error): %2.</source>
+        <translation>Übernommene Effekte %1 (mit „Ins Modell übernehmen“ auf der Diagnoseseite hinzugefügt; jedes Modell wird mit und ohne sie angepasst und behält den kleineren Fehler auf den Testdaten): %2.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Hysteresis</source>
         <translation>Hysterese</translation>
     </message>
@@ -3081,7 +3499,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Um die Laufzeit des Berichts kurz zu halten, wird dieses Protokoll mit %1 Zeilen an jeder %2. Zeile angepasst (%3 Zeilen); die GUI und metrofit-cli verwenden alle Zeilen.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>The models could not be fitted: %1</source>
         <translation>Die Modelle konnten nicht angepasst werden: %1</translation>
     </message>
@@ -3247,7 +3665,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ResidualPlot</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="-266"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="-269"/>
         <source>before the effect</source>
         <translation>vor dem Effekt</translation>
     </message>
@@ -3261,11 +3679,21 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <source> (arrows × %1)</source>
         <translation> (Pfeile × %1)</translation>
     </message>
+    <message>
+        <location line="+18"/>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::ResidualPlotView</name>
     <message>
-        <location line="+107"/>
+        <location line="+90"/>
         <source>Residual plot: run the diagnosis (Ctrl+R)</source>
         <translation>Residuendiagramm: Diagnose ausführen (Strg+R)</translation>
     </message>
@@ -3283,7 +3711,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupCharts</name>
     <message>
-        <location filename="../widgets/setup/setupcharts.cpp" line="+66"/>
+        <location filename="../widgets/setup/setupcharts.cpp" line="+67"/>
         <source>exact</source>
         <translation>exakt</translation>
     </message>
@@ -3362,7 +3790,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupConvergenceView</name>
     <message>
-        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+27"/>
+        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+29"/>
         <source>Show f&amp;2 = |x|</source>
         <translation>f&amp;2 = |x|</translation>
     </message>
@@ -3390,7 +3818,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupGraphEditor</name>
     <message>
-        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+70"/>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+72"/>
         <source>Add node…</source>
         <translation>Knoten hinzufügen…</translation>
     </message>
@@ -3719,7 +4147,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupMargins</name>
     <message>
-        <location filename="../widgets/setup/setupmargins.cpp" line="+84"/>
+        <location filename="../widgets/setup/setupmargins.cpp" line="+86"/>
         <source>tolerance zone</source>
         <translation>Toleranzzone</translation>
     </message>
@@ -3752,7 +4180,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupMarginsWidget</name>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>Run a method to see the margins before and after correction.</source>
         <translation>Eine Methode ausführen, um die Abstände vor und nach der Korrektur zu sehen.</translation>
     </message>
@@ -3828,7 +4256,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+87"/>
+        <location filename="../app/gui/setuppage.cpp" line="+105"/>
         <source>&amp;Save model</source>
         <translation>Modell &amp;speichern</translation>
     </message>
@@ -3934,11 +4362,26 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+20"/>
-        <source>Notes on this study</source>
-        <translation>Notizen zu dieser Studie</translation>
+        <source>Change the setup method</source>
+        <translation>Methode der Einrichtung ändern</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+3"/>
+        <source>Change the setup budget</source>
+        <translation>Budget der Einrichtung ändern</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Change the setup seed</source>
+        <translation>Startwert der Einrichtung ändern</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>The applied effects cannot be used: %1</source>
+        <translation>Die übernommenen Effekte können nicht verwendet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>This project has no setup model. Add a dataset of kind &quot;setup_model&quot; (the relation graph, JSON) and a &quot;cmm_report&quot; to the project file.</source>
         <translation>Dieses Projekt hat kein Einrichtmodell. Fügen Sie der Projektdatei einen Datensatz der Art „setup_model“ (der Beziehungsgraph, JSON) und einen „cmm_report“ hinzu.</translation>
     </message>
@@ -3948,7 +4391,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Dieses Projekt hat keinen KMG-Messbericht für die Einrichtstudie (ein Datensatz der Art „cmm_report“).</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Noch kein Ergebnis für dieses Modell: Methode wählen und Ausführen drücken (Strg+R).</translation>
     </message>
@@ -3981,7 +4424,27 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Kleinstes Fehlerbudget vor der Korrektur f1 = %1 mm.</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+6"/>
+        <source>deviations predicted for part %1; residual rms %2 mm (declared model %3 mm)</source>
+        <translation>Abweichungen vorhergesagt für Werkstück %1; Residuum rms %2 mm (deklariertes Modell %3 mm)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>, last part predicted from the others %1 mm (declared %2 mm)</source>
+        <translation>, letztes Werkstück aus den übrigen vorhergesagt %1 mm (deklariert %2 mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Includes applied effects: %1 — %2.</source>
+        <translation>Enthält übernommene Effekte: %1 — %2.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Effects applied on the Diagnosis page belong to the report %1 (the one the diagnosis ran on); this report uses the declared model.</source>
+        <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zum Messbericht %1 (auf dem die Diagnose lief); dieser Bericht verwendet das deklarierte Modell.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>The setup study has no model or report to run on.</source>
         <translation>Die Einrichtstudie hat kein Modell oder keinen Bericht, auf dem sie laufen kann.</translation>
     </message>
@@ -4029,7 +4492,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
         <translation>Das Modell wurde gespeichert, aber der KMG-Messbericht passt nicht mehr dazu (die Läufe verwenden den Bericht, wie er mit dem vorherigen Modell eingelesen wurde): %1</translation>
     </message>
@@ -4042,7 +4505,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupResultsView</name>
     <message>
-        <location filename="../widgets/setup/setupresultsview.cpp" line="+29"/>
+        <location filename="../widgets/setup/setupresultsview.cpp" line="+30"/>
         <source>machine point</source>
         <translation>Maschinenpunkt</translation>
     </message>
@@ -4057,7 +4520,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Werkzeuglänge</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Setup datum</source>
         <translation>Einrichtdatum</translation>
     </message>
@@ -4191,7 +4654,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupValidationView</name>
     <message>
-        <location filename="../widgets/setup/setupvalidationview.cpp" line="+60"/>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+61"/>
         <source>Simulated measurement sets N (the paper: 100)</source>
         <translation>Simulierte Messreihen N (Veröffentlichung: 100)</translation>
     </message>
@@ -4236,7 +4699,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Die statistische Validierung der Veröffentlichung: simulierte Messreihen mit Einrichtdaten- und Zufallsfehlern (Gl. 12–13), jeweils korrigiert mit der exakten Methode und mit M Versuchen der gewählten Metaheuristiken; die Reihen sortiert nach ihrem Budget vor der Korrektur (Abb. 18).</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Measurement sets N:</source>
         <translation>Messreihen N:</translation>
     </message>
@@ -4304,7 +4767,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SpcView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+86"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+90"/>
         <source>index</source>
         <translation>Kenngröße</translation>
     </message>
@@ -4324,7 +4787,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Histogramm von %1 (%2 Werte)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>feature</source>
         <translation>Merkmal</translation>
     </message>
@@ -4447,9 +4910,65 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
 </context>
 <context>
+    <name>metrofit::StudyActions</name>
+    <message>
+        <location filename="../app/gui/studyactions.cpp" line="+52"/>
+        <source>&amp;Run</source>
+        <translation>A&amp;usführen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Run the study</source>
+        <translation>Studie a&amp;usführen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Runs the method of the page shown (its Run button, Ctrl+R)</source>
+        <translation>Führt die Methode der angezeigten Seite aus (ihre Schaltfläche „Ausführen“, Strg+R)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Cancel the run</source>
+        <translation>Ausführung a&amp;bbrechen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stops the running method of the page shown</source>
+        <translation>Hält die laufende Methode der angezeigten Seite an</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Nothing to run on this page</source>
+        <translation>Auf dieser Seite gibt es nichts auszuführen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Nothing is running</source>
+        <translation>Es läuft nichts</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::TableCopy</name>
+    <message>
+        <location filename="../widgets/common/tablecopy.cpp" line="+88"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Copy the selected cells with their column headers, tab-separated</source>
+        <translation>Die ausgewählten Zellen mit ihren Spaltenüberschriften kopieren, durch Tabulatoren getrennt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Select &amp;all</source>
+        <translation>&amp;Alles auswählen</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::ThermalCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalcharts.cpp" line="+59"/>
+        <location filename="../widgets/charts/thermalcharts.cpp" line="+60"/>
         <source>temperature</source>
         <translation>Temperatur</translation>
     </message>
@@ -4502,7 +5021,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+100"/>
+        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+105"/>
         <source>loop area in %1 × %2</source>
         <translation>Schleifenfläche in %1 × %2</translation>
     </message>
@@ -4522,7 +5041,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Sensor über der Verlagerung aufgetragen oder alle Sensoren nebeneinander</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>sensor</source>
         <translation>Sensor</translation>
     </message>
@@ -4597,7 +5116,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelcharts.cpp" line="+76"/>
+        <location filename="../widgets/charts/thermalmodelcharts.cpp" line="+77"/>
         <source>time (h)</source>
         <translation>Zeit (h)</translation>
     </message>
@@ -4614,10 +5133,10 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+7"/>
         <source>fit | held-out boundary</source>
-        <translation>Grenze Anpassung | Testdaten</translation>
+        <translation>Grenze Anpassung | Test</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+69"/>
         <source>%1: lag %2 min</source>
         <translation>%1: Verzug %2 min</translation>
     </message>
@@ -4645,7 +5164,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+13"/>
         <location line="+46"/>
         <source>%1 (off scale)</source>
-        <translation>%1 (außerhalb der Skala)</translation>
+        <translation>%1 (außerhalb)</translation>
     </message>
     <message>
         <location line="-22"/>
@@ -4671,7 +5190,47 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+171"/>
+        <location filename="../widgets/charts/thermalmodelview.cpp" line="+76"/>
+        <source>%1 → %2%3</source>
+        <translation>%1 → %2%3</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>used by %1 (held-out error %2)</source>
+        <translation>verwendet von %1 (Fehler auf den Testdaten %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not used by %1 (held-out error would rise: %2)</source>
+        <translation>nicht verwendet von %1 (Fehler auf den Testdaten würde steigen: %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not used by %1 (held-out error would not fall: %2)</source>
+        <translation>nicht verwendet von %1 (Fehler auf den Testdaten würde nicht sinken: %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Applied effects %1: %2.</source>
+        <translation>Übernommene Effekte %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+92"/>
+        <source>Applied effects %1: Train (Ctrl+R) fits each model with and without them and keeps the lower held-out error.</source>
+        <translation>Übernommene Effekte %1: Trainieren (Strg+R) passt jedes Modell mit und ohne sie an und behält den kleineren Fehler auf den Testdaten.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Effects added with Apply on the Diagnosis page (lagged inputs, extra input columns, a drift term). Each model is fitted with the declared inputs and with the effects (same seed) and keeps the variant with the lower held-out error: an effect never makes a model worse on the held-out rows. Undo the Apply to fit the declared model only.</source>
+        <translation>Mit „Ins Modell übernehmen“ auf der Seite „Diagnose“ hinzugefügte Effekte (verzögerte Eingänge, zusätzliche Eingangsspalten, ein Driftterm). Jedes Modell wird mit den deklarierten Eingängen und mit den Effekten angepasst (gleicher Startwert) und behält die Variante mit dem kleineren Fehler auf den Testdaten: Ein Effekt macht ein Modell auf den Testzeilen nie schlechter. Machen Sie die Übernahme rückgängig, um nur das deklarierte Modell anzupassen.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Applied effects cannot be used: %1</source>
+        <translation>Übernommene Effekte können nicht verwendet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>fitness</source>
         <translation>Fitness</translation>
     </message>
@@ -4702,44 +5261,44 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+52"/>
-        <location line="+111"/>
+        <location line="+53"/>
+        <location line="+118"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location line="-163"/>
-        <location line="+163"/>
+        <location line="-171"/>
+        <location line="+171"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
     <message>
-        <location line="-162"/>
-        <location line="+162"/>
+        <location line="-170"/>
+        <location line="+170"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-162"/>
-        <location line="+162"/>
+        <location line="-170"/>
+        <location line="+170"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-161"/>
-        <location line="+52"/>
-        <location line="+109"/>
+        <location line="-169"/>
+        <location line="+53"/>
+        <location line="+116"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-161"/>
-        <location line="+161"/>
+        <location line="-169"/>
+        <location line="+169"/>
         <source>band</source>
         <translation>Band</translation>
     </message>
     <message>
-        <location line="-154"/>
+        <location line="-162"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -4754,7 +5313,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 Zeilen zur Anpassung, %2 Testdaten; %3.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 % (GMC(1,N) %2 %, MLP %3 %).</source>
         <translation>&lt;b&gt;Modularer Fall:&lt;/b&gt; GNNMCI(1,N), angepasst an den Z- und C-Tests, verringert den Fehler des kombinierten Tests um %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
     </message>
@@ -4824,7 +5383,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Das Training anhalten (Esc)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+14"/>
         <source>Best fitness of the GNNMCI(1,N) swarm (Eq. 2.9) per PSO iteration</source>
         <translation>Beste Fitness des GNNMCI(1,N)-Schwarms (Gl. 2.9) je PSO-Iteration</translation>
     </message>
@@ -4849,7 +5408,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&amp;Eingänge:</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>Correlation coefficient of measured and predicted</source>
         <translation>Korrelationskoeffizient zwischen gemessen und vorhergesagt</translation>
     </message>
@@ -4874,7 +5433,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Modulare Modelle (Abschnitt 4.3)</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Performance indices (Table 4)</source>
         <translation>Gütekennzahlen (Tabelle 4)</translation>
     </message>
@@ -4890,27 +5449,32 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location line="+128"/>
+        <location line="+134"/>
         <source>Training failed: %1</source>
         <translation>Das Training ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="-120"/>
+        <location line="-126"/>
         <source>Training cancelled after %1 PSO iterations; the results shown are the previous ones.</source>
         <translation>Training nach %1 PSO-Iterationen abgebrochen; die angezeigten Ergebnisse sind die vorherigen.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Settings changed: Train (Ctrl+R) to update the results.</source>
         <translation>Einstellungen geändert: Trainieren (Strg+R), um die Ergebnisse zu aktualisieren.</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+56"/>
         <source>Not trained yet: Train (Ctrl+R) fits the three models.</source>
         <translation>Noch nicht trainiert: Trainieren (Strg+R) passt die drei Modelle an.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+12"/>
+        <source>Applied effects changed: Train (Ctrl+R) to update the results.</source>
+        <translation>Übernommene Effekte geändert: Trainieren (Strg+R), um die Ergebnisse zu aktualisieren.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <location line="+30"/>
         <source>Choose at least one input.</source>
         <translation>Wählen Sie mindestens einen Eingang.</translation>
@@ -4924,7 +5488,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+65"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+81"/>
         <source>T&amp;rend</source>
         <translation>&amp;Verlauf</translation>
     </message>
@@ -4974,14 +5538,19 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lizenz: %1.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>Cannot show this thermal log:
 %1</source>
         <translation>Dieses Thermoprotokoll kann nicht angezeigt werden:
 %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+11"/>
+        <source>Effects applied on the Diagnosis page belong to the log %1 (the one the diagnosis ran on); the models of this log do not include them.</source>
+        <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zum Thermoprotokoll %1 (auf dem die Diagnose lief); die Modelle dieses Protokolls enthalten sie nicht.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>Choose the thermal log</source>
         <translation>Thermoprotokoll wählen</translation>
     </message>
@@ -5011,7 +5580,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Einstellungen des thermischen Modells ändern</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+81"/>
         <source>Modular case: %1</source>
         <translation>Modularer Fall: %1</translation>
     </message>
@@ -5024,7 +5593,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalTrendView</name>
     <message>
-        <location filename="../widgets/charts/thermaltrendview.cpp" line="+82"/>
+        <location filename="../widgets/charts/thermaltrendview.cpp" line="+84"/>
         <source>Channels shown in the chart</source>
         <translation>Im Diagramm angezeigte Kanäle</translation>
     </message>

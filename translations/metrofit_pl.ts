@@ -82,7 +82,7 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+21"/>
+        <location filename="../app/gui/main.cpp" line="+22"/>
         <source>Metrofit — a workbench for machining error compensation.</source>
         <translation>Metrofit — warsztat do kompensacji błędów obróbki.</translation>
     </message>
@@ -95,6 +95,16 @@
         <location line="+3"/>
         <source>dir</source>
         <translation>katalog</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>User interface language for this run: en, de or pl (overrides the Preferences; the screenshots are in English without it).</source>
+        <translation>Język interfejsu użytkownika dla tego uruchomienia: en, de lub pl (ma pierwszeństwo przed preferencjami; bez tej opcji zrzuty ekranu są w języku angielskim).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>language</source>
+        <translation>język</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -113,9 +123,168 @@
     </message>
 </context>
 <context>
+    <name>metrofit::Autosave</name>
+    <message>
+        <location filename="../app/gui/autosave.cpp" line="+121"/>
+        <source>cannot create the autosave folder %1</source>
+        <translation>nie można utworzyć folderu automatycznego zapisu %1</translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <location line="+56"/>
+        <source>The autosaved copy cannot be read: %1</source>
+        <translation>Nie można odczytać automatycznie zapisanej kopii: %1</translation>
+    </message>
+    <message>
+        <location line="-42"/>
+        <location line="+51"/>
+        <location line="+30"/>
+        <source>Recover autosaved changes</source>
+        <translation>Przywracanie automatycznie zapisanych zmian</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <source>Metrofit was not closed properly. An autosaved copy of the unsaved project “%1” from %2 was found.
+
+Do you want to recover it?</source>
+        <translation>Program Metrofit nie został poprawnie zamknięty. Znaleziono automatycznie zapisaną kopię niezapisanego projektu „%1” z %2.
+
+Czy chcesz ją przywrócić?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The project %1 has an autosaved copy from %2 that is newer than the file (saved %3). Metrofit was probably not closed properly.
+
+Do you want to recover the autosaved changes? They are opened as unsaved changes; the project file is only overwritten when you save.</source>
+        <translation>Projekt %1 ma automatycznie zapisaną kopię z %2, nowszą niż plik (zapisany %3). Program Metrofit prawdopodobnie nie został poprawnie zamknięty.
+
+Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako niezapisane zmiany; plik projektu zostanie nadpisany dopiero przy zapisie.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Recover</source>
+        <translation>&amp;Przywróć</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Discard</source>
+        <translation>O&amp;drzuć</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Keep for later</source>
+        <translation>&amp;Zachowaj na później</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Open original</source>
+        <translation>&amp;Otwórz oryginał</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open the autosaved content as unsaved changes</source>
+        <translation>Otwórz automatycznie zapisaną zawartość jako niezapisane zmiany</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Delete the autosaved copy</source>
+        <translation>Usuń automatycznie zapisaną kopię</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Leave the autosaved copy where it is and continue without it</source>
+        <translation>Pozostaw automatycznie zapisaną kopię na miejscu i kontynuuj bez niej</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ChartExport</name>
+    <message>
+        <location filename="../widgets/common/chartexport.cpp" line="+190"/>
+        <source>Export chart as SVG</source>
+        <translation>Eksport wykresu jako SVG</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Export chart as PNG</source>
+        <translation>Eksport wykresu jako PNG</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>SVG drawings (*.svg)</source>
+        <translation>Rysunki SVG (*.svg)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PNG images (*.png)</source>
+        <translation>Obrazy PNG (*.png)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Chart exported to %1</source>
+        <translation>Wyeksportowano wykres do %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cannot export the chart: %1</source>
+        <translation>Nie można wyeksportować wykresu: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Export as &amp;PNG…</source>
+        <translation>Eksportuj jako &amp;PNG…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save this chart as a PNG image (the size it has on screen)</source>
+        <translation>Zapisz ten wykres jako obraz PNG (w rozmiarze, jaki ma na ekranie)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Export as &amp;SVG…</source>
+        <translation>Eksportuj jako &amp;SVG…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save this chart as an SVG drawing (lines and text stay sharp)</source>
+        <translation>Zapisz ten wykres jako rysunek SVG (linie i tekst pozostają ostre)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Copy image</source>
+        <translation>&amp;Kopiuj obraz</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Chart copied to the clipboard</source>
+        <translation>Skopiowano wykres do schowka</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>the chart has no picture to export</source>
+        <translation>wykres nie zawiera obrazu do wyeksportowania</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+21"/>
+        <location line="+11"/>
+        <source>cannot write %1</source>
+        <translation>nie można zapisać %1</translation>
+    </message>
+    <message>
+        <location line="-24"/>
+        <source>a 3D view can only be exported as PNG</source>
+        <translation>widok 3D można wyeksportować tylko jako PNG</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Exported from Metrofit</source>
+        <translation>Wyeksportowano z programu Metrofit</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::CircularPathView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+27"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+31"/>
         <source>The XY path in mm: the nominal circle true to scale; the measured path, the compensated references and the expected result as deviations from the nominal point, magnified by the factor shown.</source>
         <translation>Tor XY w mm: okrąg nominalny w skali; zmierzony tor, skompensowane wartości zadane i oczekiwany wynik jako odchyłki od punktu nominalnego, powiększone o podany współczynnik.</translation>
     </message>
@@ -123,7 +292,7 @@
 <context>
     <name>metrofit::ControlChartView</name>
     <message>
-        <location line="+51"/>
+        <location line="+54"/>
         <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (seed 002, Eq. 18-19); red points are out of control.</source>
         <translation>Średnie podgrup z linią centralną (CL) i granicami kontrolnymi UCL/LCL = średnia ± A2 · R̄ (źródło 002, równ. 18-19); czerwone punkty są poza kontrolą.</translation>
     </message>
@@ -136,7 +305,7 @@
 <context>
     <name>metrofit::DatasetTable</name>
     <message>
-        <location filename="../app/gui/datasettable.cpp" line="+18"/>
+        <location filename="../app/gui/datasettable.cpp" line="+20"/>
         <source>Id</source>
         <translation>Identyfikator</translation>
     </message>
@@ -184,12 +353,12 @@
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+503"/>
+        <location line="+502"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-434"/>
+        <location line="-433"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
@@ -284,7 +453,7 @@
         <translation>&amp;Dziedzina:</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+33"/>
         <location line="+125"/>
         <source>The diagnosis failed: %1</source>
         <translation>Diagnoza nie powiodła się: %1</translation>
@@ -394,7 +563,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::ErrorBarsView</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="+453"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="+458"/>
         <source>rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model (grey) and the model with the accepted effects (blue)</source>
         <translation>rmse i największy |błąd| danych dopasowania, rmse wierszy testowych (termika): zadeklarowany model (szary) i model z przyjętymi efektami (niebieski)</translation>
     </message>
@@ -465,7 +634,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::HistogramView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+29"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+30"/>
         <source>Distribution of the values with the specification limits LSL/USL, the nominal and the mean.</source>
         <translation>Rozkład wartości z granicami specyfikacji LSL/USL, wartością nominalną i średnią.</translation>
     </message>
@@ -473,12 +642,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+314"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+371"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="-92"/>
         <source>measured, CCW loop</source>
         <translation>zmierzony, pętla przeciwnie do ruchu wskazówek zegara</translation>
     </message>
@@ -498,12 +667,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>nominalny R %1 mm</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>plotted radius = R + k × radial deviation, k = %1; rings every %2 µm</source>
         <translation>promień na wykresie = R + k × odchyłka promieniowa, k = %1; okręgi co %2 µm</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+188"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -520,12 +689,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <message>
         <location line="+2"/>
         <source>measured CCW</source>
-        <translation>zmierzony, przeciwnie do wskazówek</translation>
+        <translation>zmierzony, w lewo (CCW)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>measured CW</source>
-        <translation>zmierzony, zgodnie ze wskazówkami</translation>
+        <translation>zmierzony, w prawo (CW)</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -538,12 +707,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>oczekiwany po</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>deviations from the nominal point × %1</source>
-        <translation>odchyłki od punktu nominalnego × %1</translation>
+        <translation>odchyłki od nominału × %1</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>X-bar chart (subgroups of %1)</source>
         <translation>Karta X-średnie (podgrupy po %1)</translation>
     </message>
@@ -568,7 +737,25 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>rozstęp</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+15"/>
+        <source>UCL</source>
+        <comment>upper control limit</comment>
+        <translation>UCL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CL</source>
+        <comment>centre line</comment>
+        <translation>CL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LCL</source>
+        <comment>lower control limit</comment>
+        <translation>LCL</translation>
+    </message>
+    <message>
+        <location line="+80"/>
         <source>Histogram</source>
         <translation>Histogram</translation>
     </message>
@@ -583,7 +770,19 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>liczność</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+18"/>
+        <source>LSL</source>
+        <comment>lower specification limit</comment>
+        <translation>LSL</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>USL</source>
+        <comment>upper specification limit</comment>
+        <translation>USL</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>nominal</source>
         <translation>nominalna</translation>
     </message>
@@ -596,7 +795,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+85"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+101"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identyfikuj</translation>
     </message>
@@ -616,7 +815,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Eksportuj &amp;STEP-NC…</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Identify the actuator origin and orientation errors of the circular test (Levenberg-Marquardt, standard errors from the residuals) (F5)</source>
         <translation>Identyfikuj błędy początku i orientacji napędów z testu kołowego (Levenberg-Marquardt, błędy standardowe z residuów) (F5)</translation>
     </message>
@@ -643,7 +842,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <message>
         <location line="+0"/>
         <source>identified</source>
-        <translation>zidentyfikowany</translation>
+        <translation>wyznaczony</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -668,15 +867,20 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <message>
         <location line="+5"/>
         <source>&lt;b&gt;Identified errors&lt;/b&gt; (origin in µm, angles in deg)</source>
-        <translation>&lt;b&gt;Zidentyfikowane błędy&lt;/b&gt; (początek w µm, kąty w stopniach)</translation>
+        <translation>&lt;b&gt;Zidentyfikowane błędy&lt;/b&gt; (początek w µm, kąty w °)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
+        <source>Effects added with Apply on the Diagnosis page: the identification, the compensated references and their exports include them. Undo the Apply to use the declared model again.</source>
+        <translation>Efekty dodane przyciskiem „Zastosuj do modelu” na stronie Diagnoza: uwzględniają je identyfikacja, skompensowane wartości zadane i ich eksporty. Cofnij zastosowanie, aby ponownie użyć zadeklarowanego modelu.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&lt;b&gt;Compensation&lt;/b&gt; of the nominal circle</source>
         <translation>&lt;b&gt;Kompensacja&lt;/b&gt; okręgu nominalnego</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>&amp;Path</source>
         <translation>&amp;Tor</translation>
     </message>
@@ -691,12 +895,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Test kołow&amp;y:</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>Compensate</source>
         <translation>Kompensuj</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+71"/>
         <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
         <translation>Ten projekt nie zawiera testu kołowego. Dodaj zbiór danych rodzaju „circular_test” (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, jedna pętla przeciwnie do ruchu wskazówek zegara, potem jedna zgodnie), np. utworzony przez metrofit-cli simulate circular.</translation>
     </message>
@@ -717,7 +921,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         </translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+10"/>
+        <source>Effects applied on the Diagnosis page belong to the circular test %1 (the one the diagnosis ran on); this test uses the declared model.</source>
+        <translation>Efekty zastosowane na stronie Diagnoza należą do testu kołowego %1 (tego, na którym przeprowadzono diagnozę); ten test używa zadeklarowanego modelu.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Includes applied effects: %1</source>
+        <translation>Zawiera zastosowane efekty: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
@@ -773,6 +987,11 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+1"/>
+        <source>Root mean square of the residual distances after identification, with the applied effects</source>
+        <translation>Średnia kwadratowa odległości resztkowych po identyfikacji, z zastosowanymi efektami</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Root mean square of the residual distances after identification</source>
         <translation>Średnia kwadratowa odległości resztkowych po identyfikacji</translation>
     </message>
@@ -780,6 +999,16 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <location line="+2"/>
         <source>iterations</source>
         <translation>iteracje</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>RMS, declared model only (µm)</source>
+        <translation>RMS, tylko zadeklarowany model (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The residual of the declared model (origin and axis angles, no applied effects)</source>
+        <translation>Residuum zadeklarowanego modelu (początek i kąty osi, bez zastosowanych efektów)</translation>
     </message>
     <message>
         <location line="+14"/>
@@ -839,6 +1068,16 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmierzony tor przesunięty o zmianę wartości zadanych: residuum niewyjaśnione przez model (szum, niemodelowane efekty) pozostaje</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>expected after, RMS distance</source>
+        <translation>oczekiwany po, odległość RMS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Root mean square distance of the expected path from the nominal points (before: %1 µm)</source>
+        <translation>Średnia kwadratowa odległości oczekiwanego toru od punktów nominalnych (przed: %1 µm)</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>simulated machine, after</source>
         <translation>maszyna symulowana, po</translation>
@@ -859,7 +1098,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Największa |wartość zadana − punkt nominalny|</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>Export compensated path as G-code</source>
         <translation>Eksport skompensowanego toru jako G-code</translation>
     </message>
@@ -892,7 +1131,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+44"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+47"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Projekty Metrofit (*.metrofit)</translation>
     </message>
@@ -902,7 +1141,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+47"/>
+        <source>Autosave failed: %1</source>
+        <translation>Automatyczny zapis nie powiódł się: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Cannot export the report</source>
         <translation>Nie można wyeksportować raportu</translation>
     </message>
@@ -943,12 +1187,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+4"/>
-        <location line="+102"/>
+        <location line="+141"/>
         <source>&amp;Save</source>
         <translation>&amp;Zapisz</translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-140"/>
         <source>Save &amp;As…</source>
         <translation>Zapisz &amp;jako…</translation>
     </message>
@@ -958,7 +1202,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&amp;Eksportuj raport PDF…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&amp;Quit</source>
         <translation>Za&amp;kończ</translation>
     </message>
@@ -1050,17 +1294,37 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Otwarto %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
+        <source>Recovered the autosaved project; save it to keep it.</source>
+        <translation>Przywrócono automatycznie zapisany projekt; zapisz go, aby go zachować.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cannot save the setup model</source>
+        <translation>Nie można zapisać modelu ustawczego</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>The setup model (relation graph) has unsaved edits. Do you want to save them?</source>
+        <translation>Model ustawczy (graf relacji) ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The project &quot;%1&quot; and the setup model (relation graph) have unsaved changes. Do you want to save them?</source>
+        <translation>Projekt „%1” i model ustawczy (graf relacji) mają niezapisane zmiany. Czy chcesz je zapisać?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Unsaved changes</source>
         <translation>Niezapisane zmiany</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-8"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Projekt „%1” ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+12"/>
         <source>&amp;Discard</source>
         <translation>&amp;Odrzuć</translation>
     </message>
@@ -1122,7 +1386,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zapisywanie raportu…</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>The new language is applied at the next start.</source>
         <translation>Nowy język zostanie zastosowany przy następnym uruchomieniu.</translation>
     </message>
@@ -1140,7 +1404,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingCurveView</name>
     <message>
-        <location filename="../widgets/pointview/matchingcurveview.cpp" line="+88"/>
+        <location filename="../widgets/pointview/matchingcurveview.cpp" line="+92"/>
         <source>generation</source>
         <translation>generacja</translation>
     </message>
@@ -1168,7 +1432,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+47"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+59"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -1198,7 +1462,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>minimaks</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+54"/>
         <source>Allow &amp;scale</source>
         <translation>&amp;Skala</translation>
     </message>
@@ -1434,7 +1698,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Utrzymaj %1 na 0 (optimum z ograniczeniem po pozostałych parametrach)</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>Change the matching method</source>
         <translation>Zmiana metody dopasowania</translation>
     </message>
@@ -1455,33 +1719,50 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+9"/>
-        <location line="+210"/>
+        <location line="+258"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
     </message>
     <message>
-        <location line="-149"/>
+        <location line="-186"/>
         <source>The matching study&apos;s settings are invalid: %1</source>
         <translation>Ustawienia studium dopasowania są nieprawidłowe: %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Ten projekt nie zawiera punktów sondowania. Dodaj do pliku projektu zbiór danych rodzaju „probe_points” (identyfikator, powierzchnia, punkt nominalny, normalna, punkt zmierzony).</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
+        <source>The effects applied to the matching model are invalid:
+%1</source>
+        <translation>Efekty zastosowane do modelu dopasowania są nieprawidłowe:
+%1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1 points on %2 surfaces, %3%4.</source>
         <translation>Punkty: %1, powierzchnie: %2, %3%4.</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+9"/>
+        <source>Includes applied effects: %1 (the nominal points are deformed by them before matching).</source>
+        <translation>Zawiera zastosowane efekty: %1 (punkty nominalne są przez nie odkształcane przed dopasowaniem).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Effects applied on the Diagnosis page belong to the probe points %1 (the ones the diagnosis ran on); these points use the declared model.</source>
+        <translation>Efekty zastosowane na stronie Diagnoza należą do punktów sondowania %1 (tych, na których przeprowadzono diagnozę); te punkty używają zadeklarowanego modelu.</translation>
+    </message>
+    <message>
+        <location line="+84"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+35"/>
         <source>Matching …</source>
         <translation>Dopasowywanie …</translation>
     </message>
@@ -1616,7 +1897,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-352"/>
+        <location line="-370"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -1636,7 +1917,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Licencja: %1.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+17"/>
         <source>Not matched yet: press Run (Ctrl+R).</source>
         <translation>Jeszcze nie dopasowano: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
@@ -1659,7 +1940,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::OverviewPage</name>
     <message>
-        <location filename="../app/gui/overviewpage.cpp" line="+23"/>
+        <location filename="../app/gui/overviewpage.cpp" line="+29"/>
         <source>Project overview</source>
         <translation>Przegląd projektu</translation>
     </message>
@@ -1694,7 +1975,27 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zbiory danych</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+12"/>
+        <source>&lt;b&gt;New here?&lt;/b&gt; Open the demo project: sample data for every study (setup correction, posture matching, kinematics &amp;amp; SPC, thermal, diagnosis) to try each page. It is also in &lt;i&gt;Help › Open demo project&lt;/i&gt;.</source>
+        <translation>&lt;b&gt;Pierwszy raz?&lt;/b&gt; Otwórz projekt demonstracyjny: przykładowe dane dla każdego studium (korekcja danych ustawczych, dopasowanie położenia, kinematyka i SPC, termika, diagnoza), aby wypróbować każdą stronę. Jest też dostępny w menu &lt;i&gt;Pomoc › Otwórz projekt demonstracyjny&lt;/i&gt;.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Open the demo project</source>
+        <translation>&amp;Otwórz projekt demonstracyjny</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Copies the bundled demo project into a folder of your own and opens it</source>
+        <translation>Kopiuje dołączony projekt demonstracyjny do własnego folderu i otwiera go</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Hide this hint (it does not come back)</source>
+        <translation>Ukryj tę wskazówkę (nie pojawi się ponownie)</translation>
+    </message>
+    <message>
+        <location line="+48"/>
         <source>not saved yet</source>
         <translation>jeszcze nie zapisano</translation>
     </message>
@@ -1702,7 +2003,29 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/pointview/pointsetview.cpp" line="+540"/>
+        <location filename="../widgets/pointview/pointsetview.cpp" line="+293"/>
+        <source>deviation
+(mm)</source>
+        <translation>odchyłka
+(mm)</translation>
+    </message>
+    <message>
+        <location line="+225"/>
+        <source>grey: nominal points; coloured: measured, deviation vectors x%1</source>
+        <translation>szare: nominalne; kolorowe: zmierzone, wektory odchyłek x%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>after matching: solid; before (nominal and measured): faded</source>
+        <translation>po dopasowaniu: pełne; przed (nominalne i zmierzone): wyblakłe</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>green: within +-%1 mm; large: out of tolerance</source>
+        <translation>zielone: w granicach +-%1 mm; duże: poza tolerancją</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>3D view needs an X11 display (run under xvfb-run for headless use)</source>
         <translation>Widok 3D wymaga ekranu X11 (bez monitora uruchom przez xvfb-run)</translation>
     </message>
@@ -1710,7 +2033,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PolarDeviationView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-57"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-60"/>
         <source>Radial deviation of the measured path from the nominal circle, magnified (ballbar plot): plotted radius = R + k × deviation. Blue: CCW loop, orange: CW loop; the rings are labelled in µm.</source>
         <translation>Odchyłka promieniowa zmierzonego toru od okręgu nominalnego, powiększona (wykres ballbar): promień na wykresie = R + k × odchyłka. Niebieski: pętla przeciwnie do ruchu wskazówek zegara, pomarańczowy: zgodnie; okręgi opisano w µm.</translation>
     </message>
@@ -1718,7 +2041,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PreferencesDialog</name>
     <message>
-        <location filename="../app/gui/preferencesdialog.cpp" line="+16"/>
+        <location filename="../app/gui/preferencesdialog.cpp" line="+19"/>
         <source>Preferences</source>
         <translation>Preferencje</translation>
     </message>
@@ -1728,7 +2051,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Systemowy</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off</source>
+        <translation>Wył.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>While the project has unsaved changes, a copy is written next to it this often, and offered for recovery after a crash (0: off)</source>
+        <translation>Dopóki projekt ma niezapisane zmiany, w tych odstępach obok niego zapisywana jest kopia, proponowana do przywrócenia po awarii (0: wyłączone)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>The language is applied at the next start of Metrofit.</source>
         <translation>Język zostanie zastosowany przy następnym uruchomieniu programu Metrofit.</translation>
     </message>
@@ -1736,6 +2074,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+4"/>
         <source>&amp;Language:</source>
         <translation>&amp;Język:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Autosave every:</source>
+        <translation>&amp;Autozapis co:</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1766,12 +2109,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Edycja notatek: %1</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+135"/>
         <source>Untitled</source>
         <translation>Bez nazwy</translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="+133"/>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>projekt nie został jeszcze zapisany; wybierz nazwę pliku poleceniem „Zapisz jako”</translation>
     </message>
@@ -1794,7 +2137,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+38"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+486"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+527"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -1890,8 +2233,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+206"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-199"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+218"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-239"/>
         <source>yes</source>
         <translation>tak</translation>
     </message>
@@ -1923,7 +2266,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+13"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+176"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+216"/>
         <source>error (%1)</source>
         <translation>błąd (%1)</translation>
     </message>
@@ -1963,7 +2306,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dla każdego studium dopasowywany jest zadeklarowany model i obliczane jego residuum; brakujące w modelu efekty kandydujące są sprawdzane kolejno, każdy estymowany wraz z parametrami i ich błędami standardowymi. Efekt jest przyjmowany tylko na podstawie dowodów (poprawa na danych testowych dla termiki, w pozostałych przypadkach kryterium informacyjne z ostrożnym progiem) i gdy zmniejsza błąd o praktycznie istotną wartość; model jest ponownie dopasowywany z tym efektem, a wyszukiwanie powtarzane, dopóki nic więcej nie zostanie znalezione.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-158"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-170"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
@@ -2014,17 +2357,27 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+191"/>
+        <location line="+203"/>
         <source>Circular test “%1”</source>
         <translation>Test kołowy „%1”</translation>
     </message>
     <message>
-        <location line="-183"/>
+        <location line="-195"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (seed 002, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>Punkty: %1; okrąg nominalny R %2 mm wokół (%3, %4) mm; pętle: %5 (przeciwnie do ruchu wskazówek zegara, potem zgodnie). Błędy napędów maszyny kartezjańskiej (źródło 002, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) zidentyfikowano metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+12"/>
+        <source>Includes applied effects: %1 (added with Apply on the diagnosis page). The errors above were identified with them and the compensated references include their corrections.</source>
+        <translation>Zawiera zastosowane efekty: %1 (dodane przyciskiem „Zastosuj do modelu” na stronie diagnozy). Powyższe błędy zidentyfikowano z ich uwzględnieniem, a skompensowane wartości zadane zawierają ich korekcje.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>RMS residual of the declared model alone: %1 µm.</source>
+        <translation>Residuum RMS samego zadeklarowanego modelu: %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Path (XY)</source>
         <translation>Tor (XY)</translation>
     </message>
@@ -2105,7 +2458,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+366"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+371"/>
         <source>value</source>
         <translation>wartość</translation>
     </message>
@@ -2200,7 +2553,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Nie można przeanalizować tego testu kołowego: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-325"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="-329"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (parametry z publikacji)</translation>
     </message>
@@ -2220,7 +2573,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>minimaks</translation>
     </message>
     <message>
-        <location line="+189"/>
+        <location line="+188"/>
         <source>Probe points “%1”, tolerance ±%2 mm</source>
         <translation>Punkty sondowania „%1”, tolerancja ±%2 mm</translation>
     </message>
@@ -2250,7 +2603,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>odległość |p − (sRq + t)|</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+2"/>
+        <source>Includes applied effects: %1 (diagnosis, Apply). The nominal points were deformed by them before matching, so the deviations and the machine adjustments below are those of the model with these effects.</source>
+        <translation>Zawiera zastosowane efekty: %1 (diagnoza, Zastosuj). Punkty nominalne zostały przez nie odkształcone przed dopasowaniem, więc poniższe odchyłki i nastawienia maszyny dotyczą modelu z tymi efektami.</translation>
+    </message>
+    <message>
+        <location line="+39"/>
         <source>Before matching</source>
         <translation>Przed dopasowaniem</translation>
     </message>
@@ -2351,7 +2709,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+177"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+196"/>
         <source>method</source>
         <translation>metoda</translation>
     </message>
@@ -2484,9 +2842,9 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+21"/>
         <location filename="../widgets/report/report.cpp" line="+106"/>
-        <location filename="../widgets/report/setupsection.cpp" line="-72"/>
-        <location line="+35"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-207"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-91"/>
+        <location line="+39"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-247"/>
         <source>file</source>
         <translation>plik</translation>
     </message>
@@ -2619,7 +2977,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+67"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+82"/>
         <source>kind</source>
         <translation>rodzaj</translation>
     </message>
@@ -2675,7 +3033,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>strona %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/setupsection.cpp" line="-157"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-176"/>
         <source>machine point</source>
         <translation>punkt maszyny</translation>
     </message>
@@ -2745,7 +3103,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Projekt nie ma raportu WMP dla tego modelu: nie ma czego korygować.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
         <source>Report data “%1”</source>
         <translation>Dane raportu „%1”</translation>
     </message>
@@ -2757,7 +3115,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+1"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+1"/>
-        <location line="+134"/>
+        <location line="+174"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
@@ -2777,7 +3135,42 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>f1 = %1 mm; %2 z %3 średnich odchyłek poza tolerancją</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+6"/>
+        <source>%1 (deviation of a dimension: predicted for part %2)</source>
+        <translation>%1 (odchyłka wymiaru: przewidywana dla przedmiotu %2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>applied effects</source>
+        <translation>zastosowane efekty</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (diagnosis, Apply)</source>
+        <translation>%1 (diagnoza, Zastosuj)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>model residual</source>
+        <translation>residuum modelu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rms %1 mm (declared model %2 mm)</source>
+        <translation>rms %1 mm (zadeklarowany model %2 mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>last part predicted</source>
+        <translation>prognoza ostatniego przedmiotu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rms %1 mm from the other parts (declared model %2 mm)</source>
+        <translation>rms %1 mm na podstawie pozostałych przedmiotów (zadeklarowany model %2 mm)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Settings</source>
         <translation>Ustawienia</translation>
     </message>
@@ -2887,7 +3280,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>metrofit-cli setup --export fanuc zapisuje ten sam tekst; Heidenhain, Siemens i CSV to pozostałe formaty (patrz konwencja znaków w nagłówku).</translation>
     </message>
     <message>
-        <location filename="../widgets/report/thermalsection.cpp" line="-221"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-261"/>
         <source>%1 h</source>
         <translation>%1 h</translation>
     </message>
@@ -3023,7 +3416,32 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>na wykresie</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+33"/>
+        <source>%1 → %2%3</source>
+        <translation>%1 → %2%3</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>used by %1 (held-out error %2)</source>
+        <translation>używane przez %1 (błąd danych testowych %2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not used by %1 (held-out error would rise: %2)</source>
+        <translation>nieużywane przez %1 (błąd danych testowych wzrósłby: %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not used by %1 (held-out error would not fall: %2)</source>
+        <translation>nieużywane przez %1 (błąd danych testowych nie zmalałby: %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Applied effects %1 (added with Apply on the diagnosis page; each model is fitted with and without them and keeps the lower held-out error): %2.</source>
+        <translation>Zastosowane efekty %1 (dodane przyciskiem „Zastosuj do modelu” na stronie diagnozy; każdy model jest dopasowywany z nimi i bez nich i zachowuje mniejszy błąd danych testowych): %2.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Hysteresis</source>
         <translation>Histereza</translation>
     </message>
@@ -3088,7 +3506,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Aby skrócić czas tworzenia raportu, ten rejestr (wiersze: %1) jest dopasowywany na co %2. wierszu (wiersze: %3); GUI i metrofit-cli dopasowują wszystkie wiersze.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>The models could not be fitted: %1</source>
         <translation>Nie można było dopasować modeli: %1</translation>
     </message>
@@ -3254,7 +3672,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ResidualPlot</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="-266"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="-269"/>
         <source>before the effect</source>
         <translation>przed efektem</translation>
     </message>
@@ -3268,11 +3686,21 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <source> (arrows × %1)</source>
         <translation> (strzałki × %1)</translation>
     </message>
+    <message>
+        <location line="+18"/>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::ResidualPlotView</name>
     <message>
-        <location line="+107"/>
+        <location line="+90"/>
         <source>Residual plot: run the diagnosis (Ctrl+R)</source>
         <translation>Wykres residuów: uruchom diagnozę (Ctrl+R)</translation>
     </message>
@@ -3290,7 +3718,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupCharts</name>
     <message>
-        <location filename="../widgets/setup/setupcharts.cpp" line="+66"/>
+        <location filename="../widgets/setup/setupcharts.cpp" line="+67"/>
         <source>exact</source>
         <translation>dokładna</translation>
     </message>
@@ -3369,7 +3797,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupConvergenceView</name>
     <message>
-        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+27"/>
+        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+29"/>
         <source>Show f&amp;2 = |x|</source>
         <translation>f&amp;2 = |x|</translation>
     </message>
@@ -3397,7 +3825,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupGraphEditor</name>
     <message>
-        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+70"/>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+72"/>
         <source>Add node…</source>
         <translation>Dodaj węzeł…</translation>
     </message>
@@ -3728,7 +4156,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupMargins</name>
     <message>
-        <location filename="../widgets/setup/setupmargins.cpp" line="+84"/>
+        <location filename="../widgets/setup/setupmargins.cpp" line="+86"/>
         <source>tolerance zone</source>
         <translation>pole tolerancji</translation>
     </message>
@@ -3761,7 +4189,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupMarginsWidget</name>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>Run a method to see the margins before and after correction.</source>
         <translation>Uruchom metodę, aby zobaczyć zapasy przed i po korekcji.</translation>
     </message>
@@ -3837,7 +4265,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+87"/>
+        <location filename="../app/gui/setuppage.cpp" line="+105"/>
         <source>&amp;Save model</source>
         <translation>Zapi&amp;sz model</translation>
     </message>
@@ -3943,11 +4371,26 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+20"/>
-        <source>Notes on this study</source>
-        <translation>Notatki do tego studium</translation>
+        <source>Change the setup method</source>
+        <translation>Zmiana metody ustawienia</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+3"/>
+        <source>Change the setup budget</source>
+        <translation>Zmiana budżetu ustawienia</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Change the setup seed</source>
+        <translation>Zmiana ziarna ustawienia</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>The applied effects cannot be used: %1</source>
+        <translation>Nie można użyć zastosowanych efektów: %1</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>This project has no setup model. Add a dataset of kind &quot;setup_model&quot; (the relation graph, JSON) and a &quot;cmm_report&quot; to the project file.</source>
         <translation>Ten projekt nie ma modelu ustawczego. Dodaj do pliku projektu zbiór danych rodzaju „setup_model” (graf relacji, JSON) oraz „cmm_report”.</translation>
     </message>
@@ -3957,7 +4400,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ten projekt nie ma raportu WMP dla studium ustawienia (zbiór danych rodzaju „cmm_report”).</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Brak jeszcze wyniku dla tego modelu: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
     </message>
@@ -3991,7 +4434,27 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Najmniejszy budżet błędu przed korekcją f1 = %1 mm.</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+6"/>
+        <source>deviations predicted for part %1; residual rms %2 mm (declared model %3 mm)</source>
+        <translation>odchyłki przewidywane dla przedmiotu %1; residuum rms %2 mm (zadeklarowany model %3 mm)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>, last part predicted from the others %1 mm (declared %2 mm)</source>
+        <translation>, ostatni przedmiot przewidziany z pozostałych %1 mm (zadeklarowany %2 mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Includes applied effects: %1 — %2.</source>
+        <translation>Zawiera zastosowane efekty: %1 — %2.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Effects applied on the Diagnosis page belong to the report %1 (the one the diagnosis ran on); this report uses the declared model.</source>
+        <translation>Efekty zastosowane na stronie Diagnoza należą do raportu %1 (tego, na którym przeprowadzono diagnozę); ten raport używa zadeklarowanego modelu.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>The setup study has no model or report to run on.</source>
         <translation>Studium ustawienia nie ma modelu ani raportu do obliczeń.</translation>
     </message>
@@ -4040,7 +4503,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
         <translation>Model zapisano, ale raport WMP już do niego nie pasuje (przebiegi używają raportu wczytanego względem poprzedniego modelu): %1</translation>
     </message>
@@ -4053,7 +4516,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupResultsView</name>
     <message>
-        <location filename="../widgets/setup/setupresultsview.cpp" line="+29"/>
+        <location filename="../widgets/setup/setupresultsview.cpp" line="+30"/>
         <source>machine point</source>
         <translation>punkt maszyny</translation>
     </message>
@@ -4068,7 +4531,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>długość narzędzia</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Setup datum</source>
         <translation>Dana ustawcza</translation>
     </message>
@@ -4204,7 +4667,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupValidationView</name>
     <message>
-        <location filename="../widgets/setup/setupvalidationview.cpp" line="+60"/>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+61"/>
         <source>Simulated measurement sets N (the paper: 100)</source>
         <translation>Symulowane zestawy pomiarów N (publikacja: 100)</translation>
     </message>
@@ -4249,7 +4712,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Walidacja statystyczna z publikacji: symulowane zestawy pomiarów z błędami danych ustawczych i losowymi (równ. 12–13), każdy korygowany metodą dokładną i M próbami wybranych metaheurystyk; zestawy posortowane wg budżetu przed korekcją (rys. 18).</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Measurement sets N:</source>
         <translation>Zestawy pomiarów N:</translation>
     </message>
@@ -4317,7 +4780,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SpcView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+86"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+90"/>
         <source>index</source>
         <translation>wskaźnik</translation>
     </message>
@@ -4337,7 +4800,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Histogram %1 (wartości: %2)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>feature</source>
         <translation>cecha</translation>
     </message>
@@ -4460,9 +4923,65 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
 </context>
 <context>
+    <name>metrofit::StudyActions</name>
+    <message>
+        <location filename="../app/gui/studyactions.cpp" line="+52"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Uruchom</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Run the study</source>
+        <translation>&amp;Uruchom studium</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Runs the method of the page shown (its Run button, Ctrl+R)</source>
+        <translation>Uruchamia metodę wyświetlanej strony (jej przycisk Uruchom, Ctrl+R)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Cancel the run</source>
+        <translation>&amp;Anuluj obliczenia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stops the running method of the page shown</source>
+        <translation>Zatrzymuje działającą metodę wyświetlanej strony</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Nothing to run on this page</source>
+        <translation>Na tej stronie nie ma nic do uruchomienia</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Nothing is running</source>
+        <translation>Nic nie jest uruchomione</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::TableCopy</name>
+    <message>
+        <location filename="../widgets/common/tablecopy.cpp" line="+88"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopiuj</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Copy the selected cells with their column headers, tab-separated</source>
+        <translation>Kopiuj zaznaczone komórki wraz z nagłówkami kolumn, rozdzielone tabulatorami</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Select &amp;all</source>
+        <translation>Zaznacz &amp;wszystko</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::ThermalCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalcharts.cpp" line="+59"/>
+        <location filename="../widgets/charts/thermalcharts.cpp" line="+60"/>
         <source>temperature</source>
         <translation>temperatura</translation>
     </message>
@@ -4515,7 +5034,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+100"/>
+        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+105"/>
         <source>loop area in %1 × %2</source>
         <translation>pole pętli w %1 × %2</translation>
     </message>
@@ -4535,7 +5054,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Czujnik względem przemieszczenia lub wszystkie czujniki obok siebie</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>sensor</source>
         <translation>czujnik</translation>
     </message>
@@ -4610,7 +5129,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelcharts.cpp" line="+76"/>
+        <location filename="../widgets/charts/thermalmodelcharts.cpp" line="+77"/>
         <source>time (h)</source>
         <translation>czas (h)</translation>
     </message>
@@ -4627,10 +5146,10 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+7"/>
         <source>fit | held-out boundary</source>
-        <translation>granica: dopasowanie | dane testowe</translation>
+        <translation>granica dopas./test</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+69"/>
         <source>%1: lag %2 min</source>
         <translation>%1: opóźnienie %2 min</translation>
     </message>
@@ -4684,7 +5203,47 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+171"/>
+        <location filename="../widgets/charts/thermalmodelview.cpp" line="+76"/>
+        <source>%1 → %2%3</source>
+        <translation>%1 → %2%3</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>used by %1 (held-out error %2)</source>
+        <translation>używane przez %1 (błąd danych testowych %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not used by %1 (held-out error would rise: %2)</source>
+        <translation>nieużywane przez %1 (błąd danych testowych wzrósłby: %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not used by %1 (held-out error would not fall: %2)</source>
+        <translation>nieużywane przez %1 (błąd danych testowych nie zmalałby: %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Applied effects %1: %2.</source>
+        <translation>Zastosowane efekty %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+92"/>
+        <source>Applied effects %1: Train (Ctrl+R) fits each model with and without them and keeps the lower held-out error.</source>
+        <translation>Zastosowane efekty %1: Trenuj (Ctrl+R) dopasowuje każdy model z nimi i bez nich i zachowuje mniejszy błąd danych testowych.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Effects added with Apply on the Diagnosis page (lagged inputs, extra input columns, a drift term). Each model is fitted with the declared inputs and with the effects (same seed) and keeps the variant with the lower held-out error: an effect never makes a model worse on the held-out rows. Undo the Apply to fit the declared model only.</source>
+        <translation>Efekty dodane przyciskiem „Zastosuj do modelu” na stronie Diagnoza (opóźnione wejścia, dodatkowe kolumny wejściowe, składnik dryftu). Każdy model jest dopasowywany z zadeklarowanymi wejściami oraz z efektami (to samo ziarno) i zachowuje wariant o mniejszym błędzie danych testowych: efekt nigdy nie pogarsza modelu na wierszach testowych. Cofnij zastosowanie, aby dopasować tylko zadeklarowany model.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Applied effects cannot be used: %1</source>
+        <translation>Nie można użyć zastosowanych efektów: %1</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>fitness</source>
         <translation>fitness</translation>
     </message>
@@ -4715,44 +5274,44 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+52"/>
-        <location line="+111"/>
+        <location line="+53"/>
+        <location line="+118"/>
         <source>model</source>
         <translation>model</translation>
     </message>
     <message>
-        <location line="-163"/>
-        <location line="+163"/>
+        <location line="-171"/>
+        <location line="+171"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
     <message>
-        <location line="-162"/>
-        <location line="+162"/>
+        <location line="-170"/>
+        <location line="+170"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-162"/>
-        <location line="+162"/>
+        <location line="-170"/>
+        <location line="+170"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-161"/>
-        <location line="+52"/>
-        <location line="+109"/>
+        <location line="-169"/>
+        <location line="+53"/>
+        <location line="+116"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-161"/>
-        <location line="+161"/>
+        <location line="-169"/>
+        <location line="+169"/>
         <source>band</source>
         <translation>pasmo</translation>
     </message>
     <message>
-        <location line="-154"/>
+        <location line="-162"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -4767,7 +5326,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>wiersze dopasowania: %1, dane testowe: %2; %3.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 % (GMC(1,N) %2 %, MLP %3 %).</source>
         <translation>&lt;b&gt;Przypadek modułowy:&lt;/b&gt; GNNMCI(1,N) dopasowany na testach Z i C zmniejsza błąd testu łączonego o %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
     </message>
@@ -4837,7 +5396,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zatrzymaj trenowanie (Esc)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+14"/>
         <source>Best fitness of the GNNMCI(1,N) swarm (Eq. 2.9) per PSO iteration</source>
         <translation>Najlepsze przystosowanie roju GNNMCI(1,N) (równ. 2.9) w każdej iteracji PSO</translation>
     </message>
@@ -4862,7 +5421,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Wejści&amp;a:</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>Correlation coefficient of measured and predicted</source>
         <translation>Współczynnik korelacji wartości zmierzonych i przewidywanych</translation>
     </message>
@@ -4887,7 +5446,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Modele modułowe (rozdział 4.3)</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Performance indices (Table 4)</source>
         <translation>Wskaźniki jakości (tabela 4)</translation>
     </message>
@@ -4903,27 +5462,32 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location line="+128"/>
+        <location line="+134"/>
         <source>Training failed: %1</source>
         <translation>Trenowanie nie powiodło się: %1</translation>
     </message>
     <message>
-        <location line="-120"/>
+        <location line="-126"/>
         <source>Training cancelled after %1 PSO iterations; the results shown are the previous ones.</source>
         <translation>Trenowanie anulowano po %1 iteracjach PSO; pokazane wyniki są poprzednie.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Settings changed: Train (Ctrl+R) to update the results.</source>
         <translation>Zmieniono ustawienia: Trenuj (Ctrl+R), aby zaktualizować wyniki.</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+56"/>
         <source>Not trained yet: Train (Ctrl+R) fits the three models.</source>
         <translation>Jeszcze nie wytrenowano: Trenuj (Ctrl+R) dopasowuje trzy modele.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+12"/>
+        <source>Applied effects changed: Train (Ctrl+R) to update the results.</source>
+        <translation>Zmieniono zastosowane efekty: Trenuj (Ctrl+R), aby zaktualizować wyniki.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <location line="+30"/>
         <source>Choose at least one input.</source>
         <translation>Wybierz co najmniej jedno wejście.</translation>
@@ -4937,7 +5501,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+65"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+81"/>
         <source>T&amp;rend</source>
         <translation>&amp;Trend</translation>
     </message>
@@ -4987,14 +5551,19 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Licencja: %1.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>Cannot show this thermal log:
 %1</source>
         <translation>Nie można wyświetlić tego rejestru termicznego:
 %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+11"/>
+        <source>Effects applied on the Diagnosis page belong to the log %1 (the one the diagnosis ran on); the models of this log do not include them.</source>
+        <translation>Efekty zastosowane na stronie Diagnoza należą do rejestru termicznego %1 (tego, na którym przeprowadzono diagnozę); modele tego rejestru ich nie uwzględniają.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>Choose the thermal log</source>
         <translation>Wybór rejestru termicznego</translation>
     </message>
@@ -5024,7 +5593,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana ustawień modelu termicznego</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+81"/>
         <source>Modular case: %1</source>
         <translation>Przypadek modułowy: %1</translation>
     </message>
@@ -5037,7 +5606,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalTrendView</name>
     <message>
-        <location filename="../widgets/charts/thermaltrendview.cpp" line="+82"/>
+        <location filename="../widgets/charts/thermaltrendview.cpp" line="+84"/>
         <source>Channels shown in the chart</source>
         <translation>Kanały pokazane na wykresie</translation>
     </message>

@@ -51,7 +51,10 @@ void setRow(QTableWidget* t, int row, const QStringList& cells, const QString& t
   for (int c = 0; c < cells.size(); ++c) {
     auto* item = new QTableWidgetItem(cells[c]);
     if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    if (!tip.isEmpty()) item->setToolTip(tip);
+    if (!tip.isEmpty())
+      item->setToolTip(tip);
+    else if (c == 0)  // the label column stretches into what is left and may be cut short
+      item->setToolTip(cells[c]);
     t->setItem(row, c, item);
   }
 }

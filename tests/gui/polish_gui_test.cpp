@@ -170,7 +170,7 @@ TEST(Layout, EveryPageFitsA1280x800ScreenInGermanAndPolish) {
   QTemporaryDir dir;
   ASSERT_TRUE(dir.isValid());
   const QString project = extractDemoProject(dir.path());
-  for (const QString language : {QStringLiteral("de"), QStringLiteral("pl")}) {
+  for (const QString& language : {QStringLiteral("de"), QStringLiteral("pl")}) {
     SCOPED_TRACE(language.toStdString());
     QTranslator translator;
     ASSERT_TRUE(translator.load(QStringLiteral(METROFIT_QM_DIR "/metrofit_") + language));
