@@ -13,6 +13,7 @@
 #include <exception>
 
 #include "app/gui/notesedit.h"
+#include "core/diagnose/applied_setup_matching.h"
 #include "core/diagnose/thermal_applied.h"
 #include "core/thermal/thermal_log.h"
 #include "widgets/charts/thermalhysteresisview.h"
@@ -34,16 +35,9 @@ QString settingsKey(const QString& id, const ThermalModelSettings& s) {
 
 /// The dataset the diagnosis of `domain` ran on when effects were applied there and it is not
 /// `datasetId` (the applied effects belong to that dataset), else empty.
+/// The dataset whose diagnosis applied effects (not this one), or empty: core's rule, as a QString.
 QString appliedElsewhere(const Project& project, const char* domain, const std::string& datasetId) {
-  const auto diag = project.studies.find(study::kDiagnosis);
-  if (diag == project.studies.end() || !diag->is_object()) return {};
-  const auto block = diag->find(domain);
-  if (block == diag->end() || !block->is_object()) return {};
-  const auto applied = block->find("applied");
-  if (applied == block->end() || !applied->is_array() || applied->empty()) return {};
-  const auto dataset = block->find("dataset");
-  if (dataset == block->end() || !dataset->is_string() || dataset->get<std::string>() == datasetId) return {};
-  return QString::fromStdString(dataset->get<std::string>());
+  return QString::fromStdString(diagnose::appliedEffectsElsewhere(project, domain, datasetId));
 }
 
 }  // namespace
