@@ -53,7 +53,7 @@ Pso::Options Pso::Options::abdulshahed2016() {
 
 Pso::Options Pso::Options::ring() {
   Options o;
-  o.swarmSize = 100;
+  o.swarmSize = 60;
   o.inertiaStart = o.inertiaEnd = 0.7298;
   o.c1 = o.c2 = 1.49618;
   o.acceleration = Acceleration::Cosine;

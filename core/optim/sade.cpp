@@ -50,6 +50,30 @@ std::size_t pick(Rng& rng, std::size_t n) {
   return std::min(n - 1, static_cast<std::size_t>(rng.uniform() * static_cast<double>(n)));
 }
 
+/// Fills the np x n population with uniform random feasible points and evaluates them (as far as
+/// the budget goes; rows beyond it keep fitness +inf).
+void randomPopulation(Tracker& tracker, std::size_t np, std::vector<double>& pop, std::vector<double>& fit) {
+  const std::size_t n = tracker.dimension();
+  std::fill(fit.begin(), fit.end(), std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < np && !tracker.exhausted(); ++i) {
+    const std::vector<double> x = tracker.randomPoint();
+    std::span<double> row(pop.data() + i * n, n);
+    std::copy(x.begin(), x.end(), row.begin());
+    fit[i] = tracker.evaluate(row);
+  }
+}
+
+/// The tracker's result; a run that stopped after generation Gm says so instead of "budget".
+Result finishRun(Tracker& tracker, bool reachedGm, long gm) {
+  Result result = tracker.finish();
+  if (reachedGm && result.run.termination == Termination::BudgetExhausted) {
+    result.run.termination = Termination::MaxIterations;
+    result.run.message = "reached the maximum generation Gm = " + std::to_string(gm) + " after " +
+                         std::to_string(result.run.evaluations) + " evaluations";
+  }
+  return result;
+}
+
 }  // namespace
 
 double Sade::mutationFactor(double f0, long g, long gm) {
@@ -78,13 +102,8 @@ Result optimiseShade(const Sade::Options& o, Tracker& tracker, long gm) {
     hi[j] = problem.upper(j);
   }
   std::vector<double> pop(np * n), next(np * n), trial(n);
-  std::vector<double> fit(np, std::numeric_limits<double>::infinity()), nextFit(np);
-  for (std::size_t i = 0; i < np && !tracker.exhausted(); ++i) {
-    const std::vector<double> x = tracker.randomPoint();
-    std::span<double> row(pop.data() + i * n, n);
-    std::copy(x.begin(), x.end(), row.begin());
-    fit[i] = tracker.evaluate(row);
-  }
+  std::vector<double> fit(np), nextFit(np);
+  randomPopulation(tracker, np, pop, fit);
   bool stop = tracker.endIteration();
 
   std::vector<double> memF(kMemory, 0.5), memCr(kMemory, 0.5);
@@ -175,25 +194,14 @@ Result optimiseShade(const Sade::Options& o, Tracker& tracker, long gm) {
     if (!stop) {
       const auto [mn, mx] = std::minmax_element(fit.begin(), fit.end());
       if (*mx - *mn <= 1e-8 * std::abs(*mn)) {
-        for (std::size_t i = 0; i < np && !tracker.exhausted(); ++i) {
-          const std::vector<double> x = tracker.randomPoint();
-          std::span<double> row(pop.data() + i * n, n);
-          std::copy(x.begin(), x.end(), row.begin());
-          fit[i] = tracker.evaluate(row);
-        }
+        randomPopulation(tracker, np, pop, fit);
         std::fill(memF.begin(), memF.end(), 0.5);
         std::fill(memCr.begin(), memCr.end(), 0.5);
         archive.clear();
       }
     }
   }
-  Result result = tracker.finish();
-  if (reachedGm && result.run.termination == Termination::BudgetExhausted) {
-    result.run.termination = Termination::MaxIterations;
-    result.run.message = "reached the maximum generation Gm = " + std::to_string(gm) + " after " +
-                         std::to_string(result.run.evaluations) + " evaluations";
-  }
-  return result;
+  return finishRun(tracker, reachedGm, gm);
 }
 
 }  // namespace
@@ -216,13 +224,8 @@ Result Sade::optimise(const Problem& problem, Observer* observer) const {
 
   // Generation 0: NP uniform random feasible points.
   std::vector<double> pop(np * n), next(np * n), trial(n);
-  std::vector<double> fit(np, std::numeric_limits<double>::infinity()), nextFit(np);
-  for (std::size_t i = 0; i < np && !tracker.exhausted(); ++i) {
-    const std::vector<double> x = tracker.randomPoint();
-    std::span<double> row(pop.data() + i * n, n);
-    std::copy(x.begin(), x.end(), row.begin());
-    fit[i] = tracker.evaluate(row);
-  }
+  std::vector<double> fit(np), nextFit(np);
+  randomPopulation(tracker, np, pop, fit);
   bool stop = tracker.endIteration();
 
   // jDE state (SelfAdaptive only): each individual's F_i and CR_i.
@@ -294,13 +297,7 @@ Result Sade::optimise(const Problem& problem, Observer* observer) const {
     }
   }
 
-  Result result = tracker.finish();
-  if (reachedGm && result.run.termination == Termination::BudgetExhausted) {
-    result.run.termination = Termination::MaxIterations;
-    result.run.message = "reached the maximum generation Gm = " + std::to_string(gm) + " after " +
-                         std::to_string(result.run.evaluations) + " evaluations";
-  }
-  return result;
+  return finishRun(tracker, reachedGm, gm);
 }
 
 }  // namespace metrofit::optim

@@ -169,6 +169,8 @@ int main(int argc, char** argv) {
       }
     } else if (a == "--seeds" && i + 1 < argc) {
       optimOptions.seeds = std::max(1, std::atoi(argv[++i]));
+    } else if (a == "--first-seed" && i + 1 < argc) {
+      optimOptions.firstSeed = std::max(1, std::atoi(argv[++i]));
     } else if (a == "--repeat" && i + 1 < argc)
       repeat = std::max(1, std::atoi(argv[++i]));
     else if (a == "--json" && i + 1 < argc)

@@ -237,11 +237,11 @@ struct PeerMethod {
   std::function<pagmo::population(pagmo::population, unsigned gen, unsigned seed)> evolve;
 };
 
-Stats runOurs(const BenchProblem& p, const OurMethod& m, int seeds, long budget) {
+Stats runOurs(const BenchProblem& p, const OurMethod& m, int firstSeed, int seeds, long budget) {
   Stats s;
   if (p.budget > 0) budget = p.budget;
   const long b = std::max(1L, budget / m.populationForBudget * m.populationForBudget);
-  for (int seed = 1; seed <= seeds; ++seed) {
+  for (int seed = firstSeed; seed < firstSeed + seeds; ++seed) {
     const double t0 = threadCpuSeconds();
     const optim::Result r = m.run(*p.ours, static_cast<std::uint64_t>(seed), b);
     s.seconds += threadCpuSeconds() - t0;
@@ -253,11 +253,11 @@ Stats runOurs(const BenchProblem& p, const OurMethod& m, int seeds, long budget)
   return s;
 }
 
-Stats runPeer(const BenchProblem& p, const PeerMethod& m, int seeds, long budget) {
+Stats runPeer(const BenchProblem& p, const PeerMethod& m, int firstSeed, int seeds, long budget) {
   Stats s;
   if (p.budget > 0) budget = p.budget;
   const unsigned gen = static_cast<unsigned>(std::max(0L, budget / static_cast<long>(m.population) - 1));
-  for (int seed = 1; seed <= seeds; ++seed) {
+  for (int seed = firstSeed; seed < firstSeed + seeds; ++seed) {
     pagmo::problem prob = p.peer;  // fresh copy (fevals 0), made outside the timing
     const double t0 = threadCpuSeconds();
     pagmo::population pop(std::move(prob), m.population, static_cast<unsigned>(seed));
@@ -335,22 +335,23 @@ nlohmann::json benchOptimizers(const OptimBenchOptions& options) {
 
   std::printf(
       "optimizers: %u-D, budget %ld evaluations per run (a method and its pagmo peer: NP * floor(B/NP)), "
-      "%d seeds; objective = error to the known optimum (minimised)\n",
-      kDim, budget, seeds);
+      "%d seeds (%d..%d); objective = error to the known optimum (minimised)\n",
+      kDim, budget, seeds, options.firstSeed, options.firstSeed + seeds - 1);
   std::printf("%-14s %-15s %6s %11s %11s %11s %9s   %-11s %11s %9s %7s\n", "problem", "method", "evals",
               "median", "best", "worst", "ns/eval", "peer", "peer median", "peer ns", "ns/peer");
 
   nlohmann::json rows = nlohmann::json::array(), targets = nlohmann::json::array();
   for (const BenchProblem& p : problems) {
     std::vector<std::pair<std::string, Stats>> peerStats;
-    for (const PeerMethod& m : peers) peerStats.emplace_back(m.name, runPeer(p, m, seeds, budget));
+    for (const PeerMethod& m : peers)
+      peerStats.emplace_back(m.name, runPeer(p, m, options.firstSeed, seeds, budget));
     const auto findPeer = [&](const std::string& name) -> const Stats* {
       for (const auto& [n, s] : peerStats)
         if (n == name) return &s;
       return nullptr;
     };
     for (const OurMethod& m : ourMethods) {
-      const Stats s = runOurs(p, m, seeds, budget);
+      const Stats s = runOurs(p, m, options.firstSeed, seeds, budget);
       const Stats* ps = m.peer.empty() ? nullptr : findPeer(m.peer);
       std::printf("%-14s %-15s %6ld %11.4g %11.4g %11.4g %9.1f", p.name.c_str(), m.name.c_str(),
                   s.evaluationsPerRun(), s.median(), s.best(), s.worst(), s.nsPerEval());
@@ -411,7 +412,8 @@ nlohmann::json benchOptimizers(const OptimBenchOptions& options) {
                 sp ? "met" : "MISSED");
   }
   std::printf("  %d of %zu target checks missed\n", missed, 2 * targets.size());
-  return {{"dimension", kDim}, {"budget", budget}, {"seeds", seeds}, {"rows", rows}, {"targets", targets}};
+  return {{"dimension", kDim}, {"budget", budget},  {"seeds", seeds}, {"first_seed", options.firstSeed},
+          {"rows", rows},      {"targets", targets}};
 }
 
 }  // namespace metrofit::bench

@@ -9,7 +9,8 @@
 namespace metrofit::bench {
 
 struct OptimBenchOptions {
-  int seeds = 25;         ///< runs per problem and method (seeds 1..N); --quick: 5
+  int seeds = 25;         ///< runs per problem and method (seeds first..first+N-1); --quick: 5
+  int firstSeed = 1;      ///< --first-seed K: another sample of seeds (an out-of-sample check)
   long budget = 10000;    ///< objective evaluations per run (10-D problems)
   std::string sourceDir;  ///< the source tree (for the setup example in resources/demo/setup)
   /// --only P1,P2 / --methods M1,M2: run only these problems / our methods (empty: all). pagmo's

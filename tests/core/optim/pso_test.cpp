@@ -155,7 +155,7 @@ Pso::Options ringOptions(long budget) {
 
 TEST(PsoRing, PresetIsTheDocumentedOne) {
   const Pso::Options o = Pso::Options::ring();
-  EXPECT_EQ(o.swarmSize, 100);
+  EXPECT_EQ(o.swarmSize, 60);
   EXPECT_EQ(o.neighbours, 2);
   EXPECT_DOUBLE_EQ(o.inertiaStart, 0.7298);
   EXPECT_DOUBLE_EQ(o.inertiaEnd, 0.7298);
