@@ -275,7 +275,7 @@ void ThermalPage::updateHysteresis() {
   const QString key = settingsKey(logId_, s);
   if (key == hysteresisKey_) return;
   hysteresisKey_ = key;
-  hysteresis_->setLog(log_, s.target, s.inputs);
+  hysteresis_->analyseLater(log_, s.target, s.inputs);  // shown when the worker is done
 }
 
 void ThermalPage::updateModular(bool now) {
@@ -342,7 +342,9 @@ void ThermalPage::showView(const QString& view) {
     tabs_->setCurrentIndex(kTrendTab);
   } else if (view == QLatin1String("hysteresis")) {
     tabs_->setCurrentIndex(kHysteresisTab);
-    if (!logId_.isEmpty()) updateHysteresis();
+    if (logId_.isEmpty()) return;
+    updateHysteresis();
+    hysteresis_->finishAnalysis();
   } else if (view == QLatin1String("models")) {
     tabs_->setCurrentIndex(kModelsTab);
     if (logId_.isEmpty()) return;

@@ -61,6 +61,8 @@ class ThermalPage : public QWidget {
   void refresh();
   void showLog(int comboIndex);
   void onTabChanged(int index);
+  /// Starts the hysteresis analysis of the log and settings shown on a worker (the view shows it
+  /// when ready); nothing when the view already has them.
   void updateHysteresis();
   /// Starts the modular case in a worker (or runs it now when `now`); no effect without the datasets.
   void updateModular(bool now);

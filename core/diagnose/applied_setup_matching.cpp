@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/common/error.h"
+#include "core/diagnose/applied_entries.h"
 #include "core/io/csv.h"
 #include "core/project/project.h"
 
@@ -15,20 +16,6 @@ namespace {
 
 [[noreturn]] void fail(const std::string& source, const std::string& field, const std::string& what) {
   throw ValidationError(ErrorContext{source, 0, 0, field}, what);
-}
-
-std::string entryField(const std::string& field, std::size_t i) {
-  return field + "[" + std::to_string(i) + "]";
-}
-
-/// The entry's name (checked: a non-empty text).
-std::string entryName(const nlohmann::json& entry, const std::string& source, const std::string& at) {
-  if (!entry.is_object()) fail(source, at, "must be an object {\"name\": ..., \"parameters\": {...}}");
-  const auto it = entry.find("name");
-  if (it == entry.end()) fail(source, at + ".name", "is missing");
-  if (!it->is_string() || it->get<std::string>().empty())
-    fail(source, at + ".name", "must be the name of an effect (text)");
-  return it->get<std::string>();
 }
 
 /// A finite numeric parameter of the entry.
@@ -63,8 +50,8 @@ nlohmann::json projectAppliedEffects(const Project& project, const std::string& 
   const auto d = s->find(domain);
   if (d == s->end() || !d->is_object()) return nlohmann::json::array();
   const auto a = d->find("applied");
-  if (a == d->end() || a->is_null()) return nlohmann::json::array();
-  if (!a->is_array()) fail(source, appliedField(domain), "must be a list of effects");
+  if (a == d->end() || !isAppliedList(*a, appliedField(domain), appliedMessagesOf(source)))
+    return nlohmann::json::array();
   // Estimated on the diagnosis's dataset: another dataset keeps the declared model.
   if (d->value("dataset", nlohmann::json()) != nlohmann::json(datasetId)) return nlohmann::json::array();
   return *a;
@@ -89,12 +76,10 @@ std::vector<AppliedSetupEffect> parseAppliedSetupEffects(const nlohmann::json& a
                                                          const setup::Model& model, const std::string& source,
                                                          const std::string& field) {
   std::vector<AppliedSetupEffect> out;
-  if (applied.is_null()) return out;
-  if (!applied.is_array()) fail(source, field, "must be a list of effects");
   std::set<std::string> seen;
-  for (std::size_t i = 0; i < applied.size(); ++i) {
-    const std::string at = entryField(field, i);
-    const std::string name = entryName(applied[i], source, at);
+  forEachAppliedEntry(applied, field, appliedMessagesOf(source), [&](const AppliedEntry& entry) {
+    const std::string& at = entry.field;
+    const std::string& name = entry.name;
     AppliedSetupEffect e;
     e.name = name;
     std::string datum;
@@ -115,9 +100,9 @@ std::vector<AppliedSetupEffect> parseAppliedSetupEffects(const nlohmann::json& a
       fail(source, at + ".name", "'" + name + "': '" + datum + "' is not a tool");
     if (!seen.insert(name).second) fail(source, at + ".name", "'" + name + "' is applied twice");
     e.datum = static_cast<std::size_t>(index);
-    e.rate = entryNumber(applied[i], e.perPart ? "mm_per_part" : "mm_per_min", source, at);
+    e.rate = entryNumber(entry.json, e.perPart ? "mm_per_part" : "mm_per_min", source, at);
     out.push_back(std::move(e));
-  }
+  });
   return out;
 }
 
@@ -232,33 +217,31 @@ std::string AppliedMatchingEffects::describe() const {
 AppliedMatchingEffects parseAppliedMatchingEffects(const nlohmann::json& applied, const std::string& source,
                                                    const std::string& field) {
   AppliedMatchingEffects out;
-  if (applied.is_null()) return out;
-  if (!applied.is_array()) fail(source, field, "must be a list of effects");
   std::set<std::string> seen;
-  for (std::size_t i = 0; i < applied.size(); ++i) {
-    const std::string at = entryField(field, i);
-    const std::string name = entryName(applied[i], source, at);
+  forEachAppliedEntry(applied, field, appliedMessagesOf(source), [&](const AppliedEntry& entry) {
+    const std::string& at = entry.field;
+    const std::string& name = entry.name;
     if (!seen.insert(name).second) fail(source, at + ".name", "'" + name + "' is applied twice");
     if (name == "scale") {
-      out.effects.scalePpm = entryNumber(applied[i], "ppm", source, at);
+      out.effects.scalePpm = entryNumber(entry.json, "ppm", source, at);
       out.descriptions.push_back(fmt("scale (%+.4g ppm)", out.effects.scalePpm));
     } else if (name == "distortion") {
-      out.effects.distortionPpm = entryNumber(applied[i], "ppm", source, at);
-      out.effects.distortionAngleDeg = entryNumber(applied[i], "angle_deg", source, at);
+      out.effects.distortionPpm = entryNumber(entry.json, "ppm", source, at);
+      out.effects.distortionAngleDeg = entryNumber(entry.json, "angle_deg", source, at);
       out.descriptions.push_back(fmt("distortion (%.4g ppm", out.effects.distortionPpm) +
                                  fmt(" at %.3g deg)", out.effects.distortionAngleDeg));
     } else if (name.rfind("surface_offset:", 0) == 0) {
       const std::string surface = name.substr(15);
-      const double mm = entryNumber(applied[i], "mm", source, at);
+      const double mm = entryNumber(entry.json, "mm", source, at);
       out.effects.surfaceOffsetsMm.emplace_back(surface, mm);
-      out.surfaceEntry.push_back(i);
+      out.surfaceEntry.push_back(entry.index);
       out.descriptions.push_back(name + fmt(" (%+.4g mm)", mm));
     } else {
       fail(source, at + ".name",
            "'" + name + "' is not a matching effect (scale, surface_offset:<surface> or distortion)");
     }
     out.names.push_back(name);
-  }
+  });
   return out;
 }
 
@@ -270,7 +253,7 @@ ProbePointSet applyMatchingEffects(const ProbePointSet& set, const AppliedMatchi
   for (std::size_t k = 0; k < applied.effects.surfaceOffsetsMm.size(); ++k) {
     const std::string& surface = applied.effects.surfaceOffsetsMm[k].first;
     const std::string at =
-        entryField(field, k < applied.surfaceEntry.size() ? applied.surfaceEntry[k] : 0) + ".name";
+        appliedEntryField(field, k < applied.surfaceEntry.size() ? applied.surfaceEntry[k] : 0, "name");
     if (!set.hasNormals) fail(source, at, "surface_offset:" + surface + ": the probe points have no normals");
     if (!surfaces.count(surface))
       fail(source, at, "surface_offset:" + surface + ": the probe points have no surface '" + surface + "'");

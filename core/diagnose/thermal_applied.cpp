@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
+#include <mutex>
 
 #include "core/common/error.h"
+#include "core/diagnose/applied_entries.h"
 #include "core/io/csv.h"
 #include "core/project/project.h"
 #include "core/sim/effects_thermal.h"
@@ -11,10 +14,58 @@
 namespace metrofit::diagnose {
 namespace {
 
-std::string entryField(const std::string& field, std::size_t i, const std::string& key = {}) {
-  std::string f = field + "[" + std::to_string(i) + "]";
-  return key.empty() ? f : f + "." + key;
-}
+/// The observers of two runs made at once, shown to one observer as if the runs had been made one
+/// after the other: the first run's iterations as they come, the second's queued until the first has
+/// ended (then replayed in order, and passed on as they come). The observer is called by one thread
+/// at a time; once it says Stop, both runs stop. When the first run is cancelled the second's queue
+/// is dropped (the sequential run would not have started it).
+class SequencedPair {
+ public:
+  explicit SequencedPair(Observer* observer) : observer_(observer) {}
+
+  ObserverDecision first(const IterationSummary& s) {
+    const std::lock_guard lock(mutex_);
+    return stop_ ? ObserverDecision::Stop : forward(s);
+  }
+  ObserverDecision second(const IterationSummary& s) {
+    const std::lock_guard lock(mutex_);
+    if (stop_) return ObserverDecision::Stop;
+    if (!firstEnded_) {
+      queue_.push_back(s);
+      return ObserverDecision::Continue;
+    }
+    return forward(s);
+  }
+  /// The first run has ended (`cancelled`: it was stopped, or it failed).
+  void firstEnded(bool cancelled) {
+    const std::lock_guard lock(mutex_);
+    firstEnded_ = true;
+    if (cancelled) stop_ = true;
+    for (const IterationSummary& s : queue_) {
+      if (stop_ || forward(s) == ObserverDecision::Stop) break;
+    }
+    queue_.clear();
+  }
+  /// The observer said Stop (or the first run was cancelled).
+  bool stopped() const {
+    const std::lock_guard lock(mutex_);
+    return stop_;
+  }
+
+ private:
+  ObserverDecision forward(const IterationSummary& s) {  // with mutex_ held
+    if (!observer_ || observer_->onIteration(s) == ObserverDecision::Continue)
+      return ObserverDecision::Continue;
+    stop_ = true;
+    return ObserverDecision::Stop;
+  }
+
+  Observer* observer_;
+  mutable std::mutex mutex_;
+  bool firstEnded_ = false;
+  bool stop_ = false;
+  std::vector<IterationSummary> queue_;
+};
 
 std::string listOf(const std::vector<std::string>& names) {
   std::string s;
@@ -75,21 +126,12 @@ AppliedThermalEffects appliedThermalEffects(const nlohmann::json& applied, const
                                             const std::string& target, const std::vector<std::string>& inputs,
                                             const std::string& field) {
   AppliedThermalEffects out;
-  if (applied.is_null()) return out;
-  if (!applied.is_array())
-    throw ValidationError(ErrorContext{{}, 0, 0, field}, "must be a list of {\"name\", \"parameters\"}");
   std::vector<std::string> seen;
-  for (std::size_t i = 0; i < applied.size(); ++i) {
-    const nlohmann::json& e = applied[i];
-    if (!e.is_object())
-      throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i)},
-                            "must be an object {\"name\", \"parameters\"}");
-    const auto nameIt = e.find("name");
-    if (nameIt == e.end() || !nameIt->is_string())
-      throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i, "name")},
-                            "must be the effect's name (lag, lag:<column>, input:<column>, drift)");
-    const std::string name = nameIt->get<std::string>();
-    const ErrorContext where{{}, 0, 0, entryField(field, i, "name")};
+  const AppliedEntryMessages messages = appliedMessagesKnown("lag, lag:<column>, input:<column>, drift");
+  forEachAppliedEntry(applied, field, messages, [&](const AppliedEntry& entry) {
+    const nlohmann::json& e = entry.json;
+    const std::string& name = entry.name;
+    const ErrorContext where{{}, 0, 0, entry.at("name")};
     if (std::find(seen.begin(), seen.end(), name) != seen.end())
       throw ValidationError(where, "the effect '" + name + "' is applied twice");
     seen.push_back(name);
@@ -105,7 +147,7 @@ AppliedThermalEffects appliedThermalEffects(const nlohmann::json& applied, const
       const auto tau = params.find("tau_min");
       if (tau == params.end() || !tau->is_number() || !(tau->get<double>() > 0.0) ||
           !std::isfinite(tau->get<double>()))
-        throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i, "parameters.tau_min")},
+        throw ValidationError(ErrorContext{{}, 0, 0, entry.at("parameters.tau_min")},
                               "'" + name + "' needs a positive lag time constant tau_min (min)");
       const double t = tau->get<double>();
       if (name == "lag") {
@@ -133,7 +175,7 @@ AppliedThermalEffects appliedThermalEffects(const nlohmann::json& applied, const
       throw ValidationError(
           where, "unknown thermal effect '" + name + "' (known: lag, lag:<column>, input:<column>, drift)");
     }
-  }
+  });
   return out;
 }
 
@@ -168,14 +210,30 @@ bool keepsAppliedEffects(double declaredRmse, double withEffectsRmse) {
 ThermalVariantFit fitDeclaredAndWithEffects(const thermal::ThermalSeries& declared,
                                             const thermal::ThermalSeries& withEffects, double trainFraction,
                                             const thermal::ThermalFitOptions& options, Observer* observer) {
+  // The two fits are independent and each seeded: the with-effects fit runs on a thread of its own
+  // while the declared one runs here; the results are those of the sequential run, bit for bit.
+  SequencedPair observers(observer);
+  auto second = std::async(std::launch::async, [&observers, &withEffects, trainFraction, options] {
+    FunctionObserver o([&observers](const IterationSummary& s) { return observers.second(s); });
+    return thermal::fitAndEvaluate(withEffects, trainFraction, options, &o);
+  });
   ThermalVariantFit v;
-  v.declared = thermal::fitAndEvaluate(declared, trainFraction, options, observer);
-  if (v.declared.training.run.termination == Termination::Cancelled) {
-    v.cancelled = true;
+  try {
+    FunctionObserver o([&observers](const IterationSummary& s) { return observers.first(s); });
+    v.declared = thermal::fitAndEvaluate(declared, trainFraction, options, &o);
+  } catch (...) {
+    observers.firstEnded(true);  // stops the other fit; the future's destructor waits for it
+    throw;
+  }
+  const bool declaredCancelled = v.declared.training.run.termination == Termination::Cancelled;
+  observers.firstEnded(declaredCancelled);
+  if (declaredCancelled) {
+    second.wait();       // stopped at its next iteration; its result (or error) is not reported
+    v.cancelled = true;  // the sequential run would not have started the second fit
     return v;
   }
-  v.withEffects = thermal::fitAndEvaluate(withEffects, trainFraction, options, observer);
-  if (v.withEffects.training.run.termination == Termination::Cancelled) {
+  v.withEffects = second.get();
+  if (v.withEffects.training.run.termination == Termination::Cancelled || observers.stopped()) {
     v.cancelled = true;
     v.usesEffects = true;  // the cancelled run is the one reported
     return v;

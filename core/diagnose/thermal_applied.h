@@ -105,9 +105,11 @@ struct ThermalVariantFit {
 /// True when a fit with held-out RMSE `withEffectsRmse` is kept over one with `declaredRmse`.
 bool keepsAppliedEffects(double declaredRmse, double withEffectsRmse);
 
-/// thermal::fitAndEvaluate on `declared`, then on `withEffects` (both with `options`, so the same
-/// seed), the kept variant chosen with keepsAppliedEffects. Both report to `observer`; when it stops
-/// the declared fit, the second one is not run.
+/// thermal::fitAndEvaluate on `declared` and on `withEffects` (both with `options`, so the same
+/// seed), the kept variant chosen with keepsAppliedEffects. The two fits run at once (the second on a
+/// thread of its own) with the results of running them one after the other, bit for bit, and
+/// `observer` sees what it saw then, one call at a time: the declared fit's iterations, then the
+/// with-effects fit's. When it stops the declared fit, the second one is stopped and not reported.
 ThermalVariantFit fitDeclaredAndWithEffects(const thermal::ThermalSeries& declared,
                                             const thermal::ThermalSeries& withEffects, double trainFraction,
                                             const thermal::ThermalFitOptions& options,

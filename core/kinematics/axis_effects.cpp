@@ -6,16 +6,18 @@
 #include <optional>
 
 #include "core/common/error.h"
+#include "core/diagnose/applied_entries.h"
 #include "core/io/csv.h"
 #include "core/project/project.h"
 
 namespace metrofit {
 namespace {
 
-std::string entryField(const std::string& field, std::size_t i, const std::string& key = {}) {
-  std::string f = field + "[" + std::to_string(i) + "]";
-  return key.empty() ? f : f + "." + key;
-}
+using diagnose::AppliedEntry;
+using diagnose::AppliedEntryMessages;
+using diagnose::appliedMessagesKnown;
+using diagnose::forEachAppliedEntry;
+using diagnose::isAppliedList;
 
 std::string num(double v) {
   return CsvWriter::formatNumber(v, 3);
@@ -42,31 +44,23 @@ AxisEffects axisEffectsFromApplied(const nlohmann::json& applied, double feedMmP
                                    const std::string& field) {
   AxisEffects out;
   out.base.feedMmPerMin = feedMmPerMin;
-  if (applied.is_null()) return out;
-  if (!applied.is_array())
-    throw ValidationError(ErrorContext{{}, 0, 0, field}, "must be a list of {\"name\", \"parameters\"}");
+  const AppliedEntryMessages messages = appliedMessagesKnown("backlash, scale, cyclic, servo_lag");
+  if (!isAppliedList(applied, field, messages)) return out;
   if (!(feedMmPerMin > 0.0) || !std::isfinite(feedMmPerMin))
     throw ValidationError(ErrorContext{{}, 0, 0, "studies.diagnosis.kinematic.feed_mm_per_min"},
                           "must be a positive feed (mm/min)");
   std::vector<std::string> seen;
-  for (std::size_t i = 0; i < applied.size(); ++i) {
-    const nlohmann::json& e = applied[i];
-    if (!e.is_object())
-      throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i)},
-                            "must be an object {\"name\", \"parameters\"}");
-    const auto nameIt = e.find("name");
-    if (nameIt == e.end() || !nameIt->is_string())
-      throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i, "name")},
-                            "must be the effect's name (backlash, scale, cyclic, servo_lag)");
-    const std::string name = nameIt->get<std::string>();
-    const ErrorContext where{{}, 0, 0, entryField(field, i, "name")};
+  forEachAppliedEntry(applied, field, messages, [&](const AppliedEntry& entry) {
+    const nlohmann::json& e = entry.json;
+    const std::string& name = entry.name;
+    const ErrorContext where{{}, 0, 0, entry.at("name")};
     const nlohmann::json params =
         e.contains("parameters") && e["parameters"].is_object() ? e["parameters"] : nlohmann::json::object();
     auto number = [&](const std::string& key, std::optional<double> fallback = std::nullopt) {
       const auto it = params.find(key);
       if (it == params.end() && fallback) return *fallback;
       if (it == params.end() || !it->is_number() || !std::isfinite(it->get<double>()))
-        throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i, "parameters." + key)},
+        throw ValidationError(ErrorContext{{}, 0, 0, entry.at("parameters." + key)},
                               "'" + name + "' needs a finite number here");
       return it->get<double>();
     };
@@ -89,12 +83,12 @@ AxisEffects axisEffectsFromApplied(const nlohmann::json& applied, double feedMmP
       CyclicTerm y;
       const auto axis = params.find("axis");
       if (axis == params.end() || !axis->is_string() || (*axis != "x" && *axis != "y"))
-        throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i, "parameters.axis")},
+        throw ValidationError(ErrorContext{{}, 0, 0, entry.at("parameters.axis")},
                               "'cyclic' needs the axis \"x\" or \"y\"");
       y.axis = *axis == "x" ? 0 : 1;
       y.periodMm = number("period_mm");
       if (!(y.periodMm > 0.0))
-        throw ValidationError(ErrorContext{{}, 0, 0, entryField(field, i, "parameters.period_mm")},
+        throw ValidationError(ErrorContext{{}, 0, 0, entry.at("parameters.period_mm")},
                               "'cyclic' needs a positive period (mm)");
       y.amplitudeMm = number("amplitude_mm");
       y.phaseDeg = number("phase_deg", 0.0);
@@ -109,7 +103,7 @@ AxisEffects axisEffectsFromApplied(const nlohmann::json& applied, double feedMmP
     if (std::find(seen.begin(), seen.end(), key) != seen.end())
       throw ValidationError(where, "the effect '" + key + "' is applied twice");
     seen.push_back(key);
-  }
+  });
   return out;
 }
 

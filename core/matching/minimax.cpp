@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "core/common/error.h"
+#include "core/common/glpk_quiet.h"
 #include "core/matching/evaluation.h"
 
 namespace metrofit::matching {
@@ -14,18 +15,6 @@ namespace {
 
 struct LpDeleter {
   void operator()(glp_prob* p) const { glp_delete_prob(p); }
-};
-
-/// Switches GLPK's terminal output off for its lifetime (GLPK keeps the state per thread).
-class TermOutOff {
- public:
-  TermOutOff() : previous_(glp_term_out(GLP_OFF)) {}
-  ~TermOutOff() { glp_term_out(previous_); }
-  TermOutOff(const TermOutOff&) = delete;
-  TermOutOff& operator=(const TermOutOff&) = delete;
-
- private:
-  int previous_;
 };
 
 using Params = PoseParams;
@@ -153,7 +142,7 @@ bool solveLp(const Eigen::VectorXd& d, const Eigen::MatrixXd& G, bool twoSided, 
   parm.tol_dj = 1e-10;
   // Rows are already scaled (gradients O(1) in mm per mm, rotations and scale times L), so GLPK's own
   // scaling (which prints) is not used. Core never prints: GLPK's terminal output is off meanwhile.
-  const TermOutOff quiet;
+  const GlpkQuiet quiet;
   if (glp_simplex(lp.get(), &parm) != 0 || glp_get_status(lp.get()) != GLP_OPT) {
     // Retry with a presolved problem before giving up.
     glp_std_basis(lp.get());

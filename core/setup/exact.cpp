@@ -8,6 +8,8 @@
 #include <map>
 #include <set>
 
+#include "core/common/glpk_quiet.h"
+
 namespace metrofit::setup {
 namespace {
 
@@ -138,7 +140,7 @@ void releaseExactSolverThread() {
 
 ExactResult solveExact(const SetupInstance& inst, const ExactOptions& options, Observer* observer) {
   requireValid(options, "exact options");
-  glp_term_out(GLP_OFF);
+  const GlpkQuiet quiet;  // core never prints
 
   const std::size_t n = inst.variables();
   const double s = inst.step();

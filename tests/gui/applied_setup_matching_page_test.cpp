@@ -15,6 +15,7 @@
 #include "app/gui/setuppage.h"
 #include "core/project/project.h"
 #include "core/setup/objective.h"
+#include "demo_document_fixture.h"
 #include "qtapp.h"
 #include "widgets/diagnose/diagnosisstudy.h"
 #include "widgets/document/demoproject.h"
@@ -29,32 +30,18 @@ double normalRms(const matching::ToleranceEvaluation& e) {
   return std::sqrt(ss / static_cast<double>(e.deviations.size()));
 }
 
-class AppliedEffectsTest : public ::testing::Test {
+class AppliedEffectsTest : public test::DemoDocumentTest {
  protected:
-  void SetUp() override {
-    ASSERT_TRUE(dir_.isValid());
-    const QString demo = extractDemoProject(dir_.path());
-    // The setup and matching studies on the diagnosis data (tool T23 wearing; the part probed warm).
-    Project p = loadProject(demo.toStdString());
+  // The setup and matching studies on the diagnosis data (tool T23 wearing; the part probed warm).
+  bool editDemo(Project& p) override {
     p.studies["setup"]["dataset"] = "diagnose_setup_report";
     p.studies["matching"]["dataset"] = "diagnose_probe";
-    path_ = dir_.filePath(QStringLiteral("applied.metrofit"));
-    saveProject(p, path_.toStdString());
-    document_.load(path_);
+    return true;
   }
 
   static void grab(QWidget& page, const QString& name) {
-    const QString out = qEnvironmentVariable("METROFIT_TEST_OUT");
-    if (out.isEmpty()) return;
-    const QString dir = QDir(out).filePath(QStringLiteral("appliedeffects"));
-    QDir().mkpath(dir);
-    page.resize(1200, 760);
-    page.grab().save(QDir(dir).filePath(name + QStringLiteral(".png")));
+    DemoDocumentTest::grab(page, QStringLiteral("appliedeffects"), name, QSize(1200, 760));
   }
-
-  QTemporaryDir dir_;
-  QString path_;
-  ProjectDocument document_;
 };
 
 TEST_F(AppliedEffectsTest, SetupPageUsesTheAppliedToolWearAndUndoRestoresTheDeclaredModel) {

@@ -19,6 +19,7 @@
 
 #include "app/gui/diagnosispage.h"
 #include "core/project/project.h"
+#include "demo_document_fixture.h"
 #include "qtapp.h"
 #include "widgets/diagnose/diagnosisstudy.h"
 #include "widgets/diagnose/residualplot.h"
@@ -31,14 +32,8 @@ namespace {
 constexpr int kEffectColumn = 1;
 constexpr int kAcceptedColumn = 6;
 
-class DiagnosisPageTest : public ::testing::Test {
+class DiagnosisPageTest : public test::DemoDocumentTest {
  protected:
-  void SetUp() override {
-    ASSERT_TRUE(dir_.isValid());
-    project_ = extractDemoProject(dir_.path());
-    document_.load(project_);
-  }
-
   /// The page's table against the core loop on the same settings.
   void expectTableMatchesCore(DiagnosisPage& page, DiagnosisDomain domain) {
     const diagnose::Diagnosis core =
@@ -58,17 +53,8 @@ class DiagnosisPageTest : public ::testing::Test {
 
   /// Saves a grab of the page to $METROFIT_TEST_OUT/diagnosispage/<name>.png for people to look at.
   static void grab(DiagnosisPage& page, const QString& name) {
-    const QString out = qEnvironmentVariable("METROFIT_TEST_OUT");
-    if (out.isEmpty()) return;
-    const QString dir = QDir(out).filePath(QStringLiteral("diagnosispage"));
-    QDir().mkpath(dir);
-    page.resize(1100, 720);
-    page.grab().save(QDir(dir).filePath(name + QStringLiteral(".png")));
+    DemoDocumentTest::grab(page, QStringLiteral("diagnosispage"), name, QSize(1100, 720));
   }
-
-  QTemporaryDir dir_;
-  QString project_;
-  ProjectDocument document_;
 };
 
 TEST_F(DiagnosisPageTest, SetupTableListsTheCoreLoopsEffectsAndFindsTheToolWear) {

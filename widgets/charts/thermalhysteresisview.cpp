@@ -4,6 +4,7 @@
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
+#include <QFutureWatcher>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -14,6 +15,7 @@
 #include <QStackedWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
@@ -28,6 +30,34 @@
 #include "widgets/common/tablecopy.h"
 
 namespace metrofit {
+namespace {
+
+/// One analysis, made on any thread (no widgets).
+struct Analysis {
+  int generation = 0;  ///< which request it answers
+  ThermalLog log;
+  thermal::ThermalSeries series;
+  thermal::HysteresisAnalysis analysis;
+  QString error;
+};
+
+Analysis analyse(int generation, const ThermalLog& log, const std::string& target,
+                 const std::vector<std::string>& inputs) {
+  Analysis a;
+  a.generation = generation;
+  a.log = log;
+  try {
+    a.series = thermal::selectThermalSeries(log, target, inputs);
+    a.analysis = thermal::analyseHysteresis(a.series);
+  } catch (const std::exception& e) {
+    a.error = QString::fromStdString(e.what());
+    a.series = {};
+    a.analysis = {};
+  }
+  return a;
+}
+
+}  // namespace
 
 struct ThermalHysteresisView::Impl {
   ThermalLog log;
@@ -43,6 +73,9 @@ struct ThermalHysteresisView::Impl {
   QTableWidget* table = nullptr;
   QLabel* phases = nullptr;
   int charts = 0;
+  QFutureWatcher<Analysis>* watcher = nullptr;
+  int generation = 0;    ///< the latest request; older results are dropped
+  bool pending = false;  ///< the watcher runs the latest request
 
   QChartView* chartView(QChart* chart, QWidget* parent, int minHeight) {
     auto* view = new QChartView(chart, parent);
@@ -84,6 +117,42 @@ struct ThermalHysteresisView::Impl {
     scroll->setWidget(grid);  // deletes the previous grid
   }
 
+  /// Shows an analysis (the latest request: nothing is pending afterwards).
+  bool apply(const Analysis& a) {
+    pending = false;
+    log = a.log;
+    series = a.series;
+    analysis = a.analysis;
+    error = a.error;
+    {
+      const QSignalBlocker blocker(combo);
+      combo->clear();
+      combo->addItem(ThermalHysteresisView::tr("All sensors"), QString());
+      for (const std::string& name : series.inputNames) {
+        combo->addItem(QString::fromStdString(name), QString::fromStdString(name));
+      }
+      const int keep = combo->findData(sensor);
+      combo->setCurrentIndex(keep >= 0 ? keep : 0);
+      sensor = combo->currentData().toString();
+    }
+    fillTable();
+    if (!error.isEmpty()) {
+      message->setText(ThermalHysteresisView::tr("No hysteresis analysis for this log:\n%1").arg(error));
+      stack->setCurrentWidget(message);
+      phases->clear();
+      charts = 0;
+      return false;
+    }
+    phases->setText(ThermalHysteresisView::tr(
+                        "Target %1: %2 heating rows, %3 cooling rows (the target's change grows or shrinks).")
+                        .arg(QString::fromStdString(analysis.target))
+                        .arg(analysis.heatingRows)
+                        .arg(analysis.coolingRows));
+    rebuild();
+    stack->setCurrentWidget(scroll);
+    return true;
+  }
+
   void fillTable() {
     table->setRowCount(static_cast<int>(analysis.sensors.size()));
     const QString targetUnit = displayUnit(series.hasTarget() && log.indexOf(series.targetName) >= 0
@@ -117,6 +186,7 @@ ThermalHysteresisView::ThermalHysteresisView(QWidget* parent) : QWidget(parent),
   d->combo = new QComboBox(this);
   d->combo->setObjectName(QStringLiteral("hysteresisSensorCombo"));
   d->combo->setToolTip(tr("Sensor plotted against the displacement, or all sensors side by side"));
+  d->combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);  // filled after the first show (worker)
   d->scroll = new QScrollArea(this);
   d->scroll->setWidgetResizable(true);
   d->scroll->setFrameShape(QFrame::NoFrame);
@@ -172,52 +242,51 @@ ThermalHysteresisView::ThermalHysteresisView(QWidget* parent) : QWidget(parent),
 
   connect(d->combo, &QComboBox::currentIndexChanged, this,
           [this](int) { setSensor(d->combo->currentData().toString()); });
+  d->watcher = new QFutureWatcher<Analysis>(this);
+  connect(d->watcher, &QFutureWatcher<Analysis>::finished, this, [this] {
+    if (!d->pending || d->watcher->future().resultCount() == 0) return;
+    const Analysis& a = d->watcher->result();
+    if (a.generation != d->generation) return;  // replaced by a later request meanwhile
+    emit analysisFinished(d->apply(a));
+  });
   connect(d->table, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
     if (row >= 0 && row < static_cast<int>(d->analysis.sensors.size()))
       setSensor(QString::fromStdString(d->analysis.sensors[static_cast<std::size_t>(row)].sensor));
   });
 }
 
-ThermalHysteresisView::~ThermalHysteresisView() = default;
+ThermalHysteresisView::~ThermalHysteresisView() {
+  d->watcher->waitForFinished();
+}
 
 bool ThermalHysteresisView::setLog(const ThermalLog& log, const std::string& target,
                                    const std::vector<std::string>& inputs) {
-  d->log = log;
-  d->error.clear();
-  try {
-    d->series = thermal::selectThermalSeries(log, target, inputs);
-    d->analysis = thermal::analyseHysteresis(d->series);
-  } catch (const std::exception& e) {
-    d->error = QString::fromStdString(e.what());
-    d->series = {};
-    d->analysis = {};
-  }
-  {
-    const QSignalBlocker blocker(d->combo);
-    d->combo->clear();
-    d->combo->addItem(tr("All sensors"), QString());
-    for (const std::string& name : d->series.inputNames) {
-      d->combo->addItem(QString::fromStdString(name), QString::fromStdString(name));
-    }
-    const int keep = d->combo->findData(d->sensor);
-    d->combo->setCurrentIndex(keep >= 0 ? keep : 0);
-    d->sensor = d->combo->currentData().toString();
-  }
-  d->fillTable();
-  if (!d->error.isEmpty()) {
-    d->message->setText(tr("No hysteresis analysis for this log:\n%1").arg(d->error));
-    d->stack->setCurrentWidget(d->message);
-    d->phases->clear();
-    d->charts = 0;
-    return false;
-  }
-  d->phases->setText(tr("Target %1: %2 heating rows, %3 cooling rows (the target's change grows or shrinks).")
-                         .arg(QString::fromStdString(d->analysis.target))
-                         .arg(d->analysis.heatingRows)
-                         .arg(d->analysis.coolingRows));
-  d->rebuild();
-  d->stack->setCurrentWidget(d->scroll);
-  return true;
+  return d->apply(analyse(++d->generation, log, target, inputs));
+}
+
+void ThermalHysteresisView::analyseLater(const ThermalLog& log, const std::string& target,
+                                         const std::vector<std::string>& inputs) {
+  const int generation = ++d->generation;
+  d->pending = true;
+  d->message->setText(tr("Analysing the hysteresis of %1…").arg(QString::fromStdString(target)));
+  d->stack->setCurrentWidget(d->message);
+  d->table->setRowCount(0);
+  d->phases->clear();
+  d->charts = 0;
+  d->watcher->setFuture(QtConcurrent::run(
+      [generation, log, target, inputs] { return analyse(generation, log, target, inputs); }));
+}
+
+bool ThermalHysteresisView::isAnalysing() const {
+  return d->watcher->isRunning();
+}
+
+bool ThermalHysteresisView::finishAnalysis() {
+  if (!d->pending) return d->error.isEmpty();
+  d->watcher->waitForFinished();
+  const bool ok = d->apply(d->watcher->result());
+  emit analysisFinished(ok);
+  return ok;
 }
 
 void ThermalHysteresisView::setSensor(const QString& sensor) {
@@ -229,7 +298,7 @@ void ThermalHysteresisView::setSensor(const QString& sensor) {
   }
   if (value == d->sensor && d->charts > 0) return;
   d->sensor = value;
-  if (d->error.isEmpty()) d->rebuild();
+  if (d->error.isEmpty() && !d->pending) d->rebuild();
   emit sensorChanged(d->sensor);
 }
 

@@ -22,8 +22,17 @@ class ThermalHysteresisView : public QWidget {
   ~ThermalHysteresisView() override;
 
   /// Analyses `target` against `inputs` of `log` and shows the result. Returns false (and shows the
-  /// one-line error) when the analysis fails, e.g. for a constant column.
+  /// one-line error) when the analysis fails, e.g. for a constant column. Drops a pending analyseLater.
   bool setLog(const ThermalLog& log, const std::string& target, const std::vector<std::string>& inputs);
+  /// The same analysis on a worker thread (a long log takes a noticeable part of a second): the view
+  /// says it is analysing and shows the result when it is ready (analysisFinished). A later call or
+  /// setLog replaces a pending analysis; its result is never shown.
+  void analyseLater(const ThermalLog& log, const std::string& target, const std::vector<std::string>& inputs);
+  /// An analysis runs on the worker.
+  bool isAnalysing() const;
+  /// Waits for the pending analysis and shows it now; returns whether the analysis shown worked
+  /// (the last one when none was pending).
+  bool finishAnalysis();
   /// Shows one sensor (its name) or all of them (an empty name).
   void setSensor(const QString& sensor);
   /// The sensor shown, empty for all.
@@ -37,6 +46,8 @@ class ThermalHysteresisView : public QWidget {
 
  signals:
   void sensorChanged(const QString& sensor);
+  /// The result of analyseLater is shown; `ok` false: the analysis failed (errorMessage()).
+  void analysisFinished(bool ok);
 
  private:
   struct Impl;

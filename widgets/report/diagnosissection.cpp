@@ -4,14 +4,12 @@
 // plot before / after of each accepted effect (painted like the GUI's, widgets/diagnose/residualplot.h)
 // and a before / after table.
 #include <QCoreApplication>
-#include <QDateTime>
-#include <QFileInfo>
 #include <QPainter>
 
 #include <cmath>
 #include <exception>
 #include <functional>
-#include <map>
+#include <memory>
 #include <string>
 
 #include "core/io/csv.h"
@@ -58,31 +56,19 @@ void drawScaled(ReportPainter& out, const QRectF& rect, double designWidth,
   p.restore();
 }
 
-/// The report is laid out twice (page numbers first); the loop runs once per data state.
-std::string cacheKey(const DiagnosisSettings& s) {
-  auto stamp = [](const std::string& path) {
-    const QFileInfo f(QString::fromStdString(path));
-    return std::to_string(f.size()) + "@" + std::to_string(f.lastModified().toMSecsSinceEpoch());
-  };
-  nlohmann::json j = {{"d", diagnosisDomainKey(s.domain)},
-                      {"p", s.datasetPath},
-                      {"ps", stamp(s.datasetPath)},
-                      {"t", s.target},
-                      {"i", s.inputs},
-                      {"f", s.trainFraction},
-                      {"m", s.modelPath},
-                      {"ms", s.modelPath.empty() ? std::string() : stamp(s.modelPath)},
-                      {"tol", s.toleranceMm},
-                      {"feed", s.feedMmPerMin}};
-  return j.dump();
-}
-
-const diagnose::Diagnosis& cachedDiagnosis(const DiagnosisSettings& s) {
-  static std::map<std::string, diagnose::Diagnosis> cache;
-  const std::string key = cacheKey(s);
-  auto it = cache.find(key);
-  if (it == cache.end()) it = cache.emplace(key, runDiagnosis(s)).first;
-  return it->second;
+/// The loop of one domain's settings, run once per report (the report is laid out twice).
+std::shared_ptr<const diagnose::Diagnosis> memoDiagnosis(const ReportContext& context,
+                                                         const DiagnosisSettings& s) {
+  const nlohmann::json key = {{"d", diagnosisDomainKey(s.domain)},
+                              {"p", s.datasetPath},
+                              {"t", s.target},
+                              {"i", s.inputs},
+                              {"f", s.trainFraction},
+                              {"m", s.modelPath},
+                              {"tol", s.toleranceMm},
+                              {"feed", s.feedMmPerMin}};
+  return context.memo.get<diagnose::Diagnosis>(
+      key.dump(), [&] { return std::make_shared<const diagnose::Diagnosis>(runDiagnosis(s)); });
 }
 
 QString parameters(const diagnose::Candidate& c) {
@@ -104,7 +90,7 @@ QString errorLine(const diagnose::ErrorSummary& e, const QString& u) {
 
 void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDomain domain) {
   DiagnosisSettings s;
-  const diagnose::Diagnosis* d = nullptr;
+  std::shared_ptr<const diagnose::Diagnosis> d;
   QString failure;
   try {
     s = diagnosisSettings(*context.project, std::string(), domain);
@@ -113,7 +99,7 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
       if (rd.ref.id == s.datasetId) s.datasetPath = rd.path.toStdString();
       if (!s.modelId.empty() && rd.ref.id == s.modelId) s.modelPath = rd.path.toStdString();
     }
-    d = &cachedDiagnosis(s);
+    d = memoDiagnosis(context, s);
   } catch (const std::exception& e) {
     failure = QString::fromUtf8(e.what());
   }

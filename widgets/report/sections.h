@@ -6,7 +6,13 @@
 // A new section is a new write...Section function plus one line in that list.
 #include <QString>
 
+#include <map>
+#include <memory>
 #include <optional>
+#include <string>
+#include <typeindex>
+#include <typeinfo>
+#include <utility>
 #include <vector>
 
 #include "core/matching/probe_points.h"
@@ -25,6 +31,31 @@ struct ReportDataset {
   std::optional<ProbePointSet> probes;  ///< for probe_points datasets
 };
 
+/// What the sections compute once per report: the report is laid out twice (report.cpp: page
+/// numbers first), so a section keeps a result it computed in the first pass here and finds it in
+/// the second. Owned by the ReportContext of one writeReport: nothing outlives the report, and a
+/// report is built by one thread.
+class ReportMemo {
+ public:
+  /// The value kept under (T, key); the first time, `make()` (returning a std::shared_ptr<const T>)
+  /// makes it. When make() throws nothing is kept (the next call tries again).
+  template <class T, class Make>
+  std::shared_ptr<const T> get(const std::string& key, Make&& make) {
+    Key k{std::type_index(typeid(T)), key};
+    if (const auto it = entries_.find(k); it != entries_.end())
+      return std::static_pointer_cast<const T>(it->second);
+    std::shared_ptr<const T> value = std::forward<Make>(make)();
+    entries_.emplace(std::move(k), value);
+    return value;
+  }
+  /// Values kept.
+  std::size_t size() const { return entries_.size(); }
+
+ private:
+  using Key = std::pair<std::type_index, std::string>;
+  std::map<Key, std::shared_ptr<const void>> entries_;
+};
+
 /// Everything a section may draw from.
 struct ReportContext {
   const Project* project = nullptr;
@@ -34,6 +65,8 @@ struct ReportContext {
   /// Symmetric tolerance (mm) the probe-point section counts deviations against: the matching
   /// study's "tolerance_mm" when the project sets one, else kDefaultProbeToleranceMm.
   double probeToleranceMm = 0.05;
+  /// Results kept between the two layout passes (see ReportMemo).
+  mutable ReportMemo memo;
 
   /// The datasets of one kind (dataset_kind::...), in project order.
   std::vector<const ReportDataset*> ofKind(const char* kind) const;

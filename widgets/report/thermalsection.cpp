@@ -6,8 +6,8 @@
 //
 // Run time: the models are trained here (fixed seed, default budgets). Logs longer than
 // kMaxModelRows rows are fitted on every k-th row (said in the section). The report is laid out
-// twice (report.cpp: page numbers first), so results are kept in a small cache keyed by the log's
-// content and the settings.
+// twice (report.cpp: page numbers first), so results are kept in the report's memo (ReportContext)
+// keyed by the log's content and the settings.
 #include <QChart>
 #include <QCoreApplication>
 #include <QGraphicsLayout>
@@ -19,7 +19,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
-#include <mutex>
+#include <string>
 
 #include "core/diagnose/thermal_applied.h"
 #include "core/thermal/hysteresis.h"
@@ -77,38 +77,38 @@ std::string settingsText(const ThermalModelSettings& s) {
   return t + "|" + s.applied.dump();
 }
 
-/// Hysteresis and the three models for one log (see the header comment for the cache).
-std::shared_ptr<const ThermalResults> thermalResults(const ThermalLog& log,
+/// Hysteresis and the three models for one log (kept in the report's memo, see the header comment).
+std::shared_ptr<const ThermalResults> thermalResults(const ReportContext& context, const ThermalLog& log,
                                                      const ThermalModelSettings& settings) {
-  static std::mutex mutex;
-  static std::map<std::uint64_t, std::shared_ptr<const ThermalResults>> cache;
   const std::uint64_t key = contentHash(log, settingsText(settings));
-  {
-    const std::lock_guard lock(mutex);
-    if (const auto it = cache.find(key); it != cache.end()) return it->second;
-  }
-  auto r = std::make_shared<ThermalResults>();
-  r->settings = settings;
-  r->stride = log.rows() > kMaxModelRows ? (log.rows() + kMaxModelRows - 1) / kMaxModelRows : 1;
-  r->fitted = decimateThermalLog(log, r->stride);
-  try {
-    r->hysteresisSeries = thermal::selectThermalSeries(r->fitted, settings.target, settings.inputs);
-    r->hysteresis = thermal::analyseHysteresis(r->hysteresisSeries);
-  } catch (const std::exception& e) {
-    r->hysteresisError = QString::fromStdString(e.what());
-  }
-  try {
-    r->comparison = std::make_shared<ThermalComparison>(compareThermalModels(r->fitted, settings));
-  } catch (const std::exception& e) {
-    r->modelError = QString::fromStdString(e.what());
-  }
-  const std::lock_guard lock(mutex);
-  if (cache.size() > 16) cache.clear();
-  cache[key] = r;
-  return r;
+  return context.memo.get<ThermalResults>(std::to_string(key), [&] {
+    auto r = std::make_shared<ThermalResults>();
+    r->settings = settings;
+    r->stride = log.rows() > kMaxModelRows ? (log.rows() + kMaxModelRows - 1) / kMaxModelRows : 1;
+    r->fitted = decimateThermalLog(log, r->stride);
+    try {
+      r->hysteresisSeries = thermal::selectThermalSeries(r->fitted, settings.target, settings.inputs);
+      r->hysteresis = thermal::analyseHysteresis(r->hysteresisSeries);
+    } catch (const std::exception& e) {
+      r->hysteresisError = QString::fromStdString(e.what());
+    }
+    try {
+      r->comparison = std::make_shared<ThermalComparison>(compareThermalModels(r->fitted, settings));
+    } catch (const std::exception& e) {
+      r->modelError = QString::fromStdString(e.what());
+    }
+    return std::shared_ptr<const ThermalResults>(std::move(r));
+  });
 }
 
-/// The modular case of the project, or nullptr when it lacks one of the three tests (cached).
+/// The modular case's comparison, or the error that stopped it.
+struct ModularResults {
+  std::shared_ptr<const ModularComparison> comparison;
+  QString error;
+};
+
+/// The modular case of the project, or nullptr when it lacks one of the three tests (kept in the
+/// report's memo).
 std::shared_ptr<const ModularComparison> modularResults(const ReportContext& context, QString* error) {
   const ReportDataset* tests[3] = {nullptr, nullptr, nullptr};
   const char* ids[3] = {kModularZId, kModularCId, kModularCombinedId};
@@ -118,29 +118,23 @@ std::shared_ptr<const ModularComparison> modularResults(const ReportContext& con
     }
   }
   if (!tests[0] || !tests[1] || !tests[2]) return nullptr;
-  static std::mutex mutex;
-  static std::map<std::uint64_t, std::shared_ptr<const ModularComparison>> cache;
   const ThermalLog& test = *tests[2]->thermal;
   const ThermalModelSettings s = defaultThermalModelSettings(test, nlohmann::json::object(), {});
   const std::vector<std::string> inputs = modularInputs(test);
   std::uint64_t key = contentHash(*tests[0]->thermal, "z") ^ (contentHash(*tests[1]->thermal, "c") * 3u) ^
                       (contentHash(test, s.target) * 7u);
-  {
-    const std::lock_guard lock(mutex);
-    if (const auto it = cache.find(key); it != cache.end()) return it->second;
-  }
-  std::shared_ptr<const ModularComparison> m;
-  try {
-    m = std::make_shared<ModularComparison>(
-        compareModularModels({&*tests[0]->thermal, &*tests[1]->thermal}, test, s.target, inputs, 1));
-  } catch (const std::exception& e) {
-    if (error) *error = QString::fromStdString(e.what());
-    return nullptr;
-  }
-  const std::lock_guard lock(mutex);
-  if (cache.size() > 8) cache.clear();
-  cache[key] = m;
-  return m;
+  const std::shared_ptr<const ModularResults> r = context.memo.get<ModularResults>(std::to_string(key), [&] {
+    auto m = std::make_shared<ModularResults>();
+    try {
+      m->comparison = std::make_shared<ModularComparison>(
+          compareModularModels({&*tests[0]->thermal, &*tests[1]->thermal}, test, s.target, inputs, 1));
+    } catch (const std::exception& e) {
+      m->error = QString::fromStdString(e.what());
+    }
+    return std::shared_ptr<const ModularResults>(std::move(m));
+  });
+  if (!r->comparison && error) *error = r->error;
+  return r->comparison;
 }
 
 /// Draws a chart into `target` (device units), laid out `designWidthPx` scene pixels wide; takes
@@ -541,7 +535,7 @@ void writeThermalSection(ReportPainter& out, const ReportContext& context) {
     const ThermalLog& log = *dataset->thermal;
     ThermalModelSettings settings = defaultThermalModelSettings(log, thermalStudy, dataset->ref.id);
     settings.applied = diagnose::projectThermalApplied(*context.project, dataset->ref.id);
-    const std::shared_ptr<const ThermalResults> results = thermalResults(log, settings);
+    const std::shared_ptr<const ThermalResults> results = thermalResults(context, log, settings);
     writeHysteresis(out, *results);
     writeModels(out, log, *results);
     if (dataset->ref.id == kModularCombinedId) {
