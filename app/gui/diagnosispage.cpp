@@ -25,7 +25,7 @@
 #include <set>
 
 #include "app/gui/notesedit.h"
-#include "core/io/csv.h"
+#include "widgets/diagnose/coretexts.h"
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
@@ -63,29 +63,30 @@ QString domainTitle(DiagnosisDomain d) {
 
 /// "um" -> "µm" for display (core writes CONTRACT.md's ASCII unit names).
 QString displayUnits(const std::string& units) {
-  return units == "um" ? QStringLiteral("µm") : QString::fromStdString(units);
+  return displayUnit(QString::fromStdString(units));
 }
 
+/// A number in the user's locale ("n/a" when not finite), `digits` significant digits.
 QString num(double v, int digits = 4) {
-  return std::isfinite(v) ? QString::fromStdString(CsvWriter::formatNumber(v, digits))
-                          : QStringLiteral("n/a");
+  return localNumber(v, digits);
 }
 
 /// Unit of a parameter from its CONTRACT.md name suffix ("tau_min" -> "min").
 QString unitOf(const std::string& name) {
-  static const std::pair<const char*, const char*> kSuffixes[] = {{"mm_per_part", "mm/part"},
-                                                                  {"mm_per_min", "mm/min"},
-                                                                  {"um_per_min", "µm/min"},
-                                                                  {"_min", "min"},
-                                                                  {"_mm", "mm"},
-                                                                  {"_um", "µm"},
-                                                                  {"_ppm", "ppm"},
-                                                                  {"_deg", "deg"},
-                                                                  {"_s", "s"}};
+  static const std::pair<const char*, const char*> kSuffixes[] = {
+      {"mm_per_part", QT_TRANSLATE_NOOP("metrofit::DiagnosisPage", "mm/part")},
+      {"mm_per_min", "mm/min"},
+      {"um_per_min", "µm/min"},
+      {"_min", "min"},
+      {"_mm", "mm"},
+      {"_um", "µm"},
+      {"_ppm", "ppm"},
+      {"_deg", "deg"},
+      {"_s", "s"}};
   for (const auto& [suffix, unit] : kSuffixes) {
     const std::string s = suffix;
     if (name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0)
-      return QString::fromUtf8(unit);
+      return DiagnosisPage::tr(unit);  // only "mm/part" has a word to translate
   }
   if (name == "mm") return QStringLiteral("mm");
   if (name == "ppm") return QStringLiteral("ppm");
@@ -95,8 +96,10 @@ QString unitOf(const std::string& name) {
 QString parameterText(const diagnose::Candidate& c, const QString& units) {
   QStringList parts;
   for (const diagnose::Parameter& p : c.parameters) {
-    QString s = QString::fromStdString(p.name) + QStringLiteral(" = ") +
-                QString::fromStdString(formatParameterValue(p));
+    // Display name (translated) and the value in the user's locale (the JSON and the report keep the keys).
+    const double* v = std::get_if<double>(&p.value);
+    QString s = parameterDisplayName(p.name) + QStringLiteral(" = ") +
+                (v ? num(*v) : QString::fromStdString(std::get<std::string>(p.value)));
     if (p.standardError) s += QStringLiteral(" ± ") + num(*p.standardError, 2);
     const QString unit = p.name == "per_min" ? units + QStringLiteral("/min") : unitOf(p.name);
     if (!unit.isEmpty() && std::holds_alternative<double>(p.value)) s += QLatin1Char(' ') + unit;
@@ -125,6 +128,7 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
       domainCombo_(new QComboBox(this)),
       info_(new QLabel(this)),
       status_(new QLabel(this)),
+      notes_(new QLabel(this)),
       runButton_(new QPushButton(tr("&Run"), this)),
       cancelButton_(new QPushButton(tr("Cancel"), this)),
       applyButton_(new QPushButton(tr("&Apply to model"), this)),
@@ -168,6 +172,11 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
   status_->setObjectName(QStringLiteral("diagnosisStatus"));
   status_->setWordWrap(true);
   status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  notes_->setObjectName(QStringLiteral("diagnosisNotes"));
+  notes_->setWordWrap(true);
+  notes_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  notes_->setToolTip(tr("The declared model as fitted before any effect was added"));
+  notes_->setVisible(false);
   message_->setObjectName(QStringLiteral("diagnosisMessage"));
   message_->setWordWrap(true);
   message_->setAlignment(Qt::AlignCenter);
@@ -246,6 +255,7 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
   layout->addLayout(top);
   layout->addWidget(info_);
   layout->addWidget(status_);
+  layout->addWidget(notes_);
   layout->addWidget(stack_, 1);
   layout->addWidget(notes);
 
@@ -297,6 +307,10 @@ QString DiagnosisPage::statusText() const {
   return status_->text();
 }
 
+QString DiagnosisPage::notesText() const {
+  return notes_->text();
+}
+
 bool DiagnosisPage::isRunning() const {
   return pending_ != nullptr || watcher_->isRunning();
 }
@@ -317,6 +331,8 @@ void DiagnosisPage::refresh() {
     settings_ = diagnosisSettings(document_->project(), document_->fileName().toStdString(), d);
   } catch (const std::exception& e) {
     info_->clear();
+    notes_->clear();
+    notes_->setVisible(false);
     status_->clear();
     result_.reset();
     settingsKey_.clear();
@@ -334,19 +350,20 @@ void DiagnosisPage::refresh() {
       info +=
           tr("; target %1; declared inputs %2; fitted on the first %3 % of the rows, held out on the rest.")
               .arg(QString::fromStdString(s.target), inputs.join(QStringLiteral(", ")))
-              .arg(s.trainFraction * 100.0, 0, 'g', 3);
+              .arg(QLocale().toString(s.trainFraction * 100.0, 'g', 3));
       break;
     }
     case DiagnosisDomain::Kinematic:
       info += tr("; declared model: Cartesian actuator errors (origin, axis angles); feed %1 mm/min.")
-                  .arg(s.feedMmPerMin, 0, 'g', 6);
+                  .arg(QLocale().toString(s.feedMmPerMin, 'g', 6));
       break;
     case DiagnosisDomain::Setup:
       info += tr("; setup model %1; declared model: constant setup-data errors.")
                   .arg(QString::fromStdString(s.modelId));
       break;
     case DiagnosisDomain::Matching:
-      info += tr("; declared model: rigid posture; tolerance ±%1 mm.").arg(s.toleranceMm, 0, 'g', 4);
+      info += tr("; declared model: rigid posture; tolerance ±%1 mm.")
+                  .arg(QLocale().toString(s.toleranceMm, 'g', 4));
       break;
   }
   if (!s.applied.empty()) {
@@ -367,6 +384,8 @@ void DiagnosisPage::refresh() {
   result_.reset();
   settingsKey_.clear();
   status_->setText(tr("Not run yet: press Run (Ctrl+R)."));
+  notes_->clear();
+  notes_->setVisible(false);
   plotCombo_->clear();
   plot_->clear();
   bars_->clear();
@@ -450,9 +469,17 @@ void DiagnosisPage::showResult() {
                 .arg(names.join(QStringLiteral(", ")))
                 .arg(d.effects.size());
   }
-  if (std::find(d.notes.begin(), d.notes.end(), "cancelled") != d.notes.end())
+  // The loops' stop notes (diagnose::LoopProgress): per candidate "cancelled", per round "stopped by ...".
+  if (std::any_of(d.notes.begin(), d.notes.end(), [](const std::string& n) {
+        return n == "cancelled" || n.starts_with("stopped by the observer");
+      }))
     text += QLatin1Char(' ') + tr("Cancelled: the rounds done so far.");
   status_->setText(text);
+  QStringList notes;
+  for (std::size_t i = 0; i < d.notes.size(); ++i)
+    notes << coreText(i < d.notesParts.size() ? d.notesParts[i] : Phrases{}, d.notes[i]);
+  notes_->setText(notes.join(QLatin1Char('\n')));
+  notes_->setVisible(!notes.isEmpty());
   fillTable();
   bars_->setDiagnosis(d);
   {
@@ -506,7 +533,7 @@ void DiagnosisPage::fillTable() {
             ? QStringLiteral("%1 → %2 %3").arg(num(*c.heldoutBefore), num(*c.heldoutAfter), u)
             : QStringLiteral("–"),
         right);
-    set(ColEvidence, QString::fromStdString(c.evidence));
+    set(ColEvidence, coreText(c.evidenceParts, c.evidence));
     set(ColAccepted, c.accepted ? QStringLiteral("✓") : QStringLiteral("✗"), Qt::AlignCenter);
     QTableWidgetItem* acc = table_->item(r, ColAccepted);
     acc->setForeground(c.accepted ? QColor(0x1b, 0x7a, 0x1b) : QColor(0xb2, 0x18, 0x2b));

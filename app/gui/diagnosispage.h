@@ -39,6 +39,8 @@ class DiagnosisPage : public QWidget {
   /// The text shown instead of the results when the settings or data are unusable ("" otherwise).
   QString message() const;
   QString statusText() const;
+  /// The diagnosis' notes as shown (the declared model's fit; translated, one per line).
+  QString notesText() const;
   const std::optional<diagnose::Diagnosis>& result() const { return result_; }
   bool isRunning() const;
 
@@ -75,6 +77,7 @@ class DiagnosisPage : public QWidget {
   QComboBox* domainCombo_;
   QLabel* info_;
   QLabel* status_;
+  QLabel* notes_;
   QPushButton* runButton_;
   QPushButton* cancelButton_;
   QPushButton* applyButton_;

@@ -9,12 +9,22 @@
 // evidence passes the domain's test (out-of-sample improvement for thermal, an information
 // criterion with a conservative threshold elsewhere) *and* it reduces the rmse by a practically
 // relevant amount; repeat until nothing more is accepted.
+//
+// Texts for people (evidence, notes, plot axis titles) are kept twice: as the English string of
+// CONTRACT.md (the JSON, the CLI and the report use it, unchanged) and as Phrases
+// (core/common/text.h) from which that string is made, so that the GUI can show them translated
+// with the user's number format. Set them with setEvidence / addEvidence / addNote / setLabels,
+// which keep both forms equal (string == english(parts)).
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "core/common/run.h"
+#include "core/common/text.h"
 
 namespace metrofit::diagnose {
 
@@ -44,6 +54,11 @@ struct ResidualPlot {
   std::vector<std::vector<double>> vectors;
   /// Names of the categories when x is a category index 0, 1, ... (matching: the surfaces).
   std::vector<std::string> categories;
+  Phrases xLabelParts;  ///< xLabel == english(xLabelParts)
+  Phrases yLabelParts;  ///< yLabel == english(yLabelParts)
+
+  /// Sets xLabel / yLabel and their phrases.
+  void setLabels(Phrases x, Phrases y);
 };
 
 /// A candidate effect tried in one round.
@@ -59,6 +74,14 @@ struct Candidate {
   std::string evidence;              ///< one line a person can read
   int round = 0;                     ///< loop round in which it was tried (0-based)
   std::optional<ResidualPlot> plot;  ///< filled for accepted effects (and may be for others)
+  Phrases evidenceParts;             ///< evidence == english(evidenceParts)
+
+  /// Replaces the evidence (string and phrases).
+  void setEvidence(Phrases parts);
+  /// Appends to the evidence (string and phrases).
+  void addEvidence(Phrases parts);
+  /// Puts `part` in front of the evidence (e.g. "accepted: ").
+  void prependEvidence(Phrase part);
 };
 
 struct Diagnosis {
@@ -69,8 +92,40 @@ struct Diagnosis {
   ErrorSummary final;
   /// The declared model's description and its fitted parameters, for the report (free text).
   std::vector<std::string> notes;
+  std::vector<Phrases> notesParts;  ///< notes[i] == english(notesParts[i])
 
   std::vector<const Candidate*> accepted() const;
+  /// Appends a note (string and phrases).
+  void addNote(Phrases parts);
+};
+
+/// The progress and cancel handling the four loops share. Thermal and kinematic report after every
+/// candidate (afterCandidate: notify() with iteration = step, evaluations = steps so far, progress
+/// within the round; the note of a stop is "cancelled"); setup and matching after every round
+/// (afterRound: only when there is an observer, iteration = round, evaluations = candidates so
+/// far; the note is "stopped by the observer after round N").
+class LoopProgress {
+ public:
+  explicit LoopProgress(Observer* observer) : observer_(observer) {}
+
+  /// After candidate `index` (0-based) of `count` in `round`; `current` is the current model's error
+  /// (IterationSummary::best), also reported as the component `component`. True when the observer
+  /// stopped the loop.
+  bool afterCandidate(int round, std::size_t index, std::size_t count, double current, const char* component);
+  /// After round `round`: `evaluations` candidates fitted so far, the current rmse and the number of
+  /// accepted effects. True when the observer stopped the loop.
+  bool afterRound(int round, long evaluations, double rmse, std::size_t accepted);
+  bool stopped() const { return stopped_; }
+  /// Adds the note of a stop to `d` (nothing when the loop was not stopped).
+  void addNote(Diagnosis& d) const;
+
+ private:
+  Observer* observer_;
+  RunInfo run_;
+  long step_ = 0;
+  bool stopped_ = false;
+  bool perRound_ = false;
+  int round_ = 0;
 };
 
 /// The JSON of CONTRACT.md: {"domain", "baseline": {"rmse","max_abs"[,"heldout_rmse"]},

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 
 #include <Eigen/Dense>
 
 #include "core/common/error.h"
-#include "core/io/csv.h"
 #include "core/kinematics/identification.h"
 #include "core/sim/effects_kinematic.h"
 
@@ -18,11 +18,14 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
-std::string fmt(double v, int digits = 3) {
-  return std::isfinite(v) ? CsvWriter::formatNumber(v, digits) : "n/a";
+using A = PhraseArg;
+
+/// A number with `digits` significant digits ("n/a" when not finite); um(): millimetres shown in um.
+PhraseArg num(double v, int digits = 3) {
+  return A::numberOrNa(v, digits);
 }
-std::string um(double mm, int digits = 3) {
-  return fmt(mm * 1000.0, digits);
+PhraseArg um(double mm, int digits = 3) {
+  return num(mm * 1000.0, digits);
 }
 
 /// Which effects the model has.
@@ -291,8 +294,7 @@ void radialPlot(const Data& d, const Eigen::VectorXd& before, const Eigen::Vecto
   Eigen::Vector2d c = Eigen::Vector2d::Zero();
   for (const auto& p : d.path->command) c += p;
   c /= static_cast<double>(d.n);
-  plot.xLabel = "path angle (deg)";
-  plot.yLabel = "radial residual (mm)";
+  plot.setLabels({Phrase("path angle (deg)")}, {Phrase("radial residual (mm)")});
   for (std::size_t k = 0; k < d.n; ++k) {
     const Eigen::Vector2d v = d.path->command[k] - c;
     double ang = std::atan2(v.y(), v.x()) / kDeg;
@@ -346,10 +348,10 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
   dg.units = "mm";
   dg.baseline.rmse = base.rmseMm;
   dg.baseline.maxAbs = base.maxAbsMm;
-  dg.notes.push_back("declared model: origin (" + um(base.errors.originMm.x()) + ", " +
-                     um(base.errors.originMm.y()) + ") um, x axis " + fmt(base.errors.xAxisAngleDeg) +
-                     " deg, y axis " + fmt(base.errors.yAxisAngleDeg) + " deg, squareness " +
-                     fmt(base.errors.squarenessDeg()) + " deg");
+  dg.addNote(
+      {Phrase("declared model: origin (%1, %2) um, x axis %3 deg, y axis %4 deg, squareness %5 deg",
+              {um(base.errors.originMm.x()), um(base.errors.originMm.y()), num(base.errors.xAxisAngleDeg),
+               num(base.errors.yAxisAngleDeg), num(base.errors.squarenessDeg())})});
 
   State state;
   Params q0;
@@ -359,8 +361,7 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
   q0.b = base.errors.yAxisAngleDeg * kDeg;
   Solution cur = solve(d, state, q0);
 
-  long step = 0;
-  RunInfo run;
+  LoopProgress progress(observer);
   bool cancelled = false;
   for (int round = 0; round < o.maxRounds && !cancelled; ++round) {
     std::vector<std::string> names;
@@ -412,28 +413,28 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
       const Layout l = layoutOf(next);
       if (!sol.ok) {
         c.rmseAfter = cur.rmse;
-        c.evidence =
-            cyAxis < 0 && name == "cyclic"
-                ? "not estimable: no period range to search on this path"
-                : "not estimable from this path: its parameters are not observable together with the "
-                  "declared ones";
+        c.setEvidence(
+            {cyAxis < 0 && name == "cyclic"
+                 ? Phrase("not estimable: no period range to search on this path")
+                 : Phrase("not estimable from this path: its parameters are not observable together "
+                          "with the declared ones")});
         if (name == "cyclic" && cyAxis < 0) c.parameters.push_back({"axis", std::string("x"), std::nullopt});
       } else {
         const Params& q = sol.q;
-        std::string text;
+        Phrase text;
         if (name == "backlash") {
           c.parameters = {{"x_mm", q.bx, se(sol, l.bx)}, {"y_mm", q.by, se(sol, l.bx + 1)}};
-          text = "backlash x " + um(q.bx) + " +- " + um(se(sol, l.bx), 2) + " um, y " + um(q.by) + " +- " +
-                 um(se(sol, l.bx + 1), 2) + " um";
+          text = Phrase("backlash x %1 +- %2 um, y %3 +- %4 um",
+                        {um(q.bx), um(se(sol, l.bx), 2), um(q.by), um(se(sol, l.bx + 1), 2)});
         } else if (name == "scale") {
           c.parameters = {{"x_ppm", q.sx, se(sol, l.sx)}, {"y_ppm", q.sy, se(sol, l.sx + 1)}};
-          text = "scale x " + fmt(q.sx) + " +- " + fmt(se(sol, l.sx), 2) + " ppm, y " + fmt(q.sy) + " +- " +
-                 fmt(se(sol, l.sx + 1), 2) + " ppm";
+          text = Phrase("scale x %1 +- %2 ppm, y %3 +- %4 ppm",
+                        {num(q.sx), num(se(sol, l.sx), 2), num(q.sy), num(se(sol, l.sx + 1), 2)});
         } else if (name == "servo_lag") {
           const double lagMm = q.tau * d.speed;
           c.parameters = {{"tau_s", q.tau, se(sol, l.tau)}, {"lag_mm", lagMm, se(sol, l.tau) * d.speed}};
-          text = "servo lag tau " + fmt(q.tau) + " +- " + fmt(se(sol, l.tau), 2) + " s at " +
-                 fmt(o.feedMmPerMin) + " mm/min (" + um(lagMm) + " um)";
+          text = Phrase("servo lag tau %1 +- %2 s at %3 mm/min (%4 um)",
+                        {num(q.tau), num(se(sol, l.tau), 2), num(o.feedMmPerMin), um(lagMm)});
         } else {
           const int a = cyAxis, i0 = l.cy[a];
           const double cc = q.cc[a], cs = q.cs[a], f = q.f[a];
@@ -449,36 +450,31 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
                           {"period_mm", period, sePeriod},
                           {"amplitude_mm", amp, seAmp},
                           {"phase_deg", phase, std::nullopt}};
-          text = "cyclic on " + std::string(a == 0 ? "x" : "y") + ": period " + fmt(period, 4) + " +- " +
-                 fmt(sePeriod, 2) + " mm, amplitude " + um(amp) + " +- " + um(seAmp, 2) + " um";
+          text =
+              Phrase("cyclic on %1: period %2 +- %3 mm, amplitude %4 +- %5 um",
+                     {A::name(a == 0 ? "x" : "y"), num(period, 4), num(sePeriod, 2), um(amp), um(seAmp, 2)});
         }
         c.rmseAfter = sol.rmse;
         const double dBic = bic(sol, d.n) + penalty - bic0;
         c.score = dBic;
         const bool strong = dBic < -o.bicMargin;
         const bool gain = sol.rmse <= (1.0 - o.minRmseGain) * cur.rmse;
-        std::string ev =
-            "rmse " + um(cur.rmse) + " -> " + um(sol.rmse) + " um (" +
-            (cur.rmse > 0 ? fmt(100.0 * (sol.rmse - cur.rmse) / cur.rmse, 2) : std::string("n/a")) +
-            " %), dBIC " + fmt(dBic, 4) + ", " + text;
+        const double change = cur.rmse > 0 ? 100.0 * (sol.rmse - cur.rmse) / cur.rmse
+                                           : std::numeric_limits<double>::quiet_NaN();  // "n/a"
+        Phrases ev = {Phrase("rmse %1 -> %2 um (%3 %), dBIC %4, %5",
+                             {um(cur.rmse), um(sol.rmse), num(change, 2), num(dBic, 4), A::text({text})})};
         if (!strong)
-          ev += "; rejected: dBIC above -" + fmt(o.bicMargin);
+          ev.push_back(Phrase("; rejected: dBIC above -%1", {num(o.bicMargin)}));
         else if (!gain)
-          ev += "; rejected: rmse gain below " + fmt(100.0 * o.minRmseGain, 2) + " %";
-        c.evidence = ev;
+          ev.push_back(Phrase("; rejected: rmse gain below %1 %", {num(100.0 * o.minRmseGain, 2)}));
+        c.setEvidence(std::move(ev));
         if (strong && gain && (!best || dBic < tried[*best].score)) best = i;
       }
       tried.push_back(std::move(c));
       states.push_back(next);
       sols.push_back(std::move(sol));
 
-      IterationSummary s;
-      s.iteration = step;
-      s.evaluations = ++step;
-      s.best = cur.rmse;
-      s.components = {{"round", static_cast<double>(round)}, {"rmse_mm", cur.rmse}};
-      s.progress = static_cast<double>(i + 1) / static_cast<double>(names.size());
-      if (notify(observer, run, s, false)) {
+      if (progress.afterCandidate(round, i, names.size(), cur.rmse, "rmse_mm")) {
         cancelled = true;
         break;
       }
@@ -488,11 +484,11 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
       for (std::size_t i = 0; i < tried.size(); ++i) {
         if (i != *best && tried[i].evidence.find("; rejected") == std::string::npos &&
             !tried[i].evidence.starts_with("not estimable"))
-          tried[i].evidence += "; passed, but " + tried[*best].name + " explains more";
+          tried[i].addEvidence({Phrase("; passed, but %1 explains more", {A::name(tried[*best].name)})});
       }
       Candidate& c = tried[*best];
       c.accepted = true;
-      c.evidence = "accepted: " + c.evidence;
+      c.prependEvidence(Phrase("accepted: "));
       ResidualPlot plot;
       radialPlot(d, cur.r, sols[*best].r, plot);
       c.plot = std::move(plot);
@@ -502,7 +498,7 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
     for (auto& c : tried) dg.effects.push_back(std::move(c));
     if (!best) break;
   }
-  if (cancelled) dg.notes.push_back("cancelled");
+  progress.addNote(dg);
   dg.final = summaryOf(cur);
   return dg;
 }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include <Eigen/SVD>
 
@@ -26,12 +25,6 @@ Eigen::MatrixXd orthonormalBasis(const Eigen::MatrixXd& A) {
   Eigen::Index rank = 0;
   while (rank < s.size() && largest > 0.0 && s(rank) > kRankTolerance * largest) ++rank;
   return svd.matrixU().leftCols(rank);
-}
-
-std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, fmt, a, b, c);
-  return buf;
 }
 
 }  // namespace
@@ -134,18 +127,24 @@ AcceptanceDecision decideAcceptance(const AcceptanceOptions& options, double rss
   const bool relevant = relative >= options.minRelativeReduction &&
                         reduction >= options.minAbsoluteReduction && reduction > 0.0;
   d.accepted = strong && relevant;
-  std::string s = format("dBIC = %.1f", dbic);
-  s += strong ? format(" < -%g", options.bicThreshold) : format(" not below -%g", options.bicThreshold);
-  s += format(", rmse %.4g -> %.4g ", rmseBefore, rmseAfter) + unit;
-  s += format(" (-%.1f %%", 100.0 * relative);
+  // One template per case (a translation sees whole sentences); the English text as before.
+  using A = PhraseArg;
+  std::vector<PhraseArg> args = {
+      A::fixed(dbic, 1), A::number(options.bicThreshold), A::number(rmseBefore, 4), A::number(rmseAfter, 4),
+      A::unit(unit),     A::fixed(100.0 * relative, 1)};
+  const char* f = strong ? "dBIC = %1 < -%2, rmse %3 -> %4 %5 (-%6 %)"
+                         : "dBIC = %1 not below -%2, rmse %3 -> %4 %5 (-%6 %)";
   if (strong && !relevant) {
-    if (relative < options.minRelativeReduction)
-      s += format(", below the relevant %.1f %%", 100.0 * options.minRelativeReduction);
-    else
-      s += format(", below the relevant %.3g ", options.minAbsoluteReduction) + unit;
+    if (relative < options.minRelativeReduction) {
+      f = "dBIC = %1 < -%2, rmse %3 -> %4 %5 (-%6 %, below the relevant %7 %)";
+      args.push_back(A::fixed(100.0 * options.minRelativeReduction, 1));
+    } else {
+      f = "dBIC = %1 < -%2, rmse %3 -> %4 %5 (-%6 %, below the relevant %7 %5)";
+      args.push_back(A::number(options.minAbsoluteReduction, 3));
+    }
   }
-  s += ")";
-  d.reason = s;
+  d.reasonParts = {Phrase(f, std::move(args))};
+  d.reason = english(d.reasonParts);
   return d;
 }
 

@@ -32,6 +32,8 @@
 
 #include <Eigen/Core>
 
+#include "core/common/text.h"
+
 namespace metrofit::diagnose {
 
 /// The column space of a declared-model design matrix (see above).
@@ -79,7 +81,8 @@ double deltaBic(double rssBefore, double rssAfter, std::size_t n, long dofBefore
 /// The decision and its one-line reason.
 struct AcceptanceDecision {
   bool accepted = false;
-  std::string reason;  ///< e.g. "dBIC = -53.2 < -10, rmse -41.3 %"
+  std::string reason;   ///< e.g. "dBIC = -53.2 < -10, rmse 0.01 -> 0.0059 mm (-41.3 %)"
+  Phrases reasonParts;  ///< reason == english(reasonParts) (core/common/text.h)
 };
 /// `rmseCount` is the count the rmse is taken over (0: n; e.g. the points when each point gives
 /// two or three observations, so that the rmse is that of the residual distances).

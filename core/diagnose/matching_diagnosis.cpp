@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 #include <Eigen/Geometry>
@@ -25,11 +24,7 @@ struct EffectDef {
   int params = 1;
 };
 
-std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-  char buf[240];
-  std::snprintf(buf, sizeof buf, f, a, b, c, d);
-  return buf;
-}
+using A = PhraseArg;
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d m;
@@ -219,8 +214,8 @@ ResidualPlot makePlot(const Problem& pb, const EffectDef& e, const FitState& bef
   const bool normal = pb.mode == Mode::Normal;
   switch (e.kind) {
     case Kind::Scale:
-      plot.xLabel = "distance from the centroid (mm)";
-      plot.yLabel = normal ? "deviation along the normal (mm)" : "radial residual (mm)";
+      plot.setLabels({Phrase("distance from the centroid (mm)")},
+                     {Phrase(normal ? "deviation along the normal (mm)" : "radial residual (mm)")});
       for (std::size_t i = 0; i < n; ++i) {
         plot.x.push_back((pb.set->points[i].nominal - pb.qMean).norm());
         plot.before.push_back(radialValue(pb, before, i));
@@ -228,8 +223,7 @@ ResidualPlot makePlot(const Problem& pb, const EffectDef& e, const FitState& bef
       }
       break;
     case Kind::Offset:
-      plot.xLabel = "surface";
-      plot.yLabel = "deviation along the normal (mm)";
+      plot.setLabels({Phrase("surface")}, {Phrase("deviation along the normal (mm)")});
       plot.categories = pb.surfaces;
       for (std::size_t i = 0; i < n; ++i) {
         plot.x.push_back(pb.surfaceOf[i]);
@@ -238,8 +232,8 @@ ResidualPlot makePlot(const Problem& pb, const EffectDef& e, const FitState& bef
       }
       break;
     case Kind::Distortion:
-      plot.xLabel = "polar angle (deg)";
-      plot.yLabel = normal ? "deviation along the normal (mm)" : "radial residual (mm)";
+      plot.setLabels({Phrase("polar angle (deg)")},
+                     {Phrase(normal ? "deviation along the normal (mm)" : "radial residual (mm)")});
       for (std::size_t i = 0; i < n; ++i) {
         const Eigen::Vector3d qc = pb.set->points[i].nominal - pb.qMean;
         plot.x.push_back(std::atan2(qc.y(), qc.x()) * 180.0 / std::numbers::pi);
@@ -287,12 +281,18 @@ std::vector<Parameter> parameters(const EffectDef& e, const Eigen::VectorXd& bet
   return out;
 }
 
-std::string describe(const std::vector<Parameter>& ps) {
-  std::string s;
+/// "ppm = 12.3 +- 0.45, angle_deg = ..." (the parameter keys as they are).
+Phrases describe(const std::vector<Parameter>& ps) {
+  Phrases s;
   for (const Parameter& p : ps) {
-    if (!s.empty()) s += ", ";
-    s += p.name + fmt(" = %.4g", std::get<double>(p.value));
-    if (p.standardError) s += fmt(" +- %.2g", *p.standardError);
+    const bool first = s.empty();
+    if (p.standardError)
+      s.push_back(
+          Phrase(first ? "%1 = %2 +- %3" : ", %1 = %2 +- %3",
+                 {A::name(p.name), A::number(std::get<double>(p.value), 4), A::number(*p.standardError, 2)}));
+    else
+      s.push_back(Phrase(first ? "%1 = %2" : ", %1 = %2",
+                         {A::name(p.name), A::number(std::get<double>(p.value), 4)}));
   }
   return s;
 }
@@ -363,20 +363,22 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
     pose.rotation = current.R;
     pose.translation = current.t;
     const Eigen::Vector3d a = pose.anglesDeg();
-    result.notes.push_back(std::string("declared model: rigid posture p = R q + t fitted to ") +
-                           (pb.mode == Mode::Normal
-                                ? "the deviations along the nominal normals"
-                                : (pb.mode == Mode::Planar ? "the in-plane residuals (planar, position-only)"
-                                                           : "the residual vectors (position-only)")) +
-                           ", " + std::to_string(nPts) + " points");
-    result.notes.push_back(
-        fmt("declared fit: rotation_deg [%.5f, %.5f, %.5f]", a.x(), a.y(), a.z()) +
-        fmt(", translation_mm [%.4f, %.4f, %.4f]", current.t.x(), current.t.y(), current.t.z()));
+    const char* fitted = pb.mode == Mode::Normal
+                             ? "the deviations along the nominal normals"
+                             : (pb.mode == Mode::Planar ? "the in-plane residuals (planar, position-only)"
+                                                        : "the residual vectors (position-only)");
+    result.addNote({Phrase("declared model: rigid posture p = R q + t fitted to %1, %2 points",
+                           {A::text({Phrase(fitted)}), A::integer(static_cast<long long>(nPts))})});
+    result.addNote(
+        {Phrase("declared fit: rotation_deg [%1, %2, %3], translation_mm [%4, %5, %6]",
+                {A::fixed(a.x(), 5), A::fixed(a.y(), 5), A::fixed(a.z(), 5), A::fixed(current.t.x(), 4),
+                 A::fixed(current.t.y(), 4), A::fixed(current.t.z(), 4)})});
   }
 
   std::vector<bool> used(defs.size(), false);
   std::vector<Candidate> acceptedCandidates, lastRound;
   long tried = 0;
+  LoopProgress progress(observer);
   for (int round = 0;; ++round) {
     std::vector<Candidate> roundCandidates;
     std::vector<FitState> states;
@@ -399,15 +401,15 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
         cand.parameters = parameters(defs[c], Eigen::VectorXd::Zero(st.beta.size()),
                                      Eigen::MatrixXd::Zero(st.beta.size(), st.beta.size()), at);
         for (Parameter& p : cand.parameters) p.standardError.reset();
-        cand.evidence =
-            "not identifiable: " + st.est.why + " (the rigid posture explains it with these points)";
+        cand.setEvidence({Phrase("not identifiable: %1 (the rigid posture explains it with these points)",
+                                 {A::text({Phrase(st.est.why)})})});
       } else {
         cand.parameters = parameters(defs[c], st.beta, st.est.covariance, at);
         cand.rmseAfter = summarise(st, nPts).rmse;
         const AcceptanceDecision dec = decideAcceptance(acceptance, current.rss, st.rss, nObs,
                                                         current.est.dof, defs[c].params, "mm", nPts);
         cand.score = deltaBic(current.rss, st.rss, nObs, current.est.dof, defs[c].params);
-        cand.evidence = describe(cand.parameters) + "; " + dec.reason;
+        cand.setEvidence({Phrase("%1; %2", {A::text(describe(cand.parameters)), A::text(dec.reasonParts)})});
         cand.plot = makePlot(pb, defs[c], current, st);
         if (dec.accepted && round < options.maxRounds &&
             (best < 0 || cand.score < roundCandidates[static_cast<std::size_t>(best)].score))
@@ -425,7 +427,8 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
       for (std::size_t j = 0; j < roundCandidates.size(); ++j) {
         if (j == b || !states[j].est.identifiable) continue;
         if (std::abs(roundCandidates[j].score - win.score) <= 1e-6 * std::abs(win.score) + 1e-9)
-          win.evidence += "; indistinguishable from " + roundCandidates[j].name + " with these points";
+          win.addEvidence(
+              {Phrase("; indistinguishable from %1 with these points", {A::name(roundCandidates[j].name)})});
       }
       used[roundDefs[b]] = true;
       acceptedDefs.push_back(defs[roundDefs[b]]);
@@ -434,17 +437,10 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
     } else {
       lastRound = std::move(roundCandidates);
     }
-    if (observer) {
-      IterationSummary s;
-      s.iteration = round;
-      s.evaluations = tried;
-      s.best = summarise(current, nPts).rmse;
-      s.components = {{"rmse", s.best}, {"accepted", static_cast<double>(acceptedCandidates.size())}};
-      cancelled = observer->onIteration(s) == ObserverDecision::Stop;
-    }
+    cancelled = progress.afterRound(round, tried, summarise(current, nPts).rmse, acceptedCandidates.size());
     if (best < 0) break;
     if (cancelled) {
-      result.notes.push_back("stopped by the observer after round " + std::to_string(round));
+      progress.addNote(result);
       break;
     }
   }

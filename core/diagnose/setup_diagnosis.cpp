@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 
 #include <Eigen/QR>
@@ -19,11 +18,7 @@ struct CandidateDef {
   bool perPart = true;  ///< tool wear (regressor: part number) or drift (regressor: time)
 };
 
-std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0) {
-  char buf[200];
-  std::snprintf(buf, sizeof buf, f, a, b, c);
-  return buf;
-}
+using A = PhraseArg;
 
 ErrorSummary summarise(const Eigen::VectorXd& residual) {
   ErrorSummary s;
@@ -139,24 +134,30 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
   Eigen::MatrixXd Zacc(static_cast<Eigen::Index>(n), 0);
   EffectEstimate current = estimateEffects(declared, y, Zacc);
   result.baseline = summarise(current.residual);
-  result.notes.push_back("declared model: constant errors of the " + std::to_string(model.setup.size()) +
-                         " setup data through the relation graph, least squares over " + std::to_string(n) +
-                         " rows of " + std::to_string(ordered.size()) + " parts; rank " +
-                         std::to_string(declared.rank()) + " of " + std::to_string(model.setup.size()) +
-                         (declared.rank() < static_cast<int>(model.setup.size())
-                              ? " (rank deficient: minimum-norm solution)"
-                              : ""));
+  {
+    const auto data = static_cast<long long>(model.setup.size());
+    Phrases note = {Phrase(
+        "declared model: constant errors of the %1 setup data through the relation graph, "
+        "least squares over %2 rows of %3 parts; rank %4 of %5",
+        {A::integer(data), A::integer(static_cast<long long>(n)),
+         A::integer(static_cast<long long>(ordered.size())), A::integer(declared.rank()), A::integer(data)})};
+    if (declared.rank() < static_cast<int>(model.setup.size()))
+      note.push_back(Phrase(" (rank deficient: minimum-norm solution)"));
+    result.addNote(std::move(note));
+  }
   {
     const Eigen::VectorXd e = X.completeOrthogonalDecomposition().solve(y);
-    std::string s = "declared fit (minimum norm), setup errors mm:";
-    for (Eigen::Index i = 0; i < nd; ++i) s += " " + model.setup[i].id + fmt("=%.4f", e(i));
-    result.notes.push_back(s);
+    Phrases note = {Phrase("declared fit (minimum norm), setup errors mm:")};
+    for (Eigen::Index i = 0; i < nd; ++i)
+      note.push_back(Phrase(" %1=%2", {A::name(model.setup[i].id), A::fixed(e(i), 4)}));
+    result.addNote(std::move(note));
   }
 
   std::vector<bool> used(defs.size(), false);
   std::vector<std::size_t> acceptedDefs;
   std::vector<Candidate> acceptedCandidates, lastRound;
   long tried = 0;
+  LoopProgress progress(observer);
   for (int round = 0;; ++round) {
     std::vector<Candidate> roundCandidates;
     std::vector<EffectEstimate> estimates;
@@ -179,9 +180,9 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
       if (!est.identifiable) {
         cand.rmseAfter = rmseBefore;
         cand.parameters.push_back({unit, 0.0, std::nullopt});
-        cand.evidence =
-            "not identifiable: " + est.why +
-            (d.perPart ? std::string(" (one part only?)") : std::string(" (time does not vary?)"));
+        cand.setEvidence({Phrase(d.perPart ? "not identifiable: %1 (one part only?)"
+                                           : "not identifiable: %1 (time does not vary?)",
+                                 {A::text({Phrase(est.why)})})});
       } else {
         const Eigen::Index k = est.beta.size() - 1;
         const double value = est.beta(k), se = std::sqrt(std::max(0.0, est.covariance(k, k)));
@@ -190,10 +191,10 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
         const AcceptanceDecision dec =
             decideAcceptance(options.acceptance, current.rss, est.rss, n, current.dof, 1, "mm");
         cand.score = deltaBic(current.rss, est.rss, n, current.dof, 1);
-        cand.evidence =
-            fmt(d.perPart ? "%.3g +- %.2g mm/part (t = %.1f); " : "%.3g +- %.2g mm/min (t = %.1f); ", value,
-                se, se > 0.0 ? value / se : 0.0) +
-            dec.reason;
+        cand.setEvidence(
+            {Phrase(d.perPart ? "%1 +- %2 mm/part (t = %3); " : "%1 +- %2 mm/min (t = %3); ",
+                    {A::number(value, 3), A::number(se, 2), A::fixed(se > 0.0 ? value / se : 0.0, 1)})});
+        cand.addEvidence(dec.reasonParts);
         // Residual plot: apparent error of the datum per part against part number or time.
         std::vector<bool> presentBefore, presentAfter;
         const std::vector<double> before =
@@ -201,8 +202,8 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
         const std::vector<double> after =
             apparentError(est.residual, G, rowDim, rowPart, ordered.size(), d.datum, &presentAfter);
         ResidualPlot plot;
-        plot.xLabel = d.perPart ? "part" : "time (min)";
-        plot.yLabel = "apparent error of " + model.setup[d.datum].id + " (mm)";
+        plot.setLabels({Phrase(d.perPart ? "part" : "time (min)")},
+                       {Phrase("apparent error of %1 (mm)", {A::name(model.setup[d.datum].id)})});
         for (std::size_t p = 0; p < ordered.size(); ++p) {
           if (!presentBefore[p]) continue;
           plot.x.push_back(d.perPart ? ordered[p].first : slotTimeSum[p] / std::max(1, slotTimeCount[p]));
@@ -227,16 +228,17 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
     // tool_wear:T and drift:T explain the same datum, by part number and by time. When time is
     // nearly proportional to the part number the data cannot tell them apart: unless the best one
     // beats the other by the decision threshold, the one listed first (tool wear) is preferred.
-    std::string preferredOver;
+    Phrases preferredOver;
     if (best >= 0) {
       const auto b = static_cast<std::size_t>(best);
       for (std::size_t j = 0; j < b; ++j) {
         if (!acceptable[j] || defs[roundDefs[j]].datum != defs[roundDefs[b]].datum) continue;
         if (roundCandidates[j].score - roundCandidates[b].score < options.acceptance.bicThreshold) {
-          preferredOver =
-              "; preferred to " + roundCandidates[b].name +
-              fmt(" (its dBIC is %.1f lower, below the threshold: the data cannot tell them apart)",
-                  roundCandidates[j].score - roundCandidates[b].score);
+          preferredOver = {
+              Phrase("; preferred to %1 (its dBIC is %2 lower, below the threshold: the data cannot tell "
+                     "them apart)",
+                     {A::name(roundCandidates[b].name),
+                      A::fixed(roundCandidates[j].score - roundCandidates[b].score, 1)})};
           best = static_cast<int>(j);
           break;
         }
@@ -247,12 +249,13 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
       const auto b = static_cast<std::size_t>(best);
       Candidate& win = roundCandidates[b];
       win.accepted = true;
-      win.evidence += preferredOver;
+      win.addEvidence(std::move(preferredOver));
       // Ties (e.g. time proportional to part number): the first listed wins, the evidence says so.
       for (std::size_t j = 0; j < roundCandidates.size(); ++j) {
         if (j == b || !estimates[j].identifiable) continue;
         if (std::abs(roundCandidates[j].score - win.score) <= 1e-6 * std::abs(win.score) + 1e-9)
-          win.evidence += "; indistinguishable from " + roundCandidates[j].name + " with these data";
+          win.addEvidence(
+              {Phrase("; indistinguishable from %1 with these data", {A::name(roundCandidates[j].name)})});
       }
       used[roundDefs[b]] = true;
       acceptedDefs.push_back(roundDefs[b]);
@@ -265,17 +268,11 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
     } else {
       lastRound = std::move(roundCandidates);
     }
-    if (observer) {
-      IterationSummary s;
-      s.iteration = round;
-      s.evaluations = tried;
-      s.best = rootMeanSquare(current.residual);
-      s.components = {{"rmse", s.best}, {"accepted", static_cast<double>(acceptedCandidates.size())}};
-      cancelled = observer->onIteration(s) == ObserverDecision::Stop;
-    }
+    cancelled =
+        progress.afterRound(round, tried, rootMeanSquare(current.residual), acceptedCandidates.size());
     if (best < 0) break;
     if (cancelled) {
-      result.notes.push_back("stopped by the observer after round " + std::to_string(round));
+      progress.addNote(result);
       break;
     }
   }

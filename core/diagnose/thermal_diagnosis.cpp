@@ -19,14 +19,22 @@
 namespace metrofit::diagnose {
 namespace {
 
+using A = PhraseArg;
+
 std::string fmt(double v, int digits = 3) {
   return std::isfinite(v) ? CsvWriter::formatNumber(v, digits) : "n/a";
 }
 
-std::string pct(double before, double after) {
-  if (!(before > 0.0)) return "n/a";
+/// fmt() as a phrase argument ("n/a" when not finite).
+PhraseArg num(double v, int digits = 3) {
+  return A::numberOrNa(v, digits);
+}
+
+/// The relative change in percent ("+5.2 %", "-90 %" or "n/a").
+PhraseArg pct(double before, double after) {
+  if (!(before > 0.0)) return A::text({Phrase("n/a")});
   const double p = 100.0 * (after - before) / before;
-  return (p >= 0.0 ? "+" : "") + CsvWriter::formatNumber(p, 2) + " %";
+  return A::text({Phrase("%1 %", {A::signedNumber(p, 2)})});
 }
 
 /// The model state: the declared inputs plus the accepted effects (thermal_applied.h, shared with
@@ -35,7 +43,7 @@ using ModelState = ThermalEffectSet;
 
 struct Fit {
   bool ok = false;
-  std::string why;                  ///< when not ok
+  Phrase why;                       ///< when not ok
   std::vector<double> residual;     ///< all rows, y - prediction
   double rmse = 0.0, maxAbs = 0.0;  ///< fit rows
   double heldout = 0.0;             ///< held-out rows
@@ -66,8 +74,8 @@ class Problem {
     const auto p = static_cast<Eigen::Index>(cols.size());
     const auto nf = static_cast<Eigen::Index>(nFit_);
     if (nf < p + 3) {
-      f.why =
-          "too few fit rows (" + std::to_string(nFit_) + ") for " + std::to_string(p + 1) + " coefficients";
+      f.why = Phrase("too few fit rows (%1) for %2 coefficients",
+                     {A::integer(static_cast<long long>(nFit_)), A::integer(p + 1)});
       return f;
     }
     // Centre and scale every column on the fit rows (conditioning); the intercept absorbs the means.
@@ -83,7 +91,8 @@ class Problem {
       for (Eigen::Index k = 0; k < nf; ++k) v += std::pow(c[static_cast<std::size_t>(k)] - mean(j), 2);
       sd(j) = std::sqrt(v / static_cast<double>(nf));
       if (!(sd(j) > 1e-12 * std::max(1.0, std::abs(mean(j))))) {
-        f.why = "column '" + f.names[static_cast<std::size_t>(j)] + "' is constant on the fit rows";
+        f.why = Phrase("column '%1' is constant on the fit rows",
+                       {A::name(f.names[static_cast<std::size_t>(j)])});
         return f;
       }
       for (Eigen::Index k = 0; k < nf; ++k) X(k, j + 1) = (c[static_cast<std::size_t>(k)] - mean(j)) / sd(j);
@@ -92,7 +101,7 @@ class Problem {
     for (Eigen::Index k = 0; k < nf; ++k) yf(k) = y_[static_cast<std::size_t>(k)];
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
     if (qr.rank() < p + 1) {
-      f.why = "the columns are linearly dependent on the fit rows";
+      f.why = Phrase("the columns are linearly dependent on the fit rows");
       return f;
     }
     const Eigen::VectorXd b = qr.solve(yf);
@@ -245,8 +254,16 @@ struct Eval {
   ModelState next;
   Fit fit;
   std::vector<Parameter> parameters;
-  std::string paramText;
+  Phrases paramText;  ///< e.g. "tau 13.6 +- 0.4 min" (empty when there is none)
 };
+
+/// The residual plot's axis titles: "time (min)", "residual (um)" (or "residual" without a unit).
+Phrases timeLabel() {
+  return {Phrase("time (min)")};
+}
+Phrases residualLabel(const std::string& units) {
+  return {units.empty() ? Phrase("residual") : Phrase("residual (%1)", {A::unit(units)})};
+}
 
 bool isLag(const std::string& name) {
   return name == "lag" || name.starts_with("lag:");
@@ -263,16 +280,19 @@ std::optional<std::pair<double, double>> coefficientOf(const Fit& f, const std::
 /// Parameters of a linear candidate (input:<col>, drift) read from a fit that contains it.
 void linearParameters(const ThermalLog& log, const std::string& name, const Fit& f, const std::string& u,
                       Eval& e) {
+  // u is " <unit>" or "" (the target has no unit).
   const auto b = coefficientOf(f, name);
   if (!b) return;
   if (name == "drift") {
     e.parameters = {{"per_min", b->first, b->second}};
-    e.paramText = "drift " + fmt(b->first) + " +- " + fmt(b->second, 2) + u + "/min";
+    e.paramText = {Phrase("drift %1 +- %2%3/min", {num(b->first), num(b->second, 2), A::unit(u)})};
   } else {
     const std::string cu = log.channel(name.substr(6)).unit;
     e.parameters = {{"coefficient", b->first, b->second}};
-    e.paramText = "coefficient " + fmt(b->first) + " +- " + fmt(b->second, 2) + u +
-                  (cu.empty() ? " per unit" : " per " + cu);
+    e.paramText = {
+        cu.empty() ? Phrase("coefficient %1 +- %2%3 per unit", {num(b->first), num(b->second, 2), A::unit(u)})
+                   : Phrase("coefficient %1 +- %2%3 per %4",
+                            {num(b->first), num(b->second, 2), A::unit(u), A::unit(cu)})};
   }
 }
 
@@ -296,7 +316,8 @@ Eval evaluateCandidate(const Problem& pb, const ThermalLog& log, const ThermalDi
       e.next.lagCol[col] = le.tau;
     e.fit = le.fit;
     e.parameters = {{"tau_min", le.tau, le.se}};
-    e.paramText = "tau " + fmt(le.tau) + (le.se ? " +- " + fmt(*le.se, 2) : "") + " min";
+    e.paramText = {le.se ? Phrase("tau %1 +- %2 min", {num(le.tau), num(*le.se, 2)})
+                         : Phrase("tau %1 min", {num(le.tau)})};
   } else {
     if (name == "drift")
       e.next.drift = true;
@@ -335,16 +356,19 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
 
   ModelState state;
   Fit cur = pb.fit(state);
-  if (!cur.ok) throw ValidationError(ErrorContext{log.source, 0, 0, "inputs"}, cur.why);
+  if (!cur.ok) throw ValidationError(ErrorContext{log.source, 0, 0, "inputs"}, cur.why.english());
   d.baseline = summaryOf(cur);
   const double noise = noiseLevel(cur, pb.fitRows());
   {
-    std::string model = o.target + " = c0";
+    Phrases model = {Phrase("%1 = c0", {A::name(o.target)})};
     for (std::size_t j = 0; j < o.inputs.size(); ++j)
-      model += " + " + fmt(cur.beta(static_cast<Eigen::Index>(j))) + " " + o.inputs[j];
-    d.notes.push_back("declared model (static, fitted on the first " + std::to_string(pb.fitRows()) + " of " +
-                      std::to_string(pb.rows()) + " rows): " + model);
-    d.notes.push_back("noise level (first differences of the fit residual): " + fmt(noise) + u);
+      model.push_back(
+          Phrase(" + %1 %2", {num(cur.beta(static_cast<Eigen::Index>(j))), A::name(o.inputs[j])}));
+    d.addNote({Phrase("declared model (static, fitted on the first %1 of %2 rows): %3",
+                      {A::integer(static_cast<long long>(pb.fitRows())),
+                       A::integer(static_cast<long long>(pb.rows())), A::text(std::move(model))})});
+    d.addNote(
+        {Phrase("noise level (first differences of the fit residual): %1%2", {num(noise), A::unit(u)})});
   }
 
   // Columns a model could have used but did not declare (never the target, never another
@@ -357,8 +381,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     undeclared.push_back(c.name);
   }
 
-  long step = 0;
-  RunInfo run;
+  LoopProgress progress(observer);
   bool cancelled = false;
   for (int round = 0; round < o.maxRounds && !cancelled; ++round) {
     // This round's candidates.
@@ -387,12 +410,12 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       Eval ev0 = evaluateCandidate(pb, log, o, name, state, u);
       ModelState next = ev0.next;
       Fit f = ev0.fit;
-      const std::string paramText = ev0.paramText;
+      const Phrases paramText = ev0.paramText;
       c.parameters = ev0.parameters;
       if (!f.ok) {
         c.rmseAfter = cur.rmse;
         c.heldoutAfter = cur.heldout;
-        c.evidence = "not estimable: " + f.why;
+        c.setEvidence({Phrase("not estimable: %1", {A::text({f.why})})});
       } else {
         c.rmseAfter = f.rmse;
         c.heldoutAfter = f.heldout;
@@ -406,32 +429,33 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
         const double nf = static_cast<double>(pb.fitRows());
         const double dBic = nf * std::log(f.sse / cur.sse) + std::log(nf);
         const bool inSample = dBic < 0.0;
-        std::string ev = "held-out rmse " + fmt(cur.heldout) + " -> " + fmt(f.heldout) + u + " (" +
-                         pct(cur.heldout, f.heldout) + "), fit rmse " + fmt(cur.rmse) + " -> " + fmt(f.rmse) +
-                         u + (paramText.empty() ? "" : ", " + paramText);
+        std::vector<PhraseArg> args = {num(cur.heldout), num(f.heldout),
+                                       A::unit(u),       pct(cur.heldout, f.heldout),
+                                       num(cur.rmse),    num(f.rmse)};
+        Phrases ev;
+        if (paramText.empty()) {
+          ev.push_back(Phrase("held-out rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3", std::move(args)));
+        } else {
+          args.push_back(A::text(paramText));
+          ev.push_back(Phrase("held-out rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, %7", std::move(args)));
+        }
         if (f.heldout > cur.heldout)
-          ev += "; rejected: held-out error worse";
+          ev.push_back(Phrase("; rejected: held-out error worse"));
         else if (!gain)
-          ev += "; rejected: held-out gain below " + fmt(100.0 * o.minHeldoutGain, 2) + " %";
+          ev.push_back(Phrase("; rejected: held-out gain below %1 %", {num(100.0 * o.minHeldoutGain, 2)}));
         else if (!aboveNoise)
-          ev += "; rejected: explains " + fmt(explained) + u + ", below " + fmt(o.minExplainedNoise) +
-                " x the noise level " + fmt(noise) + u;
+          ev.push_back(Phrase("; rejected: explains %1%2, below %3 x the noise level %4%2",
+                              {num(explained), A::unit(u), num(o.minExplainedNoise), num(noise)}));
         else if (!inSample)
-          ev += "; rejected: no in-sample evidence (fit dBIC " + fmt(dBic) + " >= 0)";
-        c.evidence = ev;
+          ev.push_back(Phrase("; rejected: no in-sample evidence (fit dBIC %1 >= 0)", {num(dBic)}));
+        c.setEvidence(std::move(ev));
         if (gain && aboveNoise && inSample && (!best || rankOf(f, cur) < rankOf(fits[*best], cur))) best = i;
       }
       tried.push_back(std::move(c));
       states.push_back(std::move(next));
       fits.push_back(std::move(f));
 
-      IterationSummary s;
-      s.iteration = step;
-      s.evaluations = ++step;
-      s.best = cur.heldout;
-      s.components = {{"round", static_cast<double>(round)}, {"heldout_rmse", cur.heldout}};
-      s.progress = static_cast<double>(i + 1) / static_cast<double>(names.size());
-      if (notify(observer, run, s, false)) {
+      if (progress.afterCandidate(round, i, names.size(), cur.heldout, "heldout_rmse")) {
         cancelled = true;
         break;
       }
@@ -505,13 +529,13 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
           c.heldoutBefore = cur.heldout;
           c.heldoutAfter = bestFit.heldout;
           c.score = cur.heldout > 0.0 ? (bestFit.heldout - cur.heldout) / cur.heldout : 0.0;
-          c.evidence = "accepted together with " + bestNames[1 - w] + ": held-out rmse " + fmt(cur.heldout) +
-                       " -> " + fmt(bestFit.heldout) + u + " (" + pct(cur.heldout, bestFit.heldout) +
-                       "), fit rmse " + fmt(cur.rmse) + " -> " + fmt(bestFit.rmse) + u + ", " +
-                       parts[w]->paramText;
+          c.setEvidence(
+              {Phrase("accepted together with %1: held-out rmse %2 -> %3%4 (%5), fit rmse %6 -> %7%4, %8",
+                      {A::name(bestNames[1 - w]), num(cur.heldout), num(bestFit.heldout), A::unit(u),
+                       pct(cur.heldout, bestFit.heldout), num(cur.rmse), num(bestFit.rmse),
+                       A::text(parts[w]->paramText)})});
           ResidualPlot plot;
-          plot.xLabel = "time (min)";
-          plot.yLabel = "residual" + (d.units.empty() ? std::string() : " (" + d.units + ")");
+          plot.setLabels(timeLabel(), residualLabel(d.units));
           plot.x = log.timeMin;
           plot.before = cur.residual;
           plot.after = bestFit.residual;
@@ -527,14 +551,13 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       for (std::size_t i = 0; i < tried.size(); ++i) {
         if (i != *best && tried[i].evidence.find("; rejected") == std::string::npos &&
             !tried[i].evidence.starts_with("not estimable"))
-          tried[i].evidence += "; passed, but " + tried[*best].name + " explains more";
+          tried[i].addEvidence({Phrase("; passed, but %1 explains more", {A::name(tried[*best].name)})});
       }
       Candidate& c = tried[*best];
       c.accepted = true;
-      c.evidence = "accepted: " + c.evidence;
+      c.prependEvidence(Phrase("accepted: "));
       ResidualPlot plot;
-      plot.xLabel = "time (min)";
-      plot.yLabel = "residual" + (d.units.empty() ? std::string() : " (" + d.units + ")");
+      plot.setLabels(timeLabel(), residualLabel(d.units));
       plot.x = log.timeMin;
       plot.before = cur.residual;
       plot.after = fits[*best].residual;
@@ -545,7 +568,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     for (auto& c : tried) d.effects.push_back(std::move(c));
     if (!best && !pairAccepted) break;
   }
-  if (cancelled) d.notes.push_back("cancelled");
+  progress.addNote(d);
   d.final = summaryOf(cur);
   return d;
 }

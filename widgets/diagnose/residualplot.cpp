@@ -1,6 +1,7 @@
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/common/palette.h"
+#include "widgets/diagnose/coretexts.h"
 
 #include <QBarCategoryAxis>
 #include <QBarSeries>
@@ -11,6 +12,7 @@
 #include <QFontInfo>
 #include <QHorizontalBarSeries>
 #include <QLegend>
+#include <QLocale>
 #include <QPaintEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -64,9 +66,9 @@ std::vector<double> ticks(const Range& r, int count) {
   return out;
 }
 
-QString tickText(double v) {
+QString tickText(double v, const QLocale& locale) {
   if (std::abs(v) < 1e-12) v = 0.0;
-  return QString::number(v, 'g', 5);
+  return locale.toString(v, 'g', 5);
 }
 
 /// Frame, title, axis labels and ticks; returns the plot area and sets the value -> pixel maps.
@@ -80,7 +82,7 @@ struct Axes {
 };
 
 Axes drawAxes(QPainter& p, const QRectF& rect, const Range& xr, const Range& yr, const QString& title,
-              const QString& xLabel, const QString& yLabel, double fontPx,
+              const QString& xLabel, const QString& yLabel, double fontPx, const QLocale& locale,
               const QStringList& categories = {}) {
   QFont f = p.font();
   f.setPixelSize(std::max(1, static_cast<int>(std::lround(fontPx))));
@@ -92,7 +94,7 @@ Axes drawAxes(QPainter& p, const QRectF& rect, const Range& xr, const Range& yr,
   a.yr = yr;
   const auto yt = ticks(yr, 5);
   double tickWidth = 0.0;
-  for (double v : yt) tickWidth = std::max(tickWidth, fm.horizontalAdvance(tickText(v)));
+  for (double v : yt) tickWidth = std::max(tickWidth, fm.horizontalAdvance(tickText(v, locale)));
   a.area = QRectF(rect.left() + line * 1.4 + tickWidth + 6.0, rect.top() + line * 1.6, 0.0, 0.0);
   a.area.setRight(rect.right() - fm.horizontalAdvance(QStringLiteral("0000")) / 2.0);
   a.area.setBottom(rect.bottom() - line * 2.6);
@@ -112,7 +114,7 @@ Axes drawAxes(QPainter& p, const QRectF& rect, const Range& xr, const Range& yr,
   for (double v : yt) {
     const double y = a.map(xr.lo, v).y();
     p.drawText(QRectF(a.area.left() - tickWidth - 6.0, y - line / 2, tickWidth + 3.0, line),
-               Qt::AlignRight | Qt::AlignVCenter, tickText(v));
+               Qt::AlignRight | Qt::AlignVCenter, tickText(v, locale));
   }
   if (!categories.isEmpty()) {
     for (int i = 0; i < categories.size(); ++i) {
@@ -126,7 +128,7 @@ Axes drawAxes(QPainter& p, const QRectF& rect, const Range& xr, const Range& yr,
       const double x = a.map(v, yr.lo).x();
       p.drawLine(QPointF(x, a.area.bottom()), QPointF(x, a.area.bottom() + 3.0));
       p.drawText(QRectF(x - 40.0, a.area.bottom() + 2.0, 80.0, line), Qt::AlignHCenter | Qt::AlignTop,
-                 tickText(v));
+                 tickText(v, locale));
     }
   }
   p.drawText(QRectF(a.area.left(), a.area.bottom() + line * 1.2, a.area.width(), line * 1.3), Qt::AlignCenter,
@@ -194,7 +196,7 @@ double vectorMagnification(const diagnose::ResidualPlot& plot, const QRectF& rec
 }
 
 void paintResidualScatter(QPainter& p, const QRectF& rect, const diagnose::ResidualPlot& plot,
-                          const QString& title, double fontPx) {
+                          const QString& title, double fontPx, const QLocale& locale) {
   p.save();
   p.setRenderHint(QPainter::Antialiasing, true);
   Range xr, yr;
@@ -208,7 +210,7 @@ void paintResidualScatter(QPainter& p, const QRectF& rect, const diagnose::Resid
   Range xp = xr.padded();
   if (!plot.categories.empty()) xp = {-0.5, static_cast<double>(plot.categories.size()) - 0.5};
   const Axes a = drawAxes(p, rect, xp, yr.padded(), title, displayUnits(plot.xLabel),
-                          displayUnits(plot.yLabel), fontPx, toStringList(plot.categories));
+                          displayUnits(plot.yLabel), fontPx, locale, toStringList(plot.categories));
   p.setClipRect(a.area);
   p.setPen(QPen(Qt::black, 0, Qt::DashLine));
   p.drawLine(a.map(xp.lo, 0.0), a.map(xp.hi, 0.0));
@@ -229,7 +231,7 @@ void paintResidualScatter(QPainter& p, const QRectF& rect, const diagnose::Resid
 }
 
 double paintResidualVectors(QPainter& p, const QRectF& rect, const diagnose::ResidualPlot& plot,
-                            const QString& title, double fontPx) {
+                            const QString& title, double fontPx, const QLocale& locale) {
   p.save();
   p.setRenderHint(QPainter::Antialiasing, true);
   Range xr, yr;
@@ -246,8 +248,8 @@ double paintResidualVectors(QPainter& p, const QRectF& rect, const diagnose::Res
   }
   // Equal scales on x and y: widen the shorter range to the area's aspect ratio after the axes.
   Range xp = xr.padded(), yp = yr.padded();
-  const QString titleText =
-      title + QCoreApplication::translate("metrofit::ResidualPlot", " (arrows × %1)").arg(mag, 0, 'g', 6);
+  const QString titleText = title + QCoreApplication::translate("metrofit::ResidualPlot", " (arrows × %1)")
+                                        .arg(locale.toString(mag, 'g', 6));
   QFont f = p.font();
   f.setPixelSize(std::max(1, static_cast<int>(std::lround(fontPx))));
   const QFontMetricsF fm(f);
@@ -266,7 +268,7 @@ double paintResidualVectors(QPainter& p, const QRectF& rect, const diagnose::Res
   p.fillRect(rect, Qt::white);
   const Axes a =
       drawAxes(p, rect, xp, yp, titleText, QCoreApplication::translate("metrofit::ResidualPlot", "x (mm)"),
-               QCoreApplication::translate("metrofit::ResidualPlot", "y (mm)"), fontPx);
+               QCoreApplication::translate("metrofit::ResidualPlot", "y (mm)"), fontPx, locale);
   p.setClipRect(a.area);
   const double head = std::max(2.0, fontPx * 0.45);
   for (const auto& v : plot.vectors) {
@@ -313,7 +315,8 @@ class ResidualPlotView::VectorWidget : public QWidget {
     QPainter p(this);
     if (plot.vectors.empty()) return;
     const double px = QFontInfo(font()).pixelSize();
-    magnification = paintResidualVectors(p, QRectF(rect()).adjusted(4, 4, -4, -4), plot, title, px);
+    magnification =
+        paintResidualVectors(p, QRectF(rect()).adjusted(4, 4, -4, -4), plot, title, px, QLocale());
   }
 };
 
@@ -366,8 +369,12 @@ void ResidualPlotView::clear() {
   stack_->setCurrentWidget(charts_->view);
 }
 
-void ResidualPlotView::setPlot(const diagnose::ResidualPlot& plot, const QString& title) {
+void ResidualPlotView::setPlot(const diagnose::ResidualPlot& source, const QString& title) {
   clear();
+  // The axis titles translated (core's phrases, widgets/diagnose/coretexts.h); the report keeps English.
+  diagnose::ResidualPlot plot = source;
+  plot.xLabel = coreText(source.xLabelParts, source.xLabel).toStdString();
+  plot.yLabel = coreText(source.yLabelParts, source.yLabel).toStdString();
   plot_ = plot;
   if (hasVectorField(plot)) {
     vectors_->plot = plot;
@@ -377,6 +384,8 @@ void ResidualPlotView::setPlot(const diagnose::ResidualPlot& plot, const QString
     return;
   }
   auto* chart = charts_->view->chart();
+  chart->setLocale(QLocale());  // axis numbers with the user's decimal separator
+  chart->setLocalizeNumbers(true);
   chart->setTitle(title);
   chart->legend()->show();
   chart->legend()->setAlignment(Qt::AlignBottom);
@@ -481,6 +490,8 @@ void ErrorBarsView::clear() {
 void ErrorBarsView::setDiagnosis(const diagnose::Diagnosis& d) {
   clear();
   auto* chart = charts_->view->chart();
+  chart->setLocale(QLocale());
+  chart->setLocalizeNumbers(true);
   const QString unit = displayUnits(d.units);
   chart->setTitle(tr("Error before / after (%1)").arg(unit));
   auto* before = new QBarSet(tr("declared"));

@@ -7,6 +7,7 @@
 //     QPainter, the arrows magnified by a round factor that is printed on the plot;
 //   * before / after error bars (rmse, max |e|, held-out rmse) of a diagnosis (ErrorBarsView).
 // Qt Charts stays inside the .cpp file.
+#include <QLocale>
 #include <QRectF>
 #include <QString>
 #include <QWidget>
@@ -25,12 +26,13 @@ bool hasVectorField(const diagnose::ResidualPlot& plot);
 /// plot's span, rounded down to 1, 2 or 5 x 10^n.
 double vectorMagnification(const diagnose::ResidualPlot& plot, const QRectF& rect);
 
-/// Residual before (grey) and after (blue) against plot.x, axes labelled with xLabel / yLabel.
+/// Residual before (grey) and after (blue) against plot.x, axes labelled with xLabel / yLabel, tick
+/// numbers in `locale` (the report: C; the GUI's vector field: the user's).
 void paintResidualScatter(QPainter& painter, const QRectF& rect, const diagnose::ResidualPlot& plot,
-                          const QString& title, double fontPx = 10.0);
+                          const QString& title, double fontPx = 10.0, const QLocale& locale = QLocale::c());
 /// The vector field (arrows from (x, y) along (dx, dy) magnified); returns the magnification used.
 double paintResidualVectors(QPainter& painter, const QRectF& rect, const diagnose::ResidualPlot& plot,
-                            const QString& title, double fontPx = 10.0);
+                            const QString& title, double fontPx = 10.0, const QLocale& locale = QLocale::c());
 
 /// The residual plot of one effect: a Qt Charts scatter, or the vector field when the plot has one.
 class ResidualPlotView : public QWidget {
@@ -39,10 +41,13 @@ class ResidualPlotView : public QWidget {
   explicit ResidualPlotView(QWidget* parent = nullptr);
   ~ResidualPlotView() override;
 
+  /// Shows `plot` with its axis titles translated (xLabelParts / yLabelParts, coretexts.h).
   void setPlot(const diagnose::ResidualPlot& plot, const QString& title);
   void clear();
   bool isEmpty() const { return !plot_.has_value(); }
   bool showsVectorField() const;
+  /// The x axis title shown (translated, before units and category names are added); "" when empty.
+  QString xAxisTitle() const { return plot_ ? QString::fromStdString(plot_->xLabel) : QString(); }
   /// Points in the scatter's "before" series (0 when empty or a vector field).
   int pointCount() const;
 

@@ -1,0 +1,249 @@
+#include "widgets/diagnose/coretexts.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+#include <QStringList>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace metrofit {
+namespace {
+
+// Every template of core/diagnose (evidence, notes, axis titles, the loop's stop notes, the
+// acceptance reasons of linear_evidence.cpp) and core/common/run.cpp (termination reasons). Keep in
+// step with core: diagnosis_locale_test fails when core produces a template that is not here.
+// Placeholders %1 ... are numbers, names or units (see core/common/text.h); "+-" may be written
+// "±" in a translation.
+const char* const kCoreTexts[] = {
+    // Shared
+    QT_TRANSLATE_NOOP("metrofit::core", "n/a"),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1 %"),
+    QT_TRANSLATE_NOOP("metrofit::core", "accepted: "),
+    QT_TRANSLATE_NOOP("metrofit::core", "; passed, but %1 explains more"),
+    QT_TRANSLATE_NOOP("metrofit::core", "cancelled"),
+    QT_TRANSLATE_NOOP("metrofit::core", "stopped by the observer after round %1"),
+    QT_TRANSLATE_NOOP("metrofit::core", "time (min)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "radial residual (mm)"),
+    // Thermal
+    QT_TRANSLATE_NOOP("metrofit::core", "too few fit rows (%1) for %2 coefficients"),
+    QT_TRANSLATE_NOOP("metrofit::core", "column '%1' is constant on the fit rows"),
+    QT_TRANSLATE_NOOP("metrofit::core", "the columns are linearly dependent on the fit rows"),
+    QT_TRANSLATE_NOOP("metrofit::core", "drift %1 +- %2%3/min"),
+    QT_TRANSLATE_NOOP("metrofit::core", "coefficient %1 +- %2%3 per unit"),
+    QT_TRANSLATE_NOOP("metrofit::core", "coefficient %1 +- %2%3 per %4"),
+    QT_TRANSLATE_NOOP("metrofit::core", "tau %1 +- %2 min"),
+    QT_TRANSLATE_NOOP("metrofit::core", "tau %1 min"),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1 = c0"),
+    QT_TRANSLATE_NOOP("metrofit::core", " + %1 %2"),
+    QT_TRANSLATE_NOOP("metrofit::core", "declared model (static, fitted on the first %1 of %2 rows): %3"),
+    QT_TRANSLATE_NOOP("metrofit::core", "noise level (first differences of the fit residual): %1%2"),
+    QT_TRANSLATE_NOOP("metrofit::core", "not estimable: %1"),
+    QT_TRANSLATE_NOOP("metrofit::core", "held-out rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3"),
+    QT_TRANSLATE_NOOP("metrofit::core", "held-out rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, %7"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; rejected: held-out error worse"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; rejected: held-out gain below %1 %"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; rejected: explains %1%2, below %3 x the noise level %4%2"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; rejected: no in-sample evidence (fit dBIC %1 >= 0)"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "accepted together with %1: held-out rmse %2 -> %3%4 (%5), fit rmse %6 -> %7%4, %8"),
+    QT_TRANSLATE_NOOP("metrofit::core", "residual"),
+    QT_TRANSLATE_NOOP("metrofit::core", "residual (%1)"),
+    // Kinematic
+    QT_TRANSLATE_NOOP("metrofit::core", "path angle (deg)"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "declared model: origin (%1, %2) um, x axis %3 deg, y axis %4 deg, squareness %5 deg"),
+    QT_TRANSLATE_NOOP("metrofit::core", "not estimable: no period range to search on this path"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "not estimable from this path: its parameters are not observable together with the "
+                      "declared ones"),
+    QT_TRANSLATE_NOOP("metrofit::core", "backlash x %1 +- %2 um, y %3 +- %4 um"),
+    QT_TRANSLATE_NOOP("metrofit::core", "scale x %1 +- %2 ppm, y %3 +- %4 ppm"),
+    QT_TRANSLATE_NOOP("metrofit::core", "servo lag tau %1 +- %2 s at %3 mm/min (%4 um)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "cyclic on %1: period %2 +- %3 mm, amplitude %4 +- %5 um"),
+    QT_TRANSLATE_NOOP("metrofit::core", "rmse %1 -> %2 um (%3 %), dBIC %4, %5"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; rejected: dBIC above -%1"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; rejected: rmse gain below %1 %"),
+    // Setup
+    QT_TRANSLATE_NOOP(
+        "metrofit::core",
+        "declared model: constant errors of the %1 setup data through the relation graph, least "
+        "squares over %2 rows of %3 parts; rank %4 of %5"),
+    QT_TRANSLATE_NOOP("metrofit::core", " (rank deficient: minimum-norm solution)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "declared fit (minimum norm), setup errors mm:"),
+    QT_TRANSLATE_NOOP("metrofit::core", " %1=%2"),
+    QT_TRANSLATE_NOOP("metrofit::core", "not identifiable: %1 (one part only?)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "not identifiable: %1 (time does not vary?)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1 +- %2 mm/part (t = %3); "),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1 +- %2 mm/min (t = %3); "),
+    QT_TRANSLATE_NOOP("metrofit::core", "part"),
+    QT_TRANSLATE_NOOP("metrofit::core", "apparent error of %1 (mm)"),
+    QT_TRANSLATE_NOOP(
+        "metrofit::core",
+        "; preferred to %1 (its dBIC is %2 lower, below the threshold: the data cannot tell them "
+        "apart)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; indistinguishable from %1 with these data"),
+    // Matching
+    QT_TRANSLATE_NOOP("metrofit::core", "distance from the centroid (mm)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "deviation along the normal (mm)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "surface"),
+    QT_TRANSLATE_NOOP("metrofit::core", "polar angle (deg)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1 = %2 +- %3"),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1 = %2"),
+    QT_TRANSLATE_NOOP("metrofit::core", ", %1 = %2 +- %3"),
+    QT_TRANSLATE_NOOP("metrofit::core", ", %1 = %2"),
+    QT_TRANSLATE_NOOP("metrofit::core", "declared model: rigid posture p = R q + t fitted to %1, %2 points"),
+    QT_TRANSLATE_NOOP("metrofit::core", "the deviations along the nominal normals"),
+    QT_TRANSLATE_NOOP("metrofit::core", "the in-plane residuals (planar, position-only)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "the residual vectors (position-only)"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "declared fit: rotation_deg [%1, %2, %3], translation_mm [%4, %5, %6]"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "not identifiable: %1 (the rigid posture explains it with these points)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1; %2"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; indistinguishable from %1 with these points"),
+    // linear_evidence.cpp: acceptance reasons and why an effect is not identifiable
+    QT_TRANSLATE_NOOP("metrofit::core", "dBIC = %1 < -%2, rmse %3 -> %4 %5 (-%6 %)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "dBIC = %1 not below -%2, rmse %3 -> %4 %5 (-%6 %)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "dBIC = %1 < -%2, rmse %3 -> %4 %5 (-%6 %, below the relevant %7 %)"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "dBIC = %1 < -%2, rmse %3 -> %4 %5 (-%6 %, below the relevant %7 %5)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "absorbed by the declared model"),
+    QT_TRANSLATE_NOOP("metrofit::core", "its parameters are not separable with these data"),
+    QT_TRANSLATE_NOOP("metrofit::core", "too few data for the parameters"),
+    // core/common/run.cpp toString(Termination)
+    QT_TRANSLATE_NOOP("metrofit::core", "converged"),
+    QT_TRANSLATE_NOOP("metrofit::core", "budget exhausted"),
+    QT_TRANSLATE_NOOP("metrofit::core", "iteration limit"),
+    QT_TRANSLATE_NOOP("metrofit::core", "failed"),
+    QT_TRANSLATE_NOOP("metrofit::core", "unknown"),
+};
+
+// Display names of the diagnosis parameters (CONTRACT.md keys); the unit is shown with the value.
+const std::map<std::string, const char*>& parameterNames() {
+  static const std::map<std::string, const char*> names = {
+      {"tau_min", QT_TRANSLATE_NOOP("metrofit::core", "time constant")},
+      {"coefficient", QT_TRANSLATE_NOOP("metrofit::core", "coefficient")},
+      {"per_min", QT_TRANSLATE_NOOP("metrofit::core", "drift rate")},
+      {"x_mm", QT_TRANSLATE_NOOP("metrofit::core", "x")},
+      {"y_mm", QT_TRANSLATE_NOOP("metrofit::core", "y")},
+      {"x_ppm", QT_TRANSLATE_NOOP("metrofit::core", "x")},
+      {"y_ppm", QT_TRANSLATE_NOOP("metrofit::core", "y")},
+      {"axis", QT_TRANSLATE_NOOP("metrofit::core", "axis")},
+      {"period_mm", QT_TRANSLATE_NOOP("metrofit::core", "period")},
+      {"amplitude_mm", QT_TRANSLATE_NOOP("metrofit::core", "amplitude")},
+      {"phase_deg", QT_TRANSLATE_NOOP("metrofit::core", "phase")},
+      {"tau_s", QT_TRANSLATE_NOOP("metrofit::core", "time constant")},
+      {"lag_mm", QT_TRANSLATE_NOOP("metrofit::core", "lag")},
+      {"mm_per_part", QT_TRANSLATE_NOOP("metrofit::core", "change per part")},
+      {"mm_per_min", QT_TRANSLATE_NOOP("metrofit::core", "drift rate")},
+      {"ppm", QT_TRANSLATE_NOOP("metrofit::core", "scale")},
+      {"mm", QT_TRANSLATE_NOOP("metrofit::core", "offset")},
+      {"angle_deg", QT_TRANSLATE_NOOP("metrofit::core", "angle")},
+  };
+  return names;
+}
+
+QString translated(const std::string& source) {
+  return QCoreApplication::translate(kCoreTextContext, source.c_str());
+}
+
+/// Replaces %1 ... %99 by args in one pass (as core's substitutePlaceholders).
+QString substitute(const QString& format, const QStringList& args) {
+  QString out;
+  out.reserve(format.size() + 16 * static_cast<int>(args.size()));
+  for (qsizetype i = 0; i < format.size(); ++i) {
+    const QChar c = format[i];
+    if (c == QLatin1Char('%') && i + 1 < format.size() && format[i + 1] >= QLatin1Char('1') &&
+        format[i + 1] <= QLatin1Char('9')) {
+      qsizetype n = format[i + 1].unicode() - '0';
+      qsizetype len = 2;
+      if (i + 2 < format.size() && format[i + 2].isDigit()) {
+        n = 10 * n + (format[i + 2].unicode() - '0');
+        len = 3;
+      }
+      if (n <= args.size()) {
+        out += args[n - 1];
+        i += len - 1;
+        continue;
+      }
+    }
+    out += c;
+  }
+  return out;
+}
+
+QString argText(const PhraseArg& a, const QLocale& locale) {
+  switch (a.kind) {
+    case PhraseArg::Kind::Number: {
+      if (!std::isfinite(a.value)) return a.naIfNotFinite ? translated("n/a") : QString::number(a.value);
+      QString s = a.style == 'd' ? locale.toString(static_cast<qlonglong>(a.value))
+                                 : locale.toString(a.value, a.style == 'f' ? 'f' : 'g', a.precision);
+      if (a.plusSign && a.value >= 0.0) s.prepend(locale.positiveSign());
+      return s;
+    }
+    case PhraseArg::Kind::Name:
+      return QString::fromStdString(a.verbatim);
+    case PhraseArg::Kind::Unit:
+      return displayUnit(QString::fromStdString(a.verbatim));
+    case PhraseArg::Kind::Text:
+      return coreText(a.nested, locale);
+  }
+  return {};
+}
+
+}  // namespace
+
+const std::vector<const char*>& coreTextSources() {
+  static const std::vector<const char*> list(std::begin(kCoreTexts), std::end(kCoreTexts));
+  return list;
+}
+
+bool isCoreTextSource(const std::string& format) {
+  const auto& list = coreTextSources();
+  return std::any_of(list.begin(), list.end(), [&](const char* s) { return format == s; });
+}
+
+QString coreText(const Phrase& phrase, const QLocale& locale) {
+  QStringList args;
+  for (const PhraseArg& a : phrase.args) args << argText(a, locale);
+  return substitute(translated(phrase.format), args);
+}
+
+QString coreText(const Phrases& text, const QLocale& locale) {
+  QString out;
+  for (const Phrase& p : text) out += coreText(p, locale);
+  return out;
+}
+
+QString coreText(const Phrases& text, const std::string& english, const QLocale& locale) {
+  return text.empty() ? displayUnit(QString::fromStdString(english)) : coreText(text, locale);
+}
+
+QString localNumber(double value, int precision, char style, const QLocale& locale) {
+  if (!std::isfinite(value)) return translated("n/a");
+  return locale.toString(value, style == 'f' ? 'f' : 'g', precision);
+}
+
+QString displayUnit(const QString& units) {
+  QString s = units;
+  static const QRegularExpression um(QStringLiteral("\\bum\\b"));
+  s.replace(um, QStringLiteral("µm"));
+  return s;
+}
+
+QString parameterDisplayName(const std::string& key) {
+  const auto& names = parameterNames();
+  const auto it = names.find(key);
+  return it == names.end() ? QString::fromStdString(key) : translated(it->second);
+}
+
+bool hasParameterDisplayName(const std::string& key) {
+  return parameterNames().count(key) > 0;
+}
+
+QString terminationText(Termination termination) {
+  return translated(toString(termination));
+}
+
+}  // namespace metrofit
