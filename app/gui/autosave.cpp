@@ -53,20 +53,78 @@ QDateTime modified(const QString& path) {
   return QFileInfo(path).lastModified();
 }
 
+constexpr const char* kUnsavedKey = "unsaved";
+
 }  // namespace
+
+AutosaveExtras* AutosaveExtras::of(ProjectDocument* document) {
+  static const QString name = QStringLiteral("metrofitAutosaveExtras");
+  if (auto* extras = document->findChild<AutosaveExtras*>(name, Qt::FindDirectChildrenOnly)) return extras;
+  auto* extras = new AutosaveExtras(document);
+  extras->setObjectName(name);
+  return extras;
+}
+
+void AutosaveExtras::add(const QString& key, QObject* owner, Source source) {
+  std::erase_if(entries_, [&](const Entry& e) { return e.key == key || e.owner.isNull(); });
+  entries_.push_back({key, owner, std::move(source)});
+}
+
+void AutosaveExtras::remove(QObject* owner) {
+  std::erase_if(entries_, [&](const Entry& e) { return e.owner == owner || e.owner.isNull(); });
+}
+
+bool AutosaveExtras::anyModified() const {
+  return std::any_of(entries_.begin(), entries_.end(),
+                     [](const Entry& e) { return !e.owner.isNull() && e.source.isModified(); });
+}
+
+nlohmann::json AutosaveExtras::save() const {
+  nlohmann::json out = nlohmann::json::object();
+  for (const Entry& e : entries_) {
+    if (!e.owner.isNull() && e.source.isModified()) out[e.key.toStdString()] = e.source.save();
+  }
+  return out;
+}
+
+QStringList AutosaveExtras::restore(const nlohmann::json& unsaved) {
+  QStringList failures;
+  if (!unsaved.is_object()) return failures;
+  for (const Entry& e : entries_) {
+    const auto value = unsaved.find(e.key.toStdString());
+    if (e.owner.isNull() || value == unsaved.end()) continue;
+    try {
+      e.source.restore(*value);
+    } catch (const std::exception& ex) {
+      failures << QStringLiteral("%1: %2").arg(e.key, QString::fromStdString(ex.what()));
+    }
+  }
+  return failures;
+}
 
 Autosave::Autosave(ProjectDocument* document, QObject* parent)
     : QObject(parent),
       document_(document),
+      extras_(AutosaveExtras::of(document)),
       timer_(new QTimer(this)),
       untitledFolder_(defaultUntitledFolder()) {
   connect(timer_, &QTimer::timeout, this, [this] { tick(); });
   connect(&watcher_, &QFutureWatcher<QString>::finished, this, &Autosave::onWriteFinished);
   connect(document_, &ProjectDocument::changed, this, [this] { ++generation_; });
+  connect(extras_, &AutosaveExtras::changed, this, [this] { ++generation_; });
+  // Saved (either half): the side file goes, so it never holds what is older than the files; while
+  // the other half still has unsaved changes, the next tick writes them again.
   connect(document_, &ProjectDocument::modifiedChanged, this, [this](bool modified) {
     if (!modified) removeWritten();
   });
+  connect(extras_, &AutosaveExtras::modifiedChanged, this, [this] {
+    if (!extras_->anyModified()) removeWritten();
+  });
   setIntervalMs(intervalSetting() * kMsPerMinute);
+}
+
+bool Autosave::anythingModified() const {
+  return document_->isModified() || extras_->anyModified();
 }
 
 Autosave::~Autosave() {
@@ -114,7 +172,7 @@ QString Autosave::autosaveFile() const {
 }
 
 bool Autosave::tick() {
-  if (pending_ || !document_->isModified()) return false;
+  if (pending_ || !anythingModified()) return false;
   const QString target = autosaveFile();
   if (target == writtenFile_ && generation_ == writtenGeneration_) return false;  // nothing new
   if (document_->fileName().isEmpty() && !QDir().mkpath(untitledFolder_)) {
@@ -122,7 +180,9 @@ bool Autosave::tick() {
     return false;
   }
   // Serialising the small project JSON is quick; the write (with fsync) goes to a worker.
-  std::string text = dumpJson(document_->project().toJson());
+  nlohmann::json json = document_->project().toJson();
+  if (nlohmann::json unsaved = extras_->save(); !unsaved.empty()) json[kUnsavedKey] = std::move(unsaved);
+  std::string text = dumpJson(json);
   pending_ = true;
   pendingFile_ = target;
   pendingGeneration_ = generation_;
@@ -151,7 +211,7 @@ void Autosave::onWriteFinished() {
     emit failed(error);
     return;
   }
-  if (!document_->isModified()) {
+  if (!anythingModified()) {
     // Saved (or undone to the saved state) while the worker wrote: the copy is not needed.
     QFile::remove(pendingFile_);
     return;
@@ -178,17 +238,20 @@ std::optional<RecoveryChoice> Autosave::open(const QString& path) {
   const QString absolute = QFileInfo(path).absoluteFilePath();
   const QString side = autosaveFileFor(absolute);
   std::optional<Project> autosaved;
+  nlohmann::json unsaved;
   RecoveryOffer offer;
   // Our own side file of this session belongs to the content being replaced (reload from disk).
   if (side != writtenFile_ && QFileInfo::exists(side) && QFileInfo::exists(absolute) &&
       modified(side) > modified(absolute)) {
     try {
-      autosaved = loadProject(encodedPath(side));
+      autosaved = readSideFile(side, &unsaved);
     } catch (const std::exception& e) {
       emit failed(tr("The autosaved copy cannot be read: %1").arg(QString::fromStdString(e.what())));
     }
     if (autosaved) {
-      offer = {absolute, side, modified(side), modified(absolute), QString::fromStdString(autosaved->name)};
+      offer = {absolute, side, modified(side), modified(absolute), QString::fromStdString(autosaved->name),
+               {}};
+      for (const auto& [key, value] : unsaved.items()) offer.unsaved << QString::fromStdString(key);
     }
   }
   if (!autosaved) {
@@ -200,6 +263,7 @@ std::optional<RecoveryChoice> Autosave::open(const QString& path) {
   switch (choice) {
     case RecoveryChoice::Recover:
       document_->replaceProject(*autosaved, tr("Recover autosaved changes"));
+      restoreExtras(unsaved);
       writtenFile_ = side;  // removed again by a save or a discard
       writtenGeneration_ = generation_;
       break;
@@ -238,19 +302,22 @@ std::optional<RecoveryChoice> Autosave::recoverUntitled() {
   const QString side = orphanedUntitledFile();
   if (side.isEmpty()) return std::nullopt;
   Project autosaved;
+  nlohmann::json unsaved;
   try {
-    autosaved = loadProject(encodedPath(side));
+    autosaved = readSideFile(side, &unsaved);
   } catch (const std::exception& e) {
     emit failed(tr("The autosaved copy cannot be read: %1").arg(QString::fromStdString(e.what())));
     return std::nullopt;
   }
-  const RecoveryOffer offer{QString(), side, modified(side), QDateTime(),
-                            QString::fromStdString(autosaved.name)};
+  RecoveryOffer offer{QString(), side, modified(side), QDateTime(), QString::fromStdString(autosaved.name),
+                      {}};
+  for (const auto& [key, value] : unsaved.items()) offer.unsaved << QString::fromStdString(key);
   const RecoveryChoice choice = decide(offer);
   switch (choice) {
     case RecoveryChoice::Recover:
       document_->newProject();
       document_->replaceProject(autosaved, tr("Recover autosaved changes"));
+      restoreExtras(unsaved);
       // The next autosave goes to this process's file and removes the recovered one.
       writtenFile_ = side;
       writtenGeneration_ = generation_;
@@ -262,6 +329,23 @@ std::optional<RecoveryChoice> Autosave::recoverUntitled() {
       break;
   }
   return choice;
+}
+
+Project Autosave::readSideFile(const QString& path, nlohmann::json* unsaved) const {
+  const std::string file = encodedPath(path);
+  const nlohmann::json json = readJsonFile(file);
+  Project project = Project::fromJson(json, file);
+  *unsaved = nlohmann::json::object();
+  if (json.is_object()) {
+    const auto u = json.find(kUnsavedKey);
+    if (u != json.end() && u->is_object()) *unsaved = *u;
+  }
+  return project;
+}
+
+void Autosave::restoreExtras(const nlohmann::json& unsaved) {
+  for (const QString& failure : extras_->restore(unsaved))
+    emit failed(tr("An autosaved edit cannot be recovered: %1").arg(failure));
 }
 
 RecoveryChoice Autosave::askUser(QWidget* parent, const RecoveryOffer& offer) {
@@ -280,6 +364,10 @@ RecoveryChoice Autosave::askUser(QWidget* parent, const RecoveryOffer& offer) {
                .arg(QDir::toNativeSeparators(offer.projectFile), when,
                     locale.toString(offer.saved, QLocale::ShortFormat));
   }
+  if (offer.unsaved.contains(QStringLiteral("setup_model")))
+    text += QStringLiteral("\n\n") +
+            tr("The autosaved copy includes unsaved edits of the setup model (relation graph); they are "
+               "recovered as unsaved edits too.");
   QMessageBox box(QMessageBox::Question, tr("Recover autosaved changes"), text, QMessageBox::NoButton,
                   parent);
   box.setObjectName(QStringLiteral("recoveryBox"));

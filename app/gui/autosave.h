@@ -15,12 +15,22 @@
 // applied on top of the original through the undo stack (ProjectDocument::replaceProject): the
 // document is modified and nothing is written over the project until the user saves. The decision
 // is a callback, so tests drive it without a dialog.
+//
+// Unsaved state kept outside the document (the setup page's relation-graph edits: the model is its
+// own file with its own undo stack) is registered on the document with AutosaveExtras. While any of
+// it is modified it is autosaved too (also when the document itself is clean), as a top-level
+// object "unsaved": {key: value} in the side file (loadProject ignores it), and a recovery hands
+// each value back to its source after the project is open.
 #include <QDateTime>
 #include <QFutureWatcher>
 #include <QObject>
+#include <QPointer>
 #include <QString>
 #include <functional>
 #include <optional>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 class QTimer;
 class QWidget;
@@ -28,6 +38,50 @@ class QWidget;
 namespace metrofit {
 
 class ProjectDocument;
+class Project;
+
+/// Unsaved state outside a document that autosave keeps with it (see above). One per document (a
+/// child of it, made on first use); sources are removed with their owner.
+class AutosaveExtras : public QObject {
+  Q_OBJECT
+ public:
+  struct Source {
+    std::function<bool()> isModified;                    ///< unsaved changes to keep
+    std::function<nlohmann::json()> save;                ///< the value written to the side file
+    std::function<void(const nlohmann::json&)> restore;  ///< a recovered value (throws when unusable)
+  };
+
+  /// The extras of a document.
+  static AutosaveExtras* of(ProjectDocument* document);
+
+  /// Registers a source under a key of the "unsaved" object (replaces one of the same key).
+  void add(const QString& key, QObject* owner, Source source);
+  /// Unregisters the sources of an owner (call it from the owner's destructor).
+  void remove(QObject* owner);
+
+  bool anyModified() const;
+  /// {key: value} of the modified sources (empty object when none).
+  nlohmann::json save() const;
+  /// Hands each value of {key: value} to its source; returns the messages of those that failed.
+  QStringList restore(const nlohmann::json& unsaved);
+
+  /// The owner calls these: its content changed / its modified state changed.
+  void notifyChanged() { emit changed(); }
+  void notifyModifiedChanged() { emit modifiedChanged(); }
+
+ signals:
+  void changed();
+  void modifiedChanged();
+
+ private:
+  explicit AutosaveExtras(QObject* parent) : QObject(parent) {}
+  struct Entry {
+    QString key;
+    QPointer<QObject> owner;
+    Source source;
+  };
+  std::vector<Entry> entries_;
+};
 
 enum class RecoveryChoice {
   Recover,       ///< open the autosaved content (modified, not saved)
@@ -42,6 +96,7 @@ struct RecoveryOffer {
   QDateTime autosaved;   ///< when the side file was written
   QDateTime saved;       ///< when the project file was written (invalid for an untitled project)
   QString projectName;   ///< the name in the autosaved project
+  QStringList unsaved;   ///< keys of the autosaved unsaved state outside the project ("setup_model")
 };
 
 class Autosave : public QObject {
@@ -112,8 +167,15 @@ class Autosave : public QObject {
  private:
   void onWriteFinished();
   RecoveryChoice decide(const RecoveryOffer& offer);
+  /// The document or an extra has unsaved changes.
+  bool anythingModified() const;
+  /// Reads a side file: the project and its "unsaved" object (throws like loadProject).
+  Project readSideFile(const QString& path, nlohmann::json* unsaved) const;
+  /// Hands the recovered "unsaved" object to the extras (failures go to failed()).
+  void restoreExtras(const nlohmann::json& unsaved);
 
   ProjectDocument* document_;
+  AutosaveExtras* extras_;
   QTimer* timer_;
   QFutureWatcher<QString> watcher_;  ///< result: the error message, empty on success
   Decider decider_;

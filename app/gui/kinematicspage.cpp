@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -14,10 +15,12 @@
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QStackedWidget>
+#include <QStyle>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <exception>
 
 #include "app/gui/notesedit.h"
@@ -25,12 +28,54 @@
 #include "core/io/file_io.h"
 #include "core/kinematics/export.h"
 #include "widgets/common/tablecopy.h"
+#include "widgets/diagnose/coretexts.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
 #include "widgets/kinematics/kinematicsviews.h"
 
 namespace metrofit {
 namespace {
+
+/// Rows as high as their label (column 0) needs when it wraps at the column's width. (The item
+/// delegate's own size hint can keep a label on one line that the painter then wraps and cuts.)
+void fitRowsToLabels(QTableWidget* t) {
+  const int padding = 2 * (t->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, t) + 1) + 2;
+  const int rowHeight = t->verticalHeader()->defaultSectionSize();
+  const int width = std::max(1, t->columnWidth(0) - padding);
+  for (int r = 0; r < t->rowCount(); ++r) {
+    const QTableWidgetItem* item = t->item(r, 0);
+    if (item == nullptr) continue;
+    const QFontMetrics fm(item->font());
+    const QRect box = fm.boundingRect(QRect(0, 0, width, 10000), Qt::TextWordWrap, item->text());
+    t->setRowHeight(r, std::max(rowHeight, box.height() + rowHeight - fm.height()));
+  }
+}
+
+/// Fits the rows again whenever the table is shown or resized, once the stretched label column has
+/// its new width (queued: the header resizes its sections after the viewport's resize event).
+class RowFitter : public QObject {
+ public:
+  explicit RowFitter(QTableWidget* table) : QObject(table), table_(table) {
+    table->installEventFilter(this);
+    table->viewport()->installEventFilter(this);
+    connect(table->horizontalHeader(), &QHeaderView::sectionResized, this, [this](int column) {
+      if (column == 0) schedule();
+    });
+  }
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (event->type() == QEvent::Resize || event->type() == QEvent::Show) schedule();
+    return QObject::eventFilter(watched, event);
+  }
+
+ private:
+  void schedule() {
+    QMetaObject::invokeMethod(
+        this, [this] { fitRowsToLabels(table_); }, Qt::QueuedConnection);
+  }
+  QTableWidget* table_;
+};
 
 QTableWidget* makeTable(QWidget* parent, const QStringList& header, const QString& name) {
   auto* t = new QTableWidget(parent);
@@ -44,6 +89,11 @@ QTableWidget* makeTable(QWidget* parent, const QStringList& header, const QStrin
   t->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
   t->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   t->verticalHeader()->setDefaultSectionSize(t->fontMetrics().height() + 6);
+  // The label column takes what is left: a long (translated) label wraps onto a second line
+  // instead of being cut short.
+  t->setWordWrap(true);
+  t->setTextElideMode(Qt::ElideNone);
+  new RowFitter(t);
   enableTableCopy(t);
   return t;
 }
@@ -346,14 +396,15 @@ void KinematicsPage::showStudy() {
          withEffects ? tr("Root mean square of the residual distances after identification, with the "
                           "applied effects")
                      : tr("Root mean square of the residual distances after identification"));
-  setRow(errors_, 6,
-         {tr("iterations"), QString::number(r.run.iterations),
-          QString::fromLatin1(toString(r.run.termination)), QString()});
+  setRow(
+      errors_, 6,
+      {tr("iterations"), QString::number(r.run.iterations), terminationText(r.run.termination), QString()});
   if (withEffects && s.declaredRmseMm) {
     setRow(errors_, 7, {tr("RMS, declared model only (µm)"), um(*s.declaredRmseMm), QString(), QString()},
            tr("The residual of the declared model (origin and axis angles, no applied effects)"));
   }
   errors_->setColumnHidden(3, !truth);
+  fitRowsToLabels(errors_);
 
   // Measured path and its radial deviations.
   PathPlotData pd;
@@ -435,6 +486,7 @@ void KinematicsPage::showCompensation() {
   }
   setRow(compensationTable_, row++, {tr("largest correction"), um(c.largestCorrectionMm)},
          tr("Largest |reference − nominal point|"));
+  fitRowsToLabels(compensationTable_);
 }
 
 void KinematicsPage::updateButtons() {

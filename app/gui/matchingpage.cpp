@@ -3,6 +3,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFontMetrics>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -14,6 +15,7 @@
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QStackedWidget>
+#include <QStyle>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -90,10 +92,141 @@ double niceFloor(double x) {
   return decade;
 }
 
+/// A column header on two lines so that the column takes the width of its numbers, not of its
+/// (translated) title: the unit goes under the name ("rx\n(deg)"), a longer title without a unit
+/// breaks at the space nearest its middle. The one-line title is the tooltip.
+QTableWidgetItem* headerItem(const QString& title) {
+  QString text = title;
+  const qsizetype unit = title.lastIndexOf(QStringLiteral(" ("));
+  if (unit > 0) {
+    text = title.left(unit) + QLatin1Char('\n') + title.mid(unit + 1);
+  } else if (title.size() > 8) {
+    qsizetype best = -1;
+    for (qsizetype i = 0; i < title.size(); ++i) {
+      if (title[i] == QLatin1Char(' ') &&
+          (best < 0 || std::abs(i - title.size() / 2) < std::abs(best - title.size() / 2)))
+        best = i;
+    }
+    if (best > 0) text[best] = QLatin1Char('\n');
+  }
+  auto* item = new QTableWidgetItem(text);
+  item->setToolTip(title);
+  return item;
+}
+
+/// Column widths that fit the table's viewport, so that it does not scroll sideways at the default
+/// window size in any language: every column gets the width of its content and (two-line) header;
+/// when that is too wide, the text columns `wrap` (the method and axis names) get narrower, down to
+/// their longest word, and their text wraps onto more lines; room left over goes to the last column.
+/// Refits on every resize. With `holdMinimum` the table's minimum width is what it needs at least
+/// (its splitter then gives it that much).
+class ColumnFitter : public QObject {
+ public:
+  ColumnFitter(QTableWidget* table, QList<int> wrap, bool holdMinimum)
+      : QObject(table), table_(table), wrap_(std::move(wrap)), holdMinimum_(holdMinimum) {
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+    table->horizontalHeader()->setStretchLastSection(false);
+    table->setWordWrap(true);
+    table->installEventFilter(this);
+    table->viewport()->installEventFilter(this);
+  }
+  /// The fitter of a table (not findChild: without Q_OBJECT that would match any QObject child).
+  static ColumnFitter* of(QTableWidget* table) {
+    for (QObject* child : table->children()) {
+      if (auto* fitter = dynamic_cast<ColumnFitter*>(child)) return fitter;
+    }
+    return nullptr;
+  }
+
+  void fit() {
+    if (fitting_) return;
+    fitting_ = true;
+    QTableWidget* t = table_;
+    const QHeaderView* h = t->horizontalHeader();
+    // The text margins of the item delegate (QCommonStyle: PM_FocusFrameHMargin + 1 each side).
+    const int padding = 2 * (t->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, t) + 1) + 2;
+    const int n = t->columnCount();
+    std::vector<int> need(static_cast<std::size_t>(n), 0), least(need);
+    int lastVisible = -1;
+    for (int c = 0; c < n; ++c) {
+      if (t->isColumnHidden(c)) continue;
+      lastVisible = c;
+      const auto k = static_cast<std::size_t>(c);
+      int widest = 0, widestWord = 0;
+      for (int r = 0; r < t->rowCount(); ++r) {
+        const QTableWidgetItem* item = t->item(r, c);
+        if (item == nullptr || t->columnSpan(r, c) > 1) continue;
+        const QFontMetrics fm(item->font());
+        widest = std::max(widest, fm.horizontalAdvance(item->text()));
+        for (const QString& word : item->text().split(QLatin1Char(' '), Qt::SkipEmptyParts))
+          widestWord = std::max(widestWord, fm.horizontalAdvance(word));
+      }
+      const int header = h->sectionSizeHint(c);
+      need[k] = std::max(header, widest + padding);
+      least[k] = wrap_.contains(c) ? std::max(header, widestWord + padding) : need[k];
+    }
+    int total = 0, atLeast = 0;
+    for (int c = 0; c < n; ++c) {
+      total += need[static_cast<std::size_t>(c)];
+      atLeast += least[static_cast<std::size_t>(c)];
+    }
+    if (holdMinimum_) {
+      const int scrollBar = t->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, t);
+      t->setMinimumWidth(atLeast + 2 * t->frameWidth() + scrollBar + 2);
+    }
+    std::vector<int> width = need;
+    int deficit = total - t->viewport()->width();
+    for (int c : wrap_) {
+      if (deficit <= 0 || c >= n || t->isColumnHidden(c)) continue;
+      const auto k = static_cast<std::size_t>(c);
+      const int cut = std::min(deficit, need[k] - least[k]);
+      width[k] -= cut;
+      deficit -= cut;
+    }
+    if (deficit < 0 && lastVisible >= 0) width[static_cast<std::size_t>(lastVisible)] -= deficit;
+    for (int c = 0; c < n; ++c) {
+      if (!t->isColumnHidden(c)) t->setColumnWidth(c, width[static_cast<std::size_t>(c)]);
+    }
+    // Rows as high as their wrapped text.
+    const int rowHeight = t->verticalHeader()->defaultSectionSize();
+    for (int r = 0; r < t->rowCount(); ++r) {
+      int height = rowHeight;
+      for (int c : wrap_) {
+        const QTableWidgetItem* item = c < n ? t->item(r, c) : nullptr;
+        // Only a column made narrower than its text wraps.
+        if (item == nullptr || t->isColumnHidden(c) ||
+            width[static_cast<std::size_t>(c)] >= need[static_cast<std::size_t>(c)])
+          continue;
+        const QFontMetrics fm(item->font());
+        const QRect box =
+            fm.boundingRect(QRect(0, 0, std::max(1, width[static_cast<std::size_t>(c)] - padding), 10000),
+                            Qt::TextWordWrap, item->text());
+        height = std::max(height, box.height() + rowHeight - fm.height());
+      }
+      t->setRowHeight(r, height);
+    }
+    fitting_ = false;
+  }
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if ((watched == table_ && event->type() == QEvent::Show) ||
+        (watched == table_->viewport() && event->type() == QEvent::Resize))
+      fit();
+    return QObject::eventFilter(watched, event);
+  }
+
+ private:
+  QTableWidget* table_;
+  QList<int> wrap_;
+  bool holdMinimum_;
+  bool fitting_ = false;
+};
+
 QTableWidget* makeTable(QWidget* parent, const QStringList& header) {
   auto* t = new QTableWidget(parent);
   t->setColumnCount(static_cast<int>(header.size()));
-  t->setHorizontalHeaderLabels(header);
+  for (int c = 0; c < header.size(); ++c) t->setHorizontalHeaderItem(c, headerItem(header[c]));
   t->setEditTriggers(QAbstractItemView::NoEditTriggers);
   t->setSelectionBehavior(QAbstractItemView::SelectRows);
   t->setAlternatingRowColors(true);
@@ -210,8 +343,10 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
                                     tr("x (mm)"), tr("y (mm)"), tr("z (mm)"), tr("scale"), tr("RMSE (mm)"),
                                     tr("max |d| (mm)"), tr("out before"), tr("out after"), tr("time (ms)")});
   methodsTable_->setObjectName(QStringLiteral("matchingMethodsTable"));
+  new ColumnFitter(methodsTable_, {0}, false);
   machineTable_ = makeTable(tabs_, {tr("Axis"), tr("Value"), tr("Unit")});
   machineTable_->setObjectName(QStringLiteral("matchingMachineTable"));
+  new ColumnFitter(machineTable_, {0}, true);
   auto* machineBox = new QWidget(tabs_);
   auto* machineLayout = new QVBoxLayout(machineBox);
   machineLayout->setContentsMargins(4, 4, 4, 4);
@@ -232,6 +367,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
                                       tr("RMSE (mm)"), tr("SX (mm)"), tr("SY (mm)"), tr("SZ (mm)"),
                                       tr("rotary 1 (deg)"), tr("rotary 2 (deg)"), tr("frame rot. (deg)")});
   remeasureTable_->setObjectName(QStringLiteral("matchingRemeasureTable"));
+  new ColumnFitter(remeasureTable_, {}, false);
   auto* remeasureTab = new QWidget(tabs_);
   auto* remeasureLayout = new QVBoxLayout(remeasureTab);
   remeasureLayout->setContentsMargins(4, 4, 4, 4);
@@ -241,6 +377,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
 
   table_ =
       makeTable(tabs_, {tr("Point"), tr("Surface"), tr("Deviation before (mm)"), tr("Deviation after (mm)")});
+  new ColumnFitter(table_, {1}, false);
 
   tabs_->addTab(resultsTab, tr("Methods and &machine"));
   tabs_->addTab(curve_, tr("&Optimisation curve"));
@@ -790,6 +927,7 @@ void MatchingPage::fillMethodsTable() {
            r.method == res.primary);
   }
   methodsTable_->setColumnHidden(7, !allowScale_->isChecked());
+  ColumnFitter::of(methodsTable_)->fit();
 }
 
 void MatchingPage::fillMachineTable() {
@@ -817,6 +955,7 @@ void MatchingPage::fillMachineTable() {
   addRow(QStringLiteral("S") + QLatin1String(names[0]), a.rotaryDeg[0], tr("deg"), 5);
   addRow(QStringLiteral("S") + QLatin1String(names[1]), a.rotaryDeg[1], tr("deg"), 5);
   addRow(tr("frame rotation"), a.frameRotationDeg, tr("deg"), 5);
+  ColumnFitter::of(machineTable_)->fit();
 }
 
 void MatchingPage::fillRemeasureTable() {
@@ -827,8 +966,8 @@ void MatchingPage::fillRemeasureTable() {
   }
   const matching::RemeasureResult& loop = *result_->remeasure;
   const auto names = machine::rotaryAxisNames(result_->machine.topology);
-  remeasureTable_->setHorizontalHeaderItem(7, textItem(tr("S%1 (deg)").arg(QLatin1String(names[0]))));
-  remeasureTable_->setHorizontalHeaderItem(8, textItem(tr("S%1 (deg)").arg(QLatin1String(names[1]))));
+  remeasureTable_->setHorizontalHeaderItem(7, headerItem(tr("S%1 (deg)").arg(QLatin1String(names[0]))));
+  remeasureTable_->setHorizontalHeaderItem(8, headerItem(tr("S%1 (deg)").arg(QLatin1String(names[1]))));
   remeasureLabel_->setText(
       tr("Step 7 with the simulator as machine and CMM (true posture: the %1 fit, probing noise %2 mm): "
          "measure, match, adjust the WCS, remeasure. %3")
@@ -856,6 +995,7 @@ void MatchingPage::fillRemeasureTable() {
       remeasureTable_->setSpan(row, 4, 1, 6);
     }
   }
+  ColumnFitter::of(remeasureTable_)->fit();
 }
 
 void MatchingPage::fillPointTable() {
@@ -882,6 +1022,7 @@ void MatchingPage::fillPointTable() {
       table_->setItem(row, ColAfter, textItem(QString()));
     }
   }
+  ColumnFitter::of(table_)->fit();
 }
 
 void MatchingPage::showView(const QString& view) {

@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QMessageBox>
+#include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
@@ -21,6 +22,7 @@
 #include <exception>
 #include <mutex>
 
+#include "app/gui/autosave.h"
 #include "app/gui/notesedit.h"
 #include "app/gui/studysettingbinding.h"
 #include "core/io/file_io.h"
@@ -92,6 +94,7 @@ struct SetupPage::Impl {
   std::optional<setup::SetupInstance> runInstance;
   int chartRun = -1;
   QTimer flush;
+  QPointer<AutosaveExtras> extras;
 };
 
 SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
@@ -132,15 +135,23 @@ SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
   graphLayout->setContentsMargins(4, 4, 4, 4);
   graphLayout->addWidget(graph_, 1);
   saveModel_->setToolTip(tr("Write the edited model to its dataset file"));
-  revertModel_->setToolTip(tr("Drop the edits and read the model file again"));
-  graph_->toolBar()->addSeparator();
-  graph_->toolBar()->addWidget(revertModel_);
-  graph_->toolBar()->addWidget(saveModel_);
+  revertModel_->setToolTip(tr("Read the model file again (one undo step: Ctrl+Z brings the edits back)"));
+  // Revert / Save model at the right of the tab bar (the model's file, whichever tab is shown): on the
+  // graph's tool bar they were pushed into its overflow menu in German.
+  auto* modelButtons = new QWidget(this);
+  auto* modelButtonsLayout = new QHBoxLayout(modelButtons);
+  modelButtonsLayout->setContentsMargins(0, 0, 0, 2);
+  modelButtonsLayout->addWidget(revertModel_);
+  modelButtonsLayout->addWidget(saveModel_);
+  tabs_->setCornerWidget(modelButtons, Qt::TopRightCorner);
   connect(saveModel_, &QPushButton::clicked, this, [this] {
     QString error;
     if (!saveModel(&error)) QMessageBox::critical(this, tr("Cannot save the setup model"), error);
   });
-  connect(revertModel_, &QPushButton::clicked, this, [this] { reload(); });
+  connect(revertModel_, &QPushButton::clicked, this, [this] {
+    QString error;
+    if (!revertModel(&error)) QMessageBox::critical(this, tr("Cannot revert the setup model"), error);
+  });
 
   // ---- Run tab ----
   for (const std::string& m : setup::setupMethodNames()) {
@@ -163,6 +174,7 @@ SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
   progress_->setValue(0);
   progress_->setTextVisible(false);
   progress_->setMaximumWidth(220);
+  progress_->setVisible(false);  // while a run goes on (updateControls)
   runStatus_->setObjectName(QStringLiteral("setupRunStatus"));
   runStatus_->setWordWrap(true);
   auto* panel = new QHBoxLayout;
@@ -251,10 +263,27 @@ SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
     updateControls();
   });
   connect(document_, &ProjectDocument::changed, this, &SetupPage::refresh);
+
+  // Unsaved model edits go into the project's autosave side file and come back on recovery.
+  d->extras = AutosaveExtras::of(document_);
+  d->extras->add(QStringLiteral("setup_model"), this,
+                 {[this] { return editor_->isModified(); },
+                  [this] {
+                    return nlohmann::json{{"dataset", d->files.modelId},
+                                          {"model", setup::modelToJson(editor_->model())}};
+                  },
+                  [this](const nlohmann::json& unsaved) { restoreUnsavedModel(unsaved); }});
+  connect(editor_, &SetupModelEditor::modelChanged, d->extras, &AutosaveExtras::notifyChanged);
+  connect(editor_->undoStack(), &QUndoStack::cleanChanged, d->extras, &AutosaveExtras::notifyModifiedChanged);
   refresh();
 }
 
 SetupPage::~SetupPage() {
+  if (d->extras) {
+    d->extras->remove(this);
+    disconnect(editor_, nullptr, d->extras, nullptr);
+    disconnect(editor_->undoStack(), nullptr, d->extras, nullptr);
+  }
   if (d->token) d->token->cancel();
   d->watcher.waitForFinished();
   // The editor (a child) outlives this object's members: no more calls back into them.
@@ -349,14 +378,7 @@ void SetupPage::reload() {
   } else {
     try {
       model = setup::readModel(d->files.modelPath);
-      d->measModel = model;
-      if (d->files.reportPath.empty()) {
-        d->dataError =
-            tr("This project has no CMM report for the setup study (a dataset of kind \"cmm_report\").");
-      } else {
-        d->rawMeasurements = setup::readMeasurements({d->files.reportPath}, model);
-        applyEffects();
-      }
+      readReport(model);
     } catch (const std::exception& e) {
       d->dataError = QString::fromStdString(e.what());
     }
@@ -364,6 +386,58 @@ void SetupPage::reload() {
   editor_->setModel(model);
   validation_->setModel(model);
   convergence_->clearRuns();
+}
+
+void SetupPage::readReport(const setup::Model& model) {
+  d->measModel = model;
+  d->dataError.clear();
+  d->appliedError.clear();
+  d->measurements.reset();
+  d->rawMeasurements.reset();
+  if (d->files.reportPath.empty()) {
+    d->dataError =
+        tr("This project has no CMM report for the setup study (a dataset of kind \"cmm_report\").");
+    return;
+  }
+  try {
+    d->rawMeasurements = setup::readMeasurements({d->files.reportPath}, model);
+    applyEffects();
+  } catch (const std::exception& e) {
+    d->dataError = QString::fromStdString(e.what());
+  }
+}
+
+bool SetupPage::revertModel(QString* error) {
+  if (isRunning()) {
+    cancelRun();
+    waitForRun();
+  }
+  if (d->files.modelPath.empty()) {
+    if (error) *error = tr("The project has no setup model dataset to revert to.");
+    return false;
+  }
+  setup::Model model;
+  try {
+    model = setup::readModel(d->files.modelPath);
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromStdString(e.what());
+    return false;
+  }
+  readReport(model);
+  // One undo step (the model as on disk, not modified); without a change onModelEdited still shows
+  // the report as read now.
+  if (!editor_->revertTo(model, tr("Revert the setup model"))) onModelEdited();
+  return true;
+}
+
+void SetupPage::restoreUnsavedModel(const nlohmann::json& unsaved) {
+  const std::string dataset = unsaved.at("dataset").get<std::string>();
+  if (dataset != d->files.modelId) {
+    throw std::runtime_error("the autosaved edits belong to the setup model '" + dataset +
+                             "', the setup study now uses '" + d->files.modelId + "'");
+  }
+  editor_->replaceModel(SetupModelEditor::modelFromEditJson(unsaved.at("model"), d->files.modelPath),
+                        tr("Recover autosaved model edits"));
 }
 
 void SetupPage::onModelEdited() {
@@ -463,6 +537,7 @@ void SetupPage::updateControls() {
   budget_->setEnabled(!running);
   seed_->setEnabled(!running);
   graph_->setEnabled(!running);
+  progress_->setVisible(running);
   saveModel_->setEnabled(!running && editor_->isModified());
   revertModel_->setEnabled(!running && editor_->isModified());
 }

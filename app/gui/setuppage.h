@@ -2,10 +2,12 @@
 // The setup-correction study page (issue 4): the study's model and CMM report (studies.setup.model
 // and .dataset, else the first setup_model / cmm_report datasets of the project) in four tabs:
 //  * Graph: the relation-graph editor (its own undo stack); "Save model" writes the edited model
-//    back to the dataset file atomically, "Revert" reloads it.
+//    back to the dataset file atomically, "Revert" reads it again as one undo step (Ctrl+Z brings
+//    the edits back). Unsaved edits are autosaved with the project (app/gui/autosave.h
+//    AutosaveExtras, key "setup_model") and recovered as unsaved edits.
 //  * Run: method (exact, CRIPSO, PSO, GA, COA), budget, seed, Run (Ctrl+R) / Cancel with a progress
-//    bar; the run works in a worker thread and feeds the live convergence chart, where earlier runs
-//    stay overlaid and the exact optimum is the reference line.
+//    bar shown while a run goes on; the run works in a worker thread and feeds the live convergence
+//    chart, where earlier runs stay overlaid and the exact optimum is the reference line.
 //  * Results: the last run's corrections, margins, parts rescued and exports.
 //  * Validation: the paper's statistical validation (Fig. 18).
 // The runs use the EDITED model (tolerance edits can be tried before saving); the measured
@@ -86,8 +88,12 @@ class SetupPage : public QWidget {
 
   /// Writes the edited model to its dataset file (atomically); false with the message in *error.
   bool saveModel(QString* error = nullptr);
-  /// Reloads the model and the report from the files (drops the edits).
+  /// Reloads the model and the report from the files (drops the edits and their undo history).
   void reload();
+  /// Revert: reads the model file (and the report) again and goes back to it as one undo step of
+  /// the graph editor, so undo brings the edits back. False with the message in *error (the edits
+  /// stay) when the file cannot be read.
+  bool revertModel(QString* error = nullptr);
 
  signals:
   /// A run finished (also cancelled ones) and its result is on the Results tab.
@@ -105,6 +111,10 @@ class SetupPage : public QWidget {
   void updateControls();
   /// The instance of the edited model with the report's deviations; nullopt (and error_) if not possible.
   bool ensureExact();
+  /// Reads the report against `model` (d->rawMeasurements, d->measurements; d->dataError on failure).
+  void readReport(const setup::Model& model);
+  /// Autosave recovery: the edited model of the side file ({"dataset", "model"}) as one undo step.
+  void restoreUnsavedModel(const nlohmann::json& unsaved);
 
   struct Impl;
   std::unique_ptr<Impl> d;

@@ -91,6 +91,8 @@ QString datasetKindTitle(const QString& kind) {
     return QCoreApplication::translate("StudyInfo", "CMM report");
   if (kind == QLatin1String(dataset_kind::kSetupModel))
     return QCoreApplication::translate("StudyInfo", "Setup model");
+  if (kind == QLatin1String(dataset_kind::kFeatureSeries))
+    return QCoreApplication::translate("StudyInfo", "SPC feature series");
   return kind;
 }
 

@@ -31,6 +31,9 @@ double maxAbsRadialDeviation(const std::vector<Eigen::Vector2d>& points, const E
 }
 
 CircularAnalysis analyseCircularTest(const MeasuredPath& path) {
+  // The checks `metrofit-cli kinematic identify` makes first, so that a path it cannot take (too few
+  // points, not finite, identical or collinear points) gets the CLI's message, not one of our own.
+  checkIdentifiable(path);
   const std::size_t n = path.size();
   const ErrorContext where{path.source, 0, 0, "x_cmd_mm"};
   if (n < 3)

@@ -59,7 +59,9 @@ struct CircularAnalysis {
   double minDeviationMm = 0.0, maxDeviationMm = 0.0;
 };
 
-/// ValidationError (field x_cmd_mm) when the path has fewer than 3 points or no radius.
+/// The InputError of checkIdentifiable (core/kinematics/identification.h: the checks of `metrofit-cli
+/// kinematic identify`) when the path cannot be identified; ValidationError (field x_cmd_mm) when the
+/// commanded points have no radius.
 CircularAnalysis analyseCircularTest(const MeasuredPath& path);
 
 /// Radial deviations of points about a circle.

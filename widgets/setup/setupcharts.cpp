@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QLocale>
 #include <QPen>
 #include <QScatterSeries>
 #include <QValueAxis>
@@ -170,7 +171,7 @@ QChart* makeSetupConvergenceChart(const std::vector<SetupConvergenceRun>& runs,
   if (exact) {
     const double x1 = rx.valid() ? rx.hi : static_cast<double>(budget);
     auto* e1 = new QLineSeries;
-    e1->setName(SetupChartsText::tr("exact optimum f1 = %1 mm").arg(exact->f1, 0, 'f', 4));
+    e1->setName(SetupChartsText::tr("exact optimum f1 = %1 mm").arg(QLocale().toString(exact->f1, 'f', 4)));
     e1->append(0.0, exact->f1);
     e1->append(x1, exact->f1);
     e1->setPen(QPen(palette::reference(), 1.5, Qt::DashDotLine));
@@ -181,7 +182,7 @@ QChart* makeSetupConvergenceChart(const std::vector<SetupConvergenceRun>& runs,
     if (showF2) rl.add(exact->f2);
     if (showF) {
       auto* ef = new QLineSeries;
-      ef->setName(SetupChartsText::tr("exact f = %1").arg(exact->f, 0, 'f', 4));
+      ef->setName(SetupChartsText::tr("exact f = %1").arg(QLocale().toString(exact->f, 'f', 4)));
       ef->append(0.0, exact->f);
       ef->append(x1, exact->f);
       ef->setPen(QPen(QColor(0x70, 0x70, 0x70), 1.2, Qt::DotLine));

@@ -11,11 +11,13 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
+#include <QMenu>
 #include <QMessageBox>
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QToolBar>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <cmath>
@@ -86,12 +88,16 @@ SetupGraphEditor::SetupGraphEditor(SetupModelEditor* editor, QWidget* parent)
   toolbar->addAction(undo_);
   toolbar->addAction(redo_);
   toolbar->addSeparator();
+  // Zoom as "+" / "−" on the tool bar (the names stay the actions' text and tooltip): with the
+  // page's Revert / Save model the bar then fits 1280 px in German and Polish too.
   add(
       tr("Zoom in"), tr("Zoom in (Ctrl+wheel)"), [this] { view_->zoomIn(); },
-      QKeySequence(Qt::CTRL | Qt::Key_Equal));
+      QKeySequence(Qt::CTRL | Qt::Key_Equal))
+      ->setIconText(QStringLiteral(" + "));
   add(
       tr("Zoom out"), tr("Zoom out (Ctrl+wheel)"), [this] { view_->zoomOut(); },
-      QKeySequence(Qt::CTRL | Qt::Key_Minus));
+      QKeySequence(Qt::CTRL | Qt::Key_Minus))
+      ->setIconText(QStringLiteral(" − "));
   add(
       tr("Fit"), tr("Fit the whole graph into the view"), [this] { view_->fitToView(); },
       QKeySequence(Qt::CTRL | Qt::Key_0));
@@ -102,8 +108,20 @@ SetupGraphEditor::SetupGraphEditor(SetupModelEditor* editor, QWidget* parent)
     view_->setOrientation(on ? SetupGraphView::Orientation::Rows : SetupGraphView::Orientation::Columns);
   });
   toolbar->addSeparator();
-  add(tr("Export SVG…"), tr("Save the graph as an SVG drawing"), [this] { exportDialog(true); });
-  add(tr("Export PNG…"), tr("Save the graph as a PNG image"), [this] { exportDialog(false); });
+  // One "Export" button with the SVG and PNG exports in its menu.
+  auto* exportMenu = new QMenu(this);
+  QAction* svg = exportMenu->addAction(tr("Export SVG…"), this, [this] { exportDialog(true); });
+  svg->setToolTip(tr("Save the graph as an SVG drawing"));
+  QAction* png = exportMenu->addAction(tr("Export PNG…"), this, [this] { exportDialog(false); });
+  png->setToolTip(tr("Save the graph as a PNG image"));
+  exportMenu->setToolTipsVisible(true);
+  auto* exportButton = new QToolButton(this);
+  exportButton->setObjectName(QStringLiteral("setupGraphExport"));
+  exportButton->setText(tr("Export"));
+  exportButton->setToolTip(tr("Save the graph as an SVG drawing or a PNG image"));
+  exportButton->setMenu(exportMenu);
+  exportButton->setPopupMode(QToolButton::InstantPopup);
+  toolbar->addWidget(exportButton);
   // Ctrl+= is also reached as Ctrl++ on many keyboards.
   auto* zoomPlus = new QAction(this);
   zoomPlus->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Plus));

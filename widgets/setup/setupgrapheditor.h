@@ -27,7 +27,7 @@ class SetupGraphEditor : public QWidget {
   SetupModelEditor* editor() const { return editor_; }
   SetupGraphView* view() const { return view_; }
   QTableWidget* dimensionTable() const { return table_; }
-  /// The editor's tool bar (the page adds its save / revert buttons there).
+  /// The editor's tool bar.
   QToolBar* toolBar() const { return toolbar_; }
   /// The problems list shown under the graph (empty text when the model is valid).
   QString problemsText() const;

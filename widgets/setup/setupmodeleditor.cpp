@@ -5,6 +5,7 @@
 #include <QUndoStack>
 #include <algorithm>
 #include <set>
+#include <stdexcept>
 
 namespace metrofit {
 
@@ -99,6 +100,72 @@ bool SetupModelEditor::isModified() const {
 
 void SetupModelEditor::markSaved() {
   undoStack_->setClean();
+}
+
+bool SetupModelEditor::sameModel(const setup::Model& a, const setup::Model& b) {
+  return setup::modelToJson(a) == setup::modelToJson(b);
+}
+
+bool SetupModelEditor::revertTo(const setup::Model& saved, const QString& text) {
+  if (sameModel(model_, saved)) {
+    // Nothing to take back (e.g. edits undone by hand): only the file's source may differ.
+    model_.source = saved.source;
+    undoStack_->setClean();
+    return false;
+  }
+  push(saved, text);
+  undoStack_->setClean();
+  return true;
+}
+
+bool SetupModelEditor::replaceModel(const setup::Model& model, const QString& text) {
+  if (sameModel(model_, model)) return false;
+  push(model, text);
+  return true;
+}
+
+setup::Model SetupModelEditor::modelFromEditJson(const nlohmann::json& j, const std::string& source) {
+  const auto pair = [](const nlohmann::json& v) {
+    return std::pair<double, double>(v.at(0).get<double>(), v.at(1).get<double>());
+  };
+  setup::Model m;
+  m.source = source;
+  m.name = j.value("name", std::string());
+  m.axis = j.value("axis", std::string("Z"));
+  m.stepMm = j.value("step_mm", 0.001);
+  if (j.contains("bounds_mm")) m.boundsMm = pair(j.at("bounds_mm"));
+  for (const auto& e : j.at("setup")) {
+    setup::SetupDatum d;
+    d.id = e.at("id").get<std::string>();
+    const std::string kind = e.at("kind").get<std::string>();
+    if (kind == "machine") {
+      d.kind = setup::DatumKind::Machine;
+    } else if (kind == "wks") {
+      d.kind = setup::DatumKind::Wks;
+    } else if (kind == "tool") {
+      d.kind = setup::DatumKind::Tool;
+    } else {
+      throw std::invalid_argument("unknown setup datum kind '" + kind + "'");
+    }
+    if (e.contains("bounds_mm")) d.boundsMm = pair(e.at("bounds_mm"));
+    d.registerNumber = e.value("register", 0);
+    m.setup.push_back(std::move(d));
+  }
+  for (const auto& e : j.at("features")) m.features.push_back({e.at("id").get<std::string>()});
+  for (const auto& e : j.at("dimensions")) {
+    setup::Dimension d;
+    d.id = e.at("id").get<std::string>();
+    if (e.contains("nominal")) d.nominal = e.at("nominal").get<double>();
+    d.lower = e.at("lower").get<double>();
+    d.upper = e.at("upper").get<double>();
+    d.label = e.value("label", std::string());
+    m.dimensions.push_back(std::move(d));
+  }
+  for (const auto& e : j.at("arcs")) {
+    m.arcs.push_back(
+        {e.at("from").get<std::string>(), e.at("to").get<std::string>(), e.at("weight").get<double>()});
+  }
+  return m;
 }
 
 void SetupModelEditor::apply(const setup::Model& model) {

@@ -36,6 +36,18 @@ class SetupModelEditor : public QObject {
   bool isModified() const;
   /// The current state is what is on disk now.
   void markSaved();
+  /// Goes back to the model on disk (Revert) as one undo step, so Ctrl+Z brings the edits back; the
+  /// state after it is the saved one (not modified). False (nothing pushed) when the model is `saved`.
+  bool revertTo(const setup::Model& saved, const QString& text);
+  /// Replaces the model by `model` as one undo step (e.g. recovered autosaved edits); the result is
+  /// modified. False (nothing pushed) when the model is `model` already.
+  bool replaceModel(const setup::Model& model, const QString& text);
+  /// True when both models have the same content (modelToJson; the source is not compared).
+  static bool sameModel(const setup::Model& a, const setup::Model& b);
+  /// Reads the JSON form of setup::modelToJson WITHOUT validating it, so an edited model with
+  /// problems (how a model is built) can be stored and read back (autosave). Throws
+  /// nlohmann::json::exception on a wrong type and std::invalid_argument on an unknown kind.
+  static setup::Model modelFromEditJson(const nlohmann::json& json, const std::string& source);
 
   /// Problems of the current model (checkModel), cached.
   const std::vector<setup::ModelIssue>& issues() const { return issues_; }
