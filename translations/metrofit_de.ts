@@ -78,6 +78,11 @@
         <source>Setup model</source>
         <translation>Einrichtmodell</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>SPC feature series</source>
+        <translation>SPC-Merkmalsreihe</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -125,25 +130,30 @@
 <context>
     <name>metrofit::Autosave</name>
     <message>
-        <location filename="../app/gui/autosave.cpp" line="+121"/>
+        <location filename="../app/gui/autosave.cpp" line="+179"/>
         <source>cannot create the autosave folder %1</source>
         <translation>der Ordner für die automatische Sicherung %1 kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+67"/>
-        <location line="+56"/>
+        <location line="+70"/>
+        <location line="+60"/>
         <source>The autosaved copy cannot be read: %1</source>
         <translation>Die automatisch gesicherte Kopie kann nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="-42"/>
-        <location line="+51"/>
-        <location line="+30"/>
+        <location line="-44"/>
+        <location line="+54"/>
+        <location line="+52"/>
         <source>Recover autosaved changes</source>
         <translation>Automatisch gesicherte Änderungen wiederherstellen</translation>
     </message>
     <message>
-        <location line="-11"/>
+        <location line="-23"/>
+        <source>An autosaved edit cannot be recovered: %1</source>
+        <translation>Eine automatisch gesicherte Änderung kann nicht wiederhergestellt werden: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Metrofit was not closed properly. An autosaved copy of the unsaved project “%1” from %2 was found.
 
 Do you want to recover it?</source>
@@ -161,7 +171,12 @@ Do you want to recover the autosaved changes? They are opened as unsaved changes
 Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werden als ungespeicherte Änderungen geöffnet; die Projektdatei wird erst beim Speichern überschrieben.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
+        <source>The autosaved copy includes unsaved edits of the setup model (relation graph); they are recovered as unsaved edits too.</source>
+        <translation>Die automatisch gesicherte Kopie enthält ungespeicherte Änderungen am Einrichtmodell (Beziehungsgraph); sie werden ebenfalls als ungespeicherte Änderungen wiederhergestellt.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Recover</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
@@ -353,17 +368,22 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+502"/>
+        <location line="+529"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-433"/>
+        <location line="-456"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-55"/>
+        <source>mm/part</source>
+        <translation>mm/Werkstück</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -393,7 +413,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+14"/>
+        <source>The declared model as fitted before any effect was added</source>
+        <translation>Das deklarierte Modell, wie es vor dem Hinzufügen eines Effekts angepasst wurde</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>The effect whose residual plot is shown</source>
         <translation>Der Effekt, dessen Residuendiagramm angezeigt wird</translation>
     </message>
@@ -453,13 +478,13 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ber&amp;eich:</translation>
     </message>
     <message>
-        <location line="+33"/>
-        <location line="+125"/>
+        <location line="+34"/>
+        <location line="+134"/>
         <source>The diagnosis failed: %1</source>
         <translation>Die Diagnose ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-69"/>
         <source>No usable %1 data for the diagnosis:
 %2
 
@@ -495,7 +520,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>; deklariertes Modell: starre Lage; Toleranz ±%1 mm.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Applied to the model: %1.</source>
         <translation>Ins Modell übernommen: %1.</translation>
     </message>
@@ -505,7 +530,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Noch nicht ausgeführt: Ausführen drücken (Strg+R).</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+33"/>
         <source>Diagnosing …</source>
         <translation>Diagnose läuft …</translation>
     </message>
@@ -540,12 +565,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>. Übernommen: %1 (%2 Kandidaten getestet).</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>Cancelled: the rounds done so far.</source>
         <translation>Abgebrochen: die bisherigen Runden.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
         <source> (accepted)</source>
         <translation> (übernommen)</translation>
     </message>
@@ -563,7 +588,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::ErrorBarsView</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="+458"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="+467"/>
         <source>rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model (grey) and the model with the accepted effects (blue)</source>
         <translation>rmse und größter |Fehler| der angepassten Daten, rmse der Testdaten (Thermik): das deklarierte Modell (grau) und das Modell mit den übernommenen Effekten (blau)</translation>
     </message>
@@ -573,7 +598,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Fehler vorher / nachher</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>Error before / after (%1)</source>
         <translation>Fehler vorher / nachher (%1)</translation>
     </message>
@@ -795,7 +820,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+101"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+148"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -995,12 +1020,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Quadratischer Mittelwert der Restabstände nach der Identifikation</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>iterations</source>
         <translation>Iterationen</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>RMS, declared model only (µm)</source>
         <translation>RMS, nur deklariertes Modell (µm)</translation>
     </message>
@@ -1010,7 +1035,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Das Residuum des deklarierten Modells (Ursprung und Achswinkel, ohne übernommene Effekte)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Path (XY)</source>
         <translation>Bahn (XY)</translation>
     </message>
@@ -1097,7 +1122,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Größter |Sollwert − Nennpunkt|</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>Export compensated path as G-code</source>
         <translation>Kompensierte Bahn als G-Code exportieren</translation>
     </message>
@@ -1431,7 +1456,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+59"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+61"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -1461,7 +1486,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Minimax</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+185"/>
         <source>Allow &amp;scale</source>
         <translation>&amp;Skalierung</translation>
     </message>
@@ -1547,12 +1572,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+0"/>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>RMSE (mm)</source>
         <translation>RMSE (mm)</translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="-23"/>
         <source>max |d| (mm)</source>
         <translation>max |d| (mm)</translation>
     </message>
@@ -1572,7 +1597,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Zeit (ms)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Axis</source>
         <translation>Achse</translation>
     </message>
@@ -1587,7 +1612,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Einheit</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Round</source>
         <translation>Runde</translation>
     </message>
@@ -1632,7 +1657,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Koord.-Drehung (Grad)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
@@ -1652,7 +1677,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Abweichung nachher (mm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Methods and &amp;machine</source>
         <translation>Methoden und &amp;Maschine</translation>
     </message>
@@ -1817,7 +1842,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Grobausrichtung: lokale 3-Punkt-Koordinatensysteme, Gl. 3–7</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Machine adjustment values for %1 (%2), posture of %3. %4</source>
         <translation>Maschineneinstellwerte für %1 (%2), Lage aus %3. %4</translation>
     </message>
@@ -1861,7 +1886,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Drehung des Koordinatensystems</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>The remeasure loop did not run.</source>
         <translation>Die Nachmessschleife wurde nicht ausgeführt.</translation>
     </message>
@@ -1895,7 +1920,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-370"/>
+        <location line="-372"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -2134,8 +2159,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::Report</name>
     <message>
-        <location filename="../widgets/report/diagnosissection.cpp" line="+38"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+527"/>
+        <location filename="../widgets/report/diagnosissection.cpp" line="+36"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+521"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -2155,7 +2180,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lageausrichtung</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+44"/>
         <source>rmse %1 %2, max |e| %3 %2</source>
         <translation>rmse %1 %2, max |e| %3 %2</translation>
     </message>
@@ -3665,7 +3690,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ResidualPlot</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="-269"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="-278"/>
         <source>before the effect</source>
         <translation>vor dem Effekt</translation>
     </message>
@@ -3675,12 +3700,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>nachher</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+22"/>
         <source> (arrows × %1)</source>
         <translation> (Pfeile × %1)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>x (mm)</source>
         <translation>x (mm)</translation>
     </message>
@@ -3693,12 +3718,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ResidualPlotView</name>
     <message>
-        <location line="+90"/>
+        <location line="+91"/>
         <source>Residual plot: run the diagnosis (Ctrl+R)</source>
         <translation>Residuendiagramm: Diagnose ausführen (Strg+R)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+31"/>
         <source>residual before the effect</source>
         <translation>Residuum vor dem Effekt</translation>
     </message>
@@ -3711,7 +3736,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupCharts</name>
     <message>
-        <location filename="../widgets/setup/setupcharts.cpp" line="+67"/>
+        <location filename="../widgets/setup/setupcharts.cpp" line="+68"/>
         <source>exact</source>
         <translation>exakt</translation>
     </message>
@@ -3818,7 +3843,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupGraphEditor</name>
     <message>
-        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+72"/>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+74"/>
         <source>Add node…</source>
         <translation>Knoten hinzufügen…</translation>
     </message>
@@ -3878,7 +3903,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Wiederherstellen (Strg+Umschalt+Z, wenn der Graph den Fokus hat)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Zoom in</source>
         <translation>Vergrößern</translation>
     </message>
@@ -3888,7 +3913,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Vergrößern (Strg+Mausrad)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Zoom out</source>
         <translation>Verkleinern</translation>
     </message>
@@ -3898,7 +3923,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Verkleinern (Strg+Mausrad)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
@@ -3918,12 +3943,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Ebenen in Zeilen statt in Spalten</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Export SVG…</source>
         <translation>SVG exportieren…</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Save the graph as an SVG drawing</source>
         <translation>Den Graphen als SVG-Zeichnung speichern</translation>
     </message>
@@ -3933,12 +3958,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>PNG exportieren…</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Save the graph as a PNG image</source>
         <translation>Den Graphen als PNG-Bild speichern</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+4"/>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save the graph as an SVG drawing or a PNG image</source>
+        <translation>Den Graphen als SVG-Zeichnung oder PNG-Bild speichern</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Dimension</source>
         <translation>Maß</translation>
     </message>
@@ -4188,7 +4223,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupModelEditor</name>
     <message>
-        <location filename="../widgets/setup/setupmodeleditor.cpp" line="+66"/>
+        <location filename="../widgets/setup/setupmodeleditor.cpp" line="+67"/>
         <source>Machine points (M)</source>
         <translation>Maschinenpunkte (M)</translation>
     </message>
@@ -4213,7 +4248,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Maße (D)</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+160"/>
         <source>Add %1</source>
         <translation>%1 hinzufügen</translation>
     </message>
@@ -4256,7 +4291,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+105"/>
+        <location filename="../app/gui/setuppage.cpp" line="+108"/>
         <source>&amp;Save model</source>
         <translation>Modell &amp;speichern</translation>
     </message>
@@ -4287,16 +4322,21 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Drop the edits and read the model file again</source>
-        <translation>Die Änderungen verwerfen und die Modelldatei neu einlesen</translation>
+        <source>Read the model file again (one undo step: Ctrl+Z brings the edits back)</source>
+        <translation>Die Modelldatei neu einlesen (ein Rückgängig-Schritt: Strg+Z holt die Änderungen zurück)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
         <source>Cannot save the setup model</source>
         <translation>Das Einrichtmodell kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
+        <source>Cannot revert the setup model</source>
+        <translation>Das Einrichtmodell kann nicht zurückgesetzt werden</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>exact: the LP/MILP optimum (GLPK); the metaheuristics with the paper&apos;s settings</source>
         <translation>exakt: das LP/MILP-Optimum (GLPK); die Metaheuristiken mit den Einstellungen der Veröffentlichung</translation>
     </message>
@@ -4321,7 +4361,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Die Methode ausführen (Strg+R)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>&amp;Method:</source>
         <translation>&amp;Methode:</translation>
     </message>
@@ -4376,7 +4416,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Startwert der Einrichtung ändern</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+87"/>
         <source>The applied effects cannot be used: %1</source>
         <translation>Die übernommenen Effekte können nicht verwendet werden: %1</translation>
     </message>
@@ -4386,12 +4426,27 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Dieses Projekt hat kein Einrichtmodell. Fügen Sie der Projektdatei einen Datensatz der Art „setup_model“ (der Beziehungsgraph, JSON) und einen „cmm_report“ hinzu.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+23"/>
         <source>This project has no CMM report for the setup study (a dataset of kind &quot;cmm_report&quot;).</source>
         <translation>Dieses Projekt hat keinen KMG-Messbericht für die Einrichtstudie (ein Datensatz der Art „cmm_report“).</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+17"/>
+        <source>The project has no setup model dataset to revert to.</source>
+        <translation>Das Projekt hat keinen Einrichtmodell-Datensatz zum Zurücksetzen.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Revert the setup model</source>
+        <translation>Einrichtmodell zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Recover autosaved model edits</source>
+        <translation>Automatisch gesicherte Modelländerungen wiederherstellen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Noch kein Ergebnis für dieses Modell: Methode wählen und Ausführen drücken (Strg+R).</translation>
     </message>
@@ -4444,7 +4499,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zum Messbericht %1 (auf dem die Diagnose lief); dieser Bericht verwendet das deklarierte Modell.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>The setup study has no model or report to run on.</source>
         <translation>Die Einrichtstudie hat kein Modell oder keinen Bericht, auf dem sie laufen kann.</translation>
     </message>
@@ -5021,7 +5076,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+105"/>
+        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+174"/>
         <source>loop area in %1 × %2</source>
         <translation>Schleifenfläche in %1 × %2</translation>
     </message>
@@ -5041,7 +5096,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Sensor über der Verlagerung aufgetragen oder alle Sensoren nebeneinander</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>sensor</source>
         <translation>Sensor</translation>
     </message>
@@ -5096,7 +5151,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Schleifenfläche und Verzug je Sensor</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+41"/>
+        <source>Analysing the hysteresis of %1…</source>
+        <translation>Hysterese von %1 wird analysiert…</translation>
+    </message>
+    <message>
+        <location line="-141"/>
         <source>All sensors</source>
         <translation>Alle Sensoren</translation>
     </message>
@@ -5488,7 +5548,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+81"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+75"/>
         <source>T&amp;rend</source>
         <translation>&amp;Verlauf</translation>
     </message>
@@ -5601,6 +5661,488 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+6"/>
         <source>Channels</source>
         <translation>Kanäle</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::core</name>
+    <message>
+        <location filename="../widgets/diagnose/coretexts.cpp" line="+20"/>
+        <source>n/a</source>
+        <translation>k. A.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accepted: </source>
+        <translation>übernommen: </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; passed, but %1 explains more</source>
+        <translation>; bestanden, aber %1 erklärt mehr</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped by the observer after round %1</source>
+        <translation>vom Beobachter nach Runde %1 angehalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time (min)</source>
+        <translation>Zeit (min)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>radial residual (mm)</source>
+        <translation>radiales Residuum (mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>too few fit rows (%1) for %2 coefficients</source>
+        <translation>zu wenige Anpassungszeilen (%1) für %2 Koeffizienten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>column &apos;%1&apos; is constant on the fit rows</source>
+        <translation>Spalte „%1“ ist auf den Anpassungszeilen konstant</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the columns are linearly dependent on the fit rows</source>
+        <translation>die Spalten sind auf den Anpassungszeilen linear abhängig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drift %1 +- %2%3/min</source>
+        <translation>Drift %1 ± %2%3/min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>coefficient %1 +- %2%3 per unit</source>
+        <translation>Koeffizient %1 ± %2%3 je Einheit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>coefficient %1 +- %2%3 per %4</source>
+        <translation>Koeffizient %1 ± %2%3 je %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tau %1 +- %2 min</source>
+        <translation>τ %1 ± %2 min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tau %1 min</source>
+        <translation>τ %1 min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = c0</source>
+        <translation>%1 = c0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> + %1 %2</source>
+        <translation> + %1 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared model (static, fitted on the first %1 of %2 rows): %3</source>
+        <translation>deklariertes Modell (statisch, angepasst an die ersten %1 von %2 Zeilen): %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>noise level (first differences of the fit residual): %1%2</source>
+        <translation>Rauschpegel (erste Differenzen des Anpassungsresiduums): %1%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not estimable: %1</source>
+        <translation>nicht schätzbar: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>held-out rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3</source>
+        <translation>rmse Testdaten %1 → %2%3 (%4), rmse Anpassung %5 → %6%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>held-out rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, %7</source>
+        <translation>rmse Testdaten %1 → %2%3 (%4), rmse Anpassung %5 → %6%3, %7</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: held-out error worse</source>
+        <translation>; abgelehnt: Fehler auf den Testdaten größer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: held-out gain below %1 %</source>
+        <translation>; abgelehnt: Gewinn auf den Testdaten unter %1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: explains %1%2, below %3 x the noise level %4%2</source>
+        <translation>; abgelehnt: erklärt %1%2, weniger als das %3-Fache des Rauschpegels %4%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: no in-sample evidence (fit dBIC %1 &gt;= 0)</source>
+        <translation>; abgelehnt: keine Evidenz in den Anpassungsdaten (dBIC der Anpassung %1 ≥ 0)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accepted together with %1: held-out rmse %2 -&gt; %3%4 (%5), fit rmse %6 -&gt; %7%4, %8</source>
+        <translation>übernommen zusammen mit %1: rmse Testdaten %2 → %3%4 (%5), rmse Anpassung %6 → %7%4, %8</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>residual</source>
+        <translation>Residuum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>residual (%1)</source>
+        <translation>Residuum (%1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>path angle (deg)</source>
+        <translation>Bahnwinkel (Grad)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared model: origin (%1, %2) um, x axis %3 deg, y axis %4 deg, squareness %5 deg</source>
+        <translation>deklariertes Modell: Ursprung (%1; %2) µm, x-Achse %3°, y-Achse %4°, Rechtwinkligkeit %5°</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not estimable: no period range to search on this path</source>
+        <translation>nicht schätzbar: kein Periodenbereich, der auf dieser Bahn durchsucht werden kann</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not estimable from this path: its parameters are not observable together with the declared ones</source>
+        <translation>aus dieser Bahn nicht schätzbar: seine Parameter sind zusammen mit den deklarierten nicht beobachtbar</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>backlash x %1 +- %2 um, y %3 +- %4 um</source>
+        <translation>Umkehrspiel x %1 ± %2 µm, y %3 ± %4 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>scale x %1 +- %2 ppm, y %3 +- %4 ppm</source>
+        <translation>Maßstab x %1 ± %2 ppm, y %3 ± %4 ppm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>servo lag tau %1 +- %2 s at %3 mm/min (%4 um)</source>
+        <translation>Servoverzug τ %1 ± %2 s bei %3 mm/min (%4 µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cyclic on %1: period %2 +- %3 mm, amplitude %4 +- %5 um</source>
+        <translation>zyklisch auf %1: Periode %2 ± %3 mm, Amplitude %4 ± %5 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rmse %1 -&gt; %2 um (%3 %), dBIC %4, %5</source>
+        <translation>rmse %1 → %2 µm (%3 %), dBIC %4, %5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: dBIC above -%1</source>
+        <translation>; abgelehnt: dBIC über -%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: rmse gain below %1 %</source>
+        <translation>; abgelehnt: rmse-Gewinn unter %1 %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>declared model: constant errors of the %1 setup data through the relation graph, least squares over %2 rows of %3 parts; rank %4 of %5</source>
+        <translation>deklariertes Modell: konstante Fehler der %1 Einrichtdaten über den Beziehungsgraphen, kleinste Quadrate über %2 Zeilen von %3 Werkstücken; Rang %4 von %5</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> (rank deficient: minimum-norm solution)</source>
+        <translation> (rangdefizient: Lösung mit minimaler Norm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared fit (minimum norm), setup errors mm:</source>
+        <translation>deklarierte Anpassung (minimale Norm), Einrichtfehler mm:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> %1=%2</source>
+        <translation> %1=%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not identifiable: %1 (one part only?)</source>
+        <translation>nicht identifizierbar: %1 (nur ein Werkstück?)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not identifiable: %1 (time does not vary?)</source>
+        <translation>nicht identifizierbar: %1 (Zeit ändert sich nicht?)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 +- %2 mm/part (t = %3); </source>
+        <translation>%1 ± %2 mm/Werkstück (t = %3); </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 +- %2 mm/min (t = %3); </source>
+        <translation>%1 ± %2 mm/min (t = %3); </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part</source>
+        <translation>Werkstück</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>apparent error of %1 (mm)</source>
+        <translation>scheinbarer Fehler von %1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; preferred to %1 (its dBIC is %2 lower, below the threshold: the data cannot tell them apart)</source>
+        <translation>; %1 vorgezogen (dessen dBIC ist um %2 niedriger, unter der Schwelle: die Daten können sie nicht unterscheiden)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>; indistinguishable from %1 with these data</source>
+        <translation>; mit diesen Daten nicht von %1 zu unterscheiden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>distance from the centroid (mm)</source>
+        <translation>Abstand vom Schwerpunkt (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deviation along the normal (mm)</source>
+        <translation>Abweichung entlang der Normalen (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>polar angle (deg)</source>
+        <translation>Polarwinkel (Grad)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = %2 +- %3</source>
+        <translation>%1 = %2 ± %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, %1 = %2 +- %3</source>
+        <translation>, %1 = %2 ± %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, %1 = %2</source>
+        <translation>, %1 = %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared model: rigid posture p = R q + t fitted to %1, %2 points</source>
+        <translation>deklariertes Modell: starre Lage p = R q + t, angepasst an %1, %2 Punkte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the deviations along the nominal normals</source>
+        <translation>die Abweichungen entlang der Sollnormalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the in-plane residuals (planar, position-only)</source>
+        <translation>die Residuen in der Ebene (eben, nur Position)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the residual vectors (position-only)</source>
+        <translation>die Residuenvektoren (nur Position)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared fit: rotation_deg [%1, %2, %3], translation_mm [%4, %5, %6]</source>
+        <translation>deklarierte Anpassung: Rotation in Grad [%1; %2; %3], Translation in mm [%4; %5; %6]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not identifiable: %1 (the rigid posture explains it with these points)</source>
+        <translation>nicht identifizierbar: %1 (die starre Lage erklärt es mit diesen Punkten)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1; %2</source>
+        <translation>%1; %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; indistinguishable from %1 with these points</source>
+        <translation>; mit diesen Punkten nicht von %1 zu unterscheiden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dBIC = %1 &lt; -%2, rmse %3 -&gt; %4 %5 (-%6 %)</source>
+        <translation>dBIC = %1 &lt; -%2, rmse %3 → %4 %5 (-%6 %)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dBIC = %1 not below -%2, rmse %3 -&gt; %4 %5 (-%6 %)</source>
+        <translation>dBIC = %1 nicht unter -%2, rmse %3 → %4 %5 (-%6 %)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dBIC = %1 &lt; -%2, rmse %3 -&gt; %4 %5 (-%6 %, below the relevant %7 %)</source>
+        <translation>dBIC = %1 &lt; -%2, rmse %3 → %4 %5 (-%6 %, unter den relevanten %7 %)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dBIC = %1 &lt; -%2, rmse %3 -&gt; %4 %5 (-%6 %, below the relevant %7 %5)</source>
+        <translation>dBIC = %1 &lt; -%2, rmse %3 → %4 %5 (-%6 %, unter den relevanten %7 %5)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>absorbed by the declared model</source>
+        <translation>vom deklarierten Modell aufgenommen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its parameters are not separable with these data</source>
+        <translation>seine Parameter sind mit diesen Daten nicht trennbar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>too few data for the parameters</source>
+        <translation>zu wenige Daten für die Parameter</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>converged</source>
+        <translation>konvergiert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>budget exhausted</source>
+        <translation>Budget erschöpft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>iteration limit</source>
+        <translation>Iterationsgrenze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+11"/>
+        <source>time constant</source>
+        <translation>Zeitkonstante</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>coefficient</source>
+        <translation>Koeffizient</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+12"/>
+        <source>drift rate</source>
+        <translation>Driftrate</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <location line="+2"/>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <location line="+2"/>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>period</source>
+        <translation>Periode</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>amplitude</source>
+        <translation>Amplitude</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>phase</source>
+        <translation>Phase</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lag</source>
+        <translation>Verzug</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>change per part</source>
+        <translation>Änderung je Werkstück</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>scale</source>
+        <translation>Maßstab</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>offset</source>
+        <translation>Versatz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>angle</source>
+        <translation>Winkel</translation>
     </message>
 </context>
 </TS>

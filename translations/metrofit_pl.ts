@@ -78,6 +78,11 @@
         <source>Setup model</source>
         <translation>Model ustawczy</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>SPC feature series</source>
+        <translation>Seria cech SPC</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -125,25 +130,30 @@
 <context>
     <name>metrofit::Autosave</name>
     <message>
-        <location filename="../app/gui/autosave.cpp" line="+121"/>
+        <location filename="../app/gui/autosave.cpp" line="+179"/>
         <source>cannot create the autosave folder %1</source>
         <translation>nie można utworzyć folderu automatycznego zapisu %1</translation>
     </message>
     <message>
-        <location line="+67"/>
-        <location line="+56"/>
+        <location line="+70"/>
+        <location line="+60"/>
         <source>The autosaved copy cannot be read: %1</source>
         <translation>Nie można odczytać automatycznie zapisanej kopii: %1</translation>
     </message>
     <message>
-        <location line="-42"/>
-        <location line="+51"/>
-        <location line="+30"/>
+        <location line="-44"/>
+        <location line="+54"/>
+        <location line="+52"/>
         <source>Recover autosaved changes</source>
         <translation>Przywracanie automatycznie zapisanych zmian</translation>
     </message>
     <message>
-        <location line="-11"/>
+        <location line="-23"/>
+        <source>An autosaved edit cannot be recovered: %1</source>
+        <translation>Nie można przywrócić automatycznie zapisanej zmiany: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Metrofit was not closed properly. An autosaved copy of the unsaved project “%1” from %2 was found.
 
 Do you want to recover it?</source>
@@ -161,7 +171,12 @@ Do you want to recover the autosaved changes? They are opened as unsaved changes
 Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako niezapisane zmiany; plik projektu zostanie nadpisany dopiero przy zapisie.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
+        <source>The autosaved copy includes unsaved edits of the setup model (relation graph); they are recovered as unsaved edits too.</source>
+        <translation>Automatycznie zapisana kopia zawiera niezapisane zmiany modelu ustawczego (graf relacji); one również zostaną przywrócone jako niezapisane zmiany.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Recover</source>
         <translation>&amp;Przywróć</translation>
     </message>
@@ -353,17 +368,22 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+502"/>
+        <location line="+529"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-433"/>
+        <location line="-456"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-55"/>
+        <source>mm/part</source>
+        <translation>mm/przedmiot</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>Cancel</source>
         <translation>Anuluj</translation>
     </message>
@@ -393,7 +413,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+14"/>
+        <source>The declared model as fitted before any effect was added</source>
+        <translation>Zadeklarowany model dopasowany przed dodaniem jakiegokolwiek efektu</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>The effect whose residual plot is shown</source>
         <translation>Efekt, którego wykres residuów jest pokazany</translation>
     </message>
@@ -453,13 +478,13 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>&amp;Dziedzina:</translation>
     </message>
     <message>
-        <location line="+33"/>
-        <location line="+125"/>
+        <location line="+34"/>
+        <location line="+134"/>
         <source>The diagnosis failed: %1</source>
         <translation>Diagnoza nie powiodła się: %1</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-69"/>
         <source>No usable %1 data for the diagnosis:
 %2
 
@@ -495,7 +520,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>; zadeklarowany model: sztywne położenie; tolerancja ±%1 mm.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Applied to the model: %1.</source>
         <translation>Zastosowano do modelu: %1.</translation>
     </message>
@@ -505,7 +530,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+33"/>
         <source>Diagnosing …</source>
         <translation>Diagnozowanie …</translation>
     </message>
@@ -540,12 +565,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>. Przyjęto: %1 (wypróbowano kandydatów: %2).</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>Cancelled: the rounds done so far.</source>
         <translation>Anulowano: dotychczasowe rundy.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
         <source> (accepted)</source>
         <translation> (przyjęty)</translation>
     </message>
@@ -563,7 +588,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::ErrorBarsView</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="+458"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="+467"/>
         <source>rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model (grey) and the model with the accepted effects (blue)</source>
         <translation>rmse i największy |błąd| danych dopasowania, rmse wierszy testowych (termika): zadeklarowany model (szary) i model z przyjętymi efektami (niebieski)</translation>
     </message>
@@ -573,7 +598,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Błąd przed / po</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>Error before / after (%1)</source>
         <translation>Błąd przed / po (%1)</translation>
     </message>
@@ -795,7 +820,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+101"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+148"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identyfikuj</translation>
     </message>
@@ -996,12 +1021,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Średnia kwadratowa odległości resztkowych po identyfikacji</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>iterations</source>
         <translation>iteracje</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>RMS, declared model only (µm)</source>
         <translation>RMS, tylko zadeklarowany model (µm)</translation>
     </message>
@@ -1011,7 +1036,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Residuum zadeklarowanego modelu (początek i kąty osi, bez zastosowanych efektów)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Path (XY)</source>
         <translation>Tor (XY)</translation>
     </message>
@@ -1098,7 +1123,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Największa |wartość zadana − punkt nominalny|</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>Export compensated path as G-code</source>
         <translation>Eksport skompensowanego toru jako G-code</translation>
     </message>
@@ -1432,7 +1457,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+59"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+61"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -1462,7 +1487,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>minimaks</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+185"/>
         <source>Allow &amp;scale</source>
         <translation>&amp;Skala</translation>
     </message>
@@ -1548,12 +1573,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+0"/>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>RMSE (mm)</source>
         <translation>RMSE (mm)</translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="-23"/>
         <source>max |d| (mm)</source>
         <translation>maks. |d| (mm)</translation>
     </message>
@@ -1573,7 +1598,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>czas (ms)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Axis</source>
         <translation>Oś</translation>
     </message>
@@ -1588,7 +1613,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Jednostka</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Round</source>
         <translation>Runda</translation>
     </message>
@@ -1633,7 +1658,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>obrót układu (st.)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
@@ -1653,7 +1678,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Odchyłka po (mm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Methods and &amp;machine</source>
         <translation>Metody i &amp;maszyna</translation>
     </message>
@@ -1818,7 +1843,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dopasowanie zgrubne: lokalne układy 3-punktowe, równ. 3–7</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Machine adjustment values for %1 (%2), posture of %3. %4</source>
         <translation>Wartości nastawienia maszyny dla %1 (%2), położenie z %3. %4</translation>
     </message>
@@ -1862,7 +1887,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>obrót układu współrzędnych</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>The remeasure loop did not run.</source>
         <translation>Pętla ponownego pomiaru nie została uruchomiona.</translation>
     </message>
@@ -1897,7 +1922,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-370"/>
+        <location line="-372"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -2136,8 +2161,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::Report</name>
     <message>
-        <location filename="../widgets/report/diagnosissection.cpp" line="+38"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+527"/>
+        <location filename="../widgets/report/diagnosissection.cpp" line="+36"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+521"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -2157,7 +2182,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dopasowanie położenia</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+44"/>
         <source>rmse %1 %2, max |e| %3 %2</source>
         <translation>rmse %1 %2, maks. |e| %3 %2</translation>
     </message>
@@ -3672,7 +3697,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ResidualPlot</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="-269"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="-278"/>
         <source>before the effect</source>
         <translation>przed efektem</translation>
     </message>
@@ -3682,12 +3707,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>po</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+22"/>
         <source> (arrows × %1)</source>
         <translation> (strzałki × %1)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>x (mm)</source>
         <translation>x (mm)</translation>
     </message>
@@ -3700,12 +3725,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ResidualPlotView</name>
     <message>
-        <location line="+90"/>
+        <location line="+91"/>
         <source>Residual plot: run the diagnosis (Ctrl+R)</source>
         <translation>Wykres residuów: uruchom diagnozę (Ctrl+R)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+31"/>
         <source>residual before the effect</source>
         <translation>residuum przed efektem</translation>
     </message>
@@ -3718,7 +3743,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupCharts</name>
     <message>
-        <location filename="../widgets/setup/setupcharts.cpp" line="+67"/>
+        <location filename="../widgets/setup/setupcharts.cpp" line="+68"/>
         <source>exact</source>
         <translation>dokładna</translation>
     </message>
@@ -3825,7 +3850,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupGraphEditor</name>
     <message>
-        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+72"/>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+74"/>
         <source>Add node…</source>
         <translation>Dodaj węzeł…</translation>
     </message>
@@ -3885,7 +3910,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ponów (Ctrl+Shift+Z, gdy graf ma fokus)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Zoom in</source>
         <translation>Powiększ</translation>
     </message>
@@ -3895,7 +3920,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Powiększ (Ctrl+kółko)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Zoom out</source>
         <translation>Pomniejsz</translation>
     </message>
@@ -3905,7 +3930,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Pomniejsz (Ctrl+kółko)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Fit</source>
         <translation>Dopasuj</translation>
     </message>
@@ -3925,12 +3950,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Poziomy w wierszach zamiast w kolumnach</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Export SVG…</source>
         <translation>Eksportuj SVG…</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Save the graph as an SVG drawing</source>
         <translation>Zapisz graf jako rysunek SVG</translation>
     </message>
@@ -3940,12 +3965,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Eksportuj PNG…</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Save the graph as a PNG image</source>
         <translation>Zapisz graf jako obraz PNG</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+4"/>
+        <source>Export</source>
+        <translation>Eksportuj</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save the graph as an SVG drawing or a PNG image</source>
+        <translation>Zapisz graf jako rysunek SVG lub obraz PNG</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Dimension</source>
         <translation>Wymiar</translation>
     </message>
@@ -4197,7 +4232,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupModelEditor</name>
     <message>
-        <location filename="../widgets/setup/setupmodeleditor.cpp" line="+66"/>
+        <location filename="../widgets/setup/setupmodeleditor.cpp" line="+67"/>
         <source>Machine points (M)</source>
         <translation>Punkty maszyny (M)</translation>
     </message>
@@ -4222,7 +4257,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Wymiary (D)</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+160"/>
         <source>Add %1</source>
         <translation>Dodanie %1</translation>
     </message>
@@ -4265,7 +4300,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+105"/>
+        <location filename="../app/gui/setuppage.cpp" line="+108"/>
         <source>&amp;Save model</source>
         <translation>Zapi&amp;sz model</translation>
     </message>
@@ -4296,16 +4331,21 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Drop the edits and read the model file again</source>
-        <translation>Odrzuć zmiany i wczytaj ponownie plik modelu</translation>
+        <source>Read the model file again (one undo step: Ctrl+Z brings the edits back)</source>
+        <translation>Wczytaj ponownie plik modelu (jeden krok cofania: Ctrl+Z przywraca zmiany)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
         <source>Cannot save the setup model</source>
         <translation>Nie można zapisać modelu ustawczego</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
+        <source>Cannot revert the setup model</source>
+        <translation>Nie można przywrócić modelu ustawczego</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>exact: the LP/MILP optimum (GLPK); the metaheuristics with the paper&apos;s settings</source>
         <translation>dokładna: optimum LP/MILP (GLPK); metaheurystyki z ustawieniami z publikacji</translation>
     </message>
@@ -4330,7 +4370,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Uruchom metodę (Ctrl+R)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>&amp;Method:</source>
         <translation>&amp;Metoda:</translation>
     </message>
@@ -4385,7 +4425,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana ziarna ustawienia</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+87"/>
         <source>The applied effects cannot be used: %1</source>
         <translation>Nie można użyć zastosowanych efektów: %1</translation>
     </message>
@@ -4395,12 +4435,27 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ten projekt nie ma modelu ustawczego. Dodaj do pliku projektu zbiór danych rodzaju „setup_model” (graf relacji, JSON) oraz „cmm_report”.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+23"/>
         <source>This project has no CMM report for the setup study (a dataset of kind &quot;cmm_report&quot;).</source>
         <translation>Ten projekt nie ma raportu WMP dla studium ustawienia (zbiór danych rodzaju „cmm_report”).</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+17"/>
+        <source>The project has no setup model dataset to revert to.</source>
+        <translation>Projekt nie ma zbioru danych modelu ustawczego, do którego można wrócić.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Revert the setup model</source>
+        <translation>Przywróć model ustawczy</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Recover autosaved model edits</source>
+        <translation>Przywróć automatycznie zapisane zmiany modelu</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Brak jeszcze wyniku dla tego modelu: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
     </message>
@@ -4454,7 +4509,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Efekty zastosowane na stronie Diagnoza należą do raportu %1 (tego, na którym przeprowadzono diagnozę); ten raport używa zadeklarowanego modelu.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>The setup study has no model or report to run on.</source>
         <translation>Studium ustawienia nie ma modelu ani raportu do obliczeń.</translation>
     </message>
@@ -5034,7 +5089,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+105"/>
+        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+174"/>
         <source>loop area in %1 × %2</source>
         <translation>pole pętli w %1 × %2</translation>
     </message>
@@ -5054,7 +5109,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Czujnik względem przemieszczenia lub wszystkie czujniki obok siebie</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>sensor</source>
         <translation>czujnik</translation>
     </message>
@@ -5109,7 +5164,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Pole pętli i opóźnienie dla każdego czujnika</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+41"/>
+        <source>Analysing the hysteresis of %1…</source>
+        <translation>Analiza histerezy %1…</translation>
+    </message>
+    <message>
+        <location line="-141"/>
         <source>All sensors</source>
         <translation>Wszystkie czujniki</translation>
     </message>
@@ -5501,7 +5561,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+81"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+75"/>
         <source>T&amp;rend</source>
         <translation>&amp;Trend</translation>
     </message>
@@ -5614,6 +5674,488 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+6"/>
         <source>Channels</source>
         <translation>Kanały</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::core</name>
+    <message>
+        <location filename="../widgets/diagnose/coretexts.cpp" line="+20"/>
+        <source>n/a</source>
+        <translation>b.d.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accepted: </source>
+        <translation>przyjęty: </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; passed, but %1 explains more</source>
+        <translation>; spełnia kryteria, ale %1 wyjaśnia więcej</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cancelled</source>
+        <translation>anulowano</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped by the observer after round %1</source>
+        <translation>zatrzymane przez obserwatora po rundzie %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time (min)</source>
+        <translation>czas (min)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>radial residual (mm)</source>
+        <translation>residuum promieniowe (mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>too few fit rows (%1) for %2 coefficients</source>
+        <translation>za mało wierszy dopasowania (%1) dla %2 współczynników</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>column &apos;%1&apos; is constant on the fit rows</source>
+        <translation>kolumna „%1” jest stała w wierszach dopasowania</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the columns are linearly dependent on the fit rows</source>
+        <translation>kolumny są liniowo zależne w wierszach dopasowania</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drift %1 +- %2%3/min</source>
+        <translation>dryf %1 ± %2%3/min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>coefficient %1 +- %2%3 per unit</source>
+        <translation>współczynnik %1 ± %2%3 na jednostkę</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>coefficient %1 +- %2%3 per %4</source>
+        <translation>współczynnik %1 ± %2%3 na %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tau %1 +- %2 min</source>
+        <translation>τ %1 ± %2 min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tau %1 min</source>
+        <translation>τ %1 min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = c0</source>
+        <translation>%1 = c0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> + %1 %2</source>
+        <translation> + %1 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared model (static, fitted on the first %1 of %2 rows): %3</source>
+        <translation>zadeklarowany model (statyczny, dopasowany do pierwszych %1 z %2 wierszy): %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>noise level (first differences of the fit residual): %1%2</source>
+        <translation>poziom szumu (pierwsze różnice residuum dopasowania): %1%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not estimable: %1</source>
+        <translation>nie do oszacowania: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>held-out rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3</source>
+        <translation>rmse danych testowych %1 → %2%3 (%4), rmse dopasowania %5 → %6%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>held-out rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, %7</source>
+        <translation>rmse danych testowych %1 → %2%3 (%4), rmse dopasowania %5 → %6%3, %7</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: held-out error worse</source>
+        <translation>; odrzucony: błąd danych testowych większy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: held-out gain below %1 %</source>
+        <translation>; odrzucony: zysk na danych testowych poniżej %1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: explains %1%2, below %3 x the noise level %4%2</source>
+        <translation>; odrzucony: wyjaśnia %1%2, poniżej %3 × poziom szumu %4%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: no in-sample evidence (fit dBIC %1 &gt;= 0)</source>
+        <translation>; odrzucony: brak dowodów w danych dopasowania (dBIC dopasowania %1 ≥ 0)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accepted together with %1: held-out rmse %2 -&gt; %3%4 (%5), fit rmse %6 -&gt; %7%4, %8</source>
+        <translation>przyjęty razem z %1: rmse danych testowych %2 → %3%4 (%5), rmse dopasowania %6 → %7%4, %8</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>residual</source>
+        <translation>residuum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>residual (%1)</source>
+        <translation>residuum (%1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>path angle (deg)</source>
+        <translation>kąt na torze (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared model: origin (%1, %2) um, x axis %3 deg, y axis %4 deg, squareness %5 deg</source>
+        <translation>zadeklarowany model: początek (%1; %2) µm, oś x %3°, oś y %4°, prostopadłość %5°</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not estimable: no period range to search on this path</source>
+        <translation>nie do oszacowania: brak zakresu okresów do przeszukania na tym torze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not estimable from this path: its parameters are not observable together with the declared ones</source>
+        <translation>nie do oszacowania z tego toru: jego parametry nie są obserwowalne razem z zadeklarowanymi</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>backlash x %1 +- %2 um, y %3 +- %4 um</source>
+        <translation>luz zwrotny x %1 ± %2 µm, y %3 ± %4 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>scale x %1 +- %2 ppm, y %3 +- %4 ppm</source>
+        <translation>skala x %1 ± %2 ppm, y %3 ± %4 ppm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>servo lag tau %1 +- %2 s at %3 mm/min (%4 um)</source>
+        <translation>opóźnienie serwa τ %1 ± %2 s przy %3 mm/min (%4 µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cyclic on %1: period %2 +- %3 mm, amplitude %4 +- %5 um</source>
+        <translation>cykliczny na %1: okres %2 ± %3 mm, amplituda %4 ± %5 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rmse %1 -&gt; %2 um (%3 %), dBIC %4, %5</source>
+        <translation>rmse %1 → %2 µm (%3 %), dBIC %4, %5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: dBIC above -%1</source>
+        <translation>; odrzucony: dBIC powyżej -%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: rmse gain below %1 %</source>
+        <translation>; odrzucony: zysk rmse poniżej %1 %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>declared model: constant errors of the %1 setup data through the relation graph, least squares over %2 rows of %3 parts; rank %4 of %5</source>
+        <translation>zadeklarowany model: stałe błędy danych ustawczych (%1) poprzez graf relacji, najmniejsze kwadraty dla %2 wierszy z %3 przedmiotów; rząd %4 z %5</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> (rank deficient: minimum-norm solution)</source>
+        <translation> (niepełny rząd: rozwiązanie o minimalnej normie)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared fit (minimum norm), setup errors mm:</source>
+        <translation>zadeklarowane dopasowanie (minimalna norma), błędy ustawcze mm:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> %1=%2</source>
+        <translation> %1=%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not identifiable: %1 (one part only?)</source>
+        <translation>nieidentyfikowalny: %1 (tylko jeden przedmiot?)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not identifiable: %1 (time does not vary?)</source>
+        <translation>nieidentyfikowalny: %1 (czas się nie zmienia?)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 +- %2 mm/part (t = %3); </source>
+        <translation>%1 ± %2 mm/przedmiot (t = %3); </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 +- %2 mm/min (t = %3); </source>
+        <translation>%1 ± %2 mm/min (t = %3); </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part</source>
+        <translation>przedmiot</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>apparent error of %1 (mm)</source>
+        <translation>pozorny błąd %1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; preferred to %1 (its dBIC is %2 lower, below the threshold: the data cannot tell them apart)</source>
+        <translation>; preferowany względem %1 (jego dBIC jest niższe o %2, poniżej progu: dane nie pozwalają ich rozróżnić)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>; indistinguishable from %1 with these data</source>
+        <translation>; nieodróżnialny od %1 przy tych danych</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>distance from the centroid (mm)</source>
+        <translation>odległość od środka ciężkości (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deviation along the normal (mm)</source>
+        <translation>odchyłka wzdłuż normalnej (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface</source>
+        <translation>powierzchnia</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>polar angle (deg)</source>
+        <translation>kąt biegunowy (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = %2 +- %3</source>
+        <translation>%1 = %2 ± %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, %1 = %2 +- %3</source>
+        <translation>, %1 = %2 ± %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, %1 = %2</source>
+        <translation>, %1 = %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared model: rigid posture p = R q + t fitted to %1, %2 points</source>
+        <translation>zadeklarowany model: sztywne położenie p = R q + t dopasowane do %1, punkty: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the deviations along the nominal normals</source>
+        <translation>odchyłek wzdłuż normalnych nominalnych</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the in-plane residuals (planar, position-only)</source>
+        <translation>residuów w płaszczyźnie (płaskie, tylko położenie)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the residual vectors (position-only)</source>
+        <translation>wektorów residuów (tylko położenie)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared fit: rotation_deg [%1, %2, %3], translation_mm [%4, %5, %6]</source>
+        <translation>zadeklarowane dopasowanie: obrót w stopniach [%1; %2; %3], przesunięcie w mm [%4; %5; %6]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not identifiable: %1 (the rigid posture explains it with these points)</source>
+        <translation>nieidentyfikowalny: %1 (sztywne położenie wyjaśnia go przy tych punktach)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1; %2</source>
+        <translation>%1; %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; indistinguishable from %1 with these points</source>
+        <translation>; nieodróżnialny od %1 przy tych punktach</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dBIC = %1 &lt; -%2, rmse %3 -&gt; %4 %5 (-%6 %)</source>
+        <translation>dBIC = %1 &lt; -%2, rmse %3 → %4 %5 (-%6 %)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dBIC = %1 not below -%2, rmse %3 -&gt; %4 %5 (-%6 %)</source>
+        <translation>dBIC = %1 nie poniżej -%2, rmse %3 → %4 %5 (-%6 %)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dBIC = %1 &lt; -%2, rmse %3 -&gt; %4 %5 (-%6 %, below the relevant %7 %)</source>
+        <translation>dBIC = %1 &lt; -%2, rmse %3 → %4 %5 (-%6 %, poniżej istotnych %7 %)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dBIC = %1 &lt; -%2, rmse %3 -&gt; %4 %5 (-%6 %, below the relevant %7 %5)</source>
+        <translation>dBIC = %1 &lt; -%2, rmse %3 → %4 %5 (-%6 %, poniżej istotnych %7 %5)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>absorbed by the declared model</source>
+        <translation>wchłonięty przez zadeklarowany model</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its parameters are not separable with these data</source>
+        <translation>jego parametry nie są rozdzielne przy tych danych</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>too few data for the parameters</source>
+        <translation>za mało danych dla parametrów</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>converged</source>
+        <translation>zbieżny</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>budget exhausted</source>
+        <translation>budżet wyczerpany</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>iteration limit</source>
+        <translation>limit iteracji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>failed</source>
+        <translation>niepowodzenie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown</source>
+        <translation>nieznany</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+11"/>
+        <source>time constant</source>
+        <translation>stała czasowa</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>coefficient</source>
+        <translation>współczynnik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+12"/>
+        <source>drift rate</source>
+        <translation>szybkość dryfu</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <location line="+2"/>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <location line="+2"/>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis</source>
+        <translation>oś</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>period</source>
+        <translation>okres</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>amplitude</source>
+        <translation>amplituda</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>phase</source>
+        <translation>faza</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lag</source>
+        <translation>opóźnienie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>change per part</source>
+        <translation>zmiana na przedmiot</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>scale</source>
+        <translation>skala</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>offset</source>
+        <translation>przesunięcie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>angle</source>
+        <translation>kąt</translation>
     </message>
 </context>
 </TS>
