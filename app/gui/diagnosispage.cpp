@@ -108,18 +108,6 @@ QString parameterText(const diagnose::Candidate& c, const QString& units) {
   return parts.join(QStringLiteral("; "));
 }
 
-std::string settingsKeyOf(const DiagnosisSettings& s) {
-  nlohmann::json j = {{"d", diagnosisDomainKey(s.domain)},
-                      {"p", s.datasetPath},
-                      {"t", s.target},
-                      {"i", s.inputs},
-                      {"f", s.trainFraction},
-                      {"m", s.modelPath},
-                      {"tol", s.toleranceMm},
-                      {"feed", s.feedMmPerMin}};
-  return j.dump();
-}
-
 }  // namespace
 
 DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
@@ -274,7 +262,7 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
       status_->setText(tr("The diagnosis failed: %1").arg(*pendingError_));
     } else if (pending_ && pending_->has_value()) {
       result_ = std::move(**pending_);
-      if (settings_) settingsKey_ = settingsKeyOf(*settings_);
+      if (settings_) settingsKey_ = diagnosisSettingsKey(*settings_);
       showResult();
     }
     pending_.reset();
@@ -377,7 +365,7 @@ void DiagnosisPage::refresh() {
   info_->setText(info);
   stack_->setCurrentWidget(content_);
   runButton_->setEnabled(true);
-  if (result_ && settingsKey_ == settingsKeyOf(s)) {
+  if (result_ && settingsKey_ == diagnosisSettingsKey(s)) {
     showResult();
     return;
   }
@@ -401,7 +389,7 @@ bool DiagnosisPage::runNow() {
   }
   try {
     result_ = runDiagnosis(*settings_);
-    settingsKey_ = settingsKeyOf(*settings_);
+    settingsKey_ = diagnosisSettingsKey(*settings_);
     showResult();
     return true;
   } catch (const std::exception& e) {

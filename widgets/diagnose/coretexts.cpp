@@ -148,29 +148,13 @@ QString translated(const std::string& source) {
   return QCoreApplication::translate(kCoreTextContext, source.c_str());
 }
 
-/// Replaces %1 ... %99 by args in one pass (as core's substitutePlaceholders).
+/// Replaces %1 ... %99 by args in one pass: core's substitutePlaceholders on UTF-8 (the
+/// placeholders are ASCII, so byte positions are safe).
 QString substitute(const QString& format, const QStringList& args) {
-  QString out;
-  out.reserve(format.size() + 16 * static_cast<int>(args.size()));
-  for (qsizetype i = 0; i < format.size(); ++i) {
-    const QChar c = format[i];
-    if (c == QLatin1Char('%') && i + 1 < format.size() && format[i + 1] >= QLatin1Char('1') &&
-        format[i + 1] <= QLatin1Char('9')) {
-      qsizetype n = format[i + 1].unicode() - '0';
-      qsizetype len = 2;
-      if (i + 2 < format.size() && format[i + 2].isDigit()) {
-        n = 10 * n + (format[i + 2].unicode() - '0');
-        len = 3;
-      }
-      if (n <= args.size()) {
-        out += args[n - 1];
-        i += len - 1;
-        continue;
-      }
-    }
-    out += c;
-  }
-  return out;
+  std::vector<std::string> utf8;
+  utf8.reserve(static_cast<std::size_t>(args.size()));
+  for (const QString& a : args) utf8.push_back(a.toStdString());
+  return QString::fromStdString(substitutePlaceholders(format.toStdString(), utf8));
 }
 
 QString argText(const PhraseArg& a, const QLocale& locale) {

@@ -62,6 +62,18 @@ const char* diagnosisDomainKey(DiagnosisDomain domain) {
   return "thermal";
 }
 
+std::string diagnosisSettingsKey(const DiagnosisSettings& s) {
+  const nlohmann::json key = {{"d", diagnosisDomainKey(s.domain)},
+                              {"p", s.datasetPath},
+                              {"t", s.target},
+                              {"i", s.inputs},
+                              {"f", s.trainFraction},
+                              {"m", s.modelPath},
+                              {"tol", s.toleranceMm},
+                              {"feed", s.feedMmPerMin}};
+  return key.dump();
+}
+
 bool hasDiagnosisSettings(const Project& project, DiagnosisDomain domain) {
   const auto s = project.studies.find(study::kDiagnosis);
   if (s == project.studies.end() || !s->is_object()) return false;

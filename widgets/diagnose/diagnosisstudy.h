@@ -44,6 +44,10 @@ struct DiagnosisSettings {
   nlohmann::json applied = nlohmann::json::array();  ///< effects added with Apply
 };
 
+/// A text that is equal for two settings exactly when runDiagnosis gives the same result for both
+/// (domain, data, target, inputs, fraction, model, tolerance, feed), e.g. to reuse a result.
+std::string diagnosisSettingsKey(const DiagnosisSettings& settings);
+
 /// True when studies.diagnosis.<domain> exists (it may still be invalid).
 bool hasDiagnosisSettings(const Project& project, DiagnosisDomain domain);
 /// Reads studies.diagnosis.<domain>. ValidationError naming the field (source = projectPath) when the

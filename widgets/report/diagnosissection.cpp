@@ -59,16 +59,8 @@ void drawScaled(ReportPainter& out, const QRectF& rect, double designWidth,
 /// The loop of one domain's settings, run once per report (the report is laid out twice).
 std::shared_ptr<const diagnose::Diagnosis> memoDiagnosis(const ReportContext& context,
                                                          const DiagnosisSettings& s) {
-  const nlohmann::json key = {{"d", diagnosisDomainKey(s.domain)},
-                              {"p", s.datasetPath},
-                              {"t", s.target},
-                              {"i", s.inputs},
-                              {"f", s.trainFraction},
-                              {"m", s.modelPath},
-                              {"tol", s.toleranceMm},
-                              {"feed", s.feedMmPerMin}};
   return context.memo.get<diagnose::Diagnosis>(
-      key.dump(), [&] { return std::make_shared<const diagnose::Diagnosis>(runDiagnosis(s)); });
+      diagnosisSettingsKey(s), [&] { return std::make_shared<const diagnose::Diagnosis>(runDiagnosis(s)); });
 }
 
 QString parameters(const diagnose::Candidate& c) {
