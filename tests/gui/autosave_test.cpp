@@ -28,6 +28,7 @@
 #include "core/common/rng.h"
 #include "core/io/json_util.h"
 #include "core/project/project.h"
+#include "file_helpers.h"
 #include "qtapp.h"
 #include "testsupport.h"
 #include "widgets/document/demoproject.h"
@@ -36,18 +37,8 @@
 namespace metrofit {
 namespace {
 
-std::string readAll(const QString& path) {
-  QFile f(path);
-  if (!f.open(QIODevice::ReadOnly)) return {};
-  return f.readAll().toStdString();
-}
-
-/// Sets a file's modification time (recovery compares the side file's time with the project's).
-void setModified(const QString& path, const QDateTime& when) {
-  QFile f(path);
-  ASSERT_TRUE(f.open(QIODevice::ReadWrite)) << path.toStdString();
-  ASSERT_TRUE(f.setFileTime(when, QFileDevice::FileModificationTime));
-}
+using test::readAll;
+using test::setModified;
 
 class AutosaveTest : public ::testing::Test {
  protected:

@@ -40,6 +40,7 @@
 #include "core/io/json_util.h"
 #include "core/project/project.h"
 #include "core/setup/model.h"
+#include "file_helpers.h"
 #include "qtapp.h"
 #include "testsupport.h"
 #include "widgets/document/demoproject.h"
@@ -92,17 +93,8 @@ TEST(DatasetKindTitle, EveryKindOfTheProjectFormatHasItsOwnTitle) {
     EXPECT_NE(std::find(kinds.begin(), kinds.end(), d.kind), kinds.end()) << d.id << " " << d.kind;
 }
 
-std::string readAll(const QString& path) {
-  QFile f(path);
-  if (!f.open(QIODevice::ReadOnly)) return {};
-  return f.readAll().toStdString();
-}
-
-void setModified(const QString& path, const QDateTime& when) {
-  QFile f(path);
-  ASSERT_TRUE(f.open(QIODevice::ReadWrite)) << path.toStdString();
-  ASSERT_TRUE(f.setFileTime(when, QFileDevice::FileModificationTime));
-}
+using test::readAll;
+using test::setModified;
 
 class SetupGapsTest : public ::testing::Test {
  protected:
