@@ -123,7 +123,11 @@ QTableWidgetItem* headerItem(const QString& title) {
 class ColumnFitter : public QObject {
  public:
   ColumnFitter(QTableWidget* table, QList<int> wrap, bool holdMinimum)
-      : QObject(table), table_(table), wrap_(std::move(wrap)), holdMinimum_(holdMinimum) {
+      : QObject(table),
+        table_(table),
+        viewport_(table->viewport()),
+        wrap_(std::move(wrap)),
+        holdMinimum_(holdMinimum) {
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     table->horizontalHeader()->setStretchLastSection(false);
     table->setWordWrap(true);
@@ -138,8 +142,22 @@ class ColumnFitter : public QObject {
     return nullptr;
   }
 
+  /// Fits; when the fit itself resizes the viewport (taller rows bring the vertical scroll bar,
+  /// which takes its width from the viewport), fits again for the new width (at most 3 passes).
   void fit() {
-    if (fitting_) return;
+    if (fitting_) {
+      again_ = true;
+      return;
+    }
+    for (int pass = 0; pass < 3; ++pass) {
+      again_ = false;
+      fitOnce();
+      if (!again_) break;
+    }
+  }
+
+ private:
+  void fitOnce() {
     fitting_ = true;
     QTableWidget* t = table_;
     const QHeaderView* h = t->horizontalHeader();
@@ -210,17 +228,22 @@ class ColumnFitter : public QObject {
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override {
+    // Compares pointers only: events also arrive while the table is being destroyed (its
+    // QAbstractScrollArea part already gone), when calling table_->viewport() would be undefined
+    // (UBSan: "member call ... does not point to an object of type 'QAbstractScrollArea'").
     if ((watched == table_ && event->type() == QEvent::Show) ||
-        (watched == table_->viewport() && event->type() == QEvent::Resize))
+        (watched == viewport_ && event->type() == QEvent::Resize))
       fit();
     return QObject::eventFilter(watched, event);
   }
 
  private:
   QTableWidget* table_;
+  QWidget* viewport_;  ///< the table's viewport (the table never replaces it)
   QList<int> wrap_;
   bool holdMinimum_;
   bool fitting_ = false;
+  bool again_ = false;  ///< the viewport was resized while fitting
 };
 
 QTableWidget* makeTable(QWidget* parent, const QStringList& header) {
