@@ -299,7 +299,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
 <context>
     <name>metrofit::CircularPathView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+31"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+32"/>
         <source>The XY path in mm: the nominal circle true to scale; the measured path, the compensated references and the expected result as deviations from the nominal point, magnified by the factor shown.</source>
         <translation>Die XY-Bahn in mm: der Nennkreis maßstabsgetreu; die gemessene Bahn, die kompensierten Sollwerte und das erwartete Ergebnis als Abweichungen vom Nennpunkt, vergrößert um den angegebenen Faktor.</translation>
     </message>
@@ -368,7 +368,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+529"/>
+        <location line="+517"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
@@ -378,12 +378,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>A&amp;usführen</translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-43"/>
         <source>mm/part</source>
         <translation>mm/Werkstück</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+44"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -1486,7 +1486,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Minimax</translation>
     </message>
     <message>
-        <location line="+185"/>
+        <location line="+208"/>
         <source>Allow &amp;scale</source>
         <translation>&amp;Skalierung</translation>
     </message>
@@ -2180,7 +2180,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lageausrichtung</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+36"/>
         <source>rmse %1 %2, max |e| %3 %2</source>
         <translation>rmse %1 %2, max |e| %3 %2</translation>
     </message>
@@ -4832,12 +4832,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Wert</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+30"/>
         <source>No SPC series yet.</source>
         <translation>Noch keine SPC-Reihe.</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+26"/>
         <source>Histogram of %1 (%2 values)</source>
         <translation>Histogramm von %1 (%2 Werte)</translation>
     </message>
@@ -5048,7 +5048,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Wert</translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+144"/>
+        <source>feed speed</source>
+        <translation>Vorschubgeschwindigkeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -5091,7 +5096,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>die Verlagerung eilt dem Sensor nach</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>Sensor plotted against the displacement, or all sensors side by side</source>
         <translation>Sensor über der Verlagerung aufgetragen oder alle Sensoren nebeneinander</translation>
     </message>
@@ -5141,7 +5146,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Zeitkonstante eines Verzögerungsglieds erster Ordnung zwischen Sensor und Verlagerung; &gt; 0: der Sensor eilt nach</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+18"/>
         <source>&amp;Sensor:</source>
         <translation>&amp;Sensor:</translation>
     </message>
@@ -5156,7 +5161,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Hysterese von %1 wird analysiert…</translation>
     </message>
     <message>
-        <location line="-141"/>
+        <location line="-151"/>
         <source>All sensors</source>
         <translation>Alle Sensoren</translation>
     </message>
@@ -5196,7 +5201,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Grenze Anpassung | Test</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+71"/>
         <source>%1: lag %2 min</source>
         <translation>%1: Verzug %2 min</translation>
     </message>
@@ -5206,7 +5211,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 über %2: Verzug %3 min, Schleife %4</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>heating</source>
         <translation>Erwärmung</translation>
     </message>
@@ -6071,7 +6076,62 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+2"/>
+        <source>no nominal value given: nothing to compensate against</source>
+        <translation>kein Nennwert angegeben: nichts, worauf kompensiert werden könnte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subgroup %1 beyond the X-bar limits</source>
+        <translation>Untergruppe %1 außerhalb der x̄-Eingriffsgrenzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subgroups %1 beyond the X-bar limits</source>
+        <translation>Untergruppen %1 außerhalb der x̄-Eingriffsgrenzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subgroup %1 beyond the R limits</source>
+        <translation>Untergruppe %1 außerhalb der R-Eingriffsgrenzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subgroups %1 beyond the R limits</source>
+        <translation>Untergruppen %1 außerhalb der R-Eingriffsgrenzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; subgroup %1 beyond the R limits</source>
+        <translation>; Untergruppe %1 außerhalb der R-Eingriffsgrenzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; subgroups %1 beyond the R limits</source>
+        <translation>; Untergruppen %1 außerhalb der R-Eingriffsgrenzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not compensated: the process is out of control (%1); remove the special causes first, a correction would chase them</source>
+        <translation>nicht kompensiert: der Prozess ist nicht beherrscht (%1); zuerst die besonderen Ursachen beseitigen, eine Korrektur würde ihnen nachlaufen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not compensated: the systematic error %1 is within its interval +-%2 (k = %3): random scatter, not a systematic error</source>
+        <translation>nicht kompensiert: der systematische Fehler %1 liegt in seinem Intervall ±%2 (k = %3): zufällige Streuung, kein systematischer Fehler</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not compensated: the systematic error %1 is below the smallest correction %2</source>
+        <translation>nicht kompensiert: der systematische Fehler %1 ist kleiner als die kleinste Korrektur %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>compensate %1: the systematic error (nominal - mean, Eq. 20) is beyond its interval +-%2 (k = %3) and the process is in control (%4 subgroups of %5)</source>
+        <translation>kompensieren %1: der systematische Fehler (Nennwert − Mittelwert, Gl. 20) liegt außerhalb seines Intervalls ±%2 (k = %3) und der Prozess ist beherrscht (%4 Untergruppen zu %5)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <location line="+11"/>
         <source>time constant</source>
         <translation>Zeitkonstante</translation>

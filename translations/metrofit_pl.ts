@@ -299,7 +299,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
 <context>
     <name>metrofit::CircularPathView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+31"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+32"/>
         <source>The XY path in mm: the nominal circle true to scale; the measured path, the compensated references and the expected result as deviations from the nominal point, magnified by the factor shown.</source>
         <translation>Tor XY w mm: okrąg nominalny w skali; zmierzony tor, skompensowane wartości zadane i oczekiwany wynik jako odchyłki od punktu nominalnego, powiększone o podany współczynnik.</translation>
     </message>
@@ -368,7 +368,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+529"/>
+        <location line="+517"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
@@ -378,12 +378,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>&amp;Uruchom</translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-43"/>
         <source>mm/part</source>
         <translation>mm/przedmiot</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+44"/>
         <source>Cancel</source>
         <translation>Anuluj</translation>
     </message>
@@ -1487,7 +1487,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>minimaks</translation>
     </message>
     <message>
-        <location line="+185"/>
+        <location line="+208"/>
         <source>Allow &amp;scale</source>
         <translation>&amp;Skala</translation>
     </message>
@@ -2182,7 +2182,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dopasowanie położenia</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+36"/>
         <source>rmse %1 %2, max |e| %3 %2</source>
         <translation>rmse %1 %2, maks. |e| %3 %2</translation>
     </message>
@@ -4845,12 +4845,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>wartość</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+30"/>
         <source>No SPC series yet.</source>
         <translation>Brak jeszcze serii SPC.</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+26"/>
         <source>Histogram of %1 (%2 values)</source>
         <translation>Histogram %1 (wartości: %2)</translation>
     </message>
@@ -5061,7 +5061,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>wartość</translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+144"/>
+        <source>feed speed</source>
+        <translation>prędkość posuwu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -5104,7 +5109,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>przemieszczenie opóźnia się względem czujnika</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>Sensor plotted against the displacement, or all sensors side by side</source>
         <translation>Czujnik względem przemieszczenia lub wszystkie czujniki obok siebie</translation>
     </message>
@@ -5154,7 +5159,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Stała czasowa członu inercyjnego pierwszego rzędu między czujnikiem a przemieszczeniem; &gt; 0: czujnik się opóźnia</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+18"/>
         <source>&amp;Sensor:</source>
         <translation>Cz&amp;ujnik:</translation>
     </message>
@@ -5169,7 +5174,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Analiza histerezy %1…</translation>
     </message>
     <message>
-        <location line="-141"/>
+        <location line="-151"/>
         <source>All sensors</source>
         <translation>Wszystkie czujniki</translation>
     </message>
@@ -5209,7 +5214,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>granica dopas./test</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+71"/>
         <source>%1: lag %2 min</source>
         <translation>%1: opóźnienie %2 min</translation>
     </message>
@@ -5219,7 +5224,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>%1 względem %2: opóźnienie %3 min, pętla %4</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>heating</source>
         <translation>nagrzewanie</translation>
     </message>
@@ -6084,7 +6089,62 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>nieznany</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+2"/>
+        <source>no nominal value given: nothing to compensate against</source>
+        <translation>nie podano wartości nominalnej: brak odniesienia do kompensacji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subgroup %1 beyond the X-bar limits</source>
+        <translation>podgrupa %1 poza granicami karty X-średnie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subgroups %1 beyond the X-bar limits</source>
+        <translation>podgrupy %1 poza granicami karty X-średnie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subgroup %1 beyond the R limits</source>
+        <translation>podgrupa %1 poza granicami karty R</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subgroups %1 beyond the R limits</source>
+        <translation>podgrupy %1 poza granicami karty R</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; subgroup %1 beyond the R limits</source>
+        <translation>; podgrupa %1 poza granicami karty R</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; subgroups %1 beyond the R limits</source>
+        <translation>; podgrupy %1 poza granicami karty R</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not compensated: the process is out of control (%1); remove the special causes first, a correction would chase them</source>
+        <translation>bez kompensacji: proces nie jest pod kontrolą (%1); najpierw usuń przyczyny specjalne, korekta goniłaby je</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not compensated: the systematic error %1 is within its interval +-%2 (k = %3): random scatter, not a systematic error</source>
+        <translation>bez kompensacji: błąd systematyczny %1 mieści się w swoim przedziale ±%2 (k = %3): rozrzut losowy, nie błąd systematyczny</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not compensated: the systematic error %1 is below the smallest correction %2</source>
+        <translation>bez kompensacji: błąd systematyczny %1 jest mniejszy niż najmniejsza korekta %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>compensate %1: the systematic error (nominal - mean, Eq. 20) is beyond its interval +-%2 (k = %3) and the process is in control (%4 subgroups of %5)</source>
+        <translation>kompensuj %1: błąd systematyczny (nominał − średnia, równ. 20) wykracza poza swój przedział ±%2 (k = %3), a proces jest pod kontrolą (%4 podgrup po %5)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <location line="+11"/>
         <source>time constant</source>
         <translation>stała czasowa</translation>

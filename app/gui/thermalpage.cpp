@@ -62,7 +62,7 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   title->setToolTip(studySummary(QString::fromLatin1(study::kThermal)));
 
   combo_->setObjectName(QStringLiteral("thermalLogCombo"));
-  combo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  combo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);  // the longest id shows in full
   combo_->setMinimumContentsLength(16);
   info_->setObjectName(QStringLiteral("thermalInfo"));
   info_->setWordWrap(true);
@@ -333,7 +333,7 @@ void ThermalPage::applyModular(const ModularRun& run) {
                            .arg(QString::fromLatin1(kModularZId), QString::fromLatin1(kModularCId),
                                 QString::fromLatin1(kModularCombinedId), QString::fromStdString(m.target),
                                 inputs.join(QStringLiteral(", ")))
-                           .arg(reduction, 0, 'f', 1);
+                           .arg(QLocale().toString(reduction, 'f', 1));
   models_->setModular(run.result, run.testLog.get(), text);
 }
 

@@ -18,12 +18,6 @@ std::string fmt(double v) {
   return buf;
 }
 
-std::string signedFmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%+.6g", v);
-  return buf;
-}
-
 std::string indexList(const std::vector<std::size_t>& idx) {
   std::string out;
   const std::size_t shown = std::min<std::size_t>(idx.size(), 8);
@@ -129,43 +123,51 @@ SystematicError systematicError(const XbarRChart& chart, double sigmaWithin, std
 CompensationDecision gateCompensation(const XbarRChart& chart, const std::optional<SystematicError>& sys,
                                       const SpcOptions& o) {
   CompensationDecision d;
-  if (!sys) {
-    d.reason = "no nominal value given: nothing to compensate against";
+  const auto decide = [&d](Phrases parts) {
+    d.reasonParts = std::move(parts);
+    d.reason = english(d.reasonParts);
     return d;
-  }
+  };
+  if (!sys) return decide({Phrase("no nominal value given: nothing to compensate against")});
   if (!chart.inControl()) {
-    std::string where;
+    Phrases where;
     if (!chart.xbarOutOfControl.empty()) {
-      where += "subgroup" + std::string(chart.xbarOutOfControl.size() == 1 ? " " : "s ") +
-               indexList(chart.xbarOutOfControl) + " beyond the X-bar limits";
+      where.emplace_back(chart.xbarOutOfControl.size() == 1 ? "subgroup %1 beyond the X-bar limits"
+                                                            : "subgroups %1 beyond the X-bar limits",
+                         std::vector{PhraseArg::name(indexList(chart.xbarOutOfControl))});
     }
     if (!chart.rOutOfControl.empty()) {
-      where += std::string(where.empty() ? "" : "; ") + "subgroup" +
-               (chart.rOutOfControl.size() == 1 ? " " : "s ") + indexList(chart.rOutOfControl) +
-               " beyond the R limits";
+      const bool one = chart.rOutOfControl.size() == 1;
+      where.emplace_back(
+          where.empty() ? (one ? "subgroup %1 beyond the R limits" : "subgroups %1 beyond the R limits")
+                        : (one ? "; subgroup %1 beyond the R limits" : "; subgroups %1 beyond the R limits"),
+          std::vector{PhraseArg::name(indexList(chart.rOutOfControl))});
     }
-    d.reason = "not compensated: the process is out of control (" + where +
-               "); remove the special causes first, a correction would chase them";
-    return d;
+    return decide(
+        {Phrase("not compensated: the process is out of control (%1); remove the special causes first, "
+                "a correction would chase them",
+                {PhraseArg::text(std::move(where))})});
   }
-  const std::string interval = "+-" + fmt(sys->halfWidth) + " (k = " + fmt(o.coverageFactor) + ")";
+  const PhraseArg error = PhraseArg::signedNumber(sys->error, 6);
+  const PhraseArg halfWidth = PhraseArg::number(sys->halfWidth, 6);
+  const PhraseArg k = PhraseArg::number(o.coverageFactor, 6);
   if (!sys->significant) {
-    d.reason = "not compensated: the systematic error " + signedFmt(sys->error) + " is within its interval " +
-               interval + ": random scatter, not a systematic error";
-    return d;
+    return decide(
+        {Phrase("not compensated: the systematic error %1 is within its interval +-%2 (k = %3): random "
+                "scatter, not a systematic error",
+                {error, halfWidth, k})});
   }
   if (std::abs(sys->error) < o.minCorrection) {
-    d.reason = "not compensated: the systematic error " + signedFmt(sys->error) +
-               " is below the smallest correction " + fmt(o.minCorrection);
-    return d;
+    return decide({Phrase("not compensated: the systematic error %1 is below the smallest correction %2",
+                          {error, PhraseArg::number(o.minCorrection, 6)})});
   }
   d.apply = true;
   d.correction = sys->error;
-  d.reason = "compensate " + signedFmt(sys->error) +
-             ": the systematic error (nominal - mean, Eq. 20) is beyond its " + "interval " + interval +
-             " and the process is in control (" + std::to_string(chart.subgroups()) + " subgroups of " +
-             std::to_string(chart.subgroupSize) + ")";
-  return d;
+  return decide(
+      {Phrase("compensate %1: the systematic error (nominal - mean, Eq. 20) is beyond its interval +-%2 "
+              "(k = %3) and the process is in control (%4 subgroups of %5)",
+              {error, halfWidth, k, PhraseArg::integer(static_cast<long long>(chart.subgroups())),
+               PhraseArg::integer(static_cast<long long>(chart.subgroupSize))})});
 }
 
 SpcResult analyseSpc(const std::vector<double>& values, const SpcOptions& o, const ErrorContext& where) {

@@ -34,6 +34,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "core/common/error.h"
+#include "core/common/text.h"
 #include "core/spc/control_chart.h"
 
 namespace metrofit {
@@ -75,7 +76,8 @@ struct LineFit {
 struct CompensationDecision {
   bool apply = false;
   double correction = 0.0;  ///< add to the reference (0 when not applied)
-  std::string reason;       ///< one line a person can read
+  std::string reason;       ///< one line a person can read (= english(reasonParts))
+  Phrases reasonParts;      ///< the same line as translatable phrases (core/common/text.h)
 };
 
 struct SpcResult {

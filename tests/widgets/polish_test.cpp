@@ -121,12 +121,15 @@ TEST(Palette, MeasuredIsTheSameColourInThePolarPlotAndInTheThermalModelChart) {
       ++measured;
       EXPECT_EQ(line->pen().color(), palette::measured());
     }
-    if (line->name() == thermalModelName(thermal::ThermalModelKind::Gnnmci))
+    if (line->name() == thermalModelName(thermal::ThermalModelKind::Gnnmci)) {
       EXPECT_EQ(line->pen().color(), palette::modelGnnmci());
-    if (line->name() == thermalModelName(thermal::ThermalModelKind::Gmc))
+    }
+    if (line->name() == thermalModelName(thermal::ThermalModelKind::Gmc)) {
       EXPECT_EQ(line->pen().color(), palette::modelGmc());
-    if (line->name() == thermalModelName(thermal::ThermalModelKind::Mlp))
+    }
+    if (line->name() == thermalModelName(thermal::ThermalModelKind::Mlp)) {
       EXPECT_EQ(line->pen().color(), palette::modelMlp());
+    }
   }
   EXPECT_EQ(measured, 1);
   EXPECT_EQ(thermalPhaseColor(ThermalPhaseKind::Heating), palette::heatingFill());

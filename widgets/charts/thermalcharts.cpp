@@ -191,13 +191,28 @@ QString displayUnit(const std::string& unit) {
   return u;
 }
 
+QString channelUnit(const ThermalChannel& channel) {
+  QString unit = displayUnit(channel.unit);
+  if (unit.isEmpty()) {
+    // Suffixes core does not know as units: "_mpm" is a feed speed in m/min (e.g. z_speed_mpm).
+    const QString name = QString::fromStdString(channel.name).toLower();
+    if (name.endsWith(QLatin1String("_mpm")) || name.endsWith(QLatin1String("_m_per_min"))) {
+      unit = QStringLiteral("m/min");
+    } else if (name.endsWith(QLatin1String("_mmpm")) || name.endsWith(QLatin1String("_mm_per_min"))) {
+      unit = QStringLiteral("mm/min");
+    } else if (channelKind(channel) == ChannelKind::Temperature) {
+      unit = QStringLiteral("°C");
+    }
+  }
+  return unit;
+}
+
 QString channelAxisTitle(const ThermalChannel& channel) {
   const ChannelKind kind = channelKind(channel);
-  QString unit = displayUnit(channel.unit);
-  if (unit.isEmpty() && kind == ChannelKind::Temperature) {
-    unit = QStringLiteral("°C");
-  }
-  return unit.isEmpty() ? kindWord(kind) : ThermalChartsText::tr("%1 (%2)").arg(kindWord(kind), unit);
+  const QString unit = channelUnit(channel);
+  QString word = kindWord(kind);
+  if (unit.endsWith(QLatin1String("/min"))) word = ThermalChartsText::tr("feed speed");
+  return unit.isEmpty() ? word : ThermalChartsText::tr("%1 (%2)").arg(word, unit);
 }
 
 bool thermalTimeAxisInHours(const ThermalLog& log) {
@@ -241,7 +256,7 @@ QChart* makeThermalTrendChart(const ThermalLog& log, const QStringList& channels
       continue;
     }
     const ChannelKind kind = channelKind(c);
-    const QString unit = displayUnit(c.unit);
+    const QString unit = channelUnit(c);
     auto it = std::find_if(groups.begin(), groups.end(),
                            [&](const AxisGroup& g) { return g.kind == kind && g.unit == unit; });
     if (it == groups.end()) {

@@ -48,7 +48,12 @@ QColor thermalPhaseColor(ThermalPhaseKind kind);
 /// Unit of a channel as printed: "um" -> "µm", "degC" -> "°C", "ue" -> "µε", others as they are.
 QString displayUnit(const std::string& unit);
 
-/// Axis title of a channel: "temperature (°C)", "displacement (µm)", "speed (rpm)", ...
+/// Unit of a channel as printed: displayUnit(channel.unit), else from a name suffix core does not
+/// treat as a unit ("z_speed_mpm" -> "m/min"), "°C" for a temperature without one, else empty.
+QString channelUnit(const ThermalChannel& channel);
+
+/// Axis title of a channel: "temperature (°C)", "displacement (µm)", "speed (rpm)",
+/// "feed speed (m/min)", ...
 QString channelAxisTitle(const ThermalChannel& channel);
 
 /// True when the time axis is in hours (the log spans more than 180 min).

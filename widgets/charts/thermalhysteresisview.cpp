@@ -160,7 +160,7 @@ struct ThermalHysteresisView::Impl {
                                                : std::string());
     for (int r = 0; r < table->rowCount(); ++r) {
       const thermal::SensorHysteresis& h = analysis.sensors[static_cast<std::size_t>(r)];
-      const QString unit = log.indexOf(h.sensor) >= 0 ? displayUnit(log.channel(h.sensor).unit) : QString();
+      const QString unit = log.indexOf(h.sensor) >= 0 ? channelUnit(log.channel(h.sensor)) : QString();
       const QStringList cells = {QString::fromStdString(h.sensor),
                                  QLocale().toString(h.loopArea, 'f', 2),
                                  QLocale().toString(h.normalisedLoopArea, 'f', 3),
@@ -178,7 +178,9 @@ struct ThermalHysteresisView::Impl {
         table->setItem(r, c, item);
       }
     }
-    table->resizeColumnsToContents();
+    // Fit the width: the sensor column to its names, the five numbers share the rest (headers
+    // elide, their tooltips give the full text); no sideways scrolling.
+    table->resizeColumnToContents(0);
   }
 };
 
@@ -211,6 +213,14 @@ ThermalHysteresisView::ThermalHysteresisView(QWidget* parent) : QWidget(parent),
       tr("Loop area divided by the product of the two ranges: 0 for a line, 0.785 for a circle"));
   d->table->horizontalHeaderItem(3)->setToolTip(
       tr("Time constant of a first-order lag between sensor and displacement; > 0: the sensor lags"));
+  for (int c = 0; c < d->table->columnCount(); ++c) {
+    QTableWidgetItem* header = d->table->horizontalHeaderItem(c);
+    if (header->toolTip().isEmpty()) header->setToolTip(header->text());
+    d->table->horizontalHeader()->setSectionResizeMode(
+        c, c == 0 ? QHeaderView::ResizeToContents : QHeaderView::Stretch);
+  }
+  d->table->horizontalHeader()->setTextElideMode(Qt::ElideRight);
+  d->table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   d->table->verticalHeader()->setVisible(false);
   d->table->setEditTriggers(QAbstractItemView::NoEditTriggers);
   d->table->setSelectionBehavior(QAbstractItemView::SelectRows);

@@ -7,6 +7,7 @@
 #include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QLocale>
 #include <QLogValueAxis>
 #include <QPen>
 #include <QValueAxis>
@@ -60,8 +61,7 @@ QString unitSuffix(const ThermalLog& log, const std::string& column) {
   const int i = log.indexOf(column);
   if (i < 0) return {};
   const ThermalChannel& c = log.channels[static_cast<std::size_t>(i)];
-  QString u = displayUnit(c.unit);
-  if (u.isEmpty() && channelKind(c) == ChannelKind::Temperature) u = QStringLiteral("°C");
+  QString u = channelUnit(c);
   return u.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(u);
 }
 
@@ -206,11 +206,12 @@ QChart* makeHysteresisChart(const ThermalLog& log, const thermal::ThermalSeries&
   QString title;
   if (ok && static_cast<std::size_t>(input) < analysis.sensors.size()) {
     const thermal::SensorHysteresis& h = analysis.sensors[static_cast<std::size_t>(input)];
-    title = options.compactTitle ? ModelChartsText::tr("%1: lag %2 min").arg(sensor).arg(h.tauMin, 0, 'f', 1)
-                                 : ModelChartsText::tr("%1 against %2: lag %3 min, loop %4")
-                                       .arg(QString::fromStdString(series.targetName), sensor)
-                                       .arg(h.tauMin, 0, 'f', 1)
-                                       .arg(h.normalisedLoopArea, 0, 'f', 3);
+    const QLocale locale;
+    title = options.compactTitle
+                ? ModelChartsText::tr("%1: lag %2 min").arg(sensor, locale.toString(h.tauMin, 'f', 1))
+                : ModelChartsText::tr("%1 against %2: lag %3 min, loop %4")
+                      .arg(QString::fromStdString(series.targetName), sensor,
+                           locale.toString(h.tauMin, 'f', 1), locale.toString(h.normalisedLoopArea, 'f', 3));
   }
   QChart* chart = newChart(title);
   auto* x = new QValueAxis;

@@ -117,6 +117,27 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", "iteration limit"),
     QT_TRANSLATE_NOOP("metrofit::core", "failed"),
     QT_TRANSLATE_NOOP("metrofit::core", "unknown"),
+    // core/spc/spc.cpp gateCompensation (the SPC compensation decision)
+    QT_TRANSLATE_NOOP("metrofit::core", "no nominal value given: nothing to compensate against"),
+    QT_TRANSLATE_NOOP("metrofit::core", "subgroup %1 beyond the X-bar limits"),
+    QT_TRANSLATE_NOOP("metrofit::core", "subgroups %1 beyond the X-bar limits"),
+    QT_TRANSLATE_NOOP("metrofit::core", "subgroup %1 beyond the R limits"),
+    QT_TRANSLATE_NOOP("metrofit::core", "subgroups %1 beyond the R limits"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; subgroup %1 beyond the R limits"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; subgroups %1 beyond the R limits"),
+    QT_TRANSLATE_NOOP(
+        "metrofit::core",
+        "not compensated: the process is out of control (%1); remove the special causes first, a "
+        "correction would chase them"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "not compensated: the systematic error %1 is within its interval +-%2 (k = %3): random "
+                      "scatter, not a systematic error"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "not compensated: the systematic error %1 is below the smallest correction %2"),
+    QT_TRANSLATE_NOOP(
+        "metrofit::core",
+        "compensate %1: the systematic error (nominal - mean, Eq. 20) is beyond its interval +-%2 "
+        "(k = %3) and the process is in control (%4 subgroups of %5)"),
 };
 
 // Display names of the diagnosis parameters (CONTRACT.md keys); the unit is shown with the value.

@@ -734,7 +734,9 @@ void paintHistogram(QPainter& p, const QRectF& area, const HistogramData& d, con
                          kinematic_colour::specification(), Qt::SolidLine},
                         {d.nominal, PlotText::tr("nominal"), kinematic_colour::nominal(), Qt::DashLine},
                         {d.mean, PlotText::tr("mean"), kinematic_colour::centreLine(), Qt::DashDotLine}};
-  int row = 0;
+  // Each label goes on the first text row (from the top) where it overlaps no label placed before,
+  // so labels of close lines (nominal and mean) are staggered vertically and never overlap.
+  std::vector<QRectF> placed;
   for (const Mark& m : marks) {
     if (!m.value) continue;
     const double x = L.map(*m.value, 0).x();
@@ -743,10 +745,12 @@ void paintHistogram(QPainter& p, const QRectF& area, const HistogramData& d, con
     p.setPen(m.colour.darker(120));
     const bool right = x < L.plotArea().center().x();
     const double w = fm.horizontalAdvance(m.name) + 4;
-    p.drawText(
-        QRectF(right ? x + 3 : x - w - 3, L.plotArea().top() + 2 + (row % 2) * fm.height(), w, fm.height()),
-        Qt::AlignVCenter | (right ? Qt::AlignLeft : Qt::AlignRight), m.name);
-    ++row;
+    QRectF box(right ? x + 3 : x - w - 3, L.plotArea().top() + 2, w, fm.height());
+    while (std::any_of(placed.begin(), placed.end(),
+                       [&box](const QRectF& q) { return q.adjusted(-2, 0, 2, 0).intersects(box); }))
+      box.translate(0, fm.height());
+    placed.push_back(box);
+    p.drawText(box, Qt::AlignVCenter | (right ? Qt::AlignLeft : Qt::AlignRight), m.name);
   }
   p.restore();
 }

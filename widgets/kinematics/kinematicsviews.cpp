@@ -1,6 +1,7 @@
 #include "widgets/kinematics/kinematicsviews.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/common/tablecopy.h"
+#include "widgets/diagnose/coretexts.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -147,11 +148,17 @@ SpcView::SpcView(QWidget* parent)
   table_->setHorizontalHeaderLabels({tr("index"), tr("value")});
   table_->verticalHeader()->hide();
   table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setMaximumSectionSize(180);  // long names wrap, the values keep room
   table_->horizontalHeader()->setStretchLastSection(true);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setWordWrap(true);
-  table_->setMinimumWidth(300);
-  table_->setMaximumWidth(380);
+  table_->setMinimumWidth(380);
+  table_->setMaximumWidth(440);
+  // Values wrap instead of scrolling sideways; rows follow the column widths the layout settles on.
+  table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  table_->setHorizontalScrollMode(QAbstractItemView::ScrollPerPixel);
+  connect(table_->horizontalHeader(), &QHeaderView::sectionResized, table_,
+          [this] { table_->resizeRowsToContents(); });
   message_->setObjectName(QStringLiteral("spcMessage"));
   message_->setWordWrap(true);
   message_->setAlignment(Qt::AlignCenter);
@@ -169,6 +176,10 @@ SpcView::SpcView(QWidget* parent)
   stack->addWidget(content);
   stack->addWidget(message_);
   setMessage(tr("No SPC series yet."));
+}
+
+QString SpcView::compensationText(const SpcResult& r) {
+  return coreText(r.decision.reasonParts, r.decision.reason);
 }
 
 void SpcView::setMessage(const QString& text) {
@@ -239,7 +250,7 @@ void SpcView::setResult(const SpcResult& r, const std::vector<double>& values, c
                tr("%1° (slope %2%3 per sample, r² %4)")
                    .arg(locale.toString(r.trend.angleDeg, 'g', 3), num(r.trend.slope, 3), u,
                         locale.toString(r.trend.r2, 'f', 2))});
-  rows.append({tr("compensation"), QString::fromStdString(r.decision.reason)});
+  rows.append({tr("compensation"), compensationText(r)});
   table_->setRowCount(static_cast<int>(rows.size()));
   for (int i = 0; i < rows.size(); ++i) {
     table_->setItem(i, 0, new QTableWidgetItem(rows[i].first));

@@ -108,6 +108,10 @@ class SpcView : public QWidget {
   HistogramView* histogram() const { return histogram_; }
   QTableWidget* indexTable() const { return table_; }
   QLabel* messageLabel() const { return message_; }
+  /// The compensation decision of `r` in the user's language with the locale's numbers: core's
+  /// decision phrases (core/spc gateCompensation) translated; `decision.reason` stays the English
+  /// text of the JSON / CLI.
+  static QString compensationText(const SpcResult& r);
 
  private:
   ControlChartView* mean_;
