@@ -216,16 +216,26 @@ ThermalHysteresisView::ThermalHysteresisView(QWidget* parent) : QWidget(parent),
   for (int c = 0; c < d->table->columnCount(); ++c) {
     QTableWidgetItem* header = d->table->horizontalHeaderItem(c);
     if (header->toolTip().isEmpty()) header->setToolTip(header->text());
-    d->table->horizontalHeader()->setSectionResizeMode(
-        c, c == 0 ? QHeaderView::ResizeToContents : QHeaderView::Stretch);
+    // Two lines, broken at the space nearest the middle: the translated headers are wider than the
+    // five equal columns (German 'Schleife / Spannweiten' needs about 150 px of about 95).
+    QString text = header->text();
+    qsizetype best = -1;
+    for (qsizetype i = text.indexOf(QLatin1Char(' ')); i >= 0; i = text.indexOf(QLatin1Char(' '), i + 1))
+      if (best < 0 || std::abs(i - text.size() / 2) < std::abs(best - text.size() / 2)) best = i;
+    if (best > 0) {
+      text[best] = QLatin1Char('\n');
+      header->setText(text);
+    }
+    d->table->horizontalHeader()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
   }
   d->table->horizontalHeader()->setTextElideMode(Qt::ElideRight);
+  d->table->horizontalHeader()->setStretchLastSection(true);
   d->table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   d->table->verticalHeader()->setVisible(false);
   d->table->setEditTriggers(QAbstractItemView::NoEditTriggers);
   d->table->setSelectionBehavior(QAbstractItemView::SelectRows);
-  d->table->setMinimumWidth(440);
-  d->table->setMaximumWidth(520);
+  d->table->setMinimumWidth(480);
+  d->table->setMaximumWidth(560);
   d->phases = new QLabel(this);
   d->phases->setWordWrap(true);
 
