@@ -2026,7 +2026,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/pointview/pointsetview.cpp" line="+293"/>
+        <location filename="../widgets/pointview/pointsetview.cpp" line="+320"/>
         <source>deviation
 (mm)</source>
         <translation>Abw.
@@ -2044,8 +2044,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>green: within +-%1 mm; large: out of tolerance</source>
-        <translation>grün: innerhalb +-%1 mm; groß: außerhalb der Toleranz</translation>
+        <source>green: within ±%1 mm; large: out of tolerance</source>
+        <translation>grün: innerhalb ±%1 mm; groß: außerhalb der Toleranz</translation>
     </message>
     <message>
         <location line="+21"/>
@@ -5146,7 +5146,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Zeitkonstante eines Verzögerungsglieds erster Ordnung zwischen Sensor und Verlagerung; &gt; 0: der Sensor eilt nach</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+28"/>
         <source>&amp;Sensor:</source>
         <translation>&amp;Sensor:</translation>
     </message>
@@ -5161,7 +5161,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Hysterese von %1 wird analysiert…</translation>
     </message>
     <message>
-        <location line="-151"/>
+        <location line="-161"/>
         <source>All sensors</source>
         <translation>Alle Sensoren</translation>
     </message>

@@ -2028,7 +2028,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/pointview/pointsetview.cpp" line="+293"/>
+        <location filename="../widgets/pointview/pointsetview.cpp" line="+320"/>
         <source>deviation
 (mm)</source>
         <translation>odchyłka
@@ -2046,8 +2046,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>green: within +-%1 mm; large: out of tolerance</source>
-        <translation>zielone: w granicach +-%1 mm; duże: poza tolerancją</translation>
+        <source>green: within ±%1 mm; large: out of tolerance</source>
+        <translation>zielone: w granicach ±%1 mm; duże: poza tolerancją</translation>
     </message>
     <message>
         <location line="+21"/>
@@ -5159,7 +5159,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Stała czasowa członu inercyjnego pierwszego rzędu między czujnikiem a przemieszczeniem; &gt; 0: czujnik się opóźnia</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+28"/>
         <source>&amp;Sensor:</source>
         <translation>Cz&amp;ujnik:</translation>
     </message>
@@ -5174,7 +5174,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Analiza histerezy %1…</translation>
     </message>
     <message>
-        <location line="-151"/>
+        <location line="-161"/>
         <source>All sensors</source>
         <translation>Wszystkie czujniki</translation>
     </message>

@@ -53,6 +53,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
+#include <vtkScalarBarActorInternal.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
@@ -63,6 +64,33 @@
 #include "widgets/pointview/vtkglwidget.h"
 
 namespace metrofit {
+
+/// A colour bar whose tick labels use the GUI locale's decimal separator: VTK formats them with
+/// printf's LabelFormat in the C locale ("0.05" in a German window); the labels are made by
+/// ConfigureTicks (called on every layout), and their '.' is replaced right after it.
+class LocaleScalarBarActor : public vtkScalarBarActor {
+ public:
+  /// What vtkStandardNewMacro does (the macros end without ';', which -Wpedantic and clang-format
+  /// both dislike).
+  static LocaleScalarBarActor* New() {
+    auto* actor = new LocaleScalarBarActor;
+    actor->InitializeObjectBase();
+    return actor;
+  }
+  char decimalPoint = '.';
+
+ protected:
+  void ConfigureTicks() override {
+    vtkScalarBarActor::ConfigureTicks();
+    if (decimalPoint == '.') return;
+    for (vtkTextActor* label : this->P->TextActors) {
+      if (label == nullptr || label->GetInput() == nullptr) continue;
+      std::string text = label->GetInput();
+      std::replace(text.begin(), text.end(), '.', decimalPoint);
+      label->SetInput(text.c_str());
+    }
+  }
+};
 
 namespace {
 
@@ -261,7 +289,7 @@ struct PointSetScene {
   MarkerLayer nominal;
   TipLayer before;
   TipLayer after;
-  vtkNew<vtkScalarBarActor> scalarBar;
+  vtkNew<LocaleScalarBarActor> scalarBar;
   vtkNew<vtkTextActor> title;
   vtkNew<vtkTextActor> caption;
   vtkNew<vtkRenderer> axesRenderer;
@@ -290,6 +318,8 @@ struct PointSetScene {
     after.hide();
 
     scalarBar->SetLookupTable(colours);
+    const QString point = QLocale().decimalPoint();
+    if (point.size() == 1 && point.at(0).unicode() < 128) scalarBar->decimalPoint = point.at(0).toLatin1();
     scalarBar->SetTitle(PointSetView::tr("deviation\n(mm)").toUtf8().constData());
     scalarBar->SetNumberOfLabels(5);
     scalarBar->SetLabelFormat("%.3g");
@@ -522,7 +552,7 @@ struct PointSetView::Impl {
           QLatin1Char('\n') + PointSetView::tr("after matching: solid; before (nominal and measured): faded");
     }
     if (tolerance > 0.0) {
-      text += QLatin1Char('\n') + PointSetView::tr("green: within +-%1 mm; large: out of tolerance")
+      text += QLatin1Char('\n') + PointSetView::tr("green: within ±%1 mm; large: out of tolerance")
                                       .arg(locale.toString(tolerance, 'g', 4));
     }
     scene->caption->SetInput(text.toUtf8().constData());
