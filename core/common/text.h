@@ -6,7 +6,7 @@
 // the JSON stays exactly as it is); next to it, it records the same text as a list of Phrases, and
 // the English string is made *from* that list (english()), so the two cannot differ.
 //
-// A Phrase is an English template with Qt-style placeholders %1 ... %99 (the source text a
+// A Phrase is an English template with Qt-style placeholders %1 to %99 (the source text a
 // translator sees; a '%' not followed by a digit is literal, e.g. "%1 %" is a percentage) and its
 // arguments:
 //   * numbers: printf's %.<p>g (significant digits) or %.<p>f (decimals), optionally with a '+'
@@ -62,7 +62,7 @@ struct PhraseArg {
   std::string english() const;
 };
 
-/// An English template with placeholders %1 ... and its arguments.
+/// An English template with placeholders %1 to %99 and its arguments.
 struct Phrase {
   std::string format;
   std::vector<PhraseArg> args;
@@ -78,7 +78,7 @@ struct Phrase {
 /// The English forms of `text` concatenated.
 std::string english(const Phrases& text);
 
-/// Replaces %1 ... %99 in `format` by args[0] ... in one pass (a replacement is never scanned
+/// Replaces %1 to %99 in `format` by args[0] to args[98] in one pass (a replacement is never scanned
 /// again); a '%' not followed by a digit, or with a number beyond args, is kept as it is.
 std::string substitutePlaceholders(std::string_view format, const std::vector<std::string>& args);
 

@@ -13,7 +13,7 @@ namespace {
 // Every template of core/diagnose (evidence, notes, axis titles, the loop's stop notes, the
 // acceptance reasons of linear_evidence.cpp) and core/common/run.cpp (termination reasons). Keep in
 // step with core: diagnosis_locale_test fails when core produces a template that is not here.
-// Placeholders %1 ... are numbers, names or units (see core/common/text.h); "+-" may be written
+// Placeholders %1 to %99 are numbers, names or units (see core/common/text.h); "+-" may be written
 // "±" in a translation.
 const char* const kCoreTexts[] = {
     // Shared
@@ -169,7 +169,7 @@ QString translated(const std::string& source) {
   return QCoreApplication::translate(kCoreTextContext, source.c_str());
 }
 
-/// Replaces %1 ... %99 by args in one pass: core's substitutePlaceholders on UTF-8 (the
+/// Replaces %1 to %99 by args in one pass: core's substitutePlaceholders on UTF-8 (the
 /// placeholders are ASCII, so byte positions are safe).
 QString substitute(const QString& format, const QStringList& args) {
   std::vector<std::string> utf8;
