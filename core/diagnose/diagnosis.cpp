@@ -109,6 +109,10 @@ nlohmann::json toJson(const Diagnosis& d) {
     if (!uncertainty.empty()) e["uncertainty"] = uncertainty;
     if (c.heldoutBefore) e["heldout_rmse_before"] = *c.heldoutBefore;
     if (c.heldoutAfter) e["heldout_rmse_after"] = *c.heldoutAfter;
+    if (c.generic) {
+      e["form"] = formName(c.generic->form);
+      e["against"] = c.generic->against;
+    }
     effects.push_back(std::move(e));
   }
   nlohmann::json j = {{"domain", d.domain},
@@ -116,6 +120,7 @@ nlohmann::json toJson(const Diagnosis& d) {
                       {"effects", effects},
                       {"final", summaryJson(d.final)}};
   if (!d.units.empty()) j["units"] = d.units;
+  if (d.residualCheck) j["residual_check"] = toJson(*d.residualCheck);
   return j;
 }
 

@@ -25,6 +25,7 @@
 
 #include "core/common/run.h"
 #include "core/common/text.h"
+#include "core/diagnose/residual_check.h"
 
 namespace metrofit::diagnose {
 
@@ -75,6 +76,8 @@ struct Candidate {
   int round = 0;                     ///< loop round in which it was tried (0-based)
   std::optional<ResidualPlot> plot;  ///< filled for accepted effects (and may be for others)
   Phrases evidenceParts;             ///< evidence == english(evidenceParts)
+  /// A generic effect (`unexplained:<against>`, CONTRACT.md "The open world"): its fixed shape.
+  std::optional<GenericForm> generic;
 
   /// Replaces the evidence (string and phrases).
   void setEvidence(Phrases parts);
@@ -93,6 +96,8 @@ struct Diagnosis {
   /// The declared model's description and its fitted parameters, for the report (free text).
   std::vector<std::string> notes;
   std::vector<Phrases> notesParts;  ///< notes[i] == english(notesParts[i])
+  /// The final residual's check (CONTRACT.md `residual_check`); every domain fills it.
+  std::optional<ResidualCheck> residualCheck;
 
   std::vector<const Candidate*> accepted() const;
   /// Appends a note (string and phrases).

@@ -1,0 +1,183 @@
+#pragma once
+// The open world of the closed loop (CONTRACT.md "The open world"): is the final residual white,
+// and if not, what does it still depend on? Shared by the four domains.
+//
+// Observations. A domain hands over its residual r (one value per observation, in the data's
+// units), the columns of its fitted model at the solution (the declared model plus the accepted
+// effects: the design matrix of a linear model, the Jacobian of a non-linear one; the intercept is
+// always added here), the variables the data offer (one value per observation each) and, per
+// observation, the unit it belongs to (a data row, a probed point: outliers are units).
+//
+// Tests (all p-values from Boost.Math distributions):
+//   * Ljung-Box in every natural order (time, file row, path angle): the residual sorted by that
+//     variable, Q = n (n + 2) sum_{k=1..h} rho_k^2 / (n - k), h = min(maxLag, n / 5), compared with
+//     chi-square(h);
+//   * against every variable, nested F tests of the model columns [1, J] against [1, J, G]:
+//       F = ((SSE0 - SSE1) / q) / (SSE1 / (n - p - q)),  p = rank [1, J],  q = rank of G beyond it,
+//     with G the basis of a form (generic_effect below): continuous variables `linear` (1 column),
+//     `smooth` (natural cubic spline, knots at quantiles) and `step` (one change point, the best of
+//     `stepPositions` candidate positions at quantiles; its p-value Bonferroni-corrected for the
+//     search), a path angle `periodic` (harmonics 1..`harmonics`), a category `level` (one constant
+//     per level). Since r is orthogonal to [1, J], SSE0 - SSE1 = r^T G (Gp^T Gp)^-1 G^T r with
+//     Gp = G - U U^T G (U an orthonormal basis of [1, J]): one pass over the data per form.
+//   * Family-wise level `level` (1 %) over all tests by Holm's step-down procedure. `white` is true
+//     when no test is rejected. `structure` lists, per variable with a rejected test, its strongest
+//     form (lowest p), strongest first by share = (SSE0 - SSE1) / SSE0.
+// Outliers: robust z = |r - median(r)| / (1.4826 MAD(r)) per observation; a unit is an outlier when
+// any of its observations has z above
+//   zThreshold = outlierFactor * Phi^-1(1 - 0.005 / n)      (2 x the Gaussian family-wise 1 % bound:
+//                                                            about 7.8 at n = 100, 9.6 at n = 10^4)
+// so heavy-tailed clean noise (Laplace, Student t5) is rarely flagged while a gross error is. When
+// more than `maxOutlierFraction` of the units exceed it the data are heavy-tailed or structured, not
+// spoiled by a few gross errors: none is listed. The domain refits without the outliers and checks
+// the refitted residual.
+//
+// Generic effects (`unexplained:<against>`): the basis G of the strongest structure, fitted jointly
+// with the model columns, is a candidate effect like a named one; GenericForm records the form and
+// its fixed shape (knots, change point, harmonics, levels) so that the same basis can be evaluated
+// on other rows (held-out rows, a re-read file).
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "core/common/text.h"
+
+namespace metrofit::diagnose {
+
+/// A variable the residual may depend on, one value per observation.
+struct ResidualVariable {
+  enum class Kind {
+    Continuous,  ///< linear, smooth, step
+    Angle,       ///< degrees; periodic
+    Category     ///< values are level indices 0 .. levels.size() - 1; level
+  };
+  std::string name;  ///< CONTRACT.md "against": a column name, time, row, angle, direction, x, part, ...
+  Kind kind = Kind::Continuous;
+  std::vector<double> values;
+  std::vector<std::string> levels;  ///< Category: the level names
+  bool naturalOrder = false;        ///< Ljung-Box on the residual sorted by this variable
+  Phrases label;                    ///< axis title for plots, e.g. "time (min)"
+};
+
+/// Forms of a dependence (CONTRACT.md `form`).
+enum class DependenceForm { Linear, Smooth, Step, Periodic, Level };
+const char* formName(DependenceForm f);
+
+/// The fixed shape of a generic effect of one variable: enough to evaluate its basis anywhere.
+struct GenericForm {
+  std::string against;  ///< the variable's name
+  DependenceForm form = DependenceForm::Linear;
+  std::vector<double> knots;  ///< Smooth: interior and boundary knots; Step: {change point}
+  int harmonics = 0;          ///< Periodic
+  int levels = 0;             ///< Level: number of levels (one column per level but the first)
+  double centre = 0.0;        ///< Linear / Smooth: values are centred and scaled for conditioning
+  double scale = 1.0;
+};
+
+/// The basis of `form` on `values` (one row per value; no intercept column).
+Eigen::MatrixXd genericBasis(const GenericForm& form, const std::vector<double>& values);
+
+struct ResidualTest {
+  std::string name;     ///< "ljung_box" or "f_test"
+  std::string against;  ///< ljung_box: the order; f_test: the variable
+  std::string form;     ///< f_test: the form; empty for ljung_box
+  double statistic = 0.0;
+  double p = 1.0;        ///< as computed (Bonferroni-corrected for a step search)
+  int dof = 0;           ///< Ljung-Box lags, or the F test's numerator degrees of freedom
+  bool rejected = false;  ///< by Holm at the family-wise level
+};
+
+struct StructureItem {
+  std::string against;
+  DependenceForm form = DependenceForm::Linear;
+  double p = 1.0;
+  double share = 0.0;  ///< part of the residual variance explained by the form
+  GenericForm shape;   ///< the form's basis, for a generic effect
+};
+
+struct Outlier {
+  std::size_t unit = 0;  ///< the domain's unit index (0-based)
+  std::optional<long> row;  ///< 1-based data row
+  std::optional<std::string> part, dimension, id;
+  double residual = 0.0;  ///< the observation with the largest robust z (data units)
+  double robustZ = 0.0;
+};
+
+/// What the residual check needs besides the residual.
+struct ResidualCheckInput {
+  Eigen::VectorXd residual;              ///< n observations (outliers excluded already, or not)
+  Eigen::MatrixXd modelColumns;          ///< n x p columns of the fitted model (may be 0 columns)
+  std::vector<ResidualVariable> variables;
+  std::vector<std::size_t> unitOf;       ///< per observation, its unit (empty: unit = observation)
+  /// Per unit, what identifies it in the data (empty vectors when the file has no such field).
+  std::vector<long> unitRow;
+  std::vector<std::string> unitPart, unitDimension, unitId;
+};
+
+struct ResidualCheckOptions {
+  double level = 0.01;               ///< family-wise level of the tests
+  int maxLag = 20;                   ///< Ljung-Box lags (at most n / 5)
+  int splineKnots = 5;               ///< smooth: knots (boundary included) at quantiles
+  int harmonics = 4;                 ///< periodic: harmonics 1 .. harmonics
+  int stepPositions = 19;            ///< step: candidate change points at quantiles
+  double outlierFactor = 2.0;        ///< see the header comment
+  double maxOutlierFraction = 0.02;  ///< more units beyond the threshold: none listed
+  bool detectOutliers = true;
+
+  bool isValid(std::string* why) const;
+};
+
+struct ResidualCheck {
+  bool white = true;
+  double level = 0.01;
+  std::vector<ResidualTest> tests;
+  std::vector<StructureItem> structure;  ///< strongest first
+  std::vector<Outlier> outliers;
+  double outlierThreshold = 0.0;  ///< the robust z threshold used
+  std::size_t observations = 0;
+  /// One line a person can read: "white: no test finds structure at the 1 % family-wise level" or
+  /// "still depends on T1 (smooth, 62 % of the variance), ...".
+  std::string summary;
+  Phrases summaryParts;  ///< summary == english(summaryParts)
+  /// The residual against the variable of the strongest structure with the generic fit (for the
+  /// GUI and the report); x, before = residual, after = residual minus the generic fit.
+  struct Plot {
+    std::string against;
+    Phrases xLabel;
+    std::vector<double> x, residual, fit;
+    std::vector<std::string> categories;
+    std::vector<double> outlierX, outlierResidual;  ///< the excluded outliers, at their x
+  };
+  std::optional<Plot> plot;
+};
+
+/// Robust outliers of `residual` by unit (see the header comment). Returns the unit indices.
+std::vector<Outlier> findOutliers(const ResidualCheckInput& in, const ResidualCheckOptions& options,
+                                  double* threshold = nullptr);
+
+/// The tests and the structure list of the residual (outliers are not searched here: pass the
+/// residual without them, and set `outliers` of the result from findOutliers).
+ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOptions& options = {});
+
+/// Candidate shapes of a variable (the forms its kind allows), fixed on `values`.
+std::vector<GenericForm> candidateForms(const ResidualVariable& v, const ResidualCheckOptions& options);
+
+/// Parameters of a fitted generic effect for the JSON and the evidence: the form, the rms and the
+/// range (max - min) of the fitted contribution over `values`, and for a step its position and size,
+/// for periodic the amplitude and harmonic of the largest harmonic. `unit` e.g. "mm", "um".
+struct GenericSummary {
+  std::vector<std::pair<std::string, double>> numbers;  ///< name -> value
+  Phrases text;                                         ///< e.g. "smooth in T1, rms 2.1 um"
+};
+GenericSummary summariseGeneric(const GenericForm& form, const Eigen::VectorXd& coefficients,
+                                const std::vector<double>& values, const std::string& unit);
+
+/// The CONTRACT.md JSON of a check: {"white", "tests", "structure", "outliers"} (+ "level",
+/// "outlier_threshold", "summary").
+nlohmann::json toJson(const ResidualCheck& c);
+
+}  // namespace metrofit::diagnose
