@@ -261,8 +261,7 @@ OpenThermalCase openWorldThermal(const std::string& name, double ratio, std::uin
   const Eigen::VectorXd added = finish(d, seed, o);
   std::vector<double>& y = out.log.channels[static_cast<std::size_t>(out.log.indexOf(out.target))].values;
   for (std::size_t k = 0; k < n; ++k) y[k] += added(static_cast<Eigen::Index>(k));
-  if (tr.kind != OpenCaseKind::Clean)
-    tr.description += fmt(", amplitude %.4g um", tr.amplitude);
+  if (tr.kind != OpenCaseKind::Clean) tr.description += fmt(", amplitude %.4g um", tr.amplitude);
   out.log.source = "simulated open-world thermal case '" + name + "'";
   out.truth = std::move(tr);
   return out;
@@ -284,9 +283,9 @@ OpenKinematicCase openWorldKinematic(const std::string& name, double ratio, std:
   d.declared = Eigen::MatrixXd::Zero(N, 4);
   for (std::size_t k = 0; k < n; ++k) {
     const auto ix = static_cast<Eigen::Index>(2 * k), iy = ix + 1;
-    d.declared(ix, 0) = 1.0;         // origin x
-    d.declared(iy, 1) = 1.0;         // origin y
-    d.declared(iy, 2) = cmd[k].x();  // X axis orientation a
+    d.declared(ix, 0) = 1.0;          // origin x
+    d.declared(iy, 1) = 1.0;          // origin y
+    d.declared(iy, 2) = cmd[k].x();   // X axis orientation a
     d.declared(ix, 3) = -cmd[k].y();  // Y axis orientation b
   }
   auto set = [&](std::size_t k, const Eigen::Vector2d& v) {
@@ -332,13 +331,13 @@ OpenKinematicCase openWorldKinematic(const std::string& name, double ratio, std:
     set(k, Eigen::Vector2d(std::cos(theta), std::sin(theta)));
     tr.outlierUnit = k;
     tr.outlierRow = static_cast<long>(k) + 1;
-    tr.description = fmt("gross error at data row %.0f along %.0f deg", static_cast<double>(k + 1),
-                         theta * 180.0 / kPi);
+    tr.description =
+        fmt("gross error at data row %.0f along %.0f deg", static_cast<double>(k + 1), theta * 180.0 / kPi);
   }
   const Eigen::VectorXd added = finish(d, seed, o);
   for (std::size_t k = 0; k < n; ++k)
-    out.path.measured[k] += Eigen::Vector2d(added(static_cast<Eigen::Index>(2 * k)),
-                                            added(static_cast<Eigen::Index>(2 * k + 1)));
+    out.path.measured[k] +=
+        Eigen::Vector2d(added(static_cast<Eigen::Index>(2 * k)), added(static_cast<Eigen::Index>(2 * k + 1)));
   if (tr.kind != OpenCaseKind::Clean) tr.description += fmt(", amplitude %.4g mm", tr.amplitude);
   out.path.source = "simulated open-world circular test '" + name + "'";
   out.truth = std::move(tr);
@@ -371,7 +370,8 @@ OpenSetupCase openWorldSetup(const setup::Model& model, const std::string& name,
   // Part number of every row: the position of its part in order of appearance (1-based).
   std::vector<int> partNo(n);
   for (std::size_t r = 0; r < n; ++r)
-    partNo[r] = static_cast<int>(std::find(m.parts.begin(), m.parts.end(), m.rows[r].part) - m.parts.begin()) + 1;
+    partNo[r] =
+        static_cast<int>(std::find(m.parts.begin(), m.parts.end(), m.rows[r].part) - m.parts.begin()) + 1;
   const int P = static_cast<int>(m.parts.size());
   auto reaches = [&](Eigen::Index i) {
     std::vector<std::string> dims;
@@ -399,7 +399,8 @@ OpenSetupCase openWorldSetup(const setup::Model& model, const std::string& name,
         d.shape(static_cast<Eigen::Index>(r)) = sign * G(static_cast<Eigen::Index>(m.rows[r].dimension), i);
     tr.against = {"part", "time", "row"};
     for (auto& s : reaches(i)) tr.against.push_back(s);
-    tr.description = "setup datum " + model.setup[static_cast<std::size_t>(i)].id + fmt(" steps (sign %+.0f) from part %.0f", sign, pStar);
+    tr.description = "setup datum " + model.setup[static_cast<std::size_t>(i)].id +
+                     fmt(" steps (sign %+.0f) from part %.0f", sign, pStar);
   } else if (name == "fixture_alternation") {
     bool anyWks = false;
     for (Eigen::Index i = 0; i < G.cols(); ++i)
@@ -412,8 +413,8 @@ OpenSetupCase openWorldSetup(const setup::Model& model, const std::string& name,
         d.shape(static_cast<Eigen::Index>(r)) = sign * G(static_cast<Eigen::Index>(m.rows[r].dimension), i);
     tr.against = {"part"};
     for (auto& s : reaches(i)) tr.against.push_back(s);
-    tr.description = "even parts in fixture B, its locator off on " + model.setup[static_cast<std::size_t>(i)].id +
-                     fmt(" (sign %+.0f)", sign);
+    tr.description = "even parts in fixture B, its locator off on " +
+                     model.setup[static_cast<std::size_t>(i)].id + fmt(" (sign %+.0f)", sign);
   } else if (name == "dimension_wear") {
     const std::size_t q = static_cast<std::size_t>(rng.below(model.dimensions.size()));
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
@@ -423,7 +424,8 @@ OpenSetupCase openWorldSetup(const setup::Model& model, const std::string& name,
         d.shape(static_cast<Eigen::Index>(r)) = sign * u * u;
       }
     tr.against = {"dimension:" + model.dimensions[q].id, "part", "time"};
-    tr.description = "dimension " + model.dimensions[q].id + fmt(" wears as %+.0f ((p - 1) / (P - 1))^2", sign);
+    tr.description =
+        "dimension " + model.dimensions[q].id + fmt(" wears as %+.0f ((p - 1) / (P - 1))^2", sign);
   } else if (name == "outlier_row") {
     const std::size_t r = static_cast<std::size_t>(rng.below(n));
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
@@ -432,8 +434,8 @@ OpenSetupCase openWorldSetup(const setup::Model& model, const std::string& name,
     tr.outlierRow = static_cast<long>(r) + 1;
     tr.outlierPart = m.rows[r].part;
     tr.outlierDimension = model.dimensions[m.rows[r].dimension].id;
-    tr.description = "gross error (sign " + std::string(sign > 0 ? "+" : "-") + ") at part " + tr.outlierPart +
-                     ", dimension " + tr.outlierDimension;
+    tr.description = "gross error (sign " + std::string(sign > 0 ? "+" : "-") + ") at part " +
+                     tr.outlierPart + ", dimension " + tr.outlierDimension;
   }
   const Eigen::VectorXd added = finish(d, seed, o);
   std::vector<double> sum(model.dimensions.size(), 0.0);
@@ -490,9 +492,11 @@ OpenMatchingCase openWorldMatching(const std::string& name, double ratio, std::u
       d.shape(static_cast<Eigen::Index>(i)) = u * u;
       mean += u * u / static_cast<double>(on.size());
     }
-    for (std::size_t i : on) d.shape(static_cast<Eigen::Index>(i)) = sign * (d.shape(static_cast<Eigen::Index>(i)) - mean);
+    for (std::size_t i : on)
+      d.shape(static_cast<Eigen::Index>(i)) = sign * (d.shape(static_cast<Eigen::Index>(i)) - mean);
     tr.against = {"surface:" + s};
-    tr.description = "bow of surface " + s + " along " + std::string(1, "xyz"[axis]) + fmt(", sign %+.0f", sign);
+    tr.description =
+        "bow of surface " + s + " along " + std::string(1, "xyz"[axis]) + fmt(", sign %+.0f", sign);
   } else if (name == "plate_bending") {
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -522,7 +526,8 @@ OpenMatchingCase openWorldMatching(const std::string& name, double ratio, std::u
   }
   const Eigen::VectorXd added = finish(d, seed, o);
   const Eigen::Matrix3d R = rotationFromDeg(ps.rotationDeg[0], ps.rotationDeg[1], ps.rotationDeg[2]);
-  for (std::size_t i = 0; i < n; ++i) pts[i].measured += R * pts[i].normal * added(static_cast<Eigen::Index>(i));
+  for (std::size_t i = 0; i < n; ++i)
+    pts[i].measured += R * pts[i].normal * added(static_cast<Eigen::Index>(i));
   if (tr.kind != OpenCaseKind::Clean) tr.description += fmt(", amplitude %.4g mm", tr.amplitude);
   out.points.source = "simulated open-world probing '" + name + "'";
   out.truth = std::move(tr);

@@ -121,8 +121,8 @@ int main(int argc, char** argv) {
   bool diagnose = false, realDiagnose = false;  // issue 8 (bench_diagnose.cpp)
   bool open = false;                            // issue 15: --diagnose --open (bench_open_world.cpp)
   metrofit::bench::OpenBenchOptions openOptions;
-  int explicitSeeds = 0;  // --seeds N wins over --quick
-  bool setupBench = false;                      // issue 4 (bench_setup.cpp)
+  int explicitSeeds = 0;    // --seeds N wins over --quick
+  bool setupBench = false;  // issue 4 (bench_setup.cpp)
   metrofit::bench::DiagnoseBenchOptions diagnoseOptions;
   metrofit::bench::OptimBenchOptions optimOptions;
   int repeat = 5;
@@ -192,7 +192,8 @@ int main(int argc, char** argv) {
       std::printf(
           "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick] [--only PROBLEMS] [--methods "
           "METHODS]] [--matching] [--real-matching] "
-          "[--thermal] [--real-thermal] [--kinematic] [--setup] [--diagnose [--quick]] [--diagnose --open [--seeds N] [--quick] [--domains LIST]] [--real-diagnose] "
+          "[--thermal] [--real-thermal] [--kinematic] [--setup] [--diagnose [--quick]] [--diagnose --open "
+          "[--seeds N] [--quick] [--domains LIST]] [--real-diagnose] "
           "[--repeat N] "
           "[--json OUT] "
           "[--source-dir DIR]\n");

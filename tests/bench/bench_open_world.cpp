@@ -84,7 +84,7 @@ struct Trial {
   std::size_t outliers = 0;     // outliers listed
   double finalOverSigma = 0.0;  // final fit rmse / noise sigma
   std::vector<std::string> catalogueNames;
-  std::string strongest;        // against of the strongest structure (or of the generic effect)
+  std::string strongest;  // against of the strongest structure (or of the generic effect)
 };
 
 bool inTruth(const OpenWorldTruth& t, const std::string& against) {
@@ -163,7 +163,9 @@ struct Tally {
   }
 };
 
-double pct(int k, int n) { return n > 0 ? 100.0 * k / n : 0.0; }
+double pct(int k, int n) {
+  return n > 0 ? 100.0 * k / n : 0.0;
+}
 
 std::string fixed1(double v) {
   char buf[32];
@@ -246,7 +248,8 @@ nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& o) {
       std::string notes;
       auto note = [&](const std::string& part) { notes += (notes.empty() ? "" : "; ") + part; };
       if (info.kind == OpenCaseKind::Clean) note("false flags " + fixed1(pct(t.falseFlag, t.runs)) + " %");
-      if (info.kind == OpenCaseKind::Outlier) note("gross error listed " + fixed1(pct(t.truthListed, t.runs)) + " %");
+      if (info.kind == OpenCaseKind::Outlier)
+        note("gross error listed " + fixed1(pct(t.truthListed, t.runs)) + " %");
       if (!t.catalogueNames.empty()) note("catalogue: " + topList(t.catalogueNames));
       if (!t.strongest.empty()) note("against: " + topList(t.strongest));
       if (t.noCheck) note("no residual_check in " + std::to_string(t.noCheck));
@@ -254,21 +257,26 @@ nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& o) {
       const int n = t.runs;
       if (info.kind == OpenCaseKind::Clean) {
         std::printf("diagnose-open  %-9s %-20s %5d %7.1f%% %8s %8s %7.1f%% %8s %7.1f%% %8.2f %7.1f  %s\n",
-                    toString(domain), info.name.c_str(), n, pct(t.falseFlag, n), "-", "-", pct(t.catalogue, n), "-",
-                    pct(t.outliersListed, n), median(t.finalOverSigma), t.seconds, notes.c_str());
+                    toString(domain), info.name.c_str(), n, pct(t.falseFlag, n), "-", "-",
+                    pct(t.catalogue, n), "-", pct(t.outliersListed, n), median(t.finalOverSigma), t.seconds,
+                    notes.c_str());
       } else if (info.kind == OpenCaseKind::Outlier) {
-        std::printf("diagnose-open  %-9s %-20s %5d %7.1f%% %7.1f%% %7.1f%% %7.1f%% %8s %7.1f%% %8.2f %7.1f  %s\n",
-                    toString(domain), info.name.c_str(), n, pct(t.detected, n), pct(t.generic, n),
-                    pct(t.flaggedOnly, n), pct(t.catalogue, n), "-", pct(t.truthListed, n),
-                    median(t.finalOverSigma), t.seconds, notes.c_str());
+        std::printf(
+            "diagnose-open  %-9s %-20s %5d %7.1f%% %7.1f%% %7.1f%% %7.1f%% %8s %7.1f%% %8.2f %7.1f  %s\n",
+            toString(domain), info.name.c_str(), n, pct(t.detected, n), pct(t.generic, n),
+            pct(t.flaggedOnly, n), pct(t.catalogue, n), "-", pct(t.truthListed, n), median(t.finalOverSigma),
+            t.seconds, notes.c_str());
       } else {
-        std::printf("diagnose-open  %-9s %-20s %5d %7.1f%% %7.1f%% %7.1f%% %7.1f%% %7.1f%% %7.1f%% %8.2f %7.1f  %s\n",
-                    toString(domain), info.name.c_str(), n, pct(t.detected, n), pct(t.generic, n),
-                    pct(t.flaggedOnly, n), pct(t.catalogue, n), pct(t.rightVariable, n),
-                    pct(t.outliersListed, n), median(t.finalOverSigma), t.seconds, notes.c_str());
+        std::printf(
+            "diagnose-open  %-9s %-20s %5d %7.1f%% %7.1f%% %7.1f%% %7.1f%% %7.1f%% %7.1f%% %8.2f %7.1f  %s\n",
+            toString(domain), info.name.c_str(), n, pct(t.detected, n), pct(t.generic, n),
+            pct(t.flaggedOnly, n), pct(t.catalogue, n), pct(t.rightVariable, n), pct(t.outliersListed, n),
+            median(t.finalOverSigma), t.seconds, notes.c_str());
       }
       nlohmann::json j = tallyJson(t);
-      j["kind"] = info.kind == OpenCaseKind::Clean ? "clean" : info.kind == OpenCaseKind::Outlier ? "outlier" : "effect";
+      j["kind"] = info.kind == OpenCaseKind::Clean     ? "clean"
+                  : info.kind == OpenCaseKind::Outlier ? "outlier"
+                                                       : "effect";
       j["form"] = info.form;
       if (!firstError.empty()) j["first_error"] = firstError;
       cases[info.name] = std::move(j);
@@ -281,10 +289,12 @@ nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& o) {
         "flagged only %.1f %%, catalogue name %.1f %%; right variable %.1f %%\n",
         toString(domain), a, pct(effects.generic, effects.runs), pct(effects.flaggedOnly, effects.runs),
         pct(effects.catalogue, effects.runs), pct(effects.rightVariable, effects.runs));
-    std::printf("diagnose-open  %-9s (b) catalogue name accepted on open-world cases %.1f %% (target <= 2 %%)\n",
-                toString(domain), b);
     std::printf(
-        "diagnose-open  %-9s (c) false flags on clean data %.1f %% (target <= 1 %%); outliers listed on clean "
+        "diagnose-open  %-9s (b) catalogue name accepted on open-world cases %.1f %% (target <= 2 %%)\n",
+        toString(domain), b);
+    std::printf(
+        "diagnose-open  %-9s (c) false flags on clean data %.1f %% (target <= 1 %%); outliers listed on "
+        "clean "
         "data %.1f %%\n",
         toString(domain), c, cOut);
     std::printf("diagnose-open  %-9s (d) gross error listed %.1f %%%s\n", toString(domain), dl,

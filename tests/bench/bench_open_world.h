@@ -25,9 +25,9 @@
 namespace metrofit::bench {
 
 struct OpenBenchOptions {
-  int seeds = 100;       ///< data sets per case
-  double ratio = 5.0;    ///< effect-to-noise ratio of the effect and gross-error cases
-  std::string sourceDir;  ///< for the setup model (resources/demo/setup/paper_example.json)
+  int seeds = 100;                   ///< data sets per case
+  double ratio = 5.0;                ///< effect-to-noise ratio of the effect and gross-error cases
+  std::string sourceDir;             ///< for the setup model (resources/demo/setup/paper_example.json)
   std::vector<std::string> domains;  ///< empty: thermal, kinematic, setup, matching
 };
 

@@ -26,7 +26,9 @@ const setup::Model& paperModel() {
   return m;
 }
 
-double rmsOf(const Eigen::VectorXd& v) { return std::sqrt(v.squaredNorm() / static_cast<double>(v.size())); }
+double rmsOf(const Eigen::VectorXd& v) {
+  return std::sqrt(v.squaredNorm() / static_cast<double>(v.size()));
+}
 
 Eigen::VectorXd offColumns(const Eigen::MatrixXd& D, const Eigen::VectorXd& v) {
   return v - D * D.jacobiSvd(Eigen::ComputeThinU | Eigen::ComputeThinV).solve(v);
@@ -150,28 +152,30 @@ void checkDomain(OpenWorldDomain domain, Make make, ToObs toObs) {
 }
 
 TEST(OpenWorld, ThermalRatioIsWhatWasAsked) {
-  checkDomain(OpenWorldDomain::Thermal,
-              [](const std::string& n, double r, std::uint64_t s) { return openWorldThermal(n, r, s); }, thermalObs);
+  checkDomain(
+      OpenWorldDomain::Thermal,
+      [](const std::string& n, double r, std::uint64_t s) { return openWorldThermal(n, r, s); }, thermalObs);
 }
 
 TEST(OpenWorld, KinematicRatioIsWhatWasAsked) {
-  checkDomain(OpenWorldDomain::Kinematic,
-              [](const std::string& n, double r, std::uint64_t s) { return openWorldKinematic(n, r, s); },
-              kinematicObs);
+  checkDomain(
+      OpenWorldDomain::Kinematic,
+      [](const std::string& n, double r, std::uint64_t s) { return openWorldKinematic(n, r, s); },
+      kinematicObs);
 }
 
 TEST(OpenWorld, SetupRatioIsWhatWasAsked) {
-  checkDomain(OpenWorldDomain::Setup,
-              [](const std::string& n, double r, std::uint64_t s) {
-                return openWorldSetup(paperModel(), n, r, s);
-              },
-              setupObs);
+  checkDomain(
+      OpenWorldDomain::Setup,
+      [](const std::string& n, double r, std::uint64_t s) { return openWorldSetup(paperModel(), n, r, s); },
+      setupObs);
 }
 
 TEST(OpenWorld, MatchingRatioIsWhatWasAsked) {
-  checkDomain(OpenWorldDomain::Matching,
-              [](const std::string& n, double r, std::uint64_t s) { return openWorldMatching(n, r, s); },
-              matchingObs);
+  checkDomain(
+      OpenWorldDomain::Matching,
+      [](const std::string& n, double r, std::uint64_t s) { return openWorldMatching(n, r, s); },
+      matchingObs);
 }
 
 TEST(OpenWorld, RatioScalesTheEffect) {
@@ -279,8 +283,7 @@ TEST(OpenWorldNoise, CleanDataCarryTheNoiseAsked) {
     std::vector<double> r;
     for (std::uint64_t seed = 1; seed <= 40; ++seed) {
       const OpenKinematicCase c = openWorldKinematic(name, 1.0, seed);
-      const auto exact =
-          simulateMachine(CircularSimOptions::defaultErrors(), c.path.command, 0.0, seed);
+      const auto exact = simulateMachine(CircularSimOptions::defaultErrors(), c.path.command, 0.0, seed);
       for (std::size_t k = 0; k < exact.size(); ++k)
         for (int a = 0; a < 2; ++a) r.push_back((c.path.measured[k](a) - exact[k](a)) / c.truth.noiseSigma);
     }
@@ -301,8 +304,8 @@ TEST(OpenWorldNoise, CleanDataCarryTheNoiseAsked) {
 }
 
 TEST(OpenWorld, TruthNamesContractVariables) {
-  const std::set<std::string> plain{"time", "row", "angle", "direction", "reversal", "x",
-                                    "y",    "z",   "normal", "part",     "T2"};
+  const std::set<std::string> plain{"time", "row", "angle",  "direction", "reversal", "x",
+                                    "y",    "z",   "normal", "part",      "T2"};
   auto ok = [&](const std::string& a) {
     return plain.count(a) || a.rfind("surface:", 0) == 0 || a.rfind("dimension:", 0) == 0;
   };
@@ -335,8 +338,7 @@ TEST(OpenWorld, StepIsAStepInTime) {
   const double span = c.log.timeMin.back() - c.log.timeMin.front();
   EXPECT_GE(c.log.timeMin[first] - c.log.timeMin.front(), 0.25 * span - 1.0);
   EXPECT_LE(c.log.timeMin[first] - c.log.timeMin.front(), 0.75 * span + 1.0);
-  for (std::size_t k = first; k < y.size(); ++k)
-    EXPECT_NEAR(y[k] - y0[k], y[first] - y0[first], 1e-9);
+  for (std::size_t k = first; k < y.size(); ++k) EXPECT_NEAR(y[k] - y0[k], y[first] - y0[first], 1e-9);
   EXPECT_NEAR(std::abs(y[first] - y0[first]), c.truth.amplitude, 1e-9);
 }
 
