@@ -411,7 +411,7 @@ OpenSetupCase openWorldSetup(const setup::Model& model, const std::string& name,
     for (std::size_t r = 0; r < n; ++r)
       if (partNo[r] % 2 == 0)
         d.shape(static_cast<Eigen::Index>(r)) = sign * G(static_cast<Eigen::Index>(m.rows[r].dimension), i);
-    tr.against = {"part"};
+    tr.against = {"part", "row"};
     for (auto& s : reaches(i)) tr.against.push_back(s);
     tr.description = "even parts in fixture B, its locator off on " +
                      model.setup[static_cast<std::size_t>(i)].id + fmt(" (sign %+.0f)", sign);
@@ -423,7 +423,7 @@ OpenSetupCase openWorldSetup(const setup::Model& model, const std::string& name,
         const double u = static_cast<double>(partNo[r] - 1) / static_cast<double>(P - 1);
         d.shape(static_cast<Eigen::Index>(r)) = sign * u * u;
       }
-    tr.against = {"dimension:" + model.dimensions[q].id, "part", "time"};
+    tr.against = {"dimension:" + model.dimensions[q].id, "part", "time", "row"};
     tr.description =
         "dimension " + model.dimensions[q].id + fmt(" wears as %+.0f ((p - 1) / (P - 1))^2", sign);
   } else if (name == "outlier_row") {
@@ -513,7 +513,7 @@ OpenMatchingCase openWorldMatching(const std::string& name, double ratio, std::u
       const double phi = std::atan2(nn.y(), nn.x());
       d.shape(static_cast<Eigen::Index>(i)) = h > 0.0 ? -h * std::cos(3.0 * (phi - phi0)) : 0.0;
     }
-    tr.against = {"normal", "direction"};
+    tr.against = {"normal", "direction", "nx", "ny"};
     tr.description = fmt("three-lobed probe pre-travel, lobe at %.0f deg", phi0 * 180.0 / kPi);
   } else if (name == "outlier_point") {
     const std::size_t i = static_cast<std::size_t>(rng.below(n));

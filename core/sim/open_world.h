@@ -65,10 +65,11 @@
 //                   dimension:<d> it reaches);
 //   fixture_alternation  the parts alternate between two fixtures; fixture B's locator sits A off
 //                   on a work-offset datum (uniform among the wks data that reach a dimension,
-//                   else any): + G[q][i] A for even parts (form level; part and every dimension:<d>);
+//                   else any): + G[q][i] A for even parts (form level; part, row and every
+//                   dimension:<d>);
 //   dimension_wear  one dimension q* (uniform) wears non-linearly (a form tool that wears faster as
 //                   it dulls): + A ((p - 1) / (P - 1))^2 on q* only (smooth; dimension:<q*>, part,
-//                   time);
+//                   time, row);
 //   outlier_row     one report row (uniform) off by the gross error (a CMM probing a chip);
 // MATCHING: the S-piece of probe_sim.h (sPieceDefaults posture, 40 points with normals), deviations
 // along the (rotated) nominal normal; sigma 0.006 mm.
@@ -80,7 +81,7 @@
 //   probe_lobing    a three-lobed touch-trigger probe: the pre-travel depends on the probing
 //                   direction, deviation -A sqrt(n_x^2 + n_y^2) cos(3 (phi_n - phi0)), phi_n the
 //                   azimuth of the nominal normal, phi0 uniform (periodic; against normal,
-//                   direction);
+//                   direction, and the normal's components nx, ny);
 //   outlier_point   one point (uniform) off along its normal by the gross error;
 // CLEAN (every domain): clean_gauss, clean_laplace, clean_t5: the clean data with that noise.
 //

@@ -9,8 +9,10 @@
 //   setup      diagnoseSetup on the demo's paper model (resources/demo/setup/paper_example.json),
 //              20 parts;
 //   matching   diagnoseMatching on the S-piece's 40 points with normals.
-// A gross error counts as listed when an entry of residual_check.outliers has the unit, or the
-// 1-based row, or the id (matching), or the part and dimension (setup) of the one simulated.
+// A gross error counts as listed when an entry of residual_check.outliers has the 1-based data row
+// of the one simulated (or, for an entry without a row, its unit), or its id (matching), or its part
+// and dimension (setup). A generic effect is an accepted candidate with `generic` set or a name
+// starting with `unexplained:`; every other accepted name is a catalogue name.
 #include "bench_open_world.h"
 
 #include <algorithm>
@@ -98,7 +100,7 @@ Trial judge(const Result& r) {
   const Diagnosis& d = r.diagnosis;
   t.finalOverSigma = d.final.rmse / r.truth.noiseSigma;
   for (const auto* c : d.accepted()) {
-    if (c->name.rfind("unexplained:", 0) == 0) {
+    if (c->generic || c->name.rfind("unexplained:", 0) == 0) {
       t.generic = true;
       const std::string against = c->generic ? c->generic->against : c->name.substr(12);
       if (t.strongest.empty()) t.strongest = against;
@@ -120,12 +122,12 @@ Trial judge(const Result& r) {
     const OpenWorldTruth& w = r.truth;
     for (const auto& o : rc.outliers) {
       if (!w.outlierUnit) break;
-      const bool unit = o.unit == *w.outlierUnit;
-      const bool row = o.row && w.outlierRow && *o.row == *w.outlierRow;
+      // The 1-based data row when the entry has one (its unit may index the refitted set), else the unit.
+      const bool rowOrUnit = o.row ? (w.outlierRow && *o.row == *w.outlierRow) : o.unit == *w.outlierUnit;
       const bool id = o.id && !w.outlierId.empty() && *o.id == w.outlierId;
       const bool partDim = o.part && o.dimension && !w.outlierPart.empty() && *o.part == w.outlierPart &&
                            *o.dimension == w.outlierDimension;
-      t.outlierListed |= unit || row || id || partDim;
+      t.outlierListed |= rowOrUnit || id || partDim;
     }
   }
   return t;

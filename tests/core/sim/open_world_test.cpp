@@ -304,8 +304,8 @@ TEST(OpenWorldNoise, CleanDataCarryTheNoiseAsked) {
 }
 
 TEST(OpenWorld, TruthNamesContractVariables) {
-  const std::set<std::string> plain{"time", "row", "angle",  "direction", "reversal", "x",
-                                    "y",    "z",   "normal", "part",      "T2"};
+  const std::set<std::string> plain{"time", "row",    "angle", "direction", "reversal", "x", "y",
+                                    "z",    "normal", "part",  "T2",        "nx",       "ny"};
   auto ok = [&](const std::string& a) {
     return plain.count(a) || a.rfind("surface:", 0) == 0 || a.rfind("dimension:", 0) == 0;
   };
