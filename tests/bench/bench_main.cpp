@@ -10,8 +10,8 @@
 // mt19937_64), --optimizers (our metaheuristics and pagmo2's pso / sade side by side at equal
 // budget, bench_optim.cpp; --quick: 5 seeds instead of 25), --matching / --real-matching (posture
 // matching targets and the SDSS plug plates against their own fits, bench_matching.cpp). Later issues add
-// --thermal, --diagnose, --real. --diagnose --open [--seeds N] [--quick] [--domains thermal,setup]:
-// the open-world detection study of the closed loop (bench_open_world.h).
+// --thermal, --diagnose, --real. --diagnose --open [--seeds N] [--quick] [--ratio R] [--domains
+// thermal,setup]: the open-world detection study of the closed loop (bench_open_world.h).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -180,6 +180,12 @@ int main(int argc, char** argv) {
     } else if (a == "--seeds" && i + 1 < argc) {
       optimOptions.seeds = std::max(1, std::atoi(argv[++i]));
       explicitSeeds = optimOptions.seeds;
+    } else if (a == "--ratio" && i + 1 < argc) {  // --diagnose --open: effect-to-noise ratio (default 5)
+      openOptions.ratio = std::atof(argv[++i]);
+      if (!(openOptions.ratio > 0.0)) {
+        std::fprintf(stderr, "metrofit-bench: --ratio needs a number > 0\n");
+        return 2;
+      }
     } else if (a == "--first-seed" && i + 1 < argc) {
       optimOptions.firstSeed = std::max(1, std::atoi(argv[++i]));
     } else if (a == "--repeat" && i + 1 < argc)
