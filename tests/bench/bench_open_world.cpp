@@ -85,6 +85,7 @@ struct Trial {
   bool outlierListed = false;   // the simulated gross error is among the outliers
   std::size_t outliers = 0;     // outliers listed
   double finalOverSigma = 0.0;  // final fit rmse / noise sigma
+  double amplitude = 0.0;       // the simulated effect's amplitude (data units)
   std::vector<std::string> catalogueNames;
   std::string strongest;  // against of the strongest structure (or of the generic effect)
 };
@@ -99,6 +100,7 @@ Trial judge(const Result& r) {
   Trial t;
   const Diagnosis& d = r.diagnosis;
   t.finalOverSigma = d.final.rmse / r.truth.noiseSigma;
+  t.amplitude = r.truth.amplitude;
   for (const auto* c : d.accepted()) {
     if (c->generic || c->name.rfind("unexplained:", 0) == 0) {
       t.generic = true;
@@ -138,7 +140,7 @@ struct Tally {
   int detected = 0, generic = 0, flaggedOnly = 0, catalogue = 0, rightVariable = 0;
   int falseFlag = 0, outliersListed = 0, truthListed = 0, notWhite = 0, anyAccepted = 0;
   std::map<std::string, int> catalogueNames, strongest;
-  std::vector<double> finalOverSigma;
+  std::vector<double> finalOverSigma, amplitude;
   double seconds = 0.0;
 
   void add(const Trial& t) {
@@ -149,6 +151,7 @@ struct Tally {
     }
     noCheck += !t.hasCheck;
     finalOverSigma.push_back(t.finalOverSigma);
+    amplitude.push_back(t.amplitude);
     const bool accepted = t.generic || t.catalogue;
     detected += !t.white || accepted;
     generic += t.generic;
@@ -208,6 +211,7 @@ nlohmann::json tallyJson(const Tally& t) {
           {"catalogue_names", t.catalogueNames},
           {"strongest_against", t.strongest},
           {"final_rmse_over_sigma_median", median(t.finalOverSigma)},
+          {"amplitude_median", median(t.amplitude)},
           {"seconds", t.seconds}};
 }
 
@@ -252,6 +256,12 @@ nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& o) {
       if (info.kind == OpenCaseKind::Clean) note("false flags " + fixed1(pct(t.falseFlag, t.runs)) + " %");
       if (info.kind == OpenCaseKind::Outlier)
         note("gross error listed " + fixed1(pct(t.truthListed, t.runs)) + " %");
+      if (info.kind != OpenCaseKind::Clean && !t.amplitude.empty()) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "A %.3g %s", median(t.amplitude),
+                      domain == OpenWorldDomain::Thermal ? "um" : "mm");
+        note(buf);
+      }
       if (!t.catalogueNames.empty()) note("catalogue: " + topList(t.catalogueNames));
       if (!t.strongest.empty()) note("against: " + topList(t.strongest));
       if (t.noCheck) note("no residual_check in " + std::to_string(t.noCheck));
