@@ -503,7 +503,7 @@ OpenMatchingCase openWorldMatching(const std::string& name, double ratio, std::u
       const double u = (pts[i].nominal.x() - 160.0) / 160.0;
       d.shape(static_cast<Eigen::Index>(i)) = sign * pts[i].normal.z() * u * u;
     }
-    tr.against = {"x"};
+    tr.against = {"x", "surface:plane"};
     tr.description = fmt("base plate bent: z %+.0f ((x - 160) / 160)^2", sign);
   } else if (name == "probe_lobing") {
     const double phi0 = rng.uniform(0.0, 2.0 * kPi / 3.0);

@@ -77,7 +77,8 @@
 //                   A (u^2 - mean u^2) along its longest extent u in [-1, 1] (zero mean on the
 //                   surface, so it is no surface offset) (smooth; against surface:<s>);
 //   plate_bending   the thin base plate bends: displacement (0, 0, A ((x - 160) / 160)^2) seen along
-//                   the normal, n_z A ((x - 160) / 160)^2 (smooth; against x);
+//                   the normal, n_z A ((x - 160) / 160)^2 (smooth; against x, and surface:plane:
+//                   the plane's 8 points, n_z = 1, carry most of it and its longest extent is x);
 //   probe_lobing    a three-lobed touch-trigger probe: the pre-travel depends on the probing
 //                   direction, deviation -A sqrt(n_x^2 + n_y^2) cos(3 (phi_n - phi0)), phi_n the
 //                   azimuth of the nominal normal, phi0 uniform (periodic; against normal,
