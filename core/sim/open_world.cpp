@@ -315,7 +315,7 @@ OpenKinematicCase openWorldKinematic(const std::string& name, double ratio, std:
         }
       }
     }
-    tr.against = {"reversal"};
+    tr.against = {"reversal", "angle"};
     tr.description = fmt("spike after every axis reversal decaying over %.2f samples", L);
   } else if (name == "straightness_bow") {
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
@@ -323,7 +323,7 @@ OpenKinematicCase openWorldKinematic(const std::string& name, double ratio, std:
       const double u = (cmd[k].x() - c.centreMm.x()) / c.radiusMm;
       set(k, Eigen::Vector2d(0.0, sign * u * u));
     }
-    tr.against = {"x", "angle"};
+    tr.against = {"x", "y", "angle"};
     tr.description = fmt("X guideway bow: y %+.0f ((x - cx) / R)^2", sign);
   } else if (name == "outlier_point") {
     const std::size_t k = static_cast<std::size_t>(rng.below(n));

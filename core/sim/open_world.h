@@ -51,10 +51,11 @@
 //                   -A d_new exp(-m / L) along that axis, m samples since the reversal, L uniform
 //                   in [2, 5] samples; no spike before an axis' first reversal (catalogue backlash
 //                   is a constant lost motion over the whole half-loop, not a decaying spike)
-//                   (smooth; against reversal);
+//                   (smooth; against reversal, and angle: the axes reverse at fixed path angles,
+//                   0, 90, 180, 270 deg, with the same sign in both loops);
 //   straightness_bow the X guideway is bowed: y += A ((x_cmd - c_x) / R)^2, sign random; the
-//                   linear part is squareness (declared) (smooth; against x, and angle: on a circle
-//                   it is a second harmonic of the path angle);
+//                   linear part is squareness (declared) (smooth; against x, and y and angle: on a
+//                   circle (x / R)^2 = 1 - (y / R)^2, a second harmonic of the path angle);
 //   outlier_point   one point (uniform) displaced by the gross error in a uniform direction;
 // SETUP: the CMM report series of effects_setup.h on the given model without effects, rounding or
 // noise (w1 = 0.03 mm setup errors drawn from the seed, parts 1..P (default 20), 12 min per part with
