@@ -121,8 +121,9 @@ int main(int argc, char** argv) {
   bool diagnose = false, realDiagnose = false;  // issue 8 (bench_diagnose.cpp)
   bool open = false;                            // issue 15: --diagnose --open (bench_open_world.cpp)
   metrofit::bench::OpenBenchOptions openOptions;
-  int explicitSeeds = 0;    // --seeds N wins over --quick
-  bool setupBench = false;  // issue 4 (bench_setup.cpp)
+  int explicitSeeds = 0;              // --seeds N wins over --quick
+  std::vector<std::string> openCase;  // --open-case DOMAIN CASE SEED
+  bool setupBench = false;            // issue 4 (bench_setup.cpp)
   metrofit::bench::DiagnoseBenchOptions diagnoseOptions;
   metrofit::bench::OptimBenchOptions optimOptions;
   int repeat = 5;
@@ -154,7 +155,10 @@ int main(int argc, char** argv) {
       realDiagnose = true;
     else if (a == "--open")
       open = diagnose = true;
-    else if (a == "--diagnose-demo" && i + 1 < argc) {  // writes the closed loop's demo data and exits
+    else if (a == "--open-case" && i + 3 < argc) {  // one data set of the open-world study, then exits
+      openCase = {argv[i + 1], argv[i + 2], argv[i + 3]};
+      i += 3;
+    } else if (a == "--diagnose-demo" && i + 1 < argc) {  // writes the closed loop's demo data and exits
       for (const auto& line : metrofit::bench::writeDiagnoseDemo(argv[++i]))
         std::printf("%s\n", line.c_str());
       return 0;
@@ -213,6 +217,18 @@ int main(int argc, char** argv) {
       !diagnose && !realDiagnose && !setupBench)
     io = rng = optimizers = true;
   if (explicitSeeds > 0) openOptions.seeds = explicitSeeds;
+  if (!openCase.empty()) {
+    openOptions.sourceDir = sourceDir;
+    try {
+      const nlohmann::json j = metrofit::bench::benchOpenCase(
+          openOptions, openCase[0], openCase[1], std::strtoull(openCase[2].c_str(), nullptr, 10));
+      if (!jsonOut.empty()) metrofit::writeFileAtomic(jsonOut, metrofit::dumpJson(j));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "metrofit-bench: %s\n", e.what());
+      return 1;
+    }
+    return 0;
+  }
   nlohmann::json result{{"version", metrofit::kVersion}, {"repeat", repeat}};
   try {
     if (io) result["io"] = benchIo(sourceDir, repeat);

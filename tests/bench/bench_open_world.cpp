@@ -22,6 +22,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <stdexcept>
 
 #include "core/diagnose/kinematic_diagnosis.h"
 #include "core/diagnose/matching_diagnosis.h"
@@ -328,6 +329,33 @@ nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& o) {
         {"errors", open.errors + clean.errors}};
   }
   return out;
+}
+
+nlohmann::json benchOpenCase(const OpenBenchOptions& o, const std::string& domain, const std::string& name,
+                             std::uint64_t seed) {
+  for (OpenWorldDomain d : {OpenWorldDomain::Thermal, OpenWorldDomain::Kinematic, OpenWorldDomain::Setup,
+                            OpenWorldDomain::Matching}) {
+    if (domain != toString(d)) continue;
+    const Result r = runnerFor(d, o.sourceDir)(name, o.ratio, seed);
+    const OpenWorldTruth& t = r.truth;
+    std::string against;
+    for (const auto& a : t.against) against += (against.empty() ? "" : ", ") + a;
+    std::printf("open-case %s %s seed %llu, effect-to-noise %.1f: %s; noise %s sigma %.4g; against: %s\n",
+                domain.c_str(), name.c_str(), static_cast<unsigned long long>(seed), o.ratio,
+                t.description.c_str(), toString(t.noise), t.noiseSigma,
+                against.empty() ? "-" : against.c_str());
+    const nlohmann::json dj = diagnose::toJson(r.diagnosis);
+    std::printf("%s\n", dj.dump(1).c_str());
+    return {{"truth",
+             {{"case", t.caseName},
+              {"form", t.form},
+              {"against", t.against},
+              {"description", t.description},
+              {"amplitude", t.amplitude},
+              {"noise_sigma", t.noiseSigma}}},
+            {"diagnosis", dj}};
+  }
+  throw std::runtime_error("unknown domain '" + domain + "' (thermal, kinematic, setup, matching)");
 }
 
 }  // namespace metrofit::bench

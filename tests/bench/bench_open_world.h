@@ -17,6 +17,7 @@
 // gives, per case, the median of the final fit rmse over the noise sigma (rmse/sd; the kinematic
 // rmse is a distance, sqrt 2 sigma for pure noise), the catalogue names accepted and the strongest
 // `against` found (the three most frequent each).
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,10 @@ struct OpenBenchOptions {
 
 /// Runs the study, prints one table row per case and the four figures per domain, returns the JSON.
 nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& options);
+
+/// One data set of the study, to look at a failure (metrofit-bench --open-case DOMAIN CASE SEED):
+/// prints the truth and the diagnosis JSON (CONTRACT.md) and returns {"truth", "diagnosis"}.
+nlohmann::json benchOpenCase(const OpenBenchOptions& options, const std::string& domain,
+                             const std::string& name, std::uint64_t seed);
 
 }  // namespace metrofit::bench
