@@ -229,6 +229,7 @@ OpenThermalCase openWorldThermal(const std::string& name, double ratio, std::uin
   OpenWorldTruth& tr = d.truth;
   if (name == "sensor_rezero") {
     const double ts = t0 + span * rng.uniform(0.25, 0.75);
+    tr.position = (ts - t0) / span;
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
     for (std::size_t k = 0; k < n; ++k) d.shape(static_cast<Eigen::Index>(k)) = t[k] >= ts ? sign : 0.0;
     tr.against = {"time", "row"};
@@ -255,6 +256,7 @@ OpenThermalCase openWorldThermal(const std::string& name, double ratio, std::uin
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
     d.shape(static_cast<Eigen::Index>(k)) = sign;
     tr.outlierUnit = k;
+    tr.position = static_cast<double>(k) / static_cast<double>(n - 1);
     tr.outlierRow = static_cast<long>(k) + 1;
     tr.description = fmt("gross error of sign %+.0f at data row %.0f", sign, static_cast<double>(k + 1));
   }
@@ -330,6 +332,7 @@ OpenKinematicCase openWorldKinematic(const std::string& name, double ratio, std:
     const double theta = rng.uniform(0.0, 2.0 * kPi);
     set(k, Eigen::Vector2d(std::cos(theta), std::sin(theta)));
     tr.outlierUnit = k;
+    tr.position = static_cast<double>(k) / static_cast<double>(n - 1);
     tr.outlierRow = static_cast<long>(k) + 1;
     tr.description =
         fmt("gross error at data row %.0f along %.0f deg", static_cast<double>(k + 1), theta * 180.0 / kPi);
@@ -393,6 +396,7 @@ OpenSetupCase openWorldSetup(const setup::Model& model, const std::string& name,
   if (name == "reclamp_step") {
     const Eigen::Index i = pickDatum(rng, false);
     const int pStar = P / 4 + static_cast<int>(rng.below(static_cast<std::uint64_t>(3 * P / 4 - P / 4 + 1)));
+    tr.position = static_cast<double>(pStar - 1) / static_cast<double>(P - 1);
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
     for (std::size_t r = 0; r < n; ++r)
       if (partNo[r] >= pStar)
@@ -431,6 +435,7 @@ OpenSetupCase openWorldSetup(const setup::Model& model, const std::string& name,
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
     d.shape(static_cast<Eigen::Index>(r)) = sign;
     tr.outlierUnit = r;
+    tr.position = static_cast<double>(r) / static_cast<double>(n - 1);
     tr.outlierRow = static_cast<long>(r) + 1;
     tr.outlierPart = m.rows[r].part;
     tr.outlierDimension = model.dimensions[m.rows[r].dimension].id;
@@ -520,6 +525,7 @@ OpenMatchingCase openWorldMatching(const std::string& name, double ratio, std::u
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
     d.shape(static_cast<Eigen::Index>(i)) = sign;
     tr.outlierUnit = i;
+    tr.position = static_cast<double>(i) / static_cast<double>(n - 1);
     tr.outlierRow = static_cast<long>(i) + 1;
     tr.outlierId = pts[i].id;
     tr.description = "gross error (sign " + std::string(sign > 0 ? "+" : "-") + ") at point " + pts[i].id;

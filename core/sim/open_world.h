@@ -148,6 +148,9 @@ struct OpenWorldTruth {
   std::optional<std::size_t> outlierUnit;
   std::optional<long> outlierRow;
   std::string outlierPart, outlierDimension, outlierId;
+  /// Steps and gross errors: where in the data order they sit, 0 (first row / part) to 1 (last);
+  /// e.g. a thermal step at 0.6 lies in the held-out rows of a fit on the first half.
+  std::optional<double> position;
   std::string description;  ///< the drawn parameters in words
 };
 

@@ -87,6 +87,8 @@ struct Trial {
   std::size_t outliers = 0;     // outliers listed
   double finalOverSigma = 0.0;  // final fit rmse / noise sigma
   double amplitude = 0.0;       // the simulated effect's amplitude (data units)
+  double position = -1.0;       // a step's or gross error's place in the data order (0..1), else -1
+  bool grossCase = false;       // the case is a gross error
   std::vector<std::string> catalogueNames;
   std::string strongest;  // against of the strongest structure (or of the generic effect)
 };
@@ -102,6 +104,8 @@ Trial judge(const Result& r) {
   const Diagnosis& d = r.diagnosis;
   t.finalOverSigma = d.final.rmse / r.truth.noiseSigma;
   t.amplitude = r.truth.amplitude;
+  t.position = r.truth.position.value_or(-1.0);
+  t.grossCase = r.truth.kind == OpenCaseKind::Outlier;
   for (const auto* c : d.accepted()) {
     if (c->generic || c->name.rfind("unexplained:", 0) == 0) {
       t.generic = true;
@@ -142,6 +146,9 @@ struct Tally {
   int falseFlag = 0, outliersListed = 0, truthListed = 0, notWhite = 0, anyAccepted = 0;
   std::map<std::string, int> catalogueNames, strongest;
   std::vector<double> finalOverSigma, amplitude;
+  // Steps and gross errors by their place in the data: [0] first half, [1] second half (a thermal
+  // fit uses the first half); runs and hits (effects: found; gross errors: listed).
+  int halfRuns[2] = {0, 0}, halfHits[2] = {0, 0};
   double seconds = 0.0;
 
   void add(const Trial& t) {
@@ -153,6 +160,11 @@ struct Tally {
     noCheck += !t.hasCheck;
     finalOverSigma.push_back(t.finalOverSigma);
     amplitude.push_back(t.amplitude);
+    if (t.position >= 0.0) {
+      const int h = t.position < 0.5 ? 0 : 1;
+      ++halfRuns[h];
+      halfHits[h] += t.grossCase ? t.outlierListed : (!t.white || t.generic || t.catalogue);
+    }
     const bool accepted = t.generic || t.catalogue;
     detected += !t.white || accepted;
     generic += t.generic;
@@ -213,6 +225,8 @@ nlohmann::json tallyJson(const Tally& t) {
           {"strongest_against", t.strongest},
           {"final_rmse_over_sigma_median", median(t.finalOverSigma)},
           {"amplitude_median", median(t.amplitude)},
+          {"first_half", {{"runs", t.halfRuns[0]}, {"hits", t.halfHits[0]}}},
+          {"second_half", {{"runs", t.halfRuns[1]}, {"hits", t.halfHits[1]}}},
           {"seconds", t.seconds}};
 }
 
@@ -263,6 +277,11 @@ nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& o) {
                       domain == OpenWorldDomain::Thermal ? "um" : "mm");
         note(buf);
       }
+      if (t.halfRuns[0] + t.halfRuns[1] > 0)
+        note(std::string(info.kind == OpenCaseKind::Outlier ? "listed" : "found") +
+             " when in the first half " + fixed1(pct(t.halfHits[0], t.halfRuns[0])) + " % of " +
+             std::to_string(t.halfRuns[0]) + ", second half " + fixed1(pct(t.halfHits[1], t.halfRuns[1])) +
+             " % of " + std::to_string(t.halfRuns[1]));
       if (!t.catalogueNames.empty()) note("catalogue: " + topList(t.catalogueNames));
       if (!t.strongest.empty()) note("against: " + topList(t.strongest));
       if (t.noCheck) note("no residual_check in " + std::to_string(t.noCheck));

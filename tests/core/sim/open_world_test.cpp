@@ -139,6 +139,9 @@ void checkDomain(OpenWorldDomain domain, Make make, ToObs toObs) {
         ASSERT_TRUE(c.truth.outlierUnit.has_value());
         ASSERT_TRUE(c.truth.outlierRow.has_value());
         EXPECT_EQ(*c.truth.outlierRow, static_cast<long>(*c.truth.outlierUnit) + 1);
+        ASSERT_TRUE(c.truth.position.has_value());
+        const auto units = static_cast<double>(a.y.size() / (domain == OpenWorldDomain::Kinematic ? 2 : 1));
+        EXPECT_DOUBLE_EQ(*c.truth.position, static_cast<double>(*c.truth.outlierUnit) / (units - 1.0));
         const double gross = 6.0 * ratio * sigma;
         const Eigen::Index per = domain == OpenWorldDomain::Kinematic ? 2 : 1;
         const Eigen::Index u = static_cast<Eigen::Index>(*c.truth.outlierUnit) * per;
@@ -340,6 +343,8 @@ TEST(OpenWorld, StepIsAStepInTime) {
   EXPECT_LE(c.log.timeMin[first] - c.log.timeMin.front(), 0.75 * span + 1.0);
   for (std::size_t k = first; k < y.size(); ++k) EXPECT_NEAR(y[k] - y0[k], y[first] - y0[first], 1e-9);
   EXPECT_NEAR(std::abs(y[first] - y0[first]), c.truth.amplitude, 1e-9);
+  ASSERT_TRUE(c.truth.position.has_value());
+  EXPECT_NEAR(*c.truth.position * span, c.log.timeMin[first] - c.log.timeMin.front(), 1.0);
 }
 
 TEST(OpenWorld, ReversalSpikeDecays) {
