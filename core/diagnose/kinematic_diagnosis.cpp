@@ -11,6 +11,7 @@
 #include <optional>
 
 #include <Eigen/Dense>
+#include <Eigen/SVD>
 
 #include "core/common/error.h"
 #include "core/kinematics/identification.h"
@@ -514,6 +515,15 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
     std::map<std::string, GenericTerm> genericTerms;
     double genericPenalty = 0.0;
     {
+      // A generic effect is the part of f(v) the current model cannot absorb: its basis is projected
+      // off the model's Jacobian at the solution (a linear part in x or y is a squareness or scale the
+      // declared model already has) and replaced by an orthonormal basis of what is left, so that the
+      // joint fit stays well conditioned.
+      Eigen::VectorXd r0;
+      Eigen::MatrixXd J0;
+      evaluate(d, state, cur.q, r0, &J0);
+      const Eigen::HouseholderQR<Eigen::MatrixXd> qrJ(J0);
+      const Eigen::MatrixXd QJ = qrJ.householderQ() * Eigen::MatrixXd::Identity(J0.rows(), J0.cols());
       const ResidualCheckInput ci = kinematicCheckInput(d, state, cur, vars, orig);
       const ResidualCheck rc = checkResidual(ci);
       genericPenalty = genericSearchPenalty(rc);
@@ -521,9 +531,17 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
         const ResidualVariable* v = findVariable(ci.variables, g.against);
         if (!v) continue;
         // Observation space (x, y per point), one set of columns per coordinate.
-        Eigen::MatrixXd G = -genericBasis(g, v->values);
+        const Eigen::MatrixXd G = variableBasis(g, *v);
+        const Eigen::MatrixXd Gp = G - QJ * (QJ.transpose() * G);
+        const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Gp, Eigen::ComputeThinU);
+        Eigen::Index rank = 0;
+        const double top = G.norm();
+        for (Eigen::Index j = 0; j < svd.singularValues().size(); ++j)
+          if (svd.singularValues()(j) > 1e-6 * top) ++rank;
+        if (rank == 0) continue;
+        Eigen::MatrixXd Gk = svd.matrixU().leftCols(rank);
         const std::string name = "unexplained:" + g.against;
-        genericTerms[name] = GenericTerm{std::make_shared<const Eigen::MatrixXd>(std::move(G)), g};
+        genericTerms[name] = GenericTerm{std::make_shared<const Eigen::MatrixXd>(std::move(Gk)), g};
         names.push_back(name);
       }
     }
@@ -595,16 +613,12 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
           text = Phrase("scale x %1 +- %2 ppm, y %3 +- %4 ppm",
                         {num(q.sx), num(se(sol, l.sx), 2), num(q.sy), num(se(sol, l.sx + 1), 2)});
         } else if (c.generic) {
-          // The last generic term's coefficients: positive = outward (measured beyond the model).
-          const Eigen::Index q0 = static_cast<Eigen::Index>(next.generic.back().columns->cols());
+          // The last generic term's contribution to the modelled positions (x, y of every point).
+          const Eigen::MatrixXd& Gk = *next.generic.back().columns;
+          const Eigen::Index q0 = Gk.cols();
           Eigen::VectorXd b(q0);
           for (Eigen::Index j = 0; j < q0; ++j) b(j) = q.g[q.g.size() - static_cast<std::size_t>(q0 - j)];
-          std::vector<double> twice;
-          for (double x : findVariable(vars, c.generic->against)->values) {
-            twice.push_back(x);
-            twice.push_back(x);
-          }
-          const GenericSummary gs = summariseGeneric(*c.generic, -b, twice, "mm");
+          const GenericSummary gs = summariseContribution(*c.generic, Gk * b, "mm");
           c.parameters = {Parameter{"form", std::string(formName(c.generic->form)), std::nullopt}};
           for (const auto& [k, val] : gs.numbers) c.parameters.push_back({k, val, std::nullopt});
           text = Phrase("%1", {A::text(gs.text)});

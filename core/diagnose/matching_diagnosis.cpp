@@ -550,7 +550,7 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
         EffectDef e;
         e.name = "unexplained:" + g.against;
         e.kind = Kind::Generic;
-        e.basis = std::make_shared<const Eigen::MatrixXd>(genericBasis(g, v->values));
+        e.basis = std::make_shared<const Eigen::MatrixXd>(variableBasis(g, *v));
         e.shape = g;
         e.params = static_cast<int>(e.basis->cols()) * (pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3));
         defs.push_back(std::move(e));

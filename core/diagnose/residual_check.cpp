@@ -285,6 +285,13 @@ Eigen::MatrixXd basisOnFinite(const GenericForm& f, const std::vector<double>& v
 }
 }  // namespace
 
+Eigen::MatrixXd variableBasis(const GenericForm& form, const ResidualVariable& v) {
+  Eigen::MatrixXd G = genericBasis(form, v.values);
+  if (v.weights.size() == static_cast<std::size_t>(G.rows()))
+    for (Eigen::Index i = 0; i < G.rows(); ++i) G.row(i) *= v.weights[static_cast<std::size_t>(i)];
+  return G;
+}
+
 std::vector<GenericForm> candidateForms(const ResidualVariable& v, const ResidualCheckOptions& o) {
   std::vector<GenericForm> out;
   const std::vector<double> s = finiteSorted(v.values);
@@ -318,10 +325,12 @@ std::vector<GenericForm> candidateForms(const ResidualVariable& v, const Residua
     GenericForm sm = base;
     sm.form = DependenceForm::Smooth;
     const int K = std::min<int>(o.splineKnots, static_cast<int>(distinct / 2));
-    // Harrell's knot placement: quantiles spread over the data, boundary knots at 5 % / 95 %.
+    // Knots at equally spaced quantiles with the boundary knots at the extremes (with Harrell's 5 % /
+    // 95 % boundaries the spline is linear near the ends of the range, and a quadratic bow of a
+    // straightness error left a remainder that a named cyclic error took up in the study).
     std::vector<double> knots;
     for (int j = 0; j < K; ++j) {
-      const double q = 0.05 + 0.90 * j / (K - 1);
+      const double q = static_cast<double>(j) / (K - 1);
       knots.push_back((quantileSorted(s, q) - base.centre) / base.scale);
     }
     knots.erase(std::unique(knots.begin(), knots.end()), knots.end());
@@ -437,7 +446,7 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
     std::optional<Found> bestStep;
     int steps = 0;
     for (const GenericForm& f : forms) {
-      const FTest t = fTest(r, U, genericBasis(f, v.values), sse0);
+      const FTest t = fTest(r, U, variableBasis(f, v), sse0);
       if (!t.ok) continue;
       if (f.form == DependenceForm::Step) {
         ++steps;
@@ -529,7 +538,7 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
     const auto vit = std::find_if(in.variables.begin(), in.variables.end(),
                                   [&](const ResidualVariable& v) { return v.name == s.against; });
     const ResidualVariable& v = *vit;
-    const Eigen::MatrixXd G = genericBasis(s.shape, v.values);
+    const Eigen::MatrixXd G = variableBasis(s.shape, v);
     const int C = std::max(1, in.components);
     Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, G.cols() + C);
     for (Eigen::Index i = 0; i < n; ++i) X(i, i % C) = 1.0;
@@ -560,19 +569,23 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
   return c;
 }
 
-GenericSummary summariseGeneric(const GenericForm& f, const Eigen::VectorXd& b, const std::vector<double>& values,
-                                const std::string& unit) {
+GenericSummary summariseContribution(const GenericForm& f, Eigen::VectorXd contribution, const std::string& unit) {
   GenericSummary s;
-  const Eigen::MatrixXd G = genericBasis(f, values);
-  Eigen::VectorXd contribution = G * b;
   if (contribution.size() > 0) contribution.array() -= contribution.mean();
   const double rms = contribution.size() ? std::sqrt(contribution.squaredNorm() / static_cast<double>(contribution.size())) : 0.0;
   const double range = contribution.size() ? contribution.maxCoeff() - contribution.minCoeff() : 0.0;
   const std::string u = unit.empty() ? "" : " " + unit;
   s.numbers = {{"rms", rms}, {"range", range}};
-  Phrases text = {Phrase("%1 in %2, rms %3%4, range %5%4",
-                         {A::text({formPhrase(f.form)}), A::name(f.against), A::number(rms, 3), A::unit(u),
-                          A::number(range, 3)})};
+  s.text = {Phrase("%1 in %2, rms %3%4, range %5%4",
+                   {A::text({formPhrase(f.form)}), A::name(f.against), A::number(rms, 3), A::unit(u), A::number(range, 3)})};
+  return s;
+}
+
+GenericSummary summariseGeneric(const GenericForm& f, const Eigen::VectorXd& b, const std::vector<double>& values,
+                                const std::string& unit) {
+  GenericSummary s = summariseContribution(f, genericBasis(f, values) * b, unit);
+  const std::string u = unit.empty() ? "" : " " + unit;
+  Phrases text = std::move(s.text);
   if (f.form == DependenceForm::Step && b.size() == 1) {
     s.numbers.push_back({"at", f.knots.front()});
     s.numbers.push_back({"step", b(0)});

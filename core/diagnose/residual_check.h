@@ -15,7 +15,7 @@
 //   * against every variable, nested F tests of the model columns [1, J] against [1, J, G]:
 //       F = ((SSE0 - SSE1) / q) / (SSE1 / (n - p - q)),  p = rank [1, J],  q = rank of G beyond it,
 //     with G the basis of a form (generic_effect below): continuous variables `linear` (1 column),
-//     `smooth` (natural cubic spline, knots at quantiles) and `step` (one change point, the best of
+//     `smooth` (natural cubic spline, knots at equally spaced quantiles, boundary knots at the extremes) and `step` (one change point, the best of
 //     `stepPositions` candidate positions at quantiles; its p-value Bonferroni-corrected for the
 //     search), a path angle `periodic` (harmonics 1..`harmonics`), a category `level` (one constant
 //     per level). Since r is orthogonal to [1, J], SSE0 - SSE1 = r^T G (Gp^T Gp)^-1 G^T r with
@@ -66,6 +66,10 @@ struct ResidualVariable {
   std::vector<std::string> levels;  ///< Category: the level names
   bool naturalOrder = false;        ///< Ljung-Box on the residual sorted by this variable
   Phrases label;                    ///< axis title for plots, e.g. "time (min)"
+  /// Optional per-observation weights of the basis (variableBasis): a generic effect of this
+  /// variable acts as weight * f(value), e.g. the gain of one setup datum on each dimension times a
+  /// function of the part number (datum:<id>).
+  std::vector<double> weights;
 };
 
 /// Forms of a dependence (CONTRACT.md `form`).
@@ -92,6 +96,8 @@ struct GenericForm {
 
 /// The basis of `form` on `values` (one row per value; no intercept column).
 Eigen::MatrixXd genericBasis(const GenericForm& form, const std::vector<double>& values);
+/// genericBasis on the variable's values, rows multiplied by its weights when it has any.
+Eigen::MatrixXd variableBasis(const GenericForm& form, const ResidualVariable& variable);
 
 struct ResidualTest {
   std::string name;     ///< "ljung_box" or "f_test"
@@ -195,6 +201,9 @@ struct GenericSummary {
 };
 GenericSummary summariseGeneric(const GenericForm& form, const Eigen::VectorXd& coefficients,
                                 const std::vector<double>& values, const std::string& unit);
+/// The rms and range part of summariseGeneric from the fitted contribution itself (one value per
+/// observation), for a domain that fits a transformed basis.
+GenericSummary summariseContribution(const GenericForm& form, Eigen::VectorXd contribution, const std::string& unit);
 
 /// The generic candidates of a loop round: the shapes of the strongest structures of `check`, at
 /// most `count`, skipping the variables named in `taken` (they have a generic effect already).

@@ -67,8 +67,10 @@ namespace {
 
 /// The residual variables of the setup rows (CONTRACT.md "The open world"): row (file order) and
 /// time (natural orders), part (one level per part), dimension (one level per dimension) and, per
-/// dimension with at least 6 rows, dimension:<d> = the part number on that dimension's rows.
-std::vector<ResidualVariable> setupVariables(const setup::Model& model, const std::vector<std::size_t>& rowDim,
+/// dimension with at least 6 rows, dimension:<d> = the part number on that dimension's rows, and per
+/// setup datum datum:<id> = the part number weighted by the datum's gain on each row's dimension.
+std::vector<ResidualVariable> setupVariables(const setup::Model& model, const Eigen::MatrixXd& gains,
+                                             const std::vector<std::size_t>& rowDim,
                                              const std::vector<int>& rowPart, const Eigen::VectorXd& partCol,
                                              const Eigen::VectorXd& timeCol, const std::vector<std::size_t>& origRow,
                                              const std::vector<std::string>& partNames) {
@@ -111,6 +113,20 @@ std::vector<ResidualVariable> setupVariables(const setup::Model& model, const st
     ++count[rowDim[r]];
   }
   vars.push_back(std::move(dim));
+  // datum:<id>: a change of one setup datum as a function of the part number, acting through its
+  // gains (a re-clamped work offset, a tool changed mid-series: a step of every dimension it feeds).
+  for (std::size_t i = 0; i < model.setup.size(); ++i) {
+    ResidualVariable v;
+    v.name = "datum:" + model.setup[i].id;
+    v.label = {Phrase("part number (%1)", {PhraseArg::name(model.setup[i].id)})};
+    bool any = false;
+    for (std::size_t r = 0; r < n; ++r) {
+      v.values.push_back(partCol(static_cast<Eigen::Index>(r)));
+      v.weights.push_back(gains(static_cast<Eigen::Index>(rowDim[r]), static_cast<Eigen::Index>(i)));
+      any = any || v.weights.back() != 0.0;
+    }
+    if (any) vars.push_back(std::move(v));
+  }
   for (const auto& [d, c] : count) {
     if (c < 6) continue;
     ResidualVariable v;
@@ -228,7 +244,7 @@ LoopRun runSetup(const setup::Model& model, const setup::Measurements& measureme
 
   std::vector<std::string> slotNames;
   for (const auto& o : ordered) slotNames.push_back(o.second);
-  const std::vector<ResidualVariable> vars = setupVariables(model, rowDim, rowPart, partCol, timeCol, origRow, slotNames);
+  const std::vector<ResidualVariable> vars = setupVariables(model, G, rowDim, rowPart, partCol, timeCol, origRow, slotNames);
 
   std::vector<bool> used(defs.size(), false);
   std::vector<std::size_t> acceptedDefs;
@@ -311,7 +327,7 @@ LoopRun runSetup(const setup::Model& model, const setup::Measurements& measureme
       for (const GenericForm& g : genericCandidates(rc, genericTaken)) {
         const ResidualVariable* v = findVariable(vars, g.against);
         if (!v) continue;
-        const Eigen::MatrixXd Zg = genericBasis(g, v->values);
+        const Eigen::MatrixXd Zg = variableBasis(g, *v);
         Eigen::MatrixXd Z(static_cast<Eigen::Index>(n), Zacc.cols() + Zg.cols());
         Z << Zacc, Zg;
         EffectEstimate est = estimateEffects(declared, y, Z);

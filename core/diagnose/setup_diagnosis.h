@@ -39,7 +39,8 @@
 // above the outlier threshold are excluded before the loop (Diagnosis::residualCheck->outliers, with
 // row, part and dimension). Every round also tries the generic effects of the current residual's
 // strongest structures (variables: row and time in file order, part and dimension as levels, and
-// dimension:<d> = the part number on the rows of dimension d), each its basis as extra columns,
+// dimension:<d> = the part number on the rows of dimension d, datum:<id> = the part number times the
+// datum's gain on each row), each its basis as extra columns,
 // under the same decision with an extra penalty 2 ln(tests) for the search; the winner of the round
 // is the candidate with the lowest dBIC, so a named effect is given only when it explains the data
 // at least as well as the generic alternative. The final residual's check is in residualCheck.
