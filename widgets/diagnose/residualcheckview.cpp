@@ -429,6 +429,7 @@ void ResidualCheckView::setDiagnosis(const diagnose::Diagnosis& d) {
   clear();
   if (!d.residualCheck) {
     verdict_->setText(tr("This diagnosis has no residual check."));
+    charts_->view->chart()->setTitle(tr("This diagnosis has no residual check."));
     return;
   }
   hasCheck_ = true;
