@@ -1,0 +1,339 @@
+// The residual check of the closed loop (core/diagnose/residual_check.h; issue 15 item 8) on the
+// diagnosis page and in the report (offscreen):
+//   * a hand-built diagnosis with a residual check: the verdict, the tests / structure / outlier
+//     tables (values, p-value formatting, units, rejected flags), the chart's series (residual
+//     points, generic fit line through the distinct x values, outliers) with their point counts,
+//     the same in German numbers;
+//   * generic effects in the candidate table (name, form) and Apply: the named effects are applied,
+//     a generic one is not (the domains' applied-effects parsers cannot carry it yet), Apply is
+//     disabled with a tooltip when only generic effects are accepted;
+//   * the report: writeResidualCheck into a PDF, pdftotext finds the unexplained-structure sentence
+//     in reader's words (no internal identifiers), the outlier and the generic term;
+#include <gtest/gtest.h>
+
+#include <QDir>
+#include <QFile>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QProcess>
+#include <QPushButton>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "app/gui/diagnosispage.h"
+#include "core/diagnose/diagnosis.h"
+#include "demo_document_fixture.h"
+#include "qtapp.h"
+#include "widgets/diagnose/coretexts.h"
+#include "widgets/diagnose/diagnosisstudy.h"
+#include "widgets/diagnose/residualchecktext.h"
+#include "widgets/diagnose/residualcheckview.h"
+#include "widgets/report/report.h"
+#include "widgets/report/reportpainter.h"
+#include "widgets/report/sections.h"
+
+namespace metrofit {
+namespace {
+
+using diagnose::DependenceForm;
+using A = PhraseArg;
+
+/// Restores the default locale after a test.
+class LocaleGuard {
+ public:
+  explicit LocaleGuard(const QLocale& locale) : saved_(QLocale()) { QLocale::setDefault(locale); }
+  ~LocaleGuard() { QLocale::setDefault(saved_); }
+
+ private:
+  QLocale saved_;
+};
+
+constexpr int kPlotPoints = 60;     // observations in the plot
+constexpr int kDistinctX = 30;      // every x value twice
+constexpr double kOutlierX = 10.5;  // where the outlier sits
+
+/// A thermal diagnosis: `lag:T2` and the generic `unexplained:T1` accepted (unless `genericOnly`:
+/// then only the generic one), a residual check that still finds a smooth dependence on T1 and a
+/// step in time, one outlier.
+diagnose::Diagnosis fixture(bool genericOnly = false) {
+  diagnose::Diagnosis d;
+  d.domain = "thermal";
+  d.units = "um";
+  d.baseline = {8.9, 21.0, 9.4};
+  d.final = {0.41, 1.3, 0.45};
+  diagnose::Candidate lag;
+  lag.name = "lag:T2";
+  lag.accepted = !genericOnly;
+  lag.parameters = {{"tau_min", 15.5, 0.2}};
+  lag.rmseBefore = 8.9;
+  lag.rmseAfter = 2.0;
+  lag.setEvidence({Phrase("tau %1 min", {A::number(15.5, 3)})});
+  d.effects.push_back(lag);
+  diagnose::Candidate generic;
+  generic.name = "unexplained:T1";
+  generic.accepted = true;
+  generic.round = 1;
+  generic.parameters = {{"rms", 2.1, std::nullopt}, {"range", 6.3, std::nullopt}};
+  generic.rmseBefore = 2.0;
+  generic.rmseAfter = 0.41;
+  diagnose::GenericForm shape;
+  shape.against = "T1";
+  shape.form = DependenceForm::Smooth;
+  shape.knots = {20.0, 22.0, 24.0, 26.0, 28.0};
+  generic.generic = shape;
+  generic.setEvidence({Phrase("%1 in %2, rms %3%4, range %5%4",
+                              {A::text({Phrase("smooth")}), A::name("T1"), A::number(2.1, 3), A::unit(" um"),
+                               A::number(6.3, 3)})});
+  d.effects.push_back(generic);
+
+  diagnose::ResidualCheck c;
+  c.white = false;
+  c.level = 0.01;
+  c.observations = 500;
+  c.outlierThreshold = 9.61;
+  c.tests = {{"ljung_box", "time", "", 81.2, 3e-12, 20, true},
+             {"f_test", "T1", "linear", 12.5, 0.0004, 1, true},
+             {"f_test", "T1", "smooth", 40.1, 1.2e-9, 4, true},
+             {"f_test", "T3", "linear", 0.8, 0.37, 1, false},
+             {"f_test", "time", "step", 9.7, 0.0002, 1, true}};
+  diagnose::StructureItem s1;
+  s1.against = "T1";
+  s1.form = DependenceForm::Smooth;
+  s1.p = 1.2e-9;
+  s1.share = 0.62;
+  s1.shape = shape;
+  diagnose::StructureItem s2;
+  s2.against = "time";
+  s2.form = DependenceForm::Step;
+  s2.p = 0.0002;
+  s2.share = 0.081;
+  s2.shape.against = "time";
+  s2.shape.form = DependenceForm::Step;
+  s2.shape.knots = {125.0};
+  c.structure = {s1, s2};
+  diagnose::Outlier o;
+  o.unit = 411;
+  o.row = 412;
+  o.residual = 8.1;
+  o.robustZ = 21.3;
+  c.outliers = {o};
+  c.summaryParts = {Phrase("not white: still depends on "),
+                    Phrase("%1 (%2, %3 % of the residual variance)",
+                           {A::name("T1"), A::text({Phrase("smooth")}), A::number(62.0, 2)}),
+                    Phrase(", "),
+                    Phrase("%1 (%2, %3 % of the residual variance)",
+                           {A::name("time"), A::text({Phrase("step")}), A::number(8.1, 2)})};
+  c.summary = english(c.summaryParts);
+  diagnose::ResidualCheck::Plot plot;
+  plot.against = "T1";
+  plot.xLabel = {Phrase("%1", {A::name("T1")})};
+  for (int i = 0; i < kPlotPoints; ++i) {
+    const double x = 20.0 + 0.25 * (i % kDistinctX);
+    plot.x.push_back(x);
+    plot.fit.push_back(0.5 * std::sin(x));
+    plot.residual.push_back(0.5 * std::sin(x) + ((i * 37) % 11 - 5) * 0.02);
+  }
+  plot.residual[7] = std::nan("");  // a missing value is not drawn
+  plot.outlierX = {kOutlierX + 10.0};
+  plot.outlierResidual = {8.1};
+  c.plot = plot;
+  d.residualCheck = c;
+  return d;
+}
+
+QString cell(const QTableWidget* t, int row, int col) {
+  const QTableWidgetItem* item = t->item(row, col);
+  return item ? item->text() : QStringLiteral("<none>");
+}
+
+class ResidualCheckPageTest : public test::DemoDocumentTest {
+ protected:
+  static void grab(QWidget& page, const QString& name) {
+    DemoDocumentTest::grab(page, QStringLiteral("residualcheck"), name, QSize(1280, 760));
+  }
+};
+
+TEST_F(ResidualCheckPageTest, HandBuiltCheckFillsVerdictTablesAndChart) {
+  const LocaleGuard locale(QLocale::c());
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Thermal);
+  page.setResult(fixture());
+  const ResidualCheckView* v = page.residualCheckView();
+  ASSERT_TRUE(v->hasCheck());
+  EXPECT_EQ(v->verdictText().toStdString(),
+            "not white: still depends on T1 (smooth, 62 % of the residual variance), time (step, 8.1 % of the "
+            "residual variance)");
+  EXPECT_TRUE(page.statusText().contains(QStringLiteral("Residual check: not white: still depends on T1")))
+      << page.statusText().toStdString();
+  EXPECT_TRUE(page.resultTabs()->tabText(1).contains(QStringLiteral("structure left")));
+
+  const QTableWidget* s = v->structureTable();
+  ASSERT_EQ(s->rowCount(), 2);
+  EXPECT_EQ(cell(s, 0, 0), QStringLiteral("T1"));
+  EXPECT_EQ(cell(s, 0, 1), QStringLiteral("smooth"));
+  EXPECT_EQ(cell(s, 0, 2), QStringLiteral("62.0"));
+  EXPECT_EQ(cell(s, 0, 3), QStringLiteral("1.2e-09"));
+  EXPECT_EQ(cell(s, 1, 0), QStringLiteral("time"));
+  EXPECT_EQ(cell(s, 1, 1), QStringLiteral("step"));
+  EXPECT_EQ(cell(s, 1, 2), QStringLiteral("8.1"));
+  EXPECT_EQ(cell(s, 1, 3), QStringLiteral("2.0e-04"));
+
+  const QTableWidget* t = v->testTable();
+  ASSERT_EQ(t->rowCount(), 5);
+  EXPECT_EQ(cell(t, 0, 0), QStringLiteral("Ljung-Box"));
+  EXPECT_EQ(cell(t, 0, 1), QStringLiteral("time"));
+  EXPECT_EQ(cell(t, 0, 2), QStringLiteral("–"));
+  EXPECT_EQ(cell(t, 0, 3), QStringLiteral("81.2"));
+  EXPECT_EQ(cell(t, 0, 4), QStringLiteral("20"));
+  EXPECT_EQ(cell(t, 0, 5), QStringLiteral("3.0e-12"));
+  EXPECT_EQ(cell(t, 0, 6), QStringLiteral("✓"));
+  EXPECT_EQ(cell(t, 2, 0), QStringLiteral("F test"));
+  EXPECT_EQ(cell(t, 2, 1), QStringLiteral("T1"));
+  EXPECT_EQ(cell(t, 2, 2), QStringLiteral("smooth"));
+  EXPECT_EQ(cell(t, 2, 5), QStringLiteral("1.2e-09"));
+  EXPECT_EQ(cell(t, 3, 5), QStringLiteral("0.37"));  // >= 0.001: three significant digits
+  EXPECT_EQ(cell(t, 3, 6), QStringLiteral("–"));
+  EXPECT_FALSE(t->item(3, 6)->data(Qt::UserRole).toBool());
+  EXPECT_EQ(t->horizontalHeaderItem(6)->text(), QStringLiteral("Rejected at 1 %"));
+
+  const QTableWidget* o = v->outlierTable();
+  ASSERT_EQ(o->rowCount(), 1);
+  EXPECT_EQ(cell(o, 0, 0), QStringLiteral("412"));
+  EXPECT_EQ(cell(o, 0, 1), QStringLiteral("–"));
+  EXPECT_EQ(cell(o, 0, 4), QStringLiteral("8.1 µm"));
+  EXPECT_EQ(cell(o, 0, 5), QStringLiteral("21.3"));
+  EXPECT_EQ(o->horizontalHeaderItem(4)->text(), QStringLiteral("Residual (µm)"));
+
+  // Chart: the residual's finite points, the fit through the distinct x values, the outlier.
+  EXPECT_EQ(v->residualPointCount(), kPlotPoints - 1);
+  EXPECT_EQ(v->fitPointCount(), kDistinctX);
+  EXPECT_EQ(v->outlierPointCount(), 1);
+  EXPECT_EQ(v->xAxisTitle(), QStringLiteral("T1"));
+  EXPECT_EQ(v->chartTitle(), QStringLiteral("Final residual against T1 with the generic fit (smooth)"));
+
+  page.resultTabs()->setCurrentIndex(1);
+  grab(page, QStringLiteral("fixture-en"));
+}
+
+TEST_F(ResidualCheckPageTest, GermanNumbersInTheCheck) {
+  const LocaleGuard locale(QLocale(QLocale::German, QLocale::Germany));
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Thermal);
+  page.setResult(fixture());
+  const ResidualCheckView* v = page.residualCheckView();
+  EXPECT_TRUE(v->verdictText().contains(QStringLiteral("8,1 %"))) << v->verdictText().toStdString();
+  EXPECT_EQ(cell(v->structureTable(), 0, 2), QStringLiteral("62,0"));
+  EXPECT_EQ(cell(v->structureTable(), 0, 3), QStringLiteral("1,2E-09"));  // the German locale's exponent
+  EXPECT_EQ(cell(v->testTable(), 3, 5), QStringLiteral("0,37"));
+  EXPECT_EQ(cell(v->outlierTable(), 0, 4), QStringLiteral("8,1 µm"));
+  EXPECT_EQ(formatPValue(0.0, QLocale(QLocale::German)), QStringLiteral("< 1E-300"));
+  EXPECT_EQ(formatPValue(0.0, QLocale::c()), QStringLiteral("< 1e-300"));
+}
+
+TEST_F(ResidualCheckPageTest, GenericEffectIsListedWithItsFormAndNotApplied) {
+  const LocaleGuard locale(QLocale::c());
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Thermal);
+  page.setResult(fixture());
+  const QTableWidget* t = page.candidateTable();
+  ASSERT_EQ(t->rowCount(), 2);
+  EXPECT_EQ(cell(t, 1, 1), QStringLiteral("unexplained:T1"));
+  EXPECT_TRUE(cell(t, 1, 2).startsWith(QStringLiteral("form: smooth; rms = 2.1 µm; range = 6.3 µm")))
+      << cell(t, 1, 2).toStdString();
+  EXPECT_TRUE(t->item(1, 6)->data(Qt::UserRole).toBool());
+
+  // Apply takes the named effect; the generic one is left out and the tooltip says why.
+  ASSERT_TRUE(page.applyButton()->isEnabled());
+  EXPECT_TRUE(page.applyButton()->toolTip().contains(QStringLiteral("Applies lag:T2 only")))
+      << page.applyButton()->toolTip().toStdString();
+  EXPECT_TRUE(page.applyButton()->toolTip().contains(QStringLiteral("unexplained:T1")));
+  ASSERT_TRUE(page.applyAccepted());
+  const nlohmann::json applied = document_.project().studies.at("diagnosis").at("thermal").at("applied");
+  ASSERT_EQ(applied.size(), 1u) << applied.dump();
+  EXPECT_EQ(applied[0].at("name"), "lag:T2");
+
+  // Only a generic effect accepted: nothing Apply could write.
+  DiagnosisPage other(&document_);
+  other.setDomain(DiagnosisDomain::Thermal);
+  other.setResult(fixture(true));
+  EXPECT_FALSE(other.applyButton()->isEnabled());
+  EXPECT_TRUE(other.applyButton()->toolTip().startsWith(QStringLiteral("Nothing to apply.")))
+      << other.applyButton()->toolTip().toStdString();
+  EXPECT_FALSE(other.applyAccepted());
+  EXPECT_TRUE(appliedEffects(fixture(true)).empty());
+}
+
+TEST(ResidualCheckTextTest, SentencesInReadersWords) {
+  const QStringList s = residualCheckSentences(fixture(), QLocale::c());
+  ASSERT_EQ(s.size(), 3);
+  EXPECT_EQ(s[0].toStdString(),
+            "What is left unexplained: the final residual still depends on column T1 (a smooth curve, 62.0 % of "
+            "the residual variance, p = 1.2e-09) and time (a step at 125, 8.1 % of the residual variance, p = "
+            "2.0e-04). No effect of the catalogue explains this (tests at the 1 % family-wise level).");
+  EXPECT_TRUE(s[1].contains(QStringLiteral("a smooth curve in column T1"))) << s[1].toStdString();
+  EXPECT_EQ(s[2].toStdString(),
+            "1 measurement(s) excluded from the fit as gross errors (robust z above 9.61): row 412 (residual "
+            "8.1 µm, robust z 21.3).");
+  // White: says so.
+  diagnose::Diagnosis white = fixture();
+  white.residualCheck->white = true;
+  white.residualCheck->structure.clear();
+  white.residualCheck->outliers.clear();
+  const QStringList w = residualCheckSentences(white, QLocale::c());
+  ASSERT_GE(w.size(), 1);
+  EXPECT_TRUE(w[0].contains(QStringLiteral("None of the 5 test(s)"))) << w[0].toStdString();
+  EXPECT_TRUE(w.back().startsWith(QStringLiteral("No measurement was excluded"))) << w.back().toStdString();
+}
+
+/// Runs a program; its standard output ("" when it cannot run).
+QString run(const QString& program, const QStringList& args) {
+  QProcess p;
+  p.start(program, args);
+  if (!p.waitForFinished(120000) || p.exitCode() != 0) return {};
+  return QString::fromUtf8(p.readAllStandardOutput());
+}
+
+/// pdftotext's text with line breaks and runs of spaces made single spaces.
+QString pdfText(const QString& pdf) {
+  return run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")}).simplified();
+}
+
+TEST(ResidualCheckReportTest, PdfSaysWhatIsLeftUnexplainedInReadersWords) {
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  const QString pdf = dir.filePath(QStringLiteral("residual.pdf"));
+  {
+    QPdfWriter writer(pdf);
+    writer.setResolution(300);
+    writer.setPageSize(QPageSize(QPageSize::A4));
+    QPainter painter(&writer);
+    ReportPainter out(writer, painter, QStringLiteral("Residual check"), 1);
+    writeResidualCheck(out, fixture());
+  }
+  if (const QString out = qEnvironmentVariable("METROFIT_TEST_OUT"); !out.isEmpty()) {  // for a look
+    QDir().mkpath(QDir(out).filePath(QStringLiteral("residualcheck")));
+    const QString copy = QDir(out).filePath(QStringLiteral("residualcheck/fixture-report.pdf"));
+    QFile::remove(copy);
+    QFile::copy(pdf, copy);
+  }
+  const QString text = pdfText(pdf);
+  ASSERT_FALSE(text.isEmpty()) << "pdftotext gave nothing";
+  EXPECT_TRUE(text.contains(QStringLiteral("the final residual still depends on column T1 (a smooth curve, 62.0 % "
+                                           "of the residual variance")))
+      << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("row 412 (residual 8.1 µm, robust z 21.3)"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("a generic term"))) << text.toStdString();
+  // The plot's title and legend are text in the PDF.
+  EXPECT_TRUE(text.contains(QStringLiteral("Final residual against T1 with the generic fit (smooth)")))
+      << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("excluded outliers")));
+  for (const char* identifier : {"unexplained:T1", "ljung_box", "f_test", "robust_z"})
+    EXPECT_FALSE(text.contains(QLatin1String(identifier))) << identifier << " in " << text.toStdString();
+}
+
+}  // namespace
+}  // namespace metrofit
