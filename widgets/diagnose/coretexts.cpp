@@ -111,6 +111,24 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", "absorbed by the declared model"),
     QT_TRANSLATE_NOOP("metrofit::core", "its parameters are not separable with these data"),
     QT_TRANSLATE_NOOP("metrofit::core", "too few data for the parameters"),
+    // core/diagnose/residual_check.cpp: the residual check's summary, forms, generic effects
+    QT_TRANSLATE_NOOP("metrofit::core", "linear"),
+    QT_TRANSLATE_NOOP("metrofit::core", "smooth"),
+    QT_TRANSLATE_NOOP("metrofit::core", "step"),
+    QT_TRANSLATE_NOOP("metrofit::core", "periodic"),
+    QT_TRANSLATE_NOOP("metrofit::core", "per level"),
+    QT_TRANSLATE_NOOP("metrofit::core", "spike"),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1"),
+    QT_TRANSLATE_NOOP("metrofit::core", ", "),
+    QT_TRANSLATE_NOOP("metrofit::core", "too few observations (%1) to test the residual"),
+    QT_TRANSLATE_NOOP("metrofit::core", "white: no test finds structure at the %1 % family-wise level (%2 tests)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "not white: still depends on "),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1 (%2, %3 % of the residual variance)"),
+    QT_TRANSLATE_NOOP("metrofit::core", " and %1 more"),
+    QT_TRANSLATE_NOOP("metrofit::core", "not white: serially correlated in %1 order (Ljung-Box p = %2)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1 in %2, rms %3%4, range %5%4"),
+    QT_TRANSLATE_NOOP("metrofit::core", ", step %1%2 at %3"),
+    QT_TRANSLATE_NOOP("metrofit::core", ", strongest harmonic %1 (amplitude %2%3)"),
     // core/common/run.cpp toString(Termination)
     QT_TRANSLATE_NOOP("metrofit::core", "converged"),
     QT_TRANSLATE_NOOP("metrofit::core", "budget exhausted"),
@@ -161,6 +179,13 @@ const std::map<std::string, const char*>& parameterNames() {
       {"ppm", QT_TRANSLATE_NOOP("metrofit::core", "scale")},
       {"mm", QT_TRANSLATE_NOOP("metrofit::core", "offset")},
       {"angle_deg", QT_TRANSLATE_NOOP("metrofit::core", "angle")},
+      // generic effects `unexplained:<against>` (residual_check.h summariseGeneric), in the data's units
+      {"rms", QT_TRANSLATE_NOOP("metrofit::core", "rms")},
+      {"range", QT_TRANSLATE_NOOP("metrofit::core", "range")},
+      {"at", QT_TRANSLATE_NOOP("metrofit::core", "at")},
+      {"step", QT_TRANSLATE_NOOP("metrofit::core", "step")},
+      {"harmonic", QT_TRANSLATE_NOOP("metrofit::core", "harmonic")},
+      {"amplitude", QT_TRANSLATE_NOOP("metrofit::core", "amplitude")},
   };
   return names;
 }
