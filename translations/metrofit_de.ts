@@ -3821,12 +3821,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+1"/>
         <location line="+16"/>
-        <location line="+70"/>
+        <location line="+85"/>
         <source>dimension %1</source>
         <translation>Maß %1</translation>
     </message>
     <message>
-        <location line="-79"/>
+        <location line="-94"/>
         <source>the order of the rows in the file</source>
         <translation>der Reihenfolge der Zeilen in der Datei</translation>
     </message>
@@ -3931,14 +3931,24 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>ein eigenes Niveau je Gruppe</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+35"/>
+        <source>%1 (%2, %3 % of the residual variance)</source>
+        <translation>%1 (%2, %3 % der Residuenvarianz)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>white: no test finds structure</source>
         <translation>weiß: kein Test findet Struktur</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-3"/>
         <source>not white: still depends on %1</source>
         <translation>nicht weiß: hängt noch ab von %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not white: the tests find structure that no single variable explains</source>
+        <translation>nicht weiß: die Tests finden Struktur, die keine einzelne Variable erklärt</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -4019,7 +4029,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 (Residuum %2 %3, robustes z %4)</translation>
     </message>
     <message numerus="yes">
-        <location line="+5"/>
+        <location line="-84"/>
+        <location line="+89"/>
         <source> and %n more</source>
         <translation>
             <numerusform> und %n weiterer</numerusform>
@@ -4050,12 +4061,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+5"/>
         <location line="+178"/>
-        <location line="+256"/>
+        <location line="+257"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-434"/>
+        <location line="-435"/>
         <source>residual (%1)</source>
         <translation>Residuum (%1)</translation>
     </message>
@@ -4066,18 +4077,18 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+263"/>
+        <location line="+264"/>
         <source>excluded outliers</source>
         <translation>ausgeschlossene Ausreißer</translation>
     </message>
     <message>
-        <location line="-222"/>
-        <location line="+126"/>
+        <location line="-223"/>
+        <location line="+127"/>
         <source>What the residual still depends on (strongest first):</source>
         <translation>Wovon das Residuum noch abhängt (stärkste zuerst):</translation>
     </message>
     <message>
-        <location line="-125"/>
+        <location line="-126"/>
         <source>Outliers excluded from the fit:</source>
         <translation>Von der Anpassung ausgeschlossene Ausreißer:</translation>
     </message>
@@ -4140,12 +4151,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+124"/>
+        <location line="+125"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-124"/>
+        <location line="-125"/>
         <source>Robust z</source>
         <translation>Robustes z</translation>
     </message>
@@ -4196,6 +4207,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
+        <location line="+1"/>
         <source>This diagnosis has no residual check.</source>
         <translation>Diese Diagnose hat keine Residuenprüfung.</translation>
     </message>

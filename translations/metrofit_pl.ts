@@ -3828,12 +3828,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+1"/>
         <location line="+16"/>
-        <location line="+70"/>
+        <location line="+85"/>
         <source>dimension %1</source>
         <translation>wymiar %1</translation>
     </message>
     <message>
-        <location line="-79"/>
+        <location line="-94"/>
         <source>the order of the rows in the file</source>
         <translation>kolejności wierszy w pliku</translation>
     </message>
@@ -3938,14 +3938,24 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>inny poziom w każdej grupie</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+35"/>
+        <source>%1 (%2, %3 % of the residual variance)</source>
+        <translation>%1 (%2, %3 % wariancji residuum)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>white: no test finds structure</source>
         <translation>białe: żaden test nie znajduje struktury</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-3"/>
         <source>not white: still depends on %1</source>
         <translation>nie białe: wciąż zależy od %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not white: the tests find structure that no single variable explains</source>
+        <translation>nie białe: testy znajdują strukturę, której nie wyjaśnia żadna pojedyncza zmienna</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -4027,7 +4037,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>%1 (residuum %2 %3, odporne z %4)</translation>
     </message>
     <message numerus="yes">
-        <location line="+5"/>
+        <location line="-84"/>
+        <location line="+89"/>
         <source> and %n more</source>
         <translation>
             <numerusform> i %n kolejny</numerusform>
@@ -4060,12 +4071,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+5"/>
         <location line="+178"/>
-        <location line="+256"/>
+        <location line="+257"/>
         <source>residual</source>
         <translation>residuum</translation>
     </message>
     <message>
-        <location line="-434"/>
+        <location line="-435"/>
         <source>residual (%1)</source>
         <translation>residuum (%1)</translation>
     </message>
@@ -4076,18 +4087,18 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+263"/>
+        <location line="+264"/>
         <source>excluded outliers</source>
         <translation>wykluczone wartości odstające</translation>
     </message>
     <message>
-        <location line="-222"/>
-        <location line="+126"/>
+        <location line="-223"/>
+        <location line="+127"/>
         <source>What the residual still depends on (strongest first):</source>
         <translation>Od czego residuum wciąż zależy (najsilniejsze najpierw):</translation>
     </message>
     <message>
-        <location line="-125"/>
+        <location line="-126"/>
         <source>Outliers excluded from the fit:</source>
         <translation>Wartości odstające wykluczone z dopasowania:</translation>
     </message>
@@ -4150,12 +4161,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+124"/>
+        <location line="+125"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-124"/>
+        <location line="-125"/>
         <source>Robust z</source>
         <translation>Odporne z</translation>
     </message>
@@ -4206,6 +4217,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
+        <location line="+1"/>
         <source>This diagnosis has no residual check.</source>
         <translation>Ta diagnoza nie ma sprawdzenia residuów.</translation>
     </message>

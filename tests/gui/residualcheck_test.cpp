@@ -20,6 +20,7 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTranslator>
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -232,6 +233,59 @@ TEST_F(ResidualCheckPageTest, GermanNumbersInTheCheck) {
   EXPECT_EQ(cell(v->outlierTable(), 0, 4), QStringLiteral("8,1 µm"));
   EXPECT_EQ(formatPValue(0.0, QLocale(QLocale::German)), QStringLiteral("< 1E-300"));
   EXPECT_EQ(formatPValue(0.0, QLocale::c()), QStringLiteral("< 1e-300"));
+}
+
+/// Installs the built translation of `language` (metrofit_<language>.qm) while it lives.
+class TranslationGuard {
+ public:
+  explicit TranslationGuard(const QString& language) {
+    const QString qmDir = qEnvironmentVariable("METROFIT_TEST_QM_DIR", QStringLiteral(METROFIT_QM_DIR));
+    loaded_ = translator_.load(QDir(qmDir).filePath(QStringLiteral("metrofit_") + language));
+    if (loaded_) QCoreApplication::installTranslator(&translator_);
+  }
+  ~TranslationGuard() {
+    if (loaded_) QCoreApplication::removeTranslator(&translator_);
+  }
+  bool loaded() const { return loaded_; }
+
+ private:
+  QTranslator translator_;
+  bool loaded_ = false;
+};
+
+TEST_F(ResidualCheckPageTest, GermanAndPolishTranslations) {
+  {
+    const LocaleGuard locale(QLocale(QLocale::German, QLocale::Germany));
+    const TranslationGuard german(QStringLiteral("de"));
+    ASSERT_TRUE(german.loaded());
+    DiagnosisPage page(&document_);
+    page.setDomain(DiagnosisDomain::Thermal);
+    page.setResult(fixture());
+    const ResidualCheckView* v = page.residualCheckView();
+    // Core's summary phrases and the form names translated, numbers German.
+    EXPECT_EQ(v->verdictText().toStdString(),
+              "nicht weiß: hängt noch ab von T1 (glatt, 62 % der Residuenvarianz), Zeit (Sprung, 8,1 % der "
+              "Residuenvarianz)");
+    EXPECT_EQ(cell(v->structureTable(), 1, 0), QStringLiteral("Zeit"));
+    EXPECT_EQ(cell(v->testTable(), 2, 0), QStringLiteral("F-Test"));
+    EXPECT_EQ(v->testTable()->horizontalHeaderItem(6)->text(), QStringLiteral("Abgelehnt bei 1 %"));
+    EXPECT_TRUE(page.resultTabs()->tabText(1).startsWith(QStringLiteral("Residuen&prüfung")));
+    page.resultTabs()->setCurrentIndex(1);
+    grab(page, QStringLiteral("fixture-de"));
+  }
+  {
+    const TranslationGuard polish(QStringLiteral("pl"));
+    ASSERT_TRUE(polish.loaded());
+    const QLocale pl(QLocale::Polish, QLocale::Poland);
+    const QStringList s = residualCheckSentences(fixture(), pl);
+    ASSERT_EQ(s.size(), 3);
+    EXPECT_TRUE(s[0].startsWith(QStringLiteral("Co pozostaje niewyjaśnione: końcowe residuum wciąż zależy od kolumny "
+                                               "T1 (gładka krzywa, 62,0 % wariancji residuum")))
+        << s[0].toStdString();
+    EXPECT_EQ(s[2].toStdString(),
+              "1 pomiar wykluczony z dopasowania jako błąd gruby (odporne z powyżej 9,61): wiersz 412 (residuum "
+              "8,1 µm, odporne z 21,3).");
+  }
 }
 
 TEST_F(ResidualCheckPageTest, GenericEffectIsListedWithItsFormAndNotApplied) {

@@ -120,12 +120,27 @@ QString formatPValue(double p, const QLocale& locale) {
 }
 
 QString residualCheckVerdict(const diagnose::ResidualCheck& c) {
+  // With structure: the list made here, so that the variables' names are translated too ("Zeit",
+  // "Bahnwinkel"; core's summary keeps CONTRACT.md's names). Otherwise core's summary (white, serial
+  // correlation only, too few observations), translated.
+  if (!c.white && !c.structure.empty()) {
+    constexpr std::size_t kShown = 3;
+    const QLocale locale;
+    QStringList items;
+    for (std::size_t i = 0; i < c.structure.size() && i < kShown; ++i) {
+      const diagnose::StructureItem& s = c.structure[i];
+      items << ResidualCheckText::tr("%1 (%2, %3 % of the residual variance)")
+                   .arg(residualVariableName(s.against), dependenceFormName(s.form),
+                        locale.toString(100.0 * s.share, 'g', 2));
+    }
+    QString list = items.join(QStringLiteral(", "));
+    if (c.structure.size() > kShown)
+      list += ResidualCheckText::tr(" and %n more", nullptr, static_cast<int>(c.structure.size() - kShown));
+    return ResidualCheckText::tr("not white: still depends on %1").arg(list);
+  }
   if (!c.summaryParts.empty() || !c.summary.empty()) return coreText(c.summaryParts, c.summary);
-  if (c.white) return ResidualCheckText::tr("white: no test finds structure");
-  QStringList items;
-  for (const auto& s : c.structure)
-    items << QStringLiteral("%1 (%2)").arg(residualVariableName(s.against), dependenceFormName(s.form));
-  return ResidualCheckText::tr("not white: still depends on %1").arg(items.join(QStringLiteral(", ")));
+  return c.white ? ResidualCheckText::tr("white: no test finds structure")
+                 : ResidualCheckText::tr("not white: the tests find structure that no single variable explains");
 }
 
 QString outlierWhere(const diagnose::Outlier& o, const QLocale& locale) {

@@ -38,7 +38,10 @@ QString dependenceFormWords(const diagnose::GenericForm& form, const QLocale& lo
 /// when it underflowed to 0.
 QString formatPValue(double p, const QLocale& locale);
 
-/// The verdict on one line: core's summary translated (coretexts.h), or a short form of it.
+/// The verdict on one line: "not white: still depends on T1 (smooth, 62 % of the residual variance),
+/// path angle (...)" (at most three variables, then "and n more") with the variables and forms as
+/// residualVariableName / dependenceFormName and numbers in the user's locale; without structure
+/// core's summary translated (coretexts.h).
 QString residualCheckVerdict(const diagnose::ResidualCheck& check);
 
 /// What is left unexplained, in reader's words (the report): one paragraph per item
