@@ -525,6 +525,7 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
     p.residual.assign(in.residual.data(), in.residual.data() + n);
     p.fit.assign(fit.data(), fit.data() + n);
     p.categories = v.levels;
+    p.components = C;
     const std::size_t vi = static_cast<std::size_t>(vit - in.variables.begin());
     if (vi < in.excludedValues.size())
       for (std::size_t k = 0; k < in.excludedResidual.size() && k < in.excludedValues[vi].size(); ++k) {

@@ -35,8 +35,21 @@ namespace {
 QColor residualColour() {
   return palette::after();
 }
-QColor fitColour() {
-  return palette::measuredSecond();
+/// The fit curve of coordinate `k` (vector residuals have one per coordinate).
+QColor fitColour(int k = 0) {
+  switch (k) {
+    case 0:
+      return palette::measuredSecond();
+    case 1:
+      return palette::predicted();
+    default:
+      return palette::compensated();
+  }
+}
+
+/// The name of coordinate k of a vector residual ("x", "y", "z").
+QString componentName(int k) {
+  return QString(QLatin1Char(static_cast<char>('x' + std::min(k, 2))));
 }
 QColor outlierColour() {
   return palette::outOfTolerance();
@@ -46,7 +59,13 @@ QColor outlierColour() {
 constexpr int kMaxCategoryLabels = 25;
 
 struct Series {
-  std::vector<QPointF> residual, fit, outliers;
+  std::vector<QPointF> residual, outliers;
+  std::vector<std::vector<QPointF>> fits;  ///< one curve per coordinate
+  std::size_t fitPoints() const {
+    std::size_t n = 0;
+    for (const auto& f : fits) n += f.size();
+    return n;
+  }
 };
 
 /// Every k-th point so that at most kMaxResidualCheckChartPoints remain.
@@ -62,25 +81,29 @@ std::vector<QPointF> thinned(std::vector<QPointF> points) {
 }
 
 /// The chart's series from the plot: finite points only; the fit as a line through the distinct x
-/// values in increasing order (the fit is a function of x).
+/// values in increasing order (the fit is a function of x), one per coordinate of a vector residual
+/// (observation i is coordinate i % components).
 Series seriesOf(const diagnose::ResidualCheck::Plot& plot) {
   Series s;
-  std::vector<QPointF> fit;
+  const std::size_t components = static_cast<std::size_t>(std::clamp(plot.components, 1, 3));
+  std::vector<std::vector<QPointF>> fits(components);
   for (std::size_t i = 0; i < plot.x.size(); ++i) {
     const double x = plot.x[i];
     if (!std::isfinite(x)) continue;
     if (i < plot.residual.size() && std::isfinite(plot.residual[i])) s.residual.emplace_back(x, plot.residual[i]);
-    if (i < plot.fit.size() && std::isfinite(plot.fit[i])) fit.emplace_back(x, plot.fit[i]);
+    if (i < plot.fit.size() && std::isfinite(plot.fit[i])) fits[i % components].emplace_back(x, plot.fit[i]);
   }
-  std::stable_sort(fit.begin(), fit.end(), [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
-  fit.erase(std::unique(fit.begin(), fit.end(), [](const QPointF& a, const QPointF& b) { return a.x() == b.x(); }),
-            fit.end());
+  for (auto& fit : fits) {
+    std::stable_sort(fit.begin(), fit.end(), [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
+    fit.erase(std::unique(fit.begin(), fit.end(), [](const QPointF& a, const QPointF& b) { return a.x() == b.x(); }),
+              fit.end());
+    s.fits.push_back(thinned(std::move(fit)));
+  }
   for (std::size_t i = 0; i < plot.outlierX.size() && i < plot.outlierResidual.size(); ++i) {
     if (std::isfinite(plot.outlierX[i]) && std::isfinite(plot.outlierResidual[i]))
       s.outliers.emplace_back(plot.outlierX[i], plot.outlierResidual[i]);
   }
   s.residual = thinned(std::move(s.residual));
-  s.fit = thinned(std::move(fit));
   s.outliers = thinned(std::move(s.outliers));
   return s;
 }
@@ -169,7 +192,9 @@ void paintResidualCheck(QPainter& p, const QRectF& rect, const diagnose::Residua
                         const QString& units, const QString& title, double fontPx, const QLocale& locale) {
   const Series s = seriesOf(plot);
   Range xr, yr;
-  for (const auto* v : {&s.residual, &s.fit, &s.outliers}) {
+  std::vector<const std::vector<QPointF>*> all = {&s.residual, &s.outliers};
+  for (const auto& f : s.fits) all.push_back(&f);
+  for (const auto* v : all) {
     for (const QPointF& pt : *v) {
       xr.add(pt.x());
       yr.add(pt.y());
@@ -252,11 +277,13 @@ void paintResidualCheck(QPainter& p, const QRectF& rect, const diagnose::Residua
   p.setPen(Qt::NoPen);
   p.setBrush(residualColour());
   for (const QPointF& pt : s.residual) p.drawEllipse(map(pt.x(), pt.y()), r, r);
-  if (s.fit.size() >= 2) {
-    QPainterPath path(map(s.fit.front().x(), s.fit.front().y()));
-    for (std::size_t i = 1; i < s.fit.size(); ++i) path.lineTo(map(s.fit[i].x(), s.fit[i].y()));
+  for (std::size_t k = 0; k < s.fits.size(); ++k) {
+    const auto& fit = s.fits[k];
+    if (fit.size() < 2) continue;
+    QPainterPath path(map(fit.front().x(), fit.front().y()));
+    for (std::size_t i = 1; i < fit.size(); ++i) path.lineTo(map(fit[i].x(), fit[i].y()));
     p.setBrush(Qt::NoBrush);
-    p.setPen(QPen(fitColour(), std::max(1.0, fontPx / 6.0)));
+    p.setPen(QPen(fitColour(static_cast<int>(k)), std::max(1.0, fontPx / 6.0)));
     p.drawPath(path);
   }
   const double t = std::max(3.0, fontPx * 0.45);
@@ -274,9 +301,15 @@ void paintResidualCheck(QPainter& p, const QRectF& rect, const diagnose::Residua
   p.setClipping(false);
 
   // Legend (top right inside the plot).
-  QList<QPair<int, QString>> entries = {{0, ResidualCheckView::tr("residual")}};
-  if (s.fit.size() >= 2) entries.append({1, ResidualCheckView::tr("generic fit")});
-  if (!s.outliers.empty()) entries.append({2, ResidualCheckView::tr("excluded outliers")});
+  // Kinds: -1 residual, -2 outliers, k >= 0 the fit of coordinate k.
+  QList<QPair<int, QString>> entries = {{-1, ResidualCheckView::tr("residual")}};
+  for (std::size_t k = 0; k < s.fits.size(); ++k) {
+    if (s.fits[k].size() < 2) continue;
+    entries.append({static_cast<int>(k), s.fits.size() == 1 ? ResidualCheckView::tr("generic fit")
+                                                            : ResidualCheckView::tr("generic fit, %1")
+                                                                  .arg(componentName(static_cast<int>(k)))});
+  }
+  if (!s.outliers.empty()) entries.append({-2, ResidualCheckView::tr("excluded outliers")});
   double w = 0.0;
   for (const auto& e : entries) w = std::max(w, fm.horizontalAdvance(e.second));
   const QRectF box(area.right() - w - line * 1.8 - 4.0, area.top() + 4.0, w + line * 1.8,
@@ -285,12 +318,12 @@ void paintResidualCheck(QPainter& p, const QRectF& rect, const diagnose::Residua
   for (int i = 0; i < entries.size(); ++i) {
     const double y = box.top() + 2.0 + line * i + line / 2;
     const QPointF c(box.left() + line * 0.7, y);
-    if (entries[i].first == 0) {
+    if (entries[i].first == -1) {
       p.setPen(Qt::NoPen);
       p.setBrush(residualColour());
       p.drawEllipse(c, line * 0.22, line * 0.22);
-    } else if (entries[i].first == 1) {
-      p.setPen(QPen(fitColour(), std::max(1.0, fontPx / 6.0)));
+    } else if (entries[i].first >= 0) {
+      p.setPen(QPen(fitColour(entries[i].first), std::max(1.0, fontPx / 6.0)));
       p.drawLine(c - QPointF(line * 0.45, 0.0), c + QPointF(line * 0.45, 0.0));
     } else {
       p.setPen(QPen(Qt::black, 0));
@@ -309,7 +342,7 @@ class ResidualCheckView::Charts {
  public:
   QChartView* view = nullptr;
   QScatterSeries* residual = nullptr;
-  QLineSeries* fit = nullptr;
+  QList<QLineSeries*> fits;  ///< one per coordinate
   QScatterSeries* outliers = nullptr;
   QString xTitle;
 };
@@ -392,15 +425,24 @@ QString ResidualCheckView::verdictText() const {
 int ResidualCheckView::residualPointCount() const {
   return charts_->residual ? static_cast<int>(charts_->residual->count()) : 0;
 }
+int ResidualCheckView::fitLineCount() const {
+  return static_cast<int>(charts_->fits.size());
+}
 int ResidualCheckView::fitPointCount() const {
-  return charts_->fit ? static_cast<int>(charts_->fit->count()) : 0;
+  int n = 0;
+  for (const QLineSeries* f : charts_->fits) n += static_cast<int>(f->count());
+  return n;
 }
 int ResidualCheckView::outlierPointCount() const {
   return charts_->outliers ? static_cast<int>(charts_->outliers->count()) : 0;
 }
 
+bool ResidualCheckView::chartShown() const {
+  return !charts_->view->isHidden();
+}
+
 QString ResidualCheckView::chartTitle() const {
-  return charts_->residual ? charts_->view->chart()->title() : QString();
+  return charts_->view->chart()->title();
 }
 
 QString ResidualCheckView::xAxisTitle() const {
@@ -420,9 +462,10 @@ void ResidualCheckView::clear() {
   charts_->view->setChart(chart);
   delete old;
   charts_->residual = nullptr;
-  charts_->fit = nullptr;
+  charts_->fits.clear();
   charts_->outliers = nullptr;
   charts_->xTitle.clear();
+  charts_->view->setVisible(true);
 }
 
 void ResidualCheckView::setDiagnosis(const diagnose::Diagnosis& d) {
@@ -518,10 +561,13 @@ void ResidualCheckView::setDiagnosis(const diagnose::Diagnosis& d) {
 void ResidualCheckView::showChart(const diagnose::ResidualCheck& c, const QString& units) {
   QChart* chart = charts_->view->chart();
   if (!c.plot) {
+    // Nothing to draw: the tables get the width (the title says why, for the chart's export).
     chart->setTitle(c.white ? tr("The final residual is white: nothing left to plot")
                             : tr("No single variable explains the structure left"));
+    charts_->view->setVisible(false);
     return;
   }
+  charts_->view->setVisible(true);
   const diagnose::ResidualCheck::Plot& plot = *c.plot;
   const Series s = seriesOf(plot);
   chart->setLocale(QLocale());
@@ -535,10 +581,15 @@ void ResidualCheckView::showChart(const diagnose::ResidualCheck& c, const QStrin
   charts_->residual->setColor(residualColour());
   charts_->residual->setBorderColor(residualColour());
   charts_->residual->setMarkerSize(5.0);
-  charts_->fit = new QLineSeries;
-  charts_->fit->setName(tr("generic fit (%1)").arg(dependenceFormName(c.structure.empty() ? std::string()
-                                                                                          : diagnose::formName(c.structure.front().form))));
-  charts_->fit->setPen(QPen(fitColour(), 2.5));
+  const QString form =
+      dependenceFormName(c.structure.empty() ? std::string() : diagnose::formName(c.structure.front().form));
+  for (std::size_t k = 0; k < s.fits.size(); ++k) {
+    auto* fit = new QLineSeries;
+    fit->setName(s.fits.size() == 1 ? tr("generic fit (%1)").arg(form)
+                                    : tr("generic fit (%1), %2").arg(form, componentName(static_cast<int>(k))));
+    fit->setPen(QPen(fitColour(static_cast<int>(k)), 2.5));
+    charts_->fits.append(fit);
+  }
   charts_->outliers = new QScatterSeries;
   charts_->outliers->setName(tr("excluded outliers"));
   charts_->outliers->setMarkerShape(QScatterSeries::MarkerShapeTriangle);
@@ -547,11 +598,11 @@ void ResidualCheckView::showChart(const diagnose::ResidualCheck& c, const QStrin
   charts_->outliers->setMarkerSize(11.0);
 
   Range xr, yr;
-  QList<QPointF> residual, fit, outliers;
-  for (const QPointF& p : s.residual) residual.append(p);
-  for (const QPointF& p : s.fit) fit.append(p);
-  for (const QPointF& p : s.outliers) outliers.append(p);
-  for (const auto* v : {&residual, &fit, &outliers}) {
+  const QList<QPointF> residual(s.residual.begin(), s.residual.end());
+  const QList<QPointF> outliers(s.outliers.begin(), s.outliers.end());
+  std::vector<const std::vector<QPointF>*> all = {&s.residual, &s.outliers};
+  for (const auto& f : s.fits) all.push_back(&f);
+  for (const auto* v : all) {
     for (const QPointF& p : *v) {
       xr.add(p.x());
       yr.add(p.y());
@@ -559,10 +610,12 @@ void ResidualCheckView::showChart(const diagnose::ResidualCheck& c, const QStrin
   }
   yr.add(0.0);
   charts_->residual->replace(residual);
-  charts_->fit->replace(fit);
+  for (int k = 0; k < charts_->fits.size(); ++k)
+    charts_->fits[k]->replace(QList<QPointF>(s.fits[static_cast<std::size_t>(k)].begin(),
+                                             s.fits[static_cast<std::size_t>(k)].end()));
   charts_->outliers->replace(outliers);
   chart->addSeries(charts_->residual);
-  chart->addSeries(charts_->fit);
+  for (QLineSeries* f : charts_->fits) chart->addSeries(f);
   chart->addSeries(charts_->outliers);
 
   charts_->xTitle = displayUnit(xTitle(plot));
@@ -597,7 +650,9 @@ void ResidualCheckView::showChart(const diagnose::ResidualCheck& c, const QStrin
   ay->setTitleText(yTitle(units));
   chart->addAxis(ax, Qt::AlignBottom);
   chart->addAxis(ay, Qt::AlignLeft);
-  for (QAbstractSeries* series : std::initializer_list<QAbstractSeries*>{charts_->residual, charts_->fit, charts_->outliers}) {
+  QList<QAbstractSeries*> attached = {charts_->residual, charts_->outliers};
+  for (QLineSeries* f : charts_->fits) attached.append(f);
+  for (QAbstractSeries* series : attached) {
     series->attachAxis(ax);
     series->attachAxis(ay);
   }

@@ -8,8 +8,9 @@
 //   * every test: name (Ljung-Box, F test), order or variable, form, statistic, degrees of
 //     freedom, p-value, rejected by Holm at the family-wise level;
 //   * a chart of the residual against the variable of the strongest structure (ResidualCheck::Plot):
-//     the residual as points, the generic fit as a line (through the distinct x values in order),
-//     the excluded outliers as red crosses. Categories (parts, surfaces) are labelled on the x axis.
+//     the residual as points, the generic fit as a line through the distinct x values in order
+//     (one line per coordinate of a vector residual: kinematic x / y, matching x / y / z), the
+//     excluded outliers as red triangles. Without a plot (a white residual) the chart is hidden. Categories (parts, surfaces) are labelled on the x axis.
 // Numbers in the user's locale; "um" shown as "µm". Qt Charts stays inside the .cpp file.
 //
 // paintResidualCheck draws the same chart with QPainter for the report.
@@ -46,17 +47,21 @@ class ResidualCheckView : public QWidget {
   void setDiagnosis(const diagnose::Diagnosis& diagnosis);
   void clear();
   bool hasCheck() const { return hasCheck_; }
+  /// False when the check has no plot (white, or no single variable): the tables take the width.
+  bool chartShown() const;
 
   QString verdictText() const;
   QTableWidget* testTable() const { return tests_; }
   QTableWidget* structureTable() const { return structure_; }
   QTableWidget* outlierTable() const { return outliers_; }
 
-  /// Points of the chart's series: residual, generic fit line, outliers (0 when absent).
+  /// Points of the chart's series: residual, generic fit line(s), outliers (0 when absent).
   int residualPointCount() const;
-  int fitPointCount() const;
+  int fitPointCount() const;  ///< over every fit line
+  /// Fit lines: one, or one per coordinate of a vector residual (ResidualCheck::Plot::components).
+  int fitLineCount() const;
   int outlierPointCount() const;
-  /// The chart's title and x axis title as shown ("" when there is no plot).
+  /// The chart's title as shown (also when there is no plot: why), and its x axis title ("" then).
   QString chartTitle() const;
   QString xAxisTitle() const;
 
