@@ -368,7 +368,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+419"/>
+        <location line="+420"/>
         <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
         <translation>%1: ein generischer Effekt (was kein Effekt des Katalogs erklärt) kann dem Modell der Studie (%2) noch nicht hinzugefügt werden; er wird hier und in der Residuenprüfung angezeigt, nicht übernommen</translation>
     </message>
@@ -383,12 +383,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>A&amp;usführen</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-47"/>
         <source>mm/part</source>
         <translation>mm/Werkstück</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+48"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -2243,7 +2243,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lageausrichtung</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>form %1</source>
         <translation>Form %1</translation>
     </message>
@@ -4049,7 +4049,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ResidualCheckView</name>
     <message>
-        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+93"/>
+        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+116"/>
         <source>Final residual against %1</source>
         <translation>Endgültiges Residuum über %1</translation>
     </message>
@@ -4060,35 +4060,40 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+178"/>
-        <location line="+257"/>
+        <location line="+183"/>
+        <location line="+275"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-435"/>
+        <location line="-458"/>
         <source>residual (%1)</source>
         <translation>Residuum (%1)</translation>
     </message>
     <message>
-        <location line="+179"/>
+        <location line="+186"/>
         <source>generic fit</source>
         <translation>generische Anpassung</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+264"/>
+        <source>generic fit, %1</source>
+        <translation>generische Anpassung, %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+282"/>
         <source>excluded outliers</source>
         <translation>ausgeschlossene Ausreißer</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+127"/>
+        <location line="-241"/>
+        <location line="+137"/>
         <source>What the residual still depends on (strongest first):</source>
         <translation>Wovon das Residuum noch abhängt (stärkste zuerst):</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-136"/>
         <source>Outliers excluded from the fit:</source>
         <translation>Von der Anpassung ausgeschlossene Ausreißer:</translation>
     </message>
@@ -4151,12 +4156,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+125"/>
+        <location line="+135"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-125"/>
+        <location line="-135"/>
         <source>Robust z</source>
         <translation>Robustes z</translation>
     </message>
@@ -4196,7 +4201,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Ljung-Box: serielle Korrelation des Residuums in dieser Reihenfolge (Chi-Quadrat); F-Test: das Residuum gegen die Variable in dieser Form (geschachtelte Modelle). Abgelehnt: nach dem Holm-Verfahren auf dem familienweisen Niveau</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+72"/>
         <source>Residual check: run the diagnosis (Ctrl+R).</source>
         <translation>Residuenprüfung: Diagnose starten (Strg+R).</translation>
     </message>
@@ -4206,7 +4211,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Endgültiges Residuum: Diagnose starten (Strg+R)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <location line="+1"/>
         <source>This diagnosis has no residual check.</source>
         <translation>Diese Diagnose hat keine Residuenprüfung.</translation>
@@ -4250,7 +4255,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Abgelehnt bei %1 %</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>The final residual is white: nothing left to plot</source>
         <translation>Das endgültige Residuum ist weiß: nichts mehr darzustellen</translation>
     </message>
@@ -4260,12 +4265,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Keine einzelne Variable erklärt die verbleibende Struktur</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>generic fit (%1)</source>
         <translation>generische Anpassung (%1)</translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>generic fit (%1), %2</source>
+        <translation>generische Anpassung (%1), %2</translation>
+    </message>
     <message numerus="yes">
-        <location line="+45"/>
+        <location line="+48"/>
         <source>(index of %n level(s))</source>
         <translation>
             <numerusform>(Index von %n Stufe)</numerusform>
@@ -6648,12 +6658,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+69"/>
+        <location line="+93"/>
         <source>step</source>
         <translation>Sprung</translation>
     </message>
     <message>
-        <location line="-68"/>
+        <location line="-92"/>
         <source>periodic</source>
         <translation>periodisch</translation>
     </message>
@@ -6721,6 +6731,101 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+1"/>
         <source>, strongest harmonic %1 (amplitude %2%3)</source>
         <translation>, stärkste Harmonische %1 (Amplitude %2%3)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 gross errors excluded before the fit (robust z above the outlier threshold):</source>
+        <translation>%1 grobe Fehler vor der Anpassung ausgeschlossen (robustes z über der Ausreißerschwelle):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (%2 um)</source>
+        <translation> Zeile %1 (%2 µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (part %2, %3, %4 mm)</source>
+        <translation> Zeile %1 (Werkstück %2, %3, %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> point %1 (row %2, %3 mm)</source>
+        <translation> Punkt %1 (Zeile %2, %3 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not identifiable: %1</source>
+        <translation>nicht identifizierbar: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rejected: does not explain what it was chosen for; without it the generic effects explain the data at least as well (BIC %1 without, %2 with)</source>
+        <translation>abgelehnt: erklärt nicht, wofür er gewählt wurde; ohne ihn erklären die generischen Effekte die Daten mindestens ebenso gut (BIC %1 ohne, %2 mit)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>data row</source>
+        <translation>Datenzeile</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dimension</source>
+        <translation>Maß</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>loop direction</source>
+        <translation>Umlaufrichtung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>samples since an axis reversed</source>
+        <translation>Abtastwerte seit einer Achsumkehr</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part number (%1)</source>
+        <translation>Werkstücknummer (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position along surface %1 (mm)</source>
+        <translation>Lage entlang der Fläche %1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal x</source>
+        <translation>Normale x</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal y</source>
+        <translation>Normale y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal z</source>
+        <translation>Normale z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>z (mm)</source>
+        <translation>z (mm)</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -6843,12 +6948,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>amplitude</source>
         <translation>Amplitude</translation>
     </message>
     <message>
-        <location line="-14"/>
+        <location line="-15"/>
         <source>phase</source>
         <translation>Phase</translation>
     </message>
@@ -6879,6 +6984,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>form</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>rms</source>
         <translation>rms</translation>
     </message>

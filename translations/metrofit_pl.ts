@@ -368,7 +368,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+419"/>
+        <location line="+420"/>
         <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
         <translation>%1: efektu ogólnego (tego, czego nie wyjaśnia żaden efekt z katalogu) nie można jeszcze dodać do modelu badania (%2); jest pokazany tutaj i w sprawdzeniu residuów, nie zastosowany</translation>
     </message>
@@ -383,12 +383,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>&amp;Uruchom</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-47"/>
         <source>mm/part</source>
         <translation>mm/przedmiot</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+48"/>
         <source>Cancel</source>
         <translation>Anuluj</translation>
     </message>
@@ -2245,7 +2245,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dopasowanie położenia</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>form %1</source>
         <translation>postać %1</translation>
     </message>
@@ -4059,7 +4059,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ResidualCheckView</name>
     <message>
-        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+93"/>
+        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+116"/>
         <source>Final residual against %1</source>
         <translation>Końcowe residuum względem %1</translation>
     </message>
@@ -4070,35 +4070,40 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+178"/>
-        <location line="+257"/>
+        <location line="+183"/>
+        <location line="+275"/>
         <source>residual</source>
         <translation>residuum</translation>
     </message>
     <message>
-        <location line="-435"/>
+        <location line="-458"/>
         <source>residual (%1)</source>
         <translation>residuum (%1)</translation>
     </message>
     <message>
-        <location line="+179"/>
+        <location line="+186"/>
         <source>generic fit</source>
         <translation>dopasowanie ogólne</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+264"/>
+        <source>generic fit, %1</source>
+        <translation>dopasowanie ogólne, %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+282"/>
         <source>excluded outliers</source>
         <translation>wykluczone wartości odstające</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+127"/>
+        <location line="-241"/>
+        <location line="+137"/>
         <source>What the residual still depends on (strongest first):</source>
         <translation>Od czego residuum wciąż zależy (najsilniejsze najpierw):</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-136"/>
         <source>Outliers excluded from the fit:</source>
         <translation>Wartości odstające wykluczone z dopasowania:</translation>
     </message>
@@ -4161,12 +4166,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+125"/>
+        <location line="+135"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-125"/>
+        <location line="-135"/>
         <source>Robust z</source>
         <translation>Odporne z</translation>
     </message>
@@ -4206,7 +4211,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ljung-Box: korelacja szeregowa residuum w tej kolejności (chi-kwadrat); test F: residuum względem zmiennej w tej postaci (modele zagnieżdżone). Odrzucony: procedurą Holma na poziomie dla całej rodziny testów</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+72"/>
         <source>Residual check: run the diagnosis (Ctrl+R).</source>
         <translation>Sprawdzenie residuów: uruchom diagnozę (Ctrl+R).</translation>
     </message>
@@ -4216,7 +4221,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Końcowe residuum: uruchom diagnozę (Ctrl+R)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <location line="+1"/>
         <source>This diagnosis has no residual check.</source>
         <translation>Ta diagnoza nie ma sprawdzenia residuów.</translation>
@@ -4261,7 +4266,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Odrzucony przy %1 %</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>The final residual is white: nothing left to plot</source>
         <translation>Końcowe residuum jest białe: nic do pokazania</translation>
     </message>
@@ -4271,12 +4276,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Żadna pojedyncza zmienna nie wyjaśnia pozostałej struktury</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>generic fit (%1)</source>
         <translation>dopasowanie ogólne (%1)</translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>generic fit (%1), %2</source>
+        <translation>dopasowanie ogólne (%1), %2</translation>
+    </message>
     <message numerus="yes">
-        <location line="+45"/>
+        <location line="+48"/>
         <source>(index of %n level(s))</source>
         <translation>
             <numerusform>(indeks %n poziomu)</numerusform>
@@ -6666,12 +6676,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+69"/>
+        <location line="+93"/>
         <source>step</source>
         <translation>skok</translation>
     </message>
     <message>
-        <location line="-68"/>
+        <location line="-92"/>
         <source>periodic</source>
         <translation>okresowa</translation>
     </message>
@@ -6739,6 +6749,101 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+1"/>
         <source>, strongest harmonic %1 (amplitude %2%3)</source>
         <translation>, najsilniejsza harmoniczna %1 (amplituda %2%3)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 gross errors excluded before the fit (robust z above the outlier threshold):</source>
+        <translation>Błędy grube wykluczone przed dopasowaniem (%1; odporne z powyżej progu wartości odstających):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (%2 um)</source>
+        <translation> wiersz %1 (%2 µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (part %2, %3, %4 mm)</source>
+        <translation> wiersz %1 (przedmiot %2, %3, %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> point %1 (row %2, %3 mm)</source>
+        <translation> punkt %1 (wiersz %2, %3 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not identifiable: %1</source>
+        <translation>nieidentyfikowalny: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rejected: does not explain what it was chosen for; without it the generic effects explain the data at least as well (BIC %1 without, %2 with)</source>
+        <translation>odrzucony: nie wyjaśnia tego, do czego został wybrany; bez niego efekty ogólne wyjaśniają dane co najmniej równie dobrze (BIC %1 bez, %2 z nim)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>data row</source>
+        <translation>wiersz danych</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dimension</source>
+        <translation>wymiar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>loop direction</source>
+        <translation>kierunek obiegu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>samples since an axis reversed</source>
+        <translation>próbki od nawrotu osi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part number (%1)</source>
+        <translation>numer przedmiotu (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position along surface %1 (mm)</source>
+        <translation>położenie wzdłuż powierzchni %1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal x</source>
+        <translation>normalna x</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal y</source>
+        <translation>normalna y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal z</source>
+        <translation>normalna z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>z (mm)</source>
+        <translation>z (mm)</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -6861,12 +6966,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>amplitude</source>
         <translation>amplituda</translation>
     </message>
     <message>
-        <location line="-14"/>
+        <location line="-15"/>
         <source>phase</source>
         <translation>faza</translation>
     </message>
@@ -6897,6 +7002,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>form</source>
+        <translation>postać</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>rms</source>
         <translation>rms</translation>
     </message>

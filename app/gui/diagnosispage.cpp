@@ -99,6 +99,7 @@ QString unitOf(const std::string& name) {
 QString parameterText(const diagnose::Candidate& c, const QString& units) {
   QStringList parts;
   for (const diagnose::Parameter& p : c.parameters) {
+    if (c.generic && p.name == "form") continue;  // shown first, translated (fillTable)
     // Display name (translated) and the value in the user's locale (the JSON and the report keep the keys).
     const double* v = std::get_if<double>(&p.value);
     QString s = parameterDisplayName(p.name) + QStringLiteral(" = ") +

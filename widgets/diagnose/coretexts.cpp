@@ -129,6 +129,29 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", "%1 in %2, rms %3%4, range %5%4"),
     QT_TRANSLATE_NOOP("metrofit::core", ", step %1%2 at %3"),
     QT_TRANSLATE_NOOP("metrofit::core", ", strongest harmonic %1 (amplitude %2%3)"),
+    // the open world in the loops: outliers excluded first, residual variables' axis titles, a named
+    // effect that does not explain what it was chosen for (diagnosis.cpp keepNamedOnlyWhenNeeded)
+    QT_TRANSLATE_NOOP("metrofit::core", "%1 gross errors excluded before the fit (robust z above the outlier threshold):"),
+    QT_TRANSLATE_NOOP("metrofit::core", " row %1 (%2 um)"),
+    QT_TRANSLATE_NOOP("metrofit::core", " row %1 (part %2, %3, %4 mm)"),
+    QT_TRANSLATE_NOOP("metrofit::core", " point %1 (row %2, %3 mm)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; "),
+    QT_TRANSLATE_NOOP("metrofit::core", "not identifiable: %1"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "rejected: does not explain what it was chosen for; without it the generic effects explain "
+                      "the data at least as well (BIC %1 without, %2 with)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "data row"),
+    QT_TRANSLATE_NOOP("metrofit::core", "dimension"),
+    QT_TRANSLATE_NOOP("metrofit::core", "loop direction"),
+    QT_TRANSLATE_NOOP("metrofit::core", "samples since an axis reversed"),
+    QT_TRANSLATE_NOOP("metrofit::core", "part number (%1)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "position along surface %1 (mm)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "normal x"),
+    QT_TRANSLATE_NOOP("metrofit::core", "normal y"),
+    QT_TRANSLATE_NOOP("metrofit::core", "normal z"),
+    QT_TRANSLATE_NOOP("metrofit::core", "x (mm)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "y (mm)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "z (mm)"),
     // core/common/run.cpp toString(Termination)
     QT_TRANSLATE_NOOP("metrofit::core", "converged"),
     QT_TRANSLATE_NOOP("metrofit::core", "budget exhausted"),
@@ -180,6 +203,7 @@ const std::map<std::string, const char*>& parameterNames() {
       {"mm", QT_TRANSLATE_NOOP("metrofit::core", "offset")},
       {"angle_deg", QT_TRANSLATE_NOOP("metrofit::core", "angle")},
       // generic effects `unexplained:<against>` (residual_check.h summariseGeneric), in the data's units
+      {"form", QT_TRANSLATE_NOOP("metrofit::core", "form")},
       {"rms", QT_TRANSLATE_NOOP("metrofit::core", "rms")},
       {"range", QT_TRANSLATE_NOOP("metrofit::core", "range")},
       {"at", QT_TRANSLATE_NOOP("metrofit::core", "at")},

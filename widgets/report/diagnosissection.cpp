@@ -70,7 +70,9 @@ std::shared_ptr<const diagnose::Diagnosis> memoDiagnosis(const ReportContext& co
 
 QString parameters(const diagnose::Candidate& c) {
   QStringList parts;
-  if (c.generic) parts << ReportText::tr("form %1").arg(dependenceFormName(c.generic->form));
+  const bool formGiven = std::any_of(c.parameters.begin(), c.parameters.end(),
+                                     [](const diagnose::Parameter& p) { return p.name == "form"; });
+  if (c.generic && !formGiven) parts << ReportText::tr("form %1").arg(dependenceFormName(c.generic->form));
   for (const diagnose::Parameter& p : c.parameters) {
     QString s = QString::fromStdString(p.name) + QStringLiteral(" ") +
                 QString::fromStdString(formatParameterValue(p));
