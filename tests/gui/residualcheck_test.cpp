@@ -9,6 +9,8 @@
 //     disabled with a tooltip when only generic effects are accepted;
 //   * the report: writeResidualCheck into a PDF, pdftotext finds the unexplained-structure sentence
 //     in reader's words (no internal identifiers), the outlier and the generic term;
+//   * the real loop on the demo data: every domain's residual check shown as core computed it, and
+//     the demo report's diagnosis section says what is left unexplained.
 #include <gtest/gtest.h>
 
 #include <QDir>
@@ -23,10 +25,15 @@
 #include <QTranslator>
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <set>
 
 #include "app/gui/diagnosispage.h"
 #include "core/diagnose/diagnosis.h"
+#include "core/diagnose/kinematic_diagnosis.h"
+#include "core/diagnose/matching_diagnosis.h"
+#include "core/sim/circular_sim.h"
+#include "core/sim/probe_sim.h"
 #include "demo_document_fixture.h"
 #include "qtapp.h"
 #include "widgets/diagnose/coretexts.h"
@@ -78,7 +85,9 @@ diagnose::Diagnosis fixture(bool genericOnly = false) {
   generic.name = "unexplained:T1";
   generic.accepted = true;
   generic.round = 1;
-  generic.parameters = {{"rms", 2.1, std::nullopt}, {"range", 6.3, std::nullopt}};
+  generic.parameters = {{"form", std::string("smooth"), std::nullopt},  // as the loops write it
+                        {"rms", 2.1, std::nullopt},
+                        {"range", 6.3, std::nullopt}};
   generic.rmseBefore = 2.0;
   generic.rmseAfter = 0.41;
   diagnose::GenericForm shape;
@@ -154,6 +163,7 @@ QString cell(const QTableWidget* t, int row, int col) {
 class ResidualCheckPageTest : public test::DemoDocumentTest {
  protected:
   static void grab(QWidget& page, const QString& name) {
+    QCoreApplication::processEvents();  // the chart lays out its title and series in the event loop
     DemoDocumentTest::grab(page, QStringLiteral("residualcheck"), name, QSize(1280, 760));
   }
 };
@@ -212,6 +222,8 @@ TEST_F(ResidualCheckPageTest, HandBuiltCheckFillsVerdictTablesAndChart) {
   // Chart: the residual's finite points, the fit through the distinct x values, the outlier.
   EXPECT_EQ(v->residualPointCount(), kPlotPoints - 1);
   EXPECT_EQ(v->fitPointCount(), kDistinctX);
+  EXPECT_EQ(v->fitLineCount(), 1);
+  EXPECT_TRUE(v->chartShown());
   EXPECT_EQ(v->outlierPointCount(), 1);
   EXPECT_EQ(v->xAxisTitle(), QStringLiteral("T1"));
   EXPECT_EQ(v->chartTitle(), QStringLiteral("Final residual against T1 with the generic fit (smooth)"));
@@ -387,6 +399,232 @@ TEST(ResidualCheckReportTest, PdfSaysWhatIsLeftUnexplainedInReadersWords) {
   EXPECT_TRUE(text.contains(QStringLiteral("excluded outliers")));
   for (const char* identifier : {"unexplained:T1", "ljung_box", "f_test", "robust_z"})
     EXPECT_FALSE(text.contains(QLatin1String(identifier))) << identifier << " in " << text.toStdString();
+}
+
+/// The chart's expected point counts for a plot (the rule of residualcheckview.h: finite points,
+/// the fit through the distinct x values, at most kMaxResidualCheckChartPoints each).
+struct ExpectedCounts {
+  int residual = 0, fit = 0, outliers = 0;
+};
+ExpectedCounts expectedCounts(const diagnose::ResidualCheck::Plot& p) {
+  auto capped = [](std::size_t n) {
+    const std::size_t max = kMaxResidualCheckChartPoints;
+    return static_cast<int>(n <= max ? n : (n + ((n + max - 1) / max) - 1) / ((n + max - 1) / max));
+  };
+  std::size_t residual = 0, outliers = 0;
+  const std::size_t components = static_cast<std::size_t>(std::max(1, p.components));
+  std::vector<std::set<double>> xs(components);  // per coordinate
+  for (std::size_t i = 0; i < p.x.size(); ++i) {
+    if (!std::isfinite(p.x[i])) continue;
+    if (i < p.residual.size() && std::isfinite(p.residual[i])) ++residual;
+    if (i < p.fit.size() && std::isfinite(p.fit[i])) xs[i % components].insert(p.x[i]);
+  }
+  for (std::size_t i = 0; i < p.outlierX.size() && i < p.outlierResidual.size(); ++i)
+    if (std::isfinite(p.outlierX[i]) && std::isfinite(p.outlierResidual[i])) ++outliers;
+  int fit = 0;
+  for (const auto& x : xs) fit += capped(x.size());
+  return {capped(residual), fit, capped(outliers)};
+}
+
+/// The page shows the residual check of its result as core computed it: verdict, every test, the
+/// structure, the outliers, the chart's series and counts, the generic effects in the candidates.
+void expectShowsCheck(const DiagnosisPage& page) {
+  ASSERT_TRUE(page.result().has_value());
+  ASSERT_TRUE(page.result()->residualCheck.has_value()) << "core gave no residual check";
+  const diagnose::ResidualCheck& c = *page.result()->residualCheck;
+  const ResidualCheckView* v = page.residualCheckView();
+  ASSERT_TRUE(v->hasCheck());
+  EXPECT_EQ(v->verdictText(), residualCheckVerdict(c));
+  if (c.structure.empty()) EXPECT_EQ(v->verdictText(), coreText(c.summaryParts, c.summary));
+  EXPECT_FALSE(v->verdictText().isEmpty());
+  EXPECT_TRUE(page.statusText().contains(v->verdictText())) << page.statusText().toStdString();
+  EXPECT_GT(c.tests.size(), 0u);
+  ASSERT_EQ(v->testTable()->rowCount(), static_cast<int>(c.tests.size()));
+  for (int r = 0; r < v->testTable()->rowCount(); ++r) {
+    const diagnose::ResidualTest& t = c.tests[static_cast<std::size_t>(r)];
+    EXPECT_EQ(cell(v->testTable(), r, 0), residualTestName(t.name));
+    EXPECT_EQ(cell(v->testTable(), r, 1), residualVariableName(t.against));
+    EXPECT_EQ(cell(v->testTable(), r, 5), formatPValue(t.p, QLocale::c()));
+    EXPECT_EQ(v->testTable()->item(r, 6)->data(Qt::UserRole).toBool(), t.rejected);
+  }
+  // White exactly when no test is rejected (CONTRACT.md), and the structure listed as core has it.
+  EXPECT_EQ(c.white, std::none_of(c.tests.begin(), c.tests.end(), [](const auto& t) { return t.rejected; }));
+  ASSERT_EQ(v->structureTable()->rowCount(), static_cast<int>(c.structure.size()));
+  for (int r = 0; r < v->structureTable()->rowCount(); ++r) {
+    const diagnose::StructureItem& s = c.structure[static_cast<std::size_t>(r)];
+    EXPECT_EQ(cell(v->structureTable(), r, 0), residualVariableName(s.against));
+    EXPECT_EQ(cell(v->structureTable(), r, 2), QLocale::c().toString(100.0 * s.share, 'f', 1));
+  }
+  EXPECT_EQ(v->outlierTable()->rowCount(), static_cast<int>(c.outliers.size()));
+  if (c.plot) {
+    const ExpectedCounts e = expectedCounts(*c.plot);
+    EXPECT_GT(e.residual, 0);
+    EXPECT_TRUE(v->chartShown());
+    EXPECT_EQ(v->residualPointCount(), e.residual);
+    EXPECT_EQ(v->fitPointCount(), e.fit);
+    EXPECT_EQ(v->fitLineCount(), std::max(1, c.plot->components));
+    EXPECT_EQ(v->outlierPointCount(), e.outliers);
+  } else {
+    EXPECT_EQ(v->residualPointCount(), 0);
+    EXPECT_TRUE(c.structure.empty());
+    // The chart is hidden; its title says why (for an export).
+    EXPECT_FALSE(v->chartShown());
+    EXPECT_EQ(v->chartTitle(), c.white ? QStringLiteral("The final residual is white: nothing left to plot")
+                                       : QStringLiteral("No single variable explains the structure left"));
+  }
+  // Every generic effect is in the candidate table under its name, with its form.
+  for (std::size_t i = 0; i < page.result()->effects.size(); ++i) {
+    const diagnose::Candidate& e = page.result()->effects[i];
+    if (!e.generic) continue;
+    EXPECT_EQ(cell(page.candidateTable(), static_cast<int>(i), 1).toStdString(), e.name);
+    EXPECT_TRUE(cell(page.candidateTable(), static_cast<int>(i), 2)
+                    .startsWith(QStringLiteral("form: ") + dependenceFormName(e.generic->form)));
+  }
+}
+
+/// The thermal loop gets its residual check in the lead's branch wt-thermal (commit 3453f47: "Work in
+/// progress: thermal"); until then a thermal diagnosis without one is let through (and said so).
+/// Every other domain must have it.
+bool checkPending(const diagnose::Diagnosis& d) {
+  if (d.residualCheck || d.domain != "thermal") return false;
+  std::cout << "note: the thermal diagnosis has no residual check yet (wt-thermal not merged)\n";
+  return true;
+}
+
+// The real loops on the demo data: what the page shows is the check core computed.
+TEST_F(ResidualCheckPageTest, DemoLoopsShowTheirResidualCheck) {
+  const LocaleGuard locale(QLocale::c());
+  DiagnosisPage page(&document_);
+  for (DiagnosisDomain domain : kDiagnosisDomains) {
+    SCOPED_TRACE(diagnosisDomainKey(domain));
+    page.setDomain(domain);
+    ASSERT_TRUE(page.runNow()) << page.statusText().toStdString();
+    if (checkPending(*page.result())) continue;
+    expectShowsCheck(page);
+    page.resultTabs()->setCurrentIndex(1);
+    grab(page, QStringLiteral("demo-") + QString::fromLatin1(diagnosisDomainKey(domain)));
+  }
+}
+
+// The demo project's other files through the loops (the variations diagnosis_locale_test runs):
+// whatever each check finds, the page shows it; some leave structure (a plot, vector residuals).
+TEST_F(ResidualCheckPageTest, OtherDemoFilesShowTheirResidualCheck) {
+  const LocaleGuard locale(QLocale::c());
+  auto settings = [&](DiagnosisDomain domain, const char* file) {
+    DiagnosisSettings s = diagnosisSettings(document_.project(), project_.toStdString(), domain);
+    s.datasetPath = QDir(dir_.path()).filePath(QStringLiteral("data/") + QLatin1String(file)).toStdString();
+    return s;
+  };
+  std::vector<std::pair<std::string, DiagnosisSettings>> runs = {
+      {"kinematic circular_demo", settings(DiagnosisDomain::Kinematic, "circular_demo.csv")},
+      {"setup paper_example_report", settings(DiagnosisDomain::Setup, "paper_example_report.csv")},
+  };
+  for (const auto& [file, tolerance] :
+       {std::pair{"probe_points_demo.csv", 0.05}, std::pair{"probe_s_piece.csv", 0.01}}) {
+    DiagnosisSettings s = settings(DiagnosisDomain::Matching, file);
+    s.toleranceMm = tolerance;
+    runs.push_back({std::string("matching ") + file, s});
+  }
+  DiagnosisPage page(&document_);
+  int withPlot = 0;
+  for (const auto& [name, s] : runs) {
+    SCOPED_TRACE(name);
+    page.setDomain(s.domain);
+    page.setResult(runDiagnosis(s));
+    expectShowsCheck(page);
+    const auto& c = page.result()->residualCheck;
+    if (c && c->plot) ++withPlot;
+    std::cout << name << ": " << (c ? c->summary : std::string("no check")) << " (plot components "
+              << (c && c->plot ? c->plot->components : 0) << ", outliers " << (c ? c->outliers.size() : 0u) << ")\n";
+    page.resultTabs()->setCurrentIndex(1);
+    QString shot = QString::fromStdString(name);
+    shot.replace(QLatin1Char(' '), QLatin1Char('-'));
+    grab(page, QStringLiteral("other-") + shot);
+  }
+  std::cout << withPlot << " of " << runs.size() << " with a plot\n";
+}
+
+// Effects in no catalogue, added here to clean simulated data as in open_world_diagnosis_test: the
+// real loops flag or explain them, and the page shows the structure (with the vector residual's
+// fit lines), the generic effects and the gross error.
+TEST_F(ResidualCheckPageTest, OpenWorldCasesShowTheirStructureAndOutlier) {
+  const LocaleGuard locale(QLocale::c());
+  DiagnosisPage page(&document_);
+  auto expectFlaggedOrExplained = [&](const diagnose::Diagnosis& d) {
+    const bool generic = std::any_of(d.effects.begin(), d.effects.end(),
+                                     [](const diagnose::Candidate& c) { return c.accepted && c.generic; });
+    EXPECT_TRUE(generic || !d.residualCheck->white) << toJson(d).dump(1);
+    if (!d.residualCheck->white) {
+      EXPECT_GT(page.residualCheckView()->structureTable()->rowCount(), 0);
+      EXPECT_TRUE(page.resultTabs()->tabText(1).contains(QStringLiteral("structure left")));
+    }
+  };
+  {
+    SCOPED_TRACE("kinematic: thermal drift during the test, one gross point");
+    CircularSimOptions o;
+    o.seed = 1;
+    MeasuredPath p = simulateCircularTest(o);
+    const double n = static_cast<double>(p.size());
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      p.measured[k].x() += 8.0 * o.noiseMm * k / n;
+      p.measured[k].y() += 4.0 * o.noiseMm * k / n;
+    }
+    p.measured[100].x() += 40.0 * o.noiseMm;
+    page.setDomain(DiagnosisDomain::Kinematic);
+    page.setResult(diagnose::diagnoseKinematic(p, {}));
+    expectShowsCheck(page);
+    const diagnose::Diagnosis& d = *page.result();
+    expectFlaggedOrExplained(d);
+    ASSERT_EQ(d.residualCheck->outliers.size(), 1u) << toJson(d).dump(1);
+    EXPECT_EQ(cell(page.residualCheckView()->outlierTable(), 0, 0), QStringLiteral("101"));
+    EXPECT_TRUE(cell(page.residualCheckView()->outlierTable(), 0, 4).endsWith(QStringLiteral(" mm")));
+    if (d.residualCheck->plot) EXPECT_EQ(page.residualCheckView()->fitLineCount(), 2);  // x and y
+    page.resultTabs()->setCurrentIndex(1);
+    grab(page, QStringLiteral("open-kinematic-drift"));
+    page.resultTabs()->setCurrentIndex(0);
+    grab(page, QStringLiteral("open-kinematic-drift-effects"));
+  }
+  {
+    SCOPED_TRACE("matching: a thin part bending under the clamp");
+    ProbeSimOptions o;
+    o.seed = 1;
+    ProbePointSet s = simulateProbing(o);
+    const double half = o.length / 2.0;
+    for (ProbePoint& pt : s.points) {
+      const double u = (pt.nominal.x() - half) / half;
+      pt.measured += 10.0 * o.noiseMm * (1.0 - u * u) * pt.normal;
+    }
+    page.setDomain(DiagnosisDomain::Matching);
+    page.setResult(diagnose::diagnoseMatching(s));
+    expectShowsCheck(page);
+    expectFlaggedOrExplained(*page.result());
+    page.resultTabs()->setCurrentIndex(1);
+    grab(page, QStringLiteral("open-matching-bending"));
+  }
+}
+
+// The demo report: per configured domain, the diagnosis section says what is left unexplained.
+TEST_F(ResidualCheckPageTest, DemoReportSaysWhatIsLeftUnexplained) {
+  const QString pdf = dir_.filePath(QStringLiteral("demo.pdf"));
+  ReportOptions options;
+  options.projectPath = project_;
+  options.resolutionDpi = 150;
+  writeReport(document_.project(), pdf, options);
+  const QString text = pdfText(pdf);
+  ASSERT_FALSE(text.isEmpty());
+  int expected = 0;
+  for (DiagnosisDomain domain : kDiagnosisDomains) {
+    if (!hasDiagnosisSettings(document_.project(), domain)) continue;
+    const diagnose::Diagnosis d =
+        runDiagnosis(diagnosisSettings(document_.project(), project_.toStdString(), domain));
+    if (checkPending(d)) continue;
+    ASSERT_TRUE(d.residualCheck.has_value()) << diagnosisDomainKey(domain);
+    ++expected;
+    // The verdict's sentence as the report words it (its start: the rest may wrap around a page break).
+    const QString first = residualCheckSentences(d, QLocale::c()).front().simplified();
+    EXPECT_TRUE(text.contains(first.left(60))) << diagnosisDomainKey(domain) << ": " << first.toStdString();
+  }
+  EXPECT_EQ(static_cast<int>(text.count(QStringLiteral("What is left unexplained:"))), expected);
 }
 
 }  // namespace
