@@ -3779,12 +3779,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+14"/>
         <source>time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location line="-13"/>
+        <location line="+1"/>
         <source>file row</source>
         <translation>Dateizeile</translation>
     </message>
@@ -3815,18 +3814,38 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>dimension</source>
+        <translation>Maß</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>normal %1</source>
+        <translation>Normale %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+16"/>
-        <location line="+85"/>
+        <location line="+107"/>
         <source>dimension %1</source>
         <translation>Maß %1</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-100"/>
+        <source>time</source>
+        <comment>in a sentence</comment>
+        <translation>der Zeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the order of the rows in the file</source>
         <translation>der Reihenfolge der Zeilen in der Datei</translation>
     </message>
@@ -3862,11 +3881,32 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>the dimension</source>
+        <translation>dem Maß</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the surface</source>
+        <translation>der Fläche</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the %1 component of the nominal normal</source>
+        <translation>der %1-Komponente der nominalen Normalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the position on surface %1</source>
         <translation>der Lage auf der Fläche %1</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>dimension %1</source>
+        <comment>in a sentence</comment>
+        <translation>dem Maß %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>column %1</source>
         <translation>der Spalte %1</translation>
     </message>

@@ -3786,12 +3786,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+14"/>
         <source>time</source>
         <translation>czas</translation>
     </message>
     <message>
-        <location line="-13"/>
+        <location line="+1"/>
         <source>file row</source>
         <translation>wiersz pliku</translation>
     </message>
@@ -3822,18 +3821,38 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>dimension</source>
+        <translation>wymiar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface</source>
+        <translation>powierzchnia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>normal %1</source>
+        <translation>normalna %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>surface %1</source>
         <translation>powierzchnia %1</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+16"/>
-        <location line="+85"/>
+        <location line="+107"/>
         <source>dimension %1</source>
         <translation>wymiar %1</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-100"/>
+        <source>time</source>
+        <comment>in a sentence</comment>
+        <translation>czasu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the order of the rows in the file</source>
         <translation>kolejności wierszy w pliku</translation>
     </message>
@@ -3869,11 +3888,32 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>the dimension</source>
+        <translation>wymiaru</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the surface</source>
+        <translation>powierzchni</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the %1 component of the nominal normal</source>
+        <translation>składowej %1 nominalnej normalnej</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the position on surface %1</source>
         <translation>położenia na powierzchni %1</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>dimension %1</source>
+        <comment>in a sentence</comment>
+        <translation>wymiaru %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>column %1</source>
         <translation>kolumny %1</translation>
     </message>
@@ -3950,7 +3990,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="-3"/>
         <source>not white: still depends on %1</source>
-        <translation>nie białe: wciąż zależy od %1</translation>
+        <translation>nie białe: wciąż zależy od zmiennych: %1</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -6718,7 +6758,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+1"/>
         <source>not white: still depends on </source>
-        <translation>nie białe: wciąż zależy od </translation>
+        <translation>nie białe: wciąż zależy od zmiennych: </translation>
     </message>
     <message>
         <location line="+1"/>

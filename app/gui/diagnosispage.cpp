@@ -651,17 +651,30 @@ void DiagnosisPage::showView(const QString& view) {
   for (DiagnosisDomain d : kDiagnosisDomains) {
     if (view == QLatin1String(diagnosisDomainKey(d))) order = {d};
   }
-  const int tab = view == QLatin1String("residual") ? 1 : 0;
-  tabs_->setCurrentIndex(tab);
-  if (result_ && std::find(order.begin(), order.end(), domain()) != order.end()) return;
+  const bool residual = view == QLatin1String("residual");
+  tabs_->setCurrentIndex(residual ? 1 : 0);
+  // "residual": the first domain whose result has a residual check (a loop without one shows only
+  // "no residual check"), else the first that runs.
+  const auto good = [&] { return result_ && (!residual || result_->residualCheck.has_value()); };
+  if (good() && std::find(order.begin(), order.end(), domain()) != order.end()) return;
+  std::optional<DiagnosisDomain> ran;
   for (DiagnosisDomain d : order) {
     setDomain(d);
     if (settings_ && runNow()) {
-      tabs_->setCurrentIndex(tab);
-      return;
+      if (!ran) ran = d;
+      if (good()) {
+        tabs_->setCurrentIndex(residual ? 1 : 0);
+        return;
+      }
     }
   }
-  if (!order.empty()) setDomain(order.front());
+  if (ran) {
+    setDomain(*ran);
+    runNow();
+    tabs_->setCurrentIndex(residual ? 1 : 0);
+  } else if (!order.empty()) {
+    setDomain(order.front());
+  }
 }
 
 }  // namespace metrofit

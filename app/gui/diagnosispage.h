@@ -71,8 +71,8 @@ class DiagnosisPage : public QWidget {
   bool applyAccepted();
 
   /// "diagnosis" (or a domain name): runs the first configured domain whose data load, in the order
-  /// thermal, setup, matching, kinematic (or the named one), and shows its result; "residual" does
-  /// the same and shows the residual check tab.
+  /// thermal, setup, matching, kinematic (or the named one), and shows its result; "residual" shows
+  /// the residual check tab of the first of them whose result has a residual check.
   Q_INVOKABLE void showView(const QString& view);
 
  signals:

@@ -45,6 +45,10 @@ QString residualVariableName(const std::string& against) {
   if (against == "reversal") return ResidualCheckText::tr("samples since reversal");
   if (against == "normal") return ResidualCheckText::tr("along the normal");
   if (against == "part") return ResidualCheckText::tr("part");
+  if (against == "dimension") return ResidualCheckText::tr("dimension");
+  if (against == "surface") return ResidualCheckText::tr("surface");
+  if (against == "nx" || against == "ny" || against == "nz")
+    return ResidualCheckText::tr("normal %1").arg(q(against.substr(1)));
   if (startsWith(against, "surface:", &rest)) return ResidualCheckText::tr("surface %1").arg(q(rest));
   if (startsWith(against, "dimension:", &rest)) return ResidualCheckText::tr("dimension %1").arg(q(rest));
   return q(against);  // x, y, z and the columns of the file keep their names
@@ -52,7 +56,8 @@ QString residualVariableName(const std::string& against) {
 
 QString residualVariableWords(const std::string& against) {
   std::string rest;
-  if (against == "time") return ResidualCheckText::tr("time");
+  // In a sentence ("depends on %1", "a smooth curve in %1"): German dative, Polish genitive.
+  if (against == "time") return ResidualCheckText::tr("time", "in a sentence");
   if (against == "row") return ResidualCheckText::tr("the order of the rows in the file");
   if (against == "angle") return ResidualCheckText::tr("the path angle");
   if (against == "direction") return ResidualCheckText::tr("the direction of the loop (counter-clockwise or clockwise)");
@@ -61,8 +66,13 @@ QString residualVariableWords(const std::string& against) {
     return ResidualCheckText::tr("the nominal %1 coordinate").arg(q(against));
   if (against == "normal") return ResidualCheckText::tr("the position along the nominal normal");
   if (against == "part") return ResidualCheckText::tr("the part");
+  if (against == "dimension") return ResidualCheckText::tr("the dimension");
+  if (against == "surface") return ResidualCheckText::tr("the surface");
+  if (against == "nx" || against == "ny" || against == "nz")
+    return ResidualCheckText::tr("the %1 component of the nominal normal").arg(q(against.substr(1)));
   if (startsWith(against, "surface:", &rest)) return ResidualCheckText::tr("the position on surface %1").arg(q(rest));
-  if (startsWith(against, "dimension:", &rest)) return ResidualCheckText::tr("dimension %1").arg(q(rest));
+  if (startsWith(against, "dimension:", &rest))
+    return ResidualCheckText::tr("dimension %1", "in a sentence").arg(q(rest));
   return ResidualCheckText::tr("column %1").arg(q(against));
 }
 

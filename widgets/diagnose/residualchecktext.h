@@ -21,7 +21,8 @@ namespace metrofit {
 
 /// "ljung_box" -> "Ljung-Box", "f_test" -> "F test"; others as they are.
 QString residualTestName(const std::string& name);
-/// A variable for a table cell: "time", "file row", "path angle", "surface S1", a column's own name.
+/// A variable for a table cell: "time", "file row", "path angle", "dimension", "surface",
+/// "normal x", "surface S1", "dimension P1.D1", a column's own name.
 QString residualVariableName(const std::string& against);
 /// A variable in a sentence: "time", "the order of the rows in the file", "the path angle",
 /// "the points of surface S1", "column T1".
