@@ -6804,11 +6804,16 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>rejected: does not explain what it was chosen for; without it the generic effects explain the data at least as well (BIC %1 without, %2 with)</source>
-        <translation>abgelehnt: erklärt nicht, wofür er gewählt wurde; ohne ihn erklären die generischen Effekte die Daten mindestens ebenso gut (BIC %1 ohne, %2 mit)</translation>
+        <source>rejected: does not explain what it was chosen for; without it the generic effects explain the data as well (BIC %1 without, %2 with, needed %3 lower)</source>
+        <translation>abgelehnt: erklärt nicht, wofür er gewählt wurde; ohne ihn erklären die generischen Effekte die Daten ebenso gut (BIC %1 ohne, %2 mit, nötig %3 niedriger)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
+        <source>samples since an axis reversed (signed, log scale)</source>
+        <translation>Abtastwerte seit einer Achsumkehr (mit Vorzeichen, logarithmisch)</translation>
+    </message>
+    <message>
+        <location line="-3"/>
         <source>data row</source>
         <translation>Datenzeile</translation>
     </message>
@@ -6823,12 +6828,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Umlaufrichtung</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>samples since an axis reversed</source>
-        <translation>Abtastwerte seit einer Achsumkehr</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>part number (%1)</source>
         <translation>Werkstücknummer (%1)</translation>
     </message>

@@ -6822,11 +6822,16 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>rejected: does not explain what it was chosen for; without it the generic effects explain the data at least as well (BIC %1 without, %2 with)</source>
-        <translation>odrzucony: nie wyjaśnia tego, do czego został wybrany; bez niego efekty ogólne wyjaśniają dane co najmniej równie dobrze (BIC %1 bez, %2 z nim)</translation>
+        <source>rejected: does not explain what it was chosen for; without it the generic effects explain the data as well (BIC %1 without, %2 with, needed %3 lower)</source>
+        <translation>odrzucony: nie wyjaśnia tego, do czego został wybrany; bez niego efekty ogólne wyjaśniają dane równie dobrze (BIC %1 bez, %2 z nim, potrzebne o %3 niżej)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
+        <source>samples since an axis reversed (signed, log scale)</source>
+        <translation>próbki od nawrotu osi (ze znakiem, skala logarytmiczna)</translation>
+    </message>
+    <message>
+        <location line="-3"/>
         <source>data row</source>
         <translation>wiersz danych</translation>
     </message>
@@ -6841,12 +6846,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>kierunek obiegu</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>samples since an axis reversed</source>
-        <translation>próbki od nawrotu osi</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>part number (%1)</source>
         <translation>numer przedmiotu (%1)</translation>
     </message>

@@ -139,11 +139,11 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", "not identifiable: %1"),
     QT_TRANSLATE_NOOP("metrofit::core",
                       "rejected: does not explain what it was chosen for; without it the generic effects explain "
-                      "the data at least as well (BIC %1 without, %2 with)"),
+                      "the data as well (BIC %1 without, %2 with, needed %3 lower)"),
     QT_TRANSLATE_NOOP("metrofit::core", "data row"),
     QT_TRANSLATE_NOOP("metrofit::core", "dimension"),
     QT_TRANSLATE_NOOP("metrofit::core", "loop direction"),
-    QT_TRANSLATE_NOOP("metrofit::core", "samples since an axis reversed"),
+    QT_TRANSLATE_NOOP("metrofit::core", "samples since an axis reversed (signed, log scale)"),
     QT_TRANSLATE_NOOP("metrofit::core", "part number (%1)"),
     QT_TRANSLATE_NOOP("metrofit::core", "position along surface %1 (mm)"),
     QT_TRANSLATE_NOOP("metrofit::core", "normal x"),
