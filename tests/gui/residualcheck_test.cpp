@@ -610,6 +610,12 @@ TEST_F(ResidualCheckPageTest, DemoReportSaysWhatIsLeftUnexplained) {
   options.projectPath = project_;
   options.resolutionDpi = 150;
   writeReport(document_.project(), pdf, options);
+  if (const QString out = qEnvironmentVariable("METROFIT_TEST_OUT"); !out.isEmpty()) {  // for a look
+    QDir().mkpath(QDir(out).filePath(QStringLiteral("residualcheck")));
+    const QString copy = QDir(out).filePath(QStringLiteral("residualcheck/demo-report.pdf"));
+    QFile::remove(copy);
+    QFile::copy(pdf, copy);
+  }
   const QString text = pdfText(pdf);
   ASSERT_FALSE(text.isEmpty());
   int expected = 0;
