@@ -348,7 +348,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
 <context>
     <name>metrofit::DiagnosisPage</name>
     <message>
-        <location filename="../app/gui/diagnosispage.cpp" line="+53"/>
+        <location filename="../app/gui/diagnosispage.cpp" line="+56"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -368,22 +368,27 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+517"/>
+        <location line="+420"/>
+        <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
+        <translation>%1: ein generischer Effekt (was kein Effekt des Katalogs erklärt) kann dem Modell der Studie (%2) noch nicht hinzugefügt werden; er wird hier und in der Residuenprüfung angezeigt, nicht übernommen</translation>
+    </message>
+    <message>
+        <location line="+161"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-456"/>
+        <location line="-516"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
     <message>
-        <location line="-43"/>
+        <location line="-47"/>
         <source>mm/part</source>
         <translation>mm/Werkstück</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+48"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -393,7 +398,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ins &amp;Modell übernehmen</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>The study whose declared model is diagnosed</source>
         <translation>Die Studie, deren deklariertes Modell diagnostiziert wird</translation>
     </message>
@@ -409,11 +414,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+5"/>
+        <location line="+308"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-294"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Das deklarierte Modell, wie es vor dem Hinzufügen eines Effekts angepasst wurde</translation>
     </message>
@@ -473,18 +479,40 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
+        <source>&amp;Effects</source>
+        <translation>&amp;Effekte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+161"/>
+        <location line="+130"/>
+        <source>Residual chec&amp;k</source>
+        <translation>Residuen&amp;prüfung</translation>
+    </message>
+    <message>
+        <location line="-290"/>
+        <source>The candidate effects tried, their residual plots and the error before / after</source>
+        <translation>Die getesteten Kandidateneffekte, ihre Residuendiagramme und der Fehler vorher / nachher</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>What the final residual still depends on: tests, structure, outliers and the residual against the variable of the strongest structure</source>
+        <translation>Wovon das endgültige Residuum noch abhängt: Tests, Struktur, Ausreißer und das Residuum über der Variablen der stärksten Struktur</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>&amp;Domain:</source>
         <translation>Ber&amp;eich:</translation>
     </message>
     <message>
         <location line="+34"/>
-        <location line="+134"/>
+        <location line="+143"/>
         <source>The diagnosis failed: %1</source>
         <translation>Die Diagnose ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="-69"/>
+        <location line="-78"/>
         <source>No usable %1 data for the diagnosis:
 %2
 
@@ -530,7 +558,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Noch nicht ausgeführt: Ausführen drücken (Strg+R).</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+42"/>
         <source>Diagnosing …</source>
         <translation>Diagnose läuft …</translation>
     </message>
@@ -540,7 +568,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Diagnose läuft … Schritt %1, aktueller rmse %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+44"/>
+        <source>Nothing to apply. %1.</source>
+        <translation>Nichts zu übernehmen. %1.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Applies %1 only. %2.</source>
+        <translation>Übernimmt nur %1. %2.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -570,7 +608,22 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Abgebrochen: die bisherigen Runden.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
+        <source>Residual check: %1.</source>
+        <translation>Residuenprüfung: %1.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Residual chec&amp;k: white</source>
+        <translation>Residuen&amp;prüfung: weiß</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Residual chec&amp;k: structure left</source>
+        <translation>Residuen&amp;prüfung: Struktur übrig</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source> (accepted)</source>
         <translation> (übernommen)</translation>
     </message>
@@ -580,7 +633,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Residuen vor und nach %1</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+21"/>
+        <source>form: %1</source>
+        <translation>Form: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A generic effect: %1 in %2, for structure no catalogue effect explains</source>
+        <translation>Ein generischer Effekt: %1 in %2, für Struktur, die kein Effekt des Katalogs erklärt</translation>
+    </message>
+    <message>
+        <location line="+55"/>
         <source>(Already applied.)</source>
         <translation>(Bereits übernommen.)</translation>
     </message>
@@ -2026,7 +2089,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/pointview/pointsetview.cpp" line="+320"/>
+        <location filename="../widgets/pointview/pointsetview.cpp" line="+323"/>
         <source>deviation
 (mm)</source>
         <translation>Abw.
@@ -2159,7 +2222,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::Report</name>
     <message>
-        <location filename="../widgets/report/diagnosissection.cpp" line="+36"/>
+        <location filename="../widgets/report/diagnosissection.cpp" line="+41"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+521"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
@@ -2180,7 +2243,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lageausrichtung</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+28"/>
+        <source>form %1</source>
+        <translation>Form %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>rmse %1 %2, max |e| %3 %2</source>
         <translation>rmse %1 %2, max |e| %3 %2</translation>
     </message>
@@ -2288,7 +2356,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Residuen vor und nach %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+216"/>
         <source>error (%1)</source>
         <translation>Fehler (%1)</translation>
@@ -2319,7 +2387,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>rmse (Testdaten)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+21"/>
+        <source>Final residual against %1</source>
+        <translation>Endgültiges Residuum über %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Final residual against %1 with the generic fit (%2)</source>
+        <translation>Endgültiges Residuum über %1 mit der generischen Anpassung (%2)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Closed loop: diagnosis</source>
         <translation>Geschlossener Kreis: Diagnose</translation>
     </message>
@@ -3685,6 +3763,564 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+5"/>
         <source>metrofit-cli failed with exit code %1.</source>
         <translation>metrofit-cli ist mit dem Exit-Code %1 fehlgeschlagen.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ResidualCheck</name>
+    <message>
+        <location filename="../widgets/diagnose/residualchecktext.cpp" line="+34"/>
+        <source>Ljung-Box</source>
+        <translation>Ljung-Box</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>F test</source>
+        <translation>F-Test</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>file row</source>
+        <translation>Dateizeile</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>path angle</source>
+        <translation>Bahnwinkel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>loop direction</source>
+        <translation>Umlaufrichtung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>samples since reversal</source>
+        <translation>Abtastwerte seit Umkehr</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>along the normal</source>
+        <translation>entlang der Normalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part</source>
+        <translation>Werkstück</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dimension</source>
+        <translation>Maß</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>normal %1</source>
+        <translation>Normale %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface %1</source>
+        <translation>Fläche %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+107"/>
+        <source>dimension %1</source>
+        <translation>Maß %1</translation>
+    </message>
+    <message>
+        <location line="-100"/>
+        <source>time</source>
+        <comment>in a sentence</comment>
+        <translation>der Zeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the order of the rows in the file</source>
+        <translation>der Reihenfolge der Zeilen in der Datei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the path angle</source>
+        <translation>dem Bahnwinkel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the direction of the loop (counter-clockwise or clockwise)</source>
+        <translation>der Umlaufrichtung (gegen oder im Uhrzeigersinn)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the number of samples since an axis reversed</source>
+        <translation>der Zahl der Abtastwerte seit einer Achsumkehr</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the nominal %1 coordinate</source>
+        <translation>der nominalen %1-Koordinate</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the position along the nominal normal</source>
+        <translation>der Lage entlang der nominalen Normalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the part</source>
+        <translation>dem Werkstück</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the dimension</source>
+        <translation>dem Maß</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the surface</source>
+        <translation>der Fläche</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the %1 component of the nominal normal</source>
+        <translation>der %1-Komponente der nominalen Normalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the position on surface %1</source>
+        <translation>der Lage auf der Fläche %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dimension %1</source>
+        <comment>in a sentence</comment>
+        <translation>dem Maß %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>column %1</source>
+        <translation>der Spalte %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>linear</source>
+        <translation>linear</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>smooth</source>
+        <translation>glatt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>step</source>
+        <translation>Sprung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>periodic</source>
+        <translation>periodisch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per level</source>
+        <translation>je Stufe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>spike</source>
+        <translation>Spitze</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>a linear trend</source>
+        <translation>ein linearer Trend</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a smooth curve</source>
+        <translation>eine glatte Kurve</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a step</source>
+        <translation>ein Sprung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a step at %1</source>
+        <translation>ein Sprung bei %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a periodic pattern</source>
+        <translation>ein periodisches Muster</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a different level per group</source>
+        <translation>ein eigenes Niveau je Gruppe</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>%1 (%2, %3 % of the residual variance)</source>
+        <translation>%1 (%2, %3 % der Residuenvarianz)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>white: no test finds structure</source>
+        <translation>weiß: kein Test findet Struktur</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>not white: still depends on %1</source>
+        <translation>nicht weiß: hängt noch ab von %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not white: the tests find structure that no single variable explains</source>
+        <translation>nicht weiß: die Tests finden Struktur, die keine einzelne Variable erklärt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>row %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part %1</source>
+        <translation>Werkstück %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>point %1</source>
+        <translation>Punkt %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>observation %1</source>
+        <translation>Beobachtung %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+16"/>
+        <source>What is left unexplained: nothing that the tests can find. None of the %n test(s) of the final residual (against every variable the data offer, and of its serial correlation) finds a dependence at the %1 % family-wise level: the residual looks like noise.</source>
+        <translation>
+            <numerusform>Was unerklärt bleibt: nichts, was die Tests finden können. Der %n Test des endgültigen Residuums (gegen jede Variable der Daten und auf serielle Korrelation) findet keine Abhängigkeit auf dem familienweisen Niveau von %1 %: das Residuum sieht aus wie Rauschen.</numerusform>
+            <numerusform>Was unerklärt bleibt: nichts, was die Tests finden können. Keiner der %n Tests des endgültigen Residuums (gegen jede Variable der Daten und auf serielle Korrelation) findet eine Abhängigkeit auf dem familienweisen Niveau von %1 %: das Residuum sieht aus wie Rauschen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 (%2, %3 % of the residual variance, p = %4)</source>
+        <translation>%1 (%2, %3 % der Residuenvarianz, p = %4)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 and %2</source>
+        <translation>%1 und %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>What is left unexplained: the final residual still depends on %1. No effect of the catalogue explains this (tests at the %2 % family-wise level).</source>
+        <translation>Was unerklärt bleibt: das endgültige Residuum hängt noch ab von %1. Kein Effekt des Katalogs erklärt das (Tests auf dem familienweisen Niveau von %2 %).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>What is left unexplained: the final residual is serially correlated in the order of %1 (Ljung-Box test, p = %2), but no single variable of the data explains it.</source>
+        <translation>Was unerklärt bleibt: das endgültige Residuum ist in der Reihenfolge %1 seriell korreliert (Ljung-Box-Test, p = %2), aber keine einzelne Variable der Daten erklärt das.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>What is left unexplained: the tests find structure in the final residual at the %1 % family-wise level that no single variable explains.</source>
+        <translation>Was unerklärt bleibt: die Tests finden auf dem familienweisen Niveau von %1 % Struktur im endgültigen Residuum, die keine einzelne Variable erklärt.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 in %2</source>
+        <translation>%1 in %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No effect of the catalogue explains part of this structure, so the model was given a generic term for it instead of a wrong name: %1.</source>
+        <translation>Kein Effekt des Katalogs erklärt einen Teil dieser Struktur, daher erhielt das Modell dafür einen generischen Term statt eines falschen Namens: %1.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No measurement was excluded as a gross error (robust z above %1).</source>
+        <translation>Kein Messwert wurde als grober Fehler ausgeschlossen (robustes z über %1).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No measurement was excluded as a gross error.</source>
+        <translation>Kein Messwert wurde als grober Fehler ausgeschlossen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (residual %2 %3, robust z %4)</source>
+        <translation>%1 (Residuum %2 %3, robustes z %4)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="-84"/>
+        <location line="+89"/>
+        <source> and %n more</source>
+        <translation>
+            <numerusform> und %n weiterer</numerusform>
+            <numerusform> und %n weitere</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n measurement(s) excluded from the fit as gross errors (robust z above %1): %2.</source>
+        <translation>
+            <numerusform>%n Messwert als grober Fehler von der Anpassung ausgeschlossen (robustes z über %1): %2.</numerusform>
+            <numerusform>%n Messwerte als grobe Fehler von der Anpassung ausgeschlossen (robustes z über %1): %2.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ResidualCheckView</name>
+    <message>
+        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+116"/>
+        <source>Final residual against %1</source>
+        <translation>Endgültiges Residuum über %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Final residual against %1 with the generic fit (%2)</source>
+        <translation>Endgültiges Residuum über %1 mit der generischen Anpassung (%2)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+183"/>
+        <location line="+275"/>
+        <source>residual</source>
+        <translation>Residuum</translation>
+    </message>
+    <message>
+        <location line="-458"/>
+        <source>residual (%1)</source>
+        <translation>Residuum (%1)</translation>
+    </message>
+    <message>
+        <location line="+186"/>
+        <source>generic fit</source>
+        <translation>generische Anpassung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>generic fit, %1</source>
+        <translation>generische Anpassung, %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+282"/>
+        <source>excluded outliers</source>
+        <translation>ausgeschlossene Ausreißer</translation>
+    </message>
+    <message>
+        <location line="-241"/>
+        <location line="+137"/>
+        <source>What the residual still depends on (strongest first):</source>
+        <translation>Wovon das Residuum noch abhängt (stärkste zuerst):</translation>
+    </message>
+    <message>
+        <location line="-136"/>
+        <source>Outliers excluded from the fit:</source>
+        <translation>Von der Anpassung ausgeschlossene Ausreißer:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tests of the final residual:</source>
+        <translation>Tests des endgültigen Residuums:</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>The final residual (after every accepted effect, outliers excluded) is white when no test finds structure at the family-wise level (Holm&apos;s procedure over all tests)</source>
+        <translation>Das endgültige Residuum (nach allen übernommenen Effekten, ohne Ausreißer) ist weiß, wenn kein Test auf dem familienweisen Niveau Struktur findet (Holm-Verfahren über alle Tests)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+8"/>
+        <source>Form</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <location line="-8"/>
+        <source>Share (%)</source>
+        <translation>Anteil (%)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+8"/>
+        <source>p-value</source>
+        <translation>p-Wert</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>Per variable with a rejected test its strongest form; share = part of the residual variance the form explains</source>
+        <translation>Je Variable mit abgelehntem Test ihre stärkste Form; Anteil = Teil der Residuenvarianz, den die Form erklärt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Row</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Part</source>
+        <translation>Werkstück</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Dimension</source>
+        <translation>Maß</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Id</source>
+        <translation>Kennung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+135"/>
+        <source>Residual</source>
+        <translation>Residuum</translation>
+    </message>
+    <message>
+        <location line="-135"/>
+        <source>Robust z</source>
+        <translation>Robustes z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Observations whose robust z (|r - median| / (1.4826 MAD)) is above the threshold: gross errors, excluded and the model refitted without them</source>
+        <translation>Beobachtungen, deren robustes z (|r - Median| / (1,4826 MAD)) über der Schwelle liegt: grobe Fehler, ausgeschlossen und das Modell ohne sie neu angepasst</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Test</source>
+        <translation>Test</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Order / variable</source>
+        <translation>Reihenfolge / Variable</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Statistic</source>
+        <translation>Statistik</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>df</source>
+        <translation>FG</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rejected</source>
+        <translation>Abgelehnt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ljung-Box: serial correlation of the residual in that order (chi-square); F test: the residual against the variable in that form (nested models). Rejected: by Holm&apos;s procedure at the family-wise level</source>
+        <translation>Ljung-Box: serielle Korrelation des Residuums in dieser Reihenfolge (Chi-Quadrat); F-Test: das Residuum gegen die Variable in dieser Form (geschachtelte Modelle). Abgelehnt: nach dem Holm-Verfahren auf dem familienweisen Niveau</translation>
+    </message>
+    <message>
+        <location line="+72"/>
+        <source>Residual check: run the diagnosis (Ctrl+R).</source>
+        <translation>Residuenprüfung: Diagnose starten (Strg+R).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Final residual: run the diagnosis (Ctrl+R)</source>
+        <translation>Endgültiges Residuum: Diagnose starten (Strg+R)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+1"/>
+        <source>This diagnosis has no residual check.</source>
+        <translation>Diese Diagnose hat keine Residuenprüfung.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>What the residual still depends on: nothing found.</source>
+        <translation>Wovon das Residuum noch abhängt: nichts gefunden.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Outliers: none (robust z threshold %1).</source>
+        <translation>Ausreißer: keine (Schwelle des robusten z %1).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Outliers: none.</source>
+        <translation>Ausreißer: keine.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Outliers excluded from the fit (robust z above %1):</source>
+        <translation>Von der Anpassung ausgeschlossene Ausreißer (robustes z über %1):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Residual (%1)</source>
+        <translation>Residuum (%1)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+19"/>
+        <source>Tests of the final residual (%n test(s), %1 observations; rejected by Holm at the %2 % family-wise level):</source>
+        <translation>
+            <numerusform>Tests des endgültigen Residuums (%n Test, %1 Beobachtungen; abgelehnt nach Holm auf dem familienweisen Niveau von %2 %):</numerusform>
+            <numerusform>Tests des endgültigen Residuums (%n Tests, %1 Beobachtungen; abgelehnt nach Holm auf dem familienweisen Niveau von %2 %):</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Rejected at %1 %</source>
+        <translation>Abgelehnt bei %1 %</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>The final residual is white: nothing left to plot</source>
+        <translation>Das endgültige Residuum ist weiß: nichts mehr darzustellen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No single variable explains the structure left</source>
+        <translation>Keine einzelne Variable erklärt die verbleibende Struktur</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>generic fit (%1)</source>
+        <translation>generische Anpassung (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>generic fit (%1), %2</source>
+        <translation>generische Anpassung (%1), %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+48"/>
+        <source>(index of %n level(s))</source>
+        <translation>
+            <numerusform>(Index von %n Stufe)</numerusform>
+            <numerusform>(Index von %n Stufen)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -6052,6 +6688,187 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>linear</source>
+        <translation>linear</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>smooth</source>
+        <translation>glatt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+93"/>
+        <source>step</source>
+        <translation>Sprung</translation>
+    </message>
+    <message>
+        <location line="-92"/>
+        <source>periodic</source>
+        <translation>periodisch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per level</source>
+        <translation>je Stufe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>spike</source>
+        <translation>Spitze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>too few observations (%1) to test the residual</source>
+        <translation>zu wenige Beobachtungen (%1), um das Residuum zu testen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>white: no test finds structure at the %1 % family-wise level (%2 tests)</source>
+        <translation>weiß: kein Test findet Struktur auf dem familienweisen Niveau von %1 % (%2 Tests)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not white: still depends on </source>
+        <translation>nicht weiß: hängt noch ab von </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2, %3 % of the residual variance)</source>
+        <translation>%1 (%2, %3 % der Residuenvarianz)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> and %1 more</source>
+        <translation> und %1 weitere</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not white: serially correlated in %1 order (Ljung-Box p = %2)</source>
+        <translation>nicht weiß: seriell korreliert in der Reihenfolge %1 (Ljung-Box p = %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 in %2, rms %3%4, range %5%4</source>
+        <translation>%1 in %2, rms %3%4, Spannweite %5%4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, step %1%2 at %3</source>
+        <translation>, Sprung %1%2 bei %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, strongest harmonic %1 (amplitude %2%3)</source>
+        <translation>, stärkste Harmonische %1 (Amplitude %2%3)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 gross errors excluded before the fit (robust z above the outlier threshold):</source>
+        <translation>%1 grobe Fehler vor der Anpassung ausgeschlossen (robustes z über der Ausreißerschwelle):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (%2 um)</source>
+        <translation> Zeile %1 (%2 µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (part %2, %3, %4 mm)</source>
+        <translation> Zeile %1 (Werkstück %2, %3, %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> point %1 (row %2, %3 mm)</source>
+        <translation> Punkt %1 (Zeile %2, %3 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not identifiable: %1</source>
+        <translation>nicht identifizierbar: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rejected: does not explain what it was chosen for; without it the generic effects explain the data as well (BIC %1 without, %2 with, needed %3 lower)</source>
+        <translation>abgelehnt: erklärt nicht, wofür er gewählt wurde; ohne ihn erklären die generischen Effekte die Daten ebenso gut (BIC %1 ohne, %2 mit, nötig %3 niedriger)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>samples since an axis reversed (signed, log scale)</source>
+        <translation>Abtastwerte seit einer Achsumkehr (mit Vorzeichen, logarithmisch)</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>data row</source>
+        <translation>Datenzeile</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dimension</source>
+        <translation>Maß</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>loop direction</source>
+        <translation>Umlaufrichtung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>part number (%1)</source>
+        <translation>Werkstücknummer (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position along surface %1 (mm)</source>
+        <translation>Lage entlang der Fläche %1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal x</source>
+        <translation>Normale x</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal y</source>
+        <translation>Normale y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal z</source>
+        <translation>Normale z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>z (mm)</source>
+        <translation>z (mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
@@ -6171,11 +6988,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+16"/>
         <source>amplitude</source>
         <translation>Amplitude</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-15"/>
         <source>phase</source>
         <translation>Phase</translation>
     </message>
@@ -6203,6 +7021,31 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+1"/>
         <source>angle</source>
         <translation>Winkel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>form</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rms</source>
+        <translation>rms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>range</source>
+        <translation>Spannweite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at</source>
+        <translation>bei</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>harmonic</source>
+        <translation>Harmonische</translation>
     </message>
 </context>
 </TS>

@@ -348,7 +348,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
 <context>
     <name>metrofit::DiagnosisPage</name>
     <message>
-        <location filename="../app/gui/diagnosispage.cpp" line="+53"/>
+        <location filename="../app/gui/diagnosispage.cpp" line="+56"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -368,22 +368,27 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+517"/>
+        <location line="+420"/>
+        <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
+        <translation>%1: efektu ogólnego (tego, czego nie wyjaśnia żaden efekt z katalogu) nie można jeszcze dodać do modelu badania (%2); jest pokazany tutaj i w sprawdzeniu residuów, nie zastosowany</translation>
+    </message>
+    <message>
+        <location line="+161"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-456"/>
+        <location line="-516"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
     <message>
-        <location line="-43"/>
+        <location line="-47"/>
         <source>mm/part</source>
         <translation>mm/przedmiot</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+48"/>
         <source>Cancel</source>
         <translation>Anuluj</translation>
     </message>
@@ -393,7 +398,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Zastosuj do &amp;modelu</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>The study whose declared model is diagnosed</source>
         <translation>Studium, którego zadeklarowany model jest diagnozowany</translation>
     </message>
@@ -409,11 +414,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+5"/>
+        <location line="+308"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-294"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Zadeklarowany model dopasowany przed dodaniem jakiegokolwiek efektu</translation>
     </message>
@@ -473,18 +479,40 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>&amp;Kopiuj</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
+        <source>&amp;Effects</source>
+        <translation>&amp;Efekty</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+161"/>
+        <location line="+130"/>
+        <source>Residual chec&amp;k</source>
+        <translation>Sprawdzenie re&amp;siduów</translation>
+    </message>
+    <message>
+        <location line="-290"/>
+        <source>The candidate effects tried, their residual plots and the error before / after</source>
+        <translation>Wypróbowane efekty kandydujące, ich wykresy residuów i błąd przed / po</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>What the final residual still depends on: tests, structure, outliers and the residual against the variable of the strongest structure</source>
+        <translation>Od czego końcowe residuum jeszcze zależy: testy, struktura, wartości odstające i residuum względem zmiennej najsilniejszej struktury</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>&amp;Domain:</source>
         <translation>&amp;Dziedzina:</translation>
     </message>
     <message>
         <location line="+34"/>
-        <location line="+134"/>
+        <location line="+143"/>
         <source>The diagnosis failed: %1</source>
         <translation>Diagnoza nie powiodła się: %1</translation>
     </message>
     <message>
-        <location line="-69"/>
+        <location line="-78"/>
         <source>No usable %1 data for the diagnosis:
 %2
 
@@ -530,7 +558,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+42"/>
         <source>Diagnosing …</source>
         <translation>Diagnozowanie …</translation>
     </message>
@@ -540,7 +568,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Diagnozowanie … krok %1, bieżący rmse %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+44"/>
+        <source>Nothing to apply. %1.</source>
+        <translation>Nie ma czego zastosować. %1.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Applies %1 only. %2.</source>
+        <translation>Stosuje tylko %1. %2.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -570,7 +608,22 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Anulowano: dotychczasowe rundy.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
+        <source>Residual check: %1.</source>
+        <translation>Sprawdzenie residuów: %1.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Residual chec&amp;k: white</source>
+        <translation>Sprawdzenie re&amp;siduów: białe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Residual chec&amp;k: structure left</source>
+        <translation>Sprawdzenie re&amp;siduów: pozostała struktura</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source> (accepted)</source>
         <translation> (przyjęty)</translation>
     </message>
@@ -580,7 +633,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Residua przed i po %1</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+21"/>
+        <source>form: %1</source>
+        <translation>postać: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A generic effect: %1 in %2, for structure no catalogue effect explains</source>
+        <translation>Efekt ogólny: %1 względem %2, dla struktury, której nie wyjaśnia żaden efekt z katalogu</translation>
+    </message>
+    <message>
+        <location line="+55"/>
         <source>(Already applied.)</source>
         <translation>(Już zastosowano.)</translation>
     </message>
@@ -2028,7 +2091,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/pointview/pointsetview.cpp" line="+320"/>
+        <location filename="../widgets/pointview/pointsetview.cpp" line="+323"/>
         <source>deviation
 (mm)</source>
         <translation>odchyłka
@@ -2161,7 +2224,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::Report</name>
     <message>
-        <location filename="../widgets/report/diagnosissection.cpp" line="+36"/>
+        <location filename="../widgets/report/diagnosissection.cpp" line="+41"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+521"/>
         <source>Thermal</source>
         <translation>Termika</translation>
@@ -2182,7 +2245,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dopasowanie położenia</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+28"/>
+        <source>form %1</source>
+        <translation>postać %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>rmse %1 %2, max |e| %3 %2</source>
         <translation>rmse %1 %2, maks. |e| %3 %2</translation>
     </message>
@@ -2290,7 +2358,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Residua przed i po %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+216"/>
         <source>error (%1)</source>
         <translation>błąd (%1)</translation>
@@ -2321,7 +2389,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>rmse (wiersze testowe)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+21"/>
+        <source>Final residual against %1</source>
+        <translation>Końcowe residuum względem %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Final residual against %1 with the generic fit (%2)</source>
+        <translation>Końcowe residuum względem %1 z dopasowaniem ogólnym (%2)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Closed loop: diagnosis</source>
         <translation>Pętla zamknięta: diagnoza</translation>
     </message>
@@ -3692,6 +3770,569 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+5"/>
         <source>metrofit-cli failed with exit code %1.</source>
         <translation>metrofit-cli zakończył się błędem (kod wyjścia %1).</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ResidualCheck</name>
+    <message>
+        <location filename="../widgets/diagnose/residualchecktext.cpp" line="+34"/>
+        <source>Ljung-Box</source>
+        <translation>Ljung-Box</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>F test</source>
+        <translation>test F</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>time</source>
+        <translation>czas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>file row</source>
+        <translation>wiersz pliku</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>path angle</source>
+        <translation>kąt na torze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>loop direction</source>
+        <translation>kierunek obiegu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>samples since reversal</source>
+        <translation>próbki od nawrotu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>along the normal</source>
+        <translation>wzdłuż normalnej</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part</source>
+        <translation>przedmiot</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dimension</source>
+        <translation>wymiar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface</source>
+        <translation>powierzchnia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>normal %1</source>
+        <translation>normalna %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface %1</source>
+        <translation>powierzchnia %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+107"/>
+        <source>dimension %1</source>
+        <translation>wymiar %1</translation>
+    </message>
+    <message>
+        <location line="-100"/>
+        <source>time</source>
+        <comment>in a sentence</comment>
+        <translation>czasu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the order of the rows in the file</source>
+        <translation>kolejności wierszy w pliku</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the path angle</source>
+        <translation>kąta na torze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the direction of the loop (counter-clockwise or clockwise)</source>
+        <translation>kierunku obiegu (przeciwnie do ruchu wskazówek zegara lub zgodnie z nim)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the number of samples since an axis reversed</source>
+        <translation>liczby próbek od nawrotu osi</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the nominal %1 coordinate</source>
+        <translation>nominalnej współrzędnej %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the position along the nominal normal</source>
+        <translation>położenia wzdłuż nominalnej normalnej</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the part</source>
+        <translation>przedmiotu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the dimension</source>
+        <translation>wymiaru</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the surface</source>
+        <translation>powierzchni</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the %1 component of the nominal normal</source>
+        <translation>składowej %1 nominalnej normalnej</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the position on surface %1</source>
+        <translation>położenia na powierzchni %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dimension %1</source>
+        <comment>in a sentence</comment>
+        <translation>wymiaru %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>column %1</source>
+        <translation>kolumny %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>linear</source>
+        <translation>liniowa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>smooth</source>
+        <translation>gładka</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>step</source>
+        <translation>skok</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>periodic</source>
+        <translation>okresowa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per level</source>
+        <translation>na poziom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>spike</source>
+        <translation>impuls</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>a linear trend</source>
+        <translation>trend liniowy</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a smooth curve</source>
+        <translation>gładka krzywa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a step</source>
+        <translation>skok</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a step at %1</source>
+        <translation>skok przy %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a periodic pattern</source>
+        <translation>wzór okresowy</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a different level per group</source>
+        <translation>inny poziom w każdej grupie</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>%1 (%2, %3 % of the residual variance)</source>
+        <translation>%1 (%2, %3 % wariancji residuum)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>white: no test finds structure</source>
+        <translation>białe: żaden test nie znajduje struktury</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>not white: still depends on %1</source>
+        <translation>nie białe: wciąż zależy od zmiennych: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not white: the tests find structure that no single variable explains</source>
+        <translation>nie białe: testy znajdują strukturę, której nie wyjaśnia żadna pojedyncza zmienna</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>row %1</source>
+        <translation>wiersz %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part %1</source>
+        <translation>przedmiot %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>point %1</source>
+        <translation>punkt %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>observation %1</source>
+        <translation>obserwacja %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+16"/>
+        <source>What is left unexplained: nothing that the tests can find. None of the %n test(s) of the final residual (against every variable the data offer, and of its serial correlation) finds a dependence at the %1 % family-wise level: the residual looks like noise.</source>
+        <translation>
+            <numerusform>Co pozostaje niewyjaśnione: nic, co testy potrafią znaleźć. %n test końcowego residuum (względem każdej zmiennej danych i na korelację szeregową) nie znajduje zależności na poziomie %1 % dla całej rodziny testów: residuum wygląda jak szum.</numerusform>
+            <numerusform>Co pozostaje niewyjaśnione: nic, co testy potrafią znaleźć. Żaden z %n testów końcowego residuum (względem każdej zmiennej danych i na korelację szeregową) nie znajduje zależności na poziomie %1 % dla całej rodziny testów: residuum wygląda jak szum.</numerusform>
+            <numerusform>Co pozostaje niewyjaśnione: nic, co testy potrafią znaleźć. Żaden z %n testów końcowego residuum (względem każdej zmiennej danych i na korelację szeregową) nie znajduje zależności na poziomie %1 % dla całej rodziny testów: residuum wygląda jak szum.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 (%2, %3 % of the residual variance, p = %4)</source>
+        <translation>%1 (%2, %3 % wariancji residuum, p = %4)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 and %2</source>
+        <translation>%1 oraz %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>What is left unexplained: the final residual still depends on %1. No effect of the catalogue explains this (tests at the %2 % family-wise level).</source>
+        <translation>Co pozostaje niewyjaśnione: końcowe residuum wciąż zależy od %1. Żaden efekt z katalogu tego nie wyjaśnia (testy na poziomie %2 % dla całej rodziny testów).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>What is left unexplained: the final residual is serially correlated in the order of %1 (Ljung-Box test, p = %2), but no single variable of the data explains it.</source>
+        <translation>Co pozostaje niewyjaśnione: końcowe residuum jest skorelowane szeregowo w kolejności %1 (test Ljung-Boxa, p = %2), ale żadna pojedyncza zmienna danych tego nie wyjaśnia.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>What is left unexplained: the tests find structure in the final residual at the %1 % family-wise level that no single variable explains.</source>
+        <translation>Co pozostaje niewyjaśnione: testy znajdują w końcowym residuum, na poziomie %1 % dla całej rodziny testów, strukturę, której nie wyjaśnia żadna pojedyncza zmienna.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 in %2</source>
+        <translation>%1 względem %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No effect of the catalogue explains part of this structure, so the model was given a generic term for it instead of a wrong name: %1.</source>
+        <translation>Żaden efekt z katalogu nie wyjaśnia części tej struktury, więc model otrzymał dla niej człon ogólny zamiast błędnej nazwy: %1.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No measurement was excluded as a gross error (robust z above %1).</source>
+        <translation>Żaden pomiar nie został wykluczony jako błąd gruby (odporne z powyżej %1).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No measurement was excluded as a gross error.</source>
+        <translation>Żaden pomiar nie został wykluczony jako błąd gruby.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (residual %2 %3, robust z %4)</source>
+        <translation>%1 (residuum %2 %3, odporne z %4)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="-84"/>
+        <location line="+89"/>
+        <source> and %n more</source>
+        <translation>
+            <numerusform> i %n kolejny</numerusform>
+            <numerusform> i %n kolejne</numerusform>
+            <numerusform> i %n kolejnych</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n measurement(s) excluded from the fit as gross errors (robust z above %1): %2.</source>
+        <translation>
+            <numerusform>%n pomiar wykluczony z dopasowania jako błąd gruby (odporne z powyżej %1): %2.</numerusform>
+            <numerusform>%n pomiary wykluczone z dopasowania jako błędy grube (odporne z powyżej %1): %2.</numerusform>
+            <numerusform>%n pomiarów wykluczonych z dopasowania jako błędy grube (odporne z powyżej %1): %2.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ResidualCheckView</name>
+    <message>
+        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+116"/>
+        <source>Final residual against %1</source>
+        <translation>Końcowe residuum względem %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Final residual against %1 with the generic fit (%2)</source>
+        <translation>Końcowe residuum względem %1 z dopasowaniem ogólnym (%2)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+183"/>
+        <location line="+275"/>
+        <source>residual</source>
+        <translation>residuum</translation>
+    </message>
+    <message>
+        <location line="-458"/>
+        <source>residual (%1)</source>
+        <translation>residuum (%1)</translation>
+    </message>
+    <message>
+        <location line="+186"/>
+        <source>generic fit</source>
+        <translation>dopasowanie ogólne</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>generic fit, %1</source>
+        <translation>dopasowanie ogólne, %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+282"/>
+        <source>excluded outliers</source>
+        <translation>wykluczone wartości odstające</translation>
+    </message>
+    <message>
+        <location line="-241"/>
+        <location line="+137"/>
+        <source>What the residual still depends on (strongest first):</source>
+        <translation>Od czego residuum wciąż zależy (najsilniejsze najpierw):</translation>
+    </message>
+    <message>
+        <location line="-136"/>
+        <source>Outliers excluded from the fit:</source>
+        <translation>Wartości odstające wykluczone z dopasowania:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tests of the final residual:</source>
+        <translation>Testy końcowego residuum:</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>The final residual (after every accepted effect, outliers excluded) is white when no test finds structure at the family-wise level (Holm&apos;s procedure over all tests)</source>
+        <translation>Końcowe residuum (po wszystkich przyjętych efektach, bez wartości odstających) jest białe, gdy żaden test nie znajduje struktury na poziomie dla całej rodziny testów (procedura Holma dla wszystkich testów)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Variable</source>
+        <translation>Zmienna</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+8"/>
+        <source>Form</source>
+        <translation>Postać</translation>
+    </message>
+    <message>
+        <location line="-8"/>
+        <source>Share (%)</source>
+        <translation>Udział (%)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+8"/>
+        <source>p-value</source>
+        <translation>wartość p</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>Per variable with a rejected test its strongest form; share = part of the residual variance the form explains</source>
+        <translation>Dla każdej zmiennej z odrzuconym testem jej najsilniejsza postać; udział = część wariancji residuum wyjaśniona przez tę postać</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Row</source>
+        <translation>Wiersz</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Part</source>
+        <translation>Przedmiot</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Dimension</source>
+        <translation>Wymiar</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Id</source>
+        <translation>Identyfikator</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+135"/>
+        <source>Residual</source>
+        <translation>Residuum</translation>
+    </message>
+    <message>
+        <location line="-135"/>
+        <source>Robust z</source>
+        <translation>Odporne z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Observations whose robust z (|r - median| / (1.4826 MAD)) is above the threshold: gross errors, excluded and the model refitted without them</source>
+        <translation>Obserwacje, których odporne z (|r - mediana| / (1,4826 MAD)) przekracza próg: błędy grube, wykluczone, a model dopasowany ponownie bez nich</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Test</source>
+        <translation>Test</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Order / variable</source>
+        <translation>Kolejność / zmienna</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Statistic</source>
+        <translation>Statystyka</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>df</source>
+        <translation>st. sw.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rejected</source>
+        <translation>Odrzucony</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ljung-Box: serial correlation of the residual in that order (chi-square); F test: the residual against the variable in that form (nested models). Rejected: by Holm&apos;s procedure at the family-wise level</source>
+        <translation>Ljung-Box: korelacja szeregowa residuum w tej kolejności (chi-kwadrat); test F: residuum względem zmiennej w tej postaci (modele zagnieżdżone). Odrzucony: procedurą Holma na poziomie dla całej rodziny testów</translation>
+    </message>
+    <message>
+        <location line="+72"/>
+        <source>Residual check: run the diagnosis (Ctrl+R).</source>
+        <translation>Sprawdzenie residuów: uruchom diagnozę (Ctrl+R).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Final residual: run the diagnosis (Ctrl+R)</source>
+        <translation>Końcowe residuum: uruchom diagnozę (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+1"/>
+        <source>This diagnosis has no residual check.</source>
+        <translation>Ta diagnoza nie ma sprawdzenia residuów.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>What the residual still depends on: nothing found.</source>
+        <translation>Od czego residuum wciąż zależy: nic nie znaleziono.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Outliers: none (robust z threshold %1).</source>
+        <translation>Wartości odstające: brak (próg odpornego z %1).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Outliers: none.</source>
+        <translation>Wartości odstające: brak.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Outliers excluded from the fit (robust z above %1):</source>
+        <translation>Wartości odstające wykluczone z dopasowania (odporne z powyżej %1):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Residual (%1)</source>
+        <translation>Residuum (%1)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+19"/>
+        <source>Tests of the final residual (%n test(s), %1 observations; rejected by Holm at the %2 % family-wise level):</source>
+        <translation>
+            <numerusform>Testy końcowego residuum (%n test, obserwacji: %1; odrzucone procedurą Holma na poziomie %2 % dla całej rodziny):</numerusform>
+            <numerusform>Testy końcowego residuum (%n testy, obserwacji: %1; odrzucone procedurą Holma na poziomie %2 % dla całej rodziny):</numerusform>
+            <numerusform>Testy końcowego residuum (%n testów, obserwacji: %1; odrzucone procedurą Holma na poziomie %2 % dla całej rodziny):</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Rejected at %1 %</source>
+        <translation>Odrzucony przy %1 %</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>The final residual is white: nothing left to plot</source>
+        <translation>Końcowe residuum jest białe: nic do pokazania</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No single variable explains the structure left</source>
+        <translation>Żadna pojedyncza zmienna nie wyjaśnia pozostałej struktury</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>generic fit (%1)</source>
+        <translation>dopasowanie ogólne (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>generic fit (%1), %2</source>
+        <translation>dopasowanie ogólne (%1), %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+48"/>
+        <source>(index of %n level(s))</source>
+        <translation>
+            <numerusform>(indeks %n poziomu)</numerusform>
+            <numerusform>(indeks %n poziomów)</numerusform>
+            <numerusform>(indeks %n poziomów)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -6065,6 +6706,187 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>linear</source>
+        <translation>liniowa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>smooth</source>
+        <translation>gładka</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+93"/>
+        <source>step</source>
+        <translation>skok</translation>
+    </message>
+    <message>
+        <location line="-92"/>
+        <source>periodic</source>
+        <translation>okresowa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per level</source>
+        <translation>na poziom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>spike</source>
+        <translation>impuls</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>too few observations (%1) to test the residual</source>
+        <translation>za mało obserwacji (%1), by zbadać residuum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>white: no test finds structure at the %1 % family-wise level (%2 tests)</source>
+        <translation>białe: żaden test nie znajduje struktury na poziomie %1 % dla całej rodziny (testów: %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not white: still depends on </source>
+        <translation>nie białe: wciąż zależy od zmiennych: </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2, %3 % of the residual variance)</source>
+        <translation>%1 (%2, %3 % wariancji residuum)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> and %1 more</source>
+        <translation> i kolejne (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not white: serially correlated in %1 order (Ljung-Box p = %2)</source>
+        <translation>nie białe: skorelowane szeregowo w kolejności %1 (Ljung-Box p = %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 in %2, rms %3%4, range %5%4</source>
+        <translation>%1 względem %2, rms %3%4, rozstęp %5%4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, step %1%2 at %3</source>
+        <translation>, skok %1%2 przy %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, strongest harmonic %1 (amplitude %2%3)</source>
+        <translation>, najsilniejsza harmoniczna %1 (amplituda %2%3)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 gross errors excluded before the fit (robust z above the outlier threshold):</source>
+        <translation>Błędy grube wykluczone przed dopasowaniem (%1; odporne z powyżej progu wartości odstających):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (%2 um)</source>
+        <translation> wiersz %1 (%2 µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (part %2, %3, %4 mm)</source>
+        <translation> wiersz %1 (przedmiot %2, %3, %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> point %1 (row %2, %3 mm)</source>
+        <translation> punkt %1 (wiersz %2, %3 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not identifiable: %1</source>
+        <translation>nieidentyfikowalny: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rejected: does not explain what it was chosen for; without it the generic effects explain the data as well (BIC %1 without, %2 with, needed %3 lower)</source>
+        <translation>odrzucony: nie wyjaśnia tego, do czego został wybrany; bez niego efekty ogólne wyjaśniają dane równie dobrze (BIC %1 bez, %2 z nim, potrzebne o %3 niżej)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>samples since an axis reversed (signed, log scale)</source>
+        <translation>próbki od nawrotu osi (ze znakiem, skala logarytmiczna)</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>data row</source>
+        <translation>wiersz danych</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dimension</source>
+        <translation>wymiar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>loop direction</source>
+        <translation>kierunek obiegu</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>part number (%1)</source>
+        <translation>numer przedmiotu (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position along surface %1 (mm)</source>
+        <translation>położenie wzdłuż powierzchni %1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal x</source>
+        <translation>normalna x</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal y</source>
+        <translation>normalna y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>normal z</source>
+        <translation>normalna z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>z (mm)</source>
+        <translation>z (mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>converged</source>
         <translation>zbieżny</translation>
     </message>
@@ -6184,11 +7006,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+16"/>
         <source>amplitude</source>
         <translation>amplituda</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-15"/>
         <source>phase</source>
         <translation>faza</translation>
     </message>
@@ -6216,6 +7039,31 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+1"/>
         <source>angle</source>
         <translation>kąt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>form</source>
+        <translation>postać</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rms</source>
+        <translation>rms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>range</source>
+        <translation>rozstęp</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at</source>
+        <translation>przy</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>harmonic</source>
+        <translation>harmoniczna</translation>
     </message>
 </context>
 </TS>

@@ -14,6 +14,7 @@
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QStackedWidget>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QUndoCommand>
 #include <QUndoStack>
@@ -26,6 +27,8 @@
 
 #include "app/gui/notesedit.h"
 #include "widgets/diagnose/coretexts.h"
+#include "widgets/diagnose/residualcheckview.h"
+#include "widgets/diagnose/residualchecktext.h"
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
@@ -96,12 +99,16 @@ QString unitOf(const std::string& name) {
 QString parameterText(const diagnose::Candidate& c, const QString& units) {
   QStringList parts;
   for (const diagnose::Parameter& p : c.parameters) {
+    if (c.generic && p.name == "form") continue;  // shown first, translated (fillTable)
     // Display name (translated) and the value in the user's locale (the JSON and the report keep the keys).
     const double* v = std::get_if<double>(&p.value);
     QString s = parameterDisplayName(p.name) + QStringLiteral(" = ") +
                 (v ? num(*v) : QString::fromStdString(std::get<std::string>(p.value)));
     if (p.standardError) s += QStringLiteral(" ± ") + num(*p.standardError, 2);
-    const QString unit = p.name == "per_min" ? units + QStringLiteral("/min") : unitOf(p.name);
+    // A generic effect's sizes are in the data's units (residual_check.h summariseGeneric).
+    const bool dataUnits = c.generic && (p.name == "rms" || p.name == "range" || p.name == "step" ||
+                                         p.name == "amplitude");
+    const QString unit = p.name == "per_min" ? units + QStringLiteral("/min") : dataUnits ? units : unitOf(p.name);
     if (!unit.isEmpty() && std::holds_alternative<double>(p.value)) s += QLatin1Char(' ') + unit;
     parts << s;
   }
@@ -128,6 +135,8 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
       plot_(nullptr),
       bars_(nullptr),
       table_(new QTableWidget(this)),
+      tabs_(new QTabWidget(this)),
+      check_(new ResidualCheckView(this)),
       watcher_(new QFutureWatcher<void>(this)) {
   auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kDiagnosis)), this);
   QFont titleFont = title->font();
@@ -221,7 +230,14 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
   content_->setStretchFactor(0, 3);
   content_->setStretchFactor(1, 2);
   content_->setChildrenCollapsible(false);
-  stack_->addWidget(content_);
+  check_->setObjectName(QStringLiteral("diagnosisResidualCheck"));
+  tabs_->setObjectName(QStringLiteral("diagnosisTabs"));
+  tabs_->addTab(content_, tr("&Effects"));
+  tabs_->addTab(check_, tr("Residual chec&k"));
+  tabs_->setTabToolTip(0, tr("The candidate effects tried, their residual plots and the error before / after"));
+  tabs_->setTabToolTip(1, tr("What the final residual still depends on: tests, structure, outliers and the "
+                             "residual against the variable of the strongest structure"));
+  stack_->addWidget(tabs_);
   stack_->addWidget(message_);
 
   auto* top = new QHBoxLayout;
@@ -363,7 +379,7 @@ void DiagnosisPage::refresh() {
     info += QLatin1Char(' ') + tr("Applied to the model: %1.").arg(names.join(QStringLiteral(", ")));
   }
   info_->setText(info);
-  stack_->setCurrentWidget(content_);
+  stack_->setCurrentWidget(tabs_);
   runButton_->setEnabled(true);
   if (result_ && settingsKey_ == diagnosisSettingsKey(s)) {
     showResult();
@@ -377,8 +393,17 @@ void DiagnosisPage::refresh() {
   plotCombo_->clear();
   plot_->clear();
   bars_->clear();
+  check_->clear();
+  tabs_->setTabText(1, tr("Residual chec&k"));
   table_->setRowCount(0);
-  applyButton_->setEnabled(false);
+  updateApplyButton();
+}
+
+void DiagnosisPage::setResult(diagnose::Diagnosis result) {
+  if (isRunning()) return;
+  result_ = std::move(result);
+  settingsKey_ = settings_ ? diagnosisSettingsKey(*settings_) : std::string();
+  showResult();
 }
 
 bool DiagnosisPage::runNow() {
@@ -436,7 +461,31 @@ void DiagnosisPage::setRunning(bool running) {
   cancelButton_->setEnabled(running);
   progress_->setVisible(running);
   domainCombo_->setEnabled(!running);
-  applyButton_->setEnabled(!running && result_ && !result_->accepted().empty());
+  updateApplyButton();
+}
+
+void DiagnosisPage::updateApplyButton() {
+  const QString normal =
+      tr("Add the accepted effects to the study's model in the project (undoable, Ctrl+Shift+A)");
+  QStringList applicable, left;
+  if (result_) {
+    for (const diagnose::Candidate* c : result_->accepted())
+      (canApplyEffect(*c) ? applicable : left) << QString::fromStdString(c->name);
+  }
+  applyButton_->setEnabled(!isRunning() && !applicable.isEmpty());
+  if (left.isEmpty()) {
+    applyButton_->setToolTip(normal);
+    return;
+  }
+  // A generic effect is a shape fitted to this residual; no study's model can include it yet.
+  const QString why =
+      tr("%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study "
+         "(%2) yet; it is reported here and in the residual check, not applied")
+          .arg(left.join(QStringLiteral(", ")), domainTitle(domain()));
+  applyButton_->setToolTip(applicable.isEmpty()
+                               ? tr("Nothing to apply. %1.").arg(why)
+                               : normal + QLatin1Char('\n') + tr("Applies %1 only. %2.")
+                                                                  .arg(applicable.join(QStringLiteral(", ")), why));
 }
 
 void DiagnosisPage::showResult() {
@@ -470,6 +519,14 @@ void DiagnosisPage::showResult() {
   notes_->setVisible(!notes.isEmpty());
   fillTable();
   bars_->setDiagnosis(d);
+  check_->setDiagnosis(d);
+  if (d.residualCheck) {
+    text += QLatin1Char(' ') + tr("Residual check: %1.").arg(residualCheckVerdict(*d.residualCheck));
+    status_->setText(text);
+  }
+  tabs_->setTabText(1, !d.residualCheck       ? tr("Residual chec&k")
+                       : d.residualCheck->white ? tr("Residual chec&k: white")
+                                                : tr("Residual chec&k: structure left"));
   {
     const QSignalBlocker blocker(plotCombo_);
     plotCombo_->clear();
@@ -481,7 +538,7 @@ void DiagnosisPage::showResult() {
     }
   }
   showPlot(plotCombo_->currentIndex());
-  applyButton_->setEnabled(!accepted.empty() && !isRunning());
+  updateApplyButton();
 }
 
 void DiagnosisPage::showPlot(int comboIndex) {
@@ -514,7 +571,16 @@ void DiagnosisPage::fillTable() {
     const Qt::Alignment right = Qt::AlignRight | Qt::AlignVCenter;
     set(ColRound, QString::number(c.round + 1), right);
     set(ColEffect, QString::fromStdString(c.name));
-    set(ColParameters, parameterText(c, u));
+    QString parameters = parameterText(c, u);
+    if (c.generic) {
+      // A generic effect: its form first ("form: smooth"), then whatever parameters core gave it.
+      const QString form = tr("form: %1").arg(dependenceFormName(c.generic->form));
+      parameters = parameters.isEmpty() ? form : form + QStringLiteral("; ") + parameters;
+      table_->item(r, ColEffect)
+          ->setToolTip(tr("A generic effect: %1 in %2, for structure no catalogue effect explains")
+                           .arg(dependenceFormName(c.generic->form), residualVariableName(c.generic->against)));
+    }
+    set(ColParameters, parameters);
     set(ColRmse, QStringLiteral("%1 → %2 %3").arg(num(c.rmseBefore), num(c.rmseAfter), u), right);
     set(ColHeldout,
         c.heldoutBefore && c.heldoutAfter
@@ -560,6 +626,7 @@ void DiagnosisPage::copySelection() {
 bool DiagnosisPage::applyAccepted() {
   if (!result_ || result_->accepted().empty() || isRunning()) return false;
   nlohmann::json applied = appliedEffects(*result_);
+  if (applied.empty()) return false;  // only generic effects: none the study can include
   const std::string key = diagnosisDomainKey(domain());
   const auto& studies = document_->project().studies;
   if (const auto s = studies.find(study::kDiagnosis); s != studies.end() && s->is_object()) {
@@ -584,12 +651,30 @@ void DiagnosisPage::showView(const QString& view) {
   for (DiagnosisDomain d : kDiagnosisDomains) {
     if (view == QLatin1String(diagnosisDomainKey(d))) order = {d};
   }
-  if (result_ && std::find(order.begin(), order.end(), domain()) != order.end()) return;
+  const bool residual = view == QLatin1String("residual");
+  tabs_->setCurrentIndex(residual ? 1 : 0);
+  // "residual": the first domain whose result has a residual check (a loop without one shows only
+  // "no residual check"), else the first that runs.
+  const auto good = [&] { return result_ && (!residual || result_->residualCheck.has_value()); };
+  if (good() && std::find(order.begin(), order.end(), domain()) != order.end()) return;
+  std::optional<DiagnosisDomain> ran;
   for (DiagnosisDomain d : order) {
     setDomain(d);
-    if (settings_ && runNow()) return;
+    if (settings_ && runNow()) {
+      if (!ran) ran = d;
+      if (good()) {
+        tabs_->setCurrentIndex(residual ? 1 : 0);
+        return;
+      }
+    }
   }
-  if (!order.empty()) setDomain(order.front());
+  if (ran) {
+    setDomain(*ran);
+    runNow();
+    tabs_->setCurrentIndex(residual ? 1 : 0);
+  } else if (!order.empty()) {
+    setDomain(order.front());
+  }
 }
 
 }  // namespace metrofit

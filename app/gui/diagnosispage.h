@@ -4,8 +4,13 @@
 // (widgets/diagnose/diagnosisstudy.h), Run (Ctrl+R) in a worker thread with progress and Cancel,
 // then the residual plot of each accepted effect, the candidate table (effect, parameters ±
 // standard error, rmse before -> after, evidence, accepted; Ctrl+C copies) and the before / after
-// error bars. Apply (Ctrl+Shift+A) writes the accepted effects to studies.diagnosis.<domain>.applied
-// as one undoable edit of the project document.
+// error bars. A second tab, "Residual check" (widgets/diagnose/residualcheckview.h), shows what the
+// final residual still depends on: the verdict, the structure, the outliers, every test and the
+// residual against the variable of the strongest structure with the generic fit. Generic effects
+// (`unexplained:<against>`) are listed with the named ones, their form in the parameters column.
+// Apply (Ctrl+Shift+A) writes the accepted effects its study can include (canApplyEffect: not yet
+// the generic ones; the button's tooltip says which are left out and why) to
+// studies.diagnosis.<domain>.applied as one undoable edit of the project document.
 #include <QFutureWatcher>
 #include <QWidget>
 #include <atomic>
@@ -21,11 +26,13 @@ class QProgressBar;
 class QPushButton;
 class QSplitter;
 class QStackedWidget;
+class QTabWidget;
 class QTableWidget;
 
 namespace metrofit {
 class ErrorBarsView;
 class ProjectDocument;
+class ResidualCheckView;
 class ResidualPlotView;
 
 class DiagnosisPage : public QWidget {
@@ -48,7 +55,13 @@ class DiagnosisPage : public QWidget {
   ResidualPlotView* residualPlot() const { return plot_; }
   ErrorBarsView* errorBars() const { return bars_; }
   QPushButton* applyButton() const { return applyButton_; }
+  ResidualCheckView* residualCheckView() const { return check_; }
+  /// The result tabs: 0 the effects (plots and candidate table), 1 the residual check.
+  QTabWidget* resultTabs() const { return tabs_; }
 
+  /// Shows a result computed elsewhere as if the current settings had produced it (tests with a
+  /// hand-built diagnosis); it is dropped like a computed one when the settings change.
+  void setResult(diagnose::Diagnosis result);
   /// Runs the loop synchronously (tests, screenshots); false with message()/statusText() on error.
   bool runNow();
   /// Runs it in a worker thread (the Run button); finished() when done.
@@ -58,7 +71,8 @@ class DiagnosisPage : public QWidget {
   bool applyAccepted();
 
   /// "diagnosis" (or a domain name): runs the first configured domain whose data load, in the order
-  /// thermal, setup, matching, kinematic (or the named one), and shows its result.
+  /// thermal, setup, matching, kinematic (or the named one), and shows its result; "residual" shows
+  /// the residual check tab of the first of them whose result has a residual check.
   Q_INVOKABLE void showView(const QString& view);
 
  signals:
@@ -72,6 +86,7 @@ class DiagnosisPage : public QWidget {
   void setRunning(bool running);
   void copySelection();
   void showMessage(const QString& text);
+  void updateApplyButton();
 
   ProjectDocument* document_;
   QComboBox* domainCombo_;
@@ -89,6 +104,8 @@ class DiagnosisPage : public QWidget {
   ResidualPlotView* plot_;
   ErrorBarsView* bars_;
   QTableWidget* table_;
+  QTabWidget* tabs_;
+  ResidualCheckView* check_;
 
   std::optional<DiagnosisSettings> settings_;
   std::string settingsKey_;  ///< the settings the shown result was computed with

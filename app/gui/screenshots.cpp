@@ -116,6 +116,7 @@ int runScreenshots(const QString& outDir, QTextStream& err) {
       {QStringLiteral("thermal-hysteresis"), pageView(Page::Thermal, QStringLiteral("hysteresis"))},
       {QStringLiteral("thermal-models"), pageView(Page::Thermal, QStringLiteral("models"))},
       {QStringLiteral("diagnosis"), pageView(Page::Diagnosis, QStringLiteral("diagnosis"))},
+      {QStringLiteral("diagnosis-residual"), pageView(Page::Diagnosis, QStringLiteral("residual"))},
   };
   // Every further thermal log of the project (the demo has a real one besides the simulated one).
   const ThermalPage* thermal = window.thermalPage();

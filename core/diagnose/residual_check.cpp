@@ -557,6 +557,7 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
       p.fit.push_back(fit(i));
     }
     p.categories = v.levels;
+    p.components = C;
     const std::size_t vi = static_cast<std::size_t>(vit - in.variables.begin());
     if (vi < in.excludedValues.size())
       for (std::size_t k = 0; k < in.excludedResidual.size() && k < in.excludedValues[vi].size(); ++k) {

@@ -177,6 +177,9 @@ struct ResidualCheck {
     std::vector<double> x, residual, fit;
     std::vector<std::string> categories;
     std::vector<double> outlierX, outlierResidual;  ///< the excluded outliers, at their x
+    /// Vector residuals (ResidualCheckInput::components): observation i is coordinate i % components,
+    /// and the fit is one curve per coordinate.
+    int components = 1;
   };
   std::optional<Plot> plot;
 };

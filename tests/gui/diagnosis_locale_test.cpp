@@ -26,6 +26,7 @@
 #include "qtapp.h"
 #include "widgets/diagnose/coretexts.h"
 #include "widgets/diagnose/diagnosisstudy.h"
+#include "widgets/diagnose/residualcheckview.h"
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
@@ -95,6 +96,10 @@ void collect(const diagnose::Diagnosis& d, std::set<std::string>& formats, std::
       collectFormats(c.plot->yLabelParts, out);
     }
     for (const diagnose::Parameter& p : c.parameters) keys.insert(p.name);
+  }
+  if (d.residualCheck) {  // the residual check's verdict and its plot's axis title
+    collectFormats(d.residualCheck->summaryParts, out);
+    if (d.residualCheck->plot) collectFormats(d.residualCheck->plot->xLabel, out);
   }
   formats.insert(out.begin(), out.end());
 }
@@ -223,6 +228,15 @@ TEST_F(DiagnosisLocaleTest, PolishPageHasNoDotDecimalsInAnyDomain) {
       }
     }
     EXPECT_FALSE(dotDecimal.match(page.notesText()).hasMatch()) << page.notesText().toStdString();
+    // The residual check: verdict and tables in Polish numbers.
+    const ResidualCheckView* check = page.residualCheckView();
+    EXPECT_FALSE(dotDecimal.match(check->verdictText()).hasMatch()) << check->verdictText().toStdString();
+    for (const QTableWidget* table : {check->testTable(), check->structureTable(), check->outlierTable()})
+      for (int r = 0; r < table->rowCount(); ++r)
+        for (int c = 0; c < table->columnCount(); ++c)
+          if (table->item(r, c)->data(Qt::UserRole).typeId() == QMetaType::Double)  // the numbers (names may have dots)
+            EXPECT_FALSE(dotDecimal.match(table->item(r, c)->text()).hasMatch())
+              << diagnosisDomainKey(d) << ": " << table->item(r, c)->text().toStdString();
     const auto* info = page.findChild<QLabel*>(QStringLiteral("diagnosisInfo"));
     ASSERT_NE(info, nullptr);
     EXPECT_FALSE(dotDecimal.match(info->text()).hasMatch()) << info->text().toStdString();  // tolerance 0,035

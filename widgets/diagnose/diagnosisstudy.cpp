@@ -166,9 +166,14 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer)
   return {};
 }
 
+bool canApplyEffect(const diagnose::Candidate& c) {
+  return !c.generic.has_value();
+}
+
 nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis) {
   nlohmann::json out = nlohmann::json::array();
   for (const diagnose::Candidate* c : diagnosis.accepted()) {
+    if (!canApplyEffect(*c)) continue;
     nlohmann::json params = nlohmann::json::object();
     for (const diagnose::Parameter& p : c->parameters) {
       if (const double* v = std::get_if<double>(&p.value))

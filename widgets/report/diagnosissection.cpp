@@ -1,11 +1,14 @@
 // Report section "Closed loop: diagnosis" (issue 8): for every domain the project's diagnosis study
 // configures (widgets/diagnose/diagnosisstudy.h), the loop step by step: the declared model's error,
 // each candidate effect with its parameters, evidence and decision, the final error; the residual
-// plot before / after of each accepted effect (painted like the GUI's, widgets/diagnose/residualplot.h)
-// and a before / after table.
+// plot before / after of each accepted effect (painted like the GUI's, widgets/diagnose/residualplot.h),
+// what is left unexplained (the residual check: verdict, structure with shares, generic effects,
+// outliers excluded, in reader's words, widgets/diagnose/residualchecktext.h) with the final residual
+// against the variable of the strongest structure, and a before / after table.
 #include <QCoreApplication>
 #include <QPainter>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <functional>
@@ -14,6 +17,8 @@
 
 #include "core/io/csv.h"
 #include "widgets/diagnose/diagnosisstudy.h"
+#include "widgets/diagnose/residualcheckview.h"
+#include "widgets/diagnose/residualchecktext.h"
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
@@ -65,6 +70,9 @@ std::shared_ptr<const diagnose::Diagnosis> memoDiagnosis(const ReportContext& co
 
 QString parameters(const diagnose::Candidate& c) {
   QStringList parts;
+  const bool formGiven = std::any_of(c.parameters.begin(), c.parameters.end(),
+                                     [](const diagnose::Parameter& p) { return p.name == "form"; });
+  if (c.generic && !formGiven) parts << ReportText::tr("form %1").arg(dependenceFormName(c.generic->form));
   for (const diagnose::Parameter& p : c.parameters) {
     QString s = QString::fromStdString(p.name) + QStringLiteral(" ") +
                 QString::fromStdString(formatParameterValue(p));
@@ -191,6 +199,7 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
                  [&](QPainter& p, const QRectF& r) { paintResidualScatter(p, r, plot, title, 11.0); });
     }
   }
+  if (d->residualCheck) writeResidualCheck(out, *d);
   ReportTable ba;
   ba.header = {ReportText::tr("error (%1)").arg(u), ReportText::tr("declared model"),
                ReportText::tr("with accepted effects")};
@@ -207,6 +216,30 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
 }
 
 }  // namespace
+
+void writeResidualCheck(ReportPainter& out, const diagnose::Diagnosis& d) {
+  if (!d.residualCheck) return;
+  const diagnose::ResidualCheck& c = *d.residualCheck;
+  out.skip(out.mm(2.0));
+  const QStringList sentences = residualCheckSentences(d, QLocale::c());
+  for (int i = 0; i < sentences.size(); ++i)
+    out.paragraph(sentences[i], i == 0 ? ReportPainter::Font::Body : ReportPainter::Font::Small);
+  if (!c.plot) return;
+  const QString units = d.units == "um" ? QStringLiteral("µm") : QString::fromStdString(d.units);
+  const auto strongest = std::find_if(c.structure.begin(), c.structure.end(),
+                                      [&](const diagnose::StructureItem& s) { return s.against == c.plot->against; });
+  const QString variable = residualVariableName(c.plot->against);
+  const QString title =
+      strongest == c.structure.end()
+          ? ReportText::tr("Final residual against %1").arg(variable)
+          : ReportText::tr("Final residual against %1 with the generic fit (%2)")
+                .arg(variable, dependenceFormName(strongest->form));
+  out.skip(out.mm(2.0));
+  const QRectF box = out.reserve(out.mm(70.0));
+  const diagnose::ResidualCheck::Plot& plot = *c.plot;
+  drawScaled(out, box, 700.0,
+             [&](QPainter& p, const QRectF& r) { paintResidualCheck(p, r, plot, units, title, 11.0); });
+}
 
 QString diagnosisSectionTitle() {
   return ReportText::tr("Closed loop: diagnosis");

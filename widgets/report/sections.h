@@ -21,6 +21,9 @@
 
 namespace metrofit {
 class ReportPainter;
+namespace diagnose {
+struct Diagnosis;
+}
 
 /// A dataset of the project as the report sees it.
 struct ReportDataset {
@@ -107,5 +110,10 @@ bool hasDiagnosisStudy(const ReportContext& context);
 /// "Closed loop: diagnosis" (diagnosissection.cpp): per configured domain the loop step by step, the
 /// residual plots of the accepted effects and the errors before / after.
 void writeDiagnosisSection(ReportPainter& out, const ReportContext& context);
+/// The part of the diagnosis section that says what is left unexplained: the residual check's
+/// verdict, structure with shares, generic effects and outliers in reader's words, and the final
+/// residual against the variable of the strongest structure with the generic fit. Nothing when the
+/// diagnosis has no residual check.
+void writeResidualCheck(ReportPainter& out, const diagnose::Diagnosis& diagnosis);
 
 }  // namespace metrofit
