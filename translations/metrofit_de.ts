@@ -5777,23 +5777,23 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>held-out rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3</source>
-        <translation>rmse Testdaten %1 → %2%3 (%4), rmse Anpassung %5 → %6%3</translation>
+        <source>validation rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, held-out rmse %7 -&gt; %8%3</source>
+        <translation>rmse Validierung %1 → %2%3 (%4), rmse Anpassung %5 → %6%3, rmse Testdaten %7 → %8%3</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>held-out rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, %7</source>
-        <translation>rmse Testdaten %1 → %2%3 (%4), rmse Anpassung %5 → %6%3, %7</translation>
+        <source>validation rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, held-out rmse %7 -&gt; %8%3, %9</source>
+        <translation>rmse Validierung %1 → %2%3 (%4), rmse Anpassung %5 → %6%3, rmse Testdaten %7 → %8%3, %9</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>; rejected: held-out error worse</source>
-        <translation>; abgelehnt: Fehler auf den Testdaten größer</translation>
+        <source>; rejected: validation error worse</source>
+        <translation>; abgelehnt: Validierungsfehler größer</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>; rejected: held-out gain below %1 %</source>
-        <translation>; abgelehnt: Gewinn auf den Testdaten unter %1 %</translation>
+        <source>; rejected: validation gain below %1 %</source>
+        <translation>; abgelehnt: Gewinn in der Validierung unter %1 %</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5807,8 +5807,18 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>accepted together with %1: held-out rmse %2 -&gt; %3%4 (%5), fit rmse %6 -&gt; %7%4, %8</source>
-        <translation>übernommen zusammen mit %1: rmse Testdaten %2 → %3%4 (%5), rmse Anpassung %6 → %7%4, %8</translation>
+        <source>accepted together with %1: validation rmse %2 -&gt; %3%4 (%5), fit rmse %6 -&gt; %7%4, held-out rmse %8 -&gt; %9%4, %10</source>
+        <translation>übernommen zusammen mit %1: rmse Validierung %2 → %3%4 (%5), rmse Anpassung %6 → %7%4, rmse Testdaten %8 → %9%4, %10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the validation folds cannot fit it</source>
+        <translation>; abgelehnt: die Validierungsfolds können es nicht anpassen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>effects chosen on the fit rows by blocked forward validation (%1 folds, validation rmse %2%3); the held-out rows only report the error</source>
+        <translation>Effekte auf den Anpassungszeilen durch blockweise Vorwärtsvalidierung gewählt (%1 Folds, rmse Validierung %2%3); die Testzeilen geben nur den Fehler an</translation>
     </message>
     <message>
         <location line="+2"/>

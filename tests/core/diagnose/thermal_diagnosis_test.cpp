@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <string>
 
 #include <Eigen/Dense>
@@ -12,6 +13,8 @@
 #include "core/common/error.h"
 #include "core/diagnose/thermal_diagnosis.h"
 #include "core/sim/effects_thermal.h"
+#include "core/thermal/thermal_model.h"
+#include "testsupport.h"
 
 namespace metrofit::diagnose {
 namespace {
@@ -37,10 +40,11 @@ double noiseFor(const ThermalEffectsOptions& o, double ratio) {
   return std::sqrt(r.squaredNorm() / static_cast<double>(n)) / ratio;
 }
 
-Diagnosis run(const ThermalEffectsOptions& o) {
+Diagnosis run(const ThermalEffectsOptions& o, double trainFraction = 0.5) {
   ThermalDiagnosisOptions d;
   d.target = o.target;
   d.inputs = o.declaredInputs;
+  d.trainFraction = trainFraction;
   return diagnoseThermal(simulateThermalEffects(o), d);
 }
 
@@ -57,13 +61,12 @@ double param(const Candidate& c, const std::string& name) {
   return 0.0;
 }
 
+/// The held-out rows no longer choose the effects (issue 15 item 4), so a single accepted effect may
+/// extrapolate worse on them; on these catalogue cases the final model still predicts them better.
 void expectHeldoutNeverWorse(const Diagnosis& d) {
   ASSERT_TRUE(d.baseline.heldoutRmse && d.final.heldoutRmse);
   EXPECT_LE(*d.final.heldoutRmse, *d.baseline.heldoutRmse);
-  for (const Candidate* c : d.accepted()) {
-    ASSERT_TRUE(c->heldoutBefore && c->heldoutAfter);
-    EXPECT_LE(*c->heldoutAfter, 0.9 * *c->heldoutBefore) << c->name;
-  }
+  for (const Candidate* c : d.accepted()) ASSERT_TRUE(c->heldoutBefore && c->heldoutAfter);
 }
 
 TEST(ThermalEffectsSim, FirstOrderLagStepResponse) {
@@ -163,6 +166,9 @@ TEST(ThermalDiagnosis, CleanDataComesOutClean) {
 }
 
 TEST(ThermalDiagnosis, TwoEffectsAreBothFound) {
+  // Fit on 70 % of the rows: the spindle runs from 10 to 250 min of 480, so the first half of the
+  // log never sees it stop, and the effects are now chosen on the fit rows only (with 50 % the
+  // spindle's coefficient rests on its start alone, which forward validation cannot check).
   for (std::uint64_t seed : {21u, 22u}) {
     ThermalEffectsOptions o;
     o.seed = seed;
@@ -170,7 +176,7 @@ TEST(ThermalDiagnosis, TwoEffectsAreBothFound) {
     o.lagColumn = "T2";
     o.extraInputs = {{"spindle_rpm", -0.0005}};
     o.noiseUm = 0.25;
-    const Diagnosis d = run(o);
+    const Diagnosis d = run(o, 0.7);
     const Candidate* lag = acceptedNamed(d, "lag:T2");
     if (!lag) lag = acceptedNamed(d, "lag");
     const Candidate* rpm = acceptedNamed(d, "input:spindle_rpm");
@@ -181,6 +187,113 @@ TEST(ThermalDiagnosis, TwoEffectsAreBothFound) {
     EXPECT_LT(*d.final.heldoutRmse, 0.5);
     expectHeldoutNeverWorse(d);
   }
+}
+
+// ---- Honest held-out rows (issue 15 item 4, CONTRACT.md "Honest held-out rows") ----------------
+
+enum class Scramble { Permute, Noise };
+
+/// `log` with the target on the held-out rows permuted (Fisher-Yates, fixed seed) or replaced by
+/// Gaussian noise of the target's spread.
+ThermalLog scrambled(ThermalLog log, const std::string& target, double trainFraction, Scramble how) {
+  const std::size_t nFit = thermal::fitRowCount(log.rows(), trainFraction);
+  for (auto& c : log.channels) {
+    if (c.name != target) continue;
+    std::mt19937_64 rng(12345);
+    if (how == Scramble::Permute) {
+      for (std::size_t k = c.values.size() - 1; k > nFit; --k) {
+        const std::size_t j = nFit + static_cast<std::size_t>(rng() % (k - nFit + 1));
+        std::swap(c.values[k], c.values[j]);
+      }
+    } else {
+      std::normal_distribution<double> g(0.0, 5.0);
+      for (std::size_t k = nFit; k < c.values.size(); ++k) c.values[k] = g(rng);
+    }
+  }
+  return log;
+}
+
+/// Everything but the held-out figures is the same, bit for bit; the held-out figures differ.
+void expectSameChoice(const Diagnosis& a, const Diagnosis& b) {
+  ASSERT_EQ(a.effects.size(), b.effects.size());
+  for (std::size_t i = 0; i < a.effects.size(); ++i) {
+    const Candidate &x = a.effects[i], &y = b.effects[i];
+    EXPECT_EQ(x.name, y.name) << i;
+    EXPECT_EQ(x.accepted, y.accepted) << x.name;
+    EXPECT_EQ(x.round, y.round) << x.name;
+    EXPECT_EQ(x.rmseBefore, y.rmseBefore) << x.name;
+    EXPECT_EQ(x.rmseAfter, y.rmseAfter) << x.name;
+    EXPECT_EQ(x.score, y.score) << x.name;
+    ASSERT_EQ(x.parameters.size(), y.parameters.size()) << x.name;
+    for (std::size_t k = 0; k < x.parameters.size(); ++k) {
+      EXPECT_EQ(x.parameters[k].name, y.parameters[k].name);
+      EXPECT_EQ(x.parameters[k].value, y.parameters[k].value) << x.name << " " << x.parameters[k].name;
+      EXPECT_EQ(x.parameters[k].standardError, y.parameters[k].standardError) << x.name;
+    }
+  }
+  EXPECT_EQ(a.baseline.rmse, b.baseline.rmse);
+  EXPECT_EQ(a.baseline.maxAbs, b.baseline.maxAbs);
+  EXPECT_EQ(a.final.rmse, b.final.rmse);
+  EXPECT_EQ(a.final.maxAbs, b.final.maxAbs);
+  EXPECT_EQ(a.notes, b.notes);
+  // The held-out rows do report: their figures change.
+  EXPECT_NE(*a.baseline.heldoutRmse, *b.baseline.heldoutRmse);
+  EXPECT_NE(*a.final.heldoutRmse, *b.final.heldoutRmse);
+}
+
+std::vector<std::string> acceptedNames(const Diagnosis& d) {
+  std::vector<std::string> out;
+  for (const Candidate* c : d.accepted()) out.push_back(c->name);
+  return out;
+}
+
+void expectScrambleChangesOnlyTheHeldOutFigures(const ThermalLog& log, const ThermalDiagnosisOptions& o) {
+  const Diagnosis d = diagnoseThermal(log, o);
+  for (Scramble how : {Scramble::Permute, Scramble::Noise}) {
+    SCOPED_TRACE(how == Scramble::Permute ? "permuted" : "noise");
+    const Diagnosis s = diagnoseThermal(scrambled(log, o.target, o.trainFraction, how), o);
+    expectSameChoice(d, s);
+  }
+}
+
+TEST(ThermalHonestHeldOut, DemoLogScrambledHeldOutTargetChangesOnlyTheHeldOutFigures) {
+  ThermalDiagnosisOptions o;
+  o.target = "disp_z_um";
+  o.inputs = {"T2", "T4", "T_amb"};
+  const ThermalLog log = readThermalLog((test::sourceDir() / "resources/demo/data/diagnose_thermal.csv").string());
+  EXPECT_EQ(acceptedNames(diagnoseThermal(log, o)), std::vector<std::string>{"lag:T2"});
+  expectScrambleChangesOnlyTheHeldOutFigures(log, o);
+}
+
+TEST(ThermalHonestHeldOut, SimulatedTwoEffectsScrambledChangesOnlyTheHeldOutFigures) {
+  ThermalEffectsOptions so;
+  so.seed = 21;
+  so.lagTauMin = 15.0;
+  so.lagColumn = "T2";
+  so.extraInputs = {{"spindle_rpm", -0.0005}};
+  so.noiseUm = 0.25;
+  for (double fraction : {0.5, 0.7}) {
+    ThermalDiagnosisOptions o;
+    o.target = so.target;
+    o.inputs = so.declaredInputs;
+    o.trainFraction = fraction;
+    const ThermalLog log = simulateThermalEffects(so);
+    EXPECT_FALSE(diagnoseThermal(log, o).accepted().empty()) << fraction;
+    expectScrambleChangesOnlyTheHeldOutFigures(log, o);
+  }
+}
+
+TEST(ThermalHonestHeldOut, RealCaiviacCh1ScrambledChangesOnlyTheHeldOutFigures) {
+  // The CAIVIAC spindle log (11 115 rows, resources/demo/data/SOURCE-CAIVIAC.md), ch1 with the two
+  // hottest sensors declared; ch3 takes 9 s and is in metrofit-bench --real-diagnose.
+  ThermalDiagnosisOptions o;
+  o.target = "ch1_um";
+  o.inputs = {"t5_degC", "t9_degC"};
+  const ThermalLog log = readThermalLog((test::sourceDir() / "resources/demo/data/thermal_caiviac.csv").string());
+  const Diagnosis d = diagnoseThermal(log, o);
+  EXPECT_FALSE(d.accepted().empty());
+  const Diagnosis s = diagnoseThermal(scrambled(log, o.target, o.trainFraction, Scramble::Permute), o);
+  expectSameChoice(d, s);
 }
 
 TEST(ThermalDiagnosis, ContractJson) {
