@@ -5821,6 +5821,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Effekte auf den Anpassungszeilen durch blockweise Vorwärtsvalidierung gewählt (%1 Folds, rmse Validierung %2%3); die Testzeilen geben nur den Fehler an</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) and the candidate effects</source>
+        <translation>deklariertes Modell %1 von %2 (angepasst an die ersten %3 von %4 Zeilen wie bei thermal fit; allein: rmse Anpassung %5, rmse Testdaten %6%7); die Schleife passt die Zielgröße an seine Vorhersage (Koeffizient %8) und die Kandidateneffekte an</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>residual</source>
         <translation>Residuum</translation>

@@ -5834,6 +5834,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>efekty wybrane na wierszach dopasowania przez blokową walidację w przód (%1 foldy, rmse walidacji %2%3); wiersze testowe podają tylko błąd</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) and the candidate effects</source>
+        <translation>zadeklarowany model %1 z %2 (dopasowany do pierwszych %3 z %4 wierszy jak w thermal fit; sam: rmse dopasowania %5, rmse danych testowych %6%7); pętla dopasowuje wielkość docelową do jego predykcji (współczynnik %8) i efektów kandydujących</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>residual</source>
         <translation>residuum</translation>

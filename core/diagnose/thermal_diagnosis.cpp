@@ -154,9 +154,94 @@ class Problem {
   const std::vector<double>& time() const { return log_.timeMin; }
   double medianStep() const { return medianStep_; }
 
-  /// The columns of a model state (without the intercept) on every row.
-  std::vector<ThermalRegressor> columns(const State& s, int /*view*/) const {
-    return thermalRegressors(log_, o_.inputs, s.effects);
+  bool grey() const { return o_.declared != ThermalDeclaredModel::Linear; }
+  /// Views whose columns are the same for the same state share this key (GramSet).
+  int columnsKey(int view) const { return grey() ? view : 0; }
+
+  /// Fits the declared grey model once per view (see the header comment). False when the observer
+  /// stopped a training. ValidationError when the model cannot be fitted on the fit rows.
+  bool fitDeclared(Observer* observer) {
+    if (!grey()) return true;
+    const thermal::ThermalSeries series = thermal::selectThermalSeries(log_, o_.target, o_.inputs);
+    thermal::ThermalFitOptions fo;
+    fo.model = o_.declared == ThermalDeclaredModel::Gmc ? thermal::ThermalModelKind::Gmc
+                                                        : thermal::ThermalModelKind::Gnnmci;
+    fo.setSeed(o_.seed);
+    bool stopped = false;
+    // The trainings' progress reaches the observer with component "declared_fit"; its Stop stops them.
+    FunctionObserver relay([&](const IterationSummary& it) {
+      if (!observer) return ObserverDecision::Continue;
+      IterationSummary s = it;
+      s.evaluations = 0;
+      s.components = {{"declared_fit", it.best}};
+      if (observer->onIteration(s) == ObserverDecision::Stop) stopped = true;
+      return stopped ? ObserverDecision::Stop : ObserverDecision::Continue;
+    });
+    pred_.assign(static_cast<std::size_t>(views()), {});
+    // The fit on all fit rows first (its errors are the user's), then one per fold.
+    for (int v = views() - 1; v >= 0 && !stopped; --v) {
+      const std::size_t rows = v == fullView() ? nFit_ : edge_[static_cast<std::size_t>(v) + 1];
+      std::vector<double> p;
+      try {
+        const thermal::ThermalTraining t = thermal::fitThermalModel({series.head(rows)}, fo, &relay);
+        if (stopped) break;
+        p = thermal::predictTarget(t.model, series);
+        if (v == fullView()) declaredTraining_ = t;
+      } catch (const std::exception& e) {
+        if (v == fullView()) {
+          if (dynamic_cast<const InputError*>(&e)) throw;
+          throw ValidationError(ErrorContext{log_.source, 0, 0, o_.target},
+                                std::string("the declared model cannot be fitted: ") + e.what());
+        }
+        continue;  // this fold cannot validate
+      }
+      const bool finite = std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); });
+      if (!finite) {
+        if (v == fullView())
+          throw ValidationError(ErrorContext{log_.source, 0, 0, o_.target},
+                                std::string("the declared ") + toString(o_.declared) +
+                                    " model is unstable on the fit rows (b1 <= 0): its prediction is not finite");
+        continue;
+      }
+      pred_[static_cast<std::size_t>(v)] = std::move(p);
+    }
+    return !stopped;
+  }
+
+  /// The declared grey model fitted on all fit rows, and its own rmse on the fit and held-out rows.
+  const thermal::ThermalTraining& declaredTraining() const { return declaredTraining_; }
+  std::pair<double, double> declaredOwnRmse() const {
+    const auto& p = pred_[static_cast<std::size_t>(fullView())];
+    double a = 0.0, b = 0.0;
+    for (std::size_t k = 0; k < n_; ++k) (k < nFit_ ? a : b) += (y_[k] - p[k]) * (y_[k] - p[k]);
+    return {std::sqrt(a / static_cast<double>(nFit_)), std::sqrt(b / static_cast<double>(n_ - nFit_))};
+  }
+
+  /// The columns of a model state (without the intercept) on every row (empty when the view's grey
+  /// model could not be fitted).
+  std::vector<ThermalRegressor> columns(const State& s, int view) const {
+    if (!grey()) return thermalRegressors(log_, o_.inputs, s.effects);
+    std::vector<ThermalRegressor> out;
+    const auto& p = pred_[static_cast<std::size_t>(view)];
+    if (p.empty()) return out;
+    ThermalRegressor g;
+    g.name = g.channel = "declared";
+    g.unit = log_.channel(o_.target).unit;
+    g.values = p;
+    out.push_back(std::move(g));
+    for (const auto& [col, tau] : s.effects.lagCol) {
+      ThermalRegressor r;
+      r.name = r.channel = "lag:" + col;
+      r.unit = log_.channel(col).unit;
+      r.lagMin = tau;
+      r.values = firstOrderLag(log_.channel(col).values, log_.timeMin, tau);
+      out.push_back(std::move(r));
+    }
+    ThermalEffectSet rest = s.effects;
+    rest.lagAll = 0.0;
+    rest.lagCol.clear();
+    for (ThermalRegressor& r : thermalRegressors(log_, {}, rest)) out.push_back(std::move(r));
+    return out;
   }
 
   /// The block Grams of a state in a view.
@@ -167,6 +252,7 @@ class Problem {
       cols.push_back(std::move(r.values));
       g.names.push_back(std::move(r.name));
     }
+    if (cols.empty()) return g;  // a fold whose grey model could not be fitted
     const auto p = static_cast<Eigen::Index>(cols.size());
     const auto nf = static_cast<Eigen::Index>(nFit_);
     if (nf < p + 3) {
@@ -317,6 +403,8 @@ class Problem {
   std::size_t n_ = 0, nFit_ = 0;
   std::vector<std::size_t> edge_;  ///< block edges: 0, e_1..e_K, nFit, n
   double medianStep_ = 1.0;
+  std::vector<std::vector<double>> pred_;  ///< grey: the declared model's prediction per view
+  thermal::ThermalTraining declaredTraining_;
 };
 
 /// Grams of every view of `states`, computed once per distinct state.
@@ -325,10 +413,14 @@ class GramSet {
   GramSet(const Problem& pb, const Views& states) {
     for (int v = 0; v < pb.views(); ++v) {
       const State& s = states[static_cast<std::size_t>(v)];
+      const int key = pb.columnsKey(v);
       std::size_t at = cache_.size();
       for (std::size_t i = 0; i < cache_.size(); ++i)
-        if (cache_[i].first == s) at = i;
-      if (at == cache_.size()) cache_.emplace_back(s, pb.grams(s, v));
+        if (keys_[i] == key && cache_[i].first == s) at = i;
+      if (at == cache_.size()) {
+        cache_.emplace_back(s, pb.grams(s, v));
+        keys_.push_back(key);
+      }
       index_.push_back(at);
     }
   }
@@ -340,6 +432,7 @@ class GramSet {
 
  private:
   std::vector<std::pair<State, Grams>> cache_;
+  std::vector<int> keys_;
   std::vector<std::size_t> index_;
 };
 
@@ -553,6 +646,21 @@ std::vector<PhraseArg> figureArgs(const Fit& cur, const Fit& f, const std::strin
 
 }  // namespace
 
+const char* toString(ThermalDeclaredModel m) {
+  switch (m) {
+    case ThermalDeclaredModel::Gmc: return "gmc";
+    case ThermalDeclaredModel::Gnnmci: return "gnnmci";
+    case ThermalDeclaredModel::Linear: break;
+  }
+  return "linear";
+}
+
+ThermalDeclaredModel thermalDeclaredModel(const std::string& name, const std::string& field) {
+  for (ThermalDeclaredModel m : {ThermalDeclaredModel::Linear, ThermalDeclaredModel::Gmc, ThermalDeclaredModel::Gnnmci})
+    if (name == toString(m)) return m;
+  throw OptionsError(ErrorContext{{}, 0, 0, field}, "'" + name + "' is not one of linear, gmc, gnnmci");
+}
+
 bool ThermalDiagnosisOptions::isValid(std::string* why) const {
   auto no = [&](const char* w) {
     if (why) *why = w;
@@ -571,11 +679,15 @@ bool ThermalDiagnosisOptions::isValid(std::string* why) const {
 
 Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& o, Observer* observer) {
   validate(log, o);
-  const Problem pb(log, o);
+  Problem pb(log, o);
   Diagnosis d;
   d.domain = "thermal";
   d.units = log.channel(o.target).unit;
   const std::string u = d.units.empty() ? "" : " " + d.units;
+  if (!pb.fitDeclared(observer)) {
+    d.addNote({Phrase("cancelled")});
+    return d;
+  }
   const auto full = static_cast<std::size_t>(pb.fullView());
 
   Views state(static_cast<std::size_t>(pb.views()));
@@ -584,7 +696,18 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
   Residual curRes = pb.residual(state[full], cur);
   d.baseline = summaryOf(cur, curRes);
   const double noise = noiseLevel(curRes, pb.fitRows());
-  {
+  if (pb.grey()) {
+    std::string inputs;
+    for (const auto& in : o.inputs) inputs += (inputs.empty() ? "" : ", ") + in;
+    const auto [ownFit, ownHeld] = pb.declaredOwnRmse();
+    d.addNote({Phrase("declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit "
+                      "rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) "
+                      "and the candidate effects",
+                      {A::name(o.declared == ThermalDeclaredModel::Gmc ? "GMC(1,N)" : "GNNMCI(1,N)"),
+                       A::name(inputs), A::integer(static_cast<long long>(pb.fitRows())),
+                       A::integer(static_cast<long long>(pb.rows())), num(ownFit), num(ownHeld), A::unit(u),
+                       num(cur.beta(0))})});
+  } else {
     Phrases model = {Phrase("%1 = c0", {A::name(o.target)})};
     for (std::size_t j = 0; j < o.inputs.size(); ++j)
       model.push_back(
@@ -592,6 +715,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     d.addNote({Phrase("declared model (static, fitted on the first %1 of %2 rows): %3",
                       {A::integer(static_cast<long long>(pb.fitRows())),
                        A::integer(static_cast<long long>(pb.rows())), A::text(std::move(model))})});
+  }
+  {
     d.addNote(
         {Phrase("noise level (first differences of the fit residual): %1%2", {num(noise), A::unit(u)})});
     d.addNote({Phrase("effects chosen on the fit rows by blocked forward validation (%1 folds, validation "
@@ -616,8 +741,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     const ThermalEffectSet& now = state[full].effects;
     // This round's candidates.
     std::vector<std::string> names;
-    if (!(now.lagAll > 0.0)) names.push_back("lag");
-    if (o.inputs.size() > 1 || now.lagAll > 0.0)
+    if (!(now.lagAll > 0.0) && !pb.grey()) names.push_back("lag");
+    if (o.inputs.size() > 1 || now.lagAll > 0.0 || pb.grey())
       for (const auto& in : o.inputs)
         if (!now.lagCol.count(in)) names.push_back("lag:" + in);
     for (const auto& c : undeclared)

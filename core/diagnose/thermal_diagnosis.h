@@ -12,6 +12,21 @@
 //   y(k) = c0 + sum_j b_j x_j(k) + e(k),
 // fitted by least squares on the fit rows.
 //
+// Declared model `gmc` or `gnnmci` (--declared; issue 15 item 5): the user's grey model, GMC(1,N) by
+// least squares or GNNMCI(1,N) trained by PSO with `seed` (core/thermal/thermal_model.h, fitted on
+// the fit rows exactly as `thermal fit` fits it: changes since the first row, run over the whole log
+// from its first row). The loop then looks for what that model lacks: its prediction g(k) is one
+// regressor column of a linear model,
+//   y(k) = c0 + a g(k) + (candidate effects' columns) + e(k),
+// so a is about 1 when the grey model is right, and an effect is what the grey model cannot
+// produce. Prediction as a column rather than an offset y - g: the grey model was fitted without the
+// effect and has absorbed part of it in its coefficients; a free a lets the refit take that part back
+// (with a = 1 fixed a real effect is smaller and some go unseen). The baseline is this model
+// without effects. Candidates: `lag:<col>` (a further first-order lag path of a declared input, beside
+// the grey model's own single time constant: a second time constant the grey model lacks),
+// `input:<col>`, `drift`; `lag` (every input through one more lag) is not tried: a grey model is
+// that lag itself. Every validation fold fits its own grey model on its own rows (same seed).
+//
 // Candidate effects (CONTRACT.md names), each adding one parameter with the linear coefficients
 // refitted:
 //   `lag`          every declared input through the first-order lag L_tau of effects_thermal.h;
@@ -66,6 +81,7 @@
 // of the fit rows and the held-out block): a fold's fit sums its blocks, its validation error is
 // y^T y - 2 b^T X^T y + b^T X^T X b of the next block, so one pass over the rows gives every fold,
 // the fit on all fit rows and the held-out error.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -75,8 +91,17 @@
 
 namespace metrofit::diagnose {
 
+/// The declared model the loop starts from (see the header comment).
+enum class ThermalDeclaredModel { Linear, Gmc, Gnnmci };
+/// "linear", "gmc", "gnnmci".
+const char* toString(ThermalDeclaredModel m);
+/// The model named `name`; OptionsError naming `field` otherwise.
+ThermalDeclaredModel thermalDeclaredModel(const std::string& name, const std::string& field = "--declared");
+
 struct ThermalDiagnosisOptions {
   std::string target;
+  ThermalDeclaredModel declared = ThermalDeclaredModel::Linear;
+  std::uint64_t seed = 1;  ///< GNNMCI's swarm (declared gnnmci)
   std::vector<std::string> inputs;  ///< the declared inputs
   double trainFraction = 0.5;       ///< fit on the first fraction of the rows, hold out the rest
   double minHeldoutGain = 0.10;     ///< relative validation (blocked CV) rmse reduction needed

@@ -50,6 +50,10 @@ const char* const kCoreTexts[] = {
                       "effects chosen on the fit rows by blocked forward validation (%1 folds, validation rmse "
                       "%2%3); the held-out rows only report the error"),
     QT_TRANSLATE_NOOP("metrofit::core",
+                      "declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit "
+                      "rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) "
+                      "and the candidate effects"),
+    QT_TRANSLATE_NOOP("metrofit::core",
                       "accepted together with %1: validation rmse %2 -> %3%4 (%5), fit rmse %6 -> %7%4, held-out rmse %8 -> %9%4, %10"),
     QT_TRANSLATE_NOOP("metrofit::core", "residual"),
     QT_TRANSLATE_NOOP("metrofit::core", "residual (%1)"),
