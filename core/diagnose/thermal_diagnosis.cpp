@@ -1,6 +1,8 @@
 #include "core/diagnose/thermal_diagnosis.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -21,6 +23,9 @@ namespace {
 
 using A = PhraseArg;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Above this many rows the lag search's grid and its per-fold refinement run on group means
+/// (see the header comment); the reported tau and every reported error are computed on every row.
+constexpr std::size_t kCoarseRows = 20000;
 
 std::string fmt(double v, int digits = 3) {
   return std::isfinite(v) ? CsvWriter::formatNumber(v, digits) : "n/a";
@@ -144,6 +149,38 @@ class Problem {
     if (d.empty()) d.push_back(1.0);
     std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
     medianStep_ = d[d.size() / 2];
+    // Equal steps (time only, no target): the lag filter needs one exponential.
+    const double step = n_ > 1 ? log_.timeMin[1] - log_.timeMin[0] : 0.0;
+    bool uniform = n_ > 1;
+    for (std::size_t k = 1; k < n_ && uniform; ++k)
+      uniform = std::abs((log_.timeMin[k] - log_.timeMin[k - 1]) - step) <= 1e-9 * step;
+    uniformStep_ = uniform ? step : 0.0;
+    y0_ = y_.empty() ? 0.0 : y_[0];
+    yc_.resize(n_);
+    for (std::size_t k = 0; k < n_; ++k) yc_[k] = y_[k] - y0_;
+    ySum_.assign(edge_.size() - 1, 0.0);
+    yy_.assign(edge_.size() - 1, 0.0);
+    for (std::size_t b = 0; b + 1 < edge_.size(); ++b)
+      for (std::size_t k = edge_[b]; k < edge_[b + 1]; ++k) {
+        ySum_[b] += yc_[k];
+        yy_[b] += yc_[k] * yc_[k];
+      }
+    const std::size_t m = (n_ + kCoarseRows - 1) / kCoarseRows;
+    coarse_ = m > 1;
+    if (coarse_) {
+      yyCoarse_.assign(edge_.size() - 1, 0.0);
+      for (std::size_t b = 0; b + 1 < edge_.size(); ++b) {
+        gOfBlock_.push_back(gEdge_.size());
+        for (std::size_t k = edge_[b]; k < edge_[b + 1]; k += m) gEdge_.push_back(k);
+      }
+      gOfBlock_.push_back(gEdge_.size());
+      gEdge_.push_back(n_);
+      yMean_ = groupMeans(yc_);
+      gTime_ = groupMeans(log_.timeMin);
+      for (std::size_t b = 0; b + 1 < edge_.size(); ++b)
+        for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g)
+          yyCoarse_[b] += static_cast<double>(gEdge_[g + 1] - gEdge_[g]) * yMean_[g] * yMean_[g];
+    }
   }
 
   std::size_t rows() const { return n_; }
@@ -217,88 +254,252 @@ class Problem {
     return {std::sqrt(a / static_cast<double>(nFit_)), std::sqrt(b / static_cast<double>(n_ - nFit_))};
   }
 
-  /// The columns of a model state (without the intercept) on every row (empty when the view's grey
-  /// model could not be fitted).
-  std::vector<ThermalRegressor> columns(const State& s, int view) const {
-    if (!grey()) return thermalRegressors(log_, o_.inputs, s.effects);
-    std::vector<ThermalRegressor> out;
-    const auto& p = pred_[static_cast<std::size_t>(view)];
-    if (p.empty()) return out;
-    ThermalRegressor g;
-    g.name = g.channel = "declared";
-    g.unit = log_.channel(o_.target).unit;
-    g.values = p;
-    out.push_back(std::move(g));
-    for (const auto& [col, tau] : s.effects.lagCol) {
-      ThermalRegressor r;
-      r.name = r.channel = "lag:" + col;
-      r.unit = log_.channel(col).unit;
-      r.lagMin = tau;
-      r.values = firstOrderLag(log_.channel(col).values, log_.timeMin, tau);
-      out.push_back(std::move(r));
+  /// One column of a model: `key` identifies its values (the store computes them once), `name` is
+  /// the loop's name for its coefficient.
+  struct ColumnSpec {
+    std::string key;   ///< "in:T2", "lag:T2@<tau>", "extra:rpm", "drift", "pred:<view>"
+    std::string name;  ///< "T2", "input:rpm", "drift", "declared", "lag:T2"
+  };
+
+  /// The columns of a model state (without the intercept); empty when the view's grey model could
+  /// not be fitted.
+  std::vector<ColumnSpec> columns(const State& s, int view) const {
+    std::vector<ColumnSpec> out;
+    auto lagKey = [](const std::string& col, double tau) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "@%a", tau);
+      return "lag:" + col + buf;
+    };
+    if (!grey()) {
+      for (const auto& in : o_.inputs) {
+        const auto it = s.effects.lagCol.find(in);
+        const double tau = it != s.effects.lagCol.end() ? it->second : s.effects.lagAll;
+        out.push_back({tau > 0.0 ? lagKey(in, tau) : "in:" + in, in});
+      }
+    } else {
+      if (pred_[static_cast<std::size_t>(view)].empty()) return {};
+      out.push_back({"pred:" + std::to_string(view), "declared"});
+      for (const auto& [col, tau] : s.effects.lagCol) out.push_back({lagKey(col, tau), "lag:" + col});
     }
-    ThermalEffectSet rest = s.effects;
-    rest.lagAll = 0.0;
-    rest.lagCol.clear();
-    for (ThermalRegressor& r : thermalRegressors(log_, {}, rest)) out.push_back(std::move(r));
+    for (const auto& e : s.effects.extra) out.push_back({"extra:" + e, "input:" + e});
+    if (s.effects.drift) out.push_back({"drift", "drift"});
     return out;
   }
 
-  /// The block Grams of a state in a view.
-  Grams grams(const State& s, int view) const {
-    Grams g;
-    std::vector<std::vector<double>> cols;
-    for (ThermalRegressor& r : columns(s, view)) {
-      cols.push_back(std::move(r.values));
-      g.names.push_back(std::move(r.name));
+  /// A stored column: its values minus their first value (the intercept absorbs the shift), per
+  /// block its sum and its products with the target.
+  struct Column {
+    std::vector<double> v;
+    double shift = 0.0;
+    std::vector<double> sum, dotY;
+    bool pinned = false;
+  };
+
+  /// The column `key` (computed and stored when missing).
+  const Column& column(const std::string& fullKey) const {
+    if (auto it = store_.find(fullKey); it != store_.end()) return it->second;
+    const bool coarse = fullKey.starts_with("~");
+    const std::string key = coarse ? fullKey.substr(1) : fullKey;
+    Column c;
+    std::vector<double> raw;
+    bool pin = true;
+    if (key.starts_with("in:")) {
+      raw = log_.channel(key.substr(3)).values;
+    } else if (key.starts_with("extra:")) {
+      raw = log_.channel(key.substr(6)).values;
+    } else if (key == "drift") {
+      raw = log_.timeMin;
+    } else if (key.starts_with("pred:")) {
+      raw = pred_[static_cast<std::size_t>(std::stoi(key.substr(5)))];
+    } else {  // lag:<col>@<tau>
+      const std::size_t at = key.rfind('@');
+      const std::vector<double>& x = log_.channel(key.substr(4, at - 4)).values;
+      const double tau = std::strtod(key.c_str() + at + 1, nullptr);
+      // Coarse: the lag of the group means on the groups' mean times (the grid only brackets tau).
+      if (coarse) {
+        const std::string name = key.substr(4, at - 4);
+        auto it = coarseInput_.find(name);
+        if (it == coarseInput_.end()) it = coarseInput_.emplace(name, groupMeans(x)).first;
+        raw = laggedOn(it->second, gTime_, tau, 0.0);
+      } else {
+        raw = laggedOn(x, log_.timeMin, tau, uniformStep_);
+      }
+      pin = false;
     }
-    if (cols.empty()) return g;  // a fold whose grey model could not be fitted
-    const auto p = static_cast<Eigen::Index>(cols.size());
+    if (coarse && raw.size() == n_) raw = groupMeans(raw);
+    c.shift = raw[0];
+    c.sum.assign(edge_.size() - 1, 0.0);
+    c.dotY.assign(edge_.size() - 1, 0.0);
+    if (!coarse) {
+      c.v = std::move(raw);
+      for (double& x : c.v) x -= c.shift;
+      for (std::size_t b = 0; b + 1 < edge_.size(); ++b) {
+        double s = 0.0, sy = 0.0;
+        for (std::size_t k = edge_[b]; k < edge_[b + 1]; ++k) {
+          s += c.v[k];
+          sy += c.v[k] * yc_[k];
+        }
+        c.sum[b] = s;
+        c.dotY[b] = sy;
+      }
+    } else {  // group means, weighted by the group sizes
+      const std::size_t G = gEdge_.size() - 1;
+      c.v.resize(G);
+      for (std::size_t g = 0; g < G; ++g) c.v[g] = raw[g] - c.shift;  // (raw has G values here)
+      for (std::size_t b = 0; b + 1 < edge_.size(); ++b)
+        for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g) {
+          const double w = static_cast<double>(gEdge_[g + 1] - gEdge_[g]);
+          c.sum[b] += w * c.v[g];
+          c.dotY[b] += w * c.v[g] * yMean_[g];
+        }
+    }
+    c.pinned = pin;
+    if (!pin) temporary_.push_back(fullKey);
+    return store_.emplace(fullKey, std::move(c)).first->second;
+  }
+
+  /// Per block products of two stored columns (computed once while both are stored).
+  const std::vector<double>& dot(const std::string& a, const std::string& b) const {
+    const auto key = a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+    if (auto it = dots_.find(key); it != dots_.end()) return it->second;
+    const std::vector<double>&x = column(a).v, &y = column(b).v;
+    std::vector<double> d(edge_.size() - 1, 0.0);
+    if (!a.starts_with("~")) {
+      for (std::size_t blk = 0; blk + 1 < edge_.size(); ++blk) {
+        double s = 0.0;
+        for (std::size_t k = edge_[blk]; k < edge_[blk + 1]; ++k) s += x[k] * y[k];
+        d[blk] = s;
+      }
+    } else {
+      for (std::size_t blk = 0; blk + 1 < edge_.size(); ++blk)
+        for (std::size_t g = gOfBlock_[blk]; g < gOfBlock_[blk + 1]; ++g)
+          d[blk] += static_cast<double>(gEdge_[g + 1] - gEdge_[g]) * x[g] * y[g];
+    }
+    return dots_.emplace(key, std::move(d)).first->second;
+  }
+
+  /// Keeps the columns of `s` (every view) stored; they are used by every later candidate.
+  void pin(const Views& s) const {
+    for (int v = 0; v < views(); ++v)
+      for (const ColumnSpec& c : columns(s[static_cast<std::size_t>(v)], v)) {
+        column(c.key);
+        store_.at(c.key).pinned = true;
+      }
+  }
+  /// Drops the columns that are not pinned (a lag searched over tau makes one per tau) and their
+  /// products.
+  void sweep() const {
+    for (const std::string& key : temporary_) {
+      auto it = store_.find(key);
+      if (it == store_.end() || it->second.pinned) continue;
+      store_.erase(it);
+      for (auto d = dots_.begin(); d != dots_.end();)
+        d = d->first.first == key || d->first.second == key ? dots_.erase(d) : std::next(d);
+    }
+    temporary_.clear();
+  }
+
+  /// The first-order lag of effects_thermal.h (s(0) = x(0), s(k) = s(k-1) + (1 - e^{-dt_k/tau})
+  /// (x(k) - s(k-1))), with one exponential when the steps are equal.
+  /// On times t (`step` > 0: all steps equal to it). Written s(k) = e s(k-1) + (1 - e) x(k), so that
+  /// the chain from one row to the next is one multiply-add.
+  static std::vector<double> laggedOn(const std::vector<double>& x, const std::vector<double>& t, double tau,
+                                      double step) {
+    std::vector<double> s(x.size());
+    if (x.empty()) return s;
+    s[0] = x[0];
+    if (step > 0.0) {
+      const double a = -std::expm1(-step / tau), e = 1.0 - a;
+      for (std::size_t k = 1; k < x.size(); ++k) s[k] = e * s[k - 1] + a * x[k];
+    } else {
+      double dt = -1.0, a = 0.0;  // one exponential per run of equal steps
+      for (std::size_t k = 1; k < x.size(); ++k) {
+        if (t[k] - t[k - 1] != dt) {
+          dt = t[k] - t[k - 1];
+          a = -std::expm1(-dt / tau);
+        }
+        s[k] = (1.0 - a) * s[k - 1] + a * x[k];
+      }
+    }
+    return s;
+  }
+  /// Means of x over the coarse groups.
+  std::vector<double> groupMeans(const std::vector<double>& x) const {
+    std::vector<double> out(gEdge_.size() - 1);
+    for (std::size_t g = 0; g + 1 < gEdge_.size(); ++g) {
+      double s = 0.0;
+      for (std::size_t k = gEdge_[g]; k < gEdge_[g + 1]; ++k) s += x[k];
+      out[g] = s / static_cast<double>(gEdge_[g + 1] - gEdge_[g]);
+    }
+    return out;
+  }
+
+  /// The block Grams of a state in a view: standardised columns [1, z_1..z_p, y - ybar], every
+  /// column centred and scaled on the fit rows, assembled from the stored per-block sums and
+  /// products.
+  Grams grams(const State& s, int view, bool coarse = false) const {
+    Grams g;
+    std::vector<ColumnSpec> specs = columns(s, view);
+    if (coarse && coarse_)
+      for (ColumnSpec& c : specs) c.key = "~" + c.key;
+    const std::vector<double>& yy = coarse && coarse_ ? yyCoarse_ : yy_;
+    if (specs.empty()) return g;  // a fold whose grey model could not be fitted
+    const auto p = static_cast<Eigen::Index>(specs.size());
     const auto nf = static_cast<Eigen::Index>(nFit_);
+    for (const auto& c : specs) g.names.push_back(c.name);
     if (nf < p + 3) {
       g.why = Phrase("too few fit rows (%1) for %2 coefficients",
                      {A::integer(static_cast<long long>(nFit_)), A::integer(p + 1)});
       return g;
     }
-    // Centre and scale every column on the fit rows (conditioning); the intercept absorbs the means.
+    const std::size_t B = edge_.size() - 1, fitBlocks = B - 1;
+    std::vector<const Column*> col;
+    for (const auto& c : specs) col.push_back(&column(c.key));
+    std::vector<std::vector<const std::vector<double>*>> P(static_cast<std::size_t>(p),
+                                                           std::vector<const std::vector<double>*>(static_cast<std::size_t>(p)));
+    for (Eigen::Index i = 0; i < p; ++i)
+      for (Eigen::Index j = i; j < p; ++j) {
+        const auto ii = static_cast<std::size_t>(i), jj = static_cast<std::size_t>(j);
+        P[ii][jj] = P[jj][ii] = &dot(specs[ii].key, specs[jj].key);
+      }
     g.mean.resize(p);
     g.sd.resize(p);
     for (Eigen::Index j = 0; j < p; ++j) {
-      const auto& c = cols[static_cast<std::size_t>(j)];
-      double s = 0.0;
-      for (std::size_t k = 0; k < nFit_; ++k) s += c[k];
-      g.mean(j) = s / static_cast<double>(nf);
-      double v = 0.0;
-      for (std::size_t k = 0; k < nFit_; ++k) v += (c[k] - g.mean(j)) * (c[k] - g.mean(j));
-      g.sd(j) = std::sqrt(v / static_cast<double>(nf));
-      if (!(g.sd(j) > 1e-12 * std::max(1.0, std::abs(g.mean(j))))) {
-        g.why = Phrase("column '%1' is constant on the fit rows",
-                       {A::name(g.names[static_cast<std::size_t>(j)])});
+      const auto jj = static_cast<std::size_t>(j);
+      double s1 = 0.0, s2 = 0.0;
+      for (std::size_t b = 0; b < fitBlocks; ++b) {
+        s1 += col[jj]->sum[b];
+        s2 += (*P[jj][jj])[b];
+      }
+      g.mean(j) = s1 / static_cast<double>(nf);
+      g.sd(j) = std::sqrt(std::max(0.0, s2 / static_cast<double>(nf) - g.mean(j) * g.mean(j)));
+      if (!(g.sd(j) > 1e-12 * std::max(1.0, std::abs(g.mean(j) + col[jj]->shift)))) {
+        g.why = Phrase("column '%1' is constant on the fit rows", {A::name(g.names[jj])});
         return g;
       }
     }
-    {
-      double s = 0.0;
-      for (std::size_t k = 0; k < nFit_; ++k) s += y_[k];
-      g.ybar = s / static_cast<double>(nf);
-    }
+    double sy = 0.0;
+    for (std::size_t b = 0; b < fitBlocks; ++b) sy += ySum_[b];
+    const double ybar = sy / static_cast<double>(nf);
+    g.ybar = ybar + y0_;
     const Eigen::Index q = p + 2;
-    constexpr Eigen::Index kChunk = 2048;
-    Eigen::MatrixXd V(kChunk, q);
-    for (std::size_t b = 0; b + 1 < edge_.size(); ++b) {
-      Eigen::MatrixXd G = Eigen::MatrixXd::Zero(q, q);
-      for (std::size_t k0 = edge_[b]; k0 < edge_[b + 1]; k0 += kChunk) {
-        const auto m = static_cast<Eigen::Index>(std::min<std::size_t>(kChunk, edge_[b + 1] - k0));
-        for (Eigen::Index i = 0; i < m; ++i) {
-          const std::size_t k = k0 + static_cast<std::size_t>(i);
-          V(i, 0) = 1.0;
-          for (Eigen::Index j = 0; j < p; ++j)
-            V(i, j + 1) = (cols[static_cast<std::size_t>(j)][k] - g.mean(j)) / g.sd(j);
-          V(i, p + 1) = y_[k] - g.ybar;
+    for (std::size_t b = 0; b < B; ++b) {
+      const double nb = static_cast<double>(edge_[b + 1] - edge_[b]);
+      Eigen::MatrixXd G(q, q);
+      G(0, 0) = nb;
+      for (Eigen::Index i = 0; i < p; ++i) {
+        const auto ii = static_cast<std::size_t>(i);
+        const double mi = g.mean(i), si = g.sd(i), Si = col[ii]->sum[b];
+        G(0, i + 1) = G(i + 1, 0) = (Si - nb * mi) / si;
+        for (Eigen::Index j = i; j < p; ++j) {
+          const auto jj = static_cast<std::size_t>(j);
+          const double mj = g.mean(j), Sj = col[jj]->sum[b];
+          G(i + 1, j + 1) = G(j + 1, i + 1) = ((*P[ii][jj])[b] - mi * Sj - mj * Si + nb * mi * mj) / (si * g.sd(j));
         }
-        G.selfadjointView<Eigen::Lower>().rankUpdate(V.topRows(m).transpose());
+        G(i + 1, q - 1) = G(q - 1, i + 1) = (col[ii]->dotY[b] - mi * ySum_[b] - ybar * Si + nb * mi * ybar) / si;
       }
-      G.triangularView<Eigen::StrictlyUpper>() = G.transpose();
+      G(0, q - 1) = G(q - 1, 0) = ySum_[b] - nb * ybar;
+      G(q - 1, q - 1) = yy[b] - 2.0 * ybar * ySum_[b] + nb * ybar * ybar;
       g.block.push_back(std::move(G));
     }
     g.ok = true;
@@ -383,16 +584,19 @@ class Problem {
   Residual residual(const State& s, const Fit& f) const {
     Residual out;
     out.r.assign(n_, 0.0);
-    const std::vector<ThermalRegressor> cols = columns(s, fullView());
+    const std::vector<ColumnSpec> specs = columns(s, fullView());
+    std::vector<const Column*> col;
+    for (const auto& c : specs) col.push_back(&column(c.key));
     for (std::size_t k = 0; k < n_; ++k) {
       double pred = f.ybar + f.coef(0);
-      for (std::size_t j = 0; j < cols.size(); ++j) {
+      for (std::size_t j = 0; j < col.size(); ++j) {
         const auto jj = static_cast<Eigen::Index>(j);
-        pred += f.coef(jj + 1) * (cols[j].values[k] - f.mean(jj)) / f.sd(jj);
+        pred += f.coef(jj + 1) * (col[j]->v[k] - f.mean(jj)) / f.sd(jj);
       }
       out.r[k] = y_[k] - pred;
       if (k < nFit_) out.maxAbs = std::max(out.maxAbs, std::abs(out.r[k]));
     }
+    sweep();
     return out;
   }
 
@@ -405,12 +609,25 @@ class Problem {
   double medianStep_ = 1.0;
   std::vector<std::vector<double>> pred_;  ///< grey: the declared model's prediction per view
   thermal::ThermalTraining declaredTraining_;
+  double uniformStep_ = 0.0;  ///< the step when all steps are equal (the lag filter's fast path)
+  // The target minus its first value: per block its sum and sum of squares.
+  std::vector<double> yc_, ySum_, yy_;
+  double y0_ = 0.0;
+  // The coarse resolution of the lag search (issue 15 item 9): groups of m consecutive rows inside
+  // each block, their means weighted by their sizes; m = 1 (no coarse search) up to kCoarseRows rows.
+  bool coarse_ = false;
+  std::vector<std::size_t> gEdge_, gOfBlock_;
+  std::vector<double> yMean_, yyCoarse_, gTime_;
+  mutable std::map<std::string, std::vector<double>> coarseInput_;  ///< group means of lagged inputs
+  mutable std::map<std::string, Column> store_;
+  mutable std::map<std::pair<std::string, std::string>, std::vector<double>> dots_;
+  mutable std::vector<std::string> temporary_;
 };
 
 /// Grams of every view of `states`, computed once per distinct state.
 class GramSet {
  public:
-  GramSet(const Problem& pb, const Views& states) {
+  GramSet(const Problem& pb, const Views& states, bool coarse = false) {
     for (int v = 0; v < pb.views(); ++v) {
       const State& s = states[static_cast<std::size_t>(v)];
       const int key = pb.columnsKey(v);
@@ -418,7 +635,7 @@ class GramSet {
       for (std::size_t i = 0; i < cache_.size(); ++i)
         if (keys_[i] == key && cache_[i].first == s) at = i;
       if (at == cache_.size()) {
-        cache_.emplace_back(s, pb.grams(s, v));
+        cache_.emplace_back(s, pb.grams(s, v, coarse));
         keys_.push_back(key);
       }
       index_.push_back(at);
@@ -448,34 +665,66 @@ struct LagEstimate {
   Fit fit;
 };
 
-/// Golden section on log tau between l and r for f (see the header comment).
+/// Brent's minimisation (golden section with parabolic steps; Brent 1973, ch. 5) of f on [a, b] to
+/// an absolute tolerance `tol` (log tau). Non-finite values force golden steps.
 template <class F>
-double goldenSection(double l, double r, double tol, F f) {
-  const double phi = (std::sqrt(5.0) - 1.0) / 2.0;
-  double c = r - phi * (r - l), d = l + phi * (r - l);
-  double fc = f(c), fd = f(d);
-  for (int it = 0; it < 40 && r - l > tol; ++it) {
-    if (fc < fd) {
-      r = d;
-      d = c;
-      fd = fc;
-      c = r - phi * (r - l);
-      fc = f(c);
+double brentMinimise(double a, double b, double tol, F f) {
+  const double cgold = 0.3819660112501051;
+  double x = a + cgold * (b - a), w = x, v = x;
+  double fx = f(x), fw = fx, fv = fx;
+  double d = 0.0, e = 0.0;
+  for (int it = 0; it < 60; ++it) {
+    const double xm = 0.5 * (a + b), tol2 = 2.0 * tol;
+    if (std::abs(x - xm) <= tol2 - 0.5 * (b - a)) break;
+    bool golden = true;
+    if (std::abs(e) > tol && std::isfinite(fx) && std::isfinite(fw) && std::isfinite(fv)) {
+      double r = (x - w) * (fx - fv), q = (x - v) * (fx - fw), p = (x - v) * q - (x - w) * r;
+      q = 2.0 * (q - r);
+      if (q > 0.0) p = -p;
+      q = std::abs(q);
+      const double eOld = e;
+      e = d;
+      if (q > 0.0 && std::abs(p) < std::abs(0.5 * q * eOld) && p > q * (a - x) && p < q * (b - x)) {
+        d = p / q;
+        const double u = x + d;
+        if (u - a < tol2 || b - u < tol2) d = xm >= x ? tol : -tol;
+        golden = false;
+      }
+    }
+    if (golden) {
+      e = x >= xm ? a - x : b - x;
+      d = cgold * e;
+    }
+    const double u = std::abs(d) >= tol ? x + d : x + (d >= 0.0 ? tol : -tol);
+    const double fu = f(u);
+    if (fu <= fx) {
+      (u >= x ? a : b) = x;
+      v = w;
+      fv = fw;
+      w = x;
+      fw = fx;
+      x = u;
+      fx = fu;
     } else {
-      l = c;
-      c = d;
-      fc = fd;
-      d = l + phi * (r - l);
-      fd = f(d);
+      (u < x ? a : b) = u;
+      if (fu <= fw || w == x) {
+        v = w;
+        fv = fw;
+        w = u;
+        fw = fu;
+      } else if (fu <= fv || v == x || v == w) {
+        v = u;
+        fv = fu;
+      }
     }
   }
-  return fc < fd ? c : d;
+  return x;
 }
 
 /// 1-D search over tau, per view, for `withTau(tau, view)` (see the header comment): a shared
 /// log-spaced grid, then golden section per view on that view's own rows.
 template <class WithTau>
-LagEstimate searchLag(const Problem& pb, int gridPoints, WithTau withTau) {
+LagEstimate searchLag(const Problem& pb, int gridPoints, WithTau withTau, double hint = 0.0) {
   const double lo = 0.5 * pb.medianStep();
   const double hi = std::max(2.0 * lo, pb.time()[pb.fitRows() - 1] - pb.time()[0]);
   const int V = pb.views();
@@ -485,25 +734,42 @@ LagEstimate searchLag(const Problem& pb, int gridPoints, WithTau withTau) {
     return s;
   };
   const double a = std::log(lo), b = std::log(hi);
-  const int g = std::max(8, gridPoints);
+  // With a hint: nine points within a factor 3.3 of it instead of the grid over the whole range.
+  const int g = hint > 0.0 ? 9 : std::max(8, gridPoints);
   std::vector<double> grid(static_cast<std::size_t>(g));
   std::vector<std::vector<double>> val(static_cast<std::size_t>(V), std::vector<double>(grid.size()));
   for (int i = 0; i < g; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    grid[ii] = a + (b - a) * i / (g - 1);
-    const GramSet gs(pb, statesAt(std::exp(grid[ii])));
-    const auto per = gs.perView();
-    for (int v = 0; v < V; ++v) val[static_cast<std::size_t>(v)][ii] = pb.viewSse(*per[static_cast<std::size_t>(v)], v);
+    grid[ii] = hint > 0.0 ? std::clamp(std::log(hint) + 0.3 * (i - 4), a, b) : a + (b - a) * i / (g - 1);
+    {
+      const GramSet gs(pb, statesAt(std::exp(grid[ii])), true);
+      const auto per = gs.perView();
+      for (int v = 0; v < V; ++v)
+        val[static_cast<std::size_t>(v)][ii] = pb.viewSse(*per[static_cast<std::size_t>(v)], v);
+    }
+    pb.sweep();
   }
   LagEstimate e;
   for (int v = 0; v < V; ++v) {
     const auto& vv = val[static_cast<std::size_t>(v)];
     const std::size_t best = static_cast<std::size_t>(std::min_element(vv.begin(), vv.end()) - vv.begin());
     const double l = grid[best == 0 ? 0 : best - 1], r = grid[std::min<std::size_t>(best + 1, grid.size() - 1)];
-    auto sse = [&](double logTau) { return pb.viewSse(pb.grams(withTau(std::exp(logTau), v), v), v); };
-    // The fit on all fit rows to 1e-6 in log tau (its tau is reported), the folds to 1e-4.
-    double logTau = goldenSection(l, r, v == pb.fullView() ? 1e-6 : 1e-4, sse);
-    if (vv[best] < sse(logTau)) logTau = grid[best];
+    const bool full = v == pb.fullView();
+    auto sseAt = [&](double logTau, bool coarse) {
+      const double r = pb.viewSse(pb.grams(withTau(std::exp(logTau), v), v, coarse), v);
+      pb.sweep();
+      return r;
+    };
+    // The folds on the coarse resolution to 1e-3 in log tau; the fit on all fit rows (its tau is
+    // reported) to 1e-3 there, then on every row to 1e-5 within +-0.05 of it.
+    double logTau = brentMinimise(l, r, 1e-3, [&](double x) { return sseAt(x, true); });
+    if (vv[best] < sseAt(logTau, true)) logTau = grid[best];
+    if (full) {
+      const double c = logTau;
+      logTau = brentMinimise(std::max(a, c - 0.05), std::min(b, c + 0.05), 1e-5,
+                             [&](double x) { return sseAt(x, false); });
+      if (sseAt(c, false) < sseAt(logTau, false)) logTau = c;
+    }
     e.tau.push_back(std::exp(logTau));
     e.next.push_back(withTau(e.tau.back(), v));
   }
@@ -518,6 +784,7 @@ LagEstimate searchLag(const Problem& pb, int gridPoints, WithTau withTau) {
       if (curv > 0.0) e.se = std::sqrt(2.0 * e.fit.s2 / curv);
     }
   }
+  pb.sweep();
   return e;
 }
 
@@ -605,7 +872,7 @@ void linearParameters(const ThermalLog& log, const std::string& name, const Fit&
 }
 
 Eval evaluateCandidate(const Problem& pb, const ThermalLog& log, const ThermalDiagnosisOptions& o,
-                       const std::string& name, const Views& base, const std::string& u) {
+                       const std::string& name, const Views& base, const std::string& u, double lagHint = 0.0) {
   Eval e;
   e.next = base;
   if (isLag(name)) {
@@ -617,7 +884,7 @@ Eval evaluateCandidate(const Problem& pb, const ThermalLog& log, const ThermalDi
       else
         s.effects.lagCol[col] = tau;
       return s;
-    });
+    }, lagHint);
     e.next = std::move(le.next);
     e.fit = le.fit;
     const double tau = le.tau.back();
@@ -634,7 +901,19 @@ Eval evaluateCandidate(const Problem& pb, const ThermalLog& log, const ThermalDi
     e.fit = fitViews(pb, e.next);
     if (e.fit.ok) linearParameters(log, name, e.fit, u, e);
   }
+  pb.sweep();
   return e;
+}
+
+/// A lag's tau is determined by the fit rows when its standard error is known and below half of it
+/// (a lag of 279 +- 230 min fits the fit rows' end and says nothing about the rows after them).
+bool determined(const Eval& e) {
+  for (const Parameter& p : e.parameters)
+    if (p.name == "tau_min") {
+      const double tau = std::get<double>(p.value);
+      return p.standardError && *p.standardError < 0.5 * tau;
+    }
+  return true;
 }
 
 /// The evidence figures of a candidate: "validation rmse a -> b (c %), fit rmse ..., held-out rmse
@@ -691,6 +970,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
   const auto full = static_cast<std::size_t>(pb.fullView());
 
   Views state(static_cast<std::size_t>(pb.views()));
+  pb.pin(state);
   Fit cur = fitViews(pb, state);
   if (!cur.ok) throw ValidationError(ErrorContext{log.source, 0, 0, "inputs"}, cur.why.english());
   Residual curRes = pb.residual(state[full], cur);
@@ -753,6 +1033,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     std::vector<Candidate> tried;
     std::vector<Views> states;
     std::vector<Fit> fits;
+    std::vector<Eval> evals;  // the single candidates (the pair search starts from them)
     std::optional<std::size_t> best;
     std::vector<bool> passed(names.size(), false);
     for (std::size_t i = 0; i < names.size(); ++i) {
@@ -805,13 +1086,16 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
                               {num(explained), A::unit(u), num(o.minExplainedNoise), num(noise)}));
         else if (!inSample)
           ev.push_back(Phrase("; rejected: no in-sample evidence (fit dBIC %1 >= 0)", {num(dBic)}));
+        else if (!determined(ev0))
+          ev.push_back(Phrase("; rejected: the fit rows do not determine tau (standard error above half of it)"));
         c.setEvidence(std::move(ev));
-        passed[i] = gain && aboveNoise && inSample;
+        passed[i] = gain && aboveNoise && inSample && determined(ev0);
         if (passed[i] && (!best || rankOf(f, cur) < rankOf(fits[*best], cur))) best = i;
       }
       tried.push_back(std::move(c));
-      states.push_back(std::move(ev0.next));
+      states.push_back(ev0.next);
       fits.push_back(std::move(f));
+      evals.push_back(std::move(ev0));
 
       if (progress.afterCandidate(round, i, names.size(), cur.cv, "cv_rmse")) {
         cancelled = true;
@@ -845,21 +1129,32 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       Fit bestFit;
       Views bestStates;
       std::array<std::string, 2> bestNames;
+      // Partners: every linear candidate (a column each), and the lags among the six candidates with
+      // the lowest fit error (before issue 15 item 9 every lag: on a week of 1 Hz data that was up to
+      // 60 pairs, each with one or two lag searches).
+      std::vector<std::size_t> byFit;
+      for (std::size_t i = 0; i < fits.size(); ++i)
+        if (fits[i].ok) byFit.push_back(i);
+      std::stable_sort(byFit.begin(), byFit.end(),
+                       [&](std::size_t a, std::size_t b) { return fits[a].sse < fits[b].sse; });
+      std::vector<std::size_t> partners;
+      for (std::size_t r = 0; r < byFit.size(); ++r)
+        if (!isLag(names[byFit[r]]) || r < 6) partners.push_back(byFit[r]);
+      std::sort(partners.begin(), partners.end());
       std::vector<std::pair<std::size_t, std::size_t>> pairs;
       for (std::size_t x : strong)
-        for (std::size_t y = 0; y < fits.size(); ++y)
-          if (y != x && fits[y].ok &&
-              std::find(pairs.begin(), pairs.end(), std::make_pair(y, x)) == pairs.end())
+        for (std::size_t y : partners)
+          if (y != x && std::find(pairs.begin(), pairs.end(), std::make_pair(y, x)) == pairs.end())
             pairs.emplace_back(x, y);
       for (const auto& [px, py] : pairs) {
         const std::string &na = names[px], &nb = names[py];
         if (isLag(na) && isLag(nb)) continue;
-        Eval ea = evaluateCandidate(pb, log, o, na, state, u);
+        Eval ea = evals[px];  // na added to the current model, as evaluated above
         const Eval eb = evaluateCandidate(pb, log, o, nb, ea.next, u);
         if (!eb.fit.ok) continue;
         Fit pf = eb.fit;
         Views ps = eb.next;
-        if (isLag(na)) {  // re-estimate the lag with the other effect present
+        if (isLag(na)) {  // re-estimate the lag with the other effect present, near its tau alone
           ea = evaluateCandidate(pb, log, o, na, eb.next, u);
           if (!ea.fit.ok) continue;
           pf = ea.fit;
@@ -872,7 +1167,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
         if (!pf.cvOk) continue;
         const double explained = std::sqrt(std::max(0.0, cur.cv * cur.cv - pf.cv * pf.cv));
         const bool pass = pf.cv <= (1.0 - o.minHeldoutGain) * cur.cv && explained >= o.minExplainedNoise * noise &&
-                          nf * std::log(pf.sse / cur.sse) + 2.0 * std::log(nf) < 0.0;
+                          nf * std::log(pf.sse / cur.sse) + 2.0 * std::log(nf) < 0.0 && determined(ea) &&
+                          determined(fb);
         if (pass && (!bestA || rankOf(pf, cur) < rankOf(bestFit, cur))) {
           bestNames = {na, nb};
           bestA = ea;
@@ -882,6 +1178,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
         }
       }
       if (bestA) {
+        pb.pin(bestStates);
         const Residual after = pb.residual(bestStates[full], bestFit);
         const Eval* parts[2] = {&*bestA, &*bestB};
         for (int w = 0; w < 2; ++w) {
@@ -910,6 +1207,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
           tried.push_back(std::move(c));
         }
         state = bestStates;
+        pb.pin(state);
         cur = bestFit;
         curRes = after;
         pairAccepted = true;
@@ -924,6 +1222,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       Candidate& c = tried[*best];
       c.accepted = true;
       c.prependEvidence(Phrase("accepted: "));
+      pb.pin(states[*best]);
       const Residual after = pb.residual(states[*best][full], fits[*best]);
       ResidualPlot plot;
       plot.setLabels(timeLabel(), residualLabel(d.units));
