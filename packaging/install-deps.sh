@@ -12,7 +12,7 @@ PACKAGES=(
   # 3D (VTK 9 without its Qt 5 module)
   libvtk9-dev
   # maths, data, exact solver
-  libeigen3-dev nlohmann-json3-dev libglpk-dev glpk-utils libcli11-dev
+  libeigen3-dev libboost-dev nlohmann-json3-dev libglpk-dev glpk-utils libcli11-dev
   # tests and benchmark peers
   googletest libgtest-dev libgmock-dev libpagmo-dev libboost-serialization-dev libtbb-dev
   # headless GUI tests and PDF checks

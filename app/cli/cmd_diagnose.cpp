@@ -78,7 +78,8 @@ class Progress {
 };
 
 /// Writes the CONTRACT JSON (atomically to `out`, or stdout) and prints the one-line summary:
-/// "diagnose <domain> on <data>: rmse a -> b <unit>[, held-out h0 -> h1]; accepted: x (params); N tried".
+/// "diagnose <domain> on <data>: rmse a -> b <unit>[, held-out h0 -> h1]; accepted: x (params); N tried;
+/// residual white: ... | not white: still depends on ...[; k outliers excluded]".
 int finishDiagnosis(const diagnose::Diagnosis& d, const std::string& data, const std::string& out) {
   writeResult(out, dumpJson(diagnose::toJson(d)));
   const std::string u = d.units.empty() ? "" : " " + d.units;
@@ -105,6 +106,11 @@ int finishDiagnosis(const diagnose::Diagnosis& d, const std::string& data, const
     }
   }
   line += "; " + std::to_string(d.effects.size()) + " candidates tried";
+  if (d.residualCheck) {
+    line += "; residual " + d.residualCheck->summary;
+    if (!d.residualCheck->outliers.empty())
+      line += "; " + std::to_string(d.residualCheck->outliers.size()) + " outliers excluded";
+  }
   std::fprintf(stderr, "%s\n", line.c_str());
   return 0;
 }

@@ -1,5 +1,7 @@
 #include "core/diagnose/diagnosis.h"
 
+#include <algorithm>
+
 namespace metrofit::diagnose {
 
 std::vector<const Candidate*> Diagnosis::accepted() const {
@@ -74,6 +76,41 @@ void LoopProgress::addNote(Diagnosis& d) const {
     d.addNote({Phrase("stopped by the observer after round %1", {PhraseArg::integer(round_)})});
   else
     d.addNote({Phrase("cancelled")});
+}
+
+Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std::string>& excluded)>& run) {
+  LoopRun cur = run({});
+  const Diagnosis& d = cur.diagnosis;
+  bool named = false, generic = false;
+  for (const Candidate* c : d.accepted()) (c->generic ? generic : named) = true;
+  if (cur.stopped || !named || !(generic || (d.residualCheck && !d.residualCheck->white))) return std::move(cur.diagnosis);
+  std::vector<std::set<std::string>> alternatives;
+  for (const Candidate* c : d.accepted())
+    if (!c->generic) alternatives.push_back({c->name});
+  alternatives.push_back({kEveryNamedEffect});
+  std::optional<LoopRun> best;
+  for (const auto& ex : alternatives) {
+    LoopRun alt = run(ex);
+    if (alt.stopped) return std::move(cur.diagnosis);
+    if (alt.bic < (best ? best->bic : cur.bic)) best = std::move(alt);
+  }
+  if (!best) return std::move(cur.diagnosis);
+  std::vector<Candidate> dropped;
+  for (const Candidate* c : cur.diagnosis.accepted()) {
+    if (c->generic) continue;
+    const auto still = std::find_if(best->diagnosis.effects.begin(), best->diagnosis.effects.end(),
+                                    [&](const Candidate& x) { return x.accepted && x.name == c->name; });
+    if (still != best->diagnosis.effects.end()) continue;
+    Candidate x = *c;
+    x.accepted = false;
+    x.plot.reset();
+    x.setEvidence({Phrase("rejected: does not explain what it was chosen for; without it the generic effects "
+                          "explain the data at least as well (BIC %1 without, %2 with)",
+                          {PhraseArg::fixed(best->bic, 1), PhraseArg::fixed(cur.bic, 1)})});
+    dropped.push_back(std::move(x));
+  }
+  for (Candidate& c : dropped) best->diagnosis.effects.push_back(std::move(c));
+  return std::move(best->diagnosis);
 }
 
 namespace {

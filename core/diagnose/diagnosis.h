@@ -4,11 +4,15 @@
 // effects were added. Shared by the four domains (thermal, kinematic, setup, matching), the CLI,
 // the GUI's diagnosis view and the report.
 //
-// The loop (diagnoseLoop below) is the same in every domain: fit the declared model plus the
-// effects accepted so far; try every remaining candidate; accept the best one only when its
-// evidence passes the domain's test (out-of-sample improvement for thermal, an information
-// criterion with a conservative threshold elsewhere) *and* it reduces the rmse by a practically
-// relevant amount; repeat until nothing more is accepted.
+// The loop has the same steps in every domain (each domain still runs its own copy of it, in its
+// *_diagnosis.cpp; one shared loop is open work): fit the declared model plus the effects accepted
+// so far; try every remaining candidate (the catalogue's named effects and the generic effects
+// `unexplained:<against>` of the current residual's strongest structures, residual_check.h);
+// accept the best one only when its evidence passes the domain's test (out-of-sample improvement
+// for thermal, an information criterion with a conservative threshold elsewhere) *and* it reduces
+// the rmse by a practically relevant amount; repeat until nothing more is accepted. Gross errors
+// are found on the declared model's residual and excluded first; the final residual's check
+// (Diagnosis::residualCheck) says whether it is white and what it still depends on.
 //
 // Texts for people (evidence, notes, plot axis titles) are kept twice: as the English string of
 // CONTRACT.md (the JSON, the CLI and the report use it, unchanged) and as Phrases
@@ -16,7 +20,9 @@
 // with the user's number format. Set them with setEvidence / addEvidence / addNote / setLabels,
 // which keep both forms equal (string == english(parts)).
 #include <cstddef>
+#include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <variant>
 #include <vector>
@@ -132,6 +138,29 @@ class LoopProgress {
   bool perRound_ = false;
   int round_ = 0;
 };
+
+/// One run of a domain's loop, for keepNamedOnlyWhenNeeded: its diagnosis and the information
+/// criterion of its final model, n ln(RSS / n) + (parameters of the accepted effects) ln n + the
+/// search penalties of the accepted generic and searched effects (the declared model's parameters
+/// are the same in every run and left out).
+struct LoopRun {
+  Diagnosis diagnosis;
+  double bic = 0.0;
+  bool stopped = false;  ///< the observer stopped the loop: no further run
+};
+
+/// In the `excluded` set of keepNamedOnlyWhenNeeded: every named effect (generic effects only).
+inline constexpr const char* kEveryNamedEffect = "*";
+
+/// "A named effect must explain what it was chosen for" (CONTRACT.md "The open world"). The loops
+/// prefer a named effect to a generic one in a round; afterwards, when the result accepted a named
+/// effect and still needed a generic effect or left a non-white residual, the names are checked:
+/// the loop is run again without each accepted named effect N (`run({N})`) and once with generic
+/// effects only (`run({kEveryNamedEffect})`), and the run with the lowest criterion wins (the first
+/// run on ties: a name is kept when it explains the data at least as well as the generic
+/// alternative). Names accepted first and not in the winner are listed with accepted = false and
+/// the comparison as evidence. At most 1 + (accepted names) + 1 runs.
+Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std::string>& excluded)>& run);
 
 /// The JSON of CONTRACT.md: {"domain", "baseline": {"rmse","max_abs"[,"heldout_rmse"]},
 /// "effects": [{"name","accepted","parameters":{name: value},"rmse_before","rmse_after",

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <set>
 #include <optional>
 
 #include <Eigen/Dense>
@@ -29,9 +33,17 @@ PhraseArg um(double mm, int digits = 3) {
 }
 
 /// Which effects the model has.
+/// A generic effect (`unexplained:<against>`): displacement G g of every point, G in observation
+/// space (x, y rows per point; one set of basis columns per coordinate).
+struct GenericTerm {
+  std::shared_ptr<const Eigen::MatrixXd> columns;  ///< 2n x q
+  GenericForm shape;
+};
+
 struct State {
   bool backlash = false, scale = false, servo = false;
   bool cyclic[2] = {false, false};
+  std::vector<GenericTerm> generic;
 };
 
 /// All parameters (angles in rad, scale in ppm, cyclic as c sin + s cos with frequency f in 1/mm).
@@ -39,11 +51,13 @@ struct Params {
   double ox = 0, oy = 0, a = 0, b = 0;
   double bx = 0, by = 0, sx = 0, sy = 0, tau = 0;
   double cc[2] = {0, 0}, cs[2] = {0, 0}, f[2] = {0, 0};
+  std::vector<double> g;  ///< generic coefficients, in the order of State::generic
 };
 
 /// Index of each parameter in the packed vector of a state (-1: absent).
 struct Layout {
   int bx = -1, sx = -1, tau = -1, cy[2] = {-1, -1};
+  int gen = -1, genCount = 0;
   int p = 4;
 };
 
@@ -64,6 +78,11 @@ Layout layoutOf(const State& s) {
       l.p += 3;
     }
   }
+  for (const GenericTerm& t : s.generic) l.genCount += static_cast<int>(t.columns->cols());
+  if (l.genCount > 0) {
+    l.gen = l.p;
+    l.p += l.genCount;
+  }
   return l;
 }
 
@@ -76,6 +95,7 @@ Eigen::VectorXd pack(const State& s, const Params& q) {
   if (l.tau >= 0) v(l.tau) = q.tau;
   for (int a = 0; a < 2; ++a)
     if (l.cy[a] >= 0) v.segment<3>(l.cy[a]) << q.cc[a], q.cs[a], q.f[a];
+  for (int j = 0; j < l.genCount; ++j) v(l.gen + j) = j < static_cast<int>(q.g.size()) ? q.g[static_cast<std::size_t>(j)] : 0.0;
   return v;
 }
 
@@ -90,6 +110,8 @@ Params unpack(const State& s, const Eigen::VectorXd& v, Params q) {
   if (l.tau >= 0) q.tau = v(l.tau);
   for (int a = 0; a < 2; ++a)
     if (l.cy[a] >= 0) q.cc[a] = v(l.cy[a]), q.cs[a] = v(l.cy[a] + 1), q.f[a] = v(l.cy[a] + 2);
+  q.g.assign(static_cast<std::size_t>(l.genCount), 0.0);
+  for (int j = 0; j < l.genCount; ++j) q.g[static_cast<std::size_t>(j)] = v(l.gen + j);
   return q;
 }
 
@@ -140,6 +162,17 @@ void evaluate(const Data& d, const State& s, const Params& q, Eigen::VectorXd& r
       set(l.cy[a], ax * std::sin(ph[a]));
       set(l.cy[a] + 1, ax * std::cos(ph[a]));
       set(l.cy[a] + 2, ax * 2.0 * kPi * c(a) * (q.cc[a] * std::cos(ph[a]) - q.cs[a] * std::sin(ph[a])));
+    }
+  }
+  // Generic effects: linear in their coefficients.
+  int col = l.gen;
+  std::size_t gi = 0;
+  for (const GenericTerm& t : s.generic) {
+    const Eigen::MatrixXd& G = *t.columns;
+    for (Eigen::Index j = 0; j < G.cols(); ++j, ++col, ++gi) {
+      const double coef = gi < q.g.size() ? q.g[gi] : 0.0;
+      r += coef * G.col(j);
+      if (J) J->col(col) = G.col(j);
     }
   }
 }
@@ -333,9 +366,106 @@ bool KinematicDiagnosisOptions::isValid(std::string* why) const {
   return true;
 }
 
-Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOptions& o,
-                            Observer* observer) {
-  requireValid(o, "kinematic diagnosis options");
+namespace {
+
+/// Radial unit vectors about the commands' centroid (the direction a ballbar measures).
+std::vector<Eigen::Vector2d> radialDirections(const Data& d) {
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (const auto& p : d.path->command) c += p;
+  c /= static_cast<double>(d.n);
+  std::vector<Eigen::Vector2d> u(d.n);
+  for (std::size_t k = 0; k < d.n; ++k) {
+    const Eigen::Vector2d v = d.path->command[k] - c;
+    u[k] = v.norm() > 0.0 ? Eigen::Vector2d(v / v.norm()) : Eigen::Vector2d::UnitX();
+  }
+  return u;
+}
+
+/// The residual variables of a path (CONTRACT.md "The open world"): row (path order), the path
+/// angle about the centroid, the loop direction (CCW / CW from the tangent), the samples since an
+/// axis last reversed, and the commanded x and y.
+std::vector<ResidualVariable> kinematicVariables(const Data& d, const std::vector<Eigen::Vector2d>& u,
+                                                 const std::vector<std::size_t>& orig) {
+  std::vector<ResidualVariable> vars;
+  const std::size_t n = d.n;
+  ResidualVariable row, ang, dir, rev, x, y;
+  row.name = "row";
+  row.naturalOrder = true;
+  row.label = {Phrase("data row")};
+  ang.name = "angle";
+  ang.kind = ResidualVariable::Kind::Angle;
+  ang.label = {Phrase("path angle (deg)")};
+  dir.name = "direction";
+  dir.kind = ResidualVariable::Kind::Category;
+  dir.levels = {"CCW", "CW"};
+  dir.label = {Phrase("loop direction")};
+  rev.name = "reversal";
+  rev.label = {Phrase("samples since an axis reversed")};
+  x.name = "x";
+  x.label = {Phrase("x (mm)")};
+  y.name = "y";
+  y.label = {Phrase("y (mm)")};
+  long since[2] = {0, 0};
+  for (std::size_t k = 0; k < n; ++k) {
+    row.values.push_back(static_cast<double>(orig[k] + 1));
+    double a = std::atan2(u[k].y(), u[k].x()) / kDeg;
+    if (a < 0.0) a += 360.0;
+    ang.values.push_back(a);
+    const Eigen::Vector2d& t = d.motion.tangent[k];
+    const double cross = u[k].x() * t.y() - u[k].y() * t.x();
+    dir.values.push_back(cross >= 0.0 ? 0.0 : 1.0);
+    for (int a2 = 0; a2 < 2; ++a2) {
+      if (k > 0 && d.motion.direction[k](a2) != d.motion.direction[k - 1](a2))
+        since[a2] = 0;
+      else if (k > 0)
+        ++since[a2];
+    }
+    rev.values.push_back(static_cast<double>(std::min(since[0], since[1])));
+    x.values.push_back(d.path->command[k].x());
+    y.values.push_back(d.path->command[k].y());
+  }
+  vars.push_back(std::move(row));
+  vars.push_back(std::move(ang));
+  if (std::any_of(dir.values.begin(), dir.values.end(), [](double v) { return v > 0.5; }) &&
+      std::any_of(dir.values.begin(), dir.values.end(), [](double v) { return v < 0.5; }))
+    vars.push_back(std::move(dir));
+  vars.push_back(std::move(rev));
+  vars.push_back(std::move(x));
+  vars.push_back(std::move(y));
+  return vars;
+}
+
+/// The check's observations: the residual vector of every point (measured minus modelled; x, y as
+/// two components), with the model's Jacobian; the variables repeated on both coordinates.
+ResidualCheckInput kinematicCheckInput(const Data& d, const State& s, const Solution& sol,
+                                       const std::vector<ResidualVariable>& vars, const std::vector<std::size_t>& orig) {
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  evaluate(d, s, sol.q, r, &J);
+  ResidualCheckInput in;
+  in.residual = -r;
+  in.modelColumns = J;
+  in.components = 2;
+  for (const ResidualVariable& v : vars) {
+    ResidualVariable w = v;
+    w.values.clear();
+    for (double x : v.values) {
+      w.values.push_back(x);
+      w.values.push_back(x);
+    }
+    in.variables.push_back(std::move(w));
+  }
+  for (std::size_t k = 0; k < d.n; ++k) {
+    in.unitOf.push_back(k);
+    in.unitOf.push_back(k);
+    in.unitRow.push_back(static_cast<long>(orig[k] + 1));
+  }
+  return in;
+}
+
+LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& orig,
+                     const KinematicDiagnosisOptions& o, const std::set<std::string>& excluded,
+                     Observer* observer) {
   const IdentifyResult base = identifyActuatorErrors(path);  // checks the path (InputError)
   Data d;
   d.path = &path;
@@ -361,18 +491,43 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
   q0.b = base.errors.yAxisAngleDeg * kDeg;
   Solution cur = solve(d, state, q0);
 
+  const std::vector<Eigen::Vector2d> radial = radialDirections(d);
+  const std::vector<ResidualVariable> vars = kinematicVariables(d, radial, orig);
+  std::vector<std::string> genericTaken;
+  double searchPenalty = 0.0;  // of the accepted cyclic and generic effects
+
   LoopProgress progress(observer);
   bool cancelled = false;
   for (int round = 0; round < o.maxRounds && !cancelled; ++round) {
     std::vector<std::string> names;
-    if (!state.backlash) names.push_back("backlash");
-    if (!state.scale) names.push_back("scale");
-    if (!state.cyclic[0] || !state.cyclic[1]) names.push_back("cyclic");
-    if (!state.servo) names.push_back("servo_lag");
+    const bool all = excluded.count(kEveryNamedEffect) > 0;
+    if (!state.backlash && !all && !excluded.count("backlash")) names.push_back("backlash");
+    if (!state.scale && !all && !excluded.count("scale")) names.push_back("scale");
+    if ((!state.cyclic[0] || !state.cyclic[1]) && !all && !excluded.count("cyclic")) names.push_back("cyclic");
+    if (!state.servo && !all && !excluded.count("servo_lag")) names.push_back("servo_lag");
+    // Generic candidates (CONTRACT.md "The open world"): the strongest structures of the current
+    // radial residual, as radial displacements, with the search penalty on their evidence.
+    std::map<std::string, GenericTerm> genericTerms;
+    double genericPenalty = 0.0;
+    {
+      const ResidualCheckInput ci = kinematicCheckInput(d, state, cur, vars, orig);
+      const ResidualCheck rc = checkResidual(ci);
+      genericPenalty = genericSearchPenalty(rc);
+      for (const GenericForm& g : genericCandidates(rc, genericTaken)) {
+        const ResidualVariable* v = findVariable(ci.variables, g.against);
+        if (!v) continue;
+        // Observation space (x, y per point), one set of columns per coordinate.
+        Eigen::MatrixXd G = -genericBasis(g, v->values);
+        const std::string name = "unexplained:" + g.against;
+        genericTerms[name] = GenericTerm{std::make_shared<const Eigen::MatrixXd>(std::move(G)), g};
+        names.push_back(name);
+      }
+    }
     if (names.empty()) break;
     std::vector<Candidate> tried;
     std::vector<State> states;
     std::vector<Solution> sols;
+    std::vector<double> penalties;
     std::optional<std::size_t> best;
     const double bic0 = bic(cur, d.n);
     for (std::size_t i = 0; i < names.size(); ++i) {
@@ -394,6 +549,11 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
       } else if (name == "servo_lag") {
         next.servo = true;
         sol = solve(d, next, cur.q);
+      } else if (genericTerms.count(name)) {
+        next.generic.push_back(genericTerms[name]);
+        c.generic = genericTerms[name].shape;
+        sol = solve(d, next, cur.q);
+        penalty = genericPenalty;
       } else {  // cyclic: the better axis
         for (int a = 0; a < 2; ++a) {
           if (state.cyclic[a]) continue;
@@ -430,6 +590,20 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
           c.parameters = {{"x_ppm", q.sx, se(sol, l.sx)}, {"y_ppm", q.sy, se(sol, l.sx + 1)}};
           text = Phrase("scale x %1 +- %2 ppm, y %3 +- %4 ppm",
                         {num(q.sx), num(se(sol, l.sx), 2), num(q.sy), num(se(sol, l.sx + 1), 2)});
+        } else if (c.generic) {
+          // The last generic term's coefficients: positive = outward (measured beyond the model).
+          const Eigen::Index q0 = static_cast<Eigen::Index>(next.generic.back().columns->cols());
+          Eigen::VectorXd b(q0);
+          for (Eigen::Index j = 0; j < q0; ++j) b(j) = q.g[q.g.size() - static_cast<std::size_t>(q0 - j)];
+          std::vector<double> twice;
+          for (double x : findVariable(vars, c.generic->against)->values) {
+            twice.push_back(x);
+            twice.push_back(x);
+          }
+          const GenericSummary gs = summariseGeneric(*c.generic, -b, twice, "mm");
+          c.parameters = {Parameter{"form", std::string(formName(c.generic->form)), std::nullopt}};
+          for (const auto& [k, val] : gs.numbers) c.parameters.push_back({k, val, std::nullopt});
+          text = Phrase("%1", {A::text(gs.text)});
         } else if (name == "servo_lag") {
           const double lagMm = q.tau * d.speed;
           c.parameters = {{"tau_s", q.tau, se(sol, l.tau)}, {"lag_mm", lagMm, se(sol, l.tau) * d.speed}};
@@ -468,11 +642,14 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
         else if (!gain)
           ev.push_back(Phrase("; rejected: rmse gain below %1 %", {num(100.0 * o.minRmseGain, 2)}));
         c.setEvidence(std::move(ev));
-        if (strong && gain && (!best || dBic < tried[*best].score)) best = i;
+        // A named effect that passes is preferred to a generic one (keepNamedOnlyWhenNeeded).
+        const bool namedBest = best && !tried[*best].generic;
+        if (strong && gain && !(c.generic && namedBest) && (!best || dBic < tried[*best].score)) best = i;
       }
       tried.push_back(std::move(c));
       states.push_back(next);
       sols.push_back(std::move(sol));
+      penalties.push_back(penalty);
 
       if (progress.afterCandidate(round, i, names.size(), cur.rmse, "rmse_mm")) {
         cancelled = true;
@@ -493,6 +670,8 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
       radialPlot(d, cur.r, sols[*best].r, plot);
       c.plot = std::move(plot);
       state = states[*best];
+      searchPenalty += penalties[*best];
+      if (c.generic) genericTaken.push_back(c.generic->against);
       cur = std::move(sols[*best]);
     }
     for (auto& c : tried) dg.effects.push_back(std::move(c));
@@ -500,6 +679,76 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
   }
   progress.addNote(dg);
   dg.final = summaryOf(cur);
+  dg.residualCheck = checkResidual(kinematicCheckInput(d, state, cur, vars, orig));
+  LoopRun out;
+  out.bic = bic(cur, d.n) + searchPenalty;
+  out.stopped = progress.stopped();
+  out.diagnosis = std::move(dg);
+  return out;
+}
+
+}  // namespace
+
+Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOptions& o,
+                            Observer* observer) {
+  requireValid(o, "kinematic diagnosis options");
+  // Gross errors (CONTRACT.md `outliers`): found on the declared model's residual (robust z per
+  // coordinate, see residual_check.h), the points excluded and the loop run without them.
+  const IdentifyResult base = identifyActuatorErrors(path);  // checks the path (InputError)
+  std::vector<std::size_t> all(path.size());
+  std::iota(all.begin(), all.end(), 0);
+  ResidualCheckInput in;
+  {
+    Data d;
+    d.path = &path;
+    d.n = path.size();
+    d.motion = pathMotion(path.command);
+    d.speed = o.feedMmPerMin / 60.0;
+    Params q0;
+    q0.ox = base.errors.originMm.x();
+    q0.oy = base.errors.originMm.y();
+    q0.a = base.errors.xAxisAngleDeg * kDeg;
+    q0.b = base.errors.yAxisAngleDeg * kDeg;
+    const Solution s0 = solve(d, State{}, q0);
+    in.residual = s0.r;
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      in.unitOf.push_back(k);
+      in.unitOf.push_back(k);
+      in.unitRow.push_back(static_cast<long>(k + 1));
+    }
+  }
+  double threshold = 0.0;
+  std::vector<Outlier> outliers = findOutliers(in, {}, &threshold);
+  MeasuredPath kept = path;
+  std::vector<std::size_t> orig = all;
+  if (!outliers.empty()) {
+    std::vector<bool> excluded(path.size(), false);
+    for (const Outlier& x : outliers) excluded[x.unit] = true;
+    kept.command.clear();
+    kept.measured.clear();
+    kept.lines.clear();
+    orig.clear();
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      if (excluded[k]) continue;
+      kept.command.push_back(path.command[k]);
+      kept.measured.push_back(path.measured[k]);
+      if (k < path.lines.size()) kept.lines.push_back(path.lines[k]);
+      orig.push_back(k);
+    }
+  }
+  Diagnosis dg = keepNamedOnlyWhenNeeded(
+      [&](const std::set<std::string>& ex) { return runKinematic(kept, orig, o, ex, observer); });
+  if (dg.residualCheck) {
+    dg.residualCheck->outliers = outliers;
+    dg.residualCheck->outlierThreshold = threshold;
+  }
+  if (!outliers.empty()) {
+    Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above the outlier threshold):",
+                           {A::integer(static_cast<long long>(outliers.size()))})};
+    for (const Outlier& x : outliers)
+      note.push_back(Phrase(" row %1 (%2 um)", {A::integer(x.row.value_or(0)), um(x.residual)}));
+    dg.addNote(std::move(note));
+  }
   return dg;
 }
 

@@ -21,6 +21,15 @@
 // its penalty) *and* the fit rmse falls by at least minRmseGain (5 %). The passing candidate with
 // the lowest dBIC is accepted, the model refitted with it and the others tried again, until none
 // passes.
+//
+// The open world (CONTRACT.md, residual_check.h): points whose declared-model residual has a robust
+// z above the outlier threshold are excluded before the loop (residualCheck->outliers, with row).
+// The residual check works on the residual vectors (x and y as two components) against row (path
+// order), the path angle about the centroid, the loop direction (CCW / CW), the samples since an
+// axis reversed and the commanded x and y. Every round also tries the generic effects of the
+// strongest structures as displacements with one set of coefficients per coordinate, estimated
+// jointly by the same Levenberg-Marquardt fit, under the same dBIC decision plus the search penalty
+// 2 ln(tests); the lowest dBIC wins the round, named or generic (so a drift is not backlash).
 #include "core/common/run.h"
 #include "core/diagnose/diagnosis.h"
 #include "core/kinematics/measured_path.h"

@@ -105,24 +105,25 @@ bool AcceptanceOptions::isValid(std::string* why) const {
   return true;
 }
 
-double deltaBic(double rssBefore, double rssAfter, std::size_t n, long dofBefore, int addedParameters) {
+double deltaBic(double rssBefore, double rssAfter, std::size_t n, long dofBefore, int addedParameters,
+                double extraPenalty) {
   const double floor = 1e-300;
   const double nn = static_cast<double>(n);
   return static_cast<double>(std::max(dofBefore, 1L)) *
              std::log(std::max(rssAfter, floor) / std::max(rssBefore, floor)) +
-         addedParameters * std::log(std::max(nn, 1.0));
+         addedParameters * std::log(std::max(nn, 1.0)) + extraPenalty;
 }
 
 AcceptanceDecision decideAcceptance(const AcceptanceOptions& options, double rssBefore, double rssAfter,
                                     std::size_t n, long dofBefore, int addedParameters,
-                                    const std::string& unit, std::size_t rmseCount) {
+                                    const std::string& unit, std::size_t rmseCount, double extraPenalty) {
   AcceptanceDecision d;
   const double nn = static_cast<double>(std::max<std::size_t>(rmseCount > 0 ? rmseCount : n, 1));
   const double rmseBefore = std::sqrt(rssBefore / nn);
   const double rmseAfter = std::sqrt(rssAfter / nn);
   const double reduction = rmseBefore - rmseAfter;
   const double relative = rmseBefore > 0.0 ? reduction / rmseBefore : 0.0;
-  const double dbic = deltaBic(rssBefore, rssAfter, n, dofBefore, addedParameters);
+  const double dbic = deltaBic(rssBefore, rssAfter, n, dofBefore, addedParameters, extraPenalty);
   const bool strong = dbic < -options.bicThreshold;
   const bool relevant = relative >= options.minRelativeReduction &&
                         reduction >= options.minAbsoluteReduction && reduction > 0.0;

@@ -76,7 +76,9 @@ struct AcceptanceOptions {
 };
 
 /// nu ln(rssAfter / rssBefore) + k ln n with nu = dofBefore (both RSS floored at 1e-300).
-double deltaBic(double rssBefore, double rssAfter, std::size_t n, long dofBefore, int addedParameters);
+/// `extraPenalty` is added as it is (a search over shapes, e.g. a generic effect's variable).
+double deltaBic(double rssBefore, double rssAfter, std::size_t n, long dofBefore, int addedParameters,
+                double extraPenalty = 0.0);
 
 /// The decision and its one-line reason.
 struct AcceptanceDecision {
@@ -88,7 +90,8 @@ struct AcceptanceDecision {
 /// two or three observations, so that the rmse is that of the residual distances).
 AcceptanceDecision decideAcceptance(const AcceptanceOptions& options, double rssBefore, double rssAfter,
                                     std::size_t n, long dofBefore, int addedParameters,
-                                    const std::string& unit, std::size_t rmseCount = 0);
+                                    const std::string& unit, std::size_t rmseCount = 0,
+                                    double extraPenalty = 0.0);
 
 /// sqrt(mean of squares), 0 for an empty vector.
 double rootMeanSquare(const Eigen::VectorXd& v);

@@ -1,9 +1,14 @@
 #include "core/diagnose/matching_diagnosis.h"
 
 #include <algorithm>
+#include <optional>
+#include <numeric>
+#include <set>
+#include <memory>
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/QR>
 
@@ -15,13 +20,17 @@ namespace metrofit::diagnose {
 namespace {
 
 enum class Mode { Normal, Planar, Full };
-enum class Kind { Scale, Offset, Distortion };
+enum class Kind { Scale, Offset, Distortion, Generic };
 
 struct EffectDef {
   std::string name;
   Kind kind = Kind::Scale;
   int surface = -1;
   int params = 1;
+  /// Generic (`unexplained:<against>`): the basis per point (points x q) and its shape. Along the
+  /// nominal normal where the set has normals, else one set of q columns per coordinate.
+  std::shared_ptr<const Eigen::MatrixXd> basis;
+  std::optional<GenericForm> shape;
 };
 
 using A = PhraseArg;
@@ -60,6 +69,18 @@ void effectColumns(const Problem& pb, const EffectDef& e, std::size_t i, std::ve
       out.push_back(1e-6 * Eigen::Vector3d(qc.x(), -qc.y(), 0.0));
       out.push_back(1e-6 * Eigen::Vector3d(qc.y(), qc.x(), 0.0));
       break;
+    case Kind::Generic: {
+      const Eigen::MatrixXd& G = *e.basis;
+      const auto row = static_cast<Eigen::Index>(i);
+      if (pb.mode == Mode::Normal) {
+        for (Eigen::Index j = 0; j < G.cols(); ++j) out.push_back(G(row, j) * p.normal);
+      } else {
+        const int dims = pb.mode == Mode::Planar ? 2 : 3;
+        for (int c = 0; c < dims; ++c)
+          for (Eigen::Index j = 0; j < G.cols(); ++j) out.push_back(G(row, j) * Eigen::Vector3d::Unit(c));
+      }
+      break;
+    }
   }
 }
 
@@ -244,6 +265,8 @@ ResidualPlot makePlot(const Problem& pb, const EffectDef& e, const FitState& bef
         plot.vectors.push_back({q.x(), q.y(), d.x(), d.y()});
       }
       break;
+    case Kind::Generic:
+      break;  // plotted from its variable (runMatching)
   }
   return plot;
 }
@@ -277,6 +300,8 @@ std::vector<Parameter> parameters(const EffectDef& e, const Eigen::VectorXd& bet
       out.push_back({"angle_deg", angle, seAngle});
       break;
     }
+    case Kind::Generic:
+      break;  // genericParameters
   }
   return out;
 }
@@ -297,6 +322,125 @@ Phrases describe(const std::vector<Parameter>& ps) {
   return s;
 }
 
+/// The residual variables of a point set (CONTRACT.md "The open world"): row (file order), the
+/// nominal coordinates x, y (z when it varies), the polar angle about the centroid, the surface
+/// (one level each), the nominal normal's components nx, ny, nz, and per surface with at least 6
+/// points surface:<s> = the position along the surface's longest principal direction (NaN on the
+/// other points).
+std::vector<ResidualVariable> matchingVariables(const Problem& pb, const std::vector<std::size_t>& orig) {
+  const std::size_t n = pb.points();
+  std::vector<ResidualVariable> vars;
+  auto add = [&](std::string name, Phrases label, auto value, bool order = false) {
+    ResidualVariable v;
+    v.name = std::move(name);
+    v.label = std::move(label);
+    v.naturalOrder = order;
+    for (std::size_t i = 0; i < n; ++i) v.values.push_back(value(i));
+    const auto [lo, hi] = std::minmax_element(v.values.begin(), v.values.end());
+    if (n > 0 && *hi - *lo > 1e-9 * std::max(1.0, std::abs(*hi))) vars.push_back(std::move(v));
+  };
+  const auto& P = pb.set->points;
+  add("row", {Phrase("data row")}, [&](std::size_t i) { return static_cast<double>(orig[i] + 1); }, true);
+  add("x", {Phrase("x (mm)")}, [&](std::size_t i) { return P[i].nominal.x(); });
+  add("y", {Phrase("y (mm)")}, [&](std::size_t i) { return P[i].nominal.y(); });
+  add("z", {Phrase("z (mm)")}, [&](std::size_t i) { return P[i].nominal.z(); });
+  {
+    ResidualVariable a;
+    a.name = "angle";
+    a.kind = ResidualVariable::Kind::Angle;
+    a.label = {Phrase("polar angle (deg)")};
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3d qc = P[i].nominal - pb.qMean;
+      a.values.push_back(std::atan2(qc.y(), qc.x()) * 180.0 / std::numbers::pi);
+    }
+    vars.push_back(std::move(a));
+  }
+  if (pb.surfaces.size() > 1) {
+    ResidualVariable s;
+    s.name = "surface";
+    s.kind = ResidualVariable::Kind::Category;
+    s.label = {Phrase("surface")};
+    s.levels = pb.surfaces;
+    for (std::size_t i = 0; i < n; ++i) s.values.push_back(pb.surfaceOf[i]);
+    vars.push_back(std::move(s));
+  }
+  if (pb.set->hasNormals) {
+    add("nx", {Phrase("normal x")}, [&](std::size_t i) { return P[i].normal.x(); });
+    add("ny", {Phrase("normal y")}, [&](std::size_t i) { return P[i].normal.y(); });
+    add("nz", {Phrase("normal z")}, [&](std::size_t i) { return P[i].normal.z(); });
+  }
+  for (std::size_t s = 0; s < pb.surfaces.size() && pb.surfaces.size() > 1; ++s) {
+    std::vector<std::size_t> on;
+    for (std::size_t i = 0; i < n; ++i)
+      if (pb.surfaceOf[i] == static_cast<int>(s)) on.push_back(i);
+    if (on.size() < 6) continue;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (std::size_t i : on) mean += P[i].nominal;
+    mean /= static_cast<double>(on.size());
+    Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+    for (std::size_t i : on) C += (P[i].nominal - mean) * (P[i].nominal - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C);
+    const Eigen::Vector3d dir = es.eigenvectors().col(2);
+    ResidualVariable v;
+    v.name = "surface:" + pb.surfaces[s];
+    v.label = {Phrase("position along surface %1 (mm)", {A::name(pb.surfaces[s])})};
+    v.values.assign(n, std::nan(""));
+    for (std::size_t i : on) v.values[i] = (P[i].nominal - mean).dot(dir);
+    vars.push_back(std::move(v));
+  }
+  return vars;
+}
+
+/// The residual check input of a fit: one observation per coordinate the fit uses, the variables
+/// repeated on the coordinates of a point, units = points.
+ResidualCheckInput matchingCheckInput(const Problem& pb, const FitState& s, const std::vector<ResidualVariable>& vars,
+                                      const std::vector<std::size_t>& orig) {
+  ResidualCheckInput in;
+  const int per = pb.perPoint;
+  in.components = per;
+  in.residual = s.r;
+  in.modelColumns.resize(s.r.size(), s.rigidJ.cols() + s.effectJ.cols());
+  in.modelColumns << s.rigidJ, s.effectJ;
+  for (const ResidualVariable& v : vars) {
+    ResidualVariable w = v;
+    w.values.clear();
+    for (double x : v.values)
+      for (int c = 0; c < per; ++c) w.values.push_back(x);
+    in.variables.push_back(std::move(w));
+  }
+  for (std::size_t i = 0; i < pb.points(); ++i) {
+    for (int c = 0; c < per; ++c) in.unitOf.push_back(i);
+    in.unitRow.push_back(static_cast<long>(orig[i] + 1));
+    in.unitId.push_back(pb.set->points[i].id);
+  }
+  return in;
+}
+
+/// Parameters of a generic effect from its coefficients (along the normal: one set; else the rms
+/// over the coordinates).
+std::vector<Parameter> genericParameters(const Problem& pb, const EffectDef& e, const Eigen::VectorXd& beta,
+                                         Eigen::Index at, const std::vector<ResidualVariable>& vars, Phrases* text) {
+  std::vector<Parameter> out = {Parameter{"form", std::string(formName(e.shape->form)), std::nullopt}};
+  const ResidualVariable* v = findVariable(vars, e.shape->against);
+  if (!v) return out;
+  const Eigen::Index q = e.basis->cols();
+  if (pb.mode == Mode::Normal) {
+    const GenericSummary gs = summariseGeneric(*e.shape, beta.segment(at, q), v->values, "mm");
+    for (const auto& [k, val] : gs.numbers) out.push_back({k, val, std::nullopt});
+    if (text) *text = gs.text;
+  } else {
+    const int dims = pb.mode == Mode::Planar ? 2 : 3;
+    double ms = 0.0;
+    for (int c = 0; c < dims; ++c) {
+      const GenericSummary gs = summariseGeneric(*e.shape, beta.segment(at + c * q, q), v->values, "mm");
+      ms += std::pow(gs.numbers.front().second, 2);
+      if (text && c == 0) *text = gs.text;
+    }
+    out.push_back({"rms", std::sqrt(ms), std::nullopt});
+  }
+  return out;
+}
+
 }  // namespace
 
 bool MatchingDiagnosisOptions::isValid(std::string* why) const {
@@ -313,9 +457,11 @@ bool MatchingDiagnosisOptions::isValid(std::string* why) const {
   return true;
 }
 
-Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOptions& options,
-                           Observer* observer) {
-  requireValid(options, "matching diagnosis options");
+namespace {
+
+LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& orig,
+                    const MatchingDiagnosisOptions& options, const std::set<std::string>& excluded,
+                    Observer* observer) {
   const matching::DofLocks locks = matching::effectiveLocks(set, {});
   matching::requireDeterminable(set, locks, false, matching::FitKind::LeastSquares, "matching diagnosis");
 
@@ -337,11 +483,11 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
   const std::size_t nObs = pb.observations(), nPts = pb.points();
 
   std::vector<EffectDef> defs;
-  defs.push_back({"scale", Kind::Scale, -1, 1});
+  defs.push_back({"scale", Kind::Scale, -1, 1, nullptr, std::nullopt});
   if (set.hasNormals)
     for (std::size_t s = 0; s < pb.surfaces.size(); ++s)
-      defs.push_back({"surface_offset:" + pb.surfaces[s], Kind::Offset, static_cast<int>(s), 1});
-  defs.push_back({"distortion", Kind::Distortion, -1, 2});
+      defs.push_back({"surface_offset:" + pb.surfaces[s], Kind::Offset, static_cast<int>(s), 1, nullptr, std::nullopt});
+  defs.push_back({"distortion", Kind::Distortion, -1, 2, nullptr, std::nullopt});
 
   matching::ClosedFormOptions cf;
   cf.locks = locks;
@@ -375,6 +521,10 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
                  A::fixed(current.t.y(), 4), A::fixed(current.t.z(), 4)})});
   }
 
+  const std::vector<ResidualVariable> vars = matchingVariables(pb, orig);
+  std::vector<std::string> genericTaken;
+  const std::size_t namedDefs = defs.size();
+  double complexity = 0.0;  // k ln n + search penalties of the accepted effects
   std::vector<bool> used(defs.size(), false);
   std::vector<Candidate> acceptedCandidates, lastRound;
   long tried = 0;
@@ -385,8 +535,34 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
     std::vector<std::size_t> roundDefs;
     int best = -1;
     const double rmseBefore = summarise(current, nPts).rmse;
+    // Generic candidates of this round (CONTRACT.md "The open world"): the strongest structures of
+    // the current residual, with the search penalty on their evidence.
+    defs.resize(namedDefs);
+    used.resize(namedDefs);
+    double genericPenalty = 0.0;
+    {
+      const ResidualCheck rc = checkResidual(matchingCheckInput(pb, current, vars, orig));
+      genericPenalty = genericSearchPenalty(rc);
+      for (GenericForm g : genericCandidates(rc, genericTaken)) {
+        const ResidualVariable* v = findVariable(vars, g.against);
+        if (!v) continue;
+        g.components = 1;  // per point; effectColumns spreads it over the coordinates
+        EffectDef e;
+        e.name = "unexplained:" + g.against;
+        e.kind = Kind::Generic;
+        e.basis = std::make_shared<const Eigen::MatrixXd>(genericBasis(g, v->values));
+        e.shape = g;
+        e.params = static_cast<int>(e.basis->cols()) * (pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3));
+        defs.push_back(std::move(e));
+        used.push_back(false);
+      }
+    }
+    int bestNamed = -1;  // a named effect that passes is preferred (keepNamedOnlyWhenNeeded)
     for (std::size_t c = 0; c < defs.size(); ++c) {
-      if (used[c]) continue;
+      if (used[c] || (defs[c].kind != Kind::Generic && (excluded.count(defs[c].name) || excluded.count(kEveryNamedEffect))))
+        continue;
+      const bool generic = defs[c].kind == Kind::Generic;
+      if (generic && bestNamed < 0) bestNamed = best;
       std::vector<EffectDef> trial = acceptedDefs;
       trial.push_back(defs[c]);
       FitState st = fitter.fit(trial, current.R, current.t);
@@ -404,14 +580,22 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
         cand.setEvidence({Phrase("not identifiable: %1 (the rigid posture explains it with these points)",
                                  {A::text({Phrase(st.est.why)})})});
       } else {
-        cand.parameters = parameters(defs[c], st.beta, st.est.covariance, at);
+        Phrases genericText;
+        cand.parameters = generic ? genericParameters(pb, defs[c], st.beta, at, vars, &genericText)
+                                  : parameters(defs[c], st.beta, st.est.covariance, at);
         cand.rmseAfter = summarise(st, nPts).rmse;
+        const double penalty = generic ? genericPenalty : 0.0;
         const AcceptanceDecision dec = decideAcceptance(acceptance, current.rss, st.rss, nObs,
-                                                        current.est.dof, defs[c].params, "mm", nPts);
-        cand.score = deltaBic(current.rss, st.rss, nObs, current.est.dof, defs[c].params);
-        cand.setEvidence({Phrase("%1; %2", {A::text(describe(cand.parameters)), A::text(dec.reasonParts)})});
-        cand.plot = makePlot(pb, defs[c], current, st);
-        if (dec.accepted && round < options.maxRounds &&
+                                                        current.est.dof, defs[c].params, "mm", nPts, penalty);
+        cand.score = deltaBic(current.rss, st.rss, nObs, current.est.dof, defs[c].params, penalty);
+        cand.setEvidence({Phrase("%1; %2", {A::text(generic ? genericText : describe(cand.parameters)),
+                                            A::text(dec.reasonParts)})});
+        if (generic) {
+          cand.generic = defs[c].shape;
+        } else {
+          cand.plot = makePlot(pb, defs[c], current, st);
+        }
+        if (dec.accepted && round < options.maxRounds && !(generic && bestNamed >= 0) &&
             (best < 0 || cand.score < roundCandidates[static_cast<std::size_t>(best)].score))
           best = static_cast<int>(roundCandidates.size());
       }
@@ -432,6 +616,9 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
       }
       used[roundDefs[b]] = true;
       acceptedDefs.push_back(defs[roundDefs[b]]);
+      complexity += defs[roundDefs[b]].params * std::log(static_cast<double>(nObs)) +
+                    (defs[roundDefs[b]].kind == Kind::Generic ? genericPenalty : 0.0);
+      if (defs[roundDefs[b]].kind == Kind::Generic) genericTaken.push_back(defs[roundDefs[b]].shape->against);
       current = std::move(states[b]);
       acceptedCandidates.push_back(win);
     } else {
@@ -447,12 +634,94 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
   // Accepted effects carry the parameters of the final joint fit.
   Eigen::Index at = 0;
   for (std::size_t j = 0; j < acceptedCandidates.size(); ++j) {
-    acceptedCandidates[j].parameters = parameters(acceptedDefs[j], current.beta, current.est.covariance, at);
+    acceptedCandidates[j].parameters =
+        acceptedDefs[j].kind == Kind::Generic
+            ? genericParameters(pb, acceptedDefs[j], current.beta, at, vars, nullptr)
+            : parameters(acceptedDefs[j], current.beta, current.est.covariance, at);
     at += acceptedDefs[j].params;
   }
   result.effects = std::move(acceptedCandidates);
   for (Candidate& c : lastRound) result.effects.push_back(std::move(c));
   result.final = summarise(current, nPts);
+  result.residualCheck = checkResidual(matchingCheckInput(pb, current, vars, orig));
+  LoopRun out;
+  out.bic = static_cast<double>(nObs) * std::log(std::max(current.rss, 1e-300) / static_cast<double>(nObs)) + complexity;
+  out.stopped = progress.stopped();
+  out.diagnosis = std::move(result);
+  return out;
+}
+
+/// The declared (rigid) fit's residual per observation, for the outlier search.
+FitState declaredFit(const ProbePointSet& set, const Problem& pb, const MatchingDiagnosisOptions& options) {
+  matching::ClosedFormOptions cf;
+  cf.locks = matching::effectiveLocks(set, {});
+  const matching::ClosedFormResult start = matching::closedFormFit(set, cf);
+  return Fitter(pb, options.maxIterations).fit({}, start.pose.rotation, start.pose.translation);
+}
+
+}  // namespace
+
+Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOptions& options,
+                           Observer* observer) {
+  requireValid(options, "matching diagnosis options");
+  const matching::DofLocks locks = matching::effectiveLocks(set, {});
+  matching::requireDeterminable(set, locks, false, matching::FitKind::LeastSquares, "matching diagnosis");
+  // Gross errors (CONTRACT.md `outliers`): found on the rigid fit's residual (robust z per
+  // coordinate, see residual_check.h), the points excluded and the loop run without them.
+  Problem pb;
+  pb.set = &set;
+  pb.mode = set.hasNormals ? Mode::Normal : (set.planar ? Mode::Planar : Mode::Full);
+  pb.perPoint = pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3);
+  pb.rigid = pb.mode == Mode::Planar ? 3 : 6;
+  for (const ProbePoint& p : set.points) pb.qMean += p.nominal;
+  pb.qMean /= static_cast<double>(set.points.size());
+  const FitState declared = declaredFit(set, pb, options);
+  std::vector<std::size_t> all(set.points.size());
+  std::iota(all.begin(), all.end(), 0);
+  ResidualCheckInput in;
+  in.residual = declared.r;
+  for (std::size_t i = 0; i < set.points.size(); ++i) {
+    for (int c = 0; c < pb.perPoint; ++c) in.unitOf.push_back(i);
+    in.unitRow.push_back(static_cast<long>(i + 1));
+    in.unitId.push_back(set.points[i].id);
+  }
+  double threshold = 0.0;
+  std::vector<Outlier> outliers = findOutliers(in, {}, &threshold);
+  std::vector<bool> excluded(set.points.size(), false);
+  for (const Outlier& o : outliers) excluded[o.unit] = true;
+  ProbePointSet kept = set;
+  kept.points.clear();
+  std::vector<std::size_t> orig;
+  for (std::size_t i = 0; i < set.points.size(); ++i)
+    if (!excluded[i]) {
+      kept.points.push_back(set.points[i]);
+      orig.push_back(i);
+    }
+  if (!outliers.empty()) {
+    // The rest must still determine the posture; otherwise keep every point.
+    try {
+      matching::requireDeterminable(kept, matching::effectiveLocks(kept, {}), false, matching::FitKind::LeastSquares,
+                                    "matching diagnosis");
+    } catch (const std::exception&) {
+      kept = set;
+      orig = all;
+      outliers.clear();
+    }
+  }
+  Diagnosis result = keepNamedOnlyWhenNeeded(
+      [&](const std::set<std::string>& ex) { return runMatching(kept, orig, options, ex, observer); });
+  if (result.residualCheck) {
+    result.residualCheck->outliers = outliers;
+    result.residualCheck->outlierThreshold = threshold;
+  }
+  if (!outliers.empty()) {
+    Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above the outlier threshold):",
+                           {A::integer(static_cast<long long>(outliers.size()))})};
+    for (const Outlier& o : outliers)
+      note.push_back(Phrase(" point %1 (row %2, %3 mm)",
+                            {A::name(o.id.value_or("")), A::integer(o.row.value_or(0)), A::number(o.residual, 3)}));
+    result.addNote(std::move(note));
+  }
   return result;
 }
 

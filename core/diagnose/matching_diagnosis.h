@@ -34,6 +34,15 @@
 // point against the surface index (ResidualPlot::categories names them); distortion -> radial
 // residual against the polar angle (deg), plus the 2D field `vectors` = (x, y, dx, dy) of the
 // in-plane residuals before the effect, in the nominal frame.
+//
+// The open world (CONTRACT.md, residual_check.h): points whose rigid-fit residual has a robust z
+// above the outlier threshold are excluded before the loop (residualCheck->outliers, with row and
+// id) unless the rest would not determine the posture. Every round also tries the generic effects
+// of the current residual's strongest structures (variables: row, nominal x, y, z, the polar angle
+// about the centroid, the surface as levels, the normal's nx, ny, nz, and surface:<s> = the
+// position along the surface's longest principal direction), as displacements along the normal (or
+// per coordinate for position-only data), under the same decision with the search penalty
+// 2 ln(tests); the lowest dBIC wins the round, named or generic.
 #include <string>
 
 #include "core/common/run.h"

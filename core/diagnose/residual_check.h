@@ -25,9 +25,10 @@
 //     form (lowest p), strongest first by share = (SSE0 - SSE1) / SSE0.
 // Outliers: robust z = |r - median(r)| / (1.4826 MAD(r)) per observation; a unit is an outlier when
 // any of its observations has z above
-//   zThreshold = outlierFactor * Phi^-1(1 - 0.005 / n)      (2 x the Gaussian family-wise 1 % bound:
-//                                                            about 7.8 at n = 100, 9.6 at n = 10^4)
-// so heavy-tailed clean noise (Laplace, Student t5) is rarely flagged while a gross error is. When
+//   zThreshold = outlierFactor * Phi^-1(1 - 0.005 / n)      (2.5 x the Gaussian family-wise 1 %
+//                                                            bound: 9.7 at n = 100, 12.2 at n = 10^4)
+// so heavy-tailed clean noise is rarely flagged while a gross error is (factor 2 flagged 16 of 200
+// Laplace sets of 100 points, 2.5 flags about 1 in 200; residual_check_test). When
 // more than `maxOutlierFraction` of the units exceed it the data are heavy-tailed or structured, not
 // spoiled by a few gross errors: none is listed. The domain refits without the outliers and checks
 // the refitted residual.
@@ -76,6 +77,9 @@ struct GenericForm {
   int levels = 0;             ///< Level: number of levels (one column per level but the first)
   double centre = 0.0;        ///< Linear / Smooth: values are centred and scaled for conditioning
   double scale = 1.0;
+  /// Vector observations (ResidualCheckInput::components): the basis is repeated per component
+  /// (observation i is component i % components), q columns each, zero on the other components.
+  int components = 1;
 };
 
 /// The basis of `form` on `values` (one row per value; no intercept column).
@@ -113,9 +117,16 @@ struct ResidualCheckInput {
   Eigen::MatrixXd modelColumns;          ///< n x p columns of the fitted model (may be 0 columns)
   std::vector<ResidualVariable> variables;
   std::vector<std::size_t> unitOf;       ///< per observation, its unit (empty: unit = observation)
+  /// Vector residuals: observation i is coordinate i % components of its unit (x, y[, z]); the
+  /// forms then have one set of columns per coordinate, and the intercept is one per coordinate.
+  int components = 1;
   /// Per unit, what identifies it in the data (empty vectors when the file has no such field).
   std::vector<long> unitRow;
   std::vector<std::string> unitPart, unitDimension, unitId;
+  /// Observations excluded as outliers (for the plot only): their residuals and, per variable (same
+  /// order as `variables`), their values.
+  std::vector<double> excludedResidual;
+  std::vector<std::vector<double>> excludedValues;
 };
 
 struct ResidualCheckOptions {
@@ -124,7 +135,7 @@ struct ResidualCheckOptions {
   int splineKnots = 5;               ///< smooth: knots (boundary included) at quantiles
   int harmonics = 4;                 ///< periodic: harmonics 1 .. harmonics
   int stepPositions = 19;            ///< step: candidate change points at quantiles
-  double outlierFactor = 2.0;        ///< see the header comment
+  double outlierFactor = 2.5;        ///< see the header comment
   double maxOutlierFraction = 0.02;  ///< more units beyond the threshold: none listed
   bool detectOutliers = true;
 
@@ -175,6 +186,19 @@ struct GenericSummary {
 };
 GenericSummary summariseGeneric(const GenericForm& form, const Eigen::VectorXd& coefficients,
                                 const std::vector<double>& values, const std::string& unit);
+
+/// The generic candidates of a loop round: the shapes of the strongest structures of `check`, at
+/// most `count`, skipping the variables named in `taken` (they have a generic effect already).
+std::vector<GenericForm> genericCandidates(const ResidualCheck& check, const std::vector<std::string>& taken,
+                                           std::size_t count = 3);
+
+/// The evidence penalty of a generic candidate for having been chosen by a search over the
+/// variables and forms of the check: 2 ln(number of tests) (the cyclic search of the kinematic
+/// loop is penalised the same way).
+double genericSearchPenalty(const ResidualCheck& check);
+
+/// The variable named `name` in `variables` (nullptr when absent).
+const ResidualVariable* findVariable(const std::vector<ResidualVariable>& variables, const std::string& name);
 
 /// The CONTRACT.md JSON of a check: {"white", "tests", "structure", "outliers"} (+ "level",
 /// "outlier_threshold", "summary").

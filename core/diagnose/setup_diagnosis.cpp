@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <set>
 
 #include <Eigen/QR>
 
 #include "core/common/error.h"
 #include "core/io/csv.h"
+#include "core/diagnose/residual_check.h"
 
 namespace metrofit::diagnose {
 namespace {
@@ -60,9 +63,79 @@ bool SetupDiagnosisOptions::isValid(std::string* why) const {
   return true;
 }
 
-Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& measurements,
-                        const SetupDiagnosisOptions& options, Observer* observer) {
-  requireValid(options, "setup diagnosis options");
+namespace {
+
+/// The residual variables of the setup rows (CONTRACT.md "The open world"): row (file order) and
+/// time (natural orders), part (one level per part), dimension (one level per dimension) and, per
+/// dimension with at least 6 rows, dimension:<d> = the part number on that dimension's rows.
+std::vector<ResidualVariable> setupVariables(const setup::Model& model, const std::vector<std::size_t>& rowDim,
+                                             const std::vector<int>& rowPart, const Eigen::VectorXd& partCol,
+                                             const Eigen::VectorXd& timeCol, const std::vector<std::size_t>& origRow,
+                                             const std::vector<std::string>& partNames) {
+  const std::size_t n = rowDim.size();
+  std::vector<ResidualVariable> vars;
+  ResidualVariable row;
+  row.name = "row";
+  row.naturalOrder = true;
+  row.label = {Phrase("data row")};
+  for (std::size_t r = 0; r < n; ++r) row.values.push_back(static_cast<double>(origRow[r] + 1));
+  vars.push_back(std::move(row));
+  ResidualVariable time;
+  time.name = "time";
+  time.naturalOrder = true;
+  time.label = {Phrase("time (min)")};
+  time.values.assign(timeCol.data(), timeCol.data() + n);
+  if (n > 0 && timeCol.maxCoeff() > timeCol.minCoeff()) vars.push_back(std::move(time));
+  ResidualVariable part;
+  part.name = "part";
+  part.kind = ResidualVariable::Kind::Category;
+  part.label = {Phrase("part")};
+  part.levels = partNames;
+  for (std::size_t r = 0; r < n; ++r) part.values.push_back(rowPart[r]);
+  vars.push_back(std::move(part));
+  ResidualVariable dim;
+  dim.name = "dimension";
+  dim.kind = ResidualVariable::Kind::Category;
+  dim.label = {Phrase("dimension")};
+  std::map<std::size_t, int> dense;
+  for (std::size_t r = 0; r < n; ++r)
+    if (!dense.count(rowDim[r])) dense[rowDim[r]] = 0;
+  int next = 0;
+  for (auto& [d, i] : dense) {
+    i = next++;
+    dim.levels.push_back(model.dimensions[d].id);
+  }
+  std::map<std::size_t, int> count;
+  for (std::size_t r = 0; r < n; ++r) {
+    dim.values.push_back(dense[rowDim[r]]);
+    ++count[rowDim[r]];
+  }
+  vars.push_back(std::move(dim));
+  for (const auto& [d, c] : count) {
+    if (c < 6) continue;
+    ResidualVariable v;
+    v.name = "dimension:" + model.dimensions[d].id;
+    v.label = {Phrase("part number (%1)", {PhraseArg::name(model.dimensions[d].id)})};
+    for (std::size_t r = 0; r < n; ++r)
+      v.values.push_back(rowDim[r] == d ? partCol(static_cast<Eigen::Index>(r)) : std::nan(""));
+    vars.push_back(std::move(v));
+  }
+  return vars;
+}
+
+ResidualCheckInput setupCheckInput(const Eigen::VectorXd& residual, const Eigen::MatrixXd& X, const Eigen::MatrixXd& Z,
+                                   std::vector<ResidualVariable> vars) {
+  ResidualCheckInput in;
+  in.residual = residual;
+  in.modelColumns.resize(X.rows(), X.cols() + Z.cols());
+  in.modelColumns << X, Z;
+  in.variables = std::move(vars);
+  return in;
+}
+
+LoopRun runSetup(const setup::Model& model, const setup::Measurements& measurements,
+                 const std::vector<std::size_t>& origRow, const SetupDiagnosisOptions& options,
+                 const std::set<std::string>& excluded, Observer* observer) {
   const std::string source = measurements.sources.empty() ? std::string() : measurements.sources.front();
   const Eigen::MatrixXd G = setup::gainMatrix(model);
   const std::size_t n = measurements.rows.size();
@@ -153,8 +226,15 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
     result.addNote(std::move(note));
   }
 
+  std::vector<std::string> slotNames;
+  for (const auto& o : ordered) slotNames.push_back(o.second);
+  const std::vector<ResidualVariable> vars = setupVariables(model, rowDim, rowPart, partCol, timeCol, origRow, slotNames);
+
   std::vector<bool> used(defs.size(), false);
   std::vector<std::size_t> acceptedDefs;
+  std::vector<std::string> genericTaken;
+  std::vector<Eigen::Index> acceptedWidth;  ///< columns of each accepted candidate in Zacc
+  double complexity = 0.0;                  ///< k ln n + search penalties of the accepted effects
   std::vector<Candidate> acceptedCandidates, lastRound;
   long tried = 0;
   LoopProgress progress(observer);
@@ -165,7 +245,7 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
     int best = -1;
     const double rmseBefore = rootMeanSquare(current.residual);
     for (std::size_t c = 0; c < defs.size(); ++c) {
-      if (used[c]) continue;
+      if (used[c] || excluded.count(defs[c].name) || excluded.count(kEveryNamedEffect)) continue;
       const CandidateDef& d = defs[c];
       Eigen::MatrixXd Z(static_cast<Eigen::Index>(n), Zacc.cols() + 1);
       Z.leftCols(Zacc.cols()) = Zacc;
@@ -220,6 +300,56 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
       estimates.push_back(std::move(est));
       roundDefs.push_back(c);
     }
+    // Generic candidates (CONTRACT.md "The open world"): the strongest structures of the current
+    // residual, each a basis of its variable, under the same evidence (plus the search penalty).
+    std::vector<Eigen::MatrixXd> genericColumns(roundCandidates.size());
+    std::vector<double> genericPenalties(roundCandidates.size(), 0.0);
+    const int bestNamed = best;  // a named effect that passes is preferred (keepNamedOnlyWhenNeeded)
+    {
+      const ResidualCheck rc = checkResidual(setupCheckInput(current.residual, X, Zacc, vars));
+      const double penalty = genericSearchPenalty(rc);
+      for (const GenericForm& g : genericCandidates(rc, genericTaken)) {
+        const ResidualVariable* v = findVariable(vars, g.against);
+        if (!v) continue;
+        const Eigen::MatrixXd Zg = genericBasis(g, v->values);
+        Eigen::MatrixXd Z(static_cast<Eigen::Index>(n), Zacc.cols() + Zg.cols());
+        Z << Zacc, Zg;
+        EffectEstimate est = estimateEffects(declared, y, Z);
+        ++tried;
+        Candidate cand;
+        cand.name = "unexplained:" + g.against;
+        cand.generic = g;
+        cand.round = round;
+        cand.rmseBefore = rmseBefore;
+        if (!est.identifiable) {
+          cand.rmseAfter = rmseBefore;
+          cand.setEvidence({Phrase("not identifiable: %1", {A::text({Phrase(est.why)})})});
+        } else {
+          const auto q = static_cast<int>(Zg.cols());
+          cand.rmseAfter = rootMeanSquare(est.residual);
+          const AcceptanceDecision dec = decideAcceptance(options.acceptance, current.rss, est.rss, n, current.dof, q,
+                                                          "mm", 0, penalty);
+          cand.score = deltaBic(current.rss, est.rss, n, current.dof, q, penalty);
+          const GenericSummary gs =
+              summariseGeneric(g, est.beta.tail(q), v->values, "mm");
+          for (const auto& [k, val] : gs.numbers) cand.parameters.push_back({k, val, std::nullopt});
+          cand.parameters.insert(cand.parameters.begin(), Parameter{"form", std::string(formName(g.form)), std::nullopt});
+          Phrases ev = gs.text;
+          ev.push_back(Phrase("; "));
+          for (const Phrase& ph : dec.reasonParts) ev.push_back(ph);
+          cand.setEvidence(std::move(ev));
+          if (dec.accepted && round < options.maxRounds && bestNamed < 0 &&
+              (best < 0 || cand.score < roundCandidates[static_cast<std::size_t>(best)].score))
+            best = static_cast<int>(roundCandidates.size());
+          cand.accepted = dec.accepted;
+        }
+        roundCandidates.push_back(std::move(cand));
+        estimates.push_back(std::move(est));
+        roundDefs.push_back(defs.size());  // not a named definition
+        genericColumns.push_back(Zg);
+        genericPenalties.push_back(penalty);
+      }
+    }
     std::vector<bool> acceptable(roundCandidates.size());
     for (std::size_t j = 0; j < roundCandidates.size(); ++j) {
       acceptable[j] = roundCandidates[j].accepted;
@@ -232,7 +362,9 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
     if (best >= 0) {
       const auto b = static_cast<std::size_t>(best);
       for (std::size_t j = 0; j < b; ++j) {
-        if (!acceptable[j] || defs[roundDefs[j]].datum != defs[roundDefs[b]].datum) continue;
+        if (!acceptable[j] || roundDefs[j] >= defs.size() || roundDefs[b] >= defs.size() ||
+            defs[roundDefs[j]].datum != defs[roundDefs[b]].datum)
+          continue;
         if (roundCandidates[j].score - roundCandidates[b].score < options.acceptance.bicThreshold) {
           preferredOver = {
               Phrase("; preferred to %1 (its dBIC is %2 lower, below the threshold: the data cannot tell "
@@ -257,11 +389,18 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
           win.addEvidence(
               {Phrase("; indistinguishable from %1 with these data", {A::name(roundCandidates[j].name)})});
       }
-      used[roundDefs[b]] = true;
-      acceptedDefs.push_back(roundDefs[b]);
-      Eigen::MatrixXd Z(static_cast<Eigen::Index>(n), Zacc.cols() + 1);
-      Z.leftCols(Zacc.cols()) = Zacc;
-      Z.col(Zacc.cols()) = column(defs[roundDefs[b]]);
+      const bool generic = roundDefs[b] >= defs.size();
+      const Eigen::MatrixXd add = generic ? genericColumns[b] : Eigen::MatrixXd(column(defs[roundDefs[b]]));
+      if (generic) {
+        genericTaken.push_back(win.generic->against);
+      } else {
+        used[roundDefs[b]] = true;
+        acceptedDefs.push_back(roundDefs[b]);
+      }
+      acceptedWidth.push_back(add.cols());
+      complexity += static_cast<double>(add.cols()) * std::log(static_cast<double>(n)) + (generic ? genericPenalties[b] : 0.0);
+      Eigen::MatrixXd Z(static_cast<Eigen::Index>(n), Zacc.cols() + add.cols());
+      Z << Zacc, add;
       Zacc = Z;
       current = std::move(estimates[b]);
       acceptedCandidates.push_back(win);
@@ -277,15 +416,117 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
     }
   }
   // Accepted effects carry the parameters of the final joint fit.
+  Eigen::Index col = 0;
   for (std::size_t j = 0; j < acceptedCandidates.size(); ++j) {
-    Parameter& p = acceptedCandidates[j].parameters.front();
-    p.value = current.beta(static_cast<Eigen::Index>(j));
-    p.standardError = std::sqrt(
-        std::max(0.0, current.covariance(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j))));
+    Candidate& c = acceptedCandidates[j];
+    const Eigen::Index w = acceptedWidth[j];
+    if (c.generic) {
+      if (const ResidualVariable* v = findVariable(vars, c.generic->against)) {
+        const GenericSummary gs = summariseGeneric(*c.generic, current.beta.segment(col, w), v->values, "mm");
+        c.parameters = {Parameter{"form", std::string(formName(c.generic->form)), std::nullopt}};
+        for (const auto& [k, val] : gs.numbers) c.parameters.push_back({k, val, std::nullopt});
+      }
+    } else {
+      Parameter& p = c.parameters.front();
+      p.value = current.beta(col);
+      p.standardError = std::sqrt(std::max(0.0, current.covariance(col, col)));
+    }
+    col += w;
   }
   result.effects = std::move(acceptedCandidates);
   for (Candidate& c : lastRound) result.effects.push_back(std::move(c));
   result.final = summarise(current.residual);
+  ResidualCheckInput in = setupCheckInput(current.residual, X, Zacc, vars);
+  for (std::size_t r = 0; r < n; ++r) {
+    in.unitRow.push_back(static_cast<long>(origRow[r] + 1));
+    in.unitPart.push_back(measurements.rows[r].part);
+    in.unitDimension.push_back(model.dimensions[rowDim[r]].id);
+  }
+  result.residualCheck = checkResidual(in);
+  LoopRun out;
+  out.bic = static_cast<double>(n) * std::log(std::max(current.rss, 1e-300) / static_cast<double>(n)) + complexity;
+  out.stopped = progress.stopped();
+  out.diagnosis = std::move(result);
+  return out;
+}
+
+/// The declared model's residual of every row (for the outlier search).
+Eigen::VectorXd declaredResidual(const setup::Model& model, const setup::Measurements& m) {
+  const Eigen::MatrixXd G = setup::gainMatrix(model);
+  const auto n = static_cast<Eigen::Index>(m.rows.size());
+  Eigen::MatrixXd X(n, G.cols());
+  Eigen::VectorXd y(n);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    const auto& row = m.rows[static_cast<std::size_t>(r)];
+    if (row.dimension >= model.dimensions.size())
+      throw ValidationError(ErrorContext{row.source, row.line, 0, "dimension"},
+                            "the report does not belong to the model (dimension index out of range)");
+    X.row(r) = G.row(static_cast<Eigen::Index>(row.dimension));
+    y(r) = row.deviationMm;
+  }
+  return ColumnSpace(X).residual(y);
+}
+
+}  // namespace
+
+Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& measurements,
+                        const SetupDiagnosisOptions& options, Observer* observer) {
+  requireValid(options, "setup diagnosis options");
+  // Gross errors (CONTRACT.md `outliers`): found on the declared model's residual (robust z, see
+  // residual_check.h), excluded, and the loop run without them. A gross error hides behind an
+  // effect only when the effect is many times larger than the noise; the final check still lists
+  // such a point as structure (a spike), not silently.
+  std::vector<bool> excluded(measurements.rows.size(), false);
+  std::vector<Outlier> outliers;
+  double threshold = 0.0;
+  auto runWithout = [&]() {
+    setup::Measurements kept = measurements;
+    kept.rows.clear();
+    std::vector<std::size_t> orig;
+    for (std::size_t r = 0; r < measurements.rows.size(); ++r)
+      if (!excluded[r]) {
+        kept.rows.push_back(measurements.rows[r]);
+        orig.push_back(r);
+      }
+    Diagnosis d = keepNamedOnlyWhenNeeded(
+        [&](const std::set<std::string>& ex) { return runSetup(model, kept, orig, options, ex, observer); });
+    return std::make_pair(std::move(d), orig);
+  };
+  auto addOutliers = [&](const Eigen::VectorXd& residual, const std::vector<std::size_t>& orig) {
+    ResidualCheckInput in;
+    in.residual = residual;
+    for (std::size_t r : orig) {
+      in.unitRow.push_back(static_cast<long>(r + 1));
+      in.unitPart.push_back(measurements.rows[r].part);
+      in.unitDimension.push_back(model.dimensions[measurements.rows[r].dimension].id);
+    }
+    std::vector<Outlier> found = findOutliers(in, {}, &threshold);
+    for (Outlier& o : found) {
+      o.unit = orig[o.unit];
+      excluded[o.unit] = true;
+      outliers.push_back(o);
+    }
+    return !found.empty();
+  };
+  if (!measurements.rows.empty()) {
+    std::vector<std::size_t> all(measurements.rows.size());
+    std::iota(all.begin(), all.end(), 0);
+    addOutliers(declaredResidual(model, measurements), all);
+  }
+  auto [result, orig] = runWithout();
+  (void)orig;
+  if (result.residualCheck) {
+    result.residualCheck->outliers = outliers;
+    result.residualCheck->outlierThreshold = threshold;
+  }
+  if (!outliers.empty()) {
+    Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above the outlier threshold):",
+                           {A::integer(static_cast<long long>(outliers.size()))})};
+    for (const Outlier& o : outliers)
+      note.push_back(Phrase(" row %1 (part %2, %3, %4 mm)", {A::integer(o.row.value_or(0)), A::name(o.part.value_or("")),
+                                                            A::name(o.dimension.value_or("")), A::number(o.residual, 3)}));
+    result.addNote(std::move(note));
+  }
   return result;
 }
 

@@ -34,6 +34,15 @@
 // Errors: ValidationError when the measurements do not belong to the model (dimension index out of
 // range), when there are fewer rows than the declared model's rank + 1; OptionsError for invalid
 // options.
+//
+// The open world (CONTRACT.md, residual_check.h): rows whose declared-model residual has a robust z
+// above the outlier threshold are excluded before the loop (Diagnosis::residualCheck->outliers, with
+// row, part and dimension). Every round also tries the generic effects of the current residual's
+// strongest structures (variables: row and time in file order, part and dimension as levels, and
+// dimension:<d> = the part number on the rows of dimension d), each its basis as extra columns,
+// under the same decision with an extra penalty 2 ln(tests) for the search; the winner of the round
+// is the candidate with the lowest dBIC, so a named effect is given only when it explains the data
+// at least as well as the generic alternative. The final residual's check is in residualCheck.
 #include <string>
 
 #include "core/common/run.h"

@@ -205,7 +205,13 @@ TEST(DiagnosisTextTest, StopNotesComeFromTheSharedProgressHelper) {
   ASSERT_GE(seen.size(), 4u);
   EXPECT_EQ(seen[0].iteration, 0);
   EXPECT_EQ(seen[0].evaluations, 1);
-  EXPECT_DOUBLE_EQ(seen[3].progress, 1.0);
+  // The last candidate of round 0 (four named ones and the generic effects of the residual's
+  // structures) completes the round.
+  std::size_t lastOfRound0 = 0;
+  for (std::size_t i = 0; i < seen.size(); ++i)
+    if (seen[i].components.at(0).value == 0.0) lastOfRound0 = i;
+  EXPECT_GE(lastOfRound0, 3u);
+  EXPECT_DOUBLE_EQ(seen[lastOfRound0].progress, 1.0);
   EXPECT_EQ(seen[0].components.at(1).name, "rmse_mm");
   seen.clear();
   (void)setupDemo(&record);

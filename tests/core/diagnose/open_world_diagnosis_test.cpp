@@ -1,0 +1,206 @@
+// The open world of the closed loop (CONTRACT.md "The open world") in the setup, matching and
+// kinematic domains: effects that no catalogue entry models are added here, in the test, to clean
+// simulated data (not by the project's effect simulators), and the loop must not name a catalogue
+// effect for them; it must flag or explain the structure. Gross errors are listed as outliers with
+// their row; clean data stay white with nothing accepted.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/common/rng.h"
+#include "core/diagnose/kinematic_diagnosis.h"
+#include "core/diagnose/matching_diagnosis.h"
+#include "core/diagnose/setup_diagnosis.h"
+#include "core/io/csv.h"
+#include "core/setup/report.h"
+#include "core/sim/circular_sim.h"
+#include "core/sim/effects_setup.h"
+#include "core/sim/probe_sim.h"
+#include "testsupport.h"
+
+namespace metrofit::diagnose {
+namespace {
+
+std::string describe(const Diagnosis& d) {
+  return toJson(d).dump(1).substr(0, 6000);
+}
+
+/// A catalogue (named) effect was accepted.
+bool catalogueAccepted(const Diagnosis& d) {
+  for (const Candidate* c : d.accepted())
+    if (!c->generic) return true;
+  return false;
+}
+
+/// Structure flagged (residual not white) or explained by a generic effect.
+bool flaggedOrExplained(const Diagnosis& d) {
+  for (const Candidate* c : d.accepted())
+    if (c->generic) return true;
+  return d.residualCheck && !d.residualCheck->white;
+}
+
+// ---- setup --------------------------------------------------------------------------------------
+
+setup::Model paperModel() {
+  return setup::readModel((test::sourceDir() / "resources/demo/setup/paper_example.json").string());
+}
+
+constexpr double kW2 = 0.01;  // uniform noise +-w2
+const double kSigma = kW2 / std::sqrt(3.0);
+
+setup::Measurements cleanSetup(const setup::Model& model, std::uint64_t seed, int parts = 12) {
+  SetupEffectsSimOptions o;
+  o.base.w1 = 0.03;
+  o.base.w2 = kW2;
+  o.base.parts = parts;
+  o.base.minutesPerPart = 12.0;
+  o.base.resolutionMm = 0.0001;
+  o.base.seed = seed;
+  return setup::cmmReportFromCsv(parseCsv(simulateSetupEffectsReport(model, o), "sim.csv"), model);
+}
+
+TEST(OpenWorldSetup, CleanReportsAreWhiteWithNothingAccepted) {
+  const setup::Model model = paperModel();
+  int flagged = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Diagnosis d = diagnoseSetup(model, cleanSetup(model, seed));
+    ASSERT_TRUE(d.residualCheck.has_value());
+    EXPECT_TRUE(d.accepted().empty()) << "seed " << seed << "\n" << describe(d);
+    EXPECT_TRUE(d.residualCheck->outliers.empty()) << "seed " << seed;
+    if (!d.residualCheck->white) ++flagged;
+  }
+  EXPECT_LE(flagged, 1);
+}
+
+TEST(OpenWorldSetup, AStepOfOneDimensionAfterARefixtureIsNotCalledWearOrDrift) {
+  // From part 7 on, one dimension sits 6 sigma higher (the part was re-clamped against a chip): a
+  // step in the part number of that dimension, which neither tool wear nor drift (linear) models.
+  const setup::Model model = paperModel();
+  int ok = 0;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    setup::Measurements m = cleanSetup(model, seed);
+    const std::size_t dim = m.rows.front().dimension;
+    for (auto& r : m.rows)
+      if (r.dimension == dim && std::stoi(r.part) >= 7) r.deviationMm += 6.0 * kSigma;
+    const Diagnosis d = diagnoseSetup(model, m);
+    EXPECT_FALSE(catalogueAccepted(d)) << "seed " << seed << "\n" << describe(d);
+    if (flaggedOrExplained(d)) ++ok;
+  }
+  EXPECT_GE(ok, 4);
+}
+
+TEST(OpenWorldSetup, AGrossCmmErrorIsListedWithItsRowAndExcluded) {
+  const setup::Model model = paperModel();
+  setup::Measurements m = cleanSetup(model, 4);
+  m.rows[37].deviationMm += 40.0 * kSigma;
+  const Diagnosis d = diagnoseSetup(model, m);
+  ASSERT_TRUE(d.residualCheck.has_value());
+  ASSERT_EQ(d.residualCheck->outliers.size(), 1u) << describe(d);
+  const Outlier& o = d.residualCheck->outliers.front();
+  ASSERT_TRUE(o.row.has_value());
+  EXPECT_EQ(*o.row, 38);
+  EXPECT_EQ(o.part.value_or(""), m.rows[37].part);
+  EXPECT_EQ(o.dimension.value_or(""), model.dimensions[m.rows[37].dimension].id);
+  EXPECT_NEAR(o.residual, 40.0 * kSigma, 8.0 * kSigma);
+  EXPECT_TRUE(d.accepted().empty()) << describe(d);
+  EXPECT_TRUE(d.residualCheck->white) << describe(d);
+  const nlohmann::json j = toJson(d);
+  ASSERT_TRUE(j.contains("residual_check"));
+  EXPECT_EQ(j["residual_check"]["outliers"][0]["row"], 38);
+}
+
+// ---- kinematic ----------------------------------------------------------------------------------
+
+MeasuredPath cleanCircle(std::uint64_t seed) {
+  CircularSimOptions o;
+  o.seed = seed;
+  return simulateCircularTest(o);
+}
+
+TEST(OpenWorldKinematic, CleanCircularTestsAreWhite) {
+  int flagged = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const Diagnosis d = diagnoseKinematic(cleanCircle(seed), {});
+    ASSERT_TRUE(d.residualCheck.has_value());
+    EXPECT_TRUE(d.accepted().empty()) << "seed " << seed << "\n" << describe(d);
+    if (!d.residualCheck->white) ++flagged;
+  }
+  EXPECT_LE(flagged, 1);
+}
+
+TEST(OpenWorldKinematic, ThermalDriftDuringTheTestIsNotBacklash) {
+  // The machine warms up during the test: the x position drifts linearly with time (row), by 8
+  // noise sigmas over the two loops, and y by half of that.
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    MeasuredPath p = cleanCircle(seed);
+    const double sigma = CircularSimOptions{}.noiseMm;
+    const double n = static_cast<double>(p.size());
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      p.measured[k].x() += 8.0 * sigma * k / n;
+      p.measured[k].y() += 4.0 * sigma * k / n;
+    }
+    const Diagnosis d = diagnoseKinematic(p, {});
+    EXPECT_FALSE(catalogueAccepted(d)) << "seed " << seed << "\n" << describe(d);
+    EXPECT_TRUE(flaggedOrExplained(d)) << "seed " << seed << "\n" << describe(d);
+  }
+}
+
+TEST(OpenWorldKinematic, AGrossPointIsAnOutlier) {
+  MeasuredPath p = cleanCircle(2);
+  p.measured[100].x() += 0.02;  // 40 sigma
+  const Diagnosis d = diagnoseKinematic(p, {});
+  ASSERT_TRUE(d.residualCheck.has_value());
+  ASSERT_EQ(d.residualCheck->outliers.size(), 1u) << describe(d);
+  EXPECT_EQ(d.residualCheck->outliers.front().row.value_or(0), 101);
+  EXPECT_TRUE(d.accepted().empty()) << describe(d);
+}
+
+// ---- matching -----------------------------------------------------------------------------------
+
+TEST(OpenWorldMatching, CleanBlocksAreWhite) {
+  int flagged = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    ProbeSimOptions o;
+    o.seed = seed;
+    const Diagnosis d = diagnoseMatching(simulateProbing(o));
+    ASSERT_TRUE(d.residualCheck.has_value());
+    EXPECT_TRUE(d.accepted().empty()) << "seed " << seed << "\n" << describe(d);
+    if (!d.residualCheck->white) ++flagged;
+  }
+  EXPECT_LE(flagged, 1);
+}
+
+TEST(OpenWorldMatching, AThinPartBendingUnderTheClampIsNotScaleOrOffset) {
+  // The block sags between its clamps: a deviation along the normal that is quadratic in x
+  // (largest in the middle), 10 noise sigmas at the middle.
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    ProbeSimOptions o;
+    o.seed = seed;
+    ProbePointSet s = simulateProbing(o);
+    const double half = o.length / 2.0;
+    for (ProbePoint& p : s.points) {
+      const double u = (p.nominal.x() - half) / half;  // -1 .. 1 along the block
+      p.measured += 10.0 * o.noiseMm * (1.0 - u * u) * p.normal;
+    }
+    const Diagnosis d = diagnoseMatching(s);
+    EXPECT_FALSE(catalogueAccepted(d)) << "seed " << seed << "\n" << describe(d);
+    EXPECT_TRUE(flaggedOrExplained(d)) << "seed " << seed << "\n" << describe(d);
+  }
+}
+
+TEST(OpenWorldMatching, AGrossProbingErrorIsListedWithItsId) {
+  ProbeSimOptions o;
+  o.seed = 3;
+  ProbePointSet s = simulateProbing(o);
+  s.points[5].measured += 40.0 * o.noiseMm * s.points[5].normal;
+  const Diagnosis d = diagnoseMatching(s);
+  ASSERT_TRUE(d.residualCheck.has_value());
+  ASSERT_EQ(d.residualCheck->outliers.size(), 1u) << describe(d);
+  EXPECT_EQ(d.residualCheck->outliers.front().id.value_or(""), s.points[5].id);
+  EXPECT_EQ(d.residualCheck->outliers.front().row.value_or(0), 6);
+  EXPECT_TRUE(d.accepted().empty()) << describe(d);
+}
+
+}  // namespace
+}  // namespace metrofit::diagnose
