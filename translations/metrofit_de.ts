@@ -5822,6 +5822,26 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>%1 gross errors excluded before the fit (robust z above %2):</source>
+        <translation>%1 grobe Fehler vor der Anpassung ausgeschlossen (robustes z über %2):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (%2%3)</source>
+        <translation> Zeile %1 (%2%3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the generic %1 validates better (%2 against %3%4)</source>
+        <translation>; abgelehnt: der generische Effekt %1 validiert besser (%2 gegen %3%4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the fit rows do not determine tau (standard error above half of it)</source>
+        <translation>; abgelehnt: die Anpassungszeilen bestimmen tau nicht (Standardfehler über der Hälfte)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) and the candidate effects</source>
         <translation>deklariertes Modell %1 von %2 (angepasst an die ersten %3 von %4 Zeilen wie bei thermal fit; allein: rmse Anpassung %5, rmse Testdaten %6%7); die Schleife passt die Zielgröße an seine Vorhersage (Koeffizient %8) und die Kandidateneffekte an</translation>
     </message>

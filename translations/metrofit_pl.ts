@@ -5835,6 +5835,26 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>%1 gross errors excluded before the fit (robust z above %2):</source>
+        <translation>%1 błędów grubych wykluczonych przed dopasowaniem (odporne z powyżej %2):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (%2%3)</source>
+        <translation> wiersz %1 (%2%3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the generic %1 validates better (%2 against %3%4)</source>
+        <translation>; odrzucony: efekt ogólny %1 lepiej się waliduje (%2 wobec %3%4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the fit rows do not determine tau (standard error above half of it)</source>
+        <translation>; odrzucony: wiersze dopasowania nie wyznaczają tau (błąd standardowy powyżej połowy)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) and the candidate effects</source>
         <translation>zadeklarowany model %1 z %2 (dopasowany do pierwszych %3 z %4 wierszy jak w thermal fit; sam: rmse dopasowania %5, rmse danych testowych %6%7); pętla dopasowuje wielkość docelową do jego predykcji (współczynnik %8) i efektów kandydujących</translation>
     </message>

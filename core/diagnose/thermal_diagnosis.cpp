@@ -47,11 +47,12 @@ PhraseArg pct(double before, double after) {
 /// every fit of the thermal study that includes applied effects).
 struct State {
   ThermalEffectSet effects;
+  std::vector<int> generics;  ///< accepted generic effects (Problem::generic indices)
 };
 
 bool operator==(const State& a, const State& b) {
   return a.effects.lagAll == b.effects.lagAll && a.effects.lagCol == b.effects.lagCol &&
-         a.effects.extra == b.effects.extra && a.effects.drift == b.effects.drift;
+         a.effects.extra == b.effects.extra && a.effects.drift == b.effects.drift && a.generics == b.generics;
 }
 
 /// One model state per view: views 0..K-1 are the validation folds, view K the fit on all fit rows.
@@ -127,7 +128,8 @@ struct Fit {
 /// A fit's residual on every row (y - prediction) and its summaries.
 struct Residual {
   std::vector<double> r;
-  double maxAbs = 0.0;  ///< fit rows
+  double maxAbs = 0.0;          ///< fit rows
+  std::vector<char> excluded;  ///< per row: a gross error excluded from the fits
 };
 
 class Problem {
@@ -158,28 +160,60 @@ class Problem {
     y0_ = y_.empty() ? 0.0 : y_[0];
     yc_.resize(n_);
     for (std::size_t k = 0; k < n_; ++k) yc_[k] = y_[k] - y0_;
-    ySum_.assign(edge_.size() - 1, 0.0);
-    yy_.assign(edge_.size() - 1, 0.0);
-    for (std::size_t b = 0; b + 1 < edge_.size(); ++b)
-      for (std::size_t k = edge_[b]; k < edge_[b + 1]; ++k) {
-        ySum_[b] += yc_[k];
-        yy_[b] += yc_[k] * yc_[k];
-      }
+    w_.assign(n_, 1.0);
     const std::size_t m = (n_ + kCoarseRows - 1) / kCoarseRows;
     coarse_ = m > 1;
     if (coarse_) {
-      yyCoarse_.assign(edge_.size() - 1, 0.0);
       for (std::size_t b = 0; b + 1 < edge_.size(); ++b) {
         gOfBlock_.push_back(gEdge_.size());
         for (std::size_t k = edge_[b]; k < edge_[b + 1]; k += m) gEdge_.push_back(k);
       }
       gOfBlock_.push_back(gEdge_.size());
       gEdge_.push_back(n_);
-      yMean_ = groupMeans(yc_);
       gTime_ = groupMeans(log_.timeMin);
-      for (std::size_t b = 0; b + 1 < edge_.size(); ++b)
-        for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g)
-          yyCoarse_[b] += static_cast<double>(gEdge_[g + 1] - gEdge_[g]) * yMean_[g] * yMean_[g];
+    }
+    prepareSums();
+  }
+
+  /// Excludes rows (gross errors of the target, 0-based) from every fit: weight 0 in every sum.
+  void exclude(const std::vector<std::size_t>& rows) {
+    for (std::size_t k : rows) w_[k] = 0.0;
+    store_.clear();
+    dots_.clear();
+    temporary_.clear();
+    prepareSums();
+  }
+  bool excluded(std::size_t k) const { return w_[k] == 0.0; }
+
+  /// The weighted per-block counts and sums of the target (full and coarse resolution).
+  void prepareSums() {
+    const std::size_t B = edge_.size() - 1;
+    blockN_.assign(B, 0.0);
+    ySum_.assign(B, 0.0);
+    yy_.assign(B, 0.0);
+    for (std::size_t b = 0; b < B; ++b)
+      for (std::size_t k = edge_[b]; k < edge_[b + 1]; ++k) {
+        blockN_[b] += w_[k];
+        ySum_[b] += w_[k] * yc_[k];
+        yy_[b] += w_[k] * yc_[k] * yc_[k];
+      }
+    fitN_ = 0.0;
+    for (std::size_t b = 0; b + 1 < B; ++b) fitN_ += blockN_[b];
+    if (coarse_) {
+      const std::size_t G = gEdge_.size() - 1;
+      gW_.assign(G, 0.0);
+      yMean_.assign(G, 0.0);
+      for (std::size_t g = 0; g < G; ++g) {
+        double s = 0.0;
+        for (std::size_t k = gEdge_[g]; k < gEdge_[g + 1]; ++k) {
+          gW_[g] += w_[k];
+          s += w_[k] * yc_[k];
+        }
+        yMean_[g] = gW_[g] > 0.0 ? s / gW_[g] : 0.0;
+      }
+      yyCoarse_.assign(B, 0.0);
+      for (std::size_t b = 0; b < B; ++b)
+        for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g) yyCoarse_[b] += gW_[g] * yMean_[g] * yMean_[g];
     }
   }
 
@@ -283,6 +317,32 @@ class Problem {
     }
     for (const auto& e : s.effects.extra) out.push_back({"extra:" + e, "input:" + e});
     if (s.effects.drift) out.push_back({"drift", "drift"});
+    for (int i : s.generics) {
+      const auto& g = generic_[static_cast<std::size_t>(i)];
+      for (Eigen::Index j = 0; j < g.basis.cols(); ++j)
+        out.push_back({"gen:" + std::to_string(i) + ":" + std::to_string(j),
+                       "unexplained:" + g.form.against + "#" + std::to_string(j)});
+    }
+    return out;
+  }
+
+  /// A generic effect's fixed shape and its basis on every row.
+  struct Generic {
+    GenericForm form;
+    Eigen::MatrixXd basis;
+    std::vector<double> values;  ///< the variable on every row
+  };
+  /// Registers a generic effect (its basis on every row, so that held-out rows are predicted too).
+  int addGeneric(const GenericForm& f, const std::vector<double>& values) const {
+    generic_.push_back({f, genericBasis(f, values), values});
+    return static_cast<int>(generic_.size()) - 1;
+  }
+  const Generic& generic(int i) const { return generic_[static_cast<std::size_t>(i)]; }
+
+  /// The full view's columns of a state (for the residual check's model columns).
+  std::vector<const std::vector<double>*> columnValues(const State& s) const {
+    std::vector<const std::vector<double>*> out;
+    for (const ColumnSpec& c : columns(s, fullView())) out.push_back(&column(c.key).v);
     return out;
   }
 
@@ -311,6 +371,11 @@ class Problem {
       raw = log_.timeMin;
     } else if (key.starts_with("pred:")) {
       raw = pred_[static_cast<std::size_t>(std::stoi(key.substr(5)))];
+    } else if (key.starts_with("gen:")) {
+      const std::size_t colon = key.find(':', 4);
+      const Generic& g = generic_[static_cast<std::size_t>(std::stoi(key.substr(4, colon - 4)))];
+      const Eigen::VectorXd c = g.basis.col(std::stoi(key.substr(colon + 1)));
+      raw.assign(c.data(), c.data() + c.size());
     } else {  // lag:<col>@<tau>
       const std::size_t at = key.rfind('@');
       const std::vector<double>& x = log_.channel(key.substr(4, at - 4)).values;
@@ -336,8 +401,8 @@ class Problem {
       for (std::size_t b = 0; b + 1 < edge_.size(); ++b) {
         double s = 0.0, sy = 0.0;
         for (std::size_t k = edge_[b]; k < edge_[b + 1]; ++k) {
-          s += c.v[k];
-          sy += c.v[k] * yc_[k];
+          s += w_[k] * c.v[k];
+          sy += w_[k] * c.v[k] * yc_[k];
         }
         c.sum[b] = s;
         c.dotY[b] = sy;
@@ -348,9 +413,8 @@ class Problem {
       for (std::size_t g = 0; g < G; ++g) c.v[g] = raw[g] - c.shift;  // (raw has G values here)
       for (std::size_t b = 0; b + 1 < edge_.size(); ++b)
         for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g) {
-          const double w = static_cast<double>(gEdge_[g + 1] - gEdge_[g]);
-          c.sum[b] += w * c.v[g];
-          c.dotY[b] += w * c.v[g] * yMean_[g];
+          c.sum[b] += gW_[g] * c.v[g];
+          c.dotY[b] += gW_[g] * c.v[g] * yMean_[g];
         }
     }
     c.pinned = pin;
@@ -367,13 +431,13 @@ class Problem {
     if (!a.starts_with("~")) {
       for (std::size_t blk = 0; blk + 1 < edge_.size(); ++blk) {
         double s = 0.0;
-        for (std::size_t k = edge_[blk]; k < edge_[blk + 1]; ++k) s += x[k] * y[k];
+        for (std::size_t k = edge_[blk]; k < edge_[blk + 1]; ++k) s += w_[k] * x[k] * y[k];
         d[blk] = s;
       }
     } else {
       for (std::size_t blk = 0; blk + 1 < edge_.size(); ++blk)
         for (std::size_t g = gOfBlock_[blk]; g < gOfBlock_[blk + 1]; ++g)
-          d[blk] += static_cast<double>(gEdge_[g + 1] - gEdge_[g]) * x[g] * y[g];
+          d[blk] += gW_[g] * x[g] * y[g];
     }
     return dots_.emplace(key, std::move(d)).first->second;
   }
@@ -445,11 +509,11 @@ class Problem {
     const std::vector<double>& yy = coarse && coarse_ ? yyCoarse_ : yy_;
     if (specs.empty()) return g;  // a fold whose grey model could not be fitted
     const auto p = static_cast<Eigen::Index>(specs.size());
-    const auto nf = static_cast<Eigen::Index>(nFit_);
+    const double nf = fitN_;
     for (const auto& c : specs) g.names.push_back(c.name);
-    if (nf < p + 3) {
+    if (nf < static_cast<double>(p + 3)) {
       g.why = Phrase("too few fit rows (%1) for %2 coefficients",
-                     {A::integer(static_cast<long long>(nFit_)), A::integer(p + 1)});
+                     {A::integer(std::llround(nf)), A::integer(p + 1)});
       return g;
     }
     const std::size_t B = edge_.size() - 1, fitBlocks = B - 1;
@@ -471,8 +535,8 @@ class Problem {
         s1 += col[jj]->sum[b];
         s2 += (*P[jj][jj])[b];
       }
-      g.mean(j) = s1 / static_cast<double>(nf);
-      g.sd(j) = std::sqrt(std::max(0.0, s2 / static_cast<double>(nf) - g.mean(j) * g.mean(j)));
+      g.mean(j) = s1 / nf;
+      g.sd(j) = std::sqrt(std::max(0.0, s2 / nf - g.mean(j) * g.mean(j)));
       if (!(g.sd(j) > 1e-12 * std::max(1.0, std::abs(g.mean(j) + col[jj]->shift)))) {
         g.why = Phrase("column '%1' is constant on the fit rows", {A::name(g.names[jj])});
         return g;
@@ -480,11 +544,11 @@ class Problem {
     }
     double sy = 0.0;
     for (std::size_t b = 0; b < fitBlocks; ++b) sy += ySum_[b];
-    const double ybar = sy / static_cast<double>(nf);
+    const double ybar = sy / nf;
     g.ybar = ybar + y0_;
     const Eigen::Index q = p + 2;
     for (std::size_t b = 0; b < B; ++b) {
-      const double nb = static_cast<double>(edge_[b + 1] - edge_[b]);
+      const double nb = coarse && coarse_ ? coarseN(b) : blockN_[b];
       Eigen::MatrixXd G(q, q);
       G(0, 0) = nb;
       for (Eigen::Index i = 0; i < p; ++i) {
@@ -513,15 +577,26 @@ class Problem {
     return G;
   }
 
-  std::size_t blockRows(int b) const { return edge_[static_cast<std::size_t>(b) + 1] - edge_[static_cast<std::size_t>(b)]; }
-  std::size_t rowsUpTo(int last) const { return edge_[static_cast<std::size_t>(last) + 1]; }
+  /// Rows (weights) of block b and of blocks [0, last].
+  double blockRows(int b) const { return blockN_[static_cast<std::size_t>(b)]; }
+  double rowsUpTo(int last) const {
+    double s = 0.0;
+    for (int b = 0; b <= last; ++b) s += blockN_[static_cast<std::size_t>(b)];
+    return s;
+  }
+  double coarseN(std::size_t b) const {
+    double s = 0.0;
+    for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g) s += gW_[g];
+    return s;
+  }
+  double fitCount() const { return fitN_; }
 
   /// The sum of squares a view minimises on its own rows (fold f: blocks 0..f; full view: the fit
   /// rows); infinite when the view cannot be fitted.
   double viewSse(const Grams& g, int view) const {
     if (!g.ok) return kInf;
     const auto q = static_cast<std::size_t>(g.block[0].rows() - 1);
-    if (rowsUpTo(view) < q + 1) return kInf;
+    if (rowsUpTo(view) < static_cast<double>(q + 1)) return kInf;
     const Solution s = solveGram(sumBlocks(g, view));
     if (view == fullView() && s.rank < static_cast<int>(q)) return kInf;
     return s.sse;
@@ -542,13 +617,13 @@ class Problem {
       f.why = Phrase("the columns are linearly dependent on the fit rows");
       return f;
     }
-    const double nf = static_cast<double>(nFit_);
+    const double nf = fitN_;
     f.names = full.names;
     f.sse = s.sse;
     f.rmse = std::sqrt(s.sse / nf);
     f.s2 = s.sse / (nf - static_cast<double>(q));
-    const std::size_t nHeld = n_ - nFit_;
-    f.heldout = nHeld > 0 ? std::sqrt(sseOn(full.block.back(), s.b) / static_cast<double>(nHeld)) : 0.0;
+    const double nHeld = blockN_.back();
+    f.heldout = nHeld > 0.0 ? std::sqrt(sseOn(full.block.back(), s.b) / nHeld) : 0.0;
     f.beta.resize(p);
     f.se.resize(p);
     for (Eigen::Index j = 0; j < p; ++j) {
@@ -564,15 +639,15 @@ class Problem {
     bool cvOk = true;
     for (int v = 0; v < folds() && cvOk; ++v) {
       const Grams& gv = *g[static_cast<std::size_t>(v)];
-      const std::size_t nv = blockRows(v + 1);
-      if (nv == 0) continue;
-      if (!gv.ok || rowsUpTo(v) < static_cast<std::size_t>(q) + 1) {
+      const double nv = blockRows(v + 1);
+      if (nv == 0.0) continue;
+      if (!gv.ok || rowsUpTo(v) < static_cast<double>(q + 1)) {
         cvOk = false;
         break;
       }
       const Solution sv = solveGram(sumBlocks(gv, v));
       vSse += sseOn(gv.block[static_cast<std::size_t>(v) + 1], sv.b);
-      vRows += static_cast<double>(nv);
+      vRows += nv;
     }
     f.cvOk = cvOk && vRows > 0.0;
     f.cv = f.cvOk ? std::sqrt(vSse / vRows) : kInf;
@@ -584,6 +659,8 @@ class Problem {
   Residual residual(const State& s, const Fit& f) const {
     Residual out;
     out.r.assign(n_, 0.0);
+    out.excluded.assign(n_, 0);
+    for (std::size_t k = 0; k < n_; ++k) out.excluded[k] = w_[k] == 0.0;
     const std::vector<ColumnSpec> specs = columns(s, fullView());
     std::vector<const Column*> col;
     for (const auto& c : specs) col.push_back(&column(c.key));
@@ -594,7 +671,7 @@ class Problem {
         pred += f.coef(jj + 1) * (col[j]->v[k] - f.mean(jj)) / f.sd(jj);
       }
       out.r[k] = y_[k] - pred;
-      if (k < nFit_) out.maxAbs = std::max(out.maxAbs, std::abs(out.r[k]));
+      if (k < nFit_ && w_[k] > 0.0) out.maxAbs = std::max(out.maxAbs, std::abs(out.r[k]));
     }
     sweep();
     return out;
@@ -617,8 +694,12 @@ class Problem {
   // each block, their means weighted by their sizes; m = 1 (no coarse search) up to kCoarseRows rows.
   bool coarse_ = false;
   std::vector<std::size_t> gEdge_, gOfBlock_;
-  std::vector<double> yMean_, yyCoarse_, gTime_;
+  std::vector<double> yMean_, yyCoarse_, gTime_, gW_;
+  std::vector<double> w_;       ///< per row: 0 for an excluded gross error, else 1
+  std::vector<double> blockN_;  ///< per block: the rows not excluded
+  double fitN_ = 0.0;           ///< fit rows not excluded
   mutable std::map<std::string, std::vector<double>> coarseInput_;  ///< group means of lagged inputs
+  mutable std::vector<Generic> generic_;
   mutable std::map<std::string, Column> store_;
   mutable std::map<std::pair<std::string, std::string>, std::vector<double>> dots_;
   mutable std::vector<std::string> temporary_;
@@ -804,9 +885,13 @@ ErrorSummary summaryOf(const Fit& f, const Residual& r) {
 }
 
 double noiseLevel(const Residual& res, std::size_t nFit) {
-  double s = 0.0;
-  for (std::size_t k = 1; k < nFit; ++k) s += std::pow(res.r[k] - res.r[k - 1], 2);
-  return nFit > 1 ? std::sqrt(s / static_cast<double>(nFit - 1) / 2.0) : 0.0;
+  double s = 0.0, m = 0.0;
+  for (std::size_t k = 1; k < nFit; ++k)
+    if (!res.excluded[k] && !res.excluded[k - 1]) {
+      s += std::pow(res.r[k] - res.r[k - 1], 2);
+      m += 1.0;
+    }
+  return m > 0.0 ? std::sqrt(s / m / 2.0) : 0.0;
 }
 
 void validate(const ThermalLog& log, const ThermalDiagnosisOptions& o) {
@@ -871,8 +956,25 @@ void linearParameters(const ThermalLog& log, const std::string& name, const Fit&
   }
 }
 
+/// Parameters of a generic effect (residual_check.h summariseGeneric: form, rms, range, ...) from a
+/// fit that contains its columns.
+void genericParameters(const Problem& pb, int index, const Fit& f, const std::string& u, Eval& e) {
+  const auto& g = pb.generic(index);
+  const std::string prefix = "unexplained:" + g.form.against + "#";
+  Eigen::VectorXd b(g.basis.cols());
+  for (Eigen::Index j = 0; j < b.size(); ++j) {
+    const auto c = coefficientOf(f, prefix + std::to_string(j));
+    b(j) = c ? c->first : 0.0;
+  }
+  const GenericSummary gs = summariseGeneric(g.form, b, g.values, u.empty() ? "" : u.substr(1));
+  e.parameters = {Parameter{"form", std::string(formName(g.form.form)), std::nullopt}};
+  for (const auto& [k, v] : gs.numbers) e.parameters.push_back({k, v, std::nullopt});
+  e.paramText = gs.text;
+}
+
 Eval evaluateCandidate(const Problem& pb, const ThermalLog& log, const ThermalDiagnosisOptions& o,
-                       const std::string& name, const Views& base, const std::string& u, double lagHint = 0.0) {
+                       const std::string& name, const Views& base, const std::string& u, double lagHint = 0.0,
+                       int genericIndex = -1) {
   Eval e;
   e.next = base;
   if (isLag(name)) {
@@ -891,6 +993,10 @@ Eval evaluateCandidate(const Problem& pb, const ThermalLog& log, const ThermalDi
     e.parameters = {{"tau_min", tau, le.se}};
     e.paramText = {le.se ? Phrase("tau %1 +- %2 min", {num(tau), num(*le.se, 2)})
                          : Phrase("tau %1 min", {num(tau)})};
+  } else if (genericIndex >= 0) {
+    for (State& s : e.next) s.generics.push_back(genericIndex);
+    e.fit = fitViews(pb, e.next);
+    if (e.fit.ok) genericParameters(pb, genericIndex, e.fit, u, e);
   } else {
     for (State& s : e.next) {
       if (name == "drift")
@@ -921,6 +1027,78 @@ bool determined(const Eval& e) {
 std::vector<PhraseArg> figureArgs(const Fit& cur, const Fit& f, const std::string& u) {
   return {num(cur.cv),   num(f.cv),   A::unit(u),        pct(cur.cv, f.cv),
           num(cur.rmse), num(f.rmse), num(cur.heldout), num(f.heldout)};
+}
+
+/// The variables the residual may depend on (CONTRACT.md `against`), on every row: time (its
+/// natural order), row (file order), and every numeric column of the log but the target (declared
+/// inputs too: a non-linear dependence on a declared input is structure the model lacks).
+std::vector<ResidualVariable> residualVariables(const ThermalLog& log, const std::string& target) {
+  std::vector<ResidualVariable> vars;
+  ResidualVariable t;
+  t.name = "time";
+  t.values = log.timeMin;
+  t.naturalOrder = true;
+  t.label = {Phrase("time (min)")};
+  vars.push_back(std::move(t));
+  ResidualVariable r;
+  r.name = "row";
+  for (std::size_t k = 0; k < log.rows(); ++k) r.values.push_back(static_cast<double>(k + 1));
+  r.label = {Phrase("data row")};
+  vars.push_back(std::move(r));
+  for (const auto& c : log.channels) {
+    if (c.name == target) continue;
+    ResidualVariable v;
+    v.name = c.name;
+    v.values = c.values;
+    v.label = {Phrase("%1", {A::name(c.name)})};
+    vars.push_back(std::move(v));
+  }
+  return vars;
+}
+
+/// The residual check (residual_check.h) of a state's fit on the fit rows that were not excluded.
+ResidualCheck checkOf(const Problem& pb, const State& s, const Residual& res, const std::vector<ResidualVariable>& vars) {
+  std::vector<std::size_t> rows;
+  for (std::size_t k = 0; k < pb.fitRows(); ++k)
+    if (!res.excluded[k]) rows.push_back(k);
+  const auto m = static_cast<Eigen::Index>(rows.size());
+  ResidualCheckInput in;
+  in.residual.resize(m);
+  const auto cols = pb.columnValues(s);
+  in.modelColumns.resize(m, static_cast<Eigen::Index>(cols.size()));
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const std::size_t k = rows[static_cast<std::size_t>(i)];
+    in.residual(i) = res.r[k];
+    for (std::size_t j = 0; j < cols.size(); ++j) in.modelColumns(i, static_cast<Eigen::Index>(j)) = (*cols[j])[k];
+    in.unitRow.push_back(static_cast<long>(k + 1));
+  }
+  for (const ResidualVariable& v : vars) {
+    ResidualVariable w = v;
+    w.values.clear();
+    for (std::size_t k : rows) w.values.push_back(v.values[k]);
+    in.variables.push_back(std::move(w));
+  }
+  for (std::size_t k = 0; k < pb.fitRows(); ++k)
+    if (res.excluded[k]) {
+      in.excludedResidual.push_back(res.r[k]);
+    }
+  if (!in.excludedResidual.empty()) {
+    for (const ResidualVariable& v : vars) {
+      std::vector<double> x;
+      for (std::size_t k = 0; k < pb.fitRows(); ++k)
+        if (res.excluded[k]) x.push_back(v.values[k]);
+      in.excludedValues.push_back(std::move(x));
+    }
+  }
+  return checkResidual(in);
+}
+
+/// The variable a named effect is chosen for (its generic alternative is unexplained:<that>).
+std::string variableOf(const std::string& name) {
+  if (name.starts_with("lag:")) return name.substr(4);
+  if (name.starts_with("input:")) return name.substr(6);
+  if (name == "drift") return "time";
+  return {};
 }
 
 }  // namespace
@@ -974,8 +1152,32 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
   Fit cur = fitViews(pb, state);
   if (!cur.ok) throw ValidationError(ErrorContext{log.source, 0, 0, "inputs"}, cur.why.english());
   Residual curRes = pb.residual(state[full], cur);
+  // Gross errors (CONTRACT.md `outliers`): robust z of the declared model's residual on the fit rows
+  // (residual_check.h findOutliers), excluded from every fit (weight 0), the model refitted.
+  std::vector<Outlier> outliers;
+  double outlierThreshold = 0.0;
+  {
+    ResidualCheckInput in;
+    in.residual.resize(static_cast<Eigen::Index>(pb.fitRows()));
+    for (std::size_t k = 0; k < pb.fitRows(); ++k) {
+      in.residual(static_cast<Eigen::Index>(k)) = curRes.r[k];
+      in.unitRow.push_back(static_cast<long>(k + 1));
+    }
+    outliers = findOutliers(in, {}, &outlierThreshold);
+    if (!outliers.empty()) {
+      std::vector<std::size_t> rows;
+      for (const Outlier& x : outliers) rows.push_back(x.unit);
+      pb.exclude(rows);
+      pb.pin(state);
+      cur = fitViews(pb, state);
+      if (!cur.ok) throw ValidationError(ErrorContext{log.source, 0, 0, "inputs"}, cur.why.english());
+      curRes = pb.residual(state[full], cur);
+    }
+  }
   d.baseline = summaryOf(cur, curRes);
   const double noise = noiseLevel(curRes, pb.fitRows());
+  const std::vector<ResidualVariable> variables = residualVariables(log, o.target);
+  std::vector<std::string> genericTaken;
   if (pb.grey()) {
     std::string inputs;
     for (const auto& in : o.inputs) inputs += (inputs.empty() ? "" : ", ") + in;
@@ -995,6 +1197,13 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     d.addNote({Phrase("declared model (static, fitted on the first %1 of %2 rows): %3",
                       {A::integer(static_cast<long long>(pb.fitRows())),
                        A::integer(static_cast<long long>(pb.rows())), A::text(std::move(model))})});
+  }
+  if (!outliers.empty()) {
+    Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above %2):",
+                           {A::integer(static_cast<long long>(outliers.size())), num(outlierThreshold)})};
+    for (const Outlier& x : outliers)
+      note.push_back(Phrase(" row %1 (%2%3)", {A::integer(x.row.value_or(0)), A::signedNumber(x.residual, 3), A::unit(u)}));
+    d.addNote(std::move(note));
   }
   {
     d.addNote(
@@ -1016,7 +1225,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
 
   LoopProgress progress(observer);
   bool cancelled = false;
-  const double nf = static_cast<double>(pb.fitRows());
+  const double nf = pb.fitCount();
   for (int round = 0; round < o.maxRounds && !cancelled; ++round) {
     const ThermalEffectSet& now = state[full].effects;
     // This round's candidates.
@@ -1028,6 +1237,23 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     for (const auto& c : undeclared)
       if (std::find(now.extra.begin(), now.extra.end(), c) == now.extra.end()) names.push_back("input:" + c);
     if (!now.drift) names.push_back("drift");
+    // Generic candidates (CONTRACT.md "The open world"): the strongest structures of the current
+    // residual on the fit rows, each a basis of its variable (evaluated on every row), under the same
+    // evidence plus the search penalty 2 ln(tests) in the in-sample criterion.
+    std::map<std::string, int> genericOf;
+    double genericPenalty = 0.0;
+    {
+      const ResidualCheck rc = checkOf(pb, state[full], curRes, variables);
+      genericPenalty = genericSearchPenalty(rc);
+      for (const GenericForm& g : genericCandidates(rc, genericTaken)) {
+        const ResidualVariable* v = findVariable(variables, g.against);
+        const int ch = log.indexOf(g.against);
+        if (!v || (ch >= 0 && channelKind(log.channels[static_cast<std::size_t>(ch)]) == ChannelKind::Displacement))
+          continue;  // another displacement channel is an output, not a cause
+        genericOf["unexplained:" + g.against] = pb.addGeneric(g, v->values);
+        names.push_back("unexplained:" + g.against);
+      }
+    }
     if (names.empty()) break;
 
     std::vector<Candidate> tried;
@@ -1043,7 +1269,10 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       c.round = round;
       c.rmseBefore = cur.rmse;
       c.heldoutBefore = cur.heldout;
-      Eval ev0 = evaluateCandidate(pb, log, o, name, state, u);
+      const auto gi = genericOf.find(name);
+      const int generic = gi == genericOf.end() ? -1 : gi->second;
+      Eval ev0 = evaluateCandidate(pb, log, o, name, state, u, 0.0, generic);
+      if (generic >= 0) c.generic = pb.generic(generic).form;
       Fit f = ev0.fit;
       const Phrases paramText = ev0.paramText;
       c.parameters = ev0.parameters;
@@ -1062,7 +1291,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
         // In-sample evidence too: the fit's sum of squares must fall by more than the BIC penalty
         // of the added parameter (n ln(SSE0 / SSE1) > ln n), so that a coefficient the fit rows
         // cannot determine does not win by a lucky extrapolation.
-        const double dBic = nf * std::log(f.sse / cur.sse) + std::log(nf);
+        const double width = generic >= 0 ? static_cast<double>(pb.generic(generic).basis.cols()) : 1.0;
+        const double dBic = nf * std::log(f.sse / cur.sse) + width * std::log(nf) + (generic >= 0 ? genericPenalty : 0.0);
         const bool inSample = dBic < 0.0;
         std::vector<PhraseArg> args = figureArgs(cur, f, u);
         Phrases ev;
@@ -1103,6 +1333,34 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       }
     }
     if (cancelled) best.reset();
+    // "A named effect must explain what it was chosen for": a passing named effect is rejected when a
+    // passing generic effect of the same variable validates better by the acceptance margin
+    // (minHeldoutGain; a tie, e.g. drift and a linear function of time, keeps the name); named
+    // effects are preferred to generic ones otherwise (the generic one is kept for what no name
+    // explains).
+    if (!cancelled) {
+      std::optional<std::size_t> named, gen;
+      for (std::size_t i = 0; i < fits.size(); ++i) {
+        if (!passed[i]) continue;
+        const bool isGeneric = names[i].starts_with("unexplained:");
+        if (!isGeneric) {
+          const std::string var = variableOf(names[i]);
+          const auto alt = std::find(names.begin(), names.end(), "unexplained:" + var);
+          if (!var.empty() && alt != names.end()) {
+            const auto j = static_cast<std::size_t>(alt - names.begin());
+            if (j < fits.size() && passed[j] && fits[j].cv < (1.0 - o.minHeldoutGain) * fits[i].cv) {
+              passed[i] = false;
+              tried[i].addEvidence({Phrase("; rejected: the generic %1 validates better (%2 against %3%4)",
+                                           {A::name(names[j]), num(fits[j].cv), num(fits[i].cv), A::unit(u)})});
+              continue;
+            }
+          }
+        }
+        std::optional<std::size_t>& slot = isGeneric ? gen : named;
+        if (!slot || rankOf(fits[i], cur) < rankOf(fits[*slot], cur)) slot = i;
+      }
+      best = named ? named : gen;
+    }
     if (best && names[*best] == "lag") {
       // The specific claim first: `lag` (every input lagged) over the best passing `lag:<col>` only
       // when it validates another minHeldoutGain better (the fit rows often cannot tell whether an
@@ -1149,6 +1407,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       for (const auto& [px, py] : pairs) {
         const std::string &na = names[px], &nb = names[py];
         if (isLag(na) && isLag(nb)) continue;
+        if (na.starts_with("unexplained:") || nb.starts_with("unexplained:")) continue;
         Eval ea = evals[px];  // na added to the current model, as evaluated above
         const Eval eb = evaluateCandidate(pb, log, o, nb, ea.next, u);
         if (!eb.fit.ok) continue;
@@ -1233,12 +1492,17 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       state = states[*best];
       cur = fits[*best];
       curRes = after;
+      if (c.generic) genericTaken.push_back(c.generic->against);
     }
     for (auto& c : tried) d.effects.push_back(std::move(c));
     if (!best && !pairAccepted) break;
   }
   progress.addNote(d);
   d.final = summaryOf(cur, curRes);
+  // The final residual's check on the fit rows (outliers excluded, listed).
+  d.residualCheck = checkOf(pb, state[full], curRes, variables);
+  d.residualCheck->outliers = outliers;
+  d.residualCheck->outlierThreshold = outlierThreshold;
   return d;
 }
 

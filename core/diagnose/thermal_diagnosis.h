@@ -77,6 +77,25 @@
 // effect present) under the same tests with the penalty of two parameters, and the best passing
 // pair is accepted as two candidates of that round ("accepted together with ...").
 //
+// The open world (CONTRACT.md "The open world", residual_check.h):
+//   * Outliers: robust z of the declared model's residual on the fit rows (findOutliers); the rows
+//     above the threshold are excluded from every fit (weight 0), listed with their 1-based data row
+//     in residual_check.outliers and a note.
+//   * Variables the residual may depend on: time (its natural order: Ljung-Box), the data row, and
+//     every numeric column of the log but the target (declared inputs too: a non-linear dependence
+//     on a declared input is structure the model lacks), on the fit rows.
+//   * Generic candidates `unexplained:<against>`: each round, the three strongest structures of the
+//     current residual (genericCandidates; never another displacement channel, an output), their
+//     basis evaluated on every row so that held-out rows are predicted, compete with the named
+//     candidates under the same tests (validation gain, explained noise, in-sample BIC with q
+//     parameters plus the search penalty 2 ln(tests)). A passing named effect is preferred to a
+//     generic one, unless the generic effect of the same variable (lag:<col> and input:<col>: <col>;
+//     drift: time) validates better by the acceptance margin: then the name is rejected ("a named
+//     effect must explain what it was chosen for"). Unlike the setup/matching/kinematic loops the
+//     thermal loop is not rerun without each name (keepNamedOnlyWhenNeeded): the comparison is made
+//     in the round, on the validation error, at the cost of one loop.
+//   * residual_check: the final fit-rows residual (outliers excluded) against those variables.
+//
 // Implementation: every fit is a least-squares fit of standardised columns (centred and scaled on
 // the fit rows) from Gram matrices [1 X y]^T [1 X y] accumulated per block of rows (the K + 1 blocks
 // of the fit rows and the held-out block): a fold's fit sums its blocks, its validation error is

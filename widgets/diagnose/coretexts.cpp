@@ -46,6 +46,10 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", "; rejected: explains %1%2, below %3 x the noise level %4%2"),
     QT_TRANSLATE_NOOP("metrofit::core", "; rejected: no in-sample evidence (fit dBIC %1 >= 0)"),
     QT_TRANSLATE_NOOP("metrofit::core", "; rejected: the validation folds cannot fit it"),
+    QT_TRANSLATE_NOOP("metrofit::core", "%1 gross errors excluded before the fit (robust z above %2):"),
+    QT_TRANSLATE_NOOP("metrofit::core", " row %1 (%2%3)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; rejected: the generic %1 validates better (%2 against %3%4)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; rejected: the fit rows do not determine tau (standard error above half of it)"),
     QT_TRANSLATE_NOOP("metrofit::core",
                       "effects chosen on the fit rows by blocked forward validation (%1 folds, validation rmse "
                       "%2%3); the held-out rows only report the error"),

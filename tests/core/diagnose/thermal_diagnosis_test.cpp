@@ -160,6 +160,9 @@ TEST(ThermalDiagnosis, CleanDataComesOutClean) {
     o.noiseUm = 0.25;
     const Diagnosis d = run(o);
     EXPECT_TRUE(d.accepted().empty()) << "seed " << seed << ": " << toJson(d).dump(1);
+    ASSERT_TRUE(d.residualCheck.has_value());
+    EXPECT_TRUE(d.residualCheck->white) << "seed " << seed << ": " << d.residualCheck->summary;
+    EXPECT_TRUE(d.residualCheck->outliers.empty()) << "seed " << seed;
     EXPECT_FALSE(d.effects.empty());
     EXPECT_DOUBLE_EQ(*d.final.heldoutRmse, *d.baseline.heldoutRmse);
     EXPECT_NEAR(d.baseline.rmse, 0.25, 0.05);
@@ -377,6 +380,73 @@ TEST(ThermalDeclaredGrey, NamesAndScrambledHeldOut) {
     o.seed = 3;
     expectScrambleChangesOnlyTheHeldOutFigures(simulateThermalEffects(so), o);
   }
+}
+
+// ---- The open world (issue 15 items 1-3, CONTRACT.md "The open world") --------------------------
+
+/// The simulator's clean log (seed) with the target changed by `change(row, time, log)`.
+template <class Change>
+ThermalLog cleanLogWith(std::uint64_t seed, Change change) {
+  ThermalEffectsOptions o;
+  o.seed = seed;
+  o.noiseUm = 0.25;
+  ThermalLog log = simulateThermalEffects(o);
+  auto& y = log.channels[static_cast<std::size_t>(log.indexOf("disp_z_um"))].values;
+  for (std::size_t k = 0; k < y.size(); ++k) y[k] += change(k, log.timeMin[k], log);
+  return log;
+}
+
+Diagnosis runClean(const ThermalLog& log) {
+  ThermalDiagnosisOptions o;
+  o.target = "disp_z_um";
+  o.inputs = {"T2", "T4", "T_amb"};
+  return diagnoseThermal(log, o);
+}
+
+TEST(ThermalOpenWorld, DemoResidualIsWhiteAfterTheLag) {
+  const Diagnosis d = runClean(readThermalLog((test::sourceDir() / "resources/demo/data/diagnose_thermal.csv").string()));
+  ASSERT_TRUE(d.residualCheck.has_value());
+  EXPECT_TRUE(d.residualCheck->white) << d.residualCheck->summary;
+  EXPECT_GT(d.residualCheck->tests.size(), 10u);  // Ljung-Box in time, F tests against every column
+  const nlohmann::json j = toJson(d);
+  EXPECT_TRUE(j.at("residual_check").at("white").get<bool>());
+}
+
+TEST(ThermalOpenWorld, AGrossErrorIsListedWithItsRowAndExcluded) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    // One gross error of 10 um (40 noise sigma) in data row 101 (a fit row).
+    const ThermalLog log = cleanLogWith(seed, [](std::size_t k, double, const ThermalLog&) { return k == 100 ? 10.0 : 0.0; });
+    const Diagnosis d = runClean(log);
+    ASSERT_TRUE(d.residualCheck.has_value());
+    ASSERT_EQ(d.residualCheck->outliers.size(), 1u) << seed;
+    EXPECT_EQ(d.residualCheck->outliers[0].row, 101);
+    EXPECT_NEAR(d.residualCheck->outliers[0].residual, 10.0, 1.0);
+    EXPECT_TRUE(d.accepted().empty()) << toJson(d).dump(1);
+    EXPECT_TRUE(d.residualCheck->white) << d.residualCheck->summary;
+    EXPECT_NEAR(d.baseline.rmse, 0.25, 0.05);  // the error no longer in the fit
+    EXPECT_EQ(toJson(d).at("residual_check").at("outliers").at(0).at("row"), 101);
+  }
+}
+
+TEST(ThermalOpenWorld, AStepOfTheTargetIsNotGivenACatalogueName) {
+  // A sensor re-mounted at 90 min: the displacement jumps by 1.5 um (6 noise sigma) and stays. No
+  // catalogue effect is a step; the loop must not name one, and must say that the residual depended
+  // on time (a generic effect of time, or the structure in the final check).
+  int generic = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const ThermalLog log = cleanLogWith(seed, [](std::size_t, double t, const ThermalLog&) { return t >= 90.0 ? 1.5 : 0.0; });
+    const Diagnosis d = runClean(log);
+    for (const Candidate* c : d.accepted()) {
+      EXPECT_TRUE(c->name.starts_with("unexplained:")) << seed << ": " << c->name;
+      if (c->generic) {
+        ++generic;
+        EXPECT_EQ(c->parameters.at(0).name, "form");
+      }
+    }
+    EXPECT_FALSE(d.accepted().empty() && d.residualCheck->white) << seed << ": nothing said";
+    EXPECT_LT(*d.final.heldoutRmse, *d.baseline.heldoutRmse) << seed;
+  }
+  EXPECT_GE(generic, 5);
 }
 
 TEST(ThermalDiagnosis, ContractJson) {
