@@ -78,7 +78,8 @@ void LoopProgress::addNote(Diagnosis& d) const {
     d.addNote({Phrase("cancelled")});
 }
 
-Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std::string>& excluded)>& run) {
+Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std::string>& excluded)>& run,
+                                  double margin) {
   LoopRun cur = run({});
   const Diagnosis& d = cur.diagnosis;
   bool named = false, generic = false;
@@ -92,7 +93,7 @@ Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std
   for (const auto& ex : alternatives) {
     LoopRun alt = run(ex);
     if (alt.stopped) return std::move(cur.diagnosis);
-    if (alt.bic < (best ? best->bic : cur.bic)) best = std::move(alt);
+    if (alt.bic < (best ? best->bic : cur.bic + margin)) best = std::move(alt);
   }
   if (!best) return std::move(cur.diagnosis);
   std::vector<Candidate> dropped;
@@ -105,8 +106,8 @@ Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std
     x.accepted = false;
     x.plot.reset();
     x.setEvidence({Phrase("rejected: does not explain what it was chosen for; without it the generic effects "
-                          "explain the data at least as well (BIC %1 without, %2 with)",
-                          {PhraseArg::fixed(best->bic, 1), PhraseArg::fixed(cur.bic, 1)})});
+                          "explain the data as well (BIC %1 without, %2 with, needed %3 lower)",
+                          {PhraseArg::fixed(best->bic, 1), PhraseArg::fixed(cur.bic, 1), PhraseArg::number(margin)})});
     dropped.push_back(std::move(x));
   }
   for (Candidate& c : dropped) best->diagnosis.effects.push_back(std::move(c));

@@ -156,11 +156,13 @@ inline constexpr const char* kEveryNamedEffect = "*";
 /// prefer a named effect to a generic one in a round; afterwards, when the result accepted a named
 /// effect and still needed a generic effect or left a non-white residual, the names are checked:
 /// the loop is run again without each accepted named effect N (`run({N})`) and once with generic
-/// effects only (`run({kEveryNamedEffect})`), and the run with the lowest criterion wins (the first
-/// run on ties: a name is kept when it explains the data at least as well as the generic
-/// alternative). Names accepted first and not in the winner are listed with accepted = false and
+/// effects only (`run({kEveryNamedEffect})`); the first run is kept unless an alternative's
+/// criterion is within `margin` of it or lower (the domain's acceptance threshold: a name survives
+/// only when, beside the generic alternative, it still has the evidence it was accepted on), else
+/// the alternative with the lowest criterion wins. Names accepted first and not in the winner are listed with accepted = false and
 /// the comparison as evidence. At most 1 + (accepted names) + 1 runs.
-Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std::string>& excluded)>& run);
+Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std::string>& excluded)>& run,
+                                  double margin);
 
 /// The JSON of CONTRACT.md: {"domain", "baseline": {"rmse","max_abs"[,"heldout_rmse"]},
 /// "effects": [{"name","accepted","parameters":{name: value},"rmse_before","rmse_after",

@@ -737,7 +737,7 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
     }
   }
   Diagnosis dg = keepNamedOnlyWhenNeeded(
-      [&](const std::set<std::string>& ex) { return runKinematic(kept, orig, o, ex, observer); });
+      [&](const std::set<std::string>& ex) { return runKinematic(kept, orig, o, ex, observer); }, o.bicMargin);
   if (dg.residualCheck) {
     dg.residualCheck->outliers = outliers;
     dg.residualCheck->outlierThreshold = threshold;

@@ -709,7 +709,7 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
     }
   }
   Diagnosis result = keepNamedOnlyWhenNeeded(
-      [&](const std::set<std::string>& ex) { return runMatching(kept, orig, options, ex, observer); });
+      [&](const std::set<std::string>& ex) { return runMatching(kept, orig, options, ex, observer); }, options.acceptance.bicThreshold);
   if (result.residualCheck) {
     result.residualCheck->outliers = outliers;
     result.residualCheck->outlierThreshold = threshold;

@@ -489,7 +489,7 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
         orig.push_back(r);
       }
     Diagnosis d = keepNamedOnlyWhenNeeded(
-        [&](const std::set<std::string>& ex) { return runSetup(model, kept, orig, options, ex, observer); });
+        [&](const std::set<std::string>& ex) { return runSetup(model, kept, orig, options, ex, observer); }, options.acceptance.bicThreshold);
     return std::make_pair(std::move(d), orig);
   };
   auto addOutliers = [&](const Eigen::VectorXd& residual, const std::vector<std::size_t>& orig) {
