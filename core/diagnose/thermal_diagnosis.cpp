@@ -43,6 +43,44 @@ PhraseArg pct(double before, double after) {
   return A::text({Phrase("%1 %", {A::signedNumber(p, 2)})});
 }
 
+/// sum_k w_k x_k y_k over [b, e) with four partial sums (the additions of one sum would wait on each
+/// other; four chains run at once). `w` may be null (all weights 1).
+double weightedDot(const double* w, const double* x, const double* y, std::size_t b, std::size_t e) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  std::size_t k = b;
+  if (w) {
+    for (; k + 4 <= e; k += 4) {
+      s0 += w[k] * x[k] * y[k];
+      s1 += w[k + 1] * x[k + 1] * y[k + 1];
+      s2 += w[k + 2] * x[k + 2] * y[k + 2];
+      s3 += w[k + 3] * x[k + 3] * y[k + 3];
+    }
+    for (; k < e; ++k) s0 += w[k] * x[k] * y[k];
+  } else {
+    for (; k + 4 <= e; k += 4) {
+      s0 += x[k] * y[k];
+      s1 += x[k + 1] * y[k + 1];
+      s2 += x[k + 2] * y[k + 2];
+      s3 += x[k + 3] * y[k + 3];
+    }
+    for (; k < e; ++k) s0 += x[k] * y[k];
+  }
+  return (s0 + s1) + (s2 + s3);
+}
+/// sum_k w_k x_k over [b, e) (w may be null), four partial sums.
+double weightedSum(const double* w, const double* x, std::size_t b, std::size_t e) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  std::size_t k = b;
+  for (; k + 4 <= e; k += 4) {
+    s0 += w ? w[k] * x[k] : x[k];
+    s1 += w ? w[k + 1] * x[k + 1] : x[k + 1];
+    s2 += w ? w[k + 2] * x[k + 2] : x[k + 2];
+    s3 += w ? w[k + 3] * x[k + 3] : x[k + 3];
+  }
+  for (; k < e; ++k) s0 += w ? w[k] * x[k] : x[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
 /// The model state: the declared inputs plus the accepted effects (thermal_applied.h, shared with
 /// every fit of the thermal study that includes applied effects).
 struct State {
@@ -178,12 +216,43 @@ class Problem {
   /// Excludes rows (gross errors of the target, 0-based) from every fit: weight 0 in every sum.
   void exclude(const std::vector<std::size_t>& rows) {
     for (std::size_t k : rows) w_[k] = 0.0;
+    anyExcluded_ = !rows.empty();
     store_.clear();
     dots_.clear();
     temporary_.clear();
     prepareSums();
   }
   bool excluded(std::size_t k) const { return w_[k] == 0.0; }
+
+  /// Cancel inside a candidate (a lag search on a long log takes a while): the observer is asked
+  /// again with the last step's figures (no new step); once it says Stop every fit returns at once
+  /// and the loop ends after the candidate with the note "cancelled".
+  void setObserver(Observer* o) { observer_ = o; }
+  void setStep(long steps, double current) const {
+    pollSteps_ = steps;
+    pollCurrent_ = current;
+  }
+  bool poll() const {
+    if (stopped_ || !observer_) return stopped_;
+    IterationSummary s;
+    s.iteration = std::max(0L, pollSteps_ - 1);
+    s.evaluations = pollSteps_;
+    s.best = pollCurrent_;
+    s.components = {{"cv_rmse", pollCurrent_}};
+    if (observer_->onIteration(s) == ObserverDecision::Stop) stopped_ = true;
+    return stopped_;
+  }
+  bool stopped() const { return stopped_; }
+
+  /// The coarse groups of the fit rows (begin, end), empty below kCoarseRows rows.
+  std::vector<std::pair<std::size_t, std::size_t>> fitGroups() const {
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    if (!coarse_) return out;
+    for (std::size_t g = 0; g + 1 < gEdge_.size() && gEdge_[g] < nFit_; ++g) out.emplace_back(gEdge_[g], gEdge_[g + 1]);
+    return out;
+  }
+  /// The row weights, or null when no row is excluded (the sums skip the multiplication).
+  const double* weights() const { return anyExcluded_ ? w_.data() : nullptr; }
 
   /// The weighted per-block counts and sums of the target (full and coarse resolution).
   void prepareSums() {
@@ -399,13 +468,8 @@ class Problem {
       c.v = std::move(raw);
       for (double& x : c.v) x -= c.shift;
       for (std::size_t b = 0; b + 1 < edge_.size(); ++b) {
-        double s = 0.0, sy = 0.0;
-        for (std::size_t k = edge_[b]; k < edge_[b + 1]; ++k) {
-          s += w_[k] * c.v[k];
-          sy += w_[k] * c.v[k] * yc_[k];
-        }
-        c.sum[b] = s;
-        c.dotY[b] = sy;
+        c.sum[b] = weightedSum(weights(), c.v.data(), edge_[b], edge_[b + 1]);
+        c.dotY[b] = weightedDot(weights(), c.v.data(), yc_.data(), edge_[b], edge_[b + 1]);
       }
     } else {  // group means, weighted by the group sizes
       const std::size_t G = gEdge_.size() - 1;
@@ -429,11 +493,8 @@ class Problem {
     const std::vector<double>&x = column(a).v, &y = column(b).v;
     std::vector<double> d(edge_.size() - 1, 0.0);
     if (!a.starts_with("~")) {
-      for (std::size_t blk = 0; blk + 1 < edge_.size(); ++blk) {
-        double s = 0.0;
-        for (std::size_t k = edge_[blk]; k < edge_[blk + 1]; ++k) s += w_[k] * x[k] * y[k];
-        d[blk] = s;
-      }
+      for (std::size_t blk = 0; blk + 1 < edge_.size(); ++blk)
+        d[blk] = weightedDot(weights(), x.data(), y.data(), edge_[blk], edge_[blk + 1]);
     } else {
       for (std::size_t blk = 0; blk + 1 < edge_.size(); ++blk)
         for (std::size_t g = gOfBlock_[blk]; g < gOfBlock_[blk + 1]; ++g)
@@ -473,8 +534,19 @@ class Problem {
     if (x.empty()) return s;
     s[0] = x[0];
     if (step > 0.0) {
-      const double a = -std::expm1(-step / tau), e = 1.0 - a;
-      for (std::size_t k = 1; k < x.size(); ++k) s[k] = e * s[k - 1] + a * x[k];
+      // s(k) = e s(k-1) + a x(k) = e^2 s(k-2) + (e a x(k-1) + a x(k)): two interleaved chains, each
+      // one multiply-add per two rows.
+      const double a = -std::expm1(-step / tau), e = 1.0 - a, e2 = e * e, ea = e * a;
+      std::size_t k = 1;
+      if (x.size() > 1) {
+        s[1] = e * s[0] + a * x[1];
+        k = 2;
+      }
+      for (; k + 1 < x.size(); k += 2) {
+        s[k] = e2 * s[k - 2] + (ea * x[k - 1] + a * x[k]);
+        s[k + 1] = e2 * s[k - 1] + (ea * x[k] + a * x[k + 1]);
+      }
+      for (; k < x.size(); ++k) s[k] = e * s[k - 1] + a * x[k];
     } else {
       double dt = -1.0, a = 0.0;  // one exponential per run of equal steps
       for (std::size_t k = 1; k < x.size(); ++k) {
@@ -503,6 +575,7 @@ class Problem {
   /// products.
   Grams grams(const State& s, int view, bool coarse = false) const {
     Grams g;
+    if (stopped_) return g;
     std::vector<ColumnSpec> specs = columns(s, view);
     if (coarse && coarse_)
       for (ColumnSpec& c : specs) c.key = "~" + c.key;
@@ -594,7 +667,7 @@ class Problem {
   /// The sum of squares a view minimises on its own rows (fold f: blocks 0..f; full view: the fit
   /// rows); infinite when the view cannot be fitted.
   double viewSse(const Grams& g, int view) const {
-    if (!g.ok) return kInf;
+    if (!g.ok || stopped_) return kInf;
     const auto q = static_cast<std::size_t>(g.block[0].rows() - 1);
     if (rowsUpTo(view) < static_cast<double>(q + 1)) return kInf;
     const Solution s = solveGram(sumBlocks(g, view));
@@ -695,7 +768,12 @@ class Problem {
   bool coarse_ = false;
   std::vector<std::size_t> gEdge_, gOfBlock_;
   std::vector<double> yMean_, yyCoarse_, gTime_, gW_;
+  Observer* observer_ = nullptr;
+  mutable bool stopped_ = false;
+  mutable long pollSteps_ = 0;
+  mutable double pollCurrent_ = 0.0;
   std::vector<double> w_;       ///< per row: 0 for an excluded gross error, else 1
+  bool anyExcluded_ = false;
   std::vector<double> blockN_;  ///< per block: the rows not excluded
   double fitN_ = 0.0;           ///< fit rows not excluded
   mutable std::map<std::string, std::vector<double>> coarseInput_;  ///< group means of lagged inputs
@@ -822,6 +900,10 @@ LagEstimate searchLag(const Problem& pb, int gridPoints, WithTau withTau, double
   for (int i = 0; i < g; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     grid[ii] = hint > 0.0 ? std::clamp(std::log(hint) + 0.3 * (i - 4), a, b) : a + (b - a) * i / (g - 1);
+    if (pb.poll()) {
+      for (auto& vv : val) vv[ii] = kInf;
+      continue;
+    }
     {
       const GramSet gs(pb, statesAt(std::exp(grid[ii])), true);
       const auto per = gs.perView();
@@ -837,6 +919,7 @@ LagEstimate searchLag(const Problem& pb, int gridPoints, WithTau withTau, double
     const double l = grid[best == 0 ? 0 : best - 1], r = grid[std::min<std::size_t>(best + 1, grid.size() - 1)];
     const bool full = v == pb.fullView();
     auto sseAt = [&](double logTau, bool coarse) {
+      if (pb.poll()) return kInf;
       const double r = pb.viewSse(pb.grams(withTau(std::exp(logTau), v), v, coarse), v);
       pb.sweep();
       return r;
@@ -1057,7 +1140,48 @@ std::vector<ResidualVariable> residualVariables(const ThermalLog& log, const std
 }
 
 /// The residual check (residual_check.h) of a state's fit on the fit rows that were not excluded.
-ResidualCheck checkOf(const Problem& pb, const State& s, const Residual& res, const std::vector<ResidualVariable>& vars) {
+ResidualCheck checkOf(const Problem& pb, const State& s, const Residual& res, const std::vector<ResidualVariable>& vars,
+                      bool coarse = false) {
+  const auto groups = pb.fitGroups();
+  if (coarse && !groups.empty()) {
+    // Above kCoarseRows rows the round's search for structure (which generic candidates to try)
+    // runs on group means of the rows that were not excluded; the final check uses every row.
+    const auto cols = pb.columnValues(s);
+    std::vector<std::vector<double>> obs;  // per group: residual, columns..., variables...
+    std::vector<long> first;
+    for (const auto& [b, e] : groups) {
+      std::vector<double> m(1 + cols.size() + vars.size(), 0.0);
+      double cnt = 0.0;
+      for (std::size_t k = b; k < e; ++k) {
+        if (res.excluded[k]) continue;
+        cnt += 1.0;
+        m[0] += res.r[k];
+        for (std::size_t j = 0; j < cols.size(); ++j) m[1 + j] += (*cols[j])[k];
+        for (std::size_t j = 0; j < vars.size(); ++j) m[1 + cols.size() + j] += vars[j].values[k];
+      }
+      if (cnt == 0.0) continue;
+      for (double& x : m) x /= cnt;
+      obs.push_back(std::move(m));
+      first.push_back(static_cast<long>(b + 1));
+    }
+    const auto m = static_cast<Eigen::Index>(obs.size());
+    ResidualCheckInput in;
+    in.residual.resize(m);
+    in.modelColumns.resize(m, static_cast<Eigen::Index>(cols.size()));
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const auto& o = obs[static_cast<std::size_t>(i)];
+      in.residual(i) = o[0];
+      for (std::size_t j = 0; j < cols.size(); ++j) in.modelColumns(i, static_cast<Eigen::Index>(j)) = o[1 + j];
+    }
+    in.unitRow = first;
+    for (std::size_t j = 0; j < vars.size(); ++j) {
+      ResidualVariable w = vars[j];
+      w.values.clear();
+      for (const auto& o : obs) w.values.push_back(o[1 + cols.size() + j]);
+      in.variables.push_back(std::move(w));
+    }
+    return checkResidual(in);
+  }
   std::vector<std::size_t> rows;
   for (std::size_t k = 0; k < pb.fitRows(); ++k)
     if (!res.excluded[k]) rows.push_back(k);
@@ -1224,6 +1348,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
   }
 
   LoopProgress progress(observer);
+  pb.setObserver(observer);
+  long steps = 0;
   bool cancelled = false;
   const double nf = pb.fitCount();
   for (int round = 0; round < o.maxRounds && !cancelled; ++round) {
@@ -1242,8 +1368,12 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     // evidence plus the search penalty 2 ln(tests) in the in-sample criterion.
     std::map<std::string, int> genericOf;
     double genericPenalty = 0.0;
+    if (pb.poll()) {
+      cancelled = true;
+      break;
+    }
     {
-      const ResidualCheck rc = checkOf(pb, state[full], curRes, variables);
+      const ResidualCheck rc = checkOf(pb, state[full], curRes, variables, true);
       genericPenalty = genericSearchPenalty(rc);
       for (const GenericForm& g : genericCandidates(rc, genericTaken)) {
         const ResidualVariable* v = findVariable(variables, g.against);
@@ -1271,7 +1401,12 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       c.heldoutBefore = cur.heldout;
       const auto gi = genericOf.find(name);
       const int generic = gi == genericOf.end() ? -1 : gi->second;
+      pb.setStep(steps, cur.cv);
       Eval ev0 = evaluateCandidate(pb, log, o, name, state, u, 0.0, generic);
+      if (pb.stopped()) {  // stopped inside the candidate: it is not listed
+        cancelled = true;
+        break;
+      }
       if (generic >= 0) c.generic = pb.generic(generic).form;
       Fit f = ev0.fit;
       const Phrases paramText = ev0.paramText;
@@ -1327,6 +1462,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       fits.push_back(std::move(f));
       evals.push_back(std::move(ev0));
 
+      ++steps;
       if (progress.afterCandidate(round, i, names.size(), cur.cv, "cv_rmse")) {
         cancelled = true;
         break;
@@ -1498,9 +1634,11 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     if (!best && !pairAccepted) break;
   }
   progress.addNote(d);
+  if (pb.stopped() && !progress.stopped()) d.addNote({Phrase("cancelled")});
   d.final = summaryOf(cur, curRes);
   // The final residual's check on the fit rows (outliers excluded, listed).
-  d.residualCheck = checkOf(pb, state[full], curRes, variables);
+  // (After a stop on a long log: the group means, to return at once.)
+  d.residualCheck = checkOf(pb, state[full], curRes, variables, pb.stopped() || progress.stopped());
   d.residualCheck->outliers = outliers;
   d.residualCheck->outlierThreshold = outlierThreshold;
   return d;

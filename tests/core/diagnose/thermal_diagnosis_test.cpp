@@ -490,7 +490,8 @@ TEST(ThermalDiagnosis, ObserverCancels) {
   d.inputs = o.declaredInputs;
   const Diagnosis r = diagnoseThermal(simulateThermalEffects(o), d, &cancel);
   EXPECT_TRUE(r.accepted().empty());
-  EXPECT_EQ(r.effects.size(), 1u);
+  // The observer is also asked inside a candidate (a lag search): the first one is not finished.
+  EXPECT_TRUE(r.effects.empty());
   EXPECT_EQ(r.notes.back(), "cancelled");
 }
 
