@@ -382,8 +382,9 @@ std::vector<Eigen::Vector2d> radialDirections(const Data& d) {
 }
 
 /// The residual variables of a path (CONTRACT.md "The open world"): row (path order), the path
-/// angle about the centroid, the loop direction (CCW / CW from the tangent), the samples since an
-/// axis last reversed, and the commanded x and y.
+/// angle about the centroid, the loop direction (CCW / CW from the tangent), reversal =
+/// sign(new direction) ln(1 + samples since the axis that reversed last reversed), and the
+/// commanded x and y.
 std::vector<ResidualVariable> kinematicVariables(const Data& d, const std::vector<Eigen::Vector2d>& u,
                                                  const std::vector<std::size_t>& orig) {
   std::vector<ResidualVariable> vars;
@@ -400,7 +401,7 @@ std::vector<ResidualVariable> kinematicVariables(const Data& d, const std::vecto
   dir.levels = {"CCW", "CW"};
   dir.label = {Phrase("loop direction")};
   rev.name = "reversal";
-  rev.label = {Phrase("samples since an axis reversed")};
+  rev.label = {Phrase("samples since an axis reversed (signed, log scale)")};
   x.name = "x";
   x.label = {Phrase("x (mm)")};
   y.name = "y";
@@ -420,7 +421,10 @@ std::vector<ResidualVariable> kinematicVariables(const Data& d, const std::vecto
       else if (k > 0)
         ++since[a2];
     }
-    rev.values.push_back(static_cast<double>(std::min(since[0], since[1])));
+    // Signed and on a log scale: a reversal glitch decays within a few samples and its sign follows
+    // the new direction of the axis that reversed last.
+    const int last = since[0] <= since[1] ? 0 : 1;
+    rev.values.push_back(d.motion.direction[k](last) * std::log1p(static_cast<double>(since[last])));
     x.values.push_back(d.path->command[k].x());
     y.values.push_back(d.path->command[k].y());
   }

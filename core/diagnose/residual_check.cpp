@@ -210,11 +210,19 @@ bool ResidualCheckOptions::isValid(std::string* why) const {
   if (stepPositions < 1 || stepPositions > 200) return no("stepPositions must be in 1..200");
   if (!(outlierFactor >= 1.0) || !std::isfinite(outlierFactor)) return no("outlierFactor must be >= 1");
   if (!(maxOutlierFraction >= 0.0 && maxOutlierFraction <= 0.5)) return no("maxOutlierFraction must be in [0, 0.5]");
+  if (!(winsorZ >= 0.0) || !std::isfinite(winsorZ)) return no("winsorZ must be finite and >= 0");
   return true;
 }
 
 Eigen::MatrixXd genericBasis(const GenericForm& f, const std::vector<double>& values) {
   Eigen::MatrixXd G = basisOnFinite(f, values);
+  if (f.subset && (f.form == DependenceForm::Linear || f.form == DependenceForm::Smooth ||
+                   f.form == DependenceForm::Step)) {
+    Eigen::MatrixXd H(G.rows(), G.cols() + 1);
+    for (std::size_t i = 0; i < values.size(); ++i) H(static_cast<Eigen::Index>(i), 0) = 1.0;
+    H.rightCols(G.cols()) = G;
+    G = std::move(H);
+  }
   // Observations where the variable does not apply (NaN: e.g. the part number of `dimension:<d>` on
   // the rows of other dimensions) get no contribution.
   for (std::size_t i = 0; i < values.size(); ++i)
@@ -285,6 +293,7 @@ std::vector<GenericForm> candidateForms(const ResidualVariable& v, const Residua
   if (distinct < 2) return out;
   GenericForm base;
   base.against = v.name;
+  base.subset = s.size() < v.values.size();
   switch (v.kind) {
     case ResidualVariable::Kind::Category: {
       base.form = DependenceForm::Level;
@@ -398,7 +407,16 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
   const Eigen::MatrixXd U = orthonormalBasis(in.modelColumns, n, in.components);
   // The residual of the model refitted on [1, J] (it is already orthogonal to J; the intercept may
   // not be in the model): project once more so the tests' algebra holds exactly.
-  const Eigen::VectorXd r = in.residual - U * (U.transpose() * in.residual);
+  Eigen::VectorXd w = in.residual;
+  if (o.winsorZ > 0.0) {
+    std::vector<double> v(w.data(), w.data() + n);
+    const double med = median(v);
+    for (double& x : v) x = std::abs(x - med);
+    const double sd = 1.4826 * median(v);
+    if (sd > 0.0)
+      for (Eigen::Index i = 0; i < n; ++i) w(i) = std::clamp(w(i), med - o.winsorZ * sd, med + o.winsorZ * sd);
+  }
+  const Eigen::VectorXd r = w - U * (U.transpose() * w);
   const double sse0 = r.squaredNorm();
 
   struct Found {
@@ -521,9 +539,14 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
     ResidualCheck::Plot p;
     p.against = v.name;
     p.xLabel = v.label.empty() ? Phrases{Phrase("%1", {A::name(v.name)})} : v.label;
-    p.x = v.values;
-    p.residual.assign(in.residual.data(), in.residual.data() + n);
-    p.fit.assign(fit.data(), fit.data() + n);
+    // Observations where the variable does not apply (NaN) are not drawn.
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double xv = v.values[static_cast<std::size_t>(i)];
+      if (!std::isfinite(xv)) continue;
+      p.x.push_back(xv);
+      p.residual.push_back(in.residual(i));
+      p.fit.push_back(fit(i));
+    }
     p.categories = v.levels;
     const std::size_t vi = static_cast<std::size_t>(vit - in.variables.begin());
     if (vi < in.excludedValues.size())

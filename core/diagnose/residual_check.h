@@ -23,6 +23,10 @@
 //   * Family-wise level `level` (1 %) over all tests by Holm's step-down procedure. `white` is true
 //     when no test is rejected. `structure` lists, per variable with a rejected test, its strongest
 //     form (lowest p), strongest first by share = (SSE0 - SSE1) / SSE0.
+// Robustness: the tests use the residual winsorised at `winsorZ` robust standard deviations
+// (1.4826 MAD) about its median, so that one large value of heavy-tailed noise cannot make a form
+// of a small subset significant (measured: Laplace and Student-t5 clean setup reports were flagged
+// in 8-11 % of 100 seeds without it).
 // Outliers: robust z = |r - median(r)| / (1.4826 MAD(r)) per observation; a unit is an outlier when
 // any of its observations has z above
 //   zThreshold = outlierFactor * Phi^-1(1 - 0.005 / n)      (2.5 x the Gaussian family-wise 1 %
@@ -77,6 +81,10 @@ struct GenericForm {
   int levels = 0;             ///< Level: number of levels (one column per level but the first)
   double centre = 0.0;        ///< Linear / Smooth: values are centred and scaled for conditioning
   double scale = 1.0;
+  /// The variable applies to a subset of the observations only (NaN elsewhere, e.g. surface:<s>):
+  /// linear, smooth and step forms then start with the subset's indicator column, so that the
+  /// generic effect includes the subset's own constant (a bow of one surface with its offset).
+  bool subset = false;
   /// Vector observations (ResidualCheckInput::components): the basis is repeated per component
   /// (observation i is component i % components), q columns each, zero on the other components.
   int components = 1;
@@ -138,6 +146,7 @@ struct ResidualCheckOptions {
   double outlierFactor = 2.5;        ///< see the header comment
   double maxOutlierFraction = 0.02;  ///< more units beyond the threshold: none listed
   bool detectOutliers = true;
+  double winsorZ = 3.0;              ///< 0: no winsorising
 
   bool isValid(std::string* why) const;
 };

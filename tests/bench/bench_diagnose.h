@@ -48,6 +48,11 @@ nlohmann::json benchDiagnose(const std::vector<DomainRunner>& runners, const Dia
 /// found and the error before / after.
 nlohmann::json benchRealDiagnose(const std::string& caiviacCsv);
 
+/// The thermal diagnosis of the real CAIVIAC log for the issue-15 targets ch1_um, ch3_um and
+/// ch5_um, each with the declared inputs t5_degC, t9_degC: baseline and final fit / held-out rmse,
+/// the accepted effects and the residual check, one block per target.
+nlohmann::json benchRealDiagnoseCaiviac(const std::string& caiviacCsv);
+
 /// Writes the demo data with one undeclared effect each (metrofit-bench --diagnose-demo DIR):
 ///   DIR/diagnose_thermal.csv   the spindle test of thermal_sim.h (seed 7), target disp_z_um =
 ///       -3 T2 - 1.5 T4 + T_amb (um, changes since the first row) with T2 through a first-order lag of

@@ -180,8 +180,12 @@ std::string paramsText(const Candidate& c) {
   std::string s;
   for (const auto& p : c.parameters) {
     char buf[96];
-    std::snprintf(buf, sizeof buf, "%s%s=%.4g", s.empty() ? "" : " ", p.name.c_str(),
-                  std::get<double>(p.value));
+    // Numbers, or text (a generic effect's "form", cyclic's "axis").
+    if (const double* v = std::get_if<double>(&p.value))
+      std::snprintf(buf, sizeof buf, "%s%s=%.4g", s.empty() ? "" : " ", p.name.c_str(), *v);
+    else
+      std::snprintf(buf, sizeof buf, "%s%s=%s", s.empty() ? "" : " ", p.name.c_str(),
+                    std::get<std::string>(p.value).c_str());
     s += buf;
     if (p.standardError) {
       std::snprintf(buf, sizeof buf, "+-%.2g", *p.standardError);

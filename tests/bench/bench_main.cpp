@@ -10,7 +10,8 @@
 // mt19937_64), --optimizers (our metaheuristics and pagmo2's pso / sade side by side at equal
 // budget, bench_optim.cpp; --quick: 5 seeds instead of 25), --matching / --real-matching (posture
 // matching targets and the SDSS plug plates against their own fits, bench_matching.cpp). Later issues add
-// --thermal, --diagnose, --real.
+// --thermal, --diagnose, --real. --diagnose --open [--seeds N] [--quick] [--ratio R] [--domains
+// thermal,setup]: the open-world detection study of the closed loop (bench_open_world.h).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -28,6 +29,7 @@
 #include "bench_diagnose_sm.h"
 #include "bench_kinematic.h"
 #include "bench_matching.h"
+#include "bench_open_world.h"
 #include "bench_optim.h"
 #include "bench_setup.h"
 #include "bench_thermal.h"
@@ -118,8 +120,12 @@ int main(int argc, char** argv) {
   bool thermal = false, realThermal = false;    // issue 7 (bench_thermal.cpp)
   bool kinematic = false;                       // issue 6 (bench_kinematic.cpp)
   bool diagnose = false, realDiagnose = false;  // issue 8 (bench_diagnose.cpp)
-  bool setupBench = false;                      // issue 4 (bench_setup.cpp)
-  std::vector<std::size_t> scaleRows;           // issue 15 item 9 (bench_diagnose_scale.cpp)
+  bool open = false;                            // issue 15: --diagnose --open (bench_open_world.cpp)
+  metrofit::bench::OpenBenchOptions openOptions;
+  int explicitSeeds = 0;              // --seeds N wins over --quick
+  std::vector<std::string> openCase;  // --open-case DOMAIN CASE SEED
+  bool setupBench = false;            // issue 4 (bench_setup.cpp)
+  std::vector<std::size_t> scaleRows;  // issue 15 item 9 (bench_diagnose_scale.cpp)
   metrofit::bench::DiagnoseBenchOptions diagnoseOptions;
   metrofit::bench::OptimBenchOptions optimOptions;
   int repeat = 5;
@@ -156,7 +162,12 @@ int main(int argc, char** argv) {
       }
     } else if (a == "--real-diagnose")
       realDiagnose = true;
-    else if (a == "--diagnose-demo" && i + 1 < argc) {  // writes the closed loop's demo data and exits
+    else if (a == "--open")
+      open = diagnose = true;
+    else if (a == "--open-case" && i + 3 < argc) {  // one data set of the open-world study, then exits
+      openCase = {argv[i + 1], argv[i + 2], argv[i + 3]};
+      i += 3;
+    } else if (a == "--diagnose-demo" && i + 1 < argc) {  // writes the closed loop's demo data and exits
       for (const auto& line : metrofit::bench::writeDiagnoseDemo(argv[++i]))
         std::printf("%s\n", line.c_str());
       return 0;
@@ -164,8 +175,11 @@ int main(int argc, char** argv) {
       optimOptions.seeds = 5;
       diagnoseOptions.seeds = 10;
       diagnoseOptions.cleanSeeds = 20;
-    } else if ((a == "--only" || a == "--methods") && i + 1 < argc) {
-      std::vector<std::string>& list = a == "--only" ? optimOptions.problems : optimOptions.methods;
+      openOptions.seeds = 20;
+    } else if ((a == "--only" || a == "--methods" || a == "--domains") && i + 1 < argc) {
+      std::vector<std::string>& list = a == "--only"      ? optimOptions.problems
+                                       : a == "--methods" ? optimOptions.methods
+                                                          : openOptions.domains;
       std::string item;
       for (const char* c = argv[++i];; ++c) {
         if (*c == ',' || *c == '\0') {
@@ -178,6 +192,13 @@ int main(int argc, char** argv) {
       }
     } else if (a == "--seeds" && i + 1 < argc) {
       optimOptions.seeds = std::max(1, std::atoi(argv[++i]));
+      explicitSeeds = optimOptions.seeds;
+    } else if (a == "--ratio" && i + 1 < argc) {  // --diagnose --open: effect-to-noise ratio (default 5)
+      openOptions.ratio = std::atof(argv[++i]);
+      if (!(openOptions.ratio > 0.0)) {
+        std::fprintf(stderr, "metrofit-bench: --ratio needs a number > 0\n");
+        return 2;
+      }
     } else if (a == "--first-seed" && i + 1 < argc) {
       optimOptions.firstSeed = std::max(1, std::atoi(argv[++i]));
     } else if (a == "--repeat" && i + 1 < argc)
@@ -190,8 +211,8 @@ int main(int argc, char** argv) {
       std::printf(
           "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick] [--only PROBLEMS] [--methods "
           "METHODS]] [--matching] [--real-matching] "
-          "[--thermal] [--real-thermal] [--kinematic] [--setup] [--diagnose [--quick]] [--real-diagnose] "
-          "[--diagnose-scale [ROWS,...]] "
+          "[--thermal] [--real-thermal] [--kinematic] [--setup] [--diagnose [--quick]] [--diagnose --open "
+          "[--seeds N] [--quick] [--domains LIST]] [--real-diagnose] [--diagnose-scale [ROWS,...]] "
           "[--repeat N] "
           "[--json OUT] "
           "[--source-dir DIR]\n");
@@ -204,6 +225,19 @@ int main(int argc, char** argv) {
   if (!io && !rng && !optimizers && !matching && !realMatching && !thermal && !realThermal && !kinematic &&
       !diagnose && !realDiagnose && !setupBench && scaleRows.empty())
     io = rng = optimizers = true;
+  if (explicitSeeds > 0) openOptions.seeds = explicitSeeds;
+  if (!openCase.empty()) {
+    openOptions.sourceDir = sourceDir;
+    try {
+      const nlohmann::json j = metrofit::bench::benchOpenCase(
+          openOptions, openCase[0], openCase[1], std::strtoull(openCase[2].c_str(), nullptr, 10));
+      if (!jsonOut.empty()) metrofit::writeFileAtomic(jsonOut, metrofit::dumpJson(j));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "metrofit-bench: %s\n", e.what());
+      return 1;
+    }
+    return 0;
+  }
   nlohmann::json result{{"version", metrofit::kVersion}, {"repeat", repeat}};
   try {
     if (io) result["io"] = benchIo(sourceDir, repeat);
@@ -224,7 +258,12 @@ int main(int argc, char** argv) {
       result["real_thermal"] = metrofit::bench::benchRealThermal(
           sourceDir + "/resources/demo/data/thermal_caiviac.csv",
           sourceDir + "/../shared/data/real/thermal-spindle-sjtu/thermal_expansion_error_original.csv");
-    if (diagnose) {
+    if (diagnose && open) {
+      // issue 15 item 7: the open-world study (effects no catalogue entry models, gross errors,
+      // clean data with heavy-tailed noise); --quick: 20 seeds per case.
+      openOptions.sourceDir = sourceDir;
+      result["diagnose_open"] = metrofit::bench::benchDiagnoseOpen(openOptions);
+    } else if (diagnose) {
       std::vector<metrofit::bench::DomainRunner> runners = metrofit::bench::thermalKinematicRunners();
       // setup / matching runners are appended here.
       for (auto& r : metrofit::bench::setupMatchingRunners(sourceDir)) runners.push_back(std::move(r));
@@ -233,6 +272,8 @@ int main(int argc, char** argv) {
     if (realDiagnose) {
       result["real_diagnose"] =
           metrofit::bench::benchRealDiagnose(sourceDir + "/resources/demo/data/thermal_caiviac.csv");
+      result["real_diagnose_caiviac"] =
+          metrofit::bench::benchRealDiagnoseCaiviac(sourceDir + "/resources/demo/data/thermal_caiviac.csv");
       result["real_diagnose_sdss"] =
           metrofit::bench::benchRealDiagnoseSdss(sourceDir + "/../shared/data/real/cmm-plugplate-sdss");
     }

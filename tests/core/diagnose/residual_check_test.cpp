@@ -48,6 +48,7 @@ TEST(ResidualCheck, LjungBoxMatchesTheTextbookStatisticAndTheChiSquareTwoClosedF
   in.variables = {continuous("row", iota(n), true)};
   ResidualCheckOptions o;
   o.maxLag = 2;
+  o.winsorZ = 0.0;  // the textbook statistic of the raw residual
   const ResidualCheck c = checkResidual(in, o);
   const ResidualTest* lb = findTest(c, "ljung_box", "row");
   ASSERT_NE(lb, nullptr);
@@ -104,6 +105,7 @@ TEST(ResidualCheck, PeriodicFTestMatchesTheNestedFitAndTheFTwoClosedForm) {
   in.variables = {a};
   ResidualCheckOptions o;
   o.harmonics = 1;
+  o.winsorZ = 0.0;
   const ResidualCheck c = checkResidual(in, o);
   const ResidualTest* t = findTest(c, "f_test", "angle", "periodic");
   ASSERT_NE(t, nullptr);
