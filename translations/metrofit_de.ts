@@ -6413,23 +6413,23 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>held-out rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3</source>
-        <translation>rmse Testdaten %1 → %2%3 (%4), rmse Anpassung %5 → %6%3</translation>
+        <source>validation rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, held-out rmse %7 -&gt; %8%3</source>
+        <translation>rmse Validierung %1 → %2%3 (%4), rmse Anpassung %5 → %6%3, rmse Testdaten %7 → %8%3</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>held-out rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, %7</source>
-        <translation>rmse Testdaten %1 → %2%3 (%4), rmse Anpassung %5 → %6%3, %7</translation>
+        <source>validation rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, held-out rmse %7 -&gt; %8%3, %9</source>
+        <translation>rmse Validierung %1 → %2%3 (%4), rmse Anpassung %5 → %6%3, rmse Testdaten %7 → %8%3, %9</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>; rejected: held-out error worse</source>
-        <translation>; abgelehnt: Fehler auf den Testdaten größer</translation>
+        <source>; rejected: validation error worse</source>
+        <translation>; abgelehnt: Validierungsfehler größer</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>; rejected: held-out gain below %1 %</source>
-        <translation>; abgelehnt: Gewinn auf den Testdaten unter %1 %</translation>
+        <source>; rejected: validation gain below %1 %</source>
+        <translation>; abgelehnt: Gewinn in der Validierung unter %1 %</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6443,8 +6443,43 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>accepted together with %1: held-out rmse %2 -&gt; %3%4 (%5), fit rmse %6 -&gt; %7%4, %8</source>
-        <translation>übernommen zusammen mit %1: rmse Testdaten %2 → %3%4 (%5), rmse Anpassung %6 → %7%4, %8</translation>
+        <source>accepted together with %1: validation rmse %2 -&gt; %3%4 (%5), fit rmse %6 -&gt; %7%4, held-out rmse %8 -&gt; %9%4, %10</source>
+        <translation>übernommen zusammen mit %1: rmse Validierung %2 → %3%4 (%5), rmse Anpassung %6 → %7%4, rmse Testdaten %8 → %9%4, %10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the validation folds cannot fit it</source>
+        <translation>; abgelehnt: die Validierungsfolds können es nicht anpassen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>effects chosen on the fit rows by blocked forward validation (%1 folds, validation rmse %2%3); the held-out rows only report the error</source>
+        <translation>Effekte auf den Anpassungszeilen durch blockweise Vorwärtsvalidierung gewählt (%1 Folds, rmse Validierung %2%3); die Testzeilen geben nur den Fehler an</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 gross errors excluded before the fit (robust z above %2):</source>
+        <translation>%1 grobe Fehler vor der Anpassung ausgeschlossen (robustes z über %2):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (%2%3)</source>
+        <translation> Zeile %1 (%2%3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the generic %1 validates better (%2 against %3%4)</source>
+        <translation>; abgelehnt: der generische Effekt %1 validiert besser (%2 gegen %3%4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the fit rows do not determine tau (standard error above half of it)</source>
+        <translation>; abgelehnt: die Anpassungszeilen bestimmen tau nicht (Standardfehler über der Hälfte)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) and the candidate effects</source>
+        <translation>deklariertes Modell %1 von %2 (angepasst an die ersten %3 von %4 Zeilen wie bei thermal fit; allein: rmse Anpassung %5, rmse Testdaten %6%7); die Schleife passt die Zielgröße an seine Vorhersage (Koeffizient %8) und die Kandidateneffekte an</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -6431,23 +6431,23 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>held-out rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3</source>
-        <translation>rmse danych testowych %1 → %2%3 (%4), rmse dopasowania %5 → %6%3</translation>
+        <source>validation rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, held-out rmse %7 -&gt; %8%3</source>
+        <translation>rmse walidacji %1 → %2%3 (%4), rmse dopasowania %5 → %6%3, rmse danych testowych %7 → %8%3</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>held-out rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, %7</source>
-        <translation>rmse danych testowych %1 → %2%3 (%4), rmse dopasowania %5 → %6%3, %7</translation>
+        <source>validation rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, held-out rmse %7 -&gt; %8%3, %9</source>
+        <translation>rmse walidacji %1 → %2%3 (%4), rmse dopasowania %5 → %6%3, rmse danych testowych %7 → %8%3, %9</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>; rejected: held-out error worse</source>
-        <translation>; odrzucony: błąd danych testowych większy</translation>
+        <source>; rejected: validation error worse</source>
+        <translation>; odrzucony: błąd walidacji większy</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>; rejected: held-out gain below %1 %</source>
-        <translation>; odrzucony: zysk na danych testowych poniżej %1 %</translation>
+        <source>; rejected: validation gain below %1 %</source>
+        <translation>; odrzucony: zysk w walidacji poniżej %1 %</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6461,8 +6461,43 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>accepted together with %1: held-out rmse %2 -&gt; %3%4 (%5), fit rmse %6 -&gt; %7%4, %8</source>
-        <translation>przyjęty razem z %1: rmse danych testowych %2 → %3%4 (%5), rmse dopasowania %6 → %7%4, %8</translation>
+        <source>accepted together with %1: validation rmse %2 -&gt; %3%4 (%5), fit rmse %6 -&gt; %7%4, held-out rmse %8 -&gt; %9%4, %10</source>
+        <translation>przyjęty razem z %1: rmse walidacji %2 → %3%4 (%5), rmse dopasowania %6 → %7%4, rmse danych testowych %8 → %9%4, %10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the validation folds cannot fit it</source>
+        <translation>; odrzucony: nie da się go dopasować w foldach walidacji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>effects chosen on the fit rows by blocked forward validation (%1 folds, validation rmse %2%3); the held-out rows only report the error</source>
+        <translation>efekty wybrane na wierszach dopasowania przez blokową walidację w przód (%1 foldy, rmse walidacji %2%3); wiersze testowe podają tylko błąd</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 gross errors excluded before the fit (robust z above %2):</source>
+        <translation>%1 błędów grubych wykluczonych przed dopasowaniem (odporne z powyżej %2):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> row %1 (%2%3)</source>
+        <translation> wiersz %1 (%2%3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the generic %1 validates better (%2 against %3%4)</source>
+        <translation>; odrzucony: efekt ogólny %1 lepiej się waliduje (%2 wobec %3%4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the fit rows do not determine tau (standard error above half of it)</source>
+        <translation>; odrzucony: wiersze dopasowania nie wyznaczają tau (błąd standardowy powyżej połowy)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) and the candidate effects</source>
+        <translation>zadeklarowany model %1 z %2 (dopasowany do pierwszych %3 z %4 wierszy jak w thermal fit; sam: rmse dopasowania %5, rmse danych testowych %6%7); pętla dopasowuje wielkość docelową do jego predykcji (współczynnik %8) i efektów kandydujących</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -1,6 +1,7 @@
 // metrofit-cli diagnose thermal|kinematic|setup|matching (CONTRACT.md; issue 8): fit the declared
 // model, trace the residual to an effect the model lacks, add it, report the error before and after.
-//   diagnose thermal   --data L.csv --target COL --inputs A,B,... [--train-fraction F] [--out R.json]
+//   diagnose thermal   --data L.csv --target COL --inputs A,B,... [--train-fraction F]
+//                      [--declared linear|gmc|gnnmci] [--seed N] [--out R.json]
 //   diagnose kinematic --data C.csv [--feed MM_PER_MIN] [--out R.json]
 //   diagnose setup     --data R.csv --model M.json [--out R.json]
 //   diagnose matching  --data P.csv [--tolerance T] [--out R.json]
@@ -37,7 +38,7 @@ namespace metrofit::cli {
 namespace {
 
 struct MethodArgs {
-  std::string model, data, method, machine, errors, path, target, inputs, out;
+  std::string model, data, method, machine, errors, path, target, inputs, out, declared = "linear";
   long budget = 5000;
   std::uint64_t seed = 1;
   double tolerance = 0.05, trainFraction = 0.5, feed = 1000.0;
@@ -120,6 +121,8 @@ int runThermal(const MethodArgs& a) {
   o.target = a.target;
   o.inputs = splitList(a.inputs);
   o.trainFraction = a.trainFraction;
+  o.declared = diagnose::thermalDeclaredModel(a.declared);
+  o.seed = a.seed;
   diagnose::Diagnosis d;
   {
     Progress progress("diagnose thermal");
@@ -189,6 +192,11 @@ void registerDiagnoseCommands(CLI::App& app) {
       sub->add_option("--inputs", a->inputs, "Declared input columns")->required();
       sub->add_option("--train-fraction", a->trainFraction, "Fraction of rows fitted; the rest is held out")
           ->check(CLI::Range(0.05, 0.95))
+          ->capture_default_str();
+      sub->add_option("--declared", a->declared,
+                      "Declared model the loop starts from: linear (static regression), gmc (GMC(1,N)) or gnnmci "
+                      "(GNNMCI(1,N), trained with --seed)")
+          ->check(CLI::IsMember({"linear", "gmc", "gnnmci"}))
           ->capture_default_str();
     }
     if (std::string(domain) == "kinematic") {

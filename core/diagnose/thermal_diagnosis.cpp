@@ -1,6 +1,8 @@
 #include "core/diagnose/thermal_diagnosis.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -20,6 +22,10 @@ namespace metrofit::diagnose {
 namespace {
 
 using A = PhraseArg;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Above this many rows the lag search's grid and its per-fold refinement run on group means
+/// (see the header comment); the reported tau and every reported error are computed on every row.
+constexpr std::size_t kCoarseRows = 20000;
 
 std::string fmt(double v, int digits = 3) {
   return std::isfinite(v) ? CsvWriter::formatNumber(v, digits) : "n/a";
@@ -37,19 +43,131 @@ PhraseArg pct(double before, double after) {
   return A::text({Phrase("%1 %", {A::signedNumber(p, 2)})});
 }
 
+/// sum_k w_k x_k y_k over [b, e) with four partial sums (the additions of one sum would wait on each
+/// other; four chains run at once). `w` may be null (all weights 1).
+double weightedDot(const double* w, const double* x, const double* y, std::size_t b, std::size_t e) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  std::size_t k = b;
+  if (w) {
+    for (; k + 4 <= e; k += 4) {
+      s0 += w[k] * x[k] * y[k];
+      s1 += w[k + 1] * x[k + 1] * y[k + 1];
+      s2 += w[k + 2] * x[k + 2] * y[k + 2];
+      s3 += w[k + 3] * x[k + 3] * y[k + 3];
+    }
+    for (; k < e; ++k) s0 += w[k] * x[k] * y[k];
+  } else {
+    for (; k + 4 <= e; k += 4) {
+      s0 += x[k] * y[k];
+      s1 += x[k + 1] * y[k + 1];
+      s2 += x[k + 2] * y[k + 2];
+      s3 += x[k + 3] * y[k + 3];
+    }
+    for (; k < e; ++k) s0 += x[k] * y[k];
+  }
+  return (s0 + s1) + (s2 + s3);
+}
+/// sum_k w_k x_k over [b, e) (w may be null), four partial sums.
+double weightedSum(const double* w, const double* x, std::size_t b, std::size_t e) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  std::size_t k = b;
+  for (; k + 4 <= e; k += 4) {
+    s0 += w ? w[k] * x[k] : x[k];
+    s1 += w ? w[k + 1] * x[k + 1] : x[k + 1];
+    s2 += w ? w[k + 2] * x[k + 2] : x[k + 2];
+    s3 += w ? w[k + 3] * x[k + 3] : x[k + 3];
+  }
+  for (; k < e; ++k) s0 += w ? w[k] * x[k] : x[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
 /// The model state: the declared inputs plus the accepted effects (thermal_applied.h, shared with
 /// every fit of the thermal study that includes applied effects).
-using ModelState = ThermalEffectSet;
+struct State {
+  ThermalEffectSet effects;
+  std::vector<int> generics;  ///< accepted generic effects (Problem::generic indices)
+};
+
+bool operator==(const State& a, const State& b) {
+  return a.effects.lagAll == b.effects.lagAll && a.effects.lagCol == b.effects.lagCol &&
+         a.effects.extra == b.effects.extra && a.effects.drift == b.effects.drift && a.generics == b.generics;
+}
+
+/// One model state per view: views 0..K-1 are the validation folds, view K the fit on all fit rows.
+using Views = std::vector<State>;
+
+/// Gram matrices of the standardised columns [1, z_1..z_p, y - ybar] per block of rows.
+struct Grams {
+  bool ok = false;
+  Phrase why;
+  std::vector<std::string> names;  ///< column names (without the intercept)
+  Eigen::VectorXd mean, sd;        ///< per column, on the fit rows
+  double ybar = 0.0;               ///< target mean on the fit rows
+  std::vector<Eigen::MatrixXd> block;
+};
+
+/// Least squares from a Gram matrix (the sum of some blocks' Grams).
+struct Solution {
+  bool ok = false;
+  int rank = 0;
+  Eigen::VectorXd b;    ///< intercept, then the standardised columns
+  Eigen::MatrixXd inv;  ///< (X^T X)^+ (for standard errors)
+  double sse = 0.0;
+};
+
+Solution solveGram(const Eigen::MatrixXd& G) {
+  Solution s;
+  const Eigen::Index q = G.rows() - 1;
+  const Eigen::MatrixXd Gxx = G.topLeftCorner(q, q);
+  const Eigen::VectorXd Gxy = G.col(q).head(q);
+  // Jacobi scaling, then the pseudo-inverse of the correlation-like matrix (rank = eigenvalues above
+  // 1e-11 of the largest: singular values of the scaled design above ~3e-6).
+  Eigen::VectorXd d(q);
+  for (Eigen::Index j = 0; j < q; ++j) d(j) = Gxx(j, j) > 0.0 ? 1.0 / std::sqrt(Gxx(j, j)) : 0.0;
+  const Eigen::MatrixXd S = d.asDiagonal() * Gxx * d.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S);
+  const Eigen::VectorXd& ev = es.eigenvalues();
+  const double top = ev.size() ? ev.maxCoeff() : 0.0;
+  Eigen::VectorXd invEv = Eigen::VectorXd::Zero(q);
+  for (Eigen::Index j = 0; j < q; ++j)
+    if (ev(j) > 1e-11 * top && top > 0.0) {
+      invEv(j) = 1.0 / ev(j);
+      ++s.rank;
+    }
+  const Eigen::MatrixXd Sinv = es.eigenvectors() * invEv.asDiagonal() * es.eigenvectors().transpose();
+  s.inv = d.asDiagonal() * Sinv * d.asDiagonal();
+  s.b = s.inv * Gxy;
+  s.sse = std::max(0.0, G(q, q) - s.b.dot(Gxy));
+  s.ok = true;
+  return s;
+}
+
+/// Sum of squares of the prediction with coefficients b on a block with Gram G.
+double sseOn(const Eigen::MatrixXd& G, const Eigen::VectorXd& b) {
+  const Eigen::Index q = G.rows() - 1;
+  return std::max(0.0, G(q, q) - 2.0 * b.dot(G.col(q).head(q)) + b.dot(G.topLeftCorner(q, q) * b));
+}
 
 struct Fit {
   bool ok = false;
   Phrase why;                       ///< when not ok
-  std::vector<double> residual;     ///< all rows, y - prediction
-  double rmse = 0.0, maxAbs = 0.0;  ///< fit rows
-  double heldout = 0.0;             ///< held-out rows
+  double rmse = 0.0;                ///< fit rows
+  double heldout = 0.0;             ///< held-out rows (reported only)
   double sse = 0.0, s2 = 0.0;       ///< fit rows
+  double cv = kInf;                 ///< blocked validation rmse (fit rows only)
+  bool cvOk = false;
   std::vector<std::string> names;   ///< column names (without the intercept)
   Eigen::VectorXd beta, se;         ///< per column, original units
+  // For residuals: standardised coefficients and the scaling.
+  Eigen::VectorXd coef, mean, sd;
+  double ybar = 0.0;
+};
+
+/// A fit's residual on every row (y - prediction) and its summaries.
+struct Residual {
+  std::vector<double> r;
+  double maxAbs = 0.0;          ///< fit rows
+  std::vector<char> excluded;  ///< per row: a gross error excluded from the fits
 };
 
 class Problem {
@@ -58,92 +176,578 @@ class Problem {
     y_ = log.channel(o.target).values;
     n_ = log.rows();
     nFit_ = thermal::fitRowCount(n_, o.trainFraction);
+    const int K = o.validationFolds;
+    edge_.push_back(0);
+    for (int f = 1; f <= K; ++f)
+      edge_.push_back(static_cast<std::size_t>(
+          std::llround(static_cast<double>(nFit_) * (K + f - 1) / (2.0 * K))));
+    edge_.push_back(nFit_);
+    edge_.push_back(n_);
+    // The median step of the fit rows (the lag search's lower end).
+    std::vector<double> d;
+    for (std::size_t k = 1; k < nFit_; ++k) d.push_back(log_.timeMin[k] - log_.timeMin[k - 1]);
+    if (d.empty()) d.push_back(1.0);
+    std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+    medianStep_ = d[d.size() / 2];
+    // Equal steps (time only, no target): the lag filter needs one exponential.
+    const double step = n_ > 1 ? log_.timeMin[1] - log_.timeMin[0] : 0.0;
+    bool uniform = n_ > 1;
+    for (std::size_t k = 1; k < n_ && uniform; ++k)
+      uniform = std::abs((log_.timeMin[k] - log_.timeMin[k - 1]) - step) <= 1e-9 * step;
+    uniformStep_ = uniform ? step : 0.0;
+    y0_ = y_.empty() ? 0.0 : y_[0];
+    yc_.resize(n_);
+    for (std::size_t k = 0; k < n_; ++k) yc_[k] = y_[k] - y0_;
+    w_.assign(n_, 1.0);
+    const std::size_t m = (n_ + kCoarseRows - 1) / kCoarseRows;
+    coarse_ = m > 1;
+    if (coarse_) {
+      for (std::size_t b = 0; b + 1 < edge_.size(); ++b) {
+        gOfBlock_.push_back(gEdge_.size());
+        for (std::size_t k = edge_[b]; k < edge_[b + 1]; k += m) gEdge_.push_back(k);
+      }
+      gOfBlock_.push_back(gEdge_.size());
+      gEdge_.push_back(n_);
+      gTime_ = groupMeans(log_.timeMin);
+    }
+    prepareSums();
+  }
+
+  /// Excludes rows (gross errors of the target, 0-based) from every fit: weight 0 in every sum.
+  void exclude(const std::vector<std::size_t>& rows) {
+    for (std::size_t k : rows) w_[k] = 0.0;
+    anyExcluded_ = !rows.empty();
+    store_.clear();
+    dots_.clear();
+    temporary_.clear();
+    prepareSums();
+  }
+  bool excluded(std::size_t k) const { return w_[k] == 0.0; }
+
+  /// Cancel inside a candidate (a lag search on a long log takes a while): the observer is asked
+  /// again with the last step's figures (no new step); once it says Stop every fit returns at once
+  /// and the loop ends after the candidate with the note "cancelled".
+  void setObserver(Observer* o) { observer_ = o; }
+  void setStep(long steps, double current) const {
+    pollSteps_ = steps;
+    pollCurrent_ = current;
+  }
+  bool poll() const {
+    if (stopped_ || !observer_) return stopped_;
+    IterationSummary s;
+    s.iteration = std::max(0L, pollSteps_ - 1);
+    s.evaluations = pollSteps_;
+    s.best = pollCurrent_;
+    s.components = {{"cv_rmse", pollCurrent_}};
+    if (observer_->onIteration(s) == ObserverDecision::Stop) stopped_ = true;
+    return stopped_;
+  }
+  bool stopped() const { return stopped_; }
+
+  /// The coarse groups of the fit rows (begin, end), empty below kCoarseRows rows.
+  std::vector<std::pair<std::size_t, std::size_t>> fitGroups() const {
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    if (!coarse_) return out;
+    for (std::size_t g = 0; g + 1 < gEdge_.size() && gEdge_[g] < nFit_; ++g) out.emplace_back(gEdge_[g], gEdge_[g + 1]);
+    return out;
+  }
+  /// The row weights, or null when no row is excluded (the sums skip the multiplication).
+  const double* weights() const { return anyExcluded_ ? w_.data() : nullptr; }
+
+  /// The weighted per-block counts and sums of the target (full and coarse resolution).
+  void prepareSums() {
+    const std::size_t B = edge_.size() - 1;
+    blockN_.assign(B, 0.0);
+    ySum_.assign(B, 0.0);
+    yy_.assign(B, 0.0);
+    for (std::size_t b = 0; b < B; ++b)
+      for (std::size_t k = edge_[b]; k < edge_[b + 1]; ++k) {
+        blockN_[b] += w_[k];
+        ySum_[b] += w_[k] * yc_[k];
+        yy_[b] += w_[k] * yc_[k] * yc_[k];
+      }
+    fitN_ = 0.0;
+    for (std::size_t b = 0; b + 1 < B; ++b) fitN_ += blockN_[b];
+    if (coarse_) {
+      const std::size_t G = gEdge_.size() - 1;
+      gW_.assign(G, 0.0);
+      yMean_.assign(G, 0.0);
+      for (std::size_t g = 0; g < G; ++g) {
+        double s = 0.0;
+        for (std::size_t k = gEdge_[g]; k < gEdge_[g + 1]; ++k) {
+          gW_[g] += w_[k];
+          s += w_[k] * yc_[k];
+        }
+        yMean_[g] = gW_[g] > 0.0 ? s / gW_[g] : 0.0;
+      }
+      yyCoarse_.assign(B, 0.0);
+      for (std::size_t b = 0; b < B; ++b)
+        for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g) yyCoarse_[b] += gW_[g] * yMean_[g] * yMean_[g];
+    }
   }
 
   std::size_t rows() const { return n_; }
   std::size_t fitRows() const { return nFit_; }
+  int folds() const { return o_.validationFolds; }
+  int views() const { return o_.validationFolds + 1; }
+  int fullView() const { return o_.validationFolds; }
   const std::vector<double>& time() const { return log_.timeMin; }
+  double medianStep() const { return medianStep_; }
 
-  Fit fit(const ModelState& m) const {
-    std::vector<std::vector<double>> cols;
-    Fit f;
-    for (ThermalRegressor& r : thermalRegressors(log_, o_.inputs, m)) {
-      cols.push_back(std::move(r.values));
-      f.names.push_back(std::move(r.name));
+  bool grey() const { return o_.declared != ThermalDeclaredModel::Linear; }
+  /// Views whose columns are the same for the same state share this key (GramSet).
+  int columnsKey(int view) const { return grey() ? view : 0; }
+
+  /// Fits the declared grey model once per view (see the header comment). False when the observer
+  /// stopped a training. ValidationError when the model cannot be fitted on the fit rows.
+  bool fitDeclared(Observer* observer) {
+    if (!grey()) return true;
+    const thermal::ThermalSeries series = thermal::selectThermalSeries(log_, o_.target, o_.inputs);
+    thermal::ThermalFitOptions fo;
+    fo.model = o_.declared == ThermalDeclaredModel::Gmc ? thermal::ThermalModelKind::Gmc
+                                                        : thermal::ThermalModelKind::Gnnmci;
+    fo.setSeed(o_.seed);
+    bool stopped = false;
+    // The trainings' progress reaches the observer with component "declared_fit"; its Stop stops them.
+    FunctionObserver relay([&](const IterationSummary& it) {
+      if (!observer) return ObserverDecision::Continue;
+      IterationSummary s = it;
+      s.evaluations = 0;
+      s.components = {{"declared_fit", it.best}};
+      if (observer->onIteration(s) == ObserverDecision::Stop) stopped = true;
+      return stopped ? ObserverDecision::Stop : ObserverDecision::Continue;
+    });
+    pred_.assign(static_cast<std::size_t>(views()), {});
+    // The fit on all fit rows first (its errors are the user's), then one per fold.
+    for (int v = views() - 1; v >= 0 && !stopped; --v) {
+      const std::size_t rows = v == fullView() ? nFit_ : edge_[static_cast<std::size_t>(v) + 1];
+      std::vector<double> p;
+      try {
+        const thermal::ThermalTraining t = thermal::fitThermalModel({series.head(rows)}, fo, &relay);
+        if (stopped) break;
+        p = thermal::predictTarget(t.model, series);
+        if (v == fullView()) declaredTraining_ = t;
+      } catch (const std::exception& e) {
+        if (v == fullView()) {
+          if (dynamic_cast<const InputError*>(&e)) throw;
+          throw ValidationError(ErrorContext{log_.source, 0, 0, o_.target},
+                                std::string("the declared model cannot be fitted: ") + e.what());
+        }
+        continue;  // this fold cannot validate
+      }
+      const bool finite = std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); });
+      if (!finite) {
+        if (v == fullView())
+          throw ValidationError(ErrorContext{log_.source, 0, 0, o_.target},
+                                std::string("the declared ") + toString(o_.declared) +
+                                    " model is unstable on the fit rows (b1 <= 0): its prediction is not finite");
+        continue;
+      }
+      pred_[static_cast<std::size_t>(v)] = std::move(p);
     }
-    const auto p = static_cast<Eigen::Index>(cols.size());
-    const auto nf = static_cast<Eigen::Index>(nFit_);
-    if (nf < p + 3) {
-      f.why = Phrase("too few fit rows (%1) for %2 coefficients",
-                     {A::integer(static_cast<long long>(nFit_)), A::integer(p + 1)});
+    return !stopped;
+  }
+
+  /// The declared grey model fitted on all fit rows, and its own rmse on the fit and held-out rows.
+  const thermal::ThermalTraining& declaredTraining() const { return declaredTraining_; }
+  std::pair<double, double> declaredOwnRmse() const {
+    const auto& p = pred_[static_cast<std::size_t>(fullView())];
+    double a = 0.0, b = 0.0;
+    for (std::size_t k = 0; k < n_; ++k) (k < nFit_ ? a : b) += (y_[k] - p[k]) * (y_[k] - p[k]);
+    return {std::sqrt(a / static_cast<double>(nFit_)), std::sqrt(b / static_cast<double>(n_ - nFit_))};
+  }
+
+  /// One column of a model: `key` identifies its values (the store computes them once), `name` is
+  /// the loop's name for its coefficient.
+  struct ColumnSpec {
+    std::string key;   ///< "in:T2", "lag:T2@<tau>", "extra:rpm", "drift", "pred:<view>"
+    std::string name;  ///< "T2", "input:rpm", "drift", "declared", "lag:T2"
+  };
+
+  /// The columns of a model state (without the intercept); empty when the view's grey model could
+  /// not be fitted.
+  std::vector<ColumnSpec> columns(const State& s, int view) const {
+    std::vector<ColumnSpec> out;
+    auto lagKey = [](const std::string& col, double tau) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "@%a", tau);
+      return "lag:" + col + buf;
+    };
+    if (!grey()) {
+      for (const auto& in : o_.inputs) {
+        const auto it = s.effects.lagCol.find(in);
+        const double tau = it != s.effects.lagCol.end() ? it->second : s.effects.lagAll;
+        out.push_back({tau > 0.0 ? lagKey(in, tau) : "in:" + in, in});
+      }
+    } else {
+      if (pred_[static_cast<std::size_t>(view)].empty()) return {};
+      out.push_back({"pred:" + std::to_string(view), "declared"});
+      for (const auto& [col, tau] : s.effects.lagCol) out.push_back({lagKey(col, tau), "lag:" + col});
+    }
+    for (const auto& e : s.effects.extra) out.push_back({"extra:" + e, "input:" + e});
+    if (s.effects.drift) out.push_back({"drift", "drift"});
+    for (int i : s.generics) {
+      const auto& g = generic_[static_cast<std::size_t>(i)];
+      for (Eigen::Index j = 0; j < g.basis.cols(); ++j)
+        out.push_back({"gen:" + std::to_string(i) + ":" + std::to_string(j),
+                       "unexplained:" + g.form.against + "#" + std::to_string(j)});
+    }
+    return out;
+  }
+
+  /// A generic effect's fixed shape and its basis on every row.
+  struct Generic {
+    GenericForm form;
+    Eigen::MatrixXd basis;
+    std::vector<double> values;  ///< the variable on every row
+  };
+  /// Registers a generic effect (its basis on every row, so that held-out rows are predicted too).
+  int addGeneric(const GenericForm& f, const std::vector<double>& values) const {
+    generic_.push_back({f, genericBasis(f, values), values});
+    return static_cast<int>(generic_.size()) - 1;
+  }
+  const Generic& generic(int i) const { return generic_[static_cast<std::size_t>(i)]; }
+
+  /// The full view's columns of a state (for the residual check's model columns).
+  std::vector<const std::vector<double>*> columnValues(const State& s) const {
+    std::vector<const std::vector<double>*> out;
+    for (const ColumnSpec& c : columns(s, fullView())) out.push_back(&column(c.key).v);
+    return out;
+  }
+
+  /// A stored column: its values minus their first value (the intercept absorbs the shift), per
+  /// block its sum and its products with the target.
+  struct Column {
+    std::vector<double> v;
+    double shift = 0.0;
+    std::vector<double> sum, dotY;
+    bool pinned = false;
+  };
+
+  /// The column `key` (computed and stored when missing).
+  const Column& column(const std::string& fullKey) const {
+    if (auto it = store_.find(fullKey); it != store_.end()) return it->second;
+    const bool coarse = fullKey.starts_with("~");
+    const std::string key = coarse ? fullKey.substr(1) : fullKey;
+    Column c;
+    std::vector<double> raw;
+    bool pin = true;
+    if (key.starts_with("in:")) {
+      raw = log_.channel(key.substr(3)).values;
+    } else if (key.starts_with("extra:")) {
+      raw = log_.channel(key.substr(6)).values;
+    } else if (key == "drift") {
+      raw = log_.timeMin;
+    } else if (key.starts_with("pred:")) {
+      raw = pred_[static_cast<std::size_t>(std::stoi(key.substr(5)))];
+    } else if (key.starts_with("gen:")) {
+      const std::size_t colon = key.find(':', 4);
+      const Generic& g = generic_[static_cast<std::size_t>(std::stoi(key.substr(4, colon - 4)))];
+      const Eigen::VectorXd c = g.basis.col(std::stoi(key.substr(colon + 1)));
+      raw.assign(c.data(), c.data() + c.size());
+    } else {  // lag:<col>@<tau>
+      const std::size_t at = key.rfind('@');
+      const std::vector<double>& x = log_.channel(key.substr(4, at - 4)).values;
+      const double tau = std::strtod(key.c_str() + at + 1, nullptr);
+      // Coarse: the lag of the group means on the groups' mean times (the grid only brackets tau).
+      if (coarse) {
+        const std::string name = key.substr(4, at - 4);
+        auto it = coarseInput_.find(name);
+        if (it == coarseInput_.end()) it = coarseInput_.emplace(name, groupMeans(x)).first;
+        raw = laggedOn(it->second, gTime_, tau, 0.0);
+      } else {
+        raw = laggedOn(x, log_.timeMin, tau, uniformStep_);
+      }
+      pin = false;
+    }
+    if (coarse && raw.size() == n_) raw = groupMeans(raw);
+    c.shift = raw[0];
+    c.sum.assign(edge_.size() - 1, 0.0);
+    c.dotY.assign(edge_.size() - 1, 0.0);
+    if (!coarse) {
+      c.v = std::move(raw);
+      for (double& x : c.v) x -= c.shift;
+      for (std::size_t b = 0; b + 1 < edge_.size(); ++b) {
+        c.sum[b] = weightedSum(weights(), c.v.data(), edge_[b], edge_[b + 1]);
+        c.dotY[b] = weightedDot(weights(), c.v.data(), yc_.data(), edge_[b], edge_[b + 1]);
+      }
+    } else {  // group means, weighted by the group sizes
+      const std::size_t G = gEdge_.size() - 1;
+      c.v.resize(G);
+      for (std::size_t g = 0; g < G; ++g) c.v[g] = raw[g] - c.shift;  // (raw has G values here)
+      for (std::size_t b = 0; b + 1 < edge_.size(); ++b)
+        for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g) {
+          c.sum[b] += gW_[g] * c.v[g];
+          c.dotY[b] += gW_[g] * c.v[g] * yMean_[g];
+        }
+    }
+    c.pinned = pin;
+    if (!pin) temporary_.push_back(fullKey);
+    return store_.emplace(fullKey, std::move(c)).first->second;
+  }
+
+  /// Per block products of two stored columns (computed once while both are stored).
+  const std::vector<double>& dot(const std::string& a, const std::string& b) const {
+    const auto key = a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+    if (auto it = dots_.find(key); it != dots_.end()) return it->second;
+    const std::vector<double>&x = column(a).v, &y = column(b).v;
+    std::vector<double> d(edge_.size() - 1, 0.0);
+    if (!a.starts_with("~")) {
+      for (std::size_t blk = 0; blk + 1 < edge_.size(); ++blk)
+        d[blk] = weightedDot(weights(), x.data(), y.data(), edge_[blk], edge_[blk + 1]);
+    } else {
+      for (std::size_t blk = 0; blk + 1 < edge_.size(); ++blk)
+        for (std::size_t g = gOfBlock_[blk]; g < gOfBlock_[blk + 1]; ++g)
+          d[blk] += gW_[g] * x[g] * y[g];
+    }
+    return dots_.emplace(key, std::move(d)).first->second;
+  }
+
+  /// Keeps the columns of `s` (every view) stored; they are used by every later candidate.
+  void pin(const Views& s) const {
+    for (int v = 0; v < views(); ++v)
+      for (const ColumnSpec& c : columns(s[static_cast<std::size_t>(v)], v)) {
+        column(c.key);
+        store_.at(c.key).pinned = true;
+      }
+  }
+  /// Drops the columns that are not pinned (a lag searched over tau makes one per tau) and their
+  /// products.
+  void sweep() const {
+    for (const std::string& key : temporary_) {
+      auto it = store_.find(key);
+      if (it == store_.end() || it->second.pinned) continue;
+      store_.erase(it);
+      for (auto d = dots_.begin(); d != dots_.end();)
+        d = d->first.first == key || d->first.second == key ? dots_.erase(d) : std::next(d);
+    }
+    temporary_.clear();
+  }
+
+  /// The first-order lag of effects_thermal.h (s(0) = x(0), s(k) = s(k-1) + (1 - e^{-dt_k/tau})
+  /// (x(k) - s(k-1))), with one exponential when the steps are equal.
+  /// On times t (`step` > 0: all steps equal to it). Written s(k) = e s(k-1) + (1 - e) x(k), so that
+  /// the chain from one row to the next is one multiply-add.
+  static std::vector<double> laggedOn(const std::vector<double>& x, const std::vector<double>& t, double tau,
+                                      double step) {
+    std::vector<double> s(x.size());
+    if (x.empty()) return s;
+    s[0] = x[0];
+    if (step > 0.0) {
+      // s(k) = e s(k-1) + a x(k) = e^2 s(k-2) + (e a x(k-1) + a x(k)): two interleaved chains, each
+      // one multiply-add per two rows.
+      const double a = -std::expm1(-step / tau), e = 1.0 - a, e2 = e * e, ea = e * a;
+      std::size_t k = 1;
+      if (x.size() > 1) {
+        s[1] = e * s[0] + a * x[1];
+        k = 2;
+      }
+      for (; k + 1 < x.size(); k += 2) {
+        s[k] = e2 * s[k - 2] + (ea * x[k - 1] + a * x[k]);
+        s[k + 1] = e2 * s[k - 1] + (ea * x[k] + a * x[k + 1]);
+      }
+      for (; k < x.size(); ++k) s[k] = e * s[k - 1] + a * x[k];
+    } else {
+      double dt = -1.0, a = 0.0;  // one exponential per run of equal steps
+      for (std::size_t k = 1; k < x.size(); ++k) {
+        if (t[k] - t[k - 1] != dt) {
+          dt = t[k] - t[k - 1];
+          a = -std::expm1(-dt / tau);
+        }
+        s[k] = (1.0 - a) * s[k - 1] + a * x[k];
+      }
+    }
+    return s;
+  }
+  /// Means of x over the coarse groups.
+  std::vector<double> groupMeans(const std::vector<double>& x) const {
+    std::vector<double> out(gEdge_.size() - 1);
+    for (std::size_t g = 0; g + 1 < gEdge_.size(); ++g) {
+      double s = 0.0;
+      for (std::size_t k = gEdge_[g]; k < gEdge_[g + 1]; ++k) s += x[k];
+      out[g] = s / static_cast<double>(gEdge_[g + 1] - gEdge_[g]);
+    }
+    return out;
+  }
+
+  /// The block Grams of a state in a view: standardised columns [1, z_1..z_p, y - ybar], every
+  /// column centred and scaled on the fit rows, assembled from the stored per-block sums and
+  /// products.
+  Grams grams(const State& s, int view, bool coarse = false) const {
+    Grams g;
+    if (stopped_) return g;
+    std::vector<ColumnSpec> specs = columns(s, view);
+    if (coarse && coarse_)
+      for (ColumnSpec& c : specs) c.key = "~" + c.key;
+    const std::vector<double>& yy = coarse && coarse_ ? yyCoarse_ : yy_;
+    if (specs.empty()) return g;  // a fold whose grey model could not be fitted
+    const auto p = static_cast<Eigen::Index>(specs.size());
+    const double nf = fitN_;
+    for (const auto& c : specs) g.names.push_back(c.name);
+    if (nf < static_cast<double>(p + 3)) {
+      g.why = Phrase("too few fit rows (%1) for %2 coefficients",
+                     {A::integer(std::llround(nf)), A::integer(p + 1)});
+      return g;
+    }
+    const std::size_t B = edge_.size() - 1, fitBlocks = B - 1;
+    std::vector<const Column*> col;
+    for (const auto& c : specs) col.push_back(&column(c.key));
+    std::vector<std::vector<const std::vector<double>*>> P(static_cast<std::size_t>(p),
+                                                           std::vector<const std::vector<double>*>(static_cast<std::size_t>(p)));
+    for (Eigen::Index i = 0; i < p; ++i)
+      for (Eigen::Index j = i; j < p; ++j) {
+        const auto ii = static_cast<std::size_t>(i), jj = static_cast<std::size_t>(j);
+        P[ii][jj] = P[jj][ii] = &dot(specs[ii].key, specs[jj].key);
+      }
+    g.mean.resize(p);
+    g.sd.resize(p);
+    for (Eigen::Index j = 0; j < p; ++j) {
+      const auto jj = static_cast<std::size_t>(j);
+      double s1 = 0.0, s2 = 0.0;
+      for (std::size_t b = 0; b < fitBlocks; ++b) {
+        s1 += col[jj]->sum[b];
+        s2 += (*P[jj][jj])[b];
+      }
+      g.mean(j) = s1 / nf;
+      g.sd(j) = std::sqrt(std::max(0.0, s2 / nf - g.mean(j) * g.mean(j)));
+      if (!(g.sd(j) > 1e-12 * std::max(1.0, std::abs(g.mean(j) + col[jj]->shift)))) {
+        g.why = Phrase("column '%1' is constant on the fit rows", {A::name(g.names[jj])});
+        return g;
+      }
+    }
+    double sy = 0.0;
+    for (std::size_t b = 0; b < fitBlocks; ++b) sy += ySum_[b];
+    const double ybar = sy / nf;
+    g.ybar = ybar + y0_;
+    const Eigen::Index q = p + 2;
+    for (std::size_t b = 0; b < B; ++b) {
+      const double nb = coarse && coarse_ ? coarseN(b) : blockN_[b];
+      Eigen::MatrixXd G(q, q);
+      G(0, 0) = nb;
+      for (Eigen::Index i = 0; i < p; ++i) {
+        const auto ii = static_cast<std::size_t>(i);
+        const double mi = g.mean(i), si = g.sd(i), Si = col[ii]->sum[b];
+        G(0, i + 1) = G(i + 1, 0) = (Si - nb * mi) / si;
+        for (Eigen::Index j = i; j < p; ++j) {
+          const auto jj = static_cast<std::size_t>(j);
+          const double mj = g.mean(j), Sj = col[jj]->sum[b];
+          G(i + 1, j + 1) = G(j + 1, i + 1) = ((*P[ii][jj])[b] - mi * Sj - mj * Si + nb * mi * mj) / (si * g.sd(j));
+        }
+        G(i + 1, q - 1) = G(q - 1, i + 1) = (col[ii]->dotY[b] - mi * ySum_[b] - ybar * Si + nb * mi * ybar) / si;
+      }
+      G(0, q - 1) = G(q - 1, 0) = ySum_[b] - nb * ybar;
+      G(q - 1, q - 1) = yy[b] - 2.0 * ybar * ySum_[b] + nb * ybar * ybar;
+      g.block.push_back(std::move(G));
+    }
+    g.ok = true;
+    return g;
+  }
+
+  /// Sum of the Grams of blocks [0, last].
+  static Eigen::MatrixXd sumBlocks(const Grams& g, int last) {
+    Eigen::MatrixXd G = g.block[0];
+    for (int b = 1; b <= last; ++b) G += g.block[static_cast<std::size_t>(b)];
+    return G;
+  }
+
+  /// Rows (weights) of block b and of blocks [0, last].
+  double blockRows(int b) const { return blockN_[static_cast<std::size_t>(b)]; }
+  double rowsUpTo(int last) const {
+    double s = 0.0;
+    for (int b = 0; b <= last; ++b) s += blockN_[static_cast<std::size_t>(b)];
+    return s;
+  }
+  double coarseN(std::size_t b) const {
+    double s = 0.0;
+    for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g) s += gW_[g];
+    return s;
+  }
+  double fitCount() const { return fitN_; }
+
+  /// The sum of squares a view minimises on its own rows (fold f: blocks 0..f; full view: the fit
+  /// rows); infinite when the view cannot be fitted.
+  double viewSse(const Grams& g, int view) const {
+    if (!g.ok || stopped_) return kInf;
+    const auto q = static_cast<std::size_t>(g.block[0].rows() - 1);
+    if (rowsUpTo(view) < static_cast<double>(q + 1)) return kInf;
+    const Solution s = solveGram(sumBlocks(g, view));
+    if (view == fullView() && s.rank < static_cast<int>(q)) return kInf;
+    return s.sse;
+  }
+
+  /// The fit of a model whose views have the Grams `g` (one per view, g[fullView()] on all fit rows).
+  Fit fit(const std::vector<const Grams*>& g) const {
+    Fit f;
+    const Grams& full = *g[static_cast<std::size_t>(fullView())];
+    if (!full.ok) {
+      f.why = full.why;
       return f;
     }
-    // Centre and scale every column on the fit rows (conditioning); the intercept absorbs the means.
-    Eigen::VectorXd mean(p), sd(p);
-    Eigen::MatrixXd X(nf, p + 1);
-    X.col(0).setOnes();
-    for (Eigen::Index j = 0; j < p; ++j) {
-      const auto& c = cols[static_cast<std::size_t>(j)];
-      double s = 0.0;
-      for (Eigen::Index k = 0; k < nf; ++k) s += c[static_cast<std::size_t>(k)];
-      mean(j) = s / static_cast<double>(nf);
-      double v = 0.0;
-      for (Eigen::Index k = 0; k < nf; ++k) v += std::pow(c[static_cast<std::size_t>(k)] - mean(j), 2);
-      sd(j) = std::sqrt(v / static_cast<double>(nf));
-      if (!(sd(j) > 1e-12 * std::max(1.0, std::abs(mean(j))))) {
-        f.why = Phrase("column '%1' is constant on the fit rows",
-                       {A::name(f.names[static_cast<std::size_t>(j)])});
-        return f;
-      }
-      for (Eigen::Index k = 0; k < nf; ++k) X(k, j + 1) = (c[static_cast<std::size_t>(k)] - mean(j)) / sd(j);
-    }
-    Eigen::VectorXd yf(nf);
-    for (Eigen::Index k = 0; k < nf; ++k) yf(k) = y_[static_cast<std::size_t>(k)];
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
-    if (qr.rank() < p + 1) {
+    const Eigen::Index q = full.block[0].rows() - 1;  // coefficients with the intercept
+    const Eigen::Index p = q - 1;
+    const Solution s = solveGram(sumBlocks(full, fullView()));
+    if (s.rank < q) {
       f.why = Phrase("the columns are linearly dependent on the fit rows");
       return f;
     }
-    const Eigen::VectorXd b = qr.solve(yf);
-    f.residual.resize(n_);
-    double sseFit = 0.0, sseHeld = 0.0;
-    for (std::size_t k = 0; k < n_; ++k) {
-      double pred = b(0);
-      for (Eigen::Index j = 0; j < p; ++j)
-        pred += b(j + 1) * (cols[static_cast<std::size_t>(j)][k] - mean(j)) / sd(j);
-      const double r = y_[k] - pred;
-      f.residual[k] = r;
-      if (k < nFit_) {
-        sseFit += r * r;
-        f.maxAbs = std::max(f.maxAbs, std::abs(r));
-      } else {
-        sseHeld += r * r;
-      }
-    }
-    f.sse = sseFit;
-    f.rmse = std::sqrt(sseFit / static_cast<double>(nf));
-    f.heldout = n_ > nFit_ ? std::sqrt(sseHeld / static_cast<double>(n_ - nFit_)) : 0.0;
-    f.s2 = sseFit / static_cast<double>(nf - p - 1);
-    const Eigen::MatrixXd R = qr.matrixR().topLeftCorner(p + 1, p + 1).triangularView<Eigen::Upper>();
-    const Eigen::MatrixXd Rinv =
-        R.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(p + 1, p + 1));
-    const Eigen::MatrixXd P = qr.colsPermutation().toDenseMatrix().cast<double>();
-    const Eigen::MatrixXd cov = f.s2 * (P * Rinv * Rinv.transpose() * P.transpose());
+    const double nf = fitN_;
+    f.names = full.names;
+    f.sse = s.sse;
+    f.rmse = std::sqrt(s.sse / nf);
+    f.s2 = s.sse / (nf - static_cast<double>(q));
+    const double nHeld = blockN_.back();
+    f.heldout = nHeld > 0.0 ? std::sqrt(sseOn(full.block.back(), s.b) / nHeld) : 0.0;
     f.beta.resize(p);
     f.se.resize(p);
     for (Eigen::Index j = 0; j < p; ++j) {
-      f.beta(j) = b(j + 1) / sd(j);
-      f.se(j) = std::sqrt(std::max(0.0, cov(j + 1, j + 1))) / sd(j);
+      f.beta(j) = s.b(j + 1) / full.sd(j);
+      f.se(j) = std::sqrt(std::max(0.0, f.s2 * s.inv(j + 1, j + 1))) / full.sd(j);
     }
+    f.coef = s.b;
+    f.mean = full.mean;
+    f.sd = full.sd;
+    f.ybar = full.ybar;
+    // Blocked validation: fold v fits blocks 0..v and predicts block v + 1.
+    double vSse = 0.0, vRows = 0.0;
+    bool cvOk = true;
+    for (int v = 0; v < folds() && cvOk; ++v) {
+      const Grams& gv = *g[static_cast<std::size_t>(v)];
+      const double nv = blockRows(v + 1);
+      if (nv == 0.0) continue;
+      if (!gv.ok || rowsUpTo(v) < static_cast<double>(q + 1)) {
+        cvOk = false;
+        break;
+      }
+      const Solution sv = solveGram(sumBlocks(gv, v));
+      vSse += sseOn(gv.block[static_cast<std::size_t>(v) + 1], sv.b);
+      vRows += nv;
+    }
+    f.cvOk = cvOk && vRows > 0.0;
+    f.cv = f.cvOk ? std::sqrt(vSse / vRows) : kInf;
     f.ok = true;
     return f;
   }
 
-  double medianStep() const {
-    std::vector<double> d;
-    for (std::size_t k = 1; k < n_; ++k) d.push_back(log_.timeMin[k] - log_.timeMin[k - 1]);
-    std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
-    return d[d.size() / 2];
+  /// The residual of a fit of `s` (full view) on every row.
+  Residual residual(const State& s, const Fit& f) const {
+    Residual out;
+    out.r.assign(n_, 0.0);
+    out.excluded.assign(n_, 0);
+    for (std::size_t k = 0; k < n_; ++k) out.excluded[k] = w_[k] == 0.0;
+    const std::vector<ColumnSpec> specs = columns(s, fullView());
+    std::vector<const Column*> col;
+    for (const auto& c : specs) col.push_back(&column(c.key));
+    for (std::size_t k = 0; k < n_; ++k) {
+      double pred = f.ybar + f.coef(0);
+      for (std::size_t j = 0; j < col.size(); ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        pred += f.coef(jj + 1) * (col[j]->v[k] - f.mean(jj)) / f.sd(jj);
+      }
+      out.r[k] = y_[k] - pred;
+      if (k < nFit_ && w_[k] > 0.0) out.maxAbs = std::max(out.maxAbs, std::abs(out.r[k]));
+    }
+    sweep();
+    return out;
   }
 
  private:
@@ -151,87 +755,226 @@ class Problem {
   const ThermalDiagnosisOptions& o_;
   std::vector<double> y_;
   std::size_t n_ = 0, nFit_ = 0;
+  std::vector<std::size_t> edge_;  ///< block edges: 0, e_1..e_K, nFit, n
+  double medianStep_ = 1.0;
+  std::vector<std::vector<double>> pred_;  ///< grey: the declared model's prediction per view
+  thermal::ThermalTraining declaredTraining_;
+  double uniformStep_ = 0.0;  ///< the step when all steps are equal (the lag filter's fast path)
+  // The target minus its first value: per block its sum and sum of squares.
+  std::vector<double> yc_, ySum_, yy_;
+  double y0_ = 0.0;
+  // The coarse resolution of the lag search (issue 15 item 9): groups of m consecutive rows inside
+  // each block, their means weighted by their sizes; m = 1 (no coarse search) up to kCoarseRows rows.
+  bool coarse_ = false;
+  std::vector<std::size_t> gEdge_, gOfBlock_;
+  std::vector<double> yMean_, yyCoarse_, gTime_, gW_;
+  Observer* observer_ = nullptr;
+  mutable bool stopped_ = false;
+  mutable long pollSteps_ = 0;
+  mutable double pollCurrent_ = 0.0;
+  std::vector<double> w_;       ///< per row: 0 for an excluded gross error, else 1
+  bool anyExcluded_ = false;
+  std::vector<double> blockN_;  ///< per block: the rows not excluded
+  double fitN_ = 0.0;           ///< fit rows not excluded
+  mutable std::map<std::string, std::vector<double>> coarseInput_;  ///< group means of lagged inputs
+  mutable std::vector<Generic> generic_;
+  mutable std::map<std::string, Column> store_;
+  mutable std::map<std::pair<std::string, std::string>, std::vector<double>> dots_;
+  mutable std::vector<std::string> temporary_;
 };
 
+/// Grams of every view of `states`, computed once per distinct state.
+class GramSet {
+ public:
+  GramSet(const Problem& pb, const Views& states, bool coarse = false) {
+    for (int v = 0; v < pb.views(); ++v) {
+      const State& s = states[static_cast<std::size_t>(v)];
+      const int key = pb.columnsKey(v);
+      std::size_t at = cache_.size();
+      for (std::size_t i = 0; i < cache_.size(); ++i)
+        if (keys_[i] == key && cache_[i].first == s) at = i;
+      if (at == cache_.size()) {
+        cache_.emplace_back(s, pb.grams(s, v, coarse));
+        keys_.push_back(key);
+      }
+      index_.push_back(at);
+    }
+  }
+  std::vector<const Grams*> perView() const {
+    std::vector<const Grams*> out;
+    for (std::size_t i : index_) out.push_back(&cache_[i].second);
+    return out;
+  }
+
+ private:
+  std::vector<std::pair<State, Grams>> cache_;
+  std::vector<int> keys_;
+  std::vector<std::size_t> index_;
+};
+
+Fit fitViews(const Problem& pb, const Views& states) {
+  const GramSet gs(pb, states);
+  return pb.fit(gs.perView());
+}
+
 struct LagEstimate {
-  double tau = 0.0;
-  std::optional<double> se;
+  std::vector<double> tau;  ///< per view
+  std::optional<double> se;  ///< of the full view's tau
+  Views next;
   Fit fit;
 };
 
-/// 1-D search over tau for `withTau(tau)` (see the header comment).
-template <class WithTau>
-LagEstimate searchLag(const Problem& pb, int gridPoints, WithTau withTau) {
-  const double lo = 0.5 * pb.medianStep();
-  const double hi = std::max(2.0 * lo, pb.time()[pb.fitRows() - 1] - pb.time()[0]);
-  auto sse = [&](double logTau) {
-    const Fit f = pb.fit(withTau(std::exp(logTau)));
-    return f.ok ? f.sse : std::numeric_limits<double>::infinity();
-  };
-  const double a = std::log(lo), b = std::log(hi);
-  const int g = std::max(8, gridPoints);
-  std::vector<double> grid(static_cast<std::size_t>(g)), val(static_cast<std::size_t>(g));
-  std::size_t best = 0;
-  for (int i = 0; i < g; ++i) {
-    grid[static_cast<std::size_t>(i)] = a + (b - a) * i / (g - 1);
-    val[static_cast<std::size_t>(i)] = sse(grid[static_cast<std::size_t>(i)]);
-    if (val[static_cast<std::size_t>(i)] < val[best]) best = static_cast<std::size_t>(i);
-  }
-  // Golden section between the neighbours of the best grid point.
-  double l = grid[best == 0 ? 0 : best - 1], r = grid[std::min<std::size_t>(best + 1, grid.size() - 1)];
-  const double phi = (std::sqrt(5.0) - 1.0) / 2.0;
-  double c = r - phi * (r - l), d = l + phi * (r - l);
-  double fc = sse(c), fd = sse(d);
-  for (int it = 0; it < 40 && r - l > 1e-6; ++it) {
-    if (fc < fd) {
-      r = d;
-      d = c;
-      fd = fc;
-      c = r - phi * (r - l);
-      fc = sse(c);
+/// Brent's minimisation (golden section with parabolic steps; Brent 1973, ch. 5) of f on [a, b] to
+/// an absolute tolerance `tol` (log tau). Non-finite values force golden steps.
+template <class F>
+double brentMinimise(double a, double b, double tol, F f) {
+  const double cgold = 0.3819660112501051;
+  double x = a + cgold * (b - a), w = x, v = x;
+  double fx = f(x), fw = fx, fv = fx;
+  double d = 0.0, e = 0.0;
+  for (int it = 0; it < 60; ++it) {
+    const double xm = 0.5 * (a + b), tol2 = 2.0 * tol;
+    if (std::abs(x - xm) <= tol2 - 0.5 * (b - a)) break;
+    bool golden = true;
+    if (std::abs(e) > tol && std::isfinite(fx) && std::isfinite(fw) && std::isfinite(fv)) {
+      double r = (x - w) * (fx - fv), q = (x - v) * (fx - fw), p = (x - v) * q - (x - w) * r;
+      q = 2.0 * (q - r);
+      if (q > 0.0) p = -p;
+      q = std::abs(q);
+      const double eOld = e;
+      e = d;
+      if (q > 0.0 && std::abs(p) < std::abs(0.5 * q * eOld) && p > q * (a - x) && p < q * (b - x)) {
+        d = p / q;
+        const double u = x + d;
+        if (u - a < tol2 || b - u < tol2) d = xm >= x ? tol : -tol;
+        golden = false;
+      }
+    }
+    if (golden) {
+      e = x >= xm ? a - x : b - x;
+      d = cgold * e;
+    }
+    const double u = std::abs(d) >= tol ? x + d : x + (d >= 0.0 ? tol : -tol);
+    const double fu = f(u);
+    if (fu <= fx) {
+      (u >= x ? a : b) = x;
+      v = w;
+      fv = fw;
+      w = x;
+      fw = fx;
+      x = u;
+      fx = fu;
     } else {
-      l = c;
-      c = d;
-      fc = fd;
-      d = l + phi * (r - l);
-      fd = sse(d);
+      (u < x ? a : b) = u;
+      if (fu <= fw || w == x) {
+        v = w;
+        fv = fw;
+        w = u;
+        fw = fu;
+      } else if (fu <= fv || v == x || v == w) {
+        v = u;
+        fv = fu;
+      }
     }
   }
-  double logTau = fc < fd ? c : d;
-  if (val[best] < std::min(fc, fd)) logTau = grid[best];
+  return x;
+}
+
+/// 1-D search over tau, per view, for `withTau(tau, view)` (see the header comment): a shared
+/// log-spaced grid, then golden section per view on that view's own rows.
+template <class WithTau>
+LagEstimate searchLag(const Problem& pb, int gridPoints, WithTau withTau, double hint = 0.0) {
+  const double lo = 0.5 * pb.medianStep();
+  const double hi = std::max(2.0 * lo, pb.time()[pb.fitRows() - 1] - pb.time()[0]);
+  const int V = pb.views();
+  auto statesAt = [&](double tau) {
+    Views s;
+    for (int v = 0; v < V; ++v) s.push_back(withTau(tau, v));
+    return s;
+  };
+  const double a = std::log(lo), b = std::log(hi);
+  // With a hint: nine points within a factor 3.3 of it instead of the grid over the whole range.
+  const int g = hint > 0.0 ? 9 : std::max(8, gridPoints);
+  std::vector<double> grid(static_cast<std::size_t>(g));
+  std::vector<std::vector<double>> val(static_cast<std::size_t>(V), std::vector<double>(grid.size()));
+  for (int i = 0; i < g; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    grid[ii] = hint > 0.0 ? std::clamp(std::log(hint) + 0.3 * (i - 4), a, b) : a + (b - a) * i / (g - 1);
+    if (pb.poll()) {
+      for (auto& vv : val) vv[ii] = kInf;
+      continue;
+    }
+    {
+      const GramSet gs(pb, statesAt(std::exp(grid[ii])), true);
+      const auto per = gs.perView();
+      for (int v = 0; v < V; ++v)
+        val[static_cast<std::size_t>(v)][ii] = pb.viewSse(*per[static_cast<std::size_t>(v)], v);
+    }
+    pb.sweep();
+  }
   LagEstimate e;
-  e.tau = std::exp(logTau);
-  e.fit = pb.fit(withTau(e.tau));
+  for (int v = 0; v < V; ++v) {
+    const auto& vv = val[static_cast<std::size_t>(v)];
+    const std::size_t best = static_cast<std::size_t>(std::min_element(vv.begin(), vv.end()) - vv.begin());
+    const double l = grid[best == 0 ? 0 : best - 1], r = grid[std::min<std::size_t>(best + 1, grid.size() - 1)];
+    const bool full = v == pb.fullView();
+    auto sseAt = [&](double logTau, bool coarse) {
+      if (pb.poll()) return kInf;
+      const double r = pb.viewSse(pb.grams(withTau(std::exp(logTau), v), v, coarse), v);
+      pb.sweep();
+      return r;
+    };
+    // The folds on the coarse resolution to 1e-3 in log tau; the fit on all fit rows (its tau is
+    // reported) to 1e-3 there, then on every row to 1e-5 within +-0.05 of it.
+    double logTau = brentMinimise(l, r, 1e-3, [&](double x) { return sseAt(x, true); });
+    if (vv[best] < sseAt(logTau, true)) logTau = grid[best];
+    if (full) {
+      const double c = logTau;
+      logTau = brentMinimise(std::max(a, c - 0.05), std::min(b, c + 0.05), 1e-5,
+                             [&](double x) { return sseAt(x, false); });
+      if (sseAt(c, false) < sseAt(logTau, false)) logTau = c;
+    }
+    e.tau.push_back(std::exp(logTau));
+    e.next.push_back(withTau(e.tau.back(), v));
+  }
+  e.fit = fitViews(pb, e.next);
   if (e.fit.ok) {
-    const double h = 0.02 * e.tau;
-    const Fit fm = pb.fit(withTau(e.tau - h)), fp = pb.fit(withTau(e.tau + h));
-    if (fm.ok && fp.ok) {
-      const double curv = (fp.sse - 2.0 * e.fit.sse + fm.sse) / (h * h);
+    const int full = pb.fullView();
+    const double tau = e.tau.back(), h = 0.02 * tau;
+    const double fm = pb.viewSse(pb.grams(withTau(tau - h, full), full), full);
+    const double fp = pb.viewSse(pb.grams(withTau(tau + h, full), full), full);
+    if (std::isfinite(fm) && std::isfinite(fp)) {
+      const double curv = (fp - 2.0 * e.fit.sse + fm) / (h * h);
       if (curv > 0.0) e.se = std::sqrt(2.0 * e.fit.s2 / curv);
     }
   }
+  pb.sweep();
   return e;
 }
 
-/// Ranks the candidates that passed the tests: the log ratios of the held-out and of the fit rmse
+/// Ranks the candidates that passed the tests: the log ratios of the validation and of the fit rmse
 /// together (lower is better), so that a lucky extrapolation with hardly any in-sample gain does
-/// not win over an effect that explains both parts of the data.
+/// not win over an effect that explains both.
 double rankOf(const Fit& f, const Fit& cur) {
-  return std::log(f.heldout / cur.heldout) + std::log(f.rmse / cur.rmse);
+  return std::log(f.cv / cur.cv) + std::log(f.rmse / cur.rmse);
 }
 
-ErrorSummary summaryOf(const Fit& f) {
+ErrorSummary summaryOf(const Fit& f, const Residual& r) {
   ErrorSummary s;
   s.rmse = f.rmse;
-  s.maxAbs = f.maxAbs;
+  s.maxAbs = r.maxAbs;
   s.heldoutRmse = f.heldout;
   return s;
 }
 
-double noiseLevel(const Fit& f, std::size_t nFit) {
-  double s = 0.0;
-  for (std::size_t k = 1; k < nFit; ++k) s += std::pow(f.residual[k] - f.residual[k - 1], 2);
-  return nFit > 1 ? std::sqrt(s / static_cast<double>(nFit - 1) / 2.0) : 0.0;
+double noiseLevel(const Residual& res, std::size_t nFit) {
+  double s = 0.0, m = 0.0;
+  for (std::size_t k = 1; k < nFit; ++k)
+    if (!res.excluded[k] && !res.excluded[k - 1]) {
+      s += std::pow(res.r[k] - res.r[k - 1], 2);
+      m += 1.0;
+    }
+  return m > 0.0 ? std::sqrt(s / m / 2.0) : 0.0;
 }
 
 void validate(const ThermalLog& log, const ThermalDiagnosisOptions& o) {
@@ -249,9 +992,9 @@ void validate(const ThermalLog& log, const ThermalDiagnosisOptions& o) {
   }
 }
 
-/// One candidate added to `base`: the model state, its fit, the parameters and their text.
+/// One candidate added to `base`: the model states, the fit, the parameters and their text.
 struct Eval {
-  ModelState next;
+  Views next;
   Fit fit;
   std::vector<Parameter> parameters;
   Phrases paramText;  ///< e.g. "tau 13.6 +- 0.4 min" (empty when there is none)
@@ -296,40 +1039,208 @@ void linearParameters(const ThermalLog& log, const std::string& name, const Fit&
   }
 }
 
+/// Parameters of a generic effect (residual_check.h summariseGeneric: form, rms, range, ...) from a
+/// fit that contains its columns.
+void genericParameters(const Problem& pb, int index, const Fit& f, const std::string& u, Eval& e) {
+  const auto& g = pb.generic(index);
+  const std::string prefix = "unexplained:" + g.form.against + "#";
+  Eigen::VectorXd b(g.basis.cols());
+  for (Eigen::Index j = 0; j < b.size(); ++j) {
+    const auto c = coefficientOf(f, prefix + std::to_string(j));
+    b(j) = c ? c->first : 0.0;
+  }
+  const GenericSummary gs = summariseGeneric(g.form, b, g.values, u.empty() ? "" : u.substr(1));
+  e.parameters = {Parameter{"form", std::string(formName(g.form.form)), std::nullopt}};
+  for (const auto& [k, v] : gs.numbers) e.parameters.push_back({k, v, std::nullopt});
+  e.paramText = gs.text;
+}
+
 Eval evaluateCandidate(const Problem& pb, const ThermalLog& log, const ThermalDiagnosisOptions& o,
-                       const std::string& name, const ModelState& base, const std::string& u) {
+                       const std::string& name, const Views& base, const std::string& u, double lagHint = 0.0,
+                       int genericIndex = -1) {
   Eval e;
   e.next = base;
   if (isLag(name)) {
     const std::string col = name == "lag" ? "" : name.substr(4);
-    const LagEstimate le = searchLag(pb, o.lagGridPoints, [&](double tau) {
-      ModelState s = base;
+    LagEstimate le = searchLag(pb, o.lagGridPoints, [&](double tau, int view) {
+      State s = base[static_cast<std::size_t>(view)];
       if (col.empty())
-        s.lagAll = tau;
+        s.effects.lagAll = tau;
       else
-        s.lagCol[col] = tau;
+        s.effects.lagCol[col] = tau;
       return s;
-    });
-    if (col.empty())
-      e.next.lagAll = le.tau;
-    else
-      e.next.lagCol[col] = le.tau;
+    }, lagHint);
+    e.next = std::move(le.next);
     e.fit = le.fit;
-    e.parameters = {{"tau_min", le.tau, le.se}};
-    e.paramText = {le.se ? Phrase("tau %1 +- %2 min", {num(le.tau), num(*le.se, 2)})
-                         : Phrase("tau %1 min", {num(le.tau)})};
+    const double tau = le.tau.back();
+    e.parameters = {{"tau_min", tau, le.se}};
+    e.paramText = {le.se ? Phrase("tau %1 +- %2 min", {num(tau), num(*le.se, 2)})
+                         : Phrase("tau %1 min", {num(tau)})};
+  } else if (genericIndex >= 0) {
+    for (State& s : e.next) s.generics.push_back(genericIndex);
+    e.fit = fitViews(pb, e.next);
+    if (e.fit.ok) genericParameters(pb, genericIndex, e.fit, u, e);
   } else {
-    if (name == "drift")
-      e.next.drift = true;
-    else
-      e.next.extra.push_back(name.substr(6));
-    e.fit = pb.fit(e.next);
+    for (State& s : e.next) {
+      if (name == "drift")
+        s.effects.drift = true;
+      else
+        s.effects.extra.push_back(name.substr(6));
+    }
+    e.fit = fitViews(pb, e.next);
     if (e.fit.ok) linearParameters(log, name, e.fit, u, e);
   }
+  pb.sweep();
   return e;
 }
 
+/// A lag's tau is determined by the fit rows when its standard error is known and below half of it
+/// (a lag of 279 +- 230 min fits the fit rows' end and says nothing about the rows after them).
+bool determined(const Eval& e) {
+  for (const Parameter& p : e.parameters)
+    if (p.name == "tau_min") {
+      const double tau = std::get<double>(p.value);
+      return p.standardError && *p.standardError < 0.5 * tau;
+    }
+  return true;
+}
+
+/// The evidence figures of a candidate: "validation rmse a -> b (c %), fit rmse ..., held-out rmse
+/// ... (reported only)".
+std::vector<PhraseArg> figureArgs(const Fit& cur, const Fit& f, const std::string& u) {
+  return {num(cur.cv),   num(f.cv),   A::unit(u),        pct(cur.cv, f.cv),
+          num(cur.rmse), num(f.rmse), num(cur.heldout), num(f.heldout)};
+}
+
+/// The variables the residual may depend on (CONTRACT.md `against`), on every row: time (its
+/// natural order), row (file order), and every numeric column of the log but the target (declared
+/// inputs too: a non-linear dependence on a declared input is structure the model lacks).
+std::vector<ResidualVariable> residualVariables(const ThermalLog& log, const std::string& target) {
+  std::vector<ResidualVariable> vars;
+  ResidualVariable t;
+  t.name = "time";
+  t.values = log.timeMin;
+  t.naturalOrder = true;
+  t.label = {Phrase("time (min)")};
+  vars.push_back(std::move(t));
+  ResidualVariable r;
+  r.name = "row";
+  for (std::size_t k = 0; k < log.rows(); ++k) r.values.push_back(static_cast<double>(k + 1));
+  r.label = {Phrase("data row")};
+  vars.push_back(std::move(r));
+  for (const auto& c : log.channels) {
+    if (c.name == target) continue;
+    ResidualVariable v;
+    v.name = c.name;
+    v.values = c.values;
+    v.label = {Phrase("%1", {A::name(c.name)})};
+    vars.push_back(std::move(v));
+  }
+  return vars;
+}
+
+/// The residual check (residual_check.h) of a state's fit on the fit rows that were not excluded.
+ResidualCheck checkOf(const Problem& pb, const State& s, const Residual& res, const std::vector<ResidualVariable>& vars,
+                      bool coarse = false) {
+  const auto groups = pb.fitGroups();
+  if (coarse && !groups.empty()) {
+    // Above kCoarseRows rows the round's search for structure (which generic candidates to try)
+    // runs on group means of the rows that were not excluded; the final check uses every row.
+    const auto cols = pb.columnValues(s);
+    std::vector<std::vector<double>> obs;  // per group: residual, columns..., variables...
+    std::vector<long> first;
+    for (const auto& [b, e] : groups) {
+      std::vector<double> m(1 + cols.size() + vars.size(), 0.0);
+      double cnt = 0.0;
+      for (std::size_t k = b; k < e; ++k) {
+        if (res.excluded[k]) continue;
+        cnt += 1.0;
+        m[0] += res.r[k];
+        for (std::size_t j = 0; j < cols.size(); ++j) m[1 + j] += (*cols[j])[k];
+        for (std::size_t j = 0; j < vars.size(); ++j) m[1 + cols.size() + j] += vars[j].values[k];
+      }
+      if (cnt == 0.0) continue;
+      for (double& x : m) x /= cnt;
+      obs.push_back(std::move(m));
+      first.push_back(static_cast<long>(b + 1));
+    }
+    const auto m = static_cast<Eigen::Index>(obs.size());
+    ResidualCheckInput in;
+    in.residual.resize(m);
+    in.modelColumns.resize(m, static_cast<Eigen::Index>(cols.size()));
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const auto& o = obs[static_cast<std::size_t>(i)];
+      in.residual(i) = o[0];
+      for (std::size_t j = 0; j < cols.size(); ++j) in.modelColumns(i, static_cast<Eigen::Index>(j)) = o[1 + j];
+    }
+    in.unitRow = first;
+    for (std::size_t j = 0; j < vars.size(); ++j) {
+      ResidualVariable w = vars[j];
+      w.values.clear();
+      for (const auto& o : obs) w.values.push_back(o[1 + cols.size() + j]);
+      in.variables.push_back(std::move(w));
+    }
+    return checkResidual(in);
+  }
+  std::vector<std::size_t> rows;
+  for (std::size_t k = 0; k < pb.fitRows(); ++k)
+    if (!res.excluded[k]) rows.push_back(k);
+  const auto m = static_cast<Eigen::Index>(rows.size());
+  ResidualCheckInput in;
+  in.residual.resize(m);
+  const auto cols = pb.columnValues(s);
+  in.modelColumns.resize(m, static_cast<Eigen::Index>(cols.size()));
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const std::size_t k = rows[static_cast<std::size_t>(i)];
+    in.residual(i) = res.r[k];
+    for (std::size_t j = 0; j < cols.size(); ++j) in.modelColumns(i, static_cast<Eigen::Index>(j)) = (*cols[j])[k];
+    in.unitRow.push_back(static_cast<long>(k + 1));
+  }
+  for (const ResidualVariable& v : vars) {
+    ResidualVariable w = v;
+    w.values.clear();
+    for (std::size_t k : rows) w.values.push_back(v.values[k]);
+    in.variables.push_back(std::move(w));
+  }
+  for (std::size_t k = 0; k < pb.fitRows(); ++k)
+    if (res.excluded[k]) {
+      in.excludedResidual.push_back(res.r[k]);
+    }
+  if (!in.excludedResidual.empty()) {
+    for (const ResidualVariable& v : vars) {
+      std::vector<double> x;
+      for (std::size_t k = 0; k < pb.fitRows(); ++k)
+        if (res.excluded[k]) x.push_back(v.values[k]);
+      in.excludedValues.push_back(std::move(x));
+    }
+  }
+  return checkResidual(in);
+}
+
+/// The variable a named effect is chosen for (its generic alternative is unexplained:<that>).
+std::string variableOf(const std::string& name) {
+  if (name.starts_with("lag:")) return name.substr(4);
+  if (name.starts_with("input:")) return name.substr(6);
+  if (name == "drift") return "time";
+  return {};
+}
+
 }  // namespace
+
+const char* toString(ThermalDeclaredModel m) {
+  switch (m) {
+    case ThermalDeclaredModel::Gmc: return "gmc";
+    case ThermalDeclaredModel::Gnnmci: return "gnnmci";
+    case ThermalDeclaredModel::Linear: break;
+  }
+  return "linear";
+}
+
+ThermalDeclaredModel thermalDeclaredModel(const std::string& name, const std::string& field) {
+  for (ThermalDeclaredModel m : {ThermalDeclaredModel::Linear, ThermalDeclaredModel::Gmc, ThermalDeclaredModel::Gnnmci})
+    if (name == toString(m)) return m;
+  throw OptionsError(ErrorContext{{}, 0, 0, field}, "'" + name + "' is not one of linear, gmc, gnnmci");
+}
 
 bool ThermalDiagnosisOptions::isValid(std::string* why) const {
   auto no = [&](const char* w) {
@@ -343,23 +1254,66 @@ bool ThermalDiagnosisOptions::isValid(std::string* why) const {
     return no("minExplainedNoise must be finite and not negative");
   if (maxRounds < 0) return no("maxRounds must not be negative");
   if (lagGridPoints < 8 || lagGridPoints > 1000) return no("lagGridPoints must be in [8, 1000]");
+  if (validationFolds < 1 || validationFolds > 10) return no("validationFolds must be in [1, 10]");
   return true;
 }
 
 Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& o, Observer* observer) {
   validate(log, o);
-  const Problem pb(log, o);
+  Problem pb(log, o);
   Diagnosis d;
   d.domain = "thermal";
   d.units = log.channel(o.target).unit;
   const std::string u = d.units.empty() ? "" : " " + d.units;
+  if (!pb.fitDeclared(observer)) {
+    d.addNote({Phrase("cancelled")});
+    return d;
+  }
+  const auto full = static_cast<std::size_t>(pb.fullView());
 
-  ModelState state;
-  Fit cur = pb.fit(state);
+  Views state(static_cast<std::size_t>(pb.views()));
+  pb.pin(state);
+  Fit cur = fitViews(pb, state);
   if (!cur.ok) throw ValidationError(ErrorContext{log.source, 0, 0, "inputs"}, cur.why.english());
-  d.baseline = summaryOf(cur);
-  const double noise = noiseLevel(cur, pb.fitRows());
+  Residual curRes = pb.residual(state[full], cur);
+  // Gross errors (CONTRACT.md `outliers`): robust z of the declared model's residual on the fit rows
+  // (residual_check.h findOutliers), excluded from every fit (weight 0), the model refitted.
+  std::vector<Outlier> outliers;
+  double outlierThreshold = 0.0;
   {
+    ResidualCheckInput in;
+    in.residual.resize(static_cast<Eigen::Index>(pb.fitRows()));
+    for (std::size_t k = 0; k < pb.fitRows(); ++k) {
+      in.residual(static_cast<Eigen::Index>(k)) = curRes.r[k];
+      in.unitRow.push_back(static_cast<long>(k + 1));
+    }
+    outliers = findOutliers(in, {}, &outlierThreshold);
+    if (!outliers.empty()) {
+      std::vector<std::size_t> rows;
+      for (const Outlier& x : outliers) rows.push_back(x.unit);
+      pb.exclude(rows);
+      pb.pin(state);
+      cur = fitViews(pb, state);
+      if (!cur.ok) throw ValidationError(ErrorContext{log.source, 0, 0, "inputs"}, cur.why.english());
+      curRes = pb.residual(state[full], cur);
+    }
+  }
+  d.baseline = summaryOf(cur, curRes);
+  const double noise = noiseLevel(curRes, pb.fitRows());
+  const std::vector<ResidualVariable> variables = residualVariables(log, o.target);
+  std::vector<std::string> genericTaken;
+  if (pb.grey()) {
+    std::string inputs;
+    for (const auto& in : o.inputs) inputs += (inputs.empty() ? "" : ", ") + in;
+    const auto [ownFit, ownHeld] = pb.declaredOwnRmse();
+    d.addNote({Phrase("declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit "
+                      "rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) "
+                      "and the candidate effects",
+                      {A::name(o.declared == ThermalDeclaredModel::Gmc ? "GMC(1,N)" : "GNNMCI(1,N)"),
+                       A::name(inputs), A::integer(static_cast<long long>(pb.fitRows())),
+                       A::integer(static_cast<long long>(pb.rows())), num(ownFit), num(ownHeld), A::unit(u),
+                       num(cur.beta(0))})});
+  } else {
     Phrases model = {Phrase("%1 = c0", {A::name(o.target)})};
     for (std::size_t j = 0; j < o.inputs.size(); ++j)
       model.push_back(
@@ -367,8 +1321,20 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     d.addNote({Phrase("declared model (static, fitted on the first %1 of %2 rows): %3",
                       {A::integer(static_cast<long long>(pb.fitRows())),
                        A::integer(static_cast<long long>(pb.rows())), A::text(std::move(model))})});
+  }
+  if (!outliers.empty()) {
+    Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above %2):",
+                           {A::integer(static_cast<long long>(outliers.size())), num(outlierThreshold)})};
+    for (const Outlier& x : outliers)
+      note.push_back(Phrase(" row %1 (%2%3)", {A::integer(x.row.value_or(0)), A::signedNumber(x.residual, 3), A::unit(u)}));
+    d.addNote(std::move(note));
+  }
+  {
     d.addNote(
         {Phrase("noise level (first differences of the fit residual): %1%2", {num(noise), A::unit(u)})});
+    d.addNote({Phrase("effects chosen on the fit rows by blocked forward validation (%1 folds, validation "
+                      "rmse %2%3); the held-out rows only report the error",
+                      {A::integer(o.validationFolds), num(cur.cv), A::unit(u)})});
   }
 
   // Columns a model could have used but did not declare (never the target, never another
@@ -382,24 +1348,50 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
   }
 
   LoopProgress progress(observer);
+  pb.setObserver(observer);
+  long steps = 0;
   bool cancelled = false;
+  const double nf = pb.fitCount();
   for (int round = 0; round < o.maxRounds && !cancelled; ++round) {
+    const ThermalEffectSet& now = state[full].effects;
     // This round's candidates.
     std::vector<std::string> names;
-    if (!(state.lagAll > 0.0)) names.push_back("lag");
-    if (o.inputs.size() > 1 || state.lagAll > 0.0)
+    if (!(now.lagAll > 0.0) && !pb.grey()) names.push_back("lag");
+    if (o.inputs.size() > 1 || now.lagAll > 0.0 || pb.grey())
       for (const auto& in : o.inputs)
-        if (!state.lagCol.count(in)) names.push_back("lag:" + in);
+        if (!now.lagCol.count(in)) names.push_back("lag:" + in);
     for (const auto& c : undeclared)
-      if (std::find(state.extra.begin(), state.extra.end(), c) == state.extra.end())
-        names.push_back("input:" + c);
-    if (!state.drift) names.push_back("drift");
+      if (std::find(now.extra.begin(), now.extra.end(), c) == now.extra.end()) names.push_back("input:" + c);
+    if (!now.drift) names.push_back("drift");
+    // Generic candidates (CONTRACT.md "The open world"): the strongest structures of the current
+    // residual on the fit rows, each a basis of its variable (evaluated on every row), under the same
+    // evidence plus the search penalty 2 ln(tests) in the in-sample criterion.
+    std::map<std::string, int> genericOf;
+    double genericPenalty = 0.0;
+    if (pb.poll()) {
+      cancelled = true;
+      break;
+    }
+    {
+      const ResidualCheck rc = checkOf(pb, state[full], curRes, variables, true);
+      genericPenalty = genericSearchPenalty(rc);
+      for (const GenericForm& g : genericCandidates(rc, genericTaken)) {
+        const ResidualVariable* v = findVariable(variables, g.against);
+        const int ch = log.indexOf(g.against);
+        if (!v || (ch >= 0 && channelKind(log.channels[static_cast<std::size_t>(ch)]) == ChannelKind::Displacement))
+          continue;  // another displacement channel is an output, not a cause
+        genericOf["unexplained:" + g.against] = pb.addGeneric(g, v->values);
+        names.push_back("unexplained:" + g.against);
+      }
+    }
     if (names.empty()) break;
 
     std::vector<Candidate> tried;
-    std::vector<ModelState> states;
+    std::vector<Views> states;
     std::vector<Fit> fits;
+    std::vector<Eval> evals;  // the single candidates (the pair search starts from them)
     std::optional<std::size_t> best;
+    std::vector<bool> passed(names.size(), false);
     for (std::size_t i = 0; i < names.size(); ++i) {
       const std::string& name = names[i];
       Candidate c;
@@ -407,8 +1399,15 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       c.round = round;
       c.rmseBefore = cur.rmse;
       c.heldoutBefore = cur.heldout;
-      Eval ev0 = evaluateCandidate(pb, log, o, name, state, u);
-      ModelState next = ev0.next;
+      const auto gi = genericOf.find(name);
+      const int generic = gi == genericOf.end() ? -1 : gi->second;
+      pb.setStep(steps, cur.cv);
+      Eval ev0 = evaluateCandidate(pb, log, o, name, state, u, 0.0, generic);
+      if (pb.stopped()) {  // stopped inside the candidate: it is not listed
+        cancelled = true;
+        break;
+      }
+      if (generic >= 0) c.generic = pb.generic(generic).form;
       Fit f = ev0.fit;
       const Phrases paramText = ev0.paramText;
       c.parameters = ev0.parameters;
@@ -419,55 +1418,101 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       } else {
         c.rmseAfter = f.rmse;
         c.heldoutAfter = f.heldout;
-        c.score = cur.heldout > 0.0 ? (f.heldout - cur.heldout) / cur.heldout : 0.0;
-        const double explained = std::sqrt(std::max(0.0, cur.heldout * cur.heldout - f.heldout * f.heldout));
-        const bool gain = f.heldout <= (1.0 - o.minHeldoutGain) * cur.heldout;
+        const bool cvUsable = f.cvOk && cur.cvOk && cur.cv > 0.0;
+        c.score = cvUsable ? (f.cv - cur.cv) / cur.cv : 0.0;
+        const double explained = cvUsable ? std::sqrt(std::max(0.0, cur.cv * cur.cv - f.cv * f.cv)) : 0.0;
+        const bool gain = cvUsable && f.cv <= (1.0 - o.minHeldoutGain) * cur.cv;
         const bool aboveNoise = explained >= o.minExplainedNoise * noise;
         // In-sample evidence too: the fit's sum of squares must fall by more than the BIC penalty
         // of the added parameter (n ln(SSE0 / SSE1) > ln n), so that a coefficient the fit rows
         // cannot determine does not win by a lucky extrapolation.
-        const double nf = static_cast<double>(pb.fitRows());
-        const double dBic = nf * std::log(f.sse / cur.sse) + std::log(nf);
+        const double width = generic >= 0 ? static_cast<double>(pb.generic(generic).basis.cols()) : 1.0;
+        const double dBic = nf * std::log(f.sse / cur.sse) + width * std::log(nf) + (generic >= 0 ? genericPenalty : 0.0);
         const bool inSample = dBic < 0.0;
-        std::vector<PhraseArg> args = {num(cur.heldout), num(f.heldout),
-                                       A::unit(u),       pct(cur.heldout, f.heldout),
-                                       num(cur.rmse),    num(f.rmse)};
+        std::vector<PhraseArg> args = figureArgs(cur, f, u);
         Phrases ev;
         if (paramText.empty()) {
-          ev.push_back(Phrase("held-out rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3", std::move(args)));
+          ev.push_back(Phrase("validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3",
+                              std::move(args)));
         } else {
           args.push_back(A::text(paramText));
-          ev.push_back(Phrase("held-out rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, %7", std::move(args)));
+          ev.push_back(
+              Phrase("validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3, %9",
+                     std::move(args)));
         }
-        if (f.heldout > cur.heldout)
-          ev.push_back(Phrase("; rejected: held-out error worse"));
+        if (!cvUsable)
+          ev.push_back(Phrase("; rejected: the validation folds cannot fit it"));
+        else if (f.cv > cur.cv)
+          ev.push_back(Phrase("; rejected: validation error worse"));
         else if (!gain)
-          ev.push_back(Phrase("; rejected: held-out gain below %1 %", {num(100.0 * o.minHeldoutGain, 2)}));
+          ev.push_back(Phrase("; rejected: validation gain below %1 %", {num(100.0 * o.minHeldoutGain, 2)}));
         else if (!aboveNoise)
           ev.push_back(Phrase("; rejected: explains %1%2, below %3 x the noise level %4%2",
                               {num(explained), A::unit(u), num(o.minExplainedNoise), num(noise)}));
         else if (!inSample)
           ev.push_back(Phrase("; rejected: no in-sample evidence (fit dBIC %1 >= 0)", {num(dBic)}));
+        else if (!determined(ev0))
+          ev.push_back(Phrase("; rejected: the fit rows do not determine tau (standard error above half of it)"));
         c.setEvidence(std::move(ev));
-        if (gain && aboveNoise && inSample && (!best || rankOf(f, cur) < rankOf(fits[*best], cur))) best = i;
+        passed[i] = gain && aboveNoise && inSample && determined(ev0);
+        if (passed[i] && (!best || rankOf(f, cur) < rankOf(fits[*best], cur))) best = i;
       }
       tried.push_back(std::move(c));
-      states.push_back(std::move(next));
+      states.push_back(ev0.next);
       fits.push_back(std::move(f));
+      evals.push_back(std::move(ev0));
 
-      if (progress.afterCandidate(round, i, names.size(), cur.heldout, "heldout_rmse")) {
+      ++steps;
+      if (progress.afterCandidate(round, i, names.size(), cur.cv, "cv_rmse")) {
         cancelled = true;
         break;
       }
     }
     if (cancelled) best.reset();
+    // "A named effect must explain what it was chosen for": a passing named effect is rejected when a
+    // passing generic effect of the same variable validates better by the acceptance margin
+    // (minHeldoutGain; a tie, e.g. drift and a linear function of time, keeps the name); named
+    // effects are preferred to generic ones otherwise (the generic one is kept for what no name
+    // explains).
+    if (!cancelled) {
+      std::optional<std::size_t> named, gen;
+      for (std::size_t i = 0; i < fits.size(); ++i) {
+        if (!passed[i]) continue;
+        const bool isGeneric = names[i].starts_with("unexplained:");
+        if (!isGeneric) {
+          const std::string var = variableOf(names[i]);
+          const auto alt = std::find(names.begin(), names.end(), "unexplained:" + var);
+          if (!var.empty() && alt != names.end()) {
+            const auto j = static_cast<std::size_t>(alt - names.begin());
+            if (j < fits.size() && passed[j] && fits[j].cv < (1.0 - o.minHeldoutGain) * fits[i].cv) {
+              passed[i] = false;
+              tried[i].addEvidence({Phrase("; rejected: the generic %1 validates better (%2 against %3%4)",
+                                           {A::name(names[j]), num(fits[j].cv), num(fits[i].cv), A::unit(u)})});
+              continue;
+            }
+          }
+        }
+        std::optional<std::size_t>& slot = isGeneric ? gen : named;
+        if (!slot || rankOf(fits[i], cur) < rankOf(fits[*slot], cur)) slot = i;
+      }
+      best = named ? named : gen;
+    }
+    if (best && names[*best] == "lag") {
+      // The specific claim first: `lag` (every input lagged) over the best passing `lag:<col>` only
+      // when it validates another minHeldoutGain better (the fit rows often cannot tell whether an
+      // input that hardly changes on them is lagged too).
+      std::optional<std::size_t> one;
+      for (std::size_t i = 0; i < names.size() && i < fits.size(); ++i)
+        if (names[i].starts_with("lag:") && passed[i] && (!one || rankOf(fits[i], cur) < rankOf(fits[*one], cur)))
+          one = i;
+      if (one && !(fits[*best].cv <= (1.0 - o.minHeldoutGain) * fits[*one].cv)) best = one;
+    }
     bool pairAccepted = false;
-    if (!best && !cancelled && o.tryPairs) {
+    if (!best && !cancelled && o.tryPairs && cur.cvOk) {
       // Two effects together: when no single candidate passes, each of the three with the strongest
       // in-sample evidence is tried with every other candidate (alone, each may extrapolate worse
       // than the declared model, while together they explain the data). Same tests, with the
       // penalty of 2 parameters.
-      const double nf = static_cast<double>(pb.fitRows());
       std::vector<std::size_t> strong;
       for (std::size_t i = 0; i < fits.size(); ++i)
         if (fits[i].ok && nf * std::log(fits[i].sse / cur.sse) + std::log(nf) < 0.0) strong.push_back(i);
@@ -476,51 +1521,64 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       if (strong.size() > 3) strong.resize(3);
       std::optional<Eval> bestA, bestB;
       Fit bestFit;
+      Views bestStates;
       std::array<std::string, 2> bestNames;
+      // Partners: every linear candidate (a column each), and the lags among the six candidates with
+      // the lowest fit error (before issue 15 item 9 every lag: on a week of 1 Hz data that was up to
+      // 60 pairs, each with one or two lag searches).
+      std::vector<std::size_t> byFit;
+      for (std::size_t i = 0; i < fits.size(); ++i)
+        if (fits[i].ok) byFit.push_back(i);
+      std::stable_sort(byFit.begin(), byFit.end(),
+                       [&](std::size_t a, std::size_t b) { return fits[a].sse < fits[b].sse; });
+      std::vector<std::size_t> partners;
+      for (std::size_t r = 0; r < byFit.size(); ++r)
+        if (!isLag(names[byFit[r]]) || r < 6) partners.push_back(byFit[r]);
+      std::sort(partners.begin(), partners.end());
       std::vector<std::pair<std::size_t, std::size_t>> pairs;
       for (std::size_t x : strong)
-        for (std::size_t y = 0; y < fits.size(); ++y)
-          if (y != x && fits[y].ok &&
-              std::find(pairs.begin(), pairs.end(), std::make_pair(y, x)) == pairs.end())
+        for (std::size_t y : partners)
+          if (y != x && std::find(pairs.begin(), pairs.end(), std::make_pair(y, x)) == pairs.end())
             pairs.emplace_back(x, y);
       for (const auto& [px, py] : pairs) {
-        {
-          const std::string &na = names[px], &nb = names[py];
-          if (isLag(na) && isLag(nb)) continue;
-          Eval ea = evaluateCandidate(pb, log, o, na, state, u);
-          const Eval eb = evaluateCandidate(pb, log, o, nb, ea.next, u);
-          if (!eb.fit.ok) continue;
-          Fit pf = eb.fit;
-          ModelState ps = eb.next;
-          if (isLag(na)) {  // re-estimate the lag with the other effect present
-            ea = evaluateCandidate(pb, log, o, na, eb.next, u);
-            if (!ea.fit.ok) continue;
-            pf = ea.fit;
-            ps = ea.next;
-          } else {
-            linearParameters(log, na, pf, u, ea);
-          }
-          Eval fb = eb;
-          if (!isLag(nb)) linearParameters(log, nb, pf, u, fb);
-          const double explained =
-              std::sqrt(std::max(0.0, cur.heldout * cur.heldout - pf.heldout * pf.heldout));
-          const bool pass = pf.heldout <= (1.0 - o.minHeldoutGain) * cur.heldout &&
-                            explained >= o.minExplainedNoise * noise &&
-                            nf * std::log(pf.sse / cur.sse) + 2.0 * std::log(nf) < 0.0;
-          if (pass && (!bestA || rankOf(pf, cur) < rankOf(bestFit, cur))) {
-            ea.next = ps;
-            bestNames = {na, nb};
-            bestA = ea;
-            bestB = fb;
-            bestFit = pf;
-          }
+        const std::string &na = names[px], &nb = names[py];
+        if (isLag(na) && isLag(nb)) continue;
+        if (na.starts_with("unexplained:") || nb.starts_with("unexplained:")) continue;
+        Eval ea = evals[px];  // na added to the current model, as evaluated above
+        const Eval eb = evaluateCandidate(pb, log, o, nb, ea.next, u);
+        if (!eb.fit.ok) continue;
+        Fit pf = eb.fit;
+        Views ps = eb.next;
+        if (isLag(na)) {  // re-estimate the lag with the other effect present, near its tau alone
+          ea = evaluateCandidate(pb, log, o, na, eb.next, u);
+          if (!ea.fit.ok) continue;
+          pf = ea.fit;
+          ps = ea.next;
+        } else {
+          linearParameters(log, na, pf, u, ea);
+        }
+        Eval fb = eb;
+        if (!isLag(nb)) linearParameters(log, nb, pf, u, fb);
+        if (!pf.cvOk) continue;
+        const double explained = std::sqrt(std::max(0.0, cur.cv * cur.cv - pf.cv * pf.cv));
+        const bool pass = pf.cv <= (1.0 - o.minHeldoutGain) * cur.cv && explained >= o.minExplainedNoise * noise &&
+                          nf * std::log(pf.sse / cur.sse) + 2.0 * std::log(nf) < 0.0 && determined(ea) &&
+                          determined(fb);
+        if (pass && (!bestA || rankOf(pf, cur) < rankOf(bestFit, cur))) {
+          bestNames = {na, nb};
+          bestA = ea;
+          bestB = fb;
+          bestFit = pf;
+          bestStates = ps;
         }
       }
       if (bestA) {
+        pb.pin(bestStates);
+        const Residual after = pb.residual(bestStates[full], bestFit);
         const Eval* parts[2] = {&*bestA, &*bestB};
         for (int w = 0; w < 2; ++w) {
           Candidate c;
-          c.name = bestNames[w];
+          c.name = bestNames[static_cast<std::size_t>(w)];
           c.round = round;
           c.accepted = true;
           c.parameters = parts[w]->parameters;
@@ -528,22 +1586,25 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
           c.rmseAfter = bestFit.rmse;
           c.heldoutBefore = cur.heldout;
           c.heldoutAfter = bestFit.heldout;
-          c.score = cur.heldout > 0.0 ? (bestFit.heldout - cur.heldout) / cur.heldout : 0.0;
-          c.setEvidence(
-              {Phrase("accepted together with %1: held-out rmse %2 -> %3%4 (%5), fit rmse %6 -> %7%4, %8",
-                      {A::name(bestNames[1 - w]), num(cur.heldout), num(bestFit.heldout), A::unit(u),
-                       pct(cur.heldout, bestFit.heldout), num(cur.rmse), num(bestFit.rmse),
-                       A::text(parts[w]->paramText)})});
+          c.score = (bestFit.cv - cur.cv) / cur.cv;
+          std::vector<PhraseArg> args = {A::name(bestNames[static_cast<std::size_t>(1 - w)])};
+          for (PhraseArg& a : figureArgs(cur, bestFit, u)) args.push_back(std::move(a));
+          args.push_back(A::text(parts[w]->paramText));
+          c.setEvidence({Phrase("accepted together with %1: validation rmse %2 -> %3%4 (%5), fit rmse %6 -> "
+                                "%7%4, held-out rmse %8 -> %9%4, %10",
+                                std::move(args))});
           ResidualPlot plot;
           plot.setLabels(timeLabel(), residualLabel(d.units));
           plot.x = log.timeMin;
-          plot.before = cur.residual;
-          plot.after = bestFit.residual;
+          plot.before = curRes.r;
+          plot.after = after.r;
           c.plot = std::move(plot);
           tried.push_back(std::move(c));
         }
-        state = bestA->next;
+        state = bestStates;
+        pb.pin(state);
         cur = bestFit;
+        curRes = after;
         pairAccepted = true;
       }
     }
@@ -556,20 +1617,30 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       Candidate& c = tried[*best];
       c.accepted = true;
       c.prependEvidence(Phrase("accepted: "));
+      pb.pin(states[*best]);
+      const Residual after = pb.residual(states[*best][full], fits[*best]);
       ResidualPlot plot;
       plot.setLabels(timeLabel(), residualLabel(d.units));
       plot.x = log.timeMin;
-      plot.before = cur.residual;
-      plot.after = fits[*best].residual;
+      plot.before = curRes.r;
+      plot.after = after.r;
       c.plot = std::move(plot);
       state = states[*best];
       cur = fits[*best];
+      curRes = after;
+      if (c.generic) genericTaken.push_back(c.generic->against);
     }
     for (auto& c : tried) d.effects.push_back(std::move(c));
     if (!best && !pairAccepted) break;
   }
   progress.addNote(d);
-  d.final = summaryOf(cur);
+  if (pb.stopped() && !progress.stopped()) d.addNote({Phrase("cancelled")});
+  d.final = summaryOf(cur, curRes);
+  // The final residual's check on the fit rows (outliers excluded, listed).
+  // (After a stop on a long log: the group means, to return at once.)
+  d.residualCheck = checkOf(pb, state[full], curRes, variables, pb.stopped() || progress.stopped());
+  d.residualCheck->outliers = outliers;
+  d.residualCheck->outlierThreshold = outlierThreshold;
   return d;
 }
 

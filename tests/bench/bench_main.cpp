@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_diagnose.h"
+#include "bench_diagnose_scale.h"
 #include "bench_diagnose_sm.h"
 #include "bench_kinematic.h"
 #include "bench_matching.h"
@@ -124,6 +125,7 @@ int main(int argc, char** argv) {
   int explicitSeeds = 0;              // --seeds N wins over --quick
   std::vector<std::string> openCase;  // --open-case DOMAIN CASE SEED
   bool setupBench = false;            // issue 4 (bench_setup.cpp)
+  std::vector<std::size_t> scaleRows;  // issue 15 item 9 (bench_diagnose_scale.cpp)
   metrofit::bench::DiagnoseBenchOptions diagnoseOptions;
   metrofit::bench::OptimBenchOptions optimOptions;
   int repeat = 5;
@@ -151,7 +153,14 @@ int main(int argc, char** argv) {
       realThermal = true;
     else if (a == "--diagnose")
       diagnose = true;
-    else if (a == "--real-diagnose")
+    else if (a == "--diagnose-scale") {  // [ROWS,ROWS,...]: default 10k to a week of 1 Hz data
+      scaleRows = {10000, 50000, 100000, 300000, 604800};
+      if (i + 1 < argc && argv[i + 1][0] != '-') {
+        scaleRows.clear();
+        std::stringstream list(argv[++i]);
+        for (std::string item; std::getline(list, item, ',');) scaleRows.push_back(std::stoul(item));
+      }
+    } else if (a == "--real-diagnose")
       realDiagnose = true;
     else if (a == "--open")
       open = diagnose = true;
@@ -203,7 +212,7 @@ int main(int argc, char** argv) {
           "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick] [--only PROBLEMS] [--methods "
           "METHODS]] [--matching] [--real-matching] "
           "[--thermal] [--real-thermal] [--kinematic] [--setup] [--diagnose [--quick]] [--diagnose --open "
-          "[--seeds N] [--quick] [--domains LIST]] [--real-diagnose] "
+          "[--seeds N] [--quick] [--domains LIST]] [--real-diagnose] [--diagnose-scale [ROWS,...]] "
           "[--repeat N] "
           "[--json OUT] "
           "[--source-dir DIR]\n");
@@ -214,7 +223,7 @@ int main(int argc, char** argv) {
     }
   }
   if (!io && !rng && !optimizers && !matching && !realMatching && !thermal && !realThermal && !kinematic &&
-      !diagnose && !realDiagnose && !setupBench)
+      !diagnose && !realDiagnose && !setupBench && scaleRows.empty())
     io = rng = optimizers = true;
   if (explicitSeeds > 0) openOptions.seeds = explicitSeeds;
   if (!openCase.empty()) {
@@ -268,6 +277,7 @@ int main(int argc, char** argv) {
       result["real_diagnose_sdss"] =
           metrofit::bench::benchRealDiagnoseSdss(sourceDir + "/../shared/data/real/cmm-plugplate-sdss");
     }
+    if (!scaleRows.empty()) result["diagnose_scale"] = metrofit::bench::benchDiagnoseScale(scaleRows);
     if (!jsonOut.empty()) metrofit::writeFileAtomic(jsonOut, metrofit::dumpJson(result));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "metrofit-bench: %s\n", e.what());

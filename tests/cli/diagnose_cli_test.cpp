@@ -99,6 +99,26 @@ TEST(DiagnoseCli, KinematicFindsTheBacklashOfTheDemoTest) {
   EXPECT_LT(j.at("final").at("rmse").get<double>(), 0.3 * j.at("baseline").at("rmse").get<double>());
 }
 
+TEST(DiagnoseCli, ThermalDeclaredGreyModels) {
+  // The demo log's only effect is a lag of T2, which GMC(1,N) and GNNMCI(1,N) have themselves.
+  test::TempDir tmp;
+  for (const char* m : {"gmc", "gnnmci"}) {
+    const CliRun r = cli("diagnose thermal --data " + demo("diagnose_thermal.csv") +
+                             " --target disp_z_um --inputs T2,T4,T_amb --declared " + m + " --seed 3 --out r.json",
+                         tmp);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("no undeclared effect found"), std::string::npos) << r.err;
+    const nlohmann::json j = parseJson(test::readText(tmp.file("r.json")), "r.json");
+    EXPECT_LT(j.at("final").at("rmse").get<double>(), 0.3) << m;  // the noise is 0.25 um
+    for (const auto& e : j.at("effects")) EXPECT_FALSE(e.at("accepted").get<bool>()) << m;
+  }
+  const CliRun bad = cli("diagnose thermal --data " + demo("diagnose_thermal.csv") +
+                             " --target disp_z_um --inputs T2 --declared mlp",
+                         tmp);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--declared"), std::string::npos) << bad.err;
+}
+
 TEST(DiagnoseCli, BadInputExitsTwoWithOneLine) {
   test::TempDir tmp;
   // Unknown column.

@@ -57,8 +57,9 @@ class StubGermanTranslator : public QTranslator {
     if (QLatin1String(context) != QLatin1String(kCoreTextContext)) return {};
     const QString s = QString::fromUtf8(source);
     if (s == QLatin1String("accepted: ")) return QStringLiteral("angenommen: ");
-    if (s == QLatin1String("held-out rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, %7"))
-      return QStringLiteral("RMSE zurückgehalten %1 → %2%3 (%4), RMSE Anpassung %5 → %6%3, %7");
+    if (s == QLatin1String("validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3, %9"))
+      return QStringLiteral(
+          "RMSE Validierung %1 → %2%3 (%4), RMSE Anpassung %5 → %6%3, RMSE zurückgehalten %7 → %8%3, %9");
     if (s == QLatin1String("tau %1 +- %2 min")) return QStringLiteral("τ %1 ± %2 min");
     if (s == QLatin1String("time (min)")) return QStringLiteral("Zeit (min)");
     return {};
@@ -174,14 +175,14 @@ TEST_F(DiagnosisLocaleTest, GermanPageShowsCommaDecimalsInEvidenceNotesParameter
   for (int r = 0; r < t->rowCount(); ++r)
     if (t->item(r, kEffectColumn)->text() == QLatin1String("lag:T2")) accepted = r;
   ASSERT_GE(accepted, 0);
-  // Core wrote "accepted: held-out rmse 2.94 -> 0.291 um (-90 %), fit rmse 1.64 -> 0.262 um, tau 15.5 +- 0.2
-  // min".
+  // Core wrote "accepted: validation rmse 4.08 -> 0.262 um (-94 %), fit rmse 1.64 -> 0.262 um, held-out
+  // rmse 2.94 -> 0.291 um, tau 15.5 +- 0.2 min".
   EXPECT_EQ(t->item(accepted, kEvidenceColumn)->text().toStdString(),
-            "angenommen: RMSE zurückgehalten 2,94 → 0,291 µm (-90 %), RMSE Anpassung 1,64 → 0,262 µm, τ 15,5 "
-            "± 0,2 min");
-  EXPECT_EQ(
-      page.result()->effects[static_cast<std::size_t>(accepted)].evidence,
-      "accepted: held-out rmse 2.94 -> 0.291 um (-90 %), fit rmse 1.64 -> 0.262 um, tau 15.5 +- 0.2 min");
+            "angenommen: RMSE Validierung 4,08 → 0,262 µm (-94 %), RMSE Anpassung 1,64 → 0,262 µm, RMSE "
+            "zurückgehalten 2,94 → 0,291 µm, τ 15,5 ± 0,2 min");
+  EXPECT_EQ(page.result()->effects[static_cast<std::size_t>(accepted)].evidence,
+            "accepted: validation rmse 4.08 -> 0.262 um (-94 %), fit rmse 1.64 -> 0.262 um, held-out rmse 2.94 -> "
+            "0.291 um, tau 15.5 +- 0.2 min");
   // Every evidence line: no '.'-decimal number left (the English text has them).
   const QRegularExpression dotDecimal(QStringLiteral("\\d\\.\\d"));
   for (int r = 0; r < t->rowCount(); ++r) {

@@ -119,11 +119,12 @@ TEST(DiagnosisTextTest, ThermalEnglishUnchangedAndEqualToItsPhrases) {
   ASSERT_NE(c, nullptr);
   EXPECT_EQ(
       c->evidence,
-      "accepted: held-out rmse 2.94 -> 0.291 um (-90 %), fit rmse 1.64 -> 0.262 um, tau 15.5 +- 0.2 min");
+      "accepted: validation rmse 4.08 -> 0.262 um (-94 %), fit rmse 1.64 -> 0.262 um, held-out rmse 2.94 -> "
+      "0.291 um, tau 15.5 +- 0.2 min");
   EXPECT_EQ(c->evidenceParts.front().format, "accepted: ");
   EXPECT_EQ(c->plot->xLabel, "time (min)");
   EXPECT_EQ(c->plot->yLabel, "residual (um)");
-  ASSERT_EQ(d.notes.size(), 2u);
+  ASSERT_EQ(d.notes.size(), 3u);
   EXPECT_EQ(d.notesParts[0].front().format, "declared model (static, fitted on the first %1 of %2 rows): %3");
 }
 

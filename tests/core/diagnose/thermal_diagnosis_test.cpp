@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <regex>
 #include <string>
 
 #include <Eigen/Dense>
@@ -12,6 +14,8 @@
 #include "core/common/error.h"
 #include "core/diagnose/thermal_diagnosis.h"
 #include "core/sim/effects_thermal.h"
+#include "core/thermal/thermal_model.h"
+#include "testsupport.h"
 
 namespace metrofit::diagnose {
 namespace {
@@ -37,10 +41,11 @@ double noiseFor(const ThermalEffectsOptions& o, double ratio) {
   return std::sqrt(r.squaredNorm() / static_cast<double>(n)) / ratio;
 }
 
-Diagnosis run(const ThermalEffectsOptions& o) {
+Diagnosis run(const ThermalEffectsOptions& o, double trainFraction = 0.5) {
   ThermalDiagnosisOptions d;
   d.target = o.target;
   d.inputs = o.declaredInputs;
+  d.trainFraction = trainFraction;
   return diagnoseThermal(simulateThermalEffects(o), d);
 }
 
@@ -57,13 +62,12 @@ double param(const Candidate& c, const std::string& name) {
   return 0.0;
 }
 
+/// The held-out rows no longer choose the effects (issue 15 item 4), so a single accepted effect may
+/// extrapolate worse on them; on these catalogue cases the final model still predicts them better.
 void expectHeldoutNeverWorse(const Diagnosis& d) {
   ASSERT_TRUE(d.baseline.heldoutRmse && d.final.heldoutRmse);
   EXPECT_LE(*d.final.heldoutRmse, *d.baseline.heldoutRmse);
-  for (const Candidate* c : d.accepted()) {
-    ASSERT_TRUE(c->heldoutBefore && c->heldoutAfter);
-    EXPECT_LE(*c->heldoutAfter, 0.9 * *c->heldoutBefore) << c->name;
-  }
+  for (const Candidate* c : d.accepted()) ASSERT_TRUE(c->heldoutBefore && c->heldoutAfter);
 }
 
 TEST(ThermalEffectsSim, FirstOrderLagStepResponse) {
@@ -156,6 +160,9 @@ TEST(ThermalDiagnosis, CleanDataComesOutClean) {
     o.noiseUm = 0.25;
     const Diagnosis d = run(o);
     EXPECT_TRUE(d.accepted().empty()) << "seed " << seed << ": " << toJson(d).dump(1);
+    ASSERT_TRUE(d.residualCheck.has_value());
+    EXPECT_TRUE(d.residualCheck->white) << "seed " << seed << ": " << d.residualCheck->summary;
+    EXPECT_TRUE(d.residualCheck->outliers.empty()) << "seed " << seed;
     EXPECT_FALSE(d.effects.empty());
     EXPECT_DOUBLE_EQ(*d.final.heldoutRmse, *d.baseline.heldoutRmse);
     EXPECT_NEAR(d.baseline.rmse, 0.25, 0.05);
@@ -163,6 +170,9 @@ TEST(ThermalDiagnosis, CleanDataComesOutClean) {
 }
 
 TEST(ThermalDiagnosis, TwoEffectsAreBothFound) {
+  // Fit on 70 % of the rows: the spindle runs from 10 to 250 min of 480, so the first half of the
+  // log never sees it stop, and the effects are now chosen on the fit rows only (with 50 % the
+  // spindle's coefficient rests on its start alone, which forward validation cannot check).
   for (std::uint64_t seed : {21u, 22u}) {
     ThermalEffectsOptions o;
     o.seed = seed;
@@ -170,7 +180,7 @@ TEST(ThermalDiagnosis, TwoEffectsAreBothFound) {
     o.lagColumn = "T2";
     o.extraInputs = {{"spindle_rpm", -0.0005}};
     o.noiseUm = 0.25;
-    const Diagnosis d = run(o);
+    const Diagnosis d = run(o, 0.7);
     const Candidate* lag = acceptedNamed(d, "lag:T2");
     if (!lag) lag = acceptedNamed(d, "lag");
     const Candidate* rpm = acceptedNamed(d, "input:spindle_rpm");
@@ -181,6 +191,266 @@ TEST(ThermalDiagnosis, TwoEffectsAreBothFound) {
     EXPECT_LT(*d.final.heldoutRmse, 0.5);
     expectHeldoutNeverWorse(d);
   }
+}
+
+// ---- Honest held-out rows (issue 15 item 4, CONTRACT.md "Honest held-out rows") ----------------
+
+enum class Scramble { Permute, Noise };
+
+/// `log` with the target on the held-out rows permuted (Fisher-Yates, fixed seed) or replaced by
+/// Gaussian noise of the target's spread.
+ThermalLog scrambled(ThermalLog log, const std::string& target, double trainFraction, Scramble how) {
+  const std::size_t nFit = thermal::fitRowCount(log.rows(), trainFraction);
+  for (auto& c : log.channels) {
+    if (c.name != target) continue;
+    std::mt19937_64 rng(12345);
+    if (how == Scramble::Permute) {
+      for (std::size_t k = c.values.size() - 1; k > nFit; --k) {
+        const std::size_t j = nFit + static_cast<std::size_t>(rng() % (k - nFit + 1));
+        std::swap(c.values[k], c.values[j]);
+      }
+    } else {
+      std::normal_distribution<double> g(0.0, 5.0);
+      for (std::size_t k = nFit; k < c.values.size(); ++k) c.values[k] = g(rng);
+    }
+  }
+  return log;
+}
+
+/// Everything but the held-out figures is the same, bit for bit; the held-out figures differ.
+void expectSameChoice(const Diagnosis& a, const Diagnosis& b) {
+  ASSERT_EQ(a.effects.size(), b.effects.size());
+  for (std::size_t i = 0; i < a.effects.size(); ++i) {
+    const Candidate &x = a.effects[i], &y = b.effects[i];
+    EXPECT_EQ(x.name, y.name) << i;
+    EXPECT_EQ(x.accepted, y.accepted) << x.name;
+    EXPECT_EQ(x.round, y.round) << x.name;
+    EXPECT_EQ(x.rmseBefore, y.rmseBefore) << x.name;
+    EXPECT_EQ(x.rmseAfter, y.rmseAfter) << x.name;
+    EXPECT_EQ(x.score, y.score) << x.name;
+    ASSERT_EQ(x.parameters.size(), y.parameters.size()) << x.name;
+    for (std::size_t k = 0; k < x.parameters.size(); ++k) {
+      EXPECT_EQ(x.parameters[k].name, y.parameters[k].name);
+      EXPECT_EQ(x.parameters[k].value, y.parameters[k].value) << x.name << " " << x.parameters[k].name;
+      EXPECT_EQ(x.parameters[k].standardError, y.parameters[k].standardError) << x.name;
+    }
+  }
+  EXPECT_EQ(a.baseline.rmse, b.baseline.rmse);
+  EXPECT_EQ(a.baseline.maxAbs, b.baseline.maxAbs);
+  EXPECT_EQ(a.final.rmse, b.final.rmse);
+  EXPECT_EQ(a.final.maxAbs, b.final.maxAbs);
+  // Notes too, but for the held-out figure a grey model's note reports ("held-out rmse 1.02 um").
+  auto withoutHeldOut = [](std::vector<std::string> notes) {
+    const std::regex figure("held-out rmse [-+0-9.e]+");
+    for (auto& n : notes) n = std::regex_replace(n, figure, "held-out rmse #");
+    return notes;
+  };
+  EXPECT_EQ(withoutHeldOut(a.notes), withoutHeldOut(b.notes));
+  // The held-out rows do report: their figures change.
+  EXPECT_NE(*a.baseline.heldoutRmse, *b.baseline.heldoutRmse);
+  EXPECT_NE(*a.final.heldoutRmse, *b.final.heldoutRmse);
+}
+
+std::vector<std::string> acceptedNames(const Diagnosis& d) {
+  std::vector<std::string> out;
+  for (const Candidate* c : d.accepted()) out.push_back(c->name);
+  return out;
+}
+
+void expectScrambleChangesOnlyTheHeldOutFigures(const ThermalLog& log, const ThermalDiagnosisOptions& o) {
+  const Diagnosis d = diagnoseThermal(log, o);
+  for (Scramble how : {Scramble::Permute, Scramble::Noise}) {
+    SCOPED_TRACE(how == Scramble::Permute ? "permuted" : "noise");
+    const Diagnosis s = diagnoseThermal(scrambled(log, o.target, o.trainFraction, how), o);
+    expectSameChoice(d, s);
+  }
+}
+
+TEST(ThermalHonestHeldOut, DemoLogScrambledHeldOutTargetChangesOnlyTheHeldOutFigures) {
+  ThermalDiagnosisOptions o;
+  o.target = "disp_z_um";
+  o.inputs = {"T2", "T4", "T_amb"};
+  const ThermalLog log = readThermalLog((test::sourceDir() / "resources/demo/data/diagnose_thermal.csv").string());
+  EXPECT_EQ(acceptedNames(diagnoseThermal(log, o)), std::vector<std::string>{"lag:T2"});
+  expectScrambleChangesOnlyTheHeldOutFigures(log, o);
+}
+
+TEST(ThermalHonestHeldOut, SimulatedTwoEffectsScrambledChangesOnlyTheHeldOutFigures) {
+  ThermalEffectsOptions so;
+  so.seed = 21;
+  so.lagTauMin = 15.0;
+  so.lagColumn = "T2";
+  so.extraInputs = {{"spindle_rpm", -0.0005}};
+  so.noiseUm = 0.25;
+  for (double fraction : {0.5, 0.7}) {
+    ThermalDiagnosisOptions o;
+    o.target = so.target;
+    o.inputs = so.declaredInputs;
+    o.trainFraction = fraction;
+    const ThermalLog log = simulateThermalEffects(so);
+    EXPECT_FALSE(diagnoseThermal(log, o).accepted().empty()) << fraction;
+    expectScrambleChangesOnlyTheHeldOutFigures(log, o);
+  }
+}
+
+TEST(ThermalHonestHeldOut, RealCaiviacScrambledChangesOnlyTheHeldOutFigures) {
+  // The CAIVIAC spindle log (11 115 rows, resources/demo/data/SOURCE-CAIVIAC.md), ch1 and ch3 with
+  // the two hottest sensors declared (issue 15: scrambling the held-out target changed the accepted
+  // effects of both before).
+  const ThermalLog log = readThermalLog((test::sourceDir() / "resources/demo/data/thermal_caiviac.csv").string());
+  for (const char* target : {"ch1_um", "ch3_um"}) {
+    SCOPED_TRACE(target);
+    ThermalDiagnosisOptions o;
+    o.target = target;
+    o.inputs = {"t5_degC", "t9_degC"};
+    const Diagnosis d = diagnoseThermal(log, o);
+    EXPECT_FALSE(d.accepted().empty());
+    const Diagnosis s = diagnoseThermal(scrambled(log, o.target, o.trainFraction, Scramble::Permute), o);
+    expectSameChoice(d, s);
+  }
+}
+
+// ---- Declared grey models (issue 15 item 5) -----------------------------------------------------
+
+Diagnosis runDeclared(const ThermalEffectsOptions& so, ThermalDeclaredModel m, double fraction) {
+  ThermalDiagnosisOptions o;
+  o.target = so.target;
+  o.inputs = so.declaredInputs;
+  o.trainFraction = fraction;
+  o.declared = m;
+  o.seed = 3;
+  return diagnoseThermal(simulateThermalEffects(so), o);
+}
+
+TEST(ThermalDeclaredGrey, GreyFamilyDataStayCleanWhileTheStaticModelFindsTheLag) {
+  // Every declared input through one first-order lag (tau 15 min): GMC(1,N) and GNNMCI(1,N) are that
+  // model, the static regression is not.
+  for (std::uint64_t seed : {5u, 6u, 7u, 8u}) {
+    ThermalEffectsOptions so;
+    so.seed = seed;
+    so.lagTauMin = 15.0;
+    so.noiseUm = 0.25;
+    for (ThermalDeclaredModel m : {ThermalDeclaredModel::Gmc, ThermalDeclaredModel::Gnnmci}) {
+      const Diagnosis d = runDeclared(so, m, 0.5);
+      EXPECT_TRUE(d.accepted().empty()) << toString(m) << " seed " << seed << ": " << toJson(d).dump(1);
+      EXPECT_NEAR(d.baseline.rmse, 0.25, 0.05) << toString(m);
+      ASSERT_FALSE(d.notes.empty());
+      EXPECT_NE(d.notes[0].find(m == ThermalDeclaredModel::Gmc ? "GMC(1,N)" : "GNNMCI(1,N)"), std::string::npos);
+      for (const Candidate& c : d.effects) EXPECT_NE(c.name, "lag") << "a grey model is that lag itself";
+    }
+    const Diagnosis lin = runDeclared(so, ThermalDeclaredModel::Linear, 0.5);
+    ASSERT_FALSE(lin.accepted().empty()) << seed;
+    EXPECT_TRUE(lin.accepted()[0]->name.starts_with("lag")) << lin.accepted()[0]->name;
+  }
+}
+
+TEST(ThermalDeclaredGrey, AnEffectTheGreyModelLacksIsFound) {
+  // The same grey-family log plus a direct effect of the spindle speed (-0.0005 um/rpm, a -3 um step
+  // when the spindle starts and stops) that no declared input carries. 70 % fit rows: they see the
+  // spindle start and stop.
+  for (std::uint64_t seed : {5u, 6u, 7u, 8u}) {
+    ThermalEffectsOptions so;
+    so.seed = seed;
+    so.lagTauMin = 15.0;
+    so.extraInputs = {{"spindle_rpm", -0.0005}};
+    so.noiseUm = 0.25;
+    for (ThermalDeclaredModel m : {ThermalDeclaredModel::Gmc, ThermalDeclaredModel::Gnnmci}) {
+      const Diagnosis d = runDeclared(so, m, 0.7);
+      const Candidate* c = acceptedNamed(d, "input:spindle_rpm");
+      ASSERT_NE(c, nullptr) << toString(m) << " seed " << seed << ": " << toJson(d).dump(1);
+      EXPECT_LT(param(*c, "coefficient"), 0.0);
+      EXPECT_LT(d.final.rmse, 0.5 * d.baseline.rmse) << toString(m) << " seed " << seed;
+    }
+  }
+}
+
+TEST(ThermalDeclaredGrey, NamesAndScrambledHeldOut) {
+  EXPECT_EQ(thermalDeclaredModel("gmc"), ThermalDeclaredModel::Gmc);
+  EXPECT_EQ(thermalDeclaredModel("gnnmci"), ThermalDeclaredModel::Gnnmci);
+  EXPECT_EQ(thermalDeclaredModel("linear"), ThermalDeclaredModel::Linear);
+  EXPECT_THROW(thermalDeclaredModel("mlp"), OptionsError);
+  // The grey models are fitted on the fit rows (and per fold on theirs): the held-out target decides
+  // nothing either.
+  ThermalEffectsOptions so;
+  so.seed = 6;
+  so.lagTauMin = 15.0;
+  so.extraInputs = {{"spindle_rpm", -0.0005}};
+  for (ThermalDeclaredModel m : {ThermalDeclaredModel::Gmc, ThermalDeclaredModel::Gnnmci}) {
+    ThermalDiagnosisOptions o;
+    o.target = so.target;
+    o.inputs = so.declaredInputs;
+    o.trainFraction = 0.7;
+    o.declared = m;
+    o.seed = 3;
+    expectScrambleChangesOnlyTheHeldOutFigures(simulateThermalEffects(so), o);
+  }
+}
+
+// ---- The open world (issue 15 items 1-3, CONTRACT.md "The open world") --------------------------
+
+/// The simulator's clean log (seed) with the target changed by `change(row, time, log)`.
+template <class Change>
+ThermalLog cleanLogWith(std::uint64_t seed, Change change) {
+  ThermalEffectsOptions o;
+  o.seed = seed;
+  o.noiseUm = 0.25;
+  ThermalLog log = simulateThermalEffects(o);
+  auto& y = log.channels[static_cast<std::size_t>(log.indexOf("disp_z_um"))].values;
+  for (std::size_t k = 0; k < y.size(); ++k) y[k] += change(k, log.timeMin[k], log);
+  return log;
+}
+
+Diagnosis runClean(const ThermalLog& log) {
+  ThermalDiagnosisOptions o;
+  o.target = "disp_z_um";
+  o.inputs = {"T2", "T4", "T_amb"};
+  return diagnoseThermal(log, o);
+}
+
+TEST(ThermalOpenWorld, DemoResidualIsWhiteAfterTheLag) {
+  const Diagnosis d = runClean(readThermalLog((test::sourceDir() / "resources/demo/data/diagnose_thermal.csv").string()));
+  ASSERT_TRUE(d.residualCheck.has_value());
+  EXPECT_TRUE(d.residualCheck->white) << d.residualCheck->summary;
+  EXPECT_GT(d.residualCheck->tests.size(), 10u);  // Ljung-Box in time, F tests against every column
+  const nlohmann::json j = toJson(d);
+  EXPECT_TRUE(j.at("residual_check").at("white").get<bool>());
+}
+
+TEST(ThermalOpenWorld, AGrossErrorIsListedWithItsRowAndExcluded) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    // One gross error of 10 um (40 noise sigma) in data row 101 (a fit row).
+    const ThermalLog log = cleanLogWith(seed, [](std::size_t k, double, const ThermalLog&) { return k == 100 ? 10.0 : 0.0; });
+    const Diagnosis d = runClean(log);
+    ASSERT_TRUE(d.residualCheck.has_value());
+    ASSERT_EQ(d.residualCheck->outliers.size(), 1u) << seed;
+    EXPECT_EQ(d.residualCheck->outliers[0].row, 101);
+    EXPECT_NEAR(d.residualCheck->outliers[0].residual, 10.0, 1.0);
+    EXPECT_TRUE(d.accepted().empty()) << toJson(d).dump(1);
+    EXPECT_TRUE(d.residualCheck->white) << d.residualCheck->summary;
+    EXPECT_NEAR(d.baseline.rmse, 0.25, 0.05);  // the error no longer in the fit
+    EXPECT_EQ(toJson(d).at("residual_check").at("outliers").at(0).at("row"), 101);
+  }
+}
+
+TEST(ThermalOpenWorld, AStepOfTheTargetIsNotGivenACatalogueName) {
+  // A sensor re-mounted at 90 min: the displacement jumps by 1.5 um (6 noise sigma) and stays. No
+  // catalogue effect is a step; the loop must not name one, and must say that the residual depended
+  // on time (a generic effect of time, or the structure in the final check).
+  int generic = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const ThermalLog log = cleanLogWith(seed, [](std::size_t, double t, const ThermalLog&) { return t >= 90.0 ? 1.5 : 0.0; });
+    const Diagnosis d = runClean(log);
+    for (const Candidate* c : d.accepted()) {
+      EXPECT_TRUE(c->name.starts_with("unexplained:")) << seed << ": " << c->name;
+      if (c->generic) {
+        ++generic;
+        EXPECT_EQ(c->parameters.at(0).name, "form");
+      }
+    }
+    EXPECT_FALSE(d.accepted().empty() && d.residualCheck->white) << seed << ": nothing said";
+    EXPECT_LT(*d.final.heldoutRmse, *d.baseline.heldoutRmse) << seed;
+  }
+  EXPECT_GE(generic, 5);
 }
 
 TEST(ThermalDiagnosis, ContractJson) {
@@ -224,7 +494,8 @@ TEST(ThermalDiagnosis, ObserverCancels) {
   d.inputs = o.declaredInputs;
   const Diagnosis r = diagnoseThermal(simulateThermalEffects(o), d, &cancel);
   EXPECT_TRUE(r.accepted().empty());
-  EXPECT_EQ(r.effects.size(), 1u);
+  // The observer is also asked inside a candidate (a lag search): the first one is not finished.
+  EXPECT_TRUE(r.effects.empty());
   EXPECT_EQ(r.notes.back(), "cancelled");
 }
 
