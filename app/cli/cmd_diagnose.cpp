@@ -193,9 +193,10 @@ void registerDiagnoseCommands(CLI::App& app) {
       sub->add_option("--train-fraction", a->trainFraction, "Fraction of rows fitted; the rest is held out")
           ->check(CLI::Range(0.05, 0.95))
           ->capture_default_str();
-      sub->add_option("--declared", a->declared,
-                      "Declared model the loop starts from: linear (static regression), gmc (GMC(1,N)) or gnnmci "
-                      "(GNNMCI(1,N), trained with --seed)")
+      sub->add_option(
+             "--declared", a->declared,
+             "Declared model the loop starts from: linear (static regression), gmc (GMC(1,N)) or gnnmci "
+             "(GNNMCI(1,N), trained with --seed)")
           ->check(CLI::IsMember({"linear", "gmc", "gnnmci"}))
           ->capture_default_str();
     }

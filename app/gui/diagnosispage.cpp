@@ -27,8 +27,8 @@
 
 #include "app/gui/notesedit.h"
 #include "widgets/diagnose/coretexts.h"
-#include "widgets/diagnose/residualcheckview.h"
 #include "widgets/diagnose/residualchecktext.h"
+#include "widgets/diagnose/residualcheckview.h"
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
@@ -106,9 +106,11 @@ QString parameterText(const diagnose::Candidate& c, const QString& units) {
                 (v ? num(*v) : QString::fromStdString(std::get<std::string>(p.value)));
     if (p.standardError) s += QStringLiteral(" ± ") + num(*p.standardError, 2);
     // A generic effect's sizes are in the data's units (residual_check.h summariseGeneric).
-    const bool dataUnits = c.generic && (p.name == "rms" || p.name == "range" || p.name == "step" ||
-                                         p.name == "amplitude");
-    const QString unit = p.name == "per_min" ? units + QStringLiteral("/min") : dataUnits ? units : unitOf(p.name);
+    const bool dataUnits =
+        c.generic && (p.name == "rms" || p.name == "range" || p.name == "step" || p.name == "amplitude");
+    const QString unit = p.name == "per_min" ? units + QStringLiteral("/min")
+                         : dataUnits         ? units
+                                             : unitOf(p.name);
     if (!unit.isEmpty() && std::holds_alternative<double>(p.value)) s += QLatin1Char(' ') + unit;
     parts << s;
   }
@@ -234,7 +236,8 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
   tabs_->setObjectName(QStringLiteral("diagnosisTabs"));
   tabs_->addTab(content_, tr("&Effects"));
   tabs_->addTab(check_, tr("Residual chec&k"));
-  tabs_->setTabToolTip(0, tr("The candidate effects tried, their residual plots and the error before / after"));
+  tabs_->setTabToolTip(0,
+                       tr("The candidate effects tried, their residual plots and the error before / after"));
   tabs_->setTabToolTip(1, tr("What the final residual still depends on: tests, structure, outliers and the "
                              "residual against the variable of the strongest structure"));
   stack_->addWidget(tabs_);
@@ -482,10 +485,10 @@ void DiagnosisPage::updateApplyButton() {
       tr("%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study "
          "(%2) yet; it is reported here and in the residual check, not applied")
           .arg(left.join(QStringLiteral(", ")), domainTitle(domain()));
-  applyButton_->setToolTip(applicable.isEmpty()
-                               ? tr("Nothing to apply. %1.").arg(why)
-                               : normal + QLatin1Char('\n') + tr("Applies %1 only. %2.")
-                                                                  .arg(applicable.join(QStringLiteral(", ")), why));
+  applyButton_->setToolTip(
+      applicable.isEmpty() ? tr("Nothing to apply. %1.").arg(why)
+                           : normal + QLatin1Char('\n') +
+                                 tr("Applies %1 only. %2.").arg(applicable.join(QStringLiteral(", ")), why));
 }
 
 void DiagnosisPage::showResult() {
@@ -524,7 +527,7 @@ void DiagnosisPage::showResult() {
     text += QLatin1Char(' ') + tr("Residual check: %1.").arg(residualCheckVerdict(*d.residualCheck));
     status_->setText(text);
   }
-  tabs_->setTabText(1, !d.residualCheck       ? tr("Residual chec&k")
+  tabs_->setTabText(1, !d.residualCheck         ? tr("Residual chec&k")
                        : d.residualCheck->white ? tr("Residual chec&k: white")
                                                 : tr("Residual chec&k: structure left"));
   {
@@ -577,8 +580,9 @@ void DiagnosisPage::fillTable() {
       const QString form = tr("form: %1").arg(dependenceFormName(c.generic->form));
       parameters = parameters.isEmpty() ? form : form + QStringLiteral("; ") + parameters;
       table_->item(r, ColEffect)
-          ->setToolTip(tr("A generic effect: %1 in %2, for structure no catalogue effect explains")
-                           .arg(dependenceFormName(c.generic->form), residualVariableName(c.generic->against)));
+          ->setToolTip(
+              tr("A generic effect: %1 in %2, for structure no catalogue effect explains")
+                  .arg(dependenceFormName(c.generic->form), residualVariableName(c.generic->against)));
     }
     set(ColParameters, parameters);
     set(ColRmse, QStringLiteral("%1 → %2 %3").arg(num(c.rmseBefore), num(c.rmseAfter), u), right);

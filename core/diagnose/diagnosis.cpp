@@ -84,7 +84,8 @@ Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std
   const Diagnosis& d = cur.diagnosis;
   bool named = false, generic = false;
   for (const Candidate* c : d.accepted()) (c->generic ? generic : named) = true;
-  if (cur.stopped || !named || !(generic || (d.residualCheck && !d.residualCheck->white))) return std::move(cur.diagnosis);
+  if (cur.stopped || !named || !(generic || (d.residualCheck && !d.residualCheck->white)))
+    return std::move(cur.diagnosis);
   std::vector<std::set<std::string>> alternatives;
   for (const Candidate* c : d.accepted())
     if (!c->generic) alternatives.push_back({c->name});
@@ -105,9 +106,10 @@ Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std
     Candidate x = *c;
     x.accepted = false;
     x.plot.reset();
-    x.setEvidence({Phrase("rejected: does not explain what it was chosen for; without it the generic effects "
-                          "explain the data as well (BIC %1 without, %2 with, needed %3 lower)",
-                          {PhraseArg::fixed(best->bic, 1), PhraseArg::fixed(cur.bic, 1), PhraseArg::number(margin)})});
+    x.setEvidence(
+        {Phrase("rejected: does not explain what it was chosen for; without it the generic effects "
+                "explain the data as well (BIC %1 without, %2 with, needed %3 lower)",
+                {PhraseArg::fixed(best->bic, 1), PhraseArg::fixed(cur.bic, 1), PhraseArg::number(margin)})});
     dropped.push_back(std::move(x));
   }
   for (Candidate& c : dropped) best->diagnosis.effects.push_back(std::move(c));

@@ -159,8 +159,8 @@ inline constexpr const char* kEveryNamedEffect = "*";
 /// effects only (`run({kEveryNamedEffect})`); the first run is kept unless an alternative's
 /// criterion is within `margin` of it or lower (the domain's acceptance threshold: a name survives
 /// only when, beside the generic alternative, it still has the evidence it was accepted on), else
-/// the alternative with the lowest criterion wins. Names accepted first and not in the winner are listed with accepted = false and
-/// the comparison as evidence. At most 1 + (accepted names) + 1 runs.
+/// the alternative with the lowest criterion wins. Names accepted first and not in the winner are listed with
+/// accepted = false and the comparison as evidence. At most 1 + (accepted names) + 1 runs.
 Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std::string>& excluded)>& run,
                                   double margin);
 

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <numeric>
-#include <set>
 #include <optional>
+#include <set>
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>
@@ -96,7 +96,8 @@ Eigen::VectorXd pack(const State& s, const Params& q) {
   if (l.tau >= 0) v(l.tau) = q.tau;
   for (int a = 0; a < 2; ++a)
     if (l.cy[a] >= 0) v.segment<3>(l.cy[a]) << q.cc[a], q.cs[a], q.f[a];
-  for (int j = 0; j < l.genCount; ++j) v(l.gen + j) = j < static_cast<int>(q.g.size()) ? q.g[static_cast<std::size_t>(j)] : 0.0;
+  for (int j = 0; j < l.genCount; ++j)
+    v(l.gen + j) = j < static_cast<int>(q.g.size()) ? q.g[static_cast<std::size_t>(j)] : 0.0;
   return v;
 }
 
@@ -443,7 +444,8 @@ std::vector<ResidualVariable> kinematicVariables(const Data& d, const std::vecto
 /// The check's observations: the residual vector of every point (measured minus modelled; x, y as
 /// two components), with the model's Jacobian; the variables repeated on both coordinates.
 ResidualCheckInput kinematicCheckInput(const Data& d, const State& s, const Solution& sol,
-                                       const std::vector<ResidualVariable>& vars, const std::vector<std::size_t>& orig) {
+                                       const std::vector<ResidualVariable>& vars,
+                                       const std::vector<std::size_t>& orig) {
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
   evaluate(d, s, sol.q, r, &J);
@@ -508,7 +510,8 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
     const bool all = excluded.count(kEveryNamedEffect) > 0;
     if (!state.backlash && !all && !excluded.count("backlash")) names.push_back("backlash");
     if (!state.scale && !all && !excluded.count("scale")) names.push_back("scale");
-    if ((!state.cyclic[0] || !state.cyclic[1]) && !all && !excluded.count("cyclic")) names.push_back("cyclic");
+    if ((!state.cyclic[0] || !state.cyclic[1]) && !all && !excluded.count("cyclic"))
+      names.push_back("cyclic");
     if (!state.servo && !all && !excluded.count("servo_lag")) names.push_back("servo_lag");
     // Generic candidates (CONTRACT.md "The open world"): the strongest structures of the current
     // radial residual, as radial displacements, with the search penalty on their evidence.
@@ -755,7 +758,8 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
     }
   }
   Diagnosis dg = keepNamedOnlyWhenNeeded(
-      [&](const std::set<std::string>& ex) { return runKinematic(kept, orig, o, ex, observer); }, o.bicMargin);
+      [&](const std::set<std::string>& ex) { return runKinematic(kept, orig, o, ex, observer); },
+      o.bicMargin);
   if (dg.residualCheck) {
     dg.residualCheck->outliers = outliers;
     dg.residualCheck->outlierThreshold = threshold;

@@ -1,12 +1,12 @@
 #include "core/diagnose/matching_diagnosis.h"
 
 #include <algorithm>
-#include <optional>
-#include <numeric>
-#include <set>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <numeric>
+#include <optional>
+#include <set>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -340,7 +340,8 @@ std::vector<ResidualVariable> matchingVariables(const Problem& pb, const std::ve
     if (n > 0 && *hi - *lo > 1e-9 * std::max(1.0, std::abs(*hi))) vars.push_back(std::move(v));
   };
   const auto& P = pb.set->points;
-  add("row", {Phrase("data row")}, [&](std::size_t i) { return static_cast<double>(orig[i] + 1); }, true);
+  add(
+      "row", {Phrase("data row")}, [&](std::size_t i) { return static_cast<double>(orig[i] + 1); }, true);
   add("x", {Phrase("x (mm)")}, [&](std::size_t i) { return P[i].nominal.x(); });
   add("y", {Phrase("y (mm)")}, [&](std::size_t i) { return P[i].nominal.y(); });
   add("z", {Phrase("z (mm)")}, [&](std::size_t i) { return P[i].nominal.z(); });
@@ -393,7 +394,8 @@ std::vector<ResidualVariable> matchingVariables(const Problem& pb, const std::ve
 
 /// The residual check input of a fit: one observation per coordinate the fit uses, the variables
 /// repeated on the coordinates of a point, units = points.
-ResidualCheckInput matchingCheckInput(const Problem& pb, const FitState& s, const std::vector<ResidualVariable>& vars,
+ResidualCheckInput matchingCheckInput(const Problem& pb, const FitState& s,
+                                      const std::vector<ResidualVariable>& vars,
                                       const std::vector<std::size_t>& orig) {
   ResidualCheckInput in;
   const int per = pb.perPoint;
@@ -419,7 +421,8 @@ ResidualCheckInput matchingCheckInput(const Problem& pb, const FitState& s, cons
 /// Parameters of a generic effect from its coefficients (along the normal: one set; else the rms
 /// over the coordinates).
 std::vector<Parameter> genericParameters(const Problem& pb, const EffectDef& e, const Eigen::VectorXd& beta,
-                                         Eigen::Index at, const std::vector<ResidualVariable>& vars, Phrases* text) {
+                                         Eigen::Index at, const std::vector<ResidualVariable>& vars,
+                                         Phrases* text) {
   std::vector<Parameter> out = {Parameter{"form", std::string(formName(e.shape->form)), std::nullopt}};
   const ResidualVariable* v = findVariable(vars, e.shape->against);
   if (!v) return out;
@@ -486,7 +489,8 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
   defs.push_back({"scale", Kind::Scale, -1, 1, nullptr, std::nullopt});
   if (set.hasNormals)
     for (std::size_t s = 0; s < pb.surfaces.size(); ++s)
-      defs.push_back({"surface_offset:" + pb.surfaces[s], Kind::Offset, static_cast<int>(s), 1, nullptr, std::nullopt});
+      defs.push_back(
+          {"surface_offset:" + pb.surfaces[s], Kind::Offset, static_cast<int>(s), 1, nullptr, std::nullopt});
   defs.push_back({"distortion", Kind::Distortion, -1, 2, nullptr, std::nullopt});
 
   matching::ClosedFormOptions cf;
@@ -552,14 +556,16 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
         e.kind = Kind::Generic;
         e.basis = std::make_shared<const Eigen::MatrixXd>(variableBasis(g, *v));
         e.shape = g;
-        e.params = static_cast<int>(e.basis->cols()) * (pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3));
+        e.params = static_cast<int>(e.basis->cols()) *
+                   (pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3));
         defs.push_back(std::move(e));
         used.push_back(false);
       }
     }
     int bestNamed = -1;  // a named effect that passes is preferred (keepNamedOnlyWhenNeeded)
     for (std::size_t c = 0; c < defs.size(); ++c) {
-      if (used[c] || (defs[c].kind != Kind::Generic && (excluded.count(defs[c].name) || excluded.count(kEveryNamedEffect))))
+      if (used[c] || (defs[c].kind != Kind::Generic &&
+                      (excluded.count(defs[c].name) || excluded.count(kEveryNamedEffect))))
         continue;
       const bool generic = defs[c].kind == Kind::Generic;
       if (generic && bestNamed < 0) bestNamed = best;
@@ -645,7 +651,8 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
   result.final = summarise(current, nPts);
   result.residualCheck = checkResidual(matchingCheckInput(pb, current, vars, orig));
   LoopRun out;
-  out.bic = static_cast<double>(nObs) * std::log(std::max(current.rss, 1e-300) / static_cast<double>(nObs)) + complexity;
+  out.bic = static_cast<double>(nObs) * std::log(std::max(current.rss, 1e-300) / static_cast<double>(nObs)) +
+            complexity;
   out.stopped = progress.stopped();
   out.diagnosis = std::move(result);
   return out;
@@ -700,8 +707,8 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
   if (!outliers.empty()) {
     // The rest must still determine the posture; otherwise keep every point.
     try {
-      matching::requireDeterminable(kept, matching::effectiveLocks(kept, {}), false, matching::FitKind::LeastSquares,
-                                    "matching diagnosis");
+      matching::requireDeterminable(kept, matching::effectiveLocks(kept, {}), false,
+                                    matching::FitKind::LeastSquares, "matching diagnosis");
     } catch (const std::exception&) {
       kept = set;
       orig = all;
@@ -709,7 +716,8 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
     }
   }
   Diagnosis result = keepNamedOnlyWhenNeeded(
-      [&](const std::set<std::string>& ex) { return runMatching(kept, orig, options, ex, observer); }, options.acceptance.bicThreshold);
+      [&](const std::set<std::string>& ex) { return runMatching(kept, orig, options, ex, observer); },
+      options.acceptance.bicThreshold);
   if (result.residualCheck) {
     result.residualCheck->outliers = outliers;
     result.residualCheck->outlierThreshold = threshold;
@@ -718,8 +726,9 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
     Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above the outlier threshold):",
                            {A::integer(static_cast<long long>(outliers.size()))})};
     for (const Outlier& o : outliers)
-      note.push_back(Phrase(" point %1 (row %2, %3 mm)",
-                            {A::name(o.id.value_or("")), A::integer(o.row.value_or(0)), A::number(o.residual, 3)}));
+      note.push_back(
+          Phrase(" point %1 (row %2, %3 mm)",
+                 {A::name(o.id.value_or("")), A::integer(o.row.value_or(0)), A::number(o.residual, 3)}));
     result.addNote(std::move(note));
   }
   return result;

@@ -162,7 +162,8 @@ ResidualTest ljungBox(const Eigen::VectorXd& r, const std::vector<double>& order
   double Q = 0.0;
   for (int k = 1; k <= h; ++k) {
     double ck = 0.0;
-    for (std::size_t i = static_cast<std::size_t>(k); i < n; ++i) ck += e[i] * e[i - static_cast<std::size_t>(k)];
+    for (std::size_t i = static_cast<std::size_t>(k); i < n; ++i)
+      ck += e[i] * e[i - static_cast<std::size_t>(k)];
     const double rho = ck / c0;
     Q += rho * rho / static_cast<double>(n - static_cast<std::size_t>(k));
   }
@@ -174,11 +175,16 @@ ResidualTest ljungBox(const Eigen::VectorXd& r, const std::vector<double>& order
 
 Phrase formPhrase(DependenceForm f) {
   switch (f) {
-    case DependenceForm::Linear: return Phrase("linear");
-    case DependenceForm::Smooth: return Phrase("smooth");
-    case DependenceForm::Step: return Phrase("step");
-    case DependenceForm::Periodic: return Phrase("periodic");
-    case DependenceForm::Level: return Phrase("per level");
+    case DependenceForm::Linear:
+      return Phrase("linear");
+    case DependenceForm::Smooth:
+      return Phrase("smooth");
+    case DependenceForm::Step:
+      return Phrase("step");
+    case DependenceForm::Periodic:
+      return Phrase("periodic");
+    case DependenceForm::Level:
+      return Phrase("per level");
   }
   return Phrase("linear");
 }
@@ -189,11 +195,16 @@ Eigen::MatrixXd basisOnFinite(const GenericForm& f, const std::vector<double>& v
 
 const char* formName(DependenceForm f) {
   switch (f) {
-    case DependenceForm::Linear: return "linear";
-    case DependenceForm::Smooth: return "smooth";
-    case DependenceForm::Step: return "step";
-    case DependenceForm::Periodic: return "periodic";
-    case DependenceForm::Level: return "level";
+    case DependenceForm::Linear:
+      return "linear";
+    case DependenceForm::Smooth:
+      return "smooth";
+    case DependenceForm::Step:
+      return "step";
+    case DependenceForm::Periodic:
+      return "periodic";
+    case DependenceForm::Level:
+      return "level";
   }
   return "linear";
 }
@@ -209,7 +220,8 @@ bool ResidualCheckOptions::isValid(std::string* why) const {
   if (harmonics < 1 || harmonics > 20) return no("harmonics must be in 1..20");
   if (stepPositions < 1 || stepPositions > 200) return no("stepPositions must be in 1..200");
   if (!(outlierFactor >= 1.0) || !std::isfinite(outlierFactor)) return no("outlierFactor must be >= 1");
-  if (!(maxOutlierFraction >= 0.0 && maxOutlierFraction <= 0.5)) return no("maxOutlierFraction must be in [0, 0.5]");
+  if (!(maxOutlierFraction >= 0.0 && maxOutlierFraction <= 0.5))
+    return no("maxOutlierFraction must be in [0, 0.5]");
   if (!(winsorZ >= 0.0) || !std::isfinite(winsorZ)) return no("winsorZ must be finite and >= 0");
   return true;
 }
@@ -240,7 +252,8 @@ Eigen::MatrixXd basisOnFinite(const GenericForm& f, const std::vector<double>& v
   switch (f.form) {
     case DependenceForm::Linear: {
       Eigen::MatrixXd G(n, 1);
-      for (Eigen::Index i = 0; i < n; ++i) G(i, 0) = (values[static_cast<std::size_t>(i)] - f.centre) / f.scale;
+      for (Eigen::Index i = 0; i < n; ++i)
+        G(i, 0) = (values[static_cast<std::size_t>(i)] - f.centre) / f.scale;
       return G;
     }
     case DependenceForm::Smooth: {
@@ -304,7 +317,8 @@ std::vector<GenericForm> candidateForms(const ResidualVariable& v, const Residua
   switch (v.kind) {
     case ResidualVariable::Kind::Category: {
       base.form = DependenceForm::Level;
-      base.levels = static_cast<int>(std::max<std::size_t>(v.levels.size(), static_cast<std::size_t>(s.back()) + 1));
+      base.levels =
+          static_cast<int>(std::max<std::size_t>(v.levels.size(), static_cast<std::size_t>(s.back()) + 1));
       if (base.levels >= 2 && distinct >= 2) out.push_back(base);
       return out;
     }
@@ -314,7 +328,8 @@ std::vector<GenericForm> candidateForms(const ResidualVariable& v, const Residua
       if (base.harmonics >= 1) out.push_back(base);
       return out;
     }
-    case ResidualVariable::Kind::Continuous: break;
+    case ResidualVariable::Kind::Continuous:
+      break;
   }
   base.centre = quantileSorted(s, 0.5);
   base.scale = std::max(s.back() - s.front(), 1e-300);
@@ -359,7 +374,8 @@ std::vector<GenericForm> candidateForms(const ResidualVariable& v, const Residua
   return out;
 }
 
-std::vector<Outlier> findOutliers(const ResidualCheckInput& in, const ResidualCheckOptions& o, double* threshold) {
+std::vector<Outlier> findOutliers(const ResidualCheckInput& in, const ResidualCheckOptions& o,
+                                  double* threshold) {
   std::vector<Outlier> out;
   const auto n = static_cast<std::size_t>(in.residual.size());
   if (n < 8) {
@@ -372,7 +388,8 @@ std::vector<Outlier> findOutliers(const ResidualCheckInput& in, const ResidualCh
   for (std::size_t i = 0; i < n; ++i) dev[i] = std::abs(r[i] - med);
   const double mad = 1.4826 * median(dev);
   const boost::math::normal_distribution<double> N;
-  const double z = o.outlierFactor * boost::math::quantile(boost::math::complement(N, 0.005 / static_cast<double>(n)));
+  const double z =
+      o.outlierFactor * boost::math::quantile(boost::math::complement(N, 0.005 / static_cast<double>(n)));
   if (threshold) *threshold = z;
   if (!o.detectOutliers || !(mad > 0.0)) return out;
   std::map<std::size_t, std::pair<double, double>> worst;  // unit -> (z, residual)
@@ -386,7 +403,8 @@ std::vector<Outlier> findOutliers(const ResidualCheckInput& in, const ResidualCh
       if (it == worst.end() || it->second.first < zi) worst[u] = {zi, r[i]};
     }
   }
-  const auto limit = std::max<std::size_t>(1, static_cast<std::size_t>(o.maxOutlierFraction * static_cast<double>(units)));
+  const auto limit =
+      std::max<std::size_t>(1, static_cast<std::size_t>(o.maxOutlierFraction * static_cast<double>(units)));
   if (worst.size() > limit) return out;
   for (const auto& [u, zr] : worst) {
     Outlier x;
@@ -423,7 +441,8 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
     for (double& x : v) x = std::abs(x - med);
     const double sd = 1.4826 * median(v);
     if (sd > 0.0)
-      for (Eigen::Index i = 0; i < n; ++i) w(i) = std::clamp(w(i), med - o.winsorZ * sd, med + o.winsorZ * sd);
+      for (Eigen::Index i = 0; i < n; ++i)
+        w(i) = std::clamp(w(i), med - o.winsorZ * sd, med + o.winsorZ * sd);
   }
   const Eigen::VectorXd r = w - U * (U.transpose() * w);
   const double sse0 = r.squaredNorm();
@@ -438,7 +457,8 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
   for (std::size_t vi = 0; vi < in.variables.size(); ++vi) {
     const ResidualVariable& v = in.variables[vi];
     if (v.values.size() != static_cast<std::size_t>(n)) continue;
-    if (v.naturalOrder && std::all_of(v.values.begin(), v.values.end(), [](double x) { return std::isfinite(x); }))
+    if (v.naturalOrder &&
+        std::all_of(v.values.begin(), v.values.end(), [](double x) { return std::isfinite(x); }))
       c.tests.push_back(ljungBox(r, v.values, o.maxLag, v.name));
     std::vector<GenericForm> forms = candidateForms(v, o);
     for (GenericForm& f : forms) f.components = std::max(1, in.components);
@@ -480,7 +500,8 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
   // Holm's step-down procedure at the family-wise level.
   std::vector<std::size_t> order(c.tests.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return c.tests[a].p < c.tests[b].p; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return c.tests[a].p < c.tests[b].p; });
   const std::size_t m = c.tests.size();
   for (std::size_t k = 0; k < m; ++k) {
     if (c.tests[order[k]].p <= o.level / static_cast<double>(m - k))
@@ -519,14 +540,17 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
     c.summaryParts = {Phrase("not white: still depends on ")};
     for (std::size_t i = 0; i < c.structure.size() && i < 3; ++i) {
       if (i > 0) c.summaryParts.push_back(Phrase(", "));
-      c.summaryParts.push_back(Phrase("%1 (%2, %3 % of the residual variance)",
-                                      {A::name(c.structure[i].against), A::text({formPhrase(c.structure[i].form)}),
-                                       A::number(100.0 * c.structure[i].share, 2)}));
+      c.summaryParts.push_back(
+          Phrase("%1 (%2, %3 % of the residual variance)",
+                 {A::name(c.structure[i].against), A::text({formPhrase(c.structure[i].form)}),
+                  A::number(100.0 * c.structure[i].share, 2)}));
     }
     if (c.structure.size() > 3)
-      c.summaryParts.push_back(Phrase(" and %1 more", {A::integer(static_cast<long long>(c.structure.size() - 3))}));
+      c.summaryParts.push_back(
+          Phrase(" and %1 more", {A::integer(static_cast<long long>(c.structure.size() - 3))}));
   } else {
-    const auto lb = std::find_if(c.tests.begin(), c.tests.end(), [](const ResidualTest& t) { return t.rejected; });
+    const auto lb =
+        std::find_if(c.tests.begin(), c.tests.end(), [](const ResidualTest& t) { return t.rejected; });
     c.summaryParts = {Phrase("not white: serially correlated in %1 order (Ljung-Box p = %2)",
                              {A::name(lb->against), A::number(lb->p, 2)})};
   }
@@ -570,27 +594,31 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
   return c;
 }
 
-GenericSummary summariseContribution(const GenericForm& f, Eigen::VectorXd contribution, const std::string& unit) {
+GenericSummary summariseContribution(const GenericForm& f, Eigen::VectorXd contribution,
+                                     const std::string& unit) {
   GenericSummary s;
   if (contribution.size() > 0) contribution.array() -= contribution.mean();
-  const double rms = contribution.size() ? std::sqrt(contribution.squaredNorm() / static_cast<double>(contribution.size())) : 0.0;
+  const double rms = contribution.size()
+                         ? std::sqrt(contribution.squaredNorm() / static_cast<double>(contribution.size()))
+                         : 0.0;
   const double range = contribution.size() ? contribution.maxCoeff() - contribution.minCoeff() : 0.0;
   const std::string u = unit.empty() ? "" : " " + unit;
   s.numbers = {{"rms", rms}, {"range", range}};
-  s.text = {Phrase("%1 in %2, rms %3%4, range %5%4",
-                   {A::text({formPhrase(f.form)}), A::name(f.against), A::number(rms, 3), A::unit(u), A::number(range, 3)})};
+  s.text = {Phrase("%1 in %2, rms %3%4, range %5%4", {A::text({formPhrase(f.form)}), A::name(f.against),
+                                                      A::number(rms, 3), A::unit(u), A::number(range, 3)})};
   return s;
 }
 
-GenericSummary summariseGeneric(const GenericForm& f, const Eigen::VectorXd& b, const std::vector<double>& values,
-                                const std::string& unit) {
+GenericSummary summariseGeneric(const GenericForm& f, const Eigen::VectorXd& b,
+                                const std::vector<double>& values, const std::string& unit) {
   GenericSummary s = summariseContribution(f, genericBasis(f, values) * b, unit);
   const std::string u = unit.empty() ? "" : " " + unit;
   Phrases text = std::move(s.text);
   if (f.form == DependenceForm::Step && b.size() == 1) {
     s.numbers.push_back({"at", f.knots.front()});
     s.numbers.push_back({"step", b(0)});
-    text.push_back(Phrase(", step %1%2 at %3", {A::signedNumber(b(0), 3), A::unit(u), A::number(f.knots.front(), 4)}));
+    text.push_back(
+        Phrase(", step %1%2 at %3", {A::signedNumber(b(0), 3), A::unit(u), A::number(f.knots.front(), 4)}));
   } else if (f.form == DependenceForm::Periodic) {
     int bestK = 1;
     double bestAmp = 0.0;
@@ -600,7 +628,8 @@ GenericSummary summariseGeneric(const GenericForm& f, const Eigen::VectorXd& b, 
     }
     s.numbers.push_back({"harmonic", bestK});
     s.numbers.push_back({"amplitude", bestAmp});
-    text.push_back(Phrase(", strongest harmonic %1 (amplitude %2%3)", {A::integer(bestK), A::number(bestAmp, 3), A::unit(u)}));
+    text.push_back(Phrase(", strongest harmonic %1 (amplitude %2%3)",
+                          {A::integer(bestK), A::number(bestAmp, 3), A::unit(u)}));
   }
   s.text = std::move(text);
   return s;
@@ -621,7 +650,8 @@ double genericSearchPenalty(const ResidualCheck& check) {
   return 2.0 * std::log(std::max<double>(2.0, static_cast<double>(check.tests.size())));
 }
 
-const ResidualVariable* findVariable(const std::vector<ResidualVariable>& variables, const std::string& name) {
+const ResidualVariable* findVariable(const std::vector<ResidualVariable>& variables,
+                                     const std::string& name) {
   for (const ResidualVariable& v : variables)
     if (v.name == name) return &v;
   return nullptr;
@@ -630,7 +660,8 @@ const ResidualVariable* findVariable(const std::vector<ResidualVariable>& variab
 nlohmann::json toJson(const ResidualCheck& c) {
   nlohmann::json tests = nlohmann::json::array();
   for (const ResidualTest& t : c.tests) {
-    nlohmann::json j = {{"name", t.name}, {"statistic", t.statistic}, {"p", t.p}, {"dof", t.dof}, {"rejected", t.rejected}};
+    nlohmann::json j = {
+        {"name", t.name}, {"statistic", t.statistic}, {"p", t.p}, {"dof", t.dof}, {"rejected", t.rejected}};
     if (t.name == "ljung_box")
       j["order"] = t.against;
     else {
@@ -655,9 +686,14 @@ nlohmann::json toJson(const ResidualCheck& c) {
     j["id"] = o.id ? nlohmann::json(*o.id) : nlohmann::json(nullptr);
     outliers.push_back(std::move(j));
   }
-  return {{"white", c.white},       {"level", c.level},         {"tests", tests},
-          {"structure", structure}, {"outliers", outliers},     {"outlier_threshold", c.outlierThreshold},
-          {"observations", c.observations}, {"summary", c.summary}};
+  return {{"white", c.white},
+          {"level", c.level},
+          {"tests", tests},
+          {"structure", structure},
+          {"outliers", outliers},
+          {"outlier_threshold", c.outlierThreshold},
+          {"observations", c.observations},
+          {"summary", c.summary}};
 }
 
 }  // namespace metrofit::diagnose

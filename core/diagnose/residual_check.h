@@ -15,11 +15,11 @@
 //   * against every variable, nested F tests of the model columns [1, J] against [1, J, G]:
 //       F = ((SSE0 - SSE1) / q) / (SSE1 / (n - p - q)),  p = rank [1, J],  q = rank of G beyond it,
 //     with G the basis of a form (generic_effect below): continuous variables `linear` (1 column),
-//     `smooth` (natural cubic spline, knots at equally spaced quantiles, boundary knots at the extremes) and `step` (one change point, the best of
-//     `stepPositions` candidate positions at quantiles; its p-value Bonferroni-corrected for the
-//     search), a path angle `periodic` (harmonics 1..`harmonics`), a category `level` (one constant
-//     per level). Since r is orthogonal to [1, J], SSE0 - SSE1 = r^T G (Gp^T Gp)^-1 G^T r with
-//     Gp = G - U U^T G (U an orthonormal basis of [1, J]): one pass over the data per form.
+//     `smooth` (natural cubic spline, knots at equally spaced quantiles, boundary knots at the extremes) and
+//     `step` (one change point, the best of `stepPositions` candidate positions at quantiles; its p-value
+//     Bonferroni-corrected for the search), a path angle `periodic` (harmonics 1..`harmonics`), a category
+//     `level` (one constant per level). Since r is orthogonal to [1, J], SSE0 - SSE1 = r^T G (Gp^T Gp)^-1 G^T
+//     r with Gp = G - U U^T G (U an orthonormal basis of [1, J]): one pass over the data per form.
 //   * Family-wise level `level` (1 %) over all tests by Holm's step-down procedure. `white` is true
 //     when no test is rejected. `structure` lists, per variable with a rejected test, its strongest
 //     form (lowest p), strongest first by share = (SSE0 - SSE1) / SSE0.
@@ -104,8 +104,8 @@ struct ResidualTest {
   std::string against;  ///< ljung_box: the order; f_test: the variable
   std::string form;     ///< f_test: the form; empty for ljung_box
   double statistic = 0.0;
-  double p = 1.0;        ///< as computed (Bonferroni-corrected for a step search)
-  int dof = 0;           ///< Ljung-Box lags, or the F test's numerator degrees of freedom
+  double p = 1.0;         ///< as computed (Bonferroni-corrected for a step search)
+  int dof = 0;            ///< Ljung-Box lags, or the F test's numerator degrees of freedom
   bool rejected = false;  ///< by Holm at the family-wise level
 };
 
@@ -118,7 +118,7 @@ struct StructureItem {
 };
 
 struct Outlier {
-  std::size_t unit = 0;  ///< the domain's unit index (0-based)
+  std::size_t unit = 0;     ///< the domain's unit index (0-based)
   std::optional<long> row;  ///< 1-based data row
   std::optional<std::string> part, dimension, id;
   double residual = 0.0;  ///< the observation with the largest robust z (data units)
@@ -127,10 +127,10 @@ struct Outlier {
 
 /// What the residual check needs besides the residual.
 struct ResidualCheckInput {
-  Eigen::VectorXd residual;              ///< n observations (outliers excluded already, or not)
-  Eigen::MatrixXd modelColumns;          ///< n x p columns of the fitted model (may be 0 columns)
+  Eigen::VectorXd residual;      ///< n observations (outliers excluded already, or not)
+  Eigen::MatrixXd modelColumns;  ///< n x p columns of the fitted model (may be 0 columns)
   std::vector<ResidualVariable> variables;
-  std::vector<std::size_t> unitOf;       ///< per observation, its unit (empty: unit = observation)
+  std::vector<std::size_t> unitOf;  ///< per observation, its unit (empty: unit = observation)
   /// Vector residuals: observation i is coordinate i % components of its unit (x, y[, z]); the
   /// forms then have one set of columns per coordinate, and the intercept is one per coordinate.
   int components = 1;
@@ -152,7 +152,7 @@ struct ResidualCheckOptions {
   double outlierFactor = 2.5;        ///< see the header comment
   double maxOutlierFraction = 0.02;  ///< more units beyond the threshold: none listed
   bool detectOutliers = true;
-  double winsorZ = 3.0;              ///< 0: no winsorising
+  double winsorZ = 3.0;  ///< 0: no winsorising
 
   bool isValid(std::string* why) const;
 };
@@ -206,7 +206,8 @@ GenericSummary summariseGeneric(const GenericForm& form, const Eigen::VectorXd& 
                                 const std::vector<double>& values, const std::string& unit);
 /// The rms and range part of summariseGeneric from the fitted contribution itself (one value per
 /// observation), for a domain that fits a transformed basis.
-GenericSummary summariseContribution(const GenericForm& form, Eigen::VectorXd contribution, const std::string& unit);
+GenericSummary summariseContribution(const GenericForm& form, Eigen::VectorXd contribution,
+                                     const std::string& unit);
 
 /// The generic candidates of a loop round: the shapes of the strongest structures of `check`, at
 /// most `count`, skipping the variables named in `taken` (they have a generic effect already).

@@ -9,8 +9,8 @@
 #include <Eigen/QR>
 
 #include "core/common/error.h"
-#include "core/io/csv.h"
 #include "core/diagnose/residual_check.h"
+#include "core/io/csv.h"
 
 namespace metrofit::diagnose {
 namespace {
@@ -72,7 +72,8 @@ namespace {
 std::vector<ResidualVariable> setupVariables(const setup::Model& model, const Eigen::MatrixXd& gains,
                                              const std::vector<std::size_t>& rowDim,
                                              const std::vector<int>& rowPart, const Eigen::VectorXd& partCol,
-                                             const Eigen::VectorXd& timeCol, const std::vector<std::size_t>& origRow,
+                                             const Eigen::VectorXd& timeCol,
+                                             const std::vector<std::size_t>& origRow,
                                              const std::vector<std::string>& partNames) {
   const std::size_t n = rowDim.size();
   std::vector<ResidualVariable> vars;
@@ -139,8 +140,8 @@ std::vector<ResidualVariable> setupVariables(const setup::Model& model, const Ei
   return vars;
 }
 
-ResidualCheckInput setupCheckInput(const Eigen::VectorXd& residual, const Eigen::MatrixXd& X, const Eigen::MatrixXd& Z,
-                                   std::vector<ResidualVariable> vars) {
+ResidualCheckInput setupCheckInput(const Eigen::VectorXd& residual, const Eigen::MatrixXd& X,
+                                   const Eigen::MatrixXd& Z, std::vector<ResidualVariable> vars) {
   ResidualCheckInput in;
   in.residual = residual;
   in.modelColumns.resize(X.rows(), X.cols() + Z.cols());
@@ -244,7 +245,8 @@ LoopRun runSetup(const setup::Model& model, const setup::Measurements& measureme
 
   std::vector<std::string> slotNames;
   for (const auto& o : ordered) slotNames.push_back(o.second);
-  const std::vector<ResidualVariable> vars = setupVariables(model, G, rowDim, rowPart, partCol, timeCol, origRow, slotNames);
+  const std::vector<ResidualVariable> vars =
+      setupVariables(model, G, rowDim, rowPart, partCol, timeCol, origRow, slotNames);
 
   std::vector<bool> used(defs.size(), false);
   std::vector<std::size_t> acceptedDefs;
@@ -343,13 +345,13 @@ LoopRun runSetup(const setup::Model& model, const setup::Measurements& measureme
         } else {
           const auto q = static_cast<int>(Zg.cols());
           cand.rmseAfter = rootMeanSquare(est.residual);
-          const AcceptanceDecision dec = decideAcceptance(options.acceptance, current.rss, est.rss, n, current.dof, q,
-                                                          "mm", 0, penalty);
+          const AcceptanceDecision dec =
+              decideAcceptance(options.acceptance, current.rss, est.rss, n, current.dof, q, "mm", 0, penalty);
           cand.score = deltaBic(current.rss, est.rss, n, current.dof, q, penalty);
-          const GenericSummary gs =
-              summariseGeneric(g, est.beta.tail(q), v->values, "mm");
+          const GenericSummary gs = summariseGeneric(g, est.beta.tail(q), v->values, "mm");
           for (const auto& [k, val] : gs.numbers) cand.parameters.push_back({k, val, std::nullopt});
-          cand.parameters.insert(cand.parameters.begin(), Parameter{"form", std::string(formName(g.form)), std::nullopt});
+          cand.parameters.insert(cand.parameters.begin(),
+                                 Parameter{"form", std::string(formName(g.form)), std::nullopt});
           Phrases ev = gs.text;
           ev.push_back(Phrase("; "));
           for (const Phrase& ph : dec.reasonParts) ev.push_back(ph);
@@ -414,7 +416,8 @@ LoopRun runSetup(const setup::Model& model, const setup::Measurements& measureme
         acceptedDefs.push_back(roundDefs[b]);
       }
       acceptedWidth.push_back(add.cols());
-      complexity += static_cast<double>(add.cols()) * std::log(static_cast<double>(n)) + (generic ? genericPenalties[b] : 0.0);
+      complexity += static_cast<double>(add.cols()) * std::log(static_cast<double>(n)) +
+                    (generic ? genericPenalties[b] : 0.0);
       Eigen::MatrixXd Z(static_cast<Eigen::Index>(n), Zacc.cols() + add.cols());
       Z << Zacc, add;
       Zacc = Z;
@@ -460,7 +463,8 @@ LoopRun runSetup(const setup::Model& model, const setup::Measurements& measureme
   }
   result.residualCheck = checkResidual(in);
   LoopRun out;
-  out.bic = static_cast<double>(n) * std::log(std::max(current.rss, 1e-300) / static_cast<double>(n)) + complexity;
+  out.bic =
+      static_cast<double>(n) * std::log(std::max(current.rss, 1e-300) / static_cast<double>(n)) + complexity;
   out.stopped = progress.stopped();
   out.diagnosis = std::move(result);
   return out;
@@ -505,7 +509,8 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
         orig.push_back(r);
       }
     Diagnosis d = keepNamedOnlyWhenNeeded(
-        [&](const std::set<std::string>& ex) { return runSetup(model, kept, orig, options, ex, observer); }, options.acceptance.bicThreshold);
+        [&](const std::set<std::string>& ex) { return runSetup(model, kept, orig, options, ex, observer); },
+        options.acceptance.bicThreshold);
     return std::make_pair(std::move(d), orig);
   };
   auto addOutliers = [&](const Eigen::VectorXd& residual, const std::vector<std::size_t>& orig) {
@@ -539,8 +544,9 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
     Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above the outlier threshold):",
                            {A::integer(static_cast<long long>(outliers.size()))})};
     for (const Outlier& o : outliers)
-      note.push_back(Phrase(" row %1 (part %2, %3, %4 mm)", {A::integer(o.row.value_or(0)), A::name(o.part.value_or("")),
-                                                            A::name(o.dimension.value_or("")), A::number(o.residual, 3)}));
+      note.push_back(Phrase(" row %1 (part %2, %3, %4 mm)",
+                            {A::integer(o.row.value_or(0)), A::name(o.part.value_or("")),
+                             A::name(o.dimension.value_or("")), A::number(o.residual, 3)}));
     result.addNote(std::move(note));
   }
   return result;

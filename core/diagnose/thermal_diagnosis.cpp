@@ -1,10 +1,10 @@
 #include "core/diagnose/thermal_diagnosis.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <optional>
@@ -150,14 +150,14 @@ double sseOn(const Eigen::MatrixXd& G, const Eigen::VectorXd& b) {
 
 struct Fit {
   bool ok = false;
-  Phrase why;                       ///< when not ok
-  double rmse = 0.0;                ///< fit rows
-  double heldout = 0.0;             ///< held-out rows (reported only)
-  double sse = 0.0, s2 = 0.0;       ///< fit rows
-  double cv = kInf;                 ///< blocked validation rmse (fit rows only)
+  Phrase why;                  ///< when not ok
+  double rmse = 0.0;           ///< fit rows
+  double heldout = 0.0;        ///< held-out rows (reported only)
+  double sse = 0.0, s2 = 0.0;  ///< fit rows
+  double cv = kInf;            ///< blocked validation rmse (fit rows only)
   bool cvOk = false;
-  std::vector<std::string> names;   ///< column names (without the intercept)
-  Eigen::VectorXd beta, se;         ///< per column, original units
+  std::vector<std::string> names;  ///< column names (without the intercept)
+  Eigen::VectorXd beta, se;        ///< per column, original units
   // For residuals: standardised coefficients and the scaling.
   Eigen::VectorXd coef, mean, sd;
   double ybar = 0.0;
@@ -166,7 +166,7 @@ struct Fit {
 /// A fit's residual on every row (y - prediction) and its summaries.
 struct Residual {
   std::vector<double> r;
-  double maxAbs = 0.0;          ///< fit rows
+  double maxAbs = 0.0;         ///< fit rows
   std::vector<char> excluded;  ///< per row: a gross error excluded from the fits
 };
 
@@ -179,8 +179,8 @@ class Problem {
     const int K = o.validationFolds;
     edge_.push_back(0);
     for (int f = 1; f <= K; ++f)
-      edge_.push_back(static_cast<std::size_t>(
-          std::llround(static_cast<double>(nFit_) * (K + f - 1) / (2.0 * K))));
+      edge_.push_back(
+          static_cast<std::size_t>(std::llround(static_cast<double>(nFit_) * (K + f - 1) / (2.0 * K))));
     edge_.push_back(nFit_);
     edge_.push_back(n_);
     // The median step of the fit rows (the lag search's lower end).
@@ -248,7 +248,8 @@ class Problem {
   std::vector<std::pair<std::size_t, std::size_t>> fitGroups() const {
     std::vector<std::pair<std::size_t, std::size_t>> out;
     if (!coarse_) return out;
-    for (std::size_t g = 0; g + 1 < gEdge_.size() && gEdge_[g] < nFit_; ++g) out.emplace_back(gEdge_[g], gEdge_[g + 1]);
+    for (std::size_t g = 0; g + 1 < gEdge_.size() && gEdge_[g] < nFit_; ++g)
+      out.emplace_back(gEdge_[g], gEdge_[g + 1]);
     return out;
   }
   /// The row weights, or null when no row is excluded (the sums skip the multiplication).
@@ -282,7 +283,8 @@ class Problem {
       }
       yyCoarse_.assign(B, 0.0);
       for (std::size_t b = 0; b < B; ++b)
-        for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g) yyCoarse_[b] += gW_[g] * yMean_[g] * yMean_[g];
+        for (std::size_t g = gOfBlock_[b]; g < gOfBlock_[b + 1]; ++g)
+          yyCoarse_[b] += gW_[g] * yMean_[g] * yMean_[g];
     }
   }
 
@@ -338,9 +340,10 @@ class Problem {
       const bool finite = std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); });
       if (!finite) {
         if (v == fullView())
-          throw ValidationError(ErrorContext{log_.source, 0, 0, o_.target},
-                                std::string("the declared ") + toString(o_.declared) +
-                                    " model is unstable on the fit rows (b1 <= 0): its prediction is not finite");
+          throw ValidationError(
+              ErrorContext{log_.source, 0, 0, o_.target},
+              std::string("the declared ") + toString(o_.declared) +
+                  " model is unstable on the fit rows (b1 <= 0): its prediction is not finite");
         continue;
       }
       pred_[static_cast<std::size_t>(v)] = std::move(p);
@@ -497,8 +500,7 @@ class Problem {
         d[blk] = weightedDot(weights(), x.data(), y.data(), edge_[blk], edge_[blk + 1]);
     } else {
       for (std::size_t blk = 0; blk + 1 < edge_.size(); ++blk)
-        for (std::size_t g = gOfBlock_[blk]; g < gOfBlock_[blk + 1]; ++g)
-          d[blk] += gW_[g] * x[g] * y[g];
+        for (std::size_t g = gOfBlock_[blk]; g < gOfBlock_[blk + 1]; ++g) d[blk] += gW_[g] * x[g] * y[g];
     }
     return dots_.emplace(key, std::move(d)).first->second;
   }
@@ -592,8 +594,8 @@ class Problem {
     const std::size_t B = edge_.size() - 1, fitBlocks = B - 1;
     std::vector<const Column*> col;
     for (const auto& c : specs) col.push_back(&column(c.key));
-    std::vector<std::vector<const std::vector<double>*>> P(static_cast<std::size_t>(p),
-                                                           std::vector<const std::vector<double>*>(static_cast<std::size_t>(p)));
+    std::vector<std::vector<const std::vector<double>*>> P(
+        static_cast<std::size_t>(p), std::vector<const std::vector<double>*>(static_cast<std::size_t>(p)));
     for (Eigen::Index i = 0; i < p; ++i)
       for (Eigen::Index j = i; j < p; ++j) {
         const auto ii = static_cast<std::size_t>(i), jj = static_cast<std::size_t>(j);
@@ -631,9 +633,11 @@ class Problem {
         for (Eigen::Index j = i; j < p; ++j) {
           const auto jj = static_cast<std::size_t>(j);
           const double mj = g.mean(j), Sj = col[jj]->sum[b];
-          G(i + 1, j + 1) = G(j + 1, i + 1) = ((*P[ii][jj])[b] - mi * Sj - mj * Si + nb * mi * mj) / (si * g.sd(j));
+          G(i + 1, j + 1) = G(j + 1, i + 1) =
+              ((*P[ii][jj])[b] - mi * Sj - mj * Si + nb * mi * mj) / (si * g.sd(j));
         }
-        G(i + 1, q - 1) = G(q - 1, i + 1) = (col[ii]->dotY[b] - mi * ySum_[b] - ybar * Si + nb * mi * ybar) / si;
+        G(i + 1, q - 1) = G(q - 1, i + 1) =
+            (col[ii]->dotY[b] - mi * ySum_[b] - ybar * Si + nb * mi * ybar) / si;
       }
       G(0, q - 1) = G(q - 1, 0) = ySum_[b] - nb * ybar;
       G(q - 1, q - 1) = yy[b] - 2.0 * ybar * ySum_[b] + nb * ybar * ybar;
@@ -772,10 +776,10 @@ class Problem {
   mutable bool stopped_ = false;
   mutable long pollSteps_ = 0;
   mutable double pollCurrent_ = 0.0;
-  std::vector<double> w_;       ///< per row: 0 for an excluded gross error, else 1
+  std::vector<double> w_;  ///< per row: 0 for an excluded gross error, else 1
   bool anyExcluded_ = false;
-  std::vector<double> blockN_;  ///< per block: the rows not excluded
-  double fitN_ = 0.0;           ///< fit rows not excluded
+  std::vector<double> blockN_;                                      ///< per block: the rows not excluded
+  double fitN_ = 0.0;                                               ///< fit rows not excluded
   mutable std::map<std::string, std::vector<double>> coarseInput_;  ///< group means of lagged inputs
   mutable std::vector<Generic> generic_;
   mutable std::map<std::string, Column> store_;
@@ -818,7 +822,7 @@ Fit fitViews(const Problem& pb, const Views& states) {
 }
 
 struct LagEstimate {
-  std::vector<double> tau;  ///< per view
+  std::vector<double> tau;   ///< per view
   std::optional<double> se;  ///< of the full view's tau
   Views next;
   Fit fit;
@@ -916,7 +920,8 @@ LagEstimate searchLag(const Problem& pb, int gridPoints, WithTau withTau, double
   for (int v = 0; v < V; ++v) {
     const auto& vv = val[static_cast<std::size_t>(v)];
     const std::size_t best = static_cast<std::size_t>(std::min_element(vv.begin(), vv.end()) - vv.begin());
-    const double l = grid[best == 0 ? 0 : best - 1], r = grid[std::min<std::size_t>(best + 1, grid.size() - 1)];
+    const double l = grid[best == 0 ? 0 : best - 1],
+                 r = grid[std::min<std::size_t>(best + 1, grid.size() - 1)];
     const bool full = v == pb.fullView();
     auto sseAt = [&](double logTau, bool coarse) {
       if (pb.poll()) return kInf;
@@ -1062,14 +1067,17 @@ Eval evaluateCandidate(const Problem& pb, const ThermalLog& log, const ThermalDi
   e.next = base;
   if (isLag(name)) {
     const std::string col = name == "lag" ? "" : name.substr(4);
-    LagEstimate le = searchLag(pb, o.lagGridPoints, [&](double tau, int view) {
-      State s = base[static_cast<std::size_t>(view)];
-      if (col.empty())
-        s.effects.lagAll = tau;
-      else
-        s.effects.lagCol[col] = tau;
-      return s;
-    }, lagHint);
+    LagEstimate le = searchLag(
+        pb, o.lagGridPoints,
+        [&](double tau, int view) {
+          State s = base[static_cast<std::size_t>(view)];
+          if (col.empty())
+            s.effects.lagAll = tau;
+          else
+            s.effects.lagCol[col] = tau;
+          return s;
+        },
+        lagHint);
     e.next = std::move(le.next);
     e.fit = le.fit;
     const double tau = le.tau.back();
@@ -1108,7 +1116,7 @@ bool determined(const Eval& e) {
 /// The evidence figures of a candidate: "validation rmse a -> b (c %), fit rmse ..., held-out rmse
 /// ... (reported only)".
 std::vector<PhraseArg> figureArgs(const Fit& cur, const Fit& f, const std::string& u) {
-  return {num(cur.cv),   num(f.cv),   A::unit(u),        pct(cur.cv, f.cv),
+  return {num(cur.cv),   num(f.cv),   A::unit(u),       pct(cur.cv, f.cv),
           num(cur.rmse), num(f.rmse), num(cur.heldout), num(f.heldout)};
 }
 
@@ -1140,8 +1148,8 @@ std::vector<ResidualVariable> residualVariables(const ThermalLog& log, const std
 }
 
 /// The residual check (residual_check.h) of a state's fit on the fit rows that were not excluded.
-ResidualCheck checkOf(const Problem& pb, const State& s, const Residual& res, const std::vector<ResidualVariable>& vars,
-                      bool coarse = false) {
+ResidualCheck checkOf(const Problem& pb, const State& s, const Residual& res,
+                      const std::vector<ResidualVariable>& vars, bool coarse = false) {
   const auto groups = pb.fitGroups();
   if (coarse && !groups.empty()) {
     // Above kCoarseRows rows the round's search for structure (which generic candidates to try)
@@ -1171,7 +1179,8 @@ ResidualCheck checkOf(const Problem& pb, const State& s, const Residual& res, co
     for (Eigen::Index i = 0; i < m; ++i) {
       const auto& o = obs[static_cast<std::size_t>(i)];
       in.residual(i) = o[0];
-      for (std::size_t j = 0; j < cols.size(); ++j) in.modelColumns(i, static_cast<Eigen::Index>(j)) = o[1 + j];
+      for (std::size_t j = 0; j < cols.size(); ++j)
+        in.modelColumns(i, static_cast<Eigen::Index>(j)) = o[1 + j];
     }
     in.unitRow = first;
     for (std::size_t j = 0; j < vars.size(); ++j) {
@@ -1193,7 +1202,8 @@ ResidualCheck checkOf(const Problem& pb, const State& s, const Residual& res, co
   for (Eigen::Index i = 0; i < m; ++i) {
     const std::size_t k = rows[static_cast<std::size_t>(i)];
     in.residual(i) = res.r[k];
-    for (std::size_t j = 0; j < cols.size(); ++j) in.modelColumns(i, static_cast<Eigen::Index>(j)) = (*cols[j])[k];
+    for (std::size_t j = 0; j < cols.size(); ++j)
+      in.modelColumns(i, static_cast<Eigen::Index>(j)) = (*cols[j])[k];
     in.unitRow.push_back(static_cast<long>(k + 1));
   }
   for (const ResidualVariable& v : vars) {
@@ -1229,15 +1239,19 @@ std::string variableOf(const std::string& name) {
 
 const char* toString(ThermalDeclaredModel m) {
   switch (m) {
-    case ThermalDeclaredModel::Gmc: return "gmc";
-    case ThermalDeclaredModel::Gnnmci: return "gnnmci";
-    case ThermalDeclaredModel::Linear: break;
+    case ThermalDeclaredModel::Gmc:
+      return "gmc";
+    case ThermalDeclaredModel::Gnnmci:
+      return "gnnmci";
+    case ThermalDeclaredModel::Linear:
+      break;
   }
   return "linear";
 }
 
 ThermalDeclaredModel thermalDeclaredModel(const std::string& name, const std::string& field) {
-  for (ThermalDeclaredModel m : {ThermalDeclaredModel::Linear, ThermalDeclaredModel::Gmc, ThermalDeclaredModel::Gnnmci})
+  for (ThermalDeclaredModel m :
+       {ThermalDeclaredModel::Linear, ThermalDeclaredModel::Gmc, ThermalDeclaredModel::Gnnmci})
     if (name == toString(m)) return m;
   throw OptionsError(ErrorContext{{}, 0, 0, field}, "'" + name + "' is not one of linear, gmc, gnnmci");
 }
@@ -1306,13 +1320,13 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     std::string inputs;
     for (const auto& in : o.inputs) inputs += (inputs.empty() ? "" : ", ") + in;
     const auto [ownFit, ownHeld] = pb.declaredOwnRmse();
-    d.addNote({Phrase("declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit "
-                      "rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) "
-                      "and the candidate effects",
-                      {A::name(o.declared == ThermalDeclaredModel::Gmc ? "GMC(1,N)" : "GNNMCI(1,N)"),
-                       A::name(inputs), A::integer(static_cast<long long>(pb.fitRows())),
-                       A::integer(static_cast<long long>(pb.rows())), num(ownFit), num(ownHeld), A::unit(u),
-                       num(cur.beta(0))})});
+    d.addNote({Phrase(
+        "declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit "
+        "rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) "
+        "and the candidate effects",
+        {A::name(o.declared == ThermalDeclaredModel::Gmc ? "GMC(1,N)" : "GNNMCI(1,N)"), A::name(inputs),
+         A::integer(static_cast<long long>(pb.fitRows())), A::integer(static_cast<long long>(pb.rows())),
+         num(ownFit), num(ownHeld), A::unit(u), num(cur.beta(0))})});
   } else {
     Phrases model = {Phrase("%1 = c0", {A::name(o.target)})};
     for (std::size_t j = 0; j < o.inputs.size(); ++j)
@@ -1326,15 +1340,17 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above %2):",
                            {A::integer(static_cast<long long>(outliers.size())), num(outlierThreshold)})};
     for (const Outlier& x : outliers)
-      note.push_back(Phrase(" row %1 (%2%3)", {A::integer(x.row.value_or(0)), A::signedNumber(x.residual, 3), A::unit(u)}));
+      note.push_back(Phrase(" row %1 (%2%3)",
+                            {A::integer(x.row.value_or(0)), A::signedNumber(x.residual, 3), A::unit(u)}));
     d.addNote(std::move(note));
   }
   {
     d.addNote(
         {Phrase("noise level (first differences of the fit residual): %1%2", {num(noise), A::unit(u)})});
-    d.addNote({Phrase("effects chosen on the fit rows by blocked forward validation (%1 folds, validation "
-                      "rmse %2%3); the held-out rows only report the error",
-                      {A::integer(o.validationFolds), num(cur.cv), A::unit(u)})});
+    d.addNote(
+        {Phrase("effects chosen on the fit rows by blocked forward validation (%1 folds, validation "
+                "rmse %2%3); the held-out rows only report the error",
+                {A::integer(o.validationFolds), num(cur.cv), A::unit(u)})});
   }
 
   // Columns a model could have used but did not declare (never the target, never another
@@ -1378,7 +1394,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       for (const GenericForm& g : genericCandidates(rc, genericTaken)) {
         const ResidualVariable* v = findVariable(variables, g.against);
         const int ch = log.indexOf(g.against);
-        if (!v || (ch >= 0 && channelKind(log.channels[static_cast<std::size_t>(ch)]) == ChannelKind::Displacement))
+        if (!v ||
+            (ch >= 0 && channelKind(log.channels[static_cast<std::size_t>(ch)]) == ChannelKind::Displacement))
           continue;  // another displacement channel is an output, not a cause
         genericOf["unexplained:" + g.against] = pb.addGeneric(g, v->values);
         names.push_back("unexplained:" + g.against);
@@ -1427,13 +1444,15 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
         // of the added parameter (n ln(SSE0 / SSE1) > ln n), so that a coefficient the fit rows
         // cannot determine does not win by a lucky extrapolation.
         const double width = generic >= 0 ? static_cast<double>(pb.generic(generic).basis.cols()) : 1.0;
-        const double dBic = nf * std::log(f.sse / cur.sse) + width * std::log(nf) + (generic >= 0 ? genericPenalty : 0.0);
+        const double dBic =
+            nf * std::log(f.sse / cur.sse) + width * std::log(nf) + (generic >= 0 ? genericPenalty : 0.0);
         const bool inSample = dBic < 0.0;
         std::vector<PhraseArg> args = figureArgs(cur, f, u);
         Phrases ev;
         if (paramText.empty()) {
-          ev.push_back(Phrase("validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3",
-                              std::move(args)));
+          ev.push_back(
+              Phrase("validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3",
+                     std::move(args)));
         } else {
           args.push_back(A::text(paramText));
           ev.push_back(
@@ -1452,7 +1471,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
         else if (!inSample)
           ev.push_back(Phrase("; rejected: no in-sample evidence (fit dBIC %1 >= 0)", {num(dBic)}));
         else if (!determined(ev0))
-          ev.push_back(Phrase("; rejected: the fit rows do not determine tau (standard error above half of it)"));
+          ev.push_back(
+              Phrase("; rejected: the fit rows do not determine tau (standard error above half of it)"));
         c.setEvidence(std::move(ev));
         passed[i] = gain && aboveNoise && inSample && determined(ev0);
         if (passed[i] && (!best || rankOf(f, cur) < rankOf(fits[*best], cur))) best = i;
@@ -1486,8 +1506,9 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
             const auto j = static_cast<std::size_t>(alt - names.begin());
             if (j < fits.size() && passed[j] && fits[j].cv < (1.0 - o.minHeldoutGain) * fits[i].cv) {
               passed[i] = false;
-              tried[i].addEvidence({Phrase("; rejected: the generic %1 validates better (%2 against %3%4)",
-                                           {A::name(names[j]), num(fits[j].cv), num(fits[i].cv), A::unit(u)})});
+              tried[i].addEvidence(
+                  {Phrase("; rejected: the generic %1 validates better (%2 against %3%4)",
+                          {A::name(names[j]), num(fits[j].cv), num(fits[i].cv), A::unit(u)})});
               continue;
             }
           }
@@ -1503,7 +1524,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       // input that hardly changes on them is lagged too).
       std::optional<std::size_t> one;
       for (std::size_t i = 0; i < names.size() && i < fits.size(); ++i)
-        if (names[i].starts_with("lag:") && passed[i] && (!one || rankOf(fits[i], cur) < rankOf(fits[*one], cur)))
+        if (names[i].starts_with("lag:") && passed[i] &&
+            (!one || rankOf(fits[i], cur) < rankOf(fits[*one], cur)))
           one = i;
       if (one && !(fits[*best].cv <= (1.0 - o.minHeldoutGain) * fits[*one].cv)) best = one;
     }
@@ -1561,9 +1583,9 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
         if (!isLag(nb)) linearParameters(log, nb, pf, u, fb);
         if (!pf.cvOk) continue;
         const double explained = std::sqrt(std::max(0.0, cur.cv * cur.cv - pf.cv * pf.cv));
-        const bool pass = pf.cv <= (1.0 - o.minHeldoutGain) * cur.cv && explained >= o.minExplainedNoise * noise &&
-                          nf * std::log(pf.sse / cur.sse) + 2.0 * std::log(nf) < 0.0 && determined(ea) &&
-                          determined(fb);
+        const bool pass =
+            pf.cv <= (1.0 - o.minHeldoutGain) * cur.cv && explained >= o.minExplainedNoise * noise &&
+            nf * std::log(pf.sse / cur.sse) + 2.0 * std::log(nf) < 0.0 && determined(ea) && determined(fb);
         if (pass && (!bestA || rankOf(pf, cur) < rankOf(bestFit, cur))) {
           bestNames = {na, nb};
           bestA = ea;
@@ -1590,9 +1612,10 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
           std::vector<PhraseArg> args = {A::name(bestNames[static_cast<std::size_t>(1 - w)])};
           for (PhraseArg& a : figureArgs(cur, bestFit, u)) args.push_back(std::move(a));
           args.push_back(A::text(parts[w]->paramText));
-          c.setEvidence({Phrase("accepted together with %1: validation rmse %2 -> %3%4 (%5), fit rmse %6 -> "
-                                "%7%4, held-out rmse %8 -> %9%4, %10",
-                                std::move(args))});
+          c.setEvidence(
+              {Phrase("accepted together with %1: validation rmse %2 -> %3%4 (%5), fit rmse %6 -> "
+                      "%7%4, held-out rmse %8 -> %9%4, %10",
+                      std::move(args))});
           ResidualPlot plot;
           plot.setLabels(timeLabel(), residualLabel(d.units));
           plot.x = log.timeMin;

@@ -134,7 +134,7 @@ ThermalDeclaredModel thermalDeclaredModel(const std::string& name, const std::st
 struct ThermalDiagnosisOptions {
   std::string target;
   ThermalDeclaredModel declared = ThermalDeclaredModel::Linear;
-  std::uint64_t seed = 1;  ///< GNNMCI's swarm (declared gnnmci)
+  std::uint64_t seed = 1;           ///< GNNMCI's swarm (declared gnnmci)
   std::vector<std::string> inputs;  ///< the declared inputs
   double trainFraction = 0.5;       ///< fit on the first fraction of the rows, hold out the rest
   double minHeldoutGain = 0.10;     ///< relative validation (blocked CV) rmse reduction needed

@@ -86,8 +86,8 @@ nlohmann::json benchDiagnoseScale(const std::vector<std::size_t>& rows) {
   // CPU seconds of this process (one thread) beside the wall clock: on a shared machine the wall
   // clock also counts the time other processes held the core.
   std::printf("diagnose thermal, declared T1,T2,T3, 20 data columns, 1 Hz (one thread)\n");
-  std::printf("%10s %8s %8s %8s %10s %10s %6s  %s\n", "rows", "wall_s", "cpu_s", "tried", "heldout0", "heldout1",
-              "white", "accepted");
+  std::printf("%10s %8s %8s %8s %10s %10s %6s  %s\n", "rows", "wall_s", "cpu_s", "tried", "heldout0",
+              "heldout1", "white", "accepted");
   for (std::size_t n : rows) {
     const ThermalLog log = scaleLog(n);
     const auto t0 = Clock::now();
@@ -137,7 +137,8 @@ nlohmann::json benchDiagnoseScale(const std::vector<std::size_t>& rows) {
     const double latency = isRaised ? std::chrono::duration<double>(end - raised).count() : 0.0;
     std::printf("cancel after 1 s on %zu rows: returned %.3f s later (%ld progress steps, note '%s')\n",
                 rows.back(), latency, steps.load(), d.notes.empty() ? "" : d.notes.back().c_str());
-    out.push_back({{"cancel_rows", rows.back()}, {"cancel_latency_s", latency}, {"progress_steps", steps.load()}});
+    out.push_back(
+        {{"cancel_rows", rows.back()}, {"cancel_latency_s", latency}, {"progress_steps", steps.load()}});
   }
   return out;
 }

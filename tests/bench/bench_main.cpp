@@ -122,9 +122,9 @@ int main(int argc, char** argv) {
   bool diagnose = false, realDiagnose = false;  // issue 8 (bench_diagnose.cpp)
   bool open = false;                            // issue 15: --diagnose --open (bench_open_world.cpp)
   metrofit::bench::OpenBenchOptions openOptions;
-  int explicitSeeds = 0;              // --seeds N wins over --quick
-  std::vector<std::string> openCase;  // --open-case DOMAIN CASE SEED
-  bool setupBench = false;            // issue 4 (bench_setup.cpp)
+  int explicitSeeds = 0;               // --seeds N wins over --quick
+  std::vector<std::string> openCase;   // --open-case DOMAIN CASE SEED
+  bool setupBench = false;             // issue 4 (bench_setup.cpp)
   std::vector<std::size_t> scaleRows;  // issue 15 item 9 (bench_diagnose_scale.cpp)
   metrofit::bench::DiagnoseBenchOptions diagnoseOptions;
   metrofit::bench::OptimBenchOptions optimOptions;

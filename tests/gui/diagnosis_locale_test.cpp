@@ -57,7 +57,8 @@ class StubGermanTranslator : public QTranslator {
     if (QLatin1String(context) != QLatin1String(kCoreTextContext)) return {};
     const QString s = QString::fromUtf8(source);
     if (s == QLatin1String("accepted: ")) return QStringLiteral("angenommen: ");
-    if (s == QLatin1String("validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3, %9"))
+    if (s ==
+        QLatin1String("validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3, %9"))
       return QStringLiteral(
           "RMSE Validierung %1 → %2%3 (%4), RMSE Anpassung %5 → %6%3, RMSE zurückgehalten %7 → %8%3, %9");
     if (s == QLatin1String("tau %1 +- %2 min")) return QStringLiteral("τ %1 ± %2 min");
@@ -180,9 +181,10 @@ TEST_F(DiagnosisLocaleTest, GermanPageShowsCommaDecimalsInEvidenceNotesParameter
   EXPECT_EQ(t->item(accepted, kEvidenceColumn)->text().toStdString(),
             "angenommen: RMSE Validierung 4,08 → 0,262 µm (-94 %), RMSE Anpassung 1,64 → 0,262 µm, RMSE "
             "zurückgehalten 2,94 → 0,291 µm, τ 15,5 ± 0,2 min");
-  EXPECT_EQ(page.result()->effects[static_cast<std::size_t>(accepted)].evidence,
-            "accepted: validation rmse 4.08 -> 0.262 um (-94 %), fit rmse 1.64 -> 0.262 um, held-out rmse 2.94 -> "
-            "0.291 um, tau 15.5 +- 0.2 min");
+  EXPECT_EQ(
+      page.result()->effects[static_cast<std::size_t>(accepted)].evidence,
+      "accepted: validation rmse 4.08 -> 0.262 um (-94 %), fit rmse 1.64 -> 0.262 um, held-out rmse 2.94 -> "
+      "0.291 um, tau 15.5 +- 0.2 min");
   // Every evidence line: no '.'-decimal number left (the English text has them).
   const QRegularExpression dotDecimal(QStringLiteral("\\d\\.\\d"));
   for (int r = 0; r < t->rowCount(); ++r) {
@@ -235,9 +237,10 @@ TEST_F(DiagnosisLocaleTest, PolishPageHasNoDotDecimalsInAnyDomain) {
     for (const QTableWidget* table : {check->testTable(), check->structureTable(), check->outlierTable()})
       for (int r = 0; r < table->rowCount(); ++r)
         for (int c = 0; c < table->columnCount(); ++c)
-          if (table->item(r, c)->data(Qt::UserRole).typeId() == QMetaType::Double)  // the numbers (names may have dots)
+          if (table->item(r, c)->data(Qt::UserRole).typeId() ==
+              QMetaType::Double)  // the numbers (names may have dots)
             EXPECT_FALSE(dotDecimal.match(table->item(r, c)->text()).hasMatch())
-              << diagnosisDomainKey(d) << ": " << table->item(r, c)->text().toStdString();
+                << diagnosisDomainKey(d) << ": " << table->item(r, c)->text().toStdString();
     const auto* info = page.findChild<QLabel*>(QStringLiteral("diagnosisInfo"));
     ASSERT_NE(info, nullptr);
     EXPECT_FALSE(dotDecimal.match(info->text()).hasMatch()) << info->text().toStdString();  // tolerance 0,035

@@ -95,9 +95,9 @@ diagnose::Diagnosis fixture(bool genericOnly = false) {
   shape.form = DependenceForm::Smooth;
   shape.knots = {20.0, 22.0, 24.0, 26.0, 28.0};
   generic.generic = shape;
-  generic.setEvidence({Phrase("%1 in %2, rms %3%4, range %5%4",
-                              {A::text({Phrase("smooth")}), A::name("T1"), A::number(2.1, 3), A::unit(" um"),
-                               A::number(6.3, 3)})});
+  generic.setEvidence(
+      {Phrase("%1 in %2, rms %3%4, range %5%4", {A::text({Phrase("smooth")}), A::name("T1"),
+                                                 A::number(2.1, 3), A::unit(" um"), A::number(6.3, 3)})});
   d.effects.push_back(generic);
 
   diagnose::ResidualCheck c;
@@ -175,9 +175,10 @@ TEST_F(ResidualCheckPageTest, HandBuiltCheckFillsVerdictTablesAndChart) {
   page.setResult(fixture());
   const ResidualCheckView* v = page.residualCheckView();
   ASSERT_TRUE(v->hasCheck());
-  EXPECT_EQ(v->verdictText().toStdString(),
-            "not white: still depends on T1 (smooth, 62 % of the residual variance), time (step, 8.1 % of the "
-            "residual variance)");
+  EXPECT_EQ(
+      v->verdictText().toStdString(),
+      "not white: still depends on T1 (smooth, 62 % of the residual variance), time (step, 8.1 % of the "
+      "residual variance)");
   EXPECT_TRUE(page.statusText().contains(QStringLiteral("Residual check: not white: still depends on T1")))
       << page.statusText().toStdString();
   EXPECT_TRUE(page.resultTabs()->tabText(1).contains(QStringLiteral("structure left")));
@@ -291,12 +292,14 @@ TEST_F(ResidualCheckPageTest, GermanAndPolishTranslations) {
     const QLocale pl(QLocale::Polish, QLocale::Poland);
     const QStringList s = residualCheckSentences(fixture(), pl);
     ASSERT_EQ(s.size(), 3);
-    EXPECT_TRUE(s[0].startsWith(QStringLiteral("Co pozostaje niewyjaśnione: końcowe residuum wciąż zależy od kolumny "
-                                               "T1 (gładka krzywa, 62,0 % wariancji residuum")))
+    EXPECT_TRUE(
+        s[0].startsWith(QStringLiteral("Co pozostaje niewyjaśnione: końcowe residuum wciąż zależy od kolumny "
+                                       "T1 (gładka krzywa, 62,0 % wariancji residuum")))
         << s[0].toStdString();
-    EXPECT_EQ(s[2].toStdString(),
-              "1 pomiar wykluczony z dopasowania jako błąd gruby (odporne z powyżej 9,61): wiersz 412 (residuum "
-              "8,1 µm, odporne z 21,3).");
+    EXPECT_EQ(
+        s[2].toStdString(),
+        "1 pomiar wykluczony z dopasowania jako błąd gruby (odporne z powyżej 9,61): wiersz 412 (residuum "
+        "8,1 µm, odporne z 21,3).");
   }
 }
 
@@ -336,10 +339,11 @@ TEST_F(ResidualCheckPageTest, GenericEffectIsListedWithItsFormAndNotApplied) {
 TEST(ResidualCheckTextTest, SentencesInReadersWords) {
   const QStringList s = residualCheckSentences(fixture(), QLocale::c());
   ASSERT_EQ(s.size(), 3);
-  EXPECT_EQ(s[0].toStdString(),
-            "What is left unexplained: the final residual still depends on column T1 (a smooth curve, 62.0 % of "
-            "the residual variance, p = 1.2e-09) and time (a step at 125, 8.1 % of the residual variance, p = "
-            "2.0e-04). No effect of the catalogue explains this (tests at the 1 % family-wise level).");
+  EXPECT_EQ(
+      s[0].toStdString(),
+      "What is left unexplained: the final residual still depends on column T1 (a smooth curve, 62.0 % of "
+      "the residual variance, p = 1.2e-09) and time (a step at 125, 8.1 % of the residual variance, p = "
+      "2.0e-04). No effect of the catalogue explains this (tests at the 1 % family-wise level).");
   EXPECT_TRUE(s[1].contains(QStringLiteral("a smooth curve in column T1"))) << s[1].toStdString();
   EXPECT_EQ(s[2].toStdString(),
             "1 measurement(s) excluded from the fit as gross errors (robust z above 9.61): row 412 (residual "
@@ -388,10 +392,12 @@ TEST(ResidualCheckReportTest, PdfSaysWhatIsLeftUnexplainedInReadersWords) {
   }
   const QString text = pdfText(pdf);
   ASSERT_FALSE(text.isEmpty()) << "pdftotext gave nothing";
-  EXPECT_TRUE(text.contains(QStringLiteral("the final residual still depends on column T1 (a smooth curve, 62.0 % "
-                                           "of the residual variance")))
+  EXPECT_TRUE(
+      text.contains(QStringLiteral("the final residual still depends on column T1 (a smooth curve, 62.0 % "
+                                   "of the residual variance")))
       << text.toStdString();
-  EXPECT_TRUE(text.contains(QStringLiteral("row 412 (residual 8.1 µm, robust z 21.3)"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("row 412 (residual 8.1 µm, robust z 21.3)")))
+      << text.toStdString();
   EXPECT_TRUE(text.contains(QStringLiteral("a generic term"))) << text.toStdString();
   // The plot's title and legend are text in the PDF.
   EXPECT_TRUE(text.contains(QStringLiteral("Final residual against T1 with the generic fit (smooth)")))
@@ -535,7 +541,8 @@ TEST_F(ResidualCheckPageTest, OtherDemoFilesShowTheirResidualCheck) {
     const auto& c = page.result()->residualCheck;
     if (c && c->plot) ++withPlot;
     std::cout << name << ": " << (c ? c->summary : std::string("no check")) << " (plot components "
-              << (c && c->plot ? c->plot->components : 0) << ", outliers " << (c ? c->outliers.size() : 0u) << ")\n";
+              << (c && c->plot ? c->plot->components : 0) << ", outliers " << (c ? c->outliers.size() : 0u)
+              << ")\n";
     page.resultTabs()->setCurrentIndex(1);
     QString shot = QString::fromStdString(name);
     shot.replace(QLatin1Char(' '), QLatin1Char('-'));

@@ -97,11 +97,11 @@ QString outputDir(const QString& name) {
 /// view per further thermal log of the bundled demo project (in project order).
 QStringList expectedShots() {
   QStringList names = {
-      QStringLiteral("overview"),          QStringLiteral("setup-graph"),
-      QStringLiteral("setup-convergence"), QStringLiteral("matching-3d"),
-      QStringLiteral("kinematics-path"),   QStringLiteral("kinematics-spc"),
-      QStringLiteral("thermal-trend"),     QStringLiteral("thermal-hysteresis"),
-      QStringLiteral("thermal-models"),    QStringLiteral("diagnosis"),
+      QStringLiteral("overview"),           QStringLiteral("setup-graph"),
+      QStringLiteral("setup-convergence"),  QStringLiteral("matching-3d"),
+      QStringLiteral("kinematics-path"),    QStringLiteral("kinematics-spc"),
+      QStringLiteral("thermal-trend"),      QStringLiteral("thermal-hysteresis"),
+      QStringLiteral("thermal-models"),     QStringLiteral("diagnosis"),
       QStringLiteral("diagnosis-residual"),
   };
   const metrofit::Project demo =

@@ -39,8 +39,10 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", "declared model (static, fitted on the first %1 of %2 rows): %3"),
     QT_TRANSLATE_NOOP("metrofit::core", "noise level (first differences of the fit residual): %1%2"),
     QT_TRANSLATE_NOOP("metrofit::core", "not estimable: %1"),
-    QT_TRANSLATE_NOOP("metrofit::core", "validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3"),
-    QT_TRANSLATE_NOOP("metrofit::core", "validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3, %9"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "validation rmse %1 -> %2%3 (%4), fit rmse %5 -> %6%3, held-out rmse %7 -> %8%3, %9"),
     QT_TRANSLATE_NOOP("metrofit::core", "; rejected: validation error worse"),
     QT_TRANSLATE_NOOP("metrofit::core", "; rejected: validation gain below %1 %"),
     QT_TRANSLATE_NOOP("metrofit::core", "; rejected: explains %1%2, below %3 x the noise level %4%2"),
@@ -49,16 +51,20 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", "%1 gross errors excluded before the fit (robust z above %2):"),
     QT_TRANSLATE_NOOP("metrofit::core", " row %1 (%2%3)"),
     QT_TRANSLATE_NOOP("metrofit::core", "; rejected: the generic %1 validates better (%2 against %3%4)"),
-    QT_TRANSLATE_NOOP("metrofit::core", "; rejected: the fit rows do not determine tau (standard error above half of it)"),
     QT_TRANSLATE_NOOP("metrofit::core",
-                      "effects chosen on the fit rows by blocked forward validation (%1 folds, validation rmse "
-                      "%2%3); the held-out rows only report the error"),
+                      "; rejected: the fit rows do not determine tau (standard error above half of it)"),
+    QT_TRANSLATE_NOOP(
+        "metrofit::core",
+        "effects chosen on the fit rows by blocked forward validation (%1 folds, validation rmse "
+        "%2%3); the held-out rows only report the error"),
+    QT_TRANSLATE_NOOP(
+        "metrofit::core",
+        "declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit "
+        "rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) "
+        "and the candidate effects"),
     QT_TRANSLATE_NOOP("metrofit::core",
-                      "declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit "
-                      "rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) "
-                      "and the candidate effects"),
-    QT_TRANSLATE_NOOP("metrofit::core",
-                      "accepted together with %1: validation rmse %2 -> %3%4 (%5), fit rmse %6 -> %7%4, held-out rmse %8 -> %9%4, %10"),
+                      "accepted together with %1: validation rmse %2 -> %3%4 (%5), fit rmse %6 -> %7%4, "
+                      "held-out rmse %8 -> %9%4, %10"),
     QT_TRANSLATE_NOOP("metrofit::core", "residual"),
     QT_TRANSLATE_NOOP("metrofit::core", "residual (%1)"),
     // Kinematic
@@ -133,7 +139,8 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", "%1"),
     QT_TRANSLATE_NOOP("metrofit::core", ", "),
     QT_TRANSLATE_NOOP("metrofit::core", "too few observations (%1) to test the residual"),
-    QT_TRANSLATE_NOOP("metrofit::core", "white: no test finds structure at the %1 % family-wise level (%2 tests)"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "white: no test finds structure at the %1 % family-wise level (%2 tests)"),
     QT_TRANSLATE_NOOP("metrofit::core", "not white: still depends on "),
     QT_TRANSLATE_NOOP("metrofit::core", "%1 (%2, %3 % of the residual variance)"),
     QT_TRANSLATE_NOOP("metrofit::core", " and %1 more"),
@@ -143,15 +150,17 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", ", strongest harmonic %1 (amplitude %2%3)"),
     // the open world in the loops: outliers excluded first, residual variables' axis titles, a named
     // effect that does not explain what it was chosen for (diagnosis.cpp keepNamedOnlyWhenNeeded)
-    QT_TRANSLATE_NOOP("metrofit::core", "%1 gross errors excluded before the fit (robust z above the outlier threshold):"),
+    QT_TRANSLATE_NOOP("metrofit::core",
+                      "%1 gross errors excluded before the fit (robust z above the outlier threshold):"),
     QT_TRANSLATE_NOOP("metrofit::core", " row %1 (%2 um)"),
     QT_TRANSLATE_NOOP("metrofit::core", " row %1 (part %2, %3, %4 mm)"),
     QT_TRANSLATE_NOOP("metrofit::core", " point %1 (row %2, %3 mm)"),
     QT_TRANSLATE_NOOP("metrofit::core", "; "),
     QT_TRANSLATE_NOOP("metrofit::core", "not identifiable: %1"),
-    QT_TRANSLATE_NOOP("metrofit::core",
-                      "rejected: does not explain what it was chosen for; without it the generic effects explain "
-                      "the data as well (BIC %1 without, %2 with, needed %3 lower)"),
+    QT_TRANSLATE_NOOP(
+        "metrofit::core",
+        "rejected: does not explain what it was chosen for; without it the generic effects explain "
+        "the data as well (BIC %1 without, %2 with, needed %3 lower)"),
     QT_TRANSLATE_NOOP("metrofit::core", "data row"),
     QT_TRANSLATE_NOOP("metrofit::core", "dimension"),
     QT_TRANSLATE_NOOP("metrofit::core", "loop direction"),

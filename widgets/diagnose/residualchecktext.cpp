@@ -60,7 +60,8 @@ QString residualVariableWords(const std::string& against) {
   if (against == "time") return ResidualCheckText::tr("time", "in a sentence");
   if (against == "row") return ResidualCheckText::tr("the order of the rows in the file");
   if (against == "angle") return ResidualCheckText::tr("the path angle");
-  if (against == "direction") return ResidualCheckText::tr("the direction of the loop (counter-clockwise or clockwise)");
+  if (against == "direction")
+    return ResidualCheckText::tr("the direction of the loop (counter-clockwise or clockwise)");
   if (against == "reversal") return ResidualCheckText::tr("the number of samples since an axis reversed");
   if (against == "x" || against == "y" || against == "z")
     return ResidualCheckText::tr("the nominal %1 coordinate").arg(q(against));
@@ -70,7 +71,8 @@ QString residualVariableWords(const std::string& against) {
   if (against == "surface") return ResidualCheckText::tr("the surface");
   if (against == "nx" || against == "ny" || against == "nz")
     return ResidualCheckText::tr("the %1 component of the nominal normal").arg(q(against.substr(1)));
-  if (startsWith(against, "surface:", &rest)) return ResidualCheckText::tr("the position on surface %1").arg(q(rest));
+  if (startsWith(against, "surface:", &rest))
+    return ResidualCheckText::tr("the position on surface %1").arg(q(rest));
   if (startsWith(against, "dimension:", &rest))
     return ResidualCheckText::tr("dimension %1", "in a sentence").arg(q(rest));
   return ResidualCheckText::tr("column %1").arg(q(against));
@@ -99,8 +101,9 @@ QString formWords(diagnose::DependenceForm form, const std::vector<double>& knot
     case diagnose::DependenceForm::Smooth:
       return ResidualCheckText::tr("a smooth curve");
     case diagnose::DependenceForm::Step:
-      return knots.empty() ? ResidualCheckText::tr("a step")
-                           : ResidualCheckText::tr("a step at %1").arg(localNumber(knots.front(), 4, 'g', locale));
+      return knots.empty()
+                 ? ResidualCheckText::tr("a step")
+                 : ResidualCheckText::tr("a step at %1").arg(localNumber(knots.front(), 4, 'g', locale));
     case diagnose::DependenceForm::Periodic:
       return ResidualCheckText::tr("a periodic pattern");
     case diagnose::DependenceForm::Level:
@@ -113,13 +116,14 @@ QString formWords(diagnose::DependenceForm form, const std::vector<double>& knot
 
 QString dependenceFormWords(const diagnose::StructureItem& item, const QLocale& locale) {
   // The change point is in the shape of a step (StructureItem::shape), when core filled it.
-  return formWords(item.form, item.form == diagnose::DependenceForm::Step ? item.shape.knots : std::vector<double>{},
+  return formWords(item.form,
+                   item.form == diagnose::DependenceForm::Step ? item.shape.knots : std::vector<double>{},
                    locale);
 }
 
 QString dependenceFormWords(const diagnose::GenericForm& form, const QLocale& locale) {
-  return formWords(form.form, form.form == diagnose::DependenceForm::Step ? form.knots : std::vector<double>{},
-                   locale);
+  return formWords(form.form,
+                   form.form == diagnose::DependenceForm::Step ? form.knots : std::vector<double>{}, locale);
 }
 
 QString formatPValue(double p, const QLocale& locale) {
@@ -149,8 +153,9 @@ QString residualCheckVerdict(const diagnose::ResidualCheck& c) {
     return ResidualCheckText::tr("not white: still depends on %1").arg(list);
   }
   if (!c.summaryParts.empty() || !c.summary.empty()) return coreText(c.summaryParts, c.summary);
-  return c.white ? ResidualCheckText::tr("white: no test finds structure")
-                 : ResidualCheckText::tr("not white: the tests find structure that no single variable explains");
+  return c.white
+             ? ResidualCheckText::tr("white: no test finds structure")
+             : ResidualCheckText::tr("not white: the tests find structure that no single variable explains");
 }
 
 QString outlierWhere(const diagnose::Outlier& o, const QLocale& locale) {
@@ -159,7 +164,9 @@ QString outlierWhere(const diagnose::Outlier& o, const QLocale& locale) {
   if (o.part) parts << ResidualCheckText::tr("part %1").arg(q(*o.part));
   if (o.dimension) parts << ResidualCheckText::tr("dimension %1").arg(q(*o.dimension));
   if (o.id) parts << ResidualCheckText::tr("point %1").arg(q(*o.id));
-  if (parts.isEmpty()) parts << ResidualCheckText::tr("observation %1").arg(locale.toString(static_cast<qulonglong>(o.unit + 1)));
+  if (parts.isEmpty())
+    parts
+        << ResidualCheckText::tr("observation %1").arg(locale.toString(static_cast<qulonglong>(o.unit + 1)));
   return parts.join(QStringLiteral(", "));
 }
 
@@ -170,15 +177,17 @@ QStringList residualCheckSentences(const diagnose::Diagnosis& d, const QLocale& 
   const QString u = unitText(d.units);
   const QString level = locale.toString(100.0 * c.level, 'g', 3);
   const int tests = static_cast<int>(c.tests.size());
-  const auto rejectedLjungBox = std::find_if(c.tests.begin(), c.tests.end(), [](const diagnose::ResidualTest& t) {
-    return t.rejected && t.name == "ljung_box";
-  });
+  const auto rejectedLjungBox =
+      std::find_if(c.tests.begin(), c.tests.end(),
+                   [](const diagnose::ResidualTest& t) { return t.rejected && t.name == "ljung_box"; });
 
   if (c.white) {
-    out << ResidualCheckText::tr("What is left unexplained: nothing that the tests can find. None of the %n test(s) of the final "
-                 "residual (against every variable the data offer, and of its serial correlation) finds a "
-                 "dependence at the %1 % family-wise level: the residual looks like noise.",
-                 nullptr, tests)
+    out << ResidualCheckText::tr(
+               "What is left unexplained: nothing that the tests can find. None of the %n test(s) of the "
+               "final "
+               "residual (against every variable the data offer, and of its serial correlation) finds a "
+               "dependence at the %1 % family-wise level: the residual looks like noise.",
+               nullptr, tests)
                .arg(level);
   } else if (!c.structure.empty()) {
     QStringList items;
@@ -194,28 +203,33 @@ QStringList residualCheckSentences(const diagnose::Diagnosis& d, const QLocale& 
       const QString last = items.takeLast();
       list = ResidualCheckText::tr("%1 and %2").arg(items.join(QStringLiteral("; ")), last);
     }
-    out << ResidualCheckText::tr("What is left unexplained: the final residual still depends on %1. No effect of the catalogue "
-                 "explains this (tests at the %2 % family-wise level).")
+    out << ResidualCheckText::tr(
+               "What is left unexplained: the final residual still depends on %1. No effect of the catalogue "
+               "explains this (tests at the %2 % family-wise level).")
                .arg(list, level);
   } else if (rejectedLjungBox != c.tests.end()) {
-    out << ResidualCheckText::tr("What is left unexplained: the final residual is serially correlated in the order of %1 "
-                 "(Ljung-Box test, p = %2), but no single variable of the data explains it.")
-               .arg(residualVariableWords(rejectedLjungBox->against), formatPValue(rejectedLjungBox->p, locale));
+    out << ResidualCheckText::tr(
+               "What is left unexplained: the final residual is serially correlated in the order of %1 "
+               "(Ljung-Box test, p = %2), but no single variable of the data explains it.")
+               .arg(residualVariableWords(rejectedLjungBox->against),
+                    formatPValue(rejectedLjungBox->p, locale));
   } else {
-    out << ResidualCheckText::tr("What is left unexplained: the tests find structure in the final residual at the %1 % "
-                 "family-wise level that no single variable explains.")
+    out << ResidualCheckText::tr(
+               "What is left unexplained: the tests find structure in the final residual at the %1 % "
+               "family-wise level that no single variable explains.")
                .arg(level);
   }
 
   QStringList generic;
   for (const diagnose::Candidate* e : d.accepted()) {
     if (!e->generic) continue;
-    generic << ResidualCheckText::tr("%1 in %2").arg(dependenceFormWords(*e->generic, locale),
-                                     residualVariableWords(e->generic->against));
+    generic << ResidualCheckText::tr("%1 in %2")
+                   .arg(dependenceFormWords(*e->generic, locale), residualVariableWords(e->generic->against));
   }
   if (!generic.isEmpty()) {
-    out << ResidualCheckText::tr("No effect of the catalogue explains part of this structure, so the model was given a generic "
-                 "term for it instead of a wrong name: %1.")
+    out << ResidualCheckText::tr(
+               "No effect of the catalogue explains part of this structure, so the model was given a generic "
+               "term for it instead of a wrong name: %1.")
                .arg(generic.join(QStringLiteral("; ")));
   }
 
@@ -223,7 +237,8 @@ QStringList residualCheckSentences(const diagnose::Diagnosis& d, const QLocale& 
   const QString threshold = locale.toString(c.outlierThreshold, 'g', 3);
   if (n == 0) {
     out << (c.outlierThreshold > 0.0
-                ? ResidualCheckText::tr("No measurement was excluded as a gross error (robust z above %1).").arg(threshold)
+                ? ResidualCheckText::tr("No measurement was excluded as a gross error (robust z above %1).")
+                      .arg(threshold)
                 : ResidualCheckText::tr("No measurement was excluded as a gross error."));
   } else {
     QStringList items;
@@ -235,7 +250,8 @@ QStringList residualCheckSentences(const diagnose::Diagnosis& d, const QLocale& 
     }
     QString list = items.join(QStringLiteral("; "));
     if (n > maxOutliers) list += ResidualCheckText::tr(" and %n more", nullptr, n - maxOutliers);
-    out << ResidualCheckText::tr("%n measurement(s) excluded from the fit as gross errors (robust z above %1): %2.", nullptr, n)
+    out << ResidualCheckText::tr(
+               "%n measurement(s) excluded from the fit as gross errors (robust z above %1): %2.", nullptr, n)
                .arg(threshold, list);
   }
   return out;

@@ -90,12 +90,15 @@ Series seriesOf(const diagnose::ResidualCheck::Plot& plot) {
   for (std::size_t i = 0; i < plot.x.size(); ++i) {
     const double x = plot.x[i];
     if (!std::isfinite(x)) continue;
-    if (i < plot.residual.size() && std::isfinite(plot.residual[i])) s.residual.emplace_back(x, plot.residual[i]);
+    if (i < plot.residual.size() && std::isfinite(plot.residual[i]))
+      s.residual.emplace_back(x, plot.residual[i]);
     if (i < plot.fit.size() && std::isfinite(plot.fit[i])) fits[i % components].emplace_back(x, plot.fit[i]);
   }
   for (auto& fit : fits) {
-    std::stable_sort(fit.begin(), fit.end(), [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
-    fit.erase(std::unique(fit.begin(), fit.end(), [](const QPointF& a, const QPointF& b) { return a.x() == b.x(); }),
+    std::stable_sort(fit.begin(), fit.end(),
+                     [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
+    fit.erase(std::unique(fit.begin(), fit.end(),
+                          [](const QPointF& a, const QPointF& b) { return a.x() == b.x(); }),
               fit.end());
     s.fits.push_back(thinned(std::move(fit)));
   }
@@ -110,8 +113,9 @@ Series seriesOf(const diagnose::ResidualCheck::Plot& plot) {
 
 QString chartTitleOf(const diagnose::ResidualCheck& c) {
   if (!c.plot) return {};
-  const auto it = std::find_if(c.structure.begin(), c.structure.end(),
-                               [&](const diagnose::StructureItem& s) { return s.against == c.plot->against; });
+  const auto it = std::find_if(c.structure.begin(), c.structure.end(), [&](const diagnose::StructureItem& s) {
+    return s.against == c.plot->against;
+  });
   const QString variable = residualVariableName(c.plot->against);
   if (it == c.structure.end()) return ResidualCheckView::tr("Final residual against %1").arg(variable);
   return ResidualCheckView::tr("Final residual against %1 with the generic fit (%2)")
@@ -119,7 +123,8 @@ QString chartTitleOf(const diagnose::ResidualCheck& c) {
 }
 
 QString yTitle(const QString& units) {
-  return units.isEmpty() ? ResidualCheckView::tr("residual") : ResidualCheckView::tr("residual (%1)").arg(units);
+  return units.isEmpty() ? ResidualCheckView::tr("residual")
+                         : ResidualCheckView::tr("residual (%1)").arg(units);
 }
 
 QString xTitle(const diagnose::ResidualCheck::Plot& plot) {
@@ -173,8 +178,8 @@ QTableWidget* makeTable(QWidget* parent, const QString& objectName, const QStrin
 /// room to the tests table.
 void fitHeight(QTableWidget* t, int maxRows) {
   const int rows = std::clamp(t->rowCount(), 1, maxRows);
-  const int h = t->horizontalHeader()->sizeHint().height() + rows * t->verticalHeader()->defaultSectionSize() +
-                2 * t->frameWidth() + 2;
+  const int h = t->horizontalHeader()->sizeHint().height() +
+                rows * t->verticalHeader()->defaultSectionSize() + 2 * t->frameWidth() + 2;
   t->setMaximumHeight(h);
 }
 
@@ -249,7 +254,8 @@ void paintResidualCheck(QPainter& p, const QRectF& rect, const diagnose::Residua
       const double x = map(i, yp.lo).x();
       const double w = std::max(20.0, area.width() / count * every);
       p.drawText(QRectF(x - w / 2, area.bottom() + 2.0, w, line), Qt::AlignHCenter | Qt::AlignTop,
-                 fm.elidedText(QString::fromStdString(plot.categories[static_cast<std::size_t>(i)]), Qt::ElideRight, w));
+                 fm.elidedText(QString::fromStdString(plot.categories[static_cast<std::size_t>(i)]),
+                               Qt::ElideRight, w));
     }
   } else {
     const double xStep = niceStep(xp.hi - xp.lo, 6);
@@ -265,15 +271,17 @@ void paintResidualCheck(QPainter& p, const QRectF& rect, const diagnose::Residua
   p.save();
   p.translate(rect.left() + line * 0.7, area.center().y());
   p.rotate(-90.0);
-  p.drawText(QRectF(-area.height() / 2, -line * 0.7, area.height(), line * 1.4), Qt::AlignCenter, yTitle(units));
+  p.drawText(QRectF(-area.height() / 2, -line * 0.7, area.height(), line * 1.4), Qt::AlignCenter,
+             yTitle(units));
   p.restore();
 
   // Data: zero line, residual points, fit line, outlier triangles.
   p.setClipRect(area);
   p.setPen(QPen(Qt::black, 0, Qt::DashLine));
   p.drawLine(map(xp.lo, 0.0), map(xp.hi, 0.0));
-  const double r =
-      std::max(0.8, std::min(2.5, area.width() / std::max(1.0, std::sqrt(static_cast<double>(s.residual.size())) * 12.0)));
+  const double r = std::max(
+      0.8,
+      std::min(2.5, area.width() / std::max(1.0, std::sqrt(static_cast<double>(s.residual.size())) * 12.0)));
   p.setPen(Qt::NoPen);
   p.setBrush(residualColour());
   for (const QPointF& pt : s.residual) p.drawEllipse(map(pt.x(), pt.y()), r, r);
@@ -305,9 +313,10 @@ void paintResidualCheck(QPainter& p, const QRectF& rect, const diagnose::Residua
   QList<QPair<int, QString>> entries = {{-1, ResidualCheckView::tr("residual")}};
   for (std::size_t k = 0; k < s.fits.size(); ++k) {
     if (s.fits[k].size() < 2) continue;
-    entries.append({static_cast<int>(k), s.fits.size() == 1 ? ResidualCheckView::tr("generic fit")
-                                                            : ResidualCheckView::tr("generic fit, %1")
-                                                                  .arg(componentName(static_cast<int>(k)))});
+    entries.append({static_cast<int>(k),
+                    s.fits.size() == 1
+                        ? ResidualCheckView::tr("generic fit")
+                        : ResidualCheckView::tr("generic fit, %1").arg(componentName(static_cast<int>(k)))});
   }
   if (!s.outliers.empty()) entries.append({-2, ResidualCheckView::tr("excluded outliers")});
   double w = 0.0;
@@ -369,19 +378,23 @@ ResidualCheckView::ResidualCheckView(QWidget* parent)
 
   structure_ = makeTable(this, QStringLiteral("residualCheckStructure"),
                          {tr("Variable"), tr("Form"), tr("Share (%)"), tr("p-value")}, 0);
-  structure_->setToolTip(tr("Per variable with a rejected test its strongest form; share = part of the "
-                            "residual variance the form explains"));
-  outliers_ = makeTable(this, QStringLiteral("residualCheckOutliers"),
-                        {tr("Row"), tr("Part"), tr("Dimension"), tr("Id"), tr("Residual"), tr("Robust z")}, 2);
-  outliers_->setToolTip(tr("Observations whose robust z (|r - median| / (1.4826 MAD)) is above the "
-                           "threshold: gross errors, excluded and the model refitted without them"));
+  structure_->setToolTip(
+      tr("Per variable with a rejected test its strongest form; share = part of the "
+         "residual variance the form explains"));
+  outliers_ =
+      makeTable(this, QStringLiteral("residualCheckOutliers"),
+                {tr("Row"), tr("Part"), tr("Dimension"), tr("Id"), tr("Residual"), tr("Robust z")}, 2);
+  outliers_->setToolTip(
+      tr("Observations whose robust z (|r - median| / (1.4826 MAD)) is above the "
+         "threshold: gross errors, excluded and the model refitted without them"));
   tests_ = makeTable(this, QStringLiteral("residualCheckTests"),
-                     {tr("Test"), tr("Order / variable"), tr("Form"), tr("Statistic"), tr("df"), tr("p-value"),
-                      tr("Rejected")},
+                     {tr("Test"), tr("Order / variable"), tr("Form"), tr("Statistic"), tr("df"),
+                      tr("p-value"), tr("Rejected")},
                      1);
-  tests_->setToolTip(tr("Ljung-Box: serial correlation of the residual in that order (chi-square); F test: "
-                        "the residual against the variable in that form (nested models). Rejected: by Holm's "
-                        "procedure at the family-wise level"));
+  tests_->setToolTip(
+      tr("Ljung-Box: serial correlation of the residual in that order (chi-square); F test: "
+         "the residual against the variable in that form (nested models). Rejected: by Holm's "
+         "procedure at the family-wise level"));
   for (QLabel* l : {structureLabel_, outlierLabel_, testLabel_}) l->setWordWrap(true);
 
   charts_->view = new QChartView(this);
@@ -500,15 +513,14 @@ void ResidualCheckView::setDiagnosis(const diagnose::Diagnosis& d) {
     structure_->item(r, 3)->setData(Qt::UserRole, s.p);
   }
 
-  outlierLabel_->setText(c.outliers.empty()
-                             ? (c.outlierThreshold > 0.0
-                                    ? tr("Outliers: none (robust z threshold %1).")
-                                          .arg(locale.toString(c.outlierThreshold, 'g', 3))
-                                    : tr("Outliers: none."))
-                             : tr("Outliers excluded from the fit (robust z above %1):")
-                                   .arg(locale.toString(c.outlierThreshold, 'g', 3)));
-  outliers_->setHorizontalHeaderItem(4, new QTableWidgetItem(u.isEmpty() ? tr("Residual")
-                                                                         : tr("Residual (%1)").arg(u)));
+  outlierLabel_->setText(c.outliers.empty() ? (c.outlierThreshold > 0.0
+                                                   ? tr("Outliers: none (robust z threshold %1).")
+                                                         .arg(locale.toString(c.outlierThreshold, 'g', 3))
+                                                   : tr("Outliers: none."))
+                                            : tr("Outliers excluded from the fit (robust z above %1):")
+                                                  .arg(locale.toString(c.outlierThreshold, 'g', 3)));
+  outliers_->setHorizontalHeaderItem(
+      4, new QTableWidgetItem(u.isEmpty() ? tr("Residual") : tr("Residual (%1)").arg(u)));
   outliers_->setRowCount(static_cast<int>(c.outliers.size()));
   const QString none = QStringLiteral("–");
   for (int r = 0; r < outliers_->rowCount(); ++r) {
@@ -517,7 +529,8 @@ void ResidualCheckView::setDiagnosis(const diagnose::Diagnosis& d) {
     setCell(outliers_, r, 1, o.part ? QString::fromStdString(*o.part) : none);
     setCell(outliers_, r, 2, o.dimension ? QString::fromStdString(*o.dimension) : none);
     setCell(outliers_, r, 3, o.id ? QString::fromStdString(*o.id) : none);
-    setCell(outliers_, r, 4, u.isEmpty() ? localNumber(o.residual, 4) : localNumber(o.residual, 4) + QLatin1Char(' ') + u,
+    setCell(outliers_, r, 4,
+            u.isEmpty() ? localNumber(o.residual, 4) : localNumber(o.residual, 4) + QLatin1Char(' ') + u,
             right);
     outliers_->item(r, 4)->setData(Qt::UserRole, o.residual);
     setCell(outliers_, r, 5, localNumber(o.robustZ, 3), right);
@@ -527,10 +540,11 @@ void ResidualCheckView::setDiagnosis(const diagnose::Diagnosis& d) {
   fitHeight(structure_, 6);
   fitHeight(outliers_, 5);
 
-  testLabel_->setText(tr("Tests of the final residual (%n test(s), %1 observations; rejected by Holm at the %2 % "
-                         "family-wise level):",
-                         nullptr, static_cast<int>(c.tests.size()))
-                          .arg(locale.toString(static_cast<qulonglong>(c.observations)), level));
+  testLabel_->setText(
+      tr("Tests of the final residual (%n test(s), %1 observations; rejected by Holm at the %2 % "
+         "family-wise level):",
+         nullptr, static_cast<int>(c.tests.size()))
+          .arg(locale.toString(static_cast<qulonglong>(c.observations)), level));
   tests_->setHorizontalHeaderItem(6, new QTableWidgetItem(tr("Rejected at %1 %").arg(level)));
   tests_->setRowCount(static_cast<int>(c.tests.size()));
   for (int r = 0; r < tests_->rowCount(); ++r) {
@@ -585,8 +599,9 @@ void ResidualCheckView::showChart(const diagnose::ResidualCheck& c, const QStrin
       dependenceFormName(c.structure.empty() ? std::string() : diagnose::formName(c.structure.front().form));
   for (std::size_t k = 0; k < s.fits.size(); ++k) {
     auto* fit = new QLineSeries;
-    fit->setName(s.fits.size() == 1 ? tr("generic fit (%1)").arg(form)
-                                    : tr("generic fit (%1), %2").arg(form, componentName(static_cast<int>(k))));
+    fit->setName(s.fits.size() == 1
+                     ? tr("generic fit (%1)").arg(form)
+                     : tr("generic fit (%1), %2").arg(form, componentName(static_cast<int>(k))));
     fit->setPen(QPen(fitColour(static_cast<int>(k)), 2.5));
     charts_->fits.append(fit);
   }

@@ -10,7 +10,8 @@
 //   * a chart of the residual against the variable of the strongest structure (ResidualCheck::Plot):
 //     the residual as points, the generic fit as a line through the distinct x values in order
 //     (one line per coordinate of a vector residual: kinematic x / y, matching x / y / z), the
-//     excluded outliers as red triangles. Without a plot (a white residual) the chart is hidden. Categories (parts, surfaces) are labelled on the x axis.
+//     excluded outliers as red triangles. Without a plot (a white residual) the chart is hidden. Categories
+//     (parts, surfaces) are labelled on the x axis.
 // Numbers in the user's locale; "um" shown as "µm". Qt Charts stays inside the .cpp file.
 //
 // paintResidualCheck draws the same chart with QPainter for the report.

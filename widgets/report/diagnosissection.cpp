@@ -17,8 +17,8 @@
 
 #include "core/io/csv.h"
 #include "widgets/diagnose/diagnosisstudy.h"
-#include "widgets/diagnose/residualcheckview.h"
 #include "widgets/diagnose/residualchecktext.h"
+#include "widgets/diagnose/residualcheckview.h"
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
@@ -226,14 +226,14 @@ void writeResidualCheck(ReportPainter& out, const diagnose::Diagnosis& d) {
     out.paragraph(sentences[i], i == 0 ? ReportPainter::Font::Body : ReportPainter::Font::Small);
   if (!c.plot) return;
   const QString units = d.units == "um" ? QStringLiteral("µm") : QString::fromStdString(d.units);
-  const auto strongest = std::find_if(c.structure.begin(), c.structure.end(),
-                                      [&](const diagnose::StructureItem& s) { return s.against == c.plot->against; });
+  const auto strongest =
+      std::find_if(c.structure.begin(), c.structure.end(),
+                   [&](const diagnose::StructureItem& s) { return s.against == c.plot->against; });
   const QString variable = residualVariableName(c.plot->against);
-  const QString title =
-      strongest == c.structure.end()
-          ? ReportText::tr("Final residual against %1").arg(variable)
-          : ReportText::tr("Final residual against %1 with the generic fit (%2)")
-                .arg(variable, dependenceFormName(strongest->form));
+  const QString title = strongest == c.structure.end()
+                            ? ReportText::tr("Final residual against %1").arg(variable)
+                            : ReportText::tr("Final residual against %1 with the generic fit (%2)")
+                                  .arg(variable, dependenceFormName(strongest->form));
   out.skip(out.mm(2.0));
   const QRectF box = out.reserve(out.mm(70.0));
   const diagnose::ResidualCheck::Plot& plot = *c.plot;

@@ -270,7 +270,8 @@ TEST(ThermalHonestHeldOut, DemoLogScrambledHeldOutTargetChangesOnlyTheHeldOutFig
   ThermalDiagnosisOptions o;
   o.target = "disp_z_um";
   o.inputs = {"T2", "T4", "T_amb"};
-  const ThermalLog log = readThermalLog((test::sourceDir() / "resources/demo/data/diagnose_thermal.csv").string());
+  const ThermalLog log =
+      readThermalLog((test::sourceDir() / "resources/demo/data/diagnose_thermal.csv").string());
   EXPECT_EQ(acceptedNames(diagnoseThermal(log, o)), std::vector<std::string>{"lag:T2"});
   expectScrambleChangesOnlyTheHeldOutFigures(log, o);
 }
@@ -297,7 +298,8 @@ TEST(ThermalHonestHeldOut, RealCaiviacScrambledChangesOnlyTheHeldOutFigures) {
   // The CAIVIAC spindle log (11 115 rows, resources/demo/data/SOURCE-CAIVIAC.md), ch1 and ch3 with
   // the two hottest sensors declared (issue 15: scrambling the held-out target changed the accepted
   // effects of both before).
-  const ThermalLog log = readThermalLog((test::sourceDir() / "resources/demo/data/thermal_caiviac.csv").string());
+  const ThermalLog log =
+      readThermalLog((test::sourceDir() / "resources/demo/data/thermal_caiviac.csv").string());
   for (const char* target : {"ch1_um", "ch3_um"}) {
     SCOPED_TRACE(target);
     ThermalDiagnosisOptions o;
@@ -335,7 +337,8 @@ TEST(ThermalDeclaredGrey, GreyFamilyDataStayCleanWhileTheStaticModelFindsTheLag)
       EXPECT_TRUE(d.accepted().empty()) << toString(m) << " seed " << seed << ": " << toJson(d).dump(1);
       EXPECT_NEAR(d.baseline.rmse, 0.25, 0.05) << toString(m);
       ASSERT_FALSE(d.notes.empty());
-      EXPECT_NE(d.notes[0].find(m == ThermalDeclaredModel::Gmc ? "GMC(1,N)" : "GNNMCI(1,N)"), std::string::npos);
+      EXPECT_NE(d.notes[0].find(m == ThermalDeclaredModel::Gmc ? "GMC(1,N)" : "GNNMCI(1,N)"),
+                std::string::npos);
       for (const Candidate& c : d.effects) EXPECT_NE(c.name, "lag") << "a grey model is that lag itself";
     }
     const Diagnosis lin = runDeclared(so, ThermalDeclaredModel::Linear, 0.5);
@@ -408,7 +411,8 @@ Diagnosis runClean(const ThermalLog& log) {
 }
 
 TEST(ThermalOpenWorld, DemoResidualIsWhiteAfterTheLag) {
-  const Diagnosis d = runClean(readThermalLog((test::sourceDir() / "resources/demo/data/diagnose_thermal.csv").string()));
+  const Diagnosis d =
+      runClean(readThermalLog((test::sourceDir() / "resources/demo/data/diagnose_thermal.csv").string()));
   ASSERT_TRUE(d.residualCheck.has_value());
   EXPECT_TRUE(d.residualCheck->white) << d.residualCheck->summary;
   EXPECT_GT(d.residualCheck->tests.size(), 10u);  // Ljung-Box in time, F tests against every column
@@ -419,7 +423,8 @@ TEST(ThermalOpenWorld, DemoResidualIsWhiteAfterTheLag) {
 TEST(ThermalOpenWorld, AGrossErrorIsListedWithItsRowAndExcluded) {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     // One gross error of 10 um (40 noise sigma) in data row 101 (a fit row).
-    const ThermalLog log = cleanLogWith(seed, [](std::size_t k, double, const ThermalLog&) { return k == 100 ? 10.0 : 0.0; });
+    const ThermalLog log =
+        cleanLogWith(seed, [](std::size_t k, double, const ThermalLog&) { return k == 100 ? 10.0 : 0.0; });
     const Diagnosis d = runClean(log);
     ASSERT_TRUE(d.residualCheck.has_value());
     ASSERT_EQ(d.residualCheck->outliers.size(), 1u) << seed;
@@ -438,7 +443,8 @@ TEST(ThermalOpenWorld, AStepOfTheTargetIsNotGivenACatalogueName) {
   // on time (a generic effect of time, or the structure in the final check).
   int generic = 0;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    const ThermalLog log = cleanLogWith(seed, [](std::size_t, double t, const ThermalLog&) { return t >= 90.0 ? 1.5 : 0.0; });
+    const ThermalLog log =
+        cleanLogWith(seed, [](std::size_t, double t, const ThermalLog&) { return t >= 90.0 ? 1.5 : 0.0; });
     const Diagnosis d = runClean(log);
     for (const Candidate* c : d.accepted()) {
       EXPECT_TRUE(c->name.starts_with("unexplained:")) << seed << ": " << c->name;
