@@ -116,6 +116,20 @@ Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std
   return std::move(best->diagnosis);
 }
 
+void attachOutliers(Diagnosis& d, std::vector<Outlier> outliers, double threshold,
+                    const std::function<Phrase(const Outlier&)>& describe) {
+  if (!outliers.empty()) {
+    Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above the outlier threshold):",
+                           {PhraseArg::integer(static_cast<long long>(outliers.size()))})};
+    for (const Outlier& o : outliers) note.push_back(describe(o));
+    d.addNote(std::move(note));
+  }
+  if (d.residualCheck) {
+    d.residualCheck->outliers = std::move(outliers);
+    d.residualCheck->outlierThreshold = threshold;
+  }
+}
+
 namespace {
 
 nlohmann::json summaryJson(const ErrorSummary& s) {

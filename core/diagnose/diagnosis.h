@@ -164,6 +164,12 @@ inline constexpr const char* kEveryNamedEffect = "*";
 Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std::string>& excluded)>& run,
                                   double margin);
 
+/// Puts the outliers excluded before the fit into d.residualCheck (with the threshold used) and,
+/// when there are any, the note "<k> gross errors excluded before the fit ...:" followed by
+/// describe(outlier) for each.
+void attachOutliers(Diagnosis& d, std::vector<Outlier> outliers, double threshold,
+                    const std::function<Phrase(const Outlier&)>& describe);
+
 /// The JSON of CONTRACT.md: {"domain", "baseline": {"rmse","max_abs"[,"heldout_rmse"]},
 /// "effects": [{"name","accepted","parameters":{name: value},"rmse_before","rmse_after",
 /// "evidence", ...}], "final": {...}}. Additive keys: "units", "uncertainty" per effect

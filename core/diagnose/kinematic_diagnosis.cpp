@@ -370,6 +370,15 @@ bool KinematicDiagnosisOptions::isValid(std::string* why) const {
 
 namespace {
 
+Data makeData(const MeasuredPath& path, const KinematicDiagnosisOptions& o) {
+  Data d;
+  d.path = &path;
+  d.n = path.size();
+  d.motion = pathMotion(path.command);
+  d.speed = o.feedMmPerMin / 60.0;
+  return d;
+}
+
 /// Radial unit vectors about the commands' centroid (the direction a ballbar measures).
 std::vector<Eigen::Vector2d> radialDirections(const Data& d) {
   Eigen::Vector2d c = Eigen::Vector2d::Zero();
@@ -474,11 +483,7 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
                      const KinematicDiagnosisOptions& o, const std::set<std::string>& excluded,
                      Observer* observer) {
   const IdentifyResult base = identifyActuatorErrors(path);  // checks the path (InputError)
-  Data d;
-  d.path = &path;
-  d.n = path.size();
-  d.motion = pathMotion(path.command);
-  d.speed = o.feedMmPerMin / 60.0;
+  const Data d = makeData(path, o);
 
   Diagnosis dg;
   dg.domain = "kinematic";
@@ -720,11 +725,7 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
   std::iota(all.begin(), all.end(), 0);
   ResidualCheckInput in;
   {
-    Data d;
-    d.path = &path;
-    d.n = path.size();
-    d.motion = pathMotion(path.command);
-    d.speed = o.feedMmPerMin / 60.0;
+    const Data d = makeData(path, o);
     Params q0;
     q0.ox = base.errors.originMm.x();
     q0.oy = base.errors.originMm.y();
@@ -760,17 +761,9 @@ Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOp
   Diagnosis dg = keepNamedOnlyWhenNeeded(
       [&](const std::set<std::string>& ex) { return runKinematic(kept, orig, o, ex, observer); },
       o.bicMargin);
-  if (dg.residualCheck) {
-    dg.residualCheck->outliers = outliers;
-    dg.residualCheck->outlierThreshold = threshold;
-  }
-  if (!outliers.empty()) {
-    Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above the outlier threshold):",
-                           {A::integer(static_cast<long long>(outliers.size()))})};
-    for (const Outlier& x : outliers)
-      note.push_back(Phrase(" row %1 (%2 um)", {A::integer(x.row.value_or(0)), um(x.residual)}));
-    dg.addNote(std::move(note));
-  }
+  attachOutliers(dg, std::move(outliers), threshold, [](const Outlier& x) {
+    return Phrase(" row %1 (%2 um)", {A::integer(x.row.value_or(0)), um(x.residual)});
+  });
   return dg;
 }
 

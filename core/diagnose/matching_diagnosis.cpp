@@ -54,6 +54,27 @@ struct Problem {
   std::size_t observations() const { return points() * static_cast<std::size_t>(perPoint); }
 };
 
+/// The problem of a point set: observation mode, observations per point, rigid parameters, nominal
+/// centroid, surfaces in order of appearance.
+Problem makeProblem(const ProbePointSet& set) {
+  Problem pb;
+  pb.set = &set;
+  pb.mode = set.hasNormals ? Mode::Normal : (set.planar ? Mode::Planar : Mode::Full);
+  pb.perPoint = pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3);
+  pb.rigid = pb.mode == Mode::Planar ? 3 : 6;
+  for (const ProbePoint& p : set.points) pb.qMean += p.nominal;
+  pb.qMean /= static_cast<double>(set.points.size());
+  for (const ProbePoint& p : set.points) {
+    auto it = std::find(pb.surfaces.begin(), pb.surfaces.end(), p.surface);
+    if (it == pb.surfaces.end()) {
+      pb.surfaces.push_back(p.surface);
+      it = pb.surfaces.end() - 1;
+    }
+    pb.surfaceOf.push_back(static_cast<int>(it - pb.surfaces.begin()));
+  }
+  return pb;
+}
+
 /// Displacement columns of effect `e` at point i (part frame), one per parameter.
 void effectColumns(const Problem& pb, const EffectDef& e, std::size_t i, std::vector<Eigen::Vector3d>& out) {
   const ProbePoint& p = pb.set->points[i];
@@ -468,21 +489,7 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
   const matching::DofLocks locks = matching::effectiveLocks(set, {});
   matching::requireDeterminable(set, locks, false, matching::FitKind::LeastSquares, "matching diagnosis");
 
-  Problem pb;
-  pb.set = &set;
-  pb.mode = set.hasNormals ? Mode::Normal : (set.planar ? Mode::Planar : Mode::Full);
-  pb.perPoint = pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3);
-  pb.rigid = pb.mode == Mode::Planar ? 3 : 6;
-  for (const ProbePoint& p : set.points) pb.qMean += p.nominal;
-  pb.qMean /= static_cast<double>(set.points.size());
-  for (const ProbePoint& p : set.points) {
-    auto it = std::find(pb.surfaces.begin(), pb.surfaces.end(), p.surface);
-    if (it == pb.surfaces.end()) {
-      pb.surfaces.push_back(p.surface);
-      it = pb.surfaces.end() - 1;
-    }
-    pb.surfaceOf.push_back(static_cast<int>(it - pb.surfaces.begin()));
-  }
+  const Problem pb = makeProblem(set);
   const std::size_t nObs = pb.observations(), nPts = pb.points();
 
   std::vector<EffectDef> defs;
@@ -675,13 +682,7 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
   matching::requireDeterminable(set, locks, false, matching::FitKind::LeastSquares, "matching diagnosis");
   // Gross errors (CONTRACT.md `outliers`): found on the rigid fit's residual (robust z per
   // coordinate, see residual_check.h), the points excluded and the loop run without them.
-  Problem pb;
-  pb.set = &set;
-  pb.mode = set.hasNormals ? Mode::Normal : (set.planar ? Mode::Planar : Mode::Full);
-  pb.perPoint = pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3);
-  pb.rigid = pb.mode == Mode::Planar ? 3 : 6;
-  for (const ProbePoint& p : set.points) pb.qMean += p.nominal;
-  pb.qMean /= static_cast<double>(set.points.size());
+  const Problem pb = makeProblem(set);
   const FitState declared = declaredFit(set, pb, options);
   std::vector<std::size_t> all(set.points.size());
   std::iota(all.begin(), all.end(), 0);
@@ -718,19 +719,10 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
   Diagnosis result = keepNamedOnlyWhenNeeded(
       [&](const std::set<std::string>& ex) { return runMatching(kept, orig, options, ex, observer); },
       options.acceptance.bicThreshold);
-  if (result.residualCheck) {
-    result.residualCheck->outliers = outliers;
-    result.residualCheck->outlierThreshold = threshold;
-  }
-  if (!outliers.empty()) {
-    Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above the outlier threshold):",
-                           {A::integer(static_cast<long long>(outliers.size()))})};
-    for (const Outlier& o : outliers)
-      note.push_back(
-          Phrase(" point %1 (row %2, %3 mm)",
-                 {A::name(o.id.value_or("")), A::integer(o.row.value_or(0)), A::number(o.residual, 3)}));
-    result.addNote(std::move(note));
-  }
+  attachOutliers(result, std::move(outliers), threshold, [](const Outlier& o) {
+    return Phrase(" point %1 (row %2, %3 mm)",
+                  {A::name(o.id.value_or("")), A::integer(o.row.value_or(0)), A::number(o.residual, 3)});
+  });
   return result;
 }
 

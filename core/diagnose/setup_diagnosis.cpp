@@ -536,19 +536,11 @@ Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& me
   }
   auto [result, orig] = runWithout();
   (void)orig;
-  if (result.residualCheck) {
-    result.residualCheck->outliers = outliers;
-    result.residualCheck->outlierThreshold = threshold;
-  }
-  if (!outliers.empty()) {
-    Phrases note = {Phrase("%1 gross errors excluded before the fit (robust z above the outlier threshold):",
-                           {A::integer(static_cast<long long>(outliers.size()))})};
-    for (const Outlier& o : outliers)
-      note.push_back(Phrase(" row %1 (part %2, %3, %4 mm)",
-                            {A::integer(o.row.value_or(0)), A::name(o.part.value_or("")),
-                             A::name(o.dimension.value_or("")), A::number(o.residual, 3)}));
-    result.addNote(std::move(note));
-  }
+  attachOutliers(result, std::move(outliers), threshold, [](const Outlier& o) {
+    return Phrase(" row %1 (part %2, %3, %4 mm)",
+                  {A::integer(o.row.value_or(0)), A::name(o.part.value_or("")),
+                   A::name(o.dimension.value_or("")), A::number(o.residual, 3)});
+  });
   return result;
 }
 
