@@ -6473,6 +6473,16 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>; not taken: the generic %1 validates better (%2 against %3%4)</source>
+        <translation>; nicht übernommen: der generische Effekt %1 validiert besser (%2 gegen %3%4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the residual still depends on %1 after it (%2, p = %3)</source>
+        <translation>; abgelehnt: das Residuum hängt danach noch von %1 ab (%2, p = %3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>; rejected: the fit rows do not determine tau (standard error above half of it)</source>
         <translation>; abgelehnt: die Anpassungszeilen bestimmen tau nicht (Standardfehler über der Hälfte)</translation>
     </message>

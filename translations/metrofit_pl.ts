@@ -6491,6 +6491,16 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>; not taken: the generic %1 validates better (%2 against %3%4)</source>
+        <translation>; nie przyjęty: efekt ogólny %1 lepiej się waliduje (%2 wobec %3%4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; rejected: the residual still depends on %1 after it (%2, p = %3)</source>
+        <translation>; odrzucony: reszta nadal zależy od %1 po jego dodaniu (%2, p = %3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>; rejected: the fit rows do not determine tau (standard error above half of it)</source>
         <translation>; odrzucony: wiersze dopasowania nie wyznaczają tau (błąd standardowy powyżej połowy)</translation>
     </message>

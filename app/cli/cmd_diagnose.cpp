@@ -111,6 +111,11 @@ int finishDiagnosis(const diagnose::Diagnosis& d, const std::string& data, const
     if (!d.residualCheck->outliers.empty())
       line += "; " + std::to_string(d.residualCheck->outliers.size()) + " outliers excluded";
   }
+  if (d.heldoutCheck) {
+    if (!d.heldoutCheck->white) line += "; held-out rows: " + d.heldoutCheck->summary;
+    if (!d.heldoutCheck->outliers.empty())
+      line += "; " + std::to_string(d.heldoutCheck->outliers.size()) + " held-out outliers excluded";
+  }
   std::fprintf(stderr, "%s\n", line.c_str());
   return 0;
 }

@@ -175,6 +175,7 @@ nlohmann::json toJson(const Diagnosis& d) {
                       {"final", summaryJson(d.final)}};
   if (!d.units.empty()) j["units"] = d.units;
   if (d.residualCheck) j["residual_check"] = toJson(*d.residualCheck);
+  if (d.heldoutCheck) j["heldout_check"] = toJson(*d.heldoutCheck);
   return j;
 }
 

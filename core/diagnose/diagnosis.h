@@ -104,6 +104,9 @@ struct Diagnosis {
   std::vector<Phrases> notesParts;  ///< notes[i] == english(notesParts[i])
   /// The final residual's check (CONTRACT.md `residual_check`); every domain fills it.
   std::optional<ResidualCheck> residualCheck;
+  /// Thermal: the same check of the held-out rows' residual (JSON `heldout_check`, additive). It is
+  /// reported only: the held-out rows chose nothing; its outliers are excluded from heldout_rmse.
+  std::optional<ResidualCheck> heldoutCheck;
 
   std::vector<const Candidate*> accepted() const;
   /// Appends a note (string and phrases).

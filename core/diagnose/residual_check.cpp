@@ -228,6 +228,10 @@ bool ResidualCheckOptions::isValid(std::string* why) const {
 
 Eigen::MatrixXd genericBasis(const GenericForm& f, const std::vector<double>& values) {
   Eigen::MatrixXd G = basisOnFinite(f, values);
+  if (f.withoutLinear && f.form == DependenceForm::Smooth && G.cols() > 1) {
+    Eigen::MatrixXd H = G.rightCols(G.cols() - 1);
+    G = std::move(H);
+  }
   if (f.subset && (f.form == DependenceForm::Linear || f.form == DependenceForm::Smooth ||
                    f.form == DependenceForm::Step)) {
     Eigen::MatrixXd H(G.rows(), G.cols() + 1);

@@ -89,6 +89,9 @@ struct GenericForm {
   /// linear, smooth and step forms then start with the subset's indicator column, so that the
   /// generic effect includes the subset's own constant (a bow of one surface with its offset).
   bool subset = false;
+  /// Smooth: the linear column is left out (the model has the variable as a column already, so the
+  /// generic effect is only its curvature; thermal, a declared input).
+  bool withoutLinear = false;
   /// Vector observations (ResidualCheckInput::components): the basis is repeated per component
   /// (observation i is component i % components), q columns each, zero on the other components.
   int components = 1;

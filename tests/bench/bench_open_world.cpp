@@ -34,6 +34,7 @@ namespace metrofit::bench {
 namespace {
 
 using diagnose::Diagnosis;
+using diagnose::ResidualCheck;
 
 struct Result {
   Diagnosis diagnosis;
@@ -117,15 +118,20 @@ Trial judge(const Result& r) {
       t.catalogueNames.push_back(c->name);
     }
   }
-  if (d.residualCheck) {
-    const auto& rc = *d.residualCheck;
+  // The check of the fitted rows and (thermal) the held-out rows' own check: a structure or a gross
+  // error either one reports counts.
+  std::vector<const ResidualCheck*> checks;
+  if (d.residualCheck) checks.push_back(&*d.residualCheck);
+  if (d.heldoutCheck) checks.push_back(&*d.heldoutCheck);
+  for (const ResidualCheck* check : checks) {
+    const auto& rc = *check;
+    t.white = t.hasCheck ? t.white && rc.white : rc.white;
     t.hasCheck = true;
-    t.white = rc.white;
     if (!rc.structure.empty()) {
       if (t.strongest.empty()) t.strongest = rc.structure.front().against;
       t.rightVariable |= inTruth(r.truth, rc.structure.front().against);
     }
-    t.outliers = rc.outliers.size();
+    t.outliers += rc.outliers.size();
     const OpenWorldTruth& w = r.truth;
     for (const auto& o : rc.outliers) {
       if (!w.outlierUnit) break;

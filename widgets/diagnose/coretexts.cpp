@@ -51,6 +51,8 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", "%1 gross errors excluded before the fit (robust z above %2):"),
     QT_TRANSLATE_NOOP("metrofit::core", " row %1 (%2%3)"),
     QT_TRANSLATE_NOOP("metrofit::core", "; rejected: the generic %1 validates better (%2 against %3%4)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; not taken: the generic %1 validates better (%2 against %3%4)"),
+    QT_TRANSLATE_NOOP("metrofit::core", "; rejected: the residual still depends on %1 after it (%2, p = %3)"),
     QT_TRANSLATE_NOOP("metrofit::core",
                       "; rejected: the fit rows do not determine tau (standard error above half of it)"),
     QT_TRANSLATE_NOOP(
