@@ -4085,6 +4085,24 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
             <numerusform>%n Messwerte als grobe Fehler von der Anpassung ausgeschlossen (robustes z über %1): %2.</numerusform>
         </translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>On the held-out rows, which only report the error, the residual looks like noise as well.</source>
+        <translation>In den zurückgehaltenen Zeilen, die nur den Fehler berichten, sieht das Residuum ebenfalls wie Rauschen aus.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>On the held-out rows, which only report the error, the residual still depends on %1: the model misses something there that the fit rows did not show.</source>
+        <translation>In den zurückgehaltenen Zeilen, die nur den Fehler berichten, hängt das Residuum noch von %1 ab: dem Modell fehlt dort etwas, das die Anpassungszeilen nicht zeigten.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n held-out measurement(s) left out of the held-out error as gross errors: %1.</source>
+        <translation>
+            <numerusform>%n zurückgehaltener Messwert als grober Fehler aus dem Fehler der zurückgehaltenen Zeilen ausgelassen: %1.</numerusform>
+            <numerusform>%n zurückgehaltene Messwerte als grobe Fehler aus dem Fehler der zurückgehaltenen Zeilen ausgelassen: %1.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>metrofit::ResidualCheckView</name>

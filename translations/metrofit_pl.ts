@@ -4095,6 +4095,25 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
             <numerusform>%n pomiarów wykluczonych z dopasowania jako błędy grube (odporne z powyżej %1): %2.</numerusform>
         </translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>On the held-out rows, which only report the error, the residual looks like noise as well.</source>
+        <translation>W wierszach wstrzymanych, które tylko raportują błąd, reszta również wygląda jak szum.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>On the held-out rows, which only report the error, the residual still depends on %1: the model misses something there that the fit rows did not show.</source>
+        <translation>W wierszach wstrzymanych, które tylko raportują błąd, reszta nadal zależy od %1: modelowi brakuje tam czegoś, czego wiersze dopasowania nie pokazały.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n held-out measurement(s) left out of the held-out error as gross errors: %1.</source>
+        <translation>
+            <numerusform>%n wstrzymany pomiar pominięty w błędzie wierszy wstrzymanych jako błąd gruby: %1.</numerusform>
+            <numerusform>%n wstrzymane pomiary pominięte w błędzie wierszy wstrzymanych jako błędy grube: %1.</numerusform>
+            <numerusform>%n wstrzymanych pomiarów pominiętych w błędzie wierszy wstrzymanych jako błędy grube: %1.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>metrofit::ResidualCheckView</name>

@@ -359,6 +359,37 @@ TEST(ResidualCheckTextTest, SentencesInReadersWords) {
   EXPECT_TRUE(w.back().startsWith(QStringLiteral("No measurement was excluded"))) << w.back().toStdString();
 }
 
+TEST(ResidualCheckTextTest, HeldOutRowsGetTheirOwnSentences) {
+  // Thermal: the held-out rows' check (a step after the fit rows, one gross error) is said apart.
+  diagnose::Diagnosis d = fixture();
+  diagnose::ResidualCheck h = *d.residualCheck;
+  h.structure.resize(1);
+  h.structure[0].against = "time";
+  h.structure[0].form = diagnose::DependenceForm::Step;
+  h.structure[0].shape.form = diagnose::DependenceForm::Step;
+  h.structure[0].shape.knots = {384.0};
+  h.structure[0].share = 0.4;
+  h.structure[0].p = 1e-12;
+  h.outliers.resize(1);
+  h.outliers[0].row = 950;
+  d.heldoutCheck = h;
+  const QStringList s = residualCheckSentences(d, QLocale::c());
+  ASSERT_EQ(s.size(), 5);
+  EXPECT_EQ(
+      s[3].toStdString(),
+      "On the held-out rows, which only report the error, the residual still depends on time (a step at "
+      "384, 40.0 % of the residual variance, p = 1.0e-12): the model misses something there that the "
+      "fit rows did not show.");
+  EXPECT_EQ(s[4].toStdString(),
+            "1 held-out measurement(s) left out of the held-out error as gross errors: row 950.");
+  d.heldoutCheck->white = true;
+  d.heldoutCheck->structure.clear();
+  d.heldoutCheck->outliers.clear();
+  const QStringList w = residualCheckSentences(d, QLocale::c());
+  ASSERT_EQ(w.size(), 4);
+  EXPECT_TRUE(w[3].contains(QStringLiteral("looks like noise as well"))) << w[3].toStdString();
+}
+
 /// Runs a program; its standard output ("" when it cannot run).
 QString run(const QString& program, const QStringList& args) {
   QProcess p;

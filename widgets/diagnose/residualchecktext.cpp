@@ -254,6 +254,33 @@ QStringList residualCheckSentences(const diagnose::Diagnosis& d, const QLocale& 
                "%n measurement(s) excluded from the fit as gross errors (robust z above %1): %2.", nullptr, n)
                .arg(threshold, list);
   }
+  if (d.heldoutCheck) {
+    // Thermal: the held-out rows chose nothing; their own check says what the model misses there.
+    const diagnose::ResidualCheck& h = *d.heldoutCheck;
+    if (h.white) {
+      out << ResidualCheckText::tr(
+          "On the held-out rows, which only report the error, the residual looks like noise as well.");
+    } else if (!h.structure.empty()) {
+      QStringList items;
+      for (const diagnose::StructureItem& s : h.structure)
+        items << ResidualCheckText::tr("%1 (%2, %3 % of the residual variance, p = %4)")
+                     .arg(residualVariableWords(s.against), dependenceFormWords(s, locale),
+                          locale.toString(100.0 * s.share, 'f', 1), formatPValue(s.p, locale));
+      out << ResidualCheckText::tr(
+                 "On the held-out rows, which only report the error, the residual still depends on %1: the "
+                 "model misses something there that the fit rows did not show.")
+                 .arg(items.join(QStringLiteral("; ")));
+    }
+    const int m = static_cast<int>(h.outliers.size());
+    if (m > 0) {
+      QStringList items;
+      for (int i = 0; i < m && i < maxOutliers; ++i)
+        items << outlierWhere(h.outliers[static_cast<std::size_t>(i)], locale);
+      out << ResidualCheckText::tr(
+                 "%n held-out measurement(s) left out of the held-out error as gross errors: %1.", nullptr, m)
+                 .arg(items.join(QStringLiteral("; ")));
+    }
+  }
   return out;
 }
 
