@@ -4087,6 +4087,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Warning: the held-out error rose from %1 to %2 %3 with the accepted effects. They describe the fit rows but do not carry over to the rows they did not see: do not compensate with them.</source>
+        <translation>Warnung: der Fehler der zurückgehaltenen Zeilen stieg mit den übernommenen Effekten von %1 auf %2 %3. Sie beschreiben die Anpassungszeilen, übertragen sich aber nicht auf die Zeilen, die sie nicht sahen: nicht damit kompensieren.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>On the held-out rows, which only report the error, the residual looks like noise as well.</source>
         <translation>In den zurückgehaltenen Zeilen, die nur den Fehler berichten, sieht das Residuum ebenfalls wie Rauschen aus.</translation>
     </message>

@@ -4097,6 +4097,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Warning: the held-out error rose from %1 to %2 %3 with the accepted effects. They describe the fit rows but do not carry over to the rows they did not see: do not compensate with them.</source>
+        <translation>Ostrzeżenie: błąd wierszy wstrzymanych wzrósł z przyjętymi efektami z %1 do %2 %3. Opisują one wiersze dopasowania, ale nie przenoszą się na wiersze, których nie widziały: nie kompensować nimi.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>On the held-out rows, which only report the error, the residual looks like noise as well.</source>
         <translation>W wierszach wstrzymanych, które tylko raportują błąd, reszta również wygląda jak szum.</translation>
     </message>

@@ -111,6 +111,11 @@ int finishDiagnosis(const diagnose::Diagnosis& d, const std::string& data, const
     if (!d.residualCheck->outliers.empty())
       line += "; " + std::to_string(d.residualCheck->outliers.size()) + " outliers excluded";
   }
+  if (d.baseline.heldoutRmse && d.final.heldoutRmse && !d.accepted().empty() &&
+      *d.final.heldoutRmse > *d.baseline.heldoutRmse)
+    line +=
+        "; warning: the held-out rmse rose with the accepted effects (they do not carry over beyond the "
+        "fit rows)";
   if (d.heldoutCheck) {
     if (!d.heldoutCheck->white) line += "; held-out rows: " + d.heldoutCheck->summary;
     if (!d.heldoutCheck->outliers.empty())

@@ -77,6 +77,23 @@ TEST(DiagnoseCli, ThermalFindsTheLagOfTheDemoLog) {
   EXPECT_EQ(files, 1);
 }
 
+TEST(DiagnoseCli, ThermalWarnsWhenTheHeldOutErrorRises) {
+  // The real CAIVIAC log, ch5 with t5, t9 declared: the effects chosen on the fit rows raise the
+  // held-out rmse (7.27 -> 12.3 um); the summary line says so, and the JSON has the held-out check.
+  test::TempDir tmp;
+  const CliRun r = cli("diagnose thermal --data " + demo("thermal_caiviac.csv") +
+                           " --target ch5_um --inputs t5_degC,t9_degC --out result.json",
+                       tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("warning: the held-out rmse rose"), std::string::npos) << r.err;
+  const nlohmann::json j = parseJson(test::readText(tmp.file("result.json")), "result.json");
+  EXPECT_GT(j.at("final").at("heldout_rmse").get<double>(),
+            j.at("baseline").at("heldout_rmse").get<double>());
+  ASSERT_TRUE(j.contains("heldout_check"));
+  EXPECT_TRUE(j.at("heldout_check").at("white").is_boolean());
+}
+
 TEST(DiagnoseCli, KinematicFindsTheBacklashOfTheDemoTest) {
   test::TempDir tmp;
   const CliRun r = cli("diagnose kinematic --data " + demo("diagnose_circular.csv"), tmp);

@@ -388,6 +388,14 @@ TEST(ResidualCheckTextTest, HeldOutRowsGetTheirOwnSentences) {
   const QStringList w = residualCheckSentences(d, QLocale::c());
   ASSERT_EQ(w.size(), 4);
   EXPECT_TRUE(w[3].contains(QStringLiteral("looks like noise as well"))) << w[3].toStdString();
+  // Accepted effects that made the held-out error worse (CAIVIAC ch5: 7.27 -> 12.3 um) are a warning.
+  ASSERT_FALSE(d.accepted().empty());
+  d.baseline.heldoutRmse = 7.27;
+  d.final.heldoutRmse = 12.3;
+  const QStringList v = residualCheckSentences(d, QLocale::c());
+  ASSERT_EQ(v.size(), 5);
+  EXPECT_TRUE(v[3].startsWith(QStringLiteral("Warning: the held-out error rose from 7.27 to 12.3 µm")))
+      << v[3].toStdString();
 }
 
 /// Runs a program; its standard output ("" when it cannot run).

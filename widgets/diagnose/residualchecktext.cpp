@@ -254,6 +254,14 @@ QStringList residualCheckSentences(const diagnose::Diagnosis& d, const QLocale& 
                "%n measurement(s) excluded from the fit as gross errors (robust z above %1): %2.", nullptr, n)
                .arg(threshold, list);
   }
+  if (d.baseline.heldoutRmse && d.final.heldoutRmse && !d.accepted().empty() &&
+      *d.final.heldoutRmse > *d.baseline.heldoutRmse)
+    out << ResidualCheckText::tr(
+               "Warning: the held-out error rose from %1 to %2 %3 with the accepted effects. They describe "
+               "the "
+               "fit rows but do not carry over to the rows they did not see: do not compensate with them.")
+               .arg(locale.toString(*d.baseline.heldoutRmse, 'g', 3),
+                    locale.toString(*d.final.heldoutRmse, 'g', 3), u);
   if (d.heldoutCheck) {
     // Thermal: the held-out rows chose nothing; their own check says what the model misses there.
     const diagnose::ResidualCheck& h = *d.heldoutCheck;
