@@ -4,8 +4,9 @@
 // effects were added. Shared by the four domains (thermal, kinematic, setup, matching), the CLI,
 // the GUI's diagnosis view and the report.
 //
-// The loop has the same steps in every domain (each domain still runs its own copy of it, in its
-// *_diagnosis.cpp; one shared loop is open work): fit the declared model plus the effects accepted
+// The loop has the same steps in every domain and is written once (loop.h runLoop; each domain's
+// *_diagnosis.cpp supplies its LoopDomain: fit, candidates, residual variables): fit the declared
+// model plus the effects accepted
 // so far; try every remaining candidate (the catalogue's named effects and the generic effects
 // `unexplained:<against>` of the current residual's strongest structures, residual_check.h);
 // accept the best one only when its evidence passes the domain's test (out-of-sample improvement

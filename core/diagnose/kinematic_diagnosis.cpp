@@ -14,6 +14,7 @@
 #include <Eigen/SVD>
 
 #include "core/common/error.h"
+#include "core/diagnose/loop.h"
 #include "core/kinematics/identification.h"
 #include "core/sim/effects_kinematic.h"
 
@@ -505,95 +506,121 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
 
   const std::vector<Eigen::Vector2d> radial = radialDirections(d);
   const std::vector<ResidualVariable> vars = kinematicVariables(d, radial, orig);
-  std::vector<std::string> genericTaken;
-  double searchPenalty = 0.0;  // of the accepted cyclic and generic effects
 
-  LoopProgress progress(observer);
-  bool cancelled = false;
-  for (int round = 0; round < o.maxRounds && !cancelled; ++round) {
-    std::vector<std::string> names;
-    const bool all = excluded.count(kEveryNamedEffect) > 0;
-    if (!state.backlash && !all && !excluded.count("backlash")) names.push_back("backlash");
-    if (!state.scale && !all && !excluded.count("scale")) names.push_back("scale");
-    if ((!state.cyclic[0] || !state.cyclic[1]) && !all && !excluded.count("cyclic"))
-      names.push_back("cyclic");
-    if (!state.servo && !all && !excluded.count("servo_lag")) names.push_back("servo_lag");
-    // Generic candidates (CONTRACT.md "The open world"): the strongest structures of the current
-    // radial residual, as radial displacements, with the search penalty on their evidence.
-    std::map<std::string, GenericTerm> genericTerms;
-    double genericPenalty = 0.0;
-    {
+  /// The kinematic domain of the shared loop (loop.h): the declared actuator errors plus effects,
+  /// fitted by nonlinear least squares on the x, y residual of every point, dBIC of the whole model.
+  class Domain final : public LoopDomain {
+   public:
+    Domain(const Data& d, const KinematicDiagnosisOptions& o, const std::vector<ResidualVariable>& vars,
+           const std::vector<std::size_t>& orig, Solution start)
+        : d_(d), o_(o), vars_(vars), orig_(orig), cur_(std::move(start)) {}
+
+    std::vector<std::string> namedCandidates(const std::set<std::string>& excluded) override {
+      std::vector<std::string> names;
+      const bool all = excluded.count(kEveryNamedEffect) > 0;
+      if (!state_.backlash && !all && !excluded.count("backlash")) names.push_back("backlash");
+      if (!state_.scale && !all && !excluded.count("scale")) names.push_back("scale");
+      if ((!state_.cyclic[0] || !state_.cyclic[1]) && !all && !excluded.count("cyclic"))
+        names.push_back("cyclic");
+      if (!state_.servo && !all && !excluded.count("servo_lag")) names.push_back("servo_lag");
+      return names;
+    }
+    ResidualCheck roundCheck() override {
       // A generic effect is the part of f(v) the current model cannot absorb: its basis is projected
       // off the model's Jacobian at the solution (a linear part in x or y is a squareness or scale the
       // declared model already has) and replaced by an orthonormal basis of what is left, so that the
       // joint fit stays well conditioned.
       Eigen::VectorXd r0;
       Eigen::MatrixXd J0;
-      evaluate(d, state, cur.q, r0, &J0);
+      evaluate(d_, state_, cur_.q, r0, &J0);
       const Eigen::HouseholderQR<Eigen::MatrixXd> qrJ(J0);
-      const Eigen::MatrixXd QJ = qrJ.householderQ() * Eigen::MatrixXd::Identity(J0.rows(), J0.cols());
-      const ResidualCheckInput ci = kinematicCheckInput(d, state, cur, vars, orig);
-      const ResidualCheck rc = checkResidual(ci);
-      genericPenalty = genericSearchPenalty(rc);
-      for (const GenericForm& g : genericCandidates(rc, genericTaken)) {
-        const ResidualVariable* v = findVariable(ci.variables, g.against);
-        if (!v) continue;
-        // Observation space (x, y per point), one set of columns per coordinate.
-        const Eigen::MatrixXd G = variableBasis(g, *v);
-        const Eigen::MatrixXd Gp = G - QJ * (QJ.transpose() * G);
-        const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Gp, Eigen::ComputeThinU);
-        Eigen::Index rank = 0;
-        const double top = G.norm();
-        for (Eigen::Index j = 0; j < svd.singularValues().size(); ++j)
-          if (svd.singularValues()(j) > 1e-6 * top) ++rank;
-        if (rank == 0) continue;
-        Eigen::MatrixXd Gk = svd.matrixU().leftCols(rank);
-        const std::string name = "unexplained:" + g.against;
-        genericTerms[name] = GenericTerm{std::make_shared<const Eigen::MatrixXd>(std::move(Gk)), g};
-        names.push_back(name);
-      }
+      QJ_ = qrJ.householderQ() * Eigen::MatrixXd::Identity(J0.rows(), J0.cols());
+      check_ = kinematicCheckInput(d_, state_, cur_, vars_, orig_);
+      return checkResidual(check_);
     }
-    if (names.empty()) break;
-    std::vector<Candidate> tried;
-    std::vector<State> states;
-    std::vector<Solution> sols;
-    std::vector<double> penalties;
-    std::optional<std::size_t> best;
-    const double bic0 = bic(cur, d.n);
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      const std::string& name = names[i];
-      Candidate c;
+    std::optional<GenericForm> prepareGeneric(const GenericForm& g) override {
+      const ResidualVariable* v = findVariable(check_.variables, g.against);
+      if (!v) return std::nullopt;
+      // Observation space (x, y per point), one set of columns per coordinate.
+      const Eigen::MatrixXd G = variableBasis(g, *v);
+      const Eigen::MatrixXd Gp = G - QJ_ * (QJ_.transpose() * G);
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Gp, Eigen::ComputeThinU);
+      Eigen::Index rank = 0;
+      const double top = G.norm();
+      for (Eigen::Index j = 0; j < svd.singularValues().size(); ++j)
+        if (svd.singularValues()(j) > 1e-6 * top) ++rank;
+      if (rank == 0) return std::nullopt;
+      Eigen::MatrixXd Gk = svd.matrixU().leftCols(rank);
+      terms_[g.against] = GenericTerm{std::make_shared<const Eigen::MatrixXd>(std::move(Gk)), g};
+      return g;
+    }
+    bool beginRound(int) override {
+      slots_.clear();
+      terms_.clear();
+      return true;
+    }
+    std::optional<LoopTrial> tryNamed(const std::string& name, int, std::size_t slot) override {
+      return trial(name, nullptr, 0.0, slot);
+    }
+    std::optional<LoopTrial> tryGeneric(const GenericForm& g, double penalty, int,
+                                        std::size_t slot) override {
+      return trial("unexplained:" + g.against, &terms_.at(g.against), penalty, slot);
+    }
+    void accept(std::size_t slot, Candidate& c) override {
+      Slot& s = slots_[slot];
+      ResidualPlot plot;
+      radialPlot(d_, cur_.r, s.sol.r, plot);
+      c.plot = std::move(plot);
+      state_ = s.state;
+      cur_ = std::move(s.sol);
+    }
+    double currentError() const override { return cur_.rmse; }
+    void finish(Diagnosis& dg, std::vector<Candidate*>, bool) override {
+      dg.final = summaryOf(cur_);
+      dg.residualCheck = checkResidual(kinematicCheckInput(d_, state_, cur_, vars_, orig_));
+    }
+    double dataCriterion() const override { return bic(cur_, d_.n); }
+
+   private:
+    struct Slot {
+      State state;
+      Solution sol;
+    };
+
+    LoopTrial trial(const std::string& name, const GenericTerm* term, double genericPenalty,
+                    std::size_t slot) {
+      LoopTrial t;
+      Candidate& c = t.candidate;
       c.name = name;
-      c.round = round;
-      c.rmseBefore = cur.rmse;
-      State next = state;
+      c.rmseBefore = cur_.rmse;
+      State next = state_;
       Solution sol;
       double penalty = 0.0;
       int cyAxis = -1;
       if (name == "backlash") {
         next.backlash = true;
-        sol = solve(d, next, cur.q);
+        sol = solve(d_, next, cur_.q);
       } else if (name == "scale") {
         next.scale = true;
-        sol = solve(d, next, cur.q);
+        sol = solve(d_, next, cur_.q);
       } else if (name == "servo_lag") {
         next.servo = true;
-        sol = solve(d, next, cur.q);
-      } else if (genericTerms.count(name)) {
-        next.generic.push_back(genericTerms[name]);
-        c.generic = genericTerms[name].shape;
-        sol = solve(d, next, cur.q);
+        sol = solve(d_, next, cur_.q);
+      } else if (term) {
+        next.generic.push_back(*term);
+        c.generic = term->shape;
+        sol = solve(d_, next, cur_.q);
         penalty = genericPenalty;
       } else {  // cyclic: the better axis
         for (int a = 0; a < 2; ++a) {
-          if (state.cyclic[a]) continue;
-          const CyclicStart cs = cyclicStart(d, state, cur, a, o.minPeriodMm, o.maxPeriodMm);
+          if (state_.cyclic[a]) continue;
+          const CyclicStart cs = cyclicStart(d_, state_, cur_, a, o_.minPeriodMm, o_.maxPeriodMm);
           if (!cs.ok) continue;
-          State sa = state;
+          State sa = state_;
           sa.cyclic[a] = true;
-          Solution s = solve(d, sa, cs.q);
-          if (cyAxis < 0 || s.sse < sol.sse) {
-            sol = std::move(s);
+          Solution sx = solve(d_, sa, cs.q);
+          if (cyAxis < 0 || sx.sse < sol.sse) {
+            sol = std::move(sx);
             next = sa;
             cyAxis = a;
             penalty = 2.0 * std::log(std::max(1.0, cs.frequencies / 8.0));
@@ -602,7 +629,7 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
       }
       const Layout l = layoutOf(next);
       if (!sol.ok) {
-        c.rmseAfter = cur.rmse;
+        c.rmseAfter = cur_.rmse;
         c.setEvidence(
             {cyAxis < 0 && name == "cyclic"
                  ? Phrase("not estimable: no period range to search on this path")
@@ -610,6 +637,7 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
                           "with the declared ones")});
         if (name == "cyclic" && cyAxis < 0) c.parameters.push_back({"axis", std::string("x"), std::nullopt});
       } else {
+        t.estimable = true;
         const Params& q = sol.q;
         Phrase text;
         if (name == "backlash") {
@@ -631,10 +659,10 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
           for (const auto& [k, val] : gs.numbers) c.parameters.push_back({k, val, std::nullopt});
           text = Phrase("%1", {A::text(gs.text)});
         } else if (name == "servo_lag") {
-          const double lagMm = q.tau * d.speed;
-          c.parameters = {{"tau_s", q.tau, se(sol, l.tau)}, {"lag_mm", lagMm, se(sol, l.tau) * d.speed}};
+          const double lagMm = q.tau * d_.speed;
+          c.parameters = {{"tau_s", q.tau, se(sol, l.tau)}, {"lag_mm", lagMm, se(sol, l.tau) * d_.speed}};
           text = Phrase("servo lag tau %1 +- %2 s at %3 mm/min (%4 um)",
-                        {num(q.tau), num(se(sol, l.tau), 2), num(o.feedMmPerMin), um(lagMm)});
+                        {num(q.tau), num(se(sol, l.tau), 2), num(o_.feedMmPerMin), um(lagMm)});
         } else {
           const int a = cyAxis, i0 = l.cy[a];
           const double cc = q.cc[a], cs = q.cs[a], f = q.f[a];
@@ -655,62 +683,47 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
                      {A::name(a == 0 ? "x" : "y"), num(period, 4), num(sePeriod, 2), um(amp), um(seAmp, 2)});
         }
         c.rmseAfter = sol.rmse;
-        const double dBic = bic(sol, d.n) + penalty - bic0;
+        const double dBic = bic(sol, d_.n) + penalty - bic(cur_, d_.n);
         c.score = dBic;
-        const bool strong = dBic < -o.bicMargin;
-        const bool gain = sol.rmse <= (1.0 - o.minRmseGain) * cur.rmse;
-        const double change = cur.rmse > 0 ? 100.0 * (sol.rmse - cur.rmse) / cur.rmse
-                                           : std::numeric_limits<double>::quiet_NaN();  // "n/a"
+        const bool strong = dBic < -o_.bicMargin;
+        const bool gain = sol.rmse <= (1.0 - o_.minRmseGain) * cur_.rmse;
+        const double change = cur_.rmse > 0 ? 100.0 * (sol.rmse - cur_.rmse) / cur_.rmse
+                                            : std::numeric_limits<double>::quiet_NaN();  // "n/a"
         Phrases ev = {Phrase("rmse %1 -> %2 um (%3 %), dBIC %4, %5",
-                             {um(cur.rmse), um(sol.rmse), num(change, 2), num(dBic, 4), A::text({text})})};
+                             {um(cur_.rmse), um(sol.rmse), num(change, 2), num(dBic, 4), A::text({text})})};
         if (!strong)
-          ev.push_back(Phrase("; rejected: dBIC above -%1", {num(o.bicMargin)}));
+          ev.push_back(Phrase("; rejected: dBIC above -%1", {num(o_.bicMargin)}));
         else if (!gain)
-          ev.push_back(Phrase("; rejected: rmse gain below %1 %", {num(100.0 * o.minRmseGain, 2)}));
+          ev.push_back(Phrase("; rejected: rmse gain below %1 %", {num(100.0 * o_.minRmseGain, 2)}));
         c.setEvidence(std::move(ev));
-        // A named effect that passes is preferred to a generic one (keepNamedOnlyWhenNeeded).
-        const bool namedBest = best && !tried[*best].generic;
-        if (strong && gain && !(c.generic && namedBest) && (!best || dBic < tried[*best].score)) best = i;
+        t.passes = strong && gain;
+        t.complexity = penalty;  // the parameters are in bic() already
       }
-      tried.push_back(std::move(c));
-      states.push_back(next);
-      sols.push_back(std::move(sol));
-      penalties.push_back(penalty);
+      if (slots_.size() <= slot) slots_.resize(slot + 1);
+      slots_[slot] = Slot{std::move(next), std::move(sol)};
+      return t;
+    }
 
-      if (progress.afterCandidate(round, i, names.size(), cur.rmse, "rmse_mm")) {
-        cancelled = true;
-        break;
-      }
-    }
-    if (cancelled) best.reset();
-    if (best) {
-      for (std::size_t i = 0; i < tried.size(); ++i) {
-        if (i != *best && tried[i].evidence.find("; rejected") == std::string::npos &&
-            !tried[i].evidence.starts_with("not estimable"))
-          tried[i].addEvidence({Phrase("; passed, but %1 explains more", {A::name(tried[*best].name)})});
-      }
-      Candidate& c = tried[*best];
-      c.accepted = true;
-      c.prependEvidence(Phrase("accepted: "));
-      ResidualPlot plot;
-      radialPlot(d, cur.r, sols[*best].r, plot);
-      c.plot = std::move(plot);
-      state = states[*best];
-      searchPenalty += penalties[*best];
-      if (c.generic) genericTaken.push_back(c.generic->against);
-      cur = std::move(sols[*best]);
-    }
-    for (auto& c : tried) dg.effects.push_back(std::move(c));
-    if (!best) break;
-  }
-  progress.addNote(dg);
-  dg.final = summaryOf(cur);
-  dg.residualCheck = checkResidual(kinematicCheckInput(d, state, cur, vars, orig));
-  LoopRun out;
-  out.bic = bic(cur, d.n) + searchPenalty;
-  out.stopped = progress.stopped();
-  out.diagnosis = std::move(dg);
-  return out;
+    const Data& d_;
+    const KinematicDiagnosisOptions& o_;
+    const std::vector<ResidualVariable>& vars_;
+    const std::vector<std::size_t>& orig_;
+    State state_;
+    Solution cur_;
+    Eigen::MatrixXd QJ_;
+    ResidualCheckInput check_;
+    std::map<std::string, GenericTerm> terms_;
+    std::vector<Slot> slots_;
+  };
+
+  Domain domain(d, o, vars, orig, std::move(cur));
+  LoopStyle style;
+  style.maxRounds = o.maxRounds;
+  style.stopAtMaxRounds = true;
+  style.listEveryRound = true;
+  style.markAccepted = true;
+  style.candidateComponent = "rmse_mm";
+  return runLoop(domain, style, excluded, observer, std::move(dg));
 }
 
 }  // namespace

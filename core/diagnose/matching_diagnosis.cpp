@@ -13,6 +13,7 @@
 #include <Eigen/QR>
 
 #include "core/common/error.h"
+#include "core/diagnose/loop.h"
 #include "core/matching/closed_form.h"
 #include "core/matching/fit_input.h"
 
@@ -533,136 +534,149 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
   }
 
   const std::vector<ResidualVariable> vars = matchingVariables(pb, orig);
-  std::vector<std::string> genericTaken;
-  const std::size_t namedDefs = defs.size();
-  double complexity = 0.0;  // k ln n + search penalties of the accepted effects
-  std::vector<bool> used(defs.size(), false);
-  std::vector<Candidate> acceptedCandidates, lastRound;
-  long tried = 0;
-  LoopProgress progress(observer);
-  for (int round = 0;; ++round) {
-    std::vector<Candidate> roundCandidates;
-    std::vector<FitState> states;
-    std::vector<std::size_t> roundDefs;
-    int best = -1;
-    const double rmseBefore = summarise(current, nPts).rmse;
-    // Generic candidates of this round (CONTRACT.md "The open world"): the strongest structures of
-    // the current residual, with the search penalty on their evidence.
-    defs.resize(namedDefs);
-    used.resize(namedDefs);
-    double genericPenalty = 0.0;
-    {
-      const ResidualCheck rc = checkResidual(matchingCheckInput(pb, current, vars, orig));
-      genericPenalty = genericSearchPenalty(rc);
-      for (GenericForm g : genericCandidates(rc, genericTaken)) {
-        const ResidualVariable* v = findVariable(vars, g.against);
-        if (!v) continue;
-        g.components = 1;  // per point; effectColumns spreads it over the coordinates
-        EffectDef e;
-        e.name = "unexplained:" + g.against;
-        e.kind = Kind::Generic;
-        e.basis = std::make_shared<const Eigen::MatrixXd>(variableBasis(g, *v));
-        e.shape = g;
-        e.params = static_cast<int>(e.basis->cols()) *
-                   (pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3));
-        defs.push_back(std::move(e));
-        used.push_back(false);
-      }
+
+  /// The matching domain of the shared loop (loop.h): the rigid posture plus effects, fitted by
+  /// Gauss-Newton, the evidence from the model linearised at the optimum.
+  class Domain final : public LoopDomain {
+   public:
+    Domain(const Problem& pb, const Fitter& fitter, const AcceptanceOptions& acceptance,
+           const std::vector<EffectDef>& defs, const std::vector<ResidualVariable>& vars,
+           const std::vector<std::size_t>& orig, FitState start)
+        : pb_(pb),
+          fitter_(fitter),
+          acceptance_(acceptance),
+          defs_(defs),
+          vars_(vars),
+          orig_(orig),
+          current_(std::move(start)),
+          used_(defs.size(), false) {}
+
+    std::vector<std::string> namedCandidates(const std::set<std::string>& excluded) override {
+      std::vector<std::string> out;
+      if (excluded.count(kEveryNamedEffect)) return out;
+      for (std::size_t c = 0; c < defs_.size(); ++c)
+        if (!used_[c] && !excluded.count(defs_[c].name)) out.push_back(defs_[c].name);
+      return out;
     }
-    int bestNamed = -1;  // a named effect that passes is preferred (keepNamedOnlyWhenNeeded)
-    for (std::size_t c = 0; c < defs.size(); ++c) {
-      if (used[c] || (defs[c].kind != Kind::Generic &&
-                      (excluded.count(defs[c].name) || excluded.count(kEveryNamedEffect))))
-        continue;
-      const bool generic = defs[c].kind == Kind::Generic;
-      if (generic && bestNamed < 0) bestNamed = best;
-      std::vector<EffectDef> trial = acceptedDefs;
-      trial.push_back(defs[c]);
-      FitState st = fitter.fit(trial, current.R, current.t);
-      ++tried;
-      Candidate cand;
-      cand.name = defs[c].name;
-      cand.round = round;
+    ResidualCheck roundCheck() override {
+      return checkResidual(matchingCheckInput(pb_, current_, vars_, orig_));
+    }
+    std::optional<GenericForm> prepareGeneric(const GenericForm& g) override {
+      if (!findVariable(vars_, g.against)) return std::nullopt;
+      GenericForm f = g;
+      f.components = 1;  // per point; effectColumns spreads it over the coordinates
+      return f;
+    }
+    bool beginRound(int) override {
+      slots_.clear();
+      return true;
+    }
+    std::optional<LoopTrial> tryNamed(const std::string& name, int, std::size_t slot) override {
+      for (const EffectDef& e : defs_)
+        if (e.name == name) return fit(e, 0.0, slot);
+      return std::nullopt;
+    }
+    std::optional<LoopTrial> tryGeneric(const GenericForm& g, double penalty, int,
+                                        std::size_t slot) override {
+      EffectDef e;
+      e.name = "unexplained:" + g.against;
+      e.kind = Kind::Generic;
+      e.basis = std::make_shared<const Eigen::MatrixXd>(variableBasis(g, *findVariable(vars_, g.against)));
+      e.shape = g;
+      e.params = static_cast<int>(e.basis->cols()) *
+                 (pb_.mode == Mode::Normal ? 1 : (pb_.mode == Mode::Planar ? 2 : 3));
+      return fit(e, penalty, slot);
+    }
+    void accept(std::size_t slot, Candidate&) override {
+      Slot& s = slots_[slot];
+      for (std::size_t c = 0; c < defs_.size(); ++c)
+        if (defs_[c].name == s.def.name && s.def.kind != Kind::Generic) used_[c] = true;
+      accepted_.push_back(s.def);
+      current_ = std::move(s.state);
+    }
+    double currentError() const override { return summarise(current_, pb_.points()).rmse; }
+    void finish(Diagnosis& d, std::vector<Candidate*> accepted, bool) override {
+      // Accepted effects carry the parameters of the final joint fit.
+      Eigen::Index at = 0;
+      for (std::size_t j = 0; j < accepted.size(); ++j) {
+        accepted[j]->parameters =
+            accepted_[j].kind == Kind::Generic
+                ? genericParameters(pb_, accepted_[j], current_.beta, at, vars_, nullptr)
+                : parameters(accepted_[j], current_.beta, current_.est.covariance, at);
+        at += accepted_[j].params;
+      }
+      d.final = summarise(current_, pb_.points());
+      d.residualCheck = checkResidual(matchingCheckInput(pb_, current_, vars_, orig_));
+    }
+    double dataCriterion() const override {
+      const auto n = static_cast<double>(pb_.observations());
+      return n * std::log(std::max(current_.rss, 1e-300) / n);
+    }
+
+   private:
+    struct Slot {
+      EffectDef def;
+      FitState state;
+    };
+    LoopTrial fit(const EffectDef& e, double penalty, std::size_t slot) {
+      const std::size_t nObs = pb_.observations(), nPts = pb_.points();
+      const bool generic = e.kind == Kind::Generic;
+      std::vector<EffectDef> trial = accepted_;
+      trial.push_back(e);
+      FitState st = fitter_.fit(trial, current_.R, current_.t);
+      LoopTrial t;
+      Candidate& cand = t.candidate;
+      cand.name = e.name;
+      const double rmseBefore = summarise(current_, nPts).rmse;
       cand.rmseBefore = rmseBefore;
-      const auto at = static_cast<Eigen::Index>(st.beta.size() - defs[c].params);
+      const auto at = static_cast<Eigen::Index>(st.beta.size() - e.params);
       if (!st.est.identifiable) {
         cand.rmseAfter = rmseBefore;
-        cand.parameters = parameters(defs[c], Eigen::VectorXd::Zero(st.beta.size()),
+        cand.parameters = parameters(e, Eigen::VectorXd::Zero(st.beta.size()),
                                      Eigen::MatrixXd::Zero(st.beta.size(), st.beta.size()), at);
         for (Parameter& p : cand.parameters) p.standardError.reset();
         cand.setEvidence({Phrase("not identifiable: %1 (the rigid posture explains it with these points)",
                                  {A::text({Phrase(st.est.why)})})});
       } else {
+        t.estimable = true;
         Phrases genericText;
-        cand.parameters = generic ? genericParameters(pb, defs[c], st.beta, at, vars, &genericText)
-                                  : parameters(defs[c], st.beta, st.est.covariance, at);
+        cand.parameters = generic ? genericParameters(pb_, e, st.beta, at, vars_, &genericText)
+                                  : parameters(e, st.beta, st.est.covariance, at);
         cand.rmseAfter = summarise(st, nPts).rmse;
-        const double penalty = generic ? genericPenalty : 0.0;
-        const AcceptanceDecision dec = decideAcceptance(acceptance, current.rss, st.rss, nObs,
-                                                        current.est.dof, defs[c].params, "mm", nPts, penalty);
-        cand.score = deltaBic(current.rss, st.rss, nObs, current.est.dof, defs[c].params, penalty);
+        const AcceptanceDecision dec = decideAcceptance(acceptance_, current_.rss, st.rss, nObs,
+                                                        current_.est.dof, e.params, "mm", nPts, penalty);
+        cand.score = deltaBic(current_.rss, st.rss, nObs, current_.est.dof, e.params, penalty);
         cand.setEvidence({Phrase("%1; %2", {A::text(generic ? genericText : describe(cand.parameters)),
                                             A::text(dec.reasonParts)})});
-        if (generic) {
-          cand.generic = defs[c].shape;
-        } else {
-          cand.plot = makePlot(pb, defs[c], current, st);
-        }
-        if (dec.accepted && round < options.maxRounds && !(generic && bestNamed >= 0) &&
-            (best < 0 || cand.score < roundCandidates[static_cast<std::size_t>(best)].score))
-          best = static_cast<int>(roundCandidates.size());
+        if (generic)
+          cand.generic = e.shape;
+        else
+          cand.plot = makePlot(pb_, e, current_, st);
+        t.passes = dec.accepted;
+        t.complexity = e.params * std::log(static_cast<double>(nObs)) + penalty;
       }
-      roundCandidates.push_back(std::move(cand));
-      states.push_back(std::move(st));
-      roundDefs.push_back(c);
+      if (slots_.size() <= slot) slots_.resize(slot + 1);
+      slots_[slot] = Slot{e, std::move(st)};
+      return t;
     }
-    bool cancelled = false;
-    if (best >= 0) {
-      const auto b = static_cast<std::size_t>(best);
-      Candidate& win = roundCandidates[b];
-      win.accepted = true;
-      for (std::size_t j = 0; j < roundCandidates.size(); ++j) {
-        if (j == b || !states[j].est.identifiable) continue;
-        if (std::abs(roundCandidates[j].score - win.score) <= 1e-6 * std::abs(win.score) + 1e-9)
-          win.addEvidence(
-              {Phrase("; indistinguishable from %1 with these points", {A::name(roundCandidates[j].name)})});
-      }
-      used[roundDefs[b]] = true;
-      acceptedDefs.push_back(defs[roundDefs[b]]);
-      complexity += defs[roundDefs[b]].params * std::log(static_cast<double>(nObs)) +
-                    (defs[roundDefs[b]].kind == Kind::Generic ? genericPenalty : 0.0);
-      if (defs[roundDefs[b]].kind == Kind::Generic) genericTaken.push_back(defs[roundDefs[b]].shape->against);
-      current = std::move(states[b]);
-      acceptedCandidates.push_back(win);
-    } else {
-      lastRound = std::move(roundCandidates);
-    }
-    cancelled = progress.afterRound(round, tried, summarise(current, nPts).rmse, acceptedCandidates.size());
-    if (best < 0) break;
-    if (cancelled) {
-      progress.addNote(result);
-      break;
-    }
-  }
-  // Accepted effects carry the parameters of the final joint fit.
-  Eigen::Index at = 0;
-  for (std::size_t j = 0; j < acceptedCandidates.size(); ++j) {
-    acceptedCandidates[j].parameters =
-        acceptedDefs[j].kind == Kind::Generic
-            ? genericParameters(pb, acceptedDefs[j], current.beta, at, vars, nullptr)
-            : parameters(acceptedDefs[j], current.beta, current.est.covariance, at);
-    at += acceptedDefs[j].params;
-  }
-  result.effects = std::move(acceptedCandidates);
-  for (Candidate& c : lastRound) result.effects.push_back(std::move(c));
-  result.final = summarise(current, nPts);
-  result.residualCheck = checkResidual(matchingCheckInput(pb, current, vars, orig));
-  LoopRun out;
-  out.bic = static_cast<double>(nObs) * std::log(std::max(current.rss, 1e-300) / static_cast<double>(nObs)) +
-            complexity;
-  out.stopped = progress.stopped();
-  out.diagnosis = std::move(result);
-  return out;
+
+    const Problem& pb_;
+    const Fitter& fitter_;
+    const AcceptanceOptions& acceptance_;
+    const std::vector<EffectDef>& defs_;
+    const std::vector<ResidualVariable>& vars_;
+    const std::vector<std::size_t>& orig_;
+    FitState current_;
+    std::vector<bool> used_;
+    std::vector<EffectDef> accepted_;
+    std::vector<Slot> slots_;
+  };
+
+  Domain domain(pb, fitter, acceptance, defs, vars, orig, std::move(current));
+  LoopStyle style;
+  style.maxRounds = options.maxRounds;
+  style.tiesWithPoints = true;
+  return runLoop(domain, style, excluded, observer, std::move(result));
 }
 
 /// The declared (rigid) fit's residual per observation, for the outlier search.

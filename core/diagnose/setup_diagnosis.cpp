@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <set>
@@ -9,6 +10,7 @@
 #include <Eigen/QR>
 
 #include "core/common/error.h"
+#include "core/diagnose/loop.h"
 #include "core/diagnose/residual_check.h"
 #include "core/io/csv.h"
 
@@ -248,225 +250,249 @@ LoopRun runSetup(const setup::Model& model, const setup::Measurements& measureme
   const std::vector<ResidualVariable> vars =
       setupVariables(model, G, rowDim, rowPart, partCol, timeCol, origRow, slotNames);
 
-  std::vector<bool> used(defs.size(), false);
-  std::vector<std::size_t> acceptedDefs;
-  std::vector<std::string> genericTaken;
-  std::vector<Eigen::Index> acceptedWidth;  ///< columns of each accepted candidate in Zacc
-  double complexity = 0.0;                  ///< k ln n + search penalties of the accepted effects
-  std::vector<Candidate> acceptedCandidates, lastRound;
-  long tried = 0;
-  LoopProgress progress(observer);
-  for (int round = 0;; ++round) {
-    std::vector<Candidate> roundCandidates;
-    std::vector<EffectEstimate> estimates;
-    std::vector<std::size_t> roundDefs;
-    int best = -1;
-    const double rmseBefore = rootMeanSquare(current.residual);
-    for (std::size_t c = 0; c < defs.size(); ++c) {
-      if (used[c] || excluded.count(defs[c].name) || excluded.count(kEveryNamedEffect)) continue;
-      const CandidateDef& d = defs[c];
-      Eigen::MatrixXd Z(static_cast<Eigen::Index>(n), Zacc.cols() + 1);
-      Z.leftCols(Zacc.cols()) = Zacc;
-      Z.col(Zacc.cols()) = column(d);
-      EffectEstimate est = estimateEffects(declared, y, Z);
-      ++tried;
-      Candidate cand;
+  /// The setup domain of the shared loop (loop.h): a linear model, effects as extra columns Z.
+  class Domain final : public LoopDomain {
+   public:
+    Domain(
+        const SetupDiagnosisOptions& o, const ColumnSpace& declared, const Eigen::VectorXd& y,
+        const Eigen::MatrixXd& X, EffectEstimate start, const std::vector<CandidateDef>& defs,
+        const std::vector<ResidualVariable>& vars, std::function<Eigen::VectorXd(const CandidateDef&)> column,
+        std::function<ResidualPlot(const CandidateDef&, const Eigen::VectorXd&, const Eigen::VectorXd&)> plot)
+        : o_(o),
+          declared_(declared),
+          y_(y),
+          X_(X),
+          current_(std::move(start)),
+          defs_(defs),
+          vars_(vars),
+          column_(std::move(column)),
+          plot_(std::move(plot)),
+          used_(defs.size(), false),
+          Zacc_(y.size(), 0) {}
+
+    std::vector<std::string> namedCandidates(const std::set<std::string>& excluded) override {
+      std::vector<std::string> out;
+      if (excluded.count(kEveryNamedEffect)) return out;
+      for (std::size_t c = 0; c < defs_.size(); ++c)
+        if (!used_[c] && !excluded.count(defs_[c].name)) out.push_back(defs_[c].name);
+      return out;
+    }
+    ResidualCheck roundCheck() override {
+      return checkResidual(setupCheckInput(current_.residual, X_, Zacc_, vars_));
+    }
+    bool beginRound(int) override {
+      slots_.clear();
+      return true;
+    }
+
+    std::optional<LoopTrial> tryNamed(const std::string& name, int /*round*/, std::size_t slot) override {
+      const std::size_t c = indexOf(name);
+      const CandidateDef& d = defs_[c];
+      const auto n = static_cast<std::size_t>(y_.size());
+      Slot s;
+      s.def = c;
+      s.add = column_(d);
+      Eigen::MatrixXd Z(y_.size(), Zacc_.cols() + 1);
+      Z << Zacc_, s.add;
+      s.est = estimateEffects(declared_, y_, Z);
+      LoopTrial t;
+      Candidate& cand = t.candidate;
       cand.name = d.name;
-      cand.round = round;
+      const double rmseBefore = rootMeanSquare(current_.residual);
       cand.rmseBefore = rmseBefore;
       const std::string unit = d.perPart ? "mm_per_part" : "mm_per_min";
-      if (!est.identifiable) {
+      if (!s.est.identifiable) {
         cand.rmseAfter = rmseBefore;
         cand.parameters.push_back({unit, 0.0, std::nullopt});
         cand.setEvidence({Phrase(d.perPart ? "not identifiable: %1 (one part only?)"
                                            : "not identifiable: %1 (time does not vary?)",
-                                 {A::text({Phrase(est.why)})})});
+                                 {A::text({Phrase(s.est.why)})})});
       } else {
-        const Eigen::Index k = est.beta.size() - 1;
-        const double value = est.beta(k), se = std::sqrt(std::max(0.0, est.covariance(k, k)));
+        t.estimable = true;
+        const Eigen::Index k = s.est.beta.size() - 1;
+        const double value = s.est.beta(k), se = std::sqrt(std::max(0.0, s.est.covariance(k, k)));
         cand.parameters.push_back({unit, value, se});
-        cand.rmseAfter = rootMeanSquare(est.residual);
+        cand.rmseAfter = rootMeanSquare(s.est.residual);
         const AcceptanceDecision dec =
-            decideAcceptance(options.acceptance, current.rss, est.rss, n, current.dof, 1, "mm");
-        cand.score = deltaBic(current.rss, est.rss, n, current.dof, 1);
+            decideAcceptance(o_.acceptance, current_.rss, s.est.rss, n, current_.dof, 1, "mm");
+        cand.score = deltaBic(current_.rss, s.est.rss, n, current_.dof, 1);
         cand.setEvidence(
             {Phrase(d.perPart ? "%1 +- %2 mm/part (t = %3); " : "%1 +- %2 mm/min (t = %3); ",
                     {A::number(value, 3), A::number(se, 2), A::fixed(se > 0.0 ? value / se : 0.0, 1)})});
         cand.addEvidence(dec.reasonParts);
-        // Residual plot: apparent error of the datum per part against part number or time.
-        std::vector<bool> presentBefore, presentAfter;
-        const std::vector<double> before =
-            apparentError(current.residual, G, rowDim, rowPart, ordered.size(), d.datum, &presentBefore);
-        const std::vector<double> after =
-            apparentError(est.residual, G, rowDim, rowPart, ordered.size(), d.datum, &presentAfter);
-        ResidualPlot plot;
-        plot.setLabels({Phrase(d.perPart ? "part" : "time (min)")},
-                       {Phrase("apparent error of %1 (mm)", {A::name(model.setup[d.datum].id)})});
-        for (std::size_t p = 0; p < ordered.size(); ++p) {
-          if (!presentBefore[p]) continue;
-          plot.x.push_back(d.perPart ? ordered[p].first : slotTimeSum[p] / std::max(1, slotTimeCount[p]));
-          plot.before.push_back(before[p]);
-          plot.after.push_back(after[p]);
-        }
-        cand.plot = std::move(plot);
-        if (dec.accepted && round < options.maxRounds &&
-            (best < 0 || cand.score < roundCandidates[static_cast<std::size_t>(best)].score))
-          best = static_cast<int>(roundCandidates.size());
-        cand.accepted = dec.accepted;  // provisional: only the best one stays accepted
+        cand.plot = plot_(d, current_.residual, s.est.residual);
+        t.passes = dec.accepted;
+        t.complexity = std::log(static_cast<double>(n));
       }
-      roundCandidates.push_back(std::move(cand));
-      estimates.push_back(std::move(est));
-      roundDefs.push_back(c);
+      store(slot, std::move(s));
+      return t;
     }
-    // Generic candidates (CONTRACT.md "The open world"): the strongest structures of the current
-    // residual, each a basis of its variable, under the same evidence (plus the search penalty).
-    std::vector<Eigen::MatrixXd> genericColumns(roundCandidates.size());
-    std::vector<double> genericPenalties(roundCandidates.size(), 0.0);
-    const int bestNamed = best;  // a named effect that passes is preferred (keepNamedOnlyWhenNeeded)
-    {
-      const ResidualCheck rc = checkResidual(setupCheckInput(current.residual, X, Zacc, vars));
-      const double penalty = genericSearchPenalty(rc);
-      for (const GenericForm& g : genericCandidates(rc, genericTaken)) {
-        const ResidualVariable* v = findVariable(vars, g.against);
-        if (!v) continue;
-        const Eigen::MatrixXd Zg = variableBasis(g, *v);
-        Eigen::MatrixXd Z(static_cast<Eigen::Index>(n), Zacc.cols() + Zg.cols());
-        Z << Zacc, Zg;
-        EffectEstimate est = estimateEffects(declared, y, Z);
-        ++tried;
-        Candidate cand;
-        cand.name = "unexplained:" + g.against;
-        cand.generic = g;
-        cand.round = round;
-        cand.rmseBefore = rmseBefore;
-        if (!est.identifiable) {
-          cand.rmseAfter = rmseBefore;
-          cand.setEvidence({Phrase("not identifiable: %1", {A::text({Phrase(est.why)})})});
-        } else {
-          const auto q = static_cast<int>(Zg.cols());
-          cand.rmseAfter = rootMeanSquare(est.residual);
-          const AcceptanceDecision dec =
-              decideAcceptance(options.acceptance, current.rss, est.rss, n, current.dof, q, "mm", 0, penalty);
-          cand.score = deltaBic(current.rss, est.rss, n, current.dof, q, penalty);
-          const GenericSummary gs = summariseGeneric(g, est.beta.tail(q), v->values, "mm");
-          for (const auto& [k, val] : gs.numbers) cand.parameters.push_back({k, val, std::nullopt});
-          cand.parameters.insert(cand.parameters.begin(),
-                                 Parameter{"form", std::string(formName(g.form)), std::nullopt});
-          Phrases ev = gs.text;
-          ev.push_back(Phrase("; "));
-          for (const Phrase& ph : dec.reasonParts) ev.push_back(ph);
-          cand.setEvidence(std::move(ev));
-          if (dec.accepted && round < options.maxRounds && bestNamed < 0 &&
-              (best < 0 || cand.score < roundCandidates[static_cast<std::size_t>(best)].score))
-            best = static_cast<int>(roundCandidates.size());
-          cand.accepted = dec.accepted;
-        }
-        roundCandidates.push_back(std::move(cand));
-        estimates.push_back(std::move(est));
-        roundDefs.push_back(defs.size());  // not a named definition
-        genericColumns.push_back(Zg);
-        genericPenalties.push_back(penalty);
+
+    std::optional<LoopTrial> tryGeneric(const GenericForm& g, double penalty, int /*round*/,
+                                        std::size_t slot) override {
+      const ResidualVariable* v = findVariable(vars_, g.against);
+      const auto n = static_cast<std::size_t>(y_.size());
+      Slot s;
+      s.def = defs_.size();
+      s.add = v ? variableBasis(g, *v) : Eigen::MatrixXd(y_.size(), 0);
+      Eigen::MatrixXd Z(y_.size(), Zacc_.cols() + s.add.cols());
+      Z << Zacc_, s.add;
+      s.est = estimateEffects(declared_, y_, Z);
+      LoopTrial t;
+      Candidate& cand = t.candidate;
+      cand.name = "unexplained:" + g.against;
+      cand.generic = g;
+      const double rmseBefore = rootMeanSquare(current_.residual);
+      cand.rmseBefore = rmseBefore;
+      if (!s.est.identifiable || !v) {
+        cand.rmseAfter = rmseBefore;
+        cand.setEvidence({Phrase("not identifiable: %1", {A::text({Phrase(s.est.why)})})});
+      } else {
+        t.estimable = true;
+        const auto q = static_cast<int>(s.add.cols());
+        cand.rmseAfter = rootMeanSquare(s.est.residual);
+        const AcceptanceDecision dec =
+            decideAcceptance(o_.acceptance, current_.rss, s.est.rss, n, current_.dof, q, "mm", 0, penalty);
+        cand.score = deltaBic(current_.rss, s.est.rss, n, current_.dof, q, penalty);
+        const GenericSummary gs = summariseGeneric(g, s.est.beta.tail(q), v->values, "mm");
+        for (const auto& [k, val] : gs.numbers) cand.parameters.push_back({k, val, std::nullopt});
+        cand.parameters.insert(cand.parameters.begin(),
+                               Parameter{"form", std::string(formName(g.form)), std::nullopt});
+        Phrases ev = gs.text;
+        ev.push_back(Phrase("; "));
+        for (const Phrase& ph : dec.reasonParts) ev.push_back(ph);
+        cand.setEvidence(std::move(ev));
+        t.passes = dec.accepted;
+        t.complexity = static_cast<double>(q) * std::log(static_cast<double>(n)) + penalty;
       }
+      store(slot, std::move(s));
+      return t;
     }
-    std::vector<bool> acceptable(roundCandidates.size());
-    for (std::size_t j = 0; j < roundCandidates.size(); ++j) {
-      acceptable[j] = roundCandidates[j].accepted;
-      roundCandidates[j].accepted = false;
-    }
+
     // tool_wear:T and drift:T explain the same datum, by part number and by time. When time is
     // nearly proportional to the part number the data cannot tell them apart: unless the best one
     // beats the other by the decision threshold, the one listed first (tool wear) is preferred.
-    Phrases preferredOver;
-    if (best >= 0) {
-      const auto b = static_cast<std::size_t>(best);
+    std::optional<std::size_t> prefer(const std::vector<LoopTrial>& trials, std::size_t b,
+                                      Phrases* why) override {
+      if (slots_[b].def >= defs_.size()) return std::nullopt;
       for (std::size_t j = 0; j < b; ++j) {
-        if (!acceptable[j] || roundDefs[j] >= defs.size() || roundDefs[b] >= defs.size() ||
-            defs[roundDefs[j]].datum != defs[roundDefs[b]].datum)
+        if (!trials[j].passes || !trials[j].estimable || slots_[j].def >= defs_.size() ||
+            defs_[slots_[j].def].datum != defs_[slots_[b].def].datum)
           continue;
-        if (roundCandidates[j].score - roundCandidates[b].score < options.acceptance.bicThreshold) {
-          preferredOver = {
+        if (trials[j].candidate.score - trials[b].candidate.score < o_.acceptance.bicThreshold) {
+          *why = {
               Phrase("; preferred to %1 (its dBIC is %2 lower, below the threshold: the data cannot tell "
                      "them apart)",
-                     {A::name(roundCandidates[b].name),
-                      A::fixed(roundCandidates[j].score - roundCandidates[b].score, 1)})};
-          best = static_cast<int>(j);
-          break;
+                     {A::name(trials[b].candidate.name),
+                      A::fixed(trials[j].candidate.score - trials[b].candidate.score, 1)})};
+          return j;
         }
       }
+      return std::nullopt;
     }
-    bool cancelled = false;
-    if (best >= 0) {
-      const auto b = static_cast<std::size_t>(best);
-      Candidate& win = roundCandidates[b];
-      win.accepted = true;
-      win.addEvidence(std::move(preferredOver));
-      // Ties (e.g. time proportional to part number): the first listed wins, the evidence says so.
-      for (std::size_t j = 0; j < roundCandidates.size(); ++j) {
-        if (j == b || !estimates[j].identifiable) continue;
-        if (std::abs(roundCandidates[j].score - win.score) <= 1e-6 * std::abs(win.score) + 1e-9)
-          win.addEvidence(
-              {Phrase("; indistinguishable from %1 with these data", {A::name(roundCandidates[j].name)})});
+
+    void accept(std::size_t slot, Candidate& /*accepted*/) override {
+      Slot& s = slots_[slot];
+      if (s.def < defs_.size()) used_[s.def] = true;
+      width_.push_back(s.add.cols());
+      Eigen::MatrixXd Z(y_.size(), Zacc_.cols() + s.add.cols());
+      Z << Zacc_, s.add;
+      Zacc_ = std::move(Z);
+      current_ = std::move(s.est);
+    }
+    double currentError() const override { return rootMeanSquare(current_.residual); }
+
+    void finish(Diagnosis& d, std::vector<Candidate*> accepted, bool /*stopped*/) override {
+      // Accepted effects carry the parameters of the final joint fit.
+      Eigen::Index col = 0;
+      for (std::size_t j = 0; j < accepted.size(); ++j) {
+        Candidate& c = *accepted[j];
+        const Eigen::Index w = width_[j];
+        if (c.generic) {
+          if (const ResidualVariable* v = findVariable(vars_, c.generic->against)) {
+            const GenericSummary gs =
+                summariseGeneric(*c.generic, current_.beta.segment(col, w), v->values, "mm");
+            c.parameters = {Parameter{"form", std::string(formName(c.generic->form)), std::nullopt}};
+            for (const auto& [k, val] : gs.numbers) c.parameters.push_back({k, val, std::nullopt});
+          }
+        } else {
+          Parameter& p = c.parameters.front();
+          p.value = current_.beta(col);
+          p.standardError = std::sqrt(std::max(0.0, current_.covariance(col, col)));
+        }
+        col += w;
       }
-      const bool generic = roundDefs[b] >= defs.size();
-      const Eigen::MatrixXd add = generic ? genericColumns[b] : Eigen::MatrixXd(column(defs[roundDefs[b]]));
-      if (generic) {
-        genericTaken.push_back(win.generic->against);
-      } else {
-        used[roundDefs[b]] = true;
-        acceptedDefs.push_back(roundDefs[b]);
-      }
-      acceptedWidth.push_back(add.cols());
-      complexity += static_cast<double>(add.cols()) * std::log(static_cast<double>(n)) +
-                    (generic ? genericPenalties[b] : 0.0);
-      Eigen::MatrixXd Z(static_cast<Eigen::Index>(n), Zacc.cols() + add.cols());
-      Z << Zacc, add;
-      Zacc = Z;
-      current = std::move(estimates[b]);
-      acceptedCandidates.push_back(win);
-    } else {
-      lastRound = std::move(roundCandidates);
+      d.final = summarise(current_.residual);
     }
-    cancelled =
-        progress.afterRound(round, tried, rootMeanSquare(current.residual), acceptedCandidates.size());
-    if (best < 0) break;
-    if (cancelled) {
-      progress.addNote(result);
-      break;
+    double dataCriterion() const override {
+      const auto n = static_cast<double>(y_.size());
+      return n * std::log(std::max(current_.rss, 1e-300) / n);
     }
-  }
-  // Accepted effects carry the parameters of the final joint fit.
-  Eigen::Index col = 0;
-  for (std::size_t j = 0; j < acceptedCandidates.size(); ++j) {
-    Candidate& c = acceptedCandidates[j];
-    const Eigen::Index w = acceptedWidth[j];
-    if (c.generic) {
-      if (const ResidualVariable* v = findVariable(vars, c.generic->against)) {
-        const GenericSummary gs = summariseGeneric(*c.generic, current.beta.segment(col, w), v->values, "mm");
-        c.parameters = {Parameter{"form", std::string(formName(c.generic->form)), std::nullopt}};
-        for (const auto& [k, val] : gs.numbers) c.parameters.push_back({k, val, std::nullopt});
-      }
-    } else {
-      Parameter& p = c.parameters.front();
-      p.value = current.beta(col);
-      p.standardError = std::sqrt(std::max(0.0, current.covariance(col, col)));
+    const EffectEstimate& current() const { return current_; }
+    const Eigen::MatrixXd& Zacc() const { return Zacc_; }
+
+   private:
+    struct Slot {
+      std::size_t def = 0;  ///< defs index, or defs.size() for a generic effect
+      Eigen::MatrixXd add;
+      EffectEstimate est;
+    };
+    std::size_t indexOf(const std::string& name) const {
+      for (std::size_t c = 0; c < defs_.size(); ++c)
+        if (defs_[c].name == name) return c;
+      return defs_.size();
     }
-    col += w;
-  }
-  result.effects = std::move(acceptedCandidates);
-  for (Candidate& c : lastRound) result.effects.push_back(std::move(c));
-  result.final = summarise(current.residual);
-  ResidualCheckInput in = setupCheckInput(current.residual, X, Zacc, vars);
+    void store(std::size_t slot, Slot s) {
+      if (slots_.size() <= slot) slots_.resize(slot + 1);
+      slots_[slot] = std::move(s);
+    }
+
+    const SetupDiagnosisOptions& o_;
+    const ColumnSpace& declared_;
+    const Eigen::VectorXd& y_;
+    const Eigen::MatrixXd& X_;
+    EffectEstimate current_;
+    const std::vector<CandidateDef>& defs_;
+    const std::vector<ResidualVariable>& vars_;
+    std::function<Eigen::VectorXd(const CandidateDef&)> column_;
+    std::function<ResidualPlot(const CandidateDef&, const Eigen::VectorXd&, const Eigen::VectorXd&)> plot_;
+    std::vector<bool> used_;
+    Eigen::MatrixXd Zacc_;
+    std::vector<Eigen::Index> width_;
+    std::vector<Slot> slots_;
+  };
+
+  // Residual plot of a named effect: apparent error of the datum per part against part number or time.
+  auto plot = [&](const CandidateDef& d, const Eigen::VectorXd& before, const Eigen::VectorXd& after) {
+    std::vector<bool> presentBefore, presentAfter;
+    const std::vector<double> b =
+        apparentError(before, G, rowDim, rowPart, ordered.size(), d.datum, &presentBefore);
+    const std::vector<double> a =
+        apparentError(after, G, rowDim, rowPart, ordered.size(), d.datum, &presentAfter);
+    ResidualPlot p;
+    p.setLabels({Phrase(d.perPart ? "part" : "time (min)")},
+                {Phrase("apparent error of %1 (mm)", {A::name(model.setup[d.datum].id)})});
+    for (std::size_t k = 0; k < ordered.size(); ++k) {
+      if (!presentBefore[k]) continue;
+      p.x.push_back(d.perPart ? ordered[k].first : slotTimeSum[k] / std::max(1, slotTimeCount[k]));
+      p.before.push_back(b[k]);
+      p.after.push_back(a[k]);
+    }
+    return p;
+  };
+  Domain domain(
+      options, declared, y, X, std::move(current), defs, vars,
+      [&](const CandidateDef& d) { return Eigen::VectorXd(column(d)); }, plot);
+  LoopStyle style;
+  style.maxRounds = options.maxRounds;
+  LoopRun out = runLoop(domain, style, excluded, observer, std::move(result));
+  ResidualCheckInput in = setupCheckInput(domain.current().residual, X, domain.Zacc(), vars);
   for (std::size_t r = 0; r < n; ++r) {
     in.unitRow.push_back(static_cast<long>(origRow[r] + 1));
     in.unitPart.push_back(measurements.rows[r].part);
     in.unitDimension.push_back(model.dimensions[rowDim[r]].id);
   }
-  result.residualCheck = checkResidual(in);
-  LoopRun out;
-  out.bic =
-      static_cast<double>(n) * std::log(std::max(current.rss, 1e-300) / static_cast<double>(n)) + complexity;
-  out.stopped = progress.stopped();
-  out.diagnosis = std::move(result);
+  out.diagnosis.residualCheck = checkResidual(in);
   return out;
 }
 

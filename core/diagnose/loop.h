@@ -1,0 +1,109 @@
+#pragma once
+// The closed loop, written once for the four domains (issue 15 item 6; diagnosis.h describes it):
+//
+//   repeat: the candidates of the round are the catalogue's named effects the domain still offers
+//   and the generic effects `unexplained:<against>` of the current residual's strongest structures
+//   (residual_check.h genericCandidates, with the search penalty 2 ln(tests)); the domain fits the
+//   current model plus each candidate and decides whether it passes its test; the best passing one
+//   is accepted (a named effect that passes is preferred to a generic one); until none passes.
+//
+// What differs between the domains is behind LoopDomain: how a model is fitted (linear least
+// squares for setup, Gauss-Newton for matching and kinematic, blocked forward validation for
+// thermal), which named effects exist, how a generic shape becomes model columns, and the few
+// domain rules of the choice (thermal: a generic effect of a measured column displaces a name that
+// validates worse; setup: tool wear over drift of the same datum when the data cannot tell them
+// apart). LoopStyle keeps what the results of each domain have always looked like (which candidates
+// are listed, how progress is reported), so that the JSON of CONTRACT.md stays as it was.
+#include <cstddef>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/diagnose/diagnosis.h"
+
+namespace metrofit::diagnose {
+
+/// One candidate of a round as the domain fitted it. `candidate` carries the name, parameters,
+/// evidence, rmse before/after and score (lower is better: dBIC, or the relative validation change).
+struct LoopTrial {
+  Candidate candidate;
+  bool estimable = false;  ///< fitted at all ("not estimable" / "not identifiable": never chosen)
+  bool passes = false;     ///< the domain's acceptance test
+  /// What accepting it adds to the run's criterion (k ln n plus the search penalty), LoopRun::bic.
+  double complexity = 0.0;
+};
+
+/// The domain side of the loop. A domain object holds the current model; the loop asks it to try
+/// candidates (each in a numbered slot of the round) and to adopt one.
+class LoopDomain {
+ public:
+  virtual ~LoopDomain() = default;
+
+  /// The named candidates still open in this round (not accepted yet, not in `excluded`; the set
+  /// may hold kEveryNamedEffect: none). In the order they are listed.
+  virtual std::vector<std::string> namedCandidates(const std::set<std::string>& excluded) = 0;
+  /// The residual check of the current model (to find the round's generic candidates).
+  virtual ResidualCheck roundCheck() = 0;
+  /// The domain's form of a generic candidate (e.g. one set of columns per coordinate, the part a
+  /// model's Jacobian cannot absorb, a column's curvature only), or nullopt to skip it.
+  virtual std::optional<GenericForm> prepareGeneric(const GenericForm& g) { return g; }
+  /// Starts a round: slots of the previous round may be forgotten. False: the observer stopped the
+  /// loop (thermal polls it here).
+  virtual bool beginRound(int /*round*/) { return true; }
+  /// Fits the current model plus the named effect (slot: its index in the round). nullopt: the
+  /// observer stopped the fit inside the candidate (it is not listed).
+  virtual std::optional<LoopTrial> tryNamed(const std::string& name, int round, std::size_t slot) = 0;
+  /// The same for a generic effect (prepared by prepareGeneric) with its search penalty.
+  virtual std::optional<LoopTrial> tryGeneric(const GenericForm& g, double penalty, int round,
+                                              std::size_t slot) = 0;
+  /// The domain's choice among the trials (indices = slots), when it has its own rules; nullopt:
+  /// the loop's rule (best score among the passing ones, a passing named effect first). May edit
+  /// the trials' evidence and `passes`. Return {-1}: nothing is chosen.
+  virtual std::optional<long> choose(std::vector<LoopTrial>& /*trials*/) { return std::nullopt; }
+  /// After the loop's rule chose `best`: an earlier trial the domain prefers (setup: tool wear over
+  /// drift of the same datum when the data cannot tell them apart) and the words why.
+  virtual std::optional<std::size_t> prefer(const std::vector<LoopTrial>& /*trials*/, std::size_t /*best*/,
+                                            Phrases* /*why*/) {
+    return std::nullopt;
+  }
+  /// Nothing was chosen in the round: a last attempt of the domain (thermal: two effects together).
+  /// Returns the candidates it accepted (empty: none; the domain has adopted them).
+  virtual std::vector<Candidate> whenNoneChosen(const std::vector<LoopTrial>& /*trials*/, int /*round*/) {
+    return {};
+  }
+  /// Adopts the model of `slot` as the current one; may complete the accepted candidate (a plot).
+  virtual void accept(std::size_t slot, Candidate& accepted) = 0;
+  /// The current model's error for progress reports.
+  virtual double currentError() const = 0;
+  /// After the loop: the accepted effects' parameters from the final joint fit (when the domain
+  /// refits them), `final`, the residual check and any closing notes.
+  virtual void finish(Diagnosis& d, std::vector<Candidate*> accepted, bool stopped) = 0;
+  /// The data term of the run's criterion, n ln(RSS / n) (thermal: its validation criterion).
+  virtual double dataCriterion() const = 0;
+};
+
+/// How a domain's results have always looked (kept so the JSON and the texts stay the same).
+struct LoopStyle {
+  int maxRounds = 10;
+  /// true: rounds stop at maxRounds (kinematic, thermal); false: a round maxRounds is still tried and
+  /// listed, but nothing accepted in it (setup, matching).
+  bool stopAtMaxRounds = false;
+  /// true: every round's candidates are listed (kinematic, thermal); false: the accepted ones and the
+  /// last round's (setup, matching).
+  bool listEveryRound = false;
+  /// true: the accepted candidate's evidence starts with "accepted: " and other passing ones get
+  /// "; passed, but X explains more" (kinematic, thermal); false: ties are named instead.
+  bool markAccepted = false;
+  /// Ties (false markAccepted): "; indistinguishable from %1 with these data" or "... points".
+  bool tiesWithPoints = false;
+  /// Progress after every candidate (component name, e.g. "rmse_mm") or, when null, after every round.
+  const char* candidateComponent = nullptr;
+};
+
+/// One run of the loop (for keepNamedOnlyWhenNeeded, diagnosis.h). `d` carries the domain, units,
+/// baseline and notes set by the caller; the loop adds the effects and the domain finishes it.
+LoopRun runLoop(LoopDomain& domain, const LoopStyle& style, const std::set<std::string>& excluded,
+                Observer* observer, Diagnosis d);
+
+}  // namespace metrofit::diagnose
