@@ -2014,6 +2014,45 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Diese Antastpunkte können nicht angezeigt werden:
 %1</translation>
     </message>
+    <message>
+        <source>true max |d| (mm)</source>
+        <translation>wahres max |d| (mm)</translation>
+    </message>
+    <message>
+        <source>true out of tolerance</source>
+        <translation>wirklich außerhalb der Toleranz</translation>
+    </message>
+    <message numerus="yes">
+        <source>Every point is inside the tolerance after %n adjustment(s); the true remaining error is %1 mm at most.</source>
+        <translation>
+            <numerusform>Nach %n Korrektur liegt jeder Punkt in der Toleranz; der wahre Restfehler beträgt höchstens %1 mm.</numerusform>
+            <numerusform>Nach %n Korrekturen liegt jeder Punkt in der Toleranz; der wahre Restfehler beträgt höchstens %1 mm.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>FAILED: the best fit leaves points out of tolerance (form error larger than the tolerance); no WCS adjustment can bring them in. True remaining error %1 mm, %2 point(s) out.</source>
+        <translation>FEHLGESCHLAGEN: die beste Einpassung lässt Punkte außerhalb der Toleranz (Formfehler größer als die Toleranz); keine WKS-Korrektur kann sie hineinbringen. Wahrer Restfehler %1 mm, %2 Punkt(e) außerhalb.</translation>
+    </message>
+    <message>
+        <source>FAILED: the adjustment is beyond the machine&apos;s travel (%1); the WCS was not moved. True remaining error %2 mm.</source>
+        <translation>FEHLGESCHLAGEN: die Korrektur liegt außerhalb des Verfahrbereichs der Maschine (%1); das WKS wurde nicht verschoben. Wahrer Restfehler %2 mm.</translation>
+    </message>
+    <message>
+        <source>FAILED: still out of tolerance after the last adjustment. True remaining error %1 mm.</source>
+        <translation>FEHLGESCHLAGEN: nach der letzten Korrektur weiterhin außerhalb der Toleranz. Wahrer Restfehler %1 mm.</translation>
+    </message>
+    <message>
+        <source>Stopped before the end.</source>
+        <translation>Vor dem Ende angehalten.</translation>
+    </message>
+    <message>
+        <source>Step 7 with the simulator as machine and CMM (the part where the probe found it, with its form error; the %1 fit does not place it; probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
+        <translation>Schritt 7 mit dem Simulator als Maschine und KMG (das Teil dort, wo der Taster es fand, mit seinem Formfehler; die %1-Einpassung platziert es nicht; Antastrauschen %2 mm): messen, einpassen, WKS korrigieren, nachmessen. %3</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>angehalten: %1</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::NotesEdit</name>
@@ -3715,6 +3754,14 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+2"/>
         <source>less, RMS</source>
         <translation>weniger, RMS</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>True remaining error of the simulated part: %1 mm at most, %2 point(s) out of tolerance.</source>
+        <translation>Wahrer Restfehler des simulierten Teils: höchstens %1 mm, %2 Punkt(e) außerhalb der Toleranz.</translation>
     </message>
 </context>
 <context>

@@ -2016,6 +2016,46 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Nie można wyświetlić tych punktów sondowania:
 %1</translation>
     </message>
+    <message>
+        <source>true max |d| (mm)</source>
+        <translation>rzeczywiste max |d| (mm)</translation>
+    </message>
+    <message>
+        <source>true out of tolerance</source>
+        <translation>rzeczywiście poza tolerancją</translation>
+    </message>
+    <message numerus="yes">
+        <source>Every point is inside the tolerance after %n adjustment(s); the true remaining error is %1 mm at most.</source>
+        <translation>
+            <numerusform>Po %n korekcie każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
+            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
+            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>FAILED: the best fit leaves points out of tolerance (form error larger than the tolerance); no WCS adjustment can bring them in. True remaining error %1 mm, %2 point(s) out.</source>
+        <translation>NIEPOWODZENIE: najlepsze dopasowanie pozostawia punkty poza tolerancją (błąd kształtu większy niż tolerancja); żadna korekta układu przedmiotu nie może ich do niej wprowadzić. Rzeczywisty błąd resztkowy %1 mm, punktów poza tolerancją: %2.</translation>
+    </message>
+    <message>
+        <source>FAILED: the adjustment is beyond the machine&apos;s travel (%1); the WCS was not moved. True remaining error %2 mm.</source>
+        <translation>NIEPOWODZENIE: korekta wykracza poza zakres ruchu obrabiarki (%1); układ przedmiotu nie został przesunięty. Rzeczywisty błąd resztkowy %2 mm.</translation>
+    </message>
+    <message>
+        <source>FAILED: still out of tolerance after the last adjustment. True remaining error %1 mm.</source>
+        <translation>NIEPOWODZENIE: po ostatniej korekcie nadal poza tolerancją. Rzeczywisty błąd resztkowy %1 mm.</translation>
+    </message>
+    <message>
+        <source>Stopped before the end.</source>
+        <translation>Zatrzymano przed końcem.</translation>
+    </message>
+    <message>
+        <source>Step 7 with the simulator as machine and CMM (the part where the probe found it, with its form error; the %1 fit does not place it; probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
+        <translation>Krok 7 z symulatorem jako obrabiarką i WMP (przedmiot tam, gdzie znalazła go sonda, z jego błędem kształtu; dopasowanie %1 go nie umieszcza; szum pomiaru %2 mm): pomiar, dopasowanie, korekta układu przedmiotu, ponowny pomiar. %3</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>zatrzymano: %1</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::NotesEdit</name>
@@ -3722,6 +3762,14 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+2"/>
         <source>less, RMS</source>
         <translation>mniej, RMS</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>zatrzymano</translation>
+    </message>
+    <message>
+        <source>True remaining error of the simulated part: %1 mm at most, %2 point(s) out of tolerance.</source>
+        <translation>Rzeczywisty błąd resztkowy symulowanego przedmiotu: najwyżej %1 mm, punktów poza tolerancją: %2.</translation>
     </message>
 </context>
 <context>
