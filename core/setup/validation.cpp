@@ -4,7 +4,7 @@
 #include <cmath>
 #include <map>
 
-#include <Eigen/QR>
+#include <Eigen/SVD>
 #include <atomic>
 #include <exception>
 #include <mutex>
@@ -140,8 +140,14 @@ ValidationResult runValidation(const Model& model, const ValidationOptions& opti
 ShareEstimate estimateSetupShare(const Model& model, const std::vector<std::vector<double>>& sets) {
   const Eigen::MatrixXd G = gainMatrix(model);
   const auto n = static_cast<std::size_t>(G.rows());
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(G);
-  const auto k = static_cast<std::size_t>(qr.rank());
+  // The column space of G from its SVD: setup data that act alike (a work offset and a tool offset on
+  // the same dimensions) make G rank deficient, and n - k must count the independent ones only.
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(G, Eigen::ComputeThinU);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  std::size_t k = 0;
+  for (Eigen::Index i = 0; i < sv.size(); ++i)
+    if (sv(i) > 1e-9 * std::max(1.0, sv(0))) ++k;
+  const Eigen::MatrixXd U = svd.matrixU().leftCols(static_cast<Eigen::Index>(k));
   if (n <= k)
     throw OptionsError(ErrorContext{model.name, 0, 0, "dimensions"},
                        "the share of the setup data needs more dimensions (" + std::to_string(n) +
@@ -154,8 +160,7 @@ ShareEstimate estimateSetupShare(const Model& model, const std::vector<std::vect
                          "a deviation set has " + std::to_string(e.size()) + " values for " +
                              std::to_string(n) + " dimensions");
     const Eigen::Map<const Eigen::VectorXd> v(e.data(), static_cast<Eigen::Index>(n));
-    const Eigen::VectorXd x = qr.solve(v);
-    rss += (v - G * x).squaredNorm();
+    rss += (v - U * (U.transpose() * v)).squaredNorm();
     total += v.squaredNorm();
     ++est.sets;
   }
