@@ -14,8 +14,8 @@
 //   setup validate --model M.json [--sets N] [--trials M] [--methods cripso,pso,...] [--budget N]
 //         [--w1 MM] [--w2 MM] [--seed N] [--data R.csv ...] [--threads N] [--out F]
 //
-// The seed's statistical validation (core/setup/validation.h, Fig. 18): N simulated sets x M trials,
-// the f1(0) range checked against the seed's (-0.011..0.063 mm), the share of the setup data in the
+// The paper's statistical validation (core/setup/validation.h, Fig. 18): N simulated sets x M trials,
+// the f1(0) range checked against the paper's (-0.011..0.063 mm), the share of the setup data in the
 // dimension error estimated on the simulated sets and, with --data, on measured data.
 //
 //   simulate setup --model M.json [--parts N] [--w1 MM] [--w2 MM] [--seed N] [--out R.csv]
@@ -312,12 +312,12 @@ int runSetupValidate(const ValidateArgs& a) {
   j["exact"] = {{"f1_mean_mm", clean(sum.exactF1Mean)},
                 {"bonus_mean_mm", clean(sum.bonusMean)},
                 {"proven", sum.exactProven}};
-  j["seed_range"] = {{"f1_before_min_mm", setup::kSeedF1BeforeMinMm},
-                     {"f1_before_max_mm", setup::kSeedF1BeforeMaxMm},
-                     {"min_band_mm", {clean(sum.minBandLo), clean(sum.minBandHi)}},
-                     {"max_band_mm", {clean(sum.maxBandLo), clean(sum.maxBandHi)}},
-                     {"applies", sum.seedRangeApplies},
-                     {"consistent", sum.seedRangeConsistent}};
+  j["paper_range"] = {{"f1_before_min_mm", setup::kPaperF1BeforeMinMm},
+                      {"f1_before_max_mm", setup::kPaperF1BeforeMaxMm},
+                      {"min_band_mm", {clean(sum.minBandLo), clean(sum.minBandHi)}},
+                      {"max_band_mm", {clean(sum.maxBandLo), clean(sum.maxBandHi)}},
+                      {"applies", sum.paperRangeApplies},
+                      {"consistent", sum.paperRangeConsistent}};
   nlohmann::json methods = nlohmann::json::object();
   for (const setup::ValidationMethodSummary& m : sum.methods) {
     methods[m.method] = {{"trials", m.trials},
@@ -335,7 +335,7 @@ int runSetupValidate(const ValidateArgs& a) {
     dataShare = setup::estimateSetupShare(model, setup::partDeviationSets(model, *measured));
     nlohmann::json d = shareJson(*dataShare);
     d["data"] = a.data;
-    // The seed's comparison with Fig. 18: what the data's exact optimum reaches against what the
+    // The paper's comparison with Fig. 18: what the data's exact optimum reaches against what the
     // validation foresees for the data's f1 before correction.
     const setup::SetupInstance inst(model, *measured);
     const double exactF1 = setup::solveExact(inst).score.f1;
@@ -369,10 +369,11 @@ int runSetupValidate(const ValidateArgs& a) {
 
   std::string line = "setup validate: " + std::to_string(sum.sets) + " sets x " + std::to_string(a.trials) +
                      " trials of " + a.methods + ", w1 " + fmt(a.w1, 3) + " w2 " + fmt(a.w2, 3) +
-                     " mm: f1 before " + fmt(sum.f1BeforeMin) + " .. " + fmt(sum.f1BeforeMax) + " mm (seed " +
-                     fmt(setup::kSeedF1BeforeMinMm, 3) + " .. " + fmt(setup::kSeedF1BeforeMaxMm, 3) + ": " +
-                     (sum.seedRangeApplies ? (sum.seedRangeConsistent ? "consistent" : "NOT consistent")
-                                           : "other weights, not compared") +
+                     " mm: f1 before " + fmt(sum.f1BeforeMin) + " .. " + fmt(sum.f1BeforeMax) +
+                     " mm (paper " + fmt(setup::kPaperF1BeforeMinMm, 3) + " .. " +
+                     fmt(setup::kPaperF1BeforeMaxMm, 3) + ": " +
+                     (sum.paperRangeApplies ? (sum.paperRangeConsistent ? "consistent" : "NOT consistent")
+                                            : "other weights, not compared") +
                      ")";
   for (const setup::ValidationMethodSummary& m : sum.methods)
     line += "; " + m.method + " mean gap " + fmt(m.meanGapF1) + " mm, " + std::to_string(m.withinStep) + "/" +
@@ -417,7 +418,7 @@ void registerSetupCommand(CLI::App& app) {
 
   auto v = std::make_shared<ValidateArgs>();
   auto* val = sub->add_subcommand(
-      "validate", "The seed's statistical validation: N simulated sets x M trials, Fig. 18, w1, w2");
+      "validate", "The setup paper's statistical validation: N simulated sets x M trials, Fig. 18, w1, w2");
   existingFile(val->add_option("--model", v->model, "Setup model (relation graph, JSON)")->required());
   val->add_option("--sets", v->sets, "Simulated measurement sets N")
       ->check(CLI::Range(1, 1000000))

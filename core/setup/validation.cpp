@@ -257,11 +257,11 @@ ValidationSummary summarizeValidation(const Model& model, const ValidationOption
     m.meanF1 /= static_cast<double>(m.trials);
     m.meanGapF1 /= static_cast<double>(m.trials);
   }
-  sum.seedRangeApplies = std::abs(options.simulation.w1 - kSeedW1Mm) < 1e-12 &&
-                         std::abs(options.simulation.w2 - kSeedW2Mm) < 1e-12 && sum.sets > 0;
-  if (sum.seedRangeApplies) {
+  sum.paperRangeApplies = std::abs(options.simulation.w1 - kPaperW1Mm) < 1e-12 &&
+                          std::abs(options.simulation.w2 - kPaperW2Mm) < 1e-12 && sum.sets > 0;
+  if (sum.paperRangeApplies) {
     std::vector<double> mins, maxs;
-    for (int b = 0; b < kSeedRangeReplicates; ++b) {
+    for (int b = 0; b < kPaperRangeReplicates; ++b) {
       SetupSimOptions sim = options.simulation;
       sim.seed = trialSeed(options.simulation.seed, static_cast<std::size_t>(b), 1000003, 0);
       double lo = 0.0, hi = 0.0;
@@ -285,8 +285,8 @@ ValidationSummary summarizeValidation(const Model& model, const ValidationOption
     sum.minBandHi = quantile(mins, 0.99);
     sum.maxBandLo = quantile(maxs, 0.01);
     sum.maxBandHi = quantile(maxs, 0.99);
-    sum.seedRangeConsistent = kSeedF1BeforeMinMm >= sum.minBandLo && kSeedF1BeforeMinMm <= sum.minBandHi &&
-                              kSeedF1BeforeMaxMm >= sum.maxBandLo && kSeedF1BeforeMaxMm <= sum.maxBandHi;
+    sum.paperRangeConsistent = kPaperF1BeforeMinMm >= sum.minBandLo && kPaperF1BeforeMinMm <= sum.minBandHi &&
+                               kPaperF1BeforeMaxMm >= sum.maxBandLo && kPaperF1BeforeMaxMm <= sum.maxBandHi;
   }
   if (!deviations.empty()) sum.share = estimateSetupShare(model, deviations);
   return sum;

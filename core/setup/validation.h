@@ -12,24 +12,24 @@
 // also stops the running metaheuristics); a cancelled run returns the sets that were complete. The progress
 // callback is called (serialised) after every finished set.
 //
-// ---- The seed's range (summarizeValidation) ----
-// The seed reports, for its 100 sets of the practical example with w1 = 0.03 and w2 = 0.02 mm, the
-// error budget before correction "within -0.011 to 0.063" (mm). The summary gives the range of f1(0)
-// over the run's sets and checks the seed's range against the simulator: the extremes of N sets scatter
-// (the minimum of 100 draws by some 0.03 mm between seeds), so kSeedRangeReplicates further runs of N
+// ---- The paper's range (summarizeValidation) ----
+// The paper (Stryczek 2016) reports, for its 100 sets of the practical example with w1 = 0.03 and w2 = 0.02
+// mm, the error budget before correction "within -0.011 to 0.063" (mm). The summary gives the range of f1(0)
+// over the run's sets and checks the paper's range against the simulator: the extremes of N sets scatter
+// (the minimum of 100 draws by some 0.03 mm between seeds), so kPaperRangeReplicates further runs of N
 // sets (f1(0) only, simulation seeds derived from the run's) give the 1 % and 99 % quantiles of the
-// minimum and of the maximum; the seed's range is consistent when its minimum and its maximum each lie
-// inside their band. The check applies only with the seed's weights (otherwise: not applicable).
+// minimum and of the maximum; the paper's range is consistent when its minimum and its maximum each lie
+// inside their band. The check applies only with the paper's weights (otherwise: not applicable).
 //
 // ---- The share of the setup data in the dimension error (estimateSetupShare) ----
-// The seed proposes to "estimate the share of the setup data error in the total machining error" (its
+// The paper proposes to "estimate the share of the setup data error in the total machining error" (its
 // example: a 60 % share, w1 / (w1 + w2) = 0.03 / 0.05). With Eq. 12-13 a set of deviations is
 //   e = G s + r,   s_i ~ U(-w1, w1),   r_q ~ U(-w2, w2),   Var U(-w, w) = w^2 / 3,
 // so, with P the projector on the columns of G (rank k) and n dimensions, by the method of moments
 //   E |(I - P) e|^2 = (n - k) w2^2 / 3                 =>  w2^2 = 3 RSS / (n - k)
 //   E |e|^2         = w1^2 ||G||_F^2 / 3 + n w2^2 / 3   =>  w1^2 = (3 |e|^2 - n w2^2) / ||G||_F^2 (>= 0)
 // pooled over all sets (sums of RSS, (n - k) and |e|^2). Reported: the weight share w1 / (w1 + w2)
-// (the seed's "share", 0.6 for its weights) and the variance share w1^2 ||G||_F^2 / (w1^2 ||G||_F^2 +
+// (the paper's "share", 0.6 for its weights) and the variance share w1^2 ||G||_F^2 / (w1^2 ||G||_F^2 +
 // n w2^2), the part of the dimension error variance the setup data explain. On the validation's own
 // sets it must recover the configured weights; on measured data (every part of a CMM series one set)
 // it says how much of the error a setup correction can address.
@@ -84,12 +84,12 @@ struct ValidationResult {
 /// Seed of trial t of method number m on set j.
 std::uint64_t trialSeed(std::uint64_t seed, std::size_t set, std::size_t method, int trial);
 
-/// The seed's range of f1(0) (mm) over its 100 sets, its weights and the tolerance of the check.
-inline constexpr double kSeedF1BeforeMinMm = -0.011;
-inline constexpr double kSeedF1BeforeMaxMm = 0.063;
-inline constexpr double kSeedW1Mm = 0.03;
-inline constexpr double kSeedW2Mm = 0.02;
-inline constexpr int kSeedRangeReplicates = 200;
+/// The paper's range of f1(0) (mm) over its 100 sets, its weights and the tolerance of the check.
+inline constexpr double kPaperF1BeforeMinMm = -0.011;
+inline constexpr double kPaperF1BeforeMaxMm = 0.063;
+inline constexpr double kPaperW1Mm = 0.03;
+inline constexpr double kPaperW2Mm = 0.02;
+inline constexpr int kPaperRangeReplicates = 200;
 
 struct ShareEstimate {
   std::size_t sets = 0;        ///< deviation vectors used
@@ -123,15 +123,15 @@ struct ValidationSummary {
   double exactF1Mean = 0.0;                                         ///< mm
   double bonusMean = 0.0;                                           ///< mean of exact f1 - f1(0), mm
   std::size_t exactProven = 0;
-  bool seedRangeApplies = false;  ///< the run used the seed's weights
-  bool seedRangeConsistent = false;
+  bool paperRangeApplies = false;  ///< the run used the paper's weights
+  bool paperRangeConsistent = false;
   double minBandLo = 0.0, minBandHi = 0.0;       ///< 1 % / 99 % quantiles of min f1(0) over N sets, mm
   double maxBandLo = 0.0, maxBandHi = 0.0;       ///< the same for max f1(0), mm
   std::vector<ValidationMethodSummary> methods;  ///< in the order of options.methods
   ShareEstimate share;                           ///< estimateSetupShare on the simulated sets
 };
 
-/// The seed's reading of Fig. 18 ("for a 60 % share and an initial error budget of 0.022 the foreseen
+/// The paper's reading of Fig. 18 ("for a 60 % share and an initial error budget of 0.022 the foreseen
 /// error budget amounted to 0.085"): the f1 after correction (exact optimum) the validation foresees for
 /// a set with f1(0) = f1Before, from the least-squares line of exact f1 on f1(0) over the sets. A
 /// measured set that reaches less than that has a smaller setup share than the validation's. NaN with

@@ -132,14 +132,14 @@ TEST(SetupShare, PartDeviationSetsAverageRepeatedRowsAndSkipIncompleteParts) {
   EXPECT_DOUBLE_EQ(sets[0][n - 1], 0.01 * static_cast<double>(n - 1));
 }
 
-TEST(SetupValidation, SummaryAndTheSeedsRange) {
+TEST(SetupValidation, SummaryAndThePapersRange) {
   const Model m = readModel(test::paperModelPath());
   ValidationOptions o = smallRun();
   o.sets = 100;
   o.trials = 1;
   o.methods = {"cripso"};
-  o.simulation.w1 = kSeedW1Mm;
-  o.simulation.w2 = kSeedW2Mm;
+  o.simulation.w1 = kPaperW1Mm;
+  o.simulation.w2 = kPaperW2Mm;
   const ValidationResult r = runValidation(m, o);
   const ValidationSummary sum = summarizeValidation(m, o, r);
   ASSERT_EQ(sum.sets, 100u);
@@ -155,17 +155,17 @@ TEST(SetupValidation, SummaryAndTheSeedsRange) {
   EXPECT_EQ(sum.methods[0].trials, 100u);
   EXPECT_NEAR(sum.methods[0].meanGapF1, gap / 100.0, 1e-12);
   EXPECT_EQ(sum.exactProven, 100u);
-  // The seed's practical example with its weights: the seed's range -0.011..0.063 mm is inside the
+  // The paper's practical example with its weights: the paper's range -0.011..0.063 mm is inside the
   // bands of the simulator's extremes, and the bands hold this run's own extremes too.
-  EXPECT_TRUE(sum.seedRangeApplies);
-  EXPECT_TRUE(sum.seedRangeConsistent);
-  EXPECT_LT(sum.minBandLo, kSeedF1BeforeMinMm);
-  EXPECT_GT(sum.maxBandHi, kSeedF1BeforeMaxMm);
+  EXPECT_TRUE(sum.paperRangeApplies);
+  EXPECT_TRUE(sum.paperRangeConsistent);
+  EXPECT_LT(sum.minBandLo, kPaperF1BeforeMinMm);
+  EXPECT_GT(sum.maxBandHi, kPaperF1BeforeMaxMm);
   EXPECT_LT(sum.minBandLo, lo);
   EXPECT_GT(sum.minBandHi, lo);
   EXPECT_NEAR(sum.share.weightShare, 0.6, 0.05);
 
-  // Tolerances 0.05 mm wider on both sides: every budget grows by 0.05 mm, so the seed's range is
+  // Tolerances 0.05 mm wider on both sides: every budget grows by 0.05 mm, so the paper's range is
   // no longer what this model gives.
   Model wide = m;
   for (Dimension& d : wide.dimensions) {
@@ -175,13 +175,13 @@ TEST(SetupValidation, SummaryAndTheSeedsRange) {
   const ValidationResult rw = runValidation(wide, o);
   const ValidationSummary sw = summarizeValidation(wide, o, rw);
   EXPECT_NEAR(sw.f1BeforeMin, lo + 0.05, 1e-9);
-  EXPECT_TRUE(sw.seedRangeApplies);
-  EXPECT_FALSE(sw.seedRangeConsistent);
+  EXPECT_TRUE(sw.paperRangeApplies);
+  EXPECT_FALSE(sw.paperRangeConsistent);
   // Other weights: not compared.
   ValidationOptions other = o;
   other.simulation.w1 = 0.05;
   other.trials = 0;
-  EXPECT_FALSE(summarizeValidation(m, other, runValidation(m, other)).seedRangeApplies);
+  EXPECT_FALSE(summarizeValidation(m, other, runValidation(m, other)).paperRangeApplies);
 }
 
 TEST(SetupValidation, ForeseenF1IsTheLeastSquaresLine) {
