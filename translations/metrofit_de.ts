@@ -5501,6 +5501,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <source>%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.</source>
         <translation>%1: mittlerer Abstand zum exakten f1 %2 mm; %3 von %4 Versuchen innerhalb eines Rasterschritts.</translation>
     </message>
+    <message>
+        <source>The paper&apos;s range %1 to %2 mm is consistent with the simulator (its minimum lies in %3 to %4 mm, its maximum in %5 to %6 mm over 100 sets, 98 % bands).</source>
+        <translation>Der Bereich des Artikels, %1 bis %2 mm, ist mit dem Simulator vereinbar (sein Minimum liegt in %3 bis %4 mm, sein Maximum in %5 bis %6 mm über 100 Sätze, 98-%-Bänder).</translation>
+    </message>
+    <message>
+        <source>NOT consistent: the paper&apos;s range %1 to %2 mm lies outside the simulator&apos;s bands (minimum %3 to %4 mm, maximum %5 to %6 mm over 100 sets, 98 %).</source>
+        <translation>NICHT vereinbar: der Bereich des Artikels, %1 bis %2 mm, liegt außerhalb der Bänder des Simulators (Minimum %3 bis %4 mm, Maximum %5 bis %6 mm über 100 Sätze, 98 %).</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s range (%1 to %2 mm) is for w1 = 0.03 and w2 = 0.02 mm: not compared.</source>
+        <translation>Der Bereich des Artikels (%1 bis %2 mm) gilt für w1 = 0,03 und w2 = 0,02 mm: nicht verglichen.</translation>
+    </message>
+    <message>
+        <source>Share of the setup data in the dimension error, estimated from the sets: %1 % of the weights (configured %2 %), %3 % of the variance.</source>
+        <translation>Anteil der Einrichtdaten am Maßfehler, aus den Sätzen geschätzt: %1 % der Gewichte (eingestellt %2 %), %3 % der Varianz.</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::SpcView</name>

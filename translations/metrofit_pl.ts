@@ -5520,6 +5520,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <source>%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.</source>
         <translation>%1: średnia różnica do dokładnego f1 %2 mm; %3 z %4 prób w granicach jednego kroku siatki.</translation>
     </message>
+    <message>
+        <source>The paper&apos;s range %1 to %2 mm is consistent with the simulator (its minimum lies in %3 to %4 mm, its maximum in %5 to %6 mm over 100 sets, 98 % bands).</source>
+        <translation>Zakres z artykułu, od %1 do %2 mm, jest zgodny z symulatorem (jego minimum leży w przedziale od %3 do %4 mm, maksimum od %5 do %6 mm dla 100 zestawów, pasma 98 %).</translation>
+    </message>
+    <message>
+        <source>NOT consistent: the paper&apos;s range %1 to %2 mm lies outside the simulator&apos;s bands (minimum %3 to %4 mm, maximum %5 to %6 mm over 100 sets, 98 %).</source>
+        <translation>NIEZGODNY: zakres z artykułu, od %1 do %2 mm, leży poza pasmami symulatora (minimum od %3 do %4 mm, maksimum od %5 do %6 mm dla 100 zestawów, 98 %).</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s range (%1 to %2 mm) is for w1 = 0.03 and w2 = 0.02 mm: not compared.</source>
+        <translation>Zakres z artykułu (od %1 do %2 mm) dotyczy w1 = 0,03 i w2 = 0,02 mm: nie porównano.</translation>
+    </message>
+    <message>
+        <source>Share of the setup data in the dimension error, estimated from the sets: %1 % of the weights (configured %2 %), %3 % of the variance.</source>
+        <translation>Udział danych ustawczych w błędzie wymiaru, oszacowany z zestawów: %1 % wag (ustawiono %2 %), %3 % wariancji.</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::SpcView</name>

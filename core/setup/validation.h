@@ -15,11 +15,11 @@
 // ---- The paper's range (summarizeValidation) ----
 // The paper (Stryczek 2016) reports, for its 100 sets of the practical example with w1 = 0.03 and w2 = 0.02
 // mm, the error budget before correction "within -0.011 to 0.063" (mm). The summary gives the range of f1(0)
-// over the run's sets and checks the paper's range against the simulator: the extremes of N sets scatter
-// (the minimum of 100 draws by some 0.03 mm between seeds), so kPaperRangeReplicates further runs of N
-// sets (f1(0) only, simulation seeds derived from the run's) give the 1 % and 99 % quantiles of the
-// minimum and of the maximum; the paper's range is consistent when its minimum and its maximum each lie
-// inside their band. The check applies only with the paper's weights (otherwise: not applicable).
+// over the run's sets and checks the paper's range against the simulator: the extremes of 100 sets
+// scatter (the minimum by some 0.03 mm between simulation seeds), so kPaperRangeReplicates further runs of
+// kPaperSets sets (f1(0) only, simulation seeds derived from the run's) give the 1 % and 99 % quantiles
+// of the minimum and of the maximum; the paper's range is consistent when its minimum and its maximum
+// each lie inside their band. The check applies only with the paper's weights (otherwise: not applicable).
 //
 // ---- The share of the setup data in the dimension error (estimateSetupShare) ----
 // The paper proposes to "estimate the share of the setup data error in the total machining error" (its
@@ -90,6 +90,7 @@ inline constexpr double kPaperF1BeforeMaxMm = 0.063;
 inline constexpr double kPaperW1Mm = 0.03;
 inline constexpr double kPaperW2Mm = 0.02;
 inline constexpr int kPaperRangeReplicates = 200;
+inline constexpr std::size_t kPaperSets = 100;
 
 struct ShareEstimate {
   std::size_t sets = 0;        ///< deviation vectors used

@@ -190,6 +190,8 @@ TEST_F(SetupPageTest, ConvergenceViewOverlaysExactCripsoAndPso) {
 
 TEST_F(SetupPageTest, ValidationRunsAndCancels) {
   SetupValidationView* v = page_->validationView();
+  EXPECT_EQ(v->sets(), 100);  // the paper's 100 sets x 10 trials by default
+  EXPECT_EQ(v->trials(), 10);
   v->setSets(6);
   v->setTrials(2);
   v->setBudget(2000);
@@ -201,6 +203,11 @@ TEST_F(SetupPageTest, ValidationRunsAndCancels) {
   EXPECT_TRUE(v->summaryText().contains(QStringLiteral("CRIPSO: mean gap")))
       << v->summaryText().toStdString();
   EXPECT_EQ(v->progressBar()->value(), 6);
+  // The paper's range is checked (w1 = 0.03, w2 = 0.02 by default) and the setup share estimated.
+  EXPECT_TRUE(v->summaryText().contains(QStringLiteral("is consistent with the simulator")))
+      << v->summaryText().toStdString();
+  EXPECT_TRUE(v->summaryText().contains(QStringLiteral("Share of the setup data")))
+      << v->summaryText().toStdString();
   page_->tabs()->setCurrentIndex(3);
   grab("setuppage_validation.png");
   v->setSets(5000);
