@@ -5517,6 +5517,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <source>Share of the setup data in the dimension error, estimated from the sets: %1 % of the weights (configured %2 %), %3 % of the variance.</source>
         <translation>Anteil der Einrichtdaten am Maßfehler, aus den Sätzen geschätzt: %1 % der Gewichte (eingestellt %2 %), %3 % der Varianz.</translation>
     </message>
+    <message numerus="yes">
+        <source>In the project&apos;s measurements (%n part(s)): %1 % of the weights, %2 % of the variance.</source>
+        <translation>
+            <numerusform>In den Messungen des Projekts (%n Teil): %1 % der Gewichte, %2 % der Varianz.</numerusform>
+            <numerusform>In den Messungen des Projekts (%n Teile): %1 % der Gewichte, %2 % der Varianz.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The setup share of the measurements cannot be estimated: %1</source>
+        <translation>Der Anteil der Einrichtdaten in den Messungen kann nicht geschätzt werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::SpcView</name>

@@ -5536,6 +5536,18 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <source>Share of the setup data in the dimension error, estimated from the sets: %1 % of the weights (configured %2 %), %3 % of the variance.</source>
         <translation>Udział danych ustawczych w błędzie wymiaru, oszacowany z zestawów: %1 % wag (ustawiono %2 %), %3 % wariancji.</translation>
     </message>
+    <message numerus="yes">
+        <source>In the project&apos;s measurements (%n part(s)): %1 % of the weights, %2 % of the variance.</source>
+        <translation>
+            <numerusform>W pomiarach projektu (%n przedmiot): %1 % wag, %2 % wariancji.</numerusform>
+            <numerusform>W pomiarach projektu (%n przedmioty): %1 % wag, %2 % wariancji.</numerusform>
+            <numerusform>W pomiarach projektu (%n przedmiotów): %1 % wag, %2 % wariancji.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The setup share of the measurements cannot be estimated: %1</source>
+        <translation>Nie można oszacować udziału danych ustawczych w pomiarach: %1</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::SpcView</name>

@@ -37,6 +37,7 @@ struct Outcome {
 struct SetupValidationView::Impl {
   setup::Model model;
   bool hasModel = false;
+  std::vector<std::vector<double>> measuredSets;  ///< per part, for the view's model (may be empty)
   QSpinBox* sets = nullptr;
   QSpinBox* trials = nullptr;
   QSpinBox* budget = nullptr;
@@ -151,8 +152,16 @@ SetupValidationView::~SetupValidationView() {
 
 void SetupValidationView::setModel(const setup::Model& model) {
   d->model = model;
+  d->measuredSets.clear();
   d->hasModel = setup::checkModel(model).empty();
   d->run->setEnabled(d->hasModel && !isRunning());
+}
+
+void SetupValidationView::setMeasurements(const setup::Model& measModel,
+                                          const setup::Measurements* measurements) {
+  d->measuredSets.clear();
+  if (measurements == nullptr || !d->hasModel || measModel.dimensionIds() != d->model.dimensionIds()) return;
+  d->measuredSets = setup::partDeviationSets(measModel, *measurements);
 }
 
 void SetupValidationView::setSets(int sets) {
@@ -298,6 +307,18 @@ void SetupValidationView::onFinished() {
                .arg(locale.toString(100.0 * sum.share.weightShare, 'f', 0))
                .arg(locale.toString(100.0 * configured, 'f', 0))
                .arg(locale.toString(100.0 * sum.share.varianceShare, 'f', 0));
+  if (!d->measuredSets.empty()) {
+    try {
+      const setup::ShareEstimate data = setup::estimateSetupShare(d->model, d->measuredSets);
+      lines << tr("In the project's measurements (%n part(s)): %1 % of the weights, %2 % of the variance.",
+                  "", static_cast<int>(data.sets))
+                   .arg(locale.toString(100.0 * data.weightShare, 'f', 0))
+                   .arg(locale.toString(100.0 * data.varianceShare, 'f', 0));
+    } catch (const std::exception& e) {
+      lines << tr("The setup share of the measurements cannot be estimated: %1")
+                   .arg(QString::fromStdString(e.what()));
+    }
+  }
   d->summary->setText(lines.join(QLatin1Char('\n')));
   emit finished();
 }

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "core/setup/model.h"
+#include "core/setup/report.h"
 
 class QProgressBar;
 class QPushButton;
@@ -27,6 +28,10 @@ class SetupValidationView : public QWidget {
 
   /// The model the validation simulates (a new model clears the result).
   void setModel(const setup::Model& model);
+  /// The project's measurements, read against `measModel`: the summary adds the setup share
+  /// estimated in them (validation.h partDeviationSets, estimateSetupShare) while the view's model
+  /// has the same dimensions. nullptr clears them.
+  void setMeasurements(const setup::Model& measModel, const setup::Measurements* measurements);
   void setSets(int sets);
   void setTrials(int trials);
   void setBudget(long budget);
