@@ -2014,6 +2014,45 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Diese Antastpunkte können nicht angezeigt werden:
 %1</translation>
     </message>
+    <message>
+        <source>true max |d| (mm)</source>
+        <translation>wahres max |d| (mm)</translation>
+    </message>
+    <message>
+        <source>true out of tolerance</source>
+        <translation>wirklich außerhalb der Toleranz</translation>
+    </message>
+    <message numerus="yes">
+        <source>Every point is inside the tolerance after %n adjustment(s); the true remaining error is %1 mm at most.</source>
+        <translation>
+            <numerusform>Nach %n Korrektur liegt jeder Punkt in der Toleranz; der wahre Restfehler beträgt höchstens %1 mm.</numerusform>
+            <numerusform>Nach %n Korrekturen liegt jeder Punkt in der Toleranz; der wahre Restfehler beträgt höchstens %1 mm.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>FAILED: the best fit leaves points out of tolerance (form error larger than the tolerance); no WCS adjustment can bring them in. True remaining error %1 mm, %2 point(s) out.</source>
+        <translation>FEHLGESCHLAGEN: die beste Einpassung lässt Punkte außerhalb der Toleranz (Formfehler größer als die Toleranz); keine WKS-Korrektur kann sie hineinbringen. Wahrer Restfehler %1 mm, %2 Punkt(e) außerhalb.</translation>
+    </message>
+    <message>
+        <source>FAILED: the adjustment is beyond the machine&apos;s travel (%1); the WCS was not moved. True remaining error %2 mm.</source>
+        <translation>FEHLGESCHLAGEN: die Korrektur liegt außerhalb des Verfahrbereichs der Maschine (%1); das WKS wurde nicht verschoben. Wahrer Restfehler %2 mm.</translation>
+    </message>
+    <message>
+        <source>FAILED: still out of tolerance after the last adjustment. True remaining error %1 mm.</source>
+        <translation>FEHLGESCHLAGEN: nach der letzten Korrektur weiterhin außerhalb der Toleranz. Wahrer Restfehler %1 mm.</translation>
+    </message>
+    <message>
+        <source>Stopped before the end.</source>
+        <translation>Vor dem Ende angehalten.</translation>
+    </message>
+    <message>
+        <source>Step 7 with the simulator as machine and CMM (the part where the probe found it, with its form error; the %1 fit does not place it; probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
+        <translation>Schritt 7 mit dem Simulator als Maschine und KMG (das Teil dort, wo der Taster es fand, mit seinem Formfehler; die %1-Einpassung platziert es nicht; Antastrauschen %2 mm): messen, einpassen, WKS korrigieren, nachmessen. %3</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>angehalten: %1</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::NotesEdit</name>
@@ -3715,6 +3754,14 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+2"/>
         <source>less, RMS</source>
         <translation>weniger, RMS</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>True remaining error of the simulated part: %1 mm at most, %2 point(s) out of tolerance.</source>
+        <translation>Wahrer Restfehler des simulierten Teils: höchstens %1 mm, %2 Punkt(e) außerhalb der Toleranz.</translation>
     </message>
 </context>
 <context>
@@ -5476,6 +5523,33 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+3"/>
         <source>%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.</source>
         <translation>%1: mittlerer Abstand zum exakten f1 %2 mm; %3 von %4 Versuchen innerhalb eines Rasterschritts.</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s range %1 to %2 mm is consistent with the simulator (its minimum lies in %3 to %4 mm, its maximum in %5 to %6 mm over 100 sets, 98 % bands).</source>
+        <translation>Der Bereich des Artikels, %1 bis %2 mm, ist mit dem Simulator vereinbar (sein Minimum liegt in %3 bis %4 mm, sein Maximum in %5 bis %6 mm über 100 Sätze, 98-%-Bänder).</translation>
+    </message>
+    <message>
+        <source>NOT consistent: the paper&apos;s range %1 to %2 mm lies outside the simulator&apos;s bands (minimum %3 to %4 mm, maximum %5 to %6 mm over 100 sets, 98 %).</source>
+        <translation>NICHT vereinbar: der Bereich des Artikels, %1 bis %2 mm, liegt außerhalb der Bänder des Simulators (Minimum %3 bis %4 mm, Maximum %5 bis %6 mm über 100 Sätze, 98 %).</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s range (%1 to %2 mm) is for w1 = 0.03 and w2 = 0.02 mm: not compared.</source>
+        <translation>Der Bereich des Artikels (%1 bis %2 mm) gilt für w1 = 0,03 und w2 = 0,02 mm: nicht verglichen.</translation>
+    </message>
+    <message>
+        <source>Share of the setup data in the dimension error, estimated from the sets: %1 % of the weights (configured %2 %), %3 % of the variance.</source>
+        <translation>Anteil der Einrichtdaten am Maßfehler, aus den Sätzen geschätzt: %1 % der Gewichte (eingestellt %2 %), %3 % der Varianz.</translation>
+    </message>
+    <message numerus="yes">
+        <source>In the project&apos;s measurements (%n part(s)): %1 % of the weights, %2 % of the variance.</source>
+        <translation>
+            <numerusform>In den Messungen des Projekts (%n Teil): %1 % der Gewichte, %2 % der Varianz.</numerusform>
+            <numerusform>In den Messungen des Projekts (%n Teile): %1 % der Gewichte, %2 % der Varianz.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The setup share of the measurements cannot be estimated: %1</source>
+        <translation>Der Anteil der Einrichtdaten in den Messungen kann nicht geschätzt werden: %1</translation>
     </message>
 </context>
 <context>

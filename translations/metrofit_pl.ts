@@ -2016,6 +2016,46 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Nie można wyświetlić tych punktów sondowania:
 %1</translation>
     </message>
+    <message>
+        <source>true max |d| (mm)</source>
+        <translation>rzeczywiste max |d| (mm)</translation>
+    </message>
+    <message>
+        <source>true out of tolerance</source>
+        <translation>rzeczywiście poza tolerancją</translation>
+    </message>
+    <message numerus="yes">
+        <source>Every point is inside the tolerance after %n adjustment(s); the true remaining error is %1 mm at most.</source>
+        <translation>
+            <numerusform>Po %n korekcie każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
+            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
+            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>FAILED: the best fit leaves points out of tolerance (form error larger than the tolerance); no WCS adjustment can bring them in. True remaining error %1 mm, %2 point(s) out.</source>
+        <translation>NIEPOWODZENIE: najlepsze dopasowanie pozostawia punkty poza tolerancją (błąd kształtu większy niż tolerancja); żadna korekta układu przedmiotu nie może ich do niej wprowadzić. Rzeczywisty błąd resztkowy %1 mm, punktów poza tolerancją: %2.</translation>
+    </message>
+    <message>
+        <source>FAILED: the adjustment is beyond the machine&apos;s travel (%1); the WCS was not moved. True remaining error %2 mm.</source>
+        <translation>NIEPOWODZENIE: korekta wykracza poza zakres ruchu obrabiarki (%1); układ przedmiotu nie został przesunięty. Rzeczywisty błąd resztkowy %2 mm.</translation>
+    </message>
+    <message>
+        <source>FAILED: still out of tolerance after the last adjustment. True remaining error %1 mm.</source>
+        <translation>NIEPOWODZENIE: po ostatniej korekcie nadal poza tolerancją. Rzeczywisty błąd resztkowy %1 mm.</translation>
+    </message>
+    <message>
+        <source>Stopped before the end.</source>
+        <translation>Zatrzymano przed końcem.</translation>
+    </message>
+    <message>
+        <source>Step 7 with the simulator as machine and CMM (the part where the probe found it, with its form error; the %1 fit does not place it; probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
+        <translation>Krok 7 z symulatorem jako obrabiarką i WMP (przedmiot tam, gdzie znalazła go sonda, z jego błędem kształtu; dopasowanie %1 go nie umieszcza; szum pomiaru %2 mm): pomiar, dopasowanie, korekta układu przedmiotu, ponowny pomiar. %3</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>zatrzymano: %1</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::NotesEdit</name>
@@ -3722,6 +3762,14 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+2"/>
         <source>less, RMS</source>
         <translation>mniej, RMS</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>zatrzymano</translation>
+    </message>
+    <message>
+        <source>True remaining error of the simulated part: %1 mm at most, %2 point(s) out of tolerance.</source>
+        <translation>Rzeczywisty błąd resztkowy symulowanego przedmiotu: najwyżej %1 mm, punktów poza tolerancją: %2.</translation>
     </message>
 </context>
 <context>
@@ -5495,6 +5543,34 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+3"/>
         <source>%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.</source>
         <translation>%1: średnia różnica do dokładnego f1 %2 mm; %3 z %4 prób w granicach jednego kroku siatki.</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s range %1 to %2 mm is consistent with the simulator (its minimum lies in %3 to %4 mm, its maximum in %5 to %6 mm over 100 sets, 98 % bands).</source>
+        <translation>Zakres z artykułu, od %1 do %2 mm, jest zgodny z symulatorem (jego minimum leży w przedziale od %3 do %4 mm, maksimum od %5 do %6 mm dla 100 zestawów, pasma 98 %).</translation>
+    </message>
+    <message>
+        <source>NOT consistent: the paper&apos;s range %1 to %2 mm lies outside the simulator&apos;s bands (minimum %3 to %4 mm, maximum %5 to %6 mm over 100 sets, 98 %).</source>
+        <translation>NIEZGODNY: zakres z artykułu, od %1 do %2 mm, leży poza pasmami symulatora (minimum od %3 do %4 mm, maksimum od %5 do %6 mm dla 100 zestawów, 98 %).</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s range (%1 to %2 mm) is for w1 = 0.03 and w2 = 0.02 mm: not compared.</source>
+        <translation>Zakres z artykułu (od %1 do %2 mm) dotyczy w1 = 0,03 i w2 = 0,02 mm: nie porównano.</translation>
+    </message>
+    <message>
+        <source>Share of the setup data in the dimension error, estimated from the sets: %1 % of the weights (configured %2 %), %3 % of the variance.</source>
+        <translation>Udział danych ustawczych w błędzie wymiaru, oszacowany z zestawów: %1 % wag (ustawiono %2 %), %3 % wariancji.</translation>
+    </message>
+    <message numerus="yes">
+        <source>In the project&apos;s measurements (%n part(s)): %1 % of the weights, %2 % of the variance.</source>
+        <translation>
+            <numerusform>W pomiarach projektu (%n przedmiot): %1 % wag, %2 % wariancji.</numerusform>
+            <numerusform>W pomiarach projektu (%n przedmioty): %1 % wag, %2 % wariancji.</numerusform>
+            <numerusform>W pomiarach projektu (%n przedmiotów): %1 % wag, %2 % wariancji.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The setup share of the measurements cannot be estimated: %1</source>
+        <translation>Nie można oszacować udziału danych ustawczych w pomiarach: %1</translation>
     </message>
 </context>
 <context>

@@ -3,7 +3,12 @@
 //   match --data P.csv|HOLES.txt [--tolerance T] [--method sade|ga-simplex|closed-form|minimax]
 //   [--allow-scale]
 //         [--machine xfyzba|ac-table|bc-table] [--machine-def M.json] [--lock rx,ry,...]
-//         [--reference ID,ID,ID] [--seed N] [--out F]
+//         [--reference ID,ID,ID] [--seed N] [--out F] [--remeasure [--remeasure-noise MM]]
+//
+// --remeasure runs the remeasure loop of Step 7 on a simulated cell whose part is where the probe
+// found it (core/matching/remeasure.h partAsMeasured) and adds "remeasure" (remeasure.h toJson): the
+// rounds, the true remaining error and the outcome. A loop that fails (form_error, beyond_travel,
+// not_converged) is a result, not an error: exit 0, the summary line says FAILED.
 //
 // Writes the CONTRACT JSON (core/matching/matching.h toJson) plus "machine": the adjustment values of
 // the chosen topology (core/machine/machine.h) and its definition. One summary line on stderr.
@@ -13,6 +18,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -24,6 +30,7 @@
 #include "core/matching/hole_table.h"
 #include "core/matching/matching.h"
 #include "core/matching/probe_points.h"
+#include "core/matching/remeasure.h"
 
 namespace metrofit::cli {
 namespace {
@@ -31,8 +38,8 @@ namespace {
 struct MatchArgs {
   std::string data, method = "sade", machine = "xfyzba", machineDef, lock, reference, out;
   std::uint64_t seed = 1;
-  double tolerance = 0.05;
-  bool allowScale = false;
+  double tolerance = 0.05, remeasureNoise = 0.006;
+  bool allowScale = false, remeasure = false;
 };
 
 std::string fmt(double v) {
@@ -97,6 +104,16 @@ int runMatch(const MatchArgs& a, bool machineGiven) {
   m["definition"] = def.toJson();
   j["machine"] = std::move(m);
   j["data"] = a.data;
+  std::optional<RemeasureResult> loop;
+  if (a.remeasure) {
+    RemeasureOptions ro;
+    ro.match = o;
+    ro.machine = def;
+    loop = remeasureLoop(simulateCell(partAsMeasured(set), a.remeasureNoise, a.seed), ro);
+    nlohmann::json lj = toJson(*loop);
+    lj["noise_mm"] = a.remeasureNoise;
+    j["remeasure"] = std::move(lj);
+  }
   writeResult(a.out, dumpJson(j));
 
   const auto names = machine::rotaryAxisNames(def.topology);
@@ -108,6 +125,11 @@ int runMatch(const MatchArgs& a, bool machineGiven) {
                      machine::topologyName(def.topology) + " S" + names[0] + " " + fmt(adj.rotaryDeg[0]) +
                      " deg, S" + names[1] + " " + fmt(adj.rotaryDeg[1]) + " deg";
   if (!adj.withinTravel) line += " (OUTSIDE TRAVEL: " + adj.travelMessage + ")";
+  if (loop) {
+    line += "; remeasure: " + loop->run.message;
+    if (const ToleranceEvaluation* t = loop->trueRemaining())
+      line += " (true remaining max |dev| " + fmt(t->overall.maxAbsMm) + " mm)";
+  }
   std::fprintf(stderr, "%s\n", line.c_str());
   return 0;
 }
@@ -134,6 +156,11 @@ void registerMatchCommand(CLI::App& app) {
       sub->add_option("--machine-def", a->machineDef, "Machine definition (JSON: pivot lengths, travel)"));
   sub->add_option("--lock", a->lock, "Degrees of freedom held at 0: any of rx,ry,rz,x,y,z");
   sub->add_option("--reference", a->reference, "Three point ids for the rough matching (default: automatic)");
+  sub->add_flag("--remeasure", a->remeasure,
+                "Also run the remeasure loop on a simulated cell holding the measured part");
+  sub->add_option("--remeasure-noise", a->remeasureNoise, "Probing noise of the remeasure loop, mm (1 sigma)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
   addSeed(sub, a->seed);
   addOut(sub, a->out);
   sub->callback([a, machineOpt] {

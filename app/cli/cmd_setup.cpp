@@ -11,6 +11,13 @@
 // method's certificate, and for a metaheuristic the exact optimum and its gap (the exact method
 // always runs: it takes well under a millisecond on the paper's size). One summary line on stderr.
 //
+//   setup validate --model M.json [--sets N] [--trials M] [--methods cripso,pso,...] [--budget N]
+//         [--w1 MM] [--w2 MM] [--seed N] [--data R.csv ...] [--threads N] [--out F]
+//
+// The paper's statistical validation (core/setup/validation.h, Fig. 18): N simulated sets x M trials,
+// the f1(0) range checked against the paper's (-0.011..0.063 mm), the share of the setup data in the
+// dimension error estimated on the simulated sets and, with --data, on measured data.
+//
 //   simulate setup --model M.json [--parts N] [--w1 MM] [--w2 MM] [--seed N] [--out R.csv]
 //
 // A simulated CMM report series (core/sim/setup_sim.h). registerSimulateSetupCommand() is called by
@@ -18,6 +25,7 @@
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -39,6 +47,7 @@
 #include "core/setup/model.h"
 #include "core/setup/objective.h"
 #include "core/setup/report.h"
+#include "core/setup/validation.h"
 #include "core/sim/setup_sim.h"
 
 namespace metrofit::cli {
@@ -241,15 +250,153 @@ int runSetup(const SetupArgs& a) {
   return 0;
 }
 
+struct ValidateArgs {
+  std::string model, methods = "cripso", out;
+  std::vector<std::string> data;
+  int sets = 100, trials = 10, threads = 0;
+  long budget = setup::kPaperBudget;
+  double w1 = 0.03, w2 = 0.02;
+  std::uint64_t seed = 1;
+};
+
+nlohmann::json shareJson(const setup::ShareEstimate& e) {
+  return {{"sets", e.sets},
+          {"w1_mm", clean(e.w1Mm)},
+          {"w2_mm", clean(e.w2Mm)},
+          {"weight_share", clean(e.weightShare)},
+          {"variance_share", clean(e.varianceShare)}};
+}
+
+int runSetupValidate(const ValidateArgs& a) {
+  const setup::Model model = setup::readModel(a.model);
+  setup::ValidationOptions o;
+  o.sets = static_cast<std::size_t>(a.sets);
+  o.trials = a.trials;
+  o.methods = splitList(a.methods);
+  o.budget = a.budget;
+  o.simulation.w1 = a.w1;
+  o.simulation.w2 = a.w2;
+  o.simulation.seed = a.seed;
+  o.seed = a.seed;
+  o.threads = a.threads;
+  for (const std::string& m : o.methods) {
+    const auto names = setup::setupMetaheuristicNames();
+    if (std::find(names.begin(), names.end(), m) == names.end())
+      throw OptionsError(ErrorContext{{}, 0, 0, "--methods"},
+                         "'" + m + "' is not a metaheuristic of the setup correction (cripso, pso, ga, coa)");
+  }
+  std::optional<setup::Measurements> measured;
+  if (!a.data.empty()) measured = setup::readMeasurements(a.data, model);
+
+  const bool tty = ::isatty(::fileno(stderr)) != 0;
+  const setup::ValidationResult r =
+      setup::runValidation(model, o, nullptr, [tty](std::size_t done, std::size_t total) {
+        if (!tty) return;
+        std::fprintf(stderr, "\rsetup validate: set %zu of %zu", done, total);
+        std::fflush(stderr);
+      });
+  if (tty) std::fprintf(stderr, "\r\033[K");
+  const setup::ValidationSummary sum = setup::summarizeValidation(model, o, r);
+
+  nlohmann::json j;
+  j["model"] = a.model;
+  j["sets"] = sum.sets;
+  j["trials"] = a.trials;
+  j["methods"] = o.methods;
+  j["budget"] = a.budget;
+  j["w1_mm"] = a.w1;
+  j["w2_mm"] = a.w2;
+  j["seed"] = a.seed;
+  j["f1_before_mm"] = {
+      {"min", clean(sum.f1BeforeMin)}, {"max", clean(sum.f1BeforeMax)}, {"mean", clean(sum.f1BeforeMean)}};
+  j["exact"] = {{"f1_mean_mm", clean(sum.exactF1Mean)},
+                {"bonus_mean_mm", clean(sum.bonusMean)},
+                {"proven", sum.exactProven}};
+  j["paper_range"] = {{"f1_before_min_mm", setup::kPaperF1BeforeMinMm},
+                      {"f1_before_max_mm", setup::kPaperF1BeforeMaxMm},
+                      {"min_band_mm", {clean(sum.minBandLo), clean(sum.minBandHi)}},
+                      {"max_band_mm", {clean(sum.maxBandLo), clean(sum.maxBandHi)}},
+                      {"applies", sum.paperRangeApplies},
+                      {"consistent", sum.paperRangeConsistent}};
+  nlohmann::json methods = nlohmann::json::object();
+  for (const setup::ValidationMethodSummary& m : sum.methods) {
+    methods[m.method] = {{"trials", m.trials},
+                         {"mean_f1_mm", clean(m.meanF1)},
+                         {"mean_gap_f1_mm", clean(m.meanGapF1)},
+                         {"max_gap_f1_mm", clean(m.maxGapF1)},
+                         {"within_one_step", m.withinStep}};
+  }
+  j["method_summary"] = std::move(methods);
+  nlohmann::json share = shareJson(sum.share);
+  share["configured_weight_share"] = clean(a.w1 + a.w2 > 0.0 ? a.w1 / (a.w1 + a.w2) : 0.0);
+  j["share"] = std::move(share);
+  std::optional<setup::ShareEstimate> dataShare;
+  if (measured) {
+    dataShare = setup::estimateSetupShare(model, setup::partDeviationSets(model, *measured));
+    nlohmann::json d = shareJson(*dataShare);
+    d["data"] = a.data;
+    // The paper's comparison with Fig. 18: what the data's exact optimum reaches against what the
+    // validation foresees for the data's f1 before correction.
+    const setup::SetupInstance inst(model, *measured);
+    const double exactF1 = setup::solveExact(inst).score.f1;
+    const double foreseen = setup::foreseenF1(r, inst.f1Before());
+    d["f1_before_mm"] = clean(inst.f1Before());
+    d["exact_f1_mm"] = clean(exactF1);
+    if (std::isfinite(foreseen)) {
+      d["foreseen_f1_mm"] = clean(foreseen);
+      d["share_than_configured"] = exactF1 < foreseen - model.stepMm   ? "smaller"
+                                   : exactF1 > foreseen + model.stepMm ? "larger"
+                                                                       : "similar";
+    }
+    j["data_share"] = std::move(d);
+  }
+  // Fig. 18: the sets sorted by f1 before correction, with the exact optimum and every trial's f1.
+  nlohmann::json series = nlohmann::json::array();
+  const auto order = r.sortedByBefore();
+  for (std::size_t rank = 0; rank < order.size(); ++rank) {
+    const setup::ValidationSet& vs = r.sets[order[rank]];
+    nlohmann::json trials = nlohmann::json::object();
+    for (const std::string& m : o.methods) trials[m] = nlohmann::json::array();
+    for (const setup::ValidationTrial& t : vs.trials) trials[t.method].push_back(clean(t.f1));
+    series.push_back({{"rank", rank + 1},
+                      {"set", vs.index},
+                      {"f1_before_mm", clean(vs.f1Before)},
+                      {"exact_f1_mm", clean(vs.exactF1)},
+                      {"f1_mm", std::move(trials)}});
+  }
+  j["series"] = std::move(series);
+  writeResult(a.out, dumpJson(j));
+
+  std::string line = "setup validate: " + std::to_string(sum.sets) + " sets x " + std::to_string(a.trials) +
+                     " trials of " + a.methods + ", w1 " + fmt(a.w1, 3) + " w2 " + fmt(a.w2, 3) +
+                     " mm: f1 before " + fmt(sum.f1BeforeMin) + " .. " + fmt(sum.f1BeforeMax) +
+                     " mm (paper " + fmt(setup::kPaperF1BeforeMinMm, 3) + " .. " +
+                     fmt(setup::kPaperF1BeforeMaxMm, 3) + ": " +
+                     (sum.paperRangeApplies ? (sum.paperRangeConsistent ? "consistent" : "NOT consistent")
+                                            : "other weights, not compared") +
+                     ")";
+  for (const setup::ValidationMethodSummary& m : sum.methods)
+    line += "; " + m.method + " mean gap " + fmt(m.meanGapF1) + " mm, " + std::to_string(m.withinStep) + "/" +
+            std::to_string(m.trials) + " within one step";
+  line += "; setup share " + fmt(100.0 * sum.share.weightShare, 0) + " % (configured " +
+          fmt(100.0 * (a.w1 + a.w2 > 0.0 ? a.w1 / (a.w1 + a.w2) : 0.0), 0) + " %)";
+  if (dataShare)
+    line += ", in the data " + fmt(100.0 * dataShare->weightShare, 0) + " % (variance " +
+            fmt(100.0 * dataShare->varianceShare, 0) + " %)";
+  std::fprintf(stderr, "%s\n", line.c_str());
+  return 0;
+}
+
 }  // namespace
 
 void registerSetupCommand(CLI::App& app) {
   auto a = std::make_shared<SetupArgs>();
   auto* sub = app.add_subcommand("setup", "Setup-data correction (work and tool offsets) from CMM reports");
-  existingFile(sub->add_option("--model", a->model, "Setup model (relation graph, JSON)")->required());
-  existingFile(sub->add_option("--data", a->data, "Measurement report(s): CMM series CSV or DMIS output")
-                   ->required()
-                   ->take_all());
+  // --model and --data are required unless `setup validate` runs (checked in the callback).
+  existingFile(sub->add_option("--model", a->model, "Setup model (relation graph, JSON), required"));
+  existingFile(
+      sub->add_option("--data", a->data, "Measurement report(s): CMM series CSV or DMIS output, required")
+          ->take_all());
   sub->add_option("--method", a->method, "exact|cripso|pso|ga|coa")
       ->check(CLI::IsMember(setup::setupMethodNames()))
       ->capture_default_str();
@@ -268,7 +415,43 @@ void registerSetupCommand(CLI::App& app) {
       ->capture_default_str();
   addSeed(sub, a->seed);
   addOut(sub, a->out);
-  sub->callback([a] { selectRunner([a]() -> int { return runSetup(*a); }); });
+
+  auto v = std::make_shared<ValidateArgs>();
+  auto* val = sub->add_subcommand(
+      "validate", "The setup paper's statistical validation: N simulated sets x M trials, Fig. 18, w1, w2");
+  existingFile(val->add_option("--model", v->model, "Setup model (relation graph, JSON)")->required());
+  val->add_option("--sets", v->sets, "Simulated measurement sets N")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  val->add_option("--trials", v->trials, "Trials M of every method on every set")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  val->add_option("--methods", v->methods, "Metaheuristics, comma separated: cripso,pso,ga,coa")
+      ->capture_default_str();
+  val->add_option("--budget", v->budget, "Evaluations per trial")
+      ->check(CLI::Range(1L, 100000000L))
+      ->capture_default_str();
+  val->add_option("--w1", v->w1, "Weight of the setup-data errors, mm (Eq. 12)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  val->add_option("--w2", v->w2, "Weight of the random errors, mm (Eq. 13)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  existingFile(val->add_option("--data", v->data, "Measured report(s): also estimate the setup share in them")
+                   ->take_all());
+  val->add_option("--threads", v->threads, "Worker threads (0: all cores)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  addSeed(val, v->seed);
+  addOut(val, v->out);
+  val->callback([v] { selectRunner([v]() -> int { return runSetupValidate(*v); }); });
+
+  sub->callback([a, val] {
+    if (val->parsed()) return;
+    if (a->model.empty()) throw CLI::RequiredError("--model");
+    if (a->data.empty()) throw CLI::RequiredError("--data");
+    selectRunner([a]() -> int { return runSetup(*a); });
+  });
 }
 
 void registerSimulateSetupCommand(CLI::App& simulate) {

@@ -386,9 +386,10 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   curve_ = new MatchingCurveView(tabs_);
   curve_->setObjectName(QStringLiteral("matchingCurve"));
 
-  remeasureTable_ = makeTable(tabs_, {tr("Round"), tr("max |d| measured (mm)"), tr("out of tolerance"),
-                                      tr("RMSE (mm)"), tr("SX (mm)"), tr("SY (mm)"), tr("SZ (mm)"),
-                                      tr("rotary 1 (deg)"), tr("rotary 2 (deg)"), tr("frame rot. (deg)")});
+  remeasureTable_ =
+      makeTable(tabs_, {tr("Round"), tr("max |d| measured (mm)"), tr("out of tolerance"), tr("RMSE (mm)"),
+                        tr("true max |d| (mm)"), tr("true out of tolerance"), tr("SX (mm)"), tr("SY (mm)"),
+                        tr("SZ (mm)"), tr("rotary 1 (deg)"), tr("rotary 2 (deg)"), tr("frame rot. (deg)")});
   remeasureTable_->setObjectName(QStringLiteral("matchingRemeasureTable"));
   new ColumnFitter(remeasureTable_, {}, false);
   auto* remeasureTab = new QWidget(tabs_);
@@ -989,16 +990,55 @@ void MatchingPage::fillRemeasureTable() {
   }
   const matching::RemeasureResult& loop = *result_->remeasure;
   const auto names = machine::rotaryAxisNames(result_->machine.topology);
-  remeasureTable_->setHorizontalHeaderItem(7, headerItem(tr("S%1 (deg)").arg(QLatin1String(names[0]))));
-  remeasureTable_->setHorizontalHeaderItem(8, headerItem(tr("S%1 (deg)").arg(QLatin1String(names[1]))));
+  constexpr int kAdjust = 6;  // first adjustment column (after the measured and the true error)
+  remeasureTable_->setHorizontalHeaderItem(kAdjust + 3,
+                                           headerItem(tr("S%1 (deg)").arg(QLatin1String(names[0]))));
+  remeasureTable_->setHorizontalHeaderItem(kAdjust + 4,
+                                           headerItem(tr("S%1 (deg)").arg(QLatin1String(names[1]))));
+  QString outcome;
+  const matching::ToleranceEvaluation* remaining = loop.trueRemaining();
+  const QString trueMax =
+      remaining ? QLocale().toString(remaining->overall.maxAbsMm, 'f', 4) : QStringLiteral("?");
+  switch (loop.outcome) {
+    case matching::RemeasureOutcome::InTolerance:
+      outcome = tr("Every point is inside the tolerance after %n adjustment(s); the true remaining error "
+                   "is %1 mm at most.",
+                   "", static_cast<int>(loop.rounds.size()) - 1)
+                    .arg(trueMax);
+      break;
+    case matching::RemeasureOutcome::FormError:
+      outcome = tr("FAILED: the best fit leaves points out of tolerance (form error larger than the "
+                   "tolerance); no WCS adjustment can bring them in. True remaining error %1 mm, %2 "
+                   "point(s) out.")
+                    .arg(trueMax)
+                    .arg(remaining ? static_cast<qulonglong>(remaining->overall.outOfTolerance) : 0ULL);
+      break;
+    case matching::RemeasureOutcome::BeyondTravel: {
+      QString travel;
+      for (const auto& r : loop.rounds)
+        if (r.adjustment && !r.adjustment->withinTravel)
+          travel = QString::fromStdString(r.adjustment->travelMessage);
+      outcome = tr("FAILED: the adjustment is beyond the machine's travel (%1); the WCS was not moved. "
+                   "True remaining error %2 mm.")
+                    .arg(travel, trueMax);
+      break;
+    }
+    case matching::RemeasureOutcome::NotConverged:
+      outcome = tr("FAILED: still out of tolerance after the last adjustment. True remaining error %1 mm.")
+                    .arg(trueMax);
+      break;
+    case matching::RemeasureOutcome::Cancelled:
+      outcome = tr("Stopped before the end.");
+      break;
+  }
   remeasureLabel_->setText(
-      tr("Step 7 with the simulator as machine and CMM (true posture: the %1 fit, probing noise %2 mm): "
-         "measure, match, adjust the WCS, remeasure. %3")
+      tr("Step 7 with the simulator as machine and CMM (the part where the probe found it, with its "
+         "form error; the %1 fit does not place it; probing noise %2 mm): measure, match, adjust the "
+         "WCS, remeasure. %3")
           .arg(methodShort(result_->primary))
           .arg(QLocale().toString(settings_.options.remeasureNoiseMm, 'f', 3))
-          .arg(loop.inTolerance ? tr("Every point is inside the tolerance after %n adjustment(s).", "",
-                                     static_cast<int>(loop.rounds.size()) - 1)
-                                : tr("Still out of tolerance after the last adjustment.")));
+          .arg(outcome));
+  remeasureLabel_->setStyleSheet(loop.inTolerance ? QString() : QStringLiteral("color: #b00020;"));
   for (const matching::RemeasureRound& r : loop.rounds) {
     const int row = remeasureTable_->rowCount();
     remeasureTable_->insertRow(row);
@@ -1007,15 +1047,24 @@ void MatchingPage::fillRemeasureTable() {
     remeasureTable_->setItem(row, 2,
                              countItem(r.measured.overall.outOfTolerance, r.measured.overall.points, true));
     remeasureTable_->setItem(row, 3, numberItem(r.measured.overall.rmseMm, 4));
+    if (r.truth) {
+      remeasureTable_->setItem(row, 4, numberItem(r.truth->overall.maxAbsMm, 4));
+      remeasureTable_->setItem(row, 5,
+                               countItem(r.truth->overall.outOfTolerance, r.truth->overall.points, true));
+    }
     if (r.adjustment) {
       for (int k = 0; k < 3; ++k)
-        remeasureTable_->setItem(row, 4 + k, numberItem(r.adjustment->linearMm[k], 4));
-      remeasureTable_->setItem(row, 7, numberItem(r.adjustment->rotaryDeg[0], 5));
-      remeasureTable_->setItem(row, 8, numberItem(r.adjustment->rotaryDeg[1], 5));
-      remeasureTable_->setItem(row, 9, numberItem(r.adjustment->frameRotationDeg, 5));
+        remeasureTable_->setItem(row, kAdjust + k, numberItem(r.adjustment->linearMm[k], 4));
+      remeasureTable_->setItem(row, kAdjust + 3, numberItem(r.adjustment->rotaryDeg[0], 5));
+      remeasureTable_->setItem(row, kAdjust + 4, numberItem(r.adjustment->rotaryDeg[1], 5));
+      remeasureTable_->setItem(row, kAdjust + 5, numberItem(r.adjustment->frameRotationDeg, 5));
     } else {
-      remeasureTable_->setItem(row, 4, textItem(tr("in tolerance: no adjustment")));
-      remeasureTable_->setSpan(row, 4, 1, 6);
+      remeasureTable_->setItem(
+          row, kAdjust,
+          textItem(r.measured.overall.outOfTolerance == 0
+                       ? tr("in tolerance: no adjustment")
+                       : tr("stopped: %1").arg(QString::fromLatin1(toString(loop.outcome)))));
+      remeasureTable_->setSpan(row, kAdjust, 1, 6);
     }
   }
   ColumnFitter::of(remeasureTable_)->fit();

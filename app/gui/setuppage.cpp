@@ -385,6 +385,7 @@ void SetupPage::reload() {
   }
   editor_->setModel(model);
   validation_->setModel(model);
+  validation_->setMeasurements(d->measModel, d->rawMeasurements ? &*d->rawMeasurements : nullptr);
   convergence_->clearRuns();
 }
 
@@ -448,6 +449,7 @@ void SetupPage::onModelEdited() {
   convergence_->clearRuns();
   results_->clear(tr("No result for this model yet: choose a method and press Run (Ctrl+R)."));
   validation_->setModel(editor_->model());
+  validation_->setMeasurements(d->measModel, d->rawMeasurements ? &*d->rawMeasurements : nullptr);
   error_.clear();
   if (!d->dataError.isEmpty()) {
     error_ = d->dataError;

@@ -56,9 +56,8 @@ MatchingStudyResult runMatchingStudy(const ProbePointSet& input, const MatchingS
     ro.match.locks = o.locks;
     ro.match.seed = o.seed;
     ro.machine = o.machine;
-    Pose truth = primary->pose;
-    truth.scale = 1.0;
-    res.remeasure = remeasureLoop(simulatedCell(set, truth, o.remeasureNoiseMm, o.seed), ro, observer);
+    res.remeasure =
+        remeasureLoop(simulateCell(partAsMeasured(set), o.remeasureNoiseMm, o.seed), ro, observer);
   }
   return res;
 }

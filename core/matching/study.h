@@ -14,8 +14,10 @@
 // points are deformed by them before every method runs (studyModelSet), so the residual, the
 // tolerance evaluation, the machine adjustments and the remeasure loop include them.
 //
-// The remeasure loop's cell: the workpiece's true posture is the primary fit's rigid posture (R, t),
-// the probe repeats the nominal points with `remeasureNoiseMm` noise; see remeasure.h.
+// The remeasure loop's cell: the workpiece is where the probe found it (remeasure.h partAsMeasured:
+// true posture and form error together, a_i = p_i; nothing of the primary fit goes into the cell), the
+// probe repeats the nominal points with `remeasureNoiseMm` noise. The loop therefore fails (form_error)
+// when the data's form error is larger than the tolerance; see remeasure.h.
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -8,7 +8,8 @@
 //           c1 = c2 = cos(pi/2 Li/L)
 //   ga      optim::Ga, population 50, gene mutation probability 0.1
 //   coa     optim::Coa, at most 40 habitats, 5-10 eggs
-// The paper's budget is 5000 solutions.
+// The paper's budget is 5000 solutions; its COA ran 100 iterations, "approximately 30,000 solutions"
+// (kCoaPaperBudget).
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -19,6 +20,7 @@
 namespace metrofit::setup {
 
 inline constexpr long kPaperBudget = 5000;
+inline constexpr long kCoaPaperBudget = 30000;
 
 /// "exact", "cripso", "pso", "ga", "coa".
 std::vector<std::string> setupMethodNames();

@@ -99,6 +99,37 @@ TEST_F(MatchCli, LocksScaleAndMachines) {
   EXPECT_EQ(d.at("machine").at("definition").at("LZ_mm").get<double>(), -250.0);
 }
 
+TEST_F(MatchCli, RemeasureLoopReportsItsOutcome) {
+  // The simulated part is where the probe found it: it ends in tolerance at +-0.035 mm ...
+  const nlohmann::json ok =
+      runJson("match --data p.csv --method closed-form --tolerance 0.035 --remeasure", tmp);
+  const auto& r = ok.at("remeasure");
+  EXPECT_EQ(r.at("outcome"), "in_tolerance") << r.at("message");
+  EXPECT_TRUE(r.at("in_tolerance").get<bool>());
+  EXPECT_GE(r.at("rounds").size(), 2u);
+  EXPECT_EQ(r.at("true_remaining").at("out_of_tolerance").get<int>(), 0);
+  EXPECT_NEAR(r.at("rounds")[0].at("true").at("max_abs_mm").get<double>(),
+              ok.at("before").at("max_abs_mm").get<double>(), 1e-12);
+  // ... fails when the tolerance is tighter than what the best fit leaves (form error and noise) ...
+  const double left = ok.at("max_abs_mm").get<double>();
+  const std::string tight = std::to_string(0.5 * left);
+  CliRun run = cli("match --data p.csv --method closed-form --remeasure --tolerance " + tight, tmp);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("FAILED"), std::string::npos) << run.err;
+  const nlohmann::json form = parseJson(run.out, "stdout");
+  EXPECT_EQ(form.at("remeasure").at("outcome"), "form_error");
+  EXPECT_GT(form.at("remeasure").at("true_remaining").at("out_of_tolerance").get<int>(), 0);
+  // ... and when the machine cannot tilt far enough (A travel +-0.001 deg): the WCS stays, so the true
+  // remaining error is the data's own before any adjustment.
+  test::writeText(tmp.file("narrow.json"), R"({"rotary_travel_deg": [[-0.001, 0.001], [-360, 360]]})");
+  const nlohmann::json travel = runJson(
+      "match --data p.csv --method closed-form --tolerance 0.035 --remeasure --machine-def narrow.json", tmp);
+  EXPECT_EQ(travel.at("remeasure").at("outcome"), "beyond_travel");
+  EXPECT_EQ(travel.at("remeasure").at("rounds").size(), 1u);
+  EXPECT_NEAR(travel.at("remeasure").at("true_remaining").at("max_abs_mm").get<double>(),
+              travel.at("before").at("max_abs_mm").get<double>(), 1e-12);
+}
+
 TEST_F(MatchCli, BadInputExits2WithOneLine) {
   struct Case {
     std::string args, needle;

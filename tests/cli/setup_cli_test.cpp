@@ -182,5 +182,67 @@ TEST(SetupCli, SimulateSetupMakesTheDemoReport) {
   EXPECT_EQ(s.code, 2);
 }
 
+TEST(SetupCli, ValidateRunsTheSeedsStatisticalValidation) {
+  test::TempDir tmp;
+  const CliRun r = cli("setup validate --model " + demo("paper_example.json") +
+                           " --sets 30 --trials 2 --methods cripso,ga --budget 800 --data " +
+                           demo("paper_example_report.csv") + " --out v.json",
+                       tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("setup validate: 30 sets x 2 trials of cripso,ga, w1 0.030 w2 0.020 mm", 0), 0u)
+      << r.err;
+  const nlohmann::json j = readJsonFile(tmp.file("v.json"));
+  EXPECT_EQ(j["sets"], 30);
+  EXPECT_EQ(j["methods"], nlohmann::json({"cripso", "ga"}));
+  ASSERT_EQ(j["series"].size(), 30u);
+  // Fig. 18: sorted by f1 before correction; every trial below or at the exact optimum.
+  double previous = -1e9, lo = 1e9, hi = -1e9;
+  for (const auto& s : j["series"]) {
+    const double before = s["f1_before_mm"];
+    EXPECT_GE(before, previous);
+    previous = before;
+    lo = std::min(lo, before);
+    hi = std::max(hi, before);
+    for (const char* m : {"cripso", "ga"}) {
+      ASSERT_EQ(s["f1_mm"][m].size(), 2u);
+      for (const auto& f1 : s["f1_mm"][m]) EXPECT_LE(f1.get<double>(), s["exact_f1_mm"].get<double>() + 1e-9);
+    }
+  }
+  EXPECT_EQ(j["f1_before_mm"]["min"].get<double>(), lo);
+  EXPECT_EQ(j["f1_before_mm"]["max"].get<double>(), hi);
+  EXPECT_EQ(j["method_summary"]["cripso"]["trials"], 60);
+  EXPECT_TRUE(j["paper_range"]["applies"].get<bool>());
+  EXPECT_EQ(j["paper_range"]["f1_before_min_mm"], -0.011);
+  EXPECT_EQ(j["paper_range"]["f1_before_max_mm"], 0.063);
+  EXPECT_TRUE(j["paper_range"]["consistent"].get<bool>());
+  EXPECT_NEAR(j["share"]["configured_weight_share"].get<double>(), 0.6, 1e-12);
+  EXPECT_NEAR(j["share"]["weight_share"].get<double>(), 0.6, 0.1);
+  EXPECT_EQ(j["data_share"]["sets"], 3);  // the demo report's three parts
+  // The data's f1 before and exact optimum are those of `setup` (0.0237 -> 0.0797 mm, test above).
+  EXPECT_NEAR(j["data_share"]["f1_before_mm"].get<double>(), 0.0237, 5e-5);
+  EXPECT_NEAR(j["data_share"]["exact_f1_mm"].get<double>(), 0.0797, 5e-5);
+  EXPECT_TRUE(j["data_share"].contains("foreseen_f1_mm"));
+
+  // Reproducible; bad input exits 2 with one line; `setup` still needs --model and --data.
+  ASSERT_EQ(cli("setup validate --model " + demo("paper_example.json") +
+                    " --sets 30 --trials 2 --methods cripso,ga --budget 800 --data " +
+                    demo("paper_example_report.csv") + " --threads 1 --out v1.json",
+                tmp)
+                .code,
+            0);
+  EXPECT_EQ(test::readText(tmp.file("v.json")), test::readText(tmp.file("v1.json")));
+  CliRun bad = cli("setup validate --model " + demo("paper_example.json") + " --methods cripso,exact", tmp);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(lines(bad.err), 1) << bad.err;
+  EXPECT_NE(bad.err.find("--methods"), std::string::npos) << bad.err;
+  bad = cli("setup validate --sets 3", tmp);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--model"), std::string::npos) << bad.err;
+  bad = cli("setup --model " + demo("paper_example.json"), tmp);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--data is required"), std::string::npos) << bad.err;
+}
+
 }  // namespace
 }  // namespace metrofit

@@ -20,6 +20,7 @@
 #include <QUndoStack>
 #include <map>
 
+#include <QLocale>
 #include <nlohmann/json.hpp>
 
 #include "app/gui/setuppage.h"
@@ -190,6 +191,8 @@ TEST_F(SetupPageTest, ConvergenceViewOverlaysExactCripsoAndPso) {
 
 TEST_F(SetupPageTest, ValidationRunsAndCancels) {
   SetupValidationView* v = page_->validationView();
+  EXPECT_EQ(v->sets(), 100);  // the paper's 100 sets x 10 trials by default
+  EXPECT_EQ(v->trials(), 10);
   v->setSets(6);
   v->setTrials(2);
   v->setBudget(2000);
@@ -201,6 +204,24 @@ TEST_F(SetupPageTest, ValidationRunsAndCancels) {
   EXPECT_TRUE(v->summaryText().contains(QStringLiteral("CRIPSO: mean gap")))
       << v->summaryText().toStdString();
   EXPECT_EQ(v->progressBar()->value(), 6);
+  // The paper's range is checked (w1 = 0.03, w2 = 0.02 by default) and the setup share estimated.
+  EXPECT_TRUE(v->summaryText().contains(QStringLiteral("is consistent with the simulator")))
+      << v->summaryText().toStdString();
+  EXPECT_TRUE(v->summaryText().contains(QStringLiteral("Share of the setup data")))
+      << v->summaryText().toStdString();
+  // The share in the demo report's three parts is the CLI's (setup validate --data).
+  {
+    test::TempDir tmp;
+    const test::CliRun cli =
+        test::cli("setup validate --sets 1 --trials 0 --model '" + modelPath().toStdString() + "' --data '" +
+                      dir_.filePath(QStringLiteral("data/paper_example_report.csv")).toStdString() + "'",
+                  tmp);
+    ASSERT_EQ(cli.code, 0) << cli.err;
+    const double share = nlohmann::json::parse(cli.out)["data_share"]["weight_share"].get<double>();
+    const QString expected = QStringLiteral("In the project's measurements (3 part(s)): %1 % of the weights")
+                                 .arg(QLocale().toString(100.0 * share, 'f', 0));
+    EXPECT_TRUE(v->summaryText().contains(expected)) << v->summaryText().toStdString() << " / " << share;
+  }
   page_->tabs()->setCurrentIndex(3);
   grab("setuppage_validation.png");
   v->setSets(5000);

@@ -400,13 +400,22 @@ void writeStudy(ReportPainter& out, const ReportDataset& dataset,
            r.adjustment ? QStringLiteral("%1, %2, %3")
                               .arg(num(r.adjustment->linearMm.x(), 4), num(r.adjustment->linearMm.y(), 4),
                                    num(r.adjustment->linearMm.z(), 4))
-                        : ReportText::tr("in tolerance"),
+                        : (r.measured.overall.outOfTolerance == 0 ? ReportText::tr("in tolerance")
+                                                                  : ReportText::tr("stopped")),
            r.adjustment ? QStringLiteral("%1, %2").arg(num(r.adjustment->rotaryDeg[0], 5),
                                                        num(r.adjustment->rotaryDeg[1], 5))
                         : QString()});
     }
     out.subheading(ReportText::tr("Remeasure loop (simulated machine and CMM)"), out.mm(30.0));
     out.table(loop);
+    QString outcome = QString::fromStdString(res.remeasure->run.message);
+    if (const matching::ToleranceEvaluation* t = res.remeasure->trueRemaining())
+      outcome += QLatin1Char(' ') + ReportText::tr(
+                                        "True remaining error of the simulated part: %1 mm at most, "
+                                        "%2 point(s) out of tolerance.")
+                                        .arg(num(t->overall.maxAbsMm, 4))
+                                        .arg(static_cast<qulonglong>(t->overall.outOfTolerance));
+    out.paragraph(outcome);
   }
 }
 

@@ -29,6 +29,7 @@ namespace metrofit {
 namespace {
 struct Outcome {
   setup::ValidationResult result;
+  setup::ValidationSummary summary;
   QString error;
 };
 }  // namespace
@@ -36,6 +37,7 @@ struct Outcome {
 struct SetupValidationView::Impl {
   setup::Model model;
   bool hasModel = false;
+  std::vector<std::vector<double>> measuredSets;  ///< per part, for the view's model (may be empty)
   QSpinBox* sets = nullptr;
   QSpinBox* trials = nullptr;
   QSpinBox* budget = nullptr;
@@ -57,11 +59,11 @@ SetupValidationView::SetupValidationView(QWidget* parent) : QWidget(parent), d(s
   setObjectName(QStringLiteral("setupValidationView"));
   d->sets = new QSpinBox(this);
   d->sets->setRange(1, 10000);
-  d->sets->setValue(20);
+  d->sets->setValue(static_cast<int>(setup::ValidationOptions{}.sets));  // the paper's 100
   d->sets->setToolTip(tr("Simulated measurement sets N (the paper: 100)"));
   d->trials = new QSpinBox(this);
   d->trials->setRange(1, 1000);
-  d->trials->setValue(5);
+  d->trials->setValue(setup::ValidationOptions{}.trials);  // the paper's 10
   d->trials->setToolTip(tr("Trials M of every method on every set (the paper: 10)"));
   d->budget = new QSpinBox(this);
   d->budget->setRange(100, 10000000);
@@ -150,8 +152,16 @@ SetupValidationView::~SetupValidationView() {
 
 void SetupValidationView::setModel(const setup::Model& model) {
   d->model = model;
+  d->measuredSets.clear();
   d->hasModel = setup::checkModel(model).empty();
   d->run->setEnabled(d->hasModel && !isRunning());
+}
+
+void SetupValidationView::setMeasurements(const setup::Model& measModel,
+                                          const setup::Measurements* measurements) {
+  d->measuredSets.clear();
+  if (measurements == nullptr || !d->hasModel || measModel.dimensionIds() != d->model.dimensionIds()) return;
+  d->measuredSets = setup::partDeviationSets(measModel, *measurements);
 }
 
 void SetupValidationView::setSets(int sets) {
@@ -164,6 +174,14 @@ void SetupValidationView::setTrials(int trials) {
 
 void SetupValidationView::setBudget(long budget) {
   d->budget->setValue(static_cast<int>(budget));
+}
+
+int SetupValidationView::sets() const {
+  return d->sets->value();
+}
+
+int SetupValidationView::trials() const {
+  return d->trials->value();
 }
 
 bool SetupValidationView::isRunning() const {
@@ -218,6 +236,7 @@ bool SetupValidationView::start() {
             },
             Qt::QueuedConnection);
       });
+      out.summary = setup::summarizeValidation(model, options, out.result);
     } catch (const std::exception& e) {
       out.error = QString::fromStdString(e.what());
     }
@@ -254,33 +273,51 @@ void SetupValidationView::onFinished() {
   d->chartView->setChart(makeSetupValidationChart(r));
   delete old;
 
-  // Per method: mean f1 gap to the exact optimum, trials within one grid step (0.001 mm).
-  std::map<std::string, std::pair<double, int>> gaps;
-  std::map<std::string, int> hits;
-  double beforeLo = 0.0, beforeHi = 0.0;
-  bool first = true;
-  for (const setup::ValidationSet& s : r.sets) {
-    beforeLo = first ? s.f1Before : std::min(beforeLo, s.f1Before);
-    beforeHi = first ? s.f1Before : std::max(beforeHi, s.f1Before);
-    first = false;
-    for (const setup::ValidationTrial& t : s.trials) {
-      gaps[t.method].first += t.gapF1;
-      ++gaps[t.method].second;
-      if (t.gapF1 <= d->model.stepMm + 1e-9) ++hits[t.method];
-    }
-  }
+  const setup::ValidationSummary& sum = outcome.summary;
   const QLocale locale;
+  auto mm = [&](double v) { return locale.toString(v, 'f', 4); };
   QStringList lines;
   lines << tr("%1 sets%2: f1 before correction from %3 to %4 mm.")
                .arg(r.sets.size())
                .arg(r.cancelled ? tr(" (cancelled)") : QString())
-               .arg(locale.toString(beforeLo, 'f', 4), locale.toString(beforeHi, 'f', 4));
-  for (const auto& [method, g] : gaps) {
+               .arg(mm(sum.f1BeforeMin), mm(sum.f1BeforeMax));
+  if (sum.paperRangeApplies) {
+    lines << (sum.paperRangeConsistent
+                  ? tr("The paper's range %1 to %2 mm is consistent with the simulator (its minimum lies in "
+                       "%3 to %4 mm, its maximum in %5 to %6 mm over 100 sets, 98 % bands).")
+                  : tr("NOT consistent: the paper's range %1 to %2 mm lies outside the simulator's bands "
+                       "(minimum %3 to %4 mm, maximum %5 to %6 mm over 100 sets, 98 %)."))
+                 .arg(mm(setup::kPaperF1BeforeMinMm), mm(setup::kPaperF1BeforeMaxMm), mm(sum.minBandLo),
+                      mm(sum.minBandHi), mm(sum.maxBandLo), mm(sum.maxBandHi));
+  } else {
+    lines << tr("The paper's range (%1 to %2 mm) is for w1 = 0.03 and w2 = 0.02 mm: not compared.")
+                 .arg(mm(setup::kPaperF1BeforeMinMm), mm(setup::kPaperF1BeforeMaxMm));
+  }
+  for (const setup::ValidationMethodSummary& m : sum.methods) {
     lines << tr("%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.")
-                 .arg(setupMethodTitle(QString::fromStdString(method)))
-                 .arg(locale.toString(g.second > 0 ? g.first / g.second : 0.0, 'f', 4))
-                 .arg(hits[method])
-                 .arg(g.second);
+                 .arg(setupMethodTitle(QString::fromStdString(m.method)))
+                 .arg(mm(m.meanGapF1))
+                 .arg(m.withinStep)
+                 .arg(m.trials);
+  }
+  const double configured =
+      d->w1->value() + d->w2->value() > 0.0 ? d->w1->value() / (d->w1->value() + d->w2->value()) : 0.0;
+  lines << tr("Share of the setup data in the dimension error, estimated from the sets: %1 % of the "
+              "weights (configured %2 %), %3 % of the variance.")
+               .arg(locale.toString(100.0 * sum.share.weightShare, 'f', 0))
+               .arg(locale.toString(100.0 * configured, 'f', 0))
+               .arg(locale.toString(100.0 * sum.share.varianceShare, 'f', 0));
+  if (!d->measuredSets.empty()) {
+    try {
+      const setup::ShareEstimate data = setup::estimateSetupShare(d->model, d->measuredSets);
+      lines << tr("In the project's measurements (%n part(s)): %1 % of the weights, %2 % of the variance.",
+                  "", static_cast<int>(data.sets))
+                   .arg(locale.toString(100.0 * data.weightShare, 'f', 0))
+                   .arg(locale.toString(100.0 * data.varianceShare, 'f', 0));
+    } catch (const std::exception& e) {
+      lines << tr("The setup share of the measurements cannot be estimated: %1")
+                   .arg(QString::fromStdString(e.what()));
+    }
   }
   d->summary->setText(lines.join(QLatin1Char('\n')));
   emit finished();

@@ -117,6 +117,27 @@ TEST(Study, RunsEveryMethodAdjustsAndRemeasures) {
   ASSERT_GE(r.remeasure->rounds.size(), 2u);
   EXPECT_EQ(r.remeasure->rounds.front().measured.overall.outOfTolerance, 40u);
   EXPECT_EQ(r.remeasure->rounds.back().measured.overall.outOfTolerance, 0u);
+  EXPECT_EQ(r.remeasure->outcome, RemeasureOutcome::InTolerance);
+  // The cell's part is where the probe found it: the true error of round 0 is the data's own.
+  ASSERT_TRUE(r.remeasure->rounds.front().truth.has_value());
+  const std::vector<double> dataDeviations = s.deviations();
+  for (std::size_t i = 0; i < dataDeviations.size(); ++i)
+    EXPECT_NEAR(r.remeasure->rounds.front().truth->deviations[i], dataDeviations[i], 1e-9);
+  ASSERT_NE(r.remeasure->trueRemaining(), nullptr);
+  EXPECT_LE(r.remeasure->trueRemaining()->overall.maxAbsMm, kSPieceToleranceMm);
+
+  // A tolerance tighter than the part's form error (the data's residual after the best fit): the
+  // loop now fails instead of reporting success.
+  MatchingStudyOptions tight = o;
+  tight.methods = {MatchMethod::ClosedForm};
+  tight.primary = MatchMethod::ClosedForm;
+  tight.toleranceMm = 0.5 * r.of(MatchMethod::ClosedForm)->after.overall.maxAbsMm;
+  const MatchingStudyResult failed = runMatchingStudy(s, tight);
+  ASSERT_TRUE(failed.remeasure.has_value());
+  EXPECT_FALSE(failed.remeasure->inTolerance);
+  EXPECT_EQ(failed.remeasure->outcome, RemeasureOutcome::FormError) << failed.remeasure->run.message;
+  ASSERT_NE(failed.remeasure->trueRemaining(), nullptr);
+  EXPECT_GT(failed.remeasure->trueRemaining()->overall.outOfTolerance, 0u);
 
   // The observer can stop the study.
   FunctionObserver stop([](const IterationSummary&) { return ObserverDecision::Stop; });
