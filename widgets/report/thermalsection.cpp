@@ -452,6 +452,11 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
                        .arg(ev.training.run.iterations)
                        .arg(QString::fromLatin1(toString(ev.training.run.termination)));
         break;
+      case thermal::ThermalModelKind::Linear:
+      case thermal::ThermalModelKind::Lag:
+      case thermal::ThermalModelKind::DistributedLag:
+        training = QString::fromStdString(ev.training.run.message);
+        break;
     }
     trainingNotes << thermalModelName(kThermalModelOrder[i]) + QStringLiteral(": ") + training +
                          ReportText::tr(" (%1 s)").arg(c.seconds[i], 0, 'f', 2);
