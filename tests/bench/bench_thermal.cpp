@@ -152,8 +152,7 @@ nlohmann::json realTable4(const ThermalLog& log) {
         std::string taus;
         for (const auto& term : ev.training.model.regression.terms) {
           if (term.tauMin > 0.0)
-            taus +=
-                " " + inputs[term.input].substr(0, 3) + ":" + CsvWriter::formatNumber(term.tauMin) + "min";
+            taus += " " + inputs[term.input] + ":" + CsvWriter::formatNumber(term.tauMin) + "min";
         }
         if (thermal::isGrey(o.model) && ev.training.model.grey.b1 > 0.0)
           taus = " tau " +
