@@ -141,7 +141,10 @@ ThermalEvaluation fitAndEvaluate(const ThermalSeries& series, double trainFracti
 /// a series (kCvFolds contiguous blocks; each block predicted by the model fitted on the others; the
 /// grey model fitted on the rows before and after the block as two segments and run from the first
 /// row). The lag models' taus are chosen inside (lag_regression.h) with the same blocks, so their
-/// score is that of the chosen taus. The lowest RMSE wins; an unstable or failed fit scores inf.
+/// score is that of the chosen taus (slightly optimistic against linear: the taus were chosen on the
+/// same blocks; nested cross-validation would be the stricter test). The lowest RMSE wins; a fold in
+/// which GMC(1,N) comes out unstable (b1 <= 0) or cannot be fitted scores inf (null in JSON); on the
+/// CAIVIAC log that happens for every channel tried.
 /// Held-out rows (after fitRows) are never read: scrambling their target changes nothing here.
 struct ThermalSelection {
   ThermalModelKind chosen = ThermalModelKind::Linear;
