@@ -2261,6 +2261,10 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::Report</name>
     <message>
+        <source>Held-out test failed (E &lt; 0 or an unstable model): %1. These models extrapolate poorly beyond their fit rows and should not be used for compensation as they are.</source>
+        <translation>Test auf den Testdaten nicht bestanden (E &lt; 0 oder instabiles Modell): %1. Diese Modelle extrapolieren schlecht über ihre Anpassungszeilen hinaus und sollten so nicht zur Kompensation verwendet werden.</translation>
+    </message>
+    <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+41"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+521"/>
         <source>Thermal</source>
@@ -5987,6 +5991,14 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 </context>
 <context>
     <name>metrofit::ThermalModelView</name>
+    <message>
+        <source>The held-out test failed (E &lt; 0 or an unstable model): this model extrapolates poorly beyond its fit rows; do not use it for compensation.</source>
+        <translation>Der Test auf den Testdaten ist nicht bestanden (E &lt; 0 oder instabiles Modell): Dieses Modell extrapoliert schlecht über seine Anpassungszeilen hinaus; nicht zur Kompensation verwenden.</translation>
+    </message>
+    <message>
+        <source>held out (%1): test failed</source>
+        <translation>Testdaten (%1): Test nicht bestanden</translation>
+    </message>
     <message>
         <location filename="../widgets/charts/thermalmodelview.cpp" line="+76"/>
         <source>%1 → %2%3</source>

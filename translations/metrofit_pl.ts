@@ -2264,6 +2264,10 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::Report</name>
     <message>
+        <source>Held-out test failed (E &lt; 0 or an unstable model): %1. These models extrapolate poorly beyond their fit rows and should not be used for compensation as they are.</source>
+        <translation>Test na danych testowych niezaliczony (E &lt; 0 lub model niestabilny): %1. Te modele źle ekstrapolują poza wiersze dopasowania i w tej postaci nie powinny być używane do kompensacji.</translation>
+    </message>
+    <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+41"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+521"/>
         <source>Thermal</source>
@@ -6008,6 +6012,14 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 </context>
 <context>
     <name>metrofit::ThermalModelView</name>
+    <message>
+        <source>The held-out test failed (E &lt; 0 or an unstable model): this model extrapolates poorly beyond its fit rows; do not use it for compensation.</source>
+        <translation>Test na danych testowych niezaliczony (E &lt; 0 lub model niestabilny): model źle ekstrapoluje poza wiersze dopasowania; nie używać go do kompensacji.</translation>
+    </message>
+    <message>
+        <source>held out (%1): test failed</source>
+        <translation>dane testowe (%1): test niezaliczony</translation>
+    </message>
     <message>
         <location filename="../widgets/charts/thermalmodelview.cpp" line="+76"/>
         <source>%1 → %2%3</source>

@@ -137,17 +137,24 @@ std::string unitOf(const ThermalLog& log, const std::string& column) {
 
 /// A note for the summary line when least squares gave an unstable grey model.
 std::string unstableNote(const thermal::ThermalModel& m) {
-  if (m.kind == ThermalModelKind::Mlp || m.grey.b1 > 0.0) return "";
+  if (!thermal::isGrey(m.kind) || m.grey.b1 > 0.0) return "";
   return "; unstable model: b1 = " + num(m.grey.b1) + " <= 0";
 }
 
 int runFit(const FitArgs& a, bool fractionGiven) {
   const ThermalLog log = readThermalArgs(a.data, a.target, a.inputs);
-  const thermal::ThermalFitOptions o = fitOptions(a.model, a.training, a.seed, a.iterations);
+  const bool autoModel = a.model == "auto";
+  thermal::ThermalFitOptions o = fitOptions(autoModel ? "linear" : a.model, a.training, a.seed, a.iterations);
   const double fraction = fractionGiven ? a.trainFraction : thermal::defaultTrainFraction(o.model);
   const thermal::ThermalSeries series = thermal::selectThermalSeries(log, a.target, splitList(a.inputs));
   const auto start = std::chrono::steady_clock::now();
   thermal::ThermalEvaluation ev;
+  thermal::ThermalSelection selection;
+  if (autoModel) {
+    // --model auto: chosen on the fit rows only (blocked cross-validation, thermal_model.h).
+    selection = thermal::chooseThermalModel(series, thermal::fitRowCount(series.rows(), fraction), o);
+    o.model = selection.chosen;
+  }
   {
     Progress progress("thermal fit");
     ev = thermal::fitAndEvaluate(series, fraction, o, progress.observer());
@@ -172,7 +179,22 @@ int runFit(const FitArgs& a, bool fractionGiven) {
   j["heldout"] = metricsJson(ev.heldout);
   j["parameters"] = thermal::thermalModelParameters(t.model);
   j["training"] = trainingJson(t);
-  if (o.model != ThermalModelKind::Gmc) j["seed"] = a.seed;
+  if (autoModel) {
+    nlohmann::json cv;
+    for (std::size_t i = 0; i < selection.candidates.size(); ++i) {
+      cv[toString(selection.candidates[i])] =
+          std::isfinite(selection.cvRmse[i]) ? nlohmann::json(selection.cvRmse[i]) : nlohmann::json();
+    }
+    j["selection"] = {{"requested", "auto"},
+                      {"chosen", toString(selection.chosen)},
+                      {"method", "blocked cross-validation on the fit rows"},
+                      {"folds", selection.folds},
+                      {"cv_rmse", cv}};
+  }
+  if (!std::isnan(t.cvRmse)) j["cv_rmse"] = t.cvRmse;
+  j["heldout_check"] = {{"passed", !ev.heldoutFails()},
+                        {"rule", "held-out E >= 0, finite, and a stable grey model (b1 > 0)"}};
+  if (o.model == ThermalModelKind::Gnnmci || o.model == ThermalModelKind::Mlp) j["seed"] = a.seed;
   if (o.model == ThermalModelKind::Gnnmci) {
     j["training"]["method"] = toString(o.gnnmci.training);
     j["trace"] = traceJson(t.run);
@@ -180,11 +202,21 @@ int runFit(const FitArgs& a, bool fractionGiven) {
   if (!a.saveModel.empty()) writeResult(a.saveModel, dumpJson(thermal::thermalModelToJson(t.model)));
   writeResult(a.out, dumpJson(j));
   const std::string unit = unitOf(log, a.target);
-  summary("thermal fit: " + std::string(toString(o.model)) + " on " + a.data + ", " +
+  std::string chosen;
+  if (autoModel) {
+    chosen = " (auto: blocked CV RMSE on the fit rows";
+    for (std::size_t i = 0; i < selection.candidates.size(); ++i)
+      chosen +=
+          std::string(i ? ", " : " ") + toString(selection.candidates[i]) + " " + num(selection.cvRmse[i]);
+    chosen += ")";
+  }
+  const std::string failed =
+      ev.heldoutFails() ? "; held-out test FAILED (the model extrapolates poorly)" : "";
+  summary("thermal fit: " + std::string(toString(o.model)) + chosen + " on " + a.data + ", " +
           std::to_string(ev.fitRows) + " fit / " + std::to_string(ev.heldoutRows) +
           " held-out rows: fit RMSE " + num(ev.fit.rmse) + unit + ", held-out RMSE " + num(ev.heldout.rmse) +
           unit + ", R " + num(ev.heldout.r, 3) + ", E " + num(ev.heldout.e, 3) + ", band " +
-          num(ev.heldout.residualBand) + unit + " (" + num(secs, 2) + " s)" + unstableNote(t.model));
+          num(ev.heldout.residualBand) + unit + " (" + num(secs, 2) + " s)" + unstableNote(t.model) + failed);
   return 0;
 }
 
@@ -297,8 +329,10 @@ void registerThermalCommands(CLI::App& app) {
       th->add_subcommand("fit", "Fit a thermal error model on the first part of a log, test on the rest");
   existingFile(fit->add_option("--data", f->data, "Thermal log (CSV)")->required());
   addColumns(fit, f->target, f->inputs);
-  fit->add_option("--model", f->model, "gnnmci|gmc|mlp")
-      ->check(CLI::IsMember({"gnnmci", "gmc", "mlp"}))
+  fit->add_option("--model", f->model,
+                  "gnnmci|gmc|mlp (seed 004), linear (static regression), lag (first-order lag per sensor), "
+                  "dlag (distributed lag) or auto (chosen by blocked cross-validation on the fit rows)")
+      ->check(CLI::IsMember({"gnnmci", "gmc", "mlp", "linear", "lag", "dlag", "auto"}))
       ->capture_default_str();
   auto* fraction = fit->add_option("--train-fraction", f->trainFraction,
                                    "Fraction of rows (from the start) used for fitting; default 0.5, 0.7 for "
@@ -346,8 +380,8 @@ void registerThermalCommands(CLI::App& app) {
       mod->add_option("--train", m->train, "Training test log (CSV); repeat for each test")->required());
   existingFile(mod->add_option("--test", m->test, "Test log to predict (CSV)")->required());
   addColumns(mod, m->target, m->inputs);
-  mod->add_option("--model", m->model, "gnnmci|gmc|mlp")
-      ->check(CLI::IsMember({"gnnmci", "gmc", "mlp"}))
+  mod->add_option("--model", m->model, "gnnmci|gmc|mlp|linear|lag|dlag (see thermal fit)")
+      ->check(CLI::IsMember({"gnnmci", "gmc", "mlp", "linear", "lag", "dlag"}))
       ->capture_default_str();
   mod->add_option("--training", m->training, "gnnmci: pso-ls or pso (see thermal fit)")
       ->check(CLI::IsMember({"pso", "pso-ls"}))

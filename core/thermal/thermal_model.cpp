@@ -19,16 +19,31 @@ const char* toString(ThermalModelKind kind) {
       return "gmc";
     case ThermalModelKind::Mlp:
       return "mlp";
+    case ThermalModelKind::Linear:
+      return "linear";
+    case ThermalModelKind::Lag:
+      return "lag";
+    case ThermalModelKind::DistributedLag:
+      return "dlag";
   }
   return "?";
 }
 
+bool isGrey(ThermalModelKind kind) {
+  return kind == ThermalModelKind::Gnnmci || kind == ThermalModelKind::Gmc;
+}
+
+bool isRegression(ThermalModelKind kind) {
+  return kind == ThermalModelKind::Linear || kind == ThermalModelKind::Lag ||
+         kind == ThermalModelKind::DistributedLag;
+}
+
 ThermalModelKind thermalModelKind(const std::string& name, const std::string& field) {
-  for (auto k : {ThermalModelKind::Gnnmci, ThermalModelKind::Gmc, ThermalModelKind::Mlp}) {
+  for (auto k : kAllThermalModelKinds) {
     if (name == toString(k)) return k;
   }
   throw OptionsError(ErrorContext{{}, 0, 0, field},
-                     "'" + name + "' is not a thermal model (gnnmci, gmc or mlp)");
+                     "'" + name + "' is not a thermal model (gnnmci, gmc, mlp, linear, lag or dlag)");
 }
 
 bool ThermalFitOptions::isValid(std::string* why) const {
@@ -136,7 +151,28 @@ void validateFitData(const std::vector<ThermalSeries>& segments, const ThermalFi
       }
       break;
     }
+    case ThermalModelKind::Linear:
+    case ThermalModelKind::Lag:
+    case ThermalModelKind::DistributedLag: {
+      const std::size_t p = (o.model == ThermalModelKind::DistributedLag ? 2 * m : m) + 1;
+      if (rows < kCvFolds * (p + 1)) {
+        throw ValidationError(ErrorContext{source, 0, 0, {}},
+                              std::to_string(rows) + " fitting rows are too few: the " + toString(o.model) +
+                                  " model with " + inputsText + " has " + std::to_string(p) +
+                                  " coefficients and its cross-validation needs at least " +
+                                  std::to_string(kCvFolds * (p + 1)) + " rows");
+      }
+      break;
+    }
   }
+}
+
+LagData lagData(const ThermalSeries& s) {
+  LagData d;
+  d.timeMin = s.timeMin;
+  for (const auto& in : s.inputs) d.inputs.emplace_back(in);
+  d.target = s.target;
+  return d;
 }
 
 GreySeries greySeries(const ThermalSeries& s, double unitMin) {
@@ -172,7 +208,17 @@ ThermalTraining fitThermalModel(const std::vector<ThermalSeries>& segments, cons
     steps += static_cast<double>(s.rows() - 1);
   }
   model.timeUnitMin = duration / steps;
-  if (o.model == ThermalModelKind::Mlp) {
+  if (isRegression(o.model)) {
+    std::vector<LagData> logs;
+    for (const auto& s : segments) logs.push_back(lagData(s));
+    const LagForm form = o.model == ThermalModelKind::Linear ? LagForm::Static
+                         : o.model == ThermalModelKind::Lag  ? LagForm::Lag
+                                                             : LagForm::DistributedLag;
+    model.regression = fitLagModel(form, model.inputs.size(), logs, &t.cvRmse);
+    t.run.termination = Termination::Converged;
+    t.run.message = form == LagForm::Static ? "least squares (QR)"
+                                            : "least squares (QR), taus by blocked cross-validation";
+  } else if (o.model == ThermalModelKind::Mlp) {
     std::size_t rows = 0;
     for (const auto& s : segments) rows += s.rows();
     const std::size_t m = model.inputs.size();
@@ -213,6 +259,11 @@ std::vector<double> predictChange(const ThermalModel& model, const ThermalSeries
   if (s.inputs.size() != model.inputs.size())
     throw std::invalid_argument("predictChange: the series does not have the model's inputs");
   std::vector<double> out;
+  if (isRegression(model.kind)) {
+    LagData d = lagData(s);
+    d.target = {};
+    return predictLag(model.regression, d);
+  }
   if (model.kind == ThermalModelKind::Mlp) {
     out.resize(s.rows());
     std::vector<double> x(model.inputs.size());
@@ -261,6 +312,86 @@ ThermalEvaluation fitAndEvaluate(const ThermalSeries& series, double trainFracti
   ev.fit = thermalMetrics(y.first(ev.fitRows), p.first(ev.fitRows));
   ev.heldout = thermalMetrics(y.subspan(ev.fitRows), p.subspan(ev.fitRows));
   return ev;
+}
+
+bool ThermalEvaluation::heldoutFails() const {
+  if (!std::isfinite(heldout.rmse)) return true;
+  if (heldout.e < 0.0) return true;
+  return isGrey(training.model.kind) && !(training.model.grey.b1 > 0.0);
+}
+
+namespace {
+
+ThermalSeries sliceRows(const ThermalSeries& s, std::size_t begin, std::size_t end) {
+  ThermalSeries out = s;
+  auto cut = [&](std::vector<double>& v) {
+    if (v.empty()) return;
+    v = std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(begin),
+                            v.begin() + static_cast<std::ptrdiff_t>(end));
+  };
+  cut(out.timeMin);
+  cut(out.target);
+  for (auto& in : out.inputs) cut(in);
+  return out;
+}
+
+/// Blocked CV of GMC(1,N) on the first n rows (see ThermalSelection).
+double greyCvRmse(const ThermalSeries& head, const ThermalFitOptions& o) {
+  const std::size_t n = head.rows();
+  const std::vector<double> y = change(head.target);
+  double sse = 0.0;
+  for (int f = 0; f < kCvFolds; ++f) {
+    const std::size_t b = n * static_cast<std::size_t>(f) / kCvFolds;
+    const std::size_t e = n * static_cast<std::size_t>(f + 1) / kCvFolds;
+    std::vector<ThermalSeries> segments;
+    if (b >= head.inputs.size() + 4) segments.push_back(sliceRows(head, 0, b));
+    if (n - e >= head.inputs.size() + 4) segments.push_back(sliceRows(head, e, n));
+    if (segments.empty()) return std::numeric_limits<double>::infinity();
+    try {
+      ThermalFitOptions go = o;
+      go.model = ThermalModelKind::Gmc;
+      const ThermalTraining t = fitThermalModel(segments, go);
+      if (!(t.model.grey.b1 > 0.0)) return std::numeric_limits<double>::infinity();
+      const std::vector<double> p = predictChange(t.model, head);
+      for (std::size_t k = b; k < e; ++k) sse += (y[k] - p[k]) * (y[k] - p[k]);
+    } catch (const std::exception&) {
+      return std::numeric_limits<double>::infinity();
+    }
+  }
+  const double r = std::sqrt(sse / static_cast<double>(n));
+  return std::isfinite(r) ? r : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+ThermalSelection chooseThermalModel(const ThermalSeries& series, std::size_t fitRows,
+                                    const ThermalFitOptions& o) {
+  if (fitRows > series.rows()) throw std::invalid_argument("chooseThermalModel: more fit rows than rows");
+  const ThermalSeries head = series.head(fitRows);
+  ThermalSelection sel;
+  sel.candidates = {ThermalModelKind::Linear, ThermalModelKind::Lag, ThermalModelKind::DistributedLag,
+                    ThermalModelKind::Gmc};
+  double best = std::numeric_limits<double>::infinity();
+  for (ThermalModelKind k : sel.candidates) {
+    double score = std::numeric_limits<double>::infinity();
+    if (isRegression(k)) {
+      ThermalFitOptions ro = o;
+      ro.model = k;
+      validateFitData({head}, ro);
+      const LagForm form = k == ThermalModelKind::Linear ? LagForm::Static
+                           : k == ThermalModelKind::Lag  ? LagForm::Lag
+                                                         : LagForm::DistributedLag;
+      fitLagModel(form, head.inputs.size(), {lagData(head)}, &score);
+    } else {
+      score = greyCvRmse(head, o);
+    }
+    sel.cvRmse.push_back(score);
+    if (score < best) {
+      best = score;
+      sel.chosen = k;
+    }
+  }
+  return sel;
 }
 
 ModularEvaluation fitModular(const std::vector<ThermalSeries>& trainingTests, const ThermalSeries& test,
@@ -337,6 +468,14 @@ nlohmann::json thermalModelToJson(const ThermalModel& m) {
     n["v"] = vec(m.mlp.v);
     n["v0"] = m.mlp.v0;
     j["mlp"] = n;
+  } else if (isRegression(m.kind)) {
+    nlohmann::json terms = nlohmann::json::array();
+    for (std::size_t t = 0; t < m.regression.terms.size(); ++t) {
+      terms.push_back({{"input", m.inputs.at(m.regression.terms[t].input)},
+                       {"tau_min", m.regression.terms[t].tauMin},
+                       {"coefficient", m.regression.coef[t]}});
+    }
+    j["regression"] = {{"intercept", m.regression.intercept}, {"terms", terms}};
   } else {
     j["grey"] = {{"b1", m.grey.b1}, {"b", m.grey.b}, {"u", m.grey.u}};
   }
@@ -350,7 +489,9 @@ ThermalModel thermalModelFromJson(const nlohmann::json& j, const std::string& so
   if (r.integer("version") != 1) r.fail("unsupported version (this build reads version 1)", "version");
   ThermalModel m;
   const std::string kind = r.string("model");
-  if (kind != "gnnmci" && kind != "gmc" && kind != "mlp") r.fail("expected gnnmci, gmc or mlp", "model");
+  bool known = false;
+  for (auto k : kAllThermalModelKinds) known = known || kind == toString(k);
+  if (!known) r.fail("expected gnnmci, gmc, mlp, linear, lag or dlag", "model");
   m.kind = thermalModelKind(kind);
   m.target = r.string("target");
   const JsonReader in = r.array("inputs");
@@ -391,6 +532,22 @@ ThermalModel thermalModelFromJson(const nlohmann::json& j, const std::string& so
     m.mlp.c = eigenVec(numbers(net, "c", hs));
     m.mlp.v = eigenVec(numbers(net, "v", hs));
     m.mlp.v0 = net.number("v0");
+  } else if (isRegression(m.kind)) {
+    const JsonReader g = r.object("regression");
+    m.regression.intercept = g.number("intercept");
+    const JsonReader terms = g.array("terms");
+    if (terms.size() == 0) g.fail("needs at least one term", "terms");
+    for (std::size_t t = 0; t < terms.size(); ++t) {
+      const JsonReader term = terms.at(t);
+      term.requireObject();
+      const std::string input = term.string("input");
+      const auto it = std::find(m.inputs.begin(), m.inputs.end(), input);
+      if (it == m.inputs.end()) term.fail("'" + input + "' is not one of the model's inputs", "input");
+      const double tau = term.number("tau_min");
+      if (!(tau >= 0.0) || !std::isfinite(tau)) term.fail("must be a finite number >= 0", "tau_min");
+      m.regression.terms.push_back({static_cast<std::size_t>(it - m.inputs.begin()), tau});
+      m.regression.coef.push_back(term.number("coefficient"));
+    }
   } else {
     const JsonReader g = r.object("grey");
     m.grey.b1 = g.number("b1");
@@ -432,6 +589,19 @@ nlohmann::json thermalModelParameters(const ThermalModel& m) {
       p["weights"] = Mlp::parameterCount(m.mlp.inputs(), m.mlp.hidden());
       p["transfer"] = "logsig-purelin";
       break;
+    case ThermalModelKind::Linear:
+    case ThermalModelKind::Lag:
+    case ThermalModelKind::DistributedLag: {
+      p["intercept"] = m.regression.intercept;
+      nlohmann::json terms = nlohmann::json::array();
+      for (std::size_t t = 0; t < m.regression.terms.size(); ++t) {
+        terms.push_back({{"input", m.inputs.at(m.regression.terms[t].input)},
+                         {"tau_min", m.regression.terms[t].tauMin},
+                         {"coefficient", m.regression.coef[t]}});
+      }
+      p["terms"] = terms;
+      break;
+    }
   }
   p["time_unit_min"] = m.timeUnitMin;
   return p;
@@ -442,7 +612,7 @@ Compensation compensationValues(const ThermalModel& model, const ThermalSeries& 
   c.timeColumn = s.timeColumn;
   c.target = model.target;
   c.timeMin = s.timeMin;
-  if (model.kind != ThermalModelKind::Mlp && !(model.grey.b1 > 0.0)) {
+  if (isGrey(model.kind) && !(model.grey.b1 > 0.0)) {
     throw ValidationError(ErrorContext{{}, 0, 0, "b1"},
                           "the " + std::string(toString(model.kind)) +
                               " model is unstable (b1 = " + CsvWriter::formatNumber(model.grey.b1, 6) +

@@ -14,10 +14,15 @@
 //    held-out half for each model. CAIVIAC: target ch3_um (the largest displacement), inputs the 16
 //    temperatures; SJTU: target delta L (um), inputs T0..T15, time = row index x 1 min (the file has no
 //    time column).
+//  * Table 4 for CAIVIAC (issue 18): ch1, ch3, ch5; every model (the paper's three, linear, lag,
+//    dlag, auto) on t5, t9 (the issue's inputs) and on t5, t9, spindle_rpm; auto chooses on the fit
+//    rows only; target: the chosen model (t5, t9, rpm) at most half the static regression's (t5, t9)
+//    held-out RMSE on ch1 and not above it on ch3 / ch5.
 #include "bench_thermal.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -110,6 +115,82 @@ ThermalLog readSjtu(const std::string& path) {
   return log;
 }
 
+/// Issue 18 item 1: Table 4 for the real CAIVIAC log, ch1, ch3, ch5, first half fit, second half
+/// held out, every model on the issue's declared inputs (t5, t9) and with the spindle speed added
+/// (the heat source a thermal engineer tries next); `auto` chooses on the fit rows only.
+nlohmann::json realTable4(const ThermalLog& log) {
+  nlohmann::json out;
+  const std::vector<std::pair<std::string, std::vector<std::string>>> sets = {
+      {"t5,t9", {"t5_degC", "t9_degC"}}, {"t5,t9,rpm", {"t5_degC", "t9_degC", "spindle_rpm"}}};
+  bool doneAll = true;
+  std::printf(
+      "real-thermal Table 4, CAIVIAC, first half fit, second half held out (held-out R, RMSE um, E; "
+      "FAILED: held-out E < 0 or unstable)\n");
+  for (const char* ch : {"ch1_um", "ch3_um", "ch5_um"}) {
+    nlohmann::json jc;
+    double staticDeclared = 0.0, chosenRmse = 0.0;
+    for (const auto& [setName, inputs] : sets) {
+      const thermal::ThermalSeries s = thermal::selectThermalSeries(log, ch, inputs);
+      nlohmann::json js;
+      for (int k = 0; k < 7; ++k) {
+        thermal::ThermalFitOptions o =
+            options(k < 6 ? thermal::kAllThermalModelKinds[k] : ThermalModelKind::Linear);
+        std::string label = toString(o.model);
+        const auto a = Clock::now();
+        nlohmann::json extra;
+        if (k == 6) {
+          const thermal::ThermalSelection sel =
+              thermal::chooseThermalModel(s, thermal::fitRowCount(s.rows(), 0.5), o);
+          o.model = sel.chosen;
+          label = std::string("auto->") + toString(sel.chosen);
+          for (std::size_t i = 0; i < sel.candidates.size(); ++i)
+            extra[toString(sel.candidates[i])] =
+                std::isfinite(sel.cvRmse[i]) ? nlohmann::json(sel.cvRmse[i]) : nlohmann::json();
+        }
+        const thermal::ThermalEvaluation ev = thermal::fitAndEvaluate(s, 0.5, o);
+        const double t = seconds(a);
+        std::string taus;
+        for (const auto& term : ev.training.model.regression.terms) {
+          if (term.tauMin > 0.0)
+            taus += " " + inputs[term.input] + ":" + CsvWriter::formatNumber(term.tauMin) + "min";
+        }
+        if (thermal::isGrey(o.model) && ev.training.model.grey.b1 > 0.0)
+          taus = " tau " +
+                 CsvWriter::formatNumber(ev.training.model.timeUnitMin / ev.training.model.grey.b1, 4) +
+                 "min";
+        std::printf("  %-6s %-9s %-13s fit RMSE %7.3f | held-out R %7.3f RMSE %8.3f E %8.3f%s%s (%.2f s)\n",
+                    ch, setName.c_str(), label.c_str(), ev.fit.rmse, ev.heldout.r, ev.heldout.rmse,
+                    ev.heldout.e, ev.heldoutFails() ? " FAILED" : "", taus.c_str(), t);
+        nlohmann::json jm{{"fit", metricsJson(ev.fit)},
+                          {"heldout", metricsJson(ev.heldout)},
+                          {"heldout_passed", !ev.heldoutFails()},
+                          {"seconds", t}};
+        if (k == 6) {
+          jm["chosen"] = toString(o.model);
+          jm["cv_rmse"] = extra;
+        }
+        js[k == 6 ? std::string("auto") : label] = jm;
+        if (k == 3 && setName == "t5,t9") staticDeclared = ev.heldout.rmse;
+        if (k == 6 && setName == "t5,t9,rpm") chosenRmse = ev.heldout.rmse;
+      }
+      jc[setName] = js;
+    }
+    const double ratio = chosenRmse / staticDeclared;
+    const bool met = std::string(ch) == "ch1_um" ? ratio <= 0.5 : ratio <= 1.0;
+    doneAll = doneAll && met;
+    std::printf(
+        "  %-6s chosen (auto, t5,t9,rpm) %.3f um vs static regression (t5,t9) %.3f um: ratio %.2f "
+        "(target %s): %s\n",
+        ch, chosenRmse, staticDeclared, ratio, std::string(ch) == "ch1_um" ? "<= 0.5" : "<= 1",
+        met ? "met" : "NOT met");
+    jc["ratio_chosen_to_static"] = ratio;
+    jc["target_met"] = met;
+    out[ch] = jc;
+  }
+  out["target_met"] = doneAll;
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json benchThermal(const std::string& demoDataDir, int repeat) {
@@ -193,6 +274,7 @@ nlohmann::json benchRealThermal(const std::string& caiviacCsv, const std::string
       if (channelKind(ch) == ChannelKind::Temperature) temps.push_back(ch.name);
     }
     out["caiviac"] = realLog("CAIVIAC", log, "ch3_um", temps);
+    out["caiviac_table4"] = realTable4(log);
   }
   if (std::filesystem::exists(sjtuCsv)) {
     const ThermalLog log = readSjtu(sjtuCsv);

@@ -7,7 +7,8 @@
 //                  the Table 4 ordering as measured.
 //  --real-thermal  the bundled CAIVIAC log and the SJTU spindle log (../shared/data/real, read in place,
 //                  never copied): fit on the first half, predict the second, all three models' Table 4
-//                  metrics.
+//                  metrics; then Table 4 for CAIVIAC ch1, ch3, ch5 with every model (gnnmci, gmc, mlp,
+//                  linear, lag, dlag, auto) on t5, t9 and on t5, t9, spindle_rpm (issue 18 item 1).
 #include <nlohmann/json.hpp>
 #include <string>
 

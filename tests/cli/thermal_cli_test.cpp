@@ -66,6 +66,42 @@ TEST(ThermalCli, FitWritesTheContractKeysForEveryModel) {
   EXPECT_GT(g["parameters"]["w11"].get<double>(), 0.0);
 }
 
+TEST(ThermalCli, RegressionModelsAndAutoOnTheRealLog) {
+  // Issue 18 item 1: linear / lag / dlag / auto on the real CAIVIAC log (ch1, t5, t9 and the spindle
+  // speed); auto names what it chose and every candidate's blocked-CV score; every result says
+  // whether the held-out test passed; the chosen model's JSON goes through thermal predict.
+  test::TempDir tmp;
+  const std::string data = (test::sourceDir() / "resources/demo/data/thermal_caiviac.csv").string();
+  const std::string base =
+      "thermal fit --data " + data + " --target ch1_um --inputs t5_degC,t9_degC,spindle_rpm";
+  for (const char* model : {"linear", "lag", "dlag"}) {
+    const CliRun r = cli(base + " --model " + model + " --out " + model + ".json", tmp);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    const nlohmann::json j = readJson(tmp, std::string(model) + ".json");
+    EXPECT_EQ(j["model"], model);
+    EXPECT_EQ(j["train_rows"], 5558);
+    EXPECT_TRUE(j["heldout_check"]["passed"].is_boolean());
+    EXPECT_FALSE(j.contains("seed"));
+    EXPECT_EQ(j["parameters"]["terms"].size(), std::string(model) == "dlag" ? 6u : 3u);
+  }
+  const CliRun r = cli(base + " --model auto --out auto.json --save-model m.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("(auto: blocked CV RMSE on the fit rows linear "), std::string::npos) << r.err;
+  const nlohmann::json j = readJson(tmp, "auto.json");
+  EXPECT_EQ(j["selection"]["requested"], "auto");
+  EXPECT_EQ(j["selection"]["chosen"], j["model"]);
+  EXPECT_EQ(j["selection"]["folds"], 5);
+  for (const char* c : {"linear", "lag", "dlag", "gmc"})
+    EXPECT_TRUE(j["selection"]["cv_rmse"].contains(c)) << c;
+  EXPECT_EQ(j["heldout_check"]["passed"], true);
+  const nlohmann::json lin = readJson(tmp, "linear.json");
+  EXPECT_LT(j["heldout_rmse"].get<double>(), lin["heldout_rmse"].get<double>());
+  const CliRun p = cli("thermal predict --model-file m.json --data " + data + " --out comp.csv", tmp);
+  ASSERT_EQ(p.code, 0) << p.err;
+  EXPECT_NE(p.err.find("against ch1_um"), std::string::npos) << p.err;
+}
+
 TEST(ThermalCli, SameSeedSameResultAndModelDefaultFraction) {
   test::TempDir tmp;
   spindleLog(tmp);

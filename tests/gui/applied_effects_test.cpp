@@ -137,7 +137,7 @@ TEST_F(AppliedEffectsTest, ThermalModelsIncludeTheAppliedInputAndUndoRestoresThe
   }
   EXPECT_TRUE(
       label->text().startsWith(QStringLiteral("Applied effects input:spindle_rpm: used by GNNMCI(1,N), "
-                                              "GMC(1,N), MLP (held-out error ")))
+                                              "GMC(1,N), MLP, linear, lag, dlag (held-out error ")))
       << label->text().toStdString();
   EXPECT_FALSE(label->text().contains(QStringLiteral("not used"))) << label->text().toStdString();
   std::cout << label->text().toStdString() << "\n";
@@ -209,14 +209,15 @@ TEST_F(AppliedEffectsTest, DemoLagKeepsTheDeclaredModelsWhereItWouldRaiseTheHeld
   EXPECT_NEAR(e1[1], 0.479, 0.02);
   EXPECT_NEAR(e1[2], 2.90, 0.15);
   const QLocale l;
+  // The regression models (issue 18) fit the lag themselves better with it; the paper's three not.
+  EXPECT_TRUE(label->text().startsWith(QStringLiteral("Applied effects %1: used by linear, lag, dlag (")
+                                           .arg(QString::fromStdString(c->appliedText))))
+      << label->text().toStdString();
   const QString expected =
-      QStringLiteral(
-          "Applied effects %1: not used by GNNMCI(1,N), GMC(1,N), MLP (held-out error would rise: ")
-          .arg(QString::fromStdString(c->appliedText)) +
+      QStringLiteral("; not used by GNNMCI(1,N), GMC(1,N), MLP (held-out error would rise: ") +
       l.toString(c->declaredHeldoutRmse[0], 'f', 2) + QStringLiteral(" → ") +
       l.toString(c->appliedHeldoutRmse[0], 'f', 2) + QStringLiteral(" µm, ");
-  EXPECT_TRUE(label->text().startsWith(expected)) << label->text().toStdString();
-  EXPECT_FALSE(label->text().contains(QStringLiteral(": used by"))) << label->text().toStdString();
+  EXPECT_TRUE(label->text().contains(expected)) << label->text().toStdString();
   grab(*page.modelView(), QStringLiteral("thermal-applied-demo-lag"));
 }
 

@@ -92,11 +92,14 @@ TEST_F(ThermalPageModelsTest, GnnmciMetricsEqualTheCliForTheSameSeed) {
 
   // Table 4 on screen: two rows (fit, held out) per model, the held-out RMSE as computed.
   const QTableWidget* table = page.modelView()->metricsTable();
-  ASSERT_EQ(table->rowCount(), 6);
+  ASSERT_EQ(table->rowCount(), 12);  // the paper's three, then linear, lag, dlag (issue 18)
   EXPECT_EQ(table->item(0, 0)->text(), QStringLiteral("GNNMCI(1,N)"));
   EXPECT_EQ(table->item(1, 3)->text(), QString::number(g.heldout.rmse, 'f', 2));
   EXPECT_EQ(table->item(2, 0)->text(), QStringLiteral("GMC(1,N)"));
   EXPECT_EQ(table->item(4, 0)->text(), QStringLiteral("MLP"));
+  EXPECT_EQ(table->item(6, 0)->text(), QStringLiteral("linear"));
+  EXPECT_EQ(table->item(8, 0)->text(), QStringLiteral("lag"));
+  EXPECT_EQ(table->item(10, 0)->text(), QStringLiteral("dlag"));
   grab(page, QStringLiteral("models.png"));
 
   page.showView(QStringLiteral("hysteresis"));

@@ -45,9 +45,13 @@ struct ThermalModelSettings {
 ThermalModelSettings defaultThermalModelSettings(const ThermalLog& log, const nlohmann::json& thermalStudy,
                                                  const std::string& datasetId);
 
-/// The models in the order they are trained and shown.
-inline constexpr std::array<thermal::ThermalModelKind, 3> kThermalModelOrder = {
-    thermal::ThermalModelKind::Gnnmci, thermal::ThermalModelKind::Gmc, thermal::ThermalModelKind::Mlp};
+/// The models in the order they are trained and shown: the paper's three, then the regression models
+/// of real thermal logs (issue 18: static linear, first-order lag per sensor, distributed lag).
+inline constexpr std::array<thermal::ThermalModelKind, 6> kThermalModelOrder = {
+    thermal::ThermalModelKind::Gnnmci, thermal::ThermalModelKind::Gmc,
+    thermal::ThermalModelKind::Mlp,    thermal::ThermalModelKind::Linear,
+    thermal::ThermalModelKind::Lag,    thermal::ThermalModelKind::DistributedLag};
+inline constexpr std::size_t kThermalModelCount = kThermalModelOrder.size();
 
 /// Progress of a comparison: which model (index into kThermalModelOrder) and its iteration.
 using ThermalComparisonObserver = std::function<ObserverDecision(int model, const IterationSummary& summary)>;
@@ -61,12 +65,13 @@ struct ThermalComparison {
   /// variant with the lower held-out RMSE (ties: declared; core/diagnose/thermal_applied.h
   /// fitDeclaredAndWithEffects): `models` holds the kept fits, `usesApplied` which one each is, and
   /// the held-out RMSE of both variants (NaN where not fitted).
-  std::array<thermal::ThermalEvaluation, 3> models;  ///< in kThermalModelOrder, the kept variants
-  std::array<bool, 3> usesApplied{};                 ///< the model keeps the applied-effect inputs
-  std::array<double, 3> declaredHeldoutRmse{};       ///< held-out RMSE with the declared inputs
-  std::array<double, 3> appliedHeldoutRmse{};        ///< held-out RMSE with the applied effects
-  std::array<double, 3> seconds{};                   ///< wall time of each model's fit(s)
-  bool cancelled = false;                            ///< an observer stopped a training
+  std::array<thermal::ThermalEvaluation, kThermalModelCount>
+      models;                                          ///< in kThermalModelOrder, the kept variants
+  std::array<bool, kThermalModelCount> usesApplied{};  ///< the model keeps the applied-effect inputs
+  std::array<double, kThermalModelCount> declaredHeldoutRmse{};  ///< held-out RMSE with the declared inputs
+  std::array<double, kThermalModelCount> appliedHeldoutRmse{};   ///< held-out RMSE with the applied effects
+  std::array<double, kThermalModelCount> seconds{};              ///< wall time of each model's fit(s)
+  bool cancelled = false;                                        ///< an observer stopped a training
 };
 
 /// Fits and evaluates the three models (see above); with applied effects in the settings each model
@@ -80,8 +85,8 @@ ThermalComparison compareThermalModels(const ThermalLog& log, const ThermalModel
 struct ModularComparison {
   std::string target;
   std::vector<std::string> inputs;
-  thermal::ThermalSeries test;                       ///< the combined test
-  std::array<thermal::ModularEvaluation, 3> models;  ///< in kThermalModelOrder
+  thermal::ThermalSeries test;                                        ///< the combined test
+  std::array<thermal::ModularEvaluation, kThermalModelCount> models;  ///< in kThermalModelOrder
   bool cancelled = false;
 };
 

@@ -169,6 +169,12 @@ QColor thermalModelColor(thermal::ThermalModelKind kind) {
       return palette::modelGmc();
     case thermal::ThermalModelKind::Mlp:
       return palette::modelMlp();
+    case thermal::ThermalModelKind::Linear:
+      return QColor(0x55, 0x55, 0x55);
+    case thermal::ThermalModelKind::Lag:
+      return QColor(0x1b, 0x9e, 0x77);
+    case thermal::ThermalModelKind::DistributedLag:
+      return QColor(0x75, 0x70, 0xb3);
   }
   return QColor(Qt::black);
 }
@@ -181,6 +187,12 @@ QString thermalModelName(thermal::ThermalModelKind kind) {
       return QStringLiteral("GMC(1,N)");
     case thermal::ThermalModelKind::Mlp:
       return QStringLiteral("MLP");
+    case thermal::ThermalModelKind::Linear:
+      return QStringLiteral("linear");
+    case thermal::ThermalModelKind::Lag:
+      return QStringLiteral("lag");
+    case thermal::ThermalModelKind::DistributedLag:
+      return QStringLiteral("dlag");
   }
   return {};
 }

@@ -299,6 +299,14 @@ struct ThermalModelView::Impl {
           metrics->setItem(row, 4, cell(number(m.e, 4)));
           metrics->setItem(row, 5, cell(QStringLiteral("±") + number(m.residualBand, dec)));
         }
+        if (part == 1 && ev.heldoutFails()) {
+          // Issue 18: a model that predicts its held-out rows worse than their mean extrapolates
+          // poorly beyond its fit rows (the grey models on real logs, mostly); say so in the table.
+          metrics->setItem(row, 1, cell(ThermalModelView::tr("held out (%1): test failed").arg(m.n), true));
+          metrics->item(row, 1)->setToolTip(ThermalModelView::tr(
+              "The held-out test failed (E < 0 or an unstable model): this model "
+              "extrapolates poorly beyond its fit rows; do not use it for compensation."));
+        }
         if (i == 1 && ev.training.model.grey.b1 <= 0.0) {
           metrics->item(row, 0)->setToolTip(
               ThermalModelView::tr("Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows "

@@ -429,7 +429,7 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
   t.widths = {1.3, 1.3, 1.0, 1.1, 1.1, 1.1};
   t.alignment = {Qt::AlignLeft,  Qt::AlignLeft,  Qt::AlignRight,
                  Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
-  QStringList trainingNotes;
+  QStringList trainingNotes, failedModels;
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
     const thermal::ThermalEvaluation& ev = c.models[i];
     if (ev.predicted.size() != c.series.rows()) continue;
@@ -452,7 +452,13 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
                        .arg(ev.training.run.iterations)
                        .arg(QString::fromLatin1(toString(ev.training.run.termination)));
         break;
+      case thermal::ThermalModelKind::Linear:
+      case thermal::ThermalModelKind::Lag:
+      case thermal::ThermalModelKind::DistributedLag:
+        training = QString::fromStdString(ev.training.run.message);
+        break;
     }
+    if (ev.heldoutFails()) failedModels << thermalModelName(kThermalModelOrder[i]);
     trainingNotes << thermalModelName(kThermalModelOrder[i]) + QStringLiteral(": ") + training +
                          ReportText::tr(" (%1 s)").arg(c.seconds[i], 0, 'f', 2);
     for (int part = 0; part < 2; ++part) {
@@ -473,6 +479,12 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
   out.table(t);
   out.paragraph(ReportText::tr("Training: %1.").arg(trainingNotes.join(QStringLiteral("; "))),
                 ReportPainter::Font::Small);
+  if (!failedModels.isEmpty()) {
+    out.paragraph(ReportText::tr("Held-out test failed (E < 0 or an unstable model): %1. These models "
+                                 "extrapolate poorly beyond their fit rows and should not be used for "
+                                 "compensation as they are.")
+                      .arg(failedModels.join(QStringLiteral(", "))));
+  }
 }
 
 void writeModular(ReportPainter& out, const ReportContext& context, const ThermalLog& testLog) {

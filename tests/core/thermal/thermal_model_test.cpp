@@ -102,7 +102,8 @@ TEST(ThermalModel, ValidationErrorsNameFileAndColumn) {
     (void)thermalModelKind("ann");
     FAIL();
   } catch (const OptionsError& e) {
-    EXPECT_STREQ(e.what(), "field '--model': 'ann' is not a thermal model (gnnmci, gmc or mlp)");
+    EXPECT_STREQ(e.what(),
+                 "field '--model': 'ann' is not a thermal model (gnnmci, gmc, mlp, linear, lag or dlag)");
   }
 }
 
