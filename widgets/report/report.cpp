@@ -16,6 +16,7 @@
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
 #include "core/project/project.h"
+#include "core/project/study_check.h"
 #include "metrofit/version.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
@@ -89,13 +90,17 @@ std::vector<ReportDataset> readDatasets(const Project& project, const QString& p
     if (ref.kind == dataset_kind::kThermalLog) {
       d.thermal = readThermalLog(path);
       d.rows = static_cast<long>(d.thermal->rows());
+      d.columns.push_back(d.thermal->timeColumn);
+      for (const ThermalChannel& c : d.thermal->channels) d.columns.push_back(c.name);
     } else if (ref.kind == dataset_kind::kProbePoints) {
       d.probes = readProbePoints(path);
       d.rows = static_cast<long>(d.probes->points.size());
     } else if (ref.kind == dataset_kind::kSetupModel) {
       readFile(path);  // a JSON model: no rows, but it must be readable
     } else {
-      d.rows = static_cast<long>(readCsvFile(path).rowCount());
+      const CsvTable table = readCsvFile(path);
+      d.rows = static_cast<long>(table.rowCount());
+      d.columns = table.header();
     }
     datasets.push_back(std::move(d));
   }
@@ -163,11 +168,20 @@ ReportSummary writeReport(const Project& project, const QString& pdfPath, const 
                        "the report resolution must lie in [" + std::to_string(kMinDpi) + ", " +
                            std::to_string(kMaxDpi) + "] dpi, not " + std::to_string(options.resolutionDpi));
   }
+  // Every study setting is checked before anything is read or drawn: a bad one is an error naming
+  // the study and the field, never a quiet default.
+  const std::string source = options.projectPath.toStdString();
+  validateStudies(project, source);
   ReportContext context;
   context.project = &project;
   context.title = options.title.isEmpty() ? QString::fromStdString(project.name) : options.title;
   context.date = QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"));
   context.datasets = readDatasets(project, options.projectPath);
+  validateStudies(project, source, [&context](const std::string& id) -> const std::vector<std::string>* {
+    for (const ReportDataset& d : context.datasets)
+      if (d.ref.id == id && !d.columns.empty()) return &d.columns;
+    return nullptr;
+  });
   context.probeToleranceMm = kDefaultProbeToleranceMm;
   if (const auto m = project.studies.find(study::kMatching); m != project.studies.end() && m->is_object()) {
     if (const auto t = m->find("tolerance_mm"); t != m->end()) {

@@ -32,6 +32,7 @@ struct ReportDataset {
   DatasetRef ref;
   QString path;                         ///< resolved against the project folder
   long rows = -1;                       ///< data rows or points; -1 when the kind has no rows (setup model)
+  std::vector<std::string> columns;     ///< column names (CSV kinds), for the settings check
   std::optional<ThermalLog> thermal;    ///< for thermal_log datasets
   std::optional<ProbePointSet> probes;  ///< for probe_points datasets
 };

@@ -587,10 +587,10 @@ void concludeThermal(ReportPainter& out, const ReportContext& context, const Rep
     if (!rejectedText.isEmpty()) f.found += QLatin1Char(' ') + rejectedText;
     f.after = ReportText::tr("RMS %1%2 (band ±%3%2) left with %4")
                   .arg(metric(ev.heldout.rmse, dec), u, metric(ev.heldout.residualBand, dec), name);
-    f.changes.push_back({ReportText::tr("thermal compensation of %1").arg(target), name,
-                         ReportText::tr("model fitted on %1 (Thermal page, or metrofit-cli thermal fit "
-                                        "--save-model)")
-                             .arg(QString::fromStdString(dataset.ref.id))});
+    f.changes.push_back(
+        {ReportText::tr("thermal compensation of %1").arg(target), name,
+         ReportText::tr("model fitted on %1 (Thermal page; metrofit-cli thermal fit saves it)")
+             .arg(QString::fromStdString(dataset.ref.id))});
     f.conclusion = ReportText::tr(
                        "%1 predicts %2 on rows it was not fitted on to RMS %3%4, from RMS %5%4 "
                        "without compensation.")
