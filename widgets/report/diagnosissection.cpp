@@ -7,6 +7,7 @@
 // against the variable of the strongest structure, and a before / after table.
 #include <QCoreApplication>
 #include <QPainter>
+#include <QRegularExpression>
 
 #include <algorithm>
 #include <cmath>
@@ -153,8 +154,7 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
       break;
   }
   out.paragraph(declared);
-  for (const std::string& note : d->notes)
-    out.paragraph(QString::fromStdString(note), ReportPainter::Font::Small);
+  for (const std::string& note : d->notes) out.paragraph(readerText(note), ReportPainter::Font::Small);
   out.paragraph(ReportText::tr("Step 0, the declared model: %1.").arg(errorLine(d->baseline, u)));
 
   const bool heldout = d->baseline.heldoutRmse.has_value();
@@ -182,10 +182,10 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
   out.table(t);
   out.paragraph(ReportText::tr("Evidence, per candidate (# = loop round):"), ReportPainter::Font::Small);
   for (const diagnose::Candidate& c : d->effects) {
-    out.paragraph(QStringLiteral("%1 %2: %3")
-                      .arg(QString::number(c.round + 1), QString::fromStdString(c.name),
-                           QString::fromStdString(c.evidence)),
-                  ReportPainter::Font::Small);
+    out.paragraph(
+        QStringLiteral("%1 %2: %3")
+            .arg(QString::number(c.round + 1), QString::fromStdString(c.name), readerText(c.evidence)),
+        ReportPainter::Font::Small);
   }
   const auto accepted = d->accepted();
   if (accepted.empty()) {

@@ -245,7 +245,7 @@ void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
            .arg(QString::number(r.trend.angleDeg, 'g', 3), QString::number(r.trend.slope, 'g', 3), u,
                 QString::number(r.trend.r2, 'f', 2))});
   out.table(t);
-  out.paragraph(ReportText::tr("SPC-gated compensation: %1").arg(QString::fromStdString(r.decision.reason)));
+  out.paragraph(ReportText::tr("SPC-gated compensation: %1").arg(readerText(r.decision.reason)));
 }
 
 /// The section's conclusion: the identified errors, the compensation and the SPC decision.
@@ -284,8 +284,7 @@ void concludeKinematics(ReportPainter& out, const ReportContext& context, const 
     if (r.capability.cpk)
       f.found += QLatin1Char(' ') + ReportText::tr("Cpk %1.").arg(*r.capability.cpk, 0, 'f', 2);
     f.conclusion +=
-        QLatin1Char(' ') +
-        ReportText::tr("SPC-gated compensation: %1").arg(QString::fromStdString(r.decision.reason));
+        QLatin1Char(' ') + ReportText::tr("SPC-gated compensation: %1").arg(readerText(r.decision.reason));
   }
   concludeSection(out, context, f);
 }

@@ -98,6 +98,11 @@ struct ReportContext {
 /// Tolerance (mm) of the probe-point section when the project's matching study sets none.
 inline constexpr double kDefaultProbeToleranceMm = 0.05;
 
+/// A text made by core (evidence, notes, the SPC decision) in the reader's symbols: ± for "+-", → for
+/// "->", µm for "um", ° for "deg" after a number, and small numbers to three significant digits
+/// (0.00123535 → 0.00124).
+QString readerText(const std::string& text);
+
 /// Ends a section: a "Conclusion" block with the finding's conclusion and recommendation, and keeps
 /// the finding for the summary on page 1 (summarysection.cpp).
 void concludeSection(ReportPainter& out, const ReportContext& context, SectionFinding finding);

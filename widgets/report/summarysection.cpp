@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QFileInfo>
+#include <QRegularExpression>
 
 #include <functional>
 #include <map>
@@ -84,6 +85,22 @@ std::set<std::string> usedDatasetIds(const Project& project) {
 }
 
 }  // namespace
+
+QString readerText(const std::string& text) {
+  QString s = QString::fromStdString(text);
+  s.replace(QStringLiteral("+-"), QStringLiteral("±")).replace(QStringLiteral("->"), QStringLiteral("→"));
+  s.replace(QRegularExpression(QStringLiteral("(\\d) um\\b")), QStringLiteral("\\1 µm"));
+  s.replace(QRegularExpression(QStringLiteral("(\\d) deg\\b")), QStringLiteral("\\1°"));
+  static const QRegularExpression small(QStringLiteral("(?<![\\d.])0\\.0*[1-9]\\d{3,}"));
+  QString out;
+  qsizetype last = 0;
+  for (auto it = small.globalMatch(s); it.hasNext();) {
+    const QRegularExpressionMatch m = it.next();
+    out += s.mid(last, m.capturedStart() - last) + QString::number(m.captured().toDouble(), 'g', 3);
+    last = m.capturedEnd();
+  }
+  return out + s.mid(last);
+}
 
 QString citation(int seed) {
   int n = 1;
@@ -266,8 +283,17 @@ void writeAppendix(ReportPainter& out, const ReportContext& context) {
     ReportTable t;
     t.header = {ReportText::tr("study"), ReportText::tr("settings as the project file holds them")};
     t.widths = {1.0, 4.0};
-    for (auto it = context.project->studies.begin(); it != context.project->studies.end(); ++it)
-      t.rows.push_back({QString::fromStdString(it.key()), QString::fromStdString(it->dump())});
+    // The effects applied from the diagnosis are reported where a study uses them, not here.
+    const std::function<void(nlohmann::json&)> dropApplied = [&](nlohmann::json& j) {
+      if (!j.is_object()) return;
+      j.erase("applied");
+      for (auto& v : j) dropApplied(v);
+    };
+    for (auto it = context.project->studies.begin(); it != context.project->studies.end(); ++it) {
+      nlohmann::json settings = *it;
+      dropApplied(settings);
+      t.rows.push_back({QString::fromStdString(it.key()), QString::fromStdString(settings.dump())});
+    }
     out.table(t);
   }
 }
