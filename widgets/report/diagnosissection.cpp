@@ -252,7 +252,10 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
   if (const qsizetype stop = verdict.indexOf(QStringLiteral(". ")); stop > 0)
     verdict = verdict.left(stop + 1);
   f.unexplained = verdict.isEmpty() ? ReportText::tr("not checked") : verdict;
-  f.conclusion = f.found + QLatin1Char(' ') + (sentences.isEmpty() ? QString() : sentences.front());
+  f.conclusion = f.found;
+  if (!verdict.isEmpty())
+    f.conclusion += QLatin1Char(' ') +
+                    ReportText::tr("Still unexplained: %1").arg(verdict.left(1).toLower() + verdict.mid(1));
   if (!accepted.empty())
     f.recommendation = white ? ReportText::tr("Add %1 to the model (Apply on the Diagnosis page).")
                                    .arg(names.join(QStringLiteral(", ")))
