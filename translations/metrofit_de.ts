@@ -2026,7 +2026,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::OverviewPage</name>
     <message>
-        <location filename="../app/gui/overviewpage.cpp" line="+29"/>
+        <location filename="../app/gui/overviewpage.cpp" line="+31"/>
         <source>Project overview</source>
         <translation>Projektübersicht</translation>
     </message>
@@ -2081,9 +2081,14 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Diesen Hinweis ausblenden (er erscheint nicht wieder)</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+61"/>
         <source>not saved yet</source>
         <translation>noch nicht gespeichert</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Study settings the methods cannot use; correct them in the project file:</source>
+        <translation>Studien-Einstellungen, die die Verfahren nicht verwenden können; korrigieren Sie sie in der Projektdatei:</translation>
     </message>
 </context>
 <context>
@@ -6368,7 +6373,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+76"/>
+        <location filename="../widgets/charts/thermalmodelview.cpp" line="+79"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -6433,50 +6438,56 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>divergiert</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+22"/>
         <source>Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows without bound on the held-out rows</source>
         <translation>Die kleinsten Quadrate ergaben ein instabiles GMC(1,N): b1 = %1 ≤ 0; seine Ausgabe wächst auf den Testdaten unbeschränkt</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+53"/>
-        <location line="+118"/>
+        <location line="+71"/>
+        <location line="+119"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location line="-171"/>
-        <location line="+171"/>
+        <location line="-190"/>
+        <location line="+190"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
     <message>
-        <location line="-170"/>
-        <location line="+170"/>
+        <location line="-189"/>
+        <location line="+189"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-170"/>
-        <location line="+170"/>
+        <location line="-189"/>
+        <location line="+189"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-169"/>
-        <location line="+53"/>
-        <location line="+116"/>
+        <location line="-188"/>
+        <location line="+71"/>
+        <location line="+117"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-169"/>
-        <location line="+169"/>
+        <location line="-188"/>
+        <location line="+188"/>
         <source>band</source>
         <translation>Band</translation>
     </message>
     <message>
-        <location line="-162"/>
+        <location line="-187"/>
+        <location line="+187"/>
+        <source>verdict</source>
+        <translation>Urteil</translation>
+    </message>
+    <message>
+        <location line="-180"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -6486,12 +6497,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation> (instabil: b1 ≤ 0)</translation>
     </message>
     <message>
+        <location line="+14"/>
+        <source>Best usable model: %1.</source>
+        <translation>Bestes verwendbares Modell: %1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No model is usable for compensation: record a longer test or add the inputs the diagnosis finds.</source>
+        <translation>Kein Modell taugt zur Kompensation: Zeichnen Sie einen längeren Test auf oder nehmen Sie die Eingänge auf, die die Diagnose findet.</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>%1 fit rows, %2 held out; %3.</source>
         <translation>%1 Zeilen zur Anpassung, %2 Testdaten; %3.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 % (GMC(1,N) %2 %, MLP %3 %).</source>
         <translation>&lt;b&gt;Modularer Fall:&lt;/b&gt; GNNMCI(1,N), angepasst an den Z- und C-Tests, verringert den Fehler des kombinierten Tests um %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
     </message>
@@ -6586,7 +6607,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&amp;Eingänge:</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>Correlation coefficient of measured and predicted</source>
         <translation>Korrelationskoeffizient zwischen gemessen und vorhergesagt</translation>
     </message>
@@ -6606,7 +6627,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Größtes |Residuum|, in der Einheit der Zielgröße</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Usable for compensation when on the held-out rows it does not diverge, E ≥ %1 and R ≥ %2</source>
+        <translation>Zur Kompensation verwendbar, wenn es auf den zurückgehaltenen Zeilen nicht divergiert, E ≥ %1 und R ≥ %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Modular models (Section 4.3)</source>
         <translation>Modulare Modelle (Abschnitt 4.3)</translation>
     </message>

@@ -2028,7 +2028,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::OverviewPage</name>
     <message>
-        <location filename="../app/gui/overviewpage.cpp" line="+29"/>
+        <location filename="../app/gui/overviewpage.cpp" line="+31"/>
         <source>Project overview</source>
         <translation>Przegląd projektu</translation>
     </message>
@@ -2083,9 +2083,14 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ukryj tę wskazówkę (nie pojawi się ponownie)</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+61"/>
         <source>not saved yet</source>
         <translation>jeszcze nie zapisano</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Study settings the methods cannot use; correct them in the project file:</source>
+        <translation>Ustawienia badań, których metody nie mogą użyć; popraw je w pliku projektu:</translation>
     </message>
 </context>
 <context>
@@ -6387,7 +6392,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+76"/>
+        <location filename="../widgets/charts/thermalmodelview.cpp" line="+79"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -6452,50 +6457,56 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>rozbieżny</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+22"/>
         <source>Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows without bound on the held-out rows</source>
         <translation>Metoda najmniejszych kwadratów dała niestabilny GMC(1,N): b1 = %1 ≤ 0; jego wyjście rośnie bez ograniczeń na danych testowych</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+53"/>
-        <location line="+118"/>
+        <location line="+71"/>
+        <location line="+119"/>
         <source>model</source>
         <translation>model</translation>
     </message>
     <message>
-        <location line="-171"/>
-        <location line="+171"/>
+        <location line="-190"/>
+        <location line="+190"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
     <message>
-        <location line="-170"/>
-        <location line="+170"/>
+        <location line="-189"/>
+        <location line="+189"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-170"/>
-        <location line="+170"/>
+        <location line="-189"/>
+        <location line="+189"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-169"/>
-        <location line="+53"/>
-        <location line="+116"/>
+        <location line="-188"/>
+        <location line="+71"/>
+        <location line="+117"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-169"/>
-        <location line="+169"/>
+        <location line="-188"/>
+        <location line="+188"/>
         <source>band</source>
         <translation>pasmo</translation>
     </message>
     <message>
-        <location line="-162"/>
+        <location line="-187"/>
+        <location line="+187"/>
+        <source>verdict</source>
+        <translation>ocena</translation>
+    </message>
+    <message>
+        <location line="-180"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -6505,12 +6516,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation> (niestabilny: b1 ≤ 0)</translation>
     </message>
     <message>
+        <location line="+14"/>
+        <source>Best usable model: %1.</source>
+        <translation>Najlepszy użyteczny model: %1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No model is usable for compensation: record a longer test or add the inputs the diagnosis finds.</source>
+        <translation>Żaden model nie nadaje się do kompensacji: zarejestruj dłuższy test lub dodaj wejścia wskazane przez diagnozę.</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>%1 fit rows, %2 held out; %3.</source>
         <translation>wiersze dopasowania: %1, dane testowe: %2; %3.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 % (GMC(1,N) %2 %, MLP %3 %).</source>
         <translation>&lt;b&gt;Przypadek modułowy:&lt;/b&gt; GNNMCI(1,N) dopasowany na testach Z i C zmniejsza błąd testu łączonego o %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
     </message>
@@ -6605,7 +6626,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Wejści&amp;a:</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>Correlation coefficient of measured and predicted</source>
         <translation>Współczynnik korelacji wartości zmierzonych i przewidywanych</translation>
     </message>
@@ -6625,7 +6646,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Największe |residuum|, w jednostce wielkości docelowej</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Usable for compensation when on the held-out rows it does not diverge, E ≥ %1 and R ≥ %2</source>
+        <translation>Nadaje się do kompensacji, gdy na odłożonych wierszach nie rozbiega się, E ≥ %1 i R ≥ %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Modular models (Section 4.3)</source>
         <translation>Modele modułowe (rozdział 4.3)</translation>
     </message>

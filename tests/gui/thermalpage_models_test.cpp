@@ -4,6 +4,8 @@
 // $METROFIT_TEST_OUT/thermalpage for people to look at.
 #include <gtest/gtest.h>
 
+#include "core/thermal/model_verdict.h"
+
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -97,6 +99,19 @@ TEST_F(ThermalPageModelsTest, GnnmciMetricsEqualTheCliForTheSameSeed) {
   EXPECT_EQ(table->item(1, 3)->text(), QString::number(g.heldout.rmse, 'f', 2));
   EXPECT_EQ(table->item(2, 0)->text(), QStringLiteral("GMC(1,N)"));
   EXPECT_EQ(table->item(4, 0)->text(), QStringLiteral("MLP"));
+  // Issue 17: each held-out row carries the verdict; the status names the best usable model.
+  for (int row : {1, 3, 5}) {
+    ASSERT_NE(table->item(row, 6), nullptr) << row;
+    EXPECT_TRUE(table->item(row, 6)->text().startsWith(QStringLiteral("usable")) ||
+                table->item(row, 6)->text().startsWith(QStringLiteral("not usable: ")))
+        << table->item(row, 6)->text().toStdString();
+  }
+  EXPECT_EQ(table->item(1, 6)->text().startsWith(QStringLiteral("usable")),
+            thermal::judgeThermalModel(g.heldout, thermal::targetScale(c->series.target)) ==
+                thermal::ModelVerdict::Usable);
+  EXPECT_TRUE(page.modelView()->statusText().contains(QStringLiteral("Best usable model: ")) ||
+              page.modelView()->statusText().contains(QStringLiteral("No model is usable")))
+      << page.modelView()->statusText().toStdString();
   grab(page, QStringLiteral("models.png"));
 
   page.showView(QStringLiteral("hysteresis"));
