@@ -307,10 +307,9 @@ struct ThermalModelView::Impl {
         if (part == 1) {
           const thermal::ModelVerdict v = thermal::judgeThermalModel(ev.heldout, scale);
           const QString reason = thermalVerdictReason(v, ev.heldout);
-          QTableWidgetItem* verdict =
-              cell(reason.isEmpty() ? thermalVerdictLabel(v)
-                                    : thermalVerdictLabel(v) + QStringLiteral(": ") + reason,
-                   true);
+          // The label in the cell (a table cell would elide a long reason); the reason in the tooltip
+          // and in full in the status text below the Train button.
+          QTableWidgetItem* verdict = cell(thermalVerdictLabel(v), true);
           verdict->setToolTip(reason);
           if (v != thermal::ModelVerdict::Usable) verdict->setForeground(QColor(0xb0, 0x20, 0x20));
           metrics->setItem(row, 6, verdict);
@@ -342,11 +341,16 @@ struct ThermalModelView::Impl {
     }
     // The best usable model by held-out RMSE, named; or none.
     int best = -1;
+    QStringList notUsable;
     for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
       const thermal::ThermalEvaluation& ev = r.models[i];
-      if (ev.predicted.size() != r.series.rows() ||
-          thermal::judgeThermalModel(ev.heldout, scale) != thermal::ModelVerdict::Usable)
+      if (ev.predicted.size() != r.series.rows()) continue;
+      const thermal::ModelVerdict v = thermal::judgeThermalModel(ev.heldout, scale);
+      if (v != thermal::ModelVerdict::Usable) {
+        notUsable << thermalModelName(kThermalModelOrder[i]) + QStringLiteral(" ") + thermalVerdictLabel(v) +
+                         QStringLiteral(": ") + thermalVerdictReason(v, ev.heldout) + QLatin1Char('.');
         continue;
+      }
       if (best < 0 || ev.heldout.rmse < r.models[static_cast<std::size_t>(best)].heldout.rmse)
         best = static_cast<int>(i);
     }
@@ -360,7 +364,8 @@ struct ThermalModelView::Impl {
                         .arg(r.models[0].fitRows)
                         .arg(r.models[0].heldoutRows)
                         .arg(parts.join(QStringLiteral(", "))) +
-                    QLatin1Char(' ') + bestText);
+                    QLatin1Char(' ') + bestText +
+                    (notUsable.isEmpty() ? QString() : QLatin1Char(' ') + notUsable.join(QLatin1Char(' '))));
     progress->setValue(kProgressMax);
     updateAppliedLabel();
   }
