@@ -308,8 +308,8 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     <name>metrofit::ControlChartView</name>
     <message>
         <location line="+54"/>
-        <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (seed 002, Eq. 18-19); red points are out of control.</source>
-        <translation>Mittelwerte der Untergruppen mit Mittellinie (CL) und den Eingriffsgrenzen UCL/LCL = Mittelwert ± A2 · R̄ (Quelle 002, Gl. 18-19); rote Punkte liegen außerhalb der Grenzen.</translation>
+        <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (kinematic-compensation paper, Eq. 18–19); red points are out of control.</source>
+        <translation>Mittelwerte der Untergruppen mit Mittellinie (CL) und den Eingriffsgrenzen UCL/LCL = Mittelwert ± A2 · R̄ (Artikel zur kinematischen Kompensation, Gl. 18–19); rote Punkte liegen außerhalb der Grenzen.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -368,27 +368,27 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+420"/>
+        <location line="+423"/>
         <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
         <translation>%1: ein generischer Effekt (was kein Effekt des Katalogs erklärt) kann dem Modell der Studie (%2) noch nicht hinzugefügt werden; er wird hier und in der Residuenprüfung angezeigt, nicht übernommen</translation>
     </message>
     <message>
-        <location line="+161"/>
+        <location line="+162"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-516"/>
+        <location line="-518"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-49"/>
         <source>mm/part</source>
         <translation>mm/Werkstück</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+50"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -414,12 +414,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+5"/>
-        <location line="+308"/>
+        <location line="+309"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
     </message>
     <message>
-        <location line="-294"/>
+        <location line="-295"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Das deklarierte Modell, wie es vor dem Hinzufügen eines Effekts angepasst wurde</translation>
     </message>
@@ -485,7 +485,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+1"/>
-        <location line="+161"/>
+        <location line="+162"/>
         <location line="+130"/>
         <source>Residual chec&amp;k</source>
         <translation>Residuen&amp;prüfung</translation>
@@ -573,12 +573,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Nichts zu übernehmen. %1.</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Applies %1 only. %2.</source>
         <translation>Übernimmt nur %1. %2.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -638,7 +638,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Form: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>A generic effect: %1 in %2, for structure no catalogue effect explains</source>
         <translation>Ein generischer Effekt: %1 in %2, für Struktur, die kein Effekt des Katalogs erklärt</translation>
     </message>
@@ -1675,7 +1675,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Einheit</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>Round</source>
         <translation>Runde</translation>
     </message>
@@ -1701,11 +1701,21 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+0"/>
+        <source>true max |d| (mm)</source>
+        <translation>wahres max |d| (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>true out of tolerance</source>
+        <translation>wirklich außerhalb der Toleranz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>SZ (mm)</source>
         <translation>SZ (mm)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>rotary 1 (deg)</source>
         <translation>Drehachse 1 (Grad)</translation>
     </message>
@@ -1954,36 +1964,56 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Die Nachmessschleife wurde nicht ausgeführt.</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+1"/>
+        <location line="+7"/>
+        <location line="+2"/>
         <source>S%1 (deg)</source>
         <translation>S%1 (Grad)</translation>
     </message>
-    <message>
-        <location line="+2"/>
-        <source>Step 7 with the simulator as machine and CMM (true posture: the %1 fit, probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
-        <translation>Schritt 7 mit dem Simulator als Maschine und KMG (wahre Lage: die %1-Anpassung, Antastrauschen %2 mm): messen, ausrichten, WKS anpassen, nachmessen. %3</translation>
-    </message>
     <message numerus="yes">
-        <location line="+4"/>
-        <source>Every point is inside the tolerance after %n adjustment(s).</source>
+        <location line="+7"/>
+        <source>Every point is inside the tolerance after %n adjustment(s); the true remaining error is %1 mm at most.</source>
         <translation>
-            <numerusform>Nach %n Einstellung liegt jeder Punkt innerhalb der Toleranz.</numerusform>
-            <numerusform>Nach %n Einstellungen liegt jeder Punkt innerhalb der Toleranz.</numerusform>
+            <numerusform>Nach %n Korrektur liegt jeder Punkt in der Toleranz; der wahre Restfehler beträgt höchstens %1 mm.</numerusform>
+            <numerusform>Nach %n Korrekturen liegt jeder Punkt in der Toleranz; der wahre Restfehler beträgt höchstens %1 mm.</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Still out of tolerance after the last adjustment.</source>
-        <translation>Nach der letzten Einstellung weiterhin außerhalb der Toleranz.</translation>
+        <location line="+6"/>
+        <source>FAILED: the best fit leaves points out of tolerance (form error larger than the tolerance); no WCS adjustment can bring them in. True remaining error %1 mm, %2 point(s) out.</source>
+        <translation>FEHLGESCHLAGEN: die beste Einpassung lässt Punkte außerhalb der Toleranz (Formfehler größer als die Toleranz); keine WKS-Korrektur kann sie hineinbringen. Wahrer Restfehler %1 mm, %2 Punkt(e) außerhalb.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+11"/>
+        <source>FAILED: the adjustment is beyond the machine&apos;s travel (%1); the WCS was not moved. True remaining error %2 mm.</source>
+        <translation>FEHLGESCHLAGEN: die Korrektur liegt außerhalb des Verfahrbereichs der Maschine (%1); das WKS wurde nicht verschoben. Wahrer Restfehler %2 mm.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>FAILED: still out of tolerance after the last adjustment. True remaining error %1 mm.</source>
+        <translation>FEHLGESCHLAGEN: nach der letzten Korrektur weiterhin außerhalb der Toleranz. Wahrer Restfehler %1 mm.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Stopped before the end.</source>
+        <translation>Vor dem Ende angehalten.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Step 7 with the simulator as machine and CMM (the part where the probe found it, with its form error; the %1 fit does not place it; probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
+        <translation>Schritt 7 mit dem Simulator als Maschine und KMG (das Teil dort, wo der Taster es fand, mit seinem Formfehler; die %1-Einpassung platziert es nicht; Antastrauschen %2 mm): messen, einpassen, WKS korrigieren, nachmessen. %3</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>stopped: %1</source>
+        <translation>angehalten: %1</translation>
+    </message>
+    <message>
+        <location line="-1"/>
         <source>in tolerance: no adjustment</source>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-372"/>
+        <location line="-419"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -2014,45 +2044,6 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Diese Antastpunkte können nicht angezeigt werden:
 %1</translation>
     </message>
-    <message>
-        <source>true max |d| (mm)</source>
-        <translation>wahres max |d| (mm)</translation>
-    </message>
-    <message>
-        <source>true out of tolerance</source>
-        <translation>wirklich außerhalb der Toleranz</translation>
-    </message>
-    <message numerus="yes">
-        <source>Every point is inside the tolerance after %n adjustment(s); the true remaining error is %1 mm at most.</source>
-        <translation>
-            <numerusform>Nach %n Korrektur liegt jeder Punkt in der Toleranz; der wahre Restfehler beträgt höchstens %1 mm.</numerusform>
-            <numerusform>Nach %n Korrekturen liegt jeder Punkt in der Toleranz; der wahre Restfehler beträgt höchstens %1 mm.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>FAILED: the best fit leaves points out of tolerance (form error larger than the tolerance); no WCS adjustment can bring them in. True remaining error %1 mm, %2 point(s) out.</source>
-        <translation>FEHLGESCHLAGEN: die beste Einpassung lässt Punkte außerhalb der Toleranz (Formfehler größer als die Toleranz); keine WKS-Korrektur kann sie hineinbringen. Wahrer Restfehler %1 mm, %2 Punkt(e) außerhalb.</translation>
-    </message>
-    <message>
-        <source>FAILED: the adjustment is beyond the machine&apos;s travel (%1); the WCS was not moved. True remaining error %2 mm.</source>
-        <translation>FEHLGESCHLAGEN: die Korrektur liegt außerhalb des Verfahrbereichs der Maschine (%1); das WKS wurde nicht verschoben. Wahrer Restfehler %2 mm.</translation>
-    </message>
-    <message>
-        <source>FAILED: still out of tolerance after the last adjustment. True remaining error %1 mm.</source>
-        <translation>FEHLGESCHLAGEN: nach der letzten Korrektur weiterhin außerhalb der Toleranz. Wahrer Restfehler %1 mm.</translation>
-    </message>
-    <message>
-        <source>Stopped before the end.</source>
-        <translation>Vor dem Ende angehalten.</translation>
-    </message>
-    <message>
-        <source>Step 7 with the simulator as machine and CMM (the part where the probe found it, with its form error; the %1 fit does not place it; probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
-        <translation>Schritt 7 mit dem Simulator als Maschine und KMG (das Teil dort, wo der Taster es fand, mit seinem Formfehler; die %1-Einpassung platziert es nicht; Antastrauschen %2 mm): messen, einpassen, WKS korrigieren, nachmessen. %3</translation>
-    </message>
-    <message>
-        <source>stopped: %1</source>
-        <translation>angehalten: %1</translation>
-    </message>
 </context>
 <context>
     <name>metrofit::NotesEdit</name>
@@ -2065,7 +2056,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::OverviewPage</name>
     <message>
-        <location filename="../app/gui/overviewpage.cpp" line="+29"/>
+        <location filename="../app/gui/overviewpage.cpp" line="+31"/>
         <source>Project overview</source>
         <translation>Projektübersicht</translation>
     </message>
@@ -2120,9 +2111,14 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Diesen Hinweis ausblenden (er erscheint nicht wieder)</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+61"/>
         <source>not saved yet</source>
         <translation>noch nicht gespeichert</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Study settings the methods cannot use; correct them in the project file:</source>
+        <translation>Studien-Einstellungen, die die Verfahren nicht verwenden können; korrigieren Sie sie in der Projektdatei:</translation>
     </message>
 </context>
 <context>
@@ -2261,12 +2257,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::Report</name>
     <message>
-        <source>Held-out test failed (E &lt; 0 or an unstable model): %1. These models extrapolate poorly beyond their fit rows and should not be used for compensation as they are.</source>
-        <translation>Test auf den Testdaten nicht bestanden (E &lt; 0 oder instabiles Modell): %1. Diese Modelle extrapolieren schlecht über ihre Anpassungszeilen hinaus und sollten so nicht zur Kompensation verwendet werden.</translation>
-    </message>
-    <message>
-        <location filename="../widgets/report/diagnosissection.cpp" line="+41"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+521"/>
+        <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+621"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -2301,17 +2293,45 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>, rmse Testdaten %1 %2</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>rmse %1 %2</source>
+        <translation>RMSE %1 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, held-out %1 %2</source>
+        <translation>, zurückgehalten %1 %2</translation>
+    </message>
+    <message>
         <location line="+19"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+3"/>
         <source>The diagnosis could not run: %1</source>
         <translation>Die Diagnose konnte nicht ausgeführt werden: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-1"/>
+        <location line="+113"/>
+        <source>Closed loop: %1</source>
+        <translation>Geschlossener Regelkreis: %1</translation>
+    </message>
+    <message>
+        <location line="-111"/>
+        <location line="+133"/>
+        <source>not checked</source>
+        <translation>nicht geprüft</translation>
+    </message>
+    <message>
+        <location line="-132"/>
+        <source>Correct the diagnosis settings of this study.</source>
+        <translation>Korrigieren Sie die Diagnose-Einstellungen dieser Studie.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Declared model: %1 a static linear function of %2, fitted on the first %3 % of the rows and held out on the rest.</source>
         <translation>Deklariertes Modell: %1 als statische lineare Funktion von %2, angepasst an den ersten %3 % der Zeilen, der Rest dient als Testdaten.</translation>
     </message>
@@ -2331,7 +2351,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Deklariertes Modell: ein starrer Lagefehler (Rotation und Translation); Toleranz ±%1 mm.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Step 0, the declared model: %1.</source>
         <translation>Schritt 0, das deklarierte Modell: %1.</translation>
     </message>
@@ -2367,8 +2387,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+218"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-239"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+221"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -2400,7 +2420,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+216"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+236"/>
         <source>error (%1)</source>
         <translation>Fehler (%1)</translation>
     </message>
@@ -2430,7 +2450,47 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>rmse (Testdaten)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+10"/>
+        <source>%1: no effect beyond the declared model is supported by the data.</source>
+        <translation>%1: Die Daten stützen keinen Effekt über das deklarierte Modell hinaus.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the declared model lacks %2.</source>
+        <translation>%1: Dem deklarierten Modell fehlt %2.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Still unexplained: %1</source>
+        <translation>Noch unerklärt: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add %1 to the model (Apply on the Diagnosis page).</source>
+        <translation>Nehmen Sie %1 ins Modell auf (Übernehmen auf der Seite Diagnose).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add %1 to the model (Apply on the Diagnosis page), then look for the cause of what is still unexplained before trusting the compensation further.</source>
+        <translation>Nehmen Sie %1 ins Modell auf (Übernehmen auf der Seite Diagnose) und suchen Sie die Ursache des noch Unerklärten, bevor Sie der Kompensation weiter vertrauen.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Keep the declared model: its residual is noise.</source>
+        <translation>Behalten Sie das deklarierte Modell: Sein Residuum ist Rauschen.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep the declared model, and look for the cause of what is still unexplained (a variable not recorded, a change in the process).</source>
+        <translation>Behalten Sie das deklarierte Modell und suchen Sie die Ursache des noch Unerklärten (eine nicht erfasste Größe, eine Änderung im Prozess).</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>Final residual against %1</source>
         <translation>Endgültiges Residuum über %1</translation>
     </message>
@@ -2450,7 +2510,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Für jede Studie wird das deklarierte Modell angepasst und sein Residuum berechnet; Kandidateneffekte, die dem Modell fehlen, werden einzeln getestet und jeweils mit ihren Parametern und deren Standardfehlern geschätzt. Ein Effekt wird nur bei ausreichender Evidenz übernommen (Verbesserung auf den Testdaten bei Thermik, sonst ein Informationskriterium mit konservativer Schwelle) und wenn er den Fehler praktisch relevant verringert; das Modell wird mit ihm neu angepasst und die Suche wiederholt, bis nichts mehr gefunden wird.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-170"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
@@ -2501,17 +2561,16 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+203"/>
         <source>Circular test “%1”</source>
         <translation>Kreisformtest „%1“</translation>
     </message>
     <message>
-        <location line="-195"/>
-        <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (seed 002, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
-        <translation>%1 Punkte; Nennkreis R %2 mm um (%3, %4) mm; %5 Umläufe (gegen, dann im Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (Quelle 002, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt identifiziert (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
+        <location line="+8"/>
+        <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
+        <translation>%1 Punkte; Nennkreis R %2 mm um (%3, %4) mm; %5 Umläufe (gegen, dann mit dem Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (%8, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt bestimmt (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Includes applied effects: %1 (added with Apply on the diagnosis page). The errors above were identified with them and the compensated references include their corrections.</source>
         <translation>Enthält übernommene Effekte: %1 (mit „Ins Modell übernehmen“ auf der Diagnoseseite hinzugefügt). Die obigen Fehler wurden mit ihnen identifiziert, und die kompensierten Sollwerte enthalten ihre Korrekturen.</translation>
     </message>
@@ -2576,7 +2635,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>größte Korrektur |Sollwert − Nennwert|</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Statistical process control</source>
         <translation>Statistische Prozessregelung</translation>
     </message>
@@ -2602,7 +2661,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+371"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+373"/>
+        <location filename="../widgets/report/summarysection.cpp" line="+150"/>
         <source>value</source>
         <translation>Wert</translation>
     </message>
@@ -2628,11 +2688,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+6"/>
+        <location line="+61"/>
         <source>in control</source>
         <translation>beherrscht</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-59"/>
         <source>σ within (R̄ / d2)</source>
         <translation>σ innerhalb (R̄ / d2)</translation>
     </message>
@@ -2683,21 +2744,92 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location line="+39"/>
         <source>SPC-gated compensation: %1</source>
         <translation>SPC-gesteuerte Kompensation: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-30"/>
+        <source>Circular test %1: actuator origin offset (%2, %3) µm, squareness error %4°; largest radial deviation %5 µm.</source>
+        <translation>Kreisformtest %1: Nullpunktversatz der Antriebe (%2, %3) µm, Rechtwinkligkeitsfehler %4°; größte radiale Abweichung %5 µm.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>compensated references (G-code)</source>
+        <translation>kompensierte Sollwerte (G-Code)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up to %1 µm</source>
+        <translation>bis %1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>file %1 (Kinematics page, Export G-code)</source>
+        <translation>Datei %1 (Seite Kinematik, G-Code exportieren)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>largest radial deviation %1 µm</source>
+        <translation>größte radiale Abweichung %1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 µm expected with the compensated references</source>
+        <translation>%1 µm erwartet mit den kompensierten Sollwerten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The identified actuator errors explain the measured path; with the compensated references the largest radial deviation falls from %1 µm to about %2 µm (the measuring noise stays).</source>
+        <translation>Die bestimmten Antriebsfehler erklären die gemessene Bahn; mit den kompensierten Sollwerten sinkt die größte radiale Abweichung von %1 µm auf etwa %2 µm (das Messrauschen bleibt).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Run the compensated references (%1) and repeat the circular test.</source>
+        <translation>Fahren Sie die kompensierten Sollwerte (%1) und wiederholen Sie den Kreisformtest.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Do not compensate: the references would not reduce the deviation.</source>
+        <translation>Nicht kompensieren: Die Sollwerte würden die Abweichung nicht verringern.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>SPC of %1: %2.</source>
+        <translation>SPC von %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>out of control</source>
+        <translation>außer Kontrolle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cpk %1.</source>
+        <translation>Cpk %1.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Kinematic compensation and SPC</source>
         <translation>Kinematische Kompensation und SPC</translation>
     </message>
     <message>
-        <location line="+26"/>
-        <source>Cannot analyse this circular test: %1</source>
-        <translation>Dieser Kreisformtest kann nicht analysiert werden: %1</translation>
+        <location line="+21"/>
+        <source>Cannot analyse the circular test: %1</source>
+        <translation>Der Kreisformtest kann nicht ausgewertet werden: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-329"/>
+        <location line="+4"/>
+        <source>The circular test could not be analysed: %1</source>
+        <translation>Der Kreisformtest konnte nicht ausgewertet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Repeat the circular test and check its file.</source>
+        <translation>Wiederholen Sie den Kreisformtest und prüfen Sie seine Datei.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/matchingsection.cpp" line="-331"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (Originalparameter)</translation>
     </message>
@@ -2723,11 +2855,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <source>Every method was run on the %1 points (%2). The posture after matching is that of %3; the machine adjustment values are for the study&apos;s %4 machine. Deviation: %5.</source>
-        <translation>Jede Methode wurde auf die %1 Punkte angewendet (%2). Die Lage nach der Ausrichtung ist die von %3; die Maschineneinstellwerte gelten für die %4-Maschine der Studie. Abweichung: %5.</translation>
+        <source>Every method was run on the %1 points (%2). The posture after matching is that of %3; the machine adjustment values are for the study&apos;s %4 machine. Deviation: %5. Rough matching, SADE, GA-simplex and the machine adjustment as in %6.</source>
+        <translation>Jedes Verfahren lief auf den %1 Punkten (%2). Die Lage nach dem Einpassen ist die von %3; die Maschinenkorrekturwerte gelten für die Maschine %4 der Studie. Abweichung: %5. Grobeinpassung, SADE, GA-Simplex und Maschinenkorrektur wie in %6.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -2747,7 +2879,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Abstand |p − (sRq + t)|</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Includes applied effects: %1 (diagnosis, Apply). The nominal points were deformed by them before matching, so the deviations and the machine adjustments below are those of the model with these effects.</source>
         <translation>Enthält übernommene Effekte: %1 (Diagnose, Übernehmen). Die Nennpunkte wurden vor der Ausrichtung durch sie verformt; die Abweichungen und Maschineneinstellungen unten gelten daher für das Modell mit diesen Effekten.</translation>
     </message>
@@ -2794,7 +2926,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../widgets/report/probesection.cpp" line="+324"/>
+        <location filename="../widgets/report/probesection.cpp" line="+325"/>
         <source>surface</source>
         <translation>Fläche</translation>
     </message>
@@ -2853,7 +2985,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+196"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+206"/>
         <source>method</source>
         <translation>Methode</translation>
     </message>
@@ -2909,11 +3041,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+10"/>
+        <location line="+69"/>
         <source>frame rotation</source>
         <translation>Drehung des Koordinatensystems</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-68"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Maschineneinstellwerte (%1%2)</translation>
     </message>
@@ -2953,12 +3086,73 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
         <location line="+5"/>
         <source>Remeasure loop (simulated machine and CMM)</source>
         <translation>Nachmessschleife (simulierte Maschine und KMG)</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>True remaining error of the simulated part: %1 mm at most, %2 point(s) out of tolerance.</source>
+        <translation>Wahrer Restfehler des simulierten Teils: höchstens %1 mm, %2 Punkt(e) außerhalb der Toleranz.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>The workpiece %1 sits rotated by (%2, %3, %4)° and shifted by (%5, %6, %7) mm; %8 of %9 probed points are out of ±%10 mm before matching, %11 after.</source>
+        <translation>Das Werkstück %1 liegt um (%2, %3, %4)° gedreht und um (%5, %6, %7) mm verschoben; %8 von %9 angetasteten Punkten liegen vor dem Einpassen außerhalb ±%10 mm, danach %11.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 machine, enter at the control</source>
+        <translation>Maschine %1, an der Steuerung eingeben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>linear axes</source>
+        <translation>Linearachsen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>rotary axes</source>
+        <translation>Rundachsen</translation>
+    </message>
+    <message>
         <location line="+8"/>
+        <location line="+4"/>
+        <source>max |deviation| %1 mm; %2 of %3 points out of tolerance</source>
+        <translation>max. |Abweichung| %1 mm; %2 von %3 Punkten außerhalb der Toleranz</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>After the posture adjustment every probed point lies within the tolerance.</source>
+        <translation>Nach der Lagekorrektur liegt jeder angetastete Punkt innerhalb der Toleranz.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Even after the best posture %1 of %2 points stay out of tolerance: the part itself deviates, not only its posture.</source>
+        <translation>Selbst in der besten Lage bleiben %1 von %2 Punkten außerhalb der Toleranz: Das Teil selbst weicht ab, nicht nur seine Lage.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Do not apply: the adjustment lies outside the axis travel (%1).</source>
+        <translation>Nicht anwenden: Die Korrektur liegt außerhalb des Verfahrbereichs (%1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Enter the adjustment values at the control, probe the part again and machine when it is within tolerance.</source>
+        <translation>Geben Sie die Korrekturwerte an der Steuerung ein, tasten Sie das Teil erneut an und bearbeiten Sie es, wenn es in der Toleranz liegt.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Enter the adjustment values, probe again, and check the surfaces that stay out of tolerance before machining.</source>
+        <translation>Geben Sie die Korrekturwerte ein, tasten Sie erneut an und prüfen Sie vor der Bearbeitung die Flächen, die außerhalb der Toleranz bleiben.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Posture matching — before and after</source>
         <translation>Lageausrichtung — vorher und nachher</translation>
     </message>
@@ -2985,10 +3179,10 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../widgets/report/report.cpp" line="+106"/>
-        <location filename="../widgets/report/setupsection.cpp" line="-91"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-92"/>
         <location line="+39"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-247"/>
+        <location filename="../widgets/report/summarysection.cpp" line="+123"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-267"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
@@ -3090,84 +3284,248 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lageausrichtung — Antastpunkte</translation>
     </message>
     <message>
-        <location filename="../widgets/report/report.cpp" line="-16"/>
+        <location filename="../widgets/report/summarysection.cpp" line="-147"/>
         <source>Metrofit report</source>
         <translation>Metrofit-Bericht</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>project</source>
-        <translation>Projekt</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>date</source>
-        <translation>Datum</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Metrofit version</source>
-        <translation>Metrofit-Version</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Datasets</source>
-        <translation>Datensätze</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>id</source>
-        <translation>Kennung</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+82"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+83"/>
+        <location filename="../widgets/report/summarysection.cpp" line="+146"/>
         <source>kind</source>
         <translation>Art</translation>
     </message>
     <message>
+        <location filename="../widgets/report/summarysection.cpp" line="-222"/>
+        <source>thermal log</source>
+        <translation>Thermo-Protokoll</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>probed points</source>
+        <translation>angetastete Punkte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>circular test</source>
+        <translation>Kreisformtest</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CMM report</source>
+        <translation>KMG-Protokoll</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>setup model</source>
+        <translation>Einrichtemodell</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feature series</source>
+        <translation>Merkmalsreihe</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>none given</source>
+        <translation>nicht angegeben</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>Conclusion</source>
+        <translation>Fazit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Recommendation: %1</source>
+        <translation>Empfehlung: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Project “%1”, report made %2 by Metrofit version %3. The project&apos;s description and every dataset&apos;s origin are in the appendix.</source>
+        <translation>Projekt „%1“, Bericht erstellt %2 mit Metrofit Version %3. Die Beschreibung des Projekts und die Herkunft jedes Datensatzes stehen im Anhang.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>What each study found</source>
+        <translation>Was jede Studie ergab</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+9"/>
+        <location line="+21"/>
+        <location line="+14"/>
+        <location line="+99"/>
+        <source>study</source>
+        <translation>Studie</translation>
+    </message>
+    <message>
+        <location line="-143"/>
+        <location line="+44"/>
+        <source>found</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <location line="-44"/>
+        <source>recommendation</source>
+        <translation>Empfehlung</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>change</source>
+        <translation>Änderung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>where</source>
+        <translation>wo</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>What to change on the machine</source>
+        <translation>Was an der Maschine zu ändern ist</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Nothing: no study proposes a change.</source>
+        <translation>Nichts: Keine Studie schlägt eine Änderung vor.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>error before</source>
+        <translation>Fehler vorher</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>error after</source>
+        <translation>Fehler nachher</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Error before and after</source>
+        <translation>Fehler vorher und nachher</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>What the closed loop found and leaves unexplained</source>
+        <translation>Was der geschlossene Regelkreis fand und unerklärt lässt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error before → after</source>
+        <translation>Fehler vorher → nachher</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>still unexplained</source>
+        <translation>noch unerklärt</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>What was measured</source>
+        <translation>Was gemessen wurde</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 (%2, %3 rows)</source>
+        <translation>%1 (%2, %3 Zeilen)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+11"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1. Files dated %2. Licences: %3.</source>
+        <translation>%1. Dateien vom %2. Lizenzen: %3.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n further dataset(s) of the project are used by no study.</source>
+        <translation>
+            <numerusform>%n weiterer Datensatz des Projekts wird von keiner Studie verwendet.</numerusform>
+            <numerusform>%n weitere Datensätze des Projekts werden von keiner Studie verwendet.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The project declares no study a section of this report could show yet.</source>
+        <translation>Das Projekt deklariert noch keine Studie, die ein Abschnitt dieses Berichts zeigen könnte.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1, page %2</source>
+        <translation>%1, Seite %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Contents: %1.</source>
+        <translation>Inhalt: %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>References</source>
+        <translation>Literatur</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Appendix: data provenance</source>
+        <translation>Anhang: Herkunft der Daten</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Project</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Every dataset of the project, where it comes from and under which licence; file names are relative to the project&apos;s folder.</source>
+        <translation>Jeder Datensatz des Projekts, woher er stammt und unter welcher Lizenz; Dateinamen relativ zum Projektordner.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>rows / points</source>
         <translation>Zeilen / Punkte</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <source>file date</source>
+        <translation>Dateidatum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>licence</source>
         <translation>Lizenz</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+2"/>
+        <source>description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Study settings</source>
+        <translation>Einstellungen der Studien</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>settings as the project file holds them</source>
+        <translation>Einstellungen wie in der Projektdatei</translation>
+    </message>
+    <message>
+        <location line="-71"/>
         <source>The project references no datasets.</source>
         <translation>Das Projekt verweist auf keine Datensätze.</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Contents</source>
-        <translation>Inhalt</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>The project has no data a section of this report could show yet.</source>
-        <translation>Das Projekt enthält noch keine Daten, die ein Abschnitt dieses Berichts zeigen könnte.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>section</source>
-        <translation>Abschnitt</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>page</source>
-        <translation>Seite</translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <location filename="../widgets/report/reportpainter.cpp" line="+106"/>
+        <location filename="../widgets/report/report.cpp" line="+120"/>
+        <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/reportpainter.cpp" line="+12"/>
+        <location filename="../widgets/report/reportpainter.cpp" line="+22"/>
         <source>page %1 of %2</source>
         <translation>Seite %1 von %2</translation>
     </message>
@@ -3177,7 +3535,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Seite %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/setupsection.cpp" line="-176"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-186"/>
         <source>machine point</source>
         <translation>Maschinenpunkt</translation>
     </message>
@@ -3192,7 +3550,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Werkzeuglänge</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+38"/>
         <source>Setup-data correction</source>
         <translation>Einrichtdatenkorrektur</translation>
     </message>
@@ -3259,7 +3617,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+1"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+1"/>
-        <location line="+174"/>
+        <location line="+175"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
@@ -3320,11 +3678,67 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Objectives as the paper (Stryczek 2016, Eq. 6–10): f1 = the smallest unilateral error budget over all dimensions after correction (maximised), f2 = |x| (minimised among the f1-optimal), f = 10 f1 − f2. Exact: LP / MILP on the %1 mm grid (GLPK), then the least-norm correction. CRIPSO: 100 polyps, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 particles, asynchronous gbest, same coefficients. Budget %2 solutions, seed %3.</source>
-        <translation>Zielfunktionen wie in der Veröffentlichung (Stryczek 2016, Gl. 6–10): f1 = das kleinste einseitige Fehlerbudget über alle Maße nach der Korrektur (maximiert), f2 = |x| (minimiert unter den f1-optimalen), f = 10 f1 − f2. Exakt: LP / MILP auf dem %1-mm-Raster (GLPK), danach die Korrektur mit kleinster Norm. CRIPSO: 100 Polypen, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 Partikel, asynchrones gbest, gleiche Koeffizienten. Budget %2 Lösungen, Startwert %3.</translation>
+        <source>Objectives as in %4, Eq. 6–10: f1 = the smallest unilateral error budget over all dimensions after correction (maximised), f2 = |x| (minimised among the f1-optimal), f = 10 f1 − f2. Exact: LP / MILP on the %1 mm grid (GLPK), then the least-norm correction. CRIPSO: 100 polyps, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 particles, asynchronous gbest, same coefficients. Budget %2 solutions, seed %3.</source>
+        <translation>Zielfunktionen wie in %4, Gl. 6–10: f1 = das kleinste einseitige Fehlerbudget über alle Maße nach der Korrektur (maximiert), f2 = |x| (minimiert unter den f1-optimalen), f = 10 f1 − f2. Exakt: LP / MILP auf dem %1-mm-Raster (GLPK), dann die Korrektur kleinster Norm. CRIPSO: 100 Polypen, w = 0,75, c1 = c2 = cos(π/2 Li/L); PSO: 100 Partikel, asynchrones gbest, gleiche Koeffizienten. Budget %2 Lösungen, Startwert %3.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+113"/>
+        <source>The exact correction of %1 setup data raises the smallest error budget f1 from %2 mm to %3 mm%4; CRIPSO and PSO reach %5 mm and %6 mm.</source>
+        <translation>Die exakte Korrektur von %1 Einrichtedaten hebt das kleinste Fehlerbudget f1 von %2 mm auf %3 mm%4; CRIPSO und PSO erreichen %5 mm und %6 mm.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> (proven optimal)</source>
+        <translation> (nachweislich optimal)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>work offsets</source>
+        <translation>Nullpunktverschiebungen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tool lengths</source>
+        <translation>Werkzeuglängen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>machine points</source>
+        <translation>Maschinenpunkte</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>add along %1; file %2 (program O9001)</source>
+        <translation>entlang %1 addieren; Datei %2 (Programm O9001)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+4"/>
+        <source>f1 %1 mm; %2 of %3 dimensions out of tolerance</source>
+        <translation>f1 %1 mm; %2 von %3 Maßen außerhalb der Toleranz</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The correction widens the smallest margin to the tolerance limits by %1 mm; %2 of %3 dimensions stay out of tolerance.</source>
+        <translation>Die Korrektur vergrößert den kleinsten Abstand zu den Toleranzgrenzen um %1 mm; %2 von %3 Maßen bleiben außerhalb der Toleranz.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No correction widens the smallest margin: the registers are as good as the measurements allow.</source>
+        <translation>Keine Korrektur vergrößert den kleinsten Abstand: Die Register sind so gut, wie es die Messungen erlauben.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Add the exact corrections to the offset registers (%1, Setup page, Export; Heidenhain and Siemens formats there too), then measure the next part.</source>
+        <translation>Addieren Sie die exakten Korrekturen zu den Korrekturregistern (%1, Seite Einrichten, Exportieren; dort auch Heidenhain- und Siemens-Format) und messen Sie dann das nächste Teil.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Leave the offset registers as they are.</source>
+        <translation>Lassen Sie die Korrekturregister unverändert.</translation>
+    </message>
+    <message>
+        <location line="-152"/>
         <source>Convergence</source>
         <translation>Konvergenz</translation>
     </message>
@@ -3424,7 +3838,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>metrofit-cli setup --export fanuc schreibt denselben Text; Heidenhain, Siemens und CSV sind die weiteren Formate (siehe die Vorzeichenkonvention im Kopf).</translation>
     </message>
     <message>
-        <location filename="../widgets/report/thermalsection.cpp" line="-261"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-262"/>
         <source>%1 h</source>
         <translation>%1 h</translation>
     </message>
@@ -3591,16 +4005,86 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <source>%1 against each sensor (Fig. 9 of seed 004): heating runs (the change of %1 grows, %2 rows) and cooling runs (%3 rows) in the colours of the trend chart&apos;s phases. Loop area by the shoelace formula; lag: the time constant of a first-order lag between sensor and displacement (&gt; 0: the sensor lags).%4</source>
-        <translation>%1 über jedem Sensor (Abb. 9 aus Quelle 004): Erwärmungsphasen (die Änderung von %1 wächst, %2 Zeilen) und Abkühlungsphasen (%3 Zeilen) in den Farben der Phasen des Verlaufsdiagramms. Schleifenfläche nach der Gaußschen Trapezformel; Verzug: die Zeitkonstante eines Verzögerungsglieds erster Ordnung zwischen Sensor und Verlagerung (&gt; 0: der Sensor eilt nach).%4</translation>
+        <source>%1 against each sensor (Fig. 9 of %5): heating runs (the change of %1 grows, %2 rows) and cooling runs (%3 rows) in the colours of the trend chart&apos;s phases. Loop area by the shoelace formula; lag: the time constant of a first-order lag between sensor and displacement (&gt; 0: the sensor lags).%4</source>
+        <translation>%1 über jedem Sensor (Abb. 9 in %5): Aufheizabschnitte (die Änderung von %1 wächst, %2 Zeilen) und Abkühlabschnitte (%3 Zeilen) in den Farben der Phasen des Verlaufsdiagramms. Schleifenfläche nach der Gaußschen Trapezformel; Verzögerung: die Zeitkonstante eines Verzögerungsglieds erster Ordnung zwischen Sensor und Verlagerung (&gt; 0: der Sensor eilt nach).%4</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+145"/>
+        <source>Performance indices (Table 4 of %1): R correlation, RMSE, E Nash-Sutcliffe efficiency, band = largest |residual|. A model is usable for compensation only when on the held-out rows it does not diverge (RMSE at most %2 × the largest error), E ≥ %3 and R ≥ %4.</source>
+        <translation>Gütemaße (Tabelle 4 in %1): R Korrelation, RMSE, E Nash-Sutcliffe-Effizienz, Band = größtes |Residuum|. Ein Modell taugt zur Kompensation nur, wenn es auf den zurückgehaltenen Zeilen nicht divergiert (RMSE höchstens %2 × der größte Fehler), E ≥ %3 und R ≥ %4.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Modular models (%1, Section 4.3)</source>
+        <translation>Modulare Modelle (%1, Abschnitt 4.3)</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>The thermal models could not be fitted: %1</source>
+        <translation>Die thermischen Modelle konnten nicht angepasst werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Check the thermal study&apos;s target and inputs against the log.</source>
+        <translation>Prüfen Sie Zielgröße und Eingänge der thermischen Studie am Protokoll.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 is not usable (%2)</source>
+        <translation>%1 ist nicht verwendbar (%2)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 varies by RMS %2%3 (peak %4%3) on the held-out rows</source>
+        <translation>%1 schwankt auf den zurückgehaltenen Zeilen um RMS %2%3 (Spitze %4%3)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Best usable model of %1: %2, held-out RMSE %3%4, residual band ±%5%4.</source>
+        <translation>Bestes verwendbares Modell für %1: %2, RMSE zurückgehalten %3%4, Residuenband ±%5%4.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>RMS %1%2 (band ±%3%2) left with %4</source>
+        <translation>RMS %1%2 (Band ±%3%2) verbleibt mit %4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>thermal compensation of %1</source>
+        <translation>thermische Kompensation von %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>model fitted on %1 (Thermal page; metrofit-cli thermal fit saves it)</source>
+        <translation>an %1 angepasstes Modell (Seite Thermik; metrofit-cli thermal fit speichert es)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 predicts %2 on rows it was not fitted on to RMS %3%4, from RMS %5%4 without compensation.</source>
+        <translation>%1 sagt %2 auf nicht angepassten Zeilen auf RMS %3%4 genau voraus, gegenüber RMS %5%4 ohne Kompensation.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Compensate %1 with %2; do not use the models marked not usable.</source>
+        <translation>Kompensieren Sie %1 mit %2; verwenden Sie die als nicht verwendbar markierten Modelle nicht.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No model of %1 passes the held-out test.</source>
+        <translation>Kein Modell für %1 besteht den Test auf den zurückgehaltenen Zeilen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Do not compensate with these models. Record a longer test covering heating and cooling, add sensors near the heat sources, and use the closed loop (diagnosis) to find the lag or inputs the model lacks.</source>
+        <translation>Kompensieren Sie nicht mit diesen Modellen. Zeichnen Sie einen längeren Test mit Aufheizen und Abkühlen auf, setzen Sie Sensoren nahe den Wärmequellen und suchen Sie mit dem geschlossenen Regelkreis (Diagnose) die Verzögerung oder Eingänge, die dem Modell fehlen.</translation>
+    </message>
+    <message>
+        <location line="-259"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Diagramme der ersten %1 von %2 Sensoren; die Tabelle listet alle.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>sensor</source>
         <translation>Sensor</translation>
     </message>
@@ -3656,36 +4140,41 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+71"/>
+        <location line="+90"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location line="-70"/>
-        <location line="+76"/>
+        <location line="-89"/>
+        <location line="+95"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-76"/>
-        <location line="+74"/>
+        <location line="-95"/>
+        <location line="+93"/>
         <source>RMSE (%1)</source>
         <translation>RMSE (%1)</translation>
     </message>
     <message>
-        <location line="-73"/>
-        <location line="+76"/>
+        <location line="-92"/>
+        <location line="+95"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-76"/>
-        <location line="+71"/>
+        <location line="-95"/>
+        <location line="+90"/>
         <source>band (%1)</source>
         <translation>Band (%1)</translation>
     </message>
     <message>
-        <location line="-60"/>
+        <location line="-89"/>
+        <source>verdict</source>
+        <translation>Urteil</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1 PSO iterations, Eq. 2.9 %2 → %3</source>
         <translation>%1 PSO-Iterationen, Gl. 2.9 %2 → %3</translation>
     </message>
@@ -3705,7 +4194,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 LM-Epochen (%2)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
         <source> (%1 s)</source>
         <translation> (%1 s)</translation>
     </message>
@@ -3715,7 +4204,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>divergiert</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+9"/>
         <source>fit, %1</source>
         <translation>Anpassung, %1</translation>
     </message>
@@ -3725,22 +4214,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Testdaten, %1</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Performance indices (Table 4 of seed 004): R correlation, RMSE, E Nash-Sutcliffe efficiency, band = largest |residual|.</source>
-        <translation>Gütekennzahlen (Tabelle 4 aus Quelle 004): R Korrelation, RMSE, E Nash-Sutcliffe-Effizienz, Band = größtes |Residuum|.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+16"/>
         <source>Training: %1.</source>
         <translation>Training: %1.</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>Modular models (Section 4.3)</source>
-        <translation>Modulare Modelle (Abschnitt 4.3)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+9"/>
         <source>The modular case could not be computed: %1</source>
         <translation>Der modulare Fall konnte nicht berechnet werden: %1</translation>
     </message>
@@ -3758,14 +4237,6 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+2"/>
         <source>less, RMS</source>
         <translation>weniger, RMS</translation>
-    </message>
-    <message>
-        <source>stopped</source>
-        <translation>angehalten</translation>
-    </message>
-    <message>
-        <source>True remaining error of the simulated part: %1 mm at most, %2 point(s) out of tolerance.</source>
-        <translation>Wahrer Restfehler des simulierten Teils: höchstens %1 mm, %2 Punkt(e) außerhalb der Toleranz.</translation>
     </message>
 </context>
 <context>
@@ -3885,12 +4356,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+107"/>
+        <location line="+112"/>
         <source>dimension %1</source>
         <translation>Maß %1</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="-105"/>
         <source>time</source>
         <comment>in a sentence</comment>
         <translation>der Zeit</translation>
@@ -3906,7 +4377,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>dem Bahnwinkel</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>the direction of the loop (counter-clockwise or clockwise)</source>
         <translation>der Umlaufrichtung (gegen oder im Uhrzeigersinn)</translation>
     </message>
@@ -3946,7 +4417,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>der %1-Komponente der nominalen Normalen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>the position on surface %1</source>
         <translation>der Lage auf der Fläche %1</translation>
     </message>
@@ -4002,7 +4473,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>eine glatte Kurve</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>a step</source>
         <translation>ein Sprung</translation>
     </message>
@@ -4022,22 +4493,45 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>ein eigenes Niveau je Gruppe</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>%1 (%2, %3 % of the residual variance)</source>
         <translation>%1 (%2, %3 % der Residuenvarianz)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>white: no test finds structure</source>
         <translation>weiß: kein Test findet Struktur</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="+102"/>
+        <source>Warning: the held-out error rose from %1 to %2 %3 with the accepted effects. They describe the fit rows but do not carry over to the rows they did not see: do not compensate with them.</source>
+        <translation>Warnung: der Fehler der zurückgehaltenen Zeilen stieg mit den übernommenen Effekten von %1 auf %2 %3. Sie beschreiben die Anpassungszeilen, übertragen sich aber nicht auf die Zeilen, die sie nicht sahen: nicht damit kompensieren.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>On the held-out rows, which only report the error, the residual looks like noise as well.</source>
+        <translation>In den zurückgehaltenen Zeilen, die nur den Fehler berichten, sieht das Residuum ebenfalls wie Rauschen aus.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>On the held-out rows, which only report the error, the residual still depends on %1: the model misses something there that the fit rows did not show.</source>
+        <translation>In den zurückgehaltenen Zeilen, die nur den Fehler berichten, hängt das Residuum noch von %1 ab: dem Modell fehlt dort etwas, das die Anpassungszeilen nicht zeigten.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n held-out measurement(s) left out of the held-out error as gross errors: %1.</source>
+        <translation>
+            <numerusform>%n zurückgehaltener Messwert als grober Fehler aus dem Fehler der zurückgehaltenen Zeilen ausgelassen: %1.</numerusform>
+            <numerusform>%n zurückgehaltene Messwerte als grobe Fehler aus dem Fehler der zurückgehaltenen Zeilen ausgelassen: %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="-134"/>
         <source>not white: still depends on %1</source>
         <translation>nicht weiß: hängt noch ab von %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>not white: the tests find structure that no single variable explains</source>
         <translation>nicht weiß: die Tests finden Struktur, die keine einzelne Variable erklärt</translation>
     </message>
@@ -4057,7 +4551,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Punkt %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>observation %1</source>
         <translation>Beobachtung %1</translation>
     </message>
@@ -4070,12 +4564,13 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
+        <location line="+79"/>
         <source>%1 (%2, %3 % of the residual variance, p = %4)</source>
         <translation>%1 (%2, %3 % der Residuenvarianz, p = %4)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-70"/>
         <source>%1 and %2</source>
         <translation>%1 und %2</translation>
     </message>
@@ -4085,17 +4580,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Was unerklärt bleibt: das endgültige Residuum hängt noch ab von %1. Kein Effekt des Katalogs erklärt das (Tests auf dem familienweisen Niveau von %2 %).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>What is left unexplained: the final residual is serially correlated in the order of %1 (Ljung-Box test, p = %2), but no single variable of the data explains it.</source>
         <translation>Was unerklärt bleibt: das endgültige Residuum ist in der Reihenfolge %1 seriell korreliert (Ljung-Box-Test, p = %2), aber keine einzelne Variable der Daten erklärt das.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>What is left unexplained: the tests find structure in the final residual at the %1 % family-wise level that no single variable explains.</source>
         <translation>Was unerklärt bleibt: die Tests finden auf dem familienweisen Niveau von %1 % Struktur im endgültigen Residuum, die keine einzelne Variable erklärt.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1 in %2</source>
         <translation>%1 in %2</translation>
     </message>
@@ -4105,12 +4600,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Kein Effekt des Katalogs erklärt einen Teil dieser Struktur, daher erhielt das Modell dafür einen generischen Term statt eines falschen Namens: %1.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>No measurement was excluded as a gross error (robust z above %1).</source>
         <translation>Kein Messwert wurde als grober Fehler ausgeschlossen (robustes z über %1).</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>No measurement was excluded as a gross error.</source>
         <translation>Kein Messwert wurde als grober Fehler ausgeschlossen.</translation>
     </message>
@@ -4120,8 +4615,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 (Residuum %2 %3, robustes z %4)</translation>
     </message>
     <message numerus="yes">
-        <location line="-84"/>
-        <location line="+89"/>
+        <location line="-95"/>
+        <location line="+100"/>
         <source> and %n more</source>
         <translation>
             <numerusform> und %n weiterer</numerusform>
@@ -4136,34 +4631,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
             <numerusform>%n Messwerte als grobe Fehler von der Anpassung ausgeschlossen (robustes z über %1): %2.</numerusform>
         </translation>
     </message>
-    <message>
-        <location line="+1"/>
-        <source>Warning: the held-out error rose from %1 to %2 %3 with the accepted effects. They describe the fit rows but do not carry over to the rows they did not see: do not compensate with them.</source>
-        <translation>Warnung: der Fehler der zurückgehaltenen Zeilen stieg mit den übernommenen Effekten von %1 auf %2 %3. Sie beschreiben die Anpassungszeilen, übertragen sich aber nicht auf die Zeilen, die sie nicht sahen: nicht damit kompensieren.</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>On the held-out rows, which only report the error, the residual looks like noise as well.</source>
-        <translation>In den zurückgehaltenen Zeilen, die nur den Fehler berichten, sieht das Residuum ebenfalls wie Rauschen aus.</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>On the held-out rows, which only report the error, the residual still depends on %1: the model misses something there that the fit rows did not show.</source>
-        <translation>In den zurückgehaltenen Zeilen, die nur den Fehler berichten, hängt das Residuum noch von %1 ab: dem Modell fehlt dort etwas, das die Anpassungszeilen nicht zeigten.</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+1"/>
-        <source>%n held-out measurement(s) left out of the held-out error as gross errors: %1.</source>
-        <translation>
-            <numerusform>%n zurückgehaltener Messwert als grober Fehler aus dem Fehler der zurückgehaltenen Zeilen ausgelassen: %1.</numerusform>
-            <numerusform>%n zurückgehaltene Messwerte als grobe Fehler aus dem Fehler der zurückgehaltenen Zeilen ausgelassen: %1.</numerusform>
-        </translation>
-    </message>
 </context>
 <context>
     <name>metrofit::ResidualCheckView</name>
     <message>
-        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+116"/>
+        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+120"/>
         <source>Final residual against %1</source>
         <translation>Endgültiges Residuum über %1</translation>
     </message>
@@ -4174,18 +4646,18 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+183"/>
-        <location line="+275"/>
+        <location line="+187"/>
+        <location line="+281"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-458"/>
+        <location line="-467"/>
         <source>residual (%1)</source>
         <translation>Residuum (%1)</translation>
     </message>
     <message>
-        <location line="+186"/>
+        <location line="+191"/>
         <source>generic fit</source>
         <translation>generische Anpassung</translation>
     </message>
@@ -4195,19 +4667,19 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>generische Anpassung, %1</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+282"/>
+        <location line="+2"/>
+        <location line="+288"/>
         <source>excluded outliers</source>
         <translation>ausgeschlossene Ausreißer</translation>
     </message>
     <message>
-        <location line="-241"/>
-        <location line="+137"/>
+        <location line="-247"/>
+        <location line="+141"/>
         <source>What the residual still depends on (strongest first):</source>
         <translation>Wovon das Residuum noch abhängt (stärkste zuerst):</translation>
     </message>
     <message>
-        <location line="-136"/>
+        <location line="-140"/>
         <source>Outliers excluded from the fit:</source>
         <translation>Von der Anpassung ausgeschlossene Ausreißer:</translation>
     </message>
@@ -4228,28 +4700,28 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Form</source>
         <translation>Form</translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-11"/>
         <source>Share (%)</source>
         <translation>Anteil (%)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+8"/>
+        <location line="+12"/>
         <source>p-value</source>
         <translation>p-Wert</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-10"/>
         <source>Per variable with a rejected test its strongest form; share = part of the residual variance the form explains</source>
         <translation>Je Variable mit abgelehntem Test ihre stärkste Form; Anteil = Teil der Residuenvarianz, den die Form erklärt</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Row</source>
         <translation>Zeile</translation>
     </message>
@@ -4270,17 +4742,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+135"/>
+        <location line="+137"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-135"/>
+        <location line="-137"/>
         <source>Robust z</source>
         <translation>Robustes z</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Observations whose robust z (|r - median| / (1.4826 MAD)) is above the threshold: gross errors, excluded and the model refitted without them</source>
         <translation>Beobachtungen, deren robustes z (|r - Median| / (1,4826 MAD)) über der Schwelle liegt: grobe Fehler, ausgeschlossen und das Modell ohne sie neu angepasst</translation>
     </message>
@@ -4310,7 +4782,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Abgelehnt</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Ljung-Box: serial correlation of the residual in that order (chi-square); F test: the residual against the variable in that form (nested models). Rejected: by Holm&apos;s procedure at the family-wise level</source>
         <translation>Ljung-Box: serielle Korrelation des Residuums in dieser Reihenfolge (Chi-Quadrat); F-Test: das Residuum gegen die Variable in dieser Form (geschachtelte Modelle). Abgelehnt: nach dem Holm-Verfahren auf dem familienweisen Niveau</translation>
     </message>
@@ -4336,7 +4808,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Wovon das Residuum noch abhängt: nichts gefunden.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>Outliers: none (robust z threshold %1).</source>
         <translation>Ausreißer: keine (Schwelle des robusten z %1).</translation>
     </message>
@@ -4356,7 +4828,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Residuum (%1)</translation>
     </message>
     <message numerus="yes">
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Tests of the final residual (%n test(s), %1 observations; rejected by Holm at the %2 % family-wise level):</source>
         <translation>
             <numerusform>Tests des endgültigen Residuums (%n Test, %1 Beobachtungen; abgelehnt nach Holm auf dem familienweisen Niveau von %2 %):</numerusform>
@@ -4379,7 +4851,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Keine einzelne Variable erklärt die verbleibende Struktur</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>generic fit (%1)</source>
         <translation>generische Anpassung (%1)</translation>
     </message>
@@ -5136,7 +5608,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Dieses Projekt hat kein Einrichtmodell. Fügen Sie der Projektdatei einen Datensatz der Art „setup_model“ (der Beziehungsgraph, JSON) und einen „cmm_report“ hinzu.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>This project has no CMM report for the setup study (a dataset of kind &quot;cmm_report&quot;).</source>
         <translation>Dieses Projekt hat keinen KMG-Messbericht für die Einrichtstudie (ein Datensatz der Art „cmm_report“).</translation>
     </message>
@@ -5161,7 +5633,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Noch kein Ergebnis für dieses Modell: Methode wählen und Ausführen drücken (Strg+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
+        <location line="+8"/>
         <source>The edited model has %n problem(s), the first: %1</source>
         <translation>
             <numerusform>Das bearbeitete Modell hat %n Problem: %1</numerusform>
@@ -5419,7 +5891,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupValidationView</name>
     <message>
-        <location filename="../widgets/setup/setupvalidationview.cpp" line="+61"/>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+63"/>
         <source>Simulated measurement sets N (the paper: 100)</source>
         <translation>Simulierte Messreihen N (Veröffentlichung: 100)</translation>
     </message>
@@ -5499,7 +5971,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Methoden:</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+92"/>
         <source>Choose at least one method.</source>
         <translation>Wählen Sie mindestens eine Methode.</translation>
     </message>
@@ -5509,12 +5981,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 Reihen x %2 Versuche laufen…</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>The validation failed: %1</source>
         <translation>Die Validierung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+15"/>
         <source>%1 sets%2: f1 before correction from %3 to %4 mm.</source>
         <translation>%1 Reihen%2: f1 vor der Korrektur von %3 bis %4 mm.</translation>
     </message>
@@ -5524,27 +5996,32 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation> (abgebrochen)</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.</source>
-        <translation>%1: mittlerer Abstand zum exakten f1 %2 mm; %3 von %4 Versuchen innerhalb eines Rasterschritts.</translation>
-    </message>
-    <message>
+        <location line="+4"/>
         <source>The paper&apos;s range %1 to %2 mm is consistent with the simulator (its minimum lies in %3 to %4 mm, its maximum in %5 to %6 mm over 100 sets, 98 % bands).</source>
         <translation>Der Bereich des Artikels, %1 bis %2 mm, ist mit dem Simulator vereinbar (sein Minimum liegt in %3 bis %4 mm, sein Maximum in %5 bis %6 mm über 100 Sätze, 98-%-Bänder).</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>NOT consistent: the paper&apos;s range %1 to %2 mm lies outside the simulator&apos;s bands (minimum %3 to %4 mm, maximum %5 to %6 mm over 100 sets, 98 %).</source>
         <translation>NICHT vereinbar: der Bereich des Artikels, %1 bis %2 mm, liegt außerhalb der Bänder des Simulators (Minimum %3 bis %4 mm, Maximum %5 bis %6 mm über 100 Sätze, 98 %).</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>The paper&apos;s range (%1 to %2 mm) is for w1 = 0.03 and w2 = 0.02 mm: not compared.</source>
         <translation>Der Bereich des Artikels (%1 bis %2 mm) gilt für w1 = 0,03 und w2 = 0,02 mm: nicht verglichen.</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.</source>
+        <translation>%1: mittlerer Abstand zum exakten f1 %2 mm; %3 von %4 Versuchen innerhalb eines Rasterschritts.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Share of the setup data in the dimension error, estimated from the sets: %1 % of the weights (configured %2 %), %3 % of the variance.</source>
         <translation>Anteil der Einrichtdaten am Maßfehler, aus den Sätzen geschätzt: %1 % der Gewichte (eingestellt %2 %), %3 % der Varianz.</translation>
     </message>
     <message numerus="yes">
+        <location line="+8"/>
         <source>In the project&apos;s measurements (%n part(s)): %1 % of the weights, %2 % of the variance.</source>
         <translation>
             <numerusform>In den Messungen des Projekts (%n Teil): %1 % der Gewichte, %2 % der Varianz.</numerusform>
@@ -5552,6 +6029,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         </translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>The setup share of the measurements cannot be estimated: %1</source>
         <translation>Der Anteil der Einrichtdaten in den Messungen kann nicht geschätzt werden: %1</translation>
     </message>
@@ -5938,7 +6416,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Grenze Anpassung | Test</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+83"/>
         <source>%1: lag %2 min</source>
         <translation>%1: Verzug %2 min</translation>
     </message>
@@ -5992,15 +6470,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <source>The held-out test failed (E &lt; 0 or an unstable model): this model extrapolates poorly beyond its fit rows; do not use it for compensation.</source>
-        <translation>Der Test auf den Testdaten ist nicht bestanden (E &lt; 0 oder instabiles Modell): Dieses Modell extrapoliert schlecht über seine Anpassungszeilen hinaus; nicht zur Kompensation verwenden.</translation>
-    </message>
-    <message>
-        <source>held out (%1): test failed</source>
-        <translation>Testdaten (%1): Test nicht bestanden</translation>
-    </message>
-    <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+76"/>
+        <location filename="../widgets/charts/thermalmodelview.cpp" line="+79"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -6065,50 +6535,56 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>divergiert</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+21"/>
         <source>Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows without bound on the held-out rows</source>
         <translation>Die kleinsten Quadrate ergaben ein instabiles GMC(1,N): b1 = %1 ≤ 0; seine Ausgabe wächst auf den Testdaten unbeschränkt</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+53"/>
-        <location line="+118"/>
+        <location line="+77"/>
+        <location line="+119"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location line="-171"/>
-        <location line="+171"/>
+        <location line="-196"/>
+        <location line="+196"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
     <message>
-        <location line="-170"/>
-        <location line="+170"/>
+        <location line="-195"/>
+        <location line="+195"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-170"/>
-        <location line="+170"/>
+        <location line="-195"/>
+        <location line="+195"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-169"/>
-        <location line="+53"/>
-        <location line="+116"/>
+        <location line="-194"/>
+        <location line="+77"/>
+        <location line="+117"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-169"/>
-        <location line="+169"/>
+        <location line="-194"/>
+        <location line="+194"/>
         <source>band</source>
         <translation>Band</translation>
     </message>
     <message>
-        <location line="-162"/>
+        <location line="-193"/>
+        <location line="+193"/>
+        <source>verdict</source>
+        <translation>Urteil</translation>
+    </message>
+    <message>
+        <location line="-186"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -6118,12 +6594,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation> (instabil: b1 ≤ 0)</translation>
     </message>
     <message>
+        <location line="+19"/>
+        <source>Best usable model: %1.</source>
+        <translation>Bestes verwendbares Modell: %1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No model is usable for compensation: record a longer test or add the inputs the diagnosis finds.</source>
+        <translation>Kein Modell taugt zur Kompensation: Zeichnen Sie einen längeren Test auf oder nehmen Sie die Eingänge auf, die die Diagnose findet.</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>%1 fit rows, %2 held out; %3.</source>
         <translation>%1 Zeilen zur Anpassung, %2 Testdaten; %3.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 % (GMC(1,N) %2 %, MLP %3 %).</source>
         <translation>&lt;b&gt;Modularer Fall:&lt;/b&gt; GNNMCI(1,N), angepasst an den Z- und C-Tests, verringert den Fehler des kombinierten Tests um %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
     </message>
@@ -6218,7 +6704,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&amp;Eingänge:</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>Correlation coefficient of measured and predicted</source>
         <translation>Korrelationskoeffizient zwischen gemessen und vorhergesagt</translation>
     </message>
@@ -6238,7 +6724,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Größtes |Residuum|, in der Einheit der Zielgröße</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Usable for compensation when on the held-out rows it does not diverge, E ≥ %1 and R ≥ %2</source>
+        <translation>Zur Kompensation verwendbar, wenn es auf den zurückgehaltenen Zeilen nicht divergiert, E ≥ %1 und R ≥ %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Modular models (Section 4.3)</source>
         <translation>Modulare Modelle (Abschnitt 4.3)</translation>
     </message>
@@ -6414,6 +6905,34 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
 </context>
 <context>
+    <name>metrofit::ThermalVerdict</name>
+    <message>
+        <location filename="../widgets/charts/thermalverdict.cpp" line="+19"/>
+        <source>usable</source>
+        <translation>verwendbar</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not usable</source>
+        <translation>nicht verwendbar</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>its prediction diverges on the held-out rows</source>
+        <translation>seine Vorhersage divergiert auf den zurückgehaltenen Zeilen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>E = %1 on the held-out rows, below %2: it predicts worse than the mean of the error</source>
+        <translation>E = %1 auf den zurückgehaltenen Zeilen, unter %2: Es sagt schlechter voraus als der Mittelwert des Fehlers</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>R = %1 on the held-out rows, below %2: it hardly follows the error</source>
+        <translation>R = %1 auf den zurückgehaltenen Zeilen, unter %2: Es folgt dem Fehler kaum</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::core</name>
     <message>
         <location filename="../widgets/diagnose/coretexts.cpp" line="+20"/>
@@ -6526,12 +7045,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>rmse Validierung %1 → %2%3 (%4), rmse Anpassung %5 → %6%3, rmse Testdaten %7 → %8%3</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>validation rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, held-out rmse %7 -&gt; %8%3, %9</source>
         <translation>rmse Validierung %1 → %2%3 (%4), rmse Anpassung %5 → %6%3, rmse Testdaten %7 → %8%3, %9</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>; rejected: validation error worse</source>
         <translation>; abgelehnt: Validierungsfehler größer</translation>
     </message>
@@ -6551,22 +7070,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>; abgelehnt: keine Evidenz in den Anpassungsdaten (dBIC der Anpassung %1 ≥ 0)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+18"/>
         <source>accepted together with %1: validation rmse %2 -&gt; %3%4 (%5), fit rmse %6 -&gt; %7%4, held-out rmse %8 -&gt; %9%4, %10</source>
         <translation>übernommen zusammen mit %1: rmse Validierung %2 → %3%4 (%5), rmse Anpassung %6 → %7%4, rmse Testdaten %8 → %9%4, %10</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-17"/>
         <source>; rejected: the validation folds cannot fit it</source>
         <translation>; abgelehnt: die Validierungsfolds können es nicht anpassen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>effects chosen on the fit rows by blocked forward validation (%1 folds, validation rmse %2%3); the held-out rows only report the error</source>
         <translation>Effekte auf den Anpassungszeilen durch blockweise Vorwärtsvalidierung gewählt (%1 Folds, rmse Validierung %2%3); die Testzeilen geben nur den Fehler an</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>%1 gross errors excluded before the fit (robust z above %2):</source>
         <translation>%1 grobe Fehler vor der Anpassung ausgeschlossen (robustes z über %2):</translation>
     </message>
@@ -6596,12 +7115,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>; abgelehnt: die Anpassungszeilen bestimmen tau nicht (Standardfehler über der Hälfte)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) and the candidate effects</source>
         <translation>deklariertes Modell %1 von %2 (angepasst an die ersten %3 von %4 Zeilen wie bei thermal fit; allein: rmse Anpassung %5, rmse Testdaten %6%7); die Schleife passt die Zielgröße an seine Vorhersage (Koeffizient %8) und die Kandidateneffekte an</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+8"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>
@@ -6852,12 +7371,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+93"/>
+        <location line="+96"/>
         <source>step</source>
         <translation>Sprung</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-95"/>
         <source>periodic</source>
         <translation>periodisch</translation>
     </message>
@@ -6892,7 +7411,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>weiß: kein Test findet Struktur auf dem familienweisen Niveau von %1 % (%2 Tests)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>not white: still depends on </source>
         <translation>nicht weiß: hängt noch ab von </translation>
     </message>
@@ -6932,7 +7451,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 grobe Fehler vor der Anpassung ausgeschlossen (robustes z über der Ausreißerschwelle):</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source> row %1 (%2 um)</source>
         <translation> Zeile %1 (%2 µm)</translation>
     </message>
@@ -6962,7 +7481,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>abgelehnt: erklärt nicht, wofür er gewählt wurde; ohne ihn erklären die generischen Effekte die Daten ebenso gut (BIC %1 ohne, %2 mit, nötig %3 niedriger)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>samples since an axis reversed (signed, log scale)</source>
         <translation>Abtastwerte seit einer Achsumkehr (mit Vorzeichen, logarithmisch)</translation>
     </message>

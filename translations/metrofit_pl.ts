@@ -308,8 +308,8 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     <name>metrofit::ControlChartView</name>
     <message>
         <location line="+54"/>
-        <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (seed 002, Eq. 18-19); red points are out of control.</source>
-        <translation>Średnie podgrup z linią centralną (CL) i granicami kontrolnymi UCL/LCL = średnia ± A2 · R̄ (źródło 002, równ. 18-19); czerwone punkty są poza kontrolą.</translation>
+        <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (kinematic-compensation paper, Eq. 18–19); red points are out of control.</source>
+        <translation>Średnie podgrup z linią centralną (CL) i granicami kontrolnymi UCL/LCL = średnia ± A2 · R̄ (artykuł o kompensacji kinematycznej, równ. 18–19); czerwone punkty są poza kontrolą.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -368,27 +368,27 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+420"/>
+        <location line="+423"/>
         <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
         <translation>%1: efektu ogólnego (tego, czego nie wyjaśnia żaden efekt z katalogu) nie można jeszcze dodać do modelu badania (%2); jest pokazany tutaj i w sprawdzeniu residuów, nie zastosowany</translation>
     </message>
     <message>
-        <location line="+161"/>
+        <location line="+162"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-516"/>
+        <location line="-518"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-49"/>
         <source>mm/part</source>
         <translation>mm/przedmiot</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+50"/>
         <source>Cancel</source>
         <translation>Anuluj</translation>
     </message>
@@ -414,12 +414,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+5"/>
-        <location line="+308"/>
+        <location line="+309"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
     </message>
     <message>
-        <location line="-294"/>
+        <location line="-295"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Zadeklarowany model dopasowany przed dodaniem jakiegokolwiek efektu</translation>
     </message>
@@ -485,7 +485,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+1"/>
-        <location line="+161"/>
+        <location line="+162"/>
         <location line="+130"/>
         <source>Residual chec&amp;k</source>
         <translation>Sprawdzenie re&amp;siduów</translation>
@@ -573,12 +573,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie ma czego zastosować. %1.</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Applies %1 only. %2.</source>
         <translation>Stosuje tylko %1. %2.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -638,7 +638,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>postać: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>A generic effect: %1 in %2, for structure no catalogue effect explains</source>
         <translation>Efekt ogólny: %1 względem %2, dla struktury, której nie wyjaśnia żaden efekt z katalogu</translation>
     </message>
@@ -1676,7 +1676,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Jednostka</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>Round</source>
         <translation>Runda</translation>
     </message>
@@ -1702,11 +1702,21 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+0"/>
+        <source>true max |d| (mm)</source>
+        <translation>rzeczywiste max |d| (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>true out of tolerance</source>
+        <translation>rzeczywiście poza tolerancją</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>SZ (mm)</source>
         <translation>SZ (mm)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>rotary 1 (deg)</source>
         <translation>oś obrotowa 1 (st.)</translation>
     </message>
@@ -1955,37 +1965,57 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Pętla ponownego pomiaru nie została uruchomiona.</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+1"/>
+        <location line="+7"/>
+        <location line="+2"/>
         <source>S%1 (deg)</source>
         <translation>S%1 (st.)</translation>
     </message>
-    <message>
-        <location line="+2"/>
-        <source>Step 7 with the simulator as machine and CMM (true posture: the %1 fit, probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
-        <translation>Krok 7 z symulatorem jako maszyną i WMP (rzeczywiste położenie: dopasowanie %1, szum sondowania %2 mm): pomiar, dopasowanie, korekta układu WCS, ponowny pomiar. %3</translation>
-    </message>
     <message numerus="yes">
-        <location line="+4"/>
-        <source>Every point is inside the tolerance after %n adjustment(s).</source>
+        <location line="+7"/>
+        <source>Every point is inside the tolerance after %n adjustment(s); the true remaining error is %1 mm at most.</source>
         <translation>
-            <numerusform>Po %n korekcie każdy punkt mieści się w tolerancji.</numerusform>
-            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji.</numerusform>
-            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji.</numerusform>
+            <numerusform>Po %n korekcie każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
+            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
+            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Still out of tolerance after the last adjustment.</source>
-        <translation>Nadal poza tolerancją po ostatniej korekcie.</translation>
+        <location line="+6"/>
+        <source>FAILED: the best fit leaves points out of tolerance (form error larger than the tolerance); no WCS adjustment can bring them in. True remaining error %1 mm, %2 point(s) out.</source>
+        <translation>NIEPOWODZENIE: najlepsze dopasowanie pozostawia punkty poza tolerancją (błąd kształtu większy niż tolerancja); żadna korekta układu przedmiotu nie może ich do niej wprowadzić. Rzeczywisty błąd resztkowy %1 mm, punktów poza tolerancją: %2.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+11"/>
+        <source>FAILED: the adjustment is beyond the machine&apos;s travel (%1); the WCS was not moved. True remaining error %2 mm.</source>
+        <translation>NIEPOWODZENIE: korekta wykracza poza zakres ruchu obrabiarki (%1); układ przedmiotu nie został przesunięty. Rzeczywisty błąd resztkowy %2 mm.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>FAILED: still out of tolerance after the last adjustment. True remaining error %1 mm.</source>
+        <translation>NIEPOWODZENIE: po ostatniej korekcie nadal poza tolerancją. Rzeczywisty błąd resztkowy %1 mm.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Stopped before the end.</source>
+        <translation>Zatrzymano przed końcem.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Step 7 with the simulator as machine and CMM (the part where the probe found it, with its form error; the %1 fit does not place it; probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
+        <translation>Krok 7 z symulatorem jako obrabiarką i WMP (przedmiot tam, gdzie znalazła go sonda, z jego błędem kształtu; dopasowanie %1 go nie umieszcza; szum pomiaru %2 mm): pomiar, dopasowanie, korekta układu przedmiotu, ponowny pomiar. %3</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>stopped: %1</source>
+        <translation>zatrzymano: %1</translation>
+    </message>
+    <message>
+        <location line="-1"/>
         <source>in tolerance: no adjustment</source>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-372"/>
+        <location line="-419"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -2016,46 +2046,6 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Nie można wyświetlić tych punktów sondowania:
 %1</translation>
     </message>
-    <message>
-        <source>true max |d| (mm)</source>
-        <translation>rzeczywiste max |d| (mm)</translation>
-    </message>
-    <message>
-        <source>true out of tolerance</source>
-        <translation>rzeczywiście poza tolerancją</translation>
-    </message>
-    <message numerus="yes">
-        <source>Every point is inside the tolerance after %n adjustment(s); the true remaining error is %1 mm at most.</source>
-        <translation>
-            <numerusform>Po %n korekcie każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
-            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
-            <numerusform>Po %n korektach każdy punkt mieści się w tolerancji; rzeczywisty błąd resztkowy wynosi najwyżej %1 mm.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>FAILED: the best fit leaves points out of tolerance (form error larger than the tolerance); no WCS adjustment can bring them in. True remaining error %1 mm, %2 point(s) out.</source>
-        <translation>NIEPOWODZENIE: najlepsze dopasowanie pozostawia punkty poza tolerancją (błąd kształtu większy niż tolerancja); żadna korekta układu przedmiotu nie może ich do niej wprowadzić. Rzeczywisty błąd resztkowy %1 mm, punktów poza tolerancją: %2.</translation>
-    </message>
-    <message>
-        <source>FAILED: the adjustment is beyond the machine&apos;s travel (%1); the WCS was not moved. True remaining error %2 mm.</source>
-        <translation>NIEPOWODZENIE: korekta wykracza poza zakres ruchu obrabiarki (%1); układ przedmiotu nie został przesunięty. Rzeczywisty błąd resztkowy %2 mm.</translation>
-    </message>
-    <message>
-        <source>FAILED: still out of tolerance after the last adjustment. True remaining error %1 mm.</source>
-        <translation>NIEPOWODZENIE: po ostatniej korekcie nadal poza tolerancją. Rzeczywisty błąd resztkowy %1 mm.</translation>
-    </message>
-    <message>
-        <source>Stopped before the end.</source>
-        <translation>Zatrzymano przed końcem.</translation>
-    </message>
-    <message>
-        <source>Step 7 with the simulator as machine and CMM (the part where the probe found it, with its form error; the %1 fit does not place it; probing noise %2 mm): measure, match, adjust the WCS, remeasure. %3</source>
-        <translation>Krok 7 z symulatorem jako obrabiarką i WMP (przedmiot tam, gdzie znalazła go sonda, z jego błędem kształtu; dopasowanie %1 go nie umieszcza; szum pomiaru %2 mm): pomiar, dopasowanie, korekta układu przedmiotu, ponowny pomiar. %3</translation>
-    </message>
-    <message>
-        <source>stopped: %1</source>
-        <translation>zatrzymano: %1</translation>
-    </message>
 </context>
 <context>
     <name>metrofit::NotesEdit</name>
@@ -2068,7 +2058,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::OverviewPage</name>
     <message>
-        <location filename="../app/gui/overviewpage.cpp" line="+29"/>
+        <location filename="../app/gui/overviewpage.cpp" line="+31"/>
         <source>Project overview</source>
         <translation>Przegląd projektu</translation>
     </message>
@@ -2123,9 +2113,14 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ukryj tę wskazówkę (nie pojawi się ponownie)</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+61"/>
         <source>not saved yet</source>
         <translation>jeszcze nie zapisano</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Study settings the methods cannot use; correct them in the project file:</source>
+        <translation>Ustawienia badań, których metody nie mogą użyć; popraw je w pliku projektu:</translation>
     </message>
 </context>
 <context>
@@ -2264,12 +2259,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::Report</name>
     <message>
-        <source>Held-out test failed (E &lt; 0 or an unstable model): %1. These models extrapolate poorly beyond their fit rows and should not be used for compensation as they are.</source>
-        <translation>Test na danych testowych niezaliczony (E &lt; 0 lub model niestabilny): %1. Te modele źle ekstrapolują poza wiersze dopasowania i w tej postaci nie powinny być używane do kompensacji.</translation>
-    </message>
-    <message>
-        <location filename="../widgets/report/diagnosissection.cpp" line="+41"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+521"/>
+        <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+621"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -2304,17 +2295,45 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>, rmse danych testowych %1 %2</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>rmse %1 %2</source>
+        <translation>RMSE %1 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, held-out %1 %2</source>
+        <translation>, odłożone %1 %2</translation>
+    </message>
+    <message>
         <location line="+19"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+3"/>
         <source>The diagnosis could not run: %1</source>
         <translation>Nie można było przeprowadzić diagnozy: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-1"/>
+        <location line="+113"/>
+        <source>Closed loop: %1</source>
+        <translation>Zamknięta pętla: %1</translation>
+    </message>
+    <message>
+        <location line="-111"/>
+        <location line="+133"/>
+        <source>not checked</source>
+        <translation>nie sprawdzono</translation>
+    </message>
+    <message>
+        <location line="-132"/>
+        <source>Correct the diagnosis settings of this study.</source>
+        <translation>Popraw ustawienia diagnozy tego badania.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Declared model: %1 a static linear function of %2, fitted on the first %3 % of the rows and held out on the rest.</source>
         <translation>Zadeklarowany model: %1 jako statyczna funkcja liniowa %2, dopasowana na pierwszych %3 % wierszy, reszta to dane testowe.</translation>
     </message>
@@ -2334,7 +2353,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zadeklarowany model: sztywny błąd położenia (obrót i przesunięcie); tolerancja ±%1 mm.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Step 0, the declared model: %1.</source>
         <translation>Krok 0, zadeklarowany model: %1.</translation>
     </message>
@@ -2370,8 +2389,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+218"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-239"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+221"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>tak</translation>
     </message>
@@ -2403,7 +2422,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+216"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+236"/>
         <source>error (%1)</source>
         <translation>błąd (%1)</translation>
     </message>
@@ -2433,7 +2452,47 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>rmse (wiersze testowe)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+10"/>
+        <source>%1: no effect beyond the declared model is supported by the data.</source>
+        <translation>%1: dane nie potwierdzają żadnego efektu poza zadeklarowanym modelem.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the declared model lacks %2.</source>
+        <translation>%1: zadeklarowanemu modelowi brakuje %2.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Still unexplained: %1</source>
+        <translation>Wciąż niewyjaśnione: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add %1 to the model (Apply on the Diagnosis page).</source>
+        <translation>Dodaj %1 do modelu (Zastosuj na stronie Diagnoza).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add %1 to the model (Apply on the Diagnosis page), then look for the cause of what is still unexplained before trusting the compensation further.</source>
+        <translation>Dodaj %1 do modelu (Zastosuj na stronie Diagnoza), a następnie znajdź przyczynę tego, co wciąż niewyjaśnione, zanim zaufasz kompensacji.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Keep the declared model: its residual is noise.</source>
+        <translation>Zachowaj zadeklarowany model: jego residuum to szum.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep the declared model, and look for the cause of what is still unexplained (a variable not recorded, a change in the process).</source>
+        <translation>Zachowaj zadeklarowany model i znajdź przyczynę tego, co wciąż niewyjaśnione (niezarejestrowana zmienna, zmiana w procesie).</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>Final residual against %1</source>
         <translation>Końcowe residuum względem %1</translation>
     </message>
@@ -2453,7 +2512,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dla każdego studium dopasowywany jest zadeklarowany model i obliczane jego residuum; brakujące w modelu efekty kandydujące są sprawdzane kolejno, każdy estymowany wraz z parametrami i ich błędami standardowymi. Efekt jest przyjmowany tylko na podstawie dowodów (poprawa na danych testowych dla termiki, w pozostałych przypadkach kryterium informacyjne z ostrożnym progiem) i gdy zmniejsza błąd o praktycznie istotną wartość; model jest ponownie dopasowywany z tym efektem, a wyszukiwanie powtarzane, dopóki nic więcej nie zostanie znalezione.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-170"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
@@ -2504,17 +2563,16 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+203"/>
         <source>Circular test “%1”</source>
         <translation>Test kołowy „%1”</translation>
     </message>
     <message>
-        <location line="-195"/>
-        <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (seed 002, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
-        <translation>Punkty: %1; okrąg nominalny R %2 mm wokół (%3, %4) mm; pętle: %5 (przeciwnie do ruchu wskazówek zegara, potem zgodnie). Błędy napędów maszyny kartezjańskiej (źródło 002, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) zidentyfikowano metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
+        <location line="+8"/>
+        <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
+        <translation>%1 punktów; okrąg nominalny R %2 mm wokół (%3, %4) mm; %5 pętli (przeciwnie, potem zgodnie z ruchem wskazówek zegara). Błędy napędów maszyny kartezjańskiej (%8, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wyznaczono metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Includes applied effects: %1 (added with Apply on the diagnosis page). The errors above were identified with them and the compensated references include their corrections.</source>
         <translation>Zawiera zastosowane efekty: %1 (dodane przyciskiem „Zastosuj do modelu” na stronie diagnozy). Powyższe błędy zidentyfikowano z ich uwzględnieniem, a skompensowane wartości zadane zawierają ich korekcje.</translation>
     </message>
@@ -2579,7 +2637,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>największa korekcja |wartość zadana − nominalna|</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Statistical process control</source>
         <translation>Statystyczne sterowanie procesem</translation>
     </message>
@@ -2605,7 +2663,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+371"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+373"/>
+        <location filename="../widgets/report/summarysection.cpp" line="+150"/>
         <source>value</source>
         <translation>wartość</translation>
     </message>
@@ -2631,11 +2690,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+6"/>
+        <location line="+61"/>
         <source>in control</source>
         <translation>pod kontrolą</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-59"/>
         <source>σ within (R̄ / d2)</source>
         <translation>σ wewnątrz (R̄ / d2)</translation>
     </message>
@@ -2686,21 +2746,92 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location line="+39"/>
         <source>SPC-gated compensation: %1</source>
         <translation>Kompensacja warunkowana SPC: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-30"/>
+        <source>Circular test %1: actuator origin offset (%2, %3) µm, squareness error %4°; largest radial deviation %5 µm.</source>
+        <translation>Test okrągłości %1: przesunięcie początku napędów (%2, %3) µm, błąd prostopadłości %4°; największe odchylenie promieniowe %5 µm.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>compensated references (G-code)</source>
+        <translation>skompensowane wartości zadane (G-code)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up to %1 µm</source>
+        <translation>do %1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>file %1 (Kinematics page, Export G-code)</source>
+        <translation>plik %1 (strona Kinematyka, Eksport G-code)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>largest radial deviation %1 µm</source>
+        <translation>największe odchylenie promieniowe %1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 µm expected with the compensated references</source>
+        <translation>%1 µm oczekiwane ze skompensowanymi wartościami zadanymi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The identified actuator errors explain the measured path; with the compensated references the largest radial deviation falls from %1 µm to about %2 µm (the measuring noise stays).</source>
+        <translation>Wyznaczone błędy napędów wyjaśniają zmierzoną ścieżkę; ze skompensowanymi wartościami zadanymi największe odchylenie promieniowe spada z %1 µm do około %2 µm (szum pomiarowy pozostaje).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Run the compensated references (%1) and repeat the circular test.</source>
+        <translation>Uruchom skompensowane wartości zadane (%1) i powtórz test okrągłości.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Do not compensate: the references would not reduce the deviation.</source>
+        <translation>Nie kompensuj: wartości zadane nie zmniejszyłyby odchylenia.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>SPC of %1: %2.</source>
+        <translation>SPC dla %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>out of control</source>
+        <translation>poza kontrolą</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cpk %1.</source>
+        <translation>Cpk %1.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Kinematic compensation and SPC</source>
         <translation>Kompensacja kinematyczna i SPC</translation>
     </message>
     <message>
-        <location line="+26"/>
-        <source>Cannot analyse this circular test: %1</source>
-        <translation>Nie można przeanalizować tego testu kołowego: %1</translation>
+        <location line="+21"/>
+        <source>Cannot analyse the circular test: %1</source>
+        <translation>Nie można przeanalizować testu okrągłości: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-329"/>
+        <location line="+4"/>
+        <source>The circular test could not be analysed: %1</source>
+        <translation>Nie udało się przeanalizować testu okrągłości: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Repeat the circular test and check its file.</source>
+        <translation>Powtórz test okrągłości i sprawdź jego plik.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/report/matchingsection.cpp" line="-331"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (parametry z publikacji)</translation>
     </message>
@@ -2726,11 +2857,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <source>Every method was run on the %1 points (%2). The posture after matching is that of %3; the machine adjustment values are for the study&apos;s %4 machine. Deviation: %5.</source>
-        <translation>Każdą metodę uruchomiono dla %1 punktów (%2). Położenie po dopasowaniu pochodzi z %3; wartości nastawienia maszyny dotyczą maszyny %4 ze studium. Odchyłka: %5.</translation>
+        <source>Every method was run on the %1 points (%2). The posture after matching is that of %3; the machine adjustment values are for the study&apos;s %4 machine. Deviation: %5. Rough matching, SADE, GA-simplex and the machine adjustment as in %6.</source>
+        <translation>Każdą metodę uruchomiono na %1 punktach (%2). Położenie po dopasowaniu to położenie z %3; wartości korekty maszyny dotyczą maszyny %4 badania. Odchylenie: %5. Dopasowanie zgrubne, SADE, GA-simplex i korekta maszyny jak w %6.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -2750,7 +2881,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>odległość |p − (sRq + t)|</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Includes applied effects: %1 (diagnosis, Apply). The nominal points were deformed by them before matching, so the deviations and the machine adjustments below are those of the model with these effects.</source>
         <translation>Zawiera zastosowane efekty: %1 (diagnoza, Zastosuj). Punkty nominalne zostały przez nie odkształcone przed dopasowaniem, więc poniższe odchyłki i nastawienia maszyny dotyczą modelu z tymi efektami.</translation>
     </message>
@@ -2797,7 +2928,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../widgets/report/probesection.cpp" line="+324"/>
+        <location filename="../widgets/report/probesection.cpp" line="+325"/>
         <source>surface</source>
         <translation>powierzchnia</translation>
     </message>
@@ -2856,7 +2987,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+196"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+206"/>
         <source>method</source>
         <translation>metoda</translation>
     </message>
@@ -2912,11 +3043,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+10"/>
+        <location line="+69"/>
         <source>frame rotation</source>
         <translation>obrót układu współrzędnych</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-68"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Wartości nastawienia maszyny (%1%2)</translation>
     </message>
@@ -2956,12 +3088,73 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>stopped</source>
+        <translation>zatrzymano</translation>
+    </message>
+    <message>
         <location line="+5"/>
         <source>Remeasure loop (simulated machine and CMM)</source>
         <translation>Pętla ponownego pomiaru (maszyna symulowana i WMP)</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>True remaining error of the simulated part: %1 mm at most, %2 point(s) out of tolerance.</source>
+        <translation>Rzeczywisty błąd resztkowy symulowanego przedmiotu: najwyżej %1 mm, punktów poza tolerancją: %2.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>The workpiece %1 sits rotated by (%2, %3, %4)° and shifted by (%5, %6, %7) mm; %8 of %9 probed points are out of ±%10 mm before matching, %11 after.</source>
+        <translation>Przedmiot %1 jest obrócony o (%2, %3, %4)° i przesunięty o (%5, %6, %7) mm; %8 z %9 zmierzonych punktów leży poza ±%10 mm przed dopasowaniem, %11 po nim.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 machine, enter at the control</source>
+        <translation>maszyna %1, wprowadź w sterowaniu</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>linear axes</source>
+        <translation>osie liniowe</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>rotary axes</source>
+        <translation>osie obrotowe</translation>
+    </message>
+    <message>
         <location line="+8"/>
+        <location line="+4"/>
+        <source>max |deviation| %1 mm; %2 of %3 points out of tolerance</source>
+        <translation>maks. |odchylenie| %1 mm; %2 z %3 punktów poza tolerancją</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>After the posture adjustment every probed point lies within the tolerance.</source>
+        <translation>Po korekcie położenia każdy zmierzony punkt mieści się w tolerancji.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Even after the best posture %1 of %2 points stay out of tolerance: the part itself deviates, not only its posture.</source>
+        <translation>Nawet w najlepszym położeniu %1 z %2 punktów pozostaje poza tolerancją: odchyla się sam przedmiot, nie tylko jego położenie.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Do not apply: the adjustment lies outside the axis travel (%1).</source>
+        <translation>Nie stosuj: korekta wykracza poza zakres ruchu osi (%1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Enter the adjustment values at the control, probe the part again and machine when it is within tolerance.</source>
+        <translation>Wprowadź wartości korekty w sterowaniu, zmierz przedmiot ponownie i obrabiaj, gdy mieści się w tolerancji.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Enter the adjustment values, probe again, and check the surfaces that stay out of tolerance before machining.</source>
+        <translation>Wprowadź wartości korekty, zmierz ponownie i przed obróbką sprawdź powierzchnie, które pozostają poza tolerancją.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Posture matching — before and after</source>
         <translation>Dopasowanie położenia — przed i po</translation>
     </message>
@@ -2988,10 +3181,10 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../widgets/report/report.cpp" line="+106"/>
-        <location filename="../widgets/report/setupsection.cpp" line="-91"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-92"/>
         <location line="+39"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-247"/>
+        <location filename="../widgets/report/summarysection.cpp" line="+123"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-267"/>
         <source>file</source>
         <translation>plik</translation>
     </message>
@@ -3093,84 +3286,249 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dopasowanie położenia — punkty sondowania</translation>
     </message>
     <message>
-        <location filename="../widgets/report/report.cpp" line="-16"/>
+        <location filename="../widgets/report/summarysection.cpp" line="-147"/>
         <source>Metrofit report</source>
         <translation>Raport Metrofit</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>project</source>
-        <translation>projekt</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>date</source>
-        <translation>data</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Metrofit version</source>
-        <translation>Wersja Metrofit</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Datasets</source>
-        <translation>Zbiory danych</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>id</source>
-        <translation>identyfikator</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+82"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+83"/>
+        <location filename="../widgets/report/summarysection.cpp" line="+146"/>
         <source>kind</source>
         <translation>rodzaj</translation>
     </message>
     <message>
+        <location filename="../widgets/report/summarysection.cpp" line="-222"/>
+        <source>thermal log</source>
+        <translation>zapis termiczny</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>probed points</source>
+        <translation>zmierzone punkty</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>circular test</source>
+        <translation>test okrągłości</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CMM report</source>
+        <translation>raport CMM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>setup model</source>
+        <translation>model ustawień</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feature series</source>
+        <translation>seria cech</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>none given</source>
+        <translation>nie podano</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>Conclusion</source>
+        <translation>Wniosek</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Recommendation: %1</source>
+        <translation>Zalecenie: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Project “%1”, report made %2 by Metrofit version %3. The project&apos;s description and every dataset&apos;s origin are in the appendix.</source>
+        <translation>Projekt „%1”, raport utworzony %2 przez Metrofit w wersji %3. Opis projektu i pochodzenie każdego zbioru danych są w załączniku.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>What each study found</source>
+        <translation>Co wykazało każde badanie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+9"/>
+        <location line="+21"/>
+        <location line="+14"/>
+        <location line="+99"/>
+        <source>study</source>
+        <translation>badanie</translation>
+    </message>
+    <message>
+        <location line="-143"/>
+        <location line="+44"/>
+        <source>found</source>
+        <translation>wynik</translation>
+    </message>
+    <message>
+        <location line="-44"/>
+        <source>recommendation</source>
+        <translation>zalecenie</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>change</source>
+        <translation>zmiana</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>where</source>
+        <translation>gdzie</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>What to change on the machine</source>
+        <translation>Co zmienić na maszynie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Nothing: no study proposes a change.</source>
+        <translation>Nic: żadne badanie nie proponuje zmiany.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>error before</source>
+        <translation>błąd przed</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>error after</source>
+        <translation>błąd po</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Error before and after</source>
+        <translation>Błąd przed i po</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>What the closed loop found and leaves unexplained</source>
+        <translation>Co znalazła zamknięta pętla i co pozostaje niewyjaśnione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error before → after</source>
+        <translation>błąd przed → po</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>still unexplained</source>
+        <translation>wciąż niewyjaśnione</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>What was measured</source>
+        <translation>Co zmierzono</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 (%2, %3 rows)</source>
+        <translation>%1 (%2, wiersze: %3)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+11"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1. Files dated %2. Licences: %3.</source>
+        <translation>%1. Pliki z dnia %2. Licencje: %3.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n further dataset(s) of the project are used by no study.</source>
+        <translation>
+            <numerusform>%n dalszy zbiór danych projektu nie jest używany przez żadne badanie.</numerusform>
+            <numerusform>%n dalsze zbiory danych projektu nie są używane przez żadne badanie.</numerusform>
+            <numerusform>%n dalszych zbiorów danych projektu nie jest używanych przez żadne badanie.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The project declares no study a section of this report could show yet.</source>
+        <translation>Projekt nie deklaruje jeszcze żadnego badania, które mógłby pokazać rozdział tego raportu.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1, page %2</source>
+        <translation>%1, strona %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Contents: %1.</source>
+        <translation>Spis treści: %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>References</source>
+        <translation>Bibliografia</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Appendix: data provenance</source>
+        <translation>Załącznik: pochodzenie danych</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Project</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Every dataset of the project, where it comes from and under which licence; file names are relative to the project&apos;s folder.</source>
+        <translation>Każdy zbiór danych projektu, skąd pochodzi i na jakiej licencji; nazwy plików względem folderu projektu.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>rows / points</source>
         <translation>wiersze / punkty</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <source>file date</source>
+        <translation>data pliku</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>licence</source>
         <translation>licencja</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+2"/>
+        <source>description</source>
+        <translation>opis</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Study settings</source>
+        <translation>Ustawienia badań</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>settings as the project file holds them</source>
+        <translation>ustawienia jak w pliku projektu</translation>
+    </message>
+    <message>
+        <location line="-71"/>
         <source>The project references no datasets.</source>
         <translation>Projekt nie odwołuje się do żadnych zbiorów danych.</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Contents</source>
-        <translation>Spis treści</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>The project has no data a section of this report could show yet.</source>
-        <translation>Projekt nie zawiera jeszcze danych, które mogłaby pokazać którakolwiek sekcja raportu.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>section</source>
-        <translation>sekcja</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>page</source>
-        <translation>strona</translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <location filename="../widgets/report/reportpainter.cpp" line="+106"/>
+        <location filename="../widgets/report/report.cpp" line="+120"/>
+        <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/reportpainter.cpp" line="+12"/>
+        <location filename="../widgets/report/reportpainter.cpp" line="+22"/>
         <source>page %1 of %2</source>
         <translation>strona %1 z %2</translation>
     </message>
@@ -3180,7 +3538,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>strona %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/setupsection.cpp" line="-176"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-186"/>
         <source>machine point</source>
         <translation>punkt maszyny</translation>
     </message>
@@ -3195,7 +3553,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>długość narzędzia</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+38"/>
         <source>Setup-data correction</source>
         <translation>Korekcja danych ustawczych</translation>
     </message>
@@ -3262,7 +3620,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+1"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+1"/>
-        <location line="+174"/>
+        <location line="+175"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
@@ -3323,11 +3681,67 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Objectives as the paper (Stryczek 2016, Eq. 6–10): f1 = the smallest unilateral error budget over all dimensions after correction (maximised), f2 = |x| (minimised among the f1-optimal), f = 10 f1 − f2. Exact: LP / MILP on the %1 mm grid (GLPK), then the least-norm correction. CRIPSO: 100 polyps, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 particles, asynchronous gbest, same coefficients. Budget %2 solutions, seed %3.</source>
-        <translation>Funkcje celu jak w publikacji (Stryczek 2016, równ. 6–10): f1 = najmniejszy jednostronny budżet błędu ze wszystkich wymiarów po korekcji (maksymalizowany), f2 = |x| (minimalizowane wśród f1-optymalnych), f = 10 f1 − f2. Dokładna: LP / MILP na siatce %1 mm (GLPK), następnie korekcja o najmniejszej normie. CRIPSO: 100 polipów, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 cząstek, asynchroniczny gbest, te same współczynniki. Budżet %2 rozwiązań, ziarno %3.</translation>
+        <source>Objectives as in %4, Eq. 6–10: f1 = the smallest unilateral error budget over all dimensions after correction (maximised), f2 = |x| (minimised among the f1-optimal), f = 10 f1 − f2. Exact: LP / MILP on the %1 mm grid (GLPK), then the least-norm correction. CRIPSO: 100 polyps, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 particles, asynchronous gbest, same coefficients. Budget %2 solutions, seed %3.</source>
+        <translation>Funkcje celu jak w %4, równ. 6–10: f1 = najmniejszy jednostronny budżet błędu po wszystkich wymiarach po korekcie (maksymalizowany), f2 = |x| (minimalizowany wśród f1-optymalnych), f = 10 f1 − f2. Dokładna: LP / MILP na siatce %1 mm (GLPK), potem korekta o najmniejszej normie. CRIPSO: 100 polipów, w = 0,75, c1 = c2 = cos(π/2 Li/L); PSO: 100 cząstek, asynchroniczny gbest, te same współczynniki. Budżet %2 rozwiązań, ziarno %3.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+113"/>
+        <source>The exact correction of %1 setup data raises the smallest error budget f1 from %2 mm to %3 mm%4; CRIPSO and PSO reach %5 mm and %6 mm.</source>
+        <translation>Dokładna korekta %1 danych ustawczych podnosi najmniejszy budżet błędu f1 z %2 mm do %3 mm%4; CRIPSO i PSO osiągają %5 mm i %6 mm.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> (proven optimal)</source>
+        <translation> (udowodniona optymalność)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>work offsets</source>
+        <translation>przesunięcia punktu zerowego</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tool lengths</source>
+        <translation>długości narzędzi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>machine points</source>
+        <translation>punkty maszyny</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>add along %1; file %2 (program O9001)</source>
+        <translation>dodaj wzdłuż %1; plik %2 (program O9001)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+4"/>
+        <source>f1 %1 mm; %2 of %3 dimensions out of tolerance</source>
+        <translation>f1 %1 mm; %2 z %3 wymiarów poza tolerancją</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The correction widens the smallest margin to the tolerance limits by %1 mm; %2 of %3 dimensions stay out of tolerance.</source>
+        <translation>Korekta zwiększa najmniejszy zapas do granic tolerancji o %1 mm; %2 z %3 wymiarów pozostaje poza tolerancją.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No correction widens the smallest margin: the registers are as good as the measurements allow.</source>
+        <translation>Żadna korekta nie zwiększa najmniejszego zapasu: rejestry są tak dobre, jak pozwalają pomiary.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Add the exact corrections to the offset registers (%1, Setup page, Export; Heidenhain and Siemens formats there too), then measure the next part.</source>
+        <translation>Dodaj dokładne korekty do rejestrów korekcyjnych (%1, strona Ustawienia, Eksport; tam też formaty Heidenhain i Siemens), a potem zmierz następny przedmiot.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Leave the offset registers as they are.</source>
+        <translation>Pozostaw rejestry korekcyjne bez zmian.</translation>
+    </message>
+    <message>
+        <location line="-152"/>
         <source>Convergence</source>
         <translation>Zbieżność</translation>
     </message>
@@ -3427,7 +3841,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>metrofit-cli setup --export fanuc zapisuje ten sam tekst; Heidenhain, Siemens i CSV to pozostałe formaty (patrz konwencja znaków w nagłówku).</translation>
     </message>
     <message>
-        <location filename="../widgets/report/thermalsection.cpp" line="-261"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-262"/>
         <source>%1 h</source>
         <translation>%1 h</translation>
     </message>
@@ -3599,16 +4013,86 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <source>%1 against each sensor (Fig. 9 of seed 004): heating runs (the change of %1 grows, %2 rows) and cooling runs (%3 rows) in the colours of the trend chart&apos;s phases. Loop area by the shoelace formula; lag: the time constant of a first-order lag between sensor and displacement (&gt; 0: the sensor lags).%4</source>
-        <translation>%1 względem każdego czujnika (rys. 9 ze źródła 004): fazy nagrzewania (zmiana %1 rośnie, wiersze: %2) i chłodzenia (wiersze: %3) w kolorach faz wykresu trendu. Pole pętli ze wzoru Gaussa (sznurowadłowego); opóźnienie: stała czasowa członu inercyjnego pierwszego rzędu między czujnikiem a przemieszczeniem (&gt; 0: czujnik się opóźnia).%4</translation>
+        <source>%1 against each sensor (Fig. 9 of %5): heating runs (the change of %1 grows, %2 rows) and cooling runs (%3 rows) in the colours of the trend chart&apos;s phases. Loop area by the shoelace formula; lag: the time constant of a first-order lag between sensor and displacement (&gt; 0: the sensor lags).%4</source>
+        <translation>%1 względem każdego czujnika (rys. 9 w %5): odcinki nagrzewania (zmiana %1 rośnie, wiersze: %2) i chłodzenia (wiersze: %3) w kolorach faz wykresu przebiegu. Pole pętli wzorem Gaussa; opóźnienie: stała czasowa członu inercyjnego pierwszego rzędu między czujnikiem a przemieszczeniem (&gt; 0: czujnik się opóźnia).%4</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+145"/>
+        <source>Performance indices (Table 4 of %1): R correlation, RMSE, E Nash-Sutcliffe efficiency, band = largest |residual|. A model is usable for compensation only when on the held-out rows it does not diverge (RMSE at most %2 × the largest error), E ≥ %3 and R ≥ %4.</source>
+        <translation>Wskaźniki jakości (tabela 4 w %1): R korelacja, RMSE, E sprawność Nasha-Sutcliffe’a, pasmo = największe |residuum|. Model nadaje się do kompensacji tylko wtedy, gdy na odłożonych wierszach nie rozbiega się (RMSE co najwyżej %2 × największy błąd), E ≥ %3 i R ≥ %4.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Modular models (%1, Section 4.3)</source>
+        <translation>Modele modułowe (%1, rozdział 4.3)</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>The thermal models could not be fitted: %1</source>
+        <translation>Nie udało się dopasować modeli termicznych: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Check the thermal study&apos;s target and inputs against the log.</source>
+        <translation>Sprawdź wielkość docelową i wejścia badania termicznego względem zapisu.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 is not usable (%2)</source>
+        <translation>%1 nie nadaje się do użycia (%2)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 varies by RMS %2%3 (peak %4%3) on the held-out rows</source>
+        <translation>%1 zmienia się na odłożonych wierszach o RMS %2%3 (szczyt %4%3)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Best usable model of %1: %2, held-out RMSE %3%4, residual band ±%5%4.</source>
+        <translation>Najlepszy użyteczny model dla %1: %2, RMSE na odłożonych %3%4, pasmo residuów ±%5%4.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>RMS %1%2 (band ±%3%2) left with %4</source>
+        <translation>RMS %1%2 (pasmo ±%3%2) pozostaje z %4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>thermal compensation of %1</source>
+        <translation>kompensacja termiczna %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>model fitted on %1 (Thermal page; metrofit-cli thermal fit saves it)</source>
+        <translation>model dopasowany na %1 (strona Termika; metrofit-cli thermal fit go zapisuje)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 predicts %2 on rows it was not fitted on to RMS %3%4, from RMS %5%4 without compensation.</source>
+        <translation>%1 przewiduje %2 na wierszach, na których nie był dopasowany, z RMS %3%4 wobec RMS %5%4 bez kompensacji.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Compensate %1 with %2; do not use the models marked not usable.</source>
+        <translation>Kompensuj %1 za pomocą %2; nie używaj modeli oznaczonych jako nieużyteczne.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No model of %1 passes the held-out test.</source>
+        <translation>Żaden model dla %1 nie przechodzi testu na odłożonych wierszach.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Do not compensate with these models. Record a longer test covering heating and cooling, add sensors near the heat sources, and use the closed loop (diagnosis) to find the lag or inputs the model lacks.</source>
+        <translation>Nie kompensuj tymi modelami. Zarejestruj dłuższy test obejmujący nagrzewanie i chłodzenie, dodaj czujniki blisko źródeł ciepła i użyj zamkniętej pętli (diagnozy), aby znaleźć opóźnienie lub wejścia, których brakuje modelowi.</translation>
+    </message>
+    <message>
+        <location line="-259"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Wykresy pierwszych %1 z %2 czujników; tabela zawiera wszystkie.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>sensor</source>
         <translation>czujnik</translation>
     </message>
@@ -3664,36 +4148,41 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+71"/>
+        <location line="+90"/>
         <source>model</source>
         <translation>model</translation>
     </message>
     <message>
-        <location line="-70"/>
-        <location line="+76"/>
+        <location line="-89"/>
+        <location line="+95"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-76"/>
-        <location line="+74"/>
+        <location line="-95"/>
+        <location line="+93"/>
         <source>RMSE (%1)</source>
         <translation>RMSE (%1)</translation>
     </message>
     <message>
-        <location line="-73"/>
-        <location line="+76"/>
+        <location line="-92"/>
+        <location line="+95"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-76"/>
-        <location line="+71"/>
+        <location line="-95"/>
+        <location line="+90"/>
         <source>band (%1)</source>
         <translation>pasmo (%1)</translation>
     </message>
     <message>
-        <location line="-60"/>
+        <location line="-89"/>
+        <source>verdict</source>
+        <translation>ocena</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1 PSO iterations, Eq. 2.9 %2 → %3</source>
         <translation>iteracje PSO: %1, równ. 2.9 %2 → %3</translation>
     </message>
@@ -3713,7 +4202,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>epoki LM: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
         <source> (%1 s)</source>
         <translation> (%1 s)</translation>
     </message>
@@ -3723,7 +4212,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>rozbieżny</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+9"/>
         <source>fit, %1</source>
         <translation>dopasowanie, %1</translation>
     </message>
@@ -3733,22 +4222,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>dane testowe, %1</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Performance indices (Table 4 of seed 004): R correlation, RMSE, E Nash-Sutcliffe efficiency, band = largest |residual|.</source>
-        <translation>Wskaźniki jakości (tabela 4 ze źródła 004): R korelacja, RMSE, E efektywność Nasha-Sutcliffe&apos;a, pasmo = największe |residuum|.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+16"/>
         <source>Training: %1.</source>
         <translation>Trenowanie: %1.</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>Modular models (Section 4.3)</source>
-        <translation>Modele modułowe (rozdział 4.3)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+9"/>
         <source>The modular case could not be computed: %1</source>
         <translation>Nie można było obliczyć przypadku modułowego: %1</translation>
     </message>
@@ -3766,14 +4245,6 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+2"/>
         <source>less, RMS</source>
         <translation>mniej, RMS</translation>
-    </message>
-    <message>
-        <source>stopped</source>
-        <translation>zatrzymano</translation>
-    </message>
-    <message>
-        <source>True remaining error of the simulated part: %1 mm at most, %2 point(s) out of tolerance.</source>
-        <translation>Rzeczywisty błąd resztkowy symulowanego przedmiotu: najwyżej %1 mm, punktów poza tolerancją: %2.</translation>
     </message>
 </context>
 <context>
@@ -3893,12 +4364,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+107"/>
+        <location line="+112"/>
         <source>dimension %1</source>
         <translation>wymiar %1</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="-105"/>
         <source>time</source>
         <comment>in a sentence</comment>
         <translation>czasu</translation>
@@ -3914,7 +4385,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>kąta na torze</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>the direction of the loop (counter-clockwise or clockwise)</source>
         <translation>kierunku obiegu (przeciwnie do ruchu wskazówek zegara lub zgodnie z nim)</translation>
     </message>
@@ -3954,7 +4425,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>składowej %1 nominalnej normalnej</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>the position on surface %1</source>
         <translation>położenia na powierzchni %1</translation>
     </message>
@@ -4010,7 +4481,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>gładka krzywa</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>a step</source>
         <translation>skok</translation>
     </message>
@@ -4030,22 +4501,46 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>inny poziom w każdej grupie</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>%1 (%2, %3 % of the residual variance)</source>
         <translation>%1 (%2, %3 % wariancji residuum)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>white: no test finds structure</source>
         <translation>białe: żaden test nie znajduje struktury</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="+102"/>
+        <source>Warning: the held-out error rose from %1 to %2 %3 with the accepted effects. They describe the fit rows but do not carry over to the rows they did not see: do not compensate with them.</source>
+        <translation>Ostrzeżenie: błąd wierszy wstrzymanych wzrósł z przyjętymi efektami z %1 do %2 %3. Opisują one wiersze dopasowania, ale nie przenoszą się na wiersze, których nie widziały: nie kompensować nimi.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>On the held-out rows, which only report the error, the residual looks like noise as well.</source>
+        <translation>W wierszach wstrzymanych, które tylko raportują błąd, reszta również wygląda jak szum.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>On the held-out rows, which only report the error, the residual still depends on %1: the model misses something there that the fit rows did not show.</source>
+        <translation>W wierszach wstrzymanych, które tylko raportują błąd, reszta nadal zależy od %1: modelowi brakuje tam czegoś, czego wiersze dopasowania nie pokazały.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n held-out measurement(s) left out of the held-out error as gross errors: %1.</source>
+        <translation>
+            <numerusform>%n wstrzymany pomiar pominięty w błędzie wierszy wstrzymanych jako błąd gruby: %1.</numerusform>
+            <numerusform>%n wstrzymane pomiary pominięte w błędzie wierszy wstrzymanych jako błędy grube: %1.</numerusform>
+            <numerusform>%n wstrzymanych pomiarów pominiętych w błędzie wierszy wstrzymanych jako błędy grube: %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="-134"/>
         <source>not white: still depends on %1</source>
         <translation>nie białe: wciąż zależy od zmiennych: %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>not white: the tests find structure that no single variable explains</source>
         <translation>nie białe: testy znajdują strukturę, której nie wyjaśnia żadna pojedyncza zmienna</translation>
     </message>
@@ -4065,7 +4560,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>punkt %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>observation %1</source>
         <translation>obserwacja %1</translation>
     </message>
@@ -4079,12 +4574,13 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
+        <location line="+79"/>
         <source>%1 (%2, %3 % of the residual variance, p = %4)</source>
         <translation>%1 (%2, %3 % wariancji residuum, p = %4)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-70"/>
         <source>%1 and %2</source>
         <translation>%1 oraz %2</translation>
     </message>
@@ -4094,17 +4590,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Co pozostaje niewyjaśnione: końcowe residuum wciąż zależy od %1. Żaden efekt z katalogu tego nie wyjaśnia (testy na poziomie %2 % dla całej rodziny testów).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>What is left unexplained: the final residual is serially correlated in the order of %1 (Ljung-Box test, p = %2), but no single variable of the data explains it.</source>
         <translation>Co pozostaje niewyjaśnione: końcowe residuum jest skorelowane szeregowo w kolejności %1 (test Ljung-Boxa, p = %2), ale żadna pojedyncza zmienna danych tego nie wyjaśnia.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>What is left unexplained: the tests find structure in the final residual at the %1 % family-wise level that no single variable explains.</source>
         <translation>Co pozostaje niewyjaśnione: testy znajdują w końcowym residuum, na poziomie %1 % dla całej rodziny testów, strukturę, której nie wyjaśnia żadna pojedyncza zmienna.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1 in %2</source>
         <translation>%1 względem %2</translation>
     </message>
@@ -4114,12 +4610,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Żaden efekt z katalogu nie wyjaśnia części tej struktury, więc model otrzymał dla niej człon ogólny zamiast błędnej nazwy: %1.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>No measurement was excluded as a gross error (robust z above %1).</source>
         <translation>Żaden pomiar nie został wykluczony jako błąd gruby (odporne z powyżej %1).</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>No measurement was excluded as a gross error.</source>
         <translation>Żaden pomiar nie został wykluczony jako błąd gruby.</translation>
     </message>
@@ -4129,8 +4625,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>%1 (residuum %2 %3, odporne z %4)</translation>
     </message>
     <message numerus="yes">
-        <location line="-84"/>
-        <location line="+89"/>
+        <location line="-95"/>
+        <location line="+100"/>
         <source> and %n more</source>
         <translation>
             <numerusform> i %n kolejny</numerusform>
@@ -4147,35 +4643,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
             <numerusform>%n pomiarów wykluczonych z dopasowania jako błędy grube (odporne z powyżej %1): %2.</numerusform>
         </translation>
     </message>
-    <message>
-        <location line="+1"/>
-        <source>Warning: the held-out error rose from %1 to %2 %3 with the accepted effects. They describe the fit rows but do not carry over to the rows they did not see: do not compensate with them.</source>
-        <translation>Ostrzeżenie: błąd wierszy wstrzymanych wzrósł z przyjętymi efektami z %1 do %2 %3. Opisują one wiersze dopasowania, ale nie przenoszą się na wiersze, których nie widziały: nie kompensować nimi.</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>On the held-out rows, which only report the error, the residual looks like noise as well.</source>
-        <translation>W wierszach wstrzymanych, które tylko raportują błąd, reszta również wygląda jak szum.</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>On the held-out rows, which only report the error, the residual still depends on %1: the model misses something there that the fit rows did not show.</source>
-        <translation>W wierszach wstrzymanych, które tylko raportują błąd, reszta nadal zależy od %1: modelowi brakuje tam czegoś, czego wiersze dopasowania nie pokazały.</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+1"/>
-        <source>%n held-out measurement(s) left out of the held-out error as gross errors: %1.</source>
-        <translation>
-            <numerusform>%n wstrzymany pomiar pominięty w błędzie wierszy wstrzymanych jako błąd gruby: %1.</numerusform>
-            <numerusform>%n wstrzymane pomiary pominięte w błędzie wierszy wstrzymanych jako błędy grube: %1.</numerusform>
-            <numerusform>%n wstrzymanych pomiarów pominiętych w błędzie wierszy wstrzymanych jako błędy grube: %1.</numerusform>
-        </translation>
-    </message>
 </context>
 <context>
     <name>metrofit::ResidualCheckView</name>
     <message>
-        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+116"/>
+        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+120"/>
         <source>Final residual against %1</source>
         <translation>Końcowe residuum względem %1</translation>
     </message>
@@ -4186,18 +4658,18 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+183"/>
-        <location line="+275"/>
+        <location line="+187"/>
+        <location line="+281"/>
         <source>residual</source>
         <translation>residuum</translation>
     </message>
     <message>
-        <location line="-458"/>
+        <location line="-467"/>
         <source>residual (%1)</source>
         <translation>residuum (%1)</translation>
     </message>
     <message>
-        <location line="+186"/>
+        <location line="+191"/>
         <source>generic fit</source>
         <translation>dopasowanie ogólne</translation>
     </message>
@@ -4207,19 +4679,19 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>dopasowanie ogólne, %1</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+282"/>
+        <location line="+2"/>
+        <location line="+288"/>
         <source>excluded outliers</source>
         <translation>wykluczone wartości odstające</translation>
     </message>
     <message>
-        <location line="-241"/>
-        <location line="+137"/>
+        <location line="-247"/>
+        <location line="+141"/>
         <source>What the residual still depends on (strongest first):</source>
         <translation>Od czego residuum wciąż zależy (najsilniejsze najpierw):</translation>
     </message>
     <message>
-        <location line="-136"/>
+        <location line="-140"/>
         <source>Outliers excluded from the fit:</source>
         <translation>Wartości odstające wykluczone z dopasowania:</translation>
     </message>
@@ -4240,28 +4712,28 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Form</source>
         <translation>Postać</translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-11"/>
         <source>Share (%)</source>
         <translation>Udział (%)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+8"/>
+        <location line="+12"/>
         <source>p-value</source>
         <translation>wartość p</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-10"/>
         <source>Per variable with a rejected test its strongest form; share = part of the residual variance the form explains</source>
         <translation>Dla każdej zmiennej z odrzuconym testem jej najsilniejsza postać; udział = część wariancji residuum wyjaśniona przez tę postać</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Row</source>
         <translation>Wiersz</translation>
     </message>
@@ -4282,17 +4754,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+135"/>
+        <location line="+137"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-135"/>
+        <location line="-137"/>
         <source>Robust z</source>
         <translation>Odporne z</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Observations whose robust z (|r - median| / (1.4826 MAD)) is above the threshold: gross errors, excluded and the model refitted without them</source>
         <translation>Obserwacje, których odporne z (|r - mediana| / (1,4826 MAD)) przekracza próg: błędy grube, wykluczone, a model dopasowany ponownie bez nich</translation>
     </message>
@@ -4322,7 +4794,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Odrzucony</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Ljung-Box: serial correlation of the residual in that order (chi-square); F test: the residual against the variable in that form (nested models). Rejected: by Holm&apos;s procedure at the family-wise level</source>
         <translation>Ljung-Box: korelacja szeregowa residuum w tej kolejności (chi-kwadrat); test F: residuum względem zmiennej w tej postaci (modele zagnieżdżone). Odrzucony: procedurą Holma na poziomie dla całej rodziny testów</translation>
     </message>
@@ -4348,7 +4820,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Od czego residuum wciąż zależy: nic nie znaleziono.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>Outliers: none (robust z threshold %1).</source>
         <translation>Wartości odstające: brak (próg odpornego z %1).</translation>
     </message>
@@ -4368,7 +4840,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Residuum (%1)</translation>
     </message>
     <message numerus="yes">
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Tests of the final residual (%n test(s), %1 observations; rejected by Holm at the %2 % family-wise level):</source>
         <translation>
             <numerusform>Testy końcowego residuum (%n test, obserwacji: %1; odrzucone procedurą Holma na poziomie %2 % dla całej rodziny):</numerusform>
@@ -4392,7 +4864,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Żadna pojedyncza zmienna nie wyjaśnia pozostałej struktury</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>generic fit (%1)</source>
         <translation>dopasowanie ogólne (%1)</translation>
     </message>
@@ -5152,7 +5624,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ten projekt nie ma modelu ustawczego. Dodaj do pliku projektu zbiór danych rodzaju „setup_model” (graf relacji, JSON) oraz „cmm_report”.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>This project has no CMM report for the setup study (a dataset of kind &quot;cmm_report&quot;).</source>
         <translation>Ten projekt nie ma raportu WMP dla studium ustawienia (zbiór danych rodzaju „cmm_report”).</translation>
     </message>
@@ -5177,7 +5649,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Brak jeszcze wyniku dla tego modelu: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
+        <location line="+8"/>
         <source>The edited model has %n problem(s), the first: %1</source>
         <translation>
             <numerusform>Edytowany model ma %n problem: %1</numerusform>
@@ -5439,7 +5911,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupValidationView</name>
     <message>
-        <location filename="../widgets/setup/setupvalidationview.cpp" line="+61"/>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+63"/>
         <source>Simulated measurement sets N (the paper: 100)</source>
         <translation>Symulowane zestawy pomiarów N (publikacja: 100)</translation>
     </message>
@@ -5519,7 +5991,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Metody:</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+92"/>
         <source>Choose at least one method.</source>
         <translation>Wybierz co najmniej jedną metodę.</translation>
     </message>
@@ -5529,12 +6001,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Obliczanie: %1 zestawów x %2 prób…</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>The validation failed: %1</source>
         <translation>Walidacja nie powiodła się: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+15"/>
         <source>%1 sets%2: f1 before correction from %3 to %4 mm.</source>
         <translation>Zestawy: %1%2: f1 przed korekcją od %3 do %4 mm.</translation>
     </message>
@@ -5544,27 +6016,32 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation> (anulowano)</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.</source>
-        <translation>%1: średnia różnica do dokładnego f1 %2 mm; %3 z %4 prób w granicach jednego kroku siatki.</translation>
-    </message>
-    <message>
+        <location line="+4"/>
         <source>The paper&apos;s range %1 to %2 mm is consistent with the simulator (its minimum lies in %3 to %4 mm, its maximum in %5 to %6 mm over 100 sets, 98 % bands).</source>
         <translation>Zakres z artykułu, od %1 do %2 mm, jest zgodny z symulatorem (jego minimum leży w przedziale od %3 do %4 mm, maksimum od %5 do %6 mm dla 100 zestawów, pasma 98 %).</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>NOT consistent: the paper&apos;s range %1 to %2 mm lies outside the simulator&apos;s bands (minimum %3 to %4 mm, maximum %5 to %6 mm over 100 sets, 98 %).</source>
         <translation>NIEZGODNY: zakres z artykułu, od %1 do %2 mm, leży poza pasmami symulatora (minimum od %3 do %4 mm, maksimum od %5 do %6 mm dla 100 zestawów, 98 %).</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>The paper&apos;s range (%1 to %2 mm) is for w1 = 0.03 and w2 = 0.02 mm: not compared.</source>
         <translation>Zakres z artykułu (od %1 do %2 mm) dotyczy w1 = 0,03 i w2 = 0,02 mm: nie porównano.</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>%1: mean gap to the exact f1 %2 mm; %3 of %4 trials within one grid step.</source>
+        <translation>%1: średnia różnica do dokładnego f1 %2 mm; %3 z %4 prób w granicach jednego kroku siatki.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Share of the setup data in the dimension error, estimated from the sets: %1 % of the weights (configured %2 %), %3 % of the variance.</source>
         <translation>Udział danych ustawczych w błędzie wymiaru, oszacowany z zestawów: %1 % wag (ustawiono %2 %), %3 % wariancji.</translation>
     </message>
     <message numerus="yes">
+        <location line="+8"/>
         <source>In the project&apos;s measurements (%n part(s)): %1 % of the weights, %2 % of the variance.</source>
         <translation>
             <numerusform>W pomiarach projektu (%n przedmiot): %1 % wag, %2 % wariancji.</numerusform>
@@ -5573,6 +6050,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         </translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>The setup share of the measurements cannot be estimated: %1</source>
         <translation>Nie można oszacować udziału danych ustawczych w pomiarach: %1</translation>
     </message>
@@ -5959,7 +6437,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>granica dopas./test</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+83"/>
         <source>%1: lag %2 min</source>
         <translation>%1: opóźnienie %2 min</translation>
     </message>
@@ -6013,15 +6491,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <source>The held-out test failed (E &lt; 0 or an unstable model): this model extrapolates poorly beyond its fit rows; do not use it for compensation.</source>
-        <translation>Test na danych testowych niezaliczony (E &lt; 0 lub model niestabilny): model źle ekstrapoluje poza wiersze dopasowania; nie używać go do kompensacji.</translation>
-    </message>
-    <message>
-        <source>held out (%1): test failed</source>
-        <translation>dane testowe (%1): test niezaliczony</translation>
-    </message>
-    <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+76"/>
+        <location filename="../widgets/charts/thermalmodelview.cpp" line="+79"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -6086,50 +6556,56 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>rozbieżny</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+21"/>
         <source>Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows without bound on the held-out rows</source>
         <translation>Metoda najmniejszych kwadratów dała niestabilny GMC(1,N): b1 = %1 ≤ 0; jego wyjście rośnie bez ograniczeń na danych testowych</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+53"/>
-        <location line="+118"/>
+        <location line="+77"/>
+        <location line="+119"/>
         <source>model</source>
         <translation>model</translation>
     </message>
     <message>
-        <location line="-171"/>
-        <location line="+171"/>
+        <location line="-196"/>
+        <location line="+196"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
     <message>
-        <location line="-170"/>
-        <location line="+170"/>
+        <location line="-195"/>
+        <location line="+195"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-170"/>
-        <location line="+170"/>
+        <location line="-195"/>
+        <location line="+195"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-169"/>
-        <location line="+53"/>
-        <location line="+116"/>
+        <location line="-194"/>
+        <location line="+77"/>
+        <location line="+117"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-169"/>
-        <location line="+169"/>
+        <location line="-194"/>
+        <location line="+194"/>
         <source>band</source>
         <translation>pasmo</translation>
     </message>
     <message>
-        <location line="-162"/>
+        <location line="-193"/>
+        <location line="+193"/>
+        <source>verdict</source>
+        <translation>ocena</translation>
+    </message>
+    <message>
+        <location line="-186"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -6139,12 +6615,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation> (niestabilny: b1 ≤ 0)</translation>
     </message>
     <message>
+        <location line="+19"/>
+        <source>Best usable model: %1.</source>
+        <translation>Najlepszy użyteczny model: %1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No model is usable for compensation: record a longer test or add the inputs the diagnosis finds.</source>
+        <translation>Żaden model nie nadaje się do kompensacji: zarejestruj dłuższy test lub dodaj wejścia wskazane przez diagnozę.</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>%1 fit rows, %2 held out; %3.</source>
         <translation>wiersze dopasowania: %1, dane testowe: %2; %3.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 % (GMC(1,N) %2 %, MLP %3 %).</source>
         <translation>&lt;b&gt;Przypadek modułowy:&lt;/b&gt; GNNMCI(1,N) dopasowany na testach Z i C zmniejsza błąd testu łączonego o %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
     </message>
@@ -6239,7 +6725,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Wejści&amp;a:</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>Correlation coefficient of measured and predicted</source>
         <translation>Współczynnik korelacji wartości zmierzonych i przewidywanych</translation>
     </message>
@@ -6259,7 +6745,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Największe |residuum|, w jednostce wielkości docelowej</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Usable for compensation when on the held-out rows it does not diverge, E ≥ %1 and R ≥ %2</source>
+        <translation>Nadaje się do kompensacji, gdy na odłożonych wierszach nie rozbiega się, E ≥ %1 i R ≥ %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Modular models (Section 4.3)</source>
         <translation>Modele modułowe (rozdział 4.3)</translation>
     </message>
@@ -6435,6 +6926,34 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
 </context>
 <context>
+    <name>metrofit::ThermalVerdict</name>
+    <message>
+        <location filename="../widgets/charts/thermalverdict.cpp" line="+19"/>
+        <source>usable</source>
+        <translation>użyteczny</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not usable</source>
+        <translation>nieużyteczny</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>its prediction diverges on the held-out rows</source>
+        <translation>jego prognoza rozbiega się na odłożonych wierszach</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>E = %1 on the held-out rows, below %2: it predicts worse than the mean of the error</source>
+        <translation>E = %1 na odłożonych wierszach, poniżej %2: przewiduje gorzej niż średnia błędu</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>R = %1 on the held-out rows, below %2: it hardly follows the error</source>
+        <translation>R = %1 na odłożonych wierszach, poniżej %2: ledwo nadąża za błędem</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::core</name>
     <message>
         <location filename="../widgets/diagnose/coretexts.cpp" line="+20"/>
@@ -6547,12 +7066,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>rmse walidacji %1 → %2%3 (%4), rmse dopasowania %5 → %6%3, rmse danych testowych %7 → %8%3</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>validation rmse %1 -&gt; %2%3 (%4), fit rmse %5 -&gt; %6%3, held-out rmse %7 -&gt; %8%3, %9</source>
         <translation>rmse walidacji %1 → %2%3 (%4), rmse dopasowania %5 → %6%3, rmse danych testowych %7 → %8%3, %9</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>; rejected: validation error worse</source>
         <translation>; odrzucony: błąd walidacji większy</translation>
     </message>
@@ -6572,22 +7091,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>; odrzucony: brak dowodów w danych dopasowania (dBIC dopasowania %1 ≥ 0)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+18"/>
         <source>accepted together with %1: validation rmse %2 -&gt; %3%4 (%5), fit rmse %6 -&gt; %7%4, held-out rmse %8 -&gt; %9%4, %10</source>
         <translation>przyjęty razem z %1: rmse walidacji %2 → %3%4 (%5), rmse dopasowania %6 → %7%4, rmse danych testowych %8 → %9%4, %10</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-17"/>
         <source>; rejected: the validation folds cannot fit it</source>
         <translation>; odrzucony: nie da się go dopasować w foldach walidacji</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>effects chosen on the fit rows by blocked forward validation (%1 folds, validation rmse %2%3); the held-out rows only report the error</source>
         <translation>efekty wybrane na wierszach dopasowania przez blokową walidację w przód (%1 foldy, rmse walidacji %2%3); wiersze testowe podają tylko błąd</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>%1 gross errors excluded before the fit (robust z above %2):</source>
         <translation>%1 błędów grubych wykluczonych przed dopasowaniem (odporne z powyżej %2):</translation>
     </message>
@@ -6617,12 +7136,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>; odrzucony: wiersze dopasowania nie wyznaczają tau (błąd standardowy powyżej połowy)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>declared model %1 of %2 (fitted on the first %3 of %4 rows as thermal fit does; alone: fit rmse %5, held-out rmse %6%7); the loop fits the target on its prediction (coefficient %8) and the candidate effects</source>
         <translation>zadeklarowany model %1 z %2 (dopasowany do pierwszych %3 z %4 wierszy jak w thermal fit; sam: rmse dopasowania %5, rmse danych testowych %6%7); pętla dopasowuje wielkość docelową do jego predykcji (współczynnik %8) i efektów kandydujących</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+8"/>
         <source>residual</source>
         <translation>residuum</translation>
     </message>
@@ -6873,12 +7392,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+93"/>
+        <location line="+96"/>
         <source>step</source>
         <translation>skok</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-95"/>
         <source>periodic</source>
         <translation>okresowa</translation>
     </message>
@@ -6913,7 +7432,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>białe: żaden test nie znajduje struktury na poziomie %1 % dla całej rodziny (testów: %2)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>not white: still depends on </source>
         <translation>nie białe: wciąż zależy od zmiennych: </translation>
     </message>
@@ -6953,7 +7472,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Błędy grube wykluczone przed dopasowaniem (%1; odporne z powyżej progu wartości odstających):</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source> row %1 (%2 um)</source>
         <translation> wiersz %1 (%2 µm)</translation>
     </message>
@@ -6983,7 +7502,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>odrzucony: nie wyjaśnia tego, do czego został wybrany; bez niego efekty ogólne wyjaśniają dane równie dobrze (BIC %1 bez, %2 z nim, potrzebne o %3 niżej)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>samples since an axis reversed (signed, log scale)</source>
         <translation>próbki od nawrotu osi (ze znakiem, skala logarytmiczna)</translation>
     </message>

@@ -457,7 +457,8 @@ void registerSetupCommand(CLI::App& app) {
 void registerSimulateSetupCommand(CLI::App& simulate) {
   auto a = std::make_shared<SimulateSetupArgs>();
   auto* sub = simulate.add_subcommand(
-      "setup", "A CMM report series of a setup model: setup-data and random errors (seed 000 Eq. 12-13)");
+      "setup",
+      "A CMM report series of a setup model: setup-data and random errors (Stryczek 2016, Eq. 12–13)");
   existingFile(sub->add_option("--model", a->model, "Setup model (relation graph, JSON)")->required());
   sub->add_option("--parts", a->parts, "Parts in the series")
       ->check(CLI::Range(1, 100000))

@@ -321,7 +321,8 @@ void addColumns(CLI::App* sub, std::string& target, std::string& inputs) {
 }  // namespace
 
 void registerThermalCommands(CLI::App& app) {
-  auto* th = app.add_subcommand("thermal", "Thermal error modelling (GNNMCI(1,N), GMC(1,N), MLP; seed 004)");
+  auto* th = app.add_subcommand(
+      "thermal", "Thermal error modelling (GNNMCI(1,N), GMC(1,N), MLP; Abdulshahed et al. 2016)");
   th->require_subcommand(1);
 
   auto f = std::make_shared<FitArgs>();

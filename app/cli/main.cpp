@@ -49,16 +49,26 @@ int main(int argc, char** argv) {
     for (auto& c : what) {
       if (c == '\n') c = ' ';
     }
-    // "A subcommand is required" after `kinematic`: name the family and its subcommands.
+    // "A subcommand is required" after `kinematic`: name the family and its subcommands, and the
+    // word that was given instead ("thermal fti").
     const CLI::App* deepest = &app;
-    while (!deepest->get_subcommands().empty()) deepest = deepest->get_subcommands().front();
+    std::string path;  // "thermal fit": the subcommands given, for the pointer to their --help
+    int depth = 0;
+    while (!deepest->get_subcommands().empty()) {
+      deepest = deepest->get_subcommands().front();
+      path += " " + deepest->get_name();
+      ++depth;
+    }
     if (deepest != &app && what.rfind("A subcommand is required", 0) == 0) {
       std::string names;
       for (const CLI::App* sub : deepest->get_subcommands({}))
         names += (names.empty() ? "" : ", ") + sub->get_name();
-      what = deepest->get_name() + ": a subcommand is required (one of: " + names + ")";
+      const bool given = depth + 1 < argc && argv[depth + 1][0] != '-';
+      what = given ? deepest->get_name() + ": unknown subcommand '" + argv[depth + 1] +
+                         "' (one of: " + names + ")"
+                   : deepest->get_name() + ": a subcommand is required (one of: " + names + ")";
     }
-    std::fprintf(stderr, "metrofit-cli: %s (see metrofit-cli --help)\n", what.c_str());
+    std::fprintf(stderr, "metrofit-cli: %s (see metrofit-cli%s --help)\n", what.c_str(), path.c_str());
     return 2;
   }
   try {

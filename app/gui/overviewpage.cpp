@@ -1,5 +1,7 @@
 #include "app/gui/overviewpage.h"
 
+#include "core/project/study_check.h"
+
 #include <QDir>
 #include <QEvent>
 #include <QFormLayout>
@@ -82,7 +84,20 @@ OverviewPage::OverviewPage(ProjectDocument* document, QWidget* parent)
   });
   connect(hintClose, &QToolButton::clicked, this, &OverviewPage::dismissHint);
 
+  problems_ = new QLabel(this);
+  problems_->setObjectName(QStringLiteral("studySettingProblems"));
+  problems_->setWordWrap(true);
+  problems_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  problems_->setFrameShape(QFrame::StyledPanel);
+  problems_->setAutoFillBackground(true);
+  QPalette problemPalette = problems_->palette();
+  problemPalette.setColor(QPalette::Window, QColor(0xfd, 0xec, 0xea));
+  problemPalette.setColor(QPalette::WindowText, QColor(0x8a, 0x1c, 0x1c));
+  problems_->setPalette(problemPalette);
+  problems_->hide();
+
   auto* layout = new QVBoxLayout(this);
+  layout->addWidget(problems_);
   layout->addWidget(hint_);
   layout->addWidget(title);
   layout->addLayout(form);
@@ -121,6 +136,21 @@ void OverviewPage::refresh() {
   const QString fileName = document_->fileName();
   file_->setText(fileName.isEmpty() ? tr("not saved yet") : QDir::toNativeSeparators(fileName));
   hint_->setVisible(fileName.isEmpty() && !QSettings().value(QString::fromLatin1(kFirstRunHintKey)).toBool());
+  // Study settings are checked when the project is opened and after every change: a bad one is a
+  // marked message naming the study and the field, never a quiet default.
+  const std::vector<StudyIssue> issues = checkStudies(document_->project());
+  if (issues.empty()) {
+    problems_->hide();
+  } else {
+    QStringList lines;
+    for (const StudyIssue& i : issues)
+      lines << QStringLiteral("⚠ <b>%1</b>: %2")
+                   .arg(QString::fromStdString(i.field).toHtmlEscaped(),
+                        QString::fromStdString(i.message).toHtmlEscaped());
+    problems_->setText(tr("Study settings the methods cannot use; correct them in the project file:") +
+                       QStringLiteral("<br>") + lines.join(QStringLiteral("<br>")));
+    problems_->show();
+  }
   if (shownDatasets_ != document_->project().datasets || shownFile_ != fileName ||
       datasets_->rowCount() == 0) {
     shownDatasets_ = document_->project().datasets;

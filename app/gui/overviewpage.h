@@ -26,6 +26,9 @@ class OverviewPage : public QWidget {
   /// The first-run hint ("New here? Open the demo project…"): shown until dismissed or used
   /// (remembered in QSettings under kFirstRunHintKey), and only while no project file is open.
   QFrame* firstRunHint() const { return hint_; }
+  /// The marked message listing the study settings no method can use (core/project/study_check.h);
+  /// hidden when every setting is valid.
+  QLabel* settingProblems() const { return problems_; }
   static constexpr const char* kFirstRunHintKey = "ui/firstRunHintDismissed";
 
  signals:
@@ -45,6 +48,7 @@ class OverviewPage : public QWidget {
   QLabel* file_;
   DatasetTable* datasets_;
   QFrame* hint_;
+  QLabel* problems_;
   bool updating_ = false;
   std::vector<DatasetRef> shownDatasets_;  ///< what the table shows (rebuilt only when it changes)
   QString shownFile_;

@@ -159,7 +159,7 @@ nlohmann::json toJson(const Diagnosis& d) {
                         {"rmse_after", c.rmseAfter},
                         {"evidence", c.evidence},
                         {"score", c.score},
-                        {"round", c.round}};
+                        {"round", c.round + 1}};  // 1-based, as the GUI and the report number rounds
     if (!uncertainty.empty()) e["uncertainty"] = uncertainty;
     if (c.heldoutBefore) e["heldout_rmse_before"] = *c.heldoutBefore;
     if (c.heldoutAfter) e["heldout_rmse_after"] = *c.heldoutAfter;

@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json.hpp>
 #include "cli/cli_runner.h"
+
 #include "core/io/json_util.h"
 #include "core/matching/probe_points.h"
 #include "core/project/project.h"
@@ -123,6 +126,87 @@ TEST(Cli, DemoWritesProjectDataAndReport) {
   const CliRun missing = cli("report --project nope.metrofit --out x.pdf", tmp);
   EXPECT_EQ(missing.code, 2);
   EXPECT_FALSE(std::filesystem::exists(tmp.file("x.pdf")));
+}
+
+// Issue 17: messages name the unknown subcommand and point to the subcommand's own --help; lists
+// typed with blanks ("a, b") are trimmed; the diagnosis JSON numbers rounds from 1.
+TEST(Cli, MessagesNameTheSubcommandAndItsHelp) {
+  test::TempDir tmp;
+  const CliRun fti = cli("thermal fti", tmp);
+  EXPECT_EQ(fti.code, 2);
+  EXPECT_EQ(lines(fti.err), 1) << fti.err;
+  EXPECT_NE(fti.err.find("thermal: unknown subcommand 'fti' (one of: fit,"), std::string::npos) << fti.err;
+  EXPECT_NE(fti.err.find("see metrofit-cli thermal --help"), std::string::npos) << fti.err;
+  const CliRun fam = cli("kinematic", tmp);
+  EXPECT_NE(fam.err.find("kinematic: a subcommand is required"), std::string::npos) << fam.err;
+  const CliRun fit = cli("thermal fit --data nope.csv --target a --inputs b", tmp);
+  EXPECT_EQ(fit.code, 2);
+  EXPECT_NE(fit.err.find("see metrofit-cli thermal fit --help"), std::string::npos) << fit.err;
+}
+
+TEST(Cli, ListOptionsAreTrimmedAndRoundsAre1Based) {
+  test::TempDir tmp;
+  ASSERT_EQ(cli("demo --out-dir demo", tmp).code, 0);
+  const CliRun r = cli(
+      "diagnose thermal --data demo/data/diagnose_thermal.csv --target disp_z_um --inputs 'T2, T4 ,T_amb' "
+      "--out d.json",
+      tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(test::readText(tmp.file("d.json")));
+  ASSERT_FALSE(j["effects"].empty());
+  int smallest = 1000;
+  for (const auto& e : j["effects"]) smallest = std::min(smallest, e["round"].get<int>());
+  EXPECT_EQ(smallest, 1);
+}
+
+// Issue 17: a bad study setting stops `report` with exit 2 and a line naming the study and field.
+TEST(Cli, ReportRejectsBadStudySettings) {
+  test::TempDir tmp;
+  ASSERT_EQ(cli("demo --out-dir demo", tmp).code, 0);
+  nlohmann::json p = nlohmann::json::parse(test::readText(tmp.file("demo/demo.metrofit")));
+  p["studies"]["thermal"]["target"] = "disp_x_um";
+  test::writeText(tmp.file("demo/bad.metrofit"), p.dump());
+  const CliRun r = cli("report --project demo/bad.metrofit --out bad.pdf", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("studies.thermal.target"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("disp_x_um"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("bad.pdf")));
+  p = nlohmann::json::parse(test::readText(tmp.file("demo/demo.metrofit")));
+  p["datasets"][0]["kind"] = "setup-model";
+  test::writeText(tmp.file("demo/bad.metrofit"), p.dump());
+  const CliRun k = cli("report --project demo/bad.metrofit --out bad.pdf", tmp);
+  EXPECT_EQ(k.code, 2);
+  EXPECT_NE(k.err.find("datasets[0].kind"), std::string::npos) << k.err;
+}
+
+// Issue 17: the demo report as its reader sees it (pdftotext): the summary first (pages 1-2 for the
+// demo's eight findings), nothing elided,
+// no source paths, seed numbers or ASCII stand-ins for symbols.
+TEST(Cli, DemoReportReadsAsAReport) {
+  if (std::system("command -v pdftotext > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "pdftotext (poppler-utils) missing";
+  test::TempDir tmp;
+  ASSERT_EQ(cli("demo --out-dir demo", tmp).code, 0);
+  ASSERT_EQ(std::system(("pdftotext demo/metrofit-demo-report.pdf '" + tmp.file("all.txt") +
+                         "' && pdftotext -l 2 "
+                         "demo/metrofit-demo-report.pdf '" +
+                         tmp.file("p1.txt") + "'")
+                            .insert(0, "cd '" + tmp.path().string() + "' && ")
+                            .c_str()),
+            0);
+  const std::string all = test::readText(tmp.file("all.txt")), page1 = test::readText(tmp.file("p1.txt"));
+  for (const char* needle : {"What each study found", "What to change on the machine", "corrections-fanuc.nc",
+                             "Error before and after", "What the closed loop found"})
+    EXPECT_NE(page1.find(needle), std::string::npos) << "page 1 lacks " << needle;
+  for (const char* needle : {"References", "Appendix: data provenance", "Stryczek", "Jiang", "Abdulshahed",
+                             "Recommendation: ", "not usable"})
+    EXPECT_NE(all.find(needle), std::string::npos) << "the report lacks " << needle;
+  for (const char* word : {"\xE2\x80\xA6", "seed 00", "core/", "resources/", ".cpp", ".h)", "issue ", "+-",
+                           "->", " um ", " um)", "degC"})
+    EXPECT_EQ(all.find(word), std::string::npos)
+        << "the report says " << word << " at: "
+        << all.substr(std::min(all.size(), all.find(word) - std::min<std::size_t>(60, all.find(word))), 120);
 }
 
 }  // namespace

@@ -25,6 +25,7 @@
 #include <QTranslator>
 #include <QUndoStack>
 #include <functional>
+#include <nlohmann/json.hpp>
 
 #include "app/gui/datasettable.h"
 #include "app/gui/diagnosispage.h"
@@ -110,6 +111,29 @@ TEST_F(MainWindowTest, OpensTheDemoProject) {
   EXPECT_EQ(window_.overviewPage()->datasetTable()->rowCount(),
             static_cast<int>(doc->project().datasets.size()));
   EXPECT_TRUE(recentFiles().contains(doc->fileName()));
+}
+
+// Issue 17: study settings are validated when the project is opened; a bad one is a marked message
+// on the overview naming the study and the field (the demo has none).
+TEST_F(MainWindowTest, BadStudySettingIsAMarkedMessageOnOpen) {
+  EXPECT_TRUE(window_.overviewPage()->settingProblems()->isHidden());
+  QFile file(demo_);
+  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+  nlohmann::json j = nlohmann::json::parse(file.readAll().toStdString());
+  file.close();
+  j["studies"]["thermal"]["targt"] = "disp_z_um";
+  const QString bad = QFileInfo(demo_).dir().filePath(QStringLiteral("bad.metrofit"));
+  QFile out(bad);
+  ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+  out.write(QByteArray::fromStdString(j.dump()));
+  out.close();
+  ASSERT_TRUE(window_.openProject(bad));
+  QLabel* problems = window_.overviewPage()->settingProblems();
+  EXPECT_FALSE(problems->isHidden());
+  EXPECT_TRUE(problems->text().contains(QStringLiteral("studies.thermal.targt")))
+      << problems->text().toStdString();
+  EXPECT_TRUE(problems->text().contains(QStringLiteral("is not a setting")))
+      << problems->text().toStdString();
 }
 
 TEST_F(MainWindowTest, NavigatorShowsEveryPage) {

@@ -4,6 +4,8 @@
 // $METROFIT_TEST_OUT/thermalpage for people to look at.
 #include <gtest/gtest.h>
 
+#include "core/thermal/model_verdict.h"
+
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -100,6 +102,19 @@ TEST_F(ThermalPageModelsTest, GnnmciMetricsEqualTheCliForTheSameSeed) {
   EXPECT_EQ(table->item(6, 0)->text(), QStringLiteral("linear"));
   EXPECT_EQ(table->item(8, 0)->text(), QStringLiteral("lag"));
   EXPECT_EQ(table->item(10, 0)->text(), QStringLiteral("dlag"));
+  // Issue 17: each held-out row carries the verdict; the status names the best usable model.
+  for (int row : {1, 3, 5}) {
+    ASSERT_NE(table->item(row, 6), nullptr) << row;
+    EXPECT_TRUE(table->item(row, 6)->text().startsWith(QStringLiteral("usable")) ||
+                table->item(row, 6)->text() == QStringLiteral("not usable"))
+        << table->item(row, 6)->text().toStdString();
+  }
+  EXPECT_EQ(table->item(1, 6)->text().startsWith(QStringLiteral("usable")),
+            thermal::judgeThermalModel(g.heldout, thermal::targetScale(c->series.target)) ==
+                thermal::ModelVerdict::Usable);
+  EXPECT_TRUE(page.modelView()->statusText().contains(QStringLiteral("Best usable model: ")) ||
+              page.modelView()->statusText().contains(QStringLiteral("No model is usable")))
+      << page.modelView()->statusText().toStdString();
   grab(page, QStringLiteral("models.png"));
 
   page.showView(QStringLiteral("hysteresis"));

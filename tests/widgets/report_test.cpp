@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <sstream>
 
@@ -122,6 +123,10 @@ class ReportTest : public ::testing::Test {
     p.datasets.push_back({"thermal_run", dataset_kind::kThermalLog, "data/thermal.csv",
                           "Spindle warm-up and cool-down (synthetic).", "CC0-1.0"});
     p.datasets.push_back({"probe_block", dataset_kind::kProbePoints, "data/probes.csv", "Probed block.", ""});
+    // The report shows the studies a project declares.
+    p.studies["thermal"] = {
+        {"dataset", "thermal_run"}, {"target", "disp_z_um"}, {"inputs", {"T1", "T2", "T3"}}};
+    p.studies["matching"] = {{"dataset", "probe_block"}, {"tolerance_mm", 0.05}};
     projectPath_ = dir_.filePath(QStringLiteral("cell.metrofit"));
     saveProject(p, projectPath_.toStdString());
     project_ = loadProject(projectPath_.toStdString());
@@ -146,7 +151,8 @@ TEST_F(ReportTest, WritesCoverThermalAndProbeSections) {
   QFile::remove(copy);
   QFile::copy(pdf, copy);
   EXPECT_EQ(summary.sections,
-            (QStringList{QStringLiteral("Thermal"), QStringLiteral("Posture matching — probe points")}));
+            (QStringList{QStringLiteral("Thermal"), QStringLiteral("Posture matching — probe points"),
+                         QStringLiteral("Posture matching — before and after")}));
 
   const int pages = pdfPages(pdf);
   EXPECT_GE(pages, 3);
@@ -287,6 +293,7 @@ TEST(ReportReal, CaiviacSpindleLog) {
   p.name = "CAIVIAC spindle";
   p.datasets.push_back({"caiviac", dataset_kind::kThermalLog, QFileInfo(csv).absoluteFilePath().toStdString(),
                         "Spindle thermal drift, 16 temperatures, 5 displacements.", "MIT (CAIVIAC)"});
+  p.studies["thermal"] = {{"dataset", "caiviac"}};
   const QString projectPath = dir.filePath(QStringLiteral("caiviac.metrofit"));
   saveProject(p, projectPath.toStdString());
   ReportOptions o;
@@ -306,6 +313,121 @@ TEST(ReportReal, CaiviacSpindleLog) {
                  QStringLiteral("2"), QStringLiteral("-l"), QStringLiteral("2"), pdf, prefix})
                 .exitCode,
             0);
+}
+
+/// The text of one page (1-based) of a PDF.
+QString pageText(const QString& pdf, int page) {
+  return run(QStringLiteral("pdftotext"), {QStringLiteral("-f"), QString::number(page), QStringLiteral("-l"),
+                                           QString::number(page), pdf, QStringLiteral("-")})
+      .out;
+}
+
+// Issue 17: page 1 is the summary; every section ends with its conclusion; references and the
+// data-provenance appendix close the report; a thermal model is judged usable or not.
+TEST_F(ReportTest, PageOneSummarisesAndSectionsConclude) {
+  const QString pdf = dir_.filePath(QStringLiteral("summary.pdf"));
+  const ReportSummary summary = writeReport(project_, pdf, options());
+  const QString page1 = pageText(pdf, 1);
+  for (const char* needle :
+       {"What each study found", "What to change on the machine", "Error before and after",
+        "What was measured", "thermal_run", "CC0-1.0", "Contents:"}) {
+    EXPECT_TRUE(page1.contains(QString::fromUtf8(needle))) << "page 1 lacks: " << needle << "\n"
+                                                           << page1.toStdString();
+  }
+  // The thermal finding names the best usable model (or says none is usable) with its unit.
+  EXPECT_TRUE(page1.contains(QRegularExpression(QStringLiteral("Best usable model of disp_z_um: \\S+"))) ||
+              page1.contains(QStringLiteral("No model of disp_z_um passes the held-out test")))
+      << page1.toStdString();
+  // The matching finding: what to change, with units.
+  EXPECT_TRUE(page1.contains(
+      QRegularExpression(QStringLiteral("SX -?\\d+\\.\\d+,\\s+SY -?\\d+\\.\\d+,\\s+SZ -?\\d+\\.\\d+\\s+mm"))))
+      << page1.toStdString();
+
+  const QString all = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")}).out;
+  EXPECT_EQ(all.count(QStringLiteral("Conclusion")), 2);  // thermal, matching (probe points has none)
+  EXPECT_GE(all.count(QStringLiteral("Recommendation: ")), 2);
+  EXPECT_TRUE(all.contains(QStringLiteral("References")));
+  EXPECT_TRUE(all.contains(QStringLiteral("Abdulshahed")));
+  EXPECT_TRUE(all.contains(QStringLiteral("Table 4 of [4]")));
+  EXPECT_TRUE(all.contains(QStringLiteral("Appendix: data provenance")));
+  EXPECT_TRUE(all.contains(QStringLiteral("Spindle warm-up and cool-down (synthetic).")));
+  EXPECT_TRUE(all.contains(QStringLiteral("verdict")));
+  EXPECT_TRUE(all.contains(QStringLiteral("usable")));
+  // No internal words where the user reads.
+  for (const char* word : {"seed 00", "core/", ".cpp", "issue ", " um ", "+-", "->"})
+    EXPECT_FALSE(all.contains(QString::fromUtf8(word))) << "the report says: " << word;
+  EXPECT_EQ(summary.pages, pdfPages(pdf));
+}
+
+// Issue 17: nothing is elided or cut: long ids, file names and the title wrap instead.
+TEST_F(ReportTest, NoElidedOrClippedText) {
+  Project p = project_;
+  p.name =
+      "A very long project name that would not fit into the running header of a page at the small size "
+      "it is printed in, repeated: a very long project name";
+  p.datasets[0].id = "thermal_run_of_the_spindle_with_a_particularly_long_identifier";
+  p.datasets[0].licence =
+      "Creative Commons Zero v1.0 Universal, see LICENSE-CC0-1.0-for-the-thermal-data.txt";
+  p.studies["thermal"]["dataset"] = p.datasets[0].id;
+  const QString pdf = dir_.filePath(QStringLiteral("long.pdf"));
+  writeReport(p, pdf, options());
+  const QString text = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")}).out;
+  ASSERT_FALSE(text.isEmpty());
+  EXPECT_FALSE(text.contains(QChar(0x2026))) << "elided text in the report";
+  EXPECT_FALSE(text.contains(QStringLiteral("...")));
+  // Wrapped, but every character is there (pdftotext joins the wrapped lines with a newline).
+  QString joined = text;
+  joined.remove(QLatin1Char('\n'));
+  EXPECT_TRUE(
+      joined.contains(QStringLiteral("thermal_run_of_the_spindle_with_a_particularly_long_identifier")));
+  EXPECT_TRUE(joined.contains(QStringLiteral("LICENSE-CC0-1.0-for-the-thermal-data.txt")));
+}
+
+// Issue 17: a bad study setting is an error naming the study and the field, before any PDF.
+TEST_F(ReportTest, BadStudySettingsAreErrorsNotDefaults) {
+  struct Case {
+    std::function<void(Project&)> spoil;
+    std::string field;
+  };
+  const std::vector<Case> cases = {
+      {[](Project& p) { p.studies["thermal"]["target"] = "disp_x_um"; }, "studies.thermal.target"},
+      {[](Project& p) {
+         p.studies["thermal"]["inputs"] = {"T1", "T7"};
+       },
+       "studies.thermal.inputs"},
+      {[](Project& p) { p.studies["thermal"]["train_fraction"] = 2; }, "studies.thermal.train_fraction"},
+      {[](Project& p) { p.studies["thermal"]["colour"] = "red"; }, "studies.thermal.colour"},
+      {[](Project& p) { p.studies["thermal"]["dataset"] = "probe_block"; }, "studies.thermal.dataset"},
+      {[](Project& p) { p.studies["termal"] = nlohmann::json::object(); }, "studies.termal"},
+      {[](Project& p) { p.datasets[1].kind = "probe-points"; }, "datasets[1].kind"},
+  };
+  for (const Case& c : cases) {
+    Project p = project_;
+    c.spoil(p);
+    const QString pdf = dir_.filePath(QStringLiteral("bad.pdf"));
+    try {
+      writeReport(p, pdf, options());
+      ADD_FAILURE() << "accepted: " << c.field;
+    } catch (const ValidationError& e) {
+      EXPECT_EQ(e.context().field, c.field) << e.what();
+      EXPECT_NE(std::string(e.what()).find("cell.metrofit"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(QFileInfo::exists(pdf)) << c.field;
+  }
+}
+
+// Issue 17: sections report only the studies the project declares.
+TEST_F(ReportTest, OnlyDeclaredStudiesHaveSections) {
+  Project p = project_;
+  p.datasets.push_back({"second_run", dataset_kind::kThermalLog, "data/thermal.csv", "", ""});
+  p.studies.erase("matching");
+  const QString pdf = dir_.filePath(QStringLiteral("declared.pdf"));
+  const ReportSummary summary = writeReport(p, pdf, options());
+  EXPECT_EQ(summary.sections, QStringList{QStringLiteral("Thermal")});
+  const QString text = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")}).out;
+  EXPECT_TRUE(text.contains(QStringLiteral("Thermal log “thermal_run”")));
+  EXPECT_FALSE(text.contains(QStringLiteral("Thermal log “second_run”")));
+  EXPECT_TRUE(text.contains(QStringLiteral("second_run")));  // in the appendix
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 // ThermalModelView: the three thermal models side by side (see thermalmodelview.h).
 #include "widgets/charts/thermalmodelview.h"
 
+#include "core/thermal/model_verdict.h"
+#include "widgets/charts/thermalverdict.h"
+
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
@@ -299,13 +302,17 @@ struct ThermalModelView::Impl {
           metrics->setItem(row, 4, cell(number(m.e, 4)));
           metrics->setItem(row, 5, cell(QStringLiteral("±") + number(m.residualBand, dec)));
         }
-        if (part == 1 && ev.heldoutFails()) {
-          // Issue 18: a model that predicts its held-out rows worse than their mean extrapolates
-          // poorly beyond its fit rows (the grey models on real logs, mostly); say so in the table.
-          metrics->setItem(row, 1, cell(ThermalModelView::tr("held out (%1): test failed").arg(m.n), true));
-          metrics->item(row, 1)->setToolTip(ThermalModelView::tr(
-              "The held-out test failed (E < 0 or an unstable model): this model "
-              "extrapolates poorly beyond its fit rows; do not use it for compensation."));
+        // The verdict (core/thermal/model_verdict.h) on the held-out row: usable for compensation or not,
+        // and why not.
+        if (part == 1) {
+          const thermal::ModelVerdict v = thermal::judgeThermalModel(ev.heldout, scale);
+          const QString reason = thermalVerdictReason(v, ev.heldout);
+          // The label in the cell (a table cell would elide a long reason); the reason in the tooltip
+          // and in full in the status text below the Train button.
+          QTableWidgetItem* verdict = cell(thermalVerdictLabel(v), true);
+          verdict->setToolTip(reason);
+          if (v != thermal::ModelVerdict::Usable) verdict->setForeground(QColor(0xb0, 0x20, 0x20));
+          metrics->setItem(row, 6, verdict);
         }
         if (i == 1 && ev.training.model.grey.b1 <= 0.0) {
           metrics->item(row, 0)->setToolTip(
@@ -318,7 +325,8 @@ struct ThermalModelView::Impl {
     const QString u = targetUnit.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(targetUnit);
     metrics->setHorizontalHeaderLabels({ThermalModelView::tr("model"), ThermalModelView::tr("rows"),
                                         ThermalModelView::tr("R"), ThermalModelView::tr("RMSE") + u,
-                                        ThermalModelView::tr("E"), ThermalModelView::tr("band") + u});
+                                        ThermalModelView::tr("E"), ThermalModelView::tr("band") + u,
+                                        ThermalModelView::tr("verdict")});
     metrics->resizeColumnsToContents();
 
     QStringList parts;
@@ -331,10 +339,33 @@ struct ThermalModelView::Impl {
       if (i == 1 && ev.training.model.grey.b1 <= 0.0) p += ThermalModelView::tr(" (unstable: b1 ≤ 0)");
       parts << p;
     }
+    // The best usable model by held-out RMSE, named; or none.
+    int best = -1;
+    QStringList notUsable;
+    for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+      const thermal::ThermalEvaluation& ev = r.models[i];
+      if (ev.predicted.size() != r.series.rows()) continue;
+      const thermal::ModelVerdict v = thermal::judgeThermalModel(ev.heldout, scale);
+      if (v != thermal::ModelVerdict::Usable) {
+        notUsable << thermalModelName(kThermalModelOrder[i]) + QStringLiteral(" ") + thermalVerdictLabel(v) +
+                         QStringLiteral(": ") + thermalVerdictReason(v, ev.heldout) + QLatin1Char('.');
+        continue;
+      }
+      if (best < 0 || ev.heldout.rmse < r.models[static_cast<std::size_t>(best)].heldout.rmse)
+        best = static_cast<int>(i);
+    }
+    const QString bestText =
+        best >= 0 ? ThermalModelView::tr("Best usable model: %1.")
+                        .arg(thermalModelName(kThermalModelOrder[static_cast<std::size_t>(best)]))
+                  : ThermalModelView::tr(
+                        "No model is usable for compensation: record a longer test or add "
+                        "the inputs the diagnosis finds.");
     status->setText(ThermalModelView::tr("%1 fit rows, %2 held out; %3.")
                         .arg(r.models[0].fitRows)
                         .arg(r.models[0].heldoutRows)
-                        .arg(parts.join(QStringLiteral(", "))));
+                        .arg(parts.join(QStringLiteral(", "))) +
+                    QLatin1Char(' ') + bestText +
+                    (notUsable.isEmpty() ? QString() : QLatin1Char(' ') + notUsable.join(QLatin1Char(' '))));
     progress->setValue(kProgressMax);
     updateAppliedLabel();
   }
@@ -484,15 +515,20 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   d->comparisonChart->setObjectName(QStringLiteral("thermalModelComparisonChart"));
   d->residualChart = newChartView(this, 130);
   d->residualChart->setObjectName(QStringLiteral("thermalModelResidualChart"));
-  d->metrics = new QTableWidget(0, 6, this);
+  d->metrics = new QTableWidget(0, 7, this);
   enableTableCopy(d->metrics);
   d->metrics->setObjectName(QStringLiteral("thermalModelMetrics"));
-  d->metrics->setHorizontalHeaderLabels({tr("model"), tr("rows"), tr("R"), tr("RMSE"), tr("E"), tr("band")});
+  d->metrics->setHorizontalHeaderLabels(
+      {tr("model"), tr("rows"), tr("R"), tr("RMSE"), tr("E"), tr("band"), tr("verdict")});
   d->metrics->horizontalHeaderItem(2)->setToolTip(tr("Correlation coefficient of measured and predicted"));
   d->metrics->horizontalHeaderItem(3)->setToolTip(
       tr("Root mean square of the residual, in the target's unit"));
   d->metrics->horizontalHeaderItem(4)->setToolTip(tr("Nash-Sutcliffe efficiency coefficient (1: perfect)"));
   d->metrics->horizontalHeaderItem(5)->setToolTip(tr("Largest |residual|, in the target's unit"));
+  d->metrics->horizontalHeaderItem(6)->setToolTip(
+      tr("Usable for compensation when on the held-out rows it does not diverge, E ≥ %1 and R ≥ %2")
+          .arg(QLocale().toString(thermal::kMinEfficiency, 'f', 0),
+               QLocale().toString(thermal::kMinCorrelation, 'f', 1)));
   d->metrics->verticalHeader()->setVisible(false);
   d->metrics->setEditTriggers(QAbstractItemView::NoEditTriggers);
 

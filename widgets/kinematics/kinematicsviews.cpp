@@ -84,7 +84,7 @@ ControlChartView::ControlChartView(ControlChartKind kind, QWidget* parent) : QWi
   setMinimumSize(300, 160);
   setToolTip(kind == ControlChartKind::Mean
                  ? tr("Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ "
-                      "(seed 002, Eq. 18-19); red points are out of control.")
+                      "(kinematic-compensation paper, Eq. 18–19); red points are out of control.")
                  : tr("Subgroup ranges with the centre line R̄ and the limits D4 · R̄ and D3 · R̄."));
 }
 

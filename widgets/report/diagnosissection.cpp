@@ -7,6 +7,7 @@
 // against the variable of the strongest structure, and a before / after table.
 #include <QCoreApplication>
 #include <QPainter>
+#include <QRegularExpression>
 
 #include <algorithm>
 #include <cmath>
@@ -88,6 +89,13 @@ QString errorLine(const diagnose::ErrorSummary& e, const QString& u) {
   return s;
 }
 
+/// The error in three significant digits, for page 1.
+QString shortErrorLine(const diagnose::ErrorSummary& e, const QString& u) {
+  QString s = ReportText::tr("rmse %1 %2").arg(num(e.rmse, 3), u);
+  if (e.heldoutRmse) s += ReportText::tr(", held-out %1 %2").arg(num(*e.heldoutRmse, 3), u);
+  return s;
+}
+
 void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDomain domain) {
   DiagnosisSettings s;
   std::shared_ptr<const diagnose::Diagnosis> d;
@@ -107,6 +115,12 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
                  out.mm(40.0));
   if (!d) {
     out.paragraph(ReportText::tr("The diagnosis could not run: %1").arg(failure));
+    SectionFinding f;
+    f.study = ReportText::tr("Closed loop: %1").arg(domainTitle(domain).toLower());
+    f.found = ReportText::tr("The diagnosis could not run: %1").arg(failure);
+    f.unexplained = ReportText::tr("not checked");
+    f.recommendation = ReportText::tr("Correct the diagnosis settings of this study.");
+    concludeSection(out, context, f);
     return;
   }
   const QString u = d->units == "um" ? QStringLiteral("µm") : QString::fromStdString(d->units);
@@ -140,8 +154,7 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
       break;
   }
   out.paragraph(declared);
-  for (const std::string& note : d->notes)
-    out.paragraph(QString::fromStdString(note), ReportPainter::Font::Small);
+  for (const std::string& note : d->notes) out.paragraph(readerText(note), ReportPainter::Font::Small);
   out.paragraph(ReportText::tr("Step 0, the declared model: %1.").arg(errorLine(d->baseline, u)));
 
   const bool heldout = d->baseline.heldoutRmse.has_value();
@@ -169,10 +182,10 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
   out.table(t);
   out.paragraph(ReportText::tr("Evidence, per candidate (# = loop round):"), ReportPainter::Font::Small);
   for (const diagnose::Candidate& c : d->effects) {
-    out.paragraph(QStringLiteral("%1 %2: %3")
-                      .arg(QString::number(c.round + 1), QString::fromStdString(c.name),
-                           QString::fromStdString(c.evidence)),
-                  ReportPainter::Font::Small);
+    out.paragraph(
+        QStringLiteral("%1 %2: %3")
+            .arg(QString::number(c.round + 1), QString::fromStdString(c.name), readerText(c.evidence)),
+        ReportPainter::Font::Small);
   }
   const auto accepted = d->accepted();
   if (accepted.empty()) {
@@ -213,6 +226,50 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
         {ReportText::tr("rmse (held-out rows)"), num(*d->baseline.heldoutRmse), num(*d->final.heldoutRmse)});
   out.skip(out.mm(2.0));
   out.table(ba);
+
+  // Conclusion of this domain.
+  SectionFinding f;
+  f.study = ReportText::tr("Closed loop: %1").arg(domainTitle(domain).toLower());
+  QStringList names;
+  for (const auto* c : accepted) names << QString::fromStdString(c->name);
+  f.found = accepted.empty()
+                ? ReportText::tr("%1: no effect beyond the declared model is supported by the data.")
+                      .arg(QString::fromStdString(s.datasetId))
+                : ReportText::tr("%1: the declared model lacks %2.")
+                      .arg(QString::fromStdString(s.datasetId), names.join(QStringLiteral(", ")));
+  f.before = shortErrorLine(d->baseline, u);
+  f.after = accepted.empty()
+                ? QString()
+                : ReportText::tr("%1 → %2").arg(shortErrorLine(d->baseline, u), shortErrorLine(d->final, u));
+  const QStringList sentences = d->residualCheck ? residualCheckSentences(*d, QLocale::c()) : QStringList();
+  const bool white = d->residualCheck && d->residualCheck->white;
+  // The verdict without its lead-in ("What is left unexplained: ..."), the summary's column says it.
+  QString verdict = sentences.isEmpty() ? QString() : sentences.front();
+  if (const qsizetype colon = verdict.indexOf(QStringLiteral(": ")); colon > 0 && colon < 40)
+    verdict = verdict.mid(colon + 2);
+  if (!verdict.isEmpty()) verdict[0] = verdict[0].toUpper();
+  // Page 1 takes the verdict's first sentence; the section gives the whole of it.
+  if (const qsizetype stop = verdict.indexOf(QStringLiteral(". ")); stop > 0)
+    verdict = verdict.left(stop + 1);
+  f.unexplained = verdict.isEmpty() ? ReportText::tr("not checked") : verdict;
+  f.conclusion = f.found;
+  if (!verdict.isEmpty())
+    f.conclusion += QLatin1Char(' ') +
+                    ReportText::tr("Still unexplained: %1").arg(verdict.left(1).toLower() + verdict.mid(1));
+  if (!accepted.empty())
+    f.recommendation = white ? ReportText::tr("Add %1 to the model (Apply on the Diagnosis page).")
+                                   .arg(names.join(QStringLiteral(", ")))
+                             : ReportText::tr(
+                                   "Add %1 to the model (Apply on the Diagnosis page), then look for "
+                                   "the cause of what is still unexplained before trusting the "
+                                   "compensation further.")
+                                   .arg(names.join(QStringLiteral(", ")));
+  else
+    f.recommendation = white ? ReportText::tr("Keep the declared model: its residual is noise.")
+                             : ReportText::tr(
+                                   "Keep the declared model, and look for the cause of what is still "
+                                   "unexplained (a variable not recorded, a change in the process).");
+  concludeSection(out, context, f);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <exception>
 #include <functional>
 
+#include "core/common/error.h"
 #include "widgets/kinematics/kinematicplots.h"
 #include "widgets/kinematics/kinematicstudy.h"
 #include "widgets/report/reportpainter.h"
@@ -68,7 +69,7 @@ void writeErrors(ReportPainter& out, const KinematicStudyData& s) {
   out.table(t);
 }
 
-void writeCircularTest(ReportPainter& out, const KinematicStudyData& s) {
+CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyData& s) {
   out.subheading(ReportText::tr("Circular test “%1”").arg(QString::fromStdString(s.dataset.id)),
                  out.mm(60.0));
   if (!s.dataset.description.empty()) out.paragraph(QString::fromStdString(s.dataset.description));
@@ -78,7 +79,7 @@ void writeCircularTest(ReportPainter& out, const KinematicStudyData& s) {
   };
   out.paragraph(
       ReportText::tr("%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). "
-                     "The actuator errors of the Cartesian machine (seed 002, Eq. 9: P = o + ir·x + "
+                     "The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + "
                      "jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by "
                      "Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.")
           .arg(s.measured.size())
@@ -86,7 +87,8 @@ void writeCircularTest(ReportPainter& out, const KinematicStudyData& s) {
           .arg(mm4(s.analysis.centreMm.x()), mm4(s.analysis.centreMm.y()))
           .arg(s.analysis.loops.size())
           .arg(QString::fromLatin1(toString(s.identification.run.termination)))
-          .arg(s.identification.run.iterations));
+          .arg(s.identification.run.iterations)
+          .arg(citation(2)));
   writeErrors(out, s);
   if (!s.applied.empty()) {
     QString text = ReportText::tr(
@@ -152,6 +154,7 @@ void writeCircularTest(ReportPainter& out, const KinematicStudyData& s) {
   t.rows.push_back({ReportText::tr("after, through the identified model"), um(c.maxModelMm, 6)});
   t.rows.push_back({ReportText::tr("largest correction |reference − nominal|"), um(c.largestCorrectionMm)});
   out.table(t);
+  return c;
 }
 
 void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
@@ -242,7 +245,48 @@ void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
            .arg(QString::number(r.trend.angleDeg, 'g', 3), QString::number(r.trend.slope, 'g', 3), u,
                 QString::number(r.trend.r2, 'f', 2))});
   out.table(t);
-  out.paragraph(ReportText::tr("SPC-gated compensation: %1").arg(QString::fromStdString(r.decision.reason)));
+  out.paragraph(ReportText::tr("SPC-gated compensation: %1").arg(readerText(r.decision.reason)));
+}
+
+/// The section's conclusion: the identified errors, the compensation and the SPC decision.
+void concludeKinematics(ReportPainter& out, const ReportContext& context, const KinematicStudyData& s,
+                        const CompensationPreview& c) {
+  const ActuatorErrors2& e = s.identification.errors;
+  SectionFinding f;
+  f.study = kinematicSectionTitle();
+  f.found = ReportText::tr(
+                "Circular test %1: actuator origin offset (%2, %3) µm, squareness error %4°; "
+                "largest radial deviation %5 µm.")
+                .arg(QString::fromStdString(s.dataset.id), um(e.originMm.x(), 1), um(e.originMm.y(), 1))
+                .arg(e.squarenessDeg(), 0, 'f', 4)
+                .arg(um(c.maxBeforeMm, 1));
+  const QString file = QString::fromStdString(s.dataset.id) + QStringLiteral("_compensated.nc");
+  f.changes.push_back({ReportText::tr("compensated references (G-code)"),
+                       ReportText::tr("up to %1 µm").arg(um(c.largestCorrectionMm, 1)),
+                       ReportText::tr("file %1 (Kinematics page, Export G-code)").arg(file)});
+  f.before = ReportText::tr("largest radial deviation %1 µm").arg(um(c.maxBeforeMm, 1));
+  f.after = ReportText::tr("%1 µm expected with the compensated references").arg(um(c.maxExpectedMm, 1));
+  f.conclusion = ReportText::tr(
+                     "The identified actuator errors explain the measured path; with the "
+                     "compensated references the largest radial deviation falls from %1 µm to "
+                     "about %2 µm (the measuring noise stays).")
+                     .arg(um(c.maxBeforeMm, 1), um(c.maxExpectedMm, 1));
+  f.recommendation =
+      c.maxExpectedMm < c.maxBeforeMm
+          ? ReportText::tr("Run the compensated references (%1) and repeat the circular test.").arg(file)
+          : ReportText::tr("Do not compensate: the references would not reduce the deviation.");
+  if (s.spc) {
+    const SpcResult& r = s.spc->result;
+    f.found += QLatin1Char(' ') + ReportText::tr("SPC of %1: %2.")
+                                      .arg(QString::fromStdString(s.spc->column),
+                                           r.chart.inControl() ? ReportText::tr("in control")
+                                                               : ReportText::tr("out of control"));
+    if (r.capability.cpk)
+      f.found += QLatin1Char(' ') + ReportText::tr("Cpk %1.").arg(*r.capability.cpk, 0, 'f', 2);
+    f.conclusion +=
+        QLatin1Char(' ') + ReportText::tr("SPC-gated compensation: %1").arg(readerText(r.decision.reason));
+  }
+  concludeSection(out, context, f);
 }
 
 }  // namespace
@@ -259,23 +303,23 @@ void writeKinematicSection(ReportPainter& out, const ReportContext& context) {
     }
     return ref.path;
   };
-  bool first = true, spcShown = false;
-  for (const ReportDataset* dataset : context.ofKind(dataset_kind::kCircularTest)) {
-    if (!first) out.newPage();
-    first = false;
-    try {
-      const KinematicStudyData s = loadKinematicStudy(project, resolve, dataset->ref.id);
-      writeCircularTest(out, s);
-      // The feature series belongs to the study, not to one test: once, after the study's test.
-      if (!spcShown && (s.settings.dataset.empty() || s.settings.dataset == s.dataset.id)) {
-        writeSpc(out, s);
-        spcShown = true;
-      }
-    } catch (const std::exception& e) {
-      out.subheading(ReportText::tr("Circular test “%1”").arg(QString::fromStdString(dataset->ref.id)));
-      out.paragraph(
-          ReportText::tr("Cannot analyse this circular test: %1").arg(QString::fromStdString(e.what())));
-    }
+  // Only the study's circular test (the report shows the studies the project declares).
+  try {
+    const KinematicStudyData s = loadKinematicStudy(project, resolve);
+    const CompensationPreview c = writeCircularTest(out, s);
+    writeSpc(out, s);
+    concludeKinematics(out, context, s, c);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    out.paragraph(
+        ReportText::tr("Cannot analyse the circular test: %1").arg(QString::fromStdString(e.what())));
+    SectionFinding f;
+    f.study = kinematicSectionTitle();
+    f.conclusion =
+        ReportText::tr("The circular test could not be analysed: %1").arg(QString::fromStdString(e.what()));
+    f.recommendation = ReportText::tr("Repeat the circular test and check its file.");
+    concludeSection(out, context, f);
   }
 }
 

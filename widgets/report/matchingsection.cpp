@@ -224,7 +224,7 @@ QString countText(std::size_t n, std::size_t of) {
   return QStringLiteral("%1 / %2").arg(n).arg(of);
 }
 
-void writeStudy(ReportPainter& out, const ReportDataset& dataset,
+void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDataset& dataset,
                 const matching::MatchingStudySettings& settings) {
   const matching::MatchingStudyOptions& o = settings.options;
   // The study's model: the probe points with the effects added by the diagnosis page's Apply.
@@ -239,13 +239,15 @@ void writeStudy(ReportPainter& out, const ReportDataset& dataset,
   out.paragraph(
       ReportText::tr(
           "Every method was run on the %1 points (%2). The posture after matching is that of %3; the "
-          "machine adjustment values are for the study's %4 machine. Deviation: %5.")
+          "machine adjustment values are for the study's %4 machine. Deviation: %5. Rough matching, "
+          "SADE, GA-simplex and the machine adjustment as in %6.")
           .arg(set.points.size())
           .arg(set.hasNormals ? ReportText::tr("with normals") : ReportText::tr("positions only"))
           .arg(methodName(res.primary))
           .arg(QString::fromLatin1(machine::topologyName(o.machine.topology)))
           .arg(set.hasNormals ? ReportText::tr("along the nominal normal")
-                              : ReportText::tr("distance |p − (sRq + t)|")));
+                              : ReportText::tr("distance |p − (sRq + t)|"))
+          .arg(citation(1)));
   if (!o.applied.empty())
     out.paragraph(ReportText::tr("Includes applied effects: %1 (diagnosis, Apply). The nominal points were "
                                  "deformed by them before matching, so the deviations and the machine "
@@ -376,9 +378,9 @@ void writeStudy(ReportPainter& out, const ReportDataset& dataset,
       {QStringLiteral("SX"), num(adj.linearMm.x(), 4), QStringLiteral("mm")},
       {QStringLiteral("SY"), num(adj.linearMm.y(), 4), QStringLiteral("mm")},
       {QStringLiteral("SZ"), num(adj.linearMm.z(), 4), QStringLiteral("mm")},
-      {QStringLiteral("S") + QLatin1String(names[0]), num(adj.rotaryDeg[0], 5), QStringLiteral("deg")},
-      {QStringLiteral("S") + QLatin1String(names[1]), num(adj.rotaryDeg[1], 5), QStringLiteral("deg")},
-      {ReportText::tr("frame rotation"), num(adj.frameRotationDeg, 5), QStringLiteral("deg")}};
+      {QStringLiteral("S") + QLatin1String(names[0]), num(adj.rotaryDeg[0], 5), QStringLiteral("°")},
+      {QStringLiteral("S") + QLatin1String(names[1]), num(adj.rotaryDeg[1], 5), QStringLiteral("°")},
+      {ReportText::tr("frame rotation"), num(adj.frameRotationDeg, 5), QStringLiteral("°")}};
   out.subheading(ReportText::tr("Machine adjustment values (%1%2)")
                      .arg(QString::fromLatin1(machine::topologyName(adj.topology)))
                      .arg(adj.withinTravel ? QString() : ReportText::tr(", OUTSIDE TRAVEL")),
@@ -417,6 +419,64 @@ void writeStudy(ReportPainter& out, const ReportDataset& dataset,
                                         .arg(static_cast<qulonglong>(t->overall.outOfTolerance));
     out.paragraph(outcome);
   }
+
+  // Conclusion.
+  const std::size_t n = set.points.size();
+  const Eigen::Vector3d angles = primary.pose.anglesDeg();
+  SectionFinding f;
+  f.study = matchingSectionTitle();
+  f.found = ReportText::tr(
+                "The workpiece %1 sits rotated by (%2, %3, %4)° and shifted by (%5, %6, %7) mm; "
+                "%8 of %9 probed points are out of ±%10 mm before matching, %11 after.")
+                .arg(QString::fromStdString(dataset.ref.id))
+                .arg(num(angles.x(), 3), num(angles.y(), 3), num(angles.z(), 3))
+                .arg(num(primary.pose.translation.x(), 3), num(primary.pose.translation.y(), 3),
+                     num(primary.pose.translation.z(), 3))
+                .arg(primary.before.overall.outOfTolerance)
+                .arg(n)
+                .arg(num(tol, 3))
+                .arg(primary.after.overall.outOfTolerance);
+  const QString where = ReportText::tr("%1 machine, enter at the control")
+                            .arg(QString::fromLatin1(machine::topologyName(adj.topology)));
+  f.changes.push_back({ReportText::tr("linear axes"),
+                       QStringLiteral("SX %1, SY %2, SZ %3 mm")
+                           .arg(num(adj.linearMm.x(), 4), num(adj.linearMm.y(), 4), num(adj.linearMm.z(), 4)),
+                       where});
+  f.changes.push_back({ReportText::tr("rotary axes"),
+                       QStringLiteral("S%1 %2°, S%3 %4°")
+                           .arg(QLatin1String(names[0]), num(adj.rotaryDeg[0], 4), QLatin1String(names[1]),
+                                num(adj.rotaryDeg[1], 4)),
+                       where});
+  if (std::abs(adj.frameRotationDeg) > 0.0)
+    f.changes.push_back(
+        {ReportText::tr("frame rotation"), num(adj.frameRotationDeg, 4) + QStringLiteral("°"), where});
+  f.before = ReportText::tr("max |deviation| %1 mm; %2 of %3 points out of tolerance")
+                 .arg(num(maxBefore, 3))
+                 .arg(primary.before.overall.outOfTolerance)
+                 .arg(n);
+  f.after = ReportText::tr("max |deviation| %1 mm; %2 of %3 points out of tolerance")
+                .arg(num(maxAfter, 3))
+                .arg(primary.after.overall.outOfTolerance)
+                .arg(n);
+  const bool fits = primary.after.overall.outOfTolerance == 0;
+  f.conclusion =
+      fits ? ReportText::tr("After the posture adjustment every probed point lies within the tolerance.")
+           : ReportText::tr(
+                 "Even after the best posture %1 of %2 points stay out of tolerance: the part "
+                 "itself deviates, not only its posture.")
+                 .arg(primary.after.overall.outOfTolerance)
+                 .arg(n);
+  if (!adj.withinTravel)
+    f.recommendation = ReportText::tr("Do not apply: the adjustment lies outside the axis travel (%1).")
+                           .arg(QString::fromStdString(adj.travelMessage));
+  else
+    f.recommendation = fits ? ReportText::tr(
+                                  "Enter the adjustment values at the control, probe the part again "
+                                  "and machine when it is within tolerance.")
+                            : ReportText::tr(
+                                  "Enter the adjustment values, probe again, and check the surfaces "
+                                  "that stay out of tolerance before machining.");
+  concludeSection(out, context, f);
 }
 
 }  // namespace
@@ -435,7 +495,7 @@ void writeMatchingSection(ReportPainter& out, const ReportContext& context) {
   const matching::MatchingStudySettings settings = matching::matchingStudySettings(*context.project);
   for (const ReportDataset* dataset : context.ofKind(dataset_kind::kProbePoints)) {
     if (dataset->ref.id == settings.datasetId && dataset->probes) {
-      writeStudy(out, *dataset, settings);
+      writeStudy(out, context, *dataset, settings);
       return;
     }
   }

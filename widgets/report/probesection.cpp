@@ -13,6 +13,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/matching/study.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
 
@@ -348,13 +349,10 @@ QString probePointsSectionTitle() {
 }
 
 void writeProbePointsSection(ReportPainter& out, const ReportContext& context) {
-  bool first = true;
+  // Only the matching study's probe points: the report shows the studies the project declares.
+  const std::string id = matching::matchingStudySettings(*context.project).datasetId;
   for (const ReportDataset* dataset : context.ofKind(dataset_kind::kProbePoints)) {
-    if (!first) {
-      out.newPage();
-    }
-    first = false;
-    writeProbeSet(out, *dataset, context.probeToleranceMm);
+    if (dataset->ref.id == id) writeProbeSet(out, *dataset, context.probeToleranceMm);
   }
 }
 

@@ -16,6 +16,7 @@
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
 #include "core/project/project.h"
+#include "core/project/study_check.h"
 #include "metrofit/version.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
@@ -37,27 +38,45 @@ struct SectionEntry {
   void (*write)(ReportPainter&, const ReportContext&);
 };
 
+/// True when the project declares the study (studies.<name>, an object): sections report only the
+/// studies the project declares, never every dataset of a kind.
+bool declares(const ReportContext& c, const char* name) {
+  const auto it = c.project->studies.find(name);
+  return it != c.project->studies.end() && it->is_object();
+}
+
 /// Every section, in report order. Later studies add their line here.
 const SectionEntry kSections[] = {
-    {&setupSectionTitle, [](const ReportContext& c) { return !c.ofKind(dataset_kind::kSetupModel).empty(); },
+    {&setupSectionTitle,
+     [](const ReportContext& c) {
+       return declares(c, study::kSetup) && !c.ofKind(dataset_kind::kSetupModel).empty();
+     },
      &writeSetupSection},
     {&thermalSectionTitle,
-     [](const ReportContext& c) { return !c.ofKind(dataset_kind::kThermalLog).empty(); },
+     [](const ReportContext& c) {
+       return declares(c, study::kThermal) && !c.ofKind(dataset_kind::kThermalLog).empty();
+     },
      &writeThermalSection},
     {&probePointsSectionTitle,
-     [](const ReportContext& c) { return !c.ofKind(dataset_kind::kProbePoints).empty(); },
+     [](const ReportContext& c) {
+       return declares(c, study::kMatching) && !c.ofKind(dataset_kind::kProbePoints).empty();
+     },
      &writeProbePointsSection},
     {&matchingSectionTitle, &hasMatchingStudy, &writeMatchingSection},
     {&kinematicSectionTitle,
-     [](const ReportContext& c) { return !c.ofKind(dataset_kind::kCircularTest).empty(); },
+     [](const ReportContext& c) {
+       return declares(c, study::kKinematics) && !c.ofKind(dataset_kind::kCircularTest).empty();
+     },
      &writeKinematicSection},
     {&diagnosisSectionTitle, &hasDiagnosisStudy, &writeDiagnosisSection},
 };
 
-/// What one layout pass found out: page count and the first page of each section.
+/// What one layout pass found out: page count, the first page of each section, and what the
+/// sections concluded (for the summary on page 1 of the next pass).
 struct Layout {
   int pages = 0;
   QList<int> sectionPages;
+  std::vector<SectionFinding> findings;
 };
 
 /// Reads every dataset of the project; InputError (from core) when one cannot be read.
@@ -71,71 +90,21 @@ std::vector<ReportDataset> readDatasets(const Project& project, const QString& p
     if (ref.kind == dataset_kind::kThermalLog) {
       d.thermal = readThermalLog(path);
       d.rows = static_cast<long>(d.thermal->rows());
+      d.columns.push_back(d.thermal->timeColumn);
+      for (const ThermalChannel& c : d.thermal->channels) d.columns.push_back(c.name);
     } else if (ref.kind == dataset_kind::kProbePoints) {
       d.probes = readProbePoints(path);
       d.rows = static_cast<long>(d.probes->points.size());
     } else if (ref.kind == dataset_kind::kSetupModel) {
       readFile(path);  // a JSON model: no rows, but it must be readable
     } else {
-      d.rows = static_cast<long>(readCsvFile(path).rowCount());
+      const CsvTable table = readCsvFile(path);
+      d.rows = static_cast<long>(table.rowCount());
+      d.columns = table.header();
     }
     datasets.push_back(std::move(d));
   }
   return datasets;
-}
-
-void writeCover(ReportPainter& out, const ReportContext& context,
-                const std::vector<const SectionEntry*>& sections, const Layout* previous) {
-  const Project& project = *context.project;
-  out.title(ReportText::tr("Metrofit report"));
-  out.paragraph(context.title, ReportPainter::Font::Heading);
-  if (!project.description.empty()) {
-    out.paragraph(QString::fromStdString(project.description));
-  }
-  out.skip(out.mm(2.0));
-
-  ReportTable facts;
-  facts.widths = {1.0, 3.0};
-  facts.rows = {{ReportText::tr("project"), QString::fromStdString(project.name)},
-                {ReportText::tr("date"), context.date},
-                {ReportText::tr("Metrofit version"), QString::fromUtf8(kVersion)}};
-  out.table(facts);
-
-  out.subheading(ReportText::tr("Datasets"), out.mm(15.0));
-  ReportTable datasets;
-  datasets.header = {ReportText::tr("id"), ReportText::tr("kind"), ReportText::tr("file"),
-                     ReportText::tr("rows / points"), ReportText::tr("licence")};
-  datasets.widths = {1.2, 1.1, 2.0, 1.1, 2.0};
-  datasets.alignment = {Qt::AlignLeft, Qt::AlignLeft, Qt::AlignLeft, Qt::AlignRight, Qt::AlignLeft};
-  for (const ReportDataset& d : context.datasets) {
-    datasets.rows.push_back(
-        {QString::fromStdString(d.ref.id), QString::fromStdString(d.ref.kind),
-         QString::fromStdString(d.ref.path), d.rows >= 0 ? QString::number(d.rows) : QStringLiteral("—"),
-         d.ref.licence.empty() ? QStringLiteral("—") : QString::fromStdString(d.ref.licence)});
-  }
-  if (datasets.rows.isEmpty()) {
-    out.paragraph(ReportText::tr("The project references no datasets."));
-  } else {
-    out.table(datasets);
-  }
-
-  out.subheading(ReportText::tr("Contents"), out.mm(15.0));
-  if (sections.empty()) {
-    out.paragraph(ReportText::tr("The project has no data a section of this report could show yet."));
-    return;
-  }
-  ReportTable contents;
-  contents.header = {ReportText::tr("section"), ReportText::tr("page")};
-  contents.widths = {5.0, 1.0};
-  contents.alignment = {Qt::AlignLeft, Qt::AlignRight};
-  contents.widthFraction = 0.7;
-  for (std::size_t i = 0; i < sections.size(); ++i) {
-    const bool known = previous != nullptr && static_cast<qsizetype>(i) < previous->sectionPages.size();
-    contents.rows.push_back(
-        {sections[i]->title(),
-         known ? QString::number(previous->sectionPages[static_cast<qsizetype>(i)]) : QStringLiteral("—")});
-  }
-  out.table(contents);
 }
 
 /// Draws the whole report into `device`; `previous` (a first pass) supplies the page numbers.
@@ -156,12 +125,26 @@ Layout render(QIODevice& device, const ReportContext& context,
   }
   Layout layout;
   ReportPainter out(writer, painter, context.title, previous != nullptr ? previous->pages : 0);
-  writeCover(out, context, sections, previous);
+  QStringList titles;
+  for (const SectionEntry* section : sections) titles << section->title();
+  titles << referencesTitle() << appendixTitle();
+  writeSummary(out, context, titles, previous != nullptr ? previous->findings : std::vector<SectionFinding>{},
+               previous != nullptr ? previous->sectionPages : QList<int>{});
+  context.findings.clear();
   for (const SectionEntry* section : sections) {
     out.heading(section->title());
     layout.sectionPages << out.page();
     section->write(out, context);
   }
+  if (!context.datasets.empty() || !sections.empty()) {
+    out.heading(referencesTitle());
+    layout.sectionPages << out.page();
+    writeReferences(out, context);
+    out.heading(appendixTitle());
+    layout.sectionPages << out.page();
+    writeAppendix(out, context);
+  }
+  layout.findings = context.findings;
   layout.pages = out.page();
   painter.end();
   return layout;
@@ -185,11 +168,20 @@ ReportSummary writeReport(const Project& project, const QString& pdfPath, const 
                        "the report resolution must lie in [" + std::to_string(kMinDpi) + ", " +
                            std::to_string(kMaxDpi) + "] dpi, not " + std::to_string(options.resolutionDpi));
   }
+  // Every study setting is checked before anything is read or drawn: a bad one is an error naming
+  // the study and the field, never a quiet default.
+  const std::string source = options.projectPath.toStdString();
+  validateStudies(project, source);
   ReportContext context;
   context.project = &project;
   context.title = options.title.isEmpty() ? QString::fromStdString(project.name) : options.title;
   context.date = QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"));
   context.datasets = readDatasets(project, options.projectPath);
+  validateStudies(project, source, [&context](const std::string& id) -> const std::vector<std::string>* {
+    for (const ReportDataset& d : context.datasets)
+      if (d.ref.id == id && !d.columns.empty()) return &d.columns;
+    return nullptr;
+  });
   context.probeToleranceMm = kDefaultProbeToleranceMm;
   if (const auto m = project.studies.find(study::kMatching); m != project.studies.end() && m->is_object()) {
     if (const auto t = m->find("tolerance_mm"); t != m->end()) {
@@ -208,10 +200,14 @@ ReportSummary writeReport(const Project& project, const QString& pdfPath, const 
     }
   }
 
-  // First pass into memory: page numbers for the contents and the footers.
+  // Two passes into memory: the first learns what the sections conclude (page 1 summarises it),
+  // the second the page numbers of the report with that summary, for the contents and the footers.
   QBuffer scratch;
   scratch.open(QIODevice::WriteOnly);
-  const Layout first = render(scratch, context, sections, options.resolutionDpi, nullptr, pdfPath);
+  const Layout draft = render(scratch, context, sections, options.resolutionDpi, nullptr, pdfPath);
+  QBuffer scratch2;
+  scratch2.open(QIODevice::WriteOnly);
+  const Layout first = render(scratch2, context, sections, options.resolutionDpi, &draft, pdfPath);
 
   QSaveFile file(pdfPath);
   if (!file.open(QIODevice::WriteOnly)) {

@@ -9,6 +9,7 @@
 #include <QGraphicsScene>
 #include <QPainter>
 #include <QPdfWriter>
+#include <QTextOption>
 
 #include <algorithm>
 #include <numeric>
@@ -105,9 +106,19 @@ void ReportPainter::decoratePage() {
     const QFontMetricsF fm(painter_.font(), &writer_);
     const QString version = ReportText::tr("Metrofit %1").arg(QString::fromUtf8(kVersion));
     const double versionWidth = fm.horizontalAdvance(version) + mm(4.0);
-    painter_.drawText(QRectF(band.left(), band.top(), band.width() - versionWidth, band.height() - mm(1.0)),
-                      Qt::AlignLeft | Qt::AlignBottom,
-                      fm.elidedText(runningTitle_, Qt::ElideRight, band.width() - versionWidth));
+    // A long title is set smaller (down to 6 pt) and then wrapped: never elided.
+    QFont titleFont = font(Font::Small);
+    const double titleWidth = band.width() - versionWidth;
+    while (titleFont.pointSizeF() > 6.0 &&
+           QFontMetricsF(titleFont, &writer_).horizontalAdvance(runningTitle_) > titleWidth) {
+      titleFont.setPointSizeF(titleFont.pointSizeF() - 0.5);
+    }
+    painter_.setFont(titleFont);
+    QTextOption titleOption(Qt::AlignLeft | Qt::AlignBottom);
+    titleOption.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    painter_.drawText(QRectF(band.left(), band.top() - mm(2.0), titleWidth, band.height() + mm(1.0)),
+                      runningTitle_, titleOption);
+    painter_.setFont(font(Font::Small));
     painter_.drawText(band.adjusted(0, 0, 0, -mm(1.0)), Qt::AlignRight | Qt::AlignBottom, version);
   }
   const QRectF footer(left, bottom - mm(kFooterMm - 3.0), right - left, mm(kFooterMm - 3.0));
@@ -181,12 +192,13 @@ void ReportPainter::subheading(const QString& text, double keepWithNext) {
 
 void ReportPainter::paragraph(const QString& text, Font role) {
   painter_.setFont(font(role));
-  const QRectF bounds = painter_.boundingRect(QRectF(content_.left(), 0, content_.width(), 1e7),
-                                              Qt::TextWordWrap | Qt::AlignLeft, text);
+  QTextOption option(Qt::AlignLeft);
+  option.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);  // a long file name breaks, not overflows
+  const QRectF bounds =
+      painter_.boundingRect(QRectF(content_.left(), 0, content_.width(), 1e7), text, option);
   const QRectF r = reserve(bounds.height());
   painter_.setPen(Qt::black);
-  painter_.drawText(QRectF(r.left(), r.top(), r.width(), bounds.height()), Qt::TextWordWrap | Qt::AlignLeft,
-                    text);
+  painter_.drawText(QRectF(r.left(), r.top(), r.width(), bounds.height()), text, option);
   skip(mm(2.0));
 }
 
@@ -204,9 +216,31 @@ void ReportPainter::table(const ReportTable& table) {
   const QFont body = font(Font::Small);
   QFont bold = body;
   bold.setBold(true);
-  const double rowH = QFontMetricsF(body, &writer_).lineSpacing() + mm(1.6);
+  const double lineH = QFontMetricsF(body, &writer_).lineSpacing();
+  QList<double> columnWidths;
+  for (int c = 0; c < columns; ++c)
+    columnWidths << tableWidth * widths[c] / (totalWeight > 0 ? totalWeight : 1.0);
+  // Cells wrap (at word boundaries, inside a word only when it is wider than its column): a table
+  // never elides or clips what it says.
+  QTextOption wrap;
+  wrap.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+  const auto cellText = [](const QStringList& cells, int c) {
+    return c < cells.size() ? cells[c] : QString();
+  };
+  const auto rowHeight = [&](const QStringList& cells, bool header) {
+    painter_.setFont(header ? bold : body);
+    double h = lineH;
+    for (int c = 0; c < columns; ++c) {
+      const QString text = cellText(cells, c);
+      if (text.isEmpty()) continue;
+      const QRectF box(0, 0, std::max(columnWidths[c] - 2 * pad, 1.0), 1e7);
+      h = std::max(h, painter_.boundingRect(box, text, wrap).height());
+    }
+    return h + mm(1.6);
+  };
 
   const auto drawRow = [&](const QStringList& cells, bool header, bool stripe) {
+    const double rowH = rowHeight(cells, header);
     const QRectF row(content_.left(), y_, tableWidth, rowH);
     if (header) {
       painter_.fillRect(row, kHeaderFill);
@@ -215,15 +249,14 @@ void ReportPainter::table(const ReportTable& table) {
     }
     painter_.setFont(header ? bold : body);
     painter_.setPen(Qt::black);
-    const QFontMetricsF fm(painter_.font(), &writer_);
     double x = row.left();
     for (int c = 0; c < columns; ++c) {
-      const double w = tableWidth * widths[c] / (totalWeight > 0 ? totalWeight : 1.0);
-      const QRectF cell(x + pad, row.top(), w - 2 * pad, row.height());
-      const Qt::Alignment align =
-          (c < table.alignment.size() ? table.alignment[c] : Qt::AlignLeft) | Qt::AlignVCenter;
-      const QString text = c < cells.size() ? cells[c] : QString();
-      painter_.drawText(cell, static_cast<int>(align), fm.elidedText(text, Qt::ElideMiddle, cell.width()));
+      const double w = columnWidths[c];
+      const QRectF cell(x + pad, row.top() + mm(0.8), w - 2 * pad, row.height() - mm(1.6));
+      const Qt::Alignment align = c < table.alignment.size() ? table.alignment[c] : Qt::AlignLeft;
+      QTextOption option = wrap;
+      option.setAlignment(align | Qt::AlignVCenter);
+      painter_.drawText(cell, cellText(cells, c), option);
       x += w;
     }
     painter_.setPen(QPen(kRuleColor, mm(header ? 0.25 : 0.1)));
@@ -232,13 +265,17 @@ void ReportPainter::table(const ReportTable& table) {
   };
 
   const bool hasHeader = !table.header.isEmpty();
+  const double headerH = hasHeader ? rowHeight(table.header, true) : 0.0;
   // Keep the header with at least two rows.
-  ensureSpace(rowH * (hasHeader ? 3 : 2));
+  double firstRows = 0.0;
+  for (int r = 0; r < std::min<qsizetype>(2, table.rows.size()); ++r)
+    firstRows += rowHeight(table.rows[r], false);
+  ensureSpace(headerH + firstRows);
   if (hasHeader) {
     drawRow(table.header, true, false);
   }
   for (int r = 0; r < table.rows.size(); ++r) {
-    if (rowH > remaining()) {
+    if (rowHeight(table.rows[r], false) > remaining() && y_ > content_.top() + headerH + mm(0.5)) {
       newPage();
       if (hasHeader) {
         drawRow(table.header, true, false);

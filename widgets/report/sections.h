@@ -4,7 +4,9 @@
 // before anything is written). report.cpp lists the sections, decides which ones a project has and
 // draws each section's heading on a new page; the write...Section function draws the body below it.
 // A new section is a new write...Section function plus one line in that list.
+#include <QList>
 #include <QString>
+#include <QStringList>
 
 #include <map>
 #include <memory>
@@ -30,6 +32,7 @@ struct ReportDataset {
   DatasetRef ref;
   QString path;                         ///< resolved against the project folder
   long rows = -1;                       ///< data rows or points; -1 when the kind has no rows (setup model)
+  std::vector<std::string> columns;     ///< column names (CSV kinds), for the settings check
   std::optional<ThermalLog> thermal;    ///< for thermal_log datasets
   std::optional<ProbePointSet> probes;  ///< for probe_points datasets
 };
@@ -59,6 +62,21 @@ class ReportMemo {
   std::map<Key, std::shared_ptr<const void>> entries_;
 };
 
+/// What a section concludes: drawn at the end of the section (concludeSection) and gathered on page 1.
+struct SectionFinding {
+  QString study;  ///< the section's title
+  /// What the study found, one or two sentences.
+  QString found;
+  /// What to change on the machine: {what (register, axis, model), value with its unit, where it goes
+  /// (controller file or page)}; empty when nothing is to be changed.
+  QList<QStringList> changes;
+  QString before;       ///< the error before, with its unit (empty when the study has none)
+  QString after;        ///< the error after the change
+  QString unexplained;  ///< what is still unexplained (the closed loop), empty elsewhere
+  QString conclusion;
+  QString recommendation;
+};
+
 /// Everything a section may draw from.
 struct ReportContext {
   const Project* project = nullptr;
@@ -70,6 +88,8 @@ struct ReportContext {
   double probeToleranceMm = 0.05;
   /// Results kept between the two layout passes (see ReportMemo).
   mutable ReportMemo memo;
+  /// What the sections concluded in this layout pass, in report order (concludeSection adds).
+  mutable std::vector<SectionFinding> findings;
 
   /// The datasets of one kind (dataset_kind::...), in project order.
   std::vector<const ReportDataset*> ofKind(const char* kind) const;
@@ -77,6 +97,32 @@ struct ReportContext {
 
 /// Tolerance (mm) of the probe-point section when the project's matching study sets none.
 inline constexpr double kDefaultProbeToleranceMm = 0.05;
+
+/// A text made by core (evidence, notes, the SPC decision) in the reader's symbols: ± for "+-", → for
+/// "->", µm for "um", ° for "deg" after a number, and small numbers to three significant digits
+/// (0.00123535 → 0.00124).
+QString readerText(const std::string& text);
+
+/// Ends a section: a "Conclusion" block with the finding's conclusion and recommendation, and keeps
+/// the finding for the summary on page 1 (summarysection.cpp).
+void concludeSection(ReportPainter& out, const ReportContext& context, SectionFinding finding);
+
+/// The seeds the report cites, as the references list prints them: "[1]" ... (summarysection.cpp).
+/// `seed` is the number of the paper in the seed folder (0, 1, 2, 4).
+QString citation(int seed);
+
+/// Page 1: what was measured, what each study found, what to change on the machine, the error
+/// before and after, what is still unexplained, and the contents. `findings` and `sectionPages`
+/// come from the previous layout pass (empty in the first).
+void writeSummary(ReportPainter& out, const ReportContext& context, const QStringList& sectionTitles,
+                  const std::vector<SectionFinding>& findings, const QList<int>& sectionPages);
+QString referencesTitle();
+/// "References": the papers cited as [n].
+void writeReferences(ReportPainter& out, const ReportContext& context);
+QString appendixTitle();
+/// "Appendix: data provenance": every dataset with its file, size, date, licence and description,
+/// and the settings of every study.
+void writeAppendix(ReportPainter& out, const ReportContext& context);
 
 QString setupSectionTitle();
 /// "Setup-data correction": the model, the report data, exact / CRIPSO / PSO (fixed seeds) with the

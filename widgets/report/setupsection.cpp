@@ -65,14 +65,23 @@ void codeBlock(ReportPainter& out, const QString& text) {
   QPainter& p = out.painter();
   const QFontMetricsF fm(font, p.device());
   const double line = fm.lineSpacing();
-  for (const QString& l : text.split(QLatin1Char('\n'))) {
-    const QRectF r = out.reserve(line);
-    p.save();
-    p.setFont(font);
-    p.setPen(QColor(0x20, 0x20, 0x20));
-    p.drawText(r.adjusted(out.mm(3.0), 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter,
-               fm.elidedText(l, Qt::ElideRight, r.width() - out.mm(3.0)));
-    p.restore();
+  const double width = out.content().width() - out.mm(6.0);
+  for (QString l : text.split(QLatin1Char('\n'))) {
+    // A line wider than the page continues on the next one, indented: nothing is cut off.
+    bool continuation = false;
+    do {
+      const double indent = out.mm(continuation ? 6.0 : 3.0);
+      int n = static_cast<int>(l.size());
+      while (n > 1 && fm.horizontalAdvance(l.left(n)) > width - indent + out.mm(3.0)) --n;
+      const QRectF r = out.reserve(line);
+      p.save();
+      p.setFont(font);
+      p.setPen(QColor(0x20, 0x20, 0x20));
+      p.drawText(r.adjusted(indent, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter, l.left(n));
+      p.restore();
+      l = l.mid(n);
+      continuation = true;
+    } while (!l.isEmpty());
   }
   out.skip(out.mm(2.0));
 }
@@ -175,14 +184,15 @@ void writeSetupSection(ReportPainter& out, const ReportContext& context) {
   out.subheading(ReportText::tr("Settings"), out.mm(25.0));
   out.paragraph(
       ReportText::tr(
-          "Objectives as the paper (Stryczek 2016, Eq. 6–10): f1 = the smallest unilateral error budget over "
+          "Objectives as in %4, Eq. 6–10: f1 = the smallest unilateral error budget over "
           "all dimensions after correction (maximised), f2 = |x| (minimised among the f1-optimal), "
           "f = 10 f1 − f2. Exact: LP / MILP on the %1 mm grid (GLPK), then the least-norm correction. "
           "CRIPSO: 100 polyps, w = 0.75, c1 = c2 = cos(π/2 Li/L); PSO: 100 particles, asynchronous "
           "gbest, same coefficients. Budget %2 solutions, seed %3.")
           .arg(model.stepMm)
           .arg(setup::kPaperBudget)
-          .arg(kSeed));
+          .arg(kSeed)
+          .arg(citation(0)));
 
   out.subheading(ReportText::tr("Convergence"), out.mm(kChartHeightMm + 10.0));
   std::vector<SetupConvergenceRun> runs = {
@@ -278,6 +288,66 @@ void writeSetupSection(ReportPainter& out, const ReportContext& context) {
       ReportPainter::Font::Small);
   codeBlock(out,
             QString::fromStdString(setup::exportCorrections(model, exact.x, setup::ControllerFormat::Fanuc)));
+
+  // ---- conclusion ----
+  int outAfter = 0;
+  for (std::size_t q = 0; q < instance.dimensions(); ++q)
+    outAfter += (after[q] < instance.lowerLimit(q) || after[q] > instance.upperLimit(q));
+  const double bonus = exact.score.f1 - exact.f1Before;
+  SectionFinding f;
+  f.study = setupSectionTitle();
+  f.found = ReportText::tr(
+                "The exact correction of %1 setup data raises the smallest error budget f1 from "
+                "%2 mm to %3 mm%4; CRIPSO and PSO reach %5 mm and %6 mm.")
+                .arg(model.setup.size())
+                .arg(mm(exact.f1Before, 3), mm(exact.score.f1, 3))
+                .arg(exact.f1Optimal ? ReportText::tr(" (proven optimal)") : QString())
+                .arg(mm(cripso.score.f1, 3), mm(pso.score.f1, 3));
+  const QString file = QStringLiteral("corrections-fanuc.nc");
+  if (bonus > 0.0) {
+    // One line per kind of register: "W1 +0.013, W2 +0.027 mm".
+    for (const setup::DatumKind kind :
+         {setup::DatumKind::Wks, setup::DatumKind::Tool, setup::DatumKind::Machine}) {
+      QStringList values;
+      for (std::size_t i = 0; i < model.setup.size(); ++i) {
+        if (model.setup[i].kind != kind || std::abs(exact.x[i]) < 0.5 * model.stepMm) continue;
+        values << QStringLiteral("%1 %2%3").arg(QString::fromStdString(model.setup[i].id),
+                                                exact.x[i] > 0 ? QStringLiteral("+") : QString(),
+                                                mm(exact.x[i], 3));
+      }
+      if (values.isEmpty()) continue;
+      const QString what = kind == setup::DatumKind::Wks    ? ReportText::tr("work offsets")
+                           : kind == setup::DatumKind::Tool ? ReportText::tr("tool lengths")
+                                                            : ReportText::tr("machine points");
+      f.changes.push_back({what, values.join(QStringLiteral(", ")) + QStringLiteral(" mm"),
+                           ReportText::tr("add along %1; file %2 (program O9001)")
+                               .arg(QString::fromStdString(model.axis), file)});
+    }
+  }
+  f.before = ReportText::tr("f1 %1 mm; %2 of %3 dimensions out of tolerance")
+                 .arg(mm(exact.f1Before, 3))
+                 .arg(outBefore)
+                 .arg(instance.dimensions());
+  f.after = ReportText::tr("f1 %1 mm; %2 of %3 dimensions out of tolerance")
+                .arg(mm(exact.score.f1, 3))
+                .arg(outAfter)
+                .arg(instance.dimensions());
+  f.conclusion = bonus > 0.0 ? ReportText::tr(
+                                   "The correction widens the smallest margin to the tolerance limits "
+                                   "by %1 mm; %2 of %3 dimensions stay out of tolerance.")
+                                   .arg(mm(bonus, 3))
+                                   .arg(outAfter)
+                                   .arg(instance.dimensions())
+                             : ReportText::tr(
+                                   "No correction widens the smallest margin: the registers are as "
+                                   "good as the measurements allow.");
+  f.recommendation = bonus > 0.0
+                         ? ReportText::tr(
+                               "Add the exact corrections to the offset registers (%1, Setup page, Export; "
+                               "Heidenhain and Siemens formats there too), then measure the next part.")
+                               .arg(file)
+                         : ReportText::tr("Leave the offset registers as they are.");
+  concludeSection(out, context, f);
 }
 
 }  // namespace metrofit

@@ -23,9 +23,11 @@
 
 #include "core/diagnose/thermal_applied.h"
 #include "core/thermal/hysteresis.h"
+#include "core/thermal/model_verdict.h"
 #include "widgets/charts/thermalcharts.h"
 #include "widgets/charts/thermalcomparison.h"
 #include "widgets/charts/thermalmodelcharts.h"
+#include "widgets/charts/thermalverdict.h"
 #include "widgets/charts/trendanalysis.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
@@ -337,7 +339,7 @@ void writeHysteresis(ReportPainter& out, const ThermalResults& r) {
   const std::size_t shown = std::min(h.sensors.size(), kMaxHysteresisCharts);
   out.paragraph(
       ReportText::tr(
-          "%1 against each sensor (Fig. 9 of seed 004): heating runs (the change of %1 grows, %2 "
+          "%1 against each sensor (Fig. 9 of %5): heating runs (the change of %1 grows, %2 "
           "rows) and cooling runs (%3 rows) in the colours of the trend chart's phases. Loop area by "
           "the shoelace formula; lag: the time constant of a first-order lag between sensor and "
           "displacement (> 0: the sensor lags).%4")
@@ -349,7 +351,8 @@ void writeHysteresis(ReportPainter& out, const ThermalResults& r) {
                          ReportText::tr("Charts of the first %1 of %2 sensors; the table lists all.")
                              .arg(shown)
                              .arg(h.sensors.size())
-                   : QString()));
+                   : QString())
+          .arg(citation(4)));
   const int columns = 3;
   const int rows = static_cast<int>((shown + columns - 1) / columns);
   for (int row = 0; row < rows; ++row) {
@@ -423,13 +426,14 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
   for (double v : c.series.target) scale = std::max(scale, std::abs(v));
   const int dec = scale >= 100.0 ? 1 : (scale >= 1.0 ? 2 : 3);
   ReportTable t;
-  t.header = {ReportText::tr("model"), ReportText::tr("rows"),
-              ReportText::tr("R"),     ReportText::tr("RMSE (%1)").arg(unit),
-              ReportText::tr("E"),     ReportText::tr("band (%1)").arg(unit)};
-  t.widths = {1.3, 1.3, 1.0, 1.1, 1.1, 1.1};
-  t.alignment = {Qt::AlignLeft,  Qt::AlignLeft,  Qt::AlignRight,
-                 Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
-  QStringList trainingNotes, failedModels;
+  t.header = {ReportText::tr("model"),  ReportText::tr("rows"),
+              ReportText::tr("R"),      ReportText::tr("RMSE (%1)").arg(unit),
+              ReportText::tr("E"),      ReportText::tr("band (%1)").arg(unit),
+              ReportText::tr("verdict")};
+  t.widths = {1.3, 1.3, 0.9, 1.0, 0.9, 1.0, 2.2};
+  t.alignment = {Qt::AlignLeft,  Qt::AlignLeft,  Qt::AlignRight, Qt::AlignRight,
+                 Qt::AlignRight, Qt::AlignRight, Qt::AlignLeft};
+  QStringList trainingNotes;
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
     const thermal::ThermalEvaluation& ev = c.models[i];
     if (ev.predicted.size() != c.series.rows()) continue;
@@ -458,7 +462,6 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
         training = QString::fromStdString(ev.training.run.message);
         break;
     }
-    if (ev.heldoutFails()) failedModels << thermalModelName(kThermalModelOrder[i]);
     trainingNotes << thermalModelName(kThermalModelOrder[i]) + QStringLiteral(": ") + training +
                          ReportText::tr(" (%1 s)").arg(c.seconds[i], 0, 'f', 2);
     for (int part = 0; part < 2; ++part) {
@@ -466,31 +469,38 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
       // A model whose output runs away (an unstable GMC) is reported as such, not as 1e+68.
       const bool runaway = !(std::isfinite(m.rmse) && m.rmse <= 100.0 * std::max(scale, 1e-9));
       const QString diverges = ReportText::tr("diverges");
+      QString verdict;
+      if (part == 1) {
+        const thermal::ModelVerdict v = thermal::judgeThermalModel(ev.heldout, scale);
+        verdict = thermalVerdictLabel(v);
+        if (v != thermal::ModelVerdict::Usable)
+          verdict += QStringLiteral(": ") + thermalVerdictReason(v, ev.heldout);
+      }
       t.rows.push_back({part == 0 ? thermalModelName(kThermalModelOrder[i]) : QString(),
                         (part == 0 ? ReportText::tr("fit, %1") : ReportText::tr("held out, %1")).arg(m.n),
                         runaway ? diverges : metric(m.r, 4), runaway ? diverges : metric(m.rmse, dec),
                         runaway ? diverges : metric(m.e, 4),
-                        runaway ? diverges : QStringLiteral("±") + metric(m.residualBand, dec)});
+                        runaway ? diverges : QStringLiteral("±") + metric(m.residualBand, dec), verdict});
     }
   }
-  out.paragraph(ReportText::tr("Performance indices (Table 4 of seed 004): R correlation, RMSE, E "
-                               "Nash-Sutcliffe efficiency, band = largest |residual|."),
+  out.paragraph(ReportText::tr("Performance indices (Table 4 of %1): R correlation, RMSE, E "
+                               "Nash-Sutcliffe efficiency, band = largest |residual|. A model is usable for "
+                               "compensation only when on the held-out rows it does not diverge (RMSE at "
+                               "most %2 × the largest error), E ≥ %3 and R ≥ %4.")
+                    .arg(citation(4))
+                    .arg(thermal::kDivergenceFactor, 0, 'f', 0)
+                    .arg(thermal::kMinEfficiency, 0, 'f', 0)
+                    .arg(thermal::kMinCorrelation, 0, 'f', 1),
                 ReportPainter::Font::Small);
   out.table(t);
   out.paragraph(ReportText::tr("Training: %1.").arg(trainingNotes.join(QStringLiteral("; "))),
                 ReportPainter::Font::Small);
-  if (!failedModels.isEmpty()) {
-    out.paragraph(ReportText::tr("Held-out test failed (E < 0 or an unstable model): %1. These models "
-                                 "extrapolate poorly beyond their fit rows and should not be used for "
-                                 "compensation as they are.")
-                      .arg(failedModels.join(QStringLiteral(", "))));
-  }
 }
 
 void writeModular(ReportPainter& out, const ReportContext& context, const ThermalLog& testLog) {
   QString error;
   const std::shared_ptr<const ModularComparison> m = modularResults(context, &error);
-  out.subheading(ReportText::tr("Modular models (Section 4.3)"), out.mm(80.0));
+  out.subheading(ReportText::tr("Modular models (%1, Section 4.3)").arg(citation(4)), out.mm(80.0));
   if (!m) {
     out.paragraph(ReportText::tr("The modular case could not be computed: %1").arg(error));
     return;
@@ -527,6 +537,84 @@ void writeModular(ReportPainter& out, const ReportContext& context, const Therma
   out.table(t);
 }
 
+/// The section's conclusion: the verdict on each model and the best usable one.
+void concludeThermal(ReportPainter& out, const ReportContext& context, const ReportDataset& dataset,
+                     const ThermalResults& r) {
+  SectionFinding f;
+  f.study = thermalSectionTitle();
+  const ThermalLog& log = *dataset.thermal;
+  const QString target = QString::fromStdString(r.settings.target);
+  if (!r.comparison) {
+    f.conclusion = ReportText::tr("The thermal models could not be fitted: %1").arg(r.modelError);
+    f.found = f.conclusion;
+    f.recommendation = ReportText::tr("Check the thermal study's target and inputs against the log.");
+    concludeSection(out, context, f);
+    return;
+  }
+  const ThermalComparison& c = *r.comparison;
+  const double scale = thermal::targetScale(c.series.target);
+  const int dec = scale >= 100.0 ? 1 : (scale >= 1.0 ? 2 : 3);
+  const QString unit = unitOf(log, r.settings.target);
+  const QString u = unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
+  int best = -1;
+  QStringList rejected;
+  for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+    const thermal::ThermalEvaluation& ev = c.models[i];
+    if (ev.predicted.size() != c.series.rows()) continue;
+    const thermal::ModelVerdict v = thermal::judgeThermalModel(ev.heldout, scale);
+    if (v != thermal::ModelVerdict::Usable) {
+      rejected << ReportText::tr("%1 is not usable (%2)")
+                      .arg(thermalModelName(kThermalModelOrder[i]), thermalVerdictReason(v, ev.heldout));
+    } else if (best < 0 || ev.heldout.rmse < c.models[static_cast<std::size_t>(best)].heldout.rmse) {
+      best = static_cast<int>(i);
+    }
+  }
+  // The error without compensation on the held-out rows: the measured displacement about its mean.
+  const std::size_t rows = c.series.rows();
+  const std::size_t first = static_cast<std::size_t>(r.settings.trainFraction * static_cast<double>(rows));
+  double mean = 0.0, ss = 0.0, peak = 0.0;
+  for (std::size_t k = first; k < rows; ++k) mean += c.series.target[k];
+  mean /= std::max<std::size_t>(1, rows - first);
+  for (std::size_t k = first; k < rows; ++k) {
+    ss += (c.series.target[k] - mean) * (c.series.target[k] - mean);
+    peak = std::max(peak, std::abs(c.series.target[k] - mean));
+  }
+  const double rmsBefore = std::sqrt(ss / static_cast<double>(std::max<std::size_t>(1, rows - first)));
+  f.before = ReportText::tr("%1 varies by RMS %2%3 (peak %4%3) on the held-out rows")
+                 .arg(target, metric(rmsBefore, dec), u, metric(peak, dec));
+  const QString rejectedText =
+      rejected.isEmpty() ? QString() : rejected.join(QStringLiteral("; ")) + QLatin1Char('.');
+  if (best >= 0) {
+    const thermal::ThermalEvaluation& ev = c.models[static_cast<std::size_t>(best)];
+    const QString name = thermalModelName(kThermalModelOrder[static_cast<std::size_t>(best)]);
+    f.found = ReportText::tr("Best usable model of %1: %2, held-out RMSE %3%4, residual band ±%5%4.")
+                  .arg(target, name, metric(ev.heldout.rmse, dec), u, metric(ev.heldout.residualBand, dec));
+    if (!rejectedText.isEmpty()) f.found += QLatin1Char(' ') + rejectedText;
+    f.after = ReportText::tr("RMS %1%2 (band ±%3%2) left with %4")
+                  .arg(metric(ev.heldout.rmse, dec), u, metric(ev.heldout.residualBand, dec), name);
+    f.changes.push_back(
+        {ReportText::tr("thermal compensation of %1").arg(target), name,
+         ReportText::tr("model fitted on %1 (Thermal page; metrofit-cli thermal fit saves it)")
+             .arg(QString::fromStdString(dataset.ref.id))});
+    f.conclusion = ReportText::tr(
+                       "%1 predicts %2 on rows it was not fitted on to RMS %3%4, from RMS %5%4 "
+                       "without compensation.")
+                       .arg(name, target, metric(ev.heldout.rmse, dec), u, metric(rmsBefore, dec));
+    if (!rejectedText.isEmpty()) f.conclusion += QLatin1Char(' ') + rejectedText;
+    f.recommendation =
+        ReportText::tr("Compensate %1 with %2; do not use the models marked not usable.").arg(target, name);
+  } else {
+    f.found = ReportText::tr("No model of %1 passes the held-out test.").arg(target) + QLatin1Char(' ') +
+              rejectedText;
+    f.conclusion = f.found;
+    f.recommendation = ReportText::tr(
+        "Do not compensate with these models. Record a longer test covering "
+        "heating and cooling, add sensors near the heat sources, and use the "
+        "closed loop (diagnosis) to find the lag or inputs the model lacks.");
+  }
+  concludeSection(out, context, f);
+}
+
 }  // namespace
 
 QString thermalSectionTitle() {
@@ -534,15 +622,15 @@ QString thermalSectionTitle() {
 }
 
 void writeThermalSection(ReportPainter& out, const ReportContext& context) {
-  bool first = true;
   const auto study = context.project->studies.find(study::kThermal);
   const nlohmann::json thermalStudy =
       study != context.project->studies.end() ? *study : nlohmann::json::object();
-  for (const ReportDataset* dataset : context.ofKind(dataset_kind::kThermalLog)) {
-    if (!first) {
-      out.newPage();
-    }
-    first = false;
+  // Only the study's log (the report shows the studies the project declares); a study without a
+  // dataset means the project's only thermal log (validated: reportstudies.cpp).
+  const std::vector<const ReportDataset*> logs = context.ofKind(dataset_kind::kThermalLog);
+  const std::string id = thermalStudy.value("dataset", logs.empty() ? std::string() : logs.front()->ref.id);
+  for (const ReportDataset* dataset : logs) {
+    if (dataset->ref.id != id) continue;
     writeThermalLog(out, *dataset);
     const ThermalLog& log = *dataset->thermal;
     ThermalModelSettings settings = defaultThermalModelSettings(log, thermalStudy, dataset->ref.id);
@@ -553,6 +641,7 @@ void writeThermalSection(ReportPainter& out, const ReportContext& context) {
     if (dataset->ref.id == kModularCombinedId) {
       writeModular(out, context, log);
     }
+    concludeThermal(out, context, *dataset, *results);
   }
 }
 

@@ -1,0 +1,96 @@
+// Study settings are checked, never quietly replaced (core/project/study_check.h): every bad
+// setting is one issue naming the study and the field; the demo project has none.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "core/common/error.h"
+#include "core/project/project.h"
+#include "core/project/study_check.h"
+#include "testsupport.h"
+
+namespace metrofit {
+namespace {
+
+Project twoDatasets() {
+  Project p;
+  p.datasets.push_back({"log", dataset_kind::kThermalLog, "log.csv", "", ""});
+  p.datasets.push_back({"pts", dataset_kind::kProbePoints, "pts.csv", "", ""});
+  return p;
+}
+
+std::vector<std::string> fields(const std::vector<StudyIssue>& issues) {
+  std::vector<std::string> f;
+  for (const auto& i : issues) f.push_back(i.field);
+  return f;
+}
+
+TEST(StudyCheck, TheDemoProjectIsClean) {
+  const Project demo = loadProject((test::sourceDir() / "resources/demo/demo.metrofit").string());
+  EXPECT_TRUE(checkStudies(demo).empty()) << checkStudies(demo).front().field;
+}
+
+TEST(StudyCheck, UnknownStudyAndSettingAreNamed) {
+  Project p = twoDatasets();
+  p.studies["thermals"] = nlohmann::json::object();
+  p.studies["thermal"] = {{"dataset", "log"}, {"targt", "disp_z_um"}, {"notes", "fine"}};
+  const auto issues = checkStudies(p);
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(fields(issues), (std::vector<std::string>{"studies.thermal.targt", "studies.thermals"}));
+  EXPECT_NE(issues[0].message.find("not a setting"), std::string::npos);
+  EXPECT_NE(issues[1].message.find("not a study"), std::string::npos);
+}
+
+TEST(StudyCheck, DatasetOfTheWrongKindOrMissing) {
+  Project p = twoDatasets();
+  p.studies["thermal"] = {{"dataset", "pts"}};
+  p.studies["matching"] = {{"dataset", "nope"}};
+  const auto issues = checkStudies(p);
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].field, "studies.matching.dataset");
+  EXPECT_NE(issues[0].message.find("'nope'"), std::string::npos);
+  EXPECT_EQ(issues[1].field, "studies.thermal.dataset");
+  EXPECT_NE(issues[1].message.find("probe_points"), std::string::npos);
+}
+
+TEST(StudyCheck, MisspelledDatasetKind) {
+  Project p = twoDatasets();
+  p.datasets.push_back({"x", "thermal-log", "x.csv", "", ""});
+  const auto issues = checkStudies(p);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "datasets[2].kind");
+  EXPECT_NE(issues[0].message.find("'thermal-log'"), std::string::npos);
+}
+
+TEST(StudyCheck, BadValuesAndDiagnosisDomains) {
+  Project p = twoDatasets();
+  p.studies["thermal"] = {{"dataset", "log"}, {"train_fraction", 1.5}, {"inputs", nlohmann::json::array()}};
+  p.studies["diagnosis"] = {{"thermo", nlohmann::json::object()},
+                            {"thermal", {{"dataset", "log"}, {"lag", 3}}}};
+  const auto f = fields(checkStudies(p));
+  EXPECT_EQ(f, (std::vector<std::string>{"studies.diagnosis.thermal.lag", "studies.diagnosis.thermo",
+                                         "studies.thermal.inputs", "studies.thermal.train_fraction"}));
+}
+
+TEST(StudyCheck, ColumnsTheDataLacks) {
+  Project p = twoDatasets();
+  p.studies["thermal"] = {{"dataset", "log"}, {"target", "disp_x_um"}, {"inputs", {"T1", "T9"}}};
+  const std::vector<std::string> cols = {"time_min", "T1", "T2", "disp_z_um"};
+  const DatasetColumns columns = [&](const std::string& id) { return id == "log" ? &cols : nullptr; };
+  const auto issues = checkStudyColumns(p, columns);
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].field, "studies.thermal.target");
+  EXPECT_NE(issues[0].message.find("'disp_x_um'"), std::string::npos);
+  EXPECT_NE(issues[0].message.find("disp_z_um"), std::string::npos);  // says what it has
+  EXPECT_EQ(issues[1].field, "studies.thermal.inputs");
+  try {
+    validateStudies(p, "cell.metrofit", columns);
+    FAIL() << "no error";
+  } catch (const ValidationError& e) {
+    EXPECT_EQ(e.context().field, "studies.thermal.target");
+    EXPECT_NE(std::string(e.what()).find("cell.metrofit"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace metrofit
