@@ -62,7 +62,7 @@ machine::MachineDefinition machineFor(const MatchArgs& a, bool machineGiven) {
 
 int runMatch(const MatchArgs& a, bool machineGiven) {
   using namespace matching;
-  const ProbePointSet set = readProbePointsAnyFormat(a.data, 1);
+  const ProbePointSet set = readProbePointsAnyFormat(a.data, 1, csvOptions());
   MatchOptions o;
   o.method = parseMatchMethod(a.method, "--method");
   o.toleranceMm = a.tolerance;
@@ -135,6 +135,7 @@ void registerMatchCommand(CLI::App& app) {
   sub->add_option("--lock", a->lock, "Degrees of freedom held at 0: any of rx,ry,rz,x,y,z");
   sub->add_option("--reference", a->reference, "Three point ids for the rough matching (default: automatic)");
   addSeed(sub, a->seed);
+  addCsvOptions(sub);
   addOut(sub, a->out);
   sub->callback([a, machineOpt] {
     const bool machineGiven = machineOpt->count() > 0;

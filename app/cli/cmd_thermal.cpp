@@ -190,7 +190,7 @@ int runFit(const FitArgs& a, bool fractionGiven) {
 
 int runPredict(const PredictArgs& a) {
   const thermal::ThermalModel model = thermal::thermalModelFromJson(readJsonFile(a.modelFile), a.modelFile);
-  const ThermalLog log = readThermalLog(a.data);
+  const ThermalLog log = readThermalLog(a.data, 3, csvOptions());
   const thermal::ThermalSeries series = thermal::selectThermalSeries(log, model.target, model.inputs, false);
   const thermal::Compensation c = thermal::compensationValues(model, series);
   writeResult(a.out, thermal::compensationToCsv(c));
@@ -297,6 +297,7 @@ void registerThermalCommands(CLI::App& app) {
       th->add_subcommand("fit", "Fit a thermal error model on the first part of a log, test on the rest");
   existingFile(fit->add_option("--data", f->data, "Thermal log (CSV)")->required());
   addColumns(fit, f->target, f->inputs);
+  addCsvOptions(fit);
   fit->add_option("--model", f->model, "gnnmci|gmc|mlp")
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp"}))
       ->capture_default_str();
@@ -325,6 +326,7 @@ void registerThermalCommands(CLI::App& app) {
   existingFile(pred->add_option("--model-file", p->modelFile, "Model written by 'thermal fit --save-model'")
                    ->required());
   existingFile(pred->add_option("--data", p->data, "Thermal log with the model's input columns")->required());
+  addCsvOptions(pred);
   pred->add_option("--out", p->out, "Result file (CSV; written atomically). Default: stdout");
   pred->callback([p] { selectRunner([p]() -> int { return runPredict(*p); }); });
 
@@ -333,6 +335,7 @@ void registerThermalCommands(CLI::App& app) {
       "hysteresis", "Displacement against each sensor over heating and cooling: loop areas and sensor lags");
   existingFile(hys->add_option("--data", h->data, "Thermal log (CSV)")->required());
   addColumns(hys, h->target, h->inputs);
+  addCsvOptions(hys);
   hys->add_option("--smoothing-min", h->smoothingMin, "Window (min) of the heating / cooling phase detection")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
@@ -346,6 +349,7 @@ void registerThermalCommands(CLI::App& app) {
       mod->add_option("--train", m->train, "Training test log (CSV); repeat for each test")->required());
   existingFile(mod->add_option("--test", m->test, "Test log to predict (CSV)")->required());
   addColumns(mod, m->target, m->inputs);
+  addCsvOptions(mod);
   mod->add_option("--model", m->model, "gnnmci|gmc|mlp")
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp"}))
       ->capture_default_str();

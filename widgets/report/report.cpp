@@ -15,6 +15,8 @@
 #include "core/common/error.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
+#include "core/matching/hole_table.h"
+#include "core/project/datasets.h"
 #include "core/project/project.h"
 #include "metrofit/version.h"
 #include "widgets/report/reportpainter.h"
@@ -69,15 +71,16 @@ std::vector<ReportDataset> readDatasets(const Project& project, const QString& p
     const std::string path = resolveDatasetPath(projectPath.toStdString(), ref);
     d.path = QString::fromStdString(path);
     if (ref.kind == dataset_kind::kThermalLog) {
-      d.thermal = readThermalLog(path);
+      d.thermal = readThermalLog(path, 3, ref.csv);
       d.rows = static_cast<long>(d.thermal->rows());
     } else if (ref.kind == dataset_kind::kProbePoints) {
-      d.probes = readProbePoints(path);
+      d.probes = readProbePointsAnyFormat(path, 3, ref.csv);
       d.rows = static_cast<long>(d.probes->points.size());
     } else if (ref.kind == dataset_kind::kSetupModel) {
       readFile(path);  // a JSON model: no rows, but it must be readable
     } else {
-      d.rows = static_cast<long>(readCsvFile(path).rowCount());
+      d.rows =
+          summarizeDataset(projectPath.toStdString(), ref).rows;  // with the dataset's dialect and mapping
     }
     datasets.push_back(std::move(d));
   }
