@@ -142,7 +142,7 @@ int runThermal(const MethodArgs& a) {
 }
 
 int runKinematic(const MethodArgs& a) {
-  const MeasuredPath path = readMeasuredPath(a.data);
+  const MeasuredPath path = readMeasuredPath(a.data, csvOptions());
   diagnose::KinematicDiagnosisOptions o;
   o.feedMmPerMin = a.feed;
   diagnose::Diagnosis d;
@@ -156,7 +156,7 @@ int runKinematic(const MethodArgs& a) {
 /// Setup (core/diagnose/setup_diagnosis.h): the report series (CSV or DMIS) against the model.
 int runSetup(const MethodArgs& a) {
   const setup::Model model = setup::readModel(a.model);
-  const setup::Measurements m = setup::readMeasurements({a.data}, model);
+  const setup::Measurements m = setup::readMeasurements({a.data}, model, csvOptions());
   diagnose::Diagnosis d;
   {
     Progress progress("diagnose setup");
@@ -167,7 +167,7 @@ int runSetup(const MethodArgs& a) {
 
 /// Matching (core/diagnose/matching_diagnosis.h): probe CSV or PC-DMIS hole table.
 int runMatching(const MethodArgs& a) {
-  const ProbePointSet set = readProbePointsAnyFormat(a.data);
+  const ProbePointSet set = readProbePointsAnyFormat(a.data, 3, csvOptions());
   diagnose::MatchingDiagnosisOptions o;
   o.toleranceMm = a.tolerance;
   diagnose::Diagnosis d;
@@ -219,6 +219,7 @@ void registerDiagnoseCommands(CLI::App& app) {
       sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")->check(positiveNumber());
     }
     addSeed(sub, a->seed);
+    addCsvOptions(sub);
     addOut(sub, a->out);
     const std::string d = domain;
     sub->callback([a, d] {

@@ -63,7 +63,7 @@ std::string utcNow() {
 }
 
 int runIdentify(const IdentifyArgs& a) {
-  const MeasuredPath path = readMeasuredPath(a.data);
+  const MeasuredPath path = readMeasuredPath(a.data, csvOptions());
   const IdentifyResult r = identifyActuatorErrors(path);
   if (r.run.termination == Termination::Failed) {
     throw std::runtime_error("identification failed on " + a.data + ": " + r.run.message);
@@ -83,7 +83,7 @@ int runIdentify(const IdentifyArgs& a) {
 
 int runCompensate(const CompensateArgs& a) {
   const ActuatorErrors2 errors = readActuatorErrors(a.errors);
-  const NominalPath nominal = readNominalPath(a.path);
+  const NominalPath nominal = readNominalPath(a.path, csvOptions());
   const CartesianMachine2 machine = CartesianMachine2::fromErrors(errors);
   const auto commands = compensatePath(machine, nominal.points);
 
@@ -285,6 +285,7 @@ void registerKinematicCommands(CLI::App& app) {
       kin->add_subcommand("identify", "Identify actuator errors from a measured path or circular test");
   existingFile(id->add_option("--data", a->data, "Measured path (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm)")
                    ->required());
+  addCsvOptions(id);
   addOut(id, a->out);
   id->callback([a] { selectRunner([a]() -> int { return runIdentify(*a); }); });
 
@@ -292,6 +293,7 @@ void registerKinematicCommands(CLI::App& app) {
   auto* comp = kin->add_subcommand("compensate", "Compensated references for a nominal path");
   existingFile(comp->add_option("--errors", b->errors, "Errors (JSON written by identify)")->required());
   existingFile(comp->add_option("--path", b->path, "Nominal path (CSV x_mm,y_mm)")->required());
+  addCsvOptions(comp);
   comp->add_option("--out", b->out,
                    "Compensated references (CSV x_cmd_mm,y_cmd_mm; atomic). Default: stdout");
   comp->add_option("--gcode", b->gcode, "Also write the references as G-code (G01 blocks)");

@@ -69,7 +69,7 @@ machine::MachineDefinition machineFor(const MatchArgs& a, bool machineGiven) {
 
 int runMatch(const MatchArgs& a, bool machineGiven) {
   using namespace matching;
-  const ProbePointSet set = readProbePointsAnyFormat(a.data, 1);
+  const ProbePointSet set = readProbePointsAnyFormat(a.data, 1, csvOptions());
   MatchOptions o;
   o.method = parseMatchMethod(a.method, "--method");
   o.toleranceMm = a.tolerance;
@@ -162,6 +162,7 @@ void registerMatchCommand(CLI::App& app) {
       ->check(CLI::Range(0.0, 10.0))
       ->capture_default_str();
   addSeed(sub, a->seed);
+  addCsvOptions(sub);
   addOut(sub, a->out);
   sub->callback([a, machineOpt] {
     const bool machineGiven = machineOpt->count() > 0;

@@ -129,7 +129,7 @@ int runSetup(const SetupArgs& a) {
   if (a.exportFormat.empty() && !a.exportOut.empty())
     throw OptionsError(ErrorContext{{}, 0, 0, "--export-out"}, "needs --export fanuc|heidenhain|siemens|csv");
   const setup::Model model = setup::readModel(a.model);
-  const setup::Measurements meas = setup::readMeasurements(a.data, model);
+  const setup::Measurements meas = setup::readMeasurements(a.data, model, csvOptions());
   const setup::SetupInstance inst(model, meas);
 
   setup::ExactOptions eo;
@@ -397,6 +397,7 @@ void registerSetupCommand(CLI::App& app) {
   existingFile(
       sub->add_option("--data", a->data, "Measurement report(s): CMM series CSV or DMIS output, required")
           ->take_all());
+  addCsvOptions(sub);
   sub->add_option("--method", a->method, "exact|cripso|pso|ga|coa")
       ->check(CLI::IsMember(setup::setupMethodNames()))
       ->capture_default_str();

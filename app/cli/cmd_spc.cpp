@@ -10,6 +10,7 @@
 #include "app/cli/commands.h"
 #include "core/common/error.h"
 #include "core/io/csv.h"
+#include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/spc/spc.h"
 
@@ -59,9 +60,9 @@ SpcOptions spcOptions(const SpcArgs& a) {
 
 int runSpc(const SpcArgs& a) {
   const SpcOptions o = spcOptions(a);
-  const CsvTable table = readCsvFile(a.data);
+  const CsvTable table = readCsvFile(a.data, csvOptions());
   const std::vector<double> values = table.numericColumn(a.column);
-  const SpcResult r = analyseSpc(values, o, ErrorContext{a.data, 0, 0, a.column});
+  const SpcResult r = analyseSpc(values, o, ErrorContext{displayPath(a.data), 0, 0, a.column});
   writeResult(a.out, dumpJson(spcResultToJson(r)));
   std::string line = "spc: column '" + a.column + "', " + std::to_string(r.chart.subgroups()) +
                      " subgroups of " + std::to_string(o.subgroupSize);
@@ -84,6 +85,7 @@ void registerSpcCommand(CLI::App& app) {
   existingFile(
       sub->add_option("--data", a->data, "Measurements (CSV), rows in production order")->required());
   sub->add_option("--column", a->column, "Column of the feature to chart")->required();
+  addCsvOptions(sub);
   sub->add_option("--subgroup", a->subgroup, "Subgroup size n (2..25): consecutive rows form a subgroup")
       ->required();
   a->lslOpt = sub->add_option("--lsl", a->lsl, "Lower specification limit");

@@ -222,7 +222,7 @@ int runFit(const FitArgs& a, bool fractionGiven) {
 
 int runPredict(const PredictArgs& a) {
   const thermal::ThermalModel model = thermal::thermalModelFromJson(readJsonFile(a.modelFile), a.modelFile);
-  const ThermalLog log = readThermalLog(a.data);
+  const ThermalLog log = readThermalLog(a.data, 3, csvOptions());
   const thermal::ThermalSeries series = thermal::selectThermalSeries(log, model.target, model.inputs, false);
   const thermal::Compensation c = thermal::compensationValues(model, series);
   writeResult(a.out, thermal::compensationToCsv(c));
@@ -331,9 +331,10 @@ void registerThermalCommands(CLI::App& app) {
   existingFile(fit->add_option("--data", f->data, "Thermal log (CSV)")->required());
   addColumns(fit, f->target, f->inputs);
   fit->add_option("--model", f->model,
-                  "gnnmci|gmc|mlp (seed 004), linear (static regression), lag (first-order lag per sensor), "
+                  "gnnmci|gmc|mlp (the thermal paper), linear (static regression), lag (first-order lag per sensor), "
                   "dlag (distributed lag) or auto (chosen by blocked cross-validation on the fit rows)")
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp", "linear", "lag", "dlag", "auto"}))
+  addCsvOptions(fit);
       ->capture_default_str();
   auto* fraction = fit->add_option("--train-fraction", f->trainFraction,
                                    "Fraction of rows (from the start) used for fitting; default 0.5, 0.7 for "
@@ -360,6 +361,7 @@ void registerThermalCommands(CLI::App& app) {
   existingFile(pred->add_option("--model-file", p->modelFile, "Model written by 'thermal fit --save-model'")
                    ->required());
   existingFile(pred->add_option("--data", p->data, "Thermal log with the model's input columns")->required());
+  addCsvOptions(pred);
   pred->add_option("--out", p->out, "Result file (CSV; written atomically). Default: stdout");
   pred->callback([p] { selectRunner([p]() -> int { return runPredict(*p); }); });
 
@@ -368,6 +370,7 @@ void registerThermalCommands(CLI::App& app) {
       "hysteresis", "Displacement against each sensor over heating and cooling: loop areas and sensor lags");
   existingFile(hys->add_option("--data", h->data, "Thermal log (CSV)")->required());
   addColumns(hys, h->target, h->inputs);
+  addCsvOptions(hys);
   hys->add_option("--smoothing-min", h->smoothingMin, "Window (min) of the heating / cooling phase detection")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
@@ -383,6 +386,7 @@ void registerThermalCommands(CLI::App& app) {
   addColumns(mod, m->target, m->inputs);
   mod->add_option("--model", m->model, "gnnmci|gmc|mlp|linear|lag|dlag (see thermal fit)")
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp", "linear", "lag", "dlag"}))
+  addCsvOptions(mod);
       ->capture_default_str();
   mod->add_option("--training", m->training, "gnnmci: pso-ls or pso (see thermal fit)")
       ->check(CLI::IsMember({"pso", "pso-ls"}))

@@ -27,6 +27,8 @@ namespace metrofit::cli {
 namespace {
 
 std::function<int()> g_selected;
+std::string g_delimiter = "auto";
+std::string g_decimal = "auto";
 int g_argc = 0;
 char** g_argv = nullptr;
 
@@ -137,7 +139,30 @@ void selectRunner(std::function<int()> runner) {
 }
 
 CLI::Option* existingFile(CLI::Option* option) {
-  return option->check(CLI::ExistingFile);
+  return option->check(CLI::Validator(
+      [](std::string& text) -> std::string { return text == "-" ? std::string() : CLI::ExistingFile(text); },
+      "FILE (or - for standard input)"));
+}
+
+void addCsvOptions(CLI::App* sub) {
+  sub->add_option(
+         "--delimiter", g_delimiter,
+         "CSV field delimiter: auto (the most frequent of ',', ';', tab in the header), ',', ';' or tab")
+      ->check(CLI::IsMember({"auto", ",", ";", "tab"}))
+      ->capture_default_str();
+  sub->add_option(
+         "--decimal", g_decimal,
+         "CSV decimal separator: auto (',' when a ';'- or tab-separated file writes decimal commas), "
+         "'.' or ','")
+      ->check(CLI::IsMember({"auto", ".", ","}))
+      ->capture_default_str();
+}
+
+CsvReadOptions csvOptions() {
+  CsvReadOptions o;
+  o.dialect.delimiter = parseCsvDelimiter(g_delimiter);
+  o.dialect.decimal = parseCsvDecimal(g_decimal);
+  return o;
 }
 
 CLI::Validator positiveNumber() {
@@ -172,8 +197,9 @@ std::vector<std::string> splitList(const std::string& s) {
   return out;
 }
 
-ThermalLog readThermalArgs(const std::string& data, const std::string& target, const std::string& inputList) {
-  ThermalLog log = readThermalLog(data);
+ThermalLog readThermalArgs(const std::string& data, const std::string& target, const std::string& inputList,
+                           const CsvReadOptions& csv) {
+  ThermalLog log = readThermalLog(data, 3, csv);
   (void)log.channel(target);
   const auto inputs = splitList(inputList);
   if (inputs.empty())
@@ -211,6 +237,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
   registerSpcCommand(app);
   registerThermalCommands(app);
   registerDiagnoseCommands(app);
+  registerProjectCommands(app);
   {
     auto* sim = app.add_subcommand("simulate", "Make test data with the built-in simulator");
     sim->require_subcommand(1);

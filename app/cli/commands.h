@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/io/csv.h"
 #include "core/thermal/thermal_log.h"
 
 namespace CLI {
@@ -37,15 +38,21 @@ void writeResult(const std::string& outPath, const std::string& text);
 void selectRunner(std::function<int()> runner);
 /// Throws NotAvailable: "<what> is not in this build yet (<issue>); the inputs were read and are valid".
 [[noreturn]] void notInThisBuild(const std::string& what, const std::string& issue);
+/// An existing file, or "-" (standard input).
 CLI::Option* existingFile(CLI::Option* option);
 /// A number > 0; says "--opt: must be a positive number, got '-1'" (CLI::PositiveNumber prints the
 /// range up to DBL_MAX in full).
 CLI::Validator positiveNumber();
 void addOut(CLI::App* sub, std::string& out);
 void addSeed(CLI::App* sub, std::uint64_t& seed);
+/// --delimiter auto|,|;|tab and --decimal auto|.|, (CONTRACT.md: every subcommand that reads a CSV).
+/// One subcommand runs per process, so they share one setting; csvOptions() returns it.
+void addCsvOptions(CLI::App* sub);
+CsvReadOptions csvOptions();
 std::vector<std::string> splitList(const std::string& commaSeparated);
 /// Reads a thermal log and checks that target and every input name a column (inputs != target).
-ThermalLog readThermalArgs(const std::string& data, const std::string& target, const std::string& inputList);
+ThermalLog readThermalArgs(const std::string& data, const std::string& target, const std::string& inputList,
+                           const CsvReadOptions& csv = csvOptions());
 
 // One registration function per subcommand family, each in its own cmd_*.cpp.
 void registerSetupCommand(CLI::App& app);
@@ -58,5 +65,7 @@ void registerSimulateKinematicCommands(CLI::App& simulate);
 void registerSpcCommand(CLI::App& app);
 void registerThermalCommands(CLI::App& app);
 void registerDiagnoseCommands(CLI::App& app);
+/// `project new|add|list` (in cmd_project.cpp).
+void registerProjectCommands(CLI::App& app);
 
 }  // namespace metrofit::cli

@@ -75,7 +75,8 @@ struct Record {
 
 class Tokenizer {
  public:
-  Tokenizer(std::string_view text, const std::string& source) : t_(text), source_(source) {}
+  Tokenizer(std::string_view text, const std::string& source, char delimiter)
+      : t_(text), source_(source), delimiter_(delimiter) {}
 
   bool done() const { return pos_ >= t_.size(); }
 
@@ -170,7 +171,7 @@ class Tokenizer {
         ++line_;
         return rec;
       }
-      if (c == ',') {
+      if (c == delimiter_) {
         endField();
         anyContent = true;
         ++pos_;
@@ -221,12 +222,108 @@ class Tokenizer {
   }
   std::string_view t_;
   const std::string& source_;
+  char delimiter_;
   std::size_t pos_ = 0;
   long line_ = 1;
   bool seenHeader_ = false;
 };
 
+/// The first line that is neither blank nor a '#' comment (the header), without its line end.
+std::string_view headerLine(std::string_view text) {
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    const std::size_t end = text.find('\n', pos);
+    std::string_view line =
+        text.substr(pos, end == std::string_view::npos ? std::string_view::npos : end - pos);
+    pos = end == std::string_view::npos ? text.size() : end + 1;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    const std::string_view body = trimBlanks(line);
+    if (body.empty() || body.front() == '#') continue;
+    return line;
+  }
+  return {};
+}
+
+/// The delimiter of the header line: the most frequent of ',', ';', tab outside quotes (',' wins
+/// ties and is the answer when none occurs).
+char detectDelimiter(std::string_view text) {
+  const std::string_view header = headerLine(text);
+  std::size_t comma = 0, semicolon = 0, tab = 0;
+  bool inQuotes = false;
+  for (char c : header) {
+    if (c == '"') inQuotes = !inQuotes;
+    if (inQuotes) continue;
+    comma += c == ',';
+    semicolon += c == ';';
+    tab += c == '\t';
+  }
+  if (semicolon > comma && semicolon >= tab) return ';';
+  if (tab > comma && tab > semicolon) return '\t';
+  return ',';
+}
+
+/// True when `s` is a number written with `sep` as its one decimal separator:
+/// [+-] digits* sep digits+ [(e|E) [+-] digits+] with at least one digit before or after sep.
+bool isDecimalForm(std::string_view s, char sep) {
+  s = trimBlanks(s);
+  std::size_t i = 0;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  const std::size_t intStart = i;
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+  const bool intDigits = i > intStart;
+  if (i >= s.size() || s[i] != sep) return false;
+  ++i;
+  const std::size_t fracStart = i;
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+  if (!intDigits && i == fracStart) return false;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    const std::size_t expStart = i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    if (i == expStart) return false;
+  }
+  return i == s.size();
+}
+
 }  // namespace
+
+char parseCsvDelimiter(std::string_view text, const std::string& option) {
+  if (text == "auto") return 0;
+  if (text == "," || text == "comma") return ',';
+  if (text == ";" || text == "semicolon") return ';';
+  if (text == "tab" || text == "\t" || text == "\\t") return '\t';
+  throw OptionsError(ErrorContext{{}, 0, 0, option},
+                     "'" + printable(text) + "' is not a delimiter (use auto, ',', ';' or tab)");
+}
+
+char parseCsvDecimal(std::string_view text, const std::string& option) {
+  if (text == "auto") return 0;
+  if (text == "." || text == "point") return '.';
+  if (text == "," || text == "comma") return ',';
+  throw OptionsError(ErrorContext{{}, 0, 0, option},
+                     "'" + printable(text) + "' is not a decimal separator (use auto, '.' or ',')");
+}
+
+std::string csvDelimiterName(char delimiter) {
+  if (delimiter == 0) return "auto";
+  if (delimiter == '\t') return "tab";
+  return std::string(1, delimiter);
+}
+
+std::string csvDecimalName(char decimal) {
+  return decimal == 0 ? std::string("auto") : std::string(1, decimal);
+}
+
+std::pair<std::string, std::string> parseColumnMapping(std::string_view text, const std::string& option) {
+  const auto eq = text.find('=');
+  if (eq == std::string_view::npos || trimBlanks(text.substr(0, eq)).empty() ||
+      trimBlanks(text.substr(eq + 1)).empty()) {
+    throw OptionsError(ErrorContext{{}, 0, 0, option},
+                       "'" + printable(text) + "' is not ROLE=COLUMN (e.g. time_min=Zeit)");
+  }
+  return {std::string(trimBlanks(text.substr(0, eq))), std::string(trimBlanks(text.substr(eq + 1)))};
+}
 
 bool parseNumber(std::string_view text, double* out) {
   text = trimBlanks(text);
@@ -243,7 +340,7 @@ bool parseNumber(std::string_view text, double* out) {
   return true;
 }
 
-CsvTable parseCsv(std::string_view text, const std::string& source) {
+CsvTable parseCsv(std::string_view text, const std::string& source, const CsvReadOptions& options) {
   CsvTable table;
   table.source_ = source;
   if (text.size() >= 2 &&
@@ -258,7 +355,9 @@ CsvTable parseCsv(std::string_view text, const std::string& source) {
                      "the file is empty (expected a header row and data rows)");
   }
 
-  Tokenizer tok(text, source);
+  const char delimiter = options.dialect.delimiter ? options.dialect.delimiter : detectDelimiter(text);
+  table.dialect_.delimiter = delimiter;
+  Tokenizer tok(text, source, delimiter);
   bool haveHeader = false;
   long headerLine = 0;
   while (!tok.done()) {
@@ -280,14 +379,15 @@ CsvTable parseCsv(std::string_view text, const std::string& source) {
         if (!seen.insert(name).second)
           throw ParseError(at, "duplicate column name '" + printable(name) + "' in the header row");
       }
-      if (rec.fields.size() == 1 && rec.fields[0].find(';') != std::string::npos) {
+      if (rec.fields.size() == 1 && delimiter != ';' && rec.fields[0].find(';') != std::string::npos) {
         throw ParseError(ErrorContext{source, rec.line, 1, {}},
-                         "the header is separated by ';'; Metrofit reads comma-separated CSV with '.' as the "
-                         "decimal point");
+                         "the header is separated by ';' but the delimiter is '" +
+                             csvDelimiterName(delimiter) + "' (read it with delimiter ';' or auto)");
       }
-      if (rec.fields.size() == 1 && rec.fields[0].find('\t') != std::string::npos) {
+      if (rec.fields.size() == 1 && delimiter != '\t' && rec.fields[0].find('\t') != std::string::npos) {
         throw ParseError(ErrorContext{source, rec.line, 1, {}},
-                         "the header is separated by tabs; Metrofit reads comma-separated CSV");
+                         "the header is separated by tabs but the delimiter is '" +
+                             csvDelimiterName(delimiter) + "' (read it with delimiter tab or auto)");
       }
       table.header_ = std::move(rec.fields);
       continue;
@@ -305,11 +405,77 @@ CsvTable parseCsv(std::string_view text, const std::string& source) {
     throw ParseError(ErrorContext{source, 0, 0, {}},
                      "no header row (the file has only comments or blank lines)");
   }
+  table.dialect_.decimal = options.dialect.decimal ? options.dialect.decimal : table.detectDecimal();
+  table.mapColumns(options.columnMap);
   return table;
 }
 
-CsvTable readCsvFile(const std::string& path) {
-  return parseCsv(readFile(path), path);
+CsvTable readCsvFile(const std::string& path, const CsvReadOptions& options) {
+  return parseCsv(readFile(path), displayPath(path), options);
+}
+
+char CsvTable::detectDecimal() const {
+  if (dialect_.delimiter == ',') return '.';
+  std::size_t count[2] = {0, 0};  // '.', ','
+  std::size_t firstRow[2] = {0, 0}, firstCol[2] = {0, 0};
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    for (std::size_t c = 0; c < rows_[r].size(); ++c) {
+      for (int k = 0; k < 2; ++k) {
+        if (!isDecimalForm(rows_[r][c], k == 0 ? '.' : ',')) continue;
+        if (count[k]++ == 0) {
+          firstRow[k] = r;
+          firstCol[k] = c;
+        }
+      }
+    }
+  }
+  if (count[1] > count[0]) return ',';
+  if (count[0] > count[1] || count[0] == 0) return '.';
+  const std::size_t later =
+      firstRow[0] > firstRow[1] || (firstRow[0] == firstRow[1] && firstCol[0] > firstCol[1]);
+  const std::size_t other = 1 - later;
+  failAt(firstRow[later], firstCol[later],
+         "'" + printable(rows_[firstRow[later]][firstCol[later]]) + "' uses '" + (later ? "," : ".") +
+             "' as the decimal separator but line " + std::to_string(lines_[firstRow[other]]) + " uses '" +
+             (other ? "," : ".") + "' equally often; give the decimal separator (decimal '.' or ',')");
+}
+
+void CsvTable::mapColumns(const std::vector<std::pair<std::string, std::string>>& columnMap) {
+  std::vector<std::string> renamed = header_;
+  std::vector<bool> mapped(header_.size(), false);
+  for (const auto& [role, column] : columnMap) {
+    const int from = columnIndex(column);
+    if (from < 0) {
+      std::string have;
+      for (const auto& h : header_) have += (have.empty() ? "" : ", ") + h;
+      throw ValidationError(
+          ErrorContext{source_, 0, 0, role},
+          "mapped to column '" + column + "', which the file does not have (it has: " + have + ")");
+    }
+    if (mapped[static_cast<std::size_t>(from)]) {
+      throw ValidationError(
+          ErrorContext{source_, 0, 0, role},
+          "column '" + column + "' is already mapped to '" + renamed[static_cast<std::size_t>(from)] + "'");
+    }
+    const int clash = columnIndex(role);
+    if (clash >= 0 && clash != from && !mapped[static_cast<std::size_t>(clash)]) {
+      bool remapped = false;  // the clashing column is itself mapped to another role: fine
+      for (const auto& [r2, c2] : columnMap) remapped |= c2 == role && r2 != role;
+      if (!remapped) {
+        throw ValidationError(ErrorContext{source_, 0, 0, role},
+                              "the file already has a column '" + role + "'; mapping '" + column +
+                                  "' to it would hide that column (map or rename it too)");
+      }
+    }
+    renamed[static_cast<std::size_t>(from)] = role;
+    mapped[static_cast<std::size_t>(from)] = true;
+  }
+  std::unordered_set<std::string> seen;
+  for (const auto& name : renamed) {
+    if (!seen.insert(name).second)
+      throw ValidationError(ErrorContext{source_, 0, 0, name}, "two columns are mapped to this role");
+  }
+  header_ = std::move(renamed);
 }
 
 int CsvTable::columnIndex(std::string_view name) const {
@@ -343,7 +509,20 @@ void CsvTable::failAt(std::size_t row, std::size_t col, const std::string& what)
 double CsvTable::number(std::size_t row, std::size_t col) const {
   double v = 0.0;
   const std::string& s = rows_[row][col];
-  if (parseNumber(s, &v)) return v;
+  if (dialect_.decimal == ',') {
+    if (s.find('.') == std::string::npos) {
+      std::string t = s;
+      std::replace(t.begin(), t.end(), ',', '.');
+      if (parseNumber(t, &v)) return v;
+    } else if (isDecimalForm(s, '.') || parseNumber(s, &v)) {
+      failAt(row, col,
+             "'" + printable(s) +
+                 "' is not a number in this file: its decimal separator is ',' (read it with "
+                 "decimal '.' if the file uses '.')");
+    }
+  } else if (parseNumber(s, &v)) {
+    return v;
+  }
   if (trimBlanks(s).empty()) failAt(row, col, "empty value where a number is expected");
   std::string low;
   for (char c : trimBlanks(s)) low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -351,8 +530,14 @@ double CsvTable::number(std::size_t row, std::size_t col) const {
       low == "-infinity") {
     failAt(row, col, "'" + printable(s) + "' is not a finite number");
   }
-  if (s.find(',') != std::string::npos ||
-      (s.find('.') == std::string::npos && s.find(';') != std::string::npos)) {
+  if (dialect_.decimal == '.' && dialect_.delimiter != ',' && isDecimalForm(s, ',')) {
+    failAt(row, col,
+           "'" + printable(s) +
+               "' is not a number in this file: its decimal separator is '.' (read it with "
+               "decimal ',' if the file uses ',')");
+  }
+  if (dialect_.decimal == '.' && (s.find(',') != std::string::npos ||
+                                  (s.find('.') == std::string::npos && s.find(';') != std::string::npos))) {
     failAt(row, col, "'" + printable(s) + "' is not a number (use '.' as the decimal point)");
   }
   failAt(row, col, "'" + printable(s) + "' is not a number");

@@ -4,6 +4,20 @@
 // before the header, `\n` or `\r\n` line ends, `.` as the decimal point, RFC 4180 quoting
 // ("a ""quoted"", field" and line breaks inside quotes). Blank lines are skipped.
 //
+// Dialects (CONTRACT.md "Own data in a project": every reader takes --delimiter / --decimal):
+// the delimiter may be ',', ';' or a tab and the decimal separator '.' or ','. CsvDialect's
+// zero members mean "detect" (the default):
+//   * delimiter: the one of ',', ';', tab that occurs most often (outside quotes) in the header
+//     line, ',' on a tie or when none occurs; so "time_min;T1;disp_z_um" is read as ';'-separated,
+//     as German and Polish spreadsheets and CMM exports write it;
+//   * decimal: '.' in a ','-separated file (a decimal comma would split the field); otherwise the
+//     form most data cells use among those that are numbers in exactly one of the two forms
+//     ("20,5" is ',' and "20.5" is '.'; "1.234,5" and "12" decide nothing), '.' when there is
+//     none, and a ParseError naming a cell of each form on a tie.
+// With decimal ',' a number must not contain '.' (no thousands separators); number() says so.
+// CsvReadOptions::columnMap renames the file's own columns to the role names the readers look for
+// (CONTRACT.md "--map ROLE=COLUMN"), so every reader built on CsvTable takes mapped files.
+//
 // Every malformed input gives a ParseError whose message names the file, the physical line and
 // the field (column) and says what is wrong: UTF-16 / binary / invalid UTF-8 content, an
 // unterminated quote, text after a closing quote, a stray quote, a ragged row, an empty or
@@ -12,9 +26,39 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace metrofit {
+
+/// Delimiter and decimal separator of a CSV file; 0 = detect (see the header comment).
+struct CsvDialect {
+  char delimiter = 0;  ///< ',', ';', '\t' or 0
+  char decimal = 0;    ///< '.', ',' or 0
+  bool operator==(const CsvDialect&) const = default;
+};
+
+/// "auto" -> 0, "," (or "comma"), ";" ("semicolon"), "tab" (or a tab character) -> the character.
+/// OptionsError naming `option` for anything else.
+char parseCsvDelimiter(std::string_view text, const std::string& option = "--delimiter");
+/// "auto" -> 0, "." (or "point"), "," (or "comma") -> the character; OptionsError otherwise.
+char parseCsvDecimal(std::string_view text, const std::string& option = "--decimal");
+/// The option spelling of a delimiter / decimal character: "auto", ",", ";", "tab", ".".
+std::string csvDelimiterName(char delimiter);
+std::string csvDecimalName(char decimal);
+
+/// How to read one CSV file: its dialect and the mapping of roles to the file's own columns.
+struct CsvReadOptions {
+  CsvDialect dialect;
+  /// (role, column): the file's column `column` is read as `role` (e.g. {"time_min", "Zeit"}).
+  std::vector<std::pair<std::string, std::string>> columnMap;
+  bool operator==(const CsvReadOptions&) const = default;
+};
+
+/// Parses "ROLE=COLUMN" (split at the first '='); OptionsError naming `option` when either side is
+/// empty.
+std::pair<std::string, std::string> parseColumnMapping(std::string_view text,
+                                                       const std::string& option = "--map");
 
 class CsvTable {
  public:
@@ -25,6 +69,13 @@ class CsvTable {
   const std::vector<std::string>& comments() const { return comments_; }  ///< '#' lines, without '#'
   std::size_t rowCount() const { return rows_.size(); }
   std::size_t columnCount() const { return header_.size(); }
+  /// The dialect the file was read with (detection resolved: both members are set).
+  const CsvDialect& dialect() const { return dialect_; }
+
+  /// Renames the file's column `column` to `role` for every (role, column) pair. ValidationError
+  /// naming the file and the role when `column` is not in the header, or when `role` already names
+  /// another column of the file (that column would be hidden), or two roles name one column.
+  void mapColumns(const std::vector<std::pair<std::string, std::string>>& columnMap);
 
   /// Column index by exact name, or -1.
   int columnIndex(std::string_view name) const;
@@ -36,7 +87,8 @@ class CsvTable {
   const std::string& cell(std::size_t row, std::size_t col) const { return rows_[row][col]; }
   /// Physical line (1-based) where data row `row` starts.
   long lineOf(std::size_t row) const { return lines_[row]; }
-  /// Strict finite number, or ParseError "file:line:col: field 'name': 'abc' is not a number".
+  /// Strict finite number in the file's decimal form, or ParseError
+  /// "file:line:col: field 'name': 'abc' is not a number".
   double number(std::size_t row, std::size_t col) const;
   std::vector<double> numericColumn(std::size_t col) const;
   std::vector<double> numericColumn(std::string_view name) const {
@@ -47,18 +99,22 @@ class CsvTable {
   [[noreturn]] void failAt(std::size_t row, std::size_t col, const std::string& what) const;
 
  private:
-  friend CsvTable parseCsv(std::string_view, const std::string&);
+  friend CsvTable parseCsv(std::string_view, const std::string&, const CsvReadOptions&);
+  char detectDecimal() const;
   std::string source_;
+  CsvDialect dialect_{',', '.'};
   std::vector<std::string> comments_;
   std::vector<std::string> header_;
   std::vector<std::vector<std::string>> rows_;
   std::vector<long> lines_;
 };
 
-/// Parses CSV text; `source` names the file in error messages.
-CsvTable parseCsv(std::string_view text, const std::string& source);
-/// Reads and parses a CSV file (FileError if it cannot be read).
-CsvTable readCsvFile(const std::string& path);
+/// Parses CSV text in the given dialect (detected where 0) and applies the column mapping;
+/// `source` names the file in error messages.
+CsvTable parseCsv(std::string_view text, const std::string& source, const CsvReadOptions& options = {});
+/// Reads and parses a CSV file (FileError if it cannot be read); "-" reads standard input
+/// (readFile) and is named "<stdin>" in messages.
+CsvTable readCsvFile(const std::string& path, const CsvReadOptions& options = {});
 
 /// Parses a whole string as a finite double ('.' decimal, optional surrounding blanks).
 /// Returns false for anything else (empty, trailing text, nan, inf, decimal comma).

@@ -7,6 +7,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <mutex>
+#include <optional>
 #include <string>
 
 #include "core/common/error.h"
@@ -41,8 +43,36 @@ class Fd {
 
 }  // namespace
 
+std::string displayPath(const std::string& path) {
+  return path == "-" ? std::string("<stdin>") : path;
+}
+
 std::string readFile(const std::string& path, std::size_t maxBytes) {
   if (path.empty()) fileFail(path, "no file name given", 0);
+  if (path == "-") {
+    static std::mutex mutex;
+    static std::optional<std::string> stdinText;
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (!stdinText) {
+      std::string out;
+      char buf[1 << 16];
+      for (;;) {
+        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
+        if (n < 0) {
+          if (errno == EINTR) continue;
+          fileFail(displayPath(path), "cannot read standard input", errno);
+        }
+        if (n == 0) break;
+        out.append(buf, static_cast<std::size_t>(n));
+        if (out.size() > maxBytes)
+          fileFail(displayPath(path), "input is larger than " + std::to_string(maxBytes >> 20) + " MiB", 0);
+      }
+      stdinText = std::move(out);
+    }
+    if (stdinText->size() > maxBytes)
+      fileFail(displayPath(path), "input is larger than " + std::to_string(maxBytes >> 20) + " MiB", 0);
+    return *stdinText;
+  }
   Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (fd.get() < 0) {
     const int err = errno;

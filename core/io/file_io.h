@@ -10,8 +10,13 @@
 namespace metrofit {
 
 /// Reads a whole file; FileError naming the path when it is missing, a folder, unreadable or
-/// larger than maxBytes.
+/// larger than maxBytes. The path "-" is standard input (CONTRACT.md: `-` as a file name), read to
+/// its end on the first call and kept, so later reads of "-" in the same process (a reader that
+/// sniffs the format, then parses) get the same text.
 std::string readFile(const std::string& path, std::size_t maxBytes = std::size_t{1} << 30);
+
+/// The name of a path in messages: "<stdin>" for "-", else the path itself.
+std::string displayPath(const std::string& path);
 
 /// Writes `content` to `path` atomically (see above); FileError on failure (the target is untouched
 /// and no temporary file is left behind). A target that exists and is not a regular file (a device

@@ -28,8 +28,8 @@ MeasuredPath measuredPathFromCsv(const CsvTable& t) {
   return p;
 }
 
-MeasuredPath readMeasuredPath(const std::string& path) {
-  return measuredPathFromCsv(readCsvFile(path));
+MeasuredPath readMeasuredPath(const std::string& path, const CsvReadOptions& csv) {
+  return measuredPathFromCsv(readCsvFile(path, csv));
 }
 
 std::string measuredPathToCsv(const MeasuredPath& p) {
@@ -51,8 +51,8 @@ NominalPath nominalPathFromCsv(const CsvTable& t) {
   return p;
 }
 
-NominalPath readNominalPath(const std::string& path) {
-  return nominalPathFromCsv(readCsvFile(path));
+NominalPath readNominalPath(const std::string& path, const CsvReadOptions& csv) {
+  return nominalPathFromCsv(readCsvFile(path, csv));
 }
 
 std::string nominalPathToCsv(const std::vector<Eigen::Vector2d>& points) {

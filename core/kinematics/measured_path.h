@@ -10,6 +10,8 @@
 
 #include <Eigen/Core>
 
+#include "core/io/csv.h"
+
 namespace metrofit {
 class CsvTable;
 
@@ -24,7 +26,7 @@ struct MeasuredPath {
 };
 
 MeasuredPath measuredPathFromCsv(const CsvTable& table);
-MeasuredPath readMeasuredPath(const std::string& path);
+MeasuredPath readMeasuredPath(const std::string& path, const CsvReadOptions& csv = {});
 /// CSV text with the header x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm (shortest round-trip numbers).
 std::string measuredPathToCsv(const MeasuredPath& path);
 
@@ -35,7 +37,7 @@ struct NominalPath {
 };
 
 NominalPath nominalPathFromCsv(const CsvTable& table);
-NominalPath readNominalPath(const std::string& path);
+NominalPath readNominalPath(const std::string& path, const CsvReadOptions& csv = {});
 std::string nominalPathToCsv(const std::vector<Eigen::Vector2d>& points);
 
 /// CSV text x_cmd_mm,y_cmd_mm of compensated references (shortest round-trip numbers).

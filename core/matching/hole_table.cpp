@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/common/error.h"
+#include "core/io/csv.h"
 #include "core/io/file_io.h"
 
 namespace metrofit {
@@ -219,13 +220,14 @@ HoleTable holeTableFromText(const std::string& text, const std::string& source, 
 }
 
 HoleTable readHoleTable(const std::string& path, std::size_t minPoints) {
-  return holeTableFromText(readFile(path), path, minPoints);
+  return holeTableFromText(readFile(path), displayPath(path), minPoints);
 }
 
-ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minPoints) {
+ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minPoints,
+                                       const CsvReadOptions& csv) {
   const std::string text = readFile(path);
-  if (looksLikeHoleTable(text)) return holeTableFromText(text, path, minPoints).points;
-  return readProbePoints(path, minPoints);
+  if (looksLikeHoleTable(text)) return holeTableFromText(text, displayPath(path), minPoints).points;
+  return probePointsFromCsv(parseCsv(text, displayPath(path), csv), minPoints);
 }
 
 }  // namespace metrofit

@@ -47,7 +47,9 @@ HoleTable holeTableFromText(const std::string& text, const std::string& source, 
 HoleTable readHoleTable(const std::string& path, std::size_t minPoints = 3);
 
 /// Probe points from a file in any accepted form, detected by content: a PC-DMIS hole table
-/// (looksLikeHoleTable) or the CSV of CONTRACT.md (readProbePoints).
-ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minPoints = 3);
+/// (looksLikeHoleTable) or the CSV of CONTRACT.md in the dialect `csv` (probePointsFromCsv). The file
+/// is read once, so "-" (standard input) works.
+ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minPoints = 3,
+                                       const CsvReadOptions& csv = {});
 
 }  // namespace metrofit

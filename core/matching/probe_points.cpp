@@ -76,8 +76,8 @@ ProbePointSet probePointsFromCsv(const CsvTable& t, std::size_t minPoints) {
   return set;
 }
 
-ProbePointSet readProbePoints(const std::string& path, std::size_t minPoints) {
-  return probePointsFromCsv(readCsvFile(path), minPoints);
+ProbePointSet readProbePoints(const std::string& path, std::size_t minPoints, const CsvReadOptions& csv) {
+  return probePointsFromCsv(readCsvFile(path, csv), minPoints);
 }
 
 std::string probePointsToCsv(const ProbePointSet& set) {

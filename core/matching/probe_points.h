@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "core/io/csv.h"
+
 namespace metrofit {
 class CsvTable;
 
@@ -37,7 +39,8 @@ struct ProbePointSet {
 /// Reads a probe point table; validates duplicate ids, non-finite numbers, zero / non-unit normals
 /// (|n| must be within 1e-3 of 1) and at least `minPoints` points.
 ProbePointSet probePointsFromCsv(const CsvTable& table, std::size_t minPoints = 3);
-ProbePointSet readProbePoints(const std::string& path, std::size_t minPoints = 3);
+ProbePointSet readProbePoints(const std::string& path, std::size_t minPoints = 3,
+                              const CsvReadOptions& csv = {});
 std::string probePointsToCsv(const ProbePointSet& set);
 
 }  // namespace metrofit

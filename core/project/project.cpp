@@ -34,6 +34,13 @@ nlohmann::json Project::toJson() const {
     nlohmann::json o{{"id", d.id}, {"kind", d.kind}, {"path", d.path}};
     if (!d.description.empty()) o["description"] = d.description;
     if (!d.licence.empty()) o["licence"] = d.licence;
+    if (d.csv.dialect.delimiter) o["delimiter"] = csvDelimiterName(d.csv.dialect.delimiter);
+    if (d.csv.dialect.decimal) o["decimal"] = csvDecimalName(d.csv.dialect.decimal);
+    if (!d.csv.columnMap.empty()) {
+      nlohmann::json map = nlohmann::json::object();
+      for (const auto& [role, column] : d.csv.columnMap) map[role] = column;
+      o["map"] = std::move(map);
+    }
     j["datasets"].push_back(std::move(o));
   }
   j["studies"] = studies;
@@ -72,6 +79,21 @@ Project Project::fromJson(const nlohmann::json& j, const std::string& source) {
       if (ref.path.empty()) d.fail("must not be empty", "path");
       ref.description = d.string("description", "");
       ref.licence = d.string("licence", "");
+      try {
+        if (d.has("delimiter"))
+          ref.csv.dialect.delimiter = parseCsvDelimiter(d.string("delimiter"), "delimiter");
+        if (d.has("decimal")) ref.csv.dialect.decimal = parseCsvDecimal(d.string("decimal"), "decimal");
+      } catch (const OptionsError& e) {
+        d.fail(e.detail(), e.context().field);
+      }
+      if (d.has("map")) {
+        const JsonReader map = d.object("map");
+        for (const auto& [role, column] : map.json().items()) {
+          if (role.empty() || !column.is_string() || column.get<std::string>().empty())
+            d.fail("must map role names to column names (strings)", "map");
+          ref.csv.columnMap.emplace_back(role, column.get<std::string>());
+        }
+      }
       p.datasets.push_back(std::move(ref));
     }
   }

@@ -7,17 +7,23 @@
 //   "format": "metrofit-project", "version": 1,
 //   "name": "Demo cell", "description": "...",
 //   "datasets": [ {"id": "thermal", "kind": "thermal_log", "path": "data/thermal_demo.csv",
-//                  "description": "..."} ],
+//                  "description": "...",
+//                  "delimiter": ";", "decimal": ",", "map": {"time_min": "Zeit"}} ],
 //   "studies": { "setup": {...}, "matching": {...}, "kinematics": {...}, "thermal": {...},
 //                "diagnosis": {...} },
 //   "results": { ... }
 // }
 // Dataset paths are relative to the project file's folder (absolute paths are kept as they are).
+// "delimiter" (",", ";", "tab"), "decimal" (".", ",") and "map" (role -> the file's column) say how a
+// CSV dataset is read (core/io/csv.h); absent means auto-detection and no mapping, so projects written
+// before them read as before. core/project/datasets.h adds and lists datasets.
 // Study objects are owned by the method that uses them; unknown keys are preserved on save.
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "core/io/csv.h"
 
 namespace metrofit::machine {
 struct MachineDefinition;  // core/machine/machine.h
@@ -34,6 +40,10 @@ inline constexpr const char* kCmmReport = "cmm_report";
 inline constexpr const char* kSetupModel = "setup_model";
 /// A CSV of measured feature values in production order (e.g. bore diameters), charted by SPC.
 inline constexpr const char* kFeatureSeries = "feature_series";
+/// A DMIS output file (measured features and tolerances).
+inline constexpr const char* kDmis = "dmis";
+/// A PC-DMIS hole-table report (core/matching/hole_table.h).
+inline constexpr const char* kHoleTable = "hole_table";
 }  // namespace dataset_kind
 
 /// The studies of a project, in navigator order.
@@ -52,6 +62,7 @@ struct DatasetRef {
   std::string path;  ///< relative to the project folder, or absolute
   std::string description;
   std::string licence;  ///< e.g. "MIT (CAIVIAC), see LICENSE-MIT.txt" for real data
+  CsvReadOptions csv;   ///< how a CSV dataset is read: dialect (0 = detect) and column mapping
   bool operator==(const DatasetRef&) const = default;
 };
 

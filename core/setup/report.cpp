@@ -216,8 +216,8 @@ Measurements cmmReportFromCsv(const CsvTable& t, const Model& model) {
   return m;
 }
 
-Measurements readCmmReport(const std::string& path, const Model& model) {
-  return cmmReportFromCsv(readCsvFile(path), model);
+Measurements readCmmReport(const std::string& path, const Model& model, const CsvReadOptions& csv) {
+  return cmmReportFromCsv(readCsvFile(path, csv), model);
 }
 
 bool looksLikeDmis(std::string_view text) {
@@ -230,12 +230,67 @@ bool looksLikeDmis(std::string_view text) {
     pos = nl == std::string_view::npos ? text.size() : nl + 1;
     if (line.empty() || line.rfind("$$", 0) == 0) continue;
     const std::string u = upper(line);
-    return u.rfind("DMISMN", 0) == 0 || u.rfind("DMISMD", 0) == 0;
+    // Program files start with DMISMN (DMISMD for a module); CMM output files often with FILNAM.
+    return u.rfind("DMISMN", 0) == 0 || u.rfind("DMISMD", 0) == 0 || u.rfind("FILNAM", 0) == 0;
   }
   return false;
 }
 
-Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model) {
+DmisTaMeaning parseDmisTaMeaning(const std::string& text, const std::string& option) {
+  if (text == "auto") return DmisTaMeaning::Auto;
+  if (text == "deviation") return DmisTaMeaning::Deviation;
+  if (text == "actual") return DmisTaMeaning::Actual;
+  throw OptionsError(ErrorContext{{}, 0, 0, option}, "'" + text + "' is not auto, deviation or actual");
+}
+
+namespace {
+
+/// A feature statement F(label) / FA(label): its position and, for round features, its diameter.
+struct DmisFeature {
+  std::array<double, 3> position{};
+  std::optional<double> diameter;
+  long line = 0;
+};
+
+/// A tolerance statement T(label) / TA(label).
+struct DmisTolerance {
+  std::string type;                             ///< DISTB, DIAM, CORTOL, ...
+  double value = 0.0;                           ///< TA: the first value (mm)
+  std::optional<double> nominal, lower, upper;  ///< T: NOMINL and limits (mm)
+  std::string status;  ///< TA: INTOL, OUTOL or OUTTOL (upper case), empty when absent
+  long line = 0;
+};
+
+/// Position of the numbers after CART in FEAT/type,[INNER|OUTER,]CART,x,y,z,...; ParseError otherwise.
+std::size_t cartIndex(const Statement& s, const std::string& source, const std::string& field) {
+  std::size_t k = 1;
+  if (k < s.minor.size() && (upper(s.minor[k]) == "INNER" || upper(s.minor[k]) == "OUTER")) ++k;
+  const std::string coords = k < s.minor.size() ? upper(s.minor[k]) : std::string();
+  if (coords == "POL")
+    throw ParseError(ErrorContext{source, s.line, 0, field},
+                     "polar (POL) coordinates are not supported; use CART");
+  if (coords != "CART")
+    throw ParseError(ErrorContext{source, s.line, 0, field},
+                     "expected CART after the feature type" + std::string(k == 2 ? " and INNER/OUTER" : "") +
+                         ", found '" + (k < s.minor.size() ? s.minor[k] : std::string()) + "'");
+  return k + 1;
+}
+
+/// Index of the diameter among the numbers after CART, by feature type (DMIS 5.3 FEAT syntax).
+std::optional<std::size_t> diameterIndex(const std::string& type) {
+  if (type == "CIRCLE" || type == "CYLNDR") return 6;  // x,y,z,i,j,k,diam
+  if (type == "SPHERE") return 3;                      // x,y,z,diam
+  return std::nullopt;
+}
+
+bool isDiameterType(const std::string& type) {
+  return type == "DIAM" || type == "RAD";
+}
+
+}  // namespace
+
+Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model,
+                                const DmisOptions& options) {
   const auto statements = dmisStatements(text, source);
   // Dimensions by upper-case DMIS label.
   std::map<std::string, std::size_t> byLabel;
@@ -244,13 +299,8 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
 
   double unit = 1.0;  // mm per file unit
   std::string part = baseName(source);
-  struct Found {
-    double value = 0.0;
-    long line = 0;
-  };
-  std::map<std::size_t, Found> ta;                                        // tolerance actuals (deviation, mm)
-  std::map<std::size_t, std::array<double, 3>> nominalF;                  // F(label) positions
-  std::map<std::size_t, std::pair<std::array<double, 3>, long>> actualF;  // FA(label)
+  std::map<std::size_t, DmisTolerance> tol, ta;  // T(label), TA(label)
+  std::map<std::size_t, DmisFeature> nominalF, actualF;
   std::map<std::pair<std::string, std::size_t>, long> firstLine;
   const int ax = axisIndex(model.axis);
 
@@ -291,32 +341,29 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
       if (s.major != "FEAT") continue;
       if (s.minor.size() < 2)
         throw ParseError(ErrorContext{source, s.line, 0, field}, "expected FEAT/type,CART,x,y,z,...");
-      const std::string coords = upper(s.minor[1]);
-      if (coords == "POL")
-        throw ParseError(ErrorContext{source, s.line, 0, field},
-                         "polar (POL) coordinates are not supported; use CART");
-      if (coords != "CART")
-        throw ParseError(ErrorContext{source, s.line, 0, field},
-                         "expected CART after the feature type, found '" + s.minor[1] + "'");
-      std::array<double, 3> p{};
+      const std::size_t c = cartIndex(s, source, field);
+      DmisFeature f;
+      f.line = s.line;
       for (std::size_t k = 0; k < 3; ++k)
-        p[k] = unit * dmisNumber(s, 2 + k, source, std::string(1, "xyz"[k]) + " coordinate");
+        f.position[k] = unit * dmisNumber(s, c + k, source, std::string(1, "xyz"[k]) + " coordinate");
+      if (const auto di = diameterIndex(upper(s.minor[0])); di && c + *di < s.minor.size())
+        f.diameter = unit * dmisNumber(s, c + *di, source, "diameter");
       firstLine.emplace(dupKey, s.line);
-      if (s.lhsKind == "F")
-        nominalF[q] = p;
-      else
-        actualF[q] = {p, s.line};
+      (s.lhsKind == "F" ? nominalF : actualF)[q] = f;
     } else if (s.lhsKind == "T" || s.lhsKind == "TA") {
       if (s.major != "TOL") continue;
       if (s.minor.empty()) throw ParseError(ErrorContext{source, s.line, 0, field}, "expected TOL/type,...");
-      const std::string type = upper(s.minor[0]);
-      const bool cortol = type == "CORTOL";
-      if (!cortol && type != "DISTB" && type != "DISTWRT" && type != "DIAM" && type != "RAD" &&
-          type != "WIDTH") {
+      DmisTolerance t;
+      t.line = s.line;
+      t.type = upper(s.minor[0]);
+      const bool cortol = t.type == "CORTOL";
+      const bool profile = t.type == "PROFP" || t.type == "PROFL" || t.type == "PROFS";
+      if (!cortol && !profile && t.type != "DISTB" && t.type != "DISTWRT" && t.type != "DIAM" &&
+          t.type != "RAD" && t.type != "WIDTH") {
         throw ParseError(ErrorContext{source, s.line, 0, field},
                          "tolerance type '" + s.minor[0] +
                              "' is not supported for a dimension (use DISTB, DISTWRT, "
-                             "DIAM, RAD, WIDTH or CORTOL)");
+                             "DIAM, RAD, WIDTH, CORTOL or PROFP)");
       }
       std::size_t first = 1;
       if (cortol) {
@@ -330,13 +377,17 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
       }
       firstLine.emplace(dupKey, s.line);
       if (s.lhsKind == "TA") {
-        ta[q] = {unit * dmisNumber(s, first, source, "deviation"), s.line};
+        t.value = unit * dmisNumber(s, first, source, "deviation");
+        for (std::size_t k = first + 1; k < s.minor.size(); ++k) {
+          const std::string w = upper(s.minor[k]);
+          if (w == "INTOL" || w == "OUTOL" || w == "OUTTOL") t.status = w;
+        }
+        ta[q] = t;
         continue;
       }
       // Tolerance definition: check against the model.
-      std::optional<double> nominal;
       if (!cortol && first < s.minor.size() && upper(s.minor[first]) == "NOMINL") {
-        nominal = unit * dmisNumber(s, first + 1, source, "nominal");
+        t.nominal = unit * dmisNumber(s, first + 1, source, "nominal");
         first += 2;
       }
       const double lo = unit * dmisNumber(s, first, source, "lower tolerance");
@@ -346,11 +397,14 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
                               "tolerance " + fmt(lo) + " / " + fmt(up) + " differs from the model's limits " +
                                   fmt(d.lower) + " / " + fmt(d.upper) + " of '" + d.id + "'");
       }
-      if (nominal && d.nominal && std::abs(*nominal - *d.nominal) > kLimitTolMm) {
+      if (t.nominal && d.nominal && std::abs(*t.nominal - *d.nominal) > kLimitTolMm) {
         throw ValidationError(ErrorContext{source, s.line, 0, field},
-                              "nominal " + fmt(*nominal) + " differs from the model's nominal " +
+                              "nominal " + fmt(*t.nominal) + " differs from the model's nominal " +
                                   fmt(*d.nominal) + " of '" + d.id + "'");
       }
+      t.lower = lo;
+      t.upper = up;
+      tol[q] = t;
     }
   }
 
@@ -358,29 +412,80 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
   m.sources.push_back(source);
   addPart(m, part);
   for (std::size_t q = 0; q < model.dimensions.size(); ++q) {
-    if (const auto it = ta.find(q); it != ta.end()) {
-      m.rows.push_back({part, 0.0, q, it->second.value, source, it->second.line});
+    const Dimension& d = model.dimensions[q];
+    const auto a = actualF.find(q);
+    const auto n = nominalF.find(q);
+    const auto t = ta.find(q);
+    const auto def = tol.find(q);
+    // 1. Nominal and actual feature: the deviation from them (a diameter for DIAM / RAD tolerances).
+    if (a != actualF.end() && n != nominalF.end()) {
+      const std::string type = t != ta.end()      ? t->second.type
+                               : def != tol.end() ? def->second.type
+                                                  : std::string();
+      double dev =
+          a->second.position[static_cast<std::size_t>(ax)] - n->second.position[static_cast<std::size_t>(ax)];
+      if (isDiameterType(type) && a->second.diameter && n->second.diameter)
+        dev = (*a->second.diameter - *n->second.diameter) * (type == "RAD" ? 0.5 : 1.0);
+      m.rows.push_back({part, 0.0, q, dev, source, a->second.line});
       continue;
     }
-    const auto a = actualF.find(q);
-    if (a == actualF.end()) continue;  // finish() reports the missing dimension
-    const auto n = nominalF.find(q);
-    if (n == nominalF.end()) {
-      throw ValidationError(
-          ErrorContext{source, a->second.second, 0, "FA(" + model.dimensions[q].dmisLabel() + ")"},
-          "feature actual without its nominal F(" + model.dimensions[q].dmisLabel() +
-              ") and without a tolerance actual TA(" + model.dimensions[q].dmisLabel() + ")");
+    // 2. The tolerance actual: a deviation or the actual value, as the options say (auto: the one that
+    //    agrees with INTOL / OUTOL, else the one nearer the nominal's scale).
+    if (t != ta.end()) {
+      const DmisTolerance& v = t->second;
+      const std::string field = "TA(" + d.dmisLabel() + ")";
+      std::optional<double> nominal =
+          def != tol.end() && def->second.nominal ? def->second.nominal : d.nominal;
+      if (n != nominalF.end() && isDiameterType(v.type) && n->second.diameter)
+        nominal = *n->second.diameter * (v.type == "RAD" ? 0.5 : 1.0);
+      const double lo = def != tol.end() ? *def->second.lower : d.lower;
+      const double up = def != tol.end() ? *def->second.upper : d.upper;
+      const double sign = options.signFollowsNominal && nominal && *nominal < 0.0 ? -1.0 : 1.0;
+      auto asDeviation = [&] { return sign * v.value; };
+      auto asActual = [&] {
+        if (!nominal)
+          throw ValidationError(
+              ErrorContext{source, v.line, 0, field},
+              "the tolerance actual is read as the actual value, but neither the file (T with "
+              "NOMINL, or F) nor the model gives a nominal");
+        return v.value - *nominal;
+      };
+      auto inTolerance = [&](double dev) { return dev >= lo - 1e-9 && dev <= up + 1e-9; };
+      const bool saysIn = v.status == "INTOL";
+      const bool hasStatus = !v.status.empty();
+      double dev = 0.0;
+      if (options.taMeaning == DmisTaMeaning::Deviation) {
+        dev = asDeviation();
+      } else if (options.taMeaning == DmisTaMeaning::Actual) {
+        dev = asActual();
+      } else {
+        // Auto: an actual value lies near the nominal, a deviation near zero.
+        const bool nearNominal = nominal && std::abs(v.value - *nominal) < std::abs(v.value);
+        dev = nearNominal ? asActual() : asDeviation();
+      }
+      if (hasStatus && inTolerance(dev) != saysIn) {
+        throw ValidationError(
+            ErrorContext{source, v.line, 0, field},
+            "the deviation " + fmt(dev) + " mm is " + (inTolerance(dev) ? "inside" : "outside") +
+                " the tolerance " + fmt(lo) + " / " + fmt(up) + " but the file says " + v.status +
+                "; read the tolerance actual as " +
+                (options.taMeaning == DmisTaMeaning::Actual ? "a deviation" : "the actual value") +
+                " or with the other sign convention");
+      }
+      m.rows.push_back({part, 0.0, q, dev, source, v.line});
+      continue;
     }
-    m.rows.push_back({part, 0.0, q,
-                      a->second.first[static_cast<std::size_t>(ax)] - n->second[static_cast<std::size_t>(ax)],
-                      source, a->second.second});
+    if (a == actualF.end()) continue;  // finish() reports the missing dimension
+    throw ValidationError(ErrorContext{source, a->second.line, 0, "FA(" + d.dmisLabel() + ")"},
+                          "feature actual without its nominal F(" + d.dmisLabel() +
+                              ") and without a tolerance actual TA(" + d.dmisLabel() + ")");
   }
   finish(m, model, source);
   return m;
 }
 
-Measurements readDmisReport(const std::string& path, const Model& model) {
-  return dmisReportFromText(readFile(path, 256u << 20), path, model);
+Measurements readDmisReport(const std::string& path, const Model& model, const DmisOptions& options) {
+  return dmisReportFromText(readFile(path, 256u << 20), displayPath(path), model, options);
 }
 
 Measurements mergeMeasurements(const std::vector<Measurements>& sets, const Model& model) {
@@ -407,14 +512,15 @@ Measurements mergeMeasurements(const std::vector<Measurements>& sets, const Mode
   return out;
 }
 
-Measurements readMeasurements(const std::vector<std::string>& paths, const Model& model) {
+Measurements readMeasurements(const std::vector<std::string>& paths, const Model& model,
+                              const CsvReadOptions& csv) {
   std::vector<Measurements> sets;
   for (const auto& p : paths) {
     const std::string text = readFile(p, 256u << 20);
     if (looksLikeDmis(text))
-      sets.push_back(dmisReportFromText(text, p, model));
+      sets.push_back(dmisReportFromText(text, displayPath(p), model));
     else
-      sets.push_back(cmmReportFromCsv(parseCsv(text, p), model));
+      sets.push_back(cmmReportFromCsv(parseCsv(text, displayPath(p), csv), model));
   }
   return mergeMeasurements(sets, model);
 }

@@ -17,20 +17,29 @@
 //      other statement (DMISMN, MODE, SNSET, MEAS, GOTO, OUTPUT, ...) is skipped;
 //    * UNITS/MM|CM|INCH|FEET,...   the length unit of the following numbers (converted to mm);
 //    * FILNAM/'name'               names the part (default: the file name);
-//    * F(label)=FEAT/type,CART,x,y,z,...    nominal feature (type: POINT, PLANE, CIRCLE,
-//      SPHERE, CYLNDR, ...; any type whose first three numbers after CART are the position);
-//    * FA(label)=FEAT/type,CART,x,y,z,...   feature actual;
+//    * F(label)=FEAT/type,[INNER|OUTER,]CART,x,y,z,...    nominal feature (type: POINT, PLANE,
+//      CIRCLE, SPHERE, CYLNDR, ...; any type whose first three numbers after CART are the position;
+//      CIRCLE and CYLNDR carry the diameter as the 7th number after CART, SPHERE as the 4th);
+//    * FA(label)=FEAT/type,[INNER|OUTER,]CART,x,y,z,...   feature actual;
 //    * T(label)=TOL/DISTB|DISTWRT|DIAM|RAD|WIDTH,NOMINL,nominal,lotol,uptol,...   tolerance
 //      definition (NOMINL,nominal is optional; T(label)=TOL/CORTOL,ZAXIS,lotol,uptol too): when
 //      present, the nominal (if the model has one) and the limits are checked against the model
 //      like the CSV's;
-//    * TA(label)=TOL/DISTB|DISTWRT|DIAM|RAD|WIDTH,dev,...   tolerance actual: DMIS output reports
-//      the actual DEVIATION from the nominal as the first value (a following INTOL / OUTOL is
-//      ignored); TA(label)=TOL/CORTOL,XAXIS|YAXIS|ZAXIS,dev,... gives the deviation along the
-//      named axis, which must be the model's axis.
+//    * TA(label)=TOL/DISTB|DISTWRT|DIAM|RAD|WIDTH|PROFP,value,[INTOL|OUTOL|OUTTOL]   tolerance
+//      actual; TA(label)=TOL/CORTOL,XAXIS|YAXIS|ZAXIS,value,... along the named axis, which must be
+//      the model's axis. Writers differ on the value (shared/data/real/README.md): CMM output gives
+//      the deviation (actual - nominal) for CORTOL / PROFP, the QIF-to-DMIS converter the actual
+//      diameter for TOL/DIAM, some flip the sign for negative nominals; DmisOptions says which.
 //    A dimension is found by its DMIS label (Dimension::dmisLabel(): the "label" of the model,
-//    default the id; compared case-insensitively): its deviation is the TA(label) value when the
-//    file has one, otherwise FA(label) - F(label) along the model's axis (X, Y or Z coordinate).
+//    default the id; compared case-insensitively). Its deviation is, in this order:
+//      1. FA(label) - F(label) when the file has both: the diameters for a DIAM tolerance (half of
+//         them for RAD) when both features have one, else the coordinate along the model's axis;
+//      2. the TA(label) value read as DmisOptions says: Deviation (value, times sign(nominal) with
+//         signFollowsNominal), Actual (value - nominal; the nominal from T's NOMINL, F's diameter or
+//         the model), Auto (Actual when the value is nearer the nominal than zero, else
+//         Deviation). Plausibility:
+//         when the statement says INTOL / OUTOL / OUTTOL, the deviation must be inside / outside the
+//         tolerance (T's limits, else the model's), else a ValidationError names the line.
 //    Labels that name no dimension are skipped (DMIS files carry datums and other features); a
 //    dimension found in neither form is an error. POL coordinates are an error.
 //
@@ -39,11 +48,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/io/csv.h"
 #include "core/setup/model.h"
-
-namespace metrofit {
-class CsvTable;
-}
 
 namespace metrofit::setup {
 
@@ -65,19 +71,36 @@ struct Measurements {
 
 /// Reads a CMM report series (CSV) against the model.
 Measurements cmmReportFromCsv(const CsvTable& table, const Model& model);
-Measurements readCmmReport(const std::string& path, const Model& model);
+Measurements readCmmReport(const std::string& path, const Model& model, const CsvReadOptions& csv = {});
+
+/// What TA(label)=TOL/type,value means when the file has no F and FA to compute the deviation from.
+enum class DmisTaMeaning {
+  Auto,       ///< nearer the nominal than zero: the actual value; else the deviation
+  Deviation,  ///< actual - nominal (DMIS output of CORTOL / PROFP as CMMs write it)
+  Actual,     ///< the actual value (the QIF-to-DMIS converter's TOL/DIAM)
+};
+DmisTaMeaning parseDmisTaMeaning(const std::string& text, const std::string& option = "TA meaning");
+
+struct DmisOptions {
+  DmisTaMeaning taMeaning = DmisTaMeaning::Auto;
+  /// The writer reports sign(nominal) * (actual - nominal) (some do for negative nominals); the reader
+  /// turns it back into actual - nominal.
+  bool signFollowsNominal = false;
+};
 
 /// Reads one DMIS output file (text) against the model; `source` names it in errors.
-Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model);
-Measurements readDmisReport(const std::string& path, const Model& model);
+Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model,
+                                const DmisOptions& options = {});
+Measurements readDmisReport(const std::string& path, const Model& model, const DmisOptions& options = {});
 
-/// True when the text looks like DMIS (its first statement is DMISMN or DMISMD).
+/// True when the text looks like DMIS (its first statement is DMISMN, DMISMD or FILNAM).
 bool looksLikeDmis(std::string_view text);
 
 /// Reads one or more report files (CSV or DMIS, told apart by content) and merges them: the deviation of each
 /// dimension is the mean over all rows of all files. The same (part, dimension) in two files is an error
 /// naming the second file and line.
-Measurements readMeasurements(const std::vector<std::string>& paths, const Model& model);
+Measurements readMeasurements(const std::vector<std::string>& paths, const Model& model,
+                              const CsvReadOptions& csv = {});
 /// Merges measurement sets (same rules as readMeasurements).
 Measurements mergeMeasurements(const std::vector<Measurements>& sets, const Model& model);
 

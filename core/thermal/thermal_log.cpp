@@ -110,8 +110,8 @@ ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows) {
   return log;
 }
 
-ThermalLog readThermalLog(const std::string& path, std::size_t minRows) {
-  return thermalLogFromCsv(readCsvFile(path), minRows);
+ThermalLog readThermalLog(const std::string& path, std::size_t minRows, const CsvReadOptions& csv) {
+  return thermalLogFromCsv(readCsvFile(path, csv), minRows);
 }
 
 std::string thermalLogToCsv(const ThermalLog& log) {

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "core/io/csv.h"
+
 namespace metrofit {
 class CsvTable;
 
@@ -34,7 +36,7 @@ struct ThermalLog {
 /// increasing time, at least `minRows` rows, finite numbers everywhere (errors name file, line, column).
 ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows = 3);
 /// Reads and validates a thermal log file.
-ThermalLog readThermalLog(const std::string& path, std::size_t minRows = 3);
+ThermalLog readThermalLog(const std::string& path, std::size_t minRows = 3, const CsvReadOptions& csv = {});
 /// Serialises a thermal log as CSV (time column as in `timeColumn`, 6 significant decimals).
 std::string thermalLogToCsv(const ThermalLog& log);
 

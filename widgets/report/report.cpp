@@ -15,6 +15,8 @@
 #include "core/common/error.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
+#include "core/matching/hole_table.h"
+#include "core/project/datasets.h"
 #include "core/project/project.h"
 #include "core/project/study_check.h"
 #include "metrofit/version.h"
@@ -88,19 +90,20 @@ std::vector<ReportDataset> readDatasets(const Project& project, const QString& p
     const std::string path = resolveDatasetPath(projectPath.toStdString(), ref);
     d.path = QString::fromStdString(path);
     if (ref.kind == dataset_kind::kThermalLog) {
-      d.thermal = readThermalLog(path);
+      d.thermal = readThermalLog(path, 3, ref.csv);
       d.rows = static_cast<long>(d.thermal->rows());
       d.columns.push_back(d.thermal->timeColumn);
       for (const ThermalChannel& c : d.thermal->channels) d.columns.push_back(c.name);
     } else if (ref.kind == dataset_kind::kProbePoints) {
-      d.probes = readProbePoints(path);
+      d.probes = readProbePointsAnyFormat(path, 3, ref.csv);
       d.rows = static_cast<long>(d.probes->points.size());
     } else if (ref.kind == dataset_kind::kSetupModel) {
       readFile(path);  // a JSON model: no rows, but it must be readable
     } else {
-      const CsvTable table = readCsvFile(path);
-      d.rows = static_cast<long>(table.rowCount());
-      d.columns = table.header();
+      // With the dataset's dialect and mapping (core/project/datasets.h).
+      const DatasetSummary summary = summarizeDataset(projectPath.toStdString(), ref);
+      d.rows = summary.rows;
+      d.columns = summary.columns;
     }
     datasets.push_back(std::move(d));
   }

@@ -88,7 +88,8 @@ TEST(SetupReport, DmisTestFile) {
 }
 
 TEST(SetupReport, DmisUnitsCortolAndPriority) {
-  // INCH: values convert to mm; CORTOL along the model's axis; TA wins over FA for the same label.
+  // INCH: values convert to mm; CORTOL along the model's axis; F and FA win over TA for the same label
+  // (shared/data/real/README.md: where F and FA are present, the deviation is computed from them).
   const std::string text =
       "DMISMN/'x',05.0\n"
       "UNITS/INCH,ANGDEG\n"
@@ -105,7 +106,7 @@ TEST(SetupReport, DmisUnitsCortolAndPriority) {
   ok.replace(ok.find(inchLimits), inchLimits.size(), "T(D2)=TOL/CORTOL,ZAXIS,-0.0019685,0.0011811");
   const Measurements m = dmisReportFromText(ok, "p.dmo", test::smallModel());
   EXPECT_EQ(m.parts, std::vector<std::string>{"p.dmo"});
-  EXPECT_TRUE(metrofit::test::near(m.deviationMm[0], 0.0002 * 25.4, 1e-12));
+  EXPECT_TRUE(metrofit::test::near(m.deviationMm[0], 0.001 * 25.4, 1e-12));
   EXPECT_TRUE(metrofit::test::near(m.deviationMm[1], -0.0004 * 25.4, 1e-12));
 }
 
@@ -117,7 +118,7 @@ TEST(SetupReport, DmisErrors) {
             "p.dmo:3: field 'TA(POS_D1)': deviation: 'abc' is not a number");
   EXPECT_EQ(dmisError(head + "TA(POS_D1)=TOL/FLAT,0.01\n"),
             "p.dmo:3: field 'TA(POS_D1)': tolerance type 'FLAT' is not supported for a dimension (use DISTB, "
-            "DISTWRT, DIAM, RAD, WIDTH or CORTOL)");
+            "DISTWRT, DIAM, RAD, WIDTH, CORTOL or PROFP)");
   EXPECT_EQ(dmisError(head + "TA(POS_D1)=TOL/CORTOL,XAXIS,0.01\n"),
             "p.dmo:3: field 'TA(POS_D1)': CORTOL along 'XAXIS' but the model's axis is Z");
   EXPECT_EQ(

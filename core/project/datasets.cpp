@@ -1,0 +1,194 @@
+#include "core/project/datasets.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+
+#include "core/common/error.h"
+#include "core/io/file_io.h"
+#include "core/kinematics/measured_path.h"
+#include "core/matching/hole_table.h"
+#include "core/matching/probe_points.h"
+#include "core/setup/model.h"
+#include "core/setup/report.h"
+#include "core/thermal/thermal_log.h"
+
+namespace metrofit {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::map<std::string, std::string>& kinds() {
+  static const std::map<std::string, std::string> k{{"thermal-log", dataset_kind::kThermalLog},
+                                                    {"probe-points", dataset_kind::kProbePoints},
+                                                    {"circular-test", dataset_kind::kCircularTest},
+                                                    {"cmm-report", dataset_kind::kCmmReport},
+                                                    {"setup-model", dataset_kind::kSetupModel},
+                                                    {"feature-series", dataset_kind::kFeatureSeries},
+                                                    {"dmis", dataset_kind::kDmis},
+                                                    {"hole-table", dataset_kind::kHoleTable}};
+  return k;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+  std::string out;
+  for (const auto& s : v) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+/// Measured features of a DMIS output file: FA(...) and TA(...) statements.
+long dmisMeasuredCount(const std::string& text) {
+  long n = 0;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    const auto nl = text.find('\n', pos);
+    std::string line = text.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos);
+    pos = nl == std::string::npos ? text.size() : nl + 1;
+    line.erase(0, line.find_first_not_of(" \t"));
+    std::string head = line.substr(0, 3);
+    for (char& c : head) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    n += head == "FA(" || head == "TA(";
+  }
+  return n;
+}
+
+/// Reads `file` (shown as `shown` in messages) as `kind` says.
+DatasetSummary inspect(const std::string& file, const std::string& shown, const std::string& kind,
+                       const CsvReadOptions& csv) {
+  DatasetSummary s;
+  s.kind = kind;
+  if (kind == dataset_kind::kSetupModel) {
+    const setup::Model model = setup::readModel(file);
+    s.rows = static_cast<long>(model.dimensions.size());
+    return s;
+  }
+  const std::string text = readFile(file, 256u << 20);
+  if (kind == dataset_kind::kDmis || (kind == dataset_kind::kCmmReport && setup::looksLikeDmis(text))) {
+    if (!setup::looksLikeDmis(text))
+      throw ParseError(ErrorContext{shown, 1, 0, {}}, "not a DMIS file (its first statement is not DMISMN)");
+    s.rows = dmisMeasuredCount(text);
+    return s;
+  }
+  if (kind == dataset_kind::kHoleTable || (kind == dataset_kind::kProbePoints && looksLikeHoleTable(text))) {
+    const HoleTable t = holeTableFromText(text, shown, 1);
+    s.rows = static_cast<long>(t.points.points.size());
+    s.columns = {"Meas X", "Meas Y", "Nom X", "Nom Y"};
+    return s;
+  }
+  const CsvTable table = parseCsv(text, shown, csv);
+  s.rows = static_cast<long>(table.rowCount());
+  s.columns = table.header();
+  if (kind == dataset_kind::kThermalLog) {
+    (void)thermalLogFromCsv(table);
+  } else if (kind == dataset_kind::kProbePoints) {
+    (void)probePointsFromCsv(table, 1);
+  } else if (kind == dataset_kind::kCircularTest) {
+    (void)measuredPathFromCsv(table);
+  } else if (kind == dataset_kind::kCmmReport) {
+    for (const char* c :
+         {"part", "time_min", "dimension", "nominal_mm", "measured_mm", "lower_tol_mm", "upper_tol_mm"})
+      (void)table.requireColumn(c);
+    table.requireRows(1);
+    for (const char* c : {"time_min", "nominal_mm", "measured_mm", "lower_tol_mm", "upper_tol_mm"})
+      (void)table.numericColumn(c);
+  } else if (kind == dataset_kind::kFeatureSeries) {
+    table.requireRows(1);
+  }
+  return s;
+}
+
+std::string extensionFor(const std::string& kind) {
+  if (kind == dataset_kind::kSetupModel) return ".json";
+  if (kind == dataset_kind::kDmis) return ".dmi";
+  if (kind == dataset_kind::kHoleTable) return ".txt";
+  return ".csv";
+}
+
+}  // namespace
+
+const std::vector<std::string>& datasetKindNames() {
+  static const std::vector<std::string> names{"thermal-log", "probe-points",   "circular-test", "cmm-report",
+                                              "setup-model", "feature-series", "dmis",          "hole-table"};
+  return names;
+}
+
+std::string datasetKindFromName(const std::string& name, const std::string& field) {
+  std::string hyphen = name;
+  std::replace(hyphen.begin(), hyphen.end(), '_', '-');
+  const auto it = kinds().find(hyphen);
+  if (it == kinds().end())
+    throw ValidationError(ErrorContext{{}, 0, 0, field},
+                          "unknown dataset kind '" + name + "' (one of: " + joined(datasetKindNames()) + ")");
+  return it->second;
+}
+
+bool datasetKindIsCsv(const std::string& kind) {
+  return kind != dataset_kind::kSetupModel && kind != dataset_kind::kDmis && kind != dataset_kind::kHoleTable;
+}
+
+DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset) {
+  const std::string path = resolveDatasetPath(projectPath, dataset);
+  DatasetSummary s = inspect(path, path, dataset.kind, dataset.csv);
+  s.id = dataset.id;
+  s.path = dataset.path;
+  return s;
+}
+
+nlohmann::json datasetListJson(const Project& project, const std::string& projectPath) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const DatasetRef& d : project.datasets) {
+    const DatasetSummary s = summarizeDataset(projectPath, d);
+    out.push_back(
+        {{"id", s.id}, {"kind", s.kind}, {"path", s.path}, {"rows", s.rows}, {"columns", s.columns}});
+  }
+  return out;
+}
+
+CsvTable readDatasetTable(const std::string& projectPath, const DatasetRef& dataset) {
+  return readCsvFile(resolveDatasetPath(projectPath, dataset), dataset.csv);
+}
+
+DatasetRef addDataset(Project& project, const std::string& projectPath, const AddDatasetRequest& request) {
+  DatasetRef ref;
+  ref.kind = datasetKindFromName(request.kind);
+  ref.csv = request.csv;
+  ref.description = request.description;
+  if (!datasetKindIsCsv(ref.kind) &&
+      (!(request.csv.dialect == CsvDialect{}) || !request.csv.columnMap.empty())) {
+    throw ValidationError(
+        ErrorContext{{}, 0, 0, "KIND"},
+        "a " + ref.kind + " dataset is not a CSV file; --delimiter, --decimal and --map do not apply");
+  }
+  const bool fromStdin = request.file == "-";
+  ref.id = request.id;
+  if (ref.id.empty()) {
+    if (fromStdin)
+      throw ValidationError(ErrorContext{{}, 0, 0, "--id"},
+                            "is required when the data come from standard input");
+    ref.id = fs::path(request.file).stem().string();
+    const std::string base = ref.id;
+    for (int k = 2; project.dataset(ref.id) != nullptr; ++k) ref.id = base + "-" + std::to_string(k);
+  }
+  if (ref.id.empty()) throw ValidationError(ErrorContext{{}, 0, 0, "--id"}, "must not be empty");
+  if (project.dataset(ref.id) != nullptr)
+    throw ValidationError(ErrorContext{projectPath, 0, 0, "--id"},
+                          "the project already has a dataset '" + ref.id + "'");
+
+  // Read and check the file before the project changes.
+  const DatasetSummary s = inspect(request.file, displayPath(request.file), ref.kind, ref.csv);
+  (void)s;
+  const fs::path folder = fs::absolute(fs::path(parentFolder(projectPath))).lexically_normal();
+  if (fromStdin) {
+    ref.path = ref.id + extensionFor(ref.kind);
+    writeFileAtomic((folder / ref.path).string(), readFile("-", 256u << 20));
+  } else {
+    const fs::path file = fs::absolute(fs::path(request.file)).lexically_normal();
+    const fs::path rel = file.lexically_relative(folder);
+    ref.path = rel.empty() ? file.string() : rel.string();
+  }
+  project.datasets.push_back(ref);
+  return ref;
+}
+
+}  // namespace metrofit

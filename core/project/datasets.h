@@ -1,0 +1,69 @@
+#pragma once
+// Own data in a project (CONTRACT.md "Own data in a project (CLI)"): adding a file to a project as
+// a dataset of a kind, reading a dataset the way the project says (CSV dialect and column mapping
+// saved with it), and the summary `project list` prints. The CLI's `project new|add|list` and a GUI
+// import dialog share these functions.
+//
+// Kinds, as the command line spells them (the project file writes '_' for '-'):
+//   thermal-log    CSV, read as a thermal log (time column, strictly increasing time)
+//   probe-points   CSV of contact-probed points, or a PC-DMIS hole-table report
+//   circular-test  CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm
+//   cmm-report     CSV part,time_min,dimension,nominal_mm,measured_mm,lower_tol_mm,upper_tol_mm, or a
+//                  DMIS output file (the setup study reads it against its model)
+//   setup-model    JSON relation graph (no CSV options)
+//   feature-series CSV of measured feature values in production order (SPC)
+//   dmis           DMIS output file (no CSV options)
+//   hole-table     PC-DMIS hole-table report (no CSV options)
+// A dataset is checked when it is added: the file is read as its kind says, so a wrong delimiter or
+// a missing mapped column is an error then (InputError naming file, line and field), not later.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/io/csv.h"
+#include "core/project/project.h"
+
+namespace metrofit {
+
+/// The kinds as the command line spells them: "thermal-log", ..., "hole-table".
+const std::vector<std::string>& datasetKindNames();
+/// "thermal-log" (or "thermal_log") -> dataset_kind::kThermalLog, ...; ValidationError naming
+/// `field` for an unknown kind.
+std::string datasetKindFromName(const std::string& name, const std::string& field = "KIND");
+/// True for the kinds read as CSV (they take a dialect and a column mapping).
+bool datasetKindIsCsv(const std::string& kind);
+
+/// What `project list` prints of one dataset.
+struct DatasetSummary {
+  std::string id;
+  std::string kind;
+  std::string path;                  ///< as stored in the project (relative to its folder)
+  long rows = 0;                     ///< data rows, points, holes, dimensions or measured features
+  std::vector<std::string> columns;  ///< the columns as the readers see them (after the mapping)
+};
+
+/// Reads a dataset as its kind says, with its dialect and mapping; InputError when it cannot be read.
+DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset);
+/// `project list`: [{"id", "kind", "path", "rows", "columns"}] in project order.
+nlohmann::json datasetListJson(const Project& project, const std::string& projectPath);
+
+/// The CSV table of a CSV dataset, read with the dataset's dialect and mapping.
+CsvTable readDatasetTable(const std::string& projectPath, const DatasetRef& dataset);
+
+struct AddDatasetRequest {
+  std::string kind;  ///< command-line or project spelling
+  std::string file;  ///< path as the user gave it (relative to the working folder), or "-"
+  std::string id;    ///< empty: the file's base name without extension (made unique)
+  CsvReadOptions csv;
+  std::string description;
+};
+
+/// Adds a dataset to `project` (saved at `projectPath`): the file is referenced relative to the
+/// project's folder (absolute when it is on another root), or, for "-" (standard input), copied into
+/// the project's folder as "<id>.<ext>" (an --id is then required). The file is read and checked as
+/// its kind says before anything is changed. ValidationError for a duplicate id, CSV options on a
+/// kind that is not CSV, an unknown kind. Returns the new dataset (also appended to the project).
+DatasetRef addDataset(Project& project, const std::string& projectPath, const AddDatasetRequest& request);
+
+}  // namespace metrofit

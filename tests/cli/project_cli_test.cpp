@@ -1,0 +1,205 @@
+// End-to-end tests of own data (CONTRACT.md "Own data in a project (CLI)"): `project new|add|list`,
+// --delimiter / --decimal on the readers, `-` for standard input, one-line errors with exit code 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "cli/cli_runner.h"
+#include "core/io/json_util.h"
+#include "testsupport.h"
+
+namespace metrofit {
+namespace {
+
+using test::cli;
+using test::CliRun;
+using test::lines;
+
+/// The CSV text written the German way: ';' between fields, ',' as the decimal separator.
+std::string german(const std::string& text) {
+  std::string out = text;
+  for (char& c : out) c = c == ',' ? ';' : c == '.' ? ',' : c;
+  return out;
+}
+
+nlohmann::json readJson(const test::TempDir& tmp, const std::string& name) {
+  return parseJson(test::readText(tmp.file(name)), name);
+}
+
+const std::string kRealPlate = "/work/shared/data/real/cmm-plugplate-sdss/D8131_1";
+
+TEST(ProjectCli, GermanLogWithMappedColumnsInAProject) {
+  test::TempDir tmp;
+  ASSERT_EQ(cli("simulate thermal --seed 7 --out log.csv", tmp).code, 0);
+  std::string text = test::readText(tmp.file("log.csv"));
+  // The file's own names: Zeit for time_min, dZ for disp_z_um.
+  text.replace(text.find("time_min"), 8, "Zeit");
+  text.replace(text.find("disp_z_um"), 9, "dZ");
+  std::filesystem::create_directories(tmp.path() / "data");
+  test::writeText(tmp.file("data/messung.csv"), german(text));
+
+  CliRun r = cli("project new p/P.metrofit --name 'Eigene Daten'", tmp);
+  EXPECT_NE(r.code, 0) << "the folder p does not exist";
+  std::filesystem::create_directories(tmp.path() / "p");
+  r = cli("project new p/P.metrofit --name 'Eigene Daten'", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = cli("project add p/P.metrofit thermal-log data/messung.csv --map time_min=Zeit --map disp_z_um=dZ",
+          tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+
+  const nlohmann::json project = readJson(tmp, "p/P.metrofit");
+  EXPECT_EQ(project["name"], "Eigene Daten");
+  ASSERT_EQ(project["datasets"].size(), 1u);
+  const nlohmann::json& d = project["datasets"][0];
+  EXPECT_EQ(d["id"], "messung");
+  EXPECT_EQ(d["kind"], "thermal_log");
+  EXPECT_EQ(d["path"], "../data/messung.csv");
+  EXPECT_EQ(d["map"]["time_min"], "Zeit");
+  EXPECT_EQ(d["map"]["disp_z_um"], "dZ");
+
+  r = cli("project list p/P.metrofit --out list.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json list = readJson(tmp, "list.json");
+  ASSERT_EQ(list.size(), 1u);
+  EXPECT_EQ(list[0]["id"], "messung");
+  EXPECT_EQ(list[0]["kind"], "thermal_log");
+  EXPECT_EQ(list[0]["path"], "../data/messung.csv");
+  std::istringstream in(text);
+  std::string line;
+  long dataLines = -1;  // minus the header
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') ++dataLines;
+  EXPECT_EQ(list[0]["rows"].get<long>(), dataLines);
+  const auto columns = list[0]["columns"].get<std::vector<std::string>>();
+  EXPECT_EQ(columns.front(), "time_min");
+  EXPECT_NE(std::find(columns.begin(), columns.end(), "disp_z_um"), columns.end());
+
+  // The project's report reads the dataset through its mapping and dialect.
+  r = cli("report --project p/P.metrofit --out r.pdf", tmp);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(tmp.file("r.pdf")));
+}
+
+TEST(ProjectCli, ReadersTakeTheGermanDialectAndStandardInput) {
+  test::TempDir tmp;
+  ASSERT_EQ(cli("simulate thermal --seed 7 --out log.csv", tmp).code, 0);
+  test::writeText(tmp.file("de.csv"), german(test::readText(tmp.file("log.csv"))));
+  const std::string fit = "thermal fit --target disp_z_um --inputs T1,T2 --model gmc ";
+  ASSERT_EQ(cli(fit + "--data log.csv --out a.json", tmp).code, 0);
+  CliRun r = cli(fit + "--data de.csv --out b.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = cli(fit + "--data de.csv --delimiter ';' --decimal , --out c.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = cli(fit + "--data - --out d.json < de.csv", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const double a = readJson(tmp, "a.json")["fit_rmse"].get<double>();
+  EXPECT_EQ(readJson(tmp, "b.json")["fit_rmse"].get<double>(), a);
+  EXPECT_EQ(readJson(tmp, "c.json")["fit_rmse"].get<double>(), a);
+  EXPECT_EQ(readJson(tmp, "d.json")["fit_rmse"].get<double>(), a);
+
+  // A wrong explicit decimal: exit 2, one line naming file, line and field.
+  r = cli(fit + "--data de.csv --decimal . --out e.json", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("de.csv:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("decimal separator is '.'"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("e.json")));
+  // A bad row from standard input names <stdin>.
+  test::writeText(tmp.file("bad.csv"),
+                  "time_min;T1;T2;disp_z_um\n0;20;20;0\n1;20,5;x;1\n2;21;21;2\n3;22;22;3\n");
+  r = cli(fit + "--data - < bad.csv", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("<stdin>:3:3: field 'T2': 'x' is not a number"), std::string::npos) << r.err;
+  // Option values are checked by the parser.
+  r = cli(fit + "--data de.csv --delimiter '|'", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--delimiter"), std::string::npos) << r.err;
+}
+
+TEST(ProjectCli, AddChecksTheFileAndNamesWhatIsWrong) {
+  test::TempDir tmp;
+  ASSERT_EQ(cli("project new P.metrofit", tmp).code, 0);
+  EXPECT_EQ(cli("project new P.metrofit", tmp).code, 2);  // never overwrites
+  test::writeText(tmp.file("log.csv"), "Zeit;T1;dZ\n0;20;0\n1;21;-1,5\n2;22;-3\n");
+  CliRun r = cli("project add P.metrofit thermal-log log.csv --map time_min=Time", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("log.csv: field 'time_min'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'Time'"), std::string::npos) << r.err;
+  r = cli("project add P.metrofit weather log.csv", tmp);
+  EXPECT_EQ(r.code, 2);
+  r = cli("project add P.metrofit thermal-log log.csv", tmp);  // no time column without the mapping
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("log.csv"), std::string::npos) << r.err;
+  // Nothing was added by the failed calls.
+  EXPECT_EQ(readJson(tmp, "P.metrofit")["datasets"].size(), 0u);
+
+  r = cli("project add P.metrofit thermal-log log.csv --map time_min=Zeit", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = cli("project add P.metrofit thermal-log log.csv --map time_min=Zeit --id log", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("already has a dataset 'log'"), std::string::npos) << r.err;
+  // From standard input: copied into the project's folder.
+  r = cli("project add P.metrofit thermal-log - --id piped --map time_min=Zeit < log.csv", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(test::readText(tmp.file("piped.csv")), test::readText(tmp.file("log.csv")));
+  r = cli("project list P.metrofit", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json list = parseJson(r.out, "stdout");
+  ASSERT_EQ(list.size(), 2u);
+  EXPECT_EQ(list[1]["id"], "piped");
+  EXPECT_EQ(list[1]["path"], "piped.csv");
+  EXPECT_EQ(list[1]["rows"], 3);
+  EXPECT_EQ(list[1]["columns"], (nlohmann::json{"time_min", "T1", "dZ"}));
+}
+
+TEST(ProjectCli, RealHoleTableAndTheDemoProject) {
+  test::TempDir tmp;
+  if (std::filesystem::exists(kRealPlate)) {
+    ASSERT_EQ(cli("project new P.metrofit", tmp).code, 0);
+    CliRun r = cli("project add P.metrofit hole-table " + kRealPlate + " --id plate", tmp);
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = cli("project add P.metrofit hole-table " + kRealPlate + " --decimal ,", tmp);
+    EXPECT_EQ(r.code, 2) << "a hole table is not CSV";
+    r = cli("project list P.metrofit", tmp);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const nlohmann::json list = parseJson(r.out, "stdout");
+    ASSERT_EQ(list.size(), 1u);
+    EXPECT_EQ(list[0]["kind"], "hole_table");
+    EXPECT_EQ(list[0]["rows"], 82);  // the report's 82 hole rows
+  }
+  // Projects written before datasets had dialects (no delimiter, decimal or map keys) still list.
+  const auto demo = test::sourceDir() / "resources" / "demo";
+  const nlohmann::json old = {
+      {"format", "metrofit-project"},
+      {"version", 1},
+      {"name", "old"},
+      {"datasets",
+       {{{"id", "model"}, {"kind", "setup_model"}, {"path", (demo / "setup/paper_example.json").string()}},
+        {{"id", "report"},
+         {"kind", "cmm_report"},
+         {"path", (demo / "setup/paper_example_report.csv").string()}},
+        {{"id", "log"}, {"kind", "thermal_log"}, {"path", (demo / "data/thermal_demo.csv").string()}},
+        {{"id", "probe"}, {"kind", "probe_points"}, {"path", (demo / "data/probe_s_piece.csv").string()}},
+        {{"id", "circle"}, {"kind", "circular_test"}, {"path", (demo / "data/circular_demo.csv").string()}},
+        {{"id", "bores"}, {"kind", "feature_series"}, {"path", (demo / "data/bores_demo.csv").string()}}}}};
+  test::writeText(tmp.file("old.metrofit"), old.dump(2));
+  const CliRun r = cli("project list old.metrofit", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json list = parseJson(r.out, "stdout");
+  ASSERT_EQ(list.size(), 6u);
+  for (const auto& d : list) {
+    if (d["kind"] == "thermal_log") {
+      const auto columns = d["columns"].get<std::vector<std::string>>();
+      EXPECT_EQ(columns.front().rfind("time_", 0), 0u) << d.dump();
+    }
+    EXPECT_GT(d["rows"].get<long>(), 0) << d.dump();
+  }
+}
+
+}  // namespace
+}  // namespace metrofit

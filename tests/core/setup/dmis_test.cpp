@@ -1,0 +1,131 @@
+// DMIS output as CMMs write it (core/setup/report.h, issue 16 item 3). The texts are written from
+// the statement syntax of the DMIS standard (ANSI/DMIS 105.2 Part 1, 5.3: FILNAM, DMISMN, UNITS,
+// F/FA = FEAT/CIRCLE|CYLNDR|POINT,[INNER|OUTER,]CART,..., T/TA = TOL/DIAM|CORTOL|DISTB|PROFP,
+// OUTPUT, ENDFIL), not from Metrofit's own writer; expected deviations are worked out by hand below.
+#include <gtest/gtest.h>
+
+#include "core/common/error.h"
+#include "core/setup/report.h"
+#include "setup_fixtures.h"
+#include "testsupport.h"
+
+namespace metrofit::setup {
+namespace {
+
+using metrofit::test::near;
+
+std::string dmisError(const std::string& text, const DmisOptions& o = {},
+                      const Model& model = test::smallModel()) {
+  try {
+    (void)dmisReportFromText(text, "out.dmi", model, o);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// The small model: D1 (label POS_D1) nominal 42, limits -0.02 / 0.02; D2 nominal 18.5, -0.05 / 0.03; axis Z.
+const char* kCmmOutput =
+    "FILNAM/'BRACKET-0042',05.3\n"
+    "DMISMN/'Bracket inspection',05.3\n"
+    "UNITS/MM,ANGDEC\n"
+    "$$ a bore: nominal and actual circle (x,y,z,i,j,k,diam)\n"
+    "F(POS_D1)=FEAT/CIRCLE,INNER,CART,25.000,40.000,42.000,0.0,0.0,1.0,12.000\n"
+    "FA(POS_D1)=FEAT/CIRCLE,INNER,CART,25.006,39.996,42.011,0.0,0.0,1.0,12.011\n"
+    "T(POS_D1)=TOL/CORTOL,ZAXIS,-0.02,0.02\n"
+    "TA(POS_D1)=TOL/CORTOL,ZAXIS,0.011,INTOL\n"
+    "$$ a diameter reported as the actual value (as the QIF-to-DMIS converter writes TOL/DIAM)\n"
+    "T(D2)=TOL/DIAM,-0.05,0.03\n"
+    "TA(D2)=TOL/DIAM,18.44,OUTTOL\n"
+    "OUTPUT/FA(POS_D1),TA(POS_D1)\n"
+    "ENDFIL\n";
+
+TEST(Dmis, CmmOutputStartingWithFilnam) {
+  EXPECT_TRUE(looksLikeDmis(kCmmOutput));
+  const Measurements m = dmisReportFromText(kCmmOutput, "out.dmi", test::smallModel());
+  EXPECT_EQ(m.parts, std::vector<std::string>{"BRACKET-0042"});
+  EXPECT_TRUE(near(m.deviationMm[0], 42.011 - 42.000, 1e-12));  // FA - F along Z
+  EXPECT_TRUE(near(m.deviationMm[1], 18.44 - 18.5, 1e-12));     // auto: 18.44 is an actual value
+  EXPECT_EQ(m.rows[1].line, 11);
+}
+
+TEST(Dmis, FeatureValuesWinOverTheToleranceActual) {
+  // F and FA cylinders with diameters: a DIAM tolerance takes the diameter difference, whatever TA says.
+  const std::string text =
+      "DMISMN/'x',05.3\n"
+      "F(D2)=FEAT/CYLNDR,INNER,CART,0,0,0,0,0,1,18.500,20\n"
+      "FA(D2)=FEAT/CYLNDR,INNER,CART,0.01,0,0,0,0,1,18.480,20\n"
+      "T(D2)=TOL/DIAM,-0.05,0.03\n"
+      "TA(D2)=TOL/DIAM,18.48,INTOL\n"
+      "F(POS_D1)=FEAT/POINT,CART,0,0,42,0,0,1\n"
+      "FA(POS_D1)=FEAT/POINT,CART,0,0,42.004,0,0,1\n"
+      "TA(POS_D1)=TOL/CORTOL,ZAXIS,0.5,INTOL\n"
+      "ENDFIL\n";
+  const Measurements m = dmisReportFromText(text, "out.dmi", test::smallModel());
+  EXPECT_TRUE(near(m.deviationMm[1], 18.480 - 18.500, 1e-12));
+  EXPECT_TRUE(near(m.deviationMm[0], 0.004, 1e-12));
+  // RAD: half the diameter difference.
+  std::string rad = text;
+  rad.replace(rad.find("TOL/DIAM,-0.05"), 8, "TOL/RAD");
+  rad.replace(rad.find("TOL/DIAM,18.48"), 8, "TOL/RAD");
+  EXPECT_TRUE(near(dmisReportFromText(rad, "out.dmi", test::smallModel()).deviationMm[1], -0.010, 1e-12));
+}
+
+TEST(Dmis, ToleranceActualMeaningIsASetting) {
+  const std::string text =
+      "DMISMN/'x',05.3\n"
+      "TA(POS_D1)=TOL/PROFP,0.012,INTOL\n"
+      "TA(D2)=TOL/DIAM,0.025,INTOL\n";
+  // Auto: values near zero are deviations.
+  Measurements m = dmisReportFromText(text, "out.dmi", test::smallModel());
+  EXPECT_TRUE(near(m.deviationMm[0], 0.012, 1e-12));
+  EXPECT_TRUE(near(m.deviationMm[1], 0.025, 1e-12));
+  // Told that TA is the actual value: 0.012 - 42 is far outside, but the file says INTOL.
+  DmisOptions actual;
+  actual.taMeaning = DmisTaMeaning::Actual;
+  EXPECT_EQ(
+      dmisError(text, actual),
+      "out.dmi:2: field 'TA(POS_D1)': the deviation -41.988 mm is outside the tolerance -0.02 / 0.02 but the "
+      "file says INTOL; read the tolerance actual as a deviation or with the other sign convention");
+  EXPECT_EQ(parseDmisTaMeaning("actual"), DmisTaMeaning::Actual);
+  EXPECT_THROW(parseDmisTaMeaning("mean"), OptionsError);
+}
+
+TEST(Dmis, PlausibilityAgainstOutol) {
+  // -0.021 is inside -0.05 / 0.03: OUTOL (or OUTTOL) contradicts it.
+  const std::string text =
+      "DMISMN/'x',05.3\nTA(POS_D1)=TOL/CORTOL,ZAXIS,0.001,INTOL\nTA(D2)=TOL/DISTB,-0.021,OUTOL\n";
+  EXPECT_EQ(
+      dmisError(text),
+      "out.dmi:3: field 'TA(D2)': the deviation -0.021 mm is inside the tolerance -0.05 / 0.03 but the file "
+      "says OUTOL; read the tolerance actual as the actual value or with the other sign convention");
+  std::string outtol = text;
+  outtol.replace(outtol.find("-0.021,OUTOL"), 12, "-0.061,OUTTOL");
+  EXPECT_TRUE(near(dmisReportFromText(outtol, "out.dmi", test::smallModel()).deviationMm[1], -0.061, 1e-12));
+}
+
+TEST(Dmis, SignFollowsNegativeNominalIsASetting) {
+  nlohmann::json j = test::smallModelJson();
+  j["dimensions"][1]["nominal"] = -18.5;
+  const Model model = modelFromJson(j, "m.json");
+  // The writer printed sign(N) * (A - N) = -(A - N) for the negative nominal: A - N = +0.02.
+  const std::string text =
+      "DMISMN/'x',05.3\nTA(POS_D1)=TOL/CORTOL,ZAXIS,0.001\nT(D2)=TOL/DISTB,NOMINL,-18.5,-0.05,0.03\n"
+      "TA(D2)=TOL/DISTB,-0.020,INTOL\n";
+  EXPECT_TRUE(near(dmisReportFromText(text, "out.dmi", model).deviationMm[1], -0.020, 1e-12));
+  DmisOptions o;
+  o.signFollowsNominal = true;
+  EXPECT_TRUE(near(dmisReportFromText(text, "out.dmi", model, o).deviationMm[1], 0.020, 1e-12));
+}
+
+TEST(Dmis, FeatureSyntaxErrors) {
+  EXPECT_EQ(dmisError("DMISMN/'x',05.3\nFA(POS_D1)=FEAT/CIRCLE,INNER,POL,1,2,3\n"),
+            "out.dmi:2: field 'FA(POS_D1)': polar (POL) coordinates are not supported; use CART");
+  EXPECT_EQ(
+      dmisError("DMISMN/'x',05.3\nFA(POS_D1)=FEAT/CIRCLE,OUTER,XYZ,1,2,3\n"),
+      "out.dmi:2: field 'FA(POS_D1)': expected CART after the feature type and INNER/OUTER, found 'XYZ'");
+  EXPECT_FALSE(looksLikeDmis("part,time_min\n"));
+}
+
+}  // namespace
+}  // namespace metrofit::setup
