@@ -83,6 +83,16 @@
         <source>SPC feature series</source>
         <translation>SPC-Merkmalsreihe</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>DMIS output</source>
+        <translation>DMIS-Ausgabe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Hole table</source>
+        <translation>Bohrungstabelle</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2985,7 +2995,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+206"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+207"/>
         <source>method</source>
         <translation>Methode</translation>
     </message>
@@ -3179,8 +3189,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../widgets/report/setupsection.cpp" line="-92"/>
-        <location line="+39"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-93"/>
+        <location line="+40"/>
         <location filename="../widgets/report/summarysection.cpp" line="+123"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-267"/>
         <source>file</source>
@@ -3519,7 +3529,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Das Projekt verweist auf keine Datensätze.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/report.cpp" line="+120"/>
+        <location filename="../widgets/report/report.cpp" line="+123"/>
         <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
@@ -3535,7 +3545,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Seite %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/setupsection.cpp" line="-186"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-187"/>
         <source>machine point</source>
         <translation>Maschinenpunkt</translation>
     </message>
@@ -3605,7 +3615,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Das Projekt hat keinen KMG-Messbericht für dieses Modell: nichts zu korrigieren.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Report data “%1”</source>
         <translation>Berichtsdaten „%1“</translation>
     </message>

@@ -83,6 +83,16 @@
         <source>SPC feature series</source>
         <translation>Seria cech SPC</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>DMIS output</source>
+        <translation>Wynik DMIS</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Hole table</source>
+        <translation>Tabela otworów</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2987,7 +2997,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+206"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+207"/>
         <source>method</source>
         <translation>metoda</translation>
     </message>
@@ -3181,8 +3191,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../widgets/report/setupsection.cpp" line="-92"/>
-        <location line="+39"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-93"/>
+        <location line="+40"/>
         <location filename="../widgets/report/summarysection.cpp" line="+123"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-267"/>
         <source>file</source>
@@ -3522,7 +3532,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Projekt nie odwołuje się do żadnych zbiorów danych.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/report.cpp" line="+120"/>
+        <location filename="../widgets/report/report.cpp" line="+123"/>
         <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
@@ -3538,7 +3548,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>strona %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/setupsection.cpp" line="-186"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-187"/>
         <source>machine point</source>
         <translation>punkt maszyny</translation>
     </message>
@@ -3608,7 +3618,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Projekt nie ma raportu WMP dla tego modelu: nie ma czego korygować.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Report data “%1”</source>
         <translation>Dane raportu „%1”</translation>
     </message>

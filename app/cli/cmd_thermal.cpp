@@ -330,12 +330,13 @@ void registerThermalCommands(CLI::App& app) {
       th->add_subcommand("fit", "Fit a thermal error model on the first part of a log, test on the rest");
   existingFile(fit->add_option("--data", f->data, "Thermal log (CSV)")->required());
   addColumns(fit, f->target, f->inputs);
-  fit->add_option("--model", f->model,
-                  "gnnmci|gmc|mlp (the thermal paper), linear (static regression), lag (first-order lag per sensor), "
-                  "dlag (distributed lag) or auto (chosen by blocked cross-validation on the fit rows)")
+  fit->add_option(
+         "--model", f->model,
+         "gnnmci|gmc|mlp (the thermal paper), linear (static regression), lag (first-order lag per sensor), "
+         "dlag (distributed lag) or auto (chosen by blocked cross-validation on the fit rows)")
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp", "linear", "lag", "dlag", "auto"}))
-  addCsvOptions(fit);
       ->capture_default_str();
+  addCsvOptions(fit);
   auto* fraction = fit->add_option("--train-fraction", f->trainFraction,
                                    "Fraction of rows (from the start) used for fitting; default 0.5, 0.7 for "
                                    "mlp (Table 3)")
@@ -386,8 +387,8 @@ void registerThermalCommands(CLI::App& app) {
   addColumns(mod, m->target, m->inputs);
   mod->add_option("--model", m->model, "gnnmci|gmc|mlp|linear|lag|dlag (see thermal fit)")
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp", "linear", "lag", "dlag"}))
-  addCsvOptions(mod);
       ->capture_default_str();
+  addCsvOptions(mod);
   mod->add_option("--training", m->training, "gnnmci: pso-ls or pso (see thermal fit)")
       ->check(CLI::IsMember({"pso", "pso-ls"}))
       ->capture_default_str();

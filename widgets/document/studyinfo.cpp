@@ -93,6 +93,10 @@ QString datasetKindTitle(const QString& kind) {
     return QCoreApplication::translate("StudyInfo", "Setup model");
   if (kind == QLatin1String(dataset_kind::kFeatureSeries))
     return QCoreApplication::translate("StudyInfo", "SPC feature series");
+  if (kind == QLatin1String(dataset_kind::kDmis))
+    return QCoreApplication::translate("StudyInfo", "DMIS output");
+  if (kind == QLatin1String(dataset_kind::kHoleTable))
+    return QCoreApplication::translate("StudyInfo", "Hole table");
   return kind;
 }
 
