@@ -1148,138 +1148,85 @@ std::vector<ResidualVariable> residualVariables(const ThermalLog& log, const std
   return vars;
 }
 
-/// The residual check (residual_check.h) of a state's fit on the fit rows that were not excluded.
-ResidualCheck checkOf(const Problem& pb, const State& s, const Residual& res,
-                      const std::vector<ResidualVariable>& vars, bool coarse = false) {
-  const auto groups = pb.fitGroups();
-  if (coarse && !groups.empty()) {
-    // Above kCoarseRows rows the round's search for structure (which generic candidates to try)
-    // runs on group means of the rows that were not excluded; the final check uses every row.
-    const auto cols = pb.columnValues(s);
-    std::vector<std::vector<double>> obs;  // per group: residual, columns..., variables...
-    std::vector<long> first;
-    for (const auto& [b, e] : groups) {
-      std::vector<double> m(1 + cols.size() + vars.size(), 0.0);
-      double cnt = 0.0;
-      for (std::size_t k = b; k < e; ++k) {
-        if (res.excluded[k]) continue;
-        cnt += 1.0;
-        m[0] += res.r[k];
-        for (std::size_t j = 0; j < cols.size(); ++j) m[1 + j] += (*cols[j])[k];
-        for (std::size_t j = 0; j < vars.size(); ++j) m[1 + cols.size() + j] += vars[j].values[k];
-      }
-      if (cnt == 0.0) continue;
-      for (double& x : m) x /= cnt;
-      obs.push_back(std::move(m));
-      first.push_back(static_cast<long>(b + 1));
-    }
-    const auto m = static_cast<Eigen::Index>(obs.size());
-    ResidualCheckInput in;
-    in.residual.resize(m);
-    in.modelColumns.resize(m, static_cast<Eigen::Index>(cols.size()));
-    for (Eigen::Index i = 0; i < m; ++i) {
-      const auto& o = obs[static_cast<std::size_t>(i)];
-      in.residual(i) = o[0];
-      for (std::size_t j = 0; j < cols.size(); ++j)
-        in.modelColumns(i, static_cast<Eigen::Index>(j)) = o[1 + j];
-    }
-    in.unitRow = first;
-    for (std::size_t j = 0; j < vars.size(); ++j) {
-      ResidualVariable w = vars[j];
-      w.values.clear();
-      for (const auto& o : obs) w.values.push_back(o[1 + cols.size() + j]);
-      in.variables.push_back(std::move(w));
-    }
-    return checkResidual(in);
-  }
-  std::vector<std::size_t> rows;
-  for (std::size_t k = 0; k < pb.fitRows(); ++k)
-    if (!res.excluded[k]) rows.push_back(k);
-  const auto m = static_cast<Eigen::Index>(rows.size());
-  ResidualCheckInput in;
-  in.residual.resize(m);
+/// Groups [begin, end) of `size` consecutive rows of [b, e) (1: every row).
+std::vector<std::pair<std::size_t, std::size_t>> rowGroups(std::size_t b, std::size_t e, std::size_t size) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  for (std::size_t g = b; g < e; g += size) out.emplace_back(g, std::min(e, g + size));
+  return out;
+}
+
+/// The residual check of the rows of `groups` that were not excluded, on the means of each group,
+/// against the model's columns and the variables; with `withExcluded` the excluded rows of the groups
+/// go along for the plot.
+ResidualCheck checkRows(const Problem& pb, const State& s, const Residual& res,
+                        const std::vector<ResidualVariable>& vars,
+                        const std::vector<std::pair<std::size_t, std::size_t>>& groups, bool withExcluded) {
   const auto cols = pb.columnValues(s);
-  in.modelColumns.resize(m, static_cast<Eigen::Index>(cols.size()));
-  for (Eigen::Index i = 0; i < m; ++i) {
-    const std::size_t k = rows[static_cast<std::size_t>(i)];
-    in.residual(i) = res.r[k];
-    for (std::size_t j = 0; j < cols.size(); ++j)
-      in.modelColumns(i, static_cast<Eigen::Index>(j)) = (*cols[j])[k];
-    in.unitRow.push_back(static_cast<long>(k + 1));
+  const std::size_t width = 1 + cols.size() + vars.size();
+  std::vector<std::vector<double>> means(width);  // residual, columns..., variables...
+  std::vector<long> first;
+  std::vector<double> sum(width);
+  for (const auto& [gb, ge] : groups) {
+    std::fill(sum.begin(), sum.end(), 0.0);
+    double cnt = 0.0;
+    long row = 0;
+    for (std::size_t k = gb; k < ge; ++k) {
+      if (res.excluded[k]) continue;
+      if (cnt == 0.0) row = static_cast<long>(k + 1);
+      cnt += 1.0;
+      sum[0] += res.r[k];
+      for (std::size_t j = 0; j < cols.size(); ++j) sum[1 + j] += (*cols[j])[k];
+      for (std::size_t j = 0; j < vars.size(); ++j) sum[1 + cols.size() + j] += vars[j].values[k];
+    }
+    if (cnt == 0.0) continue;
+    for (std::size_t j = 0; j < width; ++j) means[j].push_back(sum[j] / cnt);
+    first.push_back(row);
   }
-  for (const ResidualVariable& v : vars) {
-    ResidualVariable w = v;
-    w.values.clear();
-    for (std::size_t k : rows) w.values.push_back(v.values[k]);
+  const auto n = static_cast<Eigen::Index>(first.size());
+  ResidualCheckInput in;
+  in.residual = Eigen::Map<const Eigen::VectorXd>(means[0].data(), n);
+  in.modelColumns.resize(n, static_cast<Eigen::Index>(cols.size()));
+  for (std::size_t j = 0; j < cols.size(); ++j)
+    in.modelColumns.col(static_cast<Eigen::Index>(j)) =
+        Eigen::Map<const Eigen::VectorXd>(means[1 + j].data(), n);
+  in.unitRow = std::move(first);
+  for (std::size_t j = 0; j < vars.size(); ++j) {
+    ResidualVariable w = vars[j];
+    w.values = std::move(means[1 + cols.size() + j]);
     in.variables.push_back(std::move(w));
   }
-  for (std::size_t k = 0; k < pb.fitRows(); ++k)
-    if (res.excluded[k]) {
-      in.excludedResidual.push_back(res.r[k]);
-    }
-  if (!in.excludedResidual.empty()) {
-    for (const ResidualVariable& v : vars) {
-      std::vector<double> x;
-      for (std::size_t k = 0; k < pb.fitRows(); ++k)
-        if (res.excluded[k]) x.push_back(v.values[k]);
-      in.excludedValues.push_back(std::move(x));
-    }
+  if (withExcluded && !groups.empty()) {
+    const std::size_t b = groups.front().first, e = groups.back().second;
+    for (std::size_t k = b; k < e; ++k)
+      if (res.excluded[k]) in.excludedResidual.push_back(res.r[k]);
+    if (!in.excludedResidual.empty())
+      for (const ResidualVariable& v : vars) {
+        std::vector<double> x;
+        for (std::size_t k = b; k < e; ++k)
+          if (res.excluded[k]) x.push_back(v.values[k]);
+        in.excludedValues.push_back(std::move(x));
+      }
   }
   return checkResidual(in);
 }
 
-/// The residual check of the held-out rows that were not excluded (every row; the model's columns
-/// as in the fit). Above kCoarseRows rows, on means of consecutive groups of rows.
+/// The residual check (residual_check.h) of a state's fit on the fit rows that were not excluded.
+/// With `coarse` above kCoarseRows rows, the round's search for structure (which generic candidates to
+/// try) runs on the means of the problem's coarse groups; the final check uses every row.
+ResidualCheck checkOf(const Problem& pb, const State& s, const Residual& res,
+                      const std::vector<ResidualVariable>& vars, bool coarse = false) {
+  const auto groups = pb.fitGroups();
+  if (coarse && !groups.empty()) return checkRows(pb, s, res, vars, groups, false);
+  return checkRows(pb, s, res, vars, rowGroups(0, pb.fitRows(), 1), true);
+}
+
+/// The residual check of the held-out rows that were not excluded (the model's columns as in the
+/// fit); above kCoarseRows rows on means of consecutive groups of rows.
 ResidualCheck heldoutCheckOf(const Problem& pb, const State& s, const Residual& res,
                              const std::vector<ResidualVariable>& vars) {
-  const auto cols = pb.columnValues(s);
   const std::size_t b = pb.fitRows(), e = pb.rows();
-  const std::size_t m = std::max<std::size_t>(1, (e - b + kCoarseRows - 1) / kCoarseRows);
-  std::vector<std::vector<double>> obs;  // per group: residual, columns..., variables...
-  std::vector<long> first;
-  for (std::size_t g = b; g < e; g += m) {
-    std::vector<double> v(1 + cols.size() + vars.size(), 0.0);
-    double cnt = 0.0;
-    long row = 0;
-    for (std::size_t k = g; k < std::min(e, g + m); ++k) {
-      if (res.excluded[k]) continue;
-      if (cnt == 0.0) row = static_cast<long>(k + 1);
-      cnt += 1.0;
-      v[0] += res.r[k];
-      for (std::size_t j = 0; j < cols.size(); ++j) v[1 + j] += (*cols[j])[k];
-      for (std::size_t j = 0; j < vars.size(); ++j) v[1 + cols.size() + j] += vars[j].values[k];
-    }
-    if (cnt == 0.0) continue;
-    for (double& x : v) x /= cnt;
-    obs.push_back(std::move(v));
-    first.push_back(row);
-  }
-  const auto n = static_cast<Eigen::Index>(obs.size());
-  ResidualCheckInput in;
-  in.residual.resize(n);
-  in.modelColumns.resize(n, static_cast<Eigen::Index>(cols.size()));
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const auto& o = obs[static_cast<std::size_t>(i)];
-    in.residual(i) = o[0];
-    for (std::size_t j = 0; j < cols.size(); ++j) in.modelColumns(i, static_cast<Eigen::Index>(j)) = o[1 + j];
-  }
-  in.unitRow = first;
-  for (std::size_t j = 0; j < vars.size(); ++j) {
-    ResidualVariable w = vars[j];
-    w.values.clear();
-    for (const auto& o : obs) w.values.push_back(o[1 + cols.size() + j]);
-    in.variables.push_back(std::move(w));
-  }
-  for (std::size_t k = b; k < e; ++k)
-    if (res.excluded[k]) in.excludedResidual.push_back(res.r[k]);
-  if (!in.excludedResidual.empty())
-    for (const ResidualVariable& v : vars) {
-      std::vector<double> x;
-      for (std::size_t k = b; k < e; ++k)
-        if (res.excluded[k]) x.push_back(v.values[k]);
-      in.excludedValues.push_back(std::move(x));
-    }
-  return checkResidual(in);
+  return checkRows(pb, s, res, vars,
+                   rowGroups(b, e, std::max<std::size_t>(1, (e - b + kCoarseRows - 1) / kCoarseRows)), true);
 }
 
 /// The variable a named effect is chosen for (its generic alternative is unexplained:<that>).

@@ -185,7 +185,7 @@ TEST(Cli, ReportRejectsBadStudySettings) {
 // no source paths, seed numbers or ASCII stand-ins for symbols.
 TEST(Cli, DemoReportReadsAsAReport) {
   if (std::system("command -v pdftotext > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "pdftotext (poppler-utils) missing";
+    FAIL() << "pdftotext (poppler-utils) missing: packaging/install-deps.sh installs it";
   test::TempDir tmp;
   ASSERT_EQ(cli("demo --out-dir demo", tmp).code, 0);
   ASSERT_EQ(std::system(("pdftotext demo/metrofit-demo-report.pdf '" + tmp.file("all.txt") +
