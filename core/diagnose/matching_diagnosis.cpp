@@ -491,7 +491,7 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
   matching::requireDeterminable(set, locks, false, matching::FitKind::LeastSquares, "matching diagnosis");
 
   const Problem pb = makeProblem(set);
-  const std::size_t nObs = pb.observations(), nPts = pb.points();
+  const std::size_t nPts = pb.points();
 
   std::vector<EffectDef> defs;
   defs.push_back({"scale", Kind::Scale, -1, 1, nullptr, std::nullopt});

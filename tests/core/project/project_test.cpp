@@ -13,8 +13,8 @@ Project sample() {
   Project p;
   p.name = "Cell 4 — Ø 12 bores";  // non-ASCII survives
   p.description = "two lines\nof text";
-  p.datasets.push_back({"log", dataset_kind::kThermalLog, "data/log.csv", "8 h test", ""});
-  p.datasets.push_back({"pts", dataset_kind::kProbePoints, "/abs/pts.csv", "", "MIT"});
+  p.datasets.push_back({"log", dataset_kind::kThermalLog, "data/log.csv", "8 h test", "", {}});
+  p.datasets.push_back({"pts", dataset_kind::kProbePoints, "/abs/pts.csv", "", "MIT", {}});
   p.studies["thermal"] = {{"target", "disp_z_um"}, {"inputs", {"T1", "T2"}}, {"future_key", 3}};
   p.results["thermal"] = {{"heldout_rmse", 0.42}};
   return p;

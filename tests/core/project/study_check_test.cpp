@@ -14,8 +14,8 @@ namespace {
 
 Project twoDatasets() {
   Project p;
-  p.datasets.push_back({"log", dataset_kind::kThermalLog, "log.csv", "", ""});
-  p.datasets.push_back({"pts", dataset_kind::kProbePoints, "pts.csv", "", ""});
+  p.datasets.push_back({"log", dataset_kind::kThermalLog, "log.csv", "", "", {}});
+  p.datasets.push_back({"pts", dataset_kind::kProbePoints, "pts.csv", "", "", {}});
   return p;
 }
 
@@ -55,7 +55,7 @@ TEST(StudyCheck, DatasetOfTheWrongKindOrMissing) {
 
 TEST(StudyCheck, MisspelledDatasetKind) {
   Project p = twoDatasets();
-  p.datasets.push_back({"x", "thermal-log", "x.csv", "", ""});
+  p.datasets.push_back({"x", "thermal-log", "x.csv", "", "", {}});
   const auto issues = checkStudies(p);
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].field, "datasets[2].kind");
