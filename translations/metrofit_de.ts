@@ -6511,11 +6511,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <source>Effects added with Apply on the Diagnosis page (lagged inputs, extra input columns, a drift term). Each model is fitted with the declared inputs and with the effects (same seed) and keeps the variant with the lower held-out error: an effect never makes a model worse on the held-out rows. Undo the Apply to fit the declared model only.</source>
-        <translation>Mit „Ins Modell übernehmen“ auf der Seite „Diagnose“ hinzugefügte Effekte (verzögerte Eingänge, zusätzliche Eingangsspalten, ein Driftterm). Jedes Modell wird mit den deklarierten Eingängen und mit den Effekten angepasst (gleicher Startwert) und behält die Variante mit dem kleineren Fehler auf den Testdaten: Ein Effekt macht ein Modell auf den Testzeilen nie schlechter. Machen Sie die Übernahme rückgängig, um nur das deklarierte Modell anzupassen.</translation>
+        <source>Effects added with Apply on the Diagnosis page (lagged inputs, extra input columns, a drift term, generic effects as the curve, step or levels the diagnosis fitted). Each model is fitted with the declared inputs and with the effects (same seed) and keeps the variant with the lower held-out error: an effect never makes a model worse on the held-out rows. Undo the Apply to fit the declared model only.</source>
+        <translation>Mit „Ins Modell übernehmen“ auf der Seite „Diagnose“ hinzugefügte Effekte (verzögerte Eingänge, zusätzliche Eingangsspalten, ein Driftterm, generische Effekte als die Kurve, Stufe oder Niveaus, die die Diagnose angepasst hat). Jedes Modell wird mit den deklarierten Eingängen und mit den Effekten angepasst (gleicher Startwert) und behält die Variante mit dem kleineren Fehler auf den Testdaten: Ein Effekt macht ein Modell auf den Testzeilen nie schlechter. Machen Sie die Übernahme rückgängig, um nur das deklarierte Modell anzupassen.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Applied effects cannot be used: %1</source>
         <translation>Übernommene Effekte können nicht verwendet werden: %1</translation>
     </message>

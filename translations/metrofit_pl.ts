@@ -6532,11 +6532,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <source>Effects added with Apply on the Diagnosis page (lagged inputs, extra input columns, a drift term). Each model is fitted with the declared inputs and with the effects (same seed) and keeps the variant with the lower held-out error: an effect never makes a model worse on the held-out rows. Undo the Apply to fit the declared model only.</source>
-        <translation>Efekty dodane przyciskiem „Zastosuj do modelu” na stronie Diagnoza (opóźnione wejścia, dodatkowe kolumny wejściowe, składnik dryftu). Każdy model jest dopasowywany z zadeklarowanymi wejściami oraz z efektami (to samo ziarno) i zachowuje wariant o mniejszym błędzie danych testowych: efekt nigdy nie pogarsza modelu na wierszach testowych. Cofnij zastosowanie, aby dopasować tylko zadeklarowany model.</translation>
+        <source>Effects added with Apply on the Diagnosis page (lagged inputs, extra input columns, a drift term, generic effects as the curve, step or levels the diagnosis fitted). Each model is fitted with the declared inputs and with the effects (same seed) and keeps the variant with the lower held-out error: an effect never makes a model worse on the held-out rows. Undo the Apply to fit the declared model only.</source>
+        <translation>Efekty dodane przyciskiem „Zastosuj do modelu” na stronie Diagnoza (opóźnione wejścia, dodatkowe kolumny wejściowe, składnik dryftu, efekty ogólne jako krzywa, skok lub poziomy dopasowane przez diagnozę). Każdy model jest dopasowywany z zadeklarowanymi wejściami oraz z efektami (to samo ziarno) i zachowuje wariant o mniejszym błędzie danych testowych: efekt nigdy nie pogarsza modelu na wierszach testowych. Cofnij zastosowanie, aby dopasować tylko zadeklarowany model.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Applied effects cannot be used: %1</source>
         <translation>Nie można użyć zastosowanych efektów: %1</translation>
     </message>

@@ -473,7 +473,7 @@ void DiagnosisPage::updateApplyButton() {
   QStringList applicable, left;
   if (result_) {
     for (const diagnose::Candidate* c : result_->accepted())
-      (canApplyEffect(*c) ? applicable : left) << QString::fromStdString(c->name);
+      (canApplyEffect(result_->domain, *c) ? applicable : left) << QString::fromStdString(c->name);
   }
   applyButton_->setEnabled(!isRunning() && !applicable.isEmpty());
   if (left.isEmpty()) {

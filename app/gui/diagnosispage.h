@@ -8,8 +8,8 @@
 // final residual still depends on: the verdict, the structure, the outliers, every test and the
 // residual against the variable of the strongest structure with the generic fit. Generic effects
 // (`unexplained:<against>`) are listed with the named ones, their form in the parameters column.
-// Apply (Ctrl+Shift+A) writes the accepted effects its study can include (canApplyEffect: not yet
-// the generic ones; the button's tooltip says which are left out and why) to
+// Apply (Ctrl+Shift+A) writes the accepted effects its study can include (canApplyEffect: the generic
+// ones in thermal only; the button's tooltip says which are left out and why) to
 // studies.diagnosis.<domain>.applied as one undoable edit of the project document.
 #include <QFutureWatcher>
 #include <QWidget>

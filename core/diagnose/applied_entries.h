@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/diagnose/residual_check.h"
+
 namespace metrofit::diagnose {
 
 /// How a parser words the preamble's errors.
@@ -53,5 +55,16 @@ bool isAppliedList(const nlohmann::json& applied, const std::string& field,
 void forEachAppliedEntry(const nlohmann::json& applied, const std::string& field,
                          const AppliedEntryMessages& messages,
                          const std::function<void(const AppliedEntry&)>& fn);
+
+/// A generic effect (`unexplained:<against>`, CONTRACT.md "The open world") as Apply stores it: its
+/// fixed shape under the entry's "shape" key, so that a study evaluates the same basis the diagnosis
+/// fitted: {"against", "form" (linear|smooth|step|periodic|level), "knots", "harmonics", "levels",
+/// "centre", "scale", "subset", "without_linear", "components"}.
+nlohmann::json genericShapeJson(const GenericForm& form);
+/// The shape of an `unexplained:<against>` entry; ValidationError naming "<field[i]>.shape" or
+/// "<field[i]>.shape.<key>" for a missing shape, a wrong type, an unknown form, knots that are not
+/// finite and increasing (smooth: at least two), harmonics or levels out of range, a scale that is
+/// not positive, or an `against` that is not the name's.
+GenericForm genericShapeOf(const AppliedEntry& entry, const std::string& source = {});
 
 }  // namespace metrofit::diagnose

@@ -67,6 +67,18 @@ class SequencedPair {
   std::vector<IterationSummary> queue_;
 };
 
+/// The values of a generic effect's variable on every row, as the closed loop's residual variables
+/// (thermal_diagnosis.cpp): `time` in min, `row` 1-based, else the column (which must exist).
+std::vector<double> genericVariable(const ThermalLog& log, const std::string& against) {
+  if (against == "time") return log.timeMin;
+  if (against == "row") {
+    std::vector<double> r(log.rows());
+    for (std::size_t k = 0; k < r.size(); ++k) r[k] = static_cast<double>(k + 1);
+    return r;
+  }
+  return log.channel(against).values;
+}
+
 std::string listOf(const std::vector<std::string>& names) {
   std::string s;
   for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
@@ -113,6 +125,15 @@ std::vector<ThermalRegressor> thermalRegressors(const ThermalLog& log, const std
     for (std::size_t k = 0; k < n; ++k) r.values[k] = log.timeMin[k] - log.timeMin[0];
     out.push_back(std::move(r));
   }
+  for (const GenericForm& g : effects.generic) {
+    const Eigen::MatrixXd basis = genericBasis(g, genericVariable(log, g.against));
+    for (Eigen::Index j = 0; j < basis.cols(); ++j) {
+      ThermalRegressor r;
+      r.name = r.channel = "unexplained:" + g.against + "#" + std::to_string(j + 1);
+      r.values.assign(basis.col(j).data(), basis.col(j).data() + basis.rows());
+      out.push_back(std::move(r));
+    }
+  }
   return out;
 }
 
@@ -127,7 +148,8 @@ AppliedThermalEffects appliedThermalEffects(const nlohmann::json& applied, const
                                             const std::string& field) {
   AppliedThermalEffects out;
   std::vector<std::string> seen;
-  const AppliedEntryMessages messages = appliedMessagesKnown("lag, lag:<column>, input:<column>, drift");
+  static const std::string kKnown = "lag, lag:<column>, input:<column>, drift, unexplained:<variable>";
+  const AppliedEntryMessages messages = appliedMessagesKnown(kKnown);
   forEachAppliedEntry(applied, field, messages, [&](const AppliedEntry& entry) {
     const nlohmann::json& e = entry.json;
     const std::string& name = entry.name;
@@ -171,9 +193,19 @@ AppliedThermalEffects appliedThermalEffects(const nlohmann::json& applied, const
     } else if (name == "drift") {
       out.effects.drift = true;
       out.labels.push_back(name);
+    } else if (name.starts_with("unexplained:")) {
+      GenericForm g = genericShapeOf(entry);
+      if (g.against != "time" && g.against != "row") {
+        column(g.against);
+        if (g.against == target) throw ValidationError(where, "'" + name + "' names the target column");
+      }
+      if (g.components != 1)
+        throw ValidationError(ErrorContext{{}, 0, 0, entry.at("shape.components")},
+                              "a thermal log has one target column (components 1)");
+      out.labels.push_back(name + " (" + formName(g.form) + ")");
+      out.effects.generic.push_back(std::move(g));
     } else {
-      throw ValidationError(
-          where, "unknown thermal effect '" + name + "' (known: lag, lag:<column>, input:<column>, drift)");
+      throw ValidationError(where, "unknown thermal effect '" + name + "' (known: " + kKnown + ")");
     }
   });
   return out;

@@ -8,11 +8,16 @@
 //                            declared input) or `lag:<col>` (that input; overrides `lag`)
 //   `input:<col>`            z(t) - z(0) of a further column of the log
 //   `drift`                  t - t0 (min)
+//   `unexplained:<against>`  the columns of the generic effect's basis (residual_check.h genericBasis
+//                            of its fixed shape) on time (min), the data row (1-based) or a column:
+//                            "unexplained:<against>#1", "#2", ...
 //
 // The applied list is what the diagnosis page's Apply stores (studies.diagnosis.thermal.applied,
 // CONTRACT.md effect names and parameter keys):
 //   [{"name": "lag:T2", "parameters": {"tau_min": 15.5}}, {"name": "input:spindle_rpm",
-//     "parameters": {"coefficient": 0.001}}, {"name": "drift", "parameters": {"per_min": 0.01}}]
+//     "parameters": {"coefficient": 0.001}}, {"name": "drift", "parameters": {"per_min": 0.01}},
+//    {"name": "unexplained:T2", "parameters": {...}, "shape": {"against": "T2", "form": "smooth", ...}}]
+// (a generic effect's "shape": applied_entries.h genericShapeJson; its coefficients are refitted).
 // Only a lag's tau is taken from it: the linear coefficients (of the inputs, `input:<col>`'s
 // coefficient, `drift`'s per_min) are refitted by every model with the effect's column included,
 // as the diagnosis refits them when it adds an effect.
@@ -28,6 +33,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/run.h"
+#include "core/diagnose/residual_check.h"
 #include "core/thermal/thermal_log.h"
 #include "core/thermal/thermal_model.h"
 
@@ -46,13 +52,18 @@ struct ThermalEffectSet {
   std::map<std::string, double> lagCol;  ///< `lag:<col>` tau in min (overrides lagAll for that input)
   std::vector<std::string> extra;        ///< `input:<col>`
   bool drift = false;                    ///< `drift`
+  /// `unexplained:<against>`: generic effects (their fixed shapes) of time, row or a column.
+  std::vector<GenericForm> generic;
 
-  bool empty() const { return !(lagAll > 0.0) && lagCol.empty() && extra.empty() && !drift; }
+  bool empty() const {
+    return !(lagAll > 0.0) && lagCol.empty() && extra.empty() && !drift && generic.empty();
+  }
 };
 
 /// One column a model fits on (see the header comment).
 struct ThermalRegressor {
-  std::string name;     ///< the closed loop's name: the input ("T2"), "input:<col>", "drift"
+  std::string name;     ///< the closed loop's name: the input ("T2"), "input:<col>", "drift",
+                        ///< "unexplained:<against>#<j>" (1-based basis column)
   std::string channel;  ///< column name in withThermalEffects' log: "T2", "lag:T2", "input:<col>", "drift"
   std::string unit;     ///< the source column's unit; "min" for drift
   double lagMin = 0.0;  ///< tau of a lagged input, else 0
@@ -60,7 +71,8 @@ struct ThermalRegressor {
 };
 
 /// The columns of the declared `inputs` with the effects, in the order inputs, `input:<col>`,
-/// `drift`. The columns must exist in `log` (ValidationError naming the log and column otherwise).
+/// `drift`, the generic effects' basis columns. The columns must exist in `log` (ValidationError naming the
+/// log and column otherwise).
 std::vector<ThermalRegressor> thermalRegressors(const ThermalLog& log, const std::vector<std::string>& inputs,
                                                 const ThermalEffectSet& effects);
 

@@ -303,7 +303,7 @@ TEST_F(ResidualCheckPageTest, GermanAndPolishTranslations) {
   }
 }
 
-TEST_F(ResidualCheckPageTest, GenericEffectIsListedWithItsFormAndNotApplied) {
+TEST_F(ResidualCheckPageTest, GenericEffectIsListedWithItsFormAndAppliedInThermal) {
   const LocaleGuard locale(QLocale::c());
   DiagnosisPage page(&document_);
   page.setDomain(DiagnosisDomain::Thermal);
@@ -315,25 +315,42 @@ TEST_F(ResidualCheckPageTest, GenericEffectIsListedWithItsFormAndNotApplied) {
       << cell(t, 1, 2).toStdString();
   EXPECT_TRUE(t->item(1, 6)->data(Qt::UserRole).toBool());
 
-  // Apply takes the named effect; the generic one is left out and the tooltip says why.
+  // Thermal: Apply takes the named and the generic effect, the generic one with its shape (the
+  // thermal study refits its basis columns).
   ASSERT_TRUE(page.applyButton()->isEnabled());
-  EXPECT_TRUE(page.applyButton()->toolTip().contains(QStringLiteral("Applies lag:T2 only")))
+  EXPECT_FALSE(page.applyButton()->toolTip().contains(QStringLiteral("only")))
       << page.applyButton()->toolTip().toStdString();
-  EXPECT_TRUE(page.applyButton()->toolTip().contains(QStringLiteral("unexplained:T1")));
   ASSERT_TRUE(page.applyAccepted());
   const nlohmann::json applied = document_.project().studies.at("diagnosis").at("thermal").at("applied");
-  ASSERT_EQ(applied.size(), 1u) << applied.dump();
+  ASSERT_EQ(applied.size(), 2u) << applied.dump();
   EXPECT_EQ(applied[0].at("name"), "lag:T2");
+  EXPECT_EQ(applied[1].at("name"), "unexplained:T1");
+  EXPECT_EQ(applied[1].at("shape").at("form"), "smooth");
+  EXPECT_EQ(applied[1].at("shape").at("knots"), nlohmann::json::parse("[20.0, 22.0, 24.0, 26.0, 28.0]"));
+  EXPECT_EQ(applied[1].at("parameters").at("rms"), 2.1);
 
-  // Only a generic effect accepted: nothing Apply could write.
+  // Another domain (no parser of generic shapes yet): the generic effect is left out, the tooltip
+  // says why, and with only a generic effect accepted nothing can be applied.
+  diagnose::Diagnosis kinematic = fixture();
+  kinematic.domain = "kinematic";
+  DiagnosisPage kin(&document_);
+  kin.setDomain(DiagnosisDomain::Kinematic);
+  kin.setResult(kinematic);
+  ASSERT_TRUE(kin.applyButton()->isEnabled());
+  EXPECT_TRUE(kin.applyButton()->toolTip().contains(QStringLiteral("Applies lag:T2 only")))
+      << kin.applyButton()->toolTip().toStdString();
+  EXPECT_TRUE(kin.applyButton()->toolTip().contains(QStringLiteral("unexplained:T1")));
+  diagnose::Diagnosis only = fixture(true);
+  only.domain = "kinematic";
   DiagnosisPage other(&document_);
-  other.setDomain(DiagnosisDomain::Thermal);
-  other.setResult(fixture(true));
+  other.setDomain(DiagnosisDomain::Kinematic);
+  other.setResult(only);
   EXPECT_FALSE(other.applyButton()->isEnabled());
   EXPECT_TRUE(other.applyButton()->toolTip().startsWith(QStringLiteral("Nothing to apply.")))
       << other.applyButton()->toolTip().toStdString();
   EXPECT_FALSE(other.applyAccepted());
-  EXPECT_TRUE(appliedEffects(fixture(true)).empty());
+  EXPECT_TRUE(appliedEffects(only).empty());
+  EXPECT_EQ(appliedEffects(fixture(true)).size(), 1u);
 }
 
 TEST(ResidualCheckTextTest, SentencesInReadersWords) {
@@ -480,7 +497,9 @@ void expectShowsCheck(const DiagnosisPage& page) {
   const ResidualCheckView* v = page.residualCheckView();
   ASSERT_TRUE(v->hasCheck());
   EXPECT_EQ(v->verdictText(), residualCheckVerdict(c));
-  if (c.structure.empty()) EXPECT_EQ(v->verdictText(), coreText(c.summaryParts, c.summary));
+  if (c.structure.empty()) {
+    EXPECT_EQ(v->verdictText(), coreText(c.summaryParts, c.summary));
+  }
   EXPECT_FALSE(v->verdictText().isEmpty());
   EXPECT_TRUE(page.statusText().contains(v->verdictText())) << page.statusText().toStdString();
   EXPECT_GT(c.tests.size(), 0u);
@@ -624,7 +643,9 @@ TEST_F(ResidualCheckPageTest, OpenWorldCasesShowTheirStructureAndOutlier) {
     ASSERT_EQ(d.residualCheck->outliers.size(), 1u) << toJson(d).dump(1);
     EXPECT_EQ(cell(page.residualCheckView()->outlierTable(), 0, 0), QStringLiteral("101"));
     EXPECT_TRUE(cell(page.residualCheckView()->outlierTable(), 0, 4).endsWith(QStringLiteral(" mm")));
-    if (d.residualCheck->plot) EXPECT_EQ(page.residualCheckView()->fitLineCount(), 2);  // x and y
+    if (d.residualCheck->plot) {
+      EXPECT_EQ(page.residualCheckView()->fitLineCount(), 2);  // x and y
+    }
     page.resultTabs()->setCurrentIndex(1);
     grab(page, QStringLiteral("open-kinematic-drift"));
     page.resultTabs()->setCurrentIndex(0);

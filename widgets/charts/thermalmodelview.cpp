@@ -195,7 +195,8 @@ struct ThermalModelView::Impl {
         }
         appliedLabel->setToolTip(ThermalModelView::tr(
             "Effects added with Apply on the Diagnosis page (lagged inputs, extra input columns, a drift "
-            "term). Each model is fitted with the declared inputs and with the effects (same seed) and keeps "
+            "term, generic effects as the curve, step or levels the diagnosis fitted). Each model is fitted "
+            "with the declared inputs and with the effects (same seed) and keeps "
             "the variant with the lower held-out error: an effect never makes a model worse on the held-out "
             "rows. Undo the Apply to fit the declared model only."));
       } catch (const std::exception& e) {

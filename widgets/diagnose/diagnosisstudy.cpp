@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/common/error.h"
+#include "core/diagnose/applied_entries.h"
 #include "core/diagnose/kinematic_diagnosis.h"
 #include "core/diagnose/matching_diagnosis.h"
 #include "core/diagnose/setup_diagnosis.h"
@@ -166,14 +167,14 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer)
   return {};
 }
 
-bool canApplyEffect(const diagnose::Candidate& c) {
-  return !c.generic.has_value();
+bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c) {
+  return !c.generic.has_value() || domain == "thermal";
 }
 
 nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis) {
   nlohmann::json out = nlohmann::json::array();
   for (const diagnose::Candidate* c : diagnosis.accepted()) {
-    if (!canApplyEffect(*c)) continue;
+    if (!canApplyEffect(diagnosis.domain, *c)) continue;
     nlohmann::json params = nlohmann::json::object();
     for (const diagnose::Parameter& p : c->parameters) {
       if (const double* v = std::get_if<double>(&p.value))
@@ -181,7 +182,9 @@ nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis) {
       else
         params[p.name] = std::get<std::string>(p.value);
     }
-    out.push_back({{"name", c->name}, {"parameters", params}});
+    nlohmann::json entry = {{"name", c->name}, {"parameters", params}};
+    if (c->generic) entry["shape"] = diagnose::genericShapeJson(*c->generic);
+    out.push_back(std::move(entry));
   }
   return out;
 }

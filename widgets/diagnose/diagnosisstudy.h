@@ -58,15 +58,17 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
 /// the data cannot be read or do not fit the declared model.
 diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& settings, Observer* observer = nullptr);
 
-/// True when Apply can add the accepted effect `c` to its study's model: the study's applied-effects
-/// parser (core/diagnose/thermal_applied.h, core/kinematics/axis_effects.h,
-/// core/diagnose/applied_setup_matching.h) knows it. The catalogue's named effects: yes. A generic
-/// effect `unexplained:<against>` (Candidate::generic): not yet in any domain (no parser reads its
-/// shape), so it is reported (candidate table, residual check, report) but not applied.
-bool canApplyEffect(const diagnose::Candidate& c);
+/// True when Apply can add the accepted effect `c` of a diagnosis of `domain` ("thermal", ...) to its
+/// study's model: the study's applied-effects parser (core/diagnose/thermal_applied.h,
+/// core/kinematics/axis_effects.h, core/diagnose/applied_setup_matching.h) knows it. The catalogue's
+/// named effects: yes. A generic effect `unexplained:<against>` (Candidate::generic): in the thermal
+/// study (its basis columns are refitted by every model); not yet in the other domains, where it is
+/// reported (candidate table, residual check, report) but not applied.
+bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c);
 
 /// The accepted effects Apply can add (canApplyEffect) as stored under "applied":
-/// [{"name": ..., "parameters": {name: value}}].
+/// [{"name": ..., "parameters": {name: value}}], a generic effect with its "shape"
+/// (core/diagnose/applied_entries.h genericShapeJson).
 nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis);
 
 /// A parameter's value as text ("12.3" or the text value), `digits` significant digits.

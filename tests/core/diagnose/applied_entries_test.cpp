@@ -66,14 +66,14 @@ TEST(AppliedEntries, ThermalPreambleMessages) {
   EXPECT_EQ(
       thermal(J::parse(R"([{"parameters": {}}])")),
       "field 'studies.diagnosis.thermal.applied[0].name': must be the effect's name (lag, lag:<column>, "
-      "input:<column>, drift)");
+      "input:<column>, drift, unexplained:<variable>)");
   EXPECT_EQ(
       thermal(J::parse(R"([{"name": 7}])")),
       "field 'studies.diagnosis.thermal.applied[0].name': must be the effect's name (lag, lag:<column>, "
-      "input:<column>, drift)");
+      "input:<column>, drift, unexplained:<variable>)");
   EXPECT_EQ(thermal(J::parse(R"([{"name": ""}])")),
             "field 'studies.diagnosis.thermal.applied[0].name': unknown thermal effect '' (known: lag, "
-            "lag:<column>, input:<column>, drift)");
+            "lag:<column>, input:<column>, drift, unexplained:<variable>)");
   EXPECT_EQ(thermal(J::parse(R"([{"name": "drift"}, {"name": "drift"}])")),
             "field 'studies.diagnosis.thermal.applied[1].name': the effect 'drift' is applied twice");
   EXPECT_EQ(thermal(J()), "no error");
