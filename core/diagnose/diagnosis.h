@@ -85,6 +85,10 @@ struct Candidate {
   Phrases evidenceParts;             ///< evidence == english(evidenceParts)
   /// A generic effect (`unexplained:<against>`, CONTRACT.md "The open world"): its fixed shape.
   std::optional<GenericForm> generic;
+  /// Kinematic generic effects: the coefficients w of genericBasis(*generic) from the final fit, so
+  /// that the displacement genericBasis(shape) w can be evaluated on a path (Apply). Empty otherwise
+  /// (thermal refits its generic columns).
+  std::vector<double> genericCoefficients;
 
   /// Replaces the evidence (string and phrases).
   void setEvidence(Phrases parts);

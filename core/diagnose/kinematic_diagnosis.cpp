@@ -16,6 +16,7 @@
 #include "core/common/error.h"
 #include "core/diagnose/loop.h"
 #include "core/kinematics/identification.h"
+#include "core/kinematics/path_variables.h"
 #include "core/sim/effects_kinematic.h"
 
 namespace metrofit::diagnose {
@@ -40,6 +41,9 @@ PhraseArg um(double mm, int digits = 3) {
 struct GenericTerm {
   std::shared_ptr<const Eigen::MatrixXd> columns;  ///< 2n x q
   GenericForm shape;
+  /// columns = genericBasis(shape) toBasis minus its part in the model's Jacobian (absorbed by the
+  /// other parameters): the coefficients c of the columns are toBasis c of the shape's own basis.
+  std::shared_ptr<const Eigen::MatrixXd> toBasis;
 };
 
 struct State {
@@ -380,71 +384,39 @@ Data makeData(const MeasuredPath& path, const KinematicDiagnosisOptions& o) {
   return d;
 }
 
-/// Radial unit vectors about the commands' centroid (the direction a ballbar measures).
-std::vector<Eigen::Vector2d> radialDirections(const Data& d) {
-  Eigen::Vector2d c = Eigen::Vector2d::Zero();
-  for (const auto& p : d.path->command) c += p;
-  c /= static_cast<double>(d.n);
-  std::vector<Eigen::Vector2d> u(d.n);
-  for (std::size_t k = 0; k < d.n; ++k) {
-    const Eigen::Vector2d v = d.path->command[k] - c;
-    u[k] = v.norm() > 0.0 ? Eigen::Vector2d(v / v.norm()) : Eigen::Vector2d::UnitX();
-  }
-  return u;
-}
-
-/// The residual variables of a path (CONTRACT.md "The open world"): row (path order), the path
-/// angle about the centroid, the loop direction (CCW / CW from the tangent), reversal =
-/// sign(new direction) ln(1 + samples since the axis that reversed last reversed), and the
-/// commanded x and y.
-std::vector<ResidualVariable> kinematicVariables(const Data& d, const std::vector<Eigen::Vector2d>& u,
-                                                 const std::vector<std::size_t>& orig) {
+/// The residual variables of a path (core/kinematics/path_variables.h, shared with the applied generic
+/// effects of axis_effects.h): row (the original 1-based point number), the path angle about the
+/// centroid, the loop direction (CCW / CW; only when the path runs both), reversal and the commanded
+/// x and y.
+std::vector<ResidualVariable> kinematicVariables(const Data& d, const std::vector<std::size_t>& orig) {
+  PathVariables pv = pathVariables(d.path->command);
   std::vector<ResidualVariable> vars;
-  const std::size_t n = d.n;
   ResidualVariable row, ang, dir, rev, x, y;
   row.name = "row";
   row.naturalOrder = true;
   row.label = {Phrase("data row")};
+  for (std::size_t k = 0; k < d.n; ++k) row.values.push_back(static_cast<double>(orig[k] + 1));
   ang.name = "angle";
   ang.kind = ResidualVariable::Kind::Angle;
   ang.label = {Phrase("path angle (deg)")};
+  ang.values = std::move(pv.angle);
   dir.name = "direction";
   dir.kind = ResidualVariable::Kind::Category;
   dir.levels = {"CCW", "CW"};
   dir.label = {Phrase("loop direction")};
+  dir.values = std::move(pv.direction);
   rev.name = "reversal";
   rev.label = {Phrase("samples since an axis reversed (signed, log scale)")};
+  rev.values = std::move(pv.reversal);
   x.name = "x";
   x.label = {Phrase("x (mm)")};
+  x.values = std::move(pv.x);
   y.name = "y";
   y.label = {Phrase("y (mm)")};
-  long since[2] = {0, 0};
-  for (std::size_t k = 0; k < n; ++k) {
-    row.values.push_back(static_cast<double>(orig[k] + 1));
-    double a = std::atan2(u[k].y(), u[k].x()) / kDeg;
-    if (a < 0.0) a += 360.0;
-    ang.values.push_back(a);
-    const Eigen::Vector2d& t = d.motion.tangent[k];
-    const double cross = u[k].x() * t.y() - u[k].y() * t.x();
-    dir.values.push_back(cross >= 0.0 ? 0.0 : 1.0);
-    for (int a2 = 0; a2 < 2; ++a2) {
-      if (k > 0 && d.motion.direction[k](a2) != d.motion.direction[k - 1](a2))
-        since[a2] = 0;
-      else if (k > 0)
-        ++since[a2];
-    }
-    // Signed and on a log scale: a reversal glitch decays within a few samples and its sign follows
-    // the new direction of the axis that reversed last.
-    const int last = since[0] <= since[1] ? 0 : 1;
-    rev.values.push_back(d.motion.direction[k](last) * std::log1p(static_cast<double>(since[last])));
-    x.values.push_back(d.path->command[k].x());
-    y.values.push_back(d.path->command[k].y());
-  }
+  y.values = std::move(pv.y);
   vars.push_back(std::move(row));
   vars.push_back(std::move(ang));
-  if (std::any_of(dir.values.begin(), dir.values.end(), [](double v) { return v > 0.5; }) &&
-      std::any_of(dir.values.begin(), dir.values.end(), [](double v) { return v < 0.5; }))
-    vars.push_back(std::move(dir));
+  if (pv.bothDirections) vars.push_back(std::move(dir));
   vars.push_back(std::move(rev));
   vars.push_back(std::move(x));
   vars.push_back(std::move(y));
@@ -504,8 +476,7 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
   q0.b = base.errors.yAxisAngleDeg * kDeg;
   Solution cur = solve(d, state, q0);
 
-  const std::vector<Eigen::Vector2d> radial = radialDirections(d);
-  const std::vector<ResidualVariable> vars = kinematicVariables(d, radial, orig);
+  const std::vector<ResidualVariable> vars = kinematicVariables(d, orig);
 
   /// The kinematic domain of the shared loop (loop.h): the declared actuator errors plus effects,
   /// fitted by nonlinear least squares on the x, y residual of every point, dBIC of the whole model.
@@ -544,14 +515,18 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
       // Observation space (x, y per point), one set of columns per coordinate.
       const Eigen::MatrixXd G = variableBasis(g, *v);
       const Eigen::MatrixXd Gp = G - QJ_ * (QJ_.transpose() * G);
-      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Gp, Eigen::ComputeThinU);
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Gp, Eigen::ComputeThinU | Eigen::ComputeThinV);
       Eigen::Index rank = 0;
       const double top = G.norm();
       for (Eigen::Index j = 0; j < svd.singularValues().size(); ++j)
         if (svd.singularValues()(j) > 1e-6 * top) ++rank;
       if (rank == 0) return std::nullopt;
       Eigen::MatrixXd Gk = svd.matrixU().leftCols(rank);
-      terms_[g.against] = GenericTerm{std::make_shared<const Eigen::MatrixXd>(std::move(Gk)), g};
+      // Gk = Gp V_r S_r^-1: coefficients c of Gk are V_r S_r^-1 c of the basis G.
+      Eigen::MatrixXd toBasis =
+          svd.matrixV().leftCols(rank) * svd.singularValues().head(rank).cwiseInverse().asDiagonal();
+      terms_[g.against] = GenericTerm{std::make_shared<const Eigen::MatrixXd>(std::move(Gk)), g,
+                                      std::make_shared<const Eigen::MatrixXd>(std::move(toBasis))};
       return g;
     }
     bool beginRound(int) override {
@@ -575,7 +550,20 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
       cur_ = std::move(s.sol);
     }
     double currentError() const override { return cur_.rmse; }
-    void finish(Diagnosis& dg, std::vector<Candidate*>, bool) override {
+    void finish(Diagnosis& dg, std::vector<Candidate*> accepted, bool) override {
+      // Each accepted generic effect's coefficients in its shape's own basis, from the final joint
+      // fit (what Apply stores: the displacement genericBasis(shape) w on any path, axis_effects.h).
+      std::size_t at = 0;
+      for (const GenericTerm& t : state_.generic) {
+        const Eigen::Index q = t.columns->cols();
+        Eigen::VectorXd c(q);
+        for (Eigen::Index j = 0; j < q; ++j) c(j) = cur_.q.g[at + static_cast<std::size_t>(j)];
+        at += static_cast<std::size_t>(q);
+        const Eigen::VectorXd w = *t.toBasis * c;
+        for (Candidate* a : accepted)
+          if (a->generic && a->name == "unexplained:" + t.shape.against)
+            a->genericCoefficients.assign(w.data(), w.data() + w.size());
+      }
       dg.final = summaryOf(cur_);
       dg.residualCheck = checkResidual(kinematicCheckInput(d_, state_, cur_, vars_, orig_));
     }

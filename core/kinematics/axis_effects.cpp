@@ -8,6 +8,7 @@
 #include "core/common/error.h"
 #include "core/diagnose/applied_entries.h"
 #include "core/io/csv.h"
+#include "core/kinematics/path_variables.h"
 #include "core/project/project.h"
 
 namespace metrofit {
@@ -40,11 +41,32 @@ Eigen::Vector2d AxisEffects::effectiveJoints(const Eigen::Vector2d& c, const Eig
   return e;
 }
 
+std::vector<Eigen::Vector2d> AxisEffects::displacement(const std::vector<Eigen::Vector2d>& commands) const {
+  std::vector<Eigen::Vector2d> out(commands.size(), Eigen::Vector2d::Zero());
+  if (generic.empty() || commands.empty()) return out;
+  const PathVariables v = pathVariables(commands);
+  for (const GenericDisplacement& g : generic) {
+    const std::vector<double>* values = v.find(g.shape.against);  // checked when read
+    if (!values) continue;
+    std::vector<double> twice;  // x and y of every point (the basis' two components)
+    twice.reserve(2 * values->size());
+    for (double x : *values) twice.insert(twice.end(), {x, x});
+    const Eigen::MatrixXd B = diagnose::genericBasis(g.shape, twice);
+    const Eigen::VectorXd d =
+        B * Eigen::Map<const Eigen::VectorXd>(g.coefficients.data(),
+                                              static_cast<Eigen::Index>(g.coefficients.size()));
+    for (std::size_t k = 0; k < commands.size(); ++k)
+      out[k] += Eigen::Vector2d(d(static_cast<Eigen::Index>(2 * k)), d(static_cast<Eigen::Index>(2 * k + 1)));
+  }
+  return out;
+}
+
 AxisEffects axisEffectsFromApplied(const nlohmann::json& applied, double feedMmPerMin,
                                    const std::string& field) {
   AxisEffects out;
   out.base.feedMmPerMin = feedMmPerMin;
-  const AppliedEntryMessages messages = appliedMessagesKnown("backlash, scale, cyclic, servo_lag");
+  static const std::string kKnown = "backlash, scale, cyclic, servo_lag, unexplained:<variable>";
+  const AppliedEntryMessages messages = appliedMessagesKnown(kKnown);
   if (!isAppliedList(applied, field, messages)) return out;
   if (!(feedMmPerMin > 0.0) || !std::isfinite(feedMmPerMin))
     throw ValidationError(ErrorContext{{}, 0, 0, "studies.diagnosis.kinematic.feed_mm_per_min"},
@@ -96,9 +118,31 @@ AxisEffects axisEffectsFromApplied(const nlohmann::json& applied, double feedMmP
       out.cyclic.push_back(y);
       out.labels.push_back("cyclic (" + axis->get<std::string>() + ", period " + num(y.periodMm) +
                            " mm, amplitude " + num(y.amplitudeMm * 1000.0) + " um)");
+    } else if (name.starts_with("unexplained:")) {
+      GenericDisplacement g;
+      g.shape = diagnose::genericShapeOf(entry);
+      if (!PathVariables{}.find(g.shape.against))
+        throw ValidationError(where, "'" + name + "': a circular test has no variable '" + g.shape.against +
+                                         "' (row, angle, direction, reversal, x, y)");
+      if (g.shape.components != 2)
+        throw ValidationError(ErrorContext{{}, 0, 0, entry.at("shape.components")},
+                              "a circular test has two coordinates (components 2)");
+      const auto columns = diagnose::genericBasis(g.shape, {0.0, 0.0}).cols();
+      const auto c = e.find("coefficients");
+      if (c == e.end() || !c->is_array() || static_cast<Eigen::Index>(c->size()) != columns)
+        throw ValidationError(ErrorContext{{}, 0, 0, entry.at("coefficients")},
+                              "'" + name + "' needs " + std::to_string(columns) +
+                                  " coefficients (mm), one per column of its shape's basis");
+      for (const auto& x : *c) {
+        if (!x.is_number() || !std::isfinite(x.get<double>()))
+          throw ValidationError(ErrorContext{{}, 0, 0, entry.at("coefficients")},
+                                "must be finite numbers (mm)");
+        g.coefficients.push_back(x.get<double>());
+      }
+      out.labels.push_back(name + " (" + diagnose::formName(g.shape.form) + ")");
+      out.generic.push_back(std::move(g));
     } else {
-      throw ValidationError(
-          where, "unknown kinematic effect '" + name + "' (known: backlash, scale, cyclic, servo_lag)");
+      throw ValidationError(where, "unknown kinematic effect '" + name + "' (known: " + kKnown + ")");
     }
     if (std::find(seen.begin(), seen.end(), key) != seen.end())
       throw ValidationError(where, "the effect '" + key + "' is applied twice");
@@ -111,8 +155,11 @@ MeasuredPath withEffectiveJoints(const MeasuredPath& path, const AxisEffects& ef
   MeasuredPath out = path;
   if (effects.empty()) return out;
   const PathMotion motion = pathMotion(path.command);
-  for (std::size_t k = 0; k < path.size(); ++k)
+  const std::vector<Eigen::Vector2d> shift = effects.displacement(path.command);
+  for (std::size_t k = 0; k < path.size(); ++k) {
     out.command[k] = effects.effectiveJoints(path.command[k], motion.direction[k], motion.tangent[k]);
+    out.measured[k] -= shift[k];
+  }
   return out;
 }
 
@@ -121,12 +168,15 @@ std::vector<Eigen::Vector2d> runPathWithEffects(const CartesianMachine2& machine
                                                 const std::vector<Eigen::Vector2d>& motionOf) {
   std::vector<Eigen::Vector2d> out;
   if (commands.empty()) return out;
-  const PathMotion motion = pathMotion(motionOf.empty() ? commands : motionOf);
+  const std::vector<Eigen::Vector2d>& along = motionOf.empty() ? commands : motionOf;
+  const PathMotion motion = pathMotion(along);
+  const std::vector<Eigen::Vector2d> shift = effects.displacement(along);
   out.reserve(commands.size());
   for (std::size_t k = 0; k < commands.size(); ++k) {
     const std::size_t m = std::min(k, motion.direction.size() - 1);
     out.push_back(
-        machine.forward(effects.effectiveJoints(commands[k], motion.direction[m], motion.tangent[m])));
+        machine.forward(effects.effectiveJoints(commands[k], motion.direction[m], motion.tangent[m])) +
+        shift[m]);
   }
   return out;
 }
@@ -134,8 +184,12 @@ std::vector<Eigen::Vector2d> runPathWithEffects(const CartesianMachine2& machine
 std::vector<Eigen::Vector2d> compensatePathWithEffects(const CartesianMachine2& machine,
                                                        const AxisEffects& effects,
                                                        const std::vector<Eigen::Vector2d>& nominal) {
-  std::vector<Eigen::Vector2d> refs = compensatePath(machine, nominal);  // the joint targets q
-  if (effects.empty()) return refs;
+  if (effects.empty()) return compensatePath(machine, nominal);
+  // The joint targets q: the machine must reach N_k - D_k so that the displacement D_k lands on N_k.
+  std::vector<Eigen::Vector2d> aim = nominal;
+  const std::vector<Eigen::Vector2d> shift = effects.displacement(nominal);
+  for (std::size_t k = 0; k < aim.size(); ++k) aim[k] -= shift[k];
+  std::vector<Eigen::Vector2d> refs = compensatePath(machine, aim);
   const PathMotion motion = pathMotion(nominal);
   for (std::size_t k = 0; k < refs.size(); ++k) {
     const Eigen::Vector2d q = refs[k];

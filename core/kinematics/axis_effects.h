@@ -11,24 +11,33 @@
 //    {"name": "scale", "parameters": {"x_ppm": 20, "y_ppm": -10}},
 //    {"name": "cyclic", "parameters": {"axis": "x", "period_mm": 5, "amplitude_mm": 0.002,
 //                                      "phase_deg": 30}},
-//    {"name": "servo_lag", "parameters": {"tau_s": 0.002}}]    (lag at the test's feed)
+//    {"name": "servo_lag", "parameters": {"tau_s": 0.002}},    (lag at the test's feed)
+//    {"name": "unexplained:angle", "parameters": {...}, "shape": {...}, "coefficients": [...]}]
+// A generic effect (CONTRACT.md "The open world") is a displacement D_k of every point, the basis of
+// its shape (applied_entries.h genericShapeJson) on the path variable it names (path_variables.h)
+// times its coefficients: P = o + ir je_x + jr je_y + D_k. Identification then fits the measured
+// points minus D_k, and compensation aims at N_k - D_k.
 // With the effects fixed at these values the model is the declared one in the effective joints, so
 //  * identification: the declared o, a, b are identified (identification.h, unchanged) from the path
 //    whose commands are replaced by their effective joints (withEffectiveJoints); the residual is
-//    then the one the diagnosis reports after adding the effects;
-//  * compensation: the references r_k must satisfy o + [ir jr] je(r_k) = N_k, i.e.
-//    je(r_k) = [ir jr]^-1 (N_k - o) (Eq. 15); r_k is found by the fixed-point iteration
+//    (and the measured points moved by -D_k); the residual is then the one the diagnosis reports
+//    after adding the effects;
+//  * compensation: the references r_k must satisfy o + [ir jr] je(r_k) + D_k = N_k, i.e.
+//    je(r_k) = [ir jr]^-1 (N_k - D_k - o) (Eq. 15); r_k is found by the fixed-point iteration
 //    r <- r + (q - je(r)) (je is the identity plus terms of size 1e-3 and slopes far below 1), with
 //    the direction and tangent of every point from the nominal path (pathMotion).
 // Errors (ValidationError, field "<field>[i].name" or "<field>[i].parameters.<key>"): an entry that
 // is not an object, a missing or unknown name, an effect given twice (cyclic: twice on one axis), a
-// missing or non-finite parameter, a cyclic axis other than "x" / "y", a period not above 0.
+// missing or non-finite parameter, a cyclic axis other than "x" / "y", a period not above 0; a generic
+// effect of another variable than row, angle, direction, reversal, x, y, a bad shape (field
+// "<field>[i].shape.<key>") or coefficients that are not one finite number per basis column.
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "core/diagnose/residual_check.h"
 #include "core/kinematics/cartesian_model.h"
 #include "core/kinematics/measured_path.h"
 #include "core/sim/effects_kinematic.h"
@@ -47,11 +56,20 @@ struct CyclicTerm {
   double phaseDeg = 0.0;
 };
 
+/// An applied generic effect `unexplained:<against>` (CONTRACT.md "The open world"): a displacement of
+/// every point, genericBasis(shape) w on the path variable `against` (path_variables.h; x and y as
+/// two components), with w as the diagnosis estimated it.
+struct GenericDisplacement {
+  diagnose::GenericForm shape;
+  std::vector<double> coefficients;  ///< w, one per basis column (mm)
+};
+
 /// The applied effects (see the header comment).
 struct AxisEffects {
-  KinematicEffects base;            ///< backlash, scale, servo lag, feed; its own cyclic amplitude stays 0
-  std::vector<CyclicTerm> cyclic;   ///< at most one per axis
-  std::vector<std::string> labels;  ///< per applied entry, e.g. "backlash (x 8 um, y 5 um)"
+  KinematicEffects base;           ///< backlash, scale, servo lag, feed; its own cyclic amplitude stays 0
+  std::vector<CyclicTerm> cyclic;  ///< at most one per axis
+  std::vector<GenericDisplacement> generic;  ///< at most one per variable
+  std::vector<std::string> labels;           ///< per applied entry, e.g. "backlash (x 8 um, y 5 um)"
 
   bool empty() const { return labels.empty(); }
   /// The labels joined with ", ".
@@ -59,6 +77,8 @@ struct AxisEffects {
   /// The joint coordinates the axes reach for command `c` (direction d, unit tangent t of the motion).
   Eigen::Vector2d effectiveJoints(const Eigen::Vector2d& c, const Eigen::Vector2d& d,
                                   const Eigen::Vector2d& t) const;
+  /// The generic effects' displacement of every point of the path `commands` (zero without any).
+  std::vector<Eigen::Vector2d> displacement(const std::vector<Eigen::Vector2d>& commands) const;
 };
 
 /// Reads an applied list (see the header comment); `feedMmPerMin` is the feed of the test the

@@ -329,21 +329,22 @@ TEST_F(ResidualCheckPageTest, GenericEffectIsListedWithItsFormAndAppliedInTherma
   EXPECT_EQ(applied[1].at("shape").at("knots"), nlohmann::json::parse("[20.0, 22.0, 24.0, 26.0, 28.0]"));
   EXPECT_EQ(applied[1].at("parameters").at("rms"), 2.1);
 
-  // Another domain (no parser of generic shapes yet): the generic effect is left out, the tooltip
-  // says why, and with only a generic effect accepted nothing can be applied.
+  // Setup (its study does not apply generic effects yet): the generic effect is left out, the tooltip
+  // says why, and with only a generic effect accepted nothing can be applied. (Kinematic applies a
+  // generic effect with its coefficients; the fixture's has none.)
   diagnose::Diagnosis kinematic = fixture();
-  kinematic.domain = "kinematic";
+  kinematic.domain = "setup";
   DiagnosisPage kin(&document_);
-  kin.setDomain(DiagnosisDomain::Kinematic);
+  kin.setDomain(DiagnosisDomain::Setup);
   kin.setResult(kinematic);
   ASSERT_TRUE(kin.applyButton()->isEnabled());
   EXPECT_TRUE(kin.applyButton()->toolTip().contains(QStringLiteral("Applies lag:T2 only")))
       << kin.applyButton()->toolTip().toStdString();
   EXPECT_TRUE(kin.applyButton()->toolTip().contains(QStringLiteral("unexplained:T1")));
   diagnose::Diagnosis only = fixture(true);
-  only.domain = "kinematic";
+  only.domain = "setup";
   DiagnosisPage other(&document_);
-  other.setDomain(DiagnosisDomain::Kinematic);
+  other.setDomain(DiagnosisDomain::Setup);
   other.setResult(only);
   EXPECT_FALSE(other.applyButton()->isEnabled());
   EXPECT_TRUE(other.applyButton()->toolTip().startsWith(QStringLiteral("Nothing to apply.")))

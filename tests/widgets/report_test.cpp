@@ -236,7 +236,7 @@ TEST_F(ReportTest, UnwritableTargetThrowsFileErrorAndLeavesNothing) {
 
 TEST_F(ReportTest, MissingDatasetThrowsInputErrorAndLeavesNoPdf) {
   Project broken = project_;
-  broken.datasets.push_back({"gone", dataset_kind::kThermalLog, "data/missing.csv", "", ""});
+  broken.datasets.push_back({"gone", dataset_kind::kThermalLog, "data/missing.csv", "", "", {}});
   const QString pdf = dir_.filePath(QStringLiteral("broken.pdf"));
   try {
     writeReport(broken, pdf, options());
@@ -419,7 +419,7 @@ TEST_F(ReportTest, BadStudySettingsAreErrorsNotDefaults) {
 // Issue 17: sections report only the studies the project declares.
 TEST_F(ReportTest, OnlyDeclaredStudiesHaveSections) {
   Project p = project_;
-  p.datasets.push_back({"second_run", dataset_kind::kThermalLog, "data/thermal.csv", "", ""});
+  p.datasets.push_back({"second_run", dataset_kind::kThermalLog, "data/thermal.csv", "", "", {}});
   p.studies.erase("matching");
   const QString pdf = dir_.filePath(QStringLiteral("declared.pdf"));
   const ReportSummary summary = writeReport(p, pdf, options());

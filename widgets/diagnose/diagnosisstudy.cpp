@@ -168,7 +168,8 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer)
 }
 
 bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c) {
-  return !c.generic.has_value() || domain == "thermal";
+  return !c.generic.has_value() || domain == "thermal" ||
+         (domain == "kinematic" && !c.genericCoefficients.empty());
 }
 
 nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis) {
@@ -184,6 +185,7 @@ nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis) {
     }
     nlohmann::json entry = {{"name", c->name}, {"parameters", params}};
     if (c->generic) entry["shape"] = diagnose::genericShapeJson(*c->generic);
+    if (!c->genericCoefficients.empty()) entry["coefficients"] = c->genericCoefficients;
     out.push_back(std::move(entry));
   }
   return out;

@@ -62,13 +62,14 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& settings, Observer* ob
 /// study's model: the study's applied-effects parser (core/diagnose/thermal_applied.h,
 /// core/kinematics/axis_effects.h, core/diagnose/applied_setup_matching.h) knows it. The catalogue's
 /// named effects: yes. A generic effect `unexplained:<against>` (Candidate::generic): in the thermal
-/// study (its basis columns are refitted by every model); not yet in the other domains, where it is
-/// reported (candidate table, residual check, report) but not applied.
+/// study (its basis columns are refitted by every model) and the kinematic one (a displacement with
+/// the diagnosis's coefficients, core/kinematics/axis_effects.h); not yet in setup and matching,
+/// where it is reported (candidate table, residual check, report) but not applied.
 bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c);
 
 /// The accepted effects Apply can add (canApplyEffect) as stored under "applied":
 /// [{"name": ..., "parameters": {name: value}}], a generic effect with its "shape"
-/// (core/diagnose/applied_entries.h genericShapeJson).
+/// (core/diagnose/applied_entries.h genericShapeJson) and, in kinematic, its "coefficients".
 nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis);
 
 /// A parameter's value as text ("12.3" or the text value), `digits` significant digits.

@@ -95,14 +95,14 @@ TEST(AppliedEntries, KinematicPreambleMessages) {
   EXPECT_EQ(
       kinematic(J::parse(R"([{"name": null}])")),
       "field 'studies.diagnosis.kinematic.applied[0].name': must be the effect's name (backlash, scale, "
-      "cyclic, servo_lag)");
+      "cyclic, servo_lag, unexplained:<variable>)");
   EXPECT_EQ(
       kinematic(J::parse(R"([{"parameters": {"x_mm": 1}}])")),
       "field 'studies.diagnosis.kinematic.applied[0].name': must be the effect's name (backlash, scale, "
-      "cyclic, servo_lag)");
+      "cyclic, servo_lag, unexplained:<variable>)");
   EXPECT_EQ(kinematic(J::parse(R"([{"name": ""}])")),
             "field 'studies.diagnosis.kinematic.applied[0].name': unknown kinematic effect '' (known: "
-            "backlash, scale, cyclic, servo_lag)");
+            "backlash, scale, cyclic, servo_lag, unexplained:<variable>)");
   EXPECT_EQ(kinematic(J::parse(R"([{"name": "scale", "parameters": {"x_ppm": 1, "y_ppm": 2}},
                                    {"name": "scale", "parameters": {"x_ppm": 1, "y_ppm": 2}}])")),
             "field 'studies.diagnosis.kinematic.applied[1].name': the effect 'scale' is applied twice");

@@ -260,8 +260,8 @@ TEST(AppliedMatchingEffects, ScaleInTheModelDropsTheResidualLikeTheDiagnosis) {
   // From the project: the study of the probe points the diagnosis ran on includes the scale (E1);
   // a study of other points keeps the declared rigid model (E0).
   Project project;
-  project.datasets = {{"diagnose_probe", dataset_kind::kProbePoints, "diagnose_probe.csv", "", ""},
-                      {"probe_s_piece", dataset_kind::kProbePoints, "probe_s_piece.csv", "", ""}};
+  project.datasets = {{"diagnose_probe", dataset_kind::kProbePoints, "diagnose_probe.csv", "", "", {}},
+                      {"probe_s_piece", dataset_kind::kProbePoints, "probe_s_piece.csv", "", "", {}}};
   project.studies["diagnosis"]["matching"] = {{"dataset", "diagnose_probe"}, {"applied", appliedOf(d)}};
   auto studyRms = [&](const std::string& dataset) {
     project.studies["matching"]["dataset"] = dataset;
@@ -330,8 +330,8 @@ TEST(AppliedMatchingEffects, BadEntriesNameTheField) {
             "studies.diagnosis.matching.applied[1].name");
   // The project's settings read them, and say which entry is wrong.
   Project project;
-  project.datasets = {{"p1", dataset_kind::kProbePoints, "p1.csv", "", ""},
-                      {"p2", dataset_kind::kProbePoints, "p2.csv", "", ""}};
+  project.datasets = {{"p1", dataset_kind::kProbePoints, "p1.csv", "", "", {}},
+                      {"p2", dataset_kind::kProbePoints, "p2.csv", "", "", {}}};
   project.studies["diagnosis"]["matching"]["dataset"] = "p1";
   project.studies["diagnosis"]["matching"]["applied"] = {{{"name", "scale"}, {"parameters", {{"ppm", 5.0}}}}};
   EXPECT_EQ(matching::matchingStudySettings(project).options.applied.names,

@@ -193,10 +193,13 @@ TEST(KinematicDiagnosis, ContractJson) {
     if (e.at("name") == "backlash") {
       EXPECT_TRUE(p.at("x_mm").is_number() && p.at("y_mm").is_number());
     }
-    if (e.at("name") == "scale") EXPECT_TRUE(p.at("x_ppm").is_number() && p.at("y_ppm").is_number());
-    if (e.at("name") == "cyclic")
+    if (e.at("name") == "scale") {
+      EXPECT_TRUE(p.at("x_ppm").is_number() && p.at("y_ppm").is_number());
+    }
+    if (e.at("name") == "cyclic") {
       EXPECT_TRUE(p.at("axis").is_string() && p.at("period_mm").is_number() &&
                   p.at("amplitude_mm").is_number());
+    }
     if (e.at("name") == "servo_lag") {
       EXPECT_TRUE(p.at("tau_s").is_number());
     }

@@ -479,7 +479,9 @@ TEST(ThermalDiagnosis, ContractJson) {
     if (name.starts_with("lag")) {
       EXPECT_TRUE(e.at("parameters").at("tau_min").is_number());
     }
-    if (name.starts_with("input:")) EXPECT_TRUE(e.at("parameters").at("coefficient").is_number());
+    if (name.starts_with("input:")) {
+      EXPECT_TRUE(e.at("parameters").at("coefficient").is_number());
+    }
     if (name == "drift") {
       EXPECT_TRUE(e.at("parameters").at("per_min").is_number());
     }

@@ -149,9 +149,9 @@ TEST(Study, RunsEveryMethodAdjustsAndRemeasures) {
 
 Project demoLikeProject() {
   Project p;
-  p.datasets.push_back({"block", dataset_kind::kProbePoints, "data/block.csv", "", ""});
-  p.datasets.push_back({"s_piece", dataset_kind::kProbePoints, "data/s.csv", "", ""});
-  p.datasets.push_back({"log", dataset_kind::kThermalLog, "data/log.csv", "", ""});
+  p.datasets.push_back({"block", dataset_kind::kProbePoints, "data/block.csv", "", "", {}});
+  p.datasets.push_back({"s_piece", dataset_kind::kProbePoints, "data/s.csv", "", "", {}});
+  p.datasets.push_back({"log", dataset_kind::kThermalLog, "data/log.csv", "", "", {}});
   return p;
 }
 
