@@ -635,7 +635,7 @@ void MatchingPage::showPoints(int comboIndex) {
     return;
   }
   try {
-    rawSet_ = readProbePointsAnyFormat(document_->datasetPath(dataset).toStdString());
+    rawSet_ = readProbePointsAnyFormat(document_->datasetPath(dataset).toStdString(), 3, dataset.csv);
     set_ = matching::studyModelSet(*rawSet_, settings_.options, projectFile_.toStdString());
     const ProbePointSet& points = *set_;
     std::set<std::string> surfaces;

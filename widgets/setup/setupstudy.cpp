@@ -40,6 +40,7 @@ SetupStudyFiles setupStudyFiles(const Project& project, const std::string& proje
   if (const DatasetRef* r = studyDataset(project, study, "dataset", dataset_kind::kCmmReport)) {
     files.reportId = r->id;
     files.reportPath = resolveDatasetPath(projectPath, *r);
+    files.reportCsv = r->csv;
   }
   if (study != nullptr) {
     if (const auto it = study->find("method"); it != study->end() && it->is_string()) {
