@@ -546,7 +546,8 @@ void MatchingPage::setLocked(int dof, bool locked) {
 void MatchingPage::refresh() {
   std::vector<DatasetRef> sets;
   for (const DatasetRef& d : document_->project().datasets) {
-    if (d.kind == dataset_kind::kProbePoints) sets.push_back(d);
+    // A hole-table report is read as probe points too (readProbePointsAnyFormat).
+    if (d.kind == dataset_kind::kProbePoints || d.kind == dataset_kind::kHoleTable) sets.push_back(d);
   }
   if (sets == sets_ && projectFile_ == document_->fileName() && combo_->count() > 0) {
     if (writingStudy_) return;

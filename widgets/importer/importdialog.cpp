@@ -137,7 +137,9 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   fileRow->addWidget(fileEdit_, 1);
   fileRow->addWidget(browse);
   auto* form = new QFormLayout;
-  form->addRow(tr("&File:"), fileRow);
+  auto* fileLabel = new QLabel(tr("&File:"), this);
+  fileLabel->setBuddy(browse);
+  form->addRow(fileLabel, fileRow);
   form->addRow(tr("&Kind:"), kind_);
   form->addRow(tr("&Id:"), id_);
 
