@@ -5,21 +5,32 @@
 //     DatasetRef keeps dialect and mapping; the thermal page reads it and a linear model fitted the
 //     way the page's model view does recovers the formula's coefficient;
 //   * undo / redo of the import; remove, rename (studies follow, duplicates refused), re-link;
-//   * a bad file: a one-line message naming file, line and field, and the Import button disabled.
+//   * a bad file: a one-line message naming file, line and field, and the Import button disabled;
+//   * a file dropped on the main window opens the dialog and is imported (one undo step).
 #include <gtest/gtest.h>
 
+#include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFile>
+#include <QFileInfo>
 #include <QLabel>
+#include <QMimeData>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
 #include <QTreeWidgetItemIterator>
 #include <QUndoStack>
+#include <QUrl>
 #include <cmath>
 
+#include "app/gui/mainwindow.h"
 #include "app/gui/projectnavigator.h"
 #include "app/gui/thermalpage.h"
 #include "core/common/error.h"
@@ -345,6 +356,55 @@ TEST_F(ImportDialogTest, RemoveRenameAndRelinkAreUndoable) {
   EXPECT_EQ(doc_.project(), before);
   doc_.undoStack()->redo();
   EXPECT_EQ(doc_.project().datasets[0].path, "archive/log.csv");
+}
+
+TEST_F(ImportDialogTest, DroppedFileOpensTheDialogAndIsImportedUndoably) {
+  MainWindow window;
+  window.document()->saveAs(dir_.filePath(QStringLiteral("window.metrofit")));
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  // File › Import data… is there with Ctrl+I.
+  auto* action = window.findChild<QAction*>(QStringLiteral("importData"));
+  ASSERT_NE(action, nullptr);
+  EXPECT_EQ(action->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_I));
+  EXPECT_TRUE(window.acceptDrops());
+
+  QMimeData mime;
+  mime.setUrls({QUrl::fromLocalFile(logPath_)});
+  QDragEnterEvent enter(QPoint(20, 20), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(&window, &enter);
+  EXPECT_TRUE(enter.isAccepted());
+  // The dialog opens after the drop; map the columns in it and press Import.
+  QString shownFile;
+  auto* timer = new QTimer(&window);
+  timer->setInterval(20);
+  QObject::connect(timer, &QTimer::timeout, [timer, &shownFile] {
+    auto* dialog = qobject_cast<ImportDialog*>(QApplication::activeModalWidget());
+    if (!dialog) return;
+    timer->stop();
+    shownFile = dialog->file();
+    dialog->setRole(QStringLiteral("Temp Spindel"), QStringLiteral("T1"));
+    dialog->setRole(QStringLiteral("Verlagerung Z"), QStringLiteral("disp_z_um"));
+    dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+  });
+  timer->start();
+  QDropEvent drop(QPointF(20, 20), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(&window, &drop);
+  ASSERT_TRUE(QTest::qWaitFor([&] { return !window.document()->project().datasets.empty(); }, 10000));
+  EXPECT_EQ(QFileInfo(shownFile), QFileInfo(logPath_));
+  const DatasetRef& d = window.document()->project().datasets[0];
+  EXPECT_EQ(d.id, "aufwaermung");
+  EXPECT_EQ(d.path, "data/aufwaermung.csv");
+  const std::vector<std::pair<std::string, std::string>> mapping{
+      {"time_s", "Zeit [s]"}, {"T1", "Temp Spindel"}, {"disp_z_um", "Verlagerung Z"}};
+  EXPECT_EQ(d.csv.columnMap, mapping);
+  EXPECT_EQ(d.csv.dialect, CsvDialect{});  // detected when read, as the CLI's default
+  EXPECT_EQ(window.thermalPage()->currentDataset(), QStringLiteral("aufwaermung"));
+  EXPECT_TRUE(window.thermalPage()->errorMessage().isEmpty())
+      << window.thermalPage()->errorMessage().toStdString();
+  window.document()->undoStack()->undo();
+  EXPECT_TRUE(window.document()->project().datasets.empty());
+  window.document()->undoStack()->setClean();
 }
 
 }  // namespace
