@@ -54,7 +54,7 @@
         <translation>Schließt den Kreis: passt jedes deklarierte Modell an, untersucht das verbleibende Residuum, führt es auf einen Effekt zurück, der im Modell fehlt (thermische Verzögerung, eine nicht deklarierte Eingangsgröße, Drift, Umkehrspiel, Maßstab, zyklischer Fehler, Werkzeugverschleiß, Flächenversatz und mehr), nimmt den Effekt nur bei starker Bestätigung außerhalb der Stichprobe auf und zeigt den Fehler vorher und nachher.</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Thermal log</source>
         <translation>Thermoprotokoll</translation>
     </message>
@@ -835,7 +835,120 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Punkt ( . )</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+33"/>
+        <source>time in s, strictly increasing</source>
+        <translation>Zeit in s, streng steigend</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time in min</source>
+        <translation>Zeit in min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time in h</source>
+        <translation>Zeit in h</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in X in µm (a target)</source>
+        <translation>Verlagerung in X in µm (eine Zielgröße)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in Y in µm (a target)</source>
+        <translation>Verlagerung in Y in µm (eine Zielgröße)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in Z in µm (a target)</source>
+        <translation>Verlagerung in Z in µm (eine Zielgröße)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ambient temperature in °C</source>
+        <translation>Umgebungstemperatur in °C</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point id</source>
+        <translation>Punktkennung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface name</source>
+        <translation>Name der Fläche</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>nominal point in mm</source>
+        <translation>Sollpunkt in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>nominal unit normal</source>
+        <translation>Soll-Einheitsnormale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>measured point in mm</source>
+        <translation>Messpunkt in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>commanded coordinate in mm</source>
+        <translation>Sollkoordinate in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>measured coordinate in mm</source>
+        <translation>gemessene Koordinate in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part number</source>
+        <translation>Teilenummer</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dimension id of the setup model</source>
+        <translation>Maßkennung des Einrichtmodells</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal value in mm</source>
+        <translation>Nennwert in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>measured value in mm</source>
+        <translation>Messwert in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lower tolerance in mm</source>
+        <translation>untere Toleranz in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>upper tolerance in mm</source>
+        <translation>obere Toleranz in mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>temperature in °C (an input)</source>
+        <translation>Temperatur in °C (eine Eingangsgröße)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <location line="+154"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
@@ -936,7 +1049,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1: die Datei ist größer als 256 MiB</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+119"/>
         <source>as in the file</source>
         <translation>wie in der Datei</translation>
     </message>

@@ -54,7 +54,7 @@
         <translation>Zamyka pętlę: dopasowuje każdy zadeklarowany model, analizuje pozostawioną przez niego resztę, wiąże ją z efektem, którego modelowi brakuje (opóźnienie termiczne, niezadeklarowane wejście, dryft, luz zwrotny, skala, błąd cykliczny, zużycie narzędzia, przesunięcie powierzchni i inne), dodaje efekt tylko przy silnym potwierdzeniu poza próbą uczącą i podaje błąd przed i po.</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Thermal log</source>
         <translation>Rejestr termiczny</translation>
     </message>
@@ -835,7 +835,120 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>kropka ( . )</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+33"/>
+        <source>time in s, strictly increasing</source>
+        <translation>czas w s, ściśle rosnący</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time in min</source>
+        <translation>czas w min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time in h</source>
+        <translation>czas w h</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in X in µm (a target)</source>
+        <translation>przemieszczenie w X w µm (wielkość docelowa)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in Y in µm (a target)</source>
+        <translation>przemieszczenie w Y w µm (wielkość docelowa)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in Z in µm (a target)</source>
+        <translation>przemieszczenie w Z w µm (wielkość docelowa)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ambient temperature in °C</source>
+        <translation>temperatura otoczenia w °C</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point id</source>
+        <translation>identyfikator punktu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface name</source>
+        <translation>nazwa powierzchni</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>nominal point in mm</source>
+        <translation>punkt nominalny w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>nominal unit normal</source>
+        <translation>nominalny wektor normalny</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>measured point in mm</source>
+        <translation>punkt zmierzony w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>commanded coordinate in mm</source>
+        <translation>współrzędna zadana w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>measured coordinate in mm</source>
+        <translation>współrzędna zmierzona w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part number</source>
+        <translation>numer części</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dimension id of the setup model</source>
+        <translation>identyfikator wymiaru modelu ustawczego</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal value in mm</source>
+        <translation>wartość nominalna w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>measured value in mm</source>
+        <translation>wartość zmierzona w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lower tolerance in mm</source>
+        <translation>tolerancja dolna w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>upper tolerance in mm</source>
+        <translation>tolerancja górna w mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>temperature in °C (an input)</source>
+        <translation>temperatura w °C (wielkość wejściowa)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <location line="+154"/>
         <source>Import data</source>
         <translation>Import danych</translation>
@@ -936,7 +1049,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>%1: plik jest większy niż 256 MiB</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+119"/>
         <source>as in the file</source>
         <translation>jak w pliku</translation>
     </message>

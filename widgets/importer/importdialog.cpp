@@ -89,6 +89,49 @@ std::pair<long, int> headerLine(const std::string& text) {
   return {0, comments};
 }
 
+/// What a role means to the readers (the combo box items' tooltips).
+QString roleDescription(const QString& role) {
+  static const QMap<QString, const char*> text{
+      {QStringLiteral("time_s"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "time in s, strictly increasing")},
+      {QStringLiteral("time_min"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "time in min")},
+      {QStringLiteral("time_h"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "time in h")},
+      {QStringLiteral("disp_x_um"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "displacement in X in µm (a target)")},
+      {QStringLiteral("disp_y_um"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "displacement in Y in µm (a target)")},
+      {QStringLiteral("disp_z_um"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "displacement in Z in µm (a target)")},
+      {QStringLiteral("T_amb"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "ambient temperature in °C")},
+      {QStringLiteral("id"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "point id")},
+      {QStringLiteral("surface"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "surface name")},
+      {QStringLiteral("qx"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal point in mm")},
+      {QStringLiteral("qy"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal point in mm")},
+      {QStringLiteral("qz"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal point in mm")},
+      {QStringLiteral("nx"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal unit normal")},
+      {QStringLiteral("ny"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal unit normal")},
+      {QStringLiteral("nz"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal unit normal")},
+      {QStringLiteral("px"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured point in mm")},
+      {QStringLiteral("py"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured point in mm")},
+      {QStringLiteral("pz"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured point in mm")},
+      {QStringLiteral("x_cmd_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "commanded coordinate in mm")},
+      {QStringLiteral("y_cmd_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "commanded coordinate in mm")},
+      {QStringLiteral("x_meas_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured coordinate in mm")},
+      {QStringLiteral("y_meas_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured coordinate in mm")},
+      {QStringLiteral("part"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "part number")},
+      {QStringLiteral("dimension"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "dimension id of the setup model")},
+      {QStringLiteral("nominal_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal value in mm")},
+      {QStringLiteral("measured_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured value in mm")},
+      {QStringLiteral("lower_tol_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "lower tolerance in mm")},
+      {QStringLiteral("upper_tol_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "upper tolerance in mm")},
+  };
+  if (role.size() == 2 && role.startsWith(QLatin1Char('T')) && role[1].isDigit())
+    return ImportDialog::tr("temperature in °C (an input)");
+  const auto it = text.find(role);
+  return it == text.end() ? QString() : ImportDialog::tr(it.value());
+}
+
 }  // namespace
 
 ImportDialog::ImportDialog(const Project& project, const QString& projectPath, QWidget* parent)
@@ -388,7 +431,10 @@ void ImportDialog::rebuildMapping(const std::vector<std::string>& header) {
     combo->setEditable(true);
     combo->setInsertPolicy(QComboBox::NoInsert);
     combo->addItem(QString());
-    combo->addItems(roles);
+    for (const QString& role : roles) {
+      combo->addItem(role);
+      combo->setItemData(combo->count() - 1, roleDescription(role), Qt::ToolTipRole);
+    }
     combo->lineEdit()->setPlaceholderText(tr("as in the file"));
     combo->setCurrentText(roles_.value(column));
     combo->setObjectName(QStringLiteral("importRole_%1").arg(r));
