@@ -39,6 +39,7 @@
 #include "core/thermal/thermal_log.h"
 #include "core/thermal/thermal_model.h"
 #include "qtapp.h"
+#include "testsupport.h"
 #include "widgets/charts/thermalcomparison.h"
 #include "widgets/charts/thermalmodelview.h"
 #include "widgets/document/projectdocument.h"
@@ -166,7 +167,7 @@ TEST_F(ImportDialogTest, GuessesKindDialectAndTimeColumnOfAGermanLog) {
 TEST_F(ImportDialogTest, ImportedLogKeepsDialectAndMappingAndFitsTheKnownFormula) {
   const DatasetRef added = importGermanLog();
   ASSERT_EQ(doc_.project().datasets.size(), 1u);
-  const DatasetRef& d = doc_.project().datasets[0];
+  const DatasetRef d = doc_.project().datasets[0];  // a copy: saving replaces the list
   EXPECT_EQ(d, added);
   EXPECT_EQ(d.id, "spindel");
   EXPECT_EQ(d.kind, dataset_kind::kThermalLog);
@@ -174,7 +175,7 @@ TEST_F(ImportDialogTest, ImportedLogKeepsDialectAndMappingAndFitsTheKnownFormula
   EXPECT_EQ(d.csv.dialect.delimiter, ';');
   EXPECT_EQ(d.csv.dialect.decimal, ',');
   const std::vector<std::pair<std::string, std::string>> mapping{
-      {"time_s", "Zeit [s]"}, {"T1", "Temp Spindel"}, {"disp_z_um", "Verlagerung Z"}};
+      {"T1", "Temp Spindel"}, {"disp_z_um", "Verlagerung Z"}, {"time_s", "Zeit [s]"}};  // sorted by role
   EXPECT_EQ(d.csv.columnMap, mapping);
   EXPECT_EQ(doc_.undoStack()->undoText(), QStringLiteral("Import dataset spindel"));
 
@@ -358,6 +359,31 @@ TEST_F(ImportDialogTest, RemoveRenameAndRelinkAreUndoable) {
   EXPECT_EQ(doc_.project().datasets[0].path, "archive/log.csv");
 }
 
+TEST_F(ImportDialogTest, FilesThatAreNotCsvAreImportedWithoutDialectOrMapping) {
+  const QString source = QString::fromStdString(test::sourceDir().string());
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(source + QStringLiteral("/fuzz/corpus/hole_table/excerpt.txt"));
+  EXPECT_EQ(dialog.kind(), QStringLiteral("hole-table"));
+  EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_FALSE(dialog.findChild<QComboBox*>(QStringLiteral("importDelimiter"))->isEnabled());
+  EXPECT_FALSE(dialog.findChild<QTableWidget*>(QStringLiteral("importMapping"))->isEnabled());
+  EXPECT_EQ(dialog.dataset().kind, dataset_kind::kHoleTable);
+  EXPECT_EQ(dialog.dataset().csv, CsvReadOptions{});
+  // The preview shows the file's lines as they are.
+  auto* preview = dialog.findChild<QTableWidget*>(QStringLiteral("importPreview"));
+  EXPECT_EQ(preview->columnCount(), 1);
+  EXPECT_EQ(preview->item(0, 0)->text(), QStringLiteral("Plug Plate: 9001"));
+
+  dialog.setFile(source + QStringLiteral("/fuzz/corpus/dmis/part_17.dmo"));
+  EXPECT_EQ(dialog.kind(), QStringLiteral("dmis"));  // by its content: DMISMN
+  EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.dataset().kind, dataset_kind::kDmis);
+  // The same DMIS file read as a thermal log is refused.
+  dialog.setKind(QStringLiteral("thermal-log"));
+  EXPECT_FALSE(dialog.canImport());
+  EXPECT_FALSE(importButton(dialog)->isEnabled());
+}
+
 TEST_F(ImportDialogTest, DroppedFileOpensTheDialogAndIsImportedUndoably) {
   MainWindow window;
   window.document()->saveAs(dir_.filePath(QStringLiteral("window.metrofit")));
@@ -392,11 +418,11 @@ TEST_F(ImportDialogTest, DroppedFileOpensTheDialogAndIsImportedUndoably) {
   QApplication::sendEvent(&window, &drop);
   ASSERT_TRUE(QTest::qWaitFor([&] { return !window.document()->project().datasets.empty(); }, 10000));
   EXPECT_EQ(QFileInfo(shownFile), QFileInfo(logPath_));
-  const DatasetRef& d = window.document()->project().datasets[0];
+  const DatasetRef d = window.document()->project().datasets[0];
   EXPECT_EQ(d.id, "aufwaermung");
   EXPECT_EQ(d.path, "data/aufwaermung.csv");
   const std::vector<std::pair<std::string, std::string>> mapping{
-      {"time_s", "Zeit [s]"}, {"T1", "Temp Spindel"}, {"disp_z_um", "Verlagerung Z"}};
+      {"T1", "Temp Spindel"}, {"disp_z_um", "Verlagerung Z"}, {"time_s", "Zeit [s]"}};  // sorted by role
   EXPECT_EQ(d.csv.columnMap, mapping);
   EXPECT_EQ(d.csv.dialect, CsvDialect{});  // detected when read, as the CLI's default
   EXPECT_EQ(window.thermalPage()->currentDataset(), QStringLiteral("aufwaermung"));

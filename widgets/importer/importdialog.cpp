@@ -390,6 +390,9 @@ CsvReadOptions ImportDialog::csvOptions() const {
     const QString role = roles_.value(QString::fromStdString(column));
     if (!role.isEmpty() && role.toStdString() != column) o.columnMap.emplace_back(role.toStdString(), column);
   }
+  // In the order the project file gives them back (a JSON object, sorted by role), so that a saved
+  // and reopened dataset equals the one imported.
+  std::sort(o.columnMap.begin(), o.columnMap.end());
   return o;
 }
 

@@ -55,7 +55,7 @@ class ImportDialog : public QDialog {
   /// Reads the file's column `column` as `role`; an empty role keeps the file's name.
   void setRole(const QString& column, const QString& role);
   QString role(const QString& column) const;
-  /// Dialect and mapping as they will be stored in the dataset.
+  /// Dialect and mapping as they will be stored in the dataset (the mapping sorted by role).
   CsvReadOptions csvOptions() const;
 
   /// True when the file can be read as the chosen kind (the Import button is enabled).
