@@ -20,7 +20,10 @@
 #include <QDropEvent>
 #include <QFile>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
 #include <QTableWidget>
@@ -31,7 +34,9 @@
 #include <QUndoStack>
 #include <QUrl>
 #include <cmath>
+#include <functional>
 
+#include "app/gui/datasetactions.h"
 #include "app/gui/mainwindow.h"
 #include "app/gui/projectnavigator.h"
 #include "app/gui/thermalpage.h"
@@ -446,6 +451,58 @@ TEST_F(ImportDialogTest, MappedCircularTestIsReadAlikeByKinematicsAndDiagnosis) 
       doc_.project(), QFile::encodeName(doc_.fileName()).toStdString(), DiagnosisDomain::Kinematic);
   EXPECT_EQ(s.csv, doc_.project().dataset("kreis")->csv);
   EXPECT_EQ(readMeasuredPath(s.datasetPath, s.csv).measured, plain.measured.measured);
+}
+
+/// Runs `handle` on the next modal dialog of type T as soon as it is shown.
+template <typename T>
+void onNextModal(QObject* owner, std::function<void(T*)> handle) {
+  auto* timer = new QTimer(owner);
+  timer->setInterval(20);
+  QObject::connect(timer, &QTimer::timeout, [timer, handle] {
+    if (auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget())) {
+      timer->stop();
+      timer->deleteLater();
+      handle(dialog);
+    }
+  });
+  timer->start();
+}
+
+TEST_F(ImportDialogTest, ContextMenuRenamesAndRemovesAfterAsking) {
+  importGermanLog();
+  doc_.setStudyValue(QStringLiteral("thermal"), QStringLiteral("/dataset"), "spindel", QStringLiteral("x"));
+  QWidget parent;
+  QMenu menu;
+  addDatasetActions(&menu, &doc_, QStringLiteral("spindel"), &parent);
+  QStringList names;
+  for (QAction* a : menu.actions())
+    if (!a->isSeparator()) names << a->objectName();
+  EXPECT_EQ(names, (QStringList{QStringLiteral("renameDataset"), QStringLiteral("relinkDataset"),
+                                QStringLiteral("removeDataset")}));
+
+  // Rename: the new id typed into the question; the study follows.
+  onNextModal<QInputDialog>(&parent, [](QInputDialog* d) {
+    d->setTextValue(QStringLiteral("warmup"));
+    d->accept();
+  });
+  EXPECT_TRUE(renameDatasetAsking(&doc_, QStringLiteral("spindel"), &parent));
+  EXPECT_EQ(doc_.project().datasets[0].id, "warmup");
+  EXPECT_EQ(doc_.studyValue(QStringLiteral("thermal"), QStringLiteral("/dataset")), "warmup");
+
+  // Remove: the question names the setting that goes with it; "No" keeps everything.
+  QString question;
+  onNextModal<QMessageBox>(&parent, [&question](QMessageBox* box) {
+    question = box->text();
+    box->button(QMessageBox::No)->click();
+  });
+  EXPECT_FALSE(removeDatasetAsking(&doc_, QStringLiteral("warmup"), &parent));
+  EXPECT_TRUE(question.contains(QStringLiteral("studies.thermal.dataset"))) << question.toStdString();
+  EXPECT_EQ(doc_.project().datasets.size(), 1u);
+  onNextModal<QMessageBox>(&parent, [](QMessageBox* box) { box->button(QMessageBox::Yes)->click(); });
+  EXPECT_TRUE(removeDatasetAsking(&doc_, QStringLiteral("warmup"), &parent));
+  EXPECT_TRUE(doc_.project().datasets.empty());
+  doc_.undoStack()->undo();
+  EXPECT_EQ(doc_.project().datasets[0].id, "warmup");
 }
 
 TEST_F(ImportDialogTest, DroppedFileOpensTheDialogAndIsImportedUndoably) {
