@@ -453,6 +453,16 @@ void MainWindow::importFiles(const QStringList& files) {
       continue;
     }
     const QString id = QString::fromStdString(dialog.dataset().id);
+    // Show the data where it is used: the first study page that reads its kind.
+    const QString kind = QString::fromStdString(dialog.dataset().kind);
+    for (const QString& study : studyKeys()) {
+      if (study == QLatin1String(study::kDiagnosis) || !studyDatasetKinds(study).contains(kind)) continue;
+      const Page page = pageForStudy(study);
+      if (page == Page::Thermal) thermal_->selectDataset(id);
+      if (page == Page::Matching) matching_->selectDataset(id);
+      showPage(page);
+      break;
+    }
     statusBar()->showMessage(tr("Imported %1 as “%2”").arg(QFileInfo(path).fileName(), id), kStatusTimeoutMs);
   }
 }

@@ -54,7 +54,8 @@ class MainWindow : public QMainWindow {
   /// Shows a page and selects it in the navigator.
   void showPage(Page page);
   /// File › Import data…: opens the import dialog for each file (a file dialog first when `files` is
-  /// empty) and adds each accepted dataset through the undo stack. Dropped files come here too.
+  /// empty) and adds each accepted dataset through the undo stack, then shows the study page that
+  /// reads its kind with the dataset selected. Dropped files come here too.
   void importFiles(const QStringList& files);
 
  protected:

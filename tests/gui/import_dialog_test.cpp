@@ -545,7 +545,8 @@ TEST_F(ImportDialogTest, DroppedFileOpensTheDialogAndIsImportedUndoably) {
   const std::vector<std::pair<std::string, std::string>> mapping{
       {"T1", "Temp Spindel"}, {"disp_z_um", "Verlagerung Z"}, {"time_s", "Zeit [s]"}};  // sorted by role
   EXPECT_EQ(d.csv.columnMap, mapping);
-  EXPECT_EQ(d.csv.dialect, CsvDialect{});  // detected when read, as the CLI's default
+  EXPECT_EQ(d.csv.dialect, CsvDialect{});          // detected when read, as the CLI's default
+  EXPECT_EQ(window.currentPage(), Page::Thermal);  // shown where it is used
   EXPECT_EQ(window.thermalPage()->currentDataset(), QStringLiteral("aufwaermung"));
   EXPECT_TRUE(window.thermalPage()->errorMessage().isEmpty())
       << window.thermalPage()->errorMessage().toStdString();
