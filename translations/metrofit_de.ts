@@ -1049,7 +1049,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1: die Datei ist größer als 256 MiB</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+122"/>
         <source>as in the file</source>
         <translation>wie in der Datei</translation>
     </message>
@@ -1788,12 +1788,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die Daten können nicht importiert werden</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+14"/>
         <source>Imported %1 as “%2”</source>
         <translation>%1 als „%2“ importiert</translation>
     </message>
     <message>
-        <location line="-158"/>
+        <location line="-168"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Das Projekt „%1“ hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>

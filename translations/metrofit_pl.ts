@@ -1049,7 +1049,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>%1: plik jest większy niż 256 MiB</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+122"/>
         <source>as in the file</source>
         <translation>jak w pliku</translation>
     </message>
@@ -1789,12 +1789,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można zaimportować danych</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+14"/>
         <source>Imported %1 as “%2”</source>
         <translation>Zaimportowano %1 jako „%2”</translation>
     </message>
     <message>
-        <location line="-158"/>
+        <location line="-168"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Projekt „%1” ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
