@@ -54,7 +54,7 @@
         <translation>Schließt den Kreis: passt jedes deklarierte Modell an, untersucht das verbleibende Residuum, führt es auf einen Effekt zurück, der im Modell fehlt (thermische Verzögerung, eine nicht deklarierte Eingangsgröße, Drift, Umkehrspiel, Maßstab, zyklischer Fehler, Werkzeugverschleiß, Flächenversatz und mehr), nimmt den Effekt nur bei starker Bestätigung außerhalb der Stichprobe auf und zeigt den Fehler vorher und nachher.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+27"/>
         <source>Thermal log</source>
         <translation>Thermoprotokoll</translation>
     </message>
@@ -328,9 +328,77 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
 </context>
 <context>
+    <name>metrofit::DatasetActions</name>
+    <message>
+        <location filename="../app/gui/datasetactions.cpp" line="+26"/>
+        <source>&amp;Rename dataset…</source>
+        <translation>Datensatz &amp;umbenennen…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Re-&amp;link to a moved file…</source>
+        <translation>Mit verschobener Datei neu &amp;verknüpfen…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Re&amp;move dataset</source>
+        <translation>Datensatz &amp;entfernen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Remove the dataset “%1” from the project? The file itself stays where it is.</source>
+        <translation>Den Datensatz „%1“ aus dem Projekt entfernen? Die Datei selbst bleibt, wo sie ist.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>These study settings name it and are removed with it: %1</source>
+        <translation>Diese Studieneinstellungen nennen ihn und werden mit ihm entfernt: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Remove dataset</source>
+        <translation>Datensatz entfernen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot remove the dataset</source>
+        <translation>Der Datensatz kann nicht entfernt werden</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Rename dataset</source>
+        <translation>Datensatz umbenennen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New id of “%1” (study settings that name it follow):</source>
+        <translation>Neue Kennung für „%1“ (Studieneinstellungen, die ihn nennen, werden angepasst):</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot rename the dataset</source>
+        <translation>Der Datensatz kann nicht umbenannt werden</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Re-link dataset “%1”</source>
+        <translation>Datensatz „%1“ neu verknüpfen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot re-link the dataset</source>
+        <translation>Der Datensatz kann nicht neu verknüpft werden</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::DatasetTable</name>
     <message>
-        <location filename="../app/gui/datasettable.cpp" line="+20"/>
+        <location filename="../app/gui/datasettable.cpp" line="+23"/>
         <source>Id</source>
         <translation>Kennung</translation>
     </message>
@@ -350,7 +418,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Lizenz</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+44"/>
         <source>File not found: %1</source>
         <translation>Datei nicht gefunden: %1</translation>
     </message>
@@ -735,6 +803,285 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+30"/>
         <source>Distribution of the values with the specification limits LSL/USL, the nominal and the mean.</source>
         <translation>Verteilung der Werte mit den Toleranzgrenzen LSL/USL, dem Nennwert und dem Mittelwert.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ImportDialog</name>
+    <message>
+        <location filename="../widgets/importer/importdialog.cpp" line="+50"/>
+        <location line="+15"/>
+        <source>comma ( , )</source>
+        <translation>Komma ( , )</translation>
+    </message>
+    <message>
+        <location line="-13"/>
+        <source>semicolon ( ; )</source>
+        <translation>Semikolon ( ; )</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>tab</source>
+        <translation>Tabulator</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+11"/>
+        <source>detect</source>
+        <translation>erkennen</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>point ( . )</source>
+        <translation>Punkt ( . )</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>time in s, strictly increasing</source>
+        <translation>Zeit in s, streng steigend</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time in min</source>
+        <translation>Zeit in min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time in h</source>
+        <translation>Zeit in h</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in X in µm (a target)</source>
+        <translation>Verlagerung in X in µm (eine Zielgröße)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in Y in µm (a target)</source>
+        <translation>Verlagerung in Y in µm (eine Zielgröße)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in Z in µm (a target)</source>
+        <translation>Verlagerung in Z in µm (eine Zielgröße)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ambient temperature in °C</source>
+        <translation>Umgebungstemperatur in °C</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point id</source>
+        <translation>Punktkennung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface name</source>
+        <translation>Name der Fläche</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>nominal point in mm</source>
+        <translation>Sollpunkt in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>nominal unit normal</source>
+        <translation>Soll-Einheitsnormale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>measured point in mm</source>
+        <translation>Messpunkt in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>commanded coordinate in mm</source>
+        <translation>Sollkoordinate in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>measured coordinate in mm</source>
+        <translation>gemessene Koordinate in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part number</source>
+        <translation>Teilenummer</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dimension id of the setup model</source>
+        <translation>Maßkennung des Einrichtmodells</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal value in mm</source>
+        <translation>Nennwert in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>measured value in mm</source>
+        <translation>Messwert in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lower tolerance in mm</source>
+        <translation>untere Toleranz in mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>upper tolerance in mm</source>
+        <translation>obere Toleranz in mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>temperature in °C (an input)</source>
+        <translation>Temperatur in °C (eine Eingangsgröße)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <location line="+154"/>
+        <source>Import data</source>
+        <translation>Daten importieren</translation>
+    </message>
+    <message>
+        <location line="-138"/>
+        <source>&amp;Import</source>
+        <translation>&amp;Importieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Browse…</source>
+        <translation>Du&amp;rchsuchen…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;File:</source>
+        <translation>&amp;Datei:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Art:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Id:</source>
+        <translation>&amp;Kennung:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>How the file is read</source>
+        <translation>Wie die Datei gelesen wird</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Delimiter:</source>
+        <translation>&amp;Trennzeichen:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Decimal &amp;mark:</source>
+        <translation>Dezimal&amp;zeichen:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Found:</source>
+        <translation>Gefunden:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Column in the file</source>
+        <translation>Spalte in der Datei</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>First value</source>
+        <translation>Erster Wert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Read as</source>
+        <translation>Lesen als</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Columns</source>
+        <translation>Spalten</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Give a column the name the readers look for (time_s, disp_z_um, qx, x_cmd_mm, …); empty: the name in the file. The project stores this mapping, not a converted copy.</source>
+        <translation>Geben Sie einer Spalte den Namen, den die Leser erwarten (time_s, disp_z_um, qx, x_cmd_mm, …); leer: der Name in der Datei. Das Projekt speichert diese Zuordnung, keine umgewandelte Kopie.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Preview (first %1 rows)</source>
+        <translation>Vorschau (erste %1 Zeilen)</translation>
+    </message>
+    <message>
+        <location line="+91"/>
+        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
+        <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: cannot read the file (%2)</source>
+        <translation>%1: die Datei kann nicht gelesen werden (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the file is larger than 256 MiB</source>
+        <translation>%1: die Datei ist größer als 256 MiB</translation>
+    </message>
+    <message>
+        <location line="+122"/>
+        <source>as in the file</source>
+        <translation>wie in der Datei</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Line</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Choose a file to import.</source>
+        <translation>Wählen Sie eine Datei zum Importieren.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Not a CSV file: read as %1 (no delimiter, decimal mark or column mapping).</source>
+        <translation>Keine CSV-Datei: gelesen als %1 (ohne Trennzeichen, Dezimalzeichen und Spaltenzuordnung).</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 (detected)</source>
+        <translation>%1 (erkannt)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>delimiter %1 · decimal mark %2 · header in line %3 (%4 columns) · comment lines: %5 · data rows: %6</source>
+        <translation>Trennzeichen %1 · Dezimalzeichen %2 · Kopfzeile in Zeile %3 (%4 Spalten) · Kommentarzeilen: %5 · Datenzeilen: %6</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Ready to import as %1 “%2”.</source>
+        <translation>Bereit zum Import als %1 „%2“.</translation>
     </message>
 </context>
 <context>
@@ -1228,7 +1575,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+47"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+53"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Metrofit-Projekte (*.metrofit)</translation>
     </message>
@@ -1238,7 +1585,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+49"/>
         <source>Autosave failed: %1</source>
         <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
     </message>
@@ -1276,6 +1623,16 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <location line="+1"/>
         <source>Open &amp;demo project</source>
         <translation>&amp;Demoprojekt öffnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Import data…</source>
+        <translation>Daten &amp;importieren…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Adds a file (thermal log, probe points, CMM report, …) to the project as a dataset</source>
+        <translation>Fügt eine Datei (Thermoprotokoll, Tastpunkte, KMG-Bericht, …) als Datensatz zum Projekt hinzu</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1416,7 +1773,27 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="+136"/>
+        <source>Import data</source>
+        <translation>Daten importieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
+        <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot import the data</source>
+        <translation>Die Daten können nicht importiert werden</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Imported %1 as “%2”</source>
+        <translation>%1 als „%2“ importiert</translation>
+    </message>
+    <message>
+        <location line="-168"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Das Projekt „%1“ hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
@@ -1826,7 +2203,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+9"/>
-        <location line="+258"/>
+        <location line="+259"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
@@ -2121,7 +2498,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Diesen Hinweis ausblenden (er erscheint nicht wieder)</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+29"/>
+        <source>&amp;Import data…</source>
+        <translation>Daten &amp;importieren…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Adds a file to the project as a dataset (File › Import data…, Ctrl+I, or drop files on the window); right-click a dataset to rename, re-link or remove it</source>
+        <translation>Fügt eine Datei als Datensatz zum Projekt hinzu (Datei › Daten importieren…, Strg+I, oder Dateien auf das Fenster ziehen); Rechtsklick auf einen Datensatz: umbenennen, neu verknüpfen oder entfernen</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>not saved yet</source>
         <translation>noch nicht gespeichert</translation>
     </message>
@@ -2225,7 +2612,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ProjectDocument</name>
     <message>
-        <location filename="../widgets/document/projectdocument.cpp" line="+32"/>
+        <location filename="../widgets/document/projectdocument.cpp" line="+34"/>
         <source>Rename project</source>
         <translation>Projekt umbenennen</translation>
     </message>
@@ -2240,7 +2627,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Notizen zu „%1“ bearbeiten</translation>
     </message>
     <message>
-        <location line="+135"/>
+        <location line="+185"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -2249,11 +2636,48 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>das Projekt wurde noch nicht gespeichert; wählen Sie mit „Speichern unter“ einen Dateinamen</translation>
     </message>
+    <message>
+        <location line="+56"/>
+        <source>the project has no dataset &apos;%1&apos;</source>
+        <translation>das Projekt hat keinen Datensatz „%1“</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+26"/>
+        <source>a dataset needs an id</source>
+        <translation>ein Datensatz braucht eine Kennung</translation>
+    </message>
+    <message>
+        <location line="-23"/>
+        <location line="+26"/>
+        <source>the project already has a dataset &apos;%1&apos;</source>
+        <translation>das Projekt hat bereits einen Datensatz „%1“</translation>
+    </message>
+    <message>
+        <location line="-21"/>
+        <source>Import dataset %1</source>
+        <translation>Datensatz %1 importieren</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Remove dataset %1</source>
+        <translation>Datensatz %1 entfernen</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Rename dataset %1 to %2</source>
+        <translation>Datensatz %1 in %2 umbenennen</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Re-link dataset %1</source>
+        <translation>Datensatz %1 neu verknüpfen</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+50"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+63"/>
         <location line="+11"/>
         <source>%1: project overview (Ctrl+1)</source>
         <translation>%1: Projektübersicht (Strg+1)</translation>
@@ -6891,7 +7315,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Einstellungen des thermischen Modells ändern</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+82"/>
         <source>Modular case: %1</source>
         <translation>Modularer Fall: %1</translation>
     </message>

@@ -54,7 +54,7 @@
         <translation>Zamyka pętlę: dopasowuje każdy zadeklarowany model, analizuje pozostawioną przez niego resztę, wiąże ją z efektem, którego modelowi brakuje (opóźnienie termiczne, niezadeklarowane wejście, dryft, luz zwrotny, skala, błąd cykliczny, zużycie narzędzia, przesunięcie powierzchni i inne), dodaje efekt tylko przy silnym potwierdzeniu poza próbą uczącą i podaje błąd przed i po.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+27"/>
         <source>Thermal log</source>
         <translation>Rejestr termiczny</translation>
     </message>
@@ -328,9 +328,77 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
 </context>
 <context>
+    <name>metrofit::DatasetActions</name>
+    <message>
+        <location filename="../app/gui/datasetactions.cpp" line="+26"/>
+        <source>&amp;Rename dataset…</source>
+        <translation>&amp;Zmień nazwę zbioru danych…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Re-&amp;link to a moved file…</source>
+        <translation>Połącz z &amp;przeniesionym plikiem…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Re&amp;move dataset</source>
+        <translation>&amp;Usuń zbiór danych</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Remove the dataset “%1” from the project? The file itself stays where it is.</source>
+        <translation>Usunąć zbiór danych „%1” z projektu? Sam plik pozostaje na miejscu.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>These study settings name it and are removed with it: %1</source>
+        <translation>Te ustawienia badań go wskazują i zostaną usunięte razem z nim: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Remove dataset</source>
+        <translation>Usuń zbiór danych</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot remove the dataset</source>
+        <translation>Nie można usunąć zbioru danych</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Rename dataset</source>
+        <translation>Zmień nazwę zbioru danych</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New id of “%1” (study settings that name it follow):</source>
+        <translation>Nowy identyfikator „%1” (ustawienia badań, które go wskazują, zostaną zaktualizowane):</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot rename the dataset</source>
+        <translation>Nie można zmienić nazwy zbioru danych</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Re-link dataset “%1”</source>
+        <translation>Połącz ponownie zbiór danych „%1”</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Wszystkie pliki (*)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot re-link the dataset</source>
+        <translation>Nie można ponownie połączyć zbioru danych</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::DatasetTable</name>
     <message>
-        <location filename="../app/gui/datasettable.cpp" line="+20"/>
+        <location filename="../app/gui/datasettable.cpp" line="+23"/>
         <source>Id</source>
         <translation>Identyfikator</translation>
     </message>
@@ -350,7 +418,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Licencja</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+44"/>
         <source>File not found: %1</source>
         <translation>Nie znaleziono pliku: %1</translation>
     </message>
@@ -735,6 +803,285 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+30"/>
         <source>Distribution of the values with the specification limits LSL/USL, the nominal and the mean.</source>
         <translation>Rozkład wartości z granicami specyfikacji LSL/USL, wartością nominalną i średnią.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ImportDialog</name>
+    <message>
+        <location filename="../widgets/importer/importdialog.cpp" line="+50"/>
+        <location line="+15"/>
+        <source>comma ( , )</source>
+        <translation>przecinek ( , )</translation>
+    </message>
+    <message>
+        <location line="-13"/>
+        <source>semicolon ( ; )</source>
+        <translation>średnik ( ; )</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>tab</source>
+        <translation>tabulator</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+11"/>
+        <source>detect</source>
+        <translation>wykryj</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>point ( . )</source>
+        <translation>kropka ( . )</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>time in s, strictly increasing</source>
+        <translation>czas w s, ściśle rosnący</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time in min</source>
+        <translation>czas w min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time in h</source>
+        <translation>czas w h</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in X in µm (a target)</source>
+        <translation>przemieszczenie w X w µm (wielkość docelowa)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in Y in µm (a target)</source>
+        <translation>przemieszczenie w Y w µm (wielkość docelowa)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacement in Z in µm (a target)</source>
+        <translation>przemieszczenie w Z w µm (wielkość docelowa)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ambient temperature in °C</source>
+        <translation>temperatura otoczenia w °C</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point id</source>
+        <translation>identyfikator punktu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>surface name</source>
+        <translation>nazwa powierzchni</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>nominal point in mm</source>
+        <translation>punkt nominalny w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>nominal unit normal</source>
+        <translation>nominalny wektor normalny</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>measured point in mm</source>
+        <translation>punkt zmierzony w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>commanded coordinate in mm</source>
+        <translation>współrzędna zadana w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>measured coordinate in mm</source>
+        <translation>współrzędna zmierzona w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part number</source>
+        <translation>numer części</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dimension id of the setup model</source>
+        <translation>identyfikator wymiaru modelu ustawczego</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal value in mm</source>
+        <translation>wartość nominalna w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>measured value in mm</source>
+        <translation>wartość zmierzona w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lower tolerance in mm</source>
+        <translation>tolerancja dolna w mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>upper tolerance in mm</source>
+        <translation>tolerancja górna w mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>temperature in °C (an input)</source>
+        <translation>temperatura w °C (wielkość wejściowa)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <location line="+154"/>
+        <source>Import data</source>
+        <translation>Import danych</translation>
+    </message>
+    <message>
+        <location line="-138"/>
+        <source>&amp;Import</source>
+        <translation>&amp;Importuj</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Anuluj</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Browse…</source>
+        <translation>Prze&amp;glądaj…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;File:</source>
+        <translation>&amp;Plik:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Rodzaj:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Id:</source>
+        <translation>I&amp;dentyfikator:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>How the file is read</source>
+        <translation>Jak plik jest odczytywany</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Delimiter:</source>
+        <translation>&amp;Separator:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Decimal &amp;mark:</source>
+        <translation>Znak dzi&amp;esiętny:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Found:</source>
+        <translation>Wykryto:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Column in the file</source>
+        <translation>Kolumna w pliku</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>First value</source>
+        <translation>Pierwsza wartość</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Read as</source>
+        <translation>Czytaj jako</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Columns</source>
+        <translation>Kolumny</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Give a column the name the readers look for (time_s, disp_z_um, qx, x_cmd_mm, …); empty: the name in the file. The project stores this mapping, not a converted copy.</source>
+        <translation>Nadaj kolumnie nazwę, której szukają czytniki (time_s, disp_z_um, qx, x_cmd_mm, …); puste: nazwa z pliku. Projekt zapisuje to przyporządkowanie, a nie przekonwertowaną kopię.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Preview (first %1 rows)</source>
+        <translation>Podgląd (pierwsze %1 wierszy)</translation>
+    </message>
+    <message>
+        <location line="+91"/>
+        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
+        <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Wszystkie pliki (*)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: cannot read the file (%2)</source>
+        <translation>%1: nie można odczytać pliku (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the file is larger than 256 MiB</source>
+        <translation>%1: plik jest większy niż 256 MiB</translation>
+    </message>
+    <message>
+        <location line="+122"/>
+        <source>as in the file</source>
+        <translation>jak w pliku</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Line</source>
+        <translation>Wiersz</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Choose a file to import.</source>
+        <translation>Wybierz plik do importu.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Not a CSV file: read as %1 (no delimiter, decimal mark or column mapping).</source>
+        <translation>To nie jest plik CSV: czytany jako %1 (bez separatora, znaku dziesiętnego i przyporządkowania kolumn).</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 (detected)</source>
+        <translation>%1 (wykryto)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>delimiter %1 · decimal mark %2 · header in line %3 (%4 columns) · comment lines: %5 · data rows: %6</source>
+        <translation>separator %1 · znak dziesiętny %2 · nagłówek w wierszu %3 (%4 kolumn) · wiersze komentarza: %5 · wiersze danych: %6</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Ready to import as %1 “%2”.</source>
+        <translation>Gotowe do importu jako %1 „%2”.</translation>
     </message>
 </context>
 <context>
@@ -1229,7 +1576,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+47"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+53"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Projekty Metrofit (*.metrofit)</translation>
     </message>
@@ -1239,7 +1586,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+49"/>
         <source>Autosave failed: %1</source>
         <translation>Automatyczny zapis nie powiódł się: %1</translation>
     </message>
@@ -1277,6 +1624,16 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <location line="+1"/>
         <source>Open &amp;demo project</source>
         <translation>Otwórz projekt &amp;demonstracyjny</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Import data…</source>
+        <translation>&amp;Importuj dane…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Adds a file (thermal log, probe points, CMM report, …) to the project as a dataset</source>
+        <translation>Dodaje plik (rejestr termiczny, punkty pomiarowe, raport CMM, …) do projektu jako zbiór danych</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1417,7 +1774,27 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Niezapisane zmiany</translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="+136"/>
+        <source>Import data</source>
+        <translation>Import danych</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
+        <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Wszystkie pliki (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot import the data</source>
+        <translation>Nie można zaimportować danych</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Imported %1 as “%2”</source>
+        <translation>Zaimportowano %1 jako „%2”</translation>
+    </message>
+    <message>
+        <location line="-168"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Projekt „%1” ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
@@ -1827,7 +2204,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+9"/>
-        <location line="+258"/>
+        <location line="+259"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
@@ -2123,7 +2500,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ukryj tę wskazówkę (nie pojawi się ponownie)</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+29"/>
+        <source>&amp;Import data…</source>
+        <translation>&amp;Importuj dane…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Adds a file to the project as a dataset (File › Import data…, Ctrl+I, or drop files on the window); right-click a dataset to rename, re-link or remove it</source>
+        <translation>Dodaje plik do projektu jako zbiór danych (Plik › Importuj dane…, Ctrl+I lub przeciągnij pliki na okno); prawy przycisk myszy na zbiorze danych: zmiana nazwy, ponowne połączenie lub usunięcie</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>not saved yet</source>
         <translation>jeszcze nie zapisano</translation>
     </message>
@@ -2227,7 +2614,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ProjectDocument</name>
     <message>
-        <location filename="../widgets/document/projectdocument.cpp" line="+32"/>
+        <location filename="../widgets/document/projectdocument.cpp" line="+34"/>
         <source>Rename project</source>
         <translation>Zmiana nazwy projektu</translation>
     </message>
@@ -2242,7 +2629,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Edycja notatek: %1</translation>
     </message>
     <message>
-        <location line="+135"/>
+        <location line="+185"/>
         <source>Untitled</source>
         <translation>Bez nazwy</translation>
     </message>
@@ -2251,11 +2638,48 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>projekt nie został jeszcze zapisany; wybierz nazwę pliku poleceniem „Zapisz jako”</translation>
     </message>
+    <message>
+        <location line="+56"/>
+        <source>the project has no dataset &apos;%1&apos;</source>
+        <translation>projekt nie ma zbioru danych „%1”</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+26"/>
+        <source>a dataset needs an id</source>
+        <translation>zbiór danych wymaga identyfikatora</translation>
+    </message>
+    <message>
+        <location line="-23"/>
+        <location line="+26"/>
+        <source>the project already has a dataset &apos;%1&apos;</source>
+        <translation>projekt ma już zbiór danych „%1”</translation>
+    </message>
+    <message>
+        <location line="-21"/>
+        <source>Import dataset %1</source>
+        <translation>Import zbioru danych %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Remove dataset %1</source>
+        <translation>Usunięcie zbioru danych %1</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Rename dataset %1 to %2</source>
+        <translation>Zmiana nazwy zbioru danych %1 na %2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Re-link dataset %1</source>
+        <translation>Ponowne połączenie zbioru danych %1</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+50"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+63"/>
         <location line="+11"/>
         <source>%1: project overview (Ctrl+1)</source>
         <translation>%1: przegląd projektu (Ctrl+1)</translation>
@@ -6912,7 +7336,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana ustawień modelu termicznego</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+82"/>
         <source>Modular case: %1</source>
         <translation>Przypadek modułowy: %1</translation>
     </message>

@@ -2,6 +2,9 @@
 
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QMenu>
+
+#include "app/gui/datasetactions.h"
 
 #include "core/project/project.h"
 #include "widgets/common/tablecopy.h"
@@ -26,6 +29,22 @@ DatasetTable::DatasetTable(QWidget* parent) : QTableWidget(parent) {
   horizontalHeader()->setSectionResizeMode(ColKind, QHeaderView::ResizeToContents);
   horizontalHeader()->setSectionResizeMode(ColPath, QHeaderView::Stretch);
   horizontalHeader()->setSectionResizeMode(ColLicence, QHeaderView::Stretch);
+}
+
+void DatasetTable::enableEditing(ProjectDocument* document) {
+  setContextMenuPolicy(Qt::CustomContextMenu);
+  connect(this, &QWidget::customContextMenuRequested, this, [this, document](const QPoint& pos) {
+    const QString id = datasetId(indexAt(pos).row());
+    if (id.isEmpty()) return;
+    QMenu menu(this);
+    addDatasetActions(&menu, document, id, this);
+    menu.exec(viewport()->mapToGlobal(pos));
+  });
+}
+
+QString DatasetTable::datasetId(int row) const {
+  const QTableWidgetItem* id = row >= 0 ? item(row, ColId) : nullptr;
+  return id ? id->text() : QString();
 }
 
 void DatasetTable::setDatasets(const ProjectDocument& document, const std::vector<DatasetRef>& datasets) {

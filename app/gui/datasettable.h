@@ -1,6 +1,7 @@
 #pragma once
-// A read-only table of a project's datasets: id, kind, path (red when the file is missing) and
-// licence, with the description as tooltip.
+// A table of a project's datasets: id, kind, path (red when the file is missing) and licence, with
+// the description as tooltip. With enableEditing, its context menu renames, re-links and removes
+// datasets (app/gui/datasetactions.h, through the document's undo stack).
 #include <QTableWidget>
 #include <vector>
 
@@ -15,6 +16,10 @@ class DatasetTable : public QTableWidget {
 
   /// Shows these datasets of the document (paths checked against the document's folder).
   void setDatasets(const ProjectDocument& document, const std::vector<DatasetRef>& datasets);
+  /// Gives the table a context menu that edits the document's datasets.
+  void enableEditing(ProjectDocument* document);
+  /// The id of the dataset in a row ("" when there is none).
+  QString datasetId(int row) const;
 };
 
 }  // namespace metrofit

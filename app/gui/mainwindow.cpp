@@ -6,15 +6,20 @@
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QPushButton>
 #include <QStackedWidget>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTimer>
 #include <QUndoStack>
+#include <QUrl>
 #include <QVBoxLayout>
 #include <exception>
 
@@ -37,6 +42,7 @@
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
+#include "widgets/importer/importdialog.h"
 #include "widgets/setup/setupmodeleditor.h"
 
 namespace metrofit {
@@ -85,6 +91,8 @@ MainWindow::MainWindow(QWidget* parent)
   createActions();
   createMenus();
   connect(overview_, &OverviewPage::openDemoRequested, this, &MainWindow::openDemo);
+  connect(overview_, &OverviewPage::importRequested, this, [this] { importFiles({}); });
+  setAcceptDrops(true);
   installStudyActions(this, pages_);  // Run menu: F5 / Esc on every page
 
   connect(navigator_, &ProjectNavigator::pageActivated, this, [this](Page page, const QString& dataset) {
@@ -148,6 +156,11 @@ void MainWindow::createMenus() {
   file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newProject);
   file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::open);
   QAction* demo = file->addAction(tr("Open &demo project"), this, &MainWindow::openDemo);
+  QAction* import = file->addAction(tr("&Import data…"), QKeySequence(Qt::CTRL | Qt::Key_I), this,
+                                    [this] { importFiles({}); });
+  import->setObjectName(QStringLiteral("importData"));
+  import->setStatusTip(
+      tr("Adds a file (thermal log, probe points, CMM report, …) to the project as a dataset"));
   recentMenu_ = file->addMenu(tr("&Recent files"));
   connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::updateRecentMenu);
   updateRecentMenu();
@@ -418,6 +431,70 @@ void MainWindow::about() {
                    .arg(EIGEN_WORLD_VERSION)
                    .arg(EIGEN_MAJOR_VERSION)
                    .arg(EIGEN_MINOR_VERSION)));
+}
+
+void MainWindow::importFiles(const QStringList& files) {
+  QStringList paths = files;
+  if (paths.isEmpty()) {
+    const QString start =
+        document_->fileName().isEmpty() ? QDir::homePath() : QFileInfo(document_->fileName()).path();
+    paths = QFileDialog::getOpenFileNames(
+        this, tr("Import data"), start,
+        tr("Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)"));
+  }
+  for (const QString& path : paths) {
+    ImportDialog dialog(document_->project(), document_->projectPathForDatasets(), this);
+    dialog.setFile(path);
+    if (dialog.exec() != QDialog::Accepted) continue;
+    try {
+      document_->addDataset(dialog.dataset());
+    } catch (const std::exception& e) {
+      showError(tr("Cannot import the data"), QString::fromStdString(e.what()));
+      continue;
+    }
+    const QString id = QString::fromStdString(dialog.dataset().id);
+    // Show the data where it is used: the first study page that reads its kind.
+    const QString kind = QString::fromStdString(dialog.dataset().kind);
+    for (const QString& study : studyKeys()) {
+      if (study == QLatin1String(study::kDiagnosis) || !studyDatasetKinds(study).contains(kind)) continue;
+      const Page page = pageForStudy(study);
+      if (page == Page::Thermal) thermal_->selectDataset(id);
+      if (page == Page::Matching) matching_->selectDataset(id);
+      showPage(page);
+      break;
+    }
+    statusBar()->showMessage(tr("Imported %1 as “%2”").arg(QFileInfo(path).fileName(), id), kStatusTimeoutMs);
+  }
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  const QMimeData* mime = event->mimeData();
+  if (!mime->hasUrls()) return;
+  for (const QUrl& url : mime->urls())
+    if (!url.isLocalFile()) return;
+  event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  QStringList data;
+  QString project;
+  for (const QUrl& url : event->mimeData()->urls()) {
+    const QString path = url.toLocalFile();
+    if (path.endsWith(QLatin1String(Project::kFileSuffix)))
+      project = path;
+    else
+      data << path;
+  }
+  event->acceptProposedAction();
+  // A dropped project is opened; dropped data files are imported into the open project. Both after
+  // the drop has finished (the dialogs are modal; the program the files came from must not wait).
+  if (!project.isEmpty() && data.isEmpty()) {
+    QTimer::singleShot(0, this, [this, project] {
+      if (maybeSave()) openProject(project);
+    });
+    return;
+  }
+  if (!data.isEmpty()) QTimer::singleShot(0, this, [this, data] { importFiles(data); });
 }
 
 void MainWindow::reloadFromDisk() {

@@ -2,6 +2,7 @@
 // The main window: menus, actions and wiring between the project document, the navigator and the
 // pages. It holds no algorithm code; pages live in their own classes.
 #include <QMainWindow>
+#include <QStringList>
 #include <array>
 #include <functional>
 
@@ -52,9 +53,15 @@ class MainWindow : public QMainWindow {
   void recoverUntitled();
   /// Shows a page and selects it in the navigator.
   void showPage(Page page);
+  /// File › Import data…: opens the import dialog for each file (a file dialog first when `files` is
+  /// empty) and adds each accepted dataset through the undo stack, then shows the study page that
+  /// reads its kind with the dataset selected. Dropped files come here too.
+  void importFiles(const QStringList& files);
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
 
  private:
   void createActions();

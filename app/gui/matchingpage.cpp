@@ -546,7 +546,8 @@ void MatchingPage::setLocked(int dof, bool locked) {
 void MatchingPage::refresh() {
   std::vector<DatasetRef> sets;
   for (const DatasetRef& d : document_->project().datasets) {
-    if (d.kind == dataset_kind::kProbePoints) sets.push_back(d);
+    // A hole-table report is read as probe points too (readProbePointsAnyFormat).
+    if (d.kind == dataset_kind::kProbePoints || d.kind == dataset_kind::kHoleTable) sets.push_back(d);
   }
   if (sets == sets_ && projectFile_ == document_->fileName() && combo_->count() > 0) {
     if (writingStudy_) return;
@@ -635,7 +636,7 @@ void MatchingPage::showPoints(int comboIndex) {
     return;
   }
   try {
-    rawSet_ = readProbePointsAnyFormat(document_->datasetPath(dataset).toStdString());
+    rawSet_ = readProbePointsAnyFormat(document_->datasetPath(dataset).toStdString(), 3, dataset.csv);
     set_ = matching::studyModelSet(*rawSet_, settings_.options, projectFile_.toStdString());
     const ProbePointSet& points = *set_;
     std::set<std::string> surfaces;

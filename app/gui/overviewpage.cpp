@@ -102,8 +102,19 @@ OverviewPage::OverviewPage(ProjectDocument* document, QWidget* parent)
   layout->addWidget(title);
   layout->addLayout(form);
   layout->addSpacing(8);
-  layout->addWidget(datasetsTitle);
+  auto* importButton = new QPushButton(tr("&Import data…"), this);
+  importButton->setObjectName(QStringLiteral("overviewImport"));
+  importButton->setToolTip(
+      tr("Adds a file to the project as a dataset (File › Import data…, Ctrl+I, or drop "
+         "files on the window); right-click a dataset to rename, re-link or remove it"));
+  connect(importButton, &QPushButton::clicked, this, &OverviewPage::importRequested);
+  auto* datasetsRow = new QHBoxLayout;
+  datasetsRow->addWidget(datasetsTitle);
+  datasetsRow->addStretch(1);
+  datasetsRow->addWidget(importButton);
+  layout->addLayout(datasetsRow);
   layout->addWidget(datasets_, 1);
+  datasets_->enableEditing(document_);
 
   connect(name_, &QLineEdit::textEdited, this,
           [this](const QString& text) { document_->setValue(ProjectField::name(), text); });

@@ -34,6 +34,8 @@ class OverviewPage : public QWidget {
  signals:
   /// The hint's "Open the demo project" button was pressed.
   void openDemoRequested();
+  /// The "Import data…" button above the datasets was pressed.
+  void importRequested();
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;

@@ -1,6 +1,9 @@
 #include "app/gui/projectnavigator.h"
 
+#include <QMenu>
 #include <QSignalBlocker>
+
+#include "app/gui/datasetactions.h"
 
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
@@ -20,6 +23,16 @@ ProjectNavigator::ProjectNavigator(ProjectDocument* document, QWidget* parent)
                        current->data(0, DatasetRole).toString());
   });
   connect(document_, &ProjectDocument::changed, this, &ProjectNavigator::refresh);
+  // A dataset item's context menu: rename, re-link, remove (through the document's undo stack).
+  setContextMenuPolicy(Qt::CustomContextMenu);
+  connect(this, &QWidget::customContextMenuRequested, this, [this](const QPoint& pos) {
+    const QTreeWidgetItem* item = itemAt(pos);
+    const QString id = item ? item->data(0, DatasetRole).toString() : QString();
+    if (id.isEmpty()) return;
+    QMenu menu(this);
+    addDatasetActions(&menu, document_, id, this);
+    menu.exec(viewport()->mapToGlobal(pos));
+  });
   rebuild();
 }
 

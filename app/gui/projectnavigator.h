@@ -1,6 +1,7 @@
 #pragma once
 // The project navigator: the project as root, its studies below it and each study's datasets as
-// children. Selecting an item asks for its page (and dataset).
+// children. Selecting an item asks for its page (and dataset); a dataset item's context menu renames,
+// re-links and removes the dataset (app/gui/datasetactions.h).
 #include <QTreeWidget>
 #include <vector>
 

@@ -3,6 +3,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QEventLoop>
+#include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QMetaObject>
@@ -11,6 +12,7 @@
 #include <QTextStream>
 #include <QTimer>
 #include <QWindow>
+#include <cmath>
 #include <exception>
 #include <functional>
 #include <vector>
@@ -21,6 +23,7 @@
 #include "core/project/project.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
+#include "widgets/importer/importdialog.h"
 
 namespace metrofit {
 
@@ -143,7 +146,52 @@ int runScreenshots(const QString& outDir, QTextStream& err) {
     }
   }
   window.thermalPage()->selectDataset(firstLog);
-  err << "metrofit: " << views.size() << " screenshots written to " << QDir::toNativeSeparators(dir)
+
+  // The import dialog (File › Import data…) on a thermal log as a German spreadsheet exports it:
+  // ';' between fields, decimal commas, its own column names, the displacement mapped to disp_z_um.
+  {
+    const QString log = work.filePath(QStringLiteral("Aufwaermung Spindel.csv"));
+    QFile f(log);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+      err << "metrofit: cannot write " << QDir::toNativeSeparators(log) << Qt::endl;
+      return 1;
+    }
+    QByteArray text =
+        "# Aufwärmversuch Spindel 8000 1/min, Maschine 4\n"
+        "Zeit [s];Temp Spindel;Temp Bett;Verlagerung Z [µm]\n";
+    for (int row = 0; row < 240; ++row) {
+      const double t = 30.0 * row;
+      const double spindle = 21.0 + 9.0 * (1.0 - std::exp(-t / 1500.0));
+      const double bed = 20.5 + 1.5 * (1.0 - std::exp(-t / 4000.0));
+      text += QStringLiteral("%1;%2;%3;%4\n")
+                  .arg(t, 0, 'f', 0)
+                  .arg(spindle, 0, 'f', 3)
+                  .arg(bed, 0, 'f', 3)
+                  .arg(3.25 * (spindle - 21.0) + 1.1 * (bed - 20.5), 0, 'f', 2)
+                  .replace(QLatin1Char('.'), QLatin1Char(','))
+                  .toUtf8();
+    }
+    f.write(text);
+    f.close();
+    ImportDialog dialog(window.document()->project(), window.document()->projectPathForDatasets(), &window);
+    dialog.setFile(log);
+    dialog.setRole(QStringLiteral("Temp Spindel"), QStringLiteral("T1"));
+    dialog.setRole(QStringLiteral("Temp Bett"), QStringLiteral("T2"));
+    dialog.setRole(QStringLiteral("Verlagerung Z [µm]"), QStringLiteral("disp_z_um"));
+    dialog.show();
+    if (!waitExposed(dialog, 10000)) {
+      err << "metrofit: the import dialog was not shown by the X server" << Qt::endl;
+      return 1;
+    }
+    settle(kSettleMs);
+    const QImage image = dialog.grab().toImage();
+    const QString file = dir + QStringLiteral("/%1-import-dialog.png").arg(number++, 2, 10, QLatin1Char('0'));
+    if (image.isNull() || !image.save(file, "PNG")) {
+      err << "metrofit: cannot write the screenshot " << QDir::toNativeSeparators(file) << Qt::endl;
+      return 1;
+    }
+  }
+  err << "metrofit: " << views.size() + 1 << " screenshots written to " << QDir::toNativeSeparators(dir)
       << Qt::endl;
   return 0;
 }

@@ -170,7 +170,7 @@ void ThermalPage::showLog(int comboIndex) {
   const DatasetRef& dataset = logs_[static_cast<std::size_t>(comboIndex)];
   const QString path = document_->datasetPath(dataset);
   try {
-    log_ = readThermalLog(path.toStdString());
+    log_ = readThermalLog(path.toStdString(), 3, dataset.csv);
     logId_ = QString::fromStdString(dataset.id);
     trend_->setLog(log_);
     const QLocale locale;
@@ -293,14 +293,15 @@ void ThermalPage::updateModular(bool now) {
   const std::string paths[3] = {document_->datasetPath(*z).toStdString(),
                                 document_->datasetPath(*c).toStdString(),
                                 document_->datasetPath(*h).toStdString()};
+  const CsvReadOptions csv[3] = {z->csv, c->csv, h->csv};  // each log's dialect and mapping
   modularKey_ = projectFile_;
   modularDone_ = true;
-  auto job = [paths]() -> ModularRun {
+  auto job = [paths, csv]() -> ModularRun {
     ModularRun run;
     try {
-      const ThermalLog zl = readThermalLog(paths[0]);
-      const ThermalLog cl = readThermalLog(paths[1]);
-      run.testLog = std::make_shared<ThermalLog>(readThermalLog(paths[2]));
+      const ThermalLog zl = readThermalLog(paths[0], 3, csv[0]);
+      const ThermalLog cl = readThermalLog(paths[1], 3, csv[1]);
+      run.testLog = std::make_shared<ThermalLog>(readThermalLog(paths[2], 3, csv[2]));
       const ThermalModelSettings s = defaultThermalModelSettings(*run.testLog, nlohmann::json::object(), {});
       run.result = std::make_shared<ModularComparison>(
           compareModularModels({&zl, &cl}, *run.testLog, s.target, modularInputs(*run.testLog), 1));

@@ -94,7 +94,7 @@ QString outputDir(const QString& name) {
 }
 
 /// The views every screenshot run must show: CONTRACT.md's list in a fixed order, then one trend
-/// view per further thermal log of the bundled demo project (in project order).
+/// view per further thermal log of the bundled demo project (in project order), then the import dialog.
 QStringList expectedShots() {
   QStringList names = {
       QStringLiteral("overview"),           QStringLiteral("setup-graph"),
@@ -110,6 +110,7 @@ QStringList expectedShots() {
   for (const metrofit::DatasetRef& d : demo.datasets)
     if (d.kind == metrofit::dataset_kind::kThermalLog && d.id != firstLog)
       names << QStringLiteral("thermal-trend-") + QString::fromStdString(d.id);
+  names << QStringLiteral("import-dialog");  // File › Import data… on a ';' / decimal-comma log
   QStringList files;
   for (int i = 0; i < names.size(); ++i)
     files << QStringLiteral("%1-%2.png").arg(i + 1, 2, 10, QLatin1Char('0')).arg(names[i]);

@@ -64,14 +64,17 @@ const char* diagnosisDomainKey(DiagnosisDomain domain) {
 }
 
 std::string diagnosisSettingsKey(const DiagnosisSettings& s) {
-  const nlohmann::json key = {{"d", diagnosisDomainKey(s.domain)},
-                              {"p", s.datasetPath},
-                              {"t", s.target},
-                              {"i", s.inputs},
-                              {"f", s.trainFraction},
-                              {"m", s.modelPath},
-                              {"tol", s.toleranceMm},
-                              {"feed", s.feedMmPerMin}};
+  const nlohmann::json key = {
+      {"d", diagnosisDomainKey(s.domain)},
+      {"p", s.datasetPath},
+      {"csv",
+       {static_cast<int>(s.csv.dialect.delimiter), static_cast<int>(s.csv.dialect.decimal), s.csv.columnMap}},
+      {"t", s.target},
+      {"i", s.inputs},
+      {"f", s.trainFraction},
+      {"m", s.modelPath},
+      {"tol", s.toleranceMm},
+      {"feed", s.feedMmPerMin}};
   return key.dump();
 }
 
@@ -100,8 +103,9 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
   DiagnosisSettings out;
   out.domain = domain;
   out.datasetId = stringKey(block, "dataset", source, prefix);
-  out.datasetPath =
-      resolveDatasetPath(projectPath, datasetOf(project, out.datasetId, source, prefix + "dataset"));
+  const DatasetRef& dataset = datasetOf(project, out.datasetId, source, prefix + "dataset");
+  out.datasetPath = resolveDatasetPath(projectPath, dataset);
+  out.csv = dataset.csv;
   switch (domain) {
     case DiagnosisDomain::Thermal: {
       out.target = stringKey(block, "target", source, prefix);
@@ -139,7 +143,7 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
 diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer) {
   switch (s.domain) {
     case DiagnosisDomain::Thermal: {
-      const ThermalLog log = readThermalLog(s.datasetPath);
+      const ThermalLog log = readThermalLog(s.datasetPath, 3, s.csv);
       diagnose::ThermalDiagnosisOptions o;
       o.target = s.target;
       o.inputs = s.inputs;
@@ -147,18 +151,18 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer)
       return diagnose::diagnoseThermal(log, o, observer);
     }
     case DiagnosisDomain::Kinematic: {
-      const MeasuredPath path = readMeasuredPath(s.datasetPath);
+      const MeasuredPath path = readMeasuredPath(s.datasetPath, s.csv);
       diagnose::KinematicDiagnosisOptions o;
       o.feedMmPerMin = s.feedMmPerMin;
       return diagnose::diagnoseKinematic(path, o, observer);
     }
     case DiagnosisDomain::Setup: {
       const setup::Model model = setup::readModel(s.modelPath);
-      const setup::Measurements m = setup::readMeasurements({s.datasetPath}, model);
+      const setup::Measurements m = setup::readMeasurements({s.datasetPath}, model, s.csv);
       return diagnose::diagnoseSetup(model, m, {}, observer);
     }
     case DiagnosisDomain::Matching: {
-      const ProbePointSet set = readProbePointsAnyFormat(s.datasetPath);
+      const ProbePointSet set = readProbePointsAnyFormat(s.datasetPath, 3, s.csv);
       diagnose::MatchingDiagnosisOptions o;
       o.toleranceMm = s.toleranceMm;
       return diagnose::diagnoseMatching(set, o, observer);

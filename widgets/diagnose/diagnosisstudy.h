@@ -34,6 +34,7 @@ struct DiagnosisSettings {
   DiagnosisDomain domain = DiagnosisDomain::Thermal;
   std::string datasetId;
   std::string datasetPath;  ///< resolved against the project file's folder
+  CsvReadOptions csv;       ///< the dataset's dialect and column mapping (core/project/datasets.h)
   std::string target;       ///< thermal
   std::vector<std::string> inputs;
   double trainFraction = 0.5;
@@ -45,7 +46,8 @@ struct DiagnosisSettings {
 };
 
 /// A text that is equal for two settings exactly when runDiagnosis gives the same result for both
-/// (domain, data, target, inputs, fraction, model, tolerance, feed), e.g. to reuse a result.
+/// (domain, data and how it is read, target, inputs, fraction, model, tolerance, feed), e.g. to reuse a
+/// result.
 std::string diagnosisSettingsKey(const DiagnosisSettings& settings);
 
 /// True when studies.diagnosis.<domain> exists (it may still be invalid).

@@ -5,12 +5,14 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QFileSystemWatcher>
+#include <QStringList>
 #include <QTimer>
 #include <QUndoStack>
 #include <string>
 #include <vector>
 
 #include "core/common/error.h"
+#include "core/project/datasets.h"
 #include "widgets/document/studyinfo.h"
 
 namespace metrofit {
@@ -71,6 +73,37 @@ std::optional<nlohmann::json> withValue(const std::optional<nlohmann::json>& stu
     (*node)[tokens.back()] = value;
   }
   return root;
+}
+
+/// Calls `visit(member, path)` for every "dataset" or "model" string member of `node` (at any depth).
+template <typename Json, typename Visit>
+void forEachDatasetMember(Json& node, const std::string& path, const Visit& visit) {
+  if (node.is_object()) {
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      const std::string child = path + "." + it.key();
+      if ((it.key() == "dataset" || it.key() == "model") && it.value().is_string()) {
+        visit(it.value(), child);
+      } else {
+        forEachDatasetMember(it.value(), child, visit);
+      }
+    }
+  } else if (node.is_array()) {
+    for (std::size_t i = 0; i < node.size(); ++i)
+      forEachDatasetMember(node[i], path + "[" + std::to_string(i) + "]", visit);
+  }
+}
+
+/// Removes the "dataset" / "model" members naming `id` (at any depth).
+void eraseDatasetMembers(nlohmann::json& node, const std::string& id) {
+  if (node.is_object()) {
+    for (const char* key : {"dataset", "model"}) {
+      const auto it = node.find(key);
+      if (it != node.end() && it->is_string() && it->get<std::string>() == id) node.erase(it);
+    }
+    for (auto& [key, value] : node.items()) eraseDatasetMembers(value, id);
+  } else if (node.is_array()) {
+    for (auto& value : node) eraseDatasetMembers(value, id);
+  }
 }
 
 }  // namespace
@@ -148,6 +181,25 @@ void ReplaceProject::undo() {
 
 void ReplaceProject::redo() {
   document_->applyProject(after_);
+}
+
+// ---- ChangeDatasets ----
+
+ChangeDatasets::ChangeDatasets(ProjectDocument* document, std::vector<DatasetRef> datasets,
+                               nlohmann::json studies, const QString& text, QUndoCommand* parent)
+    : QUndoCommand(text, parent),
+      document_(document),
+      datasetsBefore_(document->project().datasets),
+      datasetsAfter_(std::move(datasets)),
+      studiesBefore_(document->project().studies),
+      studiesAfter_(std::move(studies)) {}
+
+void ChangeDatasets::undo() {
+  document_->applyDatasets(datasetsBefore_, studiesBefore_);
+}
+
+void ChangeDatasets::redo() {
+  document_->applyDatasets(datasetsAfter_, studiesAfter_);
 }
 
 // ---- ProjectDocument ----
@@ -337,6 +389,94 @@ QString ProjectDocument::datasetPath(const DatasetRef& dataset) const {
   if (fileName_.isEmpty()) return QDir::current().absoluteFilePath(fromStd(dataset.path));
   return QDir::cleanPath(
       QFile::decodeName(QByteArray::fromStdString(resolveDatasetPath(fileNameToStd(fileName_), dataset))));
+}
+
+QString ProjectDocument::projectPathForDatasets() const {
+  return fileName_.isEmpty() ? QDir::current().absoluteFilePath(QStringLiteral("untitled.metrofit"))
+                             : fileName_;
+}
+
+QStringList ProjectDocument::datasetReferences(const QString& id) const {
+  QStringList out;
+  const std::string key = toStd(id);
+  forEachDatasetMember(project_.studies, "studies",
+                       [&](const nlohmann::json& value, const std::string& path) {
+                         if (value.get<std::string>() == key) out << fromStd(path);
+                       });
+  return out;
+}
+
+std::size_t ProjectDocument::datasetIndex(const QString& id) const {
+  for (std::size_t i = 0; i < project_.datasets.size(); ++i)
+    if (project_.datasets[i].id == toStd(id)) return i;
+  throw ValidationError(ErrorContext{{}, 0, 0, "id"}, toStd(tr("the project has no dataset '%1'").arg(id)));
+}
+
+void ProjectDocument::applyDatasets(const std::vector<DatasetRef>& datasets, const nlohmann::json& studies) {
+  project_.datasets = datasets;
+  project_.studies = studies;
+  emit changed();
+}
+
+void ProjectDocument::addDataset(const DatasetRef& dataset) {
+  if (dataset.id.empty())
+    throw ValidationError(ErrorContext{{}, 0, 0, "id"}, toStd(tr("a dataset needs an id")));
+  if (project_.dataset(dataset.id) != nullptr)
+    throw ValidationError(ErrorContext{{}, 0, 0, "id"},
+                          toStd(tr("the project already has a dataset '%1'").arg(fromStd(dataset.id))));
+  std::vector<DatasetRef> datasets = project_.datasets;
+  datasets.push_back(dataset);
+  ++editSequence_;
+  undoStack_->push(new ChangeDatasets(this, std::move(datasets), project_.studies,
+                                      tr("Import dataset %1").arg(fromStd(dataset.id))));
+}
+
+void ProjectDocument::removeDataset(const QString& id) {
+  const std::size_t index = datasetIndex(id);
+  std::vector<DatasetRef> datasets = project_.datasets;
+  datasets.erase(datasets.begin() + static_cast<std::ptrdiff_t>(index));
+  nlohmann::json studies = project_.studies;
+  eraseDatasetMembers(studies, toStd(id));
+  ++editSequence_;
+  undoStack_->push(
+      new ChangeDatasets(this, std::move(datasets), std::move(studies), tr("Remove dataset %1").arg(id)));
+}
+
+void ProjectDocument::renameDataset(const QString& id, const QString& newId) {
+  const std::size_t index = datasetIndex(id);
+  const QString name = newId.trimmed();
+  if (name == id) return;
+  if (name.isEmpty()) throw ValidationError(ErrorContext{{}, 0, 0, "id"}, toStd(tr("a dataset needs an id")));
+  if (project_.dataset(toStd(name)) != nullptr)
+    throw ValidationError(ErrorContext{{}, 0, 0, "id"},
+                          toStd(tr("the project already has a dataset '%1'").arg(name)));
+  std::vector<DatasetRef> datasets = project_.datasets;
+  datasets[index].id = toStd(name);
+  nlohmann::json studies = project_.studies;
+  const std::string oldKey = toStd(id);
+  forEachDatasetMember(studies, "studies", [&](nlohmann::json& value, const std::string&) {
+    if (value.get<std::string>() == oldKey) value = toStd(name);
+  });
+  ++editSequence_;
+  undoStack_->push(new ChangeDatasets(this, std::move(datasets), std::move(studies),
+                                      tr("Rename dataset %1 to %2").arg(id, name)));
+}
+
+void ProjectDocument::relinkDataset(const QString& id, const QString& file) {
+  const std::size_t index = datasetIndex(id);
+  DatasetRef moved = project_.datasets[index];
+  const QString absolute = QFileInfo(file).absoluteFilePath();
+  const QDir folder = QFileInfo(projectPathForDatasets()).absoluteDir();
+  const QString relative = folder.relativeFilePath(absolute);
+  // Another root (Windows drive) cannot be reached relatively: keep the absolute path.
+  moved.path = toStd(QDir::fromNativeSeparators(QDir::isAbsolutePath(relative) ? absolute : relative));
+  (void)summarizeDataset(fileNameToStd(projectPathForDatasets()), moved);  // throws; nothing changed yet
+  if (moved == project_.datasets[index]) return;
+  std::vector<DatasetRef> datasets = project_.datasets;
+  datasets[index] = moved;
+  ++editSequence_;
+  undoStack_->push(
+      new ChangeDatasets(this, std::move(datasets), project_.studies, tr("Re-link dataset %1").arg(id)));
 }
 
 void ProjectDocument::setFileName(const QString& path) {

@@ -10,9 +10,11 @@
 // open file is changed on disk by another program (never for the document's own saves).
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QUndoCommand>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "core/project/project.h"
 
@@ -29,6 +31,7 @@ enum class UndoCommandId : int {
   ChangeProjectValue = 1,
   ChangeStudyValue = 2,
   ReplaceProject = 3,
+  ChangeDatasets = 4,
 };
 
 /// A text field of the project that can be edited through the undo stack.
@@ -113,6 +116,25 @@ class ReplaceProject : public QUndoCommand {
   Project after_;
 };
 
+/// Changes the project's datasets (import, remove, rename, re-link) together with the study settings
+/// that name them (ProjectDocument::addDataset, removeDataset, renameDataset, relinkDataset): the
+/// command keeps the dataset list and the studies before and after, so undo restores both exactly.
+/// Never merges.
+class ChangeDatasets : public QUndoCommand {
+ public:
+  ChangeDatasets(ProjectDocument* document, std::vector<DatasetRef> datasets, nlohmann::json studies,
+                 const QString& text, QUndoCommand* parent = nullptr);
+
+  void undo() override;
+  void redo() override;
+  int id() const override { return static_cast<int>(UndoCommandId::ChangeDatasets); }
+
+ private:
+  ProjectDocument* document_;
+  std::vector<DatasetRef> datasetsBefore_, datasetsAfter_;
+  nlohmann::json studiesBefore_, studiesAfter_;
+};
+
 class ProjectDocument : public QObject {
   Q_OBJECT
  public:
@@ -167,6 +189,26 @@ class ProjectDocument : public QObject {
   /// Absolute path of a dataset of the project (resolved against the project's folder; relative to
   /// the working directory when the project has no file yet).
   QString datasetPath(const DatasetRef& dataset) const;
+  /// The path dataset paths are relative to (core's `projectPath`): the project file, or for a
+  /// project without a file a file in the working directory (as datasetPath resolves them).
+  QString projectPathForDatasets() const;
+
+  /// Study settings that name a dataset: every "dataset" or "model" member (at any depth of
+  /// `studies`) whose value is `id`, as "studies.thermal.dataset", "studies.kinematics.spc.dataset".
+  QStringList datasetReferences(const QString& id) const;
+  /// Adds a dataset (checked by core's addDataset, core/project/datasets.h) through the undo stack
+  /// ("Import dataset <id>"). ValidationError when the id is empty or already in the project.
+  void addDataset(const DatasetRef& dataset);
+  /// Removes a dataset and the study settings that name it (datasetReferences: the studies fall back
+  /// to their defaults) in one undo step. ValidationError for an unknown id.
+  void removeDataset(const QString& id);
+  /// Renames a dataset and updates the study settings that name it, in one undo step. ValidationError
+  /// (field "id") for an unknown id, an empty new id or one the project already has.
+  void renameDataset(const QString& id, const QString& newId);
+  /// Points a dataset at another file (a moved file): the file is read as the dataset's kind with its
+  /// dialect and mapping first (core's summarizeDataset; InputError naming file, line and field when it
+  /// cannot be read, and nothing changes), then stored relative to the project's folder. One undo step.
+  void relinkDataset(const QString& id, const QString& file);
 
  signals:
   /// The project content changed (load, new, undo, redo, any edit).
@@ -184,6 +226,10 @@ class ProjectDocument : public QObject {
   friend class ChangeProjectValue;
   friend class ChangeStudyValue;
   friend class ReplaceProject;
+  friend class ChangeDatasets;
+  void applyDatasets(const std::vector<DatasetRef>& datasets, const nlohmann::json& studies);
+  /// The index of a dataset, or a ValidationError naming the id.
+  std::size_t datasetIndex(const QString& id) const;
   void applyProject(const Project& project);
   /// Replaces a study's JSON without the undo stack (nullopt removes the study).
   void applyStudy(const QString& study, const QString& key, const std::optional<nlohmann::json>& json);

@@ -67,13 +67,16 @@ QString studySummary(const QString& s) {
 }
 
 QStringList studyDatasetKinds(const QString& s) {
-  if (s == QLatin1String(study::kSetup)) return {dataset_kind::kSetupModel, dataset_kind::kCmmReport};
-  if (s == QLatin1String(study::kMatching)) return {dataset_kind::kProbePoints};
-  if (s == QLatin1String(study::kKinematics)) return {dataset_kind::kCircularTest};
+  if (s == QLatin1String(study::kSetup))
+    return {dataset_kind::kSetupModel, dataset_kind::kCmmReport, dataset_kind::kDmis};
+  if (s == QLatin1String(study::kMatching)) return {dataset_kind::kProbePoints, dataset_kind::kHoleTable};
+  if (s == QLatin1String(study::kKinematics))
+    return {dataset_kind::kCircularTest, dataset_kind::kFeatureSeries};
   if (s == QLatin1String(study::kThermal)) return {dataset_kind::kThermalLog};
   if (s == QLatin1String(study::kDiagnosis)) {
     return {dataset_kind::kThermalLog, dataset_kind::kCircularTest, dataset_kind::kSetupModel,
-            dataset_kind::kCmmReport, dataset_kind::kProbePoints};
+            dataset_kind::kCmmReport,  dataset_kind::kProbePoints,  dataset_kind::kDmis,
+            dataset_kind::kHoleTable};
   }
   return {};
 }

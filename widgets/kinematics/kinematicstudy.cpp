@@ -86,7 +86,7 @@ KinematicStudyData loadKinematicStudy(const Project& project,
   // The simulated machine belongs to the study's own circular test, not to any other one.
   if (!d.settings.dataset.empty() && d.settings.dataset != ref->id) d.settings.simulatedMachine.reset();
   d.path = resolve(*ref);
-  d.measured = readMeasuredPath(d.path);
+  d.measured = readMeasuredPath(d.path, ref->csv);
   d.analysis = analyseCircularTest(d.measured);
   d.applied = projectAxisEffects(project, ref->id);
   if (d.applied.empty()) {
@@ -112,7 +112,7 @@ KinematicStudyData loadKinematicStudy(const Project& project,
       series.column = k.column;
       series.unit = columnUnit(k.column);
       const std::string file = resolve(*sref);
-      series.values = readCsvFile(file).numericColumn(k.column);
+      series.values = readCsvFile(file, sref->csv).numericColumn(k.column);
       series.result = analyseSpc(series.values, k.options, ErrorContext{file, 0, 0, k.column});
       d.spc = std::move(series);
     } catch (const std::exception& e) {

@@ -13,17 +13,22 @@ namespace metrofit {
 
 namespace {
 
-/// The study's string setting `key` naming a dataset, when it names one of `kind`.
+/// The study's string setting `key` naming a dataset, when it names one of `kind` or `alternative`;
+/// else the first dataset of `kind`, else of `alternative` (a DMIS output file is a CMM report too).
 const DatasetRef* studyDataset(const Project& project, const nlohmann::json* study, const char* key,
-                               const char* kind) {
+                               const char* kind, const char* alternative = nullptr) {
+  const auto fits = [&](const DatasetRef* d) {
+    return d != nullptr && (d->kind == kind || (alternative != nullptr && d->kind == alternative));
+  };
   if (study != nullptr) {
     const auto it = study->find(key);
     if (it != study->end() && it->is_string()) {
       const DatasetRef* d = project.dataset(it->get<std::string>());
-      if (d != nullptr && d->kind == kind) return d;
+      if (fits(d)) return d;
     }
   }
-  return project.firstOfKind(kind);
+  if (const DatasetRef* d = project.firstOfKind(kind)) return d;
+  return alternative != nullptr ? project.firstOfKind(alternative) : nullptr;
 }
 
 }  // namespace
@@ -37,9 +42,11 @@ SetupStudyFiles setupStudyFiles(const Project& project, const std::string& proje
     files.modelId = m->id;
     files.modelPath = resolveDatasetPath(projectPath, *m);
   }
-  if (const DatasetRef* r = studyDataset(project, study, "dataset", dataset_kind::kCmmReport)) {
+  if (const DatasetRef* r =
+          studyDataset(project, study, "dataset", dataset_kind::kCmmReport, dataset_kind::kDmis)) {
     files.reportId = r->id;
     files.reportPath = resolveDatasetPath(projectPath, *r);
+    files.reportCsv = r->csv;
   }
   if (study != nullptr) {
     if (const auto it = study->find("method"); it != study->end() && it->is_string()) {

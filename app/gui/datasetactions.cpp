@@ -1,0 +1,96 @@
+#include "app/gui/datasetactions.h"
+
+#include <QAction>
+#include <QCoreApplication>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <exception>
+
+#include "core/project/project.h"
+#include "widgets/document/projectdocument.h"
+
+namespace metrofit {
+
+namespace {
+
+struct DatasetActionsText {
+  Q_DECLARE_TR_FUNCTIONS(metrofit::DatasetActions)
+};
+
+}  // namespace
+
+void addDatasetActions(QMenu* menu, ProjectDocument* document, const QString& id, QWidget* parent) {
+  QAction* rename = menu->addAction(DatasetActionsText::tr("&Rename dataset…"), parent,
+                                    [document, id, parent] { renameDatasetAsking(document, id, parent); });
+  rename->setObjectName(QStringLiteral("renameDataset"));
+  QAction* relink = menu->addAction(DatasetActionsText::tr("Re-&link to a moved file…"), parent,
+                                    [document, id, parent] { relinkDatasetAsking(document, id, parent); });
+  relink->setObjectName(QStringLiteral("relinkDataset"));
+  menu->addSeparator();
+  QAction* remove = menu->addAction(DatasetActionsText::tr("Re&move dataset"), parent,
+                                    [document, id, parent] { removeDatasetAsking(document, id, parent); });
+  remove->setObjectName(QStringLiteral("removeDataset"));
+}
+
+bool removeDatasetAsking(ProjectDocument* document, const QString& id, QWidget* parent) {
+  const QStringList references = document->datasetReferences(id);
+  QString text =
+      DatasetActionsText::tr("Remove the dataset “%1” from the project? The file itself stays where it is.")
+          .arg(id);
+  if (!references.isEmpty())
+    text +=
+        QLatin1Char('\n') + DatasetActionsText::tr("These study settings name it and are removed with it: %1")
+                                .arg(references.join(QStringLiteral(", ")));
+  if (QMessageBox::question(parent, DatasetActionsText::tr("Remove dataset"), text) != QMessageBox::Yes)
+    return false;
+  try {
+    document->removeDataset(id);
+  } catch (const std::exception& e) {
+    QMessageBox::critical(parent, DatasetActionsText::tr("Cannot remove the dataset"),
+                          QString::fromStdString(e.what()));
+    return false;
+  }
+  return true;
+}
+
+bool renameDatasetAsking(ProjectDocument* document, const QString& id, QWidget* parent) {
+  bool ok = false;
+  const QString newId = QInputDialog::getText(
+      parent, DatasetActionsText::tr("Rename dataset"),
+      DatasetActionsText::tr("New id of “%1” (study settings that name it follow):").arg(id),
+      QLineEdit::Normal, id, &ok);
+  if (!ok || newId.trimmed() == id) return false;
+  try {
+    document->renameDataset(id, newId);
+  } catch (const std::exception& e) {
+    QMessageBox::critical(parent, DatasetActionsText::tr("Cannot rename the dataset"),
+                          QString::fromStdString(e.what()));
+    return false;
+  }
+  return true;
+}
+
+bool relinkDatasetAsking(ProjectDocument* document, const QString& id, QWidget* parent) {
+  const DatasetRef* dataset = document->project().dataset(id.toStdString());
+  if (!dataset) return false;
+  const QString current = document->datasetPath(*dataset);
+  QString start = QFileInfo(current).path();
+  if (!QFileInfo(start).isDir()) start = QFileInfo(document->projectPathForDatasets()).path();
+  const QString file =
+      QFileDialog::getOpenFileName(parent, DatasetActionsText::tr("Re-link dataset “%1”").arg(id), start,
+                                   DatasetActionsText::tr("All files (*)"));
+  if (file.isEmpty()) return false;
+  try {
+    document->relinkDataset(id, file);
+  } catch (const std::exception& e) {
+    QMessageBox::critical(parent, DatasetActionsText::tr("Cannot re-link the dataset"),
+                          QString::fromStdString(e.what()));
+    return false;
+  }
+  return true;
+}
+
+}  // namespace metrofit

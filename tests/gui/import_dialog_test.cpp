@@ -1,0 +1,559 @@
+// The import dialog (widgets/importer/importdialog.h) and the dataset edits of the document
+// (ProjectDocument::addDataset / removeDataset / renameDataset / relinkDataset), offscreen:
+//   * a ';'-separated thermal log with decimal commas and German column names, written here from a
+//     known formula (not by our writer), imported through the dialog with a column mapping; the saved
+//     DatasetRef keeps dialect and mapping; the thermal page reads it and a linear model fitted the
+//     way the page's model view does recovers the formula's coefficient;
+//   * a circular test exported the German way reads exactly as the original in the kinematics study
+//     and the diagnosis;
+//   * undo / redo of the import; remove, rename (studies follow, duplicates refused), re-link;
+//   * a bad file: a one-line message naming file, line and field, and the Import button disabled;
+//   * a file dropped on the main window opens the dialog and is imported (one undo step).
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFile>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QTreeWidgetItemIterator>
+#include <QUndoStack>
+#include <QUrl>
+#include <cmath>
+#include <functional>
+
+#include "app/gui/datasetactions.h"
+#include "app/gui/mainwindow.h"
+#include "app/gui/projectnavigator.h"
+#include "app/gui/thermalpage.h"
+#include "core/common/error.h"
+#include "core/kinematics/measured_path.h"
+#include "core/project/project.h"
+#include "core/thermal/thermal_data.h"
+#include "core/thermal/thermal_log.h"
+#include "core/thermal/thermal_model.h"
+#include "qtapp.h"
+#include "testsupport.h"
+#include "widgets/charts/thermalcomparison.h"
+#include "widgets/charts/thermalmodelview.h"
+#include "widgets/diagnose/diagnosisstudy.h"
+#include "widgets/document/projectdocument.h"
+#include "widgets/importer/importdialog.h"
+#include "widgets/kinematics/kinematicstudy.h"
+
+namespace metrofit {
+namespace {
+
+// The known formula: the spindle warms up as T(t) = 21 + 9 (1 - exp(-t / 1500 s)) °C and the
+// Z displacement follows it linearly, d = kSlope (T - 21) - 0.8 µm.
+constexpr double kSlope = 3.25;  // µm/°C
+constexpr int kRows = 120;
+constexpr int kStepS = 30;
+
+double temperature(int row) {
+  const double t = row * kStepS;
+  // Rounded to the 4 decimals the file carries, so that the file's displacement is exact.
+  return std::round((21.0 + 9.0 * (1.0 - std::exp(-t / 1500.0))) * 1e4) / 1e4;
+}
+
+double displacement(int row) {
+  return kSlope * (temperature(row) - 21.0) - 0.8;
+}
+
+QString decimalComma(double v, int decimals) {
+  return QString::number(v, 'f', decimals).replace(QLatin1Char('.'), QLatin1Char(','));
+}
+
+/// The log as a German spreadsheet exports it: a comment, ';' between fields, decimal commas.
+QByteArray germanLog() {
+  QByteArray text = "# Aufwärmversuch Spindel, Maschine 4\n";
+  text += "Zeit [s];Temp Spindel;Verlagerung Z\n";
+  for (int r = 0; r < kRows; ++r)
+    text += QStringLiteral("%1;%2;%3\n")
+                .arg(r * kStepS)
+                .arg(decimalComma(temperature(r), 4), decimalComma(displacement(r), 6))
+                .toUtf8();
+  return text;
+}
+
+void writeFile(const QString& path, const QByteArray& text) {
+  QFile f(path);
+  ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate)) << path.toStdString();
+  ASSERT_EQ(f.write(text), text.size());
+}
+
+QPushButton* importButton(ImportDialog& dialog) {
+  auto* box = dialog.findChild<QDialogButtonBox*>();
+  return box ? box->button(QDialogButtonBox::Ok) : nullptr;
+}
+
+class ImportDialogTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(dir_.isValid());
+    doc_.saveAs(dir_.filePath(QStringLiteral("shop.metrofit")));
+    logPath_ = dir_.filePath(QStringLiteral("data/aufwaermung.csv"));
+    ASSERT_TRUE(QDir(dir_.path()).mkpath(QStringLiteral("data")));
+    writeFile(logPath_, germanLog());
+  }
+
+  /// Imports the German log through the dialog as "spindel" and adds it to the document.
+  DatasetRef importGermanLog() {
+    ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+    dialog.setFile(logPath_);
+    dialog.setKind(QStringLiteral("thermal-log"));
+    dialog.setDelimiter(';');
+    dialog.setDecimal(',');
+    dialog.setRole(QStringLiteral("Zeit [s]"), QStringLiteral("time_s"));
+    dialog.setRole(QStringLiteral("Temp Spindel"), QStringLiteral("T1"));
+    dialog.setRole(QStringLiteral("Verlagerung Z"), QStringLiteral("disp_z_um"));
+    dialog.setDatasetId(QStringLiteral("spindel"));
+    EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+    QPushButton* ok = importButton(dialog);
+    EXPECT_TRUE(ok && ok->isEnabled());
+    if (ok) ok->click();
+    EXPECT_EQ(dialog.result(), QDialog::Accepted);
+    doc_.addDataset(dialog.dataset());
+    return dialog.dataset();
+  }
+
+  QTemporaryDir dir_;
+  ProjectDocument doc_;
+  QString logPath_;
+};
+
+TEST_F(ImportDialogTest, GuessesKindDialectAndTimeColumnOfAGermanLog) {
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(logPath_);
+  EXPECT_EQ(dialog.kind(), QStringLiteral("thermal-log"));
+  // The time column names its unit: read as time_s without being asked.
+  EXPECT_EQ(dialog.role(QStringLiteral("Zeit [s]")), QStringLiteral("time_s"));
+  const QString found = dialog.findChild<QLabel*>(QStringLiteral("importDetected"))->text();
+  EXPECT_TRUE(found.contains(QStringLiteral("semicolon"))) << found.toStdString();
+  EXPECT_TRUE(found.contains(QStringLiteral("line 2"))) << found.toStdString();
+  EXPECT_TRUE(found.contains(QStringLiteral("comment lines: 1"))) << found.toStdString();
+  EXPECT_TRUE(found.contains(QStringLiteral("data rows: %1").arg(kRows))) << found.toStdString();
+  auto* preview = dialog.findChild<QTableWidget*>(QStringLiteral("importPreview"));
+  ASSERT_NE(preview, nullptr);
+  EXPECT_EQ(preview->rowCount(), ImportDialog::kPreviewRows);
+  EXPECT_EQ(preview->columnCount(), 3);
+  EXPECT_EQ(preview->item(1, 1)->text(), decimalComma(temperature(1), 4));
+  EXPECT_TRUE(preview->horizontalHeaderItem(0)->text().contains(QStringLiteral("→ time_s")));
+  auto* mapping = dialog.findChild<QTableWidget*>(QStringLiteral("importMapping"));
+  ASSERT_NE(mapping, nullptr);
+  EXPECT_EQ(mapping->rowCount(), 3);
+  // Auto-detected dialect, nothing in the mapping but the time column.
+  const CsvReadOptions csv = dialog.csvOptions();
+  EXPECT_EQ(csv.dialect, CsvDialect{});
+  ASSERT_EQ(csv.columnMap.size(), 1u);
+  EXPECT_EQ(csv.columnMap[0], (std::pair<std::string, std::string>{"time_s", "Zeit [s]"}));
+  EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.dataset().id, "aufwaermung");
+
+  // Other kinds are guessed from the extension or the content.
+  EXPECT_EQ(ImportDialog::guessKind(QStringLiteral("m.json"), "{}"), QStringLiteral("setup-model"));
+  EXPECT_EQ(ImportDialog::guessKind(QStringLiteral("r.txt"), "FILNAM/'x',4.0\nDMISMN/'x',4.0\n"),
+            QStringLiteral("dmis"));
+  EXPECT_EQ(ImportDialog::guessKind(QStringLiteral("c.csv"), "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n"),
+            QStringLiteral("circular-test"));
+  EXPECT_EQ(ImportDialog::guessKind(QStringLiteral("p.csv"), "id,qx,qy,qz,px,py,pz\n"),
+            QStringLiteral("probe-points"));
+}
+
+TEST_F(ImportDialogTest, ImportedLogKeepsDialectAndMappingAndFitsTheKnownFormula) {
+  const DatasetRef added = importGermanLog();
+  ASSERT_EQ(doc_.project().datasets.size(), 1u);
+  const DatasetRef d = doc_.project().datasets[0];  // a copy: saving replaces the list
+  EXPECT_EQ(d, added);
+  EXPECT_EQ(d.id, "spindel");
+  EXPECT_EQ(d.kind, dataset_kind::kThermalLog);
+  EXPECT_EQ(d.path, "data/aufwaermung.csv");  // the file itself, relative to the project
+  EXPECT_EQ(d.csv.dialect.delimiter, ';');
+  EXPECT_EQ(d.csv.dialect.decimal, ',');
+  const std::vector<std::pair<std::string, std::string>> mapping{
+      {"T1", "Temp Spindel"}, {"disp_z_um", "Verlagerung Z"}, {"time_s", "Zeit [s]"}};  // sorted by role
+  EXPECT_EQ(d.csv.columnMap, mapping);
+  EXPECT_EQ(doc_.undoStack()->undoText(), QStringLiteral("Import dataset spindel"));
+
+  // Saved and read back: the project keeps the mapping (no converted copy next to it).
+  doc_.save();
+  const Project saved = loadProject(QFile::encodeName(doc_.fileName()).toStdString());
+  ASSERT_EQ(saved.datasets.size(), 1u);
+  EXPECT_EQ(saved.datasets[0].csv, d.csv);
+  EXPECT_EQ(QDir(dir_.path()).entryList(QDir::Files).size(), 1);  // shop.metrofit only
+
+  // The navigator lists it under the thermal study.
+  ProjectNavigator navigator(&doc_);
+  bool listed = false;
+  for (QTreeWidgetItemIterator it(&navigator); *it; ++it)
+    listed = listed || (*it)->data(0, ProjectNavigator::DatasetRole).toString() == QStringLiteral("spindel");
+  EXPECT_TRUE(listed);
+
+  // The thermal page reads it with its dialect and mapping and picks the mapped target and input.
+  ThermalPage page(&doc_);
+  EXPECT_EQ(page.currentDataset(), QStringLiteral("spindel"));
+  EXPECT_TRUE(page.errorMessage().isEmpty()) << page.errorMessage().toStdString();
+  const ThermalModelSettings settings = page.modelView()->settings();
+  EXPECT_EQ(settings.target, "disp_z_um");
+  EXPECT_EQ(settings.inputs, std::vector<std::string>{"T1"});
+
+  // The linear model fitted as the model view fits it (thermal::fitAndEvaluate, the page's train
+  // fraction) gives back the formula's slope.
+  const ThermalLog log = readThermalLog(doc_.datasetPath(d).toStdString(), 3, d.csv);
+  ASSERT_EQ(log.rows(), static_cast<std::size_t>(kRows));
+  EXPECT_NEAR(log.timeMin.back(), (kRows - 1) * kStepS / 60.0, 1e-12);
+  EXPECT_NEAR(log.channel("T1").values[5], temperature(5), 1e-12);
+  EXPECT_NEAR(log.channel("disp_z_um").values[7], displacement(7), 1e-12);
+  thermal::ThermalFitOptions options;
+  options.model = thermal::ThermalModelKind::Linear;
+  const thermal::ThermalEvaluation fit = thermal::fitAndEvaluate(
+      thermal::selectThermalSeries(log, settings.target, settings.inputs), settings.trainFraction, options);
+  const thermal::LagRegression& regression = fit.training.model.regression;
+  ASSERT_EQ(regression.coef.size(), 1u);
+  EXPECT_NEAR(regression.coef[0], kSlope, 1e-6);  // µm/°C
+  EXPECT_LT(fit.heldout.rmse, 1e-5);              // µm
+  ASSERT_EQ(fit.predicted.size(), static_cast<std::size_t>(kRows));
+  EXPECT_NEAR(fit.predicted.back(), displacement(kRows - 1), 1e-5);
+
+  // Undo removes the dataset (and the page sees it gone), redo brings it back unchanged.
+  doc_.undoStack()->undo();
+  EXPECT_TRUE(doc_.project().datasets.empty());
+  EXPECT_TRUE(page.currentDataset().isEmpty());
+  doc_.undoStack()->redo();
+  ASSERT_EQ(doc_.project().datasets.size(), 1u);
+  EXPECT_EQ(doc_.project().datasets[0], added);
+  EXPECT_EQ(page.currentDataset(), QStringLiteral("spindel"));
+}
+
+TEST_F(ImportDialogTest, BadFileShowsOneLineMessageAndKeepsImportDisabled) {
+  const QString bad = dir_.filePath(QStringLiteral("kaputt.csv"));
+  writeFile(bad, "Zeit [s];Temp Spindel;Verlagerung Z\n0;21,0;0,1\n30;abc;0,2\n60;21,4;0,3\n");
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(bad);
+  EXPECT_FALSE(dialog.canImport());
+  const QString problem = dialog.problem();
+  EXPECT_FALSE(problem.contains(QLatin1Char('\n'))) << problem.toStdString();
+  EXPECT_TRUE(problem.contains(QStringLiteral("kaputt.csv:3:"))) << problem.toStdString();
+  EXPECT_TRUE(problem.contains(QStringLiteral("Temp Spindel"))) << problem.toStdString();
+  EXPECT_TRUE(problem.contains(QStringLiteral("abc"))) << problem.toStdString();
+  EXPECT_EQ(dialog.findChild<QLabel*>(QStringLiteral("importProblem"))->text(), problem);
+  QPushButton* ok = importButton(dialog);
+  ASSERT_NE(ok, nullptr);
+  EXPECT_FALSE(ok->isEnabled());
+  ok->click();  // a disabled button does nothing
+  EXPECT_NE(dialog.result(), QDialog::Accepted);
+
+  // A good file read as the wrong kind or with the wrong decimal mark is refused the same way.
+  dialog.setFile(logPath_);
+  EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  dialog.setKind(QStringLiteral("circular-test"));
+  EXPECT_FALSE(dialog.canImport());
+  EXPECT_TRUE(dialog.problem().contains(QStringLiteral("x_cmd_mm"))) << dialog.problem().toStdString();
+  EXPECT_FALSE(importButton(dialog)->isEnabled());
+  dialog.setKind(QStringLiteral("thermal-log"));
+  dialog.setDecimal('.');
+  EXPECT_FALSE(dialog.canImport());
+  EXPECT_TRUE(dialog.problem().contains(QStringLiteral("aufwaermung.csv:3:")))
+      << dialog.problem().toStdString();
+  dialog.setDecimal(0);
+  EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  // A mapped column the file does not have (a role given twice) and a duplicate id are refused.
+  dialog.setRole(QStringLiteral("Temp Spindel"), QStringLiteral("time_s"));
+  EXPECT_FALSE(dialog.canImport());
+  dialog.setRole(QStringLiteral("Temp Spindel"), QString());
+  EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  importGermanLog();
+  ImportDialog again(doc_.project(), doc_.projectPathForDatasets());
+  again.setFile(logPath_);
+  again.setDatasetId(QStringLiteral("spindel"));
+  EXPECT_FALSE(again.canImport());
+  EXPECT_TRUE(again.problem().contains(QStringLiteral("already has a dataset 'spindel'")))
+      << again.problem().toStdString();
+  again.setDatasetId(QString());
+  EXPECT_TRUE(again.canImport());
+  EXPECT_EQ(again.dataset().id, "aufwaermung");
+  // Unreadable file.
+  again.setFile(dir_.filePath(QStringLiteral("missing.csv")));
+  EXPECT_FALSE(again.canImport());
+  EXPECT_TRUE(again.problem().contains(QStringLiteral("missing.csv"))) << again.problem().toStdString();
+}
+
+TEST_F(ImportDialogTest, RemoveRenameAndRelinkAreUndoable) {
+  importGermanLog();
+  doc_.setStudyValue(QStringLiteral("thermal"), QStringLiteral("/dataset"), "spindel", QStringLiteral("x"));
+  doc_.setStudyValue(QStringLiteral("diagnosis"), QStringLiteral("/thermal/dataset"), "spindel",
+                     QStringLiteral("x"));
+  const Project before = doc_.project();
+  EXPECT_EQ(doc_.datasetReferences(QStringLiteral("spindel")),
+            (QStringList{QStringLiteral("studies.diagnosis.thermal.dataset"),
+                         QStringLiteral("studies.thermal.dataset")}));
+
+  // Rename: the studies follow; one undo step back.
+  doc_.renameDataset(QStringLiteral("spindel"), QStringLiteral("spindle_warmup"));
+  EXPECT_EQ(doc_.project().datasets[0].id, "spindle_warmup");
+  EXPECT_EQ(doc_.studyValue(QStringLiteral("thermal"), QStringLiteral("/dataset")), "spindle_warmup");
+  EXPECT_EQ(doc_.studyValue(QStringLiteral("diagnosis"), QStringLiteral("/thermal/dataset")),
+            "spindle_warmup");
+  doc_.undoStack()->undo();
+  EXPECT_EQ(doc_.project(), before);
+  doc_.undoStack()->redo();
+  EXPECT_EQ(doc_.project().datasets[0].id, "spindle_warmup");
+  doc_.undoStack()->undo();
+
+  // A rename to an id the project has, or to nothing, is refused with a message; nothing changes.
+  DatasetRef other = doc_.project().datasets[0];
+  other.id = "other";
+  doc_.addDataset(other);
+  const int steps = doc_.undoStack()->count();
+  try {
+    doc_.renameDataset(QStringLiteral("spindel"), QStringLiteral("other"));
+    ADD_FAILURE() << "a duplicate id was accepted";
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("already has a dataset 'other'"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(doc_.renameDataset(QStringLiteral("spindel"), QStringLiteral("  ")), ValidationError);
+  EXPECT_THROW(doc_.renameDataset(QStringLiteral("nope"), QStringLiteral("x")), ValidationError);
+  EXPECT_EQ(doc_.undoStack()->count(), steps);
+  doc_.undoStack()->undo();  // the second dataset
+  EXPECT_EQ(doc_.project(), before);
+
+  // Remove: the dataset and the settings naming it go in one step; undo restores both.
+  doc_.removeDataset(QStringLiteral("spindel"));
+  EXPECT_TRUE(doc_.project().datasets.empty());
+  EXPECT_TRUE(doc_.studyValue(QStringLiteral("thermal"), QStringLiteral("/dataset")).is_null());
+  EXPECT_TRUE(doc_.datasetReferences(QStringLiteral("spindel")).isEmpty());
+  EXPECT_EQ(doc_.undoStack()->undoText(), QStringLiteral("Remove dataset spindel"));
+  doc_.undoStack()->undo();
+  EXPECT_EQ(doc_.project(), before);
+  doc_.undoStack()->redo();
+  EXPECT_TRUE(doc_.project().datasets.empty());
+  doc_.undoStack()->undo();
+
+  // Re-link: the file moved; the dataset points at it again, relative to the project.
+  const QString moved = dir_.filePath(QStringLiteral("archive/log.csv"));
+  ASSERT_TRUE(QDir(dir_.path()).mkpath(QStringLiteral("archive")));
+  ASSERT_TRUE(QFile::rename(logPath_, moved));
+  EXPECT_FALSE(QFile::exists(doc_.datasetPath(doc_.project().datasets[0])));
+  // A file that cannot be read as a thermal log with this mapping is refused; nothing changes.
+  const QString wrong = dir_.filePath(QStringLiteral("archive/other.csv"));
+  writeFile(wrong, "a;b\n1;2\n");
+  try {
+    doc_.relinkDataset(QStringLiteral("spindel"), wrong);
+    ADD_FAILURE() << "a file without the mapped columns was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("other.csv"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(doc_.project(), before);
+  doc_.relinkDataset(QStringLiteral("spindel"), moved);
+  EXPECT_EQ(doc_.project().datasets[0].path, "archive/log.csv");
+  EXPECT_EQ(doc_.project().datasets[0].csv, before.datasets[0].csv);
+  EXPECT_TRUE(QFile::exists(doc_.datasetPath(doc_.project().datasets[0])));
+  EXPECT_EQ(doc_.undoStack()->undoText(), QStringLiteral("Re-link dataset spindel"));
+  doc_.undoStack()->undo();
+  EXPECT_EQ(doc_.project(), before);
+  doc_.undoStack()->redo();
+  EXPECT_EQ(doc_.project().datasets[0].path, "archive/log.csv");
+}
+
+TEST_F(ImportDialogTest, FilesThatAreNotCsvAreImportedWithoutDialectOrMapping) {
+  const QString source = QString::fromStdString(test::sourceDir().string());
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(source + QStringLiteral("/fuzz/corpus/hole_table/excerpt.txt"));
+  EXPECT_EQ(dialog.kind(), QStringLiteral("hole-table"));
+  EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_FALSE(dialog.findChild<QComboBox*>(QStringLiteral("importDelimiter"))->isEnabled());
+  EXPECT_FALSE(dialog.findChild<QTableWidget*>(QStringLiteral("importMapping"))->isEnabled());
+  EXPECT_EQ(dialog.dataset().kind, dataset_kind::kHoleTable);
+  EXPECT_EQ(dialog.dataset().csv, CsvReadOptions{});
+  // The preview shows the file's lines as they are.
+  auto* preview = dialog.findChild<QTableWidget*>(QStringLiteral("importPreview"));
+  EXPECT_EQ(preview->columnCount(), 1);
+  EXPECT_EQ(preview->item(0, 0)->text(), QStringLiteral("Plug Plate: 9001"));
+
+  dialog.setFile(source + QStringLiteral("/fuzz/corpus/dmis/part_17.dmo"));
+  EXPECT_EQ(dialog.kind(), QStringLiteral("dmis"));  // by its content: DMISMN
+  EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.dataset().kind, dataset_kind::kDmis);
+  // The same DMIS file read as a thermal log is refused.
+  dialog.setKind(QStringLiteral("thermal-log"));
+  EXPECT_FALSE(dialog.canImport());
+  EXPECT_FALSE(importButton(dialog)->isEnabled());
+}
+
+TEST_F(ImportDialogTest, MappedCircularTestIsReadAlikeByKinematicsAndDiagnosis) {
+  // The demo's circular test as a German export: ';', decimal commas, its own column names.
+  QFile demo(QString::fromStdString((test::sourceDir() / "resources/demo/data/circular_demo.csv").string()));
+  ASSERT_TRUE(demo.open(QIODevice::ReadOnly));
+  QByteArray german;
+  int rows = 0;
+  for (QByteArray line : demo.readAll().split('\n')) {
+    if (line.isEmpty() || line.startsWith('#')) {
+      german += line + '\n';
+    } else if (line.startsWith("x_cmd_mm")) {
+      german += "X soll [mm];Y soll [mm];X ist [mm];Y ist [mm]\n";
+    } else {
+      german += line.replace(',', ';').replace('.', ',') + '\n';
+      ++rows;
+    }
+  }
+  const QString file = dir_.filePath(QStringLiteral("kreisform.csv"));
+  writeFile(file, german);
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(file);
+  dialog.setKind(QStringLiteral("circular-test"));
+  EXPECT_FALSE(dialog.canImport());  // the readers' columns are not there yet
+  dialog.setRole(QStringLiteral("X soll [mm]"), QStringLiteral("x_cmd_mm"));
+  dialog.setRole(QStringLiteral("Y soll [mm]"), QStringLiteral("y_cmd_mm"));
+  dialog.setRole(QStringLiteral("X ist [mm]"), QStringLiteral("x_meas_mm"));
+  dialog.setRole(QStringLiteral("Y ist [mm]"), QStringLiteral("y_meas_mm"));
+  dialog.setDatasetId(QStringLiteral("kreis"));
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  doc_.addDataset(dialog.dataset());
+  ImportDialog original(doc_.project(), doc_.projectPathForDatasets());
+  original.setFile(demo.fileName());
+  EXPECT_EQ(original.kind(), QStringLiteral("circular-test"));
+  ASSERT_TRUE(original.canImport()) << original.problem().toStdString();
+  doc_.addDataset(original.dataset());
+
+  // The kinematics study reads both alike: the same identification to the last bit.
+  const auto resolve = [this](const DatasetRef& d) {
+    return QFile::encodeName(doc_.datasetPath(d)).toStdString();
+  };
+  const KinematicStudyData mapped = loadKinematicStudy(doc_.project(), resolve, "kreis");
+  const KinematicStudyData plain = loadKinematicStudy(doc_.project(), resolve, "circular_demo");
+  ASSERT_EQ(mapped.measured.size(), static_cast<std::size_t>(rows));
+  EXPECT_EQ(rows, 720);
+  EXPECT_EQ(mapped.measured.measured, plain.measured.measured);
+  EXPECT_EQ(mapped.identification.errors.originMm, plain.identification.errors.originMm);
+  EXPECT_EQ(mapped.identification.errors.xAxisAngleDeg, plain.identification.errors.xAxisAngleDeg);
+  // The simulated machine of the demo file's header: origin (0.004, -0.003) mm.
+  EXPECT_NEAR(mapped.identification.errors.originMm.x(), 0.004, 2e-4);
+  EXPECT_NEAR(mapped.identification.errors.originMm.y(), -0.003, 2e-4);
+
+  // The diagnosis reads the dataset with its dialect and mapping too.
+  doc_.setStudyValue(QStringLiteral("diagnosis"), QStringLiteral("/kinematic/dataset"), "kreis",
+                     QStringLiteral("x"));
+  const DiagnosisSettings s = diagnosisSettings(
+      doc_.project(), QFile::encodeName(doc_.fileName()).toStdString(), DiagnosisDomain::Kinematic);
+  EXPECT_EQ(s.csv, doc_.project().dataset("kreis")->csv);
+  EXPECT_EQ(readMeasuredPath(s.datasetPath, s.csv).measured, plain.measured.measured);
+}
+
+/// Runs `handle` on the next modal dialog of type T as soon as it is shown.
+template <typename T>
+void onNextModal(QObject* owner, std::function<void(T*)> handle) {
+  auto* timer = new QTimer(owner);
+  timer->setInterval(20);
+  QObject::connect(timer, &QTimer::timeout, [timer, handle] {
+    if (auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget())) {
+      timer->stop();
+      timer->deleteLater();
+      handle(dialog);
+    }
+  });
+  timer->start();
+}
+
+TEST_F(ImportDialogTest, ContextMenuRenamesAndRemovesAfterAsking) {
+  importGermanLog();
+  doc_.setStudyValue(QStringLiteral("thermal"), QStringLiteral("/dataset"), "spindel", QStringLiteral("x"));
+  QWidget parent;
+  QMenu menu;
+  addDatasetActions(&menu, &doc_, QStringLiteral("spindel"), &parent);
+  QStringList names;
+  for (QAction* a : menu.actions())
+    if (!a->isSeparator()) names << a->objectName();
+  EXPECT_EQ(names, (QStringList{QStringLiteral("renameDataset"), QStringLiteral("relinkDataset"),
+                                QStringLiteral("removeDataset")}));
+
+  // Rename: the new id typed into the question; the study follows.
+  onNextModal<QInputDialog>(&parent, [](QInputDialog* d) {
+    d->setTextValue(QStringLiteral("warmup"));
+    d->accept();
+  });
+  EXPECT_TRUE(renameDatasetAsking(&doc_, QStringLiteral("spindel"), &parent));
+  EXPECT_EQ(doc_.project().datasets[0].id, "warmup");
+  EXPECT_EQ(doc_.studyValue(QStringLiteral("thermal"), QStringLiteral("/dataset")), "warmup");
+
+  // Remove: the question names the setting that goes with it; "No" keeps everything.
+  QString question;
+  onNextModal<QMessageBox>(&parent, [&question](QMessageBox* box) {
+    question = box->text();
+    box->button(QMessageBox::No)->click();
+  });
+  EXPECT_FALSE(removeDatasetAsking(&doc_, QStringLiteral("warmup"), &parent));
+  EXPECT_TRUE(question.contains(QStringLiteral("studies.thermal.dataset"))) << question.toStdString();
+  EXPECT_EQ(doc_.project().datasets.size(), 1u);
+  onNextModal<QMessageBox>(&parent, [](QMessageBox* box) { box->button(QMessageBox::Yes)->click(); });
+  EXPECT_TRUE(removeDatasetAsking(&doc_, QStringLiteral("warmup"), &parent));
+  EXPECT_TRUE(doc_.project().datasets.empty());
+  doc_.undoStack()->undo();
+  EXPECT_EQ(doc_.project().datasets[0].id, "warmup");
+}
+
+TEST_F(ImportDialogTest, DroppedFileOpensTheDialogAndIsImportedUndoably) {
+  MainWindow window;
+  window.document()->saveAs(dir_.filePath(QStringLiteral("window.metrofit")));
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  // File › Import data… is there with Ctrl+I.
+  auto* action = window.findChild<QAction*>(QStringLiteral("importData"));
+  ASSERT_NE(action, nullptr);
+  EXPECT_EQ(action->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_I));
+  EXPECT_TRUE(window.acceptDrops());
+
+  QMimeData mime;
+  mime.setUrls({QUrl::fromLocalFile(logPath_)});
+  QDragEnterEvent enter(QPoint(20, 20), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(&window, &enter);
+  EXPECT_TRUE(enter.isAccepted());
+  // The dialog opens after the drop; map the columns in it and press Import.
+  QString shownFile;
+  auto* timer = new QTimer(&window);
+  timer->setInterval(20);
+  QObject::connect(timer, &QTimer::timeout, [timer, &shownFile] {
+    auto* dialog = qobject_cast<ImportDialog*>(QApplication::activeModalWidget());
+    if (!dialog) return;
+    timer->stop();
+    shownFile = dialog->file();
+    dialog->setRole(QStringLiteral("Temp Spindel"), QStringLiteral("T1"));
+    dialog->setRole(QStringLiteral("Verlagerung Z"), QStringLiteral("disp_z_um"));
+    dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+  });
+  timer->start();
+  QDropEvent drop(QPointF(20, 20), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(&window, &drop);
+  ASSERT_TRUE(QTest::qWaitFor([&] { return !window.document()->project().datasets.empty(); }, 10000));
+  EXPECT_EQ(QFileInfo(shownFile), QFileInfo(logPath_));
+  const DatasetRef d = window.document()->project().datasets[0];
+  EXPECT_EQ(d.id, "aufwaermung");
+  EXPECT_EQ(d.path, "data/aufwaermung.csv");
+  const std::vector<std::pair<std::string, std::string>> mapping{
+      {"T1", "Temp Spindel"}, {"disp_z_um", "Verlagerung Z"}, {"time_s", "Zeit [s]"}};  // sorted by role
+  EXPECT_EQ(d.csv.columnMap, mapping);
+  EXPECT_EQ(d.csv.dialect, CsvDialect{});          // detected when read, as the CLI's default
+  EXPECT_EQ(window.currentPage(), Page::Thermal);  // shown where it is used
+  EXPECT_EQ(window.thermalPage()->currentDataset(), QStringLiteral("aufwaermung"));
+  EXPECT_TRUE(window.thermalPage()->errorMessage().isEmpty())
+      << window.thermalPage()->errorMessage().toStdString();
+  window.document()->undoStack()->undo();
+  EXPECT_TRUE(window.document()->project().datasets.empty());
+  window.document()->undoStack()->setClean();
+}
+
+}  // namespace
+}  // namespace metrofit

@@ -1,0 +1,568 @@
+#include "widgets/importer/importdialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <exception>
+#include <string_view>
+#include <utility>
+
+#include "core/io/file_io.h"
+#include "core/matching/hole_table.h"
+#include "core/project/datasets.h"
+#include "core/setup/report.h"
+#include "widgets/document/studyinfo.h"
+
+namespace metrofit {
+
+namespace {
+
+/// Files larger than this are not imported (the readers' limit, core/project/datasets.cpp).
+constexpr qint64 kMaxFileBytes = qint64{256} << 20;
+/// Lines shown for a file that is not read as CSV.
+constexpr int kRawPreviewLines = 40;
+
+enum MappingColumn { MapFileColumn, MapFirstValue, MapRole, MapColumnCount };
+
+QString projectKind(const QString& cliKind) {
+  QString k = cliKind;
+  return k.replace(QLatin1Char('-'), QLatin1Char('_'));
+}
+
+QString delimiterText(char c) {
+  switch (c) {
+    case ',':
+      return ImportDialog::tr("comma ( , )");
+    case ';':
+      return ImportDialog::tr("semicolon ( ; )");
+    case '\t':
+      return ImportDialog::tr("tab");
+    default:
+      return ImportDialog::tr("detect");
+  }
+}
+
+QString decimalText(char c) {
+  switch (c) {
+    case '.':
+      return ImportDialog::tr("point ( . )");
+    case ',':
+      return ImportDialog::tr("comma ( , )");
+    default:
+      return ImportDialog::tr("detect");
+  }
+}
+
+/// The physical line (1-based) of the header and the number of '#' comment lines before it.
+std::pair<long, int> headerLine(const std::string& text) {
+  long line = 0;
+  int comments = 0;
+  std::size_t pos = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+  while (pos < text.size()) {
+    ++line;
+    const std::size_t nl = text.find('\n', pos);
+    std::string_view l(text.data() + pos, (nl == std::string::npos ? text.size() : nl) - pos);
+    pos = nl == std::string::npos ? text.size() : nl + 1;
+    const auto first = l.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos) continue;
+    if (l[first] == '#') {
+      ++comments;
+      continue;
+    }
+    return {line, comments};
+  }
+  return {0, comments};
+}
+
+/// What a role means to the readers (the combo box items' tooltips).
+QString roleDescription(const QString& role) {
+  static const QMap<QString, const char*> text{
+      {QStringLiteral("time_s"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "time in s, strictly increasing")},
+      {QStringLiteral("time_min"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "time in min")},
+      {QStringLiteral("time_h"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "time in h")},
+      {QStringLiteral("disp_x_um"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "displacement in X in µm (a target)")},
+      {QStringLiteral("disp_y_um"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "displacement in Y in µm (a target)")},
+      {QStringLiteral("disp_z_um"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "displacement in Z in µm (a target)")},
+      {QStringLiteral("T_amb"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "ambient temperature in °C")},
+      {QStringLiteral("id"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "point id")},
+      {QStringLiteral("surface"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "surface name")},
+      {QStringLiteral("qx"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal point in mm")},
+      {QStringLiteral("qy"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal point in mm")},
+      {QStringLiteral("qz"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal point in mm")},
+      {QStringLiteral("nx"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal unit normal")},
+      {QStringLiteral("ny"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal unit normal")},
+      {QStringLiteral("nz"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal unit normal")},
+      {QStringLiteral("px"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured point in mm")},
+      {QStringLiteral("py"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured point in mm")},
+      {QStringLiteral("pz"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured point in mm")},
+      {QStringLiteral("x_cmd_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "commanded coordinate in mm")},
+      {QStringLiteral("y_cmd_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "commanded coordinate in mm")},
+      {QStringLiteral("x_meas_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured coordinate in mm")},
+      {QStringLiteral("y_meas_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured coordinate in mm")},
+      {QStringLiteral("part"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "part number")},
+      {QStringLiteral("dimension"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "dimension id of the setup model")},
+      {QStringLiteral("nominal_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal value in mm")},
+      {QStringLiteral("measured_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured value in mm")},
+      {QStringLiteral("lower_tol_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "lower tolerance in mm")},
+      {QStringLiteral("upper_tol_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "upper tolerance in mm")},
+  };
+  if (role.size() == 2 && role.startsWith(QLatin1Char('T')) && role[1].isDigit())
+    return ImportDialog::tr("temperature in °C (an input)");
+  const auto it = text.find(role);
+  return it == text.end() ? QString() : ImportDialog::tr(it.value());
+}
+
+}  // namespace
+
+ImportDialog::ImportDialog(const Project& project, const QString& projectPath, QWidget* parent)
+    : QDialog(parent),
+      project_(project),
+      projectPath_(projectPath),
+      fileEdit_(new QLineEdit(this)),
+      kind_(new QComboBox(this)),
+      id_(new QLineEdit(this)),
+      delimiter_(new QComboBox(this)),
+      decimal_(new QComboBox(this)),
+      detected_(new QLabel(this)),
+      mapping_(new QTableWidget(this)),
+      preview_(new QTableWidget(this)),
+      problemLabel_(new QLabel(this)),
+      buttons_(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this)) {
+  setObjectName(QStringLiteral("importDialog"));
+  setWindowTitle(tr("Import data"));
+  fileEdit_->setObjectName(QStringLiteral("importFile"));
+  fileEdit_->setReadOnly(true);
+  kind_->setObjectName(QStringLiteral("importKind"));
+  id_->setObjectName(QStringLiteral("importId"));
+  delimiter_->setObjectName(QStringLiteral("importDelimiter"));
+  decimal_->setObjectName(QStringLiteral("importDecimal"));
+  detected_->setObjectName(QStringLiteral("importDetected"));
+  detected_->setWordWrap(true);
+  detected_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  mapping_->setObjectName(QStringLiteral("importMapping"));
+  preview_->setObjectName(QStringLiteral("importPreview"));
+  problemLabel_->setObjectName(QStringLiteral("importProblem"));
+  problemLabel_->setWordWrap(true);
+  problemLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  problemLabel_->setStyleSheet(QStringLiteral("color: #b00020;"));
+  buttons_->button(QDialogButtonBox::Ok)->setText(tr("&Import"));
+  buttons_->button(QDialogButtonBox::Cancel)->setText(tr("Cancel"));
+
+  for (const std::string& name : datasetKindNames()) {
+    const QString cli = QString::fromStdString(name);
+    kind_->addItem(datasetKindTitle(projectKind(cli)), cli);
+  }
+  for (char c : {char{0}, ',', ';', '\t'}) delimiter_->addItem(delimiterText(c), static_cast<int>(c));
+  for (char c : {char{0}, '.', ','}) decimal_->addItem(decimalText(c), static_cast<int>(c));
+
+  auto* browse = new QPushButton(tr("&Browse…"), this);
+  auto* fileRow = new QHBoxLayout;
+  fileRow->addWidget(fileEdit_, 1);
+  fileRow->addWidget(browse);
+  auto* form = new QFormLayout;
+  auto* fileLabel = new QLabel(tr("&File:"), this);
+  fileLabel->setBuddy(browse);
+  form->addRow(fileLabel, fileRow);
+  form->addRow(tr("&Kind:"), kind_);
+  form->addRow(tr("&Id:"), id_);
+
+  auto* dialect = new QGroupBox(tr("How the file is read"), this);
+  auto* dialectForm = new QFormLayout(dialect);
+  dialectForm->addRow(tr("&Delimiter:"), delimiter_);
+  dialectForm->addRow(tr("Decimal &mark:"), decimal_);
+  dialectForm->addRow(tr("Found:"), detected_);
+
+  mapping_->setColumnCount(MapColumnCount);
+  mapping_->setHorizontalHeaderLabels({tr("Column in the file"), tr("First value"), tr("Read as")});
+  mapping_->verticalHeader()->hide();
+  mapping_->setSelectionMode(QAbstractItemView::NoSelection);
+  mapping_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  mapping_->horizontalHeader()->setSectionResizeMode(MapFileColumn, QHeaderView::ResizeToContents);
+  mapping_->horizontalHeader()->setSectionResizeMode(MapFirstValue, QHeaderView::ResizeToContents);
+  mapping_->horizontalHeader()->setSectionResizeMode(MapRole, QHeaderView::Stretch);
+  preview_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  preview_->setAlternatingRowColors(true);
+  preview_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+
+  auto* mappingBox = new QGroupBox(tr("Columns"), this);
+  auto* mappingLayout = new QVBoxLayout(mappingBox);
+  auto* mappingHint = new QLabel(
+      tr("Give a column the name the readers look for (time_s, disp_z_um, qx, x_cmd_mm, …); empty: "
+         "the name in the file. The project stores this mapping, not a converted copy."),
+      mappingBox);
+  mappingHint->setWordWrap(true);
+  mappingLayout->addWidget(mappingHint);
+  mappingLayout->addWidget(mapping_, 1);
+  auto* previewBox = new QGroupBox(tr("Preview (first %1 rows)").arg(kPreviewRows), this);
+  auto* previewLayout = new QVBoxLayout(previewBox);
+  previewLayout->addWidget(preview_);
+  auto* splitter = new QSplitter(Qt::Horizontal, this);
+  splitter->addWidget(mappingBox);
+  splitter->addWidget(previewBox);
+  splitter->setStretchFactor(0, 2);
+  splitter->setStretchFactor(1, 3);
+  splitter->setChildrenCollapsible(false);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(form);
+  layout->addWidget(dialect);
+  layout->addWidget(splitter, 1);
+  layout->addWidget(problemLabel_);
+  layout->addWidget(buttons_);
+  resize(1000, 640);
+
+  connect(browse, &QPushButton::clicked, this, &ImportDialog::browse);
+  connect(buttons_, &QDialogButtonBox::accepted, this, [this] {
+    if (canImport()) accept();
+  });
+  connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  connect(kind_, &QComboBox::currentIndexChanged, this, [this] {
+    if (updating_) return;
+    rebuildMapping(header_);  // the role suggestions are the kind's
+    guessRoles();
+    revalidate();
+  });
+  connect(delimiter_, &QComboBox::currentIndexChanged, this, [this] {
+    if (!updating_) revalidate();
+  });
+  connect(decimal_, &QComboBox::currentIndexChanged, this, [this] {
+    if (!updating_) revalidate();
+  });
+  connect(id_, &QLineEdit::textChanged, this, [this] {
+    if (!updating_) revalidate();
+  });
+  revalidate();
+}
+
+QString ImportDialog::guessKind(const QString& path, const QByteArray& head) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  const std::string text = head.toStdString();
+  if (suffix == QLatin1String("json")) return QStringLiteral("setup-model");
+  if (suffix == QLatin1String("dmi") || suffix == QLatin1String("dms") || suffix == QLatin1String("dmis") ||
+      setup::looksLikeDmis(text))
+    return QStringLiteral("dmis");
+  if (looksLikeHoleTable(text)) return QStringLiteral("hole-table");
+  // A CSV file: by its column names.
+  const auto [line, comments] = headerLine(text);
+  (void)comments;
+  QString header;
+  if (line > 0) {
+    const QStringList lines = QString::fromUtf8(head).split(QLatin1Char('\n'));
+    if (line - 1 < lines.size()) header = lines[static_cast<int>(line - 1)].toLower();
+  }
+  const auto has = [&header](const char* name) { return header.contains(QLatin1String(name)); };
+  if (has("nominal") && has("measured")) return QStringLiteral("cmm-report");
+  if (has("x_cmd") || has("x_meas")) return QStringLiteral("circular-test");
+  if (has("qx") && has("px")) return QStringLiteral("probe-points");
+  if (has("time") || has("zeit") || has("czas") || has("temp") || has("disp"))
+    return QStringLiteral("thermal-log");
+  return QStringLiteral("feature-series");
+}
+
+QStringList ImportDialog::rolesForKind(const QString& kind) {
+  if (kind == QLatin1String("thermal-log"))
+    return {QStringLiteral("time_s"),    QStringLiteral("time_min"),  QStringLiteral("time_h"),
+            QStringLiteral("disp_x_um"), QStringLiteral("disp_y_um"), QStringLiteral("disp_z_um"),
+            QStringLiteral("T1"),        QStringLiteral("T2"),        QStringLiteral("T3"),
+            QStringLiteral("T4"),        QStringLiteral("T5"),        QStringLiteral("T6"),
+            QStringLiteral("T_amb")};
+  if (kind == QLatin1String("probe-points"))
+    return {QStringLiteral("id"), QStringLiteral("surface"), QStringLiteral("qx"), QStringLiteral("qy"),
+            QStringLiteral("qz"), QStringLiteral("px"),      QStringLiteral("py"), QStringLiteral("pz"),
+            QStringLiteral("nx"), QStringLiteral("ny"),      QStringLiteral("nz")};
+  if (kind == QLatin1String("circular-test"))
+    return {QStringLiteral("x_cmd_mm"), QStringLiteral("y_cmd_mm"), QStringLiteral("x_meas_mm"),
+            QStringLiteral("y_meas_mm")};
+  if (kind == QLatin1String("cmm-report"))
+    return {QStringLiteral("part"),        QStringLiteral("time_min"),    QStringLiteral("dimension"),
+            QStringLiteral("nominal_mm"),  QStringLiteral("measured_mm"), QStringLiteral("lower_tol_mm"),
+            QStringLiteral("upper_tol_mm")};
+  return {};
+}
+
+void ImportDialog::browse() {
+  const QString start = file_.isEmpty() ? QFileInfo(projectPath_).path() : QFileInfo(file_).path();
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Import data"), start,
+      tr("Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)"));
+  if (!path.isEmpty()) setFile(path);
+}
+
+void ImportDialog::setFile(const QString& path) {
+  file_ = QFileInfo(path).absoluteFilePath();
+  text_.clear();
+  readError_.clear();
+  QFile f(file_);
+  if (!f.open(QIODevice::ReadOnly)) {
+    readError_ = tr("%1: cannot read the file (%2)").arg(QDir::toNativeSeparators(file_), f.errorString());
+  } else if (f.size() > kMaxFileBytes) {
+    readError_ = tr("%1: the file is larger than 256 MiB").arg(QDir::toNativeSeparators(file_));
+  } else {
+    text_ = f.readAll().toStdString();
+  }
+  {
+    const QSignalBlocker b1(kind_), b2(delimiter_), b3(decimal_), b4(id_);
+    fileEdit_->setText(QDir::toNativeSeparators(file_));
+    fileEdit_->setToolTip(fileEdit_->text());
+    const int k = kind_->findData(guessKind(file_, QByteArray::fromStdString(text_.substr(0, 64 * 1024))));
+    if (k >= 0) kind_->setCurrentIndex(k);
+    delimiter_->setCurrentIndex(0);
+    decimal_->setCurrentIndex(0);
+    id_->clear();
+    id_->setPlaceholderText(QFileInfo(file_).completeBaseName());
+  }
+  roles_.clear();
+  header_.clear();
+  revalidate();
+  guessRoles();
+  revalidate();
+}
+
+QString ImportDialog::file() const {
+  return file_;
+}
+
+void ImportDialog::setKind(const QString& kind) {
+  const int k = kind_->findData(kind);
+  if (k >= 0) kind_->setCurrentIndex(k);
+}
+
+QString ImportDialog::kind() const {
+  return kind_->currentData().toString();
+}
+
+void ImportDialog::setDatasetId(const QString& id) {
+  id_->setText(id);
+}
+
+void ImportDialog::setDelimiter(char delimiter) {
+  const int i = delimiter_->findData(static_cast<int>(delimiter));
+  if (i >= 0) delimiter_->setCurrentIndex(i);
+}
+
+void ImportDialog::setDecimal(char decimal) {
+  const int i = decimal_->findData(static_cast<int>(decimal));
+  if (i >= 0) decimal_->setCurrentIndex(i);
+}
+
+void ImportDialog::setRole(const QString& column, const QString& role) {
+  for (int r = 0; r < mapping_->rowCount(); ++r) {
+    if (mapping_->item(r, MapFileColumn)->text() != column) continue;
+    if (auto* combo = qobject_cast<QComboBox*>(mapping_->cellWidget(r, MapRole))) {
+      combo->setCurrentText(role);  // revalidates through currentTextChanged
+      return;
+    }
+  }
+  roles_[column] = role.trimmed();
+  revalidate();
+}
+
+QString ImportDialog::role(const QString& column) const {
+  return roles_.value(column);
+}
+
+CsvReadOptions ImportDialog::csvOptions() const {
+  CsvReadOptions o;
+  if (!datasetKindIsCsv(projectKind(kind()).toStdString())) return o;
+  o.dialect.delimiter = static_cast<char>(delimiter_->currentData().toInt());
+  o.dialect.decimal = static_cast<char>(decimal_->currentData().toInt());
+  for (const std::string& column : header_) {
+    const QString role = roles_.value(QString::fromStdString(column));
+    if (!role.isEmpty() && role.toStdString() != column) o.columnMap.emplace_back(role.toStdString(), column);
+  }
+  // In the order the project file gives them back (a JSON object, sorted by role), so that a saved
+  // and reopened dataset equals the one imported.
+  std::sort(o.columnMap.begin(), o.columnMap.end());
+  return o;
+}
+
+void ImportDialog::guessRoles() {
+  // Only what is certain: a thermal log's time column when the file names its unit.
+  if (kind() != QLatin1String("thermal-log") || header_.empty()) return;
+  for (const std::string& c : header_) {
+    if (c == "time_s" || c == "time_min" || c == "time_h") return;
+    if (!roles_.value(QString::fromStdString(c)).isEmpty()) {
+      const QString r = roles_.value(QString::fromStdString(c));
+      if (r.startsWith(QLatin1String("time_"))) return;
+    }
+  }
+  const QString first = QString::fromStdString(header_.front());
+  const QString lower = first.toLower().remove(QLatin1Char(' '));
+  QString role;
+  if (lower.contains(QLatin1String("[s]")) || lower.contains(QLatin1String("(s)")) ||
+      lower.endsWith(QLatin1String("_s")))
+    role = QStringLiteral("time_s");
+  else if (lower.contains(QLatin1String("[min]")) || lower.contains(QLatin1String("(min)")))
+    role = QStringLiteral("time_min");
+  else if (lower.contains(QLatin1String("[h]")) || lower.contains(QLatin1String("(h)")))
+    role = QStringLiteral("time_h");
+  if (role.isEmpty()) return;
+  roles_[first] = role;
+  rebuildMapping(header_);
+}
+
+void ImportDialog::rebuildMapping(const std::vector<std::string>& header) {
+  header_ = header;
+  const QSignalBlocker blocker(mapping_);
+  mapping_->setRowCount(static_cast<int>(header.size()));
+  const QStringList roles = rolesForKind(kind());
+  for (int r = 0; r < static_cast<int>(header.size()); ++r) {
+    const QString column = QString::fromStdString(header[static_cast<std::size_t>(r)]);
+    mapping_->setItem(r, MapFileColumn, new QTableWidgetItem(column));
+    if (!mapping_->item(r, MapFirstValue)) mapping_->setItem(r, MapFirstValue, new QTableWidgetItem);
+    auto* combo = new QComboBox(mapping_);
+    combo->setEditable(true);
+    combo->setInsertPolicy(QComboBox::NoInsert);
+    combo->addItem(QString());
+    for (const QString& role : roles) {
+      combo->addItem(role);
+      combo->setItemData(combo->count() - 1, roleDescription(role), Qt::ToolTipRole);
+    }
+    combo->lineEdit()->setPlaceholderText(tr("as in the file"));
+    combo->setCurrentText(roles_.value(column));
+    combo->setObjectName(QStringLiteral("importRole_%1").arg(r));
+    connect(combo, &QComboBox::currentTextChanged, this, [this, column](const QString& text) {
+      roles_[column] = text.trimmed();
+      if (!updating_) revalidate();
+    });
+    mapping_->setCellWidget(r, MapRole, combo);
+  }
+}
+
+void ImportDialog::showRawPreview() {
+  preview_->clear();
+  preview_->setColumnCount(1);
+  preview_->setHorizontalHeaderLabels({tr("Line")});
+  QStringList lines = QString::fromStdString(text_.substr(0, 64 * 1024)).split(QLatin1Char('\n'));
+  if (lines.size() > kRawPreviewLines) lines = lines.mid(0, kRawPreviewLines);
+  preview_->setRowCount(static_cast<int>(lines.size()));
+  for (int r = 0; r < lines.size(); ++r) {
+    QString line = lines[r];
+    line.remove(QLatin1Char('\r'));
+    preview_->setItem(r, 0, new QTableWidgetItem(line));
+  }
+  preview_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+}
+
+void ImportDialog::fillPreview(const CsvTable& table) {
+  preview_->clear();
+  const int columns = static_cast<int>(table.columnCount());
+  const int rows = static_cast<int>(std::min<std::size_t>(table.rowCount(), kPreviewRows));
+  preview_->setColumnCount(columns);
+  preview_->setRowCount(rows);
+  QStringList labels;
+  for (int c = 0; c < columns; ++c) {
+    const QString column = QString::fromStdString(table.header()[static_cast<std::size_t>(c)]);
+    const QString role = roles_.value(column);
+    labels << (role.isEmpty() || role == column ? column : column + QStringLiteral("\n→ ") + role);
+  }
+  preview_->setHorizontalHeaderLabels(labels);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < columns; ++c)
+      preview_->setItem(r, c,
+                        new QTableWidgetItem(QString::fromStdString(
+                            table.cell(static_cast<std::size_t>(r), static_cast<std::size_t>(c)))));
+  preview_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  for (int r = 0; r < mapping_->rowCount(); ++r) {
+    QTableWidgetItem* item = mapping_->item(r, MapFirstValue);
+    if (item)
+      item->setText(table.rowCount() > 0 && r < columns
+                        ? QString::fromStdString(table.cell(0, static_cast<std::size_t>(r)))
+                        : QString());
+  }
+}
+
+void ImportDialog::revalidate() {
+  if (updating_) return;
+  updating_ = true;
+  problem_.clear();
+  const std::string cliKind = kind().toStdString();
+  const bool csv = datasetKindIsCsv(projectKind(kind()).toStdString());
+  delimiter_->setEnabled(csv);
+  decimal_->setEnabled(csv);
+  mapping_->setEnabled(csv);
+  if (file_.isEmpty()) {
+    problem_ = tr("Choose a file to import.");
+    detected_->clear();
+    preview_->clear();
+    preview_->setRowCount(0);
+    preview_->setColumnCount(0);
+  } else if (!readError_.isEmpty()) {
+    problem_ = readError_;
+    detected_->clear();
+  } else if (!csv) {
+    detected_->setText(tr("Not a CSV file: read as %1 (no delimiter, decimal mark or column mapping).")
+                           .arg(datasetKindTitle(projectKind(kind()))));
+    if (!header_.empty()) rebuildMapping({});
+    showRawPreview();
+  } else {
+    const std::string shown = displayPath(file_.toStdString());
+    CsvReadOptions dialectOnly;
+    dialectOnly.dialect.delimiter = static_cast<char>(delimiter_->currentData().toInt());
+    dialectOnly.dialect.decimal = static_cast<char>(decimal_->currentData().toInt());
+    try {
+      const CsvTable table = parseCsv(text_, shown, dialectOnly);
+      if (table.header() != header_) rebuildMapping(table.header());
+      fillPreview(table);
+      const auto [line, comments] = headerLine(text_);
+      const auto found = [](char chosen, const QString& text) {
+        return chosen == 0 ? tr("%1 (detected)").arg(text) : text;
+      };
+      detected_->setText(
+          tr("delimiter %1 · decimal mark %2 · header in line %3 (%4 columns) · comment lines: %5 "
+             "· data rows: %6")
+              .arg(found(dialectOnly.dialect.delimiter, delimiterText(table.dialect().delimiter)),
+                   found(dialectOnly.dialect.decimal, decimalText(table.dialect().decimal)))
+              .arg(line)
+              .arg(table.columnCount())
+              .arg(comments)
+              .arg(table.rowCount()));
+    } catch (const std::exception& e) {
+      problem_ = QString::fromStdString(e.what());
+      detected_->clear();
+      showRawPreview();
+    }
+  }
+  if (problem_.isEmpty()) {
+    try {
+      Project scratch = project_;
+      AddDatasetRequest request;
+      request.kind = cliKind;
+      request.file = QFile::encodeName(file_).toStdString();
+      request.id = id_->text().trimmed().toStdString();
+      request.csv = csvOptions();
+      dataset_ = addDataset(scratch, QFile::encodeName(projectPath_).toStdString(), request);
+    } catch (const std::exception& e) {
+      problem_ = QString::fromStdString(e.what());
+    }
+  }
+  problemLabel_->setText(problem_.isEmpty() ? tr("Ready to import as %1 “%2”.")
+                                                  .arg(datasetKindTitle(projectKind(kind())),
+                                                       QString::fromStdString(dataset_.id))
+                                            : problem_);
+  problemLabel_->setStyleSheet(problem_.isEmpty() ? QString() : QStringLiteral("color: #b00020;"));
+  buttons_->button(QDialogButtonBox::Ok)->setEnabled(problem_.isEmpty());
+  updating_ = false;
+}
+
+}  // namespace metrofit

@@ -1,0 +1,104 @@
+#pragma once
+// The import dialog (issue 16 item 1): adds a file to a project as a dataset of one kind, the way
+// `metrofit-cli project add` does (core/project/datasets.h addDataset, the same checks and the same
+// DatasetRef). It shows
+//   * the kind (guessed from the extension and the content: guessKind),
+//   * the dataset id (empty: the file's base name, made unique by core),
+//   * for CSV kinds the delimiter and the decimal mark (detected, overridable), what detection found
+//     (header line, comment lines, data rows), and a column-to-role mapping: each column of the file
+//     can be read as a role the readers look for (time_s / time_min / time_h, disp_z_um, qx, x_cmd_mm,
+//     nominal_mm, ...), stored as the dataset's CsvReadOptions::columnMap (the project keeps the
+//     mapping, not a converted copy of the file),
+//   * a preview of the first rows (the file's own column names, with the role they are read as),
+//   * the first problem as one line naming file, line and field (core's InputError), in which case
+//     the Import button stays disabled.
+// The dialog does not change the project: after accept() the caller adds dataset() through the
+// document's undo stack (ProjectDocument::addDataset).
+#include <QDialog>
+#include <QMap>
+#include <QString>
+#include <QStringList>
+#include <string>
+
+#include "core/io/csv.h"
+#include "core/project/project.h"
+
+class QComboBox;
+class QDialogButtonBox;
+class QLabel;
+class QLineEdit;
+class QTableWidget;
+
+namespace metrofit {
+
+class ImportDialog : public QDialog {
+  Q_OBJECT
+ public:
+  /// Rows shown in the preview.
+  static constexpr int kPreviewRows = 20;
+
+  /// `project` is the project the dataset will be added to (its ids must stay unique) and
+  /// `projectPath` the path its dataset paths are relative to (ProjectDocument::projectPathForDatasets).
+  ImportDialog(const Project& project, const QString& projectPath, QWidget* parent = nullptr);
+
+  /// Reads a file, guesses its kind and resets dialect and mapping.
+  void setFile(const QString& path);
+  QString file() const;
+  /// The kind in the command line's spelling ("thermal-log", ..., core's datasetKindNames()).
+  void setKind(const QString& kind);
+  QString kind() const;
+  void setDatasetId(const QString& id);
+  /// ',', ';', '\t' or 0 (detect).
+  void setDelimiter(char delimiter);
+  /// '.', ',' or 0 (detect).
+  void setDecimal(char decimal);
+  /// Reads the file's column `column` as `role`; an empty role keeps the file's name.
+  void setRole(const QString& column, const QString& role);
+  QString role(const QString& column) const;
+  /// Dialect and mapping as they will be stored in the dataset (the mapping sorted by role).
+  CsvReadOptions csvOptions() const;
+
+  /// True when the file can be read as the chosen kind (the Import button is enabled).
+  bool canImport() const { return problem_.isEmpty(); }
+  /// The problem that keeps the file from being imported (one line), empty when there is none.
+  QString problem() const { return problem_; }
+  /// The dataset as it will be added (valid when canImport()).
+  const DatasetRef& dataset() const { return dataset_; }
+
+  /// The kind a file most likely is, from its extension and its first bytes (command-line spelling).
+  static QString guessKind(const QString& path, const QByteArray& head);
+  /// Roles the readers of a kind look for (command-line spelling of the kind).
+  static QStringList rolesForKind(const QString& kind);
+
+ private:
+  void browse();
+  void rebuildMapping(const std::vector<std::string>& header);
+  void guessRoles();
+  void revalidate();
+  void showRawPreview();
+  void fillPreview(const CsvTable& table);
+
+  Project project_;
+  QString projectPath_;
+  QString file_;
+  std::string text_;  ///< the file's content (read once per setFile)
+  QString readError_;
+  std::vector<std::string> header_;  ///< the file's own columns as the mapping table shows them
+  QMap<QString, QString> roles_;     ///< file column -> role
+  QString problem_;
+  DatasetRef dataset_;
+  bool updating_ = false;
+
+  QLineEdit* fileEdit_;
+  QComboBox* kind_;
+  QLineEdit* id_;
+  QComboBox* delimiter_;
+  QComboBox* decimal_;
+  QLabel* detected_;
+  QTableWidget* mapping_;
+  QTableWidget* preview_;
+  QLabel* problemLabel_;
+  QDialogButtonBox* buttons_;
+};
+
+}  // namespace metrofit
