@@ -8,6 +8,7 @@
 
 #include "core/common/error.h"
 #include "core/diagnose/applied_entries.h"
+#include "core/diagnose/matching_diagnosis.h"
 #include "core/io/csv.h"
 #include "core/project/project.h"
 
@@ -236,9 +237,25 @@ AppliedMatchingEffects parseAppliedMatchingEffects(const nlohmann::json& applied
       out.effects.surfaceOffsetsMm.emplace_back(surface, mm);
       out.surfaceEntry.push_back(entry.index);
       out.descriptions.push_back(name + fmt(" (%+.4g mm)", mm));
+    } else if (name.starts_with("unexplained:")) {
+      AppliedMatchingGeneric g;
+      g.shape = genericShapeOf(entry, source);
+      g.entry = entry.index;
+      const auto c = entry.json.find("coefficients");
+      if (c == entry.json.end() || !c->is_array() || c->empty())
+        fail(source, at + ".coefficients", "'" + name + "' needs its coefficients (mm), a list of numbers");
+      for (const auto& x : *c) {
+        if (!x.is_number() || !std::isfinite(x.get<double>()))
+          fail(source, at + ".coefficients", "must be finite numbers (mm)");
+        g.coefficients.push_back(x.get<double>());
+      }
+      out.descriptions.push_back(name + " (" + formName(g.shape.form) + ")");
+      out.generic.push_back(std::move(g));
     } else {
       fail(source, at + ".name",
-           "'" + name + "' is not a matching effect (scale, surface_offset:<surface> or distortion)");
+           "'" + name +
+               "' is not a matching effect (scale, surface_offset:<surface>, distortion or "
+               "unexplained:<variable>)");
     }
     out.names.push_back(name);
   });
@@ -268,6 +285,15 @@ ProbePointSet applyMatchingEffects(const ProbePointSet& set, const AppliedMatchi
     Eigen::Vector3d d = effectDisplacement(applied.effects, centred);
     if (set.planar) d.z() = 0.0;
     p.nominal += d;
+  }
+  for (const AppliedMatchingGeneric& g : applied.generic) {
+    const std::vector<Eigen::Vector3d> d = matchingGenericDisplacement(set, g.shape, g.coefficients);
+    if (d.size() != set.points.size())
+      fail(source, appliedEntryField(field, g.entry, "name"),
+           "unexplained:" + g.shape.against + ": the probe points have no variable '" + g.shape.against +
+               "', or the coefficients are not one per column of its shape");
+    for (std::size_t i = 0; i < d.size(); ++i)
+      out.points[i].nominal += set.planar ? Eigen::Vector3d(d[i].x(), d[i].y(), 0.0) : d[i];
   }
   return out;
 }

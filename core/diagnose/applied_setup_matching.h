@@ -26,6 +26,8 @@
 // scale and distortion about the centroid of the nominal points (as the diagnosis fits them). The
 // study's model of the part is q' = q + d(q): the nominal points are moved by d before matching,
 // so the posture (and the machine adjustments computed from it) is that of the part with the effect.
+// A generic effect `unexplained:<against>` {"shape": ..., "coefficients": [...]} moves the nominal
+// points by matchingGenericDisplacement (its deformation without a rigid part).
 //
 // Validation: every entry must be an object with a known "name" whose datum / tool / surface exists
 // and a "parameters" object with every numeric parameter of the effect finite. Errors are
@@ -37,6 +39,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/diagnose/residual_check.h"
 #include "core/matching/probe_points.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
@@ -103,8 +106,17 @@ SetupPrediction applySetupEffects(const setup::Model& model, setup::Measurements
 
 // ---- matching ----
 
+/// An applied generic effect `unexplained:<against>`: its shape and the diagnosis's coefficients
+/// (matching_diagnosis.h matchingGenericDisplacement).
+struct AppliedMatchingGeneric {
+  GenericForm shape;
+  std::vector<double> coefficients;
+  std::size_t entry = 0;  ///< index in the applied list (for errors)
+};
+
 struct AppliedMatchingEffects {
-  MatchingEffects effects;                ///< the parameters (core/sim/effects_matching.h)
+  MatchingEffects effects;  ///< the parameters (core/sim/effects_matching.h)
+  std::vector<AppliedMatchingGeneric> generic;
   std::vector<std::string> names;         ///< as applied, in order
   std::vector<std::string> descriptions;  ///< "scale (+92.4 ppm)"
   std::vector<std::size_t> surfaceEntry;  ///< entry index of each effects.surfaceOffsetsMm

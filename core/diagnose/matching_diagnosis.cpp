@@ -603,6 +603,10 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
             accepted_[j].kind == Kind::Generic
                 ? genericParameters(pb_, accepted_[j], current_.beta, at, vars_, nullptr)
                 : parameters(accepted_[j], current_.beta, current_.est.covariance, at);
+        if (accepted_[j].kind == Kind::Generic) {
+          const Eigen::VectorXd w = current_.beta.segment(at, accepted_[j].params);
+          accepted[j]->genericCoefficients.assign(w.data(), w.data() + w.size());
+        }
         at += accepted_[j].params;
       }
       d.final = summarise(current_, pb_.points());
@@ -738,6 +742,69 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
                   {A::name(o.id.value_or("")), A::integer(o.row.value_or(0)), A::number(o.residual, 3)});
   });
   return result;
+}
+
+std::vector<Eigen::Vector3d> matchingGenericDisplacement(const ProbePointSet& set, const GenericForm& shape,
+                                                         const std::vector<double>& coefficients) {
+  if (set.points.empty()) return {};
+  const Problem pb = makeProblem(set);
+  std::vector<std::size_t> orig(set.points.size());
+  std::iota(orig.begin(), orig.end(), 0);
+  const std::vector<ResidualVariable> vars = matchingVariables(pb, orig);
+  const ResidualVariable* v = findVariable(vars, shape.against);
+  if (!v) return {};
+  GenericForm f = shape;
+  f.components = 1;
+  EffectDef e;
+  e.kind = Kind::Generic;
+  e.basis = std::make_shared<const Eigen::MatrixXd>(variableBasis(f, *v));
+  e.shape = f;
+  const int dims = pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3);
+  if (static_cast<Eigen::Index>(coefficients.size()) != e.basis->cols() * dims) return {};
+  const std::size_t n = set.points.size();
+  std::vector<Eigen::Vector3d> d(n, Eigen::Vector3d::Zero());
+  std::vector<Eigen::Vector3d> cols;
+  for (std::size_t i = 0; i < n; ++i) {
+    cols.clear();
+    effectColumns(pb, e, i, cols);
+    for (std::size_t j = 0; j < cols.size(); ++j) d[i] += coefficients[j] * cols[j];
+  }
+  // Its rigid part, fitted as the matching observes (along the normal, or the coordinates): small
+  // rotation w x qc and translation t about the centroid; the deformation is what is left.
+  const int per = pb.perPoint, rigid = pb.rigid;
+  Eigen::MatrixXd A(static_cast<Eigen::Index>(n) * per, rigid);
+  Eigen::VectorXd b(A.rows());
+  for (std::size_t i = 0; i < n; ++i) {
+    const ProbePoint& p = set.points[i];
+    const Eigen::Vector3d qc = p.nominal - pb.qMean;
+    std::vector<Eigen::Vector3d> g;  // displacement of each rigid parameter at the point
+    if (pb.mode == Mode::Planar) {
+      g = {Eigen::Vector3d(-qc.y(), qc.x(), 0.0), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
+    } else {
+      g = {Eigen::Vector3d::UnitX().cross(qc), Eigen::Vector3d::UnitY().cross(qc),
+           Eigen::Vector3d::UnitZ().cross(qc), Eigen::Vector3d::UnitX(),
+           Eigen::Vector3d::UnitY(),           Eigen::Vector3d::UnitZ()};
+    }
+    for (int c = 0; c < per; ++c) {
+      const Eigen::Index row = static_cast<Eigen::Index>(i) * per + c;
+      const auto observe = [&](const Eigen::Vector3d& x) { return per == 1 ? p.normal.dot(x) : x(c); };
+      for (int k = 0; k < rigid; ++k) A(row, k) = observe(g[static_cast<std::size_t>(k)]);
+      b(row) = observe(d[i]);
+    }
+  }
+  const Eigen::VectorXd x = A.completeOrthogonalDecomposition().solve(b);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d qc = set.points[i].nominal - pb.qMean;
+    Eigen::Vector3d r = Eigen::Vector3d::Zero();
+    if (pb.mode == Mode::Planar) {
+      r = x(0) * Eigen::Vector3d(-qc.y(), qc.x(), 0.0) + Eigen::Vector3d(x(1), x(2), 0.0);
+    } else {
+      r = Eigen::Vector3d(x(0), x(1), x(2)).cross(qc) + Eigen::Vector3d(x(3), x(4), x(5));
+    }
+    // Along the normal only what the fit observes is removed.
+    d[i] -= per == 1 ? Eigen::Vector3d(set.points[i].normal.dot(r) * set.points[i].normal) : r;
+  }
+  return d;
 }
 
 }  // namespace metrofit::diagnose

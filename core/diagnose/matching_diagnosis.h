@@ -65,6 +65,17 @@ struct MatchingDiagnosisOptions {
   bool isValid(std::string* why) const;
 };
 
+/// The displacement (part frame, mm) of every point of `set` of a generic effect
+/// `unexplained:<against>` with the coefficients w the diagnosis estimated (Candidate::
+/// genericCoefficients): genericBasis(shape) w on the variable `against` of the set (as the loop
+/// computes its variables: row, x, y, z, angle, surface, nx, ny, nz, surface:<s>), along the nominal
+/// normal where the set has normals, else per coordinate; minus its least-squares rigid part (a
+/// rotation and translation about the centroid, observed as the fit observes), which is the posture
+/// and not a deformation of the part. Empty when the set has no such variable or w does not have one
+/// number per column.
+std::vector<Eigen::Vector3d> matchingGenericDisplacement(const ProbePointSet& set, const GenericForm& shape,
+                                                         const std::vector<double>& coefficients);
+
 /// The loop on a probe point set (any form of probe_points.h). ValidationError when the points do
 /// not determine the rigid posture (fit_input.h requireDeterminable). The observer is called after
 /// every round and may cancel.

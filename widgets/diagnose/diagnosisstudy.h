@@ -65,8 +65,12 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& settings, Observer* ob
 /// core/kinematics/axis_effects.h, core/diagnose/applied_setup_matching.h) knows it. The catalogue's
 /// named effects: yes. A generic effect `unexplained:<against>` (Candidate::generic): in the thermal
 /// study (its basis columns are refitted by every model) and the kinematic one (a displacement with
-/// the diagnosis's coefficients, core/kinematics/axis_effects.h); not yet in setup and matching,
-/// where it is reported (candidate table, residual check, report) but not applied.
+/// the diagnosis's coefficients, core/kinematics/axis_effects.h). Not yet in setup and matching,
+/// where it is reported (candidate table, residual check, report) but not applied: the matching
+/// study could read it (core/diagnose/applied_setup_matching.h), but the loop's generic bases are
+/// not projected off the rigid motion and the named effects, so their coefficients can trade
+/// against a named effect (a bowed block: unexplained:x with scale -790 ppm) and are not a
+/// deformation the study can use.
 bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c);
 
 /// The accepted effects Apply can add (canApplyEffect) as stored under "applied":
