@@ -73,8 +73,7 @@ Eigen::Vector2d toPlane(TestPlane plane, const Eigen::Vector3d& p) {
 
 /// Residuals model - measured, (u, v) per point, the three tests one after the other.
 Eigen::VectorXd residuals(const std::array<MeasuredPath, 3>& tests, const Theta& th) {
-  const ActuatorErrors3 e = fromTheta(th);
-  const Eigen::Matrix3d D = e.directions();
+  const CartesianMachine3 machine = fromTheta(th).machine();  // Eq. 9 in three axes
   std::size_t n = 0;
   for (const auto& t : tests) n += t.size();
   Eigen::VectorXd r(static_cast<Eigen::Index>(2 * n));
@@ -82,7 +81,7 @@ Eigen::VectorXd residuals(const std::array<MeasuredPath, 3>& tests, const Theta&
   for (const TestPlane plane : kTestPlanes) {
     const MeasuredPath& t = tests[static_cast<std::size_t>(plane)];
     for (std::size_t k = 0; k < t.size(); ++k) {
-      const Eigen::Vector2d m = toPlane(plane, e.originMm + D * to3(plane, t.command[k]));
+      const Eigen::Vector2d m = toPlane(plane, machine.forward(to3(plane, t.command[k])));
       r.segment<2>(i) = m - t.measured[k];
       i += 2;
     }

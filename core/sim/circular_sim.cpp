@@ -85,7 +85,7 @@ MeasuredPath simulatePlaneCircularTest(const ActuatorErrors3& errors, TestPlane 
   MeasuredPath p;
   p.source = std::string("simulated ") + planeName(plane) + " circular test";
   p.command = circularTestCommands(o);
-  const Eigen::Matrix3d D = errors.directions();
+  const CartesianMachine3 machine = errors.machine();  // Eq. 9 in three axes
   const auto ax = planeAxes(plane);
   Rng rng(o.seed);
   p.measured.reserve(p.command.size());
@@ -93,7 +93,7 @@ MeasuredPath simulatePlaneCircularTest(const ActuatorErrors3& errors, TestPlane 
     Eigen::Vector3d pr = Eigen::Vector3d::Zero();
     pr(ax[0]) = c.x();
     pr(ax[1]) = c.y();
-    const Eigen::Vector3d pos = errors.originMm + D * pr;
+    const Eigen::Vector3d pos = machine.forward(pr);
     Eigen::Vector2d m(pos(ax[0]), pos(ax[1]));
     if (o.noiseMm > 0.0) {
       const double nu = rng.normal(0.0, o.noiseMm);
