@@ -2,6 +2,8 @@
 //   identify   --data C.csv [--out E.json]
 //   identify3  --xy C1.csv --yz C2.csv --zx C3.csv [--out E3.json]
 //       the three-axis actuator errors from circular tests in three planes (identification3.h)
+//   compensate3 --errors3 E3.json --path N.csv [--out F.csv]
+//       Eq. 15 in three axes: references x_cmd_mm,y_cmd_mm,z_cmd_mm for a nominal path x_mm,y_mm,z_mm
 //   from-spc   --x-data X.csv --y-data Y.csv [--position-column C] [--deviation-column C]
 //              [--x-nominal-y Y0] [--y-nominal-x X0] [--subgroup N] [--coverage K]
 //              [--path N.csv --references F.csv] [--out E.json]
@@ -161,6 +163,28 @@ int runIdentify3(const Identify3Args& a) {
                g(e.squarenessDeg(TestPlane::XY)).c_str(), g(e.squarenessDeg(TestPlane::YZ)).c_str(),
                g(e.squarenessDeg(TestPlane::ZX)).c_str(), g(r.rmseMm, "%.3g").c_str(), r.run.iterations,
                r.run.iterations == 1 ? "" : "s", toString(r.run.termination));
+  return 0;
+}
+
+struct Compensate3Args {
+  std::string errors3, path, out;
+};
+
+int runCompensate3(const Compensate3Args& a) {
+  const ActuatorErrors3 errors = readActuatorErrors3(a.errors3);
+  const std::vector<Eigen::Vector3d> nominal = nominalPath3FromCsv(readCsvFile(a.path, csvOptions()));
+  const auto commands = compensatePath3(errors, nominal);
+  writeResult(a.out, commandPath3ToCsv(commands));
+  double largest = 0.0;
+  for (std::size_t i = 0; i < commands.size(); ++i)
+    largest = std::max(largest, (commands[i] - nominal[i]).norm());
+  std::fprintf(
+      stderr,
+      "kinematic compensate3: %zu points of %s, largest correction %s mm (squareness xy %s, yz %s, zx %s "
+      "deg)\n",
+      commands.size(), a.path.c_str(), g(largest, "%.4g").c_str(),
+      g(errors.squarenessDeg(TestPlane::XY)).c_str(), g(errors.squarenessDeg(TestPlane::YZ)).c_str(),
+      g(errors.squarenessDeg(TestPlane::ZX)).c_str());
   return 0;
 }
 
@@ -479,6 +503,18 @@ void registerKinematicCommands(CLI::App& app) {
   addCsvOptions(id3);
   addOut(id3, c->out);
   id3->callback([c] { selectRunner([c]() -> int { return runIdentify3(*c); }); });
+
+  auto c3 = std::make_shared<Compensate3Args>();
+  auto* comp3 = kin->add_subcommand(
+      "compensate3",
+      "Compensated references in three axes for a nominal path, from the errors identify3 wrote");
+  existingFile(comp3->add_option("--errors3", c3->errors3, "Three-axis errors (JSON written by identify3)")
+                   ->required());
+  existingFile(comp3->add_option("--path", c3->path, "Nominal path (CSV x_mm,y_mm,z_mm)")->required());
+  addCsvOptions(comp3);
+  comp3->add_option("--out", c3->out,
+                    "Compensated references (CSV x_cmd_mm,y_cmd_mm,z_cmd_mm; atomic). Default: stdout");
+  comp3->callback([c3] { selectRunner([c3]() -> int { return runCompensate3(*c3); }); });
 
   auto d = std::make_shared<FromSpcArgs>();
   auto* fs = kin->add_subcommand(

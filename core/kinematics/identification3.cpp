@@ -367,6 +367,35 @@ Identify3Result identifyActuatorErrors3(const std::array<MeasuredPath, 3>& tests
   return res;
 }
 
+std::vector<Eigen::Vector3d> compensatePath3(const ActuatorErrors3& errors,
+                                             const std::vector<Eigen::Vector3d>& nominal) {
+  std::string why;
+  if (!errors.isValid(&why)) throw OptionsError(ErrorContext{{}, 0, 0, "three-axis errors"}, why);
+  const CartesianMachine3 machine = errors.machine();
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(nominal.size());
+  for (const auto& p : nominal) out.push_back(machine.inverse(p));
+  return out;
+}
+
+std::vector<Eigen::Vector3d> nominalPath3FromCsv(const CsvTable& t) {
+  const std::size_t xc = t.requireColumn("x_mm"), yc = t.requireColumn("y_mm"), zc = t.requireColumn("z_mm");
+  t.requireRows(1);
+  std::vector<Eigen::Vector3d> out;
+  for (std::size_t r = 0; r < t.rowCount(); ++r)
+    out.emplace_back(t.number(r, xc), t.number(r, yc), t.number(r, zc));
+  return out;
+}
+
+std::string commandPath3ToCsv(const std::vector<Eigen::Vector3d>& commands) {
+  CsvWriter w;
+  w.row({"x_cmd_mm", "y_cmd_mm", "z_cmd_mm"});
+  for (const auto& c : commands) {
+    w.row({CsvWriter::formatNumber(c.x()), CsvWriter::formatNumber(c.y()), CsvWriter::formatNumber(c.z())});
+  }
+  return w.text();
+}
+
 nlohmann::json identify3ResultToJson(const Identify3Result& r) {
   using nlohmann::json;
   json j;

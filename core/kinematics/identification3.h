@@ -117,6 +117,15 @@ struct Identify3Result {
 Identify3Result identifyActuatorErrors3(const std::array<MeasuredPath, 3>& tests,
                                         const Identify3Options& options = {}, Observer* observer = nullptr);
 
+/// Compensated references in three axes (Eq. 15 in three axes, CartesianMachine3::inverse): for every
+/// nominal point P the command Pr = [i j k]^-1 (P - o), so the modelled machine lands on P.
+std::vector<Eigen::Vector3d> compensatePath3(const ActuatorErrors3& errors,
+                                             const std::vector<Eigen::Vector3d>& nominal);
+/// A nominal path x_mm,y_mm,z_mm (ValidationError without rows; errors name file, line, field).
+std::vector<Eigen::Vector3d> nominalPath3FromCsv(const CsvTable& table);
+/// CSV x_cmd_mm,y_cmd_mm,z_cmd_mm (shortest round-trip numbers).
+std::string commandPath3ToCsv(const std::vector<Eigen::Vector3d>& commands);
+
 /// JSON: origin_mm [x, y, z]; planes {xy: {x_axis_angle_deg, y_axis_angle_deg, squareness_deg,
 /// squareness_std_err_deg, rmse_mm, points, source}, yz: {y_axis_angle_deg, z_axis_angle_deg, ...},
 /// zx: {z_axis_angle_deg, x_axis_angle_deg, ...}}; squareness_deg {xy, yz, zx}; directions {x, y, z}

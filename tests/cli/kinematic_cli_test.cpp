@@ -506,6 +506,26 @@ TEST(KinematicCli, Identify3RecoversTheSimulatedThreeAxisMachine) {
   EXPECT_EQ(j["termination"], "converged");
   // The identified machine simulates again (identify3's JSON is --errors3's input).
   EXPECT_EQ(cli("simulate circular --plane yz --errors3 e3.json --out again.csv", tmp).code, 0);
+  // ... and compensates in three axes: the references, run through the true machine (written here from
+  // the injected projection angles), land on the nominal points within the identification's scatter.
+  test::writeText(tmp.file("n3.csv"), "x_mm,y_mm,z_mm\n100,0,0\n0,100,0\n0,0,100\n50,-50,80\n");
+  const CliRun c = cli("kinematic compensate3 --errors3 e3.json --path n3.csv --out f3.csv", tmp);
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_EQ(c.err.rfind("kinematic compensate3: 4 points of n3.csv, largest correction ", 0), 0u) << c.err;
+  const auto f = readCsvFile(tmp.file("f3.csv"));
+  const auto xs = f.numericColumn("x_cmd_mm"), ys = f.numericColumn("y_cmd_mm"),
+             zs = f.numericColumn("z_cmd_mm");
+  const double d = std::numbers::pi / 180.0;
+  const Eigen::Vector3d i = Eigen::Vector3d(1.0, std::tan(0.002 * d), -std::tan(0.005 * d)).normalized();
+  const Eigen::Vector3d jj = Eigen::Vector3d(std::tan(0.003 * d), 1.0, std::tan(0.004 * d)).normalized();
+  const Eigen::Vector3d k = Eigen::Vector3d(std::tan(-0.002 * d), -std::tan(0.001 * d), 1.0).normalized();
+  const Eigen::Vector3d o(0.01, -0.02, 0.03);
+  const Eigen::Vector3d nominal[4] = {{100, 0, 0}, {0, 100, 0}, {0, 0, 100}, {50, -50, 80}};
+  for (std::size_t n = 0; n < 4; ++n) {
+    const Eigen::Vector3d p = o + i * xs[n] + jj * ys[n] + k * zs[n];
+    EXPECT_LT((p - nominal[n]).norm(), 5e-4) << n;  // identified within ~1e-4 deg, 0.1 um
+    EXPECT_GT((o + i * 100.0 - Eigen::Vector3d(100, 0, 0)).norm(), 0.02);  // uncompensated: > 20 um
+  }
 }
 
 TEST(KinematicCli, Identify3BadInputExits2WithOneLine) {

@@ -191,5 +191,23 @@ TEST(Identification3, JsonRoundTrip) {
   EXPECT_EQ(e.vAngleDeg, r.errors.vAngleDeg);
 }
 
+TEST(Identification3, CompensatedReferencesPutTheTestsOwnMachineOnTheNominalPath) {
+  const RotatedMachine m = rotatedMachine();
+  const Identify3Result r = identifyActuatorErrors3(testsOn(m, 0.0, 1));
+  std::vector<Eigen::Vector3d> nominal;
+  for (int k = 0; k < 24; ++k) {
+    const double t = 2 * std::numbers::pi * k / 24;
+    nominal.emplace_back(80.0 * std::cos(t), 60.0 * std::sin(t), 10.0 + 5.0 * k);  // a helix
+  }
+  const auto refs = compensatePath3(r.errors, nominal);
+  double before = 0.0, after = 0.0;
+  for (std::size_t k = 0; k < nominal.size(); ++k) {
+    before = std::max(before, (m.o + m.D * nominal[k] - nominal[k]).norm());
+    after = std::max(after, (m.o + m.D * refs[k] - nominal[k]).norm());
+  }
+  EXPECT_GT(before, 1.0);  // degree-sized errors: millimetres
+  EXPECT_LT(after, 1e-8);
+}
+
 }  // namespace
 }  // namespace metrofit
