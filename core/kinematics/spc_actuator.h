@@ -37,8 +37,9 @@
 // n consecutive points, control_chart.h): when a chart is out of control the errors are still
 // reported but the compensation is not applied (special causes first). With 3-sigma limits a series
 // in control still raises a false alarm now and then (10 subgroups of 5 on both charts: about 7 % per
-// feature), as any Shewhart chart does; the result says which feature it was. The systematic error of
-// Eq. 20 (0 - mean deviation) is reported per feature beside the line.
+// feature), as any Shewhart chart does; the result says which feature it was. Residuals with a sigma
+// below 1e-9 mm (noise-free simulated edges) are not charted: their limits would be rounding noise. The
+// systematic error of Eq. 20 (0 - mean deviation) is reported per feature beside the line.
 //
 // Compensation: the derived errors as a CartesianMachine2 (Oxr = Oyr = o), the references of a
 // nominal path by Eq. 15 (compensatePath).

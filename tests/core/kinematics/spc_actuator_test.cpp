@@ -72,6 +72,9 @@ TEST(SpcActuator, PaperFig11ErrorsComeBackExactlyFromNoiseFreeEdges) {
   EXPECT_NEAR(r.errors.originMm.x(), 1.5, 1e-9);
   EXPECT_NEAR(r.errors.originMm.y(), -2.0, 1e-9);
   EXPECT_NEAR(r.errors.squarenessDeg(), -5.0, 1e-9);
+  // Residuals at the rounding level are not charted (their limits would flag rounding noise).
+  EXPECT_FALSE(r.x.residualChart.has_value());
+  EXPECT_TRUE(r.apply) << r.reason;
 }
 
 TEST(SpcActuator, CompensatedReferencesLandOnTheNominalCircle) {
