@@ -1281,11 +1281,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+2"/>
+        <location line="+43"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-43"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -1335,6 +1336,51 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>S&amp;PC</translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>from SPC</source>
+        <translation>aus SPC</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>from circular test</source>
+        <translation>aus Kreisformtest</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>plane</source>
+        <translation>Ebene</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>u axis angle a (°)</source>
+        <translation>Winkel der u-Achse a (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>v axis angle b (°)</source>
+        <translation>Winkel der v-Achse b (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>squareness b − a (°)</source>
+        <translation>Rechtwinkligkeit b − a (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>± std. error (°)</source>
+        <translation>± Standardfehler (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMS (µm)</source>
+        <translation>RMS (µm)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Actuators</source>
+        <translation>&amp;Antriebe</translation>
+    </message>
+    <message>
         <location line="+5"/>
         <source>C&amp;ircular test:</source>
         <translation>Kreisform&amp;test:</translation>
@@ -1376,51 +1422,56 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+6"/>
+        <location line="+102"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-100"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+100"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-98"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+98"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-96"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Der X-Antrieb bewegt sich entlang (cos a, sin a); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+96"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-94"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Der Y-Antrieb bewegt sich entlang (-sin b, cos b); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+94"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-92"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Der Winkel zwischen den Achsen beträgt 90° + (b − a)</translation>
     </message>
@@ -1481,8 +1532,102 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <source>The kinematics study names no SPC series. Set &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} in the project&apos;s kinematics study.</source>
         <translation>Die Kinematikstudie nennt keine SPC-Reihe. Setzen Sie &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} in der Kinematikstudie des Projekts.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+13"/>
+        <source>compensation applied: %n of 4 line parameters beyond ± k standard errors (k = %1), residuals in control</source>
+        <translation>
+            <numerusform>Kompensation angewendet: %n von 4 Geradenparametern außerhalb ± k Standardfehler (k = %1), Residuen beherrscht</numerusform>
+            <numerusform>Kompensation angewendet: %n von 4 Geradenparametern außerhalb ± k Standardfehler (k = %1), Residuen beherrscht</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+35"/>
+        <location line="+7"/>
+        <source>not compensated: the residuals about a regression line are out of control (special causes first)</source>
+        <translation>nicht kompensiert: die Residuen um eine Regressionsgerade sind außer Kontrolle (zuerst die besonderen Ursachen beseitigen)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not compensated: no slope or intercept beyond ± k standard errors (random scatter)</source>
+        <translation>nicht kompensiert: keine Steigung und kein Achsenabschnitt außerhalb ± k Standardfehler (zufällige Streuung)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt; (seed 002): the offset angle of the regression line of the edge along X is the X actuator&apos;s angle a, minus that of the edge along Y is b (Eq. 9), the intercepts give the origin; %1.</source>
+        <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt; (Seed 002): Der Versatzwinkel der Regressionsgeraden der Kante entlang X ist der Winkel a des X-Antriebs, der negative Versatzwinkel der Kante entlang Y ist b (Gl. 9), die Achsenabschnitte ergeben den Ursprung; %1.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>offset angle, edge along X (°)</source>
+        <translation>Versatzwinkel, Kante entlang X (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+4"/>
+        <source>atan(slope) of the deviation against the position (Fig. 10); ± %1°</source>
+        <translation>atan(Steigung) der Abweichung über der Position (Abb. 10); ± %1°</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>offset angle, edge along Y (°)</source>
+        <translation>Versatzwinkel, Kante entlang Y (°)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>largest correction (µm)</source>
+        <translation>größte Korrektur (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest |reference − nominal point| of the Eq. 15 references for the nominal circle</source>
+        <translation>Größtes |Sollwert − Nennpunkt| der Sollwerte nach Gl. 15 für den Nennkreis</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>circular test model: before → after (µm)</source>
+        <translation>Modell des Kreisformtests: vorher → nachher (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The machine identified from the circular test (an independent estimate) on the nominal circle and on the references derived from SPC: largest distance from the nominal points</source>
+        <translation>Die aus dem Kreisformtest identifizierte Maschine (eine unabhängige Schätzung) auf dem Nennkreis und auf den aus SPC abgeleiteten Sollwerten: größter Abstand von den Nennpunkten</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: the kinematics study names no edges. Set &quot;from_spc&quot;: {&quot;x_dataset&quot;, &quot;y_dataset&quot;} (CSV position_mm,deviation_mm, e.g. made by metrofit-cli simulate edge) in the project&apos;s kinematics study.</source>
+        <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt;: Die Kinematikstudie nennt keine Kanten. Setzen Sie &quot;from_spc&quot;: {&quot;x_dataset&quot;, &quot;y_dataset&quot;} (CSV position_mm,deviation_mm, z. B. erzeugt mit metrofit-cli simulate edge) in der Kinematikstudie des Projekts.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: cannot derive the actuator errors:&lt;br&gt;%1</source>
+        <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt;: Die Antriebsfehler können nicht abgeleitet werden:&lt;br&gt;%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&lt;b&gt;Three axes&lt;/b&gt; from circular tests in XY, YZ and ZX: origin (%1, %2, %3) µm ± %4 µm, RMS residual %5 µm, %6 points.</source>
+        <translation>&lt;b&gt;Drei Achsen&lt;/b&gt; aus Kreisformtests in XY, YZ und ZX: Ursprung (%1, %2, %3) µm ± %4 µm, RMS-Residuum %5 µm, %6 Punkte.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>In the plane (u, v) the u actuator moves along (cos a, sin a), the v actuator along (−sin b, cos b); the angle between them is 90° + (b − a)</source>
+        <translation>In der Ebene (u, v) bewegt sich der u-Antrieb entlang (cos a, sin a), der v-Antrieb entlang (−sin b, cos b); der Winkel zwischen ihnen ist 90° + (b − a)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&lt;b&gt;Three axes&lt;/b&gt;: the kinematics study names no plane tests. Set &quot;planes&quot;: {&quot;xy&quot;, &quot;yz&quot;, &quot;zx&quot;} (circular tests made e.g. by metrofit-cli simulate circular --plane yz) in the project&apos;s kinematics study.</source>
+        <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Die Kinematikstudie nennt keine Ebenentests. Setzen Sie &quot;planes&quot;: {&quot;xy&quot;, &quot;yz&quot;, &quot;zx&quot;} (Kreisformtests, z. B. erzeugt mit metrofit-cli simulate circular --plane yz) in der Kinematikstudie des Projekts.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&lt;b&gt;Three axes&lt;/b&gt;: cannot identify:&lt;br&gt;%1</source>
+        <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Identifikation nicht möglich:&lt;br&gt;%1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>measured (before)</source>
         <translation>gemessen (vorher)</translation>
     </message>
@@ -1542,7 +1687,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Größter |Sollwert − Nennpunkt|</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+65"/>
         <source>Export compensated path as G-code</source>
         <translation>Kompensierte Bahn als G-Code exportieren</translation>
     </message>
@@ -2821,7 +2966,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+221"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+224"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>ja</translation>
@@ -2945,11 +3090,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
+        <location line="+223"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-223"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -2965,31 +3111,36 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+8"/>
+        <location line="+226"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-224"/>
+        <location line="+226"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-224"/>
+        <location line="+225"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-223"/>
+        <location line="+225"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-223"/>
+        <location line="+225"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-223"/>
         <source>RMS residual (µm)</source>
         <translation>RMS-Residuum (µm)</translation>
     </message>
@@ -3122,12 +3273,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+61"/>
+        <location line="+149"/>
         <source>in control</source>
         <translation>beherrscht</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-147"/>
         <source>σ within (R̄ / d2)</source>
         <translation>σ innerhalb (R̄ / d2)</translation>
     </message>
@@ -3178,12 +3329,109 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+39"/>
+        <location line="+127"/>
         <source>SPC-gated compensation: %1</source>
         <translation>SPC-gesteuerte Kompensation: %1</translation>
     </message>
     <message>
-        <location line="-30"/>
+        <location line="-121"/>
+        <source>From the SPC offset angle to actuator errors</source>
+        <translation>Vom SPC-Versatzwinkel zu den Antriebsfehlern</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The actuator errors could not be derived from the edges: %1</source>
+        <translation>Die Antriebsfehler konnten nicht aus den Kanten abgeleitet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The regression line of the deviation of an edge machined along X against the measured position (%1, Fig. 10, Table 2) has the offset angle atan(slope); by Eq. 9 it is the X actuator&apos;s orientation error a, minus the offset angle of the edge along Y is b, and the two intercepts give the actuator origin (Table 3). A slope or intercept within ± %2 standard errors counts as scatter. The circular test&apos;s identification is an independent estimate of the same errors.</source>
+        <translation>Die Regressionsgerade der Abweichung einer entlang X bearbeiteten Kante über der gemessenen Position (%1, Abb. 10, Tab. 2) hat den Versatzwinkel atan(Steigung); nach Gl. 9 ist er der Richtungsfehler a des X-Antriebs, der negative Versatzwinkel der Kante entlang Y ist b, und die beiden Achsenabschnitte ergeben den Ursprung der Antriebe (Tab. 3). Eine Steigung oder ein Achsenabschnitt innerhalb ± %2 Standardfehler gilt als Streuung. Die Identifikation aus dem Kreisformtest ist eine unabhängige Schätzung derselben Fehler.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>from SPC</source>
+        <translation>aus SPC</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>from circular test</source>
+        <translation>aus Kreisformtest</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>offset angle, edge along X (deg)</source>
+        <translation>Versatzwinkel, Kante entlang X (Grad)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+4"/>
+        <location line="+52"/>
+        <source>%1 ± %2</source>
+        <translation>%1 ± %2</translation>
+    </message>
+    <message>
+        <location line="-53"/>
+        <source>offset angle, edge along Y (deg)</source>
+        <translation>Versatzwinkel, Kante entlang Y (Grad)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>systematic error, edge along X / Y (Eq. 20, µm)</source>
+        <translation>systematischer Fehler, Kante entlang X / Y (Gl. 20, µm)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Compensation applied (Eq. 15): the largest correction of the nominal circle is %1 µm; the circular test&apos;s model gives a largest deviation of %2 µm before and %3 µm with the references derived from SPC.</source>
+        <translation>Kompensation angewendet (Gl. 15): Die größte Korrektur des Nennkreises beträgt %1 µm; das Modell des Kreisformtests ergibt eine größte Abweichung von %2 µm vorher und %3 µm mit den aus SPC abgeleiteten Sollwerten.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not compensated: %1</source>
+        <translation>Nicht kompensiert: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Three axes: circular tests in XY, YZ and ZX</source>
+        <translation>Drei Achsen: Kreisformtests in XY, YZ und ZX</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The three-axis errors could not be identified: %1</source>
+        <translation>Die Fehler der drei Achsen konnten nicht identifiziert werden: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The three-axis Cartesian model P = o + [i j k]·Pr (%1, Eq. 9 in three axes) fitted to the three tests together (%2 points, RMS residual %3 µm): origin (%4, %5, %6) µm. In every plane (u, v) the u actuator moves along (cos a, sin a), the v actuator along (−sin b, cos b); squareness b − a.</source>
+        <translation>Das kartesische Dreiachsmodell P = o + [i j k]·Pr (%1, Gl. 9 für drei Achsen), gemeinsam an die drei Tests angepasst (%2 Punkte, RMS-Residuum %3 µm): Ursprung (%4, %5, %6) µm. In jeder Ebene (u, v) bewegt sich der u-Antrieb entlang (cos a, sin a), der v-Antrieb entlang (−sin b, cos b); Rechtwinkligkeit b − a.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>plane</source>
+        <translation>Ebene</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>a (deg)</source>
+        <translation>a (Grad)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>b (deg)</source>
+        <translation>b (Grad)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>squareness (deg)</source>
+        <translation>Rechtwinkligkeit (Grad)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMS (µm)</source>
+        <translation>RMS (µm)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>Circular test %1: actuator origin offset (%2, %3) µm, squareness error %4°; largest radial deviation %5 µm.</source>
         <translation>Kreisformtest %1: Nullpunktversatz der Antriebe (%2, %3) µm, Rechtwinkligkeitsfehler %4°; größte radiale Abweichung %5 µm.</translation>
     </message>
@@ -3243,12 +3491,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Cpk %1.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+7"/>
+        <source>From the SPC offset angles: origin (%1, %2) µm, squareness %3°.</source>
+        <translation>Aus den SPC-Versatzwinkeln: Ursprung (%1, %2) µm, Rechtwinkligkeit %3°.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Squareness XY %1°, YZ %2°, ZX %3° (three-plane circular tests).</source>
+        <translation>Rechtwinkligkeit XY %1°, YZ %2°, ZX %3° (Kreisformtests in drei Ebenen).</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Kinematic compensation and SPC</source>
         <translation>Kinematische Kompensation und SPC</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Cannot analyse the circular test: %1</source>
         <translation>Der Kreisformtest kann nicht ausgewertet werden: %1</translation>
     </message>

@@ -1281,11 +1281,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+2"/>
+        <location line="+43"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-43"/>
         <source>identified</source>
         <translation>wyznaczony</translation>
     </message>
@@ -1335,6 +1336,51 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>S&amp;PC</translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>from SPC</source>
+        <translation>z SPC</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>from circular test</source>
+        <translation>z testu kołowego</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>plane</source>
+        <translation>płaszczyzna</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>u axis angle a (°)</source>
+        <translation>kąt osi u a (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>v axis angle b (°)</source>
+        <translation>kąt osi v b (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>squareness b − a (°)</source>
+        <translation>prostopadłość b − a (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>± std. error (°)</source>
+        <translation>± błąd standardowy (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMS (µm)</source>
+        <translation>RMS (µm)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Actuators</source>
+        <translation>&amp;Napędy</translation>
+    </message>
+    <message>
         <location line="+5"/>
         <source>C&amp;ircular test:</source>
         <translation>Test kołow&amp;y:</translation>
@@ -1377,51 +1423,56 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+6"/>
+        <location line="+102"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-100"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+100"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-98"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+98"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-96"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Napęd X porusza się wzdłuż (cos a, sin a); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+96"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-94"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Napęd Y porusza się wzdłuż (-sin b, cos b); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+94"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-92"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Kąt między osiami wynosi 90° + (b − a)</translation>
     </message>
@@ -1482,8 +1533,103 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <source>The kinematics study names no SPC series. Set &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} in the project&apos;s kinematics study.</source>
         <translation>Studium kinematyki nie wskazuje serii SPC. Ustaw &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} w studium kinematyki projektu.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+13"/>
+        <source>compensation applied: %n of 4 line parameters beyond ± k standard errors (k = %1), residuals in control</source>
+        <translation>
+            <numerusform>kompensacja zastosowana: %n z 4 parametrów prostej poza ± k błędów standardowych (k = %1), residua pod kontrolą</numerusform>
+            <numerusform>kompensacja zastosowana: %n z 4 parametrów prostej poza ± k błędów standardowych (k = %1), residua pod kontrolą</numerusform>
+            <numerusform>kompensacja zastosowana: %n z 4 parametrów prostej poza ± k błędów standardowych (k = %1), residua pod kontrolą</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+35"/>
+        <location line="+7"/>
+        <source>not compensated: the residuals about a regression line are out of control (special causes first)</source>
+        <translation>bez kompensacji: residua wokół prostej regresji są poza kontrolą (najpierw usunąć przyczyny specjalne)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not compensated: no slope or intercept beyond ± k standard errors (random scatter)</source>
+        <translation>bez kompensacji: żadne nachylenie ani wyraz wolny nie wykracza poza ± k błędów standardowych (rozrzut losowy)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt; (seed 002): the offset angle of the regression line of the edge along X is the X actuator&apos;s angle a, minus that of the edge along Y is b (Eq. 9), the intercepts give the origin; %1.</source>
+        <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt; (seed 002): kąt przesunięcia prostej regresji krawędzi wzdłuż X jest kątem a napędu X, ujemny kąt krawędzi wzdłuż Y jest kątem b (równ. 9), wyrazy wolne dają początek; %1.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>offset angle, edge along X (°)</source>
+        <translation>kąt przesunięcia, krawędź wzdłuż X (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+4"/>
+        <source>atan(slope) of the deviation against the position (Fig. 10); ± %1°</source>
+        <translation>atan(nachylenia) odchyłki względem położenia (rys. 10); ± %1°</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>offset angle, edge along Y (°)</source>
+        <translation>kąt przesunięcia, krawędź wzdłuż Y (°)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>largest correction (µm)</source>
+        <translation>największa korekta (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest |reference − nominal point| of the Eq. 15 references for the nominal circle</source>
+        <translation>Największe |wartość zadana − punkt nominalny| wartości zadanych wg równ. 15 dla okręgu nominalnego</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>circular test model: before → after (µm)</source>
+        <translation>model testu kołowego: przed → po (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The machine identified from the circular test (an independent estimate) on the nominal circle and on the references derived from SPC: largest distance from the nominal points</source>
+        <translation>Maszyna zidentyfikowana z testu kołowego (niezależna estymacja) na okręgu nominalnym i na wartościach zadanych wyznaczonych z SPC: największa odległość od punktów nominalnych</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: the kinematics study names no edges. Set &quot;from_spc&quot;: {&quot;x_dataset&quot;, &quot;y_dataset&quot;} (CSV position_mm,deviation_mm, e.g. made by metrofit-cli simulate edge) in the project&apos;s kinematics study.</source>
+        <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt;: studium kinematyki nie wskazuje krawędzi. Ustaw &quot;from_spc&quot;: {&quot;x_dataset&quot;, &quot;y_dataset&quot;} (CSV position_mm,deviation_mm, np. z metrofit-cli simulate edge) w studium kinematyki projektu.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: cannot derive the actuator errors:&lt;br&gt;%1</source>
+        <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt;: nie można wyznaczyć błędów napędów:&lt;br&gt;%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&lt;b&gt;Three axes&lt;/b&gt; from circular tests in XY, YZ and ZX: origin (%1, %2, %3) µm ± %4 µm, RMS residual %5 µm, %6 points.</source>
+        <translation>&lt;b&gt;Trzy osie&lt;/b&gt; z testów kołowych w XY, YZ i ZX: początek (%1, %2, %3) µm ± %4 µm, residuum RMS %5 µm, punkty: %6.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>In the plane (u, v) the u actuator moves along (cos a, sin a), the v actuator along (−sin b, cos b); the angle between them is 90° + (b − a)</source>
+        <translation>W płaszczyźnie (u, v) napęd u porusza się wzdłuż (cos a, sin a), napęd v wzdłuż (−sin b, cos b); kąt między nimi wynosi 90° + (b − a)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&lt;b&gt;Three axes&lt;/b&gt;: the kinematics study names no plane tests. Set &quot;planes&quot;: {&quot;xy&quot;, &quot;yz&quot;, &quot;zx&quot;} (circular tests made e.g. by metrofit-cli simulate circular --plane yz) in the project&apos;s kinematics study.</source>
+        <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: studium kinematyki nie wskazuje testów w płaszczyznach. Ustaw &quot;planes&quot;: {&quot;xy&quot;, &quot;yz&quot;, &quot;zx&quot;} (testy kołowe, np. z metrofit-cli simulate circular --plane yz) w studium kinematyki projektu.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&lt;b&gt;Three axes&lt;/b&gt;: cannot identify:&lt;br&gt;%1</source>
+        <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: identyfikacja niemożliwa:&lt;br&gt;%1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>measured (before)</source>
         <translation>zmierzony (przed)</translation>
     </message>
@@ -1543,7 +1689,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Największa |wartość zadana − punkt nominalny|</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+65"/>
         <source>Export compensated path as G-code</source>
         <translation>Eksport skompensowanego toru jako G-code</translation>
     </message>
@@ -2823,7 +2969,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+221"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+224"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>tak</translation>
@@ -2947,11 +3093,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
+        <location line="+223"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-223"/>
         <source>identified</source>
         <translation>zidentyfikowany</translation>
     </message>
@@ -2967,31 +3114,36 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+8"/>
+        <location line="+226"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-224"/>
+        <location line="+226"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-224"/>
+        <location line="+225"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-223"/>
+        <location line="+225"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-223"/>
+        <location line="+225"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-223"/>
         <source>RMS residual (µm)</source>
         <translation>residuum RMS (µm)</translation>
     </message>
@@ -3124,12 +3276,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+61"/>
+        <location line="+149"/>
         <source>in control</source>
         <translation>pod kontrolą</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-147"/>
         <source>σ within (R̄ / d2)</source>
         <translation>σ wewnątrz (R̄ / d2)</translation>
     </message>
@@ -3180,12 +3332,109 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+39"/>
+        <location line="+127"/>
         <source>SPC-gated compensation: %1</source>
         <translation>Kompensacja warunkowana SPC: %1</translation>
     </message>
     <message>
-        <location line="-30"/>
+        <location line="-121"/>
+        <source>From the SPC offset angle to actuator errors</source>
+        <translation>Od kąta przesunięcia SPC do błędów napędów</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The actuator errors could not be derived from the edges: %1</source>
+        <translation>Nie udało się wyznaczyć błędów napędów z krawędzi: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The regression line of the deviation of an edge machined along X against the measured position (%1, Fig. 10, Table 2) has the offset angle atan(slope); by Eq. 9 it is the X actuator&apos;s orientation error a, minus the offset angle of the edge along Y is b, and the two intercepts give the actuator origin (Table 3). A slope or intercept within ± %2 standard errors counts as scatter. The circular test&apos;s identification is an independent estimate of the same errors.</source>
+        <translation>Prosta regresji odchyłki krawędzi obrobionej wzdłuż X względem zmierzonego położenia (%1, rys. 10, tab. 2) ma kąt przesunięcia atan(nachylenia); wg równ. 9 jest to błąd orientacji a napędu X, ujemny kąt krawędzi wzdłuż Y to b, a oba wyrazy wolne dają początek napędów (tab. 3). Nachylenie lub wyraz wolny w granicach ± %2 błędów standardowych uznaje się za rozrzut. Identyfikacja z testu kołowego jest niezależną estymacją tych samych błędów.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>from SPC</source>
+        <translation>z SPC</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>from circular test</source>
+        <translation>z testu kołowego</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>offset angle, edge along X (deg)</source>
+        <translation>kąt przesunięcia, krawędź wzdłuż X (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+4"/>
+        <location line="+52"/>
+        <source>%1 ± %2</source>
+        <translation>%1 ± %2</translation>
+    </message>
+    <message>
+        <location line="-53"/>
+        <source>offset angle, edge along Y (deg)</source>
+        <translation>kąt przesunięcia, krawędź wzdłuż Y (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>systematic error, edge along X / Y (Eq. 20, µm)</source>
+        <translation>błąd systematyczny, krawędź wzdłuż X / Y (równ. 20, µm)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Compensation applied (Eq. 15): the largest correction of the nominal circle is %1 µm; the circular test&apos;s model gives a largest deviation of %2 µm before and %3 µm with the references derived from SPC.</source>
+        <translation>Kompensacja zastosowana (równ. 15): największa korekta okręgu nominalnego wynosi %1 µm; model testu kołowego daje największą odchyłkę %2 µm przed i %3 µm z wartościami zadanymi wyznaczonymi z SPC.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not compensated: %1</source>
+        <translation>Bez kompensacji: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Three axes: circular tests in XY, YZ and ZX</source>
+        <translation>Trzy osie: testy kołowe w XY, YZ i ZX</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The three-axis errors could not be identified: %1</source>
+        <translation>Nie udało się zidentyfikować błędów trzech osi: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The three-axis Cartesian model P = o + [i j k]·Pr (%1, Eq. 9 in three axes) fitted to the three tests together (%2 points, RMS residual %3 µm): origin (%4, %5, %6) µm. In every plane (u, v) the u actuator moves along (cos a, sin a), the v actuator along (−sin b, cos b); squareness b − a.</source>
+        <translation>Trzyosiowy model kartezjański P = o + [i j k]·Pr (%1, równ. 9 dla trzech osi) dopasowany łącznie do trzech testów (punkty: %2, residuum RMS %3 µm): początek (%4, %5, %6) µm. W każdej płaszczyźnie (u, v) napęd u porusza się wzdłuż (cos a, sin a), napęd v wzdłuż (−sin b, cos b); prostopadłość b − a.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>plane</source>
+        <translation>płaszczyzna</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>a (deg)</source>
+        <translation>a (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>b (deg)</source>
+        <translation>b (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>squareness (deg)</source>
+        <translation>prostopadłość (stopnie)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RMS (µm)</source>
+        <translation>RMS (µm)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>Circular test %1: actuator origin offset (%2, %3) µm, squareness error %4°; largest radial deviation %5 µm.</source>
         <translation>Test okrągłości %1: przesunięcie początku napędów (%2, %3) µm, błąd prostopadłości %4°; największe odchylenie promieniowe %5 µm.</translation>
     </message>
@@ -3245,12 +3494,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Cpk %1.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+7"/>
+        <source>From the SPC offset angles: origin (%1, %2) µm, squareness %3°.</source>
+        <translation>Z kątów przesunięcia SPC: początek (%1, %2) µm, prostopadłość %3°.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Squareness XY %1°, YZ %2°, ZX %3° (three-plane circular tests).</source>
+        <translation>Prostopadłość XY %1°, YZ %2°, ZX %3° (testy kołowe w trzech płaszczyznach).</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Kinematic compensation and SPC</source>
         <translation>Kompensacja kinematyczna i SPC</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Cannot analyse the circular test: %1</source>
         <translation>Nie można przeanalizować testu okrągłości: %1</translation>
     </message>

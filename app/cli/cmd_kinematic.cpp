@@ -1,17 +1,32 @@
 // metrofit-cli kinematic identify|compensate (CONTRACT.md; issue 6) and the kinematic simulators.
 //   identify   --data C.csv [--out E.json]
+//   identify3  --xy C1.csv --yz C2.csv --zx C3.csv [--out E3.json]
+//       the three-axis actuator errors from circular tests in three planes (identification3.h)
+//   compensate3 --errors3 E3.json --path N.csv [--out F.csv]
+//       Eq. 15 in three axes: references x_cmd_mm,y_cmd_mm,z_cmd_mm for a nominal path x_mm,y_mm,z_mm
+//   from-spc   --x-data X.csv --y-data Y.csv [--position-column C] [--deviation-column C]
+//              [--x-nominal-y Y0] [--y-nominal-x X0] [--subgroup N] [--coverage K]
+//              [--path N.csv --references F.csv] [--out E.json]
+//       the SPC regression offset angles of two edges -> actuator errors -> compensation
+//       (spc_actuator.h); E.json is readable by `compensate --errors`
 //   compensate --errors E.json --path N.csv [--out F.csv] [--gcode F.nc] [--step-nc F.p21]
 //   simulate circular [--radius R] [--centre X,Y] [--points N] [--start-angle D] [--origin X,Y]
 //                     [--x-angle A] [--y-angle B] [--noise S] [--seed N] [--out C.csv]
 //       a circular test (core/sim/circular_sim.h): one loop CCW, then one CW, through the machine
 //       with the given actuator errors plus noise; CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm.
+//   simulate circular --plane yz|zx [--errors3 E3.json] (or --plane xy --errors3): the same test in
+//                     a plane of the three-axis machine (identification3.h), the plane's columns
+//   simulate edge --axis x|y [--start S] [--length L] [--points N] [--nominal-cross C] [machine
+//                 options] [--out F.csv]: an edge along one axis, CSV position_mm,deviation_mm
 //   simulate bores [--parts N] [same machine options] [--scatter S] [--drift D] [--out B.csv]
 //       an SPC series: the diameters of N bores circle-interpolated on that machine (see runBores).
 #include <CLI/CLI.hpp>
 
 #include <Eigen/Dense>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -32,7 +47,9 @@
 #include "core/kinematics/cartesian_model.h"
 #include "core/kinematics/export.h"
 #include "core/kinematics/identification.h"
+#include "core/kinematics/identification3.h"
 #include "core/kinematics/measured_path.h"
+#include "core/kinematics/spc_actuator.h"
 #include "core/sim/circular_sim.h"
 
 namespace metrofit::cli {
@@ -125,6 +142,107 @@ int runCompensate(const CompensateArgs& a) {
   return 0;
 }
 
+struct Identify3Args {
+  std::string xy, yz, zx, out;
+};
+
+int runIdentify3(const Identify3Args& a) {
+  const std::array<MeasuredPath, 3> tests{readPlanePath(a.xy, TestPlane::XY, csvOptions()),
+                                          readPlanePath(a.yz, TestPlane::YZ, csvOptions()),
+                                          readPlanePath(a.zx, TestPlane::ZX, csvOptions())};
+  const Identify3Result r = identifyActuatorErrors3(tests);
+  if (r.run.termination == Termination::Failed) {
+    throw std::runtime_error("three-plane identification failed: " + r.run.message);
+  }
+  writeResult(a.out, dumpJson(identify3ResultToJson(r)));
+  const ActuatorErrors3& e = r.errors;
+  std::fprintf(stderr,
+               "kinematic identify3: %zu points in 3 planes, origin (%s, %s, %s) mm, squareness xy %s deg, "
+               "yz %s deg, zx %s deg, rmse %s mm, %ld iteration%s (%s)\n",
+               r.points, g(e.originMm.x()).c_str(), g(e.originMm.y()).c_str(), g(e.originMm.z()).c_str(),
+               g(e.squarenessDeg(TestPlane::XY)).c_str(), g(e.squarenessDeg(TestPlane::YZ)).c_str(),
+               g(e.squarenessDeg(TestPlane::ZX)).c_str(), g(r.rmseMm, "%.3g").c_str(), r.run.iterations,
+               r.run.iterations == 1 ? "" : "s", toString(r.run.termination));
+  return 0;
+}
+
+struct Compensate3Args {
+  std::string errors3, path, out;
+};
+
+int runCompensate3(const Compensate3Args& a) {
+  const ActuatorErrors3 errors = readActuatorErrors3(a.errors3);
+  const std::vector<Eigen::Vector3d> nominal = nominalPath3FromCsv(readCsvFile(a.path, csvOptions()));
+  const auto commands = compensatePath3(errors, nominal);
+  writeResult(a.out, commandPath3ToCsv(commands));
+  double largest = 0.0;
+  for (std::size_t i = 0; i < commands.size(); ++i)
+    largest = std::max(largest, (commands[i] - nominal[i]).norm());
+  std::fprintf(
+      stderr,
+      "kinematic compensate3: %zu points of %s, largest correction %s mm (squareness xy %s, yz %s, zx %s "
+      "deg)\n",
+      commands.size(), a.path.c_str(), g(largest, "%.4g").c_str(),
+      g(errors.squarenessDeg(TestPlane::XY)).c_str(), g(errors.squarenessDeg(TestPlane::YZ)).c_str(),
+      g(errors.squarenessDeg(TestPlane::ZX)).c_str());
+  return 0;
+}
+
+struct FromSpcArgs {
+  std::string xData, yData, positionColumn = "position_mm", deviationColumn = "deviation_mm";
+  double xNominalY = 0.0, yNominalX = 0.0;
+  int subgroup = 5;
+  double coverage = 2.0;
+  std::string path, references, out;
+};
+
+int runFromSpc(const FromSpcArgs& a) {
+  if (a.references.empty() != a.path.empty()) {
+    throw ValidationError(ErrorContext{{}, 0, 0, a.path.empty() ? "--path" : "--references"},
+                          "missing: give --path and --references together (the nominal path and where its "
+                          "compensated references go)");
+  }
+  AxisFeatureSeries xf =
+      axisFeatureFromCsv(readCsvFile(a.xData, csvOptions()), a.positionColumn, a.deviationColumn);
+  AxisFeatureSeries yf =
+      axisFeatureFromCsv(readCsvFile(a.yData, csvOptions()), a.positionColumn, a.deviationColumn);
+  xf.nominalCrossMm = a.xNominalY;
+  yf.nominalCrossMm = a.yNominalX;
+  SpcActuatorOptions o;
+  o.subgroupSize = a.subgroup;
+  o.coverageFactor = a.coverage;
+  std::string why;
+  if (!o.isValid(&why)) throw OptionsError(ErrorContext{{}, 0, 0, "--subgroup"}, why);
+  const SpcActuatorResult r = actuatorErrorsFromSpc(xf, yf, o);
+  nlohmann::json j = spcActuatorResultToJson(r, xf, yf);
+
+  std::string refs;
+  double largest = 0.0;
+  if (!a.path.empty()) {
+    const NominalPath nominal = readNominalPath(a.path, csvOptions());
+    const auto commands =
+        r.apply ? compensatePath(CartesianMachine2::fromErrors(r.errors), nominal.points) : nominal.points;
+    for (std::size_t i = 0; i < commands.size(); ++i) {
+      largest = std::max(largest, (commands[i] - nominal.points[i]).norm());
+    }
+    refs = commandPathToCsv(commands);
+    j["compensation"]["path"] = a.path;
+    j["compensation"]["references"] = a.references;
+    j["compensation"]["largest_correction_mm"] = largest;
+  }
+  if (!a.references.empty()) writeFileAtomic(a.references, refs);
+  writeResult(a.out, dumpJson(j));
+  const ActuatorErrors2& e = r.errors;
+  std::fprintf(
+      stderr,
+      "kinematic from-spc: offset angles X %s deg, Y %s deg -> origin (%s, %s) mm, a = %s deg, b = %s "
+      "deg, squareness %s deg; %s\n",
+      g(r.x.line.angleDeg).c_str(), g(r.y.line.angleDeg).c_str(), g(e.originMm.x()).c_str(),
+      g(e.originMm.y()).c_str(), g(e.xAxisAngleDeg).c_str(), g(e.yAxisAngleDeg).c_str(),
+      g(e.squarenessDeg()).c_str(), r.reason.c_str());
+  return 0;
+}
+
 /// The machine and test options shared by `simulate circular` and `simulate bores`.
 struct CircularArgs {
   std::string out;
@@ -137,6 +255,15 @@ struct CircularArgs {
   double yAngle = CircularSimOptions::defaultErrors().yAxisAngleDeg;
   double noise = 0.0005;
   std::uint64_t seed = 1;
+  std::string plane = "xy";  ///< simulate circular only
+  std::string errors3;       ///< simulate circular only: three-axis machine (JSON of identify3)
+};
+
+struct EdgeArgs {
+  CircularArgs machine;
+  std::string axis = "x";
+  double start = -100.0, length = 200.0, nominalCross = 0.0;
+  int points = 50;
 };
 
 struct BoresArgs {
@@ -173,7 +300,35 @@ std::string circularHeader(const char* what, const CircularSimOptions& o) {
   return w.text();
 }
 
+int runCircularPlane(const CircularArgs& a) {
+  const TestPlane plane = a.plane == "yz" ? TestPlane::YZ : a.plane == "zx" ? TestPlane::ZX : TestPlane::XY;
+  const ActuatorErrors3 errors =
+      a.errors3.empty() ? ActuatorErrors3::plausible() : readActuatorErrors3(a.errors3);
+  const CircularSimOptions o = circularOptions(a);
+  const MeasuredPath path = simulatePlaneCircularTest(errors, plane, o);
+  CsvWriter w;
+  w.comment(std::string("metrofit-cli simulate circular --plane ") + planeName(plane) + ": R " +
+            g(o.radiusMm) + " mm about (" + g(o.centreMm.x()) + ", " + g(o.centreMm.y()) +
+            ") mm in the plane, " + std::to_string(o.pointsPerLoop) + " points per loop, start " +
+            g(o.startAngleDeg) + " deg");
+  w.comment("three-axis machine: origin (" + g(errors.originMm.x()) + ", " + g(errors.originMm.y()) + ", " +
+            g(errors.originMm.z()) + ") mm, squareness xy " + g(errors.squarenessDeg(TestPlane::XY)) +
+            " deg, yz " + g(errors.squarenessDeg(TestPlane::YZ)) + " deg, zx " +
+            g(errors.squarenessDeg(TestPlane::ZX)) + " deg; noise " + g(o.noiseMm) +
+            " mm (1 sigma per coordinate); seed " + std::to_string(o.seed));
+  w.comment("one loop counter-clockwise, then one clockwise");
+  writeResult(a.out, w.text() + planePathToCsv(path, plane));
+  std::fprintf(
+      stderr,
+      "simulate circular: %zu points in the %s plane (%d CCW, then %d CW), R %s mm, squareness %s deg, "
+      "noise %s mm, seed %llu\n",
+      path.size(), planeName(plane), o.pointsPerLoop, o.pointsPerLoop, g(o.radiusMm).c_str(),
+      g(errors.squarenessDeg(plane)).c_str(), g(o.noiseMm).c_str(), static_cast<unsigned long long>(o.seed));
+  return 0;
+}
+
 int runCircular(const CircularArgs& a) {
+  if (a.plane != "xy" || !a.errors3.empty()) return runCircularPlane(a);
   const CircularSimOptions o = circularOptions(a);
   const MeasuredPath path = simulateCircularTest(o);
   std::string csv = circularHeader("circular", o);
@@ -186,6 +341,36 @@ int runCircular(const CircularArgs& a) {
                path.size(), o.pointsPerLoop, o.pointsPerLoop, g(o.radiusMm).c_str(),
                g(o.errors.squarenessDeg()).c_str(), g(o.noiseMm).c_str(),
                static_cast<unsigned long long>(o.seed));
+  return 0;
+}
+
+int runEdge(const EdgeArgs& a) {
+  const CircularSimOptions m = circularOptions(a.machine);
+  EdgeSimOptions o;
+  o.axis = a.axis == "y" ? 'y' : 'x';
+  o.startMm = a.start;
+  o.lengthMm = a.length;
+  o.points = a.points;
+  o.nominalCrossMm = a.nominalCross;
+  o.errors = m.errors;
+  o.noiseMm = m.noiseMm;
+  o.seed = m.seed;
+  requireValid(o, "simulate edge");
+  const AxisFeatureSeries f = simulateAxisFeature(o);
+  CsvWriter w;
+  w.comment(std::string("metrofit-cli simulate edge --axis ") + o.axis + ": " + std::to_string(o.points) +
+            " points from " + g(o.startMm) + " mm over " + g(o.lengthMm) +
+            " mm at the nominal cross coordinate " + g(o.nominalCrossMm) + " mm");
+  w.comment("machine: origin (" + g(o.errors.originMm.x()) + ", " + g(o.errors.originMm.y()) +
+            ") mm, x axis " + g(o.errors.xAxisAngleDeg) + " deg, y axis " + g(o.errors.yAxisAngleDeg) +
+            " deg; noise " + g(o.noiseMm) + " mm; seed " + std::to_string(o.seed));
+  w.comment(
+      "position_mm: measured coordinate along the axis; deviation_mm: measured cross coordinate - nominal");
+  writeResult(a.machine.out, w.text() + axisFeatureToCsv(f));
+  std::fprintf(stderr, "simulate edge: %d points along %c, %s axis angle %s deg, noise %s mm, seed %llu\n",
+               o.points, o.axis, o.axis == 'x' ? "x" : "y",
+               g(o.axis == 'x' ? o.errors.xAxisAngleDeg : o.errors.yAxisAngleDeg).c_str(),
+               g(o.noiseMm).c_str(), static_cast<unsigned long long>(o.seed));
   return 0;
 }
 
@@ -240,21 +425,24 @@ int runBores(const BoresArgs& a) {
   return 0;
 }
 
-void addMachineOptions(CLI::App* sub, CircularArgs& a) {
-  sub->add_option("--radius", a.radius, "Radius of the test circle, mm")
-      ->check(CLI::Range(1e-6, 1e6))
-      ->capture_default_str();
-  sub->add_option("--centre", a.centre, "Centre of the circle X,Y, mm")
-      ->expected(2)
-      ->delimiter(',')
-      ->check(CLI::Range(-1e6, 1e6))
-      ->capture_default_str();
-  sub->add_option("--points", a.points, "Points per loop")
-      ->check(CLI::Range(3, 1000000))
-      ->capture_default_str();
-  sub->add_option("--start-angle", a.startAngle, "Angle of the first point, deg")
-      ->check(CLI::Range(-360.0, 360.0))
-      ->capture_default_str();
+/// The machine options; `circle` adds the test circle's (radius, centre, points, start angle).
+void addMachineOptions(CLI::App* sub, CircularArgs& a, bool circle = true) {
+  if (circle) {
+    sub->add_option("--radius", a.radius, "Radius of the test circle, mm")
+        ->check(CLI::Range(1e-6, 1e6))
+        ->capture_default_str();
+    sub->add_option("--centre", a.centre, "Centre of the circle X,Y, mm")
+        ->expected(2)
+        ->delimiter(',')
+        ->check(CLI::Range(-1e6, 1e6))
+        ->capture_default_str();
+    sub->add_option("--points", a.points, "Points per loop")
+        ->check(CLI::Range(3, 1000000))
+        ->capture_default_str();
+    sub->add_option("--start-angle", a.startAngle, "Angle of the first point, deg")
+        ->check(CLI::Range(-360.0, 360.0))
+        ->capture_default_str();
+  }
   const ActuatorErrors2 d = CircularSimOptions::defaultErrors();
   sub->add_option("--origin", a.origin,
                   "Actuator origin error X,Y, mm (where the tool is at command 0). Default: " +
@@ -302,6 +490,60 @@ void registerKinematicCommands(CLI::App& app) {
       ->check(positiveNumber())
       ->capture_default_str();
   comp->callback([b] { selectRunner([b]() -> int { return runCompensate(*b); }); });
+
+  auto c = std::make_shared<Identify3Args>();
+  auto* id3 = kin->add_subcommand(
+      "identify3", "Identify the three-axis actuator errors from circular tests in the XY, YZ and ZX planes");
+  existingFile(id3->add_option("--xy", c->xy, "XY circular test (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm)")
+                   ->required());
+  existingFile(id3->add_option("--yz", c->yz, "YZ circular test (CSV y_cmd_mm,z_cmd_mm,y_meas_mm,z_meas_mm)")
+                   ->required());
+  existingFile(id3->add_option("--zx", c->zx, "ZX circular test (CSV z_cmd_mm,x_cmd_mm,z_meas_mm,x_meas_mm)")
+                   ->required());
+  addCsvOptions(id3);
+  addOut(id3, c->out);
+  id3->callback([c] { selectRunner([c]() -> int { return runIdentify3(*c); }); });
+
+  auto c3 = std::make_shared<Compensate3Args>();
+  auto* comp3 = kin->add_subcommand(
+      "compensate3",
+      "Compensated references in three axes for a nominal path, from the errors identify3 wrote");
+  existingFile(comp3->add_option("--errors3", c3->errors3, "Three-axis errors (JSON written by identify3)")
+                   ->required());
+  existingFile(comp3->add_option("--path", c3->path, "Nominal path (CSV x_mm,y_mm,z_mm)")->required());
+  addCsvOptions(comp3);
+  comp3->add_option("--out", c3->out,
+                    "Compensated references (CSV x_cmd_mm,y_cmd_mm,z_cmd_mm; atomic). Default: stdout");
+  comp3->callback([c3] { selectRunner([c3]() -> int { return runCompensate3(*c3); }); });
+
+  auto d = std::make_shared<FromSpcArgs>();
+  auto* fs = kin->add_subcommand(
+      "from-spc",
+      "Actuator errors from the SPC regression offset angles of an edge along X and one along Y, and their "
+      "compensation (seed 002)");
+  existingFile(fs->add_option("--x-data", d->xData, "Edge machined along X (CSV position_mm,deviation_mm)")
+                   ->required());
+  existingFile(fs->add_option("--y-data", d->yData, "Edge machined along Y (CSV position_mm,deviation_mm)")
+                   ->required());
+  fs->add_option("--position-column", d->positionColumn, "Column of the measured position along the axis, mm")
+      ->capture_default_str();
+  fs->add_option("--deviation-column", d->deviationColumn,
+                 "Column of the measured deviation across the axis (measured - nominal), mm")
+      ->capture_default_str();
+  fs->add_option("--x-nominal-y", d->xNominalY, "Nominal Y of the X edge, mm")->capture_default_str();
+  fs->add_option("--y-nominal-x", d->yNominalX, "Nominal X of the Y edge, mm")->capture_default_str();
+  fs->add_option("--subgroup", d->subgroup, "Subgroup size of the residual X-bar/R chart (2..25)")
+      ->check(CLI::Range(2, 25))
+      ->capture_default_str();
+  fs->add_option("--coverage", d->coverage, "Coverage factor k: a slope or intercept counts beyond +-k se")
+      ->check(positiveNumber())
+      ->capture_default_str();
+  existingFile(fs->add_option("--path", d->path, "Nominal path to compensate (CSV x_mm,y_mm)"));
+  fs->add_option("--references", d->references,
+                 "Compensated references of --path (CSV x_cmd_mm,y_cmd_mm; atomic)");
+  addCsvOptions(fs);
+  addOut(fs, d->out);
+  fs->callback([d] { selectRunner([d]() -> int { return runFromSpc(*d); }); });
 }
 
 void registerSimulateKinematicCommands(CLI::App& simulate) {
@@ -311,6 +553,12 @@ void registerSimulateKinematicCommands(CLI::App& simulate) {
       "A circular test on a Cartesian machine with actuator errors: one loop CCW, then one CW "
       "(CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm)");
   addMachineOptions(circ, *a);
+  circ->add_option("--plane", a->plane, "Plane of the test on the three-axis machine: xy, yz or zx")
+      ->check(CLI::IsMember({"xy", "yz", "zx"}))
+      ->capture_default_str();
+  existingFile(circ->add_option(
+      "--errors3", a->errors3,
+      "Three-axis machine (JSON as identify3 writes). Default with --plane yz|zx: a plausible machine"));
   circ->add_option("--out", a->out, "Circular test (CSV; written atomically). Default: stdout");
   circ->callback([a] { selectRunner([a]() -> int { return runCircular(*a); }); });
 
@@ -333,6 +581,31 @@ void registerSimulateKinematicCommands(CLI::App& simulate) {
       ->capture_default_str();
   bores->add_option("--out", b->machine.out, "Bore series (CSV; written atomically). Default: stdout");
   bores->callback([b] { selectRunner([b]() -> int { return runBores(*b); }); });
+
+  auto e = std::make_shared<EdgeArgs>();
+  auto* edge = simulate.add_subcommand(
+      "edge",
+      "An edge machined along X or Y on that machine and measured: the feature series of kinematic from-spc "
+      "(CSV position_mm,deviation_mm)");
+  addMachineOptions(edge, e->machine, false);
+  edge->add_option("--axis", e->axis, "Axis the edge runs along: x or y")
+      ->check(CLI::IsMember({"x", "y"}))
+      ->capture_default_str();
+  edge->add_option("--start", e->start, "Commanded start of the edge along the axis, mm")
+      ->check(CLI::Range(-1e6, 1e6))
+      ->capture_default_str();
+  edge->add_option("--length", e->length, "Length of the edge, mm")
+      ->check(CLI::Range(1e-6, 1e6))
+      ->capture_default_str();
+  edge->add_option("--points", e->points, "Measured points along the edge")
+      ->check(CLI::Range(3, 1000000))
+      ->capture_default_str();
+  edge->add_option("--nominal-cross", e->nominalCross,
+                   "Nominal cross coordinate of the edge (Y for x, X for y), mm")
+      ->check(CLI::Range(-1e6, 1e6))
+      ->capture_default_str();
+  edge->add_option("--out", e->machine.out, "Edge series (CSV; written atomically). Default: stdout");
+  edge->callback([e] { selectRunner([e]() -> int { return runEdge(*e); }); });
 }
 
 }  // namespace metrofit::cli

@@ -216,6 +216,28 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   pathTab->setSizes({330, 360, 360});
   tabs_->addTab(pathTab, tr("&Path"));
   tabs_->addTab(spc_, tr("S&PC"));
+
+  auto* actuators = new QWidget(this);
+  auto* actLayout = new QVBoxLayout(actuators);
+  fromSpcLabel_ = new QLabel(actuators);
+  fromSpcLabel_->setObjectName(QStringLiteral("fromSpcLabel"));
+  fromSpcLabel_->setWordWrap(true);
+  fromSpcLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  fromSpcTable_ = makeTable(actuators, {tr("error"), tr("from SPC"), tr("from circular test")},
+                            QStringLiteral("fromSpcTable"));
+  threeAxisLabel_ = new QLabel(actuators);
+  threeAxisLabel_->setObjectName(QStringLiteral("threeAxisLabel"));
+  threeAxisLabel_->setWordWrap(true);
+  threeAxisLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  threeAxisTable_ = makeTable(actuators,
+                              {tr("plane"), tr("u axis angle a (°)"), tr("v axis angle b (°)"),
+                               tr("squareness b − a (°)"), tr("± std. error (°)"), tr("RMS (µm)")},
+                              QStringLiteral("threeAxisTable"));
+  actLayout->addWidget(fromSpcLabel_);
+  actLayout->addWidget(fromSpcTable_, 4);
+  actLayout->addWidget(threeAxisLabel_);
+  actLayout->addWidget(threeAxisTable_, 1);
+  tabs_->addTab(actuators, tr("&Actuators"));
   stack_->addWidget(tabs_);
   stack_->addWidget(message_);
 
@@ -437,7 +459,103 @@ void KinematicsPage::showStudy() {
         tr("The kinematics study names no SPC series. Set \"spc\": {\"dataset\", \"column\", \"subgroup\", "
            "\"lsl\", \"usl\", \"nominal\"} in the project's kinematics study."));
   }
+  showActuators();
   stack_->setCurrentWidget(tabs_);
+}
+
+void KinematicsPage::showActuators() {
+  const KinematicStudyData& s = *study_;
+  const IdentifyResult& id = s.identification;
+  if (s.fromSpc) {
+    const SpcActuatorResult& r = *s.fromSpc;
+    const QString verdict =
+        r.apply ? tr("compensation applied: %n of 4 line parameters beyond ± k standard errors "
+                     "(k = %1), residuals in control",
+                     nullptr,
+                     int(r.x.slopeSignificant) + int(r.y.slopeSignificant) + int(r.x.interceptSignificant) +
+                         int(r.y.interceptSignificant))
+                      .arg(QLocale().toString(r.options.coverageFactor))
+                : (r.reason.rfind("not compensated: the residuals", 0) == 0
+                       ? tr("not compensated: the residuals about a regression line are out "
+                            "of control (special causes first)")
+                       : tr("not compensated: no slope or intercept beyond ± k standard "
+                            "errors (random scatter)"));
+    fromSpcLabel_->setText(
+        tr("<b>From SPC to compensation</b> (seed 002): the offset angle of the regression line of the edge "
+           "along X is the X actuator's angle a, minus that of the edge along Y is b (Eq. 9), the intercepts "
+           "give the origin; %1.")
+            .arg(verdict.toHtmlEscaped()));
+    fromSpcTable_->setVisible(true);
+    fromSpcTable_->setRowCount(9);
+    int row = 0;
+    setRow(fromSpcTable_, row++,
+           {tr("offset angle, edge along X (°)"), deg(r.x.line.angleDeg), QStringLiteral("—")},
+           tr("atan(slope) of the deviation against the position (Fig. 10); ± %1°")
+               .arg(deg(r.x.line.slopeStdErr * 180.0 / 3.141592653589793)));
+    setRow(fromSpcTable_, row++,
+           {tr("offset angle, edge along Y (°)"), deg(r.y.line.angleDeg), QStringLiteral("—")},
+           tr("atan(slope) of the deviation against the position (Fig. 10); ± %1°")
+               .arg(deg(r.y.line.slopeStdErr * 180.0 / 3.141592653589793)));
+    setRow(fromSpcTable_, row++,
+           {tr("origin x (µm)"), um(r.errors.originMm.x()), um(id.errors.originMm.x())});
+    setRow(fromSpcTable_, row++,
+           {tr("origin y (µm)"), um(r.errors.originMm.y()), um(id.errors.originMm.y())});
+    setRow(fromSpcTable_, row++,
+           {tr("X axis angle a (deg)"), deg(r.errors.xAxisAngleDeg), deg(id.errors.xAxisAngleDeg)});
+    setRow(fromSpcTable_, row++,
+           {tr("Y axis angle b (deg)"), deg(r.errors.yAxisAngleDeg), deg(id.errors.yAxisAngleDeg)});
+    setRow(fromSpcTable_, row++,
+           {tr("squareness b − a (deg)"), deg(r.errors.squarenessDeg()), deg(id.errors.squarenessDeg())});
+    setRow(fromSpcTable_, row++, {tr("largest correction (µm)"), um(s.fromSpcLargestCorrectionMm), QString()},
+           tr("Largest |reference − nominal point| of the Eq. 15 references for the nominal circle"));
+    setRow(fromSpcTable_, row++,
+           {tr("circular test model: before → after (µm)"),
+            tr("%1 → %2").arg(um(s.fromSpcModelBeforeMm), um(s.fromSpcModelAfterMm)), QString()},
+           tr("The machine identified from the circular test (an independent estimate) on the nominal "
+              "circle and on the references derived from SPC: largest distance from the nominal points"));
+    fitRowsToLabels(fromSpcTable_);
+  } else {
+    fromSpcTable_->setVisible(false);
+    fromSpcLabel_->setText(
+        s.fromSpcError.empty()
+            ? tr("<b>From SPC to compensation</b>: the kinematics study names no edges. Set \"from_spc\": "
+                 "{\"x_dataset\", \"y_dataset\"} (CSV position_mm,deviation_mm, e.g. made by metrofit-cli "
+                 "simulate edge) in the project's kinematics study.")
+            : tr("<b>From SPC to compensation</b>: cannot derive the actuator errors:<br>%1")
+                  .arg(QString::fromStdString(s.fromSpcError).toHtmlEscaped()));
+  }
+
+  if (s.threeAxis) {
+    const Identify3Result& r = *s.threeAxis;
+    const ActuatorErrors3& e = r.errors;
+    threeAxisLabel_->setText(
+        tr("<b>Three axes</b> from circular tests in XY, YZ and ZX: origin (%1, %2, %3) µm ± %4 µm, "
+           "RMS residual %5 µm, %6 points.")
+            .arg(um(e.originMm.x()), um(e.originMm.y()), um(e.originMm.z()),
+                 um(r.standardErrors.originMm.maxCoeff()), um(r.rmseMm))
+            .arg(r.points));
+    threeAxisTable_->setVisible(true);
+    threeAxisTable_->setRowCount(3);
+    for (const TestPlane p : kTestPlanes) {
+      const auto i = static_cast<std::size_t>(p);
+      setRow(
+          threeAxisTable_, static_cast<int>(i),
+          {QString::fromLatin1(planeName(p)).toUpper(), deg(e.uAngleDeg[i]), deg(e.vAngleDeg[i]),
+           deg(e.squarenessDeg(p)), deg(r.squarenessStdErrDeg[i]), um(r.planes[i].rmseMm)},
+          tr("In the plane (u, v) the u actuator moves along (cos a, sin a), the v actuator along (−sin b, "
+             "cos b); the angle between them is 90° + (b − a)"));
+    }
+    fitRowsToLabels(threeAxisTable_);
+  } else {
+    threeAxisTable_->setVisible(false);
+    threeAxisLabel_->setText(
+        s.threeAxisError.empty()
+            ? tr("<b>Three axes</b>: the kinematics study names no plane tests. Set \"planes\": {\"xy\", "
+                 "\"yz\", \"zx\"} (circular tests made e.g. by metrofit-cli simulate circular --plane yz) in "
+                 "the project's kinematics study.")
+            : tr("<b>Three axes</b>: cannot identify:<br>%1")
+                  .arg(QString::fromStdString(s.threeAxisError).toHtmlEscaped()));
+  }
 }
 
 bool KinematicsPage::compensate() {
@@ -501,6 +619,8 @@ void KinematicsPage::showView(const QString& view) {
   if (!study_) identify();
   if (view == QLatin1String("spc")) {
     tabs_->setCurrentIndex(1);
+  } else if (view == QLatin1String("actuators")) {
+    tabs_->setCurrentIndex(2);
   } else {
     tabs_->setCurrentIndex(0);
     if (study_ && !compensation_) compensate();

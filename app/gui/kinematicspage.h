@@ -3,7 +3,10 @@
 // on load (Levenberg-Marquardt of core/kinematics, milliseconds) with the errors and their standard
 // errors; Compensate makes the compensated references for the nominal circle and shows what they
 // give; Export writes them as G-code or STEP-NC. Two views: "path" (path view, polar deviation plot,
-// tables) and "spc" (X-bar / R charts, histogram, indices of the study's feature series).
+// tables), "spc" (X-bar / R charts, histogram, indices of the study's feature series) and
+// "actuators": seed 002's chain from the SPC regression offset angles to actuator errors and their
+// compensation (studies.kinematics.from_spc), and the three-axis errors from circular tests in XY,
+// YZ and ZX (studies.kinematics.planes).
 // Effects applied on the diagnosis page (studies.diagnosis.kinematic.applied) are part of the model
 // (kinematicstudy.h): a line names them, and Apply / undo identifies again.
 #include <QWidget>
@@ -34,7 +37,7 @@ class KinematicsPage : public QWidget {
   explicit KinematicsPage(ProjectDocument* document, QWidget* parent = nullptr);
   ~KinematicsPage() override;
 
-  /// "path" or "spc": switches to that view with results on it (compensates when not done yet).
+  /// "path", "spc" or "actuators": switches to that view with results on it (compensates when not done yet).
   Q_INVOKABLE void showView(const QString& view);
 
   /// Identifies the circular test shown (again). False with errorMessage() when it cannot.
@@ -60,6 +63,12 @@ class KinematicsPage : public QWidget {
   CircularPathView* pathView() const { return path_; }
   PolarDeviationView* polarView() const { return polar_; }
   SpcView* spcView() const { return spc_; }
+  /// The actuators tab: errors derived from SPC (with the circular test's for comparison), and the
+  /// three-axis errors; each table is hidden with a message in its label when not configured.
+  QTableWidget* fromSpcTable() const { return fromSpcTable_; }
+  QTableWidget* threeAxisTable() const { return threeAxisTable_; }
+  QLabel* fromSpcLabel() const { return fromSpcLabel_; }
+  QLabel* threeAxisLabel() const { return threeAxisLabel_; }
   QPushButton* compensateButton() const { return compensateButton_; }
 
  private:
@@ -67,6 +76,7 @@ class KinematicsPage : public QWidget {
   void onDatasetChosen(int index);
   void showStudy();
   void showCompensation();
+  void showActuators();
   void onExportGcode();
   void onExportStepNc();
   void updateButtons();
@@ -83,6 +93,10 @@ class KinematicsPage : public QWidget {
   QTableWidget* errors_;
   QTableWidget* compensationTable_;
   SpcView* spc_;
+  QTableWidget* fromSpcTable_ = nullptr;
+  QTableWidget* threeAxisTable_ = nullptr;
+  QLabel* fromSpcLabel_ = nullptr;
+  QLabel* threeAxisLabel_ = nullptr;
   QPushButton* identifyButton_;
   QPushButton* compensateButton_;
   QPushButton* gcodeButton_;

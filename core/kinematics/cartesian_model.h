@@ -26,7 +26,8 @@
 // Three axes: actuators X, Y, Z with origins Ox, Oy, Oz and unit directions i, j, k, serial chain
 // X -> Y -> Z. Eq. 9 extends to
 //   P = Ox + i Px + (Oy - Ox) + j Py + (Oz - Oy) + k Pz = Oz + [i j k] Pr
-// and Eq. 15 to Pr = [i j k]^-1 (P - Oz).
+// and Eq. 15 to Pr = [i j k]^-1 (P - Oz). identification3.h identifies it from circular tests in the XY,
+// YZ and ZX planes (ActuatorErrors3::machine()).
 #include <string>
 #include <vector>
 

@@ -26,8 +26,16 @@ const Keys kMatchingKeys = {{"dataset", dataset_kind::kProbePoints},
                             {"seed", ""},
                             {"locks", ""},
                             {"machine", ""}};
-const Keys kKinematicsKeys = {
-    {"dataset", dataset_kind::kCircularTest}, {"simulated_machine", ""}, {"spc", ""}};
+const Keys kKinematicsKeys = {{"dataset", dataset_kind::kCircularTest},
+                              {"simulated_machine", ""},
+                              {"spc", ""},
+                              {"from_spc", ""},
+                              {"planes", ""}};
+const Keys kFromSpcKeys = {{"x_dataset", ""},        {"y_dataset", ""},   {"position_column", ""},
+                           {"deviation_column", ""}, {"x_nominal_y", ""}, {"y_nominal_x", ""},
+                           {"subgroup", ""},         {"coverage", ""}};
+/// Any CSV dataset: the YZ and ZX tests have their plane's columns, not a circular_test's.
+const Keys kPlanesKeys = {{"xy", ""}, {"yz", ""}, {"zx", ""}};
 const Keys kSpcKeys = {{"dataset", ""}, {"column", ""},  {"subgroup", ""}, {"lsl", ""},
                        {"usl", ""},     {"nominal", ""}, {"coverage", ""}};
 const Keys kThermalKeys = {{"dataset", dataset_kind::kThermalLog},
@@ -173,6 +181,22 @@ std::vector<StudyIssue> checkStudies(const Project& project) {
       if (s.is_object() && s.contains("spc")) {
         c.block(s["spc"], prefix + ".spc", kSpcKeys);
         if (s["spc"].is_object()) c.text(s["spc"], "column", prefix + ".spc");
+      }
+      if (s.is_object() && s.contains("from_spc")) {
+        c.block(s["from_spc"], prefix + ".from_spc", kFromSpcKeys);
+        if (s["from_spc"].is_object()) {
+          for (const char* key : {"x_dataset", "y_dataset"}) {
+            if (s["from_spc"].contains(key)) c.dataset(s["from_spc"][key], prefix + ".from_spc." + key, "");
+          }
+        }
+      }
+      if (s.is_object() && s.contains("planes")) {
+        c.block(s["planes"], prefix + ".planes", kPlanesKeys);
+        if (s["planes"].is_object()) {
+          for (const char* key : {"xy", "yz", "zx"}) {
+            if (s["planes"].contains(key)) c.dataset(s["planes"][key], prefix + ".planes." + key, "");
+          }
+        }
       }
     } else if (name == study::kThermal) {
       c.block(s, prefix, kThermalKeys);

@@ -5,6 +5,7 @@
 
 #include "core/common/rng.h"
 #include "core/common/run.h"
+#include "core/io/csv.h"
 
 namespace metrofit {
 
@@ -75,6 +76,78 @@ MeasuredPath simulateCircularTest(const CircularSimOptions& o) {
   p.command = circularTestCommands(o);
   p.measured = simulateMachine(o.errors, p.command, o.noiseMm, o.seed);
   return p;
+}
+
+MeasuredPath simulatePlaneCircularTest(const ActuatorErrors3& errors, TestPlane plane,
+                                       const CircularSimOptions& o) {
+  std::string why;
+  if (!errors.isValid(&why)) throw OptionsError(ErrorContext{{}, 0, 0, "three-axis machine"}, why);
+  MeasuredPath p;
+  p.source = std::string("simulated ") + planeName(plane) + " circular test";
+  p.command = circularTestCommands(o);
+  const CartesianMachine3 machine = errors.machine();  // Eq. 9 in three axes
+  const auto ax = planeAxes(plane);
+  Rng rng(o.seed);
+  p.measured.reserve(p.command.size());
+  for (const auto& c : p.command) {
+    Eigen::Vector3d pr = Eigen::Vector3d::Zero();
+    pr(ax[0]) = c.x();
+    pr(ax[1]) = c.y();
+    const Eigen::Vector3d pos = machine.forward(pr);
+    Eigen::Vector2d m(pos(ax[0]), pos(ax[1]));
+    if (o.noiseMm > 0.0) {
+      const double nu = rng.normal(0.0, o.noiseMm);
+      const double nv = rng.normal(0.0, o.noiseMm);
+      m += Eigen::Vector2d(nu, nv);
+    }
+    p.measured.push_back(m);
+  }
+  return p;
+}
+
+bool EdgeSimOptions::isValid(std::string* why) const {
+  auto no = [&](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  if (axis != 'x' && axis != 'y') return no("axis must be x or y");
+  if (!std::isfinite(startMm) || !(lengthMm > 0.0) || !std::isfinite(lengthMm))
+    return no("start must be finite and length positive");
+  if (points < 3 || points > 1000000) return no("points must be between 3 and 1000000");
+  if (!std::isfinite(nominalCrossMm)) return no("nominal cross coordinate must be finite");
+  std::string bad;
+  if (!errors.isValid(&bad)) return no(bad);
+  if (!(noiseMm >= 0.0) || !std::isfinite(noiseMm)) return no("noise must be finite and not negative");
+  return true;
+}
+
+AxisFeatureSeries simulateAxisFeature(const EdgeSimOptions& o) {
+  requireValid(o, "edge simulation");
+  std::vector<Eigen::Vector2d> commands;
+  for (int k = 0; k < o.points; ++k) {
+    const double s = o.startMm + o.lengthMm * k / (o.points - 1);
+    commands.push_back(o.axis == 'x' ? Eigen::Vector2d(s, o.nominalCrossMm)
+                                     : Eigen::Vector2d(o.nominalCrossMm, s));
+  }
+  const auto measured = simulateMachine(o.errors, commands, o.noiseMm, o.seed);
+  AxisFeatureSeries f;
+  f.source = std::string("simulated ") + o.axis + " edge";
+  f.nominalCrossMm = o.nominalCrossMm;
+  const int along = o.axis == 'x' ? 0 : 1;
+  for (const auto& m : measured) {
+    f.positionMm.push_back(m(along));
+    f.deviationMm.push_back(m(1 - along) - o.nominalCrossMm);
+  }
+  return f;
+}
+
+std::string axisFeatureToCsv(const AxisFeatureSeries& f) {
+  CsvWriter w;
+  w.row({"position_mm", "deviation_mm"});
+  for (std::size_t i = 0; i < f.positionMm.size(); ++i) {
+    w.row({CsvWriter::formatNumber(f.positionMm[i]), CsvWriter::formatNumber(f.deviationMm[i])});
+  }
+  return w.text();
 }
 
 }  // namespace metrofit

@@ -18,7 +18,9 @@
 #include <Eigen/Core>
 
 #include "core/kinematics/cartesian_model.h"
+#include "core/kinematics/identification3.h"
 #include "core/kinematics/measured_path.h"
+#include "core/kinematics/spc_actuator.h"
 
 namespace metrofit {
 
@@ -48,5 +50,34 @@ std::vector<Eigen::Vector2d> simulateMachine(const ActuatorErrors2& errors,
 
 /// The whole test: commands and measured positions (source "simulated circular test").
 MeasuredPath simulateCircularTest(const CircularSimOptions& options);
+
+/// A circular test in the XY, YZ or ZX plane of the three-axis machine (identification3.h):
+/// circularTestCommands(options) taken as the plane's (u, v) commands (third coordinate 0), the
+/// machine P = o + [i j k] Pr with `errors` (options.errors is not used), and the measured (u, v)
+/// plus N(0, noise^2) per coordinate drawn from Rng(options.seed). Source "simulated <plane>
+/// circular test".
+MeasuredPath simulatePlaneCircularTest(const ActuatorErrors3& errors, TestPlane plane,
+                                       const CircularSimOptions& options);
+
+/// A straight edge machined along one axis and measured (the feature series of spc_actuator.h):
+/// commands (s_k, c) for axis 'x' or (c, s_k) for 'y', s_k = startMm + lengthMm k / (points - 1),
+/// c = nominalCrossMm, through simulateMachine; position = the measured coordinate along the axis,
+/// deviation = the measured cross coordinate - c.
+struct EdgeSimOptions {
+  char axis = 'x';
+  double startMm = -100.0;
+  double lengthMm = 200.0;
+  int points = 50;
+  double nominalCrossMm = 0.0;
+  ActuatorErrors2 errors = CircularSimOptions::defaultErrors();
+  double noiseMm = 0.0005;
+  std::uint64_t seed = 1;
+
+  bool isValid(std::string* why) const;
+};
+
+AxisFeatureSeries simulateAxisFeature(const EdgeSimOptions& options);
+/// CSV position_mm,deviation_mm.
+std::string axisFeatureToCsv(const AxisFeatureSeries& series);
 
 }  // namespace metrofit

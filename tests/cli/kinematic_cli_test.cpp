@@ -394,6 +394,159 @@ TEST(KinematicCli, SimulateBoresIsTheLeastSquaresDiameterPlusTheToolError) {
   for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(dd[i], 100.0 + 0.002 * static_cast<double>(i), 1e-9) << i;
 }
 
+/// Edge CSV made here from Eq. 9 written out (not the simulator): commands (u, c) along X or (c, u)
+/// along Y on the machine o + x (cos a, sin a) + y (-sin b, cos b), noise-free.
+std::string edgeCsv(char axis, double ox, double oy, double aDeg, double bDeg, int n) {
+  const double a = aDeg * std::numbers::pi / 180.0, b = bDeg * std::numbers::pi / 180.0;
+  std::string csv = "position_mm,deviation_mm\n";
+  for (int k = 0; k < n; ++k) {
+    const double u = -100.0 + 200.0 * k / (n - 1);
+    const double x = axis == 'x' ? u : 0.0, y = axis == 'x' ? 0.0 : u;
+    const double px = ox + x * std::cos(a) - y * std::sin(b), py = oy + x * std::sin(a) + y * std::cos(b);
+    // a tiny deterministic scatter so the residual charts have ranges
+    const double e = 1e-4 * std::sin(1.7 * k * k);
+    char line[96];
+    std::snprintf(line, sizeof line, "%.15g,%.15g\n", axis == 'x' ? px : py, (axis == 'x' ? py : px) + e);
+    csv += line;
+  }
+  return csv;
+}
+
+TEST(KinematicCli, FromSpcTurnsTheOffsetAnglesIntoActuatorErrorsAndReferences) {
+  test::TempDir tmp;
+  test::writeText(tmp.file("ex.csv"), edgeCsv('x', 0.012, -0.008, 0.03, -0.05, 40));
+  test::writeText(tmp.file("ey.csv"), edgeCsv('y', 0.012, -0.008, 0.03, -0.05, 40));
+  test::writeText(tmp.file("n.csv"), circleCsv(36, 50.0));
+  const CliRun r = cli(
+      "kinematic from-spc --x-data ex.csv --y-data ey.csv --path n.csv --references f.csv --out e.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("kinematic from-spc: offset angles X ", 0), 0u) << r.err;
+  const nlohmann::json j = readJsonFile(tmp.file("e.json"));
+  // se of the slope ~ 1e-4 mm / sqrt(Sxx) ~ 1e-6 rad: 1e-3 deg is far outside it
+  EXPECT_NEAR(j["x_axis_angle_deg"].get<double>(), 0.03, 2e-4);
+  EXPECT_NEAR(j["y_axis_angle_deg"].get<double>(), -0.05, 2e-4);
+  EXPECT_NEAR(j["features"]["x"]["offset_angle_deg"].get<double>(), 0.03, 2e-4);
+  EXPECT_NEAR(j["features"]["y"]["offset_angle_deg"].get<double>(), 0.05, 2e-4);
+  EXPECT_NEAR(j["origin_mm"][0].get<double>(), 0.012, 1e-4);
+  EXPECT_NEAR(j["origin_mm"][1].get<double>(), -0.008, 1e-4);
+  EXPECT_NEAR(j["squareness_deg"].get<double>(), -0.08, 3e-4);
+  EXPECT_TRUE(j["compensation"]["apply"].get<bool>()) << j["compensation"]["reason"];
+  // The references put the (test's own) true machine back on the nominal circle.
+  const auto refs = readCsvFile(tmp.file("f.csv"));
+  const auto xc = refs.numericColumn("x_cmd_mm"), yc = refs.numericColumn("y_cmd_mm");
+  ASSERT_EQ(xc.size(), 36u);
+  const double a = 0.03 * std::numbers::pi / 180.0, b = -0.05 * std::numbers::pi / 180.0;
+  for (std::size_t k = 0; k < 36; ++k) {
+    const double t = 2.0 * std::numbers::pi * static_cast<double>(k) / 36.0;
+    const double px = 0.012 + xc[k] * std::cos(a) - yc[k] * std::sin(b);
+    const double py = -0.008 + xc[k] * std::sin(a) + yc[k] * std::cos(b);
+    EXPECT_NEAR(std::hypot(px - 50.0 * std::cos(t), py - 50.0 * std::sin(t)), 0.0, 2e-4) << k;
+  }
+  // The chain goes on: compensate reads the from-spc JSON as identify's.
+  test::writeText(tmp.file("n.csv"), circleCsv(36, 50.0));
+  const CliRun c = cli("kinematic compensate --errors e.json --path n.csv --out g.csv", tmp);
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_EQ(test::readText(tmp.file("g.csv")), test::readText(tmp.file("f.csv")));
+}
+
+TEST(KinematicCli, FromSpcBadInputExits2WithOneLine) {
+  test::TempDir tmp;
+  test::writeText(tmp.file("ex.csv"), edgeCsv('x', 0.0, 0.0, 0.01, 0.0, 20));
+  test::writeText(tmp.file("ey.csv"), edgeCsv('y', 0.0, 0.0, 0.01, 0.0, 20));
+  test::writeText(tmp.file("bad.csv"), "pos,dev\n1,2\n3,4\n5,6\n");
+  test::writeText(tmp.file("n.csv"), circleCsv(8, 10.0));
+  expectBadInput("kinematic from-spc --x-data ex.csv --y-data bad.csv",
+                 "bad.csv: field 'position_mm': missing column (the file has: pos, dev)", tmp);
+  expectBadInput("kinematic from-spc --x-data ex.csv --y-data ey.csv --path n.csv",
+                 "field '--references': missing: give --path and --references together (the nominal path and "
+                 "where its compensated references go)",
+                 tmp);
+  test::writeText(tmp.file("two.csv"), "position_mm,deviation_mm\n1,0\n2,0\n");
+  expectBadInput(
+      "kinematic from-spc --x-data two.csv --y-data ey.csv",
+      "two.csv: the X feature has 2 points, at least 3 are needed for a regression line with a scatter", tmp);
+  test::writeText(tmp.file("nan.csv"), "position_mm,deviation_mm\n1,0\n2,x\n3,0\n");
+  const CliRun r = cli("kinematic from-spc --x-data nan.csv --y-data ey.csv", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("nan.csv:3"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("deviation_mm"), std::string::npos) << r.err;
+}
+
+TEST(KinematicCli, Identify3RecoversTheSimulatedThreeAxisMachine) {
+  test::TempDir tmp;
+  ASSERT_EQ(cli("simulate circular --plane xy --errors3 e3in.json --out xy.csv", tmp).code,
+            2);  // no file yet
+  test::writeText(tmp.file("e3in.json"), R"({"origin_mm": [0.01, -0.02, 0.03],
+    "planes": {"xy": {"x_axis_angle_deg": 0.002, "y_axis_angle_deg": -0.003},
+               "yz": {"y_axis_angle_deg": 0.004, "z_axis_angle_deg": 0.001},
+               "zx": {"z_axis_angle_deg": -0.002, "x_axis_angle_deg": 0.005}}})");
+  ASSERT_EQ(cli("simulate circular --plane xy --errors3 e3in.json --seed 1 --out xy.csv", tmp).code, 0);
+  ASSERT_EQ(cli("simulate circular --plane yz --errors3 e3in.json --seed 2 --out yz.csv", tmp).code, 0);
+  ASSERT_EQ(cli("simulate circular --plane zx --errors3 e3in.json --seed 3 --out zx.csv", tmp).code, 0);
+  EXPECT_NE(test::readText(tmp.file("yz.csv")).find("\ny_cmd_mm,z_cmd_mm,y_meas_mm,z_meas_mm\n"),
+            std::string::npos);
+  EXPECT_NE(test::readText(tmp.file("zx.csv")).find("\nz_cmd_mm,x_cmd_mm,z_meas_mm,x_meas_mm\n"),
+            std::string::npos);
+  const CliRun r = cli("kinematic identify3 --xy xy.csv --yz yz.csv --zx zx.csv --out e3.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("kinematic identify3: 2160 points in 3 planes", 0), 0u) << r.err;
+  const nlohmann::json j = readJsonFile(tmp.file("e3.json"));
+  // 0.5 um noise, R 100 mm, 720 points per plane: se ~ 2e-5 deg for the angles, ~3e-5 mm for the origin.
+  EXPECT_NEAR(j["origin_mm"][0].get<double>(), 0.01, 2e-4);
+  EXPECT_NEAR(j["origin_mm"][1].get<double>(), -0.02, 2e-4);
+  EXPECT_NEAR(j["origin_mm"][2].get<double>(), 0.03, 2e-4);
+  EXPECT_NEAR(j["squareness_deg"]["xy"].get<double>(), -0.005, 1.5e-4);
+  EXPECT_NEAR(j["squareness_deg"]["yz"].get<double>(), -0.003, 1.5e-4);
+  EXPECT_NEAR(j["squareness_deg"]["zx"].get<double>(), 0.007, 1.5e-4);
+  EXPECT_NEAR(j["planes"]["zx"]["x_axis_angle_deg"].get<double>(), 0.005, 1.5e-4);
+  EXPECT_NEAR(j["planes"]["yz"]["z_axis_angle_deg"].get<double>(), 0.001, 1.5e-4);
+  EXPECT_EQ(j["termination"], "converged");
+  // The identified machine simulates again (identify3's JSON is --errors3's input).
+  EXPECT_EQ(cli("simulate circular --plane yz --errors3 e3.json --out again.csv", tmp).code, 0);
+  // ... and compensates in three axes: the references, run through the true machine (written here from
+  // the injected projection angles), land on the nominal points within the identification's scatter.
+  test::writeText(tmp.file("n3.csv"), "x_mm,y_mm,z_mm\n100,0,0\n0,100,0\n0,0,100\n50,-50,80\n");
+  const CliRun c = cli("kinematic compensate3 --errors3 e3.json --path n3.csv --out f3.csv", tmp);
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_EQ(c.err.rfind("kinematic compensate3: 4 points of n3.csv, largest correction ", 0), 0u) << c.err;
+  const auto f = readCsvFile(tmp.file("f3.csv"));
+  const auto xs = f.numericColumn("x_cmd_mm"), ys = f.numericColumn("y_cmd_mm"),
+             zs = f.numericColumn("z_cmd_mm");
+  const double d = std::numbers::pi / 180.0;
+  const Eigen::Vector3d i = Eigen::Vector3d(1.0, std::tan(0.002 * d), -std::tan(0.005 * d)).normalized();
+  const Eigen::Vector3d jj = Eigen::Vector3d(std::tan(0.003 * d), 1.0, std::tan(0.004 * d)).normalized();
+  const Eigen::Vector3d k = Eigen::Vector3d(std::tan(-0.002 * d), -std::tan(0.001 * d), 1.0).normalized();
+  const Eigen::Vector3d o(0.01, -0.02, 0.03);
+  const Eigen::Vector3d nominal[4] = {{100, 0, 0}, {0, 100, 0}, {0, 0, 100}, {50, -50, 80}};
+  for (std::size_t n = 0; n < 4; ++n) {
+    const Eigen::Vector3d p = o + i * xs[n] + jj * ys[n] + k * zs[n];
+    EXPECT_LT((p - nominal[n]).norm(), 5e-4) << n;  // identified within ~1e-4 deg, 0.1 um
+    EXPECT_GT((o + i * 100.0 - Eigen::Vector3d(100, 0, 0)).norm(), 0.02);  // uncompensated: > 20 um
+  }
+}
+
+TEST(KinematicCli, Identify3BadInputExits2WithOneLine) {
+  test::TempDir tmp;
+  ASSERT_EQ(cli("simulate circular --plane xy --out xy.csv", tmp).code, 0);
+  ASSERT_EQ(cli("simulate circular --plane yz --out yz.csv", tmp).code, 0);
+  ASSERT_EQ(cli("simulate circular --plane zx --out zx.csv", tmp).code, 0);
+  expectBadInput("kinematic identify3 --xy xy.csv --yz yz.csv",
+                 "--zx is required (see metrofit-cli kinematic identify3 --help)", tmp);
+  expectBadInput(
+      "kinematic identify3 --xy xy.csv --yz xy.csv --zx zx.csv",
+      "xy.csv: field 'z_cmd_mm': missing column (the file has: x_cmd_mm, y_cmd_mm, x_meas_mm, y_meas_mm)",
+      tmp);
+  expectBadInput(
+      "kinematic identify3 --xy xy.csv --yz yz.csv --zx yz.csv",
+      "yz.csv: field 'x_cmd_mm': missing column (the file has: y_cmd_mm, z_cmd_mm, y_meas_mm, z_meas_mm)",
+      tmp);
+  expectBadInput("simulate circular --plane xz --out p.csv",
+                 "--plane: xz not in {xy,yz,zx} (see metrofit-cli simulate circular --help)", tmp);
+}
+
 TEST(KinematicCli, DemoDataIsWhatTheDocumentedCommandsWrite) {
   test::TempDir tmp;
   ASSERT_EQ(cli(std::string(kDemoCircular) + " --out c.csv", tmp).code, 0);

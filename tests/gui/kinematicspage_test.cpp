@@ -26,6 +26,13 @@
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/kinematics/kinematicsviews.h"
+#include "widgets/report/report.h"
+
+#include <QProcess>
+#include <fstream>
+
+#include "core/project/project.h"
+#include "core/sim/circular_sim.h"
 
 namespace metrofit {
 namespace {
@@ -156,6 +163,138 @@ TEST(KinematicsPageEmpty, ProjectWithoutCircularTestShowsAMessage) {
   EXPECT_FALSE(page.compensateButton()->isEnabled());
   EXPECT_FALSE(page.compensate());
   page.showView(QStringLiteral("path"));  // no crash
+}
+
+/// The demo extended by seed 002's chain: edges along X and Y machined on the demo's simulated
+/// machine (origin (4, -3) um, a = 0.01 deg, b = -0.02 deg; 0.5 um noise) and circular tests in
+/// XY, YZ and ZX of a three-axis machine with known squareness.
+class KinematicsActuatorsTest : public ::testing::Test {
+ protected:
+  static ActuatorErrors3 machine3() {
+    ActuatorErrors3 e;
+    e.originMm = Eigen::Vector3d(0.006, -0.004, 0.003);
+    e.uAngleDeg = {0.002, -0.001, 0.0015};
+    e.vAngleDeg = {-0.003, 0.002, -0.0025};
+    return e;
+  }
+
+  void SetUp() override {
+    ASSERT_TRUE(dir_.isValid());
+    projectPath_ = extractDemoProject(dir_.path());
+    const QDir d(dir_.path());
+    ActuatorErrors2 demo;
+    demo.originMm = Eigen::Vector2d(0.004, -0.003);
+    demo.xAxisAngleDeg = 0.01;
+    demo.yAxisAngleDeg = -0.02;
+    for (const char axis : {'x', 'y'}) {
+      EdgeSimOptions o;
+      o.axis = axis;
+      o.errors = demo;
+      o.seed = axis == 'x' ? 13 : 14;  // (seed 12's Y edge raises a 3-sigma false alarm, ~1 in 10)
+      std::ofstream(d.filePath(QStringLiteral("edge_%1.csv").arg(QLatin1Char(axis))).toStdString())
+          << axisFeatureToCsv(simulateAxisFeature(o));
+    }
+    for (const TestPlane p : kTestPlanes) {
+      CircularSimOptions o;
+      o.seed = 20 + static_cast<int>(p);
+      std::ofstream(d.filePath(QStringLiteral("plane_%1.csv").arg(QLatin1String(planeName(p)))).toStdString())
+          << planePathToCsv(simulatePlaneCircularTest(machine3(), p, o), p);
+    }
+    Project project = loadProject(projectPath_.toStdString());
+    project.datasets.push_back(
+        {"edge_x", dataset_kind::kFeatureSeries, "edge_x.csv", "Edge along X", "", {}});
+    project.datasets.push_back(
+        {"edge_y", dataset_kind::kFeatureSeries, "edge_y.csv", "Edge along Y", "", {}});
+    for (const TestPlane p : kTestPlanes) {
+      const std::string n = planeName(p);
+      project.datasets.push_back(
+          {"plane_" + n, dataset_kind::kFeatureSeries, "plane_" + n + ".csv", "", "", {}});
+    }
+    project.studies["kinematics"]["from_spc"] = {{"x_dataset", "edge_x"}, {"y_dataset", "edge_y"}};
+    project.studies["kinematics"]["planes"] = {{"xy", "plane_xy"}, {"yz", "plane_yz"}, {"zx", "plane_zx"}};
+    saveProject(project, projectPath_.toStdString());
+    doc_.load(projectPath_);
+  }
+
+  QTemporaryDir dir_;
+  QString projectPath_;
+  ProjectDocument doc_;
+};
+
+TEST_F(KinematicsActuatorsTest, PageShowsTheErrorsDerivedFromSpcAndTheThreeAxes) {
+  KinematicsPage page(&doc_);
+  page.resize(1150, 720);
+  page.showView(QStringLiteral("actuators"));
+  EXPECT_EQ(page.tabs()->currentIndex(), 2);
+  const KinematicStudyData* s = page.study();
+  ASSERT_NE(s, nullptr);
+  ASSERT_TRUE(s->fromSpc.has_value()) << s->fromSpcError;
+  ASSERT_TRUE(s->threeAxis.has_value()) << s->threeAxisError;
+  const SpcActuatorResult& r = *s->fromSpc;
+  // The injected errors; the offset angles' se is ~7e-5 deg (0.5 um over 200 mm), the origin's ~0.1 um.
+  EXPECT_NEAR(r.errors.xAxisAngleDeg, 0.01, 5e-4);
+  EXPECT_NEAR(r.errors.yAxisAngleDeg, -0.02, 5e-4);
+  EXPECT_NEAR(r.errors.originMm.x(), 0.004, 5e-4);
+  EXPECT_NEAR(r.errors.originMm.y(), -0.003, 5e-4);
+  // ... and the circular test, an independent estimate of the same machine, agrees.
+  EXPECT_NEAR(r.errors.squarenessDeg(), s->identification.errors.squarenessDeg(), 1e-3);
+  // The references derived from SPC, run through the circular test's model, nearly reach the circle.
+  EXPECT_GT(s->fromSpcModelBeforeMm, 0.02);
+  EXPECT_LT(s->fromSpcModelAfterMm, 0.003);
+
+  QTableWidget* t = page.fromSpcTable();
+  EXPECT_FALSE(t->isHidden());
+  ASSERT_EQ(t->rowCount(), 9);
+  EXPECT_EQ(t->item(0, 1)->text(), QString::number(r.x.line.angleDeg, 'f', 6));
+  EXPECT_EQ(t->item(4, 0)->text(), QStringLiteral("X axis angle a (deg)"));
+  EXPECT_EQ(t->item(4, 1)->text(), QString::number(r.errors.xAxisAngleDeg, 'f', 6));
+  EXPECT_EQ(t->item(4, 2)->text(), QString::number(s->identification.errors.xAxisAngleDeg, 'f', 6));
+  EXPECT_TRUE(page.fromSpcLabel()->text().contains(QStringLiteral("compensation applied")))
+      << page.fromSpcLabel()->text().toStdString();
+
+  QTableWidget* t3 = page.threeAxisTable();
+  EXPECT_FALSE(t3->isHidden());
+  ASSERT_EQ(t3->rowCount(), 3);
+  const ActuatorErrors3 truth = machine3();
+  for (const TestPlane p : kTestPlanes) {
+    const int row = static_cast<int>(p);
+    EXPECT_EQ(t3->item(row, 0)->text(), QString::fromLatin1(planeName(p)).toUpper());
+    EXPECT_NEAR(t3->item(row, 3)->text().toDouble(), truth.squarenessDeg(p), 1.5e-4) << planeName(p);
+  }
+  save(page, "kinematics_actuators.png");
+}
+
+TEST_F(KinematicsActuatorsTest, UnconfiguredStudySaysHowToConfigureIt) {
+  Project project = loadProject(projectPath_.toStdString());
+  project.studies["kinematics"].erase("from_spc");
+  project.studies["kinematics"]["planes"]["yz"] = "plane_xy";  // XY columns where YZ ones belong
+  saveProject(project, projectPath_.toStdString());
+  ProjectDocument doc;
+  doc.load(projectPath_);
+  KinematicsPage page(&doc);
+  ASSERT_NE(page.study(), nullptr);
+  EXPECT_TRUE(page.fromSpcTable()->isHidden());
+  EXPECT_TRUE(page.fromSpcLabel()->text().contains(QStringLiteral("from_spc")));
+  EXPECT_TRUE(page.threeAxisTable()->isHidden());
+  EXPECT_TRUE(page.threeAxisLabel()->text().contains(QStringLiteral("y_cmd_mm")))
+      << page.threeAxisLabel()->text().toStdString();
+}
+
+TEST_F(KinematicsActuatorsTest, ReportStatesTheChainAndTheThreeAxes) {
+  const QString pdf = QDir(dir_.path()).filePath(QStringLiteral("r.pdf"));
+  ReportOptions o;
+  o.projectPath = projectPath_;
+  o.resolutionDpi = 100;
+  writeReport(loadProject(projectPath_.toStdString()), pdf, o);
+  QProcess p;
+  p.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+  ASSERT_TRUE(p.waitForFinished(60000));
+  const QString text = QString::fromUtf8(p.readAllStandardOutput()).simplified();
+  EXPECT_TRUE(text.contains(QStringLiteral("From the SPC offset angle to actuator errors")))
+      << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("Compensation applied (Eq. 15)")));
+  EXPECT_TRUE(text.contains(QStringLiteral("Three axes: circular tests in XY, YZ and ZX")));
+  EXPECT_TRUE(text.contains(QStringLiteral("From the SPC offset angles: origin")));
 }
 
 }  // namespace

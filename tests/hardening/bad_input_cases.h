@@ -144,6 +144,27 @@ inline std::string circle() {
   return s;
 }
 
+/// circle() with the columns of the plane (u, v) ("y", "z" for YZ; "z", "x" for ZX).
+inline std::string planeCircle(const std::string& u, const std::string& v) {
+  std::string s = circle();
+  s.replace(0, s.find('\n'), u + "_cmd_mm," + v + "_cmd_mm," + u + "_meas_mm," + v + "_meas_mm");
+  return s;
+}
+
+/// A plane test whose measured points are all (1, 2).
+inline std::string frozenPlane(const std::string& u, const std::string& v) {
+  std::string s = u + "_cmd_mm," + v + "_cmd_mm," + u + "_meas_mm," + v + "_meas_mm\n";
+  for (int i = 0; i < 16; ++i) {
+    const double a = 2.0 * 3.14159265358979323846 * i / 16.0;
+    s += std::to_string(50.0 * std::cos(a)) + "," + std::to_string(50.0 * std::sin(a)) + ",1,2\n";
+  }
+  return s;
+}
+
+/// An edge along an axis (position_mm,deviation_mm), tilted by 1e-4 with a little scatter.
+inline const std::string kEdge =
+    "position_mm,deviation_mm\n-100,-0.0101\n-60,-0.0059\n-20,-0.0021\n20,0.0019\n60,0.0061\n100,0.0099\n";
+
 inline const std::string kErrors =
     R"({"origin_mm": [0.004, -0.003], "x_axis_angle_deg": 0.01, "y_axis_angle_deg": -0.02, "rmse_mm": 0.0005})"
     "\n";
@@ -1055,6 +1076,50 @@ inline std::vector<Case> cases() {
        "match --data pts.csv --lock rx,qq --out out.json",
        {{"pts.csv", kProbe}},
        {"--lock", "qq"},
+       json},
+      // ---- kinematic from-spc: the two edges (seed 002's chain) -------------------------------------
+      {"KS01",
+       "edge series",
+       "Y edge without the deviation column",
+       "kinematic from-spc --x-data ex.csv --y-data ey.csv --out out.json",
+       {{"ex.csv", kEdge}, {"ey.csv", "position_mm,dev\n1,0\n2,0\n3,0\n"}},
+       {"ey.csv", "deviation_mm", "missing column"},
+       json},
+      {"KS02",
+       "edge series",
+       "X edge with 2 points (no regression scatter)",
+       "kinematic from-spc --x-data ex.csv --y-data ey.csv --out out.json",
+       {{"ex.csv", "position_mm,deviation_mm\n1,0\n2,0.001\n"}, {"ey.csv", kEdge}},
+       {"ex.csv", "at least 3"},
+       json},
+      {"KS03",
+       "edge series",
+       "a deviation that is not a number",
+       "kinematic from-spc --x-data ex.csv --y-data ey.csv --out out.json",
+       {{"ex.csv", "position_mm,deviation_mm\n1,0\n2,abc\n3,0\n"}, {"ey.csv", kEdge}},
+       {"ex.csv:3", "deviation_mm"},
+       json},
+      // ---- kinematic identify3: three plane tests ----------------------------------------------------
+      {"K301",
+       "plane circular test",
+       "YZ test with the XY columns",
+       "kinematic identify3 --xy xy.csv --yz yz.csv --zx zx.csv --out out.json",
+       {{"xy.csv", circle()}, {"yz.csv", circle()}, {"zx.csv", planeCircle("z", "x")}},
+       {"yz.csv", "z_cmd_mm", "missing column"},
+       json},
+      {"K302",
+       "command line",
+       "identify3 without the ZX test",
+       "kinematic identify3 --xy xy.csv --yz yz.csv --out out.json",
+       {{"xy.csv", circle()}, {"yz.csv", planeCircle("y", "z")}},
+       {"--zx", "required"},
+       json},
+      {"K303",
+       "plane circular test",
+       "ZX test whose measured points are all the same",
+       "kinematic identify3 --xy xy.csv --yz yz.csv --zx zx.csv --out out.json",
+       {{"xy.csv", circle()}, {"yz.csv", planeCircle("y", "z")}, {"zx.csv", frozenPlane("z", "x")}},
+       {"zx.csv", "z_meas_mm,x_meas_mm", "(zx test)"},
        json},
       {"OP17",
        "command line",

@@ -1,5 +1,6 @@
 #include "widgets/kinematics/kinematicstudy.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/common/error.h"
@@ -67,6 +68,30 @@ KinematicStudySettings kinematicStudySettings(const Project& project) {
     if (!k.options.isValid(&why)) spc.fail(why);
     s.spc = k;
   }
+  if (study.has("from_spc")) {
+    const JsonReader f = study.object("from_spc");
+    KinematicFromSpcSettings k;
+    k.xDataset = f.string("x_dataset");
+    k.yDataset = f.string("y_dataset");
+    k.positionColumn = f.string("position_column", k.positionColumn);
+    k.deviationColumn = f.string("deviation_column", k.deviationColumn);
+    k.xNominalY = f.number("x_nominal_y", 0.0);
+    k.yNominalX = f.number("y_nominal_x", 0.0);
+    const long n = f.has("subgroup") ? f.integer("subgroup") : 5;
+    if (n < kMinSubgroupSize || n > kMaxSubgroupSize) f.fail("must be between 2 and 25", "subgroup");
+    k.options.subgroupSize = static_cast<int>(n);
+    k.options.coverageFactor = f.number("coverage", 2.0);
+    std::string why;
+    if (!k.options.isValid(&why)) f.fail(why);
+    s.fromSpc = k;
+  }
+  if (study.has("planes")) {
+    const JsonReader p = study.object("planes");
+    std::array<std::string, 3> ids;
+    for (const TestPlane plane : kTestPlanes)
+      ids[static_cast<std::size_t>(plane)] = p.string(planeName(plane));
+    s.planes = ids;
+  }
   return s;
 }
 
@@ -117,6 +142,61 @@ KinematicStudyData loadKinematicStudy(const Project& project,
       d.spc = std::move(series);
     } catch (const std::exception& e) {
       d.spcError = e.what();
+    }
+  }
+  if (d.settings.fromSpc) {
+    const KinematicFromSpcSettings& k = *d.settings.fromSpc;
+    try {
+      AxisFeatureSeries series[2];
+      const std::string ids[2] = {k.xDataset, k.yDataset};
+      for (int i = 0; i < 2; ++i) {
+        const DatasetRef* ref = project.dataset(ids[i]);
+        if (ref == nullptr) {
+          throw ValidationError(ErrorContext{{},
+                                             0,
+                                             0,
+                                             std::string("studies.") + study::kKinematics + ".from_spc." +
+                                                 (i == 0 ? "x_dataset" : "y_dataset")},
+                                "names the dataset '" + ids[i] + "', which the project does not have");
+        }
+        series[i] = axisFeatureFromCsv(readCsvFile(resolve(*ref)), k.positionColumn, k.deviationColumn);
+      }
+      series[0].nominalCrossMm = k.xNominalY;
+      series[1].nominalCrossMm = k.yNominalX;
+      SpcActuatorResult r = actuatorErrorsFromSpc(series[0], series[1], k.options);
+      const auto& nominal = d.measured.command;
+      const auto refs = compensatePath(CartesianMachine2::fromErrors(r.errors), nominal);
+      const CartesianMachine2 model = CartesianMachine2::fromErrors(d.identification.errors);
+      for (std::size_t i = 0; i < nominal.size(); ++i) {
+        d.fromSpcLargestCorrectionMm = std::max(d.fromSpcLargestCorrectionMm, (refs[i] - nominal[i]).norm());
+        d.fromSpcModelBeforeMm =
+            std::max(d.fromSpcModelBeforeMm, (model.forward(nominal[i]) - nominal[i]).norm());
+        d.fromSpcModelAfterMm = std::max(d.fromSpcModelAfterMm, (model.forward(refs[i]) - nominal[i]).norm());
+      }
+      d.fromSpc = std::move(r);
+    } catch (const std::exception& e) {
+      d.fromSpcError = e.what();
+    }
+  }
+  if (d.settings.planes) {
+    try {
+      std::array<MeasuredPath, 3> tests;
+      for (const TestPlane plane : kTestPlanes) {
+        const std::string& id = (*d.settings.planes)[static_cast<std::size_t>(plane)];
+        const DatasetRef* ref = project.dataset(id);
+        if (ref == nullptr) {
+          throw ValidationError(
+              ErrorContext{
+                  {}, 0, 0, std::string("studies.") + study::kKinematics + ".planes." + planeName(plane)},
+              "names the dataset '" + id + "', which the project does not have");
+        }
+        tests[static_cast<std::size_t>(plane)] = readPlanePath(resolve(*ref), plane);
+      }
+      Identify3Result r = identifyActuatorErrors3(tests);
+      if (r.run.termination == Termination::Failed) throw std::runtime_error(r.run.message);
+      d.threeAxis = std::move(r);
+    } catch (const std::exception& e) {
+      d.threeAxisError = e.what();
     }
   }
   return d;

@@ -1,7 +1,10 @@
 // Report section "Kinematic compensation and SPC" (issue 6, seed 002): per circular test the
 // identified actuator errors with their standard errors, the path and the ballbar-style polar plot
 // (the same drawings as the GUI, kinematicplots.h), the compensation of the nominal circle (largest
-// radial deviation before and after), and the SPC charts and indices of the study's feature series.
+// radial deviation before and after), the SPC charts and indices of the study's feature series,
+// seed 002's chain from the SPC regression offset angles to actuator errors and their compensation
+// (studies.kinematics.from_spc) and the three-axis errors from circular tests in XY, YZ and ZX
+// (studies.kinematics.planes).
 #include <QCoreApplication>
 #include <QPainter>
 
@@ -248,6 +251,94 @@ void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
   out.paragraph(ReportText::tr("SPC-gated compensation: %1").arg(readerText(r.decision.reason)));
 }
 
+/// Seed 002's chain from SPC to compensation, and the three-axis identification (when configured).
+void writeActuators(ReportPainter& out, const KinematicStudyData& s) {
+  if (s.fromSpc || !s.fromSpcError.empty()) {
+    out.subheading(ReportText::tr("From the SPC offset angle to actuator errors"), out.mm(50.0));
+    if (!s.fromSpc) {
+      out.paragraph(ReportText::tr("The actuator errors could not be derived from the edges: %1")
+                        .arg(QString::fromStdString(s.fromSpcError)));
+    } else {
+      const SpcActuatorResult& r = *s.fromSpc;
+      const IdentifyResult& id = s.identification;
+      out.paragraph(
+          ReportText::tr(
+              "The regression line of the deviation of an edge machined along X against the measured "
+              "position (%1, Fig. 10, Table 2) has the offset angle atan(slope); by Eq. 9 it is the X "
+              "actuator's orientation error a, minus the offset angle of the edge along Y is b, and the "
+              "two intercepts give the actuator origin (Table 3). A slope or intercept within ± %2 "
+              "standard errors counts as scatter. The circular test's identification is an "
+              "independent estimate of the same errors.")
+              .arg(citation(2))
+              .arg(r.options.coverageFactor, 0, 'g', 3));
+      ReportTable t;
+      t.header = {ReportText::tr("error"), ReportText::tr("from SPC"), ReportText::tr("from circular test")};
+      t.widths = {2.4, 1.3, 1.3};
+      t.alignment = {Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight};
+      t.rows.push_back({ReportText::tr("offset angle, edge along X (deg)"),
+                        ReportText::tr("%1 ± %2").arg(deg(r.x.line.angleDeg),
+                                                      deg(r.x.line.slopeStdErr * 57.29577951308232)),
+                        QString()});
+      t.rows.push_back({ReportText::tr("offset angle, edge along Y (deg)"),
+                        ReportText::tr("%1 ± %2").arg(deg(r.y.line.angleDeg),
+                                                      deg(r.y.line.slopeStdErr * 57.29577951308232)),
+                        QString()});
+      t.rows.push_back(
+          {ReportText::tr("origin x (µm)"), um(r.errors.originMm.x()), um(id.errors.originMm.x())});
+      t.rows.push_back(
+          {ReportText::tr("origin y (µm)"), um(r.errors.originMm.y()), um(id.errors.originMm.y())});
+      t.rows.push_back({ReportText::tr("X axis angle a (deg)"), deg(r.errors.xAxisAngleDeg),
+                        deg(id.errors.xAxisAngleDeg)});
+      t.rows.push_back({ReportText::tr("Y axis angle b (deg)"), deg(r.errors.yAxisAngleDeg),
+                        deg(id.errors.yAxisAngleDeg)});
+      t.rows.push_back({ReportText::tr("squareness b − a (deg)"), deg(r.errors.squarenessDeg()),
+                        deg(id.errors.squarenessDeg())});
+      t.rows.push_back({ReportText::tr("systematic error, edge along X / Y (Eq. 20, µm)"),
+                        QStringLiteral("%1 / %2").arg(um(r.x.systematicErrorMm), um(r.y.systematicErrorMm)),
+                        QString()});
+      out.table(t);
+      out.paragraph(
+          (r.apply
+               ? ReportText::tr("Compensation applied (Eq. 15): the largest correction of the nominal circle "
+                                "is %1 µm; the circular test's model gives a largest deviation of %2 µm "
+                                "before and %3 µm with the references derived from SPC.")
+                     .arg(um(s.fromSpcLargestCorrectionMm, 1), um(s.fromSpcModelBeforeMm, 1),
+                          um(s.fromSpcModelAfterMm, 1))
+               : ReportText::tr("Not compensated: %1").arg(QString::fromStdString(r.reason))));
+    }
+  }
+  if (s.threeAxis || !s.threeAxisError.empty()) {
+    out.subheading(ReportText::tr("Three axes: circular tests in XY, YZ and ZX"), out.mm(45.0));
+    if (!s.threeAxis) {
+      out.paragraph(ReportText::tr("The three-axis errors could not be identified: %1")
+                        .arg(QString::fromStdString(s.threeAxisError)));
+      return;
+    }
+    const Identify3Result& r = *s.threeAxis;
+    const ActuatorErrors3& e = r.errors;
+    out.paragraph(
+        ReportText::tr("The three-axis Cartesian model P = o + [i j k]·Pr (%1, Eq. 9 in three axes) "
+                       "fitted to the three tests together (%2 points, RMS residual %3 µm): origin "
+                       "(%4, %5, %6) µm. In every plane (u, v) the u actuator moves along (cos a, "
+                       "sin a), the v actuator along (−sin b, cos b); squareness b − a.")
+            .arg(citation(2))
+            .arg(r.points)
+            .arg(um(r.rmseMm), um(e.originMm.x()), um(e.originMm.y()), um(e.originMm.z())));
+    ReportTable t;
+    t.header = {ReportText::tr("plane"), ReportText::tr("a (deg)"), ReportText::tr("b (deg)"),
+                ReportText::tr("squareness (deg)"), ReportText::tr("RMS (µm)")};
+    t.widths = {0.8, 1.3, 1.3, 1.8, 1.0};
+    t.alignment = {Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
+    for (const TestPlane p : kTestPlanes) {
+      const auto i = static_cast<std::size_t>(p);
+      t.rows.push_back({QString::fromLatin1(planeName(p)).toUpper(), deg(e.uAngleDeg[i]), deg(e.vAngleDeg[i]),
+                        ReportText::tr("%1 ± %2").arg(deg(e.squarenessDeg(p)), deg(r.squarenessStdErrDeg[i])),
+                        um(r.planes[i].rmseMm)});
+    }
+    out.table(t);
+  }
+}
+
 /// The section's conclusion: the identified errors, the compensation and the SPC decision.
 void concludeKinematics(ReportPainter& out, const ReportContext& context, const KinematicStudyData& s,
                         const CompensationPreview& c) {
@@ -286,6 +377,21 @@ void concludeKinematics(ReportPainter& out, const ReportContext& context, const 
     f.conclusion +=
         QLatin1Char(' ') + ReportText::tr("SPC-gated compensation: %1").arg(readerText(r.decision.reason));
   }
+  if (s.fromSpc) {
+    const ActuatorErrors2& g = s.fromSpc->errors;
+    f.found +=
+        QLatin1Char(' ') + ReportText::tr("From the SPC offset angles: origin (%1, %2) µm, squareness %3°.")
+                               .arg(um(g.originMm.x(), 1), um(g.originMm.y(), 1))
+                               .arg(g.squarenessDeg(), 0, 'f', 4);
+  }
+  if (s.threeAxis) {
+    const ActuatorErrors3& g = s.threeAxis->errors;
+    f.found +=
+        QLatin1Char(' ') + ReportText::tr("Squareness XY %1°, YZ %2°, ZX %3° (three-plane circular tests).")
+                               .arg(g.squarenessDeg(TestPlane::XY), 0, 'f', 4)
+                               .arg(g.squarenessDeg(TestPlane::YZ), 0, 'f', 4)
+                               .arg(g.squarenessDeg(TestPlane::ZX), 0, 'f', 4);
+  }
   concludeSection(out, context, f);
 }
 
@@ -308,6 +414,7 @@ void writeKinematicSection(ReportPainter& out, const ReportContext& context) {
     const KinematicStudyData s = loadKinematicStudy(project, resolve);
     const CompensationPreview c = writeCircularTest(out, s);
     writeSpc(out, s);
+    writeActuators(out, s);
     concludeKinematics(out, context, s, c);
   } catch (const InputError&) {
     throw;

@@ -92,5 +92,16 @@ TEST(StudyCheck, ColumnsTheDataLacks) {
   }
 }
 
+TEST(StudyCheck, KinematicsFromSpcAndPlanesNameTheirDatasets) {
+  Project p = twoDatasets();
+  p.studies["kinematics"] = {{"from_spc", {{"x_dataset", "log"}, {"y_dataset", "nope"}, {"coverag", 2}}},
+                             {"planes", {{"xy", "pts"}, {"yz", "log"}, {"zx", ""}}}};
+  const auto f = fields(checkStudies(p));
+  const std::vector<std::string> expected = {"studies.kinematics.from_spc.coverag",
+                                             "studies.kinematics.from_spc.y_dataset",
+                                             "studies.kinematics.planes.zx"};
+  EXPECT_EQ(f, expected);
+}
+
 }  // namespace
 }  // namespace metrofit
