@@ -242,8 +242,8 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     auto* sim = app.add_subcommand("simulate", "Make test data with the built-in simulator");
     sim->require_subcommand(1);
     auto a = std::make_shared<SimArgs>();
-    auto* th = sim->add_subcommand("thermal",
-                                   "A spindle heating/cooling test: time_min, rpm, T1..T4, T_amb, disp_z_um");
+    auto* th = sim->add_subcommand(
+        "thermal", "A spindle heating/cooling test: time_min, spindle_rpm, T1..T4, T_amb, disp_z_um");
     th->add_option("--out", a->out, "Thermal log to write (CSV; written atomically). Default: stdout");
     addSeed(th, a->seed);
     th->callback([a] { g_selected = [a]() -> int { return runSimulateThermal(*a); }; });
