@@ -1,6 +1,10 @@
 #include "app/gui/projectnavigator.h"
 
+#include <QHeaderView>
+#include <QScrollBar>
 #include <QSignalBlocker>
+
+#include <algorithm>
 
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
@@ -14,6 +18,12 @@ ProjectNavigator::ProjectNavigator(ProjectDocument* document, QWidget* parent)
   setColumnCount(1);
   setRootIsDecorated(true);
   setUniformRowHeights(true);
+  // Long project names and dataset ids: the column is as wide as its longest item and scrolls;
+  // nothing is cut to "…".
+  setTextElideMode(Qt::ElideNone);
+  header()->setStretchLastSection(false);
+  header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
   connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* current) {
     if (!current) return;
     emit pageActivated(static_cast<Page>(current->data(0, PageRole).toInt()),
@@ -39,6 +49,13 @@ void ProjectNavigator::selectPage(Page page) {
   if (current && current->parent() == item) return;
   const QSignalBlocker blocker(this);
   setCurrentItem(item);
+}
+
+QSize ProjectNavigator::sizeHint() const {
+  QSize hint = QTreeWidget::sizeHint();
+  const int content = sizeHintForColumn(0) + 2 * frameWidth() + verticalScrollBar()->sizeHint().width();
+  hint.setWidth(std::max(hint.width(), content));
+  return hint;
 }
 
 void ProjectNavigator::refresh() {
@@ -80,6 +97,7 @@ void ProjectNavigator::rebuild() {
   }
   expandAll();
   setCurrentItem(itemForPage(page));
+  updateGeometry();
 }
 
 }  // namespace metrofit
