@@ -99,8 +99,9 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
   DiagnosisSettings out;
   out.domain = domain;
   out.datasetId = stringKey(block, "dataset", source, prefix);
-  out.datasetPath =
-      resolveDatasetPath(projectPath, datasetOf(project, out.datasetId, source, prefix + "dataset"));
+  const DatasetRef& dataset = datasetOf(project, out.datasetId, source, prefix + "dataset");
+  out.datasetPath = resolveDatasetPath(projectPath, dataset);
+  out.datasetCsv = dataset.csv;
   switch (domain) {
     case DiagnosisDomain::Thermal: {
       out.target = stringKey(block, "target", source, prefix);
@@ -138,7 +139,7 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
 diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer) {
   switch (s.domain) {
     case DiagnosisDomain::Thermal: {
-      const ThermalLog log = readThermalLog(s.datasetPath);
+      const ThermalLog log = readThermalLog(s.datasetPath, 3, s.datasetCsv);
       diagnose::ThermalDiagnosisOptions o;
       o.target = s.target;
       o.inputs = s.inputs;

@@ -33,8 +33,9 @@ const char* diagnosisDomainKey(DiagnosisDomain domain);
 struct DiagnosisSettings {
   DiagnosisDomain domain = DiagnosisDomain::Thermal;
   std::string datasetId;
-  std::string datasetPath;  ///< resolved against the project file's folder
-  std::string target;       ///< thermal
+  std::string datasetPath;    ///< resolved against the project file's folder
+  CsvReadOptions datasetCsv;  ///< the dataset's dialect, column map and sampling interval
+  std::string target;         ///< thermal
   std::vector<std::string> inputs;
   double trainFraction = 0.5;
   std::string modelId;  ///< setup
