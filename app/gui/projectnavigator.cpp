@@ -1,10 +1,7 @@
 #include "app/gui/projectnavigator.h"
 
 #include <QHeaderView>
-#include <QScrollBar>
 #include <QSignalBlocker>
-
-#include <algorithm>
 
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
@@ -49,13 +46,6 @@ void ProjectNavigator::selectPage(Page page) {
   if (current && current->parent() == item) return;
   const QSignalBlocker blocker(this);
   setCurrentItem(item);
-}
-
-QSize ProjectNavigator::sizeHint() const {
-  QSize hint = QTreeWidget::sizeHint();
-  const int content = sizeHintForColumn(0) + 2 * frameWidth() + verticalScrollBar()->sizeHint().width();
-  hint.setWidth(std::max(hint.width(), content));
-  return hint;
 }
 
 void ProjectNavigator::refresh() {

@@ -21,8 +21,6 @@ class ProjectNavigator : public QTreeWidget {
   QTreeWidgetItem* itemForPage(Page page) const;
   /// Selects a page's item without emitting pageActivated.
   void selectPage(Page page);
-  /// Wide enough for every item: titles are never elided (a narrower dock scrolls instead).
-  QSize sizeHint() const override;
 
  signals:
   /// An item was selected: its page and, for a dataset item, the dataset id (else empty).
