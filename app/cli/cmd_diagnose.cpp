@@ -219,7 +219,11 @@ void registerDiagnoseCommands(CLI::App& app) {
       sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")->check(positiveNumber());
     }
     addSeed(sub, a->seed);
-    addCsvOptions(sub);
+    if (std::string(domain) == "thermal") {
+      addThermalLogOptions(sub);
+    } else {
+      addCsvOptions(sub);
+    }
     addOut(sub, a->out);
     const std::string d = domain;
     sub->callback([a, d] {

@@ -89,7 +89,7 @@ void registerProjectCommands(CLI::App& app) {
   add->add_option("--map", a->map,
                   "ROLE=COLUMN: read the file's COLUMN as ROLE (e.g. time_min=Zeit); repeatable")
       ->take_all();
-  addCsvOptions(add);
+  addThermalLogOptions(add);
   add->callback([a] { selectRunner([a]() -> int { return runAdd(*a); }); });
 
   auto l = std::make_shared<ProjectArgs>();

@@ -336,7 +336,7 @@ void registerThermalCommands(CLI::App& app) {
          "dlag (distributed lag) or auto (chosen by blocked cross-validation on the fit rows)")
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp", "linear", "lag", "dlag", "auto"}))
       ->capture_default_str();
-  addCsvOptions(fit);
+  addThermalLogOptions(fit);
   auto* fraction = fit->add_option("--train-fraction", f->trainFraction,
                                    "Fraction of rows (from the start) used for fitting; default 0.5, 0.7 for "
                                    "mlp (Table 3)")
@@ -362,7 +362,7 @@ void registerThermalCommands(CLI::App& app) {
   existingFile(pred->add_option("--model-file", p->modelFile, "Model written by 'thermal fit --save-model'")
                    ->required());
   existingFile(pred->add_option("--data", p->data, "Thermal log with the model's input columns")->required());
-  addCsvOptions(pred);
+  addThermalLogOptions(pred);
   pred->add_option("--out", p->out, "Result file (CSV; written atomically). Default: stdout");
   pred->callback([p] { selectRunner([p]() -> int { return runPredict(*p); }); });
 
@@ -371,7 +371,7 @@ void registerThermalCommands(CLI::App& app) {
       "hysteresis", "Displacement against each sensor over heating and cooling: loop areas and sensor lags");
   existingFile(hys->add_option("--data", h->data, "Thermal log (CSV)")->required());
   addColumns(hys, h->target, h->inputs);
-  addCsvOptions(hys);
+  addThermalLogOptions(hys);
   hys->add_option("--smoothing-min", h->smoothingMin, "Window (min) of the heating / cooling phase detection")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
@@ -388,7 +388,7 @@ void registerThermalCommands(CLI::App& app) {
   mod->add_option("--model", m->model, "gnnmci|gmc|mlp|linear|lag|dlag (see thermal fit)")
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp", "linear", "lag", "dlag"}))
       ->capture_default_str();
-  addCsvOptions(mod);
+  addThermalLogOptions(mod);
   mod->add_option("--training", m->training, "gnnmci: pso-ls or pso (see thermal fit)")
       ->check(CLI::IsMember({"pso", "pso-ls"}))
       ->capture_default_str();

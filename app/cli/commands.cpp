@@ -29,6 +29,7 @@ namespace {
 std::function<int()> g_selected;
 std::string g_delimiter = "auto";
 std::string g_decimal = "auto";
+std::string g_sampleInterval;  ///< --sample-interval as given ("15s"), empty when not given
 int g_argc = 0;
 char** g_argv = nullptr;
 
@@ -158,10 +159,22 @@ void addCsvOptions(CLI::App* sub) {
       ->capture_default_str();
 }
 
+void addSampleIntervalOption(CLI::App* sub) {
+  sub->add_option("--sample-interval", g_sampleInterval,
+                  "Thermal log without a time column: the rows are this far apart, a number with its unit "
+                  "s, min or h (e.g. 15s, 1min); the first row is at time 0");
+}
+
+void addThermalLogOptions(CLI::App* sub) {
+  addCsvOptions(sub);
+  addSampleIntervalOption(sub);
+}
+
 CsvReadOptions csvOptions() {
   CsvReadOptions o;
   o.dialect.delimiter = parseCsvDelimiter(g_delimiter);
   o.dialect.decimal = parseCsvDecimal(g_decimal);
+  if (!g_sampleInterval.empty()) o.sampleIntervalMin = parseSampleInterval(g_sampleInterval);
   return o;
 }
 
@@ -242,8 +255,8 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     auto* sim = app.add_subcommand("simulate", "Make test data with the built-in simulator");
     sim->require_subcommand(1);
     auto a = std::make_shared<SimArgs>();
-    auto* th = sim->add_subcommand("thermal",
-                                   "A spindle heating/cooling test: time_min, rpm, T1..T4, T_amb, disp_z_um");
+    auto* th = sim->add_subcommand(
+        "thermal", "A spindle heating/cooling test: time_min, spindle_rpm, T1..T4, T_amb, disp_z_um");
     th->add_option("--out", a->out, "Thermal log to write (CSV; written atomically). Default: stdout");
     addSeed(th, a->seed);
     th->callback([a] { g_selected = [a]() -> int { return runSimulateThermal(*a); }; });

@@ -48,6 +48,11 @@ void addSeed(CLI::App* sub, std::uint64_t& seed);
 /// --delimiter auto|,|;|tab and --decimal auto|.|, (CONTRACT.md: every subcommand that reads a CSV).
 /// One subcommand runs per process, so they share one setting; csvOptions() returns it.
 void addCsvOptions(CLI::App* sub);
+/// --sample-interval <value><unit> (s, min, h): a thermal log without a time column.
+void addSampleIntervalOption(CLI::App* sub);
+/// addCsvOptions and addSampleIntervalOption: every subcommand that reads a thermal log.
+void addThermalLogOptions(CLI::App* sub);
+/// The dialect, and the sampling interval when given (an OptionsError when it does not parse).
 CsvReadOptions csvOptions();
 std::vector<std::string> splitList(const std::string& commaSeparated);
 /// Reads a thermal log and checks that target and every input name a column (inputs != target).

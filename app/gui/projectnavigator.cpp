@@ -1,5 +1,6 @@
 #include "app/gui/projectnavigator.h"
 
+#include <QHeaderView>
 #include <QMenu>
 #include <QSignalBlocker>
 
@@ -17,6 +18,12 @@ ProjectNavigator::ProjectNavigator(ProjectDocument* document, QWidget* parent)
   setColumnCount(1);
   setRootIsDecorated(true);
   setUniformRowHeights(true);
+  // Long project names and dataset ids: the column is as wide as its longest item and scrolls;
+  // nothing is cut to "…".
+  setTextElideMode(Qt::ElideNone);
+  header()->setStretchLastSection(false);
+  header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
   connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* current) {
     if (!current) return;
     emit pageActivated(static_cast<Page>(current->data(0, PageRole).toInt()),
@@ -93,6 +100,7 @@ void ProjectNavigator::rebuild() {
   }
   expandAll();
   setCurrentItem(itemForPage(page));
+  updateGeometry();
 }
 
 }  // namespace metrofit

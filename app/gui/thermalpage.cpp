@@ -170,7 +170,7 @@ void ThermalPage::showLog(int comboIndex) {
   const DatasetRef& dataset = logs_[static_cast<std::size_t>(comboIndex)];
   const QString path = document_->datasetPath(dataset);
   try {
-    log_ = readThermalLog(path.toStdString(), 3, dataset.csv);
+    log_ = readThermalLog(path.toStdString(), 3, dataset.csv);  // with its dialect, map and interval
     logId_ = QString::fromStdString(dataset.id);
     trend_->setLog(log_);
     const QLocale locale;

@@ -52,6 +52,9 @@ struct CsvReadOptions {
   CsvDialect dialect;
   /// (role, column): the file's column `column` is read as `role` (e.g. {"time_min", "Zeit"}).
   std::vector<std::pair<std::string, std::string>> columnMap;
+  /// Thermal logs without a time column: the rows are this many minutes apart, the first at 0
+  /// (0: the log must have a time column). Other readers ignore it.
+  double sampleIntervalMin = 0.0;
   bool operator==(const CsvReadOptions&) const = default;
 };
 

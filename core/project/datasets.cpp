@@ -80,7 +80,7 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
   s.rows = static_cast<long>(table.rowCount());
   s.columns = table.header();
   if (kind == dataset_kind::kThermalLog) {
-    (void)thermalLogFromCsv(table);
+    (void)thermalLogFromCsv(table, 3, csv.sampleIntervalMin);
   } else if (kind == dataset_kind::kProbePoints) {
     (void)probePointsFromCsv(table, 1);
   } else if (kind == dataset_kind::kCircularTest) {
@@ -159,6 +159,10 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
     throw ValidationError(
         ErrorContext{{}, 0, 0, "KIND"},
         "a " + ref.kind + " dataset is not a CSV file; --delimiter, --decimal and --map do not apply");
+  }
+  if (ref.kind != dataset_kind::kThermalLog && request.csv.sampleIntervalMin > 0.0) {
+    throw ValidationError(ErrorContext{{}, 0, 0, "--sample-interval"},
+                          "applies to thermal logs only, not to a " + ref.kind + " dataset");
   }
   const bool fromStdin = request.file == "-";
   ref.id = request.id;

@@ -1,5 +1,6 @@
 #include "core/project/project.h"
 
+#include <cmath>
 #include <set>
 
 #include "core/common/error.h"
@@ -36,6 +37,7 @@ nlohmann::json Project::toJson() const {
     if (!d.licence.empty()) o["licence"] = d.licence;
     if (d.csv.dialect.delimiter) o["delimiter"] = csvDelimiterName(d.csv.dialect.delimiter);
     if (d.csv.dialect.decimal) o["decimal"] = csvDecimalName(d.csv.dialect.decimal);
+    if (d.csv.sampleIntervalMin > 0.0) o["sample_interval_min"] = d.csv.sampleIntervalMin;
     if (!d.csv.columnMap.empty()) {
       nlohmann::json map = nlohmann::json::object();
       for (const auto& [role, column] : d.csv.columnMap) map[role] = column;
@@ -85,6 +87,11 @@ Project Project::fromJson(const nlohmann::json& j, const std::string& source) {
         if (d.has("decimal")) ref.csv.dialect.decimal = parseCsvDecimal(d.string("decimal"), "decimal");
       } catch (const OptionsError& e) {
         d.fail(e.detail(), e.context().field);
+      }
+      if (d.has("sample_interval_min")) {
+        ref.csv.sampleIntervalMin = d.number("sample_interval_min");
+        if (!(ref.csv.sampleIntervalMin > 0.0) || !std::isfinite(ref.csv.sampleIntervalMin))
+          d.fail("must be a positive number of minutes", "sample_interval_min");
       }
       if (d.has("map")) {
         const JsonReader map = d.object("map");

@@ -1,6 +1,7 @@
 #include "core/thermal/thermal_log.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "core/common/error.h"
@@ -61,7 +62,29 @@ const ThermalChannel& ThermalLog::channel(const std::string& name) const {
   return channels[static_cast<std::size_t>(i)];
 }
 
-ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows) {
+double parseSampleInterval(std::string_view text, const std::string& option) {
+  std::string t(text);
+  while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.pop_back();
+  std::size_t unitAt = t.size();
+  while (unitAt > 0 && std::isalpha(static_cast<unsigned char>(t[unitAt - 1]))) --unitAt;
+  const std::string unit = lower(t.substr(unitAt));
+  std::string number = t.substr(0, unitAt);
+  while (!number.empty() && std::isspace(static_cast<unsigned char>(number.back()))) number.pop_back();
+  double value = 0.0;
+  double toMin = 0.0;
+  if (unit == "s") toMin = 1.0 / 60.0;
+  if (unit == "min") toMin = 1.0;
+  if (unit == "h") toMin = 60.0;
+  if (toMin == 0.0 || !parseNumber(number, &value) || !std::isfinite(value) || value <= 0.0) {
+    throw OptionsError(
+        ErrorContext{{}, 0, 0, option},
+        "'" + std::string(text) +
+            "' is not a sampling interval: a positive number with a unit s, min or h, e.g. 15s");
+  }
+  return value * toMin;
+}
+
+ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows, double sampleIntervalMin) {
   ThermalLog log;
   log.source = table.source();
   double scale = 0.0;
@@ -78,19 +101,30 @@ ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows) {
     scale = s;
     log.timeColumn = name;
   }
-  if (timeCol < 0) {
+  if (timeCol >= 0 && sampleIntervalMin > 0.0) {
+    throw ValidationError(ErrorContext{table.source(), 0, 0, log.timeColumn},
+                          "has a time column and a sampling interval was given (--sample-interval); "
+                          "leave out one of them");
+  }
+  if (timeCol < 0 && !(sampleIntervalMin > 0.0)) {
     throw ValidationError(
         ErrorContext{table.source(), 0, 0, "time_s|time_min|time_h"},
-        "no time column; the first column of a thermal log must be time_s, time_min or time_h");
+        "no time column; the first column of a thermal log must be time_s, time_min or time_h, or give the "
+        "sampling interval (--sample-interval 15s)");
   }
-  if (table.columnCount() < 2) {
+  if (table.columnCount() < (timeCol >= 0 ? 2u : 1u)) {
     throw ValidationError(ErrorContext{table.source(), 0, 0, {}},
                           "a thermal log needs sensor columns besides time");
   }
   table.requireRows(minRows);
   const std::size_t n = table.rowCount();
   log.timeMin.resize(n);
-  for (std::size_t r = 0; r < n; ++r) {
+  if (timeCol < 0) {
+    log.timeColumn = "time_min";
+    log.sampleIntervalMin = sampleIntervalMin;
+    for (std::size_t r = 0; r < n; ++r) log.timeMin[r] = static_cast<double>(r) * sampleIntervalMin;
+  }
+  for (std::size_t r = 0; timeCol >= 0 && r < n; ++r) {
     log.timeMin[r] = table.number(r, static_cast<std::size_t>(timeCol)) * scale;
     if (r > 0 && !(log.timeMin[r] > log.timeMin[r - 1])) {
       table.failAt(r, static_cast<std::size_t>(timeCol),
@@ -111,7 +145,7 @@ ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows) {
 }
 
 ThermalLog readThermalLog(const std::string& path, std::size_t minRows, const CsvReadOptions& csv) {
-  return thermalLogFromCsv(readCsvFile(path, csv), minRows);
+  return thermalLogFromCsv(readCsvFile(path, csv), minRows, csv.sampleIntervalMin);
 }
 
 std::string thermalLogToCsv(const ThermalLog& log) {

@@ -158,6 +158,66 @@ TEST(ThermalCli, BadInputExits2WithOneLineNamingFileAndField) {
   EXPECT_EQ(test::listFolder(tmp.path()), (std::vector<std::string>{"c.csv"}));
 }
 
+// A log of sensor columns only (item 8 of issue 17): --sample-interval gives its time on every
+// command that reads a thermal log; without it, with a time column or without a unit: exit 2.
+TEST(ThermalCli, SampleIntervalReadsALogWithoutATimeColumn) {
+  test::TempDir tmp;
+  spindleLog(tmp);
+  // log.csv without its time_min column (one row a minute): sensors.csv.
+  const std::string text = test::readText(tmp.file("log.csv"));
+  std::string sensors;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    const std::size_t end = text.find('\n', pos);
+    const std::string line = text.substr(pos, end - pos);
+    sensors += line.substr(line.find(',') + 1) + "\n";
+    pos = end == std::string::npos ? text.size() : end + 1;
+  }
+  test::writeText(tmp.file("sensors.csv"), sensors);
+  const std::string fit = "thermal fit --target disp_z_um --inputs T1,T2,T3,T4 --model linear ";
+  ASSERT_EQ(cli(fit + "--data log.csv --out with_time.json", tmp).code, 0);
+  const CliRun r = cli(fit + "--data sensors.csv --sample-interval 1min --out interval.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  // The same rows a minute apart: the same fit as with the time column.
+  const auto a = readJson(tmp, "with_time.json"), b = readJson(tmp, "interval.json");
+  EXPECT_DOUBLE_EQ(a["heldout_rmse"].get<double>(), b["heldout_rmse"].get<double>());
+  EXPECT_EQ(cli(fit + "--data sensors.csv --sample-interval 60s --out s.json", tmp).code, 0);
+  EXPECT_DOUBLE_EQ(readJson(tmp, "s.json")["heldout_rmse"].get<double>(), b["heldout_rmse"].get<double>());
+
+  for (const char* args :
+       {"--data sensors.csv", "--data sensors.csv --sample-interval 60",
+        "--data sensors.csv --sample-interval 5 parsecs", "--data log.csv --sample-interval 1min"}) {
+    const CliRun bad = cli(fit + args, tmp);
+    EXPECT_EQ(bad.code, 2) << args << ": " << bad.err;
+    EXPECT_EQ(lines(bad.err), 1) << bad.err;
+  }
+  EXPECT_NE(cli(fit + "--data sensors.csv", tmp).err.find("--sample-interval"), std::string::npos);
+  EXPECT_NE(cli(fit + "--data log.csv --sample-interval 1min", tmp).err.find("time_min"), std::string::npos);
+
+  // The other readers of thermal logs.
+  EXPECT_EQ(cli("thermal hysteresis --data sensors.csv --sample-interval 1min --target disp_z_um --inputs T1 "
+                "--out h.json",
+                tmp)
+                .code,
+            0);
+  EXPECT_EQ(
+      cli("diagnose thermal --data sensors.csv --sample-interval 1min --target disp_z_um --inputs T2,T4 "
+          "--out d.json",
+          tmp)
+          .code,
+      0);
+  // A project remembers the interval; its report reads the log with it.
+  ASSERT_EQ(cli("project new p.metrofit", tmp).code, 0);
+  const CliRun add = cli("project add p.metrofit thermal-log sensors.csv --sample-interval 1min", tmp);
+  ASSERT_EQ(add.code, 0) << add.err;
+  EXPECT_DOUBLE_EQ(readJson(tmp, "p.metrofit")["datasets"][0]["sample_interval_min"].get<double>(), 1.0);
+  const CliRun list = cli("project list p.metrofit", tmp);
+  ASSERT_EQ(list.code, 0) << list.err;
+  EXPECT_EQ(parseJson(list.out, "list")[0]["rows"].get<long>(), 481);
+  EXPECT_EQ(cli("project add p.metrofit probe-points sensors.csv --id x --sample-interval 1min", tmp).code,
+            2);
+}
+
 TEST(ThermalCli, PredictWritesCompensationValues) {
   test::TempDir tmp;
   spindleLog(tmp);

@@ -14,6 +14,7 @@
 #include <QDir>
 #include <QLabel>
 #include <QLocale>
+#include <QRegularExpression>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTranslator>
@@ -266,10 +267,33 @@ TEST_F(DiagnosisLocaleTest, EnglishPageKeepsCoresText) {
   ASSERT_TRUE(page.runNow()) << page.statusText().toStdString();
   const diagnose::Diagnosis& d = *page.result();
   for (int r = 0; r < page.candidateTable()->rowCount(); ++r) {
-    const std::string shown = page.candidateTable()->item(r, kEvidenceColumn)->text().toStdString();
-    EXPECT_EQ(shown, d.effects[static_cast<std::size_t>(r)].evidence);
+    const QString shown = page.candidateTable()->item(r, kEvidenceColumn)->text();
+    EXPECT_EQ(shown, displaySymbols(QString::fromStdString(d.effects[static_cast<std::size_t>(r)].evidence)));
   }
   EXPECT_EQ(page.residualPlot()->xAxisTitle(), QStringLiteral("part"));
+}
+
+// The English page in every domain: ±, → and µm, never core's ASCII "+-", "->" or "um".
+TEST_F(DiagnosisLocaleTest, EnglishPageShowsSymbolsNotAscii) {
+  const LocaleGuard locale(QLocale::c());
+  const QRegularExpression ascii(QStringLiteral("\\+-|->|\\bum\\b"));
+  DiagnosisPage page(&document_);
+  int checked = 0;
+  for (DiagnosisDomain d : kDiagnosisDomains) {
+    page.setDomain(d);
+    ASSERT_TRUE(page.runNow()) << page.statusText().toStdString();
+    QStringList texts{page.notesText(), page.residualCheckView()->verdictText()};
+    const QTableWidget* t = page.candidateTable();
+    for (int r = 0; r < t->rowCount(); ++r)
+      for (int c = 0; c < t->columnCount(); ++c)
+        if (t->item(r, c)) texts << t->item(r, c)->text();
+    for (const QLabel* label : page.findChildren<QLabel*>()) texts << label->text();
+    for (const QString& text : texts) {
+      EXPECT_FALSE(ascii.match(text).hasMatch()) << diagnosisDomainKey(d) << ": " << text.toStdString();
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20);
 }
 
 TEST(CoreTextTest, PhraseInPolishLocaleAndTerminationTexts) {
@@ -278,7 +302,13 @@ TEST(CoreTextTest, PhraseInPolishLocaleAndTerminationTexts) {
       "rmse %1 -> %2 um (%3 %), dBIC %4, %5",
       {PhraseArg::numberOrNa(4.79, 3), PhraseArg::numberOrNa(0.707, 3), PhraseArg::numberOrNa(-85.2, 2),
        PhraseArg::numberOrNa(-54.98, 4), PhraseArg::text({Phrase("n/a")})});
-  EXPECT_EQ(coreText(p, pl).toStdString(), "rmse 4,79 -> 0,707 um (-85 %), dBIC -54,98, n/a");
+  // Core's ASCII "->" and "um" in a template (an untranslated one here) are shown as → and µm.
+  EXPECT_EQ(coreText(p, pl).toStdString(), "rmse 4,79 → 0,707 µm (-85 %), dBIC -54,98, n/a");
+  EXPECT_EQ(
+      coreText(Phrase("tau %1 +- %2 min", {PhraseArg::numberOrNa(4.5, 2), PhraseArg::numberOrNa(0.25, 2)}),
+               pl)
+          .toStdString(),
+      "tau 4,5 ± 0,25 min");
   EXPECT_EQ(coreText(Phrase("%1 = c0", {PhraseArg::name("disp.z")}), pl), QStringLiteral("disp.z = c0"));
   EXPECT_EQ(coreText({Phrase("residual (%1)", {PhraseArg::unit("um")})}, pl),
             QStringLiteral("residual (µm)"));

@@ -2,6 +2,7 @@
 // overview with undo, the 3D fallback, error and unsaved-changes handling, recent files.
 #include <gtest/gtest.h>
 
+#include <QAbstractItemModel>
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -18,6 +19,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStackedWidget>
+#include <QStyleOptionViewItem>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -153,6 +155,29 @@ TEST_F(MainWindowTest, NavigatorShowsEveryPage) {
   nav->setCurrentItem(root);
   EXPECT_EQ(window_.currentPage(), Page::Overview);
   EXPECT_TRUE(window_.overviewPage()->isVisible());
+}
+
+// The navigator shows every title whole (issue 17: "Demo cell: 5-axis machining ce..." was cut):
+// its column is as wide as its items (a dock narrower than that scrolls sideways instead).
+TEST_F(MainWindowTest, NavigatorTitlesAreNotElided) {
+  window_.resize(1280, 800);
+  QApplication::processEvents();
+  ProjectNavigator* nav = window_.navigator();
+  EXPECT_EQ(nav->textElideMode(), Qt::ElideNone);
+  QStyleOptionViewItem option;
+  option.initFrom(nav);
+  QAbstractItemModel* model = nav->model();
+  QList<QModelIndex> pending{model->index(0, 0)};
+  int checked = 0;
+  while (!pending.isEmpty()) {
+    const QModelIndex index = pending.takeFirst();
+    for (int r = 0; r < model->rowCount(index); ++r) pending << model->index(r, 0, index);
+    const QRect rect = nav->visualRect(index);
+    const int needed = nav->itemDelegate()->sizeHint(option, index).width();
+    EXPECT_GE(rect.width(), needed) << index.data().toString().toStdString();
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
 }
 
 TEST_F(MainWindowTest, DatasetItemsSelectTheirData) {

@@ -163,6 +163,9 @@ TEST(ThermalModelCharts, ComparisonChartMarksTheFitBoundary) {
   std::unique_ptr<QChart> chart(makeModelComparisonChart(log, c));
   const auto boundary = lines(chart.get(), QStringLiteral("fit | held-out boundary"));
   ASSERT_EQ(boundary.size(), 1u);
+  // The band's "held out" entry explains the line: no legend entry of its own (one entry fewer, so
+  // the legend row is not elided).
+  for (QLegendMarker* marker : chart->legend()->markers(boundary[0])) EXPECT_FALSE(marker->isVisible());
   // 4 h: the time axis is in hours.
   EXPECT_DOUBLE_EQ(boundary[0]->at(0).x(), 0.5 * (log.timeMin[144] + log.timeMin[145]) / 60.0);
   EXPECT_EQ(lines(chart.get(), QStringLiteral("measured")).size(), 1u);

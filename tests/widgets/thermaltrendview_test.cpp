@@ -10,10 +10,18 @@
 #include <QChartView>
 #include <QDir>
 #include <QFileInfo>
+#include <QGraphicsLayout>
+#include <QGraphicsScene>
+#include <QGraphicsTextItem>
 #include <QImage>
-#include <QListWidget>
+#include <QLegend>
+#include <QLegendMarker>
+#include <QPainter>
+#include <QRegularExpression>
 #include <QSignalSpy>
+#include <QStyleOptionViewItem>
 #include <QTest>
+#include <QTreeWidget>
 #include <QValueAxis>
 #include <QXYSeries>
 
@@ -266,7 +274,8 @@ TEST(ThermalCharts, LongSeriesAreDecimated) {
   std::unique_ptr<QChart> chart(makeThermalTrendChart(log, {QStringLiteral("T1")}, options));
   bool found = false;
   for (QAbstractSeries* s : chart->series()) {
-    if (s->name() == QStringLiteral("T1")) {
+    if (s->objectName() == QStringLiteral("T1")) {
+      EXPECT_EQ(s->name(), QStringLiteral("T1 (°C)"));  // the legend names the unit
       found = true;
       const int n = static_cast<int>(static_cast<QXYSeries*>(s)->count());
       EXPECT_LE(n, 2000);
@@ -338,21 +347,37 @@ TEST_F(ThermalTrendViewTest, HidingAChannelRemovesItsColour) {
   EXPECT_EQ(view_->visibleChannels(), (QStringList{"T2", "T3", "T4", "disp_z_um"}));
   const QImage hidden = grabChart();
   hidden.save(QDir(outputDir()).filePath(QStringLiteral("thermaltrendview_without_T1.png")));
-  EXPECT_EQ(countColour(hidden, t1), 0);
+  EXPECT_EQ(countColour(hidden, t1, 20), 0);
   EXPECT_GT(countColour(hidden, colourOf("T2")), 100);
 
   // The same selection again changes nothing.
   view_->setVisibleChannels({"T2", "T3", "T4", "disp_z_um"});
   EXPECT_EQ(spy.count(), 1);
 
-  // Ticking T1 in the channel list brings it back.
-  auto* list = view_->findChild<QListWidget*>(QStringLiteral("thermalTrendChannels"));
-  ASSERT_NE(list, nullptr);
-  ASSERT_EQ(list->count(), 5);
-  list->item(0)->setCheckState(Qt::Checked);
+  // Ticking T1 in the channel tree brings it back: group "temperatures (°C)", then "displacements (µm)".
+  auto* tree = view_->findChild<QTreeWidget*>(QStringLiteral("thermalTrendChannels"));
+  ASSERT_NE(tree, nullptr);
+  ASSERT_EQ(tree->topLevelItemCount(), 2);
+  EXPECT_EQ(tree->topLevelItem(0)->text(0), QStringLiteral("temperatures (°C)"));
+  EXPECT_EQ(tree->topLevelItem(1)->text(0), QStringLiteral("displacements (µm)"));
+  ASSERT_EQ(tree->topLevelItem(0)->childCount(), 4);
+  EXPECT_EQ(tree->topLevelItem(0)->checkState(0), Qt::PartiallyChecked);
+  tree->topLevelItem(0)->child(0)->setCheckState(0, Qt::Checked);
   EXPECT_EQ(spy.count(), 2);
   EXPECT_TRUE(view_->visibleChannels().contains(QStringLiteral("T1")));
   EXPECT_GT(countColour(grabChart(), t1), 100);
+  EXPECT_EQ(tree->topLevelItem(0)->checkState(0), Qt::Checked);
+
+  // The group's box hides and shows all of the group in one step.
+  tree->topLevelItem(0)->setCheckState(0, Qt::Unchecked);
+  EXPECT_EQ(spy.count(), 3);
+  EXPECT_EQ(view_->visibleChannels(), QStringList{"disp_z_um"});
+  const QImage noTemperatures = grabChart();
+  EXPECT_EQ(countColour(noTemperatures, t1, 20), 0);
+  EXPECT_EQ(countColour(noTemperatures, colourOf("T4"), 20), 0);
+  EXPECT_GT(countColour(noTemperatures, colourOf("disp_z_um")), 50);
+  tree->topLevelItem(0)->setCheckState(0, Qt::Checked);
+  EXPECT_EQ(view_->visibleChannels(), (QStringList{"T1", "T2", "T3", "T4", "disp_z_um"}));
 }
 
 TEST_F(ThermalTrendViewTest, OnlyDisplacementMovesItToTheLeftAxis) {
@@ -392,8 +417,133 @@ TEST(ThermalTrendViewReal, CaiviacSpindleLog) {
   const QImage image = view.grab().toImage();
   image.save(QDir(outputDir()).filePath(QStringLiteral("thermaltrendview_caiviac.png")));
   EXPECT_GT(countColour(image, thermalChannelColor(log, log.indexOf("t1_degC"))), 100);
+
+  // Grouped: temperatures (°C), displacements (µm), speed (rpm); 22 distinct channel colours
+  // within the groups, every shown channel's colour in the pixels.
+  const std::vector<ThermalChannelGroup> groups = thermalChannelGroups(log);
+  ASSERT_EQ(groups.size(), 3u);
+  EXPECT_EQ(groups[0].title, QStringLiteral("temperatures (°C)"));
+  EXPECT_EQ(groups[0].channels.size(), 16u);
+  EXPECT_EQ(groups[1].title, QStringLiteral("displacements (µm)"));
+  EXPECT_EQ(groups[1].channels.size(), 5u);
+  EXPECT_EQ(groups[2].title, QStringLiteral("speed (rpm)"));
+  for (const ThermalChannelGroup& g : groups) {
+    for (std::size_t a = 0; a < g.channels.size(); ++a) {
+      for (std::size_t b = a + 1; b < g.channels.size(); ++b) {
+        const QColor ca = thermalChannelColor(log, g.channels[a]),
+                     cb = thermalChannelColor(log, g.channels[b]);
+        const int distance = std::abs(ca.red() - cb.red()) + std::abs(ca.green() - cb.green()) +
+                             std::abs(ca.blue() - cb.blue());
+        EXPECT_GT(distance, 60) << log.channels[g.channels[a]].name << " and "
+                                << log.channels[g.channels[b]].name
+                                << " look alike: " << ca.name().toStdString() << " "
+                                << cb.name().toStdString();
+      }
+    }
+  }
+  auto* chart = view.findChild<QChartView*>(QStringLiteral("thermalTrendChart"));
+  ASSERT_NE(chart, nullptr);
+  const QImage chartImage = chart->grab().toImage();  // without the swatches of the channel list
+  for (const QString& name : view.visibleChannels()) {
+    EXPECT_GT(countColour(chartImage, thermalChannelColor(log, log.indexOf(name.toStdString())), 20), 30)
+        << name.toStdString() << " is not to be seen";
+  }
+  // The channel tree is the legend: group titles name the units, no entry is cut.
+  auto* tree = view.findChild<QTreeWidget*>(QStringLiteral("thermalTrendChannels"));
+  ASSERT_NE(tree, nullptr);
+  ASSERT_EQ(tree->topLevelItemCount(), 3);
+  QStyleOptionViewItem option;
+  option.initFrom(tree);
+  option.decorationSize = tree->iconSize();
+  QAbstractItemModel* model = tree->model();
+  int entries = 0;
+  for (int g = 0; g < model->rowCount(); ++g) {
+    const QModelIndex group = model->index(g, 0);
+    QList<QModelIndex> indexes{group};
+    for (int i = 0; i < model->rowCount(group); ++i) indexes << model->index(i, 0, group);
+    for (const QModelIndex& index : indexes) {
+      const QRect rect = tree->visualRect(index);
+      const int needed = tree->itemDelegate()->sizeHint(option, index).width();
+      EXPECT_GE(rect.width(), needed)
+          << index.data().toString().toStdString() << " is cut in the channel list";
+      EXPECT_LE(rect.left() + needed, tree->viewport()->width()) << index.data().toString().toStdString();
+      ++entries;
+    }
+  }
+  EXPECT_EQ(entries, 25);
+  // Unticking a displacement channel takes its colour out of the chart.
+  const QColor ch1 = thermalChannelColor(log, log.indexOf("ch1_um"));
+  view.setVisibleChannels(
+      QStringList(view.visibleChannels()).filter(QRegularExpression(QStringLiteral("^(?!ch1_um$)"))));
+  QApplication::processEvents();
+  EXPECT_EQ(countColour(chart->grab().toImage(), ch1, 20), 0);
   EXPECT_GT(countColour(image, thermalPhaseColor(ThermalPhaseKind::Cooling), 3),
             image.width() * image.height() / 20);
+}
+
+}  // namespace
+}  // namespace metrofit
+
+namespace metrofit {
+namespace {
+
+/// Texts of a laid-out chart that Qt Charts cut to fit ("..." at the end).
+QStringList elidedTexts(QGraphicsScene& scene) {
+  QStringList cut;
+  for (QGraphicsItem* item : scene.items()) {
+    if (auto* text = dynamic_cast<QGraphicsTextItem*>(item); text && text->isVisible()) {
+      const QString plain = text->toPlainText();
+      if (plain.endsWith(QStringLiteral("...")) || plain.endsWith(QChar(0x2026))) cut << plain;
+    }
+  }
+  return cut;
+}
+
+// The report's trend chart of the real CAIVIAC log (as thermalsection.cpp makes it, laid out at the
+// report's design width): legend grouped like the axes, every channel entry names its unit,
+// nothing elided.
+TEST(ThermalChartsReport, CaiviacLegendGroupedWithUnitsNotElided) {
+  const QString path = QDir(qEnvironmentVariable("METROFIT_SOURCE_DIR"))
+                           .filePath(QStringLiteral("resources/demo/data/thermal_caiviac.csv"));
+  const ThermalLog log = readThermalLog(path.toStdString());
+  ThermalChartOptions options;
+  options.channelLegend = true;
+  QGraphicsScene scene;
+  QChart* chart = makeThermalTrendChart(log, defaultThermalChannels(log), options);
+  scene.addItem(chart);
+  chart->resize(760.0, 760.0 * 108.0 / 180.0);
+  chart->layout()->activate();
+  QApplication::processEvents();
+
+  QStringList names;
+  for (QLegendMarker* marker : chart->legend()->markers()) {
+    if (marker->isVisible() && marker->type() == QLegendMarker::LegendMarkerTypeXY) names << marker->label();
+  }
+  ASSERT_EQ(names.size(), 14);  // 8 of 16 temperatures, 5 displacements, the speed
+  for (int i = 0; i < names.size(); ++i) {
+    const QString unit = i < 8    ? QStringLiteral("(°C)")
+                         : i < 13 ? QStringLiteral("(µm)")
+                                  : QStringLiteral("(rpm)");
+    EXPECT_TRUE(names[i].endsWith(unit)) << i << ": " << names[i].toStdString();
+  }
+  EXPECT_EQ(names.front(), QStringLiteral("t1 (°C)"));
+  EXPECT_EQ(names[8], QStringLiteral("ch1 (µm)"));
+  EXPECT_EQ(names.back(), QStringLiteral("spindle (rpm)"));
+  EXPECT_TRUE(elidedTexts(scene).isEmpty()) << elidedTexts(scene).join(QStringLiteral(" | ")).toStdString();
+
+  QImage image(760, 456, QImage::Format_ARGB32);
+  image.fill(Qt::white);
+  {
+    QPainter painter(&image);
+    scene.render(&painter, QRectF(image.rect()), chart->sceneBoundingRect());
+  }
+  image.save(QDir(outputDir()).filePath(QStringLiteral("thermaltrend_report_caiviac.png")));
+  EXPECT_GT(countColour(image, thermalChannelColor(log, log.indexOf("ch1_um")), 20), 30);
+
+  // The check sees elision: the same chart squeezed to a third of the width cuts its legend.
+  chart->resize(250.0, 456.0);
+  chart->layout()->activate();
+  EXPECT_FALSE(elidedTexts(scene).isEmpty());
 }
 
 }  // namespace

@@ -31,12 +31,6 @@ constexpr int kMaxDefaultTemperatures = 8;
 constexpr int kTargetTicks = 6;
 constexpr int kMaxLegendRow = 8;  ///< legend entries that still fit in one row below the plot
 
-// Temperatures: Tableau-like hues. Other channels: darker, distinct hues, drawn dashed.
-constexpr std::array<QRgb, 10> kTemperaturePalette = {0xd62728, 0xff7f0e, 0x2ca02c, 0x1f77b4, 0x9467bd,
-                                                      0x8c564b, 0xe377c2, 0x17becf, 0xbcbd22, 0x7f7f7f};
-constexpr std::array<QRgb, 7> kOtherPalette = {0x202020, 0xb8007a, 0x3b6e00, 0x4b3fa0,
-                                               0x9a5b00, 0x006d6d, 0xc03000};
-
 /// Sort rank of an axis group: temperatures first (left), speed last (outermost on the right).
 int kindRank(ChannelKind kind) {
   switch (kind) {
@@ -68,6 +62,23 @@ QString kindWord(ChannelKind kind) {
       break;
   }
   return ThermalChartsText::tr("value");
+}
+
+/// Group title word: what the channels of a group are ("temperatures", "displacements", ...).
+QString groupWord(ChannelKind kind) {
+  switch (kind) {
+    case ChannelKind::Temperature:
+      return ThermalChartsText::tr("temperatures");
+    case ChannelKind::Displacement:
+      return ThermalChartsText::tr("displacements");
+    case ChannelKind::Strain:
+      return ThermalChartsText::tr("strains");
+    case ChannelKind::Speed:
+      return ThermalChartsText::tr("speed");
+    case ChannelKind::Other:
+      break;
+  }
+  return ThermalChartsText::tr("other channels");
 }
 
 /// The smallest 1, 2 or 5 times a power of ten that is >= x (x > 0).
@@ -157,19 +168,91 @@ QStringList defaultThermalChannels(const ThermalLog& log) {
   return names;
 }
 
+std::vector<ThermalChannelGroup> thermalChannelGroups(const ThermalLog& log) {
+  std::vector<ThermalChannelGroup> groups;
+  for (int i = 0; i < static_cast<int>(log.channels.size()); ++i) {
+    const ThermalChannel& c = log.channels[i];
+    const ChannelKind kind = channelKind(c);
+    const QString unit = channelUnit(c);
+    auto it = std::find_if(groups.begin(), groups.end(),
+                           [&](const ThermalChannelGroup& g) { return g.kind == kind && g.unit == unit; });
+    if (it == groups.end()) {
+      ThermalChannelGroup g;
+      g.kind = kind;
+      g.unit = unit;
+      QString word = groupWord(kind);
+      if (unit.endsWith(QLatin1String("/min"))) word = ThermalChartsText::tr("feed speed");
+      g.title = unit.isEmpty() ? word : ThermalChartsText::tr("%1 (%2)").arg(word, unit);
+      groups.push_back(g);
+      it = groups.end() - 1;
+    }
+    it->channels.push_back(i);
+  }
+  std::stable_sort(groups.begin(), groups.end(),
+                   [](const ThermalChannelGroup& a, const ThermalChannelGroup& b) {
+                     return kindRank(a.kind) < kindRank(b.kind);
+                   });
+  return groups;
+}
+
 QColor thermalChannelColor(const ThermalLog& log, int channelIndex) {
   if (channelIndex < 0 || channelIndex >= static_cast<int>(log.channels.size())) {
     return QColor(Qt::black);
   }
-  const bool temperature = channelKind(log.channels[channelIndex]) == ChannelKind::Temperature;
-  std::size_t rank = 0;
+  // Rank among the channels of the same palette family: temperatures; displacements, strains and
+  // other channels; speeds.
+  const auto family = [](ChannelKind k) {
+    return k == ChannelKind::Temperature || k == ChannelKind::Speed ? k : ChannelKind::Displacement;
+  };
+  const ChannelKind kind = channelKind(log.channels[channelIndex]);
+  int rank = 0;
   for (int i = 0; i < channelIndex; ++i) {
-    if ((channelKind(log.channels[i]) == ChannelKind::Temperature) == temperature) {
-      ++rank;
+    rank += family(channelKind(log.channels[i])) == family(kind) ? 1 : 0;
+  }
+  switch (kind) {
+    case ChannelKind::Temperature:
+      return palette::temperatureSeries(rank);
+    case ChannelKind::Speed:
+      return palette::speedSeries(rank);
+    case ChannelKind::Displacement:
+    case ChannelKind::Strain:
+    case ChannelKind::Other:
+      break;
+  }
+  return palette::displacementSeries(rank);
+}
+
+Qt::PenStyle thermalChannelPenStyle(const ThermalLog& log, int channelIndex) {
+  if (channelIndex < 0 || channelIndex >= static_cast<int>(log.channels.size())) {
+    return Qt::SolidLine;
+  }
+  switch (channelKind(log.channels[channelIndex])) {
+    case ChannelKind::Temperature:
+      return Qt::SolidLine;
+    case ChannelKind::Displacement:
+    case ChannelKind::Strain:
+      return Qt::DashLine;
+    case ChannelKind::Speed:
+      return Qt::DashDotLine;
+    case ChannelKind::Other:
+      break;
+  }
+  return Qt::DotLine;
+}
+
+QString channelLegendName(const ThermalChannel& channel) {
+  QString name = QString::fromStdString(channel.name);
+  const QString unit = channelUnit(channel);
+  if (unit.isEmpty()) {
+    return name;
+  }
+  if (!channel.unit.empty()) {
+    const QString suffix = QLatin1Char('_') + QString::fromStdString(channel.unit);
+    if (name.endsWith(suffix, Qt::CaseInsensitive) && name.size() > suffix.size()) {
+      name.chop(suffix.size());
     }
   }
-  return temperature ? QColor(kTemperaturePalette[rank % kTemperaturePalette.size()])
-                     : QColor(kOtherPalette[rank % kOtherPalette.size()]);
+  return ThermalChartsText::tr("%1 (%2)").arg(name, unit);
 }
 
 QColor thermalPhaseColor(ThermalPhaseKind kind) {
@@ -248,26 +331,18 @@ QChart* makeThermalTrendChart(const ThermalLog& log, const QStringList& channels
   }
   chart->addAxis(timeAxis, Qt::AlignBottom);
 
-  // Group the requested channels by kind and unit, temperatures first.
+  // The groups of the requested channels (kind and unit), temperatures first.
   std::vector<AxisGroup> groups;
-  for (int i = 0; i < static_cast<int>(log.channels.size()); ++i) {
-    const ThermalChannel& c = log.channels[i];
-    if (!channels.contains(QString::fromStdString(c.name)) || c.values.size() != log.rows()) {
-      continue;
+  for (const ThermalChannelGroup& g : thermalChannelGroups(log)) {
+    AxisGroup axisGroup{g.kind, g.unit, {}, {}};
+    for (int i : g.channels) {
+      const ThermalChannel& c = log.channels[i];
+      if (channels.contains(QString::fromStdString(c.name)) && c.values.size() == log.rows()) {
+        axisGroup.channels.push_back(i);
+      }
     }
-    const ChannelKind kind = channelKind(c);
-    const QString unit = channelUnit(c);
-    auto it = std::find_if(groups.begin(), groups.end(),
-                           [&](const AxisGroup& g) { return g.kind == kind && g.unit == unit; });
-    if (it == groups.end()) {
-      groups.push_back({kind, unit, {}, {}});
-      it = groups.end() - 1;
-    }
-    it->channels.push_back(i);
+    if (!axisGroup.channels.empty()) groups.push_back(axisGroup);
   }
-  std::stable_sort(groups.begin(), groups.end(), [](const AxisGroup& a, const AxisGroup& b) {
-    return kindRank(a.kind) < kindRank(b.kind);
-  });
 
   // Phase bands first, so the lines are drawn over them; on a hidden 0..1 axis spanning the plot.
   if (options.shadePhases && log.rows() >= 3) {
@@ -333,11 +408,10 @@ QChart* makeThermalTrendChart(const ThermalLog& log, const QStringList& channels
         group.range.add(c.values[row]);
       }
       auto* series = new QLineSeries;
-      series->setName(QString::fromStdString(c.name));
-      QPen pen(thermalChannelColor(log, index), 1.6);
-      if (group.kind != ChannelKind::Temperature) {
-        pen.setStyle(Qt::DashLine);
-      }
+      series->setName(channelLegendName(c));
+      series->setObjectName(QString::fromStdString(c.name));
+      QPen pen(thermalChannelColor(log, index), group.kind == ChannelKind::Temperature ? 1.6 : 2.0);
+      pen.setStyle(thermalChannelPenStyle(log, index));
       series->setPen(pen);
       series->replace(points);
       chart->addSeries(series);
@@ -354,6 +428,9 @@ QChart* makeThermalTrendChart(const ThermalLog& log, const QStringList& channels
     const bool visible = marker->type() == QLegendMarker::LegendMarkerTypeArea || options.channelLegend;
     marker->setVisible(visible);
     markers += visible ? 1 : 0;
+    // Channels show their line (solid, dashed, dash-dotted), the phase bands a filled square.
+    marker->setShape(marker->type() == QLegendMarker::LegendMarkerTypeArea ? QLegend::MarkerShapeRectangle
+                                                                           : QLegend::MarkerShapeFromSeries);
   }
   chart->legend()->setVisible(markers > 0);
   chart->legend()->setAlignment(markers > kMaxLegendRow ? Qt::AlignRight : Qt::AlignBottom);

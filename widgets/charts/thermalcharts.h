@@ -16,7 +16,9 @@
 #include <QStringList>
 
 #include <string>
+#include <vector>
 
+#include "core/thermal/thermal_log.h"
 #include "widgets/charts/trendanalysis.h"
 
 QT_BEGIN_NAMESPACE
@@ -24,8 +26,6 @@ class QChart;
 QT_END_NAMESPACE
 
 namespace metrofit {
-struct ThermalLog;
-struct ThermalChannel;
 
 struct ThermalChartOptions {
   int maxPointsPerSeries = 2000;  ///< decimation limit per series (>= 4)
@@ -37,10 +37,32 @@ struct ThermalChartOptions {
 /// Channels shown by default: every channel, but at most the first 8 temperatures.
 QStringList defaultThermalChannels(const ThermalLog& log);
 
-/// Colour of the log's channel number `channelIndex`: temperatures take a palette of light-to-read
-/// hues in their order among temperatures, other channels a second, darker palette in their order
-/// among those (stable, whatever else is shown).
+/// The channels of one kind and unit: one y axis of the chart, one group of its legend and of the
+/// view's channel list ("temperatures (°C)", "displacements (µm)", "speed (rpm)").
+struct ThermalChannelGroup {
+  ChannelKind kind = ChannelKind::Other;
+  QString unit;               ///< as printed: "°C", "µm", "rpm", ... or empty
+  QString title;              ///< "temperatures (°C)", "displacements (µm)", "speed (rpm)", ...
+  std::vector<int> channels;  ///< indices into log.channels, in the log's order
+};
+
+/// Every channel of the log in its group; temperatures first, then displacements, strains, other
+/// channels, speeds last (the order of the axes, the legend and the channel list).
+std::vector<ThermalChannelGroup> thermalChannelGroups(const ThermalLog& log);
+
+/// Colour of the log's channel number `channelIndex`: the palette of its group (palette.h:
+/// temperatureSeries, displacementSeries, speedSeries) at its rank in its group, so no two channels
+/// of a group share a colour and a colour does not depend on what else is shown.
 QColor thermalChannelColor(const ThermalLog& log, int channelIndex);
+
+/// Line style of a channel: temperatures solid, displacements and strains dashed, speeds
+/// dash-dotted, other channels dotted.
+Qt::PenStyle thermalChannelPenStyle(const ThermalLog& log, int channelIndex);
+
+/// Legend name of a channel: its column name without a unit suffix, with the unit:
+/// "t1_degC" -> "t1 (°C)", "disp_z_um" -> "disp_z (µm)", "T1" -> "T1 (°C)", "spindle_rpm" ->
+/// "spindle (rpm)"; the bare name when the channel has no unit.
+QString channelLegendName(const ThermalChannel& channel);
 
 /// Fill colour of the background band of a phase (opaque, light).
 QColor thermalPhaseColor(ThermalPhaseKind kind);

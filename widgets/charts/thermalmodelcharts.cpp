@@ -144,6 +144,9 @@ void addHeldOutBand(QChart* chart, const TimeAxis& time, double boundaryMin, dou
   chart->addSeries(line);
   line->attachAxis(time.axis);
   line->attachAxis(bandAxis);
+  // The dashed line is the band's edge: the band's "held out" entry explains both, and one entry
+  // fewer keeps the legend row short enough not to be elided.
+  for (QLegendMarker* marker : chart->legend()->markers(line)) marker->setVisible(false);
 }
 
 void finishLegend(QChart* chart, bool legend) {

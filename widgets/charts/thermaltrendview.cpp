@@ -1,15 +1,20 @@
-// ThermalTrendView: the trend chart (thermalcharts.h) beside a checkable channel list.
+// ThermalTrendView: the trend chart (thermalcharts.h) beside its legend, a checkable channel tree:
+// one branch per group (temperatures (°C), displacements (µm), speed (rpm), ...) whose check box
+// shows or hides the whole group, one leaf per channel with its colour and line style.
 #include "widgets/charts/thermaltrendview.h"
 
 #include <QChart>
 #include <QChartView>
 #include <QHBoxLayout>
+#include <QHeaderView>
 #include <QIcon>
 #include <QLabel>
-#include <QListWidget>
 #include <QPainter>
 #include <QPixmap>
+#include <QTreeWidget>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 #include "core/thermal/thermal_log.h"
 #include "widgets/charts/thermalcharts.h"
@@ -20,7 +25,7 @@ namespace metrofit {
 struct ThermalTrendView::Impl {
   ThermalLog log;
   QChartView* chartView = nullptr;
-  QListWidget* channelList = nullptr;
+  QTreeWidget* channelList = nullptr;
   QStringList visible;
 
   /// Replaces the chart by a new one of the visible channels (cheap: series are decimated).
@@ -32,13 +37,25 @@ struct ThermalTrendView::Impl {
     delete old;
   }
 
+  /// The channel leaves, in tree order.
+  QList<QTreeWidgetItem*> leaves() const {
+    QList<QTreeWidgetItem*> items;
+    for (int g = 0; g < channelList->topLevelItemCount(); ++g) {
+      QTreeWidgetItem* group = channelList->topLevelItem(g);
+      for (int i = 0; i < group->childCount(); ++i) items << group->child(i);
+    }
+    return items;
+  }
+
   /// Visible channels in the log's order, from the check boxes.
   QStringList checkedChannels() const {
     QStringList names;
-    for (int i = 0; i < channelList->count(); ++i) {
-      const QListWidgetItem* item = channelList->item(i);
-      if (item->checkState() == Qt::Checked) {
-        names << item->data(Qt::UserRole).toString();
+    for (const ThermalChannel& c : log.channels) {
+      const QString name = QString::fromStdString(c.name);
+      for (const QTreeWidgetItem* item : leaves()) {
+        if (item->data(0, Qt::UserRole).toString() == name && item->checkState(0) == Qt::Checked) {
+          names << name;
+        }
       }
     }
     return names;
@@ -46,26 +63,48 @@ struct ThermalTrendView::Impl {
 
   void setChecks(const QStringList& names) {
     const QSignalBlocker blocker(channelList);
-    for (int i = 0; i < channelList->count(); ++i) {
-      QListWidgetItem* item = channelList->item(i);
-      item->setCheckState(names.contains(item->data(Qt::UserRole).toString()) ? Qt::Checked : Qt::Unchecked);
+    for (QTreeWidgetItem* item : leaves()) {
+      item->setCheckState(
+          0, names.contains(item->data(0, Qt::UserRole).toString()) ? Qt::Checked : Qt::Unchecked);
     }
+    updateGroupChecks();
+  }
+
+  /// A group's box: ticked when all its channels are shown, partly when some are.
+  void updateGroupChecks() {
+    const QSignalBlocker blocker(channelList);
+    for (int g = 0; g < channelList->topLevelItemCount(); ++g) {
+      QTreeWidgetItem* group = channelList->topLevelItem(g);
+      int checked = 0;
+      for (int i = 0; i < group->childCount(); ++i)
+        checked += group->child(i)->checkState(0) == Qt::Checked ? 1 : 0;
+      group->setCheckState(0, checked == 0                     ? Qt::Unchecked
+                              : checked == group->childCount() ? Qt::Checked
+                                                               : Qt::PartiallyChecked);
+    }
+  }
+
+  /// Wide enough for every entry: the legend is never elided.
+  void fitWidth() {
+    channelList->resizeColumnToContents(0);
+    const int width = channelList->columnWidth(0) + 2 * channelList->frameWidth() + 24;
+    channelList->setMinimumWidth(std::max(120, width));
+    channelList->setMaximumWidth(std::max(120, width));
   }
 };
 
 namespace {
 
-/// A small square of the channel's colour, dashed underline for channels drawn dashed.
-QIcon swatch(const QColor& color, bool dashed) {
-  QPixmap pixmap(14, 14);
+/// A short line of the channel's colour and style, as it is drawn in the chart.
+QIcon swatch(const QColor& color, Qt::PenStyle style) {
+  QPixmap pixmap(24, 14);
   pixmap.fill(Qt::transparent);
   QPainter painter(&pixmap);
-  if (dashed) {
-    painter.fillRect(QRect(1, 5, 5, 4), color);
-    painter.fillRect(QRect(8, 5, 5, 4), color);
-  } else {
-    painter.fillRect(QRect(1, 1, 12, 12), color);
-  }
+  QPen pen(color, 3.0);
+  pen.setStyle(style);
+  pen.setCapStyle(Qt::FlatCap);
+  painter.setPen(pen);
+  painter.drawLine(QPointF(0.0, 7.0), QPointF(24.0, 7.0));
   return QIcon(pixmap);
 }
 
@@ -79,10 +118,16 @@ ThermalTrendView::ThermalTrendView(QWidget* parent) : QWidget(parent), d(std::ma
   d->chartView->setMinimumSize(360, 240);
   d->chartView->chart()->setAnimationOptions(QChart::NoAnimation);
 
-  d->channelList = new QListWidget(this);
+  d->channelList = new QTreeWidget(this);
   d->channelList->setObjectName(QStringLiteral("thermalTrendChannels"));
-  d->channelList->setToolTip(tr("Channels shown in the chart"));
-  d->channelList->setMaximumWidth(190);
+  d->channelList->setToolTip(tr("Channels shown in the chart: tick a group to show all of it"));
+  d->channelList->setHeaderHidden(true);
+  d->channelList->setColumnCount(1);
+  d->channelList->setRootIsDecorated(true);
+  d->channelList->setIconSize(QSize(24, 14));
+  d->channelList->setTextElideMode(Qt::ElideNone);
+  d->channelList->header()->setStretchLastSection(false);
+  d->channelList->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
   d->channelList->setMinimumWidth(120);
 
   auto* side = new QVBoxLayout;
@@ -95,7 +140,15 @@ ThermalTrendView::ThermalTrendView(QWidget* parent) : QWidget(parent), d(std::ma
   layout->addWidget(d->chartView, 1);
   layout->addLayout(side);
 
-  connect(d->channelList, &QListWidget::itemChanged, this, [this] {
+  connect(d->channelList, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item) {
+    if (item->childCount() > 0) {
+      // A group's box: all of its channels on or off (a partly ticked group goes to all on).
+      const Qt::CheckState state = item->checkState(0) == Qt::Unchecked ? Qt::Unchecked : Qt::Checked;
+      const QSignalBlocker blocker(d->channelList);
+      item->setCheckState(0, state);
+      for (int i = 0; i < item->childCount(); ++i) item->child(i)->setCheckState(0, state);
+    }
+    d->updateGroupChecks();
     const QStringList names = d->checkedChannels();
     if (names == d->visible) {
       return;
@@ -113,19 +166,30 @@ void ThermalTrendView::setLog(const ThermalLog& log) {
   {
     const QSignalBlocker blocker(d->channelList);
     d->channelList->clear();
-    for (int i = 0; i < static_cast<int>(log.channels.size()); ++i) {
-      const ThermalChannel& c = log.channels[i];
-      const QString name = QString::fromStdString(c.name);
-      auto* item =
-          new QListWidgetItem(swatch(thermalChannelColor(log, i), channelKind(c) != ChannelKind::Temperature),
-                              name, d->channelList);
-      item->setData(Qt::UserRole, name);
-      item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable | Qt::ItemIsSelectable);
-      item->setToolTip(channelAxisTitle(c));
+    for (const ThermalChannelGroup& g : thermalChannelGroups(log)) {
+      auto* group = new QTreeWidgetItem(d->channelList, QStringList{g.title});
+      group->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+      group->setCheckState(0, Qt::Unchecked);
+      QFont bold = group->font(0);
+      bold.setBold(true);
+      group->setFont(0, bold);
+      group->setToolTip(0, tr("Show or hide all %1").arg(g.title));
+      for (int i : g.channels) {
+        const ThermalChannel& c = log.channels[i];
+        const QString name = QString::fromStdString(c.name);
+        auto* item = new QTreeWidgetItem(group, QStringList{name});
+        item->setIcon(0, swatch(thermalChannelColor(log, i), thermalChannelPenStyle(log, i)));
+        item->setData(0, Qt::UserRole, name);
+        item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable | Qt::ItemIsSelectable);
+        item->setCheckState(0, Qt::Unchecked);
+        item->setToolTip(0, channelLegendName(c));
+      }
     }
+    d->channelList->expandAll();
   }
   d->visible = defaultThermalChannels(log);
   d->setChecks(d->visible);
+  d->fitWidth();
   d->rebuildChart();
   emit visibleChannelsChanged(d->visible);
 }

@@ -1,5 +1,6 @@
 #include "widgets/common/palette.h"
 
+#include <algorithm>
 #include <array>
 
 namespace metrofit::palette {
@@ -7,7 +8,33 @@ namespace metrofit::palette {
 namespace {
 constexpr std::array<QRgb, 10> kSeries = {0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd,
                                           0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22, 0x17becf};
+// Temperatures: Tableau 10, then ten further hues that differ from those in hue or lightness.
+constexpr std::array<QRgb, 20> kTemperatures = {
+    0xd62728, 0x1f77b4, 0x2ca02c, 0xff7f0e, 0x9467bd, 0x17becf, 0x8c564b, 0xe377c2, 0xbcbd22, 0x7f7f7f,
+    0x393b79, 0xe7ba52, 0x7b4173, 0x637939, 0xff9896, 0x6baed6, 0xc49c94, 0x74c476, 0xf7b6d2, 0xa55194};
+// Displacements (and strains): dark hues, drawn dashed over the temperatures.
+constexpr std::array<QRgb, 10> kDisplacements = {0xb8007a, 0x0b3c8c, 0x006d2c, 0xc03000, 0x006d6d,
+                                                 0x9a5b00, 0x4b3fa0, 0x000000, 0x5a5a5a, 0x7a0a0a};
+constexpr std::array<QRgb, 5> kSpeeds = {0x303030, 0x6a3d9a, 0x005a32, 0x8c2d04, 0x08306b};
+
+template <std::size_t N>
+QColor cycled(const std::array<QRgb, N>& colours, int index) {
+  const int n = static_cast<int>(N);
+  const int i = std::max(0, index);
+  const QColor base(colours[static_cast<std::size_t>(i % n)]);
+  return i < n ? base : base.darker(100 + 35 * (i / n));
+}
 }  // namespace
+
+QColor temperatureSeries(int index) {
+  return cycled(kTemperatures, index);
+}
+QColor displacementSeries(int index) {
+  return cycled(kDisplacements, index);
+}
+QColor speedSeries(int index) {
+  return cycled(kSpeeds, index);
+}
 
 QColor nominal() {
   return QColor(0x6e, 0x6e, 0x6e);

@@ -58,4 +58,12 @@ QColor warmEnd();
 /// A categorical colour (Tableau 10), index taken modulo 10.
 QColor series(int index);
 
+/// Sensor channels of a log, one palette per group, so that no two channels of a group share a
+/// colour (the groups differ by line style too: temperatures solid, displacements dashed, speeds
+/// dash-dotted). Temperatures: 20 mid-tone hues; displacements and strains: 10 dark hues; speeds:
+/// 5 near-black/dark hues. Beyond a palette's length the hues repeat darker (still distinct).
+QColor temperatureSeries(int index);
+QColor displacementSeries(int index);
+QColor speedSeries(int index);
+
 }  // namespace metrofit::palette

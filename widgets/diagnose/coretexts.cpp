@@ -238,7 +238,7 @@ const std::map<std::string, const char*>& parameterNames() {
 }
 
 QString translated(const std::string& source) {
-  return QCoreApplication::translate(kCoreTextContext, source.c_str());
+  return displaySymbols(QCoreApplication::translate(kCoreTextContext, source.c_str()));
 }
 
 /// Replaces %1 to %99 by args in one pass: core's substitutePlaceholders on UTF-8 (the
@@ -294,7 +294,7 @@ QString coreText(const Phrases& text, const QLocale& locale) {
 }
 
 QString coreText(const Phrases& text, const std::string& english, const QLocale& locale) {
-  return text.empty() ? displayUnit(QString::fromStdString(english)) : coreText(text, locale);
+  return text.empty() ? displaySymbols(QString::fromStdString(english)) : coreText(text, locale);
 }
 
 QString localNumber(double value, int precision, char style, const QLocale& locale) {
@@ -306,6 +306,13 @@ QString displayUnit(const QString& units) {
   QString s = units;
   static const QRegularExpression um(QStringLiteral("\\bum\\b"));
   s.replace(um, QStringLiteral("µm"));
+  return s;
+}
+
+QString displaySymbols(const QString& text) {
+  QString s = displayUnit(text);
+  s.replace(QStringLiteral("+-"), QStringLiteral("±"));
+  s.replace(QStringLiteral("->"), QStringLiteral("→"));
   return s;
 }
 

@@ -44,6 +44,10 @@ QString localNumber(double value, int precision = 4, char style = 'g', const QLo
 /// Units for display: "um" -> "µm" (as a word, e.g. "um/min" -> "µm/min"); others unchanged.
 QString displayUnit(const QString& units);
 
+/// Core's ASCII symbols as the GUI shows them: "+-" -> "±", "->" -> "→", "um" -> "µm" (every
+/// template and English text of core passes through it, whatever the language).
+QString displaySymbols(const QString& text);
+
 /// The display name of a diagnosis parameter key (CONTRACT.md, e.g. "tau_min" -> "time constant"),
 /// translated; unknown keys as they are.
 QString parameterDisplayName(const std::string& key);

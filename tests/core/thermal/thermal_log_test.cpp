@@ -36,8 +36,7 @@ TEST(ThermalLog, TimeUnitsAreConvertedToMinutes) {
 TEST(ThermalLog, ValidationErrors) {
   EXPECT_EQ(error("t,T1\n0,1\n1,2\n2,3\n"),
             "log.csv: field 'time_s|time_min|time_h': no time column; the first column of a thermal log must "
-            "be time_s, "
-            "time_min or time_h");
+            "be time_s, time_min or time_h, or give the sampling interval (--sample-interval 15s)");
   EXPECT_EQ(error("time_min,T1\n0,1\n2,2\n1,3\n"),
             "log.csv:4:1: field 'time_min': time does not increase (1 after 2); rows must be in strictly "
             "increasing time");
@@ -49,6 +48,50 @@ TEST(ThermalLog, ValidationErrors) {
   EXPECT_EQ(error("time_min,time_s,T1\n0,0,1\n1,60,2\n2,120,3\n"),
             "log.csv: field 'time_min': more than one time column; keep one of time_s, time_min, time_h");
   EXPECT_EQ(error("time_min,T1\n0,1\n1,NaN\n2,3\n"), "log.csv:3:2: field 'T1': 'NaN' is not a finite number");
+}
+
+TEST(ThermalLog, SampleIntervalGivesTheTimeOfALogWithoutATimeColumn) {
+  EXPECT_DOUBLE_EQ(parseSampleInterval("15s"), 0.25);
+  EXPECT_DOUBLE_EQ(parseSampleInterval("15 s"), 0.25);
+  EXPECT_DOUBLE_EQ(parseSampleInterval("2min"), 2.0);
+  EXPECT_DOUBLE_EQ(parseSampleInterval("0.5h"), 30.0);
+  EXPECT_DOUBLE_EQ(parseSampleInterval("1 MIN "), 1.0);
+  for (const char* bad : {"15", "s", "-5s", "0s", "15 sec", "15ms", "nan s", "", "1e999s"}) {
+    try {
+      (void)parseSampleInterval(bad);
+      ADD_FAILURE() << "'" << bad << "' accepted";
+    } catch (const OptionsError& e) {
+      EXPECT_NE(std::string(e.what()).find("--sample-interval"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("s, min or h"), std::string::npos) << e.what();
+    }
+  }
+
+  const CsvTable sensors = parseCsv("T1_degC,disp_z_um\n20,0\n21,1\n22,2\n23,2.5\n", "s.csv");
+  const ThermalLog log = thermalLogFromCsv(sensors, 3, 0.25);
+  EXPECT_EQ(log.timeMin, (std::vector<double>{0.0, 0.25, 0.5, 0.75}));
+  EXPECT_EQ(log.timeColumn, "time_min");
+  EXPECT_DOUBLE_EQ(log.sampleIntervalMin, 0.25);
+  ASSERT_EQ(log.channels.size(), 2u);  // both columns are channels
+  EXPECT_EQ(log.channels[0].name, "T1_degC");
+  // The CSV it writes has a time column, so it reads back without the interval.
+  EXPECT_EQ(thermalLogFromCsv(parseCsv(thermalLogToCsv(log), "w.csv")).timeMin, log.timeMin);
+  // Without the interval: the error says how to give it.
+  EXPECT_NE(error("T1_degC,disp_z_um\n20,0\n21,1\n22,2\n").find("--sample-interval"), std::string::npos);
+  // A time column and an interval: which one is meant is not clear.
+  try {
+    (void)thermalLogFromCsv(parseCsv("time_s,T1\n0,1\n1,2\n2,3\n", "t.csv"), 3, 0.25);
+    ADD_FAILURE() << "time column and interval accepted";
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("time_s"), std::string::npos) << e.what();
+  }
+  // Through readThermalLog: the interval travels in CsvReadOptions.
+  test::TempDir tmp;
+  test::writeText(tmp.file("s.csv"), "T1;dZ_um\n20,5;0\n21,5;1\n22,5;2\n");
+  CsvReadOptions csv;
+  csv.sampleIntervalMin = 1.0;
+  const ThermalLog read = readThermalLog(tmp.file("s.csv"), 3, csv);
+  EXPECT_EQ(read.timeMin, (std::vector<double>{0.0, 1.0, 2.0}));
+  EXPECT_DOUBLE_EQ(read.channels[0].values[1], 21.5);
 }
 
 TEST(ThermalLog, UnknownChannelListsTheColumns) {
