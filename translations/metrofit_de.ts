@@ -2822,7 +2822,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+63"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+70"/>
         <location line="+11"/>
         <source>%1: project overview (Ctrl+1)</source>
         <translation>%1: Projektübersicht (Strg+1)</translation>
@@ -6930,7 +6930,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalcharts.cpp" line="+60"/>
+        <location filename="../widgets/charts/thermalcharts.cpp" line="+54"/>
         <source>temperature</source>
         <translation>Temperatur</translation>
     </message>
@@ -6946,21 +6946,45 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+17"/>
         <source>speed</source>
         <translation>Drehzahl</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-13"/>
         <source>value</source>
         <translation>Wert</translation>
     </message>
     <message>
-        <location line="+144"/>
+        <location line="+7"/>
+        <source>temperatures</source>
+        <translation>Temperaturen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacements</source>
+        <translation>Verlagerungen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>strains</source>
+        <translation>Dehnungen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>other channels</source>
+        <translation>weitere Kanäle</translation>
+    </message>
+    <message>
+        <location line="+103"/>
+        <location line="+113"/>
         <source>feed speed</source>
         <translation>Vorschubgeschwindigkeit</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-112"/>
+        <location line="+70"/>
+        <location line="+43"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -6975,7 +6999,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Zeit (min)</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+55"/>
         <source>heating</source>
         <translation>Erwärmung</translation>
     </message>
@@ -7108,7 +7132,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Grenze Anpassung | Test</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+86"/>
         <source>%1: lag %2 min</source>
         <translation>%1: Verzug %2 min</translation>
     </message>
@@ -7586,14 +7610,19 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalTrendView</name>
     <message>
-        <location filename="../widgets/charts/thermaltrendview.cpp" line="+84"/>
-        <source>Channels shown in the chart</source>
-        <translation>Im Diagramm angezeigte Kanäle</translation>
+        <location filename="../widgets/charts/thermaltrendview.cpp" line="+123"/>
+        <source>Channels shown in the chart: tick a group to show all of it</source>
+        <translation>In der Grafik gezeigte Kanäle: eine angekreuzte Gruppe zeigt alle ihre Kanäle</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+12"/>
         <source>Channels</source>
         <translation>Kanäle</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Show or hide all %1</source>
+        <translation>Alle %1 zeigen oder ausblenden</translation>
     </message>
 </context>
 <context>

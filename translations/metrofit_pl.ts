@@ -2825,7 +2825,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+63"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+70"/>
         <location line="+11"/>
         <source>%1: project overview (Ctrl+1)</source>
         <translation>%1: przegląd projektu (Ctrl+1)</translation>
@@ -6952,7 +6952,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalcharts.cpp" line="+60"/>
+        <location filename="../widgets/charts/thermalcharts.cpp" line="+54"/>
         <source>temperature</source>
         <translation>temperatura</translation>
     </message>
@@ -6968,21 +6968,45 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+17"/>
         <source>speed</source>
         <translation>prędkość</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-13"/>
         <source>value</source>
         <translation>wartość</translation>
     </message>
     <message>
-        <location line="+144"/>
+        <location line="+7"/>
+        <source>temperatures</source>
+        <translation>temperatury</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>displacements</source>
+        <translation>przemieszczenia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>strains</source>
+        <translation>odkształcenia</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>other channels</source>
+        <translation>inne kanały</translation>
+    </message>
+    <message>
+        <location line="+103"/>
+        <location line="+113"/>
         <source>feed speed</source>
         <translation>prędkość posuwu</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-112"/>
+        <location line="+70"/>
+        <location line="+43"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -6997,7 +7021,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>czas (min)</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+55"/>
         <source>heating</source>
         <translation>nagrzewanie</translation>
     </message>
@@ -7130,7 +7154,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>granica dopas./test</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+86"/>
         <source>%1: lag %2 min</source>
         <translation>%1: opóźnienie %2 min</translation>
     </message>
@@ -7608,14 +7632,19 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalTrendView</name>
     <message>
-        <location filename="../widgets/charts/thermaltrendview.cpp" line="+84"/>
-        <source>Channels shown in the chart</source>
-        <translation>Kanały pokazane na wykresie</translation>
+        <location filename="../widgets/charts/thermaltrendview.cpp" line="+123"/>
+        <source>Channels shown in the chart: tick a group to show all of it</source>
+        <translation>Kanały pokazane na wykresie: zaznaczona grupa pokazuje wszystkie swoje kanały</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+12"/>
         <source>Channels</source>
         <translation>Kanały</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Show or hide all %1</source>
+        <translation>Pokaż lub ukryj wszystkie: %1</translation>
     </message>
 </context>
 <context>
