@@ -18,7 +18,7 @@
 #ifdef METROFIT_TEST_QT_XVFB
 #include <QSurfaceFormat>
 
-#include "widgets/pointview/pointsetview.h"
+#include "widgets/matching/pointsetview.h"
 #endif
 
 namespace metrofit::test {

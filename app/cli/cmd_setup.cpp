@@ -14,7 +14,7 @@
 //   setup validate --model M.json [--sets N] [--trials M] [--methods cripso,pso,...] [--budget N]
 //         [--w1 MM] [--w2 MM] [--seed N] [--data R.csv ...] [--threads N] [--out F]
 //
-// The paper's statistical validation (core/setup/validation.h, Fig. 18): N simulated sets x M trials,
+// The paper's statistical validation (core/study/setup_validation.h, Fig. 18): N simulated sets x M trials,
 // the f1(0) range checked against the paper's (-0.011..0.063 mm), the share of the setup data in the
 // dimension error estimated on the simulated sets and, with --data, on measured data.
 //
@@ -47,8 +47,8 @@
 #include "core/setup/model.h"
 #include "core/setup/objective.h"
 #include "core/setup/report.h"
-#include "core/setup/validation.h"
 #include "core/sim/setup_sim.h"
+#include "core/study/setup_validation.h"
 
 namespace metrofit::cli {
 namespace {

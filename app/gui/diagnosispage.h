@@ -1,7 +1,7 @@
 #pragma once
 // The diagnosis study page (issue 8, the closed loop): a domain selector (thermal, kinematic, setup,
 // matching), the data and settings of the project's studies.diagnosis.<domain>
-// (widgets/diagnose/diagnosisstudy.h), Run (Ctrl+R) in a worker thread with progress and Cancel,
+// (core/study/diagnosis_study.h), Run (Ctrl+R) in a worker thread with progress and Cancel,
 // then the residual plot of each accepted effect, the candidate table (effect, parameters ±
 // standard error, rmse before -> after, evidence, accepted; Ctrl+C copies) and the before / after
 // error bars. A second tab, "Residual check" (widgets/diagnose/residualcheckview.h), shows what the
@@ -18,7 +18,7 @@
 #include <optional>
 
 #include "core/diagnose/diagnosis.h"
-#include "widgets/diagnose/diagnosisstudy.h"
+#include "core/study/diagnosis_study.h"
 
 class QComboBox;
 class QLabel;

@@ -8,7 +8,7 @@
 // compensation (studies.kinematics.from_spc), and the three-axis errors from circular tests in XY,
 // YZ and ZX (studies.kinematics.planes).
 // Effects applied on the diagnosis page (studies.diagnosis.kinematic.applied) are part of the model
-// (kinematicstudy.h): a line names them, and Apply / undo identifies again.
+// (kinematic_study.h): a line names them, and Apply / undo identifies again.
 #include <QWidget>
 
 #include <memory>
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/project/project.h"
-#include "widgets/kinematics/kinematicstudy.h"
+#include "core/study/kinematic_study.h"
 
 class QComboBox;
 class QLabel;

@@ -30,8 +30,8 @@
 #include "widgets/common/tablecopy.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
-#include "widgets/pointview/matchingcurveview.h"
-#include "widgets/pointview/pointsetview.h"
+#include "widgets/matching/matchingcurveview.h"
+#include "widgets/matching/pointsetview.h"
 
 namespace metrofit {
 

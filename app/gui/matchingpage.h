@@ -5,12 +5,12 @@
 // GA-simplex, one table of rough / SADE / GA-simplex / closed-form / minimax, the machine adjustment
 // values for the study's machine, the remeasure loop's rounds and the points with their deviations.
 //
-// A run computes every method (core/matching/study.h) in a worker thread; the method selector picks
+// A run computes every method (core/study/matching_study.h) in a worker thread; the method selector picks
 // the posture shown "after" and used for the machine adjustment. Settings come from the project's
 // studies.matching (dataset, tolerance_mm, method, allow_scale, locks, machine); edits of the method,
 // tolerance, scale and locks are written back through the document's undo stack.
 // Effects added with the diagnosis page's Apply (studies.diagnosis.matching.applied: scale,
-// surface_offset:<surface>, distortion) are part of the study's model (core/matching/study.h
+// surface_offset:<surface>, distortion) are part of the study's model (core/study/matching_study.h
 // studyModelSet): the views, the tables and the runs use the nominal points deformed by them, the
 // info line names them, and undoing Apply brings the declared rigid model back.
 #include <QFutureWatcher>
@@ -22,8 +22,8 @@
 #include <vector>
 
 #include "core/matching/probe_points.h"
-#include "core/matching/study.h"
 #include "core/project/project.h"
+#include "core/study/matching_study.h"
 
 class QCheckBox;
 class QComboBox;

@@ -30,6 +30,7 @@
 #include "core/setup/exact.h"
 #include "core/setup/methods.h"
 #include "core/setup/objective.h"
+#include "core/study/setup_study.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
 #include "widgets/setup/setupcharts.h"
@@ -37,7 +38,6 @@
 #include "widgets/setup/setupgrapheditor.h"
 #include "widgets/setup/setupmodeleditor.h"
 #include "widgets/setup/setupresultsview.h"
-#include "widgets/setup/setupstudy.h"
 #include "widgets/setup/setupvalidationview.h"
 
 namespace metrofit {

@@ -14,7 +14,7 @@
 // deviations come from the report read against the model file, matched by dimension id.
 // Effects added with the diagnosis page's Apply (studies.diagnosis.setup.applied: tool wear, datum
 // drift) are part of the study's model: the deviations are then those predicted for the next part
-// (widgets/setup/setupstudy.h applyStudyEffects); the info line says so, and undoing Apply brings
+// (core/study/setup_study.h applyStudyEffects); the info line says so, and undoing Apply brings
 // the declared model back.
 #include <QWidget>
 #include <memory>

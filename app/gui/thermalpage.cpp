@@ -16,11 +16,11 @@
 #include "core/diagnose/applied_setup_matching.h"
 #include "core/diagnose/thermal_applied.h"
 #include "core/thermal/thermal_log.h"
-#include "widgets/charts/thermalhysteresisview.h"
-#include "widgets/charts/thermalmodelview.h"
-#include "widgets/charts/thermaltrendview.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
+#include "widgets/thermal/thermalhysteresisview.h"
+#include "widgets/thermal/thermalmodelview.h"
+#include "widgets/thermal/thermaltrendview.h"
 
 namespace metrofit {
 namespace {

@@ -1,11 +1,11 @@
 #pragma once
 // The thermal study page: a combo of the project's thermal logs and three tabs for the chosen one
 // (the first by default):
-//  * Trend: the sensor trend chart (widgets/charts/thermaltrendview.h);
+//  * Trend: the sensor trend chart (widgets/thermal/thermaltrendview.h);
 //  * Hysteresis: displacement against each sensor over heating and cooling, loop areas and lags;
 //  * Models: GNNMCI(1,N), GMC(1,N) and the MLP fitted on the first part and compared on the rest
 //    (Table 4), trained in a worker thread with live PSO progress; when the project has the three
-//    modular tests (datasets kModularZId, kModularCId, kModularCombinedId of thermalcomparison.h), the
+//    modular tests (datasets kModularZId, kModularCId, kModularCombinedId of thermal_comparison.h), the
 //    combined test predicted from models fitted on the Z and C tests (Section 4.3).
 // A log that cannot be read shows its one-line error instead. The model settings start from the
 // project's thermal study (studies.thermal: dataset, target, inputs) and are kept per log for the
@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "core/project/project.h"
+#include "core/study/thermal_comparison.h"
 #include "core/thermal/thermal_log.h"
-#include "widgets/charts/thermalcomparison.h"
 
 class QComboBox;
 class QLabel;

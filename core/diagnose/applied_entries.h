@@ -2,7 +2,7 @@
 // The common preamble of the applied-effects parsers (studies.diagnosis.<domain>.applied, written by
 // Apply on the diagnosis page): the list is null (nothing applied) or a list; every entry is an
 // object with a "name" text; the rest of an entry ("parameters") is the domain's. Used by the thermal
-// (core/diagnose/thermal_applied.h), kinematic (core/kinematics/axis_effects.h), setup and matching
+// (core/diagnose/thermal_applied.h), kinematic (core/diagnose/applied_kinematic.h), setup and matching
 // (core/diagnose/applied_setup_matching.h) parsers. The wording of the errors is the domain's (the
 // thermal and kinematic parsers name the known effects, the setup and matching ones the project
 // file); every error is a ValidationError naming `field`, `field[i]` or `field[i].name`.

@@ -40,10 +40,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/diagnose/residual_check.h"
+#include "core/matching/effects.h"
 #include "core/matching/probe_points.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
-#include "core/sim/effects_matching.h"
 
 namespace metrofit {
 class Project;

@@ -15,9 +15,9 @@
 
 #include "core/common/error.h"
 #include "core/diagnose/loop.h"
+#include "core/kinematics/effects.h"
 #include "core/kinematics/identification.h"
 #include "core/kinematics/path_variables.h"
-#include "core/sim/effects_kinematic.h"
 
 namespace metrofit::diagnose {
 namespace {
@@ -385,7 +385,7 @@ Data makeData(const MeasuredPath& path, const KinematicDiagnosisOptions& o) {
 }
 
 /// The residual variables of a path (core/kinematics/path_variables.h, shared with the applied generic
-/// effects of axis_effects.h): row (the original 1-based point number), the path angle about the
+/// effects of applied_kinematic.h): row (the original 1-based point number), the path angle about the
 /// centroid, the loop direction (CCW / CW; only when the path runs both), reversal and the commanded
 /// x and y.
 std::vector<ResidualVariable> kinematicVariables(const Data& d, const std::vector<std::size_t>& orig) {
@@ -552,7 +552,7 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
     double currentError() const override { return cur_.rmse; }
     void finish(Diagnosis& dg, std::vector<Candidate*> accepted, bool) override {
       // Each accepted generic effect's coefficients in its shape's own basis, from the final joint
-      // fit (what Apply stores: the displacement genericBasis(shape) w on any path, axis_effects.h).
+      // fit (what Apply stores: the displacement genericBasis(shape) w on any path, applied_kinematic.h).
       std::size_t at = 0;
       for (const GenericTerm& t : state_.generic) {
         const Eigen::Index q = t.columns->cols();

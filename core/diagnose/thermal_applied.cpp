@@ -9,7 +9,7 @@
 #include "core/diagnose/applied_entries.h"
 #include "core/io/csv.h"
 #include "core/project/project.h"
-#include "core/sim/effects_thermal.h"
+#include "core/thermal/lag_regression.h"
 
 namespace metrofit::diagnose {
 namespace {
@@ -101,7 +101,7 @@ std::vector<ThermalRegressor> thermalRegressors(const ThermalLog& log, const std
     if (tau > 0.0) {
       r.channel = "lag:" + in;
       r.lagMin = tau;
-      r.values = firstOrderLag(c.values, log.timeMin, tau);
+      r.values = thermal::firstOrderLagMin(c.values, log.timeMin, tau);
     } else {
       r.channel = in;
       r.values = c.values;

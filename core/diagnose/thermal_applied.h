@@ -4,7 +4,7 @@
 // columns a model fits on, used by the closed loop itself (thermal_diagnosis.h) and by every fit of
 // the thermal study (the Thermal page's Models tab, the report's thermal section):
 //
-//   declared input x_j       x_j, or L_tau[x_j] (effects_thermal.h firstOrderLag) with `lag` (every
+//   declared input x_j       x_j, or L_tau[x_j] (lag_regression.h firstOrderLagMin) with `lag` (every
 //                            declared input) or `lag:<col>` (that input; overrides `lag`)
 //   `input:<col>`            z(t) - z(0) of a further column of the log
 //   `drift`                  t - t0 (min)

@@ -15,7 +15,6 @@
 #include "core/diagnose/loop.h"
 #include "core/diagnose/thermal_applied.h"
 #include "core/io/csv.h"
-#include "core/sim/effects_thermal.h"
 #include "core/thermal/thermal_data.h"
 #include "core/thermal/thermal_model.h"
 

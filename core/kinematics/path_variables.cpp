@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/sim/effects_kinematic.h"
+#include "core/kinematics/effects.h"
 
 namespace metrofit {
 

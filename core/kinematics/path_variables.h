@@ -1,7 +1,7 @@
 #pragma once
 // The variables a kinematic residual may depend on (CONTRACT.md "The open world", `against`), on every
 // point of a path of commands. The closed loop (core/diagnose/kinematic_diagnosis.h) tests its residual
-// against them and fits generic effects of them; an applied generic effect (axis_effects.h) is
+// against them and fits generic effects of them; an applied generic effect (applied_kinematic.h) is
 // evaluated on them, so both see the same values:
 //   row        1-based point number (path order)
 //   angle      path angle about the commands' centroid, degrees in [0, 360)

@@ -175,7 +175,7 @@ std::vector<StudyIssue> checkStudies(const Project& project) {
       c.number(s, "budget", prefix, 0.0, 1e12, "> 0 (solutions)");
       c.seed(s, prefix);
     } else if (name == study::kMatching) {
-      c.block(s, prefix, kMatchingKeys);  // values: core/matching/study.cpp checks them in full
+      c.block(s, prefix, kMatchingKeys);  // values: core/study/matching_study.cpp checks them in full
     } else if (name == study::kKinematics) {
       c.block(s, prefix, kKinematicsKeys);
       if (s.is_object() && s.contains("spc")) {

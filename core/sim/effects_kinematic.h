@@ -1,20 +1,8 @@
 #pragma once
-// Circular tests and measured paths with undeclared effects, for the closed loop (issue 8): the
-// declared model is the Cartesian machine of cartesian_model.h (actuator origin and orientation
-// errors); the simulator adds effects of the axes themselves, acting on the joint (actuator)
-// coordinates before the machine's geometry (lengths mm, times s, feed mm/min):
-//   x_eff = x (1 + sx 1e-6) - d_x bx / 2 - tau v_x + [axis x] A sin(2 pi x / p + phi)
-//   y_eff = y (1 + sy 1e-6) - d_y by / 2 - tau v_y + [axis y] A sin(2 pi y / p + phi)
-//   P     = o + ir(a) x_eff + jr(b) y_eff + N(0, noise^2) per coordinate
-// with
-//   `backlash` bx, by: the full lost motion at a reversal; d = +1 / -1 is the direction of the
-//          axis' last move (a point reached moving in +x lags by bx / 2),
-//   `scale`   sx, sy in ppm (scale error of the axis' measuring system),
-//   `cyclic`  on one axis: period p (mm, e.g. the ball-screw lead) and amplitude A (mm), phase phi,
-//   `servo_lag` tau (s): the steady-state first-order servo response P_cmd - tau dP_cmd/dt to first
-//          order in omega tau, with the commanded velocity v = feed / 60 along the path tangent.
-// Direction and velocity of every point come from the command sequence alone (pathMotion), so
-// that the simulator and the diagnosis (core/diagnose/kinematic_diagnosis.h) read a path alike.
+// Circular tests and measured paths with undeclared effects, for the closed loop: the declared
+// model is the Cartesian machine of cartesian_model.h (actuator origin and orientation errors); the
+// simulator adds the axis effects of core/kinematics/effects.h (backlash, scale, cyclic, servo lag)
+// and white noise:  P = o + ir(a) x_eff + jr(b) y_eff + N(0, noise^2) per coordinate.
 // Deterministic by seed.
 #include <cstdint>
 #include <string>
@@ -23,36 +11,11 @@
 #include <Eigen/Core>
 
 #include "core/kinematics/cartesian_model.h"
+#include "core/kinematics/effects.h"
 #include "core/kinematics/measured_path.h"
 #include "core/sim/circular_sim.h"
 
 namespace metrofit {
-
-/// Per point of a command path: the direction of each axis' last move (+1 / -1; the first point
-/// takes the direction of the first move of the axis) and the unit tangent of the motion through it
-/// (central difference; the incoming move at a reversal of the path, where the incoming and
-/// outgoing moves point against each other; a one-sided difference at the ends).
-struct PathMotion {
-  std::vector<Eigen::Vector2d> direction;  ///< d_x, d_y in {-1, +1}
-  std::vector<Eigen::Vector2d> tangent;    ///< unit vectors (zero where the tool does not move)
-};
-PathMotion pathMotion(const std::vector<Eigen::Vector2d>& commands);
-
-struct KinematicEffects {
-  double backlashXMm = 0.0, backlashYMm = 0.0;  ///< `backlash`: full lost motion
-  double scaleXPpm = 0.0, scaleYPpm = 0.0;      ///< `scale`
-  char cyclicAxis = 'x';                        ///< `cyclic`: 'x' or 'y'
-  double cyclicPeriodMm = 10.0;
-  double cyclicAmplitudeMm = 0.0;  ///< 0: no cyclic error
-  double cyclicPhaseDeg = 0.0;
-  double servoLagS = 0.0;  ///< `servo_lag` tau
-  double feedMmPerMin = 1000.0;
-
-  bool isValid(std::string* why) const;
-  /// The joint coordinates the axes actually reach (see the header comment) for command k.
-  Eigen::Vector2d effectiveJoints(const Eigen::Vector2d& command, const Eigen::Vector2d& direction,
-                                  const Eigen::Vector2d& tangent) const;
-};
 
 struct KinematicEffectsOptions {
   CircularSimOptions circle;  ///< test geometry, declared actuator errors, noise, seed

@@ -6,6 +6,7 @@
 #include "core/common/error.h"
 #include "core/common/rng.h"
 #include "core/common/run.h"
+#include "core/thermal/lag_regression.h"
 
 namespace metrofit {
 namespace {
@@ -49,17 +50,6 @@ bool ThermalEffectsOptions::isValid(std::string* why) const {
   return true;
 }
 
-std::vector<double> firstOrderLag(const std::vector<double>& x, const std::vector<double>& t, double tau) {
-  std::vector<double> s(x.size());
-  if (x.empty()) return s;
-  s[0] = x[0];
-  for (std::size_t k = 1; k < x.size(); ++k) {
-    const double a = 1.0 - std::exp(-(t[k] - t[k - 1]) / tau);
-    s[k] = s[k - 1] + a * (x[k] - s[k - 1]);
-  }
-  return s;
-}
-
 ThermalEffectSignal thermalEffectSignal(const ThermalLog& log, const ThermalEffectsOptions& o) {
   const std::size_t n = log.rows();
   ThermalEffectSignal sig;
@@ -68,7 +58,7 @@ ThermalEffectSignal thermalEffectSignal(const ThermalLog& log, const ThermalEffe
   for (std::size_t j = 0; j < o.declaredInputs.size(); ++j) {
     const std::vector<double>& x = log.channel(o.declaredInputs[j]).values;
     const bool lagged = o.lagTauMin > 0.0 && (o.lagColumn.empty() || o.lagColumn == o.declaredInputs[j]);
-    const std::vector<double> xe = lagged ? firstOrderLag(x, log.timeMin, o.lagTauMin) : x;
+    const std::vector<double> xe = lagged ? thermal::firstOrderLagMin(x, log.timeMin, o.lagTauMin) : x;
     for (std::size_t k = 0; k < n; ++k) {
       sig.declared[k] += o.coefficients[j] * (x[k] - x[0]);
       sig.withEffects[k] += o.coefficients[j] * (xe[k] - x[0]);

@@ -51,10 +51,6 @@ struct ThermalEffectsOptions {
   bool isValid(std::string* why) const;
 };
 
-/// First-order lag of a series sampled at times tMin (see the header comment); tau > 0.
-std::vector<double> firstOrderLag(const std::vector<double>& x, const std::vector<double>& tMin,
-                                  double tauMin);
-
 /// The target without noise and without any effect (c0 + sum b_j x_j) and with the effects; used
 /// by the detection study to size an effect for a given effect-to-noise ratio.
 struct ThermalEffectSignal {

@@ -6,24 +6,9 @@
 
 #include "core/common/error.h"
 #include "core/common/run.h"
+#include "core/thermal/lag_regression.h"
 
 namespace metrofit::thermal {
-
-std::vector<double> firstOrderLag(std::span<const double> t, std::span<const double> x, double tau) {
-  if (t.size() != x.size()) throw std::invalid_argument("firstOrderLag: sizes differ");
-  std::vector<double> l(x.begin(), x.end());
-  if (!(tau > 0.0) || x.empty()) return l;
-  double prevStep = -1.0, a = 0.0;
-  for (std::size_t k = 1; k < x.size(); ++k) {
-    const double h = t[k] - t[k - 1];
-    if (h != prevStep) {
-      a = 1.0 - std::exp(-h / tau);
-      prevStep = h;
-    }
-    l[k] = l[k - 1] + a * (x[k] - l[k - 1]);
-  }
-  return l;
-}
 
 namespace {
 
@@ -63,7 +48,7 @@ LagFit fitLag(std::span<const double> t, std::span<const double> driver, std::sp
               double tauMax) {
   if (t.size() != driver.size() || t.size() != response.size() || t.size() < 3)
     throw std::invalid_argument("fitLag: need >= 3 samples of equal length");
-  auto eval = [&](double tau) { return fitLine(firstOrderLag(t, driver, tau), response); };
+  auto eval = [&](double tau) { return fitLine(firstOrderLagMin(driver, t, tau), response); };
   LagFit out;
   const LineFit s = eval(0.0);
   out.r2Static = s.r2;

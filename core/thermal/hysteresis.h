@@ -27,8 +27,7 @@
 
 namespace metrofit::thermal {
 
-/// L_tau[x] on the time axis `timeMin` (see above).
-std::vector<double> firstOrderLag(std::span<const double> timeMin, std::span<const double> x, double tauMin);
+/// L_tau[x] on the time axis (see above) is lag_regression.h firstOrderLagMin.
 
 struct LagFit {
   double tauMin = 0.0;

@@ -14,8 +14,12 @@ std::vector<double> firstOrderLagMin(std::span<const double> x, std::span<const 
     throw std::invalid_argument("firstOrderLagMin: time and values differ in size");
   std::vector<double> s(x.begin(), x.end());
   if (!(tauMin > 0.0) || s.empty()) return s;
+  double step = -1.0, a = 0.0;  // one exponential per run of equal steps
   for (std::size_t k = 1; k < s.size(); ++k) {
-    const double a = -std::expm1(-(tMin[k] - tMin[k - 1]) / tauMin);
+    if (tMin[k] - tMin[k - 1] != step) {
+      step = tMin[k] - tMin[k - 1];
+      a = -std::expm1(-step / tauMin);
+    }
     s[k] = s[k - 1] + a * (x[k] - s[k - 1]);
   }
   return s;

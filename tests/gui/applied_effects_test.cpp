@@ -27,13 +27,13 @@
 #include "core/io/csv.h"
 #include "core/project/project.h"
 #include "core/sim/effects_thermal.h"
+#include "core/study/diagnosis_study.h"
+#include "core/study/thermal_comparison.h"
 #include "qtapp.h"
 #include "testsupport.h"
-#include "widgets/charts/thermalcomparison.h"
-#include "widgets/charts/thermalmodelview.h"
-#include "widgets/diagnose/diagnosisstudy.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
+#include "widgets/thermal/thermalmodelview.h"
 
 namespace metrofit {
 namespace {

@@ -15,9 +15,9 @@
 #include "app/gui/setuppage.h"
 #include "core/project/project.h"
 #include "core/setup/objective.h"
+#include "core/study/diagnosis_study.h"
 #include "demo_document_fixture.h"
 #include "qtapp.h"
-#include "widgets/diagnose/diagnosisstudy.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
 

@@ -24,9 +24,9 @@
 
 #include "app/gui/diagnosispage.h"
 #include "core/common/text.h"
+#include "core/study/diagnosis_study.h"
 #include "qtapp.h"
 #include "widgets/diagnose/coretexts.h"
-#include "widgets/diagnose/diagnosisstudy.h"
 #include "widgets/diagnose/residualcheckview.h"
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/document/demoproject.h"

@@ -1,5 +1,5 @@
 // The diagnosis page (app/gui/diagnosispage.h) on the bundled demo (offscreen): the candidate table
-// lists exactly the effects and accepted flags of the core loop (widgets/diagnose/diagnosisstudy.h
+// lists exactly the effects and accepted flags of the core loop (core/study/diagnosis_study.h
 // runDiagnosis on the same settings), the worker gives the same result as the synchronous run,
 // Apply writes studies.diagnosis.<domain>.applied and Undo restores the study JSON exactly, and
 // missing or invalid settings show a message naming the field instead of crashing.
@@ -19,9 +19,9 @@
 
 #include "app/gui/diagnosispage.h"
 #include "core/project/project.h"
+#include "core/study/diagnosis_study.h"
 #include "demo_document_fixture.h"
 #include "qtapp.h"
-#include "widgets/diagnose/diagnosisstudy.h"
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"

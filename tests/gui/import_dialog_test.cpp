@@ -43,17 +43,17 @@
 #include "core/common/error.h"
 #include "core/kinematics/measured_path.h"
 #include "core/project/project.h"
+#include "core/study/diagnosis_study.h"
+#include "core/study/kinematic_study.h"
+#include "core/study/thermal_comparison.h"
 #include "core/thermal/thermal_data.h"
 #include "core/thermal/thermal_log.h"
 #include "core/thermal/thermal_model.h"
 #include "qtapp.h"
 #include "testsupport.h"
-#include "widgets/charts/thermalcomparison.h"
-#include "widgets/charts/thermalmodelview.h"
-#include "widgets/diagnose/diagnosisstudy.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/importer/importdialog.h"
-#include "widgets/kinematics/kinematicstudy.h"
+#include "widgets/thermal/thermalmodelview.h"
 
 namespace metrofit {
 namespace {

@@ -43,11 +43,11 @@
 #include "app/gui/thermalpage.h"
 #include "core/matching/probe_points.h"
 #include "qtapp.h"
-#include "widgets/charts/thermaltrendview.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
-#include "widgets/pointview/pointsetview.h"
+#include "widgets/matching/pointsetview.h"
 #include "widgets/setup/setupmodeleditor.h"
+#include "widgets/thermal/thermaltrendview.h"
 
 namespace metrofit {
 namespace {

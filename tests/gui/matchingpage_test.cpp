@@ -29,8 +29,8 @@
 #include "qtapp.h"
 #include "testsupport.h"
 #include "widgets/document/projectdocument.h"
-#include "widgets/pointview/matchingcurveview.h"
-#include "widgets/pointview/pointsetview.h"
+#include "widgets/matching/matchingcurveview.h"
+#include "widgets/matching/pointsetview.h"
 
 namespace metrofit {
 namespace {

@@ -26,7 +26,7 @@
 #include "app/gui/setuppage.h"
 #include "cli/cli_runner.h"
 #include "core/setup/model.h"
-#include "core/setup/validation.h"
+#include "core/study/setup_validation.h"
 #include "qtapp.h"
 #include "testsupport.h"
 #include "widgets/document/demoproject.h"

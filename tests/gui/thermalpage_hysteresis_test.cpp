@@ -12,7 +12,7 @@
 #include "core/thermal/hysteresis.h"
 #include "demo_document_fixture.h"
 #include "qtapp.h"
-#include "widgets/charts/thermalhysteresisview.h"
+#include "widgets/thermal/thermalhysteresisview.h"
 
 namespace metrofit {
 namespace {

@@ -25,12 +25,12 @@
 #include "core/io/file_io.h"
 #include "core/project/project.h"
 #include "core/sim/thermal_sim.h"
+#include "core/study/thermal_comparison.h"
 #include "qtapp.h"
 #include "testsupport.h"
-#include "widgets/charts/thermalcomparison.h"
-#include "widgets/charts/thermalhysteresisview.h"
-#include "widgets/charts/thermalmodelview.h"
 #include "widgets/document/projectdocument.h"
+#include "widgets/thermal/thermalhysteresisview.h"
+#include "widgets/thermal/thermalmodelview.h"
 
 namespace metrofit {
 namespace {

@@ -20,9 +20,9 @@
 #include "app/gui/thermalpage.h"
 #include "core/project/project.h"
 #include "qtapp.h"
-#include "widgets/charts/thermalmodelview.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
+#include "widgets/thermal/thermalmodelview.h"
 
 namespace metrofit {
 namespace {

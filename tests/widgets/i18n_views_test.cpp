@@ -15,11 +15,11 @@
 #include "core/thermal/thermal_data.h"
 #include "core/thermal/thermal_log.h"
 #include "qtapp.h"
-#include "widgets/charts/thermalcharts.h"
-#include "widgets/charts/thermalhysteresisview.h"
-#include "widgets/charts/thermalmodelcharts.h"
 #include "widgets/diagnose/coretexts.h"
 #include "widgets/kinematics/kinematicsviews.h"
+#include "widgets/thermal/thermalcharts.h"
+#include "widgets/thermal/thermalhysteresisview.h"
+#include "widgets/thermal/thermalmodelcharts.h"
 
 namespace metrofit {
 namespace {

@@ -17,9 +17,9 @@
 
 #include "core/spc/control_chart.h"
 #include "core/spc/spc.h"
+#include "core/study/circular_analysis.h"
 #include "qtapp.h"
 #include "testsupport.h"
-#include "widgets/kinematics/circularanalysis.h"
 #include "widgets/kinematics/kinematicplots.h"
 #include "widgets/kinematics/kinematicsviews.h"
 

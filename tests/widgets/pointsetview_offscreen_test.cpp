@@ -15,7 +15,7 @@
 #include <string>
 
 #include "core/matching/probe_points.h"
-#include "widgets/pointview/pointsetview.h"
+#include "widgets/matching/pointsetview.h"
 
 namespace metrofit {
 namespace {

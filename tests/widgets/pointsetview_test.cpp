@@ -25,7 +25,7 @@
 #define METROFIT_TEST_QT_XVFB
 #include "core/matching/probe_points.h"
 #include "qtapp.h"
-#include "widgets/pointview/pointsetview.h"
+#include "widgets/matching/pointsetview.h"
 
 namespace metrofit {
 namespace {

@@ -28,18 +28,18 @@
 #include <numbers>
 
 #include "core/sim/thermal_sim.h"
+#include "core/study/thermal_comparison.h"
 #include "core/thermal/thermal_data.h"
 #include "qtapp.h"
 #include "testsupport.h"
-#include "widgets/charts/thermalcharts.h"
-#include "widgets/charts/thermalcomparison.h"
-#include "widgets/charts/thermalmodelcharts.h"
-#include "widgets/charts/thermaltrendview.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/common/palette.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/kinematics/kinematicplots.h"
 #include "widgets/kinematics/kinematicsviews.h"
+#include "widgets/thermal/thermalcharts.h"
+#include "widgets/thermal/thermalmodelcharts.h"
+#include "widgets/thermal/thermaltrendview.h"
 
 namespace metrofit {
 namespace {

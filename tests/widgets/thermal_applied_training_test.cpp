@@ -7,11 +7,11 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "core/study/thermal_comparison.h"
 #include "core/thermal/thermal_data.h"
 #include "qtapp.h"
 #include "testsupport.h"
-#include "widgets/charts/thermalcomparison.h"
-#include "widgets/charts/thermalmodelview.h"
+#include "widgets/thermal/thermalmodelview.h"
 
 namespace metrofit {
 namespace {

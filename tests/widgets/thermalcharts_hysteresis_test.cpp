@@ -1,5 +1,5 @@
-// Hysteresis and model-comparison charts (widgets/charts/thermalmodelcharts.h), the hysteresis view and
-// the Qt-free helpers behind them (thermalcomparison.h).
+// Hysteresis and model-comparison charts (widgets/thermal/thermalmodelcharts.h), the hysteresis view and
+// the Qt-free helpers behind them (thermal_comparison.h).
 #include <QAreaSeries>
 #include <QChart>
 #include <QChartView>
@@ -14,14 +14,14 @@
 #include <memory>
 
 #include "core/sim/thermal_sim.h"
+#include "core/study/thermal_comparison.h"
 #include "core/thermal/hysteresis.h"
 #include "core/thermal/thermal_data.h"
 #include "qtapp.h"
 #include "testsupport.h"
-#include "widgets/charts/thermalcharts.h"
-#include "widgets/charts/thermalcomparison.h"
-#include "widgets/charts/thermalhysteresisview.h"
-#include "widgets/charts/thermalmodelcharts.h"
+#include "widgets/thermal/thermalcharts.h"
+#include "widgets/thermal/thermalhysteresisview.h"
+#include "widgets/thermal/thermalmodelcharts.h"
 
 namespace metrofit {
 namespace {

@@ -10,7 +10,7 @@
 #include "core/sim/thermal_sim.h"
 #include "core/thermal/hysteresis.h"
 #include "qtapp.h"
-#include "widgets/charts/thermalhysteresisview.h"
+#include "widgets/thermal/thermalhysteresisview.h"
 
 namespace metrofit {
 namespace {

@@ -1,4 +1,4 @@
-// Tests of the thermal trend chart: phase detection and decimation (trendanalysis.h) on profiles
+// Tests of the thermal trend chart: phase detection and decimation (trend_analysis.h) on profiles
 // with known answers, the chart's axes (thermalcharts.h), and ThermalTrendView rendered offscreen
 // (series and band colours present in the pixels, hiding a channel removes its colour).
 // Grabbed images are saved into $METROFIT_TEST_OUT for a look.
@@ -30,11 +30,11 @@
 #include <random>
 
 #include "core/common/error.h"
+#include "core/study/trend_analysis.h"
 #include "core/thermal/thermal_log.h"
 #include "qtapp.h"
-#include "widgets/charts/thermalcharts.h"
-#include "widgets/charts/thermaltrendview.h"
-#include "widgets/charts/trendanalysis.h"
+#include "widgets/thermal/thermalcharts.h"
+#include "widgets/thermal/thermaltrendview.h"
 
 namespace metrofit {
 namespace {

@@ -29,7 +29,7 @@
 #include <Eigen/Core>
 
 #include "core/spc/control_chart.h"
-#include "widgets/kinematics/circularanalysis.h"
+#include "core/study/circular_analysis.h"
 
 class QPainter;
 

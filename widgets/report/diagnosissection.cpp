@@ -1,5 +1,5 @@
 // Report section "Closed loop: diagnosis" (issue 8): for every domain the project's diagnosis study
-// configures (widgets/diagnose/diagnosisstudy.h), the loop step by step: the declared model's error,
+// configures (core/study/diagnosis_study.h), the loop step by step: the declared model's error,
 // each candidate effect with its parameters, evidence and decision, the final error; the residual
 // plot before / after of each accepted effect (painted like the GUI's, widgets/diagnose/residualplot.h),
 // what is left unexplained (the residual check: verdict, structure with shares, generic effects,
@@ -17,7 +17,7 @@
 #include <string>
 
 #include "core/io/csv.h"
-#include "widgets/diagnose/diagnosisstudy.h"
+#include "core/study/diagnosis_study.h"
 #include "widgets/diagnose/residualchecktext.h"
 #include "widgets/diagnose/residualcheckview.h"
 #include "widgets/diagnose/residualplot.h"

@@ -13,8 +13,8 @@
 #include <functional>
 
 #include "core/common/error.h"
+#include "core/study/kinematic_study.h"
 #include "widgets/kinematics/kinematicplots.h"
-#include "widgets/kinematics/kinematicstudy.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
 

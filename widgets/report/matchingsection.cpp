@@ -1,5 +1,5 @@
 // Report section "Posture matching — before and after" (issue 5): for the matching study's probe
-// points (studies.matching, core/matching/study.h) every method is run as in the GUI, and the section
+// points (studies.matching, core/study/matching_study.h) every method is run as in the GUI, and the section
 // shows
 //  - the 3D views before and after matching as images: the same oblique view as the GUI's linked 3D
 //    views (camera direction (1, -1.4, 0.9), Z up), drawn with QPainter because the report is made by
@@ -20,7 +20,7 @@
 
 #include <Eigen/Geometry>
 
-#include "core/matching/study.h"
+#include "core/study/matching_study.h"
 #include "widgets/common/palette.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
@@ -75,7 +75,7 @@ QColor mix(const QColor& a, const QColor& b, double t) {
                           static_cast<float>(a.blueF() + (b.blueF() - a.blueF()) * t));
 }
 
-/// The GUI's colour map with the tolerance band (widgets/pointview/pointsetview.cpp).
+/// The GUI's colour map with the tolerance band (widgets/matching/pointsetview.cpp).
 struct BandScale {
   double range = 1.0, tolerance = 0.05;
   QColor colour(double d) const {

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "core/matching/study.h"
+#include "core/study/matching_study.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
 

@@ -17,11 +17,11 @@
 #include "core/setup/model.h"
 #include "core/setup/objective.h"
 #include "core/setup/report.h"
+#include "core/study/setup_study.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
 #include "widgets/setup/setupcharts.h"
 #include "widgets/setup/setupmargins.h"
-#include "widgets/setup/setupstudy.h"
 
 namespace metrofit {
 namespace {

@@ -22,15 +22,15 @@
 #include <string>
 
 #include "core/diagnose/thermal_applied.h"
+#include "core/study/thermal_comparison.h"
+#include "core/study/trend_analysis.h"
 #include "core/thermal/hysteresis.h"
 #include "core/thermal/model_verdict.h"
-#include "widgets/charts/thermalcharts.h"
-#include "widgets/charts/thermalcomparison.h"
-#include "widgets/charts/thermalmodelcharts.h"
-#include "widgets/charts/thermalverdict.h"
-#include "widgets/charts/trendanalysis.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
+#include "widgets/thermal/thermalcharts.h"
+#include "widgets/thermal/thermalmodelcharts.h"
+#include "widgets/thermal/thermalverdict.h"
 
 namespace metrofit {
 namespace {
@@ -292,7 +292,7 @@ QString unitOf(const ThermalLog& log, const std::string& column) {
 }
 
 /// One sentence on the applied effects: which models keep them, with the held-out RMSE of both
-/// variants (each model keeps the lower one, widgets/charts/thermalcomparison.h).
+/// variants (each model keeps the lower one, core/study/thermal_comparison.h).
 QString appliedChoice(const ThermalLog& log, const ThermalComparison& c) {
   double scale = 0.0;
   for (double v : c.series.target) scale = std::max(scale, std::abs(v));

@@ -13,7 +13,7 @@
 #include <limits>
 #include <map>
 
-#include "core/setup/validation.h"
+#include "core/study/setup_validation.h"
 #include "widgets/common/palette.h"
 
 namespace metrofit {

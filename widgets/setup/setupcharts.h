@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/setup/objective.h"
-#include "widgets/setup/setupstudy.h"
+#include "core/study/setup_study.h"
 
 QT_BEGIN_NAMESPACE
 class QChart;

@@ -10,7 +10,7 @@
 #include "core/setup/export.h"
 #include "core/setup/model.h"
 #include "core/setup/objective.h"
-#include "widgets/setup/setupstudy.h"
+#include "core/study/setup_study.h"
 
 class QLabel;
 class QPushButton;

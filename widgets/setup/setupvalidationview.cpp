@@ -20,7 +20,7 @@
 #include <map>
 
 #include "core/setup/exact.h"
-#include "core/setup/validation.h"
+#include "core/study/setup_validation.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/setup/setupcharts.h"
 

@@ -1,8 +1,8 @@
 #pragma once
-// The paper's statistical validation in the GUI (core/setup/validation.h, Fig. 18): N simulated
+// The paper's statistical validation in the GUI (core/study/setup_validation.h, Fig. 18): N simulated
 // measurement sets (Eq. 12-13, weights w1 and w2) x M trials per chosen method, run in a worker
 // thread with a progress bar and Cancel, then the sorted-results chart and a summary
-// (core/setup/validation.h summarizeValidation): the range of f1 before correction and the paper's
+// (core/study/setup_validation.h summarizeValidation): the range of f1 before correction and the paper's
 // range checked against the simulator, per method the mean gap to the exact optimum and the trials
 // within one grid step of it, and the estimated share of the setup data in the dimension error.
 // Defaults: the paper's 100 sets x 10 trials of CRIPSO at 5000 solutions, w1 = 0.03, w2 = 0.02 mm.

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "core/common/error.h"
+#include "core/diagnose/applied_kinematic.h"
 #include "core/diagnose/applied_setup_matching.h"
 #include "core/diagnose/thermal_applied.h"
-#include "core/kinematics/axis_effects.h"
 #include "core/setup/model.h"
 
 namespace metrofit::diagnose {

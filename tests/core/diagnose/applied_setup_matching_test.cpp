@@ -19,10 +19,10 @@
 #include "core/diagnose/matching_diagnosis.h"
 #include "core/diagnose/setup_diagnosis.h"
 #include "core/matching/hole_table.h"
-#include "core/matching/study.h"
 #include "core/project/project.h"
 #include "core/setup/exact.h"
 #include "core/setup/objective.h"
+#include "core/study/matching_study.h"
 #include "testsupport.h"
 
 namespace metrofit::diagnose {

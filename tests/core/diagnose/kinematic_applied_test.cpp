@@ -1,4 +1,4 @@
-// Applied kinematic effects (core/kinematics/axis_effects.h): the effects the closed loop accepts,
+// Applied kinematic effects (core/diagnose/applied_kinematic.h): the effects the closed loop accepts,
 // applied to the declared Cartesian model, make the identification's residual the diagnosis' own
 // error after the effects, and the compensated references correct them: run through the true
 // simulated machine (with its effect, noise free) the compensated path's error E1 is a fraction of
@@ -14,8 +14,8 @@
 
 #include "core/common/error.h"
 #include "core/diagnose/applied_entries.h"
+#include "core/diagnose/applied_kinematic.h"
 #include "core/diagnose/kinematic_diagnosis.h"
-#include "core/kinematics/axis_effects.h"
 #include "core/kinematics/identification.h"
 #include "core/sim/effects_kinematic.h"
 #include "testsupport.h"
@@ -51,7 +51,7 @@ double rmsDistance(const std::vector<Eigen::Vector2d>& a, const std::vector<Eige
 }
 
 /// The expected path after compensation with the identified model (the measured residual stays):
-/// rms distance from the nominal points (widgets/kinematics/circularanalysis.h does the same).
+/// rms distance from the nominal points (core/study/circular_analysis.h does the same).
 double expectedRms(const MeasuredPath& path, const AxisEffects& fx) {
   const IdentifyResult id = identifyActuatorErrors(withEffectiveJoints(path, fx));
   const CartesianMachine2 m = CartesianMachine2::fromErrors(id.errors);

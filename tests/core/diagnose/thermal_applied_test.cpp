@@ -20,6 +20,7 @@
 #include "core/diagnose/thermal_diagnosis.h"
 #include "core/io/csv.h"
 #include "core/sim/effects_thermal.h"
+#include "core/thermal/lag_regression.h"
 #include "core/thermal/thermal_data.h"
 #include "core/thermal/thermal_model.h"
 #include "testsupport.h"
@@ -65,7 +66,7 @@ TEST(ThermalApplied, RegressorsAreTheDiagnosisColumns) {
   EXPECT_EQ(r[0].name, "T2");
   EXPECT_EQ(r[0].channel, "lag:T2");
   EXPECT_DOUBLE_EQ(r[0].lagMin, 15.0);
-  EXPECT_EQ(r[0].values, firstOrderLag(log.channel("T2").values, log.timeMin, 15.0));
+  EXPECT_EQ(r[0].values, thermal::firstOrderLagMin(log.channel("T2").values, log.timeMin, 15.0));
   EXPECT_EQ(r[1].channel, "T4");
   EXPECT_EQ(r[1].values, log.channel("T4").values);
   EXPECT_EQ(r[3].name, "input:spindle_rpm");

@@ -14,6 +14,7 @@
 #include "core/common/error.h"
 #include "core/diagnose/thermal_diagnosis.h"
 #include "core/sim/effects_thermal.h"
+#include "core/thermal/lag_regression.h"
 #include "core/thermal/thermal_model.h"
 #include "testsupport.h"
 
@@ -72,7 +73,7 @@ void expectHeldoutNeverWorse(const Diagnosis& d) {
 
 TEST(ThermalEffectsSim, FirstOrderLagStepResponse) {
   const std::vector<double> t{0, 1, 2, 3}, x{0, 1, 1, 1};
-  const auto s = firstOrderLag(x, t, 2.0);
+  const auto s = thermal::firstOrderLagMin(x, t, 2.0);
   EXPECT_DOUBLE_EQ(s[0], 0.0);
   EXPECT_NEAR(s[1], 1.0 - std::exp(-0.5), 1e-15);
   EXPECT_NEAR(s[3], 1.0 - std::exp(-1.5), 1e-12);

@@ -9,6 +9,7 @@
 #include "core/common/error.h"
 #include "core/sim/thermal_modular_sim.h"
 #include "core/sim/thermal_sim.h"
+#include "core/thermal/lag_regression.h"
 #include "testsupport.h"
 
 namespace metrofit::thermal {
@@ -25,11 +26,11 @@ TEST(Hysteresis, FirstOrderLagStepResponse) {
   std::vector<double> t(61), x(61, 1.0);
   for (std::size_t k = 0; k < t.size(); ++k) t[k] = 0.5 * static_cast<double>(k);
   x[0] = 0.0;
-  const auto l = firstOrderLag(t, x, 4.0);
+  const auto l = firstOrderLagMin(x, t, 4.0);
   // A unit step held from t = 0.5: 1 - e^{-(t - 0)/4} at every sample (sample-and-hold exact).
   for (std::size_t k = 1; k < t.size(); ++k)
     EXPECT_TRUE(test::near(l[k], 1.0 - std::exp(-t[k] / 4.0), 1e-12));
-  EXPECT_EQ(firstOrderLag(t, x, 0.0), x);
+  EXPECT_EQ(firstOrderLagMin(x, t, 0.0), x);
 }
 
 TEST(Hysteresis, LagsOfTheSpindleSimulatorSensorsAreRecovered) {

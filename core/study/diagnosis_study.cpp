@@ -1,0 +1,203 @@
+#include "core/study/diagnosis_study.h"
+
+#include <cmath>
+
+#include "core/common/error.h"
+#include "core/diagnose/applied_entries.h"
+#include "core/diagnose/kinematic_diagnosis.h"
+#include "core/diagnose/matching_diagnosis.h"
+#include "core/diagnose/setup_diagnosis.h"
+#include "core/diagnose/thermal_diagnosis.h"
+#include "core/io/csv.h"
+#include "core/kinematics/measured_path.h"
+#include "core/matching/hole_table.h"
+#include "core/setup/model.h"
+#include "core/setup/report.h"
+#include "core/thermal/thermal_log.h"
+
+namespace metrofit {
+namespace {
+
+[[noreturn]] void fail(const std::string& source, const std::string& field, const std::string& what) {
+  throw ValidationError(ErrorContext{source, 0, 0, field}, what);
+}
+
+std::string stringKey(const nlohmann::json& block, const char* key, const std::string& source,
+                      const std::string& prefix) {
+  const auto it = block.find(key);
+  if (it == block.end()) fail(source, prefix + key, "is missing");
+  if (!it->is_string() || it->get<std::string>().empty())
+    fail(source, prefix + key, "must be a non-empty text");
+  return it->get<std::string>();
+}
+
+double numberKey(const nlohmann::json& block, const char* key, double fallback, const std::string& source,
+                 const std::string& prefix) {
+  const auto it = block.find(key);
+  if (it == block.end()) return fallback;
+  if (!it->is_number() || !std::isfinite(it->get<double>())) fail(source, prefix + key, "must be a number");
+  return it->get<double>();
+}
+
+/// The dataset with this id, resolved; ValidationError when the project has none.
+const DatasetRef& datasetOf(const Project& project, const std::string& id, const std::string& source,
+                            const std::string& field) {
+  const DatasetRef* d = project.dataset(id);
+  if (!d) fail(source, field, "names the dataset '" + id + "', which the project does not have");
+  return *d;
+}
+
+}  // namespace
+
+const char* diagnosisDomainKey(DiagnosisDomain domain) {
+  switch (domain) {
+    case DiagnosisDomain::Thermal:
+      return "thermal";
+    case DiagnosisDomain::Kinematic:
+      return "kinematic";
+    case DiagnosisDomain::Setup:
+      return "setup";
+    case DiagnosisDomain::Matching:
+      return "matching";
+  }
+  return "thermal";
+}
+
+std::string diagnosisSettingsKey(const DiagnosisSettings& s) {
+  const nlohmann::json key = {
+      {"d", diagnosisDomainKey(s.domain)},
+      {"p", s.datasetPath},
+      {"csv",
+       {static_cast<int>(s.csv.dialect.delimiter), static_cast<int>(s.csv.dialect.decimal), s.csv.columnMap}},
+      {"t", s.target},
+      {"i", s.inputs},
+      {"f", s.trainFraction},
+      {"m", s.modelPath},
+      {"tol", s.toleranceMm},
+      {"feed", s.feedMmPerMin}};
+  return key.dump();
+}
+
+bool hasDiagnosisSettings(const Project& project, DiagnosisDomain domain) {
+  const auto s = project.studies.find(study::kDiagnosis);
+  if (s == project.studies.end() || !s->is_object()) return false;
+  const auto d = s->find(diagnosisDomainKey(domain));
+  return d != s->end() && d->is_object();
+}
+
+DiagnosisSettings diagnosisSettings(const Project& project, const std::string& projectPath,
+                                    DiagnosisDomain domain) {
+  const std::string key = diagnosisDomainKey(domain);
+  const std::string prefix = std::string("studies.") + study::kDiagnosis + "." + key + ".";
+  const std::string& source = projectPath;
+  const auto s = project.studies.find(study::kDiagnosis);
+  if (s == project.studies.end() || !s->is_object())
+    fail(source, std::string("studies.") + study::kDiagnosis,
+         "is missing: the project has no diagnosis study");
+  const auto it = s->find(key);
+  if (it == s->end() || !it->is_object())
+    fail(source, prefix.substr(0, prefix.size() - 1),
+         "is missing: no " + key + " data configured for diagnosis");
+  const nlohmann::json& block = *it;
+
+  DiagnosisSettings out;
+  out.domain = domain;
+  out.datasetId = stringKey(block, "dataset", source, prefix);
+  const DatasetRef& dataset = datasetOf(project, out.datasetId, source, prefix + "dataset");
+  out.datasetPath = resolveDatasetPath(projectPath, dataset);
+  out.csv = dataset.csv;
+  switch (domain) {
+    case DiagnosisDomain::Thermal: {
+      out.target = stringKey(block, "target", source, prefix);
+      const auto in = block.find("inputs");
+      if (in == block.end()) fail(source, prefix + "inputs", "is missing");
+      if (!in->is_array() || in->empty())
+        fail(source, prefix + "inputs", "must be a non-empty list of column names");
+      for (const auto& v : *in) {
+        if (!v.is_string()) fail(source, prefix + "inputs", "must be a list of column names");
+        out.inputs.push_back(v.get<std::string>());
+      }
+      out.trainFraction = numberKey(block, "train_fraction", 0.5, source, prefix);
+      if (out.trainFraction < 0.05 || out.trainFraction > 0.95)
+        fail(source, prefix + "train_fraction", "must be between 0.05 and 0.95");
+      break;
+    }
+    case DiagnosisDomain::Kinematic:
+      out.feedMmPerMin = numberKey(block, "feed_mm_per_min", 1000.0, source, prefix);
+      if (out.feedMmPerMin <= 0.0) fail(source, prefix + "feed_mm_per_min", "must be positive");
+      break;
+    case DiagnosisDomain::Setup:
+      out.modelId = stringKey(block, "model", source, prefix);
+      out.modelPath =
+          resolveDatasetPath(projectPath, datasetOf(project, out.modelId, source, prefix + "model"));
+      break;
+    case DiagnosisDomain::Matching:
+      out.toleranceMm = numberKey(block, "tolerance_mm", 0.05, source, prefix);
+      if (out.toleranceMm <= 0.0) fail(source, prefix + "tolerance_mm", "must be positive");
+      break;
+  }
+  if (const auto a = block.find("applied"); a != block.end() && a->is_array()) out.applied = *a;
+  return out;
+}
+
+diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer) {
+  switch (s.domain) {
+    case DiagnosisDomain::Thermal: {
+      const ThermalLog log = readThermalLog(s.datasetPath, 3, s.csv);
+      diagnose::ThermalDiagnosisOptions o;
+      o.target = s.target;
+      o.inputs = s.inputs;
+      o.trainFraction = s.trainFraction;
+      return diagnose::diagnoseThermal(log, o, observer);
+    }
+    case DiagnosisDomain::Kinematic: {
+      const MeasuredPath path = readMeasuredPath(s.datasetPath, s.csv);
+      diagnose::KinematicDiagnosisOptions o;
+      o.feedMmPerMin = s.feedMmPerMin;
+      return diagnose::diagnoseKinematic(path, o, observer);
+    }
+    case DiagnosisDomain::Setup: {
+      const setup::Model model = setup::readModel(s.modelPath);
+      const setup::Measurements m = setup::readMeasurements({s.datasetPath}, model, s.csv);
+      return diagnose::diagnoseSetup(model, m, {}, observer);
+    }
+    case DiagnosisDomain::Matching: {
+      const ProbePointSet set = readProbePointsAnyFormat(s.datasetPath, 3, s.csv);
+      diagnose::MatchingDiagnosisOptions o;
+      o.toleranceMm = s.toleranceMm;
+      return diagnose::diagnoseMatching(set, o, observer);
+    }
+  }
+  return {};
+}
+
+bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c) {
+  return !c.generic.has_value() || domain == "thermal" ||
+         (domain == "kinematic" && !c.genericCoefficients.empty());
+}
+
+nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const diagnose::Candidate* c : diagnosis.accepted()) {
+    if (!canApplyEffect(diagnosis.domain, *c)) continue;
+    nlohmann::json params = nlohmann::json::object();
+    for (const diagnose::Parameter& p : c->parameters) {
+      if (const double* v = std::get_if<double>(&p.value))
+        params[p.name] = *v;
+      else
+        params[p.name] = std::get<std::string>(p.value);
+    }
+    nlohmann::json entry = {{"name", c->name}, {"parameters", params}};
+    if (c->generic) entry["shape"] = diagnose::genericShapeJson(*c->generic);
+    if (!c->genericCoefficients.empty()) entry["coefficients"] = c->genericCoefficients;
+    out.push_back(std::move(entry));
+  }
+  return out;
+}
+
+std::string formatParameterValue(const diagnose::Parameter& parameter, int digits) {
+  if (const double* v = std::get_if<double>(&parameter.value)) return CsvWriter::formatNumber(*v, digits);
+  return std::get<std::string>(parameter.value);
+}
+
+}  // namespace metrofit

@@ -1,0 +1,84 @@
+#pragma once
+// The project's "diagnosis" study (issue 8), shared by the GUI's diagnosis page and the report:
+//
+//   "diagnosis": {
+//     "thermal":   {"dataset": ID, "target": COL, "inputs": [COL, ...], "train_fraction": 0.5},
+//     "kinematic": {"dataset": ID, "feed_mm_per_min": 1000},
+//     "setup":     {"model": SETUP_MODEL_ID, "dataset": CMM_REPORT_ID},
+//     "matching":  {"dataset": ID, "tolerance_mm": 0.035},
+//     "<domain>":  {..., "applied": [{"name": EFFECT, "parameters": {NAME: VALUE}}]}
+//   }
+//
+// Every key is read defensively: a missing or ill-typed key gives a ValidationError whose message
+// names the field ("studies.diagnosis.thermal.target"), never a crash. "applied" holds the effects
+// the user added to the domain's model with Apply (diagnosis page, undoable).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/run.h"
+#include "core/diagnose/diagnosis.h"
+#include "core/project/project.h"
+
+namespace metrofit {
+
+enum class DiagnosisDomain { Thermal, Kinematic, Setup, Matching };
+inline constexpr DiagnosisDomain kDiagnosisDomains[] = {DiagnosisDomain::Thermal, DiagnosisDomain::Kinematic,
+                                                        DiagnosisDomain::Setup, DiagnosisDomain::Matching};
+
+/// "thermal", "kinematic", "setup", "matching" (the CLI's and the study block's names).
+const char* diagnosisDomainKey(DiagnosisDomain domain);
+
+struct DiagnosisSettings {
+  DiagnosisDomain domain = DiagnosisDomain::Thermal;
+  std::string datasetId;
+  std::string datasetPath;  ///< resolved against the project file's folder
+  CsvReadOptions csv;       ///< the dataset's dialect and column mapping (core/project/datasets.h)
+  std::string target;       ///< thermal
+  std::vector<std::string> inputs;
+  double trainFraction = 0.5;
+  std::string modelId;  ///< setup
+  std::string modelPath;
+  double toleranceMm = 0.05;                         ///< matching
+  double feedMmPerMin = 1000.0;                      ///< kinematic
+  nlohmann::json applied = nlohmann::json::array();  ///< effects added with Apply
+};
+
+/// A text that is equal for two settings exactly when runDiagnosis gives the same result for both
+/// (domain, data and how it is read, target, inputs, fraction, model, tolerance, feed), e.g. to reuse a
+/// result.
+std::string diagnosisSettingsKey(const DiagnosisSettings& settings);
+
+/// True when studies.diagnosis.<domain> exists (it may still be invalid).
+bool hasDiagnosisSettings(const Project& project, DiagnosisDomain domain);
+/// Reads studies.diagnosis.<domain>. ValidationError naming the field (source = projectPath) when the
+/// block or a key is missing or has the wrong type, or a dataset id is not in the project.
+DiagnosisSettings diagnosisSettings(const Project& project, const std::string& projectPath,
+                                    DiagnosisDomain domain);
+/// Reads the data and runs the domain's loop (core/diagnose/*_diagnosis.h). Core's InputError when
+/// the data cannot be read or do not fit the declared model.
+diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& settings, Observer* observer = nullptr);
+
+/// True when Apply can add the accepted effect `c` of a diagnosis of `domain` ("thermal", ...) to its
+/// study's model: the study's applied-effects parser (core/diagnose/thermal_applied.h,
+/// core/diagnose/applied_kinematic.h, core/diagnose/applied_setup_matching.h) knows it. The catalogue's
+/// named effects: yes. A generic effect `unexplained:<against>` (Candidate::generic): in the thermal
+/// study (its basis columns are refitted by every model) and the kinematic one (a displacement with
+/// the diagnosis's coefficients, core/diagnose/applied_kinematic.h). Not yet in setup and matching,
+/// where it is reported (candidate table, residual check, report) but not applied: the matching
+/// study could read it (core/diagnose/applied_setup_matching.h), but the loop's generic bases are
+/// not projected off the rigid motion and the named effects, so their coefficients can trade
+/// against a named effect (a bowed block: unexplained:x with scale -790 ppm) and are not a
+/// deformation the study can use.
+bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c);
+
+/// The accepted effects Apply can add (canApplyEffect) as stored under "applied":
+/// [{"name": ..., "parameters": {name: value}}], a generic effect with its "shape"
+/// (core/diagnose/applied_entries.h genericShapeJson) and, in kinematic, its "coefficients".
+nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis);
+
+/// A parameter's value as text ("12.3" or the text value), `digits` significant digits.
+std::string formatParameterValue(const diagnose::Parameter& parameter, int digits = 4);
+
+}  // namespace metrofit

@@ -1,0 +1,116 @@
+#pragma once
+// The kinematics & SPC study of a project, as the page and the report run it. Settings
+// (project "studies" -> "kinematics", every key optional):
+//   "dataset": "<id of a circular_test dataset>"          (default: the first of that kind)
+//   "simulated_machine": {"origin_mm": [x, y], "x_axis_angle_deg": a, "y_axis_angle_deg": b}
+//        the true errors when the study's circular test ("dataset") was simulated: compensated
+//        references are then also run through that machine (the simulator plays the machine)
+//   "spc": {"dataset": "<id>", "column": "diameter_mm", "subgroup": 5, "lsl": L, "usl": U,
+//           "nominal": V, "coverage": k}
+//        the feature series charted on the SPC view (a CSV dataset, rows in production order)
+//   "from_spc": {"x_dataset": "<id>", "y_dataset": "<id>", "position_column": "position_mm",
+//                "deviation_column": "deviation_mm", "x_nominal_y": 0, "y_nominal_x": 0,
+//                "subgroup": 5, "coverage": 2}
+//        seed 002's chain from SPC to compensation (core/kinematics/spc_actuator.h): the edges machined
+//        along X and Y, their regression offset angles -> actuator errors -> Eq. 15 references for
+//        the study's nominal circle
+//   "planes": {"xy": "<id>", "yz": "<id>", "zx": "<id>"}
+//        circular tests in three planes for the three-axis identification
+//        (core/kinematics/identification3.h; YZ / ZX files have the plane's columns)
+// A wrong type or value is a ValidationError naming studies/kinematics/<key>.
+//
+// Applied effects: the effects added with Apply on the diagnosis page
+// (studies.diagnosis.kinematic.applied, core/diagnose/applied_kinematic.h) belong to the machine model of
+// the circular test the diagnosis ran on (studies.diagnosis.kinematic.dataset, where they were
+// estimated): for that test the identification, the compensation and its exports include them
+// (undoing the Apply gives the declared model again); other tests keep the declared model.
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/diagnose/applied_kinematic.h"
+#include "core/kinematics/identification.h"
+#include "core/kinematics/identification3.h"
+#include "core/kinematics/measured_path.h"
+#include "core/kinematics/spc_actuator.h"
+#include "core/project/project.h"
+#include "core/spc/spc.h"
+#include "core/study/circular_analysis.h"
+
+namespace metrofit {
+
+struct KinematicSpcSettings {
+  std::string dataset;
+  std::string column;
+  SpcOptions options;
+};
+
+struct KinematicFromSpcSettings {
+  std::string xDataset, yDataset;
+  std::string positionColumn = "position_mm", deviationColumn = "deviation_mm";
+  double xNominalY = 0.0, yNominalX = 0.0;
+  SpcActuatorOptions options;
+};
+
+struct KinematicStudySettings {
+  std::string dataset;  ///< empty: the first circular_test dataset
+  std::optional<ActuatorErrors2> simulatedMachine;
+  std::optional<KinematicSpcSettings> spc;
+  std::optional<KinematicFromSpcSettings> fromSpc;
+  std::optional<std::array<std::string, 3>> planes;  ///< dataset ids, index TestPlane
+};
+
+KinematicStudySettings kinematicStudySettings(const Project& project);
+
+/// The unit at the end of a column name ("diameter_mm" -> "mm", "dev_um" -> "µm"; else empty).
+std::string columnUnit(const std::string& column);
+
+struct KinematicSpcSeries {
+  DatasetRef dataset;
+  std::string column, unit;
+  std::vector<double> values;
+  SpcResult result;
+};
+
+struct KinematicStudyData {
+  KinematicStudySettings settings;
+  DatasetRef dataset;  ///< the circular test
+  std::string path;    ///< its resolved file
+  MeasuredPath measured;
+  CircularAnalysis analysis;
+  IdentifyResult identification;         ///< with the applied effects, when any
+  AxisEffects applied;                   ///< the applied effects the model includes (empty: none)
+  std::optional<double> declaredRmseMm;  ///< rmse of the declared model alone, when effects are applied
+  std::optional<KinematicSpcSeries> spc;
+  std::string spcError;  ///< why the SPC series could not be charted (empty when it was)
+
+  /// Seed 002's chain from SPC (settings "from_spc"): the derived errors, and their Eq. 15
+  /// references for the study's nominal circle (the circular test's commands) judged by the
+  /// circular test's identified model, an independent estimate of the same machine.
+  std::optional<SpcActuatorResult> fromSpc;
+  std::string fromSpcError;
+  double fromSpcLargestCorrectionMm = 0.0;  ///< max |reference - nominal|
+  double fromSpcModelBeforeMm = 0.0;        ///< identified model on the nominal commands: max |P - nominal|
+  double fromSpcModelAfterMm = 0.0;         ///< identified model on the SPC references
+  /// Three-axis identification (settings "planes").
+  std::optional<Identify3Result> threeAxis;
+  std::string threeAxisError;
+};
+
+/// The circular_test datasets of the project, in project order.
+std::vector<DatasetRef> circularTestDatasets(const Project& project);
+
+/// Reads the circular test `datasetId` (empty: the study's dataset), analyses and identifies it, and
+/// charts the SPC series when the study names one (a bad series sets spcError, it does not throw).
+/// `resolve` gives the file of a dataset. Throws InputError for a missing or unreadable test, and
+/// std::runtime_error when the identification fails.
+KinematicStudyData loadKinematicStudy(const Project& project,
+                                      const std::function<std::string(const DatasetRef&)>& resolve,
+                                      const std::string& datasetId = {});
+
+/// Compensation preview of the study's circular test (the simulated machine when the settings give one).
+CompensationPreview compensateStudy(const KinematicStudyData& study);
+
+}  // namespace metrofit

@@ -1,0 +1,210 @@
+// The three thermal models side by side (see thermal_comparison.h).
+#include "core/study/thermal_comparison.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "core/diagnose/thermal_applied.h"
+#include "core/thermal/thermal_data.h"
+
+namespace metrofit {
+namespace {
+
+bool isAmbient(const std::string& name) {
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return lower.find("amb") != std::string::npos;
+}
+
+double rangeOf(const std::vector<double>& v) {
+  if (v.empty()) return 0.0;
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return *hi - *lo;
+}
+
+std::vector<std::string> defaultInputs(const ThermalLog& log) {
+  std::vector<std::string> inputs;
+  for (const ThermalChannel& c : log.channels) {
+    if (channelKind(c) == ChannelKind::Strain) inputs.push_back(c.name);
+  }
+  if (!inputs.empty()) {
+    if (log.indexOf("T2") >= 0) inputs.push_back("T2");
+    return inputs;
+  }
+  constexpr std::size_t kMaxTemperatures = 8;
+  for (const ThermalChannel& c : log.channels) {
+    if (channelKind(c) == ChannelKind::Temperature && !isAmbient(c.name) &&
+        inputs.size() < kMaxTemperatures && rangeOf(c.values) > 0.0) {
+      inputs.push_back(c.name);
+    }
+  }
+  return inputs;
+}
+
+bool hasColumns(const ThermalLog& log, const std::string& target, const std::vector<std::string>& inputs) {
+  if (target.empty() || inputs.empty() || log.indexOf(target) < 0) return false;
+  return std::all_of(inputs.begin(), inputs.end(), [&](const std::string& n) { return log.indexOf(n) >= 0; });
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Forwards one model's iterations to the comparison observer.
+class ModelObserver final : public Observer {
+ public:
+  ModelObserver(const ThermalComparisonObserver& fn, int model) : fn_(fn), model_(model) {}
+  ObserverDecision onIteration(const IterationSummary& s) override {
+    return fn_ ? fn_(model_, s) : ObserverDecision::Continue;
+  }
+
+ private:
+  const ThermalComparisonObserver& fn_;
+  int model_;
+};
+
+thermal::ThermalFitOptions fitOptions(thermal::ThermalModelKind kind, std::uint64_t seed) {
+  thermal::ThermalFitOptions o;
+  o.model = kind;
+  o.setSeed(seed);
+  return o;
+}
+
+}  // namespace
+
+ThermalModelSettings defaultThermalModelSettings(const ThermalLog& log, const nlohmann::json& study,
+                                                 const std::string& datasetId) {
+  ThermalModelSettings s;
+  if (study.is_object() && study.value("dataset", std::string()) == datasetId) {
+    const std::string target = study.value("target", std::string());
+    std::vector<std::string> inputs;
+    if (const auto in = study.find("inputs"); in != study.end() && in->is_array()) {
+      for (const auto& v : *in) {
+        if (v.is_string()) inputs.push_back(v.get<std::string>());
+      }
+    }
+    if (hasColumns(log, target, inputs)) {
+      s.target = target;
+      s.inputs = inputs;
+    }
+    if (const auto f = study.find("train_fraction"); f != study.end() && f->is_number()) {
+      const double v = f->get<double>();
+      if (v > 0.0 && v < 1.0) s.trainFraction = v;
+    }
+    if (const auto seed = study.find("seed"); seed != study.end() && seed->is_number_unsigned()) {
+      s.seed = seed->get<std::uint64_t>();
+    }
+  }
+  if (s.target.empty()) {
+    double best = -1.0;
+    for (const ThermalChannel& c : log.channels) {
+      if (channelKind(c) == ChannelKind::Displacement && rangeOf(c.values) > best) {
+        best = rangeOf(c.values);
+        s.target = c.name;
+      }
+    }
+    s.inputs = defaultInputs(log);
+  }
+  return s;
+}
+
+std::vector<std::string> modularInputs(const ThermalLog& log) {
+  return defaultInputs(log);
+}
+
+ThermalComparison compareThermalModels(const ThermalLog& log, const ThermalModelSettings& settings,
+                                       const ThermalComparisonObserver& observer) {
+  ThermalComparison c;
+  c.settings = settings;
+  c.series = thermal::selectThermalSeries(log, settings.target, settings.inputs);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  c.declaredHeldoutRmse.fill(nan);
+  c.appliedHeldoutRmse.fill(nan);
+  const diagnose::AppliedThermalEffects applied =
+      diagnose::appliedThermalEffects(settings.applied, log, settings.target, settings.inputs);
+  if (!applied.empty()) {
+    const diagnose::ThermalLogWithEffects with =
+        diagnose::withThermalEffects(log, settings.inputs, applied.effects);
+    c.appliedSeries = thermal::selectThermalSeries(with.log, settings.target, with.inputs);
+    c.appliedText = applied.text();
+  }
+  for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+    ModelObserver forward(observer, static_cast<int>(i));
+    const auto start = std::chrono::steady_clock::now();
+    const thermal::ThermalFitOptions options = fitOptions(kThermalModelOrder[i], settings.seed);
+    if (c.appliedText.empty()) {
+      c.models[i] = thermal::fitAndEvaluate(c.series, settings.trainFraction, options, &forward);
+      c.declaredHeldoutRmse[i] = c.models[i].heldout.rmse;
+      c.cancelled = c.models[i].training.run.termination == Termination::Cancelled;
+    } else {
+      diagnose::ThermalVariantFit v = diagnose::fitDeclaredAndWithEffects(
+          c.series, c.appliedSeries, settings.trainFraction, options, &forward);
+      c.declaredHeldoutRmse[i] = v.declared.heldout.rmse;
+      if (!v.cancelled || v.usesEffects) c.appliedHeldoutRmse[i] = v.withEffects.heldout.rmse;
+      c.usesApplied[i] = v.usesEffects;
+      c.cancelled = v.cancelled;
+      c.models[i] = v.usesEffects ? std::move(v.withEffects) : std::move(v.declared);
+    }
+    c.seconds[i] = secondsSince(start);
+    if (c.cancelled) break;
+  }
+  return c;
+}
+
+ModularComparison compareModularModels(const std::vector<const ThermalLog*>& trainingTests,
+                                       const ThermalLog& test, const std::string& target,
+                                       const std::vector<std::string>& inputs, std::uint64_t seed,
+                                       const ThermalComparisonObserver& observer) {
+  ModularComparison m;
+  m.target = target;
+  m.inputs = inputs;
+  std::vector<thermal::ThermalSeries> train;
+  for (const ThermalLog* log : trainingTests)
+    train.push_back(thermal::selectThermalSeries(*log, target, inputs));
+  m.test = thermal::selectThermalSeries(test, target, inputs);
+  for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+    ModelObserver forward(observer, static_cast<int>(i));
+    m.models[i] = thermal::fitModular(train, m.test, fitOptions(kThermalModelOrder[i], seed), &forward);
+    if (m.models[i].training.run.termination == Termination::Cancelled) {
+      m.cancelled = true;
+      break;
+    }
+  }
+  return m;
+}
+
+std::vector<PhaseRun> phaseRuns(const std::vector<int>& phase) {
+  std::vector<PhaseRun> runs;
+  for (std::size_t k = 0; k < phase.size(); ++k) {
+    if (runs.empty() || runs.back().phase != phase[k]) {
+      runs.push_back({phase[k], k, k});
+    } else {
+      runs.back().last = k;
+    }
+  }
+  return runs;
+}
+
+ThermalLog decimateThermalLog(const ThermalLog& log, std::size_t stride) {
+  if (stride <= 1 || log.rows() <= 2) return log;
+  std::vector<std::size_t> rows;
+  for (std::size_t k = 0; k < log.rows(); k += stride) rows.push_back(k);
+  if (rows.back() != log.rows() - 1) rows.push_back(log.rows() - 1);
+  ThermalLog out;
+  out.source = log.source;
+  out.timeColumn = log.timeColumn;
+  for (std::size_t k : rows) out.timeMin.push_back(log.timeMin[k]);
+  for (const ThermalChannel& c : log.channels) {
+    ThermalChannel d{c.name, c.unit, {}};
+    d.values.reserve(rows.size());
+    for (std::size_t k : rows) d.values.push_back(c.values[k]);
+    out.channels.push_back(std::move(d));
+  }
+  return out;
+}
+
+}  // namespace metrofit

@@ -1,0 +1,67 @@
+# Proves the layering of the sources: cmake -DSOURCE_DIR=<root> -P tests/core/layering_check.cmake
+#   * a core module includes only headers of itself and of the modules it depends on (directly or
+#     through them), as core/modules.cmake declares; so the graph of core is one-way;
+#   * core includes nothing of widgets/ or app/ and no Qt header;
+#   * widgets/ includes nothing of app/.
+# Every violation is printed as "<file>:<line>: <include> (<why>)"; the script fails if any.
+cmake_minimum_required(VERSION 3.25)
+if(NOT SOURCE_DIR)
+  message(FATAL_ERROR "usage: cmake -DSOURCE_DIR=<root> -P layering_check.cmake")
+endif()
+include("${SOURCE_DIR}/core/modules.cmake")
+
+# Transitive closure of the declared dependencies (modules are listed in dependency order).
+foreach(_m IN LISTS METROFIT_CORE_MODULES)
+  set(_closure ${METROFIT_CORE_DEPS_${_m}})
+  foreach(_d IN LISTS METROFIT_CORE_DEPS_${_m})
+    if(NOT DEFINED _reach_${_d})
+      message(FATAL_ERROR "core/modules.cmake: ${_m} depends on ${_d}, which is not listed before it")
+    endif()
+    list(APPEND _closure ${_reach_${_d}})
+  endforeach()
+  list(REMOVE_DUPLICATES _closure)
+  set(_reach_${_m} ${_m} ${_closure})
+endforeach()
+
+set(_violations "")
+function(_scan file allowed_regex forbidden_regex why)
+  file(STRINGS "${file}" _lines REGEX "^[ \t]*#[ \t]*include")
+  file(RELATIVE_PATH _rel "${SOURCE_DIR}" "${file}")
+  set(_n 0)
+  foreach(_l IN LISTS _lines)
+    if(_l MATCHES "#[ \t]*include[ \t]*[\"<]([^\">]+)[\">]")
+      set(_inc "${CMAKE_MATCH_1}")
+      if(forbidden_regex AND _inc MATCHES "${forbidden_regex}")
+        set(_violations "${_violations}${_rel}: ${_inc} (${why})\n" PARENT_SCOPE)
+      elseif(_inc MATCHES "^core/([a-z_]+)/" AND allowed_regex AND NOT _inc MATCHES "${allowed_regex}")
+        set(_violations "${_violations}${_rel}: ${_inc} (${why})\n" PARENT_SCOPE)
+      endif()
+    endif()
+  endforeach()
+endfunction()
+
+foreach(_m IN LISTS METROFIT_CORE_MODULES)
+  string(REPLACE ";" "|" _alt "${_reach_${_m}}")
+  file(GLOB _files "${SOURCE_DIR}/core/${_m}/*.h" "${SOURCE_DIR}/core/${_m}/*.cpp")
+  foreach(_f IN LISTS _files)
+    _scan("${_f}" "^core/(${_alt})/" "^(widgets|app)/|^Q[A-Za-z]+$|^Qt[A-Za-z]*/"
+          "core/${_m} may use only ${_reach_${_m}}; core never uses Qt, widgets or app")
+  endforeach()
+endforeach()
+file(GLOB _stray LIST_DIRECTORIES false "${SOURCE_DIR}/core/*/*.cpp" "${SOURCE_DIR}/core/*/*.h")
+foreach(_f IN LISTS _stray)
+  get_filename_component(_dir "${_f}" DIRECTORY)
+  get_filename_component(_mod "${_dir}" NAME)
+  if(NOT _mod IN_LIST METROFIT_CORE_MODULES)
+    set(_violations "${_violations}${_f}: core/${_mod} is not a module of core/modules.cmake\n")
+  endif()
+endforeach()
+file(GLOB_RECURSE _widgets "${SOURCE_DIR}/widgets/*.h" "${SOURCE_DIR}/widgets/*.cpp")
+foreach(_f IN LISTS _widgets)
+  _scan("${_f}" "" "^app/" "widgets never use app")
+endforeach()
+
+if(_violations)
+  message(FATAL_ERROR "layering violations:\n${_violations}")
+endif()
+message(STATUS "layering: ok")
