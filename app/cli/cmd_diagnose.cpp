@@ -39,9 +39,11 @@ namespace {
 
 struct MethodArgs {
   std::string model, data, method, machine, errors, path, target, inputs, out, declared = "linear";
-  long budget = 5000;
+  // Defaults come from the options of each domain's closed loop.
   std::uint64_t seed = 1;
-  double tolerance = 0.05, trainFraction = 0.5, feed = 1000.0;
+  double tolerance = diagnose::MatchingDiagnosisOptions{}.toleranceMm;
+  double trainFraction = diagnose::ThermalDiagnosisOptions{}.trainFraction;
+  double feed = diagnose::KinematicDiagnosisOptions{}.feedMmPerMin;
   bool allowScale = false;
 };
 

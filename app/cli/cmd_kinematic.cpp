@@ -61,7 +61,7 @@ struct IdentifyArgs {
 
 struct CompensateArgs {
   std::string errors, path, out, gcode, stepNc;
-  double feed = 1000.0;
+  double feed = GcodeOptions{}.feedMmPerMin;
 };
 
 std::string g(double v, const char* format = "%.6g") {

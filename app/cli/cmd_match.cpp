@@ -38,7 +38,7 @@ namespace {
 struct MatchArgs {
   std::string data, method = "sade", machine = "xfyzba", machineDef, lock, reference, out;
   std::uint64_t seed = 1;
-  double tolerance = 0.05, remeasureNoise = 0.006;
+  double tolerance = matching::kDefaultToleranceMm, remeasureNoise = 0.006;
   bool allowScale = false, remeasure = false;
 };
 

@@ -56,7 +56,7 @@ namespace {
 struct SetupArgs {
   std::string model, method = "exact", out, exportFormat, exportOut, toolOffset = "wear";
   std::vector<std::string> data;
-  long budget = 5000;
+  long budget = setup::kPaperBudget;
   std::uint64_t seed = 1;
   double timeLimit = 0.0;
 };

@@ -83,15 +83,6 @@ QString methodShort(MatchMethod m) {
   return {};
 }
 
-/// The largest 1, 2 or 5 x 10^n that is <= x (x > 0).
-double niceFloor(double x) {
-  const double decade = std::pow(10.0, std::floor(std::log10(x)));
-  for (const double step : {5.0, 2.0, 1.0}) {
-    if (step * decade <= x * (1.0 + 1e-12)) return step * decade;
-  }
-  return decade;
-}
-
 /// A column header on two lines so that the column takes the width of its numbers, not of its
 /// (translated) title: the unit goes under the name ("rx\n(deg)"), a longer title without a unit
 /// breaks at the space nearest its middle. The one-line title is the tooltip.
@@ -874,15 +865,8 @@ void MatchingPage::updateViews() {
     maxBefore = std::max(maxBefore, std::abs(v));
     outBefore += std::abs(v) > tol;
   }
-  // Deviation vectors magnified so that the largest before is about 15 % of the part's size (rounded
-  // down to 1, 2 or 5 x 10^n); the same factor in both views.
-  Eigen::Vector3d lo = set.points.empty() ? Eigen::Vector3d::Zero() : set.points.front().nominal, hi = lo;
-  for (const ProbePoint& p : set.points) {
-    lo = lo.cwiseMin(p.nominal);
-    hi = hi.cwiseMax(p.nominal);
-  }
-  const double extent = std::max((hi - lo).maxCoeff(), 1.0);
-  const double factor = maxBefore > 0.0 ? std::clamp(niceFloor(0.15 * extent / maxBefore), 1.0, 1e5) : 100.0;
+  // The same magnification of the deviation vectors in both views, and as in the report.
+  const double factor = matching::deviationMagnification(set, maxBefore);
   const QLocale locale;
   for (PointSetView* v : {beforeView_, afterView_}) {
     v->setTolerance(tol);

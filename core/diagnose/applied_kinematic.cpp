@@ -7,6 +7,7 @@
 
 #include "core/common/error.h"
 #include "core/diagnose/applied_entries.h"
+#include "core/diagnose/kinematic_diagnosis.h"
 #include "core/io/csv.h"
 #include "core/kinematics/path_variables.h"
 #include "core/project/project.h"
@@ -212,7 +213,7 @@ AxisEffects projectAxisEffects(const Project& project, const std::string& datase
   const auto applied = block->find("applied");
   if (applied == block->end() || applied->is_null()) return {};
   if (block->value("dataset", nlohmann::json()) != nlohmann::json(datasetId)) return {};
-  double feed = 1000.0;
+  double feed = diagnose::KinematicDiagnosisOptions{}.feedMmPerMin;  // the loop's default feed
   if (const auto f = block->find("feed_mm_per_min"); f != block->end()) {
     if (!f->is_number())
       throw ValidationError(ErrorContext{{}, 0, 0, "studies.diagnosis.kinematic.feed_mm_per_min"},

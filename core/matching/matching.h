@@ -45,9 +45,12 @@ optim::Sade::Options paperSadeOptions();
 /// budget of paperSadeOptions().
 optim::GaSimplex::Options comparisonGaSimplexOptions();
 
+/// The symmetric tolerance (mm) of a before/after evaluation when none is set.
+inline constexpr double kDefaultToleranceMm = 0.05;
+
 struct MatchOptions {
   MatchMethod method = MatchMethod::Sade;
-  double toleranceMm = 0.05;  ///< symmetric tolerance of the before/after evaluation (>= 0)
+  double toleranceMm = kDefaultToleranceMm;  ///< symmetric tolerance of the before/after evaluation (>= 0)
   bool allowScale = false;
   DofLocks locks;                         ///< user locks (planar locks are added automatically)
   std::vector<std::string> referenceIds;  ///< rough matching references (3 ids) or empty: automatic

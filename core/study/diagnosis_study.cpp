@@ -117,13 +117,15 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
         if (!v.is_string()) fail(source, prefix + "inputs", "must be a list of column names");
         out.inputs.push_back(v.get<std::string>());
       }
-      out.trainFraction = numberKey(block, "train_fraction", 0.5, source, prefix);
+      out.trainFraction =
+          numberKey(block, "train_fraction", DiagnosisSettings{}.trainFraction, source, prefix);
       if (out.trainFraction < 0.05 || out.trainFraction > 0.95)
         fail(source, prefix + "train_fraction", "must be between 0.05 and 0.95");
       break;
     }
     case DiagnosisDomain::Kinematic:
-      out.feedMmPerMin = numberKey(block, "feed_mm_per_min", 1000.0, source, prefix);
+      out.feedMmPerMin =
+          numberKey(block, "feed_mm_per_min", DiagnosisSettings{}.feedMmPerMin, source, prefix);
       if (out.feedMmPerMin <= 0.0) fail(source, prefix + "feed_mm_per_min", "must be positive");
       break;
     case DiagnosisDomain::Setup:
@@ -132,7 +134,7 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
           resolveDatasetPath(projectPath, datasetOf(project, out.modelId, source, prefix + "model"));
       break;
     case DiagnosisDomain::Matching:
-      out.toleranceMm = numberKey(block, "tolerance_mm", 0.05, source, prefix);
+      out.toleranceMm = numberKey(block, "tolerance_mm", DiagnosisSettings{}.toleranceMm, source, prefix);
       if (out.toleranceMm <= 0.0) fail(source, prefix + "tolerance_mm", "must be positive");
       break;
   }

@@ -19,6 +19,9 @@
 
 #include "core/common/run.h"
 #include "core/diagnose/diagnosis.h"
+#include "core/diagnose/kinematic_diagnosis.h"
+#include "core/diagnose/matching_diagnosis.h"
+#include "core/diagnose/thermal_diagnosis.h"
 #include "core/project/project.h"
 
 namespace metrofit {
@@ -37,12 +40,12 @@ struct DiagnosisSettings {
   CsvReadOptions csv;       ///< the dataset's dialect and column mapping (core/project/datasets.h)
   std::string target;       ///< thermal
   std::vector<std::string> inputs;
-  double trainFraction = 0.5;
+  double trainFraction = diagnose::ThermalDiagnosisOptions{}.trainFraction;
   std::string modelId;  ///< setup
   std::string modelPath;
-  double toleranceMm = 0.05;                         ///< matching
-  double feedMmPerMin = 1000.0;                      ///< kinematic
-  nlohmann::json applied = nlohmann::json::array();  ///< effects added with Apply
+  double toleranceMm = diagnose::MatchingDiagnosisOptions{}.toleranceMm;     ///< matching
+  double feedMmPerMin = diagnose::KinematicDiagnosisOptions{}.feedMmPerMin;  ///< kinematic
+  nlohmann::json applied = nlohmann::json::array();                          ///< effects added with Apply
 };
 
 /// A text that is equal for two settings exactly when runDiagnosis gives the same result for both

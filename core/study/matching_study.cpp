@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/common/axis_ticks.h"
 #include "core/common/error.h"
 #include "core/project/project.h"
 
@@ -110,6 +111,17 @@ MatchingStudySettings matchingStudySettings(const Project& project, const std::s
   if (!matchingMachine(project, &s.options.machine, source))
     s.options.machine = machine::MachineDefinition::preset(machine::Topology::Xfyzba);
   return s;
+}
+
+double deviationMagnification(const ProbePointSet& set, double maxBefore) {
+  if (!(maxBefore > 0.0) || set.points.empty()) return 100.0;
+  Eigen::Vector3d lo = set.points.front().nominal, hi = lo;
+  for (const ProbePoint& p : set.points) {
+    lo = lo.cwiseMin(p.nominal);
+    hi = hi.cwiseMax(p.nominal);
+  }
+  const double extent = std::max((hi - lo).maxCoeff(), 1.0);
+  return std::clamp(ticks::niceFloor(0.15 * extent / maxBefore), 1.0, 1e5);
 }
 
 }  // namespace metrofit::matching

@@ -35,7 +35,7 @@ class Project;
 namespace metrofit::matching {
 
 struct MatchingStudyOptions {
-  double toleranceMm = 0.05;
+  double toleranceMm = matching::kDefaultToleranceMm;
   bool allowScale = false;
   DofLocks locks;  ///< user locks
   std::uint64_t seed = 1;
@@ -81,5 +81,11 @@ struct MatchingStudySettings {
   MatchingStudyOptions options;
 };
 MatchingStudySettings matchingStudySettings(const Project& project, const std::string& source = {});
+
+/// The magnification of the deviation vectors in the before/after views of the page and the report:
+/// the largest deviation before matching drawn at about 15 % of the part's largest extent (of the
+/// nominal points, at least 1 mm), rounded down to 1, 2 or 5 x 10^n and kept in [1, 1e5]; 100 when
+/// there is no deviation.
+double deviationMagnification(const ProbePointSet& set, double maxAbsDeviationBeforeMm);
 
 }  // namespace metrofit::matching

@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/common/axis_ticks.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/common/palette.h"
 #include "widgets/common/tablecopy.h"
@@ -131,31 +132,7 @@ QString xTitle(const diagnose::ResidualCheck::Plot& plot) {
   return plot.xLabel.empty() ? residualVariableName(plot.against) : coreText(plot.xLabel);
 }
 
-struct Range {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -std::numeric_limits<double>::infinity();
-  void add(double v) {
-    if (!std::isfinite(v)) return;
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  bool valid() const { return lo <= hi; }
-  Range padded(double fraction = 0.05) const {
-    if (!valid()) return {0.0, 1.0};
-    const double span = hi - lo;
-    const double pad = span > 0.0 ? fraction * span : std::max(1e-9, 0.5 * std::abs(lo) + 0.5);
-    return {lo - pad, hi + pad};
-  }
-};
-
-double niceStep(double span, int count) {
-  const double raw = std::max(1e-300, span / count);
-  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-  for (const double m : {1.0, 2.0, 5.0, 10.0}) {
-    if (m * decade >= raw * (1.0 - 1e-12)) return m * decade;
-  }
-  return 10.0 * decade;
-}
+using Range = ticks::Range;
 
 /// A read-only table; column `stretch` takes the width left over.
 QTableWidget* makeTable(QWidget* parent, const QString& objectName, const QStringList& header, int stretch) {
@@ -217,7 +194,7 @@ void paintResidualCheck(QPainter& p, const QRectF& rect, const diagnose::Residua
   p.setFont(f);
   const QFontMetricsF fm(f);
   const double line = fm.height();
-  const double yStep = niceStep(yp.hi - yp.lo, 5);
+  const double yStep = ticks::niceStep(yp.hi - yp.lo, 5);
   std::vector<double> yTicks;
   for (double v = std::ceil(yp.lo / yStep) * yStep; v <= yp.hi + 1e-9 * yStep; v += yStep)
     yTicks.push_back(std::abs(v) < 1e-12 * yStep ? 0.0 : v);
@@ -258,7 +235,7 @@ void paintResidualCheck(QPainter& p, const QRectF& rect, const diagnose::Residua
                                Qt::ElideRight, w));
     }
   } else {
-    const double xStep = niceStep(xp.hi - xp.lo, 6);
+    const double xStep = ticks::niceStep(xp.hi - xp.lo, 6);
     for (double v = std::ceil(xp.lo / xStep) * xStep; v <= xp.hi + 1e-9 * xStep; v += xStep) {
       const double x = map(v, yp.lo).x();
       p.drawLine(QPointF(x, area.bottom()), QPointF(x, area.bottom() + 3.0));

@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include "core/common/axis_ticks.h"
 
 namespace metrofit {
 namespace {
@@ -31,36 +32,11 @@ namespace {
 const QColor kBefore = palette::before();
 const QColor kAfter = palette::after();
 
-struct Range {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -std::numeric_limits<double>::infinity();
-  void add(double v) {
-    if (!std::isfinite(v)) return;
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  bool valid() const { return lo <= hi; }
-  /// Padded by 5 % (a unit around a single value).
-  Range padded() const {
-    if (!valid()) return {0.0, 1.0};
-    const double span = hi - lo;
-    const double pad = span > 0.0 ? 0.05 * span : std::max(1e-9, 0.5 * std::abs(lo) + 0.5);
-    return {lo - pad, hi + pad};
-  }
-};
-
-/// The largest 1, 2 or 5 x 10^n that is <= x (x > 0).
-double niceFloor(double x) {
-  const double decade = std::pow(10.0, std::floor(std::log10(x)));
-  for (const double step : {5.0, 2.0, 1.0}) {
-    if (step * decade <= x * (1.0 + 1e-12)) return step * decade;
-  }
-  return decade;
-}
+using Range = ticks::Range;
 
 /// Tick values of a nice step covering r (about `count` ticks).
 std::vector<double> ticks(const Range& r, int count) {
-  const double step = niceFloor(std::max(1e-12, (r.hi - r.lo) / count));
+  const double step = ticks::niceFloor(std::max(1e-12, (r.hi - r.lo) / count));
   std::vector<double> out;
   for (double v = std::ceil(r.lo / step) * step; v <= r.hi + 1e-9 * step; v += step) out.push_back(v);
   return out;
@@ -192,7 +168,7 @@ double vectorMagnification(const diagnose::ResidualPlot& plot, const QRectF& rec
   if (!xr.valid() || longest <= 0.0) return 1.0;
   const double span = std::max({xr.hi - xr.lo, yr.hi - yr.lo, 1e-9});
   (void)rect;
-  return niceFloor(span / 8.0 / longest);
+  return ticks::niceFloor(span / 8.0 / longest);
 }
 
 void paintResidualScatter(QPainter& p, const QRectF& rect, const diagnose::ResidualPlot& plot,

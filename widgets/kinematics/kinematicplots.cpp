@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include "core/common/axis_ticks.h"
 
 namespace metrofit {
 namespace {
@@ -233,23 +234,6 @@ PlotStyle screenPlotStyle() {
   return s;
 }
 
-double niceFloor(double value) {
-  if (!(value > 0.0) || !std::isfinite(value)) return 1.0;
-  const double mag = std::pow(10.0, std::floor(std::log10(value)));
-  const double f = value / mag;
-  const double n = f >= 5.0 ? 5.0 : (f >= 2.0 ? 2.0 : 1.0);
-  return n * mag;
-}
-
-double niceStep(double span, int ticks) {
-  if (!(span > 0.0) || !std::isfinite(span) || ticks < 1) return 1.0;
-  const double raw = span / ticks;
-  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
-  const double f = raw / mag;
-  const double n = f < 1.5 ? 1.0 : (f < 3.0 ? 2.0 : (f < 7.0 ? 5.0 : 10.0));
-  return n * mag;
-}
-
 QString formatTick(double value, double step, int minDecimals) {
   return QString::number(value, 'f', std::max(minDecimals, decimalsFor(step)));
 }
@@ -260,12 +244,12 @@ void PolarPlotData::autoScale() {
   double lo = 0.0, hi = 0.0;
   deviationRange(*this, &lo, &hi);
   const double largest = std::max({std::abs(lo), std::abs(hi), 1e-5});
-  if (!(ringStepMm > 0.0)) ringStepMm = niceStep(largest, 2);
+  if (!(ringStepMm > 0.0)) ringStepMm = ticks::niceStep(largest, 2);
   if (!(magnification > 0.0)) {
     const int jMax = std::max(1, static_cast<int>(std::ceil(hi / ringStepMm - 1e-9)));
     const int jMin = std::min(-1, static_cast<int>(std::floor(lo / ringStepMm + 1e-9)));
     const double extent = std::max(jMax, -jMin) * ringStepMm;
-    magnification = niceFloor(0.4 * radiusMm / extent);
+    magnification = ticks::niceFloor(0.4 * radiusMm / extent);
   }
 }
 
@@ -419,7 +403,7 @@ double pathMagnification(const PathPlotData& d) {
   scan(d.references);
   scan(d.expected);
   if (!(largest > 0.0)) return 1.0;
-  return niceFloor(0.3 * std::max(d.radiusMm, 1e-9) / largest);
+  return ticks::niceFloor(0.3 * std::max(d.radiusMm, 1e-9) / largest);
 }
 
 }  // namespace
@@ -473,7 +457,8 @@ void paintPathPlot(QPainter& p, const QRectF& area, const PathPlotData& d, const
   p.save();
   p.setRenderHint(QPainter::Antialiasing, true);
   drawTitle(p, QRectF(area.left(), area.top(), area.width(), s.fontPx * 1.9), d.title, s);
-  const double xStep = niceStep(L.xMax() - L.xMin(), 6), yStep = niceStep(L.yMax() - L.yMin(), 6);
+  const double xStep = ticks::niceStep(L.xMax() - L.xMin(), 6),
+               yStep = ticks::niceStep(L.yMax() - L.yMin(), 6);
   drawAxes(
       p, L.plotArea(), L.xMin(), L.xMax(), xStep, L.yMin(), L.yMax(), yStep, PlotText::tr("X (mm)"),
       PlotText::tr("Y (mm)"), s, [&](double x) { return L.map(Eigen::Vector2d(x, L.yMin())).x(); },
@@ -600,8 +585,8 @@ void paintControlChart(QPainter& p, const QRectF& area, const XbarRChart& chart,
             mean ? PlotText::tr("X-bar chart (subgroups of %1)").arg(chart.subgroupSize)
                  : PlotText::tr("R chart (subgroups of %1)").arg(chart.subgroupSize),
             s);
-  const double yStep = niceStep(L.yMax() - L.yMin(), 5);
-  const double xStep = std::max(1.0, niceStep(static_cast<double>(v.size()), 8));
+  const double yStep = ticks::niceStep(L.yMax() - L.yMin(), 5);
+  const double xStep = std::max(1.0, ticks::niceStep(static_cast<double>(v.size()), 8));
   const QString u = unit.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(unit);
   drawAxes(
       p, L.plotArea(), 1.0, static_cast<double>(v.size()), xStep, L.yMin(), L.yMax(), yStep,
@@ -705,8 +690,8 @@ void paintHistogram(QPainter& p, const QRectF& area, const HistogramData& d, con
             d.title.isEmpty() ? PlotText::tr("Histogram") : d.title, s);
   int most = 1;
   for (int c : d.bins.counts) most = std::max(most, c);
-  const double xStep = niceStep(L.xMax() - L.xMin(), 5);
-  const double yStep = std::max(1.0, niceStep(most * 1.18, 5));
+  const double xStep = ticks::niceStep(L.xMax() - L.xMin(), 5);
+  const double yStep = std::max(1.0, ticks::niceStep(most * 1.18, 5));
   const QString u = d.unit.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(d.unit);
   drawAxes(
       p, L.plotArea(), L.xMin(), L.xMax(), xStep, 0.0, most * 1.18, yStep, PlotText::tr("value") + u,

@@ -60,11 +60,6 @@ QColor specification();
 QColor bars();
 }  // namespace kinematic_colour
 
-/// 1, 2 or 5 times a power of ten, the largest not above `value` (value > 0).
-double niceFloor(double value);
-/// A 1/2/5 tick step that divides `span` into about `ticks` intervals.
-double niceStep(double span, int ticks);
-
 // ---- polar plot ------------------------------------------------------------------------------
 
 struct PolarPlotData {

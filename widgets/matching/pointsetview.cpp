@@ -59,6 +59,7 @@
 #include <vtkTextProperty.h>
 #include <Eigen/Geometry>
 
+#include "core/common/axis_ticks.h"
 #include "core/matching/probe_points.h"
 #include "widgets/common/palette.h"
 #include "widgets/matching/vtkglwidget.h"
@@ -117,17 +118,6 @@ const std::array<double, 3> kWarmLight = rgbOf(palette::warmLight());
 constexpr double kSceneWidth = 0.84;
 /// Colour range used when every deviation is zero (1 µm).
 constexpr double kMinimumRange = 1e-3;
-
-/// Smallest 1, 2 or 5 x 10^n that is >= x (x > 0).
-double niceCeil(double x) {
-  const double decade = std::pow(10.0, std::floor(std::log10(x)));
-  for (const double step : {1.0, 2.0, 5.0, 10.0}) {
-    if (step * decade >= x * (1.0 - 1e-12)) {
-      return step * decade;
-    }
-  }
-  return 10.0 * decade;
-}
 
 vtkSmartPointer<vtkPolyData> makeVertices(const std::vector<Vec3>& positions,
                                           const std::vector<double>* scalars) {
@@ -513,7 +503,7 @@ struct PointSetView::Impl {
     if (showAfter)
       for (const double v : afterDeviations) maxAbs = std::max(maxAbs, std::abs(v));
     if (tolerance > 0.0) maxAbs = std::max(maxAbs, 2.0 * tolerance);  // the band stays readable
-    usedRange = fixedRange > 0.0 ? fixedRange : (maxAbs > 0.0 ? niceCeil(maxAbs) : kMinimumRange);
+    usedRange = fixedRange > 0.0 ? fixedRange : (maxAbs > 0.0 ? ticks::niceCeil(maxAbs) : kMinimumRange);
     if (!scene) {
       return;
     }

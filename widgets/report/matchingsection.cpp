@@ -20,6 +20,7 @@
 
 #include <Eigen/Geometry>
 
+#include "core/common/axis_ticks.h"
 #include "core/study/matching_study.h"
 #include "widgets/common/palette.h"
 #include "widgets/report/reportpainter.h"
@@ -54,20 +55,6 @@ QString num(double v, int decimals) {
   return QString::number(std::abs(v) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : v, 'f', decimals);
 }
 
-double niceFloor(double x) {
-  const double decade = std::pow(10.0, std::floor(std::log10(x)));
-  for (const double step : {5.0, 2.0, 1.0})
-    if (step * decade <= x * (1.0 + 1e-12)) return step * decade;
-  return decade;
-}
-
-double niceCeil(double x) {
-  const double decade = std::pow(10.0, std::floor(std::log10(x)));
-  for (const double step : {1.0, 2.0, 5.0, 10.0})
-    if (step * decade >= x * (1.0 - 1e-12)) return step * decade;
-  return 10.0 * decade;
-}
-
 QColor mix(const QColor& a, const QColor& b, double t) {
   t = std::clamp(t, 0.0, 1.0);
   return QColor::fromRgbF(static_cast<float>(a.redF() + (b.redF() - a.redF()) * t),
@@ -77,7 +64,7 @@ QColor mix(const QColor& a, const QColor& b, double t) {
 
 /// The GUI's colour map with the tolerance band (widgets/matching/pointsetview.cpp).
 struct BandScale {
-  double range = 1.0, tolerance = 0.05;
+  double range = 1.0, tolerance = matching::kDefaultToleranceMm;
   QColor colour(double d) const {
     static const QColor green = palette::inTolerance();
     static const QColor coldLight = palette::coldLight(), coldEnd = palette::coldEnd();
@@ -259,13 +246,7 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
   for (double d : primary.before.deviations) maxBefore = std::max(maxBefore, std::abs(d));
   double maxAfter = 0.0;
   for (double d : primary.after.deviations) maxAfter = std::max(maxAfter, std::abs(d));
-  Eigen::Vector3d lo = set.points.front().nominal, hi = lo;
-  for (const ProbePoint& p : set.points) {
-    lo = lo.cwiseMin(p.nominal);
-    hi = hi.cwiseMax(p.nominal);
-  }
-  const double extent = std::max((hi - lo).maxCoeff(), 1.0);
-  const double factor = maxBefore > 0.0 ? std::clamp(niceFloor(0.15 * extent / maxBefore), 1.0, 1e5) : 100.0;
+  const double factor = matching::deviationMagnification(set, maxBefore);  // as on the page
   const ViewProjection proj(set.planar);
   const ViewState before = viewState(set, matching::Pose{}, primary.before.deviations, factor);
   const ViewState after = viewState(set, primary.pose, primary.after.deviations, factor);
@@ -281,8 +262,8 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
       }
   bounds = bounds.adjusted(-0.03 * bounds.width(), -0.03 * bounds.height(), 0.03 * bounds.width(),
                            0.03 * bounds.height());
-  BandScale beforeScale{niceCeil(std::max(maxBefore, 2.0 * tol)), tol};
-  BandScale afterScale{niceCeil(std::max(maxAfter, 2.0 * tol)), tol};
+  BandScale beforeScale{ticks::niceCeil(std::max(maxBefore, 2.0 * tol)), tol};
+  BandScale afterScale{ticks::niceCeil(std::max(maxAfter, 2.0 * tol)), tol};
   const QRectF figure = out.reserve(out.mm(kViewHeightMm));
   const double gap = out.mm(4.0);
   const double w = (figure.width() - gap) / 2;

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/common/axis_ticks.h"
 #include "core/study/matching_study.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
@@ -71,17 +72,6 @@ QString mmText(double v) {
   return ReportText::tr("%1 mm").arg(v, 0, 'f', 4);
 }
 
-/// The smallest 1, 2 or 5 times a power of ten that is >= x (x > 0).
-double niceStep(double x) {
-  const double p = std::pow(10.0, std::floor(std::log10(x)));
-  for (double m : {1.0, 2.0, 5.0, 10.0}) {
-    if (m * p >= x * (1.0 - 1e-12)) {
-      return m * p;
-    }
-  }
-  return 10.0 * p;
-}
-
 int decimalsFor(double step) {
   return std::clamp(static_cast<int>(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
 }
@@ -120,7 +110,7 @@ ColourScale scaleFor(const ProbePointSet& set, double maxAbs) {
   ColourScale s;
   s.signedScale = set.hasNormals;
   const double m = maxAbs > 0.0 ? maxAbs : kDefaultProbeToleranceMm;
-  s.step = niceStep(m / (s.signedScale ? 2.0 : 4.0));
+  s.step = ticks::niceCeil(m / (s.signedScale ? 2.0 : 4.0));
   s.limit = std::ceil(m / s.step - 1e-9) * s.step;
   return s;
 }
@@ -176,7 +166,7 @@ void drawProjection(ReportPainter& out, const QRectF& panel, const ProbePointSet
   p.setFont(small);
   const double tickLength = out.mm(1.0);
   for (int k = 0; k < 2; ++k) {
-    const double step = niceStep(range[k] / 8.0);
+    const double step = ticks::niceStep(range[k], 8);
     const double origin = k == 0 ? x0 : y0;
     for (double t = std::ceil(origin / step) * step; t <= origin + range[k] + 1e-9 * step; t += step) {
       const QPointF at = k == 0 ? map(t, y0) : map(x0, t);

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/matching/matching.h"
 #include "core/matching/probe_points.h"
 #include "core/project/project.h"
 #include "core/thermal/thermal_log.h"
@@ -77,6 +78,9 @@ struct SectionFinding {
   QString recommendation;
 };
 
+/// Tolerance (mm) of the probe-point section when the project's matching study sets none.
+inline constexpr double kDefaultProbeToleranceMm = matching::kDefaultToleranceMm;
+
 /// Everything a section may draw from.
 struct ReportContext {
   const Project* project = nullptr;
@@ -85,7 +89,7 @@ struct ReportContext {
   std::vector<ReportDataset> datasets;
   /// Symmetric tolerance (mm) the probe-point section counts deviations against: the matching
   /// study's "tolerance_mm" when the project sets one, else kDefaultProbeToleranceMm.
-  double probeToleranceMm = 0.05;
+  double probeToleranceMm = kDefaultProbeToleranceMm;
   /// Results kept between the two layout passes (see ReportMemo).
   mutable ReportMemo memo;
   /// What the sections concluded in this layout pass, in report order (concludeSection adds).
@@ -94,9 +98,6 @@ struct ReportContext {
   /// The datasets of one kind (dataset_kind::...), in project order.
   std::vector<const ReportDataset*> ofKind(const char* kind) const;
 };
-
-/// Tolerance (mm) of the probe-point section when the project's matching study sets none.
-inline constexpr double kDefaultProbeToleranceMm = 0.05;
 
 /// A text made by core (evidence, notes, the SPC decision) in the reader's symbols: ± for "+-", → for
 /// "->", µm for "um", ° for "deg" after a number, and small numbers to three significant digits

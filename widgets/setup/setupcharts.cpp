@@ -13,6 +13,7 @@
 #include <limits>
 #include <map>
 
+#include "core/common/axis_ticks.h"
 #include "core/study/setup_validation.h"
 #include "widgets/common/palette.h"
 
@@ -24,16 +25,7 @@ struct SetupChartsText {
   Q_DECLARE_TR_FUNCTIONS(metrofit::SetupCharts)
 };
 
-struct Range {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -std::numeric_limits<double>::infinity();
-  void add(double v) {
-    if (!std::isfinite(v)) return;
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  bool valid() const { return lo <= hi; }
-};
+using Range = ticks::Range;
 
 /// A range with round ends and a tick step of 1, 2 or 5 x 10^k; 5-8 ticks.
 void setNiceRange(QValueAxis* axis, Range r) {

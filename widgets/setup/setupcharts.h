@@ -41,8 +41,8 @@ QColor setupRunColor(const QString& method, int indexOfMethod);
 
 /// A new chart (owned by the caller). `budget` sets the x range when there is no run yet.
 QChart* makeSetupConvergenceChart(const std::vector<SetupConvergenceRun>& runs,
-                                  const std::optional<setup::SetupScore>& exact, long budget = 5000,
-                                  bool showF2 = true, bool showF = true);
+                                  const std::optional<setup::SetupScore>& exact,
+                                  long budget = setup::kPaperBudget, bool showF2 = true, bool showF = true);
 
 /// A new chart of a validation result (owned by the caller).
 QChart* makeSetupValidationChart(const setup::ValidationResult& result);

@@ -1,4 +1,5 @@
 #include "widgets/setup/setupconvergenceview.h"
+#include "core/setup/methods.h"
 #include "widgets/common/chartexport.h"
 
 #include <QChart>
@@ -14,7 +15,7 @@ namespace metrofit {
 struct SetupConvergenceView::Impl {
   std::vector<SetupConvergenceRun> runs;
   std::optional<setup::SetupScore> exact;
-  long budget = 5000;
+  long budget = setup::kPaperBudget;
   QChartView* chartView = nullptr;
   QCheckBox* showF2 = nullptr;
   QCheckBox* showF = nullptr;

@@ -7,6 +7,7 @@
 #include <QPainter>
 #include <algorithm>
 #include <cmath>
+#include "core/common/axis_ticks.h"
 
 namespace metrofit {
 
@@ -22,13 +23,6 @@ const QColor kBefore = palette::before();
 const QColor kAfter = palette::after();
 const QColor kOut = palette::outOfTolerance();
 
-double niceStep(double span) {
-  const double raw = span / 6.0;
-  const double p = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0, 10.0})
-    if (raw <= m * p) return m * p;
-  return 10.0 * p;
-}
 }  // namespace
 
 double setupMarginsHeight(std::size_t rows, double rowHeight) {
@@ -56,7 +50,7 @@ void paintSetupMargins(QPainter& painter, const QRectF& rect, const std::vector<
     lo -= 0.1;
     hi += 0.1;
   }
-  const double step = niceStep(hi - lo);
+  const double step = ticks::niceStep(hi - lo, 6);
   lo = std::floor(lo / step + 1e-9) * step;
   hi = std::ceil(hi / step - 1e-9) * step;
   const QString valueSample = QStringLiteral("−0.000 → −0.000");

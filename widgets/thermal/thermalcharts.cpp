@@ -16,6 +16,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/common/axis_ticks.h"
 #include "core/thermal/thermal_log.h"
 #include "widgets/common/palette.h"
 
@@ -81,17 +82,6 @@ QString groupWord(ChannelKind kind) {
   return ThermalChartsText::tr("other channels");
 }
 
-/// The smallest 1, 2 or 5 times a power of ten that is >= x (x > 0).
-double niceStepAtLeast(double x) {
-  const double p = std::pow(10.0, std::floor(std::log10(x)));
-  for (double m : {1.0, 2.0, 5.0, 10.0}) {
-    if (m * p >= x * (1.0 - 1e-12)) {
-      return m * p;
-    }
-  }
-  return 10.0 * p;
-}
-
 /// printf format with as many decimals as a tick step needs.
 QString labelFormat(double step) {
   const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
@@ -127,15 +117,15 @@ int setNiceRange(QValueAxis* axis, Range r, int ticks) {
   double step = 0.0;
   double lo = 0.0;
   if (ticks <= 0) {
-    step = niceStepAtLeast((r.hi - r.lo) / kTargetTicks);
+    step = ticks::niceCeil((r.hi - r.lo) / kTargetTicks);
     lo = std::floor(r.lo / step) * step;
     const double hi = std::ceil(r.hi / step - 1e-9) * step;
     ticks = static_cast<int>(std::lround((hi - lo) / step)) + 1;
   } else {
-    step = niceStepAtLeast((r.hi - r.lo) / (ticks - 1));
+    step = ticks::niceCeil((r.hi - r.lo) / (ticks - 1));
     lo = std::floor(r.lo / step) * step;
     while (lo + step * (ticks - 1) < r.hi - 1e-12 * std::abs(r.hi)) {
-      step = niceStepAtLeast(step * 1.0001);
+      step = ticks::niceCeil(step * 1.0001);
       lo = std::floor(r.lo / step) * step;
     }
   }
@@ -322,7 +312,7 @@ QChart* makeThermalTrendChart(const ThermalLog& log, const QStringList& channels
   }
   {
     const Range r = padded(timeRange);
-    const double step = niceStepAtLeast((r.hi - r.lo) / 8.0);
+    const double step = ticks::niceCeil((r.hi - r.lo) / 8.0);
     timeAxis->setRange(r.lo, r.hi);
     timeAxis->setTickType(QValueAxis::TicksDynamic);
     timeAxis->setTickAnchor(0.0);

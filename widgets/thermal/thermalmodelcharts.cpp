@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/common/axis_ticks.h"
 #include "widgets/common/palette.h"
 #include "widgets/thermal/thermalcharts.h"
 
@@ -26,16 +27,7 @@ struct ModelChartsText {
   Q_DECLARE_TR_FUNCTIONS(metrofit::ThermalModelCharts)
 };
 
-struct Range {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -std::numeric_limits<double>::infinity();
-  void add(double v) {
-    if (!std::isfinite(v)) return;
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  bool valid() const { return lo <= hi; }
-};
+using Range = ticks::Range;
 
 QChart* newChart(const QString& title) {
   auto* chart = new QChart;

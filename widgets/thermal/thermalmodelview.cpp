@@ -451,7 +451,7 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   d->fraction->setRange(0.1, 0.9);
   d->fraction->setSingleStep(0.05);
   d->fraction->setDecimals(2);
-  d->fraction->setValue(0.5);
+  d->fraction->setValue(ThermalModelSettings{}.trainFraction);
   d->fraction->setToolTip(tr("The first fraction of the rows fits the models; the rest is held out"));
   d->seed = new QSpinBox(this);
   d->seed->setObjectName(QStringLiteral("thermalModelSeed"));

@@ -286,3 +286,25 @@ TEST(ProjectMachine, InvalidMachinesAreRejectedOnLoad) {
 
 }  // namespace
 }  // namespace metrofit::matching
+
+namespace metrofit::matching {
+namespace {
+
+TEST(DeviationMagnification, LargestDeviationAtAboutFifteenPercentOfThePart) {
+  ProbePointSet set;
+  for (const double x : {0.0, 120.0}) {
+    ProbePoint p;
+    p.nominal = Eigen::Vector3d(x, 0.5 * x, 0.0);
+    set.points.push_back(p);
+  }
+  // Extent 120 mm, largest deviation 0.04 mm: 0.15 * 120 / 0.04 = 450 -> 200 (1-2-5 rounded down).
+  EXPECT_DOUBLE_EQ(deviationMagnification(set, 0.04), 200.0);
+  // A tiny part counts as 1 mm; the factor is kept in [1, 1e5].
+  EXPECT_DOUBLE_EQ(deviationMagnification(set, 1e-9), 1e5);
+  EXPECT_DOUBLE_EQ(deviationMagnification(set, 500.0), 1.0);
+  EXPECT_DOUBLE_EQ(deviationMagnification(set, 0.0), 100.0);
+  EXPECT_DOUBLE_EQ(deviationMagnification(ProbePointSet{}, 0.04), 100.0);
+}
+
+}  // namespace
+}  // namespace metrofit::matching
