@@ -264,22 +264,29 @@ nlohmann::json identifyResultToJson(const IdentifyResult& r) {
   return j;
 }
 
-ActuatorErrors2 actuatorErrorsFromJson(const nlohmann::json& json, const std::string& source) {
-  const JsonReader r(json, source);
-  r.requireObject();
-  const JsonReader o = r.array("origin_mm");
-  if (o.size() != 2) {
-    o.fail("expected 2 numbers [x, y], found " + std::to_string(o.size()) + " element" +
-           (o.size() == 1 ? "" : "s"));
+void originFromJson(const JsonReader& object, Eigen::Ref<Eigen::VectorXd> origin) {
+  const auto count = static_cast<std::size_t>(origin.size());
+  const JsonReader o = object.array("origin_mm");
+  if (o.size() != count) {
+    std::string axes = "[";
+    for (std::size_t i = 0; i < count; ++i) axes += std::string(i ? ", " : "") + "xyz"[i % 3];
+    o.fail("expected " + std::to_string(count) + " numbers " + axes + "], found " + std::to_string(o.size()) +
+           " element" + (o.size() == 1 ? "" : "s"));
   }
-  ActuatorErrors2 e;
-  for (std::size_t i = 0; i < 2; ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
     const JsonReader el = o.at(i);
     if (!el.json().is_number()) el.fail(std::string("expected a number, found ") + el.json().type_name());
     const double v = el.json().get<double>();
     if (!std::isfinite(v)) el.fail("not a finite number");
-    e.originMm(static_cast<Eigen::Index>(i)) = v;
+    origin(static_cast<Eigen::Index>(i)) = v;
   }
+}
+
+ActuatorErrors2 actuatorErrorsFromJson(const nlohmann::json& json, const std::string& source) {
+  const JsonReader r(json, source);
+  r.requireObject();
+  ActuatorErrors2 e;
+  originFromJson(r, e.originMm);
   e.xAxisAngleDeg = r.number("x_axis_angle_deg");
   e.yAxisAngleDeg = r.number("y_axis_angle_deg");
   for (const char* key : {"x_axis_angle_deg", "y_axis_angle_deg"}) {

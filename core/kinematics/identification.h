@@ -38,6 +38,8 @@
 
 namespace metrofit {
 
+class JsonReader;
+
 struct IdentifyOptions {
   long maxIterations = 100;
   /// Converged when a step changes the modelled positions by less than this (RMS, mm).
@@ -84,6 +86,9 @@ nlohmann::json identifyResultToJson(const IdentifyResult& result);
 /// Reads the errors back from identify's JSON (origin_mm [x, y], x_axis_angle_deg,
 /// y_axis_angle_deg; extra keys ignored). ValidationError naming `source` and the field.
 ActuatorErrors2 actuatorErrorsFromJson(const nlohmann::json& json, const std::string& source);
+/// The "origin_mm" array of identify's and identify3's JSON: origin.size() finite numbers ([x, y] or
+/// [x, y, z]) into `origin`. ValidationError from the reader naming the field (origin_mm, origin_mm[i]).
+void originFromJson(const JsonReader& object, Eigen::Ref<Eigen::VectorXd> origin);
 ActuatorErrors2 readActuatorErrors(const std::string& path);
 
 }  // namespace metrofit

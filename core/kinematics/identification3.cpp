@@ -417,19 +417,8 @@ nlohmann::json identify3ResultToJson(const Identify3Result& r) {
 ActuatorErrors3 actuatorErrors3FromJson(const nlohmann::json& json, const std::string& source) {
   const JsonReader r(json, source);
   r.requireObject();
-  const JsonReader o = r.array("origin_mm");
-  if (o.size() != 3) {
-    o.fail("expected 3 numbers [x, y, z], found " + std::to_string(o.size()) + " element" +
-           (o.size() == 1 ? "" : "s"));
-  }
   ActuatorErrors3 e;
-  for (std::size_t i = 0; i < 3; ++i) {
-    const JsonReader el = o.at(i);
-    if (!el.json().is_number()) el.fail(std::string("expected a number, found ") + el.json().type_name());
-    const double v = el.json().get<double>();
-    if (!std::isfinite(v)) el.fail("not a finite number");
-    e.originMm(static_cast<Eigen::Index>(i)) = v;
-  }
+  originFromJson(r, e.originMm);
   const JsonReader planes = r.object("planes");
   for (const TestPlane p : kTestPlanes) {
     const JsonReader q = planes.object(planeName(p));
