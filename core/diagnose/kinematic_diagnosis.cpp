@@ -18,6 +18,7 @@
 #include "core/kinematics/effects.h"
 #include "core/kinematics/identification.h"
 #include "core/kinematics/path_variables.h"
+#include "core/optim/least_squares.h"
 
 namespace metrofit::diagnose {
 namespace {
@@ -193,49 +194,22 @@ struct Solution {
   int p = 4;
 };
 
-/// Levenberg-Marquardt (Marquardt scaling, Nielsen's damping update) from q0.
+/// Levenberg-Marquardt (core/optim/least_squares.h: Marquardt scaling, Nielsen's damping update) from q0.
 Solution solve(const Data& d, const State& s, const Params& q0) {
   Solution sol;
   const Layout l = layoutOf(s);
   sol.p = l.p;
+  optim::LeastSquaresOptions lo;
+  lo.maxIterations = 200;
+  lo.costTolerance = 1e-13;
+  const optim::Residual f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+    evaluate(d, s, unpack(s, x, q0), r, J);
+  };
   Eigen::VectorXd th = pack(s, q0);
-  Eigen::VectorXd r, rt;
-  Eigen::MatrixXd J, Jt;
-  evaluate(d, s, q0, r, &J);
-  double cost = r.squaredNorm();
-  Eigen::VectorXd D = J.colwise().norm().transpose();
-  double lambda = 1e-3, nu = 2.0;
-  const Eigen::Index m = r.size();
-  for (int it = 0; it < 200; ++it) {
-    D = D.cwiseMax(J.colwise().norm().transpose());
-    Eigen::MatrixXd A(m + l.p, l.p);
-    A.topRows(m) = J;
-    A.bottomRows(l.p) = (std::sqrt(lambda) * D).asDiagonal();
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m + l.p);
-    rhs.head(m) = -r;
-    const Eigen::VectorXd delta = A.householderQr().solve(rhs);
-    const Eigen::VectorXd jd = J * delta;
-    const double predicted = cost - (r + jd).squaredNorm();
-    const Eigen::VectorXd next = th + delta;
-    const Params qn = unpack(s, next, q0);
-    evaluate(d, s, qn, rt, &Jt);
-    const double nc = rt.squaredNorm();
-    if (std::isfinite(nc) && nc < cost) {
-      const double dec = cost - nc;
-      const double rho = predicted > 0.0 ? dec / predicted : 0.0;
-      th = next;
-      std::swap(r, rt);
-      std::swap(J, Jt);
-      cost = nc;
-      lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
-      nu = 2.0;
-      if (dec <= 1e-13 * (cost + dec) || cost == 0.0) break;
-    } else {
-      lambda *= nu;
-      nu *= 2.0;
-      if (lambda > 1e20) break;
-    }
-  }
+  const optim::LeastSquaresSummary sum = optim::solveLeastSquares(f, th, lo);
+  const Eigen::VectorXd& r = sum.residuals;
+  const Eigen::MatrixXd& J = sum.jacobian;
+  const double cost = r.squaredNorm();
   sol.q = unpack(s, th, q0);
   sol.r = r;
   sol.sse = cost;
@@ -243,6 +217,7 @@ Solution solve(const Data& d, const State& s, const Params& q0) {
   sol.rmse = std::sqrt(cost / n);
   for (std::size_t k = 0; k < d.n; ++k)
     sol.maxAbs = std::max(sol.maxAbs, r.segment<2>(static_cast<Eigen::Index>(2 * k)).norm());
+  if (J.rows() != r.size() || !std::isfinite(cost)) return sol;
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J);
   if (qr.rank() < l.p || 2.0 * n <= l.p) return sol;
   const Eigen::MatrixXd R = qr.matrixR().topLeftCorner(l.p, l.p).triangularView<Eigen::Upper>();

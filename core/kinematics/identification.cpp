@@ -11,6 +11,7 @@
 
 #include "core/common/error.h"
 #include "core/io/json_util.h"
+#include "core/optim/least_squares.h"
 
 namespace metrofit {
 namespace {
@@ -59,16 +60,17 @@ struct Residuals {
 };
 
 /// Residuals P(Pr; theta) - Pmeas and their Jacobian; theta = (o_x, o_y, a rad, b rad).
-void evaluate(const MeasuredPath& p, const Eigen::Vector4d& th, Residuals& out) {
+void evaluate(const MeasuredPath& p, const Eigen::Vector4d& th, Residuals& out, bool withJ) {
   const std::size_t n = p.size();
   out.r.resize(static_cast<Eigen::Index>(2 * n));
-  out.J.resize(static_cast<Eigen::Index>(2 * n), 4);
+  if (withJ) out.J.resize(static_cast<Eigen::Index>(2 * n), 4);
   const double ca = std::cos(th(2)), sa = std::sin(th(2)), cb = std::cos(th(3)), sb = std::sin(th(3));
   for (std::size_t k = 0; k < n; ++k) {
     const double x = p.command[k].x(), y = p.command[k].y();
     const auto i = static_cast<Eigen::Index>(2 * k);
     out.r(i) = th(0) + ca * x - sb * y - p.measured[k].x();
     out.r(i + 1) = th(1) + sa * x + cb * y - p.measured[k].y();
+    if (!withJ) continue;
     out.J(i, 0) = 1.0;
     out.J(i, 1) = 0.0;
     out.J(i, 2) = -sa * x;
@@ -168,68 +170,37 @@ IdentifyResult identifyActuatorErrors(const MeasuredPath& p, const IdentifyOptio
   res.points = p.size();
   res.initialEstimate = toErrors(th);
   RunInfo& run = res.run;
-  run.termination = Termination::MaxIterations;
-  run.message = "iteration limit reached";
 
-  Residuals cur, trial;
-  evaluate(p, th, cur);
-  long evaluations = 1;
-  double cost = 0.5 * cur.r.squaredNorm();
-  Eigen::Vector4d D = cur.J.colwise().norm().transpose();
-  double lambda = o.initialDamping;
-  double nu = 2.0;
-  const Eigen::Index m = cur.r.size();
-
-  for (long it = 0; it < o.maxIterations; ++it) {
-    D = D.cwiseMax(cur.J.colwise().norm().transpose());
-    Eigen::MatrixXd A(m + 4, 4);
-    A.topRows(m) = cur.J;
-    A.bottomRows(4) = (std::sqrt(lambda) * D).asDiagonal();
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m + 4);
-    rhs.head(m) = -cur.r;
-    const Eigen::Vector4d delta = A.householderQr().solve(rhs);
-    const Eigen::VectorXd jd = cur.J * delta;
-    const double predicted = cost - 0.5 * (cur.r + jd).squaredNorm();
-    const double stepRms = jd.norm() / std::sqrt(n);
-
-    const Eigen::Vector4d next = th + delta;
-    evaluate(p, next, trial);
-    ++evaluations;
-    const double nextCost = 0.5 * trial.r.squaredNorm();
-    bool stop = false;
-    if (std::isfinite(nextCost) && nextCost < cost) {
-      const double decrease = cost - nextCost;
-      const double rho = predicted > 0.0 ? decrease / predicted : 0.0;
-      th = next;
-      std::swap(cur, trial);
-      cost = nextCost;
-      lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
-      nu = 2.0;
-      if (stepRms <= o.stepToleranceMm || decrease <= o.costTolerance * (cost + decrease) || cost == 0.0) {
-        run.termination = Termination::Converged;
-        run.message = stepRms <= o.stepToleranceMm ? "step below tolerance" : "cost decrease below tolerance";
-        stop = true;
-      }
-    } else {
-      lambda *= nu;
-      nu *= 2.0;
-      if (stepRms <= o.stepToleranceMm || lambda > 1e20) {
-        run.termination = Termination::Converged;
-        run.message = "no further decrease (at the rounding level)";
-        stop = true;
-      }
-    }
-
-    IterationSummary s;
-    s.iteration = it;
-    s.evaluations = evaluations;
-    s.best = std::sqrt(2.0 * cost / n);
-    s.components = {{"rmse_mm", s.best}, {"damping", lambda}};
-    const ActuatorErrors2 e = toErrors(th);
+  // Levenberg-Marquardt with Marquardt's scaling and Nielsen's damping (core/optim/least_squares.h).
+  // The step test is on the RMS change of the modelled positions: |J delta| / sqrt(N) <= stepToleranceMm.
+  optim::LeastSquaresOptions lo;
+  lo.maxIterations = o.maxIterations;
+  lo.initialDamping = o.initialDamping;
+  lo.costTolerance = o.costTolerance;
+  lo.modelStepTolerance = o.stepToleranceMm * std::sqrt(n);
+  const optim::Residual f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+    Residuals out;
+    evaluate(p, x, out, J != nullptr);
+    r = std::move(out.r);
+    if (J) *J = std::move(out.J);
+  };
+  FunctionObserver report([&](const IterationSummary& g) {
+    IterationSummary s = g;
+    s.best = std::sqrt(2.0 * g.best / n);  // cost 1/2 S -> rmse
+    s.components = {{"rmse_mm", s.best}, {"damping", g.components.at(1).value}};
+    const ActuatorErrors2 e = toErrors(Eigen::Map<const Eigen::Vector4d>(g.bestX.data()));
     s.bestX = {e.originMm.x(), e.originMm.y(), e.xAxisAngleDeg, e.yAxisAngleDeg};
-    if (notify(observer, run, s, o.keepTrace)) break;
-    if (stop) break;
-  }
+    s.progress = -1.0;
+    return notify(observer, run, s, o.keepTrace) ? ObserverDecision::Stop : ObserverDecision::Continue;
+  });
+  Eigen::VectorXd x = th;
+  const optim::LeastSquaresSummary sum = optim::solveLeastSquares(f, x, lo, &report);
+  th = x;
+  run.termination = optim::toTermination(sum.termination);
+  run.message = sum.message;
+  run.iterations = sum.iterations;
+  run.evaluations = sum.residualEvaluations + sum.jacobianEvaluations;
+  Residuals cur{sum.residuals, sum.jacobian};
 
   res.errors = toErrors(th);
   for (const double ang : {res.errors.xAxisAngleDeg, res.errors.yAxisAngleDeg}) {
@@ -252,7 +223,7 @@ IdentifyResult identifyActuatorErrors(const MeasuredPath& p, const IdentifyOptio
 
   // Cov = s^2 (J^T J)^-1 through the column-pivoted QR of J: J P = Q R => (J^T J)^-1 = P R^-1 R^-T P^T.
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(cur.J);
-  if (qr.rank() < 4) {
+  if (cur.J.rows() != cur.r.size() || qr.rank() < 4) {
     run.termination = Termination::Failed;
     run.message = "the Jacobian is rank deficient: the parameters are not all observable";
   } else {
@@ -293,22 +264,29 @@ nlohmann::json identifyResultToJson(const IdentifyResult& r) {
   return j;
 }
 
-ActuatorErrors2 actuatorErrorsFromJson(const nlohmann::json& json, const std::string& source) {
-  const JsonReader r(json, source);
-  r.requireObject();
-  const JsonReader o = r.array("origin_mm");
-  if (o.size() != 2) {
-    o.fail("expected 2 numbers [x, y], found " + std::to_string(o.size()) + " element" +
-           (o.size() == 1 ? "" : "s"));
+void originFromJson(const JsonReader& object, Eigen::Ref<Eigen::VectorXd> origin) {
+  const auto count = static_cast<std::size_t>(origin.size());
+  const JsonReader o = object.array("origin_mm");
+  if (o.size() != count) {
+    std::string axes = "[";
+    for (std::size_t i = 0; i < count; ++i) axes += std::string(i ? ", " : "") + "xyz"[i % 3];
+    o.fail("expected " + std::to_string(count) + " numbers " + axes + "], found " + std::to_string(o.size()) +
+           " element" + (o.size() == 1 ? "" : "s"));
   }
-  ActuatorErrors2 e;
-  for (std::size_t i = 0; i < 2; ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
     const JsonReader el = o.at(i);
     if (!el.json().is_number()) el.fail(std::string("expected a number, found ") + el.json().type_name());
     const double v = el.json().get<double>();
     if (!std::isfinite(v)) el.fail("not a finite number");
-    e.originMm(static_cast<Eigen::Index>(i)) = v;
+    origin(static_cast<Eigen::Index>(i)) = v;
   }
+}
+
+ActuatorErrors2 actuatorErrorsFromJson(const nlohmann::json& json, const std::string& source) {
+  const JsonReader r(json, source);
+  r.requireObject();
+  ActuatorErrors2 e;
+  originFromJson(r, e.originMm);
   e.xAxisAngleDeg = r.number("x_axis_angle_deg");
   e.yAxisAngleDeg = r.number("y_axis_angle_deg");
   for (const char* key : {"x_axis_angle_deg", "y_axis_angle_deg"}) {

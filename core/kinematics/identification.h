@@ -7,7 +7,8 @@
 // Parameters theta = (o_x, o_y, a, b) minimise the sum of squared residual distances
 //   S(theta) = sum_k |r_k|^2,  r_k = P(Pr_k; theta) - Pmeas_k,
 // by Levenberg-Marquardt (Marquardt's diagonal scaling, each step a least-squares solve of
-// [J; sqrt(lambda) D] delta = [-r; 0] with Eigen's Householder QR, Nielsen's damping update). The
+// [J; sqrt(lambda) D] delta = [-r; 0] with Eigen's Householder QR, Nielsen's damping update; the one
+// solver of core/optim/least_squares.h). The
 // Jacobian is analytic: dr/do = I, dr/da = x_k (-sin a, cos a), dr/db = y_k (-cos b, -sin b).
 // The start is the linear least-squares affine fit Pmeas = o + M Pr with a = atan2(M21, M11),
 // b = atan2(-M12, M22), so the large errors of the paper's Fig. 11 (10 deg, 15 deg) converge as
@@ -36,6 +37,8 @@
 #include "core/kinematics/measured_path.h"
 
 namespace metrofit {
+
+class JsonReader;
 
 struct IdentifyOptions {
   long maxIterations = 100;
@@ -70,7 +73,8 @@ struct IdentifyResult {
 /// Throws InputError when the path cannot identify the four parameters (see the header comment).
 void checkIdentifiable(const MeasuredPath& path);
 
-/// Identifies o, a, b from the path (see the header comment). The observer sees every LM step:
+/// Identifies o, a, b from the path (see the header comment). The observer sees every LM iteration
+/// (core/optim/least_squares.h: one accepted step, or the last trials):
 /// best = rmse (mm), components rmse_mm and damping, bestX = (o_x, o_y, a_deg, b_deg).
 IdentifyResult identifyActuatorErrors(const MeasuredPath& path, const IdentifyOptions& options = {},
                                       Observer* observer = nullptr);
@@ -82,6 +86,9 @@ nlohmann::json identifyResultToJson(const IdentifyResult& result);
 /// Reads the errors back from identify's JSON (origin_mm [x, y], x_axis_angle_deg,
 /// y_axis_angle_deg; extra keys ignored). ValidationError naming `source` and the field.
 ActuatorErrors2 actuatorErrorsFromJson(const nlohmann::json& json, const std::string& source);
+/// The "origin_mm" array of identify's and identify3's JSON: origin.size() finite numbers ([x, y] or
+/// [x, y, z]) into `origin`. ValidationError from the reader naming the field (origin_mm, origin_mm[i]).
+void originFromJson(const JsonReader& object, Eigen::Ref<Eigen::VectorXd> origin);
 ActuatorErrors2 readActuatorErrors(const std::string& path);
 
 }  // namespace metrofit

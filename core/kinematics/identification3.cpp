@@ -10,6 +10,7 @@
 
 #include "core/common/error.h"
 #include "core/io/json_util.h"
+#include "core/optim/least_squares.h"
 
 namespace metrofit {
 namespace {
@@ -262,66 +263,39 @@ Identify3Result identifyActuatorErrors3(const std::array<MeasuredPath, 3>& tests
   }
   start.originMm = sum.cwiseQuotient(count);
 
-  Theta th = toTheta(start);
-  Eigen::VectorXd r = residuals(tests, th);
-  const Eigen::Index m = r.size();
-  Eigen::MatrixXd J = jacobian(tests, th, m);
-  double cost = r.squaredNorm();
-  double lambda = o.initialDamping;
-  double nu = 2.0;
-  long evaluations = 1 + 2 * kParams;
+  // Levenberg-Marquardt (core/optim/least_squares.h: Marquardt's scaling, Nielsen's damping, LDLT of
+  // the normal equations) with the central-difference Jacobian of jacobian() above.
   RunInfo& run = res.run;
-  run.termination = Termination::MaxIterations;
-  run.message = "iteration limit reached";
   const double n = static_cast<double>(res.points);
-
-  for (long it = 0; it < o.maxIterations; ++it) {
-    const Eigen::Matrix<double, kParams, kParams> JtJ = J.transpose() * J;
-    const Theta g = J.transpose() * r;
-    Eigen::Matrix<double, kParams, kParams> A = JtJ;
-    A.diagonal() += lambda * JtJ.diagonal().cwiseMax(1e-12);
-    const Theta delta = -A.ldlt().solve(g);
-    const Theta next = th + delta;
-    const Eigen::VectorXd rn = residuals(tests, next);
-    ++evaluations;
-    const double nextCost = rn.squaredNorm();
-    bool stop = false;
-    if (std::isfinite(nextCost) && nextCost <= cost) {
-      const double predicted = cost - (r + J * delta).squaredNorm();
-      const double rho = predicted > 0.0 ? (cost - nextCost) / predicted : 0.0;
-      const double decrease = cost - nextCost;
-      th = next;
-      r = rn;
-      cost = nextCost;
-      J = jacobian(tests, th, m);
-      evaluations += 2 * kParams;
-      lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
-      nu = 2.0;
-      if (decrease <= o.costTolerance * (cost + decrease) || cost == 0.0) {
-        run.termination = Termination::Converged;
-        run.message = "cost decrease below tolerance";
-        stop = true;
-      }
-    } else {
-      lambda *= nu;
-      nu *= 2.0;
-      if (lambda > 1e20) {
-        run.termination = Termination::Converged;
-        run.message = "no further decrease (at the rounding level)";
-        stop = true;
-      }
-    }
-    IterationSummary s;
-    s.iteration = it;
-    s.evaluations = evaluations;
-    s.best = std::sqrt(cost / n);
-    s.components = {{"rmse_mm", s.best}, {"damping", lambda}};
-    const ActuatorErrors3 e = fromTheta(th);
+  optim::LeastSquaresOptions lo;
+  lo.maxIterations = o.maxIterations;
+  lo.initialDamping = o.initialDamping;
+  lo.costTolerance = o.costTolerance;
+  lo.linearSolver = optim::LeastSquaresOptions::LinearSolver::NormalEquations;
+  const optim::Residual f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+    const Theta th = x;
+    r = residuals(tests, th);
+    if (J) *J = jacobian(tests, th, r.size());
+  };
+  FunctionObserver report([&](const IterationSummary& g) {
+    IterationSummary s = g;
+    s.best = std::sqrt(2.0 * g.best / n);  // cost 1/2 SSE -> rmse
+    s.components = {{"rmse_mm", s.best}, {"damping", g.components.at(1).value}};
+    const ActuatorErrors3 e = fromTheta(Eigen::Map<const Theta>(g.bestX.data()));
     s.bestX = {e.originMm.x(), e.originMm.y(), e.originMm.z(), e.uAngleDeg[0], e.vAngleDeg[0],
                e.uAngleDeg[1], e.vAngleDeg[1], e.uAngleDeg[2], e.vAngleDeg[2]};
-    if (notify(observer, run, s, o.keepTrace)) break;
-    if (stop) break;
-  }
+    s.progress = -1.0;
+    return notify(observer, run, s, o.keepTrace) ? ObserverDecision::Stop : ObserverDecision::Continue;
+  });
+  Eigen::VectorXd x = toTheta(start);
+  const optim::LeastSquaresSummary fit = optim::solveLeastSquares(f, x, lo, &report);
+  const Theta th = x;
+  run.termination = optim::toTermination(fit.termination);
+  run.message = fit.message;
+  run.iterations = fit.iterations;
+  run.evaluations = fit.residualEvaluations + (1 + 2 * kParams) * fit.jacobianEvaluations;
+  const Eigen::VectorXd& r = fit.residuals;
+  const double cost = r.squaredNorm();  // SSE
 
   res.errors = fromTheta(th);
   std::string why;
@@ -344,7 +318,10 @@ Identify3Result identifyActuatorErrors3(const std::array<MeasuredPath, 3>& tests
     pf.rmseMm = std::sqrt(ss / static_cast<double>(pf.points));
   }
 
-  const Eigen::Matrix<double, kParams, kParams> JtJ = J.transpose() * J;
+  const Eigen::MatrixXd& J = fit.jacobian;
+  const Eigen::Matrix<double, kParams, kParams> JtJ =
+      J.rows() == r.size() ? Eigen::Matrix<double, kParams, kParams>(J.transpose() * J)
+                           : Eigen::Matrix<double, kParams, kParams>::Zero();
   const Eigen::FullPivLU<Eigen::Matrix<double, kParams, kParams>> lu(JtJ);
   if (lu.rank() < kParams) {
     run.termination = Termination::Failed;
@@ -440,19 +417,8 @@ nlohmann::json identify3ResultToJson(const Identify3Result& r) {
 ActuatorErrors3 actuatorErrors3FromJson(const nlohmann::json& json, const std::string& source) {
   const JsonReader r(json, source);
   r.requireObject();
-  const JsonReader o = r.array("origin_mm");
-  if (o.size() != 3) {
-    o.fail("expected 3 numbers [x, y, z], found " + std::to_string(o.size()) + " element" +
-           (o.size() == 1 ? "" : "s"));
-  }
   ActuatorErrors3 e;
-  for (std::size_t i = 0; i < 3; ++i) {
-    const JsonReader el = o.at(i);
-    if (!el.json().is_number()) el.fail(std::string("expected a number, found ") + el.json().type_name());
-    const double v = el.json().get<double>();
-    if (!std::isfinite(v)) el.fail("not a finite number");
-    e.originMm(static_cast<Eigen::Index>(i)) = v;
-  }
+  originFromJson(r, e.originMm);
   const JsonReader planes = r.object("planes");
   for (const TestPlane p : kTestPlanes) {
     const JsonReader q = planes.object(planeName(p));

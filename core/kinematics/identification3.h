@@ -23,7 +23,8 @@
 //
 // Fit. theta = (o_x, o_y, o_z, a_xy, b_xy, a_yz, b_yz, a_zx, b_zx) minimises the sum over the
 // three tests of |(P(Pr; theta))_(u,v) - Pmeas|^2, P = o + [i j k] Pr, by Levenberg-Marquardt
-// (Eigen LDLT of J^T J + lambda diag(J^T J), central-difference Jacobian, Nielsen's damping update);
+// (core/optim/least_squares.h: Eigen LDLT of J^T J + lambda D^T D with Marquardt's scaling D,
+// central-difference Jacobian, Nielsen's damping update);
 // the start is the 2D identification of every plane (identification.h: the angles directly, each
 // origin component the mean of the two planes that see it). Every origin component is seen by two
 // planes, every angle by one: nine parameters from twelve plane parameters.
@@ -112,7 +113,7 @@ struct Identify3Result {
 
 /// Identifies the nine parameters from the three tests (index: TestPlane). ValidationError naming
 /// the test's file and the plane's field for a test that cannot be identified (identification.h's
-/// checks with the plane's column names). The observer sees every LM step: best = rmse (mm),
+/// checks with the plane's column names). The observer sees every LM iteration: best = rmse (mm),
 /// bestX = theta (mm, deg).
 Identify3Result identifyActuatorErrors3(const std::array<MeasuredPath, 3>& tests,
                                         const Identify3Options& options = {}, Observer* observer = nullptr);

@@ -114,17 +114,12 @@ AxisFeatureSeries axisFeatureFromCsv(const CsvTable& t, const std::string& posit
 }
 
 bool SpcActuatorOptions::isValid(std::string* why) const {
-  auto no = [&](const std::string& w) {
-    if (why) *why = w;
-    return false;
-  };
-  if (subgroupSize < kMinSubgroupSize || subgroupSize > kMaxSubgroupSize) {
-    return no("subgroup size must be between 2 and 25 (the range of the A2/D3/D4 table), got " +
-              std::to_string(subgroupSize));
-  }
-  if (!(coverageFactor > 0.0) || !std::isfinite(coverageFactor))
-    return no("coverage factor must be positive");
-  return true;
+  // The same checks (subgroup size within the A2/D3/D4 table, positive coverage factor) as the SPC
+  // options the residual chart is built with.
+  SpcOptions spc;
+  spc.subgroupSize = subgroupSize;
+  spc.coverageFactor = coverageFactor;
+  return spc.isValid(why);
 }
 
 SpcActuatorResult actuatorErrorsFromSpc(const AxisFeatureSeries& xf, const AxisFeatureSeries& yf,

@@ -9,6 +9,7 @@
 
 #include "core/common/error.h"
 #include "core/matching/fit_input.h"
+#include "core/optim/least_squares.h"
 
 namespace metrofit::matching {
 namespace {
@@ -107,75 +108,69 @@ ClosedFormResult closedFormFit(const ProbePointSet& set, const ClosedFormOptions
     return res;
   }
 
-  double ss = sumSquares(set, x.pose());
-  double lambda = 0.0;
-  res.termination = Termination::MaxIterations;
-  res.message = "Gauss-Newton iteration limit reached";
-  int stalls = 0;
-  for (int it = 0; it < o.maxIterations; ++it) {
-    res.iterations = it + 1;
-    const Eigen::Matrix3d R = rotationZyx(x.angles);
-    const auto dR = rotationZyxDerivatives(x.angles);
-    Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(k, k);
-    Eigen::VectorXd Jtr = Eigen::VectorXd::Zero(k);
-    Eigen::Matrix<double, 3, Eigen::Dynamic> J(3, k);
+  // Gauss-Newton with the Levenberg-Marquardt safeguard of core/optim/least_squares.h: a damping of
+  // 1e-9 (relative to diag J^T J) is Gauss-Newton in all but name until a step fails; the tolerances
+  // stop at the rounding level.
+  auto paramsOf = [&](const Eigen::VectorXd& v) {
+    Params p = x;
+    for (Eigen::Index c = 0; c < k; ++c) {
+      const int j = freeIdx[static_cast<std::size_t>(c)];
+      if (j < 3)
+        p.angles(j) = v(c);
+      else if (j < 6)
+        p.t(j - 3) = v(c);
+      else
+        p.s = v(c);
+    }
+    return p;
+  };
+  const auto rows = static_cast<Eigen::Index>(3 * set.points.size());
+  const optim::Residual f = [&](const Eigen::VectorXd& v, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+    const Params q = paramsOf(v);
+    const Eigen::Matrix3d R = rotationZyx(q.angles);
+    const auto dR = rotationZyxDerivatives(q.angles);
+    r.resize(rows);
+    if (J) J->resize(rows, k);
+    Eigen::Index i = 0;
     for (const auto& p : set.points) {
       const Eigen::Vector3d Rq = R * p.nominal;
-      const Eigen::Vector3d r = p.measured - x.s * Rq - x.t;
-      for (Eigen::Index c = 0; c < k; ++c) {
-        const int j = freeIdx[static_cast<std::size_t>(c)];
-        if (j < 3)
-          J.col(c) = -x.s * (dR[static_cast<std::size_t>(j)] * p.nominal);
-        else if (j < 6)
-          J.col(c) = -Eigen::Vector3d::Unit(j - 3);
-        else
-          J.col(c) = -Rq;
+      r.segment<3>(i) = p.measured - q.s * Rq - q.t;
+      if (J) {
+        for (Eigen::Index c = 0; c < k; ++c) {
+          const int j = freeIdx[static_cast<std::size_t>(c)];
+          if (j < 3)
+            J->block<3, 1>(i, c) = -q.s * (dR[static_cast<std::size_t>(j)] * p.nominal);
+          else if (j < 6)
+            J->block<3, 1>(i, c) = -Eigen::Vector3d::Unit(j - 3);
+          else
+            J->block<3, 1>(i, c) = -Rq;
+        }
       }
-      JtJ.noalias() += J.transpose() * J;
-      Jtr.noalias() += J.transpose() * r;
+      i += 3;
     }
-    bool accepted = false;
-    for (int attempt = 0; attempt < 30 && !accepted; ++attempt) {
-      Eigen::MatrixXd A = JtJ;
-      A.diagonal() += lambda * JtJ.diagonal();
-      const Eigen::VectorXd step = A.ldlt().solve(-Jtr);
-      if (!step.allFinite()) {
-        lambda = lambda == 0.0 ? 1e-9 : lambda * 10.0;
-        continue;
-      }
-      Params trial = x;
-      for (Eigen::Index c = 0; c < k; ++c) {
-        const int j = freeIdx[static_cast<std::size_t>(c)];
-        if (j < 3)
-          trial.angles(j) += step(c);
-        else if (j < 6)
-          trial.t(j - 3) += step(c);
-        else
-          trial.s += step(c);
-      }
-      const double trialSs = sumSquares(set, trial.pose());
-      if (trialSs <= ss) {
-        const double decrease = ss - trialSs;
-        x = trial;
-        ss = trialSs;
-        accepted = true;
-        lambda = lambda > 0.0 ? lambda / 10.0 : 0.0;
-        if (step.lpNorm<Eigen::Infinity>() <= 1e-15 * (1.0 + x.t.norm()) || decrease <= 1e-30 + 1e-16 * ss)
-          ++stalls;
-        else
-          stalls = 0;
-      } else {
-        lambda = lambda == 0.0 ? 1e-9 : lambda * 10.0;
-      }
-    }
-    if (!accepted || stalls >= 2) {
-      res.termination = Termination::Converged;
-      res.message = "Gauss-Newton converged after " + std::to_string(res.iterations) + " iterations";
-      break;
-    }
+  };
+  optim::LeastSquaresOptions lo;
+  lo.maxIterations = o.maxIterations;
+  lo.initialDamping = 1e-9;
+  lo.costTolerance = 0.0;  // the cost is flat at the rounding level before the steps are
+  lo.stepTolerance = 1e-15;
+  Eigen::VectorXd v(k);
+  for (Eigen::Index c = 0; c < k; ++c) {
+    const int j = freeIdx[static_cast<std::size_t>(c)];
+    v(c) = j < 3 ? x.angles(j) : j < 6 ? x.t(j - 3) : x.s;
   }
+  const optim::LeastSquaresSummary sum = optim::solveLeastSquares(f, v, lo);
+  x = paramsOf(v);
+  res.iterations = static_cast<int>(sum.iterations);
+  res.termination = optim::toTermination(sum.termination);
+  if (res.termination == Termination::Converged)
+    res.message = "Gauss-Newton converged after " + std::to_string(res.iterations) + " iterations";
+  else if (res.termination == Termination::MaxIterations)
+    res.message = "Gauss-Newton iteration limit reached";
+  else
+    res.message = "Gauss-Newton failed: " + sum.message;
   res.pose = x.pose();
-  res.sumSquares = ss;
+  res.sumSquares = sumSquares(set, res.pose);
   return res;
 }
 

@@ -12,7 +12,8 @@
 //
 // With degree-of-freedom locks (pose.h DofLocks) the problem is a constrained least squares: the
 // locked parameters are held at their values and SS is minimised over the free ones (angles, the free
-// translation components, the scale) by Gauss-Newton with a Levenberg-Marquardt safeguard on the 3n
+// translation components, the scale) by Gauss-Newton with a Levenberg-Marquardt safeguard (the
+// solver of core/optim/least_squares.h) on the 3n
 // residuals r_i = p_i - s R(angles) q_i - t, Jacobian dr/d(angle_j) = -s dR/d(angle_j) q_i,
 // dr/dt_j = -e_j, dr/ds = -R q_i, started from the unconstrained optimum with the locked angles
 // substituted and the translation / scale that are optimal for that rotation. The residual is linear

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/common/rng.h"
+#include "core/optim/least_squares.h"
 
 namespace metrofit::thermal {
 
@@ -118,93 +119,73 @@ MlpTraining trainMlp(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, const M
   for (Eigen::Index i = 0; i < l.h; ++i) p(l.v(i)) = rng.uniform(-1.0, 1.0) * sOut;
   p(l.v0()) = rng.uniform(-1.0, 1.0) * sOut;
 
+  // Levenberg-Marquardt of trainlm on the shared solver (core/optim/least_squares.h): residuals
+  // y^ - y (cost 1/2 m MSE), mu I damping (identity scaling), LDLT of J^T J + mu I, mu multiplied by
+  // muDecrease / muIncrease; the stopping rules of the header mapped onto the solver's.
   const double md = static_cast<double>(m);
-  Eigen::MatrixXd s;
-  Eigen::VectorXd e = yn - forward(l, p, xn, &s);
-  double mse = e.squaredNorm() / md;
-  double mu = o.mu0;
-  long evaluations = 1;
-  std::vector<double> history{mse};
+  const optim::Residual f = [&](const Eigen::VectorXd& q, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+    Eigen::MatrixXd s;
+    r = forward(l, q, xn, J ? &s : nullptr) - yn;
+    if (!J) return;
+    // Jacobian of the outputs with respect to the parameters.
+    J->resize(m, np);
+    for (Eigen::Index i = 0; i < l.h; ++i) {
+      const Eigen::VectorXd ds = (s.col(i).array() * (1.0 - s.col(i).array())).matrix() * q(l.v(i));
+      for (Eigen::Index j = 0; j < n; ++j) J->col(l.w(i, j)) = ds.cwiseProduct(xn.col(j));
+      J->col(l.c(i)) = ds;
+      J->col(l.v(i)) = s.col(i);
+    }
+    J->col(l.v0()).setOnes();
+  };
+  optim::LeastSquaresOptions lo;
+  lo.maxIterations = o.maxEpochs;
+  lo.damping = optim::LeastSquaresOptions::Damping::Multiplicative;
+  lo.scaling = optim::LeastSquaresOptions::Scaling::Identity;
+  lo.linearSolver = optim::LeastSquaresOptions::LinearSolver::NormalEquations;
+  lo.initialDamping = o.mu0;
+  lo.dampingDecrease = o.muDecrease;
+  lo.dampingIncrease = o.muIncrease;
+  lo.maxDamping = o.muMax;
+  lo.targetCost = 0.5 * md * o.goalMse;         // MSE <= goal
+  lo.gradientTolerance = o.minGradient * md;    // |J^T e| / rows <= minGradient
+  lo.costTolerance = o.minRelativeImprovement;  // the stall test over stallEpochs epochs
+  lo.costWindow = o.stallEpochs;
   RunInfo& run = out.run;
-  run.termination = Termination::MaxIterations;
-  run.message = "maximum number of epochs reached";
-  Eigen::MatrixXd jac(m, np);
-  for (int epoch = 0; epoch < o.maxEpochs; ++epoch) {
-    if (mse <= o.goalMse) {
-      run.termination = Termination::Converged;
+  FunctionObserver report([&](const IterationSummary& g) {
+    IterationSummary sum;
+    sum.iteration = g.iteration;
+    sum.evaluations = g.evaluations;
+    sum.best = 2.0 * g.best / md;  // MSE
+    sum.components = {{"mu", g.components.at(1).value}};
+    sum.progress = g.progress;
+    return notify(observer, run, sum, o.keepTrace) ? ObserverDecision::Stop : ObserverDecision::Continue;
+  });
+  const optim::LeastSquaresSummary sum = optim::solveLeastSquares(f, p, lo, &report);
+  using T = optim::LeastSquaresTermination;
+  run.termination = optim::toTermination(sum.termination);
+  switch (sum.termination) {
+    case T::TargetCost:
       run.message = "performance goal met";
       break;
-    }
-    // Jacobian of the outputs with respect to the parameters.
-    for (Eigen::Index i = 0; i < l.h; ++i) {
-      const Eigen::VectorXd ds = (s.col(i).array() * (1.0 - s.col(i).array())).matrix() * p(l.v(i));
-      for (Eigen::Index j = 0; j < n; ++j) jac.col(l.w(i, j)) = ds.cwiseProduct(xn.col(j));
-      jac.col(l.c(i)) = ds;
-      jac.col(l.v(i)) = s.col(i);
-    }
-    jac.col(l.v0()).setOnes();
-    const Eigen::VectorXd g = jac.transpose() * e;
-    if (g.norm() / md < o.minGradient) {
-      run.termination = Termination::Converged;
+    case T::GradientTolerance:
       run.message = "gradient below minGradient";
       break;
-    }
-    Eigen::MatrixXd jtj(np, np);
-    jtj.setZero();
-    jtj.selfadjointView<Eigen::Lower>().rankUpdate(jac.transpose());
-    jtj = jtj.selfadjointView<Eigen::Lower>();
-    bool accepted = false;
-    while (mu <= o.muMax) {
-      Eigen::MatrixXd a = jtj;
-      a.diagonal().array() += mu;
-      const Eigen::VectorXd delta = a.ldlt().solve(g);
-      const Eigen::VectorXd pNew = p + delta;
-      Eigen::MatrixXd sNew;
-      const Eigen::VectorXd eNew = yn - forward(l, pNew, xn, &sNew);
-      ++evaluations;
-      const double mseNew = eNew.squaredNorm() / md;
-      if (std::isfinite(mseNew) && mseNew < mse) {
-        p = pNew;
-        s = std::move(sNew);
-        e = eNew;
-        mse = mseNew;
-        mu *= o.muDecrease;
-        accepted = true;
-        break;
-      }
-      mu *= o.muIncrease;
-    }
-    history.push_back(mse);
-    IterationSummary sum;
-    sum.iteration = epoch;
-    sum.evaluations = evaluations;
-    sum.best = mse;
-    sum.components = {{"mu", mu}};
-    sum.progress = static_cast<double>(epoch + 1) / static_cast<double>(o.maxEpochs);
-    if (notify(observer, run, sum, o.keepTrace)) break;
-    if (!accepted) {
-      run.termination = Termination::Converged;
+    case T::DampingLimit:
       run.message = "mu reached muMax (no step lowers the error)";
       break;
-    }
-    if (mse <= o.goalMse) {
-      run.termination = Termination::Converged;
-      run.message = "performance goal met";
+    case T::CostTolerance:
+      run.message = "MSE stalled (relative improvement below " + std::to_string(o.minRelativeImprovement) +
+                    " over " + std::to_string(o.stallEpochs) + " epochs)";
       break;
-    }
-    const std::size_t k = history.size() - 1;
-    if (k >= static_cast<std::size_t>(o.stallEpochs)) {
-      const double before = history[k - static_cast<std::size_t>(o.stallEpochs)];
-      if (before - mse <= o.minRelativeImprovement * before) {
-        run.termination = Termination::Converged;
-        run.message = "MSE stalled (relative improvement below " + std::to_string(o.minRelativeImprovement) +
-                      " over " + std::to_string(o.stallEpochs) + " epochs)";
-        break;
-      }
-    }
+    case T::MaxIterations:
+      run.message = "maximum number of epochs reached";
+      break;
+    default:
+      run.message = sum.message;
   }
-  run.evaluations = evaluations;
-  out.mse = mse;
+  run.iterations = sum.iterations;
+  run.evaluations = sum.residualEvaluations + sum.jacobianEvaluations;
+  out.mse = 2.0 * sum.finalCost / md;
   net.w.resize(l.h, n);
   net.c.resize(l.h);
   net.v.resize(l.h);

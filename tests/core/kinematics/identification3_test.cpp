@@ -18,6 +18,7 @@
 
 #include "core/common/error.h"
 #include "core/io/csv.h"
+#include "core/io/json_util.h"
 #include "core/kinematics/identification3.h"
 #include "core/sim/circular_sim.h"
 
@@ -189,6 +190,32 @@ TEST(Identification3, JsonRoundTrip) {
   EXPECT_EQ(e.originMm, r.errors.originMm);
   EXPECT_EQ(e.uAngleDeg, r.errors.uAngleDeg);
   EXPECT_EQ(e.vAngleDeg, r.errors.vAngleDeg);
+}
+
+std::string errors3JsonError(const std::string& origin) {
+  const std::string text = R"({"origin_mm": )" + origin +
+                           R"(, "planes": {"xy": {"x_axis_angle_deg": 0, "y_axis_angle_deg": 0},
+                               "yz": {"y_axis_angle_deg": 0, "z_axis_angle_deg": 0},
+                               "zx": {"z_axis_angle_deg": 0, "x_axis_angle_deg": 0}}})";
+  try {
+    const ActuatorErrors3 e = actuatorErrors3FromJson(parseJson(text, "e3.json"), "e3.json");
+    return "no error, origin z " + std::to_string(e.originMm.z());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+}
+
+// The origin of the three-axis JSON is read as the 2D one is (one shared reader): the same checks
+// and messages with three coordinates.
+TEST(Identification3, MalformedOriginInJsonNamesTheField) {
+  EXPECT_EQ(errors3JsonError("[1, 2, 3.5]"), "no error, origin z 3.500000");
+  EXPECT_EQ(errors3JsonError("[1, 2]"),
+            "e3.json: field 'origin_mm': expected 3 numbers [x, y, z], found 2 elements");
+  EXPECT_EQ(errors3JsonError("[1]"),
+            "e3.json: field 'origin_mm': expected 3 numbers [x, y, z], found 1 element");
+  EXPECT_EQ(errors3JsonError(R"([1, 2, "3"])"),
+            "e3.json: field 'origin_mm[2]': expected a number, found string");
+  EXPECT_EQ(errors3JsonError("7"), "e3.json: field 'origin_mm': expected an array, found number");
 }
 
 TEST(Identification3, CompensatedReferencesPutTheTestsOwnMachineOnTheNominalPath) {

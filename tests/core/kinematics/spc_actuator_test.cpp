@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "core/common/error.h"
@@ -178,6 +180,32 @@ TEST(SpcActuator, BadSeriesNameTheFile) {
   o.subgroupSize = 1;
   EXPECT_THROW(actuatorErrorsFromSpc(edge(t, 'x', 0.0, 10, 0.0, 1), edge(t, 'y', 0.0, 10, 0.0, 1), o),
                OptionsError);
+}
+
+// The options of the SPC route are validated as the SPC chart's options are (one check): the same
+// verdicts and messages at and beyond the limits of the A2/D3/D4 table and for the coverage factor.
+TEST(SpcActuator, OptionsValidatedAsTheSpcChartOptions) {
+  for (const int size : {0, 1, 2, 5, 25, 26}) {
+    for (const double k : {-1.0, 0.0, 2.0, std::numeric_limits<double>::infinity()}) {
+      SpcActuatorOptions a;
+      a.subgroupSize = size;
+      a.coverageFactor = k;
+      SpcOptions s;
+      s.subgroupSize = size;
+      s.coverageFactor = k;
+      std::string whyA, whyS;
+      const bool okA = a.isValid(&whyA);
+      EXPECT_EQ(okA, s.isValid(&whyS)) << size << " " << k;
+      EXPECT_EQ(whyA, whyS);
+      EXPECT_EQ(okA, size >= 2 && size <= 25 && k == 2.0) << size << " " << k;
+    }
+  }
+  SpcActuatorOptions o;
+  o.subgroupSize = 26;
+  std::string why;
+  EXPECT_FALSE(o.isValid(&why));
+  EXPECT_NE(why.find("subgroup size must be between 2 and 25"), std::string::npos) << why;
+  EXPECT_NE(why.find("26"), std::string::npos) << why;
 }
 
 }  // namespace
