@@ -222,6 +222,14 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
 </context>
 <context>
+    <name>metrofit::BackgroundRunBase</name>
+    <message>
+        <location filename="../widgets/common/backgroundrun.cpp" line="+112"/>
+        <source>unknown error</source>
+        <translation>unbekannter Fehler</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::ChartExport</name>
     <message>
         <location filename="../widgets/common/chartexport.cpp" line="+190"/>
@@ -426,7 +434,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
 <context>
     <name>metrofit::DiagnosisPage</name>
     <message>
-        <location filename="../app/gui/diagnosispage.cpp" line="+56"/>
+        <location filename="../app/gui/diagnosispage.cpp" line="+55"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -446,7 +454,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+423"/>
+        <location line="+417"/>
         <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
         <translation>%1: ein generischer Effekt (was kein Effekt des Katalogs erklärt) kann dem Modell der Studie (%2) noch nicht hinzugefügt werden; er wird hier und in der Residuenprüfung angezeigt, nicht übernommen</translation>
     </message>
@@ -456,7 +464,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-518"/>
+        <location line="-512"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
@@ -492,12 +500,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+5"/>
-        <location line="+309"/>
+        <location line="+303"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
     </message>
     <message>
-        <location line="-295"/>
+        <location line="-289"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Das deklarierte Modell, wie es vor dem Hinzufügen eines Effekts angepasst wurde</translation>
     </message>
@@ -563,13 +571,13 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+1"/>
-        <location line="+162"/>
-        <location line="+130"/>
+        <location line="+168"/>
+        <location line="+118"/>
         <source>Residual chec&amp;k</source>
         <translation>Residuen&amp;prüfung</translation>
     </message>
     <message>
-        <location line="-290"/>
+        <location line="-284"/>
         <source>The candidate effects tried, their residual plots and the error before / after</source>
         <translation>Die getesteten Kandidateneffekte, ihre Residuendiagramme und der Fehler vorher / nachher</translation>
     </message>
@@ -584,8 +592,8 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ber&amp;eich:</translation>
     </message>
     <message>
-        <location line="+34"/>
-        <location line="+143"/>
+        <location line="+47"/>
+        <location line="+136"/>
         <source>The diagnosis failed: %1</source>
         <translation>Die Diagnose ist fehlgeschlagen: %1</translation>
     </message>
@@ -636,17 +644,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Noch nicht ausgeführt: Ausführen drücken (Strg+R).</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+39"/>
         <source>Diagnosing …</source>
         <translation>Diagnose läuft …</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+7"/>
         <source>Diagnosing … step %1, current rmse %2</source>
         <translation>Diagnose läuft … Schritt %1, aktueller rmse %2</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+38"/>
         <source>Nothing to apply. %1.</source>
         <translation>Nichts zu übernehmen. %1.</translation>
     </message>
@@ -1391,7 +1399,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Kompensieren</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+60"/>
+        <source>The kinematics study&apos;s settings are invalid: %1</source>
+        <translation>Die Einstellungen der Kinematik-Studie sind ungültig: %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
         <translation>Dieses Projekt enthält keinen Kreisformtest. Fügen Sie einen Datensatz der Art „circular_test“ hinzu (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, ein Umlauf gegen und einer im Uhrzeigersinn), z. B. erzeugt mit metrofit-cli simulate circular.</translation>
     </message>
@@ -1720,7 +1733,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+53"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+55"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Metrofit-Projekte (*.metrofit)</translation>
     </message>
@@ -1730,7 +1743,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+59"/>
         <source>Autosave failed: %1</source>
         <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
     </message>
@@ -1786,12 +1799,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+4"/>
-        <location line="+141"/>
+        <location line="+158"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location line="-140"/>
+        <location line="-157"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
@@ -1811,14 +1824,14 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+6"/>
+        <location line="+3"/>
+        <location line="+8"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location line="-4"/>
-        <location line="+7"/>
+        <location line="-5"/>
+        <location line="+8"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
@@ -1833,7 +1846,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&amp;Wiederherstellen: %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Einstellungen…</translation>
     </message>
@@ -1873,7 +1886,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1[*] — Metrofit</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+33"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
@@ -1898,12 +1911,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Das automatisch gesicherte Projekt wurde wiederhergestellt; speichern Sie es, um es zu behalten.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-48"/>
         <source>Cannot save the setup model</source>
         <translation>Das Einrichtmodell kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+76"/>
         <source>The setup model (relation graph) has unsaved edits. Do you want to save them?</source>
         <translation>Das Einrichtmodell (Beziehungsgraph) hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
@@ -1918,7 +1931,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+138"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
@@ -1938,7 +1951,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1 als „%2“ importiert</translation>
     </message>
     <message>
-        <location line="-168"/>
+        <location line="-170"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Das Projekt „%1“ hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
@@ -1974,23 +1987,23 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+10"/>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>Cannot save the project</source>
         <translation>Das Projekt kann nicht gespeichert werden</translation>
     </message>
     <message>
         <location line="-16"/>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location line="-11"/>
+        <location line="-12"/>
         <source>Save project as</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>Export report</source>
         <translation>Bericht exportieren</translation>
     </message>
@@ -2051,7 +2064,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+61"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+60"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -2347,19 +2360,19 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Sperren der Ausrichtung ändern</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+259"/>
+        <location line="+23"/>
+        <location line="+265"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="-186"/>
+        <location line="-32"/>
         <source>The matching study&apos;s settings are invalid: %1</source>
         <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig: %1</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="-130"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Fügen Sie der Projektdatei einen Datensatz der Art „probe_points“ hinzu (Kennung, Fläche, Sollpunkt, Normale, Messpunkt).</translation>
     </message>
@@ -2386,17 +2399,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zu den Antastpunkten %1 (auf denen die Diagnose lief); diese Punkte verwenden das deklarierte Modell.</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+90"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+32"/>
         <source>Matching …</source>
         <translation>Ausrichtung läuft …</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+32"/>
         <source>(The loop ran with the previous tolerance: Run again.)</source>
         <translation>(Die Schleife lief mit der vorherigen Toleranz: erneut ausführen.)</translation>
     </message>
@@ -2411,7 +2424,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation> Abgebrochen: die bisher beste gefundene Lage.</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>BEFORE matching
 %1 of %2 out of ±%3 mm, max |d| %4 mm</source>
         <translation>VOR der Ausrichtung
@@ -2545,7 +2558,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-419"/>
+        <location line="-404"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -2570,7 +2583,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Noch nicht ausgerichtet: Ausführen drücken (Strg+R).</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Cannot show these probe points:
 %1</source>
         <translation>Diese Antastpunkte können nicht angezeigt werden:
@@ -4374,7 +4387,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Zielfunktionen wie in %4, Gl. 6–10: f1 = das kleinste einseitige Fehlerbudget über alle Maße nach der Korrektur (maximiert), f2 = |x| (minimiert unter den f1-optimalen), f = 10 f1 − f2. Exakt: LP / MILP auf dem %1-mm-Raster (GLPK), dann die Korrektur kleinster Norm. CRIPSO: 100 Polypen, w = 0,75, c1 = c2 = cos(π/2 Li/L); PSO: 100 Partikel, asynchrones gbest, gleiche Koeffizienten. Budget %2 Lösungen, Startwert %3.</translation>
     </message>
     <message>
-        <location line="+113"/>
+        <location line="+72"/>
+        <source>Error in the setup model of the study %1: %2</source>
+        <translation>Fehler im Setup-Modell der Studie %1: %2</translation>
+    </message>
+    <message>
+        <location line="+46"/>
         <source>The exact correction of %1 setup data raises the smallest error budget f1 from %2 mm to %3 mm%4; CRIPSO and PSO reach %5 mm and %6 mm.</source>
         <translation>Die exakte Korrektur von %1 Einrichtedaten hebt das kleinste Fehlerbudget f1 von %2 mm auf %3 mm%4; CRIPSO und PSO erreichen %5 mm und %6 mm.</translation>
     </message>
@@ -4430,7 +4448,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lassen Sie die Korrekturregister unverändert.</translation>
     </message>
     <message>
-        <location line="-152"/>
+        <location line="-157"/>
         <source>Convergence</source>
         <translation>Konvergenz</translation>
     </message>
@@ -4515,7 +4533,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>exakt</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>Margins per dimension, before and after the exact correction</source>
         <translation>Abstände je Maß, vor und nach der exakten Korrektur</translation>
     </message>
@@ -6165,7 +6183,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+108"/>
+        <location filename="../app/gui/setuppage.cpp" line="+99"/>
         <source>&amp;Save model</source>
         <translation>Modell &amp;speichern</translation>
     </message>
@@ -6290,7 +6308,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Startwert der Einrichtung ändern</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+94"/>
         <source>The applied effects cannot be used: %1</source>
         <translation>Die übernommenen Effekte können nicht verwendet werden: %1</translation>
     </message>
@@ -6383,12 +6401,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Exaktes Optimum: %1 Solver-Aufrufe in %2 ms.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Running %1…</source>
         <translation>%1 läuft…</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+62"/>
         <source>The run failed: %1</source>
         <translation>Der Lauf ist fehlgeschlagen: %1</translation>
     </message>
@@ -6555,7 +6573,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>(abgebrochen: bisher beste)</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+36"/>
         <source>Parts of the report in tolerance: %1 of %2 before, %3 of %2 after the correction; parts rescued: %4.</source>
         <translation>Werkstücke des Berichts in Toleranz: %1 von %2 vor, %3 von %2 nach der Korrektur; gerettete Werkstücke: %4.</translation>
     </message>
@@ -6583,7 +6601,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupValidationView</name>
     <message>
-        <location filename="../widgets/setup/setupvalidationview.cpp" line="+63"/>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+67"/>
         <source>Simulated measurement sets N (the paper: 100)</source>
         <translation>Simulierte Messreihen N (Veröffentlichung: 100)</translation>
     </message>
@@ -6663,22 +6681,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Methoden:</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+99"/>
         <source>Choose at least one method.</source>
         <translation>Wählen Sie mindestens eine Methode.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Running %1 sets x %2 trials…</source>
         <translation>%1 Reihen x %2 Versuche laufen…</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+28"/>
         <source>The validation failed: %1</source>
         <translation>Die Validierung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1 sets%2: f1 before correction from %3 to %4 mm.</source>
         <translation>%1 Reihen%2: f1 vor der Korrektur von %3 bis %4 mm.</translation>
     </message>
@@ -7186,7 +7204,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+79"/>
+        <location filename="../widgets/charts/thermalmodelview.cpp" line="+73"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -7211,7 +7229,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Übernommene Effekte %1: %2.</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+91"/>
         <source>Applied effects %1: Train (Ctrl+R) fits each model with and without them and keeps the lower held-out error.</source>
         <translation>Übernommene Effekte %1: Trainieren (Strg+R) passt jedes Modell mit und ohne sie an und behält den kleineren Fehler auf den Testdaten.</translation>
     </message>
@@ -7258,49 +7276,49 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+7"/>
         <location line="+77"/>
-        <location line="+119"/>
+        <location line="+108"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location line="-196"/>
-        <location line="+196"/>
+        <location line="-185"/>
+        <location line="+185"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
     <message>
-        <location line="-195"/>
-        <location line="+195"/>
+        <location line="-184"/>
+        <location line="+184"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-195"/>
-        <location line="+195"/>
+        <location line="-184"/>
+        <location line="+184"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-194"/>
+        <location line="-183"/>
         <location line="+77"/>
-        <location line="+117"/>
+        <location line="+106"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-194"/>
-        <location line="+194"/>
+        <location line="-183"/>
+        <location line="+183"/>
         <source>band</source>
         <translation>Band</translation>
     </message>
     <message>
-        <location line="-193"/>
-        <location line="+193"/>
+        <location line="-182"/>
+        <location line="+182"/>
         <source>verdict</source>
         <translation>Urteil</translation>
     </message>
     <message>
-        <location line="-186"/>
+        <location line="-175"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -7350,12 +7368,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>weniger (RMS, %)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+18"/>
         <source>%1: %p%</source>
         <translation>%1: %p%</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
         <source>The column the models predict (the thermal error)</source>
         <translation>Die Spalte, die die Modelle vorhersagen (der thermische Fehler)</translation>
     </message>
@@ -7465,23 +7483,23 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Modular (Z + C → kombiniert)</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <location line="+134"/>
+        <location line="+35"/>
+        <location line="+115"/>
         <source>Training failed: %1</source>
         <translation>Das Training ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-129"/>
         <source>Training cancelled after %1 PSO iterations; the results shown are the previous ones.</source>
         <translation>Training nach %1 PSO-Iterationen abgebrochen; die angezeigten Ergebnisse sind die vorherigen.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+21"/>
         <source>Settings changed: Train (Ctrl+R) to update the results.</source>
         <translation>Einstellungen geändert: Trainieren (Strg+R), um die Ergebnisse zu aktualisieren.</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+57"/>
         <source>Not trained yet: Train (Ctrl+R) fits the three models.</source>
         <translation>Noch nicht trainiert: Trainieren (Strg+R) passt die drei Modelle an.</translation>
     </message>
@@ -7492,12 +7510,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+30"/>
+        <location line="+23"/>
         <source>Choose at least one input.</source>
         <translation>Wählen Sie mindestens einen Eingang.</translation>
     </message>
     <message>
-        <location line="-18"/>
+        <location line="-12"/>
         <source>Training…</source>
         <translation>Training läuft…</translation>
     </message>
@@ -7505,7 +7523,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+75"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+74"/>
         <source>T&amp;rend</source>
         <translation>&amp;Verlauf</translation>
     </message>
@@ -7540,7 +7558,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&amp;Thermoprotokoll:</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+87"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Dieses Projekt hat kein Thermoprotokoll. Fügen Sie der Projektdatei einen Datensatz der Art „thermal_log“ hinzu (eine Zeitspalte, Sensorspalten und die Verlagerung).</translation>
     </message>
@@ -7597,7 +7615,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Einstellungen des thermischen Modells ändern</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+73"/>
         <source>Modular case: %1</source>
         <translation>Modularer Fall: %1</translation>
     </message>

@@ -222,6 +222,14 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
 </context>
 <context>
+    <name>metrofit::BackgroundRunBase</name>
+    <message>
+        <location filename="../widgets/common/backgroundrun.cpp" line="+112"/>
+        <source>unknown error</source>
+        <translation>nieznany błąd</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::ChartExport</name>
     <message>
         <location filename="../widgets/common/chartexport.cpp" line="+190"/>
@@ -426,7 +434,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
 <context>
     <name>metrofit::DiagnosisPage</name>
     <message>
-        <location filename="../app/gui/diagnosispage.cpp" line="+56"/>
+        <location filename="../app/gui/diagnosispage.cpp" line="+55"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -446,7 +454,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+423"/>
+        <location line="+417"/>
         <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
         <translation>%1: efektu ogólnego (tego, czego nie wyjaśnia żaden efekt z katalogu) nie można jeszcze dodać do modelu badania (%2); jest pokazany tutaj i w sprawdzeniu residuów, nie zastosowany</translation>
     </message>
@@ -456,7 +464,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-518"/>
+        <location line="-512"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
@@ -492,12 +500,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+5"/>
-        <location line="+309"/>
+        <location line="+303"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
     </message>
     <message>
-        <location line="-295"/>
+        <location line="-289"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Zadeklarowany model dopasowany przed dodaniem jakiegokolwiek efektu</translation>
     </message>
@@ -563,13 +571,13 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+1"/>
-        <location line="+162"/>
-        <location line="+130"/>
+        <location line="+168"/>
+        <location line="+118"/>
         <source>Residual chec&amp;k</source>
         <translation>Sprawdzenie re&amp;siduów</translation>
     </message>
     <message>
-        <location line="-290"/>
+        <location line="-284"/>
         <source>The candidate effects tried, their residual plots and the error before / after</source>
         <translation>Wypróbowane efekty kandydujące, ich wykresy residuów i błąd przed / po</translation>
     </message>
@@ -584,8 +592,8 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>&amp;Dziedzina:</translation>
     </message>
     <message>
-        <location line="+34"/>
-        <location line="+143"/>
+        <location line="+47"/>
+        <location line="+136"/>
         <source>The diagnosis failed: %1</source>
         <translation>Diagnoza nie powiodła się: %1</translation>
     </message>
@@ -636,17 +644,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+39"/>
         <source>Diagnosing …</source>
         <translation>Diagnozowanie …</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+7"/>
         <source>Diagnosing … step %1, current rmse %2</source>
         <translation>Diagnozowanie … krok %1, bieżący rmse %2</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+38"/>
         <source>Nothing to apply. %1.</source>
         <translation>Nie ma czego zastosować. %1.</translation>
     </message>
@@ -1391,7 +1399,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Kompensuj</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+60"/>
+        <source>The kinematics study&apos;s settings are invalid: %1</source>
+        <translation>Ustawienia badania kinematyki są nieprawidłowe: %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
         <translation>Ten projekt nie zawiera testu kołowego. Dodaj zbiór danych rodzaju „circular_test” (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, jedna pętla przeciwnie do ruchu wskazówek zegara, potem jedna zgodnie), np. utworzony przez metrofit-cli simulate circular.</translation>
     </message>
@@ -1722,7 +1735,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+53"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+55"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Projekty Metrofit (*.metrofit)</translation>
     </message>
@@ -1732,7 +1745,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+59"/>
         <source>Autosave failed: %1</source>
         <translation>Automatyczny zapis nie powiódł się: %1</translation>
     </message>
@@ -1788,12 +1801,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+4"/>
-        <location line="+141"/>
+        <location line="+158"/>
         <source>&amp;Save</source>
         <translation>&amp;Zapisz</translation>
     </message>
     <message>
-        <location line="-140"/>
+        <location line="-157"/>
         <source>Save &amp;As…</source>
         <translation>Zapisz &amp;jako…</translation>
     </message>
@@ -1813,14 +1826,14 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&amp;Edycja</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+6"/>
+        <location line="+3"/>
+        <location line="+8"/>
         <source>&amp;Undo</source>
         <translation>&amp;Cofnij</translation>
     </message>
     <message>
-        <location line="-4"/>
-        <location line="+7"/>
+        <location line="-5"/>
+        <location line="+8"/>
         <source>&amp;Redo</source>
         <translation>&amp;Ponów</translation>
     </message>
@@ -1835,7 +1848,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&amp;Ponów: %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferencje…</translation>
     </message>
@@ -1875,7 +1888,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>%1[*] — Metrofit</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+33"/>
         <source>No recent files</source>
         <translation>Brak ostatnio używanych plików</translation>
     </message>
@@ -1900,12 +1913,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Przywrócono automatycznie zapisany projekt; zapisz go, aby go zachować.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-48"/>
         <source>Cannot save the setup model</source>
         <translation>Nie można zapisać modelu ustawczego</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+76"/>
         <source>The setup model (relation graph) has unsaved edits. Do you want to save them?</source>
         <translation>Model ustawczy (graf relacji) ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
@@ -1920,7 +1933,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Niezapisane zmiany</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+138"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
@@ -1940,7 +1953,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zaimportowano %1 jako „%2”</translation>
     </message>
     <message>
-        <location line="-168"/>
+        <location line="-170"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Projekt „%1” ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
@@ -1976,23 +1989,23 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+10"/>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>Cannot save the project</source>
         <translation>Nie można zapisać projektu</translation>
     </message>
     <message>
         <location line="-16"/>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Saved %1</source>
         <translation>Zapisano %1</translation>
     </message>
     <message>
-        <location line="-11"/>
+        <location line="-12"/>
         <source>Save project as</source>
         <translation>Zapisz projekt jako</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>Export report</source>
         <translation>Eksport raportu</translation>
     </message>
@@ -2053,7 +2066,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+61"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+60"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -2349,19 +2362,19 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmiana blokad dopasowania</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+259"/>
+        <location line="+23"/>
+        <location line="+265"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
     </message>
     <message>
-        <location line="-186"/>
+        <location line="-32"/>
         <source>The matching study&apos;s settings are invalid: %1</source>
         <translation>Ustawienia studium dopasowania są nieprawidłowe: %1</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="-130"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Ten projekt nie zawiera punktów sondowania. Dodaj do pliku projektu zbiór danych rodzaju „probe_points” (identyfikator, powierzchnia, punkt nominalny, normalna, punkt zmierzony).</translation>
     </message>
@@ -2388,17 +2401,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Efekty zastosowane na stronie Diagnoza należą do punktów sondowania %1 (tych, na których przeprowadzono diagnozę); te punkty używają zadeklarowanego modelu.</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+90"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+32"/>
         <source>Matching …</source>
         <translation>Dopasowywanie …</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+32"/>
         <source>(The loop ran with the previous tolerance: Run again.)</source>
         <translation>(Pętla działała z poprzednią tolerancją: uruchom ponownie.)</translation>
     </message>
@@ -2413,7 +2426,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation> Anulowano: najlepsze dotąd znalezione położenie.</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>BEFORE matching
 %1 of %2 out of ±%3 mm, max |d| %4 mm</source>
         <translation>PRZED dopasowaniem
@@ -2548,7 +2561,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-419"/>
+        <location line="-404"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -2573,7 +2586,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Jeszcze nie dopasowano: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Cannot show these probe points:
 %1</source>
         <translation>Nie można wyświetlić tych punktów sondowania:
@@ -4378,7 +4391,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Funkcje celu jak w %4, równ. 6–10: f1 = najmniejszy jednostronny budżet błędu po wszystkich wymiarach po korekcie (maksymalizowany), f2 = |x| (minimalizowany wśród f1-optymalnych), f = 10 f1 − f2. Dokładna: LP / MILP na siatce %1 mm (GLPK), potem korekta o najmniejszej normie. CRIPSO: 100 polipów, w = 0,75, c1 = c2 = cos(π/2 Li/L); PSO: 100 cząstek, asynchroniczny gbest, te same współczynniki. Budżet %2 rozwiązań, ziarno %3.</translation>
     </message>
     <message>
-        <location line="+113"/>
+        <location line="+72"/>
+        <source>Error in the setup model of the study %1: %2</source>
+        <translation>Błąd w modelu ustawienia badania %1: %2</translation>
+    </message>
+    <message>
+        <location line="+46"/>
         <source>The exact correction of %1 setup data raises the smallest error budget f1 from %2 mm to %3 mm%4; CRIPSO and PSO reach %5 mm and %6 mm.</source>
         <translation>Dokładna korekta %1 danych ustawczych podnosi najmniejszy budżet błędu f1 z %2 mm do %3 mm%4; CRIPSO i PSO osiągają %5 mm i %6 mm.</translation>
     </message>
@@ -4434,7 +4452,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Pozostaw rejestry korekcyjne bez zmian.</translation>
     </message>
     <message>
-        <location line="-152"/>
+        <location line="-157"/>
         <source>Convergence</source>
         <translation>Zbieżność</translation>
     </message>
@@ -4519,7 +4537,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>dokładna</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>Margins per dimension, before and after the exact correction</source>
         <translation>Zapasy dla każdego wymiaru, przed i po dokładnej korekcji</translation>
     </message>
@@ -6182,7 +6200,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+108"/>
+        <location filename="../app/gui/setuppage.cpp" line="+99"/>
         <source>&amp;Save model</source>
         <translation>Zapi&amp;sz model</translation>
     </message>
@@ -6307,7 +6325,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana ziarna ustawienia</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+94"/>
         <source>The applied effects cannot be used: %1</source>
         <translation>Nie można użyć zastosowanych efektów: %1</translation>
     </message>
@@ -6401,12 +6419,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dokładne optimum: wywołania solvera: %1 w %2 ms.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Running %1…</source>
         <translation>Uruchamianie %1…</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+62"/>
         <source>The run failed: %1</source>
         <translation>Przebieg nie powiódł się: %1</translation>
     </message>
@@ -6576,7 +6594,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>(anulowano: najlepsze dotąd)</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+36"/>
         <source>Parts of the report in tolerance: %1 of %2 before, %3 of %2 after the correction; parts rescued: %4.</source>
         <translation>Przedmioty z raportu w tolerancji: %1 z %2 przed, %3 z %2 po korekcji; uratowane przedmioty: %4.</translation>
     </message>
@@ -6604,7 +6622,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupValidationView</name>
     <message>
-        <location filename="../widgets/setup/setupvalidationview.cpp" line="+63"/>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+67"/>
         <source>Simulated measurement sets N (the paper: 100)</source>
         <translation>Symulowane zestawy pomiarów N (publikacja: 100)</translation>
     </message>
@@ -6684,22 +6702,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Metody:</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+99"/>
         <source>Choose at least one method.</source>
         <translation>Wybierz co najmniej jedną metodę.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Running %1 sets x %2 trials…</source>
         <translation>Obliczanie: %1 zestawów x %2 prób…</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+28"/>
         <source>The validation failed: %1</source>
         <translation>Walidacja nie powiodła się: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1 sets%2: f1 before correction from %3 to %4 mm.</source>
         <translation>Zestawy: %1%2: f1 przed korekcją od %3 do %4 mm.</translation>
     </message>
@@ -7208,7 +7226,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+79"/>
+        <location filename="../widgets/charts/thermalmodelview.cpp" line="+73"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -7233,7 +7251,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zastosowane efekty %1: %2.</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+91"/>
         <source>Applied effects %1: Train (Ctrl+R) fits each model with and without them and keeps the lower held-out error.</source>
         <translation>Zastosowane efekty %1: Trenuj (Ctrl+R) dopasowuje każdy model z nimi i bez nich i zachowuje mniejszy błąd danych testowych.</translation>
     </message>
@@ -7280,49 +7298,49 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+7"/>
         <location line="+77"/>
-        <location line="+119"/>
+        <location line="+108"/>
         <source>model</source>
         <translation>model</translation>
     </message>
     <message>
-        <location line="-196"/>
-        <location line="+196"/>
+        <location line="-185"/>
+        <location line="+185"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
     <message>
-        <location line="-195"/>
-        <location line="+195"/>
+        <location line="-184"/>
+        <location line="+184"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-195"/>
-        <location line="+195"/>
+        <location line="-184"/>
+        <location line="+184"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-194"/>
+        <location line="-183"/>
         <location line="+77"/>
-        <location line="+117"/>
+        <location line="+106"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-194"/>
-        <location line="+194"/>
+        <location line="-183"/>
+        <location line="+183"/>
         <source>band</source>
         <translation>pasmo</translation>
     </message>
     <message>
-        <location line="-193"/>
-        <location line="+193"/>
+        <location line="-182"/>
+        <location line="+182"/>
         <source>verdict</source>
         <translation>ocena</translation>
     </message>
     <message>
-        <location line="-186"/>
+        <location line="-175"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -7372,12 +7390,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>mniej (RMS, %)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+18"/>
         <source>%1: %p%</source>
         <translation>%1: %p%</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
         <source>The column the models predict (the thermal error)</source>
         <translation>Kolumna przewidywana przez modele (błąd termiczny)</translation>
     </message>
@@ -7487,23 +7505,23 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Modułowy (Z + C → łączony)</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <location line="+134"/>
+        <location line="+35"/>
+        <location line="+115"/>
         <source>Training failed: %1</source>
         <translation>Trenowanie nie powiodło się: %1</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-129"/>
         <source>Training cancelled after %1 PSO iterations; the results shown are the previous ones.</source>
         <translation>Trenowanie anulowano po %1 iteracjach PSO; pokazane wyniki są poprzednie.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+21"/>
         <source>Settings changed: Train (Ctrl+R) to update the results.</source>
         <translation>Zmieniono ustawienia: Trenuj (Ctrl+R), aby zaktualizować wyniki.</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+57"/>
         <source>Not trained yet: Train (Ctrl+R) fits the three models.</source>
         <translation>Jeszcze nie wytrenowano: Trenuj (Ctrl+R) dopasowuje trzy modele.</translation>
     </message>
@@ -7514,12 +7532,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+30"/>
+        <location line="+23"/>
         <source>Choose at least one input.</source>
         <translation>Wybierz co najmniej jedno wejście.</translation>
     </message>
     <message>
-        <location line="-18"/>
+        <location line="-12"/>
         <source>Training…</source>
         <translation>Trenowanie…</translation>
     </message>
@@ -7527,7 +7545,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+75"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+74"/>
         <source>T&amp;rend</source>
         <translation>&amp;Trend</translation>
     </message>
@@ -7562,7 +7580,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>&amp;Rejestr termiczny:</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+87"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Ten projekt nie zawiera rejestru termicznego. Dodaj do pliku projektu zbiór danych rodzaju „thermal_log” (kolumna czasu, kolumny czujników i przemieszczenie).</translation>
     </message>
@@ -7619,7 +7637,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana ustawień modelu termicznego</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+73"/>
         <source>Modular case: %1</source>
         <translation>Przypadek modułowy: %1</translation>
     </message>

@@ -19,7 +19,6 @@
 #include <QUndoCommand>
 #include <QUndoStack>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -139,7 +138,7 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
       table_(new QTableWidget(this)),
       tabs_(new QTabWidget(this)),
       check_(new ResidualCheckView(this)),
-      watcher_(new QFutureWatcher<void>(this)) {
+      run_(new BackgroundRun<diagnose::Diagnosis>(this)) {
   auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kDiagnosis)), this);
   QFont titleFont = title->font();
   titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
@@ -275,17 +274,23 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
   connect(runButton_, &QPushButton::clicked, this, &DiagnosisPage::startRun);
   connect(cancelButton_, &QPushButton::clicked, this, &DiagnosisPage::cancelRun);
   connect(applyButton_, &QPushButton::clicked, this, [this] { applyAccepted(); });
-  connect(watcher_, &QFutureWatcher<void>::finished, this, [this] {
+  connect(run_, &BackgroundRunBase::progress, this, [this](double, const QString& text) {
+    if (!text.isEmpty()) status_->setText(text);
+  });
+  const auto ended = [this] {
     setRunning(false);
-    if (pendingError_ && !pendingError_->isEmpty()) {
-      status_->setText(tr("The diagnosis failed: %1").arg(*pendingError_));
-    } else if (pending_ && pending_->has_value()) {
-      result_ = std::move(**pending_);
+    if (std::optional<diagnose::Diagnosis> r = run_->takeResult()) {
+      result_ = std::move(*r);
       if (settings_) settingsKey_ = diagnosisSettingsKey(*settings_);
       showResult();
     }
-    pending_.reset();
-    pendingError_.reset();
+    emit finished();
+  };
+  connect(run_, &BackgroundRunBase::finished, this, ended);
+  connect(run_, &BackgroundRunBase::cancelled, this, ended);
+  connect(run_, &BackgroundRunBase::failed, this, [this](const QString& message) {
+    setRunning(false);
+    status_->setText(tr("The diagnosis failed: %1").arg(message));
     emit finished();
   });
   connect(document_, &ProjectDocument::changed, this, &DiagnosisPage::refresh);
@@ -293,8 +298,8 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
 }
 
 DiagnosisPage::~DiagnosisPage() {
-  if (cancel_) cancel_->store(true);
-  watcher_->waitForFinished();
+  run_->cancel();
+  run_->waitForWorker();
 }
 
 void DiagnosisPage::setDomain(DiagnosisDomain domain) {
@@ -319,7 +324,7 @@ QString DiagnosisPage::notesText() const {
 }
 
 bool DiagnosisPage::isRunning() const {
-  return pending_ != nullptr || watcher_->isRunning();
+  return run_->isRunning();
 }
 
 void DiagnosisPage::showMessage(const QString& text) {
@@ -428,35 +433,23 @@ bool DiagnosisPage::runNow() {
 
 void DiagnosisPage::startRun() {
   if (!settings_ || isRunning()) return;
-  cancel_ = std::make_shared<std::atomic<bool>>(false);
-  pending_ = std::make_shared<std::optional<diagnose::Diagnosis>>();
-  pendingError_ = std::make_shared<QString>();
   setRunning(true);
   status_->setText(tr("Diagnosing …"));
   const DiagnosisSettings settings = *settings_;
-  auto cancel = cancel_;
-  auto pending = pending_;
-  auto pendingError = pendingError_;
-  QLabel* status = status_;
-  watcher_->setFuture(QtConcurrent::run([settings, cancel, pending, pendingError, status] {
+  run_->start([settings](RunObserver& run) {
     long steps = 0;
+    // The loops report no fraction: the text names the step and the current rmse.
     FunctionObserver observer([&](const IterationSummary& s) {
       ++steps;
-      const QString text = tr("Diagnosing … step %1, current rmse %2").arg(steps).arg(num(s.best, 3));
-      QMetaObject::invokeMethod(
-          status, [status, text] { status->setText(text); }, Qt::QueuedConnection);
-      return cancel->load() ? ObserverDecision::Stop : ObserverDecision::Continue;
+      run.report(-1.0, tr("Diagnosing … step %1, current rmse %2").arg(steps).arg(num(s.best, 3)));
+      return run.onIteration(s);
     });
-    try {
-      *pending = runDiagnosis(settings, &observer);
-    } catch (const std::exception& e) {
-      *pendingError = QString::fromUtf8(e.what());
-    }
-  }));
+    return runDiagnosis(settings, &observer);
+  });
 }
 
 void DiagnosisPage::cancelRun() {
-  if (cancel_) cancel_->store(true);
+  run_->cancel();
 }
 
 void DiagnosisPage::setRunning(bool running) {

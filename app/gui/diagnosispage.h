@@ -11,14 +11,13 @@
 // Apply (Ctrl+Shift+A) writes the accepted effects its study can include (canApplyEffect: the generic
 // ones in thermal only; the button's tooltip says which are left out and why) to
 // studies.diagnosis.<domain>.applied as one undoable edit of the project document.
-#include <QFutureWatcher>
 #include <QWidget>
-#include <atomic>
 #include <memory>
 #include <optional>
 
 #include "core/diagnose/diagnosis.h"
 #include "core/study/diagnosis_study.h"
+#include "widgets/common/backgroundrun.h"
 
 class QComboBox;
 class QLabel;
@@ -110,10 +109,7 @@ class DiagnosisPage : public QWidget {
   std::optional<DiagnosisSettings> settings_;
   std::string settingsKey_;  ///< the settings the shown result was computed with
   std::optional<diagnose::Diagnosis> result_;
-  QFutureWatcher<void>* watcher_;
-  std::shared_ptr<std::atomic<bool>> cancel_;
-  std::shared_ptr<std::optional<diagnose::Diagnosis>> pending_;
-  std::shared_ptr<QString> pendingError_;
+  BackgroundRun<diagnose::Diagnosis>* run_;
 };
 
 }  // namespace metrofit

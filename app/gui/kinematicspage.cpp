@@ -302,6 +302,7 @@ void KinematicsPage::refresh() {
   studyJson_ = std::move(json);
   projectFile_ = document_->fileName();
   const QString previous = currentDataset();
+  QString settingsError;  // studies.kinematics cannot be read
   {
     const QSignalBlocker blocker(combo_);
     combo_->clear();
@@ -314,13 +315,18 @@ void KinematicsPage::refresh() {
     if (keep < 0) {
       try {
         keep = combo_->findData(QString::fromStdString(kinematicStudySettings(document_->project()).dataset));
-      } catch (const std::exception&) {
-        keep = -1;
+      } catch (const std::exception& e) {
+        keep = -1;  // the first circular test, and the page says why (below)
+        settingsError = QString::fromStdString(e.what());
       }
     }
     combo_->setCurrentIndex(keep >= 0 ? keep : 0);
   }
   onDatasetChosen(combo_->currentIndex());
+  // identify() reads the same settings and fails with their message; should it not, say it here.
+  if (!settingsError.isEmpty() && error_.isEmpty())
+    info_->setText(info_->text() + QLatin1Char('\n') +
+                   tr("The kinematics study's settings are invalid: %1").arg(settingsError));
 }
 
 void KinematicsPage::onDatasetChosen(int) {

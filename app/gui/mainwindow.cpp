@@ -17,7 +17,9 @@
 #include <QStackedWidget>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTimer>
+#include <QUndoGroup>
 #include <QUndoStack>
 #include <QUrl>
 #include <QVBoxLayout>
@@ -87,6 +89,16 @@ MainWindow::MainWindow(QWidget* parent)
   navigatorDock_->setWidget(navigator_);
   navigator_->setMinimumWidth(220);
   addDockWidget(Qt::LeftDockWidgetArea, navigatorDock_);
+
+  // Before the menus: Edit › Undo / Redo are the group's actions.
+  undoGroup_ = new QUndoGroup(this);
+  undoGroup_->addStack(document_->undoStack());
+  auto* setup = qobject_cast<SetupPage*>(page(Page::Setup));
+  undoGroup_->addStack(setup->modelEditor()->undoStack());
+  connect(pages_, &QStackedWidget::currentChanged, this, &MainWindow::updateActiveUndoStack);
+  connect(setup->tabs(), &QTabWidget::currentChanged, this, &MainWindow::updateActiveUndoStack);
+  connect(setup->modelEditor()->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+  updateActiveUndoStack();
 
   createActions();
   createMenus();
@@ -174,18 +186,25 @@ void MainWindow::createMenus() {
   quit->setMenuRole(QAction::QuitRole);
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-  QUndoStack* stack = document_->undoStack();
-  QAction* undo = stack->createUndoAction(this, tr("&Undo"));
+  // The active document's stack (updateActiveUndoStack): the graph's edits on the setup page's
+  // Graph tab, the project's everywhere else.
+  QAction* undo = undoGroup_->createUndoAction(this, tr("&Undo"));
+  undo->setObjectName(QStringLiteral("editUndo"));
   undo->setShortcuts(QKeySequence::Undo);
-  QAction* redo = stack->createRedoAction(this, tr("&Redo"));
+  QAction* redo = undoGroup_->createRedoAction(this, tr("&Redo"));
+  redo->setObjectName(QStringLiteral("editRedo"));
   redo->setShortcuts(QKeySequence::Redo);
   // The whole text is translatable (word order differs between languages), not just a prefix.
-  connect(stack, &QUndoStack::undoTextChanged, undo, [undo](const QString& text) {
+  const auto undoText = [undo](const QString& text) {
     undo->setText(text.isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(text));
-  });
-  connect(stack, &QUndoStack::redoTextChanged, redo, [redo](const QString& text) {
+  };
+  const auto redoText = [redo](const QString& text) {
     redo->setText(text.isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(text));
-  });
+  };
+  connect(undoGroup_, &QUndoGroup::undoTextChanged, undo, undoText);
+  connect(undoGroup_, &QUndoGroup::redoTextChanged, redo, redoText);
+  undoText(undoGroup_->activeStack()->undoText());
+  redoText(undoGroup_->activeStack()->redoText());
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();
@@ -216,7 +235,23 @@ void MainWindow::showPage(Page page) {
 
 void MainWindow::updateTitle() {
   setWindowTitle(tr("%1[*] — Metrofit").arg(document_->displayName()));
-  setWindowModified(document_->isModified());
+  auto* setup = qobject_cast<SetupPage*>(page(Page::Setup));
+  setWindowModified(document_->isModified() || (setup && setup->modelEditor()->isModified()));
+}
+
+void MainWindow::updateActiveUndoStack() {
+  auto* setup = qobject_cast<SetupPage*>(page(Page::Setup));
+  const bool graph = setup && pages_->currentWidget() == setup && setup->tabs()->currentIndex() == 0;
+  undoGroup_->setActiveStack(graph ? setup->modelEditor()->undoStack() : document_->undoStack());
+}
+
+bool MainWindow::saveSetupModel() {
+  auto* setup = qobject_cast<SetupPage*>(page(Page::Setup));
+  if (!setup || !setup->modelEditor()->isModified()) return true;
+  QString error;
+  if (setup->saveModel(&error)) return true;
+  showError(tr("Cannot save the setup model"), error);
+  return false;
 }
 
 void MainWindow::updateRecentMenu() {
@@ -274,13 +309,7 @@ bool MainWindow::maybeSave() {
   if (!document_->isModified() && !modelEdited) return true;
   switch (unsavedDecider_ ? unsavedDecider_() : askUnsavedChanges()) {
     case UnsavedChoice::Save:
-      if (modelEdited) {
-        QString error;
-        if (!setup->saveModel(&error)) {
-          showError(tr("Cannot save the setup model"), error);
-          return false;
-        }
-      }
+      if (!saveSetupModel()) return false;
       return !document_->isModified() || save();
     case UnsavedChoice::Discard:
       autosave_->removeWritten();
@@ -361,6 +390,7 @@ bool MainWindow::save() {
     showError(tr("Cannot save the project"), QString::fromStdString(e.what()));
     return false;
   }
+  if (!saveSetupModel()) return false;
   fileChangedBar_->hide();
   statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->fileName())),
                            kStatusTimeoutMs);
@@ -381,6 +411,7 @@ bool MainWindow::saveAs() {
     showError(tr("Cannot save the project"), QString::fromStdString(e.what()));
     return false;
   }
+  if (!saveSetupModel()) return false;
   fileChangedBar_->hide();
   addRecentFile(document_->fileName());
   statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->fileName())),

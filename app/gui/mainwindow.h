@@ -12,6 +12,7 @@ class QAction;
 class QDockWidget;
 class QMenu;
 class QStackedWidget;
+class QUndoGroup;
 
 namespace metrofit {
 class Autosave;
@@ -67,6 +68,10 @@ class MainWindow : public QMainWindow {
   void createActions();
   void createMenus();
   void updateTitle();
+  /// The Edit menu's stack: the setup model's while the setup page shows its graph, else the project's.
+  void updateActiveUndoStack();
+  /// Saves the setup model when it has unsaved edits (Save writes both documents); false on failure.
+  bool saveSetupModel();
   void updateRecentMenu();
   void showError(const QString& title, const QString& message);
   /// Asks to save unsaved changes; false when the user cancelled (or saving failed).
@@ -96,6 +101,9 @@ class MainWindow : public QMainWindow {
   UnsavedDecider unsavedDecider_;
   QMenu* recentMenu_ = nullptr;
   QAction* exportAction_ = nullptr;
+  /// One undo stack per document (the project, the setup model file); Edit › Undo / Redo act on the
+  /// active one.
+  QUndoGroup* undoGroup_ = nullptr;
   std::array<QAction*, kPageCount> pageActions_{};
 };
 

@@ -19,7 +19,6 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -296,7 +295,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
       curve_(nullptr),
       table_(nullptr),
       message_(new QLabel(this)),
-      watcher_(new QFutureWatcher<void>(this)) {
+      run_(new BackgroundRun<matching::MatchingStudyResult>(this)) {
   auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kMatching)), this);
   QFont titleFont = title->font();
   titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
@@ -485,17 +484,25 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   }
   connect(runButton_, &QPushButton::clicked, this, &MatchingPage::startRun);
   connect(cancelButton_, &QPushButton::clicked, this, &MatchingPage::cancelRun);
-  connect(watcher_, &QFutureWatcher<void>::finished, this, [this] {
+  // The observer's progress of the method running now (rough, SADE, GA-simplex, minimax, remeasure).
+  connect(run_, &BackgroundRunBase::progress, this, [this](double fraction, const QString&) {
+    progress_->setValue(static_cast<int>(fraction * 100.0));
+  });
+  const auto ended = [this] {
     setRunning(false);
-    if (pendingError_ && !pendingError_->isEmpty()) {
-      error_ = *pendingError_;
-      status_->setText(tr("Matching failed: %1").arg(error_));
-    } else if (pending_ && pending_->has_value()) {
-      result_ = std::move(**pending_);
+    if (std::optional<matching::MatchingStudyResult> r = run_->takeResult()) {
+      result_ = std::move(*r);
+      error_.clear();
       applyResult();
     }
-    pending_.reset();
-    pendingError_.reset();
+    emit finished();
+  };
+  connect(run_, &BackgroundRunBase::finished, this, ended);
+  connect(run_, &BackgroundRunBase::cancelled, this, ended);
+  connect(run_, &BackgroundRunBase::failed, this, [this](const QString& message) {
+    setRunning(false);
+    error_ = message;
+    status_->setText(tr("Matching failed: %1").arg(error_));
     emit finished();
   });
   connect(document_, &ProjectDocument::changed, this, &MatchingPage::refresh);
@@ -503,8 +510,8 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
 }
 
 MatchingPage::~MatchingPage() {
-  if (cancel_) cancel_->store(true);
-  watcher_->waitForFinished();
+  run_->cancel();
+  run_->waitForWorker();
 }
 
 QString MatchingPage::currentDataset() const {
@@ -517,8 +524,7 @@ void MatchingPage::selectDataset(const QString& id) {
 }
 
 bool MatchingPage::isRunning() const {
-  // pending_ lives from startRun until the finished handler took the result.
-  return pending_ != nullptr || watcher_->isRunning();
+  return run_->isRunning();
 }
 
 void MatchingPage::setMethod(MatchMethod method) {
@@ -547,18 +553,24 @@ void MatchingPage::refresh() {
       if (isRunning()) cancelRun();
       try {
         settings_ = matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
-      } catch (const std::exception&) {
-        settings_.options.applied = {};  // showPoints says what is wrong with them
+        settingsError_.clear();
+      } catch (const std::exception& e) {
+        // showPoints says what is wrong with the applied effects, the status line any other setting.
+        settings_.options.applied = {};
+        settingsError_ = QString::fromUtf8(e.what());
       }
       showPoints(combo_->currentIndex());
       return;
     }
     // Undo / redo of a settings edit: the controls follow the study.
     try {
-      if (!syncSettingsFromStudy(
-              matching::matchingStudySettings(document_->project(), projectFile_.toStdString())))
-        return;
-    } catch (const std::exception&) {
+      const matching::MatchingStudySettings settings =
+          matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
+      settingsError_.clear();
+      if (!syncSettingsFromStudy(settings)) return;
+    } catch (const std::exception& e) {
+      settingsError_ = QString::fromUtf8(e.what());
+      status_->setText(settingsErrorText());
       return;
     }
     if (result_) result_->primary = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
@@ -572,9 +584,10 @@ void MatchingPage::refresh() {
   QString previous = currentDataset();
   try {
     settings_ = matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
+    settingsError_.clear();
   } catch (const std::exception& e) {
     settings_ = {};
-    status_->setText(tr("The matching study's settings are invalid: %1").arg(QString::fromUtf8(e.what())));
+    settingsError_ = QString::fromUtf8(e.what());  // in the status line (showPoints)
   }
   if (newProject) {
     previous = QString::fromStdString(settings_.datasetId);
@@ -655,7 +668,8 @@ void MatchingPage::showPoints(int comboIndex) {
     }
     info_->setText(info);
     info_->setToolTip(QString::fromStdString(dataset.description));
-    status_->setText(tr("Not matched yet: press Run (Ctrl+R)."));
+    status_->setText(settingsError_.isEmpty() ? tr("Not matched yet: press Run (Ctrl+R).")
+                                              : settingsErrorText());
     runButton_->setEnabled(true);
     stack_->setCurrentWidget(content_);
   } catch (const std::exception& e) {
@@ -707,8 +721,9 @@ bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& 
   if (list.is_string()) {
     try {
       locks = matching::DofLocks::parse(list.get<std::string>(), "studies.matching.locks");
-    } catch (const std::exception&) {
-      locks = {};
+    } catch (const std::exception& e) {
+      locks = {};  // none locked, and the status line says why
+      settingsError_ = QString::fromUtf8(e.what());
     }
   }
   bool changed = false;
@@ -729,6 +744,10 @@ bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& 
     locks_[k]->setChecked(locks.locked[k]);
   }
   return changed;
+}
+
+QString MatchingPage::settingsErrorText() const {
+  return tr("The matching study's settings are invalid: %1").arg(settingsError_);
 }
 
 void MatchingPage::settingsChanged() {
@@ -763,37 +782,15 @@ void MatchingPage::startRun() {
     status_->setText(tr("Matching failed: %1").arg(error_));
     return;
   }
-  cancel_ = std::make_shared<std::atomic<bool>>(false);
-  pending_ = std::make_shared<std::optional<matching::MatchingStudyResult>>();
-  pendingError_ = std::make_shared<QString>();
   setRunning(true);
   status_->setText(tr("Matching …"));
   const ProbePointSet set = *rawSet_;  // runMatchingStudy adds the applied effects itself
-  auto cancel = cancel_;
-  auto pending = pending_;
-  auto pendingError = pendingError_;
-  QProgressBar* progress = progress_;
-  const long generations = matching::paperSadeOptions().maxGenerations;
-  watcher_->setFuture(QtConcurrent::run([set, options, cancel, pending, pendingError, progress, generations] {
-    FunctionObserver observer([&](const IterationSummary& s) {
-      if (s.iteration % 10 == 0) {
-        const int percent =
-            static_cast<int>(std::min<long>(100, 100 * s.iteration / std::max(1L, generations)));
-        QMetaObject::invokeMethod(
-            progress, [progress, percent] { progress->setValue(percent); }, Qt::QueuedConnection);
-      }
-      return cancel->load() ? ObserverDecision::Stop : ObserverDecision::Continue;
-    });
-    try {
-      *pending = matching::runMatchingStudy(set, options, &observer);
-    } catch (const std::exception& e) {
-      *pendingError = QString::fromUtf8(e.what());
-    }
-  }));
+  run_->start(
+      [set, options](RunObserver& observer) { return matching::runMatchingStudy(set, options, &observer); });
 }
 
 void MatchingPage::cancelRun() {
-  if (cancel_) cancel_->store(true);
+  run_->cancel();
 }
 
 void MatchingPage::setRunning(bool running) {
@@ -836,6 +833,7 @@ void MatchingPage::applyResult() {
                        .arg(QLocale().toString(primary.after.overall.rmseMm, 'f', 4),
                             QLocale().toString(primary.after.overall.maxAbsMm, 'f', 4),
                             cancelled ? tr(" Cancelled: the best posture found so far.") : QString()));
+  if (!settingsError_.isEmpty()) status_->setText(status_->text() + QLatin1Char('\n') + settingsErrorText());
   updateViews();
   fillMethodsTable();
   fillMachineTable();

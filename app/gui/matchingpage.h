@@ -13,10 +13,8 @@
 // surface_offset:<surface>, distortion) are part of the study's model (core/study/matching_study.h
 // studyModelSet): the views, the tables and the runs use the nominal points deformed by them, the
 // info line names them, and undoing Apply brings the declared rigid model back.
-#include <QFutureWatcher>
 #include <QWidget>
 #include <array>
-#include <atomic>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -24,6 +22,7 @@
 #include "core/matching/probe_points.h"
 #include "core/project/project.h"
 #include "core/study/matching_study.h"
+#include "widgets/common/backgroundrun.h"
 
 class QCheckBox;
 class QComboBox;
@@ -91,6 +90,8 @@ class MatchingPage : public QWidget {
   void refresh();
   void showPoints(int comboIndex);
   void settingsChanged();
+  /// The status line's text for settingsError_.
+  QString settingsErrorText() const;
   /// Writes one studies.matching value (undoable); `typing` lets consecutive edits merge.
   void writeStudyValue(const QString& key, const nlohmann::json& value, const QString& text, bool typing);
   /// Puts the study's settings (and studies.matching.locks) into the controls with their signals
@@ -131,6 +132,8 @@ class MatchingPage : public QWidget {
   QTableWidget* table_;
   QLabel* message_;
   QString error_;
+  /// Why studies.matching cannot be read (the page then uses the defaults and says so); empty when valid.
+  QString settingsError_;
   std::vector<DatasetRef> sets_;
   QString projectFile_;
 
@@ -141,10 +144,7 @@ class MatchingPage : public QWidget {
   matching::MatchingStudySettings settings_;
   bool writingStudy_ = false;  ///< the page's own edit of the document
   std::optional<matching::MatchingStudyResult> result_;
-  QFutureWatcher<void>* watcher_;
-  std::shared_ptr<std::atomic<bool>> cancel_;
-  std::shared_ptr<std::optional<matching::MatchingStudyResult>> pending_;
-  std::shared_ptr<QString> pendingError_;
+  BackgroundRun<matching::MatchingStudyResult>* run_;
 };
 
 }  // namespace metrofit

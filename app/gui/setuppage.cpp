@@ -3,7 +3,6 @@
 #include <QAction>
 #include <QComboBox>
 #include <QFileInfo>
-#include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -17,8 +16,6 @@
 #include <QToolBar>
 #include <QUndoStack>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
-#include <atomic>
 #include <exception>
 #include <mutex>
 
@@ -31,6 +28,7 @@
 #include "core/setup/methods.h"
 #include "core/setup/objective.h"
 #include "core/study/setup_study.h"
+#include "widgets/common/backgroundrun.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
 #include "widgets/setup/setupcharts.h"
@@ -59,16 +57,10 @@ std::string appliedKeyOf(const Project& project) {
 
 constexpr int kProgressSteps = 1000;
 
-struct RunResult {
-  SetupRunOutcome outcome;
-  QString error;
-};
-
-/// What the worker shares with the GUI thread while a run goes on.
+/// The convergence points the worker collects for the chart while a run goes on.
 struct LiveTrace {
   std::mutex mutex;
   std::vector<SetupTracePoint> pending;
-  std::atomic<double> progress{0.0};
 };
 
 }  // namespace
@@ -88,8 +80,7 @@ struct SetupPage::Impl {
   std::optional<setup::SetupInstance> instance;
   std::optional<SetupRunOutcome> exact;
   // The running run.
-  QFutureWatcher<RunResult> watcher;
-  std::shared_ptr<CancelToken> token;
+  BackgroundRun<SetupRunOutcome> runner;
   std::shared_ptr<LiveTrace> live;
   std::optional<setup::SetupInstance> runInstance;
   int chartRun = -1;
@@ -256,7 +247,13 @@ SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
 
   d->flush.setInterval(kFlushMs);
   connect(&d->flush, &QTimer::timeout, this, &SetupPage::flushTrace);
-  connect(&d->watcher, &QFutureWatcher<RunResult>::finished, this, &SetupPage::onRunFinished);
+  connect(&d->runner, &BackgroundRunBase::progress, this, [this](double fraction, const QString&) {
+    progress_->setValue(static_cast<int>(fraction * kProgressSteps));
+  });
+  connect(&d->runner, &BackgroundRunBase::finished, this, [this] { onRunFinished({}); });
+  connect(&d->runner, &BackgroundRunBase::cancelled, this, [this] { onRunFinished({}); });
+  connect(&d->runner, &BackgroundRunBase::failed, this,
+          [this](const QString& message) { onRunFinished(message); });
   connect(editor_, &SetupModelEditor::modelChanged, this, &SetupPage::onModelEdited);
   connect(editor_->undoStack(), &QUndoStack::cleanChanged, this, [this] {
     updateInfo();
@@ -284,8 +281,9 @@ SetupPage::~SetupPage() {
     disconnect(editor_, nullptr, d->extras, nullptr);
     disconnect(editor_->undoStack(), nullptr, d->extras, nullptr);
   }
-  if (d->token) d->token->cancel();
-  d->watcher.waitForFinished();
+  d->runner.disconnect(this);
+  d->runner.cancel();
+  d->runner.waitForWorker();
   // The editor (a child) outlives this object's members: no more calls back into them.
   disconnect(editor_, nullptr, this, nullptr);
   disconnect(editor_->undoStack(), nullptr, this, nullptr);
@@ -562,7 +560,7 @@ bool SetupPage::ensureExact() {
 }
 
 bool SetupPage::isRunning() const {
-  return d->watcher.isRunning() || d->token != nullptr;
+  return d->runner.isRunning();
 }
 
 bool SetupPage::startRun() {
@@ -579,34 +577,25 @@ bool SetupPage::startRun() {
     emit runFinished();
     return true;
   }
-  d->token = std::make_shared<CancelToken>();
   d->live = std::make_shared<LiveTrace>();
   d->runInstance = d->instance;
   d->chartRun = convergence_->addRun(QString::fromStdString(method), seed);
   progress_->setValue(0);
   runStatus_->setText(tr("Running %1…").arg(setupRunLabel(QString::fromStdString(method), seed)));
-  updateControls();
-  d->flush.start();
   const setup::SetupInstance instance = *d->instance;
-  std::shared_ptr<CancelToken> token = d->token;
   std::shared_ptr<LiveTrace> live = d->live;
-  d->watcher.setFuture(QtConcurrent::run([instance, method, budget, seed, token, live]() -> RunResult {
-    RunResult out;
+  d->runner.start([instance, method, budget, seed, live](RunObserver& run) {
     FunctionObserver observer([&](const IterationSummary& s) {
       {
         const std::lock_guard<std::mutex> lock(live->mutex);
         live->pending.push_back(tracePoint(s));
       }
-      live->progress.store(s.progress);
-      return token->isCancelled() ? ObserverDecision::Stop : ObserverDecision::Continue;
+      return run.onIteration(s);
     });
-    try {
-      out.outcome = runSetupMethod(instance, method, budget, seed, &observer);
-    } catch (const std::exception& e) {
-      out.error = QString::fromStdString(e.what());
-    }
-    return out;
-  }));
+    return runSetupMethod(instance, method, budget, seed, &observer);
+  });
+  updateControls();
+  d->flush.start();
   return true;
 }
 
@@ -631,13 +620,11 @@ bool SetupPage::runSynchronously(const QString& method, long budget, unsigned lo
 }
 
 void SetupPage::cancelRun() {
-  if (d->token) d->token->cancel();
+  d->runner.cancel();
 }
 
 void SetupPage::waitForRun() {
-  if (!d->token) return;
-  d->watcher.waitForFinished();
-  onRunFinished();
+  d->runner.waitForFinished();
 }
 
 void SetupPage::flushTrace() {
@@ -648,21 +635,17 @@ void SetupPage::flushTrace() {
     points.swap(d->live->pending);
   }
   convergence_->appendPoints(d->chartRun, points);
-  const double p = d->live->progress.load();
-  if (p >= 0.0) progress_->setValue(static_cast<int>(p * kProgressSteps));
 }
 
-void SetupPage::onRunFinished() {
-  if (!d->token) return;  // handled already (waitForRun and the watcher's signal)
+void SetupPage::onRunFinished(const QString& error) {
   d->flush.stop();
   flushTrace();
-  const RunResult r = d->watcher.result();
-  d->token.reset();
   d->live.reset();
-  if (!r.error.isEmpty()) {
-    runStatus_->setText(tr("The run failed: %1").arg(r.error));
+  const std::optional<SetupRunOutcome> outcome = d->runner.takeResult();
+  if (!error.isEmpty() || !outcome) {
+    runStatus_->setText(tr("The run failed: %1").arg(error));
   } else {
-    const SetupRunOutcome& o = r.outcome;
+    const SetupRunOutcome& o = *outcome;
     const bool cancelled = o.termination == Termination::Cancelled;
     progress_->setValue(cancelled ? progress_->value() : kProgressSteps);
     QString text = tr("%1: f1 %2 mm after %3 solutions in %4 ms")

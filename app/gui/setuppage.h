@@ -103,7 +103,7 @@ class SetupPage : public QWidget {
   void refresh();
   void onModelEdited();
   void flushTrace();
-  void onRunFinished();
+  void onRunFinished(const QString& error);
   void showOutcome(const SetupRunOutcome& outcome);
   void updateInfo();
   /// d->measurements from the raw report and studies.diagnosis.setup.applied.

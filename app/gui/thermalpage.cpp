@@ -9,7 +9,6 @@
 #include <QTabWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 #include <exception>
 
 #include "app/gui/notesedit.h"
@@ -53,7 +52,7 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
       hysteresis_(new ThermalHysteresisView(this)),
       models_(new ThermalModelView(this)),
       message_(new QLabel(this)),
-      modularWatcher_(new QFutureWatcher<ModularRun>(this)) {
+      modular_(new BackgroundRun<ModularRun>(this)) {
   auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kThermal)), this);
   QFont titleFont = title->font();
   titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
@@ -106,13 +105,20 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
     settings_[logId_] = models_->settings();
     writeStudySettings(settings_[logId_]);
   });
-  connect(modularWatcher_, &QFutureWatcher<ModularRun>::finished, this,
-          [this] { applyModular(modularWatcher_->result()); });
+  connect(modular_, &BackgroundRunBase::finished, this, [this] {
+    if (std::optional<ModularRun> run = modular_->takeResult()) applyModular(*run);
+  });
+  connect(modular_, &BackgroundRunBase::failed, this, [this](const QString& message) {
+    ModularRun run;
+    run.error = message;
+    applyModular(run);
+  });
   refresh();
 }
 
 ThermalPage::~ThermalPage() {
-  modularWatcher_->waitForFinished();
+  modular_->disconnect(this);
+  modular_->waitForWorker();
 }
 
 QString ThermalPage::currentDataset() const {
@@ -280,10 +286,8 @@ void ThermalPage::updateHysteresis() {
 
 void ThermalPage::updateModular(bool now) {
   if (modularDone_ && modularKey_ == projectFile_) return;
-  if (modularWatcher_->isRunning()) {
-    if (!now) return;
-    modularWatcher_->waitForFinished();
-    applyModular(modularWatcher_->result());
+  if (modular_->isRunning()) {
+    if (now) modular_->waitForFinished();  // applies it
     return;
   }
   const DatasetRef* z = document_->project().dataset(kModularZId);
@@ -296,25 +300,18 @@ void ThermalPage::updateModular(bool now) {
   const CsvReadOptions csv[3] = {z->csv, c->csv, h->csv};  // each log's dialect and mapping
   modularKey_ = projectFile_;
   modularDone_ = true;
-  auto job = [paths, csv]() -> ModularRun {
+  // A read error or a failed fit arrives as failed(message) and is shown in the info line.
+  modular_->setSynchronous(now);
+  modular_->start([paths, csv](RunObserver&) -> ModularRun {
     ModularRun run;
-    try {
-      const ThermalLog zl = readThermalLog(paths[0], 3, csv[0]);
-      const ThermalLog cl = readThermalLog(paths[1], 3, csv[1]);
-      run.testLog = std::make_shared<ThermalLog>(readThermalLog(paths[2], 3, csv[2]));
-      const ThermalModelSettings s = defaultThermalModelSettings(*run.testLog, nlohmann::json::object(), {});
-      run.result = std::make_shared<ModularComparison>(
-          compareModularModels({&zl, &cl}, *run.testLog, s.target, modularInputs(*run.testLog), 1));
-    } catch (const std::exception& e) {
-      run.error = QString::fromStdString(e.what());
-    }
+    const ThermalLog zl = readThermalLog(paths[0], 3, csv[0]);
+    const ThermalLog cl = readThermalLog(paths[1], 3, csv[1]);
+    run.testLog = std::make_shared<ThermalLog>(readThermalLog(paths[2], 3, csv[2]));
+    const ThermalModelSettings s = defaultThermalModelSettings(*run.testLog, nlohmann::json::object(), {});
+    run.result = std::make_shared<ModularComparison>(
+        compareModularModels({&zl, &cl}, *run.testLog, s.target, modularInputs(*run.testLog), 1));
     return run;
-  };
-  if (now) {
-    applyModular(job());
-  } else {
-    modularWatcher_->setFuture(QtConcurrent::run(job));
-  }
+  });
 }
 
 void ThermalPage::applyModular(const ModularRun& run) {

@@ -13,7 +13,6 @@
 // diagnosis page (studies.diagnosis.thermal.applied) are part of the model of the log the diagnosis
 // ran on (core/diagnose/thermal_applied.h): for that log the Models tab fits with them and says so,
 // other logs say where they apply; Apply and its undo change the settings (Train again to update).
-#include <QFutureWatcher>
 #include <QHash>
 #include <QWidget>
 #include <memory>
@@ -22,6 +21,7 @@
 #include "core/project/project.h"
 #include "core/study/thermal_comparison.h"
 #include "core/thermal/thermal_log.h"
+#include "widgets/common/backgroundrun.h"
 
 class QComboBox;
 class QLabel;
@@ -98,7 +98,7 @@ class ThermalPage : public QWidget {
     QString error;
     std::shared_ptr<ThermalLog> testLog;
   };
-  QFutureWatcher<ModularRun>* modularWatcher_;
+  BackgroundRun<ModularRun>* modular_;
   QString modularKey_;  ///< project file the modular result belongs to
   bool modularDone_ = false;
   void applyModular(const ModularRun& run);

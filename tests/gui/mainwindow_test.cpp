@@ -42,6 +42,8 @@
 #include "app/gui/setuppage.h"
 #include "app/gui/thermalpage.h"
 #include "core/matching/probe_points.h"
+#include "core/setup/model.h"
+#include "core/study/setup_study.h"
 #include "qtapp.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
@@ -278,6 +280,59 @@ TEST_F(MainWindowTest, PagesShowTheDemoData) {
   auto* diagnosis = qobject_cast<DiagnosisPage*>(window_.page(Page::Diagnosis));
   ASSERT_NE(diagnosis, nullptr);
   EXPECT_TRUE(diagnosis->message().isEmpty()) << diagnosis->message().toStdString();
+}
+
+TEST_F(MainWindowTest, EditUndoAndRedoActOnTheGraphEditsOnTheSetupGraphTab) {
+  window_.showPage(Page::Setup);
+  auto* setup = qobject_cast<SetupPage*>(window_.page(Page::Setup));
+  ASSERT_NE(setup, nullptr);
+  setup->tabs()->setCurrentIndex(0);  // Graph
+  SetupModelEditor* editor = setup->modelEditor();
+  ASSERT_FALSE(editor->model().arcs.empty());
+  const nlohmann::json before = setup::modelToJson(editor->model());
+  QAction* undo = window_.findChild<QAction*>(QStringLiteral("editUndo"));
+  QAction* redo = window_.findChild<QAction*>(QStringLiteral("editRedo"));
+  ASSERT_NE(undo, nullptr);
+  ASSERT_NE(redo, nullptr);
+  EXPECT_EQ(undo, actionWithShortcut(window_, QKeySequence(QKeySequence::Undo)));
+  ASSERT_FALSE(window_.isWindowModified());
+  EXPECT_FALSE(undo->isEnabled());
+
+  ASSERT_TRUE(editor->setArcWeight(0, -editor->model().arcs[0].weight));
+  const nlohmann::json edited = setup::modelToJson(editor->model());
+  ASSERT_NE(edited, before);
+  EXPECT_TRUE(window_.isWindowModified()) << "the title shows the unsaved graph edit";
+  EXPECT_FALSE(window_.document()->isModified()) << "the project file itself is unchanged";
+  ASSERT_TRUE(undo->isEnabled());
+  EXPECT_TRUE(undo->text().contains(editor->undoStack()->undoText())) << undo->text().toStdString();
+
+  undo->trigger();
+  EXPECT_EQ(setup::modelToJson(editor->model()), before);
+  EXPECT_FALSE(window_.isWindowModified()) << "back at the saved model";
+  ASSERT_TRUE(redo->isEnabled());
+  redo->trigger();
+  EXPECT_EQ(setup::modelToJson(editor->model()), edited);
+  EXPECT_TRUE(window_.isWindowModified());
+
+  // Elsewhere Edit › Undo is the project's again (nothing to undo there), and back on the graph the
+  // model's.
+  window_.showPage(Page::Overview);
+  EXPECT_FALSE(undo->isEnabled());
+  window_.showPage(Page::Setup);
+  EXPECT_TRUE(undo->isEnabled());
+  setup->tabs()->setCurrentIndex(1);  // Run: its settings are the project's
+  EXPECT_FALSE(undo->isEnabled());
+  setup->tabs()->setCurrentIndex(0);
+
+  // Save writes the model file too: clean title, and the file has the edit.
+  QAction* save = actionWithShortcut(window_, QKeySequence(QKeySequence::Save));
+  ASSERT_NE(save, nullptr);
+  save->trigger();
+  EXPECT_FALSE(window_.isWindowModified());
+  EXPECT_FALSE(editor->isModified());
+  const SetupStudyFiles files =
+      setupStudyFiles(window_.document()->project(), window_.document()->fileName().toStdString());
+  EXPECT_EQ(setup::modelToJson(setup::readModel(files.modelPath)), edited);
 }
 
 TEST_F(MainWindowTest, The3DViewShowsItsFallbackOffscreen) {

@@ -242,16 +242,21 @@ void writeSetupSection(ReportPainter& out, const ReportContext& context) {
   corrections.widths = {1.0, 1.2, 0.8, 1.0, 1.0, 1.0};
   corrections.alignment = {Qt::AlignLeft,  Qt::AlignLeft,  Qt::AlignRight,
                            Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
+  QStringList registerErrors;  // a datum without a register number: "—" in the table, the reason below it
   for (std::size_t i = 0; i < model.setup.size(); ++i) {
     QString reg = QStringLiteral("—");
     try {
       reg = QString::number(setup::registerOf(model, i));
-    } catch (const std::exception&) {
+    } catch (const std::exception& e) {
+      registerErrors << QString::fromStdString(e.what());
     }
     corrections.rows.push_back({QString::fromStdString(model.setup[i].id), kindTitle(model.setup[i].kind),
                                 reg, mm(exact.x[i], 3), mm(cripso.x[i], 3), mm(pso.x[i], 3)});
   }
   out.table(corrections);
+  for (const QString& error : registerErrors)
+    out.paragraph(
+        ReportText::tr("Error in the setup model of the study %1: %2").arg(setupSectionTitle(), error));
 
   // ---- margins ----
   const double rowHeight = out.mm(4.4);

@@ -164,13 +164,16 @@ void SetupResultsView::setResult(const setup::Model& model, const setup::SetupIn
     const int row = static_cast<int>(i);
     table_->setItem(row, ColId, new QTableWidgetItem(QString::fromStdString(model.setup[i].id)));
     table_->setItem(row, ColKind, new QTableWidgetItem(kindTitle(model.setup[i].kind)));
-    QString reg;
+    QString reg, regError;
     try {
       reg = QString::number(setup::registerOf(model, i));
-    } catch (const std::exception&) {
-      reg = QStringLiteral("—");
+    } catch (const std::exception& e) {
+      reg = QStringLiteral("—");  // the reason in the cell's tooltip and under the summary
+      regError = QString::fromStdString(e.what());
+      summary_->setText(summary_->text() + QLatin1Char('\n') + regError);
     }
     auto* r = new QTableWidgetItem(reg);
+    r->setToolTip(regError);
     r->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     table_->setItem(row, ColRegister, r);
     const double x = std::abs(outcome.x[i]) < 5e-10 ? 0.0 : outcome.x[i];

@@ -3,24 +3,22 @@
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
-#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
-#include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
-#include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
+#include <cmath>
 #include <exception>
 #include <map>
 
 #include "core/setup/exact.h"
 #include "core/study/setup_validation.h"
+#include "widgets/common/backgroundrun.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/setup/setupcharts.h"
 
@@ -30,7 +28,14 @@ namespace {
 struct Outcome {
   setup::ValidationResult result;
   setup::ValidationSummary summary;
-  QString error;
+};
+
+/// Releases the worker thread's exact solver however the job ends.
+struct ReleaseExactSolver {
+  ReleaseExactSolver() = default;
+  ReleaseExactSolver(const ReleaseExactSolver&) = delete;
+  ReleaseExactSolver& operator=(const ReleaseExactSolver&) = delete;
+  ~ReleaseExactSolver() { setup::releaseExactSolverThread(); }
 };
 }  // namespace
 
@@ -50,8 +55,7 @@ struct SetupValidationView::Impl {
   QProgressBar* progress = nullptr;
   QLabel* summary = nullptr;
   QChartView* chartView = nullptr;
-  QFutureWatcher<Outcome> watcher;
-  std::shared_ptr<CancelToken> token;
+  BackgroundRun<Outcome> runner;
   std::unique_ptr<setup::ValidationResult> result;
 };
 
@@ -142,12 +146,19 @@ SetupValidationView::SetupValidationView(QWidget* parent) : QWidget(parent), d(s
 
   connect(d->run, &QPushButton::clicked, this, [this] { start(); });
   connect(d->cancel, &QPushButton::clicked, this, &SetupValidationView::cancel);
-  connect(&d->watcher, &QFutureWatcher<Outcome>::finished, this, &SetupValidationView::onFinished);
+  connect(&d->runner, &BackgroundRunBase::progress, this, [this](double fraction, const QString&) {
+    d->progress->setValue(static_cast<int>(std::lround(fraction * d->progress->maximum())));
+  });
+  connect(&d->runner, &BackgroundRunBase::finished, this, [this] { onFinished({}); });
+  connect(&d->runner, &BackgroundRunBase::cancelled, this, [this] { onFinished({}); });
+  connect(&d->runner, &BackgroundRunBase::failed, this,
+          [this](const QString& message) { onFinished(message); });
 }
 
 SetupValidationView::~SetupValidationView() {
-  cancel();
-  d->watcher.waitForFinished();
+  d->runner.disconnect(this);
+  d->runner.cancel();
+  d->runner.waitForWorker();
 }
 
 void SetupValidationView::setModel(const setup::Model& model) {
@@ -185,7 +196,7 @@ int SetupValidationView::trials() const {
 }
 
 bool SetupValidationView::isRunning() const {
-  return d->watcher.isRunning();
+  return d->runner.isRunning();
 }
 
 QProgressBar* SetupValidationView::progressBar() const {
@@ -216,56 +227,43 @@ bool SetupValidationView::start() {
     d->summary->setText(tr("Choose at least one method."));
     return false;
   }
-  d->token = std::make_shared<CancelToken>();
   d->progress->setRange(0, static_cast<int>(options.sets));
   d->progress->setValue(0);
   d->run->setEnabled(false);
   d->cancel->setEnabled(true);
   d->summary->setText(tr("Running %1 sets x %2 trials…").arg(options.sets).arg(options.trials));
-  QPointer<QProgressBar> bar = d->progress;
   const setup::Model model = d->model;
-  std::shared_ptr<CancelToken> token = d->token;
-  d->watcher.setFuture(QtConcurrent::run([model, options, token, bar]() -> Outcome {
+  d->runner.start([model, options](RunObserver& run) {
+    const ReleaseExactSolver release;
     Outcome out;
-    try {
-      out.result = setup::runValidation(model, options, token.get(), [bar](std::size_t done, std::size_t) {
-        QMetaObject::invokeMethod(
-            bar.data(),
-            [bar, done] {
-              if (bar) bar->setValue(static_cast<int>(done));
-            },
-            Qt::QueuedConnection);
-      });
-      out.summary = setup::summarizeValidation(model, options, out.result);
-    } catch (const std::exception& e) {
-      out.error = QString::fromStdString(e.what());
-    }
-    setup::releaseExactSolverThread();
+    out.result =
+        setup::runValidation(model, options, &run.cancelToken(), [&run](std::size_t done, std::size_t total) {
+          run.report(total == 0 ? 1.0 : static_cast<double>(done) / static_cast<double>(total));
+        });
+    out.summary = setup::summarizeValidation(model, options, out.result);
     return out;
-  }));
+  });
   return true;
 }
 
 void SetupValidationView::cancel() {
-  if (d->token) d->token->cancel();
+  d->runner.cancel();
 }
 
 void SetupValidationView::waitForFinished() {
-  d->watcher.waitForFinished();
-  QCoreApplication::processEvents();
-  if (d->run->isEnabled() == false && !isRunning() && d->cancel->isEnabled()) onFinished();
+  d->runner.waitForFinished();
 }
 
-void SetupValidationView::onFinished() {
-  if (!d->cancel->isEnabled()) return;  // already handled
+void SetupValidationView::onFinished(const QString& error) {
   d->run->setEnabled(d->hasModel);
   d->cancel->setEnabled(false);
-  const Outcome outcome = d->watcher.result();
-  if (!outcome.error.isEmpty()) {
-    d->summary->setText(tr("The validation failed: %1").arg(outcome.error));
+  const std::optional<Outcome> taken = d->runner.takeResult();
+  if (!error.isEmpty() || !taken) {
+    d->summary->setText(tr("The validation failed: %1").arg(error));
     emit finished();
     return;
   }
+  const Outcome& outcome = *taken;
   d->result = std::make_unique<setup::ValidationResult>(outcome.result);
   const setup::ValidationResult& r = *d->result;
   d->progress->setValue(static_cast<int>(r.sets.size()));

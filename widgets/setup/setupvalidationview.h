@@ -55,7 +55,8 @@ class SetupValidationView : public QWidget {
  private:
   struct Impl;
   std::unique_ptr<Impl> d;
-  void onFinished();
+  /// The run ended; error is empty for a finished or cancelled run.
+  void onFinished(const QString& error);
 };
 
 }  // namespace metrofit

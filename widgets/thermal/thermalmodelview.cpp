@@ -9,7 +9,6 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
-#include <QFutureWatcher>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -26,7 +25,6 @@
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +36,7 @@
 #include "core/diagnose/thermal_applied.h"
 #include "core/study/thermal_comparison.h"
 #include "core/thermal/thermal_log.h"
+#include "widgets/common/backgroundrun.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/thermal/thermalcharts.h"
@@ -47,11 +46,6 @@ namespace metrofit {
 namespace {
 
 constexpr int kProgressMax = 1000;
-
-struct TrainResult {
-  std::shared_ptr<ThermalComparison> comparison;
-  QString error;
-};
 
 QString number(double v, int decimals) {
   if (!std::isfinite(v)) return QStringLiteral("—");
@@ -154,8 +148,7 @@ struct ThermalModelView::Impl {
   QChartView* modularChart = nullptr;
 
   // Training state.
-  QFutureWatcher<TrainResult>* watcher = nullptr;
-  std::shared_ptr<CancelToken> token;
+  BackgroundRun<std::shared_ptr<ThermalComparison>>* run = nullptr;
   mutable std::mutex liveMutex;
   std::vector<double> liveBest;  ///< best fitness per PSO iteration, appended by the worker
   int liveCount = 0;
@@ -410,30 +403,19 @@ struct ThermalModelView::Impl {
     replaceChart(modularChart, makeModularChart(modularLog, m, o));
   }
 
-  /// The worker's observer: records the PSO trace, forwards progress, honours Cancel.
-  ThermalComparisonObserver observer(const std::shared_ptr<CancelToken>& cancel) {
-    return [this, cancel](int model, const IterationSummary& s) {
+  /// The worker's observer: records the PSO trace, reports progress (the first model to 80 %, the
+  /// second at 80 %, the third from 85 %) with the model's name, honours Cancel.
+  ThermalComparisonObserver observer(RunObserver& run) {
+    return [this, &run](int model, const IterationSummary& s) {
       if (model == 0) {
         const std::lock_guard lock(liveMutex);
         liveBest.push_back(s.best);
         ++liveCount;
       }
-      double fraction = s.progress >= 0.0 ? s.progress : 0.0;
-      const int value = model == 0   ? static_cast<int>(800 * fraction)
-                        : model == 1 ? 800
-                                     : 850 + static_cast<int>(150 * fraction);
-      if (model == 0 || s.iteration % 10 == 0) {
-        QMetaObject::invokeMethod(
-            q,
-            [this, value, model] {
-              progress->setValue(value);
-              progress->setFormat(
-                  ThermalModelView::tr("%1: %p%").arg(thermalModelName(kThermalModelOrder[model])));
-              if (model == 0 && !refresh->isActive()) refresh->start();
-            },
-            Qt::QueuedConnection);
-      }
-      return cancel->isCancelled() ? ObserverDecision::Stop : ObserverDecision::Continue;
+      const double fraction = s.progress >= 0.0 ? s.progress : 0.0;
+      const double overall = model == 0 ? 0.8 * fraction : model == 1 ? 0.8 : 0.85 + 0.15 * fraction;
+      run.report(overall, ThermalModelView::tr("%1: %p%").arg(thermalModelName(kThermalModelOrder[model])));
+      return run.isCancelled() ? ObserverDecision::Stop : ObserverDecision::Continue;
     };
   }
 };
@@ -586,18 +568,17 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   layout->addWidget(controls);
   layout->addWidget(d->resultTabs, 1);
 
-  d->watcher = new QFutureWatcher<TrainResult>(this);
-  connect(d->watcher, &QFutureWatcher<TrainResult>::finished, this, [this] {
-    const TrainResult r = d->watcher->result();
+  d->run = new BackgroundRun<std::shared_ptr<ThermalComparison>>(this);
+  connect(d->run, &BackgroundRunBase::progress, this, [this](double fraction, const QString& text) {
+    d->progress->setValue(static_cast<int>(fraction * kProgressMax));
+    if (!text.isEmpty()) d->progress->setFormat(text);
+    if (!d->refresh->isActive()) d->refresh->start();
+  });
+  const auto ended = [this] {
     d->setRunning(false);
     d->refresh->stop();
-    if (!r.error.isEmpty()) {
-      d->status->setText(tr("Training failed: %1").arg(r.error));
-      d->progress->setValue(0);
-      emit trainingFinished(false);
-      return;
-    }
-    if (r.comparison->cancelled) {
+    const std::optional<std::shared_ptr<ThermalComparison>> r = d->run->takeResult();
+    if (!r || !*r || (*r)->cancelled) {
       d->updateTrainingChart();
       d->status->setText(
           tr("Training cancelled after %1 PSO iterations; the results shown are the previous ones.")
@@ -606,8 +587,17 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
       emit trainingFinished(false);
       return;
     }
-    d->show(r.comparison);
+    d->show(*r);
     emit trainingFinished(true);
+  };
+  connect(d->run, &BackgroundRunBase::finished, this, ended);
+  connect(d->run, &BackgroundRunBase::cancelled, this, ended);
+  connect(d->run, &BackgroundRunBase::failed, this, [this](const QString& message) {
+    d->setRunning(false);
+    d->refresh->stop();
+    d->status->setText(tr("Training failed: %1").arg(message));
+    d->progress->setValue(0);
+    emit trainingFinished(false);
   });
 
   auto edited = [this] {
@@ -634,14 +624,15 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
 }
 
 ThermalModelView::~ThermalModelView() {
-  if (d->token) d->token->cancel();
-  d->watcher->waitForFinished();
+  d->run->disconnect(this);
+  d->run->cancel();
+  d->run->waitForWorker();
 }
 
 void ThermalModelView::setLog(const ThermalLog& log, const ThermalModelSettings& settings) {
   if (isRunning()) {
-    d->token->cancel();
-    d->watcher->waitForFinished();
+    d->run->cancel();
+    d->run->waitForFinished();
   }
   d->log = log;
   {
@@ -696,21 +687,14 @@ void ThermalModelView::train() {
     d->liveCount = 0;
   }
   d->updateTrainingChart();
-  d->token = std::make_shared<CancelToken>();
   d->setRunning(true);
   d->progress->setValue(0);
   d->status->setText(tr("Training…"));
-  const ThermalComparisonObserver observer = d->observer(d->token);
   const ThermalLog log = d->log;
-  d->watcher->setFuture(QtConcurrent::run([log, s, observer]() -> TrainResult {
-    TrainResult r;
-    try {
-      r.comparison = std::make_shared<ThermalComparison>(compareThermalModels(log, s, observer));
-    } catch (const std::exception& e) {
-      r.error = QString::fromStdString(e.what());
-    }
-    return r;
-  }));
+  Impl* impl = d.get();  // outlives the run: the destructor waits for it
+  d->run->start([impl, log, s](RunObserver& run) {
+    return std::make_shared<ThermalComparison>(compareThermalModels(log, s, impl->observer(run)));
+  });
 }
 
 bool ThermalModelView::trainNow() {
@@ -732,11 +716,11 @@ bool ThermalModelView::trainNow() {
 }
 
 void ThermalModelView::cancel() {
-  if (d->token) d->token->cancel();
+  d->run->cancel();
 }
 
 bool ThermalModelView::isRunning() const {
-  return d->watcher->isRunning();
+  return d->run->isRunning();
 }
 
 const ThermalComparison* ThermalModelView::comparison() const {
