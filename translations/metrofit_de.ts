@@ -1422,56 +1422,56 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+6"/>
-        <location line="+102"/>
+        <location line="+103"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="-101"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+100"/>
+        <location line="+101"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-98"/>
+        <location line="-99"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+98"/>
+        <location line="+99"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Der X-Antrieb bewegt sich entlang (cos a, sin a); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-95"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Der Y-Antrieb bewegt sich entlang (-sin b, cos b); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+94"/>
+        <location line="+95"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-93"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Der Winkel zwischen den Achsen beträgt 90° + (b − a)</translation>
     </message>
@@ -1552,11 +1552,11 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+3"/>
-        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt; (seed 002): the offset angle of the regression line of the edge along X is the X actuator&apos;s angle a, minus that of the edge along Y is b (Eq. 9), the intercepts give the origin; %1.</source>
-        <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt; (Seed 002): Der Versatzwinkel der Regressionsgeraden der Kante entlang X ist der Winkel a des X-Antriebs, der negative Versatzwinkel der Kante entlang Y ist b (Gl. 9), die Achsenabschnitte ergeben den Ursprung; %1.</translation>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt; (IEEE Access, kinematic compensation algorithm): the offset angle of the regression line of the edge along X is the X actuator&apos;s angle a, minus that of the edge along Y is b (Eq. 9), the intercepts give the origin; %1.</source>
+        <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt; (IEEE Access, Algorithmus zur kinematischen Kompensation): Der Versatzwinkel der Regressionsgeraden der Kante entlang X ist der Winkel a des X-Antriebs, der negative Versatzwinkel der Kante entlang Y ist b (Gl. 9), die Achsenabschnitte ergeben den Ursprung; %1.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>offset angle, edge along X (°)</source>
         <translation>Versatzwinkel, Kante entlang X (°)</translation>
     </message>
@@ -2023,7 +2023,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingCurveView</name>
     <message>
-        <location filename="../widgets/pointview/matchingcurveview.cpp" line="+92"/>
+        <location filename="../widgets/matching/matchingcurveview.cpp" line="+92"/>
         <source>generation</source>
         <translation>Generation</translation>
     </message>
@@ -2666,7 +2666,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/pointview/pointsetview.cpp" line="+323"/>
+        <location filename="../widgets/matching/pointsetview.cpp" line="+323"/>
         <source>deviation
 (mm)</source>
         <translation>Abw.
@@ -3090,12 +3090,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
-        <location line="+223"/>
+        <location line="+224"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-224"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -3111,36 +3111,36 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+226"/>
+        <location line="+227"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-225"/>
+        <location line="+227"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+225"/>
+        <location line="-225"/>
+        <location line="+226"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+225"/>
+        <location line="-224"/>
+        <location line="+226"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+225"/>
+        <location line="-224"/>
+        <location line="+226"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-224"/>
         <source>RMS residual (µm)</source>
         <translation>RMS-Residuum (µm)</translation>
     </message>
@@ -3273,12 +3273,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+149"/>
+        <location line="+150"/>
         <source>in control</source>
         <translation>beherrscht</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-148"/>
         <source>σ within (R̄ / d2)</source>
         <translation>σ innerhalb (R̄ / d2)</translation>
     </message>
@@ -3329,7 +3329,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+127"/>
+        <location line="+128"/>
         <source>SPC-gated compensation: %1</source>
         <translation>SPC-gesteuerte Kompensation: %1</translation>
     </message>
@@ -6930,7 +6930,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalcharts.cpp" line="+54"/>
+        <location filename="../widgets/thermal/thermalcharts.cpp" line="+54"/>
         <source>temperature</source>
         <translation>Temperatur</translation>
     </message>
@@ -7012,7 +7012,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+174"/>
+        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+174"/>
         <source>loop area in %1 × %2</source>
         <translation>Schleifenfläche in %1 × %2</translation>
     </message>
@@ -7112,7 +7112,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelcharts.cpp" line="+77"/>
+        <location filename="../widgets/thermal/thermalmodelcharts.cpp" line="+77"/>
         <source>time (h)</source>
         <translation>Zeit (h)</translation>
     </message>
@@ -7186,7 +7186,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+79"/>
+        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+79"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -7610,7 +7610,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalTrendView</name>
     <message>
-        <location filename="../widgets/charts/thermaltrendview.cpp" line="+123"/>
+        <location filename="../widgets/thermal/thermaltrendview.cpp" line="+123"/>
         <source>Channels shown in the chart: tick a group to show all of it</source>
         <translation>In der Grafik gezeigte Kanäle: eine angekreuzte Gruppe zeigt alle ihre Kanäle</translation>
     </message>
@@ -7628,7 +7628,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalVerdict</name>
     <message>
-        <location filename="../widgets/charts/thermalverdict.cpp" line="+19"/>
+        <location filename="../widgets/thermal/thermalverdict.cpp" line="+19"/>
         <source>usable</source>
         <translation>verwendbar</translation>
     </message>
@@ -8092,12 +8092,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>step</source>
         <translation>Sprung</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-96"/>
         <source>periodic</source>
         <translation>periodisch</translation>
     </message>
@@ -8342,7 +8342,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>kompensieren %1: der systematische Fehler (Nennwert − Mittelwert, Gl. 20) liegt außerhalb seines Intervalls ±%2 (k = %3) und der Prozess ist beherrscht (%4 Untergruppen zu %5)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <location line="+11"/>
         <source>time constant</source>
         <translation>Zeitkonstante</translation>

@@ -1423,56 +1423,56 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+6"/>
-        <location line="+102"/>
+        <location line="+103"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="-101"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+100"/>
+        <location line="+101"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-98"/>
+        <location line="-99"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+98"/>
+        <location line="+99"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Napęd X porusza się wzdłuż (cos a, sin a); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-95"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Napęd Y porusza się wzdłuż (-sin b, cos b); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+94"/>
+        <location line="+95"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-93"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Kąt między osiami wynosi 90° + (b − a)</translation>
     </message>
@@ -1554,11 +1554,11 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+3"/>
-        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt; (seed 002): the offset angle of the regression line of the edge along X is the X actuator&apos;s angle a, minus that of the edge along Y is b (Eq. 9), the intercepts give the origin; %1.</source>
-        <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt; (seed 002): kąt przesunięcia prostej regresji krawędzi wzdłuż X jest kątem a napędu X, ujemny kąt krawędzi wzdłuż Y jest kątem b (równ. 9), wyrazy wolne dają początek; %1.</translation>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt; (IEEE Access, kinematic compensation algorithm): the offset angle of the regression line of the edge along X is the X actuator&apos;s angle a, minus that of the edge along Y is b (Eq. 9), the intercepts give the origin; %1.</source>
+        <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt; (IEEE Access, algorytm kompensacji kinematycznej): kąt przesunięcia prostej regresji krawędzi wzdłuż X jest kątem a napędu X, ujemny kąt krawędzi wzdłuż Y jest kątem b (równ. 9), wyrazy wolne dają początek; %1.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>offset angle, edge along X (°)</source>
         <translation>kąt przesunięcia, krawędź wzdłuż X (°)</translation>
     </message>
@@ -2025,7 +2025,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingCurveView</name>
     <message>
-        <location filename="../widgets/pointview/matchingcurveview.cpp" line="+92"/>
+        <location filename="../widgets/matching/matchingcurveview.cpp" line="+92"/>
         <source>generation</source>
         <translation>generacja</translation>
     </message>
@@ -2669,7 +2669,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/pointview/pointsetview.cpp" line="+323"/>
+        <location filename="../widgets/matching/pointsetview.cpp" line="+323"/>
         <source>deviation
 (mm)</source>
         <translation>odchyłka
@@ -3093,12 +3093,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
-        <location line="+223"/>
+        <location line="+224"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-224"/>
         <source>identified</source>
         <translation>zidentyfikowany</translation>
     </message>
@@ -3114,36 +3114,36 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+226"/>
+        <location line="+227"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-225"/>
+        <location line="+227"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+225"/>
+        <location line="-225"/>
+        <location line="+226"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+225"/>
+        <location line="-224"/>
+        <location line="+226"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+225"/>
+        <location line="-224"/>
+        <location line="+226"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-224"/>
         <source>RMS residual (µm)</source>
         <translation>residuum RMS (µm)</translation>
     </message>
@@ -3276,12 +3276,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+149"/>
+        <location line="+150"/>
         <source>in control</source>
         <translation>pod kontrolą</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-148"/>
         <source>σ within (R̄ / d2)</source>
         <translation>σ wewnątrz (R̄ / d2)</translation>
     </message>
@@ -3332,7 +3332,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+127"/>
+        <location line="+128"/>
         <source>SPC-gated compensation: %1</source>
         <translation>Kompensacja warunkowana SPC: %1</translation>
     </message>
@@ -6952,7 +6952,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalcharts.cpp" line="+54"/>
+        <location filename="../widgets/thermal/thermalcharts.cpp" line="+54"/>
         <source>temperature</source>
         <translation>temperatura</translation>
     </message>
@@ -7034,7 +7034,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+174"/>
+        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+174"/>
         <source>loop area in %1 × %2</source>
         <translation>pole pętli w %1 × %2</translation>
     </message>
@@ -7134,7 +7134,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelcharts.cpp" line="+77"/>
+        <location filename="../widgets/thermal/thermalmodelcharts.cpp" line="+77"/>
         <source>time (h)</source>
         <translation>czas (h)</translation>
     </message>
@@ -7208,7 +7208,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+79"/>
+        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+79"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -7632,7 +7632,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalTrendView</name>
     <message>
-        <location filename="../widgets/charts/thermaltrendview.cpp" line="+123"/>
+        <location filename="../widgets/thermal/thermaltrendview.cpp" line="+123"/>
         <source>Channels shown in the chart: tick a group to show all of it</source>
         <translation>Kanały pokazane na wykresie: zaznaczona grupa pokazuje wszystkie swoje kanały</translation>
     </message>
@@ -7650,7 +7650,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalVerdict</name>
     <message>
-        <location filename="../widgets/charts/thermalverdict.cpp" line="+19"/>
+        <location filename="../widgets/thermal/thermalverdict.cpp" line="+19"/>
         <source>usable</source>
         <translation>użyteczny</translation>
     </message>
@@ -8114,12 +8114,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>step</source>
         <translation>skok</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-96"/>
         <source>periodic</source>
         <translation>okresowa</translation>
     </message>
@@ -8364,7 +8364,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>kompensuj %1: błąd systematyczny (nominał − średnia, równ. 20) wykracza poza swój przedział ±%2 (k = %3), a proces jest pod kontrolą (%4 podgrup po %5)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <location line="+11"/>
         <source>time constant</source>
         <translation>stała czasowa</translation>

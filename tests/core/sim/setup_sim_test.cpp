@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../setup/setup_fixtures.h"
 #include "core/io/csv.h"
 #include "core/setup/exact.h"
 #include "core/setup/report.h"
 #include "core/sim/setup_sim.h"
-#include "../setup/setup_fixtures.h"
 
 namespace metrofit {
 namespace {

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 
+#include "../setup/setup_fixtures.h"
 #include "core/common/error.h"
 #include "core/setup/exact.h"
 #include "core/setup/methods.h"
@@ -12,7 +13,6 @@
 #include "core/setup/report.h"
 #include "core/sim/setup_sim.h"
 #include "core/study/setup_validation.h"
-#include "../setup/setup_fixtures.h"
 
 namespace metrofit::setup {
 namespace {
