@@ -1,5 +1,5 @@
 #pragma once
-// Shared by the libFuzzer targets (issue 9): every reader must either return a value or throw one
+// Shared by the libFuzzer targets: every reader must either return a value or throw one
 // of Metrofit's typed input errors (metrofit::InputError: ParseError, ValidationError, ...). Any
 // other exception, a crash, a sanitizer report or a hang is a finding. Built only with
 // -DMETROFIT_FUZZ=ON and clang (fuzz/run.sh).

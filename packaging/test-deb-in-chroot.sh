@@ -57,6 +57,7 @@ shopt -u nullglob
 DEB="${debs[0]}"
 say "package $(basename "$DEB"): $(stat -c %s "$DEB") bytes"
 dpkg-deb -f "$DEB" Package Version Architecture Installed-Size Depends
+dpkg-deb -c "$DEB" | grep -q '/usr/share/doc/metrofit/file-formats.md$' || fail "the package lacks file-formats.md"
 
 # ---- 2. a fresh Debian 12 --------------------------------------------------------------------
 umount_all() {
@@ -137,6 +138,10 @@ in_root "apt-get install -y -q --no-install-recommends man-db 2>&1 | tail -n 1"
 in_root "MANWIDTH=80 man metrofit-cli 2>&1 | head -n 12"
 in_root "MANWIDTH=80 man metrofit 2>&1 | head -n 6"
 in_root "man -w metrofit metrofit-cli"
+
+say "user documentation (named by metrofit-cli --help and the manual page)"
+in_root "ls /usr/share/doc/metrofit; test -s /usr/share/doc/metrofit/file-formats.md"
+in_root "metrofit-cli --help | grep -F /usr/share/doc/metrofit/file-formats.md"
 
 say "desktop integration files"
 in_root "ls /usr/share/applications /usr/share/metainfo /usr/share/icons/hicolor/*/apps"

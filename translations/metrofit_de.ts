@@ -737,7 +737,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::ErrorBarsView</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="+467"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="+443"/>
         <source>rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model (grey) and the model with the accepted effects (blue)</source>
         <translation>rmse und größter |Fehler| der angepassten Daten, rmse der Testdaten (Thermik): das deklarierte Modell (grau) und das Modell mit den übernommenen Effekten (blau)</translation>
     </message>
@@ -1095,7 +1095,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+371"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+355"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
@@ -1125,7 +1125,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>dargestellter Radius = R + k × radiale Abweichung, k = %1; Ringe alle %2 µm</translation>
     </message>
     <message>
-        <location line="+188"/>
+        <location line="+189"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -1435,56 +1435,56 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+6"/>
-        <location line="+102"/>
+        <location line="+103"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="-101"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+100"/>
+        <location line="+101"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-98"/>
+        <location line="-99"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+98"/>
+        <location line="+99"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Der X-Antrieb bewegt sich entlang (cos a, sin a); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-95"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Der Y-Antrieb bewegt sich entlang (-sin b, cos b); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+94"/>
+        <location line="+95"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-93"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Der Winkel zwischen den Achsen beträgt 90° + (b − a)</translation>
     </message>
@@ -1565,11 +1565,11 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+3"/>
-        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt; (seed 002): the offset angle of the regression line of the edge along X is the X actuator&apos;s angle a, minus that of the edge along Y is b (Eq. 9), the intercepts give the origin; %1.</source>
-        <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt; (Seed 002): Der Versatzwinkel der Regressionsgeraden der Kante entlang X ist der Winkel a des X-Antriebs, der negative Versatzwinkel der Kante entlang Y ist b (Gl. 9), die Achsenabschnitte ergeben den Ursprung; %1.</translation>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt; (IEEE Access, kinematic compensation algorithm): the offset angle of the regression line of the edge along X is the X actuator&apos;s angle a, minus that of the edge along Y is b (Eq. 9), the intercepts give the origin; %1.</source>
+        <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt; (IEEE Access, Algorithmus zur kinematischen Kompensation): Der Versatzwinkel der Regressionsgeraden der Kante entlang X ist der Winkel a des X-Antriebs, der negative Versatzwinkel der Kante entlang Y ist b (Gl. 9), die Achsenabschnitte ergeben den Ursprung; %1.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>offset angle, edge along X (°)</source>
         <translation>Versatzwinkel, Kante entlang X (°)</translation>
     </message>
@@ -2036,7 +2036,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingCurveView</name>
     <message>
-        <location filename="../widgets/pointview/matchingcurveview.cpp" line="+92"/>
+        <location filename="../widgets/matching/matchingcurveview.cpp" line="+92"/>
         <source>generation</source>
         <translation>Generation</translation>
     </message>
@@ -2094,7 +2094,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Minimax</translation>
     </message>
     <message>
-        <location line="+208"/>
+        <location line="+199"/>
         <source>Allow &amp;scale</source>
         <translation>&amp;Skalierung</translation>
     </message>
@@ -2424,7 +2424,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation> Abgebrochen: die bisher beste gefundene Lage.</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+39"/>
         <source>BEFORE matching
 %1 of %2 out of ±%3 mm, max |d| %4 mm</source>
         <translation>VOR der Ausrichtung
@@ -2558,7 +2558,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-404"/>
+        <location line="-397"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -2679,7 +2679,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/pointview/pointsetview.cpp" line="+323"/>
+        <location filename="../widgets/matching/pointsetview.cpp" line="+313"/>
         <source>deviation
 (mm)</source>
         <translation>Abw.
@@ -3103,12 +3103,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
-        <location line="+223"/>
+        <location line="+224"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-224"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -3124,36 +3124,36 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+226"/>
+        <location line="+227"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-225"/>
+        <location line="+227"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+225"/>
+        <location line="-225"/>
+        <location line="+226"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+225"/>
+        <location line="-224"/>
+        <location line="+226"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+225"/>
+        <location line="-224"/>
+        <location line="+226"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-224"/>
         <source>RMS residual (µm)</source>
         <translation>RMS-Residuum (µm)</translation>
     </message>
@@ -3259,7 +3259,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+373"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+354"/>
         <location filename="../widgets/report/summarysection.cpp" line="+150"/>
         <source>value</source>
         <translation>Wert</translation>
@@ -3286,12 +3286,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+149"/>
+        <location line="+150"/>
         <source>in control</source>
         <translation>beherrscht</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-148"/>
         <source>σ within (R̄ / d2)</source>
         <translation>σ innerhalb (R̄ / d2)</translation>
     </message>
@@ -3342,7 +3342,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+127"/>
+        <location line="+128"/>
         <source>SPC-gated compensation: %1</source>
         <translation>SPC-gesteuerte Kompensation: %1</translation>
     </message>
@@ -3534,7 +3534,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Wiederholen Sie den Kreisformtest und prüfen Sie seine Datei.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-331"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="-311"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (Originalparameter)</translation>
     </message>
@@ -3554,7 +3554,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Minimax</translation>
     </message>
     <message>
-        <location line="+188"/>
+        <location line="+174"/>
         <source>Probe points “%1”, tolerance ±%2 mm</source>
         <translation>Antastpunkte „%1“, Toleranz ±%2 mm</translation>
     </message>
@@ -3589,7 +3589,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Enthält übernommene Effekte: %1 (Diagnose, Übernehmen). Die Nennpunkte wurden vor der Ausrichtung durch sie verformt; die Abweichungen und Maschineneinstellungen unten gelten daher für das Modell mit diesen Effekten.</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+33"/>
         <source>Before matching</source>
         <translation>Vor der Ausrichtung</translation>
     </message>
@@ -3631,7 +3631,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../widgets/report/probesection.cpp" line="+325"/>
+        <location filename="../widgets/report/probesection.cpp" line="+315"/>
         <source>surface</source>
         <translation>Fläche</translation>
     </message>
@@ -3867,12 +3867,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Die Antastpunkte der Ausrichtungsstudie wurden nicht gefunden.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/probesection.cpp" line="-267"/>
+        <location filename="../widgets/report/probesection.cpp" line="-256"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location line="+134"/>
+        <location line="+123"/>
         <location line="+5"/>
         <source>%1 (mm)</source>
         <translation>%1 (mm)</translation>
@@ -5345,7 +5345,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ResidualCheckView</name>
     <message>
-        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+120"/>
+        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+121"/>
         <source>Final residual against %1</source>
         <translation>Endgültiges Residuum über %1</translation>
     </message>
@@ -5356,18 +5356,18 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+187"/>
+        <location line="+163"/>
         <location line="+281"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-467"/>
+        <location line="-443"/>
         <source>residual (%1)</source>
         <translation>Residuum (%1)</translation>
     </message>
     <message>
-        <location line="+191"/>
+        <location line="+167"/>
         <source>generic fit</source>
         <translation>generische Anpassung</translation>
     </message>
@@ -5628,7 +5628,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupCharts</name>
     <message>
-        <location filename="../widgets/setup/setupcharts.cpp" line="+68"/>
+        <location filename="../widgets/setup/setupcharts.cpp" line="+60"/>
         <source>exact</source>
         <translation>exakt</translation>
     </message>
@@ -5707,7 +5707,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupConvergenceView</name>
     <message>
-        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+29"/>
+        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+30"/>
         <source>Show f&amp;2 = |x|</source>
         <translation>f&amp;2 = |x|</translation>
     </message>
@@ -6074,7 +6074,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupMargins</name>
     <message>
-        <location filename="../widgets/setup/setupmargins.cpp" line="+86"/>
+        <location filename="../widgets/setup/setupmargins.cpp" line="+80"/>
         <source>tolerance zone</source>
         <translation>Toleranzzone</translation>
     </message>
@@ -6948,7 +6948,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalcharts.cpp" line="+54"/>
+        <location filename="../widgets/thermal/thermalcharts.cpp" line="+55"/>
         <source>temperature</source>
         <translation>Temperatur</translation>
     </message>
@@ -6994,7 +6994,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>weitere Kanäle</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+92"/>
         <location line="+113"/>
         <source>feed speed</source>
         <translation>Vorschubgeschwindigkeit</translation>
@@ -7030,7 +7030,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+174"/>
+        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+174"/>
         <source>loop area in %1 × %2</source>
         <translation>Schleifenfläche in %1 × %2</translation>
     </message>
@@ -7130,7 +7130,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelcharts.cpp" line="+77"/>
+        <location filename="../widgets/thermal/thermalmodelcharts.cpp" line="+69"/>
         <source>time (h)</source>
         <translation>Zeit (h)</translation>
     </message>
@@ -7204,7 +7204,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+73"/>
+        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+73"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -7628,7 +7628,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalTrendView</name>
     <message>
-        <location filename="../widgets/charts/thermaltrendview.cpp" line="+123"/>
+        <location filename="../widgets/thermal/thermaltrendview.cpp" line="+123"/>
         <source>Channels shown in the chart: tick a group to show all of it</source>
         <translation>In der Grafik gezeigte Kanäle: eine angekreuzte Gruppe zeigt alle ihre Kanäle</translation>
     </message>
@@ -7646,7 +7646,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalVerdict</name>
     <message>
-        <location filename="../widgets/charts/thermalverdict.cpp" line="+19"/>
+        <location filename="../widgets/thermal/thermalverdict.cpp" line="+19"/>
         <source>usable</source>
         <translation>verwendbar</translation>
     </message>
@@ -8110,12 +8110,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>step</source>
         <translation>Sprung</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-96"/>
         <source>periodic</source>
         <translation>periodisch</translation>
     </message>
@@ -8360,7 +8360,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>kompensieren %1: der systematische Fehler (Nennwert − Mittelwert, Gl. 20) liegt außerhalb seines Intervalls ±%2 (k = %3) und der Prozess ist beherrscht (%4 Untergruppen zu %5)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <location line="+11"/>
         <source>time constant</source>
         <translation>Zeitkonstante</translation>

@@ -737,7 +737,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::ErrorBarsView</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="+467"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="+443"/>
         <source>rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model (grey) and the model with the accepted effects (blue)</source>
         <translation>rmse i największy |błąd| danych dopasowania, rmse wierszy testowych (termika): zadeklarowany model (szary) i model z przyjętymi efektami (niebieski)</translation>
     </message>
@@ -1095,7 +1095,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+371"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+355"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
@@ -1125,7 +1125,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>promień na wykresie = R + k × odchyłka promieniowa, k = %1; okręgi co %2 µm</translation>
     </message>
     <message>
-        <location line="+188"/>
+        <location line="+189"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -1436,56 +1436,56 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+6"/>
-        <location line="+102"/>
+        <location line="+103"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="-101"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+100"/>
+        <location line="+101"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-98"/>
+        <location line="-99"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+98"/>
+        <location line="+99"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Napęd X porusza się wzdłuż (cos a, sin a); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-95"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Napęd Y porusza się wzdłuż (-sin b, cos b); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+94"/>
+        <location line="+95"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-93"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Kąt między osiami wynosi 90° + (b − a)</translation>
     </message>
@@ -1567,11 +1567,11 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+3"/>
-        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt; (seed 002): the offset angle of the regression line of the edge along X is the X actuator&apos;s angle a, minus that of the edge along Y is b (Eq. 9), the intercepts give the origin; %1.</source>
-        <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt; (seed 002): kąt przesunięcia prostej regresji krawędzi wzdłuż X jest kątem a napędu X, ujemny kąt krawędzi wzdłuż Y jest kątem b (równ. 9), wyrazy wolne dają początek; %1.</translation>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt; (IEEE Access, kinematic compensation algorithm): the offset angle of the regression line of the edge along X is the X actuator&apos;s angle a, minus that of the edge along Y is b (Eq. 9), the intercepts give the origin; %1.</source>
+        <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt; (IEEE Access, algorytm kompensacji kinematycznej): kąt przesunięcia prostej regresji krawędzi wzdłuż X jest kątem a napędu X, ujemny kąt krawędzi wzdłuż Y jest kątem b (równ. 9), wyrazy wolne dają początek; %1.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>offset angle, edge along X (°)</source>
         <translation>kąt przesunięcia, krawędź wzdłuż X (°)</translation>
     </message>
@@ -2038,7 +2038,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingCurveView</name>
     <message>
-        <location filename="../widgets/pointview/matchingcurveview.cpp" line="+92"/>
+        <location filename="../widgets/matching/matchingcurveview.cpp" line="+92"/>
         <source>generation</source>
         <translation>generacja</translation>
     </message>
@@ -2096,7 +2096,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>minimaks</translation>
     </message>
     <message>
-        <location line="+208"/>
+        <location line="+199"/>
         <source>Allow &amp;scale</source>
         <translation>&amp;Skala</translation>
     </message>
@@ -2426,7 +2426,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation> Anulowano: najlepsze dotąd znalezione położenie.</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+39"/>
         <source>BEFORE matching
 %1 of %2 out of ±%3 mm, max |d| %4 mm</source>
         <translation>PRZED dopasowaniem
@@ -2561,7 +2561,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-404"/>
+        <location line="-397"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -2682,7 +2682,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/pointview/pointsetview.cpp" line="+323"/>
+        <location filename="../widgets/matching/pointsetview.cpp" line="+313"/>
         <source>deviation
 (mm)</source>
         <translation>odchyłka
@@ -3106,12 +3106,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
-        <location line="+223"/>
+        <location line="+224"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-224"/>
         <source>identified</source>
         <translation>zidentyfikowany</translation>
     </message>
@@ -3127,36 +3127,36 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+226"/>
+        <location line="+227"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-225"/>
+        <location line="+227"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+225"/>
+        <location line="-225"/>
+        <location line="+226"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+225"/>
+        <location line="-224"/>
+        <location line="+226"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+225"/>
+        <location line="-224"/>
+        <location line="+226"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-224"/>
         <source>RMS residual (µm)</source>
         <translation>residuum RMS (µm)</translation>
     </message>
@@ -3262,7 +3262,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+373"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+354"/>
         <location filename="../widgets/report/summarysection.cpp" line="+150"/>
         <source>value</source>
         <translation>wartość</translation>
@@ -3289,12 +3289,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+149"/>
+        <location line="+150"/>
         <source>in control</source>
         <translation>pod kontrolą</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-148"/>
         <source>σ within (R̄ / d2)</source>
         <translation>σ wewnątrz (R̄ / d2)</translation>
     </message>
@@ -3345,7 +3345,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+127"/>
+        <location line="+128"/>
         <source>SPC-gated compensation: %1</source>
         <translation>Kompensacja warunkowana SPC: %1</translation>
     </message>
@@ -3537,7 +3537,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Powtórz test okrągłości i sprawdź jego plik.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-331"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="-311"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (parametry z publikacji)</translation>
     </message>
@@ -3557,7 +3557,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>minimaks</translation>
     </message>
     <message>
-        <location line="+188"/>
+        <location line="+174"/>
         <source>Probe points “%1”, tolerance ±%2 mm</source>
         <translation>Punkty sondowania „%1”, tolerancja ±%2 mm</translation>
     </message>
@@ -3592,7 +3592,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zawiera zastosowane efekty: %1 (diagnoza, Zastosuj). Punkty nominalne zostały przez nie odkształcone przed dopasowaniem, więc poniższe odchyłki i nastawienia maszyny dotyczą modelu z tymi efektami.</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+33"/>
         <source>Before matching</source>
         <translation>Przed dopasowaniem</translation>
     </message>
@@ -3634,7 +3634,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../widgets/report/probesection.cpp" line="+325"/>
+        <location filename="../widgets/report/probesection.cpp" line="+315"/>
         <source>surface</source>
         <translation>powierzchnia</translation>
     </message>
@@ -3870,12 +3870,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Nie znaleziono punktów sondowania studium dopasowania.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/probesection.cpp" line="-267"/>
+        <location filename="../widgets/report/probesection.cpp" line="-256"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location line="+134"/>
+        <location line="+123"/>
         <location line="+5"/>
         <source>%1 (mm)</source>
         <translation>%1 (mm)</translation>
@@ -5358,7 +5358,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ResidualCheckView</name>
     <message>
-        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+120"/>
+        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+121"/>
         <source>Final residual against %1</source>
         <translation>Końcowe residuum względem %1</translation>
     </message>
@@ -5369,18 +5369,18 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+187"/>
+        <location line="+163"/>
         <location line="+281"/>
         <source>residual</source>
         <translation>residuum</translation>
     </message>
     <message>
-        <location line="-467"/>
+        <location line="-443"/>
         <source>residual (%1)</source>
         <translation>residuum (%1)</translation>
     </message>
     <message>
-        <location line="+191"/>
+        <location line="+167"/>
         <source>generic fit</source>
         <translation>dopasowanie ogólne</translation>
     </message>
@@ -5643,7 +5643,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupCharts</name>
     <message>
-        <location filename="../widgets/setup/setupcharts.cpp" line="+68"/>
+        <location filename="../widgets/setup/setupcharts.cpp" line="+60"/>
         <source>exact</source>
         <translation>dokładna</translation>
     </message>
@@ -5722,7 +5722,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupConvergenceView</name>
     <message>
-        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+29"/>
+        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+30"/>
         <source>Show f&amp;2 = |x|</source>
         <translation>f&amp;2 = |x|</translation>
     </message>
@@ -6091,7 +6091,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupMargins</name>
     <message>
-        <location filename="../widgets/setup/setupmargins.cpp" line="+86"/>
+        <location filename="../widgets/setup/setupmargins.cpp" line="+80"/>
         <source>tolerance zone</source>
         <translation>pole tolerancji</translation>
     </message>
@@ -6970,7 +6970,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalcharts.cpp" line="+54"/>
+        <location filename="../widgets/thermal/thermalcharts.cpp" line="+55"/>
         <source>temperature</source>
         <translation>temperatura</translation>
     </message>
@@ -7016,7 +7016,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>inne kanały</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+92"/>
         <location line="+113"/>
         <source>feed speed</source>
         <translation>prędkość posuwu</translation>
@@ -7052,7 +7052,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/charts/thermalhysteresisview.cpp" line="+174"/>
+        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+174"/>
         <source>loop area in %1 × %2</source>
         <translation>pole pętli w %1 × %2</translation>
     </message>
@@ -7152,7 +7152,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelCharts</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelcharts.cpp" line="+77"/>
+        <location filename="../widgets/thermal/thermalmodelcharts.cpp" line="+69"/>
         <source>time (h)</source>
         <translation>czas (h)</translation>
     </message>
@@ -7226,7 +7226,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/charts/thermalmodelview.cpp" line="+73"/>
+        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+73"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -7650,7 +7650,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalTrendView</name>
     <message>
-        <location filename="../widgets/charts/thermaltrendview.cpp" line="+123"/>
+        <location filename="../widgets/thermal/thermaltrendview.cpp" line="+123"/>
         <source>Channels shown in the chart: tick a group to show all of it</source>
         <translation>Kanały pokazane na wykresie: zaznaczona grupa pokazuje wszystkie swoje kanały</translation>
     </message>
@@ -7668,7 +7668,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalVerdict</name>
     <message>
-        <location filename="../widgets/charts/thermalverdict.cpp" line="+19"/>
+        <location filename="../widgets/thermal/thermalverdict.cpp" line="+19"/>
         <source>usable</source>
         <translation>użyteczny</translation>
     </message>
@@ -8132,12 +8132,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>step</source>
         <translation>skok</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-96"/>
         <source>periodic</source>
         <translation>okresowa</translation>
     </message>
@@ -8382,7 +8382,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>kompensuj %1: błąd systematyczny (nominał − średnia, równ. 20) wykracza poza swój przedział ±%2 (k = %3), a proces jest pod kontrolą (%4 podgrup po %5)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <location line="+11"/>
         <source>time constant</source>
         <translation>stała czasowa</translation>

@@ -1,11 +1,11 @@
-// metrofit-cli diagnose thermal|kinematic|setup|matching (CONTRACT.md; issue 8): fit the declared
-// model, trace the residual to an effect the model lacks, add it, report the error before and after.
+// metrofit-cli diagnose thermal|kinematic|setup|matching (docs/file-formats.md#diagnose-result): fit the
+// declared model, trace the residual to an effect the model lacks, add it, report the error before and after.
 //   diagnose thermal   --data L.csv --target COL --inputs A,B,... [--train-fraction F]
 //                      [--declared linear|gmc|gnnmci] [--seed N] [--out R.json]
 //   diagnose kinematic --data C.csv [--feed MM_PER_MIN] [--out R.json]
 //   diagnose setup     --data R.csv --model M.json [--out R.json]
 //   diagnose matching  --data P.csv [--tolerance T] [--out R.json]
-// Every domain writes the JSON of CONTRACT.md "diagnose result" (core/diagnose/diagnosis.h toJson)
+// Every domain writes the JSON of docs/file-formats.md#diagnose-result (core/diagnose/diagnosis.h toJson)
 // through finishDiagnosis, which also prints the one-line summary.
 #include <unistd.h>
 #include <CLI/CLI.hpp>
@@ -79,9 +79,9 @@ class Progress {
   FunctionObserver observer_;
 };
 
-/// Writes the CONTRACT JSON (atomically to `out`, or stdout) and prints the one-line summary:
-/// "diagnose <domain> on <data>: rmse a -> b <unit>[, held-out h0 -> h1]; accepted: x (params); N tried;
-/// residual white: ... | not white: still depends on ...[; k outliers excluded]".
+/// Writes the JSON of docs/file-formats.md#diagnose-result (atomically to `out`, or stdout) and prints the
+/// one-line summary: "diagnose <domain> on <data>: rmse a -> b <unit>[, held-out h0 -> h1]; accepted: x
+/// (params); N tried; residual white: ... | not white: still depends on ...[; k outliers excluded]".
 int finishDiagnosis(const diagnose::Diagnosis& d, const std::string& data, const std::string& out) {
   writeResult(out, dumpJson(diagnose::toJson(d)));
   const std::string u = d.units.empty() ? "" : " " + d.units;
@@ -233,13 +233,7 @@ void registerDiagnoseCommands(CLI::App& app) {
         if (d == "thermal") return runThermal(*a);
         if (d == "kinematic") return runKinematic(*a);
         if (d == "setup") return runSetup(*a);
-        if (d == "matching") return runMatching(*a);
-        if (d == "matching")
-          (void)readProbePoints(a->data);
-        else
-          (void)readCsvFile(a->data);
-        if (!a->model.empty()) (void)readJsonFile(a->model);
-        notInThisBuild("the " + d + " diagnosis", "issue 8");
+        return runMatching(*a);  // the loop above registers these four domains only
       });
     });
   }

@@ -1,4 +1,5 @@
-// metrofit-cli kinematic identify|compensate (CONTRACT.md; issue 6) and the kinematic simulators.
+// metrofit-cli kinematic identify|compensate (docs/file-formats.md#kinematic-identify-result) and the
+// kinematic simulators.
 //   identify   --data C.csv [--out E.json]
 //   identify3  --xy C1.csv --yz C2.csv --zx C3.csv [--out E3.json]
 //       the three-axis actuator errors from circular tests in three planes (identification3.h)
@@ -520,7 +521,7 @@ void registerKinematicCommands(CLI::App& app) {
   auto* fs = kin->add_subcommand(
       "from-spc",
       "Actuator errors from the SPC regression offset angles of an edge along X and one along Y, and their "
-      "compensation (seed 002)");
+      "compensation (IEEE Access paper, kinematic compensation algorithm)");
   existingFile(fs->add_option("--x-data", d->xData, "Edge machined along X (CSV position_mm,deviation_mm)")
                    ->required());
   existingFile(fs->add_option("--y-data", d->yData, "Edge machined along Y (CSV position_mm,deviation_mm)")

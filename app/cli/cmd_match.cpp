@@ -1,4 +1,4 @@
-// metrofit-cli match: posture matching and 5-axis machine adjustment (CONTRACT.md "match", issue 5).
+// metrofit-cli match: posture matching and 5-axis machine adjustment (docs/file-formats.md#match-result).
 //
 //   match --data P.csv|HOLES.txt [--tolerance T] [--method sade|ga-simplex|closed-form|minimax]
 //   [--allow-scale]
@@ -10,8 +10,9 @@
 // rounds, the true remaining error and the outcome. A loop that fails (form_error, beyond_travel,
 // not_converged) is a result, not an error: exit 0, the summary line says FAILED.
 //
-// Writes the CONTRACT JSON (core/matching/matching.h toJson) plus "machine": the adjustment values of
-// the chosen topology (core/machine/machine.h) and its definition. One summary line on stderr.
+// Writes the JSON of docs/file-formats.md#match-result (core/matching/matching.h toJson) plus "machine": the
+// adjustment values of the chosen topology (core/machine/machine.h) and its definition. One summary line on
+// stderr.
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -140,7 +141,9 @@ void registerMatchCommand(CLI::App& app) {
   auto a = std::make_shared<MatchArgs>();
   auto* sub = app.add_subcommand("match", "Workpiece posture matching and 5-axis machine adjustment");
   existingFile(
-      sub->add_option("--data", a->data, "Probe points: CSV (CONTRACT.md) or a PC-DMIS hole-table report")
+      sub->add_option(
+             "--data", a->data,
+             "Probe points: CSV (id,surface,qx,qy,qz,nx,ny,nz,px,py,pz) or a PC-DMIS hole-table report")
           ->required());
   sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")
       ->check(positiveNumber())

@@ -1,4 +1,4 @@
-// metrofit-cli project: own data in a project (CONTRACT.md "Own data in a project (CLI)").
+// metrofit-cli project: own data in a project (docs/file-formats.md#own-data-in-a-project).
 //   project new P.metrofit [--name TEXT]
 //   project add P.metrofit KIND FILE [--id ID] [--map ROLE=COLUMN ...] [--delimiter D] [--decimal D]
 //   project list P.metrofit [--out FILE]

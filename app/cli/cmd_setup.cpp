@@ -1,15 +1,15 @@
-// metrofit-cli setup: setup-data correction (CONTRACT.md "setup", issue 4).
+// metrofit-cli setup: setup-data correction (docs/file-formats.md#setup-result).
 //
 //   setup --model M.json --data R.csv [--data R2.dmo ...] [--method exact|cripso|pso|ga|coa]
 //         [--budget N] [--seed N] [--time-limit S] [--out F]
 //         [--export fanuc|heidenhain|siemens|csv --export-out F] [--tool-offset wear|geometry]
 //
 // Reads the relation-graph model (core/setup/model.h) and the measurement reports (CSV of
-// CONTRACT.md or DMIS output, core/setup/report.h), corrects the setup data with the chosen method
-// and writes the CONTRACT JSON: method, corrections_mm {setup datum id: mm}, f1_mm, f2_mm, f,
-// bonus_mm, evaluations, trace; plus f1_before_mm, per-dimension before/after values, the exact
-// method's certificate, and for a metaheuristic the exact optimum and its gap (the exact method
-// always runs: it takes well under a millisecond on the paper's size). One summary line on stderr.
+// docs/file-formats.md#cmm-report-series or DMIS output, core/setup/report.h), corrects the setup data with
+// the chosen method and writes the JSON of docs/file-formats.md#setup-result: method, corrections_mm {setup
+// datum id: mm}, f1_mm, f2_mm, f, bonus_mm, evaluations, trace; plus f1_before_mm, per-dimension before/after
+// values, the exact method's certificate, and for a metaheuristic the exact optimum and its gap (the exact
+// method always runs: it takes well under a millisecond on the paper's size). One summary line on stderr.
 //
 //   setup validate --model M.json [--sets N] [--trials M] [--methods cripso,pso,...] [--budget N]
 //         [--w1 MM] [--w2 MM] [--seed N] [--data R.csv ...] [--threads N] [--out F]

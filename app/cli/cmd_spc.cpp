@@ -1,4 +1,4 @@
-// metrofit-cli spc (issue 6): X-bar/R chart limits, capability indices and the SPC-gated
+// metrofit-cli spc: X-bar/R chart limits, capability indices and the SPC-gated
 // compensation decision of a measured feature.
 //   spc --data F.csv --column C --subgroup N [--lsl L --usl U] [--nominal X] [--coverage K] [--out J.json]
 #include <CLI/CLI.hpp>

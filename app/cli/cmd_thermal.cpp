@@ -1,4 +1,5 @@
-// metrofit-cli thermal fit|predict|hysteresis|modular|simulate (CONTRACT.md; issue 7, seed 004).
+// metrofit-cli thermal fit|predict|hysteresis|modular|simulate (docs/file-formats.md#thermal-fit-result;
+// Abdulshahed 2016, grey neural network thermal model).
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
@@ -59,7 +60,8 @@ std::string num(double v, int digits = 4) {
   return std::isfinite(v) ? CsvWriter::formatNumber(v, digits) : "n/a";
 }
 
-/// Progress on stderr when it is a terminal (CONTRACT.md), erased before the summary line.
+/// Progress on stderr when it is a terminal (docs/file-formats.md#exit-status-and-output), erased before the
+/// summary line.
 class Progress {
  public:
   explicit Progress(std::string what)

@@ -131,10 +131,6 @@ void writeResult(const std::string& outPath, const std::string& text) {
   writeFileAtomic(outPath, text);
 }
 
-void notInThisBuild(const std::string& what, const std::string& issue) {
-  throw NotAvailable(what + " is not in this build yet (" + issue + "); the inputs were read and are valid");
-}
-
 void selectRunner(std::function<int()> runner) {
   g_selected = std::move(runner);
 }

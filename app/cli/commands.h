@@ -19,12 +19,6 @@ class Validator;
 
 namespace metrofit::cli {
 
-/// A subcommand whose method has not landed yet (exit code 1, message without "internal error").
-class NotAvailable : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 /// Registers every subcommand on `app`. Each subcommand's callback stores its runner in `run`.
 void registerCommands(CLI::App& app, int argc, char** argv);
 /// Runs the selected subcommand (after a successful parse). Returns the exit code.
@@ -36,8 +30,6 @@ void writeResult(const std::string& outPath, const std::string& text);
 // ---- shared by the subcommand files (cmd_*.cpp) ----
 /// A subcommand's parse callback hands its runner over with this; runSelected() calls it.
 void selectRunner(std::function<int()> runner);
-/// Throws NotAvailable: "<what> is not in this build yet (<issue>); the inputs were read and are valid".
-[[noreturn]] void notInThisBuild(const std::string& what, const std::string& issue);
 /// An existing file, or "-" (standard input).
 CLI::Option* existingFile(CLI::Option* option);
 /// A number > 0; says "--opt: must be a positive number, got '-1'" (CLI::PositiveNumber prints the
@@ -45,8 +37,9 @@ CLI::Option* existingFile(CLI::Option* option);
 CLI::Validator positiveNumber();
 void addOut(CLI::App* sub, std::string& out);
 void addSeed(CLI::App* sub, std::uint64_t& seed);
-/// --delimiter auto|,|;|tab and --decimal auto|.|, (CONTRACT.md: every subcommand that reads a CSV).
-/// One subcommand runs per process, so they share one setting; csvOptions() returns it.
+/// --delimiter auto|,|;|tab and --decimal auto|.|, (docs/file-formats.md#csv-dialects-and-standard-input:
+/// every subcommand that reads a CSV). One subcommand runs per process, so they share one setting;
+/// csvOptions() returns it.
 void addCsvOptions(CLI::App* sub);
 /// --sample-interval <value><unit> (s, min, h): a thermal log without a time column.
 void addSampleIntervalOption(CLI::App* sub);

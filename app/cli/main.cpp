@@ -1,4 +1,4 @@
-// metrofit-cli: the headless front end (CONTRACT.md "Command line").
+// metrofit-cli: the headless front end (docs/file-formats.md#command-line).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
       "stdout; a one-line summary goes to stderr. --seed N makes stochastic methods reproducible.\n"
       "Exit status: 0 success, 2 bad input (one line naming the file, line or field, or the option),\n"
       "1 any other failure. 'metrofit-cli SUBCOMMAND --help' lists the options of a subcommand;\n"
-      "man metrofit-cli is the manual.");
+      "man metrofit-cli is the manual. File formats and JSON results:\n"
+      "/usr/share/doc/metrofit/file-formats.md (docs/file-formats.md in the source tree).");
   metrofit::cli::registerCommands(app, argc, argv);
   // CLI11 reports a stray word as "A subcommand is required"; name it instead.
   if (argc > 1 && argv[1][0] != '-') {
@@ -76,9 +77,6 @@ int main(int argc, char** argv) {
   } catch (const metrofit::InputError& e) {
     std::fprintf(stderr, "metrofit-cli: %s\n", e.what());
     return 2;
-  } catch (const metrofit::cli::NotAvailable& e) {
-    std::fprintf(stderr, "metrofit-cli: %s\n", e.what());
-    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "metrofit-cli: internal error: %s\n", e.what());
     return 1;

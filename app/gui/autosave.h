@@ -1,5 +1,5 @@
 #pragma once
-// Autosave and crash recovery (issue 9). Every few minutes (Preferences, QSettings key
+// Autosave and crash recovery. Every few minutes (Preferences, QSettings key
 // "autosave/intervalMinutes", default 3, 0 = off), while the document is modified, the project is
 // written to a side file: "<project>.metrofit.autosave" next to the project, or for a project that
 // was never saved "untitled-<pid>.metrofit.autosave" in QStandardPaths::AppDataLocation/autosave.

@@ -63,7 +63,7 @@ QString domainTitle(DiagnosisDomain d) {
   return {};
 }
 
-/// "um" -> "µm" for display (core writes CONTRACT.md's ASCII unit names).
+/// "um" -> "µm" for display (core writes the ASCII unit names of docs/file-formats.md).
 QString displayUnits(const std::string& units) {
   return displayUnit(QString::fromStdString(units));
 }
@@ -73,7 +73,7 @@ QString num(double v, int digits = 4) {
   return localNumber(v, digits);
 }
 
-/// Unit of a parameter from its CONTRACT.md name suffix ("tau_min" -> "min").
+/// Unit of a parameter from its name suffix (docs/file-formats.md#effect-catalogue) ("tau_min" -> "min").
 QString unitOf(const std::string& name) {
   static const std::pair<const char*, const char*> kSuffixes[] = {
       {"mm_per_part", QT_TRANSLATE_NOOP("metrofit::DiagnosisPage", "mm/part")},

@@ -1,5 +1,5 @@
 #pragma once
-// The diagnosis study page (issue 8, the closed loop): a domain selector (thermal, kinematic, setup,
+// The diagnosis study page (the closed loop): a domain selector (thermal, kinematic, setup,
 // matching), the data and settings of the project's studies.diagnosis.<domain>
 // (core/study/diagnosis_study.h), Run (Ctrl+R) in a worker thread with progress and Cancel,
 // then the residual plot of each accepted effect, the candidate table (effect, parameters ±

@@ -487,7 +487,8 @@ void KinematicsPage::showActuators() {
                        : tr("not compensated: no slope or intercept beyond ± k standard "
                             "errors (random scatter)"));
     fromSpcLabel_->setText(
-        tr("<b>From SPC to compensation</b> (seed 002): the offset angle of the regression line of the edge "
+        tr("<b>From SPC to compensation</b> (IEEE Access, kinematic compensation algorithm): the offset "
+           "angle of the regression line of the edge "
            "along X is the X actuator's angle a, minus that of the edge along Y is b (Eq. 9), the intercepts "
            "give the origin; %1.")
             .arg(verdict.toHtmlEscaped()));

@@ -1,10 +1,10 @@
 #pragma once
-// The kinematics & SPC study page (issue 6, seed 002): the circular test of the study, identified
-// on load (Levenberg-Marquardt of core/kinematics, milliseconds) with the errors and their standard
-// errors; Compensate makes the compensated references for the nominal circle and shows what they
+// The kinematics & SPC study page (IEEE Access, kinematic compensation algorithm): the circular test of the
+// study, identified on load (Levenberg-Marquardt of core/kinematics, milliseconds) with the errors and their
+// standard errors; Compensate makes the compensated references for the nominal circle and shows what they
 // give; Export writes them as G-code or STEP-NC. Two views: "path" (path view, polar deviation plot,
 // tables), "spc" (X-bar / R charts, histogram, indices of the study's feature series) and
-// "actuators": seed 002's chain from the SPC regression offset angles to actuator errors and their
+// "actuators": the paper's chain from the SPC regression offset angles to actuator errors and their
 // compensation (studies.kinematics.from_spc), and the three-axis errors from circular tests in XY,
 // YZ and ZX (studies.kinematics.planes).
 // Effects applied on the diagnosis page (studies.diagnosis.kinematic.applied) are part of the model

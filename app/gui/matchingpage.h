@@ -1,5 +1,5 @@
 #pragma once
-// The posture-matching study page (issue 5): the project's probe point sets, the matching settings
+// The posture-matching study page: the project's probe point sets, the matching settings
 // (method, tolerance, degree-of-freedom locks, scale), Run with progress and Cancel, and the results:
 // two linked 3D views before and after matching side by side, the optimisation curve of SADE and
 // GA-simplex, one table of rough / SADE / GA-simplex / closed-form / minimax, the machine adjustment

@@ -97,8 +97,8 @@ int runScreenshots(const QString& outDir, QTextStream& err) {
     return 1;
   }
 
-  // The views of CONTRACT.md in a fixed order. Each shows a page and then asks the page for one of
-  // its views through `Q_INVOKABLE void showView(const QString&)` when the page has it (pages
+  // The views of docs/file-formats.md#screenshots in a fixed order. Each shows a page and then asks the page
+  // for one of its views through `Q_INVOKABLE void showView(const QString&)` when the page has it (pages
   // without sub-views just show themselves), so adding a view to a page needs no change here.
   const auto pageView = [](Page page, const QString& view) {
     return [page, view](MainWindow& w) {

@@ -1,6 +1,6 @@
 #pragma once
-// `metrofit --screenshots DIR` (CONTRACT.md): opens the bundled demo project, shows every main view
-// in turn and saves one PNG of the window per view into DIR.
+// `metrofit --screenshots DIR` (docs/file-formats.md#screenshots): opens the bundled demo project, shows
+// every main view in turn and saves one PNG of the window per view into DIR.
 #include <QString>
 #include <QStringList>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The setup-correction study page (issue 4): the study's model and CMM report (studies.setup.model
+// The setup-correction study page: the study's model and CMM report (studies.setup.model
 // and .dataset, else the first setup_model / cmm_report datasets of the project) in four tabs:
 //  * Graph: the relation-graph editor (its own undo stack); "Save model" writes the edited model
 //    back to the dataset file atomically, "Revert" reads it again as one undo step (Ctrl+Z brings

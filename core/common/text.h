@@ -2,7 +2,7 @@
 // Texts core writes for people (the diagnosis evidence, notes and residual-plot axis titles) in a
 // form the GUI can translate, without core depending on Qt.
 //
-// Core keeps building the English string every file, the CLI and the report carry (CONTRACT.md:
+// Core keeps building the English string every file, the CLI and the report carry (docs/file-formats.md:
 // the JSON stays exactly as it is); next to it, it records the same text as a list of Phrases, and
 // the English string is made *from* that list (english()), so the two cannot differ.
 //

@@ -56,7 +56,7 @@ void forEachAppliedEntry(const nlohmann::json& applied, const std::string& field
                          const AppliedEntryMessages& messages,
                          const std::function<void(const AppliedEntry&)>& fn);
 
-/// A generic effect (`unexplained:<against>`, CONTRACT.md "The open world") as Apply stores it: its
+/// A generic effect (`unexplained:<against>`, docs/file-formats.md#generic-effects) as Apply stores it: its
 /// fixed shape under the entry's "shape" key, so that a study evaluates the same basis the diagnosis
 /// fitted: {"against", "form" (linear|smooth|step|periodic|level), "knots", "harmonics", "levels",
 /// "centre", "scale", "subset", "without_linear", "components"}.

@@ -1,19 +1,20 @@
 #pragma once
-// Effects of the axes added to the declared Cartesian model (issue 8: "Apply adds the accepted effect
+// Effects of the axes added to the declared Cartesian model ("Apply adds the accepted effect
 // to the study's model so later runs and compensations include it").
 //
 // The closed loop (core/diagnose/kinematic_diagnosis.h) finds effects that act on the joint
 // coordinates before the machine's geometry, exactly as the simulator's (core/sim/effects_kinematic.h):
 //   je = effective joints(c) = c (1 + s 1e-6) - d b / 2 - tau v t + [cyclic] A sin(2 pi c_a / p + phi)
 //   P  = o + ir(a) je_x + jr(b) je_y
-// The diagnosis page's Apply stores them (studies.diagnosis.kinematic.applied, CONTRACT.md names):
+// The diagnosis page's Apply stores them (studies.diagnosis.kinematic.applied, names of
+// docs/file-formats.md#effect-catalogue):
 //   [{"name": "backlash", "parameters": {"x_mm": 0.008, "y_mm": 0.005}},
 //    {"name": "scale", "parameters": {"x_ppm": 20, "y_ppm": -10}},
 //    {"name": "cyclic", "parameters": {"axis": "x", "period_mm": 5, "amplitude_mm": 0.002,
 //                                      "phase_deg": 30}},
 //    {"name": "servo_lag", "parameters": {"tau_s": 0.002}},    (lag at the test's feed)
 //    {"name": "unexplained:angle", "parameters": {...}, "shape": {...}, "coefficients": [...]}]
-// A generic effect (CONTRACT.md "The open world") is a displacement D_k of every point, the basis of
+// A generic effect (docs/file-formats.md#generic-effects) is a displacement D_k of every point, the basis of
 // its shape (applied_entries.h genericShapeJson) on the path variable it names (path_variables.h)
 // times its coefficients: P = o + ir je_x + jr je_y + D_k. Identification then fits the measured
 // points minus D_k, and compensation aims at N_k - D_k.
@@ -56,9 +57,9 @@ struct CyclicTerm {
   double phaseDeg = 0.0;
 };
 
-/// An applied generic effect `unexplained:<against>` (CONTRACT.md "The open world"): a displacement of
-/// every point, genericBasis(shape) w on the path variable `against` (path_variables.h; x and y as
-/// two components), with w as the diagnosis estimated it.
+/// An applied generic effect `unexplained:<against>` (docs/file-formats.md#generic-effects): a displacement
+/// of every point, genericBasis(shape) w on the path variable `against` (path_variables.h; x and y as two
+/// components), with w as the diagnosis estimated it.
 struct GenericDisplacement {
   diagnose::GenericForm shape;
   std::vector<double> coefficients;  ///< w, one per basis column (mm)

@@ -1,11 +1,11 @@
 #pragma once
-// The effects the user accepted on the diagnosis page and added with Apply (issue 8:
+// The effects the user accepted on the diagnosis page and added with Apply (stored in
 // studies.diagnosis.<domain>.applied = [{"name": EFFECT, "parameters": {NAME: VALUE}}]), read back
 // into the setup-correction and the posture-matching studies, so that later runs, corrections and
 // adjustments include them. The effect models are the diagnosis's own (setup_diagnosis.h,
 // matching_diagnosis.h), with the parameters as estimated there (not refitted).
 //
-// Setup (CONTRACT.md names; setup_diagnosis.h):
+// Setup (names of docs/file-formats.md#effect-catalogue; setup_diagnosis.h):
 //   tool_wear:<tool>   {"mm_per_part": r}   e_T(p) = e_T + r p     (p the part number)
 //   drift:<datum>      {"mm_per_min": r}    e_i(t) = e_i + r t     (t the report's time_min)
 // The study's deviation of dimension q becomes the PREDICTION for the next part instead of the mean

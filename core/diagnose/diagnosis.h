@@ -1,5 +1,5 @@
 #pragma once
-// The result of the closed loop (CONTRACT.md "diagnose result"): the declared model's residual,
+// The result of the closed loop (docs/file-formats.md#diagnose-result): the declared model's residual,
 // every candidate effect tried with its parameters and evidence, and the error after the accepted
 // effects were added. Shared by the four domains (thermal, kinematic, setup, matching), the CLI,
 // the GUI's diagnosis view and the report.
@@ -16,7 +16,7 @@
 // (Diagnosis::residualCheck) says whether it is white and what it still depends on.
 //
 // Texts for people (evidence, notes, plot axis titles) are kept twice: as the English string of
-// CONTRACT.md (the JSON, the CLI and the report use it, unchanged) and as Phrases
+// docs/file-formats.md (the JSON, the CLI and the report use it, unchanged) and as Phrases
 // (core/common/text.h) from which that string is made, so that the GUI can show them translated
 // with the user's number format. Set them with setEvidence / addEvidence / addNote / setLabels,
 // which keep both forms equal (string == english(parts)).
@@ -45,7 +45,7 @@ struct ErrorSummary {
 
 /// One estimated parameter of an effect. Numbers carry a standard error when one is known.
 struct Parameter {
-  std::string name;                         ///< CONTRACT.md key, e.g. "tau_min", "x_mm", "axis"
+  std::string name;  ///< key of docs/file-formats.md#effect-catalogue, e.g. "tau_min", "x_mm", "axis"
   std::variant<double, std::string> value;  ///< numeric, or text (e.g. cyclic "axis": "x")
   std::optional<double> standardError;      ///< 1-sigma, same unit as value
 };
@@ -71,7 +71,7 @@ struct ResidualPlot {
 
 /// A candidate effect tried in one round.
 struct Candidate {
-  std::string name;  ///< CONTRACT.md name, e.g. "lag", "lag:T1", "backlash"
+  std::string name;  ///< name of docs/file-formats.md#effect-catalogue, e.g. "lag", "lag:T1", "backlash"
   bool accepted = false;
   std::vector<Parameter> parameters;
   double rmseBefore = 0.0;              ///< fit rmse of the model it was tried on
@@ -83,7 +83,7 @@ struct Candidate {
   int round = 0;                     ///< loop round in which it was tried (0-based)
   std::optional<ResidualPlot> plot;  ///< filled for accepted effects (and may be for others)
   Phrases evidenceParts;             ///< evidence == english(evidenceParts)
-  /// A generic effect (`unexplained:<against>`, CONTRACT.md "The open world"): its fixed shape.
+  /// A generic effect (`unexplained:<against>`, docs/file-formats.md#generic-effects): its fixed shape.
   std::optional<GenericForm> generic;
   /// Kinematic generic effects: the coefficients w of genericBasis(*generic) from the final fit, so
   /// that the displacement genericBasis(shape) w can be evaluated on a path (Apply). Empty otherwise
@@ -107,7 +107,7 @@ struct Diagnosis {
   /// The declared model's description and its fitted parameters, for the report (free text).
   std::vector<std::string> notes;
   std::vector<Phrases> notesParts;  ///< notes[i] == english(notesParts[i])
-  /// The final residual's check (CONTRACT.md `residual_check`); every domain fills it.
+  /// The final residual's check (docs/file-formats.md#residual_check); every domain fills it.
   std::optional<ResidualCheck> residualCheck;
   /// Thermal: the same check of the held-out rows' residual (JSON `heldout_check`, additive). It is
   /// reported only: the held-out rows chose nothing; its outliers are excluded from heldout_rmse.
@@ -160,7 +160,7 @@ struct LoopRun {
 /// In the `excluded` set of keepNamedOnlyWhenNeeded: every named effect (generic effects only).
 inline constexpr const char* kEveryNamedEffect = "*";
 
-/// "A named effect must explain what it was chosen for" (CONTRACT.md "The open world"). The loops
+/// "A named effect must explain what it was chosen for" (docs/file-formats.md#generic-effects). The loops
 /// prefer a named effect to a generic one in a round; afterwards, when the result accepted a named
 /// effect and still needed a generic effect or left a non-white residual, the names are checked:
 /// the loop is run again without each accepted named effect N (`run({N})`) and once with generic
@@ -178,9 +178,10 @@ Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std
 void attachOutliers(Diagnosis& d, std::vector<Outlier> outliers, double threshold,
                     const std::function<Phrase(const Outlier&)>& describe);
 
-/// The JSON of CONTRACT.md: {"domain", "baseline": {"rmse","max_abs"[,"heldout_rmse"]},
-/// "effects": [{"name","accepted","parameters":{name: value},"rmse_before","rmse_after",
-/// "evidence", ...}], "final": {...}}. Additive keys: "units", "uncertainty" per effect
+/// The JSON of docs/file-formats.md#diagnose-result: {"domain", "baseline":
+/// {"rmse","max_abs"[,"heldout_rmse"]}, "effects": [{"name","accepted","parameters":{name:
+/// value},"rmse_before","rmse_after", "evidence", ...}], "final": {...}}. Additive keys: "units",
+/// "uncertainty" per effect
 /// ({name: standard error}), "heldout_rmse_before/after", "score", "round".
 nlohmann::json toJson(const Diagnosis& d);
 

@@ -694,8 +694,8 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
 Diagnosis diagnoseKinematic(const MeasuredPath& path, const KinematicDiagnosisOptions& o,
                             Observer* observer) {
   requireValid(o, "kinematic diagnosis options");
-  // Gross errors (CONTRACT.md `outliers`): found on the declared model's residual (robust z per
-  // coordinate, see residual_check.h), the points excluded and the loop run without them.
+  // Gross errors (`outliers`, docs/file-formats.md#residual_check): found on the declared model's residual
+  // (robust z per coordinate, see residual_check.h), the points excluded and the loop run without them.
   const IdentifyResult base = identifyActuatorErrors(path);  // checks the path (InputError)
   std::vector<std::size_t> all(path.size());
   std::iota(all.begin(), all.end(), 0);

@@ -1,11 +1,11 @@
 #pragma once
-// The closed loop in the kinematic domain (issue 8, CONTRACT.md "The declared models", "diagnose").
+// The closed loop in the kinematic domain (docs/file-formats.md#the-declared-models and #diagnose-result).
 //
 // Declared model: the Cartesian machine of cartesian_model.h, P = o + ir(a) x + jr(b) y, identified
 // by core/kinematics/identification.h (actuator origin and orientation errors, nothing else).
 //
-// Candidate effects (CONTRACT.md names) act on the joint coordinates exactly as the simulator's
-// (core/sim/effects_kinematic.h, pathMotion for directions and tangents), and are estimated
+// Candidate effects (docs/file-formats.md#effect-catalogue names) act on the joint coordinates exactly as the
+// simulator's (core/sim/effects_kinematic.h, pathMotion for directions and tangents), and are estimated
 // jointly with o, a, b by Levenberg-Marquardt on the sum of squared residual distances:
 //   `backlash`   bx, by (full lost motion, mm)               2 parameters
 //   `scale`      sx, sy (ppm)                                 2 parameters
@@ -22,9 +22,9 @@
 // the lowest dBIC is accepted, the model refitted with it and the others tried again, until none
 // passes.
 //
-// The open world (CONTRACT.md, residual_check.h): points whose declared-model residual has a robust
-// z above the outlier threshold are excluded before the loop (residualCheck->outliers, with row).
-// The residual check works on the residual vectors (x and y as two components) against row (path
+// The open world (docs/file-formats.md#residual_check, residual_check.h): points whose declared-model
+// residual has a robust z above the outlier threshold are excluded before the loop (residualCheck->outliers,
+// with row). The residual check works on the residual vectors (x and y as two components) against row (path
 // order), the path angle about the centroid, the loop direction (CCW / CW), the samples since an
 // axis reversed and the commanded x and y. Every round also tries the generic effects of the
 // strongest structures as displacements with one set of coefficients per coordinate, estimated

@@ -14,7 +14,7 @@
 // An effect is identifiable only when every column of Zp keeps more than 1e-6 of its norm (it is
 // not absorbed by the declared model) and Zp has full column rank (same SVD test).
 //
-// Acceptance (issue 8 item 2: "an information criterion with a conservative threshold" and "a
+// Acceptance ("an information criterion with a conservative threshold" and "a
 // practically relevant amount"): the Bayesian information criterion of a Gaussian linear model,
 //   BIC = n ln(RSS / n) + p ln n,     dBIC = n ln(RSS_after / RSS_before) + k ln n,
 // with k the parameters the effect adds, except that the data term uses the residual degrees of

@@ -1,5 +1,5 @@
 #pragma once
-// The closed loop, written once for the four domains (issue 15 item 6; diagnosis.h describes it):
+// The closed loop, written once for the four domains (diagnosis.h describes it):
 //
 //   repeat: the candidates of the round are the catalogue's named effects the domain still offers
 //   and the generic effects `unexplained:<against>` of the current residual's strongest structures
@@ -13,7 +13,8 @@
 // domain rules of the choice (thermal: a generic effect of a measured column displaces a name that
 // validates worse; setup: tool wear over drift of the same datum when the data cannot tell them
 // apart). LoopStyle keeps what the results of each domain have always looked like (which candidates
-// are listed, how progress is reported), so that the JSON of CONTRACT.md stays as it was.
+// are listed, how progress is reported), so that the JSON of docs/file-formats.md#diagnose-result stays as it
+// was.
 #include <cstddef>
 #include <optional>
 #include <set>

@@ -344,7 +344,7 @@ Phrases describe(const std::vector<Parameter>& ps) {
   return s;
 }
 
-/// The residual variables of a point set (CONTRACT.md "The open world"): row (file order), the
+/// The residual variables of a point set (docs/file-formats.md#residual_check): row (file order), the
 /// nominal coordinates x, y (z when it varies), the polar angle about the centroid, the surface
 /// (one level each), the nominal normal's components nx, ny, nz, and per surface with at least 6
 /// points surface:<s> = the position along the surface's longest principal direction (NaN on the
@@ -698,8 +698,8 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
   requireValid(options, "matching diagnosis options");
   const matching::DofLocks locks = matching::effectiveLocks(set, {});
   matching::requireDeterminable(set, locks, false, matching::FitKind::LeastSquares, "matching diagnosis");
-  // Gross errors (CONTRACT.md `outliers`): found on the rigid fit's residual (robust z per
-  // coordinate, see residual_check.h), the points excluded and the loop run without them.
+  // Gross errors (`outliers`, docs/file-formats.md#residual_check): found on the rigid fit's residual (robust
+  // z per coordinate, see residual_check.h), the points excluded and the loop run without them.
   const Problem pb = makeProblem(set);
   const FitState declared = declaredFit(set, pb, options);
   std::vector<std::size_t> all(set.points.size());

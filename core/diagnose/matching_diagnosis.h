@@ -1,9 +1,9 @@
 #pragma once
-// The closed loop for the matching domain (issue 8; CONTRACT.md "The declared models": a rigid-body
+// The closed loop for the matching domain (docs/file-formats.md#the-declared-models: a rigid-body
 // posture error, rotation and translation, nothing else).
 //
-// Observations (CONTRACT.md "match": a point's deviation is its residual along the nominal normal
-// where the file has normals, else the whole residual):
+// Observations (docs/file-formats.md#match-result: a point's deviation is its residual along the nominal
+// normal where the file has normals, else the whole residual):
 //   * points with normals: one per point, the deviation along the (rotated) nominal normal,
 //       r_i = (R n_i) . (p_i - f(q_i));  the tangential position of a probed point carries no
 //       information about the part (the probe is driven there), so it is not fitted;
@@ -35,8 +35,8 @@
 // residual against the polar angle (deg), plus the 2D field `vectors` = (x, y, dx, dy) of the
 // in-plane residuals before the effect, in the nominal frame.
 //
-// The open world (CONTRACT.md, residual_check.h): points whose rigid-fit residual has a robust z
-// above the outlier threshold are excluded before the loop (residualCheck->outliers, with row and
+// The open world (docs/file-formats.md#residual_check, residual_check.h): points whose rigid-fit residual has
+// a robust z above the outlier threshold are excluded before the loop (residualCheck->outliers, with row and
 // id) unless the rest would not determine the posture. Every round also tries the generic effects
 // of the current residual's strongest structures (variables: row, nominal x, y, z, the polar angle
 // about the centroid, the surface as levels, the normal's nx, ny, nz, and surface:<s> = the

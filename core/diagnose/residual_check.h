@@ -1,5 +1,5 @@
 #pragma once
-// The open world of the closed loop (CONTRACT.md "The open world"): is the final residual white,
+// The open world of the closed loop (docs/file-formats.md#residual_check): is the final residual white,
 // and if not, what does it still depend on? Shared by the four domains.
 //
 // Observations. A domain hands over its residual r (one value per observation, in the data's
@@ -60,7 +60,8 @@ struct ResidualVariable {
     Angle,       ///< degrees; periodic
     Category     ///< values are level indices 0 .. levels.size() - 1; level
   };
-  std::string name;  ///< CONTRACT.md "against": a column name, time, row, angle, direction, x, part, ...
+  std::string name;  ///< "against" (docs/file-formats.md#residual_check): a column name, time, row, angle,
+                     ///< direction, x, part, ...
   Kind kind = Kind::Continuous;
   std::vector<double> values;
   std::vector<std::string> levels;  ///< Category: the level names
@@ -72,7 +73,7 @@ struct ResidualVariable {
   std::vector<double> weights;
 };
 
-/// Forms of a dependence (CONTRACT.md `form`).
+/// Forms of a dependence (docs/file-formats.md#residual_check).
 enum class DependenceForm { Linear, Smooth, Step, Periodic, Level };
 const char* formName(DependenceForm f);
 
@@ -225,8 +226,8 @@ double genericSearchPenalty(const ResidualCheck& check);
 /// The variable named `name` in `variables` (nullptr when absent).
 const ResidualVariable* findVariable(const std::vector<ResidualVariable>& variables, const std::string& name);
 
-/// The CONTRACT.md JSON of a check: {"white", "tests", "structure", "outliers"} (+ "level",
-/// "outlier_threshold", "summary").
+/// The JSON of a check (docs/file-formats.md#residual_check): {"white", "tests", "structure", "outliers"} (+
+/// "level", "outlier_threshold", "summary").
 nlohmann::json toJson(const ResidualCheck& c);
 
 }  // namespace metrofit::diagnose

@@ -67,7 +67,7 @@ bool SetupDiagnosisOptions::isValid(std::string* why) const {
 
 namespace {
 
-/// The residual variables of the setup rows (CONTRACT.md "The open world"): row (file order) and
+/// The residual variables of the setup rows (docs/file-formats.md#residual_check): row (file order) and
 /// time (natural orders), part (one level per part), dimension (one level per dimension) and, per
 /// dimension with at least 6 rows, dimension:<d> = the part number on that dimension's rows, and per
 /// setup datum datum:<id> = the part number weighted by the datum's gain on each row's dimension.
@@ -518,8 +518,8 @@ Eigen::VectorXd declaredResidual(const setup::Model& model, const setup::Measure
 Diagnosis diagnoseSetup(const setup::Model& model, const setup::Measurements& measurements,
                         const SetupDiagnosisOptions& options, Observer* observer) {
   requireValid(options, "setup diagnosis options");
-  // Gross errors (CONTRACT.md `outliers`): found on the declared model's residual (robust z, see
-  // residual_check.h), excluded, and the loop run without them. A gross error hides behind an
+  // Gross errors (`outliers`, docs/file-formats.md#residual_check): found on the declared model's residual
+  // (robust z, see residual_check.h), excluded, and the loop run without them. A gross error hides behind an
   // effect only when the effect is many times larger than the noise; the final check still lists
   // such a point as structure (a spike), not silently.
   std::vector<bool> excluded(measurements.rows.size(), false);

@@ -1,5 +1,5 @@
 #pragma once
-// The closed loop for the setup domain (issue 8; CONTRACT.md "The declared models": constant errors
+// The closed loop for the setup domain (docs/file-formats.md#the-declared-models: constant errors
 // of the setup data acting through the relation graph, nothing else).
 //
 // Data: a CMM report series (core/setup/report.h), one row r per (part, dimension q) with the
@@ -11,7 +11,7 @@
 // same features): the fit is the minimum-norm one and only the residual is used (see
 // linear_evidence.h); the notes give the rank.
 //
-// Candidate effects (CONTRACT.md names), each one extra column of the design:
+// Candidate effects (docs/file-formats.md#effect-catalogue names), each one extra column of the design:
 //   tool_wear:<tool>    the tool's effective length changes linearly with the part number,
 //                       e_T(p) = e_T + mm_per_part * p           column G[q][T] * p_r
 //                       (for every setup datum of kind "tool");
@@ -35,15 +35,15 @@
 // range), when there are fewer rows than the declared model's rank + 1; OptionsError for invalid
 // options.
 //
-// The open world (CONTRACT.md, residual_check.h): rows whose declared-model residual has a robust z
-// above the outlier threshold are excluded before the loop (Diagnosis::residualCheck->outliers, with
-// row, part and dimension). Every round also tries the generic effects of the current residual's
-// strongest structures (variables: row and time in file order, part and dimension as levels, and
-// dimension:<d> = the part number on the rows of dimension d, datum:<id> = the part number times the
-// datum's gain on each row), each its basis as extra columns,
-// under the same decision with an extra penalty 2 ln(tests) for the search; the winner of the round
-// is the candidate with the lowest dBIC, so a named effect is given only when it explains the data
-// at least as well as the generic alternative. The final residual's check is in residualCheck.
+// The open world (docs/file-formats.md#residual_check, residual_check.h): rows whose declared-model residual
+// has a robust z above the outlier threshold are excluded before the loop
+// (Diagnosis::residualCheck->outliers, with row, part and dimension). Every round also tries the generic
+// effects of the current residual's strongest structures (variables: row and time in file order, part and
+// dimension as levels, and dimension:<d> = the part number on the rows of dimension d, datum:<id> = the part
+// number times the datum's gain on each row), each its basis as extra columns, under the same decision with
+// an extra penalty 2 ln(tests) for the search; the winner of the round is the candidate with the lowest dBIC,
+// so a named effect is given only when it explains the data at least as well as the generic alternative. The
+// final residual's check is in residualCheck.
 #include <string>
 
 #include "core/common/run.h"

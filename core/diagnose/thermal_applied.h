@@ -1,5 +1,5 @@
 #pragma once
-// Thermal effects added to a model (issue 8: "Apply adds the accepted effect to the study's model so
+// Thermal effects added to a model ("Apply adds the accepted effect to the study's model so
 // later runs and compensations include it"). One place turns a set of thermal effects into the
 // columns a model fits on, used by the closed loop itself (thermal_diagnosis.h) and by every fit of
 // the thermal study (the Thermal page's Models tab, the report's thermal section):
@@ -13,7 +13,7 @@
 //                            "unexplained:<against>#1", "#2", ...
 //
 // The applied list is what the diagnosis page's Apply stores (studies.diagnosis.thermal.applied,
-// CONTRACT.md effect names and parameter keys):
+// effect names and parameter keys of docs/file-formats.md#effect-catalogue):
 //   [{"name": "lag:T2", "parameters": {"tau_min": 15.5}}, {"name": "input:spindle_rpm",
 //     "parameters": {"coefficient": 0.001}}, {"name": "drift", "parameters": {"per_min": 0.01}},
 //    {"name": "unexplained:T2", "parameters": {...}, "shape": {"against": "T2", "form": "smooth", ...}}]
@@ -102,7 +102,7 @@ ThermalLogWithEffects withThermalEffects(const ThermalLog& log, const std::vecto
                                          const ThermalEffectSet& effects);
 
 /// One model fitted twice, on the declared inputs and on the inputs with the applied effects, with the
-/// same options and seed. An effect must never make the held-out error worse (issue 8): the variant
+/// same options and seed. An effect must never make the held-out error worse: the variant
 /// with the lower held-out RMSE is kept, the declared one on a tie or when the effects' RMSE is not
 /// finite. (GNNMCI(1,N) and GMC(1,N) are first-order lags of their inputs themselves: on the demo a
 /// `lag:T2` makes their held-out error rise, so they keep the declared inputs.)

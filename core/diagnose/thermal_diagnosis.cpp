@@ -767,7 +767,7 @@ class Problem {
   // The target minus its first value: per block its sum and sum of squares.
   std::vector<double> yc_, ySum_, yy_;
   double y0_ = 0.0;
-  // The coarse resolution of the lag search (issue 15 item 9): groups of m consecutive rows inside
+  // The coarse resolution of the lag search: groups of m consecutive rows inside
   // each block, their means weighted by their sizes; m = 1 (no coarse search) up to kCoarseRows rows.
   bool coarse_ = false;
   std::vector<std::size_t> gEdge_, gOfBlock_;
@@ -1120,7 +1120,7 @@ std::vector<PhraseArg> figureArgs(const Fit& cur, const Fit& f, const std::strin
           num(cur.rmse), num(f.rmse), num(cur.heldout), num(f.heldout)};
 }
 
-/// The variables the residual may depend on (CONTRACT.md `against`), on every row: time (its
+/// The variables the residual may depend on (docs/file-formats.md#residual_check), on every row: time (its
 /// natural order), row (file order), and every numeric column of the log but the target (declared
 /// inputs too: a non-linear dependence on a declared input is structure the model lacks).
 std::vector<ResidualVariable> residualVariables(const ThermalLog& log, const std::string& target) {
@@ -1291,8 +1291,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
   Fit cur = fitViews(pb, state);
   if (!cur.ok) throw ValidationError(ErrorContext{log.source, 0, 0, "inputs"}, cur.why.english());
   Residual curRes = pb.residual(state[full], cur);
-  // Gross errors (CONTRACT.md `outliers`): robust z of the declared model's residual on the fit rows
-  // (residual_check.h findOutliers), excluded from every fit (weight 0), the model refitted.
+  // Gross errors (`outliers`, docs/file-formats.md#residual_check): robust z of the declared model's residual
+  // on the fit rows (residual_check.h findOutliers), excluded from every fit (weight 0), the model refitted.
   std::vector<Outlier> outliers, heldoutOutliers;
   double outlierThreshold = 0.0, heldoutThreshold = 0.0;
   {
@@ -1440,7 +1440,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       if (!now.drift) out.push_back("drift");
       return out;
     }
-    // Generic candidates (CONTRACT.md "The open world"): the strongest structures of the current
+    // Generic candidates (docs/file-formats.md#generic-effects): the strongest structures of the current
     // residual on the fit rows, each a basis of its variable (evaluated on every row), under the same
     // evidence plus the search penalty 2 ln(tests) in the in-sample criterion.
     ResidualCheck roundCheck() override {
@@ -1606,15 +1606,15 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
               one = i;
           if (one && !(fits[*best].cv <= (1.0 - o.minHeldoutGain) * fits[*one].cv)) best = one;
         }
-        // "A named effect must explain what it was chosen for" (CONTRACT.md "The open world"): after a
-        // named effect of a variable (input:c: c; drift: time) the fit rows' residual must
-        // depend on that variable at most half as much as before (variance explained by its
-        // structure: share x rmse^2); otherwise it is rejected and the next one is chosen (an input
-        // that followed a periodic coolant load by chance took 13 % of the validation error and left
-        // its own dependence as it was). Not "no longer at all": a second effect correlated with the
-        // variable (the spindle heats T2) still shows through it until it is added. Not for a lag:
-        // a lagged input changes how the residual depends on the input itself (on a grey model's log
-        // the right lag:T2 left half of its T2 dependence until the spindle's effect was added).
+        // "A named effect must explain what it was chosen for" (docs/file-formats.md#generic-effects): after
+        // a named effect of a variable (input:c: c; drift: time) the fit rows' residual must depend on that
+        // variable at most half as much as before (variance explained by its structure: share x rmse^2);
+        // otherwise it is rejected and the next one is chosen (an input that followed a periodic coolant load
+        // by chance took 13 % of the validation error and left its own dependence as it was). Not "no longer
+        // at all": a second effect correlated with the variable (the spindle heats T2) still shows through it
+        // until it is added. Not for a lag: a lagged input changes how the residual depends on the input
+        // itself (on a grey model's log the right lag:T2 left half of its T2 dependence until the spindle's
+        // effect was added).
         if (!best || names[*best].starts_with("unexplained:") || isLag(names[*best])) break;
         const std::string var = variableOf(names[*best]);
         if (var.empty()) break;
@@ -1661,7 +1661,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
         Views bestStates;
         std::array<std::string, 2> bestNames;
         // Partners: every linear candidate (a column each), and the lags among the six candidates with
-        // the lowest fit error (before issue 15 item 9 every lag: on a week of 1 Hz data that was up to
+        // the lowest fit error (before the coarse lag grid every lag: on a week of 1 Hz data that was up to
         // 60 pairs, each with one or two lag searches).
         std::vector<std::size_t> byFit;
         for (std::size_t i = 0; i < fits.size(); ++i)

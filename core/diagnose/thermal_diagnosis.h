@@ -1,6 +1,6 @@
 #pragma once
-// The closed loop in the thermal domain (issue 8, issue 15; CONTRACT.md "The declared models",
-// "diagnose", "The open world: Honest held-out rows").
+// The closed loop in the thermal domain (docs/file-formats.md#the-declared-models,
+// #diagnose-result, #honest-held-out-rows).
 //
 // Rows. The first `trainFraction` of the rows are the fit rows (thermal::fitRowCount, as
 // `thermal fit`), the rest are held out. Everything the loop decides comes from the fit rows only:
@@ -12,7 +12,7 @@
 //   y(k) = c0 + sum_j b_j x_j(k) + e(k),
 // fitted by least squares on the fit rows.
 //
-// Declared model `gmc` or `gnnmci` (--declared; issue 15 item 5): the user's grey model, GMC(1,N) by
+// Declared model `gmc` or `gnnmci` (--declared): the user's grey model, GMC(1,N) by
 // least squares or GNNMCI(1,N) trained by PSO with `seed` (core/thermal/thermal_model.h, fitted on
 // the fit rows exactly as `thermal fit` fits it: changes since the first row, run over the whole log
 // from its first row). The loop then looks for what that model lacks: its prediction g(k) is one
@@ -27,8 +27,8 @@
 // `input:<col>`, `drift`; `lag` (every input through one more lag) is not tried: a grey model is
 // that lag itself. Every validation fold fits its own grey model on its own rows (same seed).
 //
-// Candidate effects (CONTRACT.md names), each adding one parameter with the linear coefficients
-// refitted:
+// Candidate effects (docs/file-formats.md#effect-catalogue names), each adding one parameter with the linear
+// coefficients refitted:
 //   `lag`          every declared input through the first-order lag L_tau of effects_thermal.h;
 //                  tau by a 1-D search (log-spaced grid over [dt / 2, fit span], dt the median
 //                  step of the fit rows, then Brent's method on log tau) minimising the sum of
@@ -77,7 +77,7 @@
 // effect present) under the same tests with the penalty of two parameters, and the best passing
 // pair is accepted as two candidates of that round ("accepted together with ...").
 //
-// The open world (CONTRACT.md "The open world", residual_check.h):
+// The open world (docs/file-formats.md#residual_check, residual_check.h):
 //   * Outliers: robust z of the declared model's residual on the fit rows (findOutliers); the rows
 //     above the threshold are excluded from every fit (weight 0), listed with their 1-based data row
 //     in residual_check.outliers and a note.
@@ -103,7 +103,7 @@
 // the fit on all fit rows and the held-out error. The per-block sums and products of every column
 // are stored and reused (a candidate adds one column: one pass over the rows for its products with
 // the others); a lag searched over tau makes one column per tau, dropped after use. Speed on long
-// logs (issue 15 item 9): above 20 000 rows the lag search's grid and the folds' tau refinement run
+// logs: above 20 000 rows the lag search's grid and the folds' tau refinement run
 // on group means of m = ceil(n / 20 000) consecutive rows (the lag filtered on the group means),
 // which only brackets tau; the reported tau is refined on every row (Brent's method to 1e-5 in
 // log tau within +-0.05 of the coarse optimum) and every reported and tested error (fit, fold

@@ -1,12 +1,12 @@
 #pragma once
-// CSV reader and writer following CONTRACT.md "Input files":
+// CSV reader and writer following docs/file-formats.md#input-files:
 // UTF-8 (a UTF-8 BOM is accepted), comma separated, one header row, `#` comment lines allowed
 // before the header, `\n` or `\r\n` line ends, `.` as the decimal point, RFC 4180 quoting
 // ("a ""quoted"", field" and line breaks inside quotes). Blank lines are skipped.
 //
-// Dialects (CONTRACT.md "Own data in a project": every reader takes --delimiter / --decimal):
-// the delimiter may be ',', ';' or a tab and the decimal separator '.' or ','. CsvDialect's
-// zero members mean "detect" (the default):
+// Dialects (docs/file-formats.md#csv-dialects-and-standard-input: every reader takes --delimiter /
+// --decimal): the delimiter may be ',', ';' or a tab and the decimal separator '.' or ','. CsvDialect's zero
+// members mean "detect" (the default):
 //   * delimiter: the one of ',', ';', tab that occurs most often (outside quotes) in the header
 //     line, ',' on a tie or when none occurs; so "time_min;T1;disp_z_um" is read as ';'-separated,
 //     as German and Polish spreadsheets and CMM exports write it;
@@ -16,7 +16,7 @@
 //     none, and a ParseError naming a cell of each form on a tie.
 // With decimal ',' a number must not contain '.' (no thousands separators); number() says so.
 // CsvReadOptions::columnMap renames the file's own columns to the role names the readers look for
-// (CONTRACT.md "--map ROLE=COLUMN"), so every reader built on CsvTable takes mapped files.
+// (docs/file-formats.md#own-data-in-a-project), so every reader built on CsvTable takes mapped files.
 //
 // Every malformed input gives a ParseError whose message names the file, the physical line and
 // the field (column) and says what is wrong: UTF-16 / binary / invalid UTF-8 content, an

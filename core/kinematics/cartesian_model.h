@@ -1,6 +1,7 @@
 #pragma once
-// The Cartesian machine model of the kinematic-compensation paper (seed 002, Section IV), in 2D as
-// the paper and with three axes for real machines. Lengths in mm, angles in degrees at the API.
+// The Cartesian machine model of the kinematic-compensation paper (IEEE Access, kinematic compensation
+// algorithm, Section IV), in 2D as the paper and with three axes for real machines. Lengths in mm, angles in
+// degrees at the API.
 //
 // 2D (paper Eq. 1-15). The X actuator starts at Oxr and moves along the unit vector ir; the Y
 // actuator, carried by the X actuator (serial chain, X first), starts at Oyr and moves along jr:
@@ -17,7 +18,7 @@
 // Reading of Eq. 9: Oxr + dOr = Oyr, so P = Oyr + [ir jr] Pr. Only Oyr (the point the tool reaches
 // at Pr = 0) is observable from tool positions; Oxr alone only moves the intersection point.
 //
-// The error parameters of CONTRACT.md ("kinematic identify") are exactly the observable ones:
+// The error parameters of docs/file-formats.md#kinematic-identify-result are exactly the observable ones:
 //   origin o = Oyr (origin_mm), ir = (cos a, sin a) (x_axis_angle_deg a),
 //   jr = (-sin b, cos b) (y_axis_angle_deg b), squareness error = b - a,
 // so that P = o + [ir jr] Pr and Pr = [ir jr]^-1 (P - o); det [ir jr] = cos(b - a).
@@ -35,7 +36,8 @@
 
 namespace metrofit {
 
-/// The 2D actuator errors as CONTRACT.md parametrises them (see the header comment).
+/// The 2D actuator errors as docs/file-formats.md#kinematic-identify-result parametrises them (see the header
+/// comment).
 struct ActuatorErrors2 {
   Eigen::Vector2d originMm = Eigen::Vector2d::Zero();  ///< o = Oyr: where the tool is at Pr = 0
   double xAxisAngleDeg = 0.0;                          ///< a: ir = (cos a, sin a)
@@ -60,8 +62,8 @@ class CartesianMachine2 {
   /// the two are parallel (|det [ir jr]| < 1e-9).
   CartesianMachine2(const Eigen::Vector2d& originX, const Eigen::Vector2d& originY,
                     const Eigen::Vector2d& dirX, const Eigen::Vector2d& dirY);
-  /// The machine of CONTRACT.md errors, with Oxr = Oyr = o (so dOr = 0); throws OptionsError when
-  /// `errors` is invalid.
+  /// The machine of the identify result's errors (docs/file-formats.md#kinematic-identify-result), with Oxr =
+  /// Oyr = o (so dOr = 0); throws OptionsError when `errors` is invalid.
   static CartesianMachine2 fromErrors(const ActuatorErrors2& errors);
 
   /// The observable errors: origin Oyr, a = atan2(iry, irx), b = atan2(-jrx, jry).

@@ -1,6 +1,7 @@
 #pragma once
 // Exports of a compensated path (the references Pr of Eq. 15 of the kinematic-compensation paper,
-// seed 002) for the machine controller: ISO 6983 G-code and a STEP-NC Part 21 file.
+// IEEE Access, kinematic compensation algorithm) for the machine controller: ISO 6983 G-code and a STEP-NC
+// Part 21 file.
 //
 // G-code: a '%' tape frame, a comment header that states the machine model, the errors the path
 // compensates and the sign convention, then G21 G90 G17 and one G01 block per point (absolute mm,

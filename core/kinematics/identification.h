@@ -2,7 +2,8 @@
 // Identification of the 2D actuator errors from a measured path or a circular test (beyond the
 // paper, which takes the errors as known). Lengths in mm, angles in degrees at the API.
 //
-// Model (seed 002, Eq. 9 read as in cartesian_model.h): the tool reaches, for command Pr_k,
+// Model (IEEE Access, kinematic compensation algorithm, Eq. 9 read as in cartesian_model.h): the tool
+// reaches, for command Pr_k,
 //   P(Pr_k; o, a, b) = o + ir(a) x_k + jr(b) y_k,  ir = (cos a, sin a), jr = (-sin b, cos b).
 // Parameters theta = (o_x, o_y, a, b) minimise the sum of squared residual distances
 //   S(theta) = sum_k |r_k|^2,  r_k = P(Pr_k; theta) - Pmeas_k,
@@ -79,8 +80,9 @@ void checkIdentifiable(const MeasuredPath& path);
 IdentifyResult identifyActuatorErrors(const MeasuredPath& path, const IdentifyOptions& options = {},
                                       Observer* observer = nullptr);
 
-/// The CONTRACT.md identify JSON: origin_mm, x_axis_angle_deg, y_axis_angle_deg, rmse_mm, plus
-/// squareness_deg, standard_errors, sigma_mm, max_abs_mm, points, iterations, termination.
+/// The identify JSON (docs/file-formats.md#kinematic-identify-result): origin_mm, x_axis_angle_deg,
+/// y_axis_angle_deg, rmse_mm, plus squareness_deg, standard_errors, sigma_mm, max_abs_mm, points, iterations,
+/// termination.
 nlohmann::json identifyResultToJson(const IdentifyResult& result);
 
 /// Reads the errors back from identify's JSON (origin_mm [x, y], x_axis_angle_deg,

@@ -1,14 +1,14 @@
 #pragma once
 // Identification of the three-axis actuator errors from circular tests in the XY, YZ and ZX planes
-// (seed 002's Cartesian model, Eq. 9 in three axes as in cartesian_model.h; the paper itself runs
-// the 2D machine only). Lengths in mm, angles in degrees at the API.
+// (the Cartesian model of IEEE Access, kinematic compensation algorithm; Eq. 9 in three axes as in
+// cartesian_model.h; the paper itself runs the 2D machine only). Lengths in mm, angles in degrees at the API.
 //
 // Planes and their in-plane axes (u, v), each a right-handed pair as XY is:
 //   XY: (x, y)    YZ: (y, z)    ZX: (z, x)
 // A circular test in a plane commands (u, v) with the third coordinate 0 and measures the tool's
 // (u, v); its CSV is u_cmd_mm,v_cmd_mm,u_meas_mm,v_meas_mm with the plane's letters (XY:
-// x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm as CONTRACT.md; YZ: y_cmd_mm,z_cmd_mm,y_meas_mm,z_meas_mm;
-// ZX: z_cmd_mm,x_cmd_mm,z_meas_mm,x_meas_mm).
+// x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm as docs/file-formats.md#circular-test; YZ:
+// y_cmd_mm,z_cmd_mm,y_meas_mm,z_meas_mm; ZX: z_cmd_mm,x_cmd_mm,z_meas_mm,x_meas_mm).
 //
 // Errors. As in 2D, a plane's u axis is seen at the angle a from u, its v axis at b from v (CCW
 // in the plane positive): the projection of the u actuator's direction onto the plane is

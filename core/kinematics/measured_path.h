@@ -1,5 +1,5 @@
 #pragma once
-// The path files of the kinematic domain (CONTRACT.md "Input files"):
+// The path files of the kinematic domain (docs/file-formats.md#input-files):
 //   measured path / circular test  x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm  (rows in path order)
 //   nominal path                   x_mm,y_mm
 //   compensated references         x_cmd_mm,y_cmd_mm                       (what compensate writes)

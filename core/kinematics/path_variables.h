@@ -1,5 +1,5 @@
 #pragma once
-// The variables a kinematic residual may depend on (CONTRACT.md "The open world", `against`), on every
+// The variables a kinematic residual may depend on (docs/file-formats.md#residual_check, `against`), on every
 // point of a path of commands. The closed loop (core/diagnose/kinematic_diagnosis.h) tests its residual
 // against them and fits generic effects of them; an applied generic effect (applied_kinematic.h) is
 // evaluated on them, so both see the same values:

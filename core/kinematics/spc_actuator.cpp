@@ -185,7 +185,8 @@ nlohmann::json spcActuatorResultToJson(const SpcActuatorResult& r, const AxisFea
   j["compensation"] = {{"apply", r.apply}, {"reason", r.reason}};
   j["model"] =
       "X feature: dev_y = c_X + tan(a) x_meas; Y feature: dev_x = c_Y - tan(b) y_meas; "
-      "P = origin + x_cmd (cos a, sin a) + y_cmd (-sin b, cos b) (seed 002 Eq. 9, compensation Eq. 15)";
+      "P = origin + x_cmd (cos a, sin a) + y_cmd (-sin b, cos b) (IEEE Access kinematic compensation paper, "
+      "Eq. 9, compensation Eq. 15)";
   return j;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // From the SPC regression offset angle to actuator errors and a compensation: the chain of the
-// kinematic-compensation paper (seed 002) from Section IV.A (Fig. 9-10, Tables 2-3) to Section IV
-// (Eq. 9, 15). Lengths in mm, angles in degrees at the API.
+// kinematic-compensation paper (IEEE Access, kinematic compensation algorithm) from Section IV.A (Fig. 9-10,
+// Tables 2-3) to Section IV (Eq. 9, 15). Lengths in mm, angles in degrees at the API.
 //
 // The paper measures linear features of the part that each axis made (Dx, Dy); a linear regression
 // through the measurement results of a feature (Fig. 10) gives "a slight incline calculated to

@@ -2,8 +2,8 @@
 // 5-axis machine topologies and the adjustment values that move the workpiece coordinate system
 // (WCS) onto the matched posture (Jiang et al., Mech. Sci. 9, 2018, Section 3, Eq. 12-13).
 //
-// Input: the posture p = R q + t of the workpiece (CONTRACT.md "match", core/matching/pose.h), in the
-// coordinates of the current WCS with the worktable as reference (the paper's "taking worktable as
+// Input: the posture p = R q + t of the workpiece (docs/file-formats.md#match-result, core/matching/pose.h),
+// in the coordinates of the current WCS with the worktable as reference (the paper's "taking worktable as
 // reference"). The nominal program is written in WCS coordinates q, so the adjusted WCS must have its
 // origin at t and its axes along the columns of R: a nominal point q then lies at R q + t, on the
 // workpiece. Linear axis values follow the ISO 841 convention (tool relative to the workpiece), so a

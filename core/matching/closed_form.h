@@ -1,7 +1,7 @@
 #pragma once
-// The least-squares reference fit (issue 5 item 4): minimises the paper's Eq. (8) exactly,
+// The least-squares reference fit: minimises the paper's Eq. (8) exactly,
 //   SS(R, t, s) = sum_i |p_i - (s R q_i + t)|^2 ,
-// the sum behind CONTRACT's rmse_mm.
+// the sum behind the match result's rmse_mm (docs/file-formats.md#match-result).
 //
 // Unconstrained (Horn 1987 / Umeyama 1991, "Least-squares estimation of transformation parameters
 // between two point patterns", IEEE PAMI 13(4), Eq. 38-42), from the centred moments:

@@ -1,5 +1,5 @@
 #pragma once
-// Tolerance evaluation of a probe point set under a posture (CONTRACT.md "match", issue 5 item 5).
+// Tolerance evaluation of a probe point set under a posture (docs/file-formats.md#match-result).
 //
 // For a posture p = s R q + t (pose.h) and point i:
 //   residual distance  e_i = |p_i - (s R q_i + t)|

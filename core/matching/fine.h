@@ -5,23 +5,22 @@
 // Objective, Eq. (8): f(R1, T1) = (1/n) sum |Q_i - (P'_i R1 + T1)|^2 over the rough-matched actual
 // points P' (Eq. 1). Eq. (9) eliminates T1 with the centroids (T1 = mean Q - mean P' R1), leaving the
 // three angles (alpha1, beta1, gamma1) of R1. Reported as an RMS in mm, sqrt(f), which has the same
-// minimiser and the unit of the paper's "f(R1) = 0.1148 mm" and of CONTRACT's rmse_mm.
+// minimiser and the unit of the paper's "f(R1) = 0.1148 mm" and of the match result's rmse_mm.
 //
-// Here the objective is evaluated in the posture convention of CONTRACT (pose.h): for decision x the
-// total alignment is A = A1(x) A0 (Eq. 2 prints R = R1 R0, which is this column-vector order; in the
-// paper's own row vectors, P'' = (P R0 + T0) R1 + T1, it would read R0 R1), the posture rotation R = A^T,
-// and SS = sum |p_i - (s R q_i + t)|^2 with t (and s with --allow-scale)
-// optimal for R (fit_input.h optimalTranslationScale: the centroid translation of Eq. 9, extended to
-// locked translation components and to the scale). For a rigid fit this equals n f(R1) exactly, since
-// |q - A p - T| = |p - R q - t| for R = A^T, t = -A^T T.
-// Eq. (2) as printed (T = T0 + T1) is the first-order form of the composition T = A1 T0 + T1; the
-// exact composition is used.
+// Here the objective is evaluated in the posture convention of docs/file-formats.md#match-result (pose.h):
+// for decision x the total alignment is A = A1(x) A0 (Eq. 2 prints R = R1 R0, which is this column-vector
+// order; in the paper's own row vectors, P'' = (P R0 + T0) R1 + T1, it would read R0 R1), the posture
+// rotation R = A^T, and SS = sum |p_i - (s R q_i + t)|^2 with t (and s with --allow-scale) optimal for R
+// (fit_input.h optimalTranslationScale: the centroid translation of Eq. 9, extended to locked translation
+// components and to the scale). For a rigid fit this equals n f(R1) exactly, since |q - A p - T| = |p - R q -
+// t| for R = A^T, t = -A^T T. Eq. (2) as printed (T = T0 + T1) is the first-order form of the composition T =
+// A1 T0 + T1; the exact composition is used.
 //
 // Bounds (Section 2.3.2): alpha1 in [-|alpha0| - k1, |alpha0| + k1], likewise beta1, gamma1, with the
 // rough angles of PE0 (Eq. 7) and the margins k (boundMarginDeg, all three alike). Degrees.
 //
 // With rotation locks (or planar data, which lock rx and ry) the paper's angles of R1 cannot express
-// "rx stays 0", so the decision becomes the free posture angles themselves (CONTRACT's rx, ry, rz,
+// "rx stays 0", so the decision becomes the free posture angles themselves (the result's rx, ry, rz,
 // locked ones at their values), bounded by [-|r0_j| - k, |r0_j| + k] around the rough posture's
 // angles r0; the translation elimination is the same.
 #include <string>

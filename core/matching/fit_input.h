@@ -1,6 +1,6 @@
 #pragma once
 // What every posture fit needs from a probe point set: the free parameters after the implicit locks,
-// the validation that the points determine them (issue 5 item 1), and centred coordinates.
+// the validation that the points determine them, and centred coordinates.
 //
 // Free parameters: the six of the posture (rx, ry, rz, x, y, z) minus the locks, plus the scale s
 // with --allow-scale. Planar data (no qz/pz) fix rx, ry and z at 0 implicitly: z = 0 for every point,

@@ -98,7 +98,7 @@ bool looksLikeHoleTable(const std::string& text) {
     const std::string line = trim(raw);
     if (line.empty()) continue;
     if (isHeaderLine(line)) return true;
-    if (line.rfind("id,", 0) == 0) return false;  // a CSV header of CONTRACT's probe points
+    if (line.rfind("id,", 0) == 0) return false;  // a CSV header of probe points (file-formats.md)
     if (++seen >= 50) break;
   }
   return false;

@@ -1,5 +1,5 @@
 #pragma once
-// PC-DMIS hole-table text reports (issue 5 item 1), as in the CMM reports of drilled plates, e.g.
+// PC-DMIS hole-table text reports, as in the CMM reports of drilled plates, e.g.
 //
 //   Plug Plate: 8131
 //   Date: 2014-10-14
@@ -15,7 +15,7 @@
 // columns are ignored. Rows: one whitespace-separated number per column; blank and '#' lines are
 // skipped; CRLF or LF line ends.
 //
-// The result is a planar, position-only probe point set (CONTRACT.md "Contact-probed points",
+// The result is a planar, position-only probe point set (docs/file-formats.md#contact-probed-points,
 // the lighter form without normals and without z): q = (Nom X, Nom Y), p = (Meas X, Meas Y), ids
 // "H001", "H002", ... in row order, surface "hole D<Nom D>" (so holes of different nominal size are
 // evaluated as separate groups), or "hole" without a Nom D column.
@@ -47,8 +47,8 @@ HoleTable holeTableFromText(const std::string& text, const std::string& source, 
 HoleTable readHoleTable(const std::string& path, std::size_t minPoints = 3);
 
 /// Probe points from a file in any accepted form, detected by content: a PC-DMIS hole table
-/// (looksLikeHoleTable) or the CSV of CONTRACT.md in the dialect `csv` (probePointsFromCsv). The file
-/// is read once, so "-" (standard input) works.
+/// (looksLikeHoleTable) or the CSV of docs/file-formats.md#contact-probed-points in the dialect `csv`
+/// (probePointsFromCsv). The file is read once, so "-" (standard input) works.
 ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minPoints = 3,
                                        const CsvReadOptions& csv = {});
 

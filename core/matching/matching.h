@@ -1,5 +1,5 @@
 #pragma once
-// Posture matching end to end (issue 5; Jiang et al., Mech. Sci. 9, 2018): one entry point shared by
+// Posture matching end to end (Jiang et al., Mech. Sci. 9, 2018): one entry point shared by
 // the CLI, the GUI and the tests.
 //
 //   sade        rough matching (Eq. 3-7, rough.h) + SADE fine matching (Eq. 8-11, fine.h), the paper's
@@ -82,7 +82,7 @@ struct MatchResult {
 /// sees every generation (sade, ga-simplex) or LP iteration (minimax) and may stop the run.
 MatchResult matchPosture(const ProbePointSet& set, const MatchOptions& options, Observer* observer = nullptr);
 
-/// CONTRACT.md "match" keys (method, rotation_deg, translation_mm, rmse_mm, max_abs_mm,
+/// docs/file-formats.md#match-result keys (method, rotation_deg, translation_mm, rmse_mm, max_abs_mm,
 /// out_of_tolerance {before, after}, scale with allowScale) plus: tolerance_mm, points, normals,
 /// planar, locked, before / after (overall and per-surface stats), evaluations, iterations,
 /// termination, message, trace [{iteration, evaluations, best_mm}], rough, fine, minimax, seed.

@@ -1,5 +1,5 @@
 #pragma once
-// Minimax posture fit (issue 5 item 4): the posture that minimises the largest deviation,
+// Minimax posture fit: the posture that minimises the largest deviation,
 //   F(x) = max_i |d_i(x)|,   x = (rx, ry, rz, tx, ty, tz[, s]) minus the locked parameters,
 // with d_i = (p_i - (s R q_i + t)) . (R n_i) = n_i . (R^T (p_i - t)) - s q_i . n_i where the set has
 // normals, d_i = |p_i - (s R q_i + t)| else (evaluation.h). This is the "bring every point inside the

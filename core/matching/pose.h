@@ -1,5 +1,5 @@
 #pragma once
-// The workpiece posture and its degrees of freedom (CONTRACT.md "match").
+// The workpiece posture and its degrees of freedom (docs/file-formats.md#match-result).
 //
 // Posture: p = s R q + t, q the nominal point, p the measured one (mm), column vectors, with
 //   R = Rz(rz) Ry(ry) Rx(rx)                       (rotation_deg = [rx, ry, rz], degrees)
@@ -9,7 +9,7 @@
 // *alignment* of the actual set onto the theoretical one, P' = P R0 + T0. In column vectors that is
 // q ~ A p + T with A = R0^T, i.e. A is the inverse of the posture rotation: A = R^T, T = -R^T t.
 // Its Eq. 4 matrix is (Rz(gamma) Ry(beta) Rx(alpha))^T, so the paper's angles (alpha, beta, gamma)
-// are eulerZyxDeg(A) = eulerZyxDeg(R^T), while CONTRACT's rotation_deg is eulerZyxDeg(R). For small
+// are eulerZyxDeg(A) = eulerZyxDeg(R^T), while the match result's rotation_deg is eulerZyxDeg(R). For small
 // rotations alpha ~ -rx, beta ~ -ry, gamma ~ -rz.
 #include <array>
 #include <string>
@@ -18,7 +18,8 @@
 
 namespace metrofit::matching {
 
-/// Degrees of freedom of a posture in CONTRACT order: rx, ry, rz (deg), x, y, z (mm).
+/// Degrees of freedom of a posture in the order of the match result (docs/file-formats.md#match-result): rx,
+/// ry, rz (deg), x, y, z (mm).
 enum class Dof { Rx = 0, Ry = 1, Rz = 2, X = 3, Y = 4, Z = 5 };
 inline constexpr int kDofCount = 6;
 /// "rx", "ry", "rz", "x", "y", "z".
@@ -41,7 +42,7 @@ struct DofLocks {
   int freeCount() const;
   /// Locks of both (values of `other` win where both lock).
   DofLocks merged(const DofLocks& other) const;
-  /// "rx,z" (the locked names in CONTRACT order), "" when none.
+  /// "rx,z" (the locked names in that order), "" when none.
   std::string toString() const;
   /// Finite values, angles within +-45 deg.
   bool isValid(std::string* why) const;

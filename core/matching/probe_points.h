@@ -1,5 +1,5 @@
 #pragma once
-// Contact-probed point pairs (CONTRACT.md "Contact-probed points"):
+// Contact-probed point pairs (docs/file-formats.md#contact-probed-points):
 //   id,surface,qx,qy,qz,nx,ny,nz,px,py,pz
 // q = nominal point, n = nominal unit normal (out of the material), p = measured point, in mm.
 // Lighter forms: without nx,ny,nz every point is position-only (deviation = whole distance);

@@ -17,7 +17,7 @@
 // frames' rotation is applied about the centroids, the translation comes from all points, not only
 // from the three references.
 // Eq. (7): PE0 = [alpha0 beta0 gamma0 tx0 ty0 tz0].
-// The rough posture (CONTRACT convention, pose.h): R = A0^T, t = -A0^T T0.
+// The rough posture (the match result's convention, pose.h): R = A0^T, t = -A0^T T0.
 //
 // Reference choice ("far apart, non-collinear, outside the other points", Section 2.1): given ids, or
 // automatically the triangle of nominal points with (locally) maximal area: start from the point

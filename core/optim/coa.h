@@ -1,13 +1,14 @@
 #pragma once
 // Cuckoo optimisation algorithm (COA): R. Rajabioun, "Cuckoo optimization algorithm", Applied Soft
 // Computing 11 (2011) 5508-5518, with the settings R. Stryczek, J. Intell. Manuf. 27(6) 2016
-// (seed 000), section "Comparison ...", found best for the setup problem: at most 40 habitats,
-// 5-10 eggs per cuckoo. Not to be confused with Yang & Deb's cuckoo search (Levy flights).
+// (Stryczek 2016, fast machining error compensation), section "Comparison ...", found best for the setup
+// problem: at most 40 habitats, 5-10 eggs per cuckoo. Not to be confused with Yang & Deb's cuckoo search
+// (Levy flights).
 //
 // Population: cuckoos, each at a habitat x (a feasible point) with its objective f (minimised;
 // Rajabioun maximises the profit -f). Iteration 0 evaluates initialPopulation random habitats.
 // One iteration (one "egg laying + immigration" cycle of Rajabioun's flow chart) then does:
-//  1. Egg laying. Cuckoo k lays E_k ~ U{minEggs..maxEggs} eggs (seed 000: 5-10) within its egg
+//  1. Egg laying. Cuckoo k lays E_k ~ U{minEggs..maxEggs} eggs (Stryczek 2016: 5-10) within its egg
 //     laying radius (Rajabioun's ELR formula)
 //        ELR_k = alpha * E_k / sum_j E_j * (varhi - varlow),
 //     per variable i: ELR_k,i = alpha E_k / sum E * (upper_i - lower_i). Our reading of "lays eggs
@@ -22,7 +23,7 @@
 //  2. The eggs least like the host's are found and killed: the worst killFraction (paper: 10 %) of
 //     this iteration's eggs, by objective.
 //  3. The surviving eggs hatch and grow into cuckoos; parents and young together are capped at
-//     maxPopulation (paper/seed 000: 40): the worst are killed.
+//     maxPopulation (Stryczek 2016: 40): the worst are killed.
 //  4. Immigration. The cuckoos are grouped by k-means (k = clusters, paper: 3-5; Lloyd's algorithm
 //     with k-means++ seeding from the run's Rng, in range-scaled coordinates). The group with the
 //     best mean objective is the goal group, its best habitat the goal point. Every cuckoo except
@@ -38,7 +39,7 @@
 //         F_i ~ U(0, motionCoefficient) per dimension (the code's default motionCoeff is 2).
 //     The new habitat is evaluated (snapped onto the box / grid).
 // An iteration thus costs about sum_k E_k + (population - 1) evaluations (~340 with the defaults;
-// seed 000: "100 iterations correspond to approximately 30,000 solutions"). When the budget runs
+// Stryczek 2016: "100 iterations correspond to approximately 30,000 solutions"). When the budget runs
 // out mid-iteration the iteration ends there.
 #include <numbers>
 #include <string>
@@ -54,9 +55,9 @@ class Coa final : public Algorithm {
   struct Options {
     CommonOptions common;
     int initialPopulation = 40;      ///< habitats evaluated at the start; >= 2
-    int maxPopulation = 40;          ///< cap on living cuckoos (seed 000: 40); >= 2
-    int minEggs = 5;                 ///< eggs per cuckoo, lower bound (seed 000: 5); >= 1
-    int maxEggs = 10;                ///< eggs per cuckoo, upper bound (seed 000: 10); >= minEggs
+    int maxPopulation = 40;          ///< cap on living cuckoos (Stryczek 2016: 40); >= 2
+    int minEggs = 5;                 ///< eggs per cuckoo, lower bound (Stryczek 2016: 5); >= 1
+    int maxEggs = 10;                ///< eggs per cuckoo, upper bound (Stryczek 2016: 10); >= minEggs
     double radiusCoefficient = 1.0;  ///< alpha of the egg laying radius; > 0
     double killFraction = 0.1;       ///< share of eggs killed each iteration (paper: 10 %); [0, 1)
     int clusters = 3;                ///< k of the k-means grouping (paper: 3-5); >= 1

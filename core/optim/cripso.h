@@ -1,7 +1,7 @@
 #pragma once
 // CRIPSO — coral reefs inspired particle swarm optimisation.
 // R. Stryczek, "A metaheuristic for fast machining error compensation", J. Intell. Manuf. 27(6),
-// 2016 (seed 000), section "Coral reefs inspired particle swarm optimization", Fig. 3-4, Eq. 1,
+// 2016, section "Coral reefs inspired particle swarm optimization", Fig. 3-4, Eq. 1,
 // Eq. 11 and the settings of the section "Comparison between the proposed CRIPSO and other
 // algorithms".
 //

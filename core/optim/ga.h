@@ -1,5 +1,5 @@
 #pragma once
-// Elitist real-coded genetic algorithm, as R. Stryczek, J. Intell. Manuf. 27(6) 2016 (seed 000),
+// Elitist real-coded genetic algorithm, as R. Stryczek, J. Intell. Manuf. 27(6) 2016,
 // section "Comparison ...", used it for comparison: "the variation of GA including the principle of
 // elitism, as the winners of the competition qualify to the next population"; population 50,
 // probability of gene mutation 0.1. The flow chart it cites (Stryczek 2009) is not in the seed;

@@ -1,7 +1,7 @@
 #pragma once
-// GA-simplex: the comparison method of seed 001 (L. Jiang et al., Mech. Sci. 9, 2018, Section 4.2,
-// "genetic algorithm-simplex (GAs)", after Yan et al. 2004): a genetic algorithm explores the box,
-// then the Nelder-Mead simplex (neldermead.h) refines the GA's best point. The paper gives no
+// GA-simplex: the comparison method of Jiang 2018, posture adjustment by SADE (L. Jiang et al., Mech. Sci. 9,
+// 2018, Section 4.2, "genetic algorithm-simplex (GAs)", after Yan et al. 2004): a genetic algorithm explores
+// the box, then the Nelder-Mead simplex (neldermead.h) refines the GA's best point. The paper gives no
 // settings for it; this is a standard real-coded GA:
 //   * population NP (default 50), generation 0 uniform random feasible points;
 //   * binary tournament selection (kTournamentSize = 2) of two parents;

@@ -9,8 +9,8 @@
 //   contract  f_n <= f_r < f_{n+1}: outside x_c = c + rho (x_r - c), accept if f_c <= f_r;
 //             f_r >= f_{n+1}:       inside  x_c = c - rho (c - x_{n+1}), accept if f_c < f_{n+1};
 //   shrink    otherwise: x_i = x_1 + sigma (x_i - x_1), i = 2 .. n+1.
-// In the project it is the "simplex" half of the paper's comparison method GA-simplex (seed 001,
-// Section 4.2, after Yan et al. 2004; see gasimplex.h), and a local refiner on its own.
+// In the project it is the "simplex" half of the paper's comparison method GA-simplex (Jiang 2018, posture
+// adjustment by SADE, Section 4.2, after Yan et al. 2004; see gasimplex.h), and a local refiner on its own.
 //
 // Start: Options::start, or (when empty) a uniform random feasible point drawn from common.seed, so
 // the method is deterministic given (start, seed). Initial simplex: x_0 and x_0 + h_i e_i with

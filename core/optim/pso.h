@@ -2,20 +2,20 @@
 // Particle swarm optimisation, the classic Kennedy & Eberhart (1995) swarm with an inertia weight
 // (Shi & Eberhart 1998), in the two forms our seed papers used it:
 //
-//   v_i <- w v_i + c1 r1_i (pbest_i - x_i) + c2 r2_i (gbest_i - x_i)     (seed 004 Eq. 2.7)
-//   x_i <- x_i + v_i                                                      (seed 004 Eq. 2.8)
+//   v_i <- w v_i + c1 r1_i (pbest_i - x_i) + c2 r2_i (gbest_i - x_i)     (Abdulshahed 2016 Eq. 2.7)
+//   x_i <- x_i + v_i                                                      (Abdulshahed 2016 Eq. 2.8)
 //
-// r1_i, r2_i ~ U(0,1) drawn per particle and per dimension i (seed 004 writes one symbol R; the
+// r1_i, r2_i ~ U(0,1) drawn per particle and per dimension i (Abdulshahed 2016 writes one symbol R; the
 // per-dimension draw is the usual reading and the one of Kennedy & Eberhart).
 //
-// (a) Options::stryczek2016() — the default. R. Stryczek, J. Intell. Manuf. 27(6) 2016 (seed 000),
+// (a) Options::stryczek2016() — the default. R. Stryczek, J. Intell. Manuf. 27(6) 2016,
 //     section "Comparison ...": "the basic pattern of PSO", 100 particles, "globally the best
 //     position of a particle was updated each time after generating a new solution" — i.e. the
 //     ASYNCHRONOUS swarm: particles move one after the other and each sees the gbest that includes
 //     the moves before it. "c1 and c2 were calculated identically as in CRIPSO": c1 = c2 =
-//     cos(pi/2 * Li / L) (seed 000 Eq. 11; Li = evaluations so far, L = budget). The paper does not
+//     cos(pi/2 * Li / L) (Stryczek 2016 Eq. 11; Li = evaluations so far, L = budget). The paper does not
 //     give w for PSO; we take CRIPSO's constant 0.75.
-// (b) Options::abdulshahed2016() — A. M. Abdulshahed et al., J. Manuf. Syst. 41, 2016 (seed 004),
+// (b) Options::abdulshahed2016() — A. M. Abdulshahed et al., J. Manuf. Syst. 41, 2016,
 //     Eq. 2.7-2.8 and section 3: 90 particles, c1 = 1.5, c2 = 2, w decreasing linearly from 0.9 to
 //     0.4 with the iteration index; SYNCHRONOUS swarm: all particles move with the gbest of the
 //     previous iteration, then pbest and gbest are updated.
@@ -28,7 +28,7 @@
 //
 // Velocity clamping (neither paper states one; Eberhart & Shi's Vmax): |v_i| <= maxVelocity *
 // (upper_i - lower_i), default 0.5 of the range (pagmo's default). Initial velocities are uniform
-// in [-Vmax_i, Vmax_i] (seed 004: "randomly initialised by uniformly distributed variables"),
+// in [-Vmax_i, Vmax_i] (Abdulshahed 2016: "randomly initialised by uniformly distributed variables"),
 // initial positions uniform in the box.
 // Bounds and grid: the moved position goes through Tracker::evaluate, which clamps it into the box
 // and rounds it to the grid in place; the particle lives on at the snapped point. A component that
@@ -38,7 +38,7 @@
 //     (2002): particles sit on a ring and each follows the best pbest among itself and its
 //     `neighbours` nearest particles on each side instead of the swarm's gbest (information spreads
 //     slowly, so the swarm explores longer), with Clerc & Kennedy's (2002) constriction values as
-//     inertia form, w = 0.7298, c1 = c2 = 1.49618, scaled by seed 000's cosine schedule, updated
+//     inertia form, w = 0.7298, c1 = c2 = 1.49618, scaled by Stryczek 2016's cosine schedule, updated
 //     asynchronously like (a). It is the library's general-purpose PSO; metrofit-bench --optimizers
 //     measures all three presets against pagmo2's pso (which is also an lbest swarm by default).
 //     Swarm size 60 (not the papers' 100): at the bench budget of 10^4 evaluations a particle
@@ -60,9 +60,9 @@ namespace metrofit::optim {
 
 class Pso final : public Algorithm {
  public:
-  /// When gbest is updated: after every particle (seed 000) or after the whole sweep (seed 004).
+  /// When gbest is updated: after every particle (Stryczek 2016) or after the whole sweep (Abdulshahed 2016).
   enum class Update { Asynchronous, Synchronous };
-  /// How c1 and c2 change over the run: constant, or scaled by cos(pi/2 * Li/L) (seed 000 Eq. 11).
+  /// How c1 and c2 change over the run: constant, or scaled by cos(pi/2 * Li/L) (Stryczek 2016 Eq. 11).
   enum class Acceleration { Constant, Cosine };
 
   struct Options {
@@ -81,9 +81,11 @@ class Pso final : public Algorithm {
 
     bool isValid(std::string* why) const;
 
-    /// Seed 000 (Stryczek 2016): 100 particles, asynchronous, w = 0.75, c1 = c2 = cos(pi/2 Li/L).
+    /// Stryczek 2016, fast machining error compensation: 100 particles, asynchronous, w = 0.75, c1 = c2 =
+    /// cos(pi/2 Li/L).
     static Options stryczek2016();
-    /// Seed 004 (Abdulshahed et al. 2016): 90 particles, synchronous, w 0.9 -> 0.4, c1 = 1.5, c2 = 2.
+    /// Abdulshahed 2016, grey neural network thermal model: 90 particles, synchronous, w 0.9 -> 0.4, c1
+    /// = 1.5, c2 = 2.
     static Options abdulshahed2016();
     /// Beyond the papers: lbest ring with 2 neighbours each side, w = 0.7298, c1 = c2 = 1.49618
     /// with the cosine schedule, asynchronous, 60 particles (see (c) above).

@@ -1,5 +1,5 @@
 #pragma once
-// SADE: the self-adaptive differential evolution of seed 001 (L. Jiang et al., "Posture adjustment
+// SADE: the self-adaptive differential evolution of Jiang 2018 (L. Jiang et al., "Posture adjustment
 // of workpiece based on stepwise matching by self-adaptive differential evolution algorithm",
 // Mech. Sci. 9, 2018, Section 2.3.2), used there for the fine matching of probed point sets.
 //

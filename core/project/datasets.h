@@ -1,5 +1,5 @@
 #pragma once
-// Own data in a project (CONTRACT.md "Own data in a project (CLI)"): adding a file to a project as
+// Own data in a project (docs/file-formats.md#own-data-in-a-project): adding a file to a project as
 // a dataset of a kind, reading a dataset the way the project says (CSV dialect and column mapping
 // saved with it), and the summary `project list` prints. The CLI's `project new|add|list` and a GUI
 // import dialog share these functions.

@@ -90,7 +90,7 @@ class Project {
   bool operator==(const Project&) const = default;
 };
 
-/// The machine of the matching study, studies.matching.machine (issue 5):
+/// The machine of the matching study, studies.matching.machine:
 ///   {"topology": "xfyzba" | "ac-table" | "bc-table" (also "ac", "bc"), "LX_mm": .., "LY_mm": ..,
 ///    "LZ_mm": .., "LAB_mm": .., "tilt_axis_point_mm": [..], "rotary_axis_point_mm": [..],
 ///    "rotary_travel_deg": [[min, max], [min, max]]}   (machine::MachineDefinition::toJson; missing

@@ -3,8 +3,8 @@
 // paper's process chain, Stryczek 2016 Fig. 2: "conveyed to the right registers directly").
 //
 // SIGN CONVENTION (all formats). A correction x_i (mm) is an INCREMENT to ADD to the register of
-// setup datum i along the model's axis (CONTRACT.md: corrections_mm). The relation graph's
-// weights (model.h, paper Eq. 3) describe what such an increment does: +1 on an arc means that
+// setup datum i along the model's axis (docs/file-formats.md#setup-result: corrections_mm). The relation
+// graph's weights (model.h, paper Eq. 3) describe what such an increment does: +1 on an arc means that
 // increasing the register moves the feature towards +axis. For a work offset (WKS) the register
 // holds the position of the workpiece zero in machine coordinates, so +x moves every feature of
 // that WKS by +x. For a tool, the register is the tool length (geometry or wear): +x makes the

@@ -1,7 +1,7 @@
 #pragma once
 // The setup model of the setup-correction paper: the relation graph PM = (M, W, T, F, D, R)
 // (Stryczek 2016, "A metaheuristic for fast machining error compensation", J. Intell. Manuf. 27,
-// section "The proposed compensation system"), stored as the JSON of CONTRACT.md:
+// section "The proposed compensation system"), stored as the JSON of docs/file-formats.md#setup-model:
 //
 //   {"name": "...", "axis": "Z", "step_mm": 0.001, "bounds_mm": [-0.1, 0.1],
 //    "setup": [{"id": "W1", "kind": "wks"}, {"id": "T5", "kind": "tool"}],
@@ -18,7 +18,7 @@
 // Allowed arcs: machine -> wks (R_MW), machine / wks / tool -> feature (R_WF, R_TF and a direct
 // machine -> feature shortcut), feature -> dimension (R_FD).
 //
-// Optional fields beyond CONTRACT.md: per setup datum "bounds_mm" (overrides the model's bounds)
+// Optional fields (documented there too): per setup datum "bounds_mm" (overrides the model's bounds)
 // and "register" (the controller register number used by the exports, see export.h; default: the
 // digits at the end of the id, W7 -> 7, T23 -> 23); per dimension "nominal" (checked against the
 // CMM report when given) and "label" (the DMIS label it is reported under, default: the id).

@@ -21,7 +21,7 @@
 // and Eq. 8's f1 = max_p min_q {dZ^-_q, dZ^+_q} only makes sense with the DISTANCES to the two
 // borders, |dZ^-_q| = e'_q - lo_q and dZ^+_q (both >= 0 inside the zone), which is delta_q:
 //   f1(x) = min_q delta_q(x) = min(-dZ^-, dZ^+)                                 (Eq. 8)
-// i.e. CONTRACT.md's "the smallest unilateral error budget over all dimensions after
+// i.e. docs/file-formats.md#setup-result's "the smallest unilateral error budget over all dimensions after
 // correction". The paper's example agrees: b = 0.071 - 0.022 = 0.049 mm is a difference of such
 // budgets. f1 is maximised over the solutions p (the max_p of Eq. 8 is the optimisation itself).
 //   f2(x) = |x| = sqrt(sum_i x_i^2)        [mm]  (Eq. 9, minimised among the f1-optimal x)

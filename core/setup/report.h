@@ -1,7 +1,7 @@
 #pragma once
 // Measurement reports for the setup correction: what the CMM says about the model's dimensions.
 //
-// 1. CMM report series, CSV (CONTRACT.md):
+// 1. CMM report series, CSV (docs/file-formats.md#cmm-report-series):
 //      part,time_min,dimension,nominal_mm,measured_mm,lower_tol_mm,upper_tol_mm
 //    one row per dimension per measured part (one or many parts). `dimension` names a dimension of
 //    the model (an unknown name is an error naming line and field); `lower_tol_mm` /

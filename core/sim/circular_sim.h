@@ -2,15 +2,15 @@
 // Simulated circular test on a Cartesian XY machine (the simulator plays machine and measuring
 // instrument, e.g. a ballbar or a grid encoder). Lengths in mm, angles in degrees.
 //
-// Commands: one loop counter-clockwise and then one clockwise (CONTRACT.md "Circular test"), each
+// Commands: one loop counter-clockwise and then one clockwise (docs/file-formats.md#circular-test), each
 // of `pointsPerLoop` points on the circle of radius R about the centre c, without repeating the
 // start point:
 //   CCW  Pr_k = c + R (cos t_k, sin t_k),  t_k = t0 + 2 pi k / n,  k = 0..n-1
 //   CW   Pr_k = c + R (cos t_k, sin t_k),  t_k = t0 - 2 pi k / n,  k = 0..n-1
-// Machine: the direct kinematics of the kinematic-compensation paper (seed 002, Eq. 9) with the
-// actuator errors of CONTRACT.md, P = o + (cos a, sin a) Pr_x + (-sin b, cos b) Pr_y, and
-// measurement noise N(0, noise^2) added independently to x and y. Deterministic by seed
-// (metrofit::Rng).
+// Machine: the direct kinematics of the kinematic-compensation paper (IEEE Access, kinematic compensation
+// algorithm, Eq. 9) with the actuator errors of docs/file-formats.md#kinematic-identify-result, P = o + (cos
+// a, sin a) Pr_x + (-sin b, cos b) Pr_y, and measurement noise N(0, noise^2) added independently to x and y.
+// Deterministic by seed (metrofit::Rng).
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// Simulated CMM report series with setup effects the declared model lacks (issue 8 item 4): the
+// Simulated CMM report series with setup effects the declared model lacks: the
 // test data of the setup diagnosis (core/diagnose/setup_diagnosis.h).
 //
 // Composed with setup_sim.h: simulateSetupReport (one draw of the constant setup-data errors E^sd

@@ -1,6 +1,6 @@
 #pragma once
-// Thermal logs with undeclared effects, for the closed loop (issue 8, CONTRACT.md "The declared
-// models"): the test data the diagnosis must trace back to the effect the declared model lacks.
+// Thermal logs with undeclared effects, for the closed loop (docs/file-formats.md#the-declared-models): the
+// test data the diagnosis must trace back to the effect the declared model lacks.
 //
 // The sensor columns come from the spindle simulation of thermal_sim.h (time_min, spindle_rpm,
 // T1..T4, T_amb; its own displacement column is replaced). The target is the declared static model

@@ -1,5 +1,5 @@
 #pragma once
-// The open world of the closed loop (issue 15 item 7, CONTRACT.md "The open world"): simulated data
+// The open world of the closed loop (docs/file-formats.md#residual_check): simulated data
 // sets with effects that NO catalogue entry of `diagnose` models, gross errors, and clean data with
 // non-Gaussian noise. They are made from the existing simulators' clean, noiseless data (the
 // declared model exact), plus one effect, plus noise:
@@ -7,7 +7,8 @@
 // with three independent random streams derived from the seed (base data, effect parameters,
 // noise), so that a case and the clean data of the same seed and noise kind differ by the effect
 // alone. Every case keeps its truth (OpenWorldTruth): the form and the variables the structure
-// depends on, in CONTRACT.md's `against` vocabulary, and for gross errors the unit hit.
+// depends on, in the `against` vocabulary of docs/file-formats.md#residual_check, and for gross errors the
+// unit hit.
 //
 // Effect-to-noise ratio r. The part of an effect the declared model cannot absorb is what a
 // diagnosis can see: the effect projected off the columns of the declared model, linearised at the
@@ -117,7 +118,8 @@ enum class OpenCaseKind { Effect, Outlier, Clean };
 struct OpenWorldCaseInfo {
   std::string name;
   OpenCaseKind kind = OpenCaseKind::Effect;
-  std::string form;  ///< CONTRACT.md form of the structure ("spike" for a gross error, "" clean)
+  std::string form;  ///< form of the structure (docs/file-formats.md#residual_check), "spike" for a gross
+                     ///< error, "" clean
 };
 
 /// The cases of a domain, effects first, then the gross error, then the clean data.
@@ -135,7 +137,7 @@ struct OpenWorldTruth {
   std::string caseName;
   OpenCaseKind kind = OpenCaseKind::Clean;
   std::string form;
-  /// The variables the structure depends on (CONTRACT.md `against`), the primary one first.
+  /// The variables the structure depends on (docs/file-formats.md#residual_check), the primary one first.
   std::vector<std::string> against;
   NoiseKind noise = NoiseKind::Gaussian;
   double noiseSigma = 0.0;

@@ -26,8 +26,9 @@
 //   measured points (40 points) are overcut or undercut, and the average over tolerance is about
 //   1.8797 mm").
 //
-// The workpiece's actual posture is p = R q + t with R = Rz(rz) Ry(ry) Rx(rx) (CONTRACT.md "match"),
-// plus form / probing noise along the nominal normal (sigma in mm). Deterministic by seed.
+// The workpiece's actual posture is p = R q + t with R = Rz(rz) Ry(ry) Rx(rx)
+// (docs/file-formats.md#match-result), plus form / probing noise along the nominal normal (sigma in mm).
+// Deterministic by seed.
 #include <cstdint>
 #include <string>
 

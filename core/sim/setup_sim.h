@@ -12,7 +12,7 @@
 // and the correction that undoes the setup errors is x = -E^sd (when the bounds allow it).
 // Set j is deterministic in (seed, j): sets can be generated in any order or in parallel.
 //
-// A simulated CMM report series (the CSV of CONTRACT.md:
+// A simulated CMM report series (the CSV of docs/file-formats.md#cmm-report-series:
 // part,time_min,dimension,nominal_mm,measured_mm,lower_tol_mm,upper_tol_mm) uses ONE draw of
 // E^sd for the whole series and fresh random errors E_q for every part:
 //   measured = nominal + (G E^sd)_q + E_q, rounded to the CMM resolution.

@@ -1,9 +1,9 @@
 #pragma once
-// Simulated heating tests of a gantry machine's ram like seed 004's set-up (Abdulshahed et al. 2016,
-// Section 3 and 4.1-4.3): a Z-axis heating test, a C-axis heating test and the combined (helical)
-// test, each 2 h heating + 2 h cooling at 1-min sampling by default, with temperature sensors, Fibre
-// Bragg Grating strain sensors and the ram's Z growth. The simulator plays machine and sensors; the
-// modular models of Section 4.3 are trained on the first two and validated on the third.
+// Simulated heating tests of a gantry machine's ram like the set-up of Abdulshahed et al. 2016 (grey neural
+// network thermal model, Section 3 and 4.1-4.3): a Z-axis heating test, a C-axis heating test and the
+// combined (helical) test, each 2 h heating + 2 h cooling at 1-min sampling by default, with temperature
+// sensors, Fibre Bragg Grating strain sensors and the ram's Z growth. The simulator plays machine and
+// sensors; the modular models of Section 4.3 are trained on the first two and validated on the third.
 //
 // Lumped thermal network (temperatures in degC, explicit Euler with sub-steps of at most 0.25 min):
 //   drives           Pz = z_speed / zSpeedRef (Z reciprocation), Pc = c_rpm / cRpmRef (C rotation)

@@ -1,7 +1,7 @@
 #pragma once
 // X-bar and R control charts (Shewhart), as used in Section IV.A of the kinematic-compensation
-// paper (seed 002, Eq. 18-19), with the chart constants of the standard table for subgroup sizes
-// n = 2..25.
+// paper (IEEE Access, kinematic compensation algorithm, Eq. 18-19), with the chart constants of the standard
+// table for subgroup sizes n = 2..25.
 //
 // Constants (e.g. Montgomery, Introduction to Statistical Quality Control, Appendix VI; ASTM
 // STP 15D). For n independent N(0, 1) values with range R:

@@ -1,6 +1,7 @@
 #pragma once
-// Statistical process control of a measured feature (kinematic-compensation paper, seed 002,
-// Section IV.A) and the SPC gate in front of compensation. Values are in the feature's own unit.
+// Statistical process control of a measured feature (kinematic-compensation paper, IEEE Access, kinematic
+// compensation algorithm, Section IV.A) and the SPC gate in front of compensation. Values are in the
+// feature's own unit.
 //
 // From the X-bar/R chart (control_chart.h; n values per subgroup, N = k n values used):
 //   sigma_within   = Rbar / d2                             (the process's short-term sigma)

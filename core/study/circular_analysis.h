@@ -1,8 +1,8 @@
 #pragma once
-// What the kinematics views and the report show of a circular test (seed 002; CONTRACT.md "Circular
-// test"): the nominal circle, the radial deviations of the measured path per loop (CCW / CW), the
-// compensated references for the nominal circle and what they are expected to give. Plain C++ on
-// top of core/kinematics; no Qt, so the page, the report and the tests share it.
+// What the kinematics views and the report show of a circular test (IEEE Access, kinematic compensation
+// algorithm; docs/file-formats.md#circular-test): the nominal circle, the radial deviations of the measured
+// path per loop (CCW / CW), the compensated references for the nominal circle and what they are expected to
+// give. Plain C++ on top of core/kinematics; no Qt, so the page, the report and the tests share it.
 //
 // Nominal circle: centre = mean of the commanded points, radius = mean distance of the commanded
 // points from it (the commands of a circular test lie on the circle).

@@ -1,5 +1,5 @@
 #pragma once
-// The project's "diagnosis" study (issue 8), shared by the GUI's diagnosis page and the report:
+// The project's "diagnosis" study, shared by the GUI's diagnosis page and the report:
 //
 //   "diagnosis": {
 //     "thermal":   {"dataset": ID, "target": COL, "inputs": [COL, ...], "train_fraction": 0.5},

@@ -11,9 +11,9 @@
 //   "from_spc": {"x_dataset": "<id>", "y_dataset": "<id>", "position_column": "position_mm",
 //                "deviation_column": "deviation_mm", "x_nominal_y": 0, "y_nominal_x": 0,
 //                "subgroup": 5, "coverage": 2}
-//        seed 002's chain from SPC to compensation (core/kinematics/spc_actuator.h): the edges machined
-//        along X and Y, their regression offset angles -> actuator errors -> Eq. 15 references for
-//        the study's nominal circle
+//        the kinematic-compensation paper's chain from SPC to compensation (core/kinematics/spc_actuator.h):
+//        the edges machined along X and Y, their regression offset angles -> actuator errors -> Eq. 15
+//        references for the study's nominal circle
 //   "planes": {"xy": "<id>", "yz": "<id>", "zx": "<id>"}
 //        circular tests in three planes for the three-axis identification
 //        (core/kinematics/identification3.h; YZ / ZX files have the plane's columns)
@@ -86,9 +86,9 @@ struct KinematicStudyData {
   std::optional<KinematicSpcSeries> spc;
   std::string spcError;  ///< why the SPC series could not be charted (empty when it was)
 
-  /// Seed 002's chain from SPC (settings "from_spc"): the derived errors, and their Eq. 15
-  /// references for the study's nominal circle (the circular test's commands) judged by the
-  /// circular test's identified model, an independent estimate of the same machine.
+  /// The kinematic-compensation paper's chain from SPC (settings "from_spc"): the derived errors, and their
+  /// Eq. 15 references for the study's nominal circle (the circular test's commands) judged by the circular
+  /// test's identified model, an independent estimate of the same machine.
   std::optional<SpcActuatorResult> fromSpc;
   std::string fromSpcError;
   double fromSpcLargestCorrectionMm = 0.0;  ///< max |reference - nominal|

@@ -1,5 +1,5 @@
 #pragma once
-// The matching study of a project end to end (issue 5), shared by the GUI page and the report:
+// The matching study of a project end to end, shared by the GUI page and the report:
 // every method on the study's probe points (rough + SADE, rough + GA-simplex, closed form,
 // minimax), the machine adjustment values of the primary method's posture for the study's machine,
 // and the remeasure loop of Step 7 with the simulator as machine and CMM.

@@ -1,9 +1,9 @@
 #pragma once
-// Qt-free runs behind the thermal model views and the report (seed 004, Section 4 and Table 4): the
-// three models of core/thermal (GNNMCI(1,N) by PSO, GMC(1,N) by least squares, the MLP by
-// Levenberg-Marquardt) fitted on the first part of one log with the same settings and compared on
-// the rest, the modular case of Section 4.3 (Z + C heating tests -> the combined test), hysteresis
-// runs for the charts and the decimation the report uses for long logs.
+// Qt-free runs behind the thermal model views and the report (Abdulshahed 2016, grey neural network thermal
+// model, Section 4 and Table 4): the three models of core/thermal (GNNMCI(1,N) by PSO, GMC(1,N) by least
+// squares, the MLP by Levenberg-Marquardt) fitted on the first part of one log with the same settings and
+// compared on the rest, the modular case of Section 4.3 (Z + C heating tests -> the combined test),
+// hysteresis runs for the charts and the decimation the report uses for long logs.
 //
 // One train fraction for all three models (the CLI's `thermal fit` defaults differ by model: 0.5 for
 // the grey models, 0.7 for the MLP); the comparison needs the same held-out rows for all. Each model
@@ -46,7 +46,7 @@ ThermalModelSettings defaultThermalModelSettings(const ThermalLog& log, const nl
                                                  const std::string& datasetId);
 
 /// The models in the order they are trained and shown: the paper's three, then the regression models
-/// of real thermal logs (issue 18: static linear, first-order lag per sensor, distributed lag).
+/// of real thermal logs (static linear, first-order lag per sensor, distributed lag).
 inline constexpr std::array<thermal::ThermalModelKind, 6> kThermalModelOrder = {
     thermal::ThermalModelKind::Gnnmci, thermal::ThermalModelKind::Gmc,
     thermal::ThermalModelKind::Mlp,    thermal::ThermalModelKind::Linear,

@@ -1,5 +1,5 @@
 #pragma once
-// GNNMCI(1,N): the grey neural network model with convolution integral of seed 004 (Abdulshahed et
+// GNNMCI(1,N): the grey neural network model with convolution integral of Abdulshahed 2016 (Abdulshahed et
 // al. 2016, Section 2.2, Eq. 2.3-2.9, Fig. 2), trained by particle swarm optimisation.
 //
 // ---- The mapping (Eq. 2.3-2.6, Fig. 2) ---------------------------------------------------------

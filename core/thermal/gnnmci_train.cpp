@@ -1,5 +1,5 @@
-// GNNMCI(1,N) training by PSO (seed 004, Eq. 2.7-2.9); the particle box and the two training modes
-// are documented in gnnmci.h.
+// GNNMCI(1,N) training by PSO (Abdulshahed 2016, grey neural network thermal model, Eq. 2.7-2.9); the
+// particle box and the two training modes are documented in gnnmci.h.
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>

@@ -1,15 +1,15 @@
 #pragma once
-// Grey system operators and the GMC(1,N) grey model of the thermal-error paper (seed 004:
-// Abdulshahed, Longstaff, Fletcher, Potdar, "Thermal error modelling of a gantry-type 5-axis machine
-// tool using a Grey Neural Network Model", J. Manuf. Syst. 41, 2016), after Tien (2012).
+// Grey system operators and the GMC(1,N) grey model of the thermal-error paper (Abdulshahed 2016, grey neural
+// network thermal model: Abdulshahed, Longstaff, Fletcher, Potdar, "Thermal error modelling of a gantry-type
+// 5-axis machine tool using a Grey Neural Network Model", J. Manuf. Syst. 41, 2016), after Tien (2012).
 //
 // ---- 1-AGO and IAGO (Appendix A, Eq. A.1-A.3) ------------------------------------------------
 //   x^(1)(1) = x^(0)(1),   x^(1)(k) = x^(1)(k-1) + x^(0)(k)          (A.2, accumulation)
 //   x^(0)(1) = x^(1)(1),   x^(0)(k) = x^(1)(k) - x^(1)(k-1)          (A.3, inverse)
-// The paper assumes equally spaced samples. Thermal logs may be unequally spaced (CONTRACT.md), so
-// the accumulation here is the weighted one that is exact for equal steps and consistent with the
-// model's continuous time otherwise: with a time unit h (the mean step of the fitting data, kept
-// with a fitted model so that prediction on a log sampled differently uses the same unit),
+// The paper assumes equally spaced samples. Thermal logs may be unequally spaced
+// (docs/file-formats.md#thermal-log), so the accumulation here is the weighted one that is exact for equal
+// steps and consistent with the model's continuous time otherwise: with a time unit h (the mean step of the
+// fitting data, kept with a fitted model so that prediction on a log sampled differently uses the same unit),
 //   h_1 = 1,  h_k = (t_k - t_{k-1}) / h,   x^(1)(k) = x^(1)(k-1) + h_k x^(0)(k),
 //   x^(0)(k) = (x^(1)(k) - x^(1)(k-1)) / h_k,
 // i.e. x^(1) is the running integral of x^(0) in units of h (rectangle rule). On equal steps h_k = 1

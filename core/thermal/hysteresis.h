@@ -1,8 +1,8 @@
 #pragma once
-// Hysteresis of thermal sensors against the thermal displacement (seed 004, Abdulshahed et al. 2016,
-// Section 3.1, Fig. 8-9): the displacement plotted against each sensor over heating and cooling traces
-// a loop whose width shows how much the sensor lags (the paper: T2 "Ram rear" ~10 min behind, FBG
-// sensors almost linear).
+// Hysteresis of thermal sensors against the thermal displacement (Abdulshahed et al. 2016, grey neural
+// network thermal model, Section 3.1, Fig. 8-9): the displacement plotted against each sensor over heating
+// and cooling traces a loop whose width shows how much the sensor lags (the paper: T2 "Ram rear" ~10 min
+// behind, FBG sensors almost linear).
 //
 // Phases: the target's change since the first row, smoothed by a centred moving average over
 // `smoothingMin`, is "heating" where its magnitude grows and "cooling" where it shrinks (central

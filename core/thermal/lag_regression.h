@@ -1,5 +1,5 @@
 #pragma once
-// Regression thermal models of the kind thermal engineers fit on real logs (issue 18 item 1), next to
+// Regression thermal models of the kind thermal engineers fit on real logs, next to
 // the paper's GNNMCI(1,N), GMC(1,N) and MLP (thermal_model.h):
 //
 //   linear  y(k) - y(1) = c + sum_j b_j (x_j(k) - x_j(1))                       static regression

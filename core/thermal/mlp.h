@@ -1,6 +1,6 @@
 #pragma once
-// The MLP baseline of seed 004 (Abdulshahed et al. 2016, Section 4.4, Table 3): a three-layer
-// feed-forward network, N inputs, 10 hidden neurons with the logistic sigmoid ("logarithmic
+// The MLP baseline of Abdulshahed et al. 2016 (grey neural network thermal model, Section 4.4, Table 3): a
+// three-layer feed-forward network, N inputs, 10 hidden neurons with the logistic sigmoid ("logarithmic
 // sigmoid"), one linear output neuron, trained by Levenberg-Marquardt on the mean squared error.
 //
 // Network (inputs and output normalised to [-1, 1] by the min / max of the training rows, the

@@ -1,5 +1,5 @@
 #pragma once
-// The columns a thermal model works on, picked out of a thermal log (CONTRACT.md "Thermal log") and
+// The columns a thermal model works on, picked out of a thermal log (docs/file-formats.md#thermal-log) and
 // validated with errors that name the file and the column (STYLE.md §9):
 //  * the target and every input must be columns of the log (the error lists the columns it has),
 //  * inputs must be distinct and must not be the target,
@@ -9,7 +9,7 @@
 // Model-specific checks (constant inputs on the fitting rows, too few rows for the model) are in
 // thermal_model.h, where the fitting rows are known.
 //
-// Every model of this module works on changes since the first row of a log: seed 004's Table 1 starts
+// Every model of this module works on changes since the first row of a log: Abdulshahed 2016's Table 1 starts
 // every series (inputs and displacement) at zero, and the GMC(1,N) response has no static offset (its
 // output is a lag of sum_j (b_j / b_1) x_j plus a decaying start term; grey.h), so a log that starts
 // warm is referred to its own first row. `change()` gives x(k) - x(1).

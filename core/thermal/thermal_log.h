@@ -1,5 +1,5 @@
 #pragma once
-// A thermal log (CONTRACT.md "Thermal log"): a time column (time_s, time_min or time_h), then
+// A thermal log (docs/file-formats.md#thermal-log): a time column (time_s, time_min or time_h), then
 // sensor columns and the target column(s). Time is kept in minutes internally. A log without a
 // time column is read when the sampling interval is given (CsvReadOptions::sampleIntervalMin, the
 // CLI's --sample-interval 15s): row i is at i times the interval.

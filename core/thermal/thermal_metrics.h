@@ -1,6 +1,6 @@
 #pragma once
-// The performance indices of seed 004, Table 4 (Abdulshahed et al. 2016), for measured values y_k and
-// model outputs y^_k, k = 1..n, residuals r_k = y_k - y^_k:
+// The performance indices of Abdulshahed et al. 2016 (grey neural network thermal model), Table 4, for
+// measured values y_k and model outputs y^_k, k = 1..n, residuals r_k = y_k - y^_k:
 //   R    = sum (y - mean y)(y^ - mean y^) / sqrt(sum (y - mean y)^2 sum (y^ - mean y^)^2)   (Pearson)
 //   RMSE = sqrt(sum r^2 / n)                                              [the target's units]
 //   E    = 1 - sum r^2 / sum (y - mean y)^2          (Nash-Sutcliffe efficiency coefficient)

@@ -1,6 +1,6 @@
 #pragma once
-// Thermal error models of seed 004 behind one interface: fit, predict, evaluate (Table 4), modular
-// composition (Section 4.3), persistence (JSON) and compensation values.
+// Thermal error models of Abdulshahed 2016, grey neural network thermal model behind one interface: fit,
+// predict, evaluate (Table 4), modular composition (Section 4.3), persistence (JSON) and compensation values.
 //
 //   gnnmci  GNNMCI(1,N) trained by PSO on Eq. 2.9 (gnnmci.h)            — the paper's model
 //   gmc     GMC(1,N) with least-squares parameters (grey.h)               — the paper's grey baseline
@@ -11,7 +11,7 @@
 // `--model auto` (chooseThermalModel) picks one of linear, lag, dlag and gmc by blocked
 // cross-validation on the fitting rows only and says which and why.
 //
-// Why the regression models (issue 18): on the real CAIVIAC spindle log (t5, t9, first half fit)
+// Why the regression models: on the real CAIVIAC spindle log (t5, t9, first half fit)
 // the paper's three models predict the held-out half worse than a static regression: GMC(1,N) and
 // GNNMCI(1,N) fit the first half best with a time constant of 5-90 h (a near-integrator of the
 // temperatures) that does not extrapolate, and least squares even gives b1 < 0 (ch3). The
@@ -82,7 +82,7 @@ struct ThermalFitOptions {
 };
 
 /// The train fraction when none is given: 0.7 for the MLP (Table 3's 70 / 30 split), 0.5 for the grey
-/// models (CONTRACT.md's default for `diagnose thermal`).
+/// models (the default of `diagnose thermal`, docs/file-formats.md#the-declared-models).
 double defaultTrainFraction(ThermalModelKind kind);
 
 /// A fitted model: predicts on any log that has its input columns.
@@ -176,7 +176,7 @@ ThermalModel thermalModelFromJson(const nlohmann::json& j, const std::string& so
 /// The model's parameters by their paper names (w11, w22, ..., b1, b_T1, u, ...), for reports.
 nlohmann::json thermalModelParameters(const ThermalModel& model);
 
-/// Compensation values for new data (item 9): predicted error = predicted change of the target since
+/// Compensation values for new data: predicted error = predicted change of the target since
 /// the log's first row, compensation = -predicted error.
 struct Compensation {
   std::string timeColumn;

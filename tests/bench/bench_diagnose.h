@@ -1,5 +1,5 @@
 #pragma once
-// metrofit-bench --diagnose / --real-diagnose (issue 8): the detection study of the closed loop.
+// metrofit-bench --diagnose / --real-diagnose: the detection study of the closed loop.
 //
 // Per domain and effect, `seeds` simulated data sets at each effect-to-noise ratio, plus clean data
 // (the declared model exact up to the noise): detection rate (the effect accepted with its

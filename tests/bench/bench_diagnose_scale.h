@@ -1,5 +1,5 @@
 #pragma once
-// metrofit-bench --diagnose-scale (issue 15 item 9): `diagnose thermal` time against the number of
+// metrofit-bench --diagnose-scale: `diagnose thermal` time against the number of
 // rows, up to a week of 1 Hz data (604 800 rows, 20 data columns), on one core; and how fast a
 // cancel takes effect.
 #include <cstddef>

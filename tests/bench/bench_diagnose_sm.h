@@ -1,5 +1,5 @@
 #pragma once
-// metrofit-bench --diagnose / --real-diagnose, setup and matching domains (issue 8): the runners of
+// metrofit-bench --diagnose / --real-diagnose, setup and matching domains: the runners of
 // the detection study (bench_diagnose.h) and the real-data diagnosis of the SDSS plug plates.
 #include <string>
 #include <vector>

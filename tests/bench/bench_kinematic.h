@@ -1,5 +1,5 @@
 #pragma once
-// metrofit-bench --kinematic: identification of a 720-point circular test (issue 6 target: in
+// metrofit-bench --kinematic: identification of a 720-point circular test (target: in
 // milliseconds), side by side with peers on the same data in the same run (see bench_kinematic.cpp).
 #include <nlohmann/json.hpp>
 

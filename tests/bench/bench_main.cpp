@@ -117,15 +117,15 @@ nlohmann::json benchRng(int repeat) {
 
 int main(int argc, char** argv) {
   bool io = false, rng = false, optimizers = false, matching = false, realMatching = false;
-  bool thermal = false, realThermal = false;    // issue 7 (bench_thermal.cpp)
-  bool kinematic = false;                       // issue 6 (bench_kinematic.cpp)
-  bool diagnose = false, realDiagnose = false;  // issue 8 (bench_diagnose.cpp)
-  bool open = false;                            // issue 15: --diagnose --open (bench_open_world.cpp)
+  bool thermal = false, realThermal = false;    // --thermal, --real-thermal (bench_thermal.cpp)
+  bool kinematic = false;                       // --kinematic (bench_kinematic.cpp)
+  bool diagnose = false, realDiagnose = false;  // --diagnose, --real-diagnose (bench_diagnose.cpp)
+  bool open = false;                            // --diagnose --open (bench_open_world.cpp)
   metrofit::bench::OpenBenchOptions openOptions;
   int explicitSeeds = 0;               // --seeds N wins over --quick
   std::vector<std::string> openCase;   // --open-case DOMAIN CASE SEED
-  bool setupBench = false;             // issue 4 (bench_setup.cpp)
-  std::vector<std::size_t> scaleRows;  // issue 15 item 9 (bench_diagnose_scale.cpp)
+  bool setupBench = false;             // --setup (bench_setup.cpp)
+  std::vector<std::size_t> scaleRows;  // --diagnose-scale (bench_diagnose_scale.cpp)
   metrofit::bench::DiagnoseBenchOptions diagnoseOptions;
   metrofit::bench::OptimBenchOptions optimOptions;
   int repeat = 5;
@@ -246,7 +246,7 @@ int main(int argc, char** argv) {
     if (optimizers) result["optimizers"] = metrofit::bench::benchOptimizers(optimOptions);
     if (setupBench) result["setup"] = metrofit::bench::benchSetup(sourceDir, repeat);
     if (kinematic) result["kinematic"] = metrofit::bench::benchKinematic(repeat);
-    // --matching: issue 5 targets (bench_matching.cpp); --real-matching: the SDSS plug plates in
+    // --matching: the matching targets (bench_matching.cpp); --real-matching: the SDSS plug plates in
     // ../shared/data/real/cmm-plugplate-sdss (not in the repository: no licence) against their own fits.
     if (matching) result["matching"] = metrofit::bench::benchMatching({});
     if (realMatching)
@@ -259,7 +259,7 @@ int main(int argc, char** argv) {
           sourceDir + "/resources/demo/data/thermal_caiviac.csv",
           sourceDir + "/../shared/data/real/thermal-spindle-sjtu/thermal_expansion_error_original.csv");
     if (diagnose && open) {
-      // issue 15 item 7: the open-world study (effects no catalogue entry models, gross errors,
+      // The open-world study (effects no catalogue entry models, gross errors,
       // clean data with heavy-tailed noise); --quick: 20 seeds per case.
       openOptions.sourceDir = sourceDir;
       result["diagnose_open"] = metrofit::bench::benchDiagnoseOpen(openOptions);

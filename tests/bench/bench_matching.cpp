@@ -1,4 +1,4 @@
-// metrofit-bench --matching / --real-matching: the targets of issue 5, measured in one run.
+// metrofit-bench --matching / --real-matching: the matching targets, measured in one run.
 //
 // --matching
 //  1. Optimum agreement: S-pieces (core/sim/probe_sim.h) with random postures (angles uniform in

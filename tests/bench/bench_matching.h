@@ -1,5 +1,5 @@
 #pragma once
-// metrofit-bench --matching and --real-matching (issue 5 targets; protocol in bench_matching.cpp).
+// metrofit-bench --matching and --real-matching (the matching targets; protocol in bench_matching.cpp).
 #include <string>
 
 #include <nlohmann/json.hpp>

@@ -1,9 +1,9 @@
 #pragma once
-// metrofit-bench --diagnose --open (issue 15 item 7): the open-world detection study of the closed
+// metrofit-bench --diagnose --open: the open-world detection study of the closed
 // loop. Per domain, the cases of core/sim/open_world.h (effects no catalogue entry models, a gross
 // error, clean data with Gaussian, Laplace and Student-t5 noise), `seeds` data sets each at one
 // effect-to-noise ratio (default 5), diagnosed with the domain's `diagnose` and scored on what the
-// result says (CONTRACT.md "The open world"):
+// result says (docs/file-formats.md#residual_check):
 //   (a) effect cases: structure flagged or explained = residual_check.white == false, or any effect
 //       accepted; reported separately: explained by a generic effect (`unexplained:*` accepted),
 //       flagged only (not white, nothing accepted), a catalogue name accepted; and whether the
@@ -36,7 +36,8 @@ struct OpenBenchOptions {
 nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& options);
 
 /// One data set of the study, to look at a failure (metrofit-bench --open-case DOMAIN CASE SEED):
-/// prints the truth and the diagnosis JSON (CONTRACT.md) and returns {"truth", "diagnosis"}.
+/// prints the truth and the diagnosis JSON (docs/file-formats.md#diagnose-result) and returns {"truth",
+/// "diagnosis"}.
 nlohmann::json benchOpenCase(const OpenBenchOptions& options, const std::string& domain,
                              const std::string& name, std::uint64_t seed);
 

@@ -14,8 +14,8 @@
 //    same number of evaluations: NP * floor(B / NP) (pagmo: generation 0 plus gen = B/NP - 1
 //    generations of NP evaluations; SADE NP 30 -> 9990, PSO 100 particles -> 10000). Methods
 //    without a peer get B. pagmo's counts are read back from problem::get_fevals().
-//  * Methods, each with its defaults: ours sade (seed 001: DE/rand/1/bin, Eq. 10-11), sade-jde
-//    (the same operator with jDE self-adaptation, Sade::Adaptation::SelfAdaptive), pso (seed 000
+//  * Methods, each with its defaults: ours sade (Jiang 2018: DE/rand/1/bin, Eq. 10-11), sade-jde
+//    (the same operator with jDE self-adaptation, Sade::Adaptation::SelfAdaptive), pso (Stryczek 2016
 //    settings), pso-ring (Pso::Options::ring(): lbest ring, constriction values), ga-simplex, nelder-mead
 //    (random start; it stops when converged), cripso, ga, coa. pagmo: sade with variant 7 = DE/rand/1/bin
 //    (the same operator as ours) and variant_adptv 1 = jDE self-adaptation (Brest et al. 2006): the peer of
@@ -28,7 +28,7 @@
 //    method's own overhead and the objective. Thread CPU time rather than wall clock, so that other
 //    load on the machine (a parallel build) does not decide a ratio near 1 (CEC f6 costs ~1 us per
 //    evaluation in both, so its ratio is the objective's own cost either way).
-//  * setup-paper: the setup-correction paper's example (seed 000; resources/demo/setup), 10
+//  * setup-paper: the setup-correction paper's example (Stryczek 2016; resources/demo/setup), 10
 //    corrections on the 0.001 mm grid, the paper's budget of 5000 solutions for every method; the
 //    objective is -f = f2 - 10 f1, reported as the error f(exact) - f(x) against GLPK's exact
 //    optimum, and "hits" counts runs whose f1 is within one grid step of the exact f1 (the
@@ -148,7 +148,7 @@ struct SetupUdp {
   }
 };
 
-/// The setup-correction paper's example (seed 000, bundled demo data), 10 corrections on the
+/// The setup-correction paper's example (Stryczek 2016, bundled demo data), 10 corrections on the
 /// 0.001 mm grid, the paper's budget of 5000 solutions; error = f(exact optimum) - f(x) (>= 0);
 /// a hit = f1 within one grid step (0.001 mm) of the exact optimum's f1.
 BenchProblem setupPaperProblem(const std::string& sourceDir) {

@@ -1,5 +1,5 @@
 #pragma once
-// metrofit-bench --setup (issue 4): the exact setup correction's solve time on the paper's example
+// metrofit-bench --setup: the exact setup correction's solve time on the paper's example
 // (target < 1 ms) and on a generated 500 setup data x 5000 dimensions model (target < 1 s), and
 // CRIPSO's solutions per second against the paper's 5000 solutions in 0.58 s (ratio).
 #include <string>

@@ -14,7 +14,7 @@
 //    held-out half for each model. CAIVIAC: target ch3_um (the largest displacement), inputs the 16
 //    temperatures; SJTU: target delta L (um), inputs T0..T15, time = row index x 1 min (the file has no
 //    time column).
-//  * Table 4 for CAIVIAC (issue 18): ch1, ch3, ch5; every model (the paper's three, linear, lag,
+//  * Table 4 for CAIVIAC: ch1, ch3, ch5; every model (the paper's three, linear, lag,
 //    dlag, auto) on t5, t9 (the issue's inputs) and on t5, t9, spindle_rpm; auto chooses on the fit
 //    rows only; target: the chosen model (t5, t9, rpm) at most half the static regression's (t5, t9)
 //    held-out RMSE on ch1 and not above it on ch3 / ch5.
@@ -115,7 +115,7 @@ ThermalLog readSjtu(const std::string& path) {
   return log;
 }
 
-/// Issue 18 item 1: Table 4 for the real CAIVIAC log, ch1, ch3, ch5, first half fit, second half
+/// Table 4 for the real CAIVIAC log, ch1, ch3, ch5, first half fit, second half
 /// held out, every model on the issue's declared inputs (t5, t9) and with the spindle speed added
 /// (the heat source a thermal engineer tries next); `auto` chooses on the fit rows only.
 nlohmann::json realTable4(const ThermalLog& log) {

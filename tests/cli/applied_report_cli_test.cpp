@@ -1,4 +1,4 @@
-// `metrofit-cli report --project` with effects applied on the diagnosis page (issue 8): the setup and
+// `metrofit-cli report --project` with effects applied on the diagnosis page: the setup and
 // matching sections include them (the run succeeds), and a bad entry in
 // studies.diagnosis.<setup|matching>.applied ends with exit 2 and one line naming the project file and
 // the field.

@@ -1,4 +1,4 @@
-// End-to-end tests of metrofit-cli (CONTRACT.md "Command line"): exit codes, one-line errors,
+// End-to-end tests of metrofit-cli (docs/file-formats.md#command-line): exit codes, one-line errors,
 // atomic --out, the demo and the report.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -128,7 +128,20 @@ TEST(Cli, DemoWritesProjectDataAndReport) {
   EXPECT_FALSE(std::filesystem::exists(tmp.file("x.pdf")));
 }
 
-// Issue 17: messages name the unknown subcommand and point to the subcommand's own --help; lists
+// --help, of metrofit-cli and of every subcommand, names where the file formats and JSON results are
+// described: the installed document and its path in the source tree, which must exist.
+TEST(Cli, HelpNamesTheFileFormatsDocument) {
+  test::TempDir tmp;
+  for (const char* sub : {"", "setup", "thermal fit", "diagnose thermal", "project add"}) {
+    const CliRun h = cli(std::string(sub) + " --help", tmp);
+    EXPECT_EQ(h.code, 0) << sub;
+    EXPECT_NE(h.out.find("/usr/share/doc/metrofit/file-formats.md"), std::string::npos) << sub << h.out;
+    EXPECT_NE(h.out.find("docs/file-formats.md in the source tree"), std::string::npos) << sub << h.out;
+  }
+  EXPECT_TRUE(std::filesystem::is_regular_file(test::sourceDir() / "docs" / "file-formats.md"));
+}
+
+// Messages name the unknown subcommand and point to the subcommand's own --help; lists
 // typed with blanks ("a, b") are trimmed; the diagnosis JSON numbers rounds from 1.
 TEST(Cli, MessagesNameTheSubcommandAndItsHelp) {
   test::TempDir tmp;
@@ -159,7 +172,7 @@ TEST(Cli, ListOptionsAreTrimmedAndRoundsAre1Based) {
   EXPECT_EQ(smallest, 1);
 }
 
-// Issue 17: a bad study setting stops `report` with exit 2 and a line naming the study and field.
+// A bad study setting stops `report` with exit 2 and a line naming the study and field.
 TEST(Cli, ReportRejectsBadStudySettings) {
   test::TempDir tmp;
   ASSERT_EQ(cli("demo --out-dir demo", tmp).code, 0);
@@ -180,7 +193,7 @@ TEST(Cli, ReportRejectsBadStudySettings) {
   EXPECT_NE(k.err.find("datasets[0].kind"), std::string::npos) << k.err;
 }
 
-// Issue 17: the demo report as its reader sees it (pdftotext): the summary first (pages 1-2 for the
+// The demo report as its reader sees it (pdftotext): the summary first (pages 1-2 for the
 // demo's eight findings), nothing elided,
 // no source paths, seed numbers or ASCII stand-ins for symbols.
 TEST(Cli, DemoReportReadsAsAReport) {

@@ -1,5 +1,5 @@
-// End-to-end tests of `metrofit-cli diagnose thermal|kinematic` (CONTRACT.md "diagnose result";
-// issue 8) on the demo data with one undeclared effect each (resources/demo/data/diagnose_*.csv):
+// End-to-end tests of `metrofit-cli diagnose thermal|kinematic` (docs/file-formats.md#diagnose-result)
+// on the demo data with one undeclared effect each (resources/demo/data/diagnose_*.csv):
 // the JSON keys exactly, the one-line summary, atomic --out, exit codes and one-line errors.
 #include <gtest/gtest.h>
 

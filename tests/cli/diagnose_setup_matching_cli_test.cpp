@@ -1,5 +1,6 @@
-// End-to-end tests of `metrofit-cli diagnose setup` and `diagnose matching` (CONTRACT.md "diagnose
-// result"): the JSON keys, what is found in simulated data, exit codes and one-line errors.
+// End-to-end tests of `metrofit-cli diagnose setup` and `diagnose matching`
+// (docs/file-formats.md#diagnose-result): the JSON keys, what is found in simulated data, exit codes and
+// one-line errors.
 #include <gtest/gtest.h>
 
 #include <string>

@@ -1,6 +1,6 @@
-// End-to-end tests of metrofit-cli kinematic identify|compensate and spc (issue 6, CONTRACT.md):
-// results, one-line summaries, atomic outputs, and every bad input (exit 2, one line naming the
-// file / line / field).
+// End-to-end tests of metrofit-cli kinematic identify|compensate and spc
+// (docs/file-formats.md#kinematic-identify-result): results, one-line summaries, atomic outputs, and every
+// bad input (exit 2, one line naming the file / line / field).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

@@ -1,5 +1,5 @@
-// End-to-end tests of `metrofit-cli match` (CONTRACT.md "match"): JSON keys, exit codes, one-line
-// stderr, reproducibility, locks, scale, machines, bad input.
+// End-to-end tests of `metrofit-cli match` (docs/file-formats.md#match-result): JSON keys, exit codes,
+// one-line stderr, reproducibility, locks, scale, machines, bad input.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

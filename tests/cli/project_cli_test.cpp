@@ -1,4 +1,4 @@
-// End-to-end tests of own data (CONTRACT.md "Own data in a project (CLI)"): `project new|add|list`,
+// End-to-end tests of own data (docs/file-formats.md#own-data-in-a-project): `project new|add|list`,
 // --delimiter / --decimal on the readers, `-` for standard input, one-line errors with exit code 2.
 #include <gtest/gtest.h>
 

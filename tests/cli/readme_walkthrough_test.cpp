@@ -1,4 +1,4 @@
-// The README's command-line walkthrough, run as a newcomer runs it (issue 17, item 7).
+// The README's command-line walkthrough, run as a newcomer runs it.
 //
 // Every ```sh block between "<!-- cli-walkthrough begin" and "<!-- cli-walkthrough end -->" in
 // README.md is run as written, in order, in one shell (so `export PATH=...` and `cd` carry over),

@@ -1,5 +1,6 @@
-// End-to-end tests of `metrofit-cli setup` and `metrofit-cli simulate setup` (CONTRACT.md "setup"):
-// the JSON keys, exit codes, one-line errors naming file / line / field, determinism, exports.
+// End-to-end tests of `metrofit-cli setup` and `metrofit-cli simulate setup`
+// (docs/file-formats.md#setup-result): the JSON keys, exit codes, one-line errors naming file / line / field,
+// determinism, exports.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

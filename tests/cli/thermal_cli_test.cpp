@@ -1,4 +1,4 @@
-// End-to-end tests of `metrofit-cli thermal ...` (CONTRACT.md "Command line"; issue 7): the JSON of
+// End-to-end tests of `metrofit-cli thermal ...` (docs/file-formats.md#command-line): the JSON of
 // `thermal fit`, exit codes, one-line errors naming file and field, predict / hysteresis / modular.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -67,7 +67,7 @@ TEST(ThermalCli, FitWritesTheContractKeysForEveryModel) {
 }
 
 TEST(ThermalCli, RegressionModelsAndAutoOnTheRealLog) {
-  // Issue 18 item 1: linear / lag / dlag / auto on the real CAIVIAC log (ch1, t5, t9 and the spindle
+  // Linear / lag / dlag / auto on the real CAIVIAC log (ch1, t5, t9 and the spindle
   // speed); auto names what it chose and every candidate's blocked-CV score; every result says
   // whether the held-out test passed; the chosen model's JSON goes through thermal predict.
   test::TempDir tmp;
@@ -158,7 +158,7 @@ TEST(ThermalCli, BadInputExits2WithOneLineNamingFileAndField) {
   EXPECT_EQ(test::listFolder(tmp.path()), (std::vector<std::string>{"c.csv"}));
 }
 
-// A log of sensor columns only (item 8 of issue 17): --sample-interval gives its time on every
+// A log of sensor columns only: --sample-interval gives its time on every
 // command that reads a thermal log; without it, with a time column or without a unit: exit 2.
 TEST(ThermalCli, SampleIntervalReadsALogWithoutATimeColumn) {
   test::TempDir tmp;

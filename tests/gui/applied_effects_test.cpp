@@ -1,4 +1,4 @@
-// Applied effects in later runs (issue 8: "Apply adds the accepted effect to the study's model
+// Applied effects in later runs ("Apply adds the accepted effect to the study's model
 // (undoable) so later runs and compensations include it"), thermal and kinematics, driven through the
 // document on the bundled demo (offscreen):
 //  * thermal: on simulator data with an undeclared input (spindle speed) the Thermal page's models
@@ -209,7 +209,7 @@ TEST_F(AppliedEffectsTest, DemoLagKeepsTheDeclaredModelsWhereItWouldRaiseTheHeld
   EXPECT_NEAR(e1[1], 0.479, 0.02);
   EXPECT_NEAR(e1[2], 2.90, 0.15);
   const QLocale l;
-  // The regression models (issue 18) fit the lag themselves better with it; the paper's three not.
+  // The regression models fit the lag themselves better with it; the paper's three not.
   EXPECT_TRUE(label->text().startsWith(QStringLiteral("Applied effects %1: used by linear, lag, dlag (")
                                            .arg(QString::fromStdString(c->appliedText))))
       << label->text().toStdString();

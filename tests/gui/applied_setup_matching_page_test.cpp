@@ -1,4 +1,4 @@
-// Apply on the diagnosis page reaches the setup-correction and matching pages (issue 8): on the demo
+// Apply on the diagnosis page reaches the setup-correction and matching pages: on the demo
 // project with the studies pointed at the data with one undeclared effect, the page's error without
 // the applied effect (E0), with it after Apply (E1, near the diagnosis's "after" figure, the info
 // line names the effect) and after Undo (E0 again, exactly); a bad entry shows the field. Offscreen.

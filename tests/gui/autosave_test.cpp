@@ -1,4 +1,4 @@
-// Autosave and crash recovery (app/gui/autosave.h, issue 9) without a main window: the side file is
+// Autosave and crash recovery (app/gui/autosave.h) without a main window: the side file is
 // written after the interval with the document's content and without touching the undo stack, removed
 // by a clean save, an undo back to the saved state and a discard; a newer side file is offered for
 // recovery (the decision is injected) and the recovered project is modified, not saved; untitled

@@ -1,4 +1,4 @@
-// Small gaps of issue 9 a process engineer would notice (offscreen):
+// Small gaps a process engineer would notice (offscreen):
 //  * every dataset kind of the project format has a readable title on the project overview;
 //  * unsaved relation-graph edits of the setup page are part of the autosave side file and come back
 //    on recovery as unsaved edits (the project itself may be clean);

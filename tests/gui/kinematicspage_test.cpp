@@ -165,9 +165,9 @@ TEST(KinematicsPageEmpty, ProjectWithoutCircularTestShowsAMessage) {
   page.showView(QStringLiteral("path"));  // no crash
 }
 
-/// The demo extended by seed 002's chain: edges along X and Y machined on the demo's simulated
-/// machine (origin (4, -3) um, a = 0.01 deg, b = -0.02 deg; 0.5 um noise) and circular tests in
-/// XY, YZ and ZX of a three-axis machine with known squareness.
+/// The demo extended by the kinematic-compensation paper's chain: edges along X and Y machined on the demo's
+/// simulated machine (origin (4, -3) um, a = 0.01 deg, b = -0.02 deg; 0.5 um noise) and circular tests in XY,
+/// YZ and ZX of a three-axis machine with known squareness.
 class KinematicsActuatorsTest : public ::testing::Test {
  protected:
   static ActuatorErrors3 machine3() {

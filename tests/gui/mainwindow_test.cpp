@@ -117,7 +117,7 @@ TEST_F(MainWindowTest, OpensTheDemoProject) {
   EXPECT_TRUE(recentFiles().contains(doc->fileName()));
 }
 
-// Issue 17: study settings are validated when the project is opened; a bad one is a marked message
+// Study settings are validated when the project is opened; a bad one is a marked message
 // on the overview naming the study and the field (the demo has none).
 TEST_F(MainWindowTest, BadStudySettingIsAMarkedMessageOnOpen) {
   EXPECT_TRUE(window_.overviewPage()->settingProblems()->isHidden());
@@ -159,7 +159,7 @@ TEST_F(MainWindowTest, NavigatorShowsEveryPage) {
   EXPECT_TRUE(window_.overviewPage()->isVisible());
 }
 
-// The navigator shows every title whole (issue 17: "Demo cell: 5-axis machining ce..." was cut):
+// The navigator shows every title whole ("Demo cell: 5-axis machining ce..." was cut):
 // its column is as wide as its items (a dock narrower than that scrolls sideways instead).
 TEST_F(MainWindowTest, NavigatorTitlesAreNotElided) {
   window_.resize(1280, 800);

@@ -1,4 +1,4 @@
-// The residual check of the closed loop (core/diagnose/residual_check.h; issue 15 item 8) on the
+// The residual check of the closed loop (core/diagnose/residual_check.h) on the
 // diagnosis page and in the report (offscreen):
 //   * a hand-built diagnosis with a residual check: the verdict, the tests / structure / outlier
 //     tables (values, p-value formatting, units, rejected flags), the chart's series (residual
@@ -512,7 +512,8 @@ void expectShowsCheck(const DiagnosisPage& page) {
     EXPECT_EQ(cell(v->testTable(), r, 5), formatPValue(t.p, QLocale::c()));
     EXPECT_EQ(v->testTable()->item(r, 6)->data(Qt::UserRole).toBool(), t.rejected);
   }
-  // White exactly when no test is rejected (CONTRACT.md), and the structure listed as core has it.
+  // White exactly when no test is rejected (docs/file-formats.md#residual_check), and the structure listed as
+  // core has it.
   EXPECT_EQ(c.white, std::none_of(c.tests.begin(), c.tests.end(), [](const auto& t) { return t.rejected; }));
   ASSERT_EQ(v->structureTable()->rowCount(), static_cast<int>(c.structure.size()));
   for (int r = 0; r < v->structureTable()->rowCount(); ++r) {

@@ -1,5 +1,5 @@
-// `metrofit --screenshots DIR` (CONTRACT.md), run as a user would: under xvfb-run it writes one
-// non-blank PNG per main view and exits 0; without an X server it exits 2 with one clear line.
+// `metrofit --screenshots DIR` (docs/file-formats.md#screenshots), run as a user would: under xvfb-run it
+// writes one non-blank PNG per main view and exits 0; without an X server it exits 2 with one clear line.
 #include <gtest/gtest.h>
 
 #include <QColor>
@@ -93,8 +93,9 @@ QString outputDir(const QString& name) {
   return dir.path();
 }
 
-/// The views every screenshot run must show: CONTRACT.md's list in a fixed order, then one trend
-/// view per further thermal log of the bundled demo project (in project order), then the import dialog.
+/// The views every screenshot run must show: the list of docs/file-formats.md#screenshots in a fixed order,
+/// then one trend view per further thermal log of the bundled demo project (in project order), then the
+/// import dialog.
 QStringList expectedShots() {
   QStringList names = {
       QStringLiteral("overview"),           QStringLiteral("setup-graph"),

@@ -94,7 +94,7 @@ TEST_F(ThermalPageModelsTest, GnnmciMetricsEqualTheCliForTheSameSeed) {
 
   // Table 4 on screen: two rows (fit, held out) per model, the held-out RMSE as computed.
   const QTableWidget* table = page.modelView()->metricsTable();
-  ASSERT_EQ(table->rowCount(), 12);  // the paper's three, then linear, lag, dlag (issue 18)
+  ASSERT_EQ(table->rowCount(), 12);  // the paper's three, then linear, lag, dlag
   EXPECT_EQ(table->item(0, 0)->text(), QStringLiteral("GNNMCI(1,N)"));
   EXPECT_EQ(table->item(1, 3)->text(), QString::number(g.heldout.rmse, 'f', 2));
   EXPECT_EQ(table->item(2, 0)->text(), QStringLiteral("GMC(1,N)"));
@@ -102,7 +102,7 @@ TEST_F(ThermalPageModelsTest, GnnmciMetricsEqualTheCliForTheSameSeed) {
   EXPECT_EQ(table->item(6, 0)->text(), QStringLiteral("linear"));
   EXPECT_EQ(table->item(8, 0)->text(), QStringLiteral("lag"));
   EXPECT_EQ(table->item(10, 0)->text(), QStringLiteral("dlag"));
-  // Issue 17: each held-out row carries the verdict; the status names the best usable model.
+  // Each held-out row carries the verdict; the status names the best usable model.
   for (int row : {1, 3, 5}) {
     ASSERT_NE(table->item(row, 6), nullptr) << row;
     EXPECT_TRUE(table->item(row, 6)->text().startsWith(QStringLiteral("usable")) ||

@@ -1,4 +1,4 @@
-// Undo / redo covers every edit of the project (issue 9, item 5; docs/undo-coverage.md): each editor
+// Undo / redo covers every edit of the project (docs/undo-coverage.md): each editor
 // kind is driven like a user on its own, without a main window, on the bundled demo project, and the
 // whole project JSON is compared after the edit, after undo (exactly the JSON before) and after redo
 // (exactly the JSON after). Offscreen.

@@ -1,5 +1,5 @@
 #pragma once
-// The bad-input catalogue (issue 9 item 1): malformed inputs for every reader and every subcommand
+// The bad-input catalogue: malformed inputs for every reader and every subcommand
 // of metrofit-cli. Each case names the files it writes (content generated here: UTF-16, binary,
 // a 1 MB line, deep JSON nesting), the command line, the output files that must not appear (or stay
 // unchanged when they existed), and substrings the one-line message must contain (the file name and
@@ -1077,7 +1077,7 @@ inline std::vector<Case> cases() {
        {{"pts.csv", kProbe}},
        {"--lock", "qq"},
        json},
-      // ---- kinematic from-spc: the two edges (seed 002's chain) -------------------------------------
+      // ---- kinematic from-spc: the two edges (the paper's chain) ---------------------------------------
       {"KS01",
        "edge series",
        "Y edge without the deviation column",

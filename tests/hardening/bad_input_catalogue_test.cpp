@@ -1,4 +1,4 @@
-// The bad-input catalogue through metrofit-cli (issue 9 item 1): every case of bad_input_cases.h must
+// The bad-input catalogue through metrofit-cli: every case of bad_input_cases.h must
 // exit with code 2 and one line on stderr that names the file and the line/column or the field,
 // print nothing on stdout, leave no output file (and an existing one unchanged), no temporary file,
 // and finish within the timeout.
@@ -158,7 +158,8 @@ TEST(BadInputCatalogue, Document) {
       "    METROFIT_WRITE_CATALOGUE=1 ctest --test-dir build -R "
       "bad_input_catalogue_test.BadInputCatalogue.Document\n\n"
       "Every case runs `metrofit-cli` in a folder holding only the files of the case. The contract "
-      "(CONTRACT.md \"Command line\"): exit code 2, exactly one line on stderr naming the file and the "
+      "([docs/file-formats.md](file-formats.md#exit-status-and-output)): exit code 2, exactly one line on "
+      "stderr naming the file and the "
       "line/column or the field, nothing on stdout, no output file written (an existing one is left "
       "unchanged), no temporary file left, no crash, no hang. The test asserts all of it for every "
       "row; `bad_input_gui_test` feeds a subset to the GUI and checks that it shows the same message "

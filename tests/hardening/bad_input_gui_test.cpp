@@ -1,4 +1,4 @@
-// The bad-input catalogue through the GUI (issue 9 item 1, offscreen): with the demo project open,
+// The bad-input catalogue through the GUI (offscreen): with the demo project open,
 // bad files of the catalogue (bad_input_cases.h) are opened the way the GUI opens them: project files
 // through MainWindow::openProject (File > Open, Recent files), whose message box is read and closed
 // without blocking; data files as the pages read them when a dataset is chosen (thermal log, probe

@@ -133,7 +133,7 @@ TEST(ManPages, HaveTheSectionsAndTheBuildVersion) {
   EXPECT_NE(cli.find(version), std::string::npos) << "the .TH line names another version than " << kVersion;
   EXPECT_NE(gui.find(".TH METROFIT 1 "), std::string::npos);
   EXPECT_NE(gui.find(version), std::string::npos) << "the .TH line names another version than " << kVersion;
-  // The exit codes of CONTRACT.md, each with its own tag.
+  // The exit codes (docs/file-formats.md#exit-status-and-output), each with its own tag.
   const std::string exits = cli.substr(cli.find("\n.SH EXIT STATUS"));
   for (const char* code : {"\n.B 0\n", "\n.B 1\n", "\n.B 2\n"})
     EXPECT_NE(exits.find(code), std::string::npos);
@@ -225,6 +225,32 @@ TEST(ManPages, BuildInstallsTheSameTextGzipped) {
     ASSERT_EQ(header.size(), 10u);
     EXPECT_EQ(header.substr(4, 4), std::string(4, '\0')) << name;
   }
+}
+
+// The package's install rules put the user documentation into share/doc/metrofit, where --help and
+// the manual page say it is: the install script of the build is run for the "docs" component into a
+// temporary prefix (the .deb is made by cpack from the same rules, with every component).
+TEST(Packaging, InstallsTheDocumentationIntoTheDocFolder) {
+  if (run("command -v cmake").empty()) GTEST_SKIP() << "cmake is not on PATH";
+  const auto script = test::binDir().parent_path() / "packaging" / "cmake_install.cmake";
+  ASSERT_TRUE(std::filesystem::exists(script)) << script;
+  test::TempDir prefix;
+  int code = -1;
+  run("cmake -DCMAKE_INSTALL_COMPONENT=docs " + quote("-DCMAKE_INSTALL_PREFIX=" + prefix.path().string()) +
+          " -P " + quote(script) + " 2>&1",
+      &code);
+  ASSERT_EQ(code, 0);
+  const auto docDir = prefix.path() / "share" / "doc" / "metrofit";
+  for (const char* name : {"file-formats.md", "references.md", "README.md", "bad-input-catalogue.md"}) {
+    ASSERT_TRUE(std::filesystem::is_regular_file(docDir / name)) << docDir / name;
+    EXPECT_EQ(test::readText((docDir / name).string()),
+              test::readText((test::sourceDir() / "docs" / name).string()))
+        << name;
+  }
+  // The manual page and the help name that path.
+  const std::string installed = "/usr/share/doc/metrofit/file-formats.md";
+  EXPECT_NE(manPage("metrofit-cli").find(installed), std::string::npos);
+  EXPECT_NE(cliHelp("").find(installed), std::string::npos);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Issue 9 (every view translated): locale numbers, units on axes and tables that fit, checked without
+// Every view translated: locale numbers, units on axes and tables that fit, checked without
 // translations loaded (the sentences are English, the numbers follow QLocale's default).
 #include <QChart>
 #include <QHeaderView>

@@ -1,4 +1,4 @@
-// The shared polish of the views (issue 9): one palette (widgets/common/palette.h) used by the charts,
+// The shared polish of the views: one palette (widgets/common/palette.h) used by the charts,
 // chart export as PNG / SVG / clipboard image (widgets/common/chartexport.h) and tab-separated copying
 // from tables with headers (widgets/common/tablecopy.h). Offscreen; images go to $METROFIT_TEST_OUT.
 #include <gtest/gtest.h>

@@ -322,7 +322,7 @@ QString pageText(const QString& pdf, int page) {
       .out;
 }
 
-// Issue 17: page 1 is the summary; every section ends with its conclusion; references and the
+// Page 1 is the summary; every section ends with its conclusion; references and the
 // data-provenance appendix close the report; a thermal model is judged usable or not.
 TEST_F(ReportTest, PageOneSummarisesAndSectionsConclude) {
   const QString pdf = dir_.filePath(QStringLiteral("summary.pdf"));
@@ -359,7 +359,7 @@ TEST_F(ReportTest, PageOneSummarisesAndSectionsConclude) {
   EXPECT_EQ(summary.pages, pdfPages(pdf));
 }
 
-// Issue 17: nothing is elided or cut: long ids, file names and the title wrap instead.
+// Nothing is elided or cut: long ids, file names and the title wrap instead.
 TEST_F(ReportTest, NoElidedOrClippedText) {
   Project p = project_;
   p.name =
@@ -383,7 +383,7 @@ TEST_F(ReportTest, NoElidedOrClippedText) {
   EXPECT_TRUE(joined.contains(QStringLiteral("LICENSE-CC0-1.0-for-the-thermal-data.txt")));
 }
 
-// Issue 17: a bad study setting is an error naming the study and the field, before any PDF.
+// A bad study setting is an error naming the study and the field, before any PDF.
 TEST_F(ReportTest, BadStudySettingsAreErrorsNotDefaults) {
   struct Case {
     std::function<void(Project&)> spoil;
@@ -416,7 +416,7 @@ TEST_F(ReportTest, BadStudySettingsAreErrorsNotDefaults) {
   }
 }
 
-// Issue 17: sections report only the studies the project declares.
+// Sections report only the studies the project declares.
 TEST_F(ReportTest, OnlyDeclaredStudiesHaveSections) {
   Project p = project_;
   p.datasets.push_back({"second_run", dataset_kind::kThermalLog, "data/thermal.csv", "", "", {}});

@@ -204,7 +204,8 @@ const char* const kCoreTexts[] = {
         "(k = %3) and the process is in control (%4 subgroups of %5)"),
 };
 
-// Display names of the diagnosis parameters (CONTRACT.md keys); the unit is shown with the value.
+// Display names of the diagnosis parameters (keys of docs/file-formats.md#effect-catalogue); the unit is
+// shown with the value.
 const std::map<std::string, const char*>& parameterNames() {
   static const std::map<std::string, const char*> names = {
       {"tau_min", QT_TRANSLATE_NOOP("metrofit::core", "time constant")},

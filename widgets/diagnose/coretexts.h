@@ -11,8 +11,9 @@
 // missing from that list (coreTextSources()), so a new core sentence cannot silently stay English.
 // When a template is added in core, add it to the list (and to the .ts files via lupdate).
 //
-// Also here: display names of the diagnosis parameters (CONTRACT.md keys "tau_min", "x_mm", ...)
-// and the text of a run's termination reason (core/common/run.h toString: "converged", ...).
+// Also here: display names of the diagnosis parameters (keys of docs/file-formats.md#effect-catalogue:
+// "tau_min", "x_mm", ...) and the text of a run's termination reason (core/common/run.h toString:
+// "converged", ...).
 #include <QLocale>
 #include <QString>
 #include <string>
@@ -48,8 +49,8 @@ QString displayUnit(const QString& units);
 /// template and English text of core passes through it, whatever the language).
 QString displaySymbols(const QString& text);
 
-/// The display name of a diagnosis parameter key (CONTRACT.md, e.g. "tau_min" -> "time constant"),
-/// translated; unknown keys as they are.
+/// The display name of a diagnosis parameter key (docs/file-formats.md#effect-catalogue, e.g. "tau_min" ->
+/// "time constant"), translated; unknown keys as they are.
 QString parameterDisplayName(const std::string& key);
 /// True when `key` has a display name (a translatable one).
 bool hasParameterDisplayName(const std::string& key);

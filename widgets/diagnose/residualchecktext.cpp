@@ -135,8 +135,8 @@ QString formatPValue(double p, const QLocale& locale) {
 
 QString residualCheckVerdict(const diagnose::ResidualCheck& c) {
   // With structure: the list made here, so that the variables' names are translated too ("Zeit",
-  // "Bahnwinkel"; core's summary keeps CONTRACT.md's names). Otherwise core's summary (white, serial
-  // correlation only, too few observations), translated.
+  // "Bahnwinkel"; core's summary keeps the names of docs/file-formats.md). Otherwise core's summary (white,
+  // serial correlation only, too few observations), translated.
   if (!c.white && !c.structure.empty()) {
     constexpr std::size_t kShown = 3;
     const QLocale locale;

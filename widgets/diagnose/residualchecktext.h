@@ -1,9 +1,9 @@
 #pragma once
-// The residual check of the closed loop (core/diagnose/residual_check.h, CONTRACT.md "The open
-// world") in words, for the diagnosis page's "Residual check" tab (residualcheckview.h) and the
-// report's diagnosis section. Core writes CONTRACT.md's identifiers (`ljung_box`, `f_test`, the
-// variable names `time`, `angle`, `surface:S1`, the forms `smooth`, `level`); here they become the
-// words a person reads, translated in the context "metrofit::ResidualCheck":
+// The residual check of the closed loop (core/diagnose/residual_check.h, docs/file-formats.md#residual_check)
+// in words, for the diagnosis page's "Residual check" tab (residualcheckview.h) and the report's diagnosis
+// section. Core writes the identifiers of docs/file-formats.md (`ljung_box`, `f_test`, the variable names
+// `time`, `angle`, `surface:S1`, the forms `smooth`, `level`); here they become the words a person reads,
+// translated in the context "metrofit::ResidualCheck":
 //   * short names for table cells: "Ljung-Box", "path angle", "surface S1", "per level";
 //   * reader's words for sentences (the report): "the path angle", "a smooth curve", and the
 //     sentences saying what the final residual still depends on, which outliers were excluded and

@@ -1,5 +1,5 @@
 #pragma once
-// The residual check of a diagnosis (core/diagnose/residual_check.h; issue 15 item 8) on the
+// The residual check of a diagnosis (core/diagnose/residual_check.h) on the
 // diagnosis page: what the final residual (after every accepted effect, outliers excluded) still
 // depends on.
 //   * the verdict (white / still depends on ...), core's summary translated;

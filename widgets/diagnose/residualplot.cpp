@@ -137,7 +137,7 @@ void drawLegend(QPainter& p, const QRectF& area, const QList<QPair<QColor, QStri
   p.setBrush(Qt::NoBrush);
 }
 
-/// "um" -> "µm" for display (core writes CONTRACT.md's ASCII unit names).
+/// "um" -> "µm" for display (core writes the ASCII unit names of docs/file-formats.md).
 QString displayUnits(const std::string& text) {
   QString s = QString::fromStdString(text);
   s.replace(QRegularExpression(QStringLiteral("\\bum\\b")), QStringLiteral("µm"));

@@ -1,5 +1,5 @@
 #pragma once
-// Drawings of the closed loop's results (issue 8), for the diagnosis page and the report:
+// Drawings of the closed loop's results, for the diagnosis page and the report:
 //   * the residual of the declared model before and after an accepted effect against what explains
 //     it (diagnose::ResidualPlot: time, path angle, part number, surface...): a Qt Charts scatter in
 //     the GUI (ResidualPlotView), the same plot painted with QPainter for the PDF;

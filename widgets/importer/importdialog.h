@@ -1,5 +1,5 @@
 #pragma once
-// The import dialog (issue 16 item 1): adds a file to a project as a dataset of one kind, the way
+// The import dialog: adds a file to a project as a dataset of one kind, the way
 // `metrofit-cli project add` does (core/project/datasets.h addDataset, the same checks and the same
 // DatasetRef). It shows
 //   * the kind (guessed from the extension and the content: guessKind),

@@ -1,4 +1,4 @@
-// Report section "Closed loop: diagnosis" (issue 8): for every domain the project's diagnosis study
+// Report section "Closed loop: diagnosis": for every domain the project's diagnosis study
 // configures (core/study/diagnosis_study.h), the loop step by step: the declared model's error,
 // each candidate effect with its parameters, evidence and decision, the final error; the residual
 // plot before / after of each accepted effect (painted like the GUI's, widgets/diagnose/residualplot.h),

@@ -1,8 +1,8 @@
-// Report section "Kinematic compensation and SPC" (issue 6, seed 002): per circular test the
-// identified actuator errors with their standard errors, the path and the ballbar-style polar plot
-// (the same drawings as the GUI, kinematicplots.h), the compensation of the nominal circle (largest
-// radial deviation before and after), the SPC charts and indices of the study's feature series,
-// seed 002's chain from the SPC regression offset angles to actuator errors and their compensation
+// Report section "Kinematic compensation and SPC" (IEEE Access, kinematic compensation algorithm): per
+// circular test the identified actuator errors with their standard errors, the path and the ballbar-style
+// polar plot (the same drawings as the GUI, kinematicplots.h), the compensation of the nominal circle
+// (largest radial deviation before and after), the SPC charts and indices of the study's feature series, the
+// paper's chain from the SPC regression offset angles to actuator errors and their compensation
 // (studies.kinematics.from_spc) and the three-axis errors from circular tests in XY, YZ and ZX
 // (studies.kinematics.planes).
 #include <QCoreApplication>
@@ -251,7 +251,8 @@ void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
   out.paragraph(ReportText::tr("SPC-gated compensation: %1").arg(readerText(r.decision.reason)));
 }
 
-/// Seed 002's chain from SPC to compensation, and the three-axis identification (when configured).
+/// The kinematic-compensation paper's chain from SPC to compensation, and the three-axis identification (when
+/// configured).
 void writeActuators(ReportPainter& out, const KinematicStudyData& s) {
   if (s.fromSpc || !s.fromSpcError.empty()) {
     out.subheading(ReportText::tr("From the SPC offset angle to actuator errors"), out.mm(50.0));

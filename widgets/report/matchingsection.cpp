@@ -1,4 +1,4 @@
-// Report section "Posture matching — before and after" (issue 5): for the matching study's probe
+// Report section "Posture matching — before and after": for the matching study's probe
 // points (studies.matching, core/study/matching_study.h) every method is run as in the GUI, and the section
 // shows
 //  - the 3D views before and after matching as images: the same oblique view as the GUI's linked 3D

@@ -1,4 +1,4 @@
-// Report section "Setup-data correction" (issue 4): the relation-graph model, the CMM report, the
+// Report section "Setup-data correction": the relation-graph model, the CMM report, the
 // settings, the convergence of CRIPSO and PSO against the exact optimum (run here with fixed
 // seeds: the paper's size takes milliseconds), the comparison of the methods, the corrections, the
 // margins before / after per dimension and the Fanuc export of the exact corrections.

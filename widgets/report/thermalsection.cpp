@@ -1,8 +1,8 @@
 // Report section "Thermal": per thermal log, a summary, the trend chart as vector graphics and a
 // table of the channels with their ranges; the hysteresis charts with loop areas and lags; the three
-// models of seed 004 (GNNMCI(1,N), GMC(1,N), MLP) fitted on the first part and compared on the rest
-// (chart, residuals, Table 4); and, after the combined test of the modular case, the combined test
-// predicted from models fitted on the Z and C tests (Section 4.3).
+// models of Abdulshahed 2016, grey neural network thermal model (GNNMCI(1,N), GMC(1,N), MLP) fitted on the
+// first part and compared on the rest (chart, residuals, Table 4); and, after the combined test of the
+// modular case, the combined test predicted from models fitted on the Z and C tests (Section 4.3).
 //
 // Run time: the models are trained here (fixed seed, default budgets). Logs longer than
 // kMaxModelRows rows are fitted on every k-th row (said in the section). The report is laid out

@@ -1,8 +1,8 @@
 #pragma once
-// Hysteresis view of a thermal log (seed 004, Fig. 9): the target (displacement) against one sensor or
-// against every sensor (small multiples), heating and cooling runs coloured as the trend chart's phase
-// bands, and a side table with each sensor's loop area and lag (core/thermal/hysteresis.h). Qt Charts
-// stays behind the pimpl.
+// Hysteresis view of a thermal log (Abdulshahed 2016, grey neural network thermal model, Fig. 9): the target
+// (displacement) against one sensor or against every sensor (small multiples), heating and cooling runs
+// coloured as the trend chart's phase bands, and a side table with each sensor's loop area and lag
+// (core/thermal/hysteresis.h). Qt Charts stays behind the pimpl.
 #include <QWidget>
 #include <memory>
 #include <string>

@@ -2,7 +2,8 @@
 // Charts of the thermal models without a widget, shared by the thermal page and the PDF report (like
 // thermalcharts.h for the trend chart). Qt Charts stays out of this header.
 //
-//  * Hysteresis chart (seed 004, Fig. 9): the target (displacement) against one sensor, one line per
+//  * Hysteresis chart (Abdulshahed 2016, grey neural network thermal model, Fig. 9): the target
+//  (displacement) against one sensor, one line per
 //    heating or cooling run of the hysteresis analysis (core/thermal/hysteresis.h), heating and
 //    cooling in the hues of the trend chart's phase bands (thermalPhaseColor), saturated so that a
 //    line is visible: thermalPhaseLineColor. A run of rows [first, last] is drawn through the first

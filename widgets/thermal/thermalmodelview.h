@@ -1,8 +1,8 @@
 #pragma once
-// Model comparison view of a thermal log (seed 004, Fig. 10-14 and Table 4): settings (target,
-// inputs, train fraction, seed), training of GNNMCI(1,N), GMC(1,N) and the MLP in a worker thread
-// with live PSO progress (best fitness against iteration, a progress bar, Cancel), then measured
-// against the three models over time with the fit / held-out boundary, the residuals, the Table 4
+// Model comparison view of a thermal log (Abdulshahed 2016, grey neural network thermal model, Fig. 10-14 and
+// Table 4): settings (target, inputs, train fraction, seed), training of GNNMCI(1,N), GMC(1,N) and the MLP in
+// a worker thread with live PSO progress (best fitness against iteration, a progress bar, Cancel), then
+// measured against the three models over time with the fit / held-out boundary, the residuals, the Table 4
 // metrics (R, RMSE, E, residual band on the fitted and the held-out rows) and, when the project has
 // the three modular tests, the combined test predicted from the Z and C tests (Section 4.3).
 // Applied effects in the settings (ThermalModelSettings::applied) are named under the inputs; each

@@ -1,5 +1,5 @@
 // The texts of the closed loop in two forms (core/common/text.h, core/diagnose/diagnosis.h): the
-// English strings of CONTRACT.md stay exactly as they were, and each equals the English form of the
+// English strings of docs/file-formats.md stay exactly as they were, and each equals the English form of the
 // phrases recorded next to it (evidence, notes, residual-plot axis titles, acceptance reasons), which
 // is what the GUI translates. Also the phrase formatting itself and the shared progress / cancel
 // helper (LoopProgress) of the four loops.

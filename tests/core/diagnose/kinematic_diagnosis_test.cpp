@@ -1,7 +1,7 @@
 // The kinematic closed loop (core/diagnose/kinematic_diagnosis.h) and its simulator
 // (core/sim/effects_kinematic.h): backlash, scale, cyclic and servo lag found in circular tests at
 // an effect-to-noise ratio of 5 with parameters within 30 %, clean tests clean, two effects found
-// both, the CONTRACT JSON, bad inputs.
+// both, the JSON of docs/file-formats.md#diagnose-result, bad inputs.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The open world of the closed loop (CONTRACT.md "The open world") in the setup, matching and
+// The open world of the closed loop (docs/file-formats.md#residual_check) in the setup, matching and
 // kinematic domains (and thermal: a curvature, a re-zeroed sensor and a gross error after the fit
 // rows): effects that no catalogue entry models are added here, in the test, to clean
 // simulated data (not by the project's effect simulators), and the loop must not name a catalogue

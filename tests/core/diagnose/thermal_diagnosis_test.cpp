@@ -1,7 +1,7 @@
 // The thermal closed loop (core/diagnose/thermal_diagnosis.h) and its simulator
 // (core/sim/effects_thermal.h): every undeclared effect found in generated data with its parameter
 // within 30 % at an effect-to-noise ratio of 5, clean data clean, two effects found both, the
-// held-out error never worse, the CONTRACT JSON, bad inputs.
+// held-out error never worse, the JSON of docs/file-formats.md#diagnose-result, bad inputs.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -63,7 +63,7 @@ double param(const Candidate& c, const std::string& name) {
   return 0.0;
 }
 
-/// The held-out rows no longer choose the effects (issue 15 item 4), so a single accepted effect may
+/// The held-out rows no longer choose the effects, so a single accepted effect may
 /// extrapolate worse on them; on these catalogue cases the final model still predicts them better.
 void expectHeldoutNeverWorse(const Diagnosis& d) {
   ASSERT_TRUE(d.baseline.heldoutRmse && d.final.heldoutRmse);
@@ -194,7 +194,7 @@ TEST(ThermalDiagnosis, TwoEffectsAreBothFound) {
   }
 }
 
-// ---- Honest held-out rows (issue 15 item 4, CONTRACT.md "Honest held-out rows") ----------------
+// ---- Honest held-out rows (docs/file-formats.md#honest-held-out-rows) -------------------------------
 
 enum class Scramble { Permute, Noise };
 
@@ -297,7 +297,7 @@ TEST(ThermalHonestHeldOut, SimulatedTwoEffectsScrambledChangesOnlyTheHeldOutFigu
 
 TEST(ThermalHonestHeldOut, RealCaiviacScrambledChangesOnlyTheHeldOutFigures) {
   // The CAIVIAC spindle log (11 115 rows, resources/demo/data/SOURCE-CAIVIAC.md), ch1 and ch3 with
-  // the two hottest sensors declared (issue 15: scrambling the held-out target changed the accepted
+  // the two hottest sensors declared (scrambling the held-out target changed the accepted
   // effects of both before).
   const ThermalLog log =
       readThermalLog((test::sourceDir() / "resources/demo/data/thermal_caiviac.csv").string());
@@ -313,7 +313,7 @@ TEST(ThermalHonestHeldOut, RealCaiviacScrambledChangesOnlyTheHeldOutFigures) {
   }
 }
 
-// ---- Declared grey models (issue 15 item 5) -----------------------------------------------------
+// ---- Declared grey models ---------------------------------------------------------------------------
 
 Diagnosis runDeclared(const ThermalEffectsOptions& so, ThermalDeclaredModel m, double fraction) {
   ThermalDiagnosisOptions o;
@@ -390,7 +390,7 @@ TEST(ThermalDeclaredGrey, NamesAndScrambledHeldOut) {
   }
 }
 
-// ---- The open world (issue 15 items 1-3, CONTRACT.md "The open world") --------------------------
+// ---- The open world (docs/file-formats.md#residual_check) -------------------------------------------
 
 /// The simulator's clean log (seed) with the target changed by `change(row, time, log)`.
 template <class Change>

@@ -1,5 +1,5 @@
-// CSV dialects (CONTRACT.md "Own data in a project": --delimiter / --decimal, default auto) and the
-// column mapping (--map ROLE=COLUMN) of core/io/csv.h.
+// CSV dialects (docs/file-formats.md#csv-dialects-and-standard-input: --delimiter / --decimal, default auto)
+// and the column mapping (--map ROLE=COLUMN) of core/io/csv.h.
 #include <gtest/gtest.h>
 
 #include <sstream>

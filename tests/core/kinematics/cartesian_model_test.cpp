@@ -1,5 +1,5 @@
-// The Cartesian machine model of seed 002 Section IV: Eq. 2-6 (intersection), Eq. 9 (direct),
-// Eq. 15 (inverse), 2D and three axes, and the paper's Fig. 11 cases.
+// The Cartesian machine model of the IEEE Access kinematic compensation algorithm, Section IV: Eq. 2-6
+// (intersection), Eq. 9 (direct), Eq. 15 (inverse), 2D and three axes, and the paper's Fig. 11 cases.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -102,7 +102,7 @@ TEST(CartesianMachine2, ErrorsRoundTripThroughTheMachine) {
   EXPECT_TRUE(test::near(m.errors().yAxisAngleDeg, -15.0, 1e-12));
   EXPECT_EQ(m.errors().originMm, e.originMm);
   EXPECT_DOUBLE_EQ(e.squarenessDeg(), -25.0);
-  // CONTRACT.md: X moves along (cos a, sin a), Y along (-sin b, cos b).
+  // docs/file-formats.md#kinematic-identify-result: X moves along (cos a, sin a), Y along (-sin b, cos b).
   const Eigen::Vector2d px = m.forward({1.0, 0.0}) - m.forward({0.0, 0.0});
   const Eigen::Vector2d py = m.forward({0.0, 1.0}) - m.forward({0.0, 0.0});
   EXPECT_TRUE(test::near(px.x(), std::cos(10.0 * kDeg), 1e-12));

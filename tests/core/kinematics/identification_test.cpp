@@ -1,6 +1,6 @@
 // Identification of the actuator errors from circular tests (simulated machine), its standard
 // errors, degenerate input, the observer, the identify JSON, and compensation through the
-// simulated machine (issue 6 targets: 1e-3 deg, 1 um at 0.5 um noise; within 2 um after).
+// simulated machine (targets: 1e-3 deg, 1 um at 0.5 um noise; within 2 um after).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // SPC regression offset angle -> actuator errors -> compensation (core/kinematics/spc_actuator.h).
-// Every reference is computed here from seed 002's Eq. 9 written out in the test (never through
-// CartesianMachine2 or the simulator): the measured edges, the injected errors, and the check that
-// the compensated references land on the nominal path.
+// Every reference is computed here from the kinematic-compensation paper's Eq. 9 written out in the test
+// (never through CartesianMachine2 or the simulator): the measured edges, the injected errors, and the check
+// that the compensated references land on the nominal path.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,8 +24,8 @@ struct Truth {
   double ox, oy, aDeg, bDeg;
 };
 
-/// Eq. 9 of the paper in the CONTRACT.md parametrisation, written out: P = o + x (cos a, sin a) +
-/// y (-sin b, cos b).
+/// Eq. 9 of the paper in the parametrisation of docs/file-formats.md#kinematic-identify-result, written out:
+/// P = o + x (cos a, sin a) + y (-sin b, cos b).
 void machine(const Truth& t, double x, double y, double* px, double* py) {
   const double a = t.aDeg * kDeg, b = t.bDeg * kDeg;
   *px = t.ox + x * std::cos(a) - y * std::sin(b);

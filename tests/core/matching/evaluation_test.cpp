@@ -1,4 +1,4 @@
-// rmse_mm, max_abs_mm and out_of_tolerance exactly as CONTRACT.md "match" defines them.
+// rmse_mm, max_abs_mm and out_of_tolerance exactly as docs/file-formats.md#match-result defines them.
 #include "core/matching/evaluation.h"
 
 #include <gtest/gtest.h>

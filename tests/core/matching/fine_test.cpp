@@ -52,7 +52,7 @@ TEST(Fine, ObjectiveIsEq8WithTheTranslationOfEq9) {
       f += (set.points[i].nominal - (A1 * Pp[i] + T1)).squaredNorm();
     f /= static_cast<double>(Pp.size());  // Eq. (8)
     EXPECT_NEAR(problem.evaluate(x, {}), std::sqrt(f), 1e-12);
-    // The posture at x reproduces the same RMS in CONTRACT's convention.
+    // The posture at x reproduces the same RMS in the match result's convention.
     EXPECT_NEAR(rmse(set, problem.poseAt(x)), std::sqrt(f), 1e-12);
   }
   // Bounds: [-|alpha0| - k, |alpha0| + k] etc.

@@ -1,4 +1,4 @@
-// Validation of the fit input (issue 5 item 1) and the translation / scale elimination of Eq. (9).
+// Validation of the fit input and the translation / scale elimination of Eq. (9).
 #include "core/matching/fit_input.h"
 
 #include <gtest/gtest.h>

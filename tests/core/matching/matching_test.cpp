@@ -1,4 +1,5 @@
-// matchPosture end to end: the four methods agree where they should, JSON carries CONTRACT's keys.
+// matchPosture end to end: the four methods agree where they should, JSON carries the keys of
+// docs/file-formats.md#match-result.
 #include "core/matching/matching.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
-// Posture conventions (CONTRACT.md "match": R = Rz(rz) Ry(ry) Rx(rx) on column vectors) and locks.
+// Posture conventions (docs/file-formats.md#match-result: R = Rz(rz) Ry(ry) Rx(rx) on column vectors) and
+// locks.
 #include "core/matching/pose.h"
 
 #include <gtest/gtest.h>

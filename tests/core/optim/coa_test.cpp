@@ -1,4 +1,4 @@
-// Cuckoo optimisation algorithm (Rajabioun 2011) with seed 000's settings (at most 40 habitats,
+// Cuckoo optimisation algorithm (Rajabioun 2011) with the settings of Stryczek 2016 (at most 40 habitats,
 // 5-10 eggs): the Algorithm contract and convergence over seeds.
 #include "core/optim/coa.h"
 
@@ -105,10 +105,10 @@ TEST(Coa, ParallelRunsOnASharedProblemMatchSequentialRuns) {
 
 // Convergence over seeds 1..10; the tolerances hold with margin over seeds 1..100 (Rosenbrock
 // 1..200), whose median and worst the comments give. COA keeps its egg laying radius (no
-// shrinking schedule), so it refines slowly: looser tolerances, as seed 000 found ("the results
+// shrinking schedule), so it refines slowly: looser tolerances, as Stryczek 2016 found ("the results
 // diverged from other methods in terms of quality").
 TEST(Coa, ConvergesOnSphere10D) {
-  // 30,000 evaluations (seed 000's COA trials): deviation angle: median 1.5e-7, worst 7e-7;
+  // 30,000 evaluations (the COA trials of Stryczek 2016): deviation angle: median 1.5e-7, worst 7e-7;
   // per-dimension F: median 5e-9, worst 1e-7.
   EXPECT_TRUE(allBelow(bestOverSeeds<Coa>(withBudget(30000), test::sphere10()), 1e-5));
   EXPECT_TRUE(allBelow(

@@ -1,4 +1,5 @@
-// CRIPSO (seed 000, Eq. 1 and 11): the Algorithm contract and convergence over seeds 1..10.
+// CRIPSO (Stryczek 2016, fast machining error compensation, Eq. 1 and 11): the Algorithm contract and
+// convergence over seeds 1..10.
 #include "core/optim/cripso.h"
 
 #include <gtest/gtest.h>

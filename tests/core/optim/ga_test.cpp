@@ -1,4 +1,4 @@
-// Elitist GA (seed 000's comparison settings: population 50, gene mutation probability 0.1,
+// Elitist GA (the comparison settings of Stryczek 2016: population 50, gene mutation probability 0.1,
 // pairwise tournaments whose winners qualify): the Algorithm contract and convergence over seeds.
 #include "core/optim/ga.h"
 

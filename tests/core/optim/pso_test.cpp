@@ -1,5 +1,5 @@
-// PSO in its two documented variants: seed 000 (asynchronous, cos-decaying c1 = c2, w = 0.75,
-// 100 particles) and seed 004 (synchronous, w 0.9 -> 0.4, c1 = 1.5, c2 = 2, 90 particles).
+// PSO in its two documented variants: Stryczek 2016 (asynchronous, cos-decaying c1 = c2, w = 0.75,
+// 100 particles) and Abdulshahed 2016 (synchronous, w 0.9 -> 0.4, c1 = 1.5, c2 = 2, 90 particles).
 #include "core/optim/pso.h"
 
 #include <gtest/gtest.h>
@@ -119,14 +119,15 @@ TEST(Pso, ParallelRunsOnASharedProblemMatchSequentialRuns) {
 // Convergence over seeds 1..10; the tolerances hold with margin over seeds 1..100 (Rosenbrock
 // 1..200), whose median and worst the comments give.
 TEST(Pso, ConvergesOnSphere10D) {
-  // 20,000 evaluations. Seed 000 variant: median 7e-20, worst 1.4e-18; seed 004: median 3.5e-12,
+  // 20,000 evaluations. Stryczek 2016 variant: median 7e-20, worst 1.4e-18; Abdulshahed 2016: median 3.5e-12,
   // worst 2.3e-11.
   EXPECT_TRUE(allBelow(bestOverSeeds<Pso>(stryczek(20000), test::sphere10()), 1e-12));
   EXPECT_TRUE(allBelow(bestOverSeeds<Pso>(abdulshahed(20000), test::sphere10()), 1e-8));
 }
 
 TEST(Pso, ConvergesOnRosenbrock10D) {
-  // 30,000 evaluations. Seed 000 variant: median 0.7, worst 7.0; seed 004: median 3.9, worst 7.9.
+  // 30,000 evaluations. Stryczek 2016 variant: median 0.7, worst 7.0; Abdulshahed 2016: median 3.9,
+  // worst 7.9.
   EXPECT_TRUE(allBelow(bestOverSeeds<Pso>(stryczek(30000), test::rosenbrock10()), 15.0));
   EXPECT_TRUE(allBelow(bestOverSeeds<Pso>(abdulshahed(30000), test::rosenbrock10()), 15.0));
 }

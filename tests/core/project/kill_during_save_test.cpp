@@ -1,4 +1,4 @@
-// No lost work (issue 9): a process killed with SIGKILL at a random moment while it saves a project
+// No lost work: a process killed with SIGKILL at a random moment while it saves a project
 // leaves either the old or the new file behind, complete and valid — never a truncated or mixed one.
 #include <gtest/gtest.h>
 #include <signal.h>

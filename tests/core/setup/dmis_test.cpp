@@ -1,4 +1,4 @@
-// DMIS output as CMMs write it (core/setup/report.h, issue 16 item 3). The texts are written from
+// DMIS output as CMMs write it (core/setup/report.h). The texts are written from
 // the statement syntax of the DMIS standard (ANSI/DMIS 105.2 Part 1, 5.3: FILNAM, DMISMN, UNITS,
 // F/FA = FEAT/CIRCLE|CYLNDR|POINT,[INNER|OUTER,]CART,..., T/TA = TOL/DIAM|CORTOL|DISTB|PROFP,
 // OUTPUT, ENDFIL), not from Metrofit's own writer; expected deviations are worked out by hand below.

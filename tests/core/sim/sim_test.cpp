@@ -61,7 +61,7 @@ TEST(ProbeSim, PostureIsAppliedAndDeterministic) {
     EXPECT_LT((p.measured - (R * p.nominal + t)).norm(), 1e-12);
     EXPECT_NEAR(p.normal.norm(), 1.0, 1e-15);
   }
-  // Rz(90) maps x to y: the convention of CONTRACT.md (R = Rz Ry Rx on column vectors).
+  // Rz(90) maps x to y: the convention of docs/file-formats.md#match-result (R = Rz Ry Rx on column vectors).
   EXPECT_LT((rotationFromDeg(0, 0, 90) * Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitY()).norm(), 1e-15);
   o.seed = 5;
   o.noiseMm = 0.002;

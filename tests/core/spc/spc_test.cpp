@@ -1,6 +1,6 @@
-// SPC (seed 002 Section IV.A): chart constants against the published table, X-bar/R limits,
-// Cp/Cpk/Pp/Ppk, natural tolerance (Eq. 17), systematic error (Eq. 20), regression line and
-// offset angle (Fig. 10), the SPC gate, and bad input.
+// SPC (IEEE Access, kinematic compensation algorithm, Section IV.A): chart constants against the published
+// table, X-bar/R limits, Cp/Cpk/Pp/Ppk, natural tolerance (Eq. 17), systematic error (Eq. 20), regression
+// line and offset angle (Fig. 10), the SPC gate, and bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>

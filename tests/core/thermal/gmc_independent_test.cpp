@@ -1,5 +1,5 @@
-// Issue 18 item 1: is the poor held-out result of GMC(1,N) on the real CAIVIAC log the method or
-// the implementation? An independent GMC(1,N) written here from seed 004 (Appendix A Eq. A.2-A.3,
+// Is the poor held-out result of GMC(1,N) on the real CAIVIAC log the method or
+// the implementation? An independent GMC(1,N) written here from Abdulshahed 2016 (Appendix A Eq. A.2-A.3,
 // Eq. 2.1-2.2 with Tien's 1-based indices, the background value z(k) = (X(k) + X(k-1)) / 2 and the
 // normal equations solved by LDLT, the time response by the literal double sum) against
 // core/thermal/grey.h (weighted AGO, column-pivoting QR, O(n) recursion), on the real log; then the

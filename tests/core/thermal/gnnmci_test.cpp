@@ -1,5 +1,5 @@
-// GNNMCI(1,N) (seed 004, Eq. 2.3-2.9, Fig. 2): the mapping with the paper's weight assignment, and
-// PSO training.
+// GNNMCI(1,N) (Abdulshahed 2016, grey neural network thermal model, Eq. 2.3-2.9, Fig. 2): the mapping with
+// the paper's weight assignment, and PSO training.
 #include "core/thermal/gnnmci.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// 1-AGO / IAGO (seed 004, Appendix A) and GMC(1,N) (Eq. 2.1-2.2).
+// 1-AGO / IAGO (Abdulshahed 2016, grey neural network thermal model, Appendix A) and GMC(1,N) (Eq. 2.1-2.2).
 #include "core/thermal/grey.h"
 
 #include <gtest/gtest.h>

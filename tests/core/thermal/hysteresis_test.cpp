@@ -1,4 +1,5 @@
-// Hysteresis analysis (seed 004, Section 3.1, Fig. 9): loop areas and sensor lags.
+// Hysteresis analysis (Abdulshahed 2016, grey neural network thermal model, Section 3.1, Fig. 9): loop areas
+// and sensor lags.
 #include "core/thermal/hysteresis.h"
 
 #include <gtest/gtest.h>

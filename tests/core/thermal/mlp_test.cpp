@@ -1,4 +1,5 @@
-// The MLP baseline of seed 004 (Table 3): N-10-1, logistic hidden layer, Levenberg-Marquardt.
+// The MLP baseline of Abdulshahed 2016, grey neural network thermal model (Table 3): N-10-1, logistic hidden
+// layer, Levenberg-Marquardt.
 #include "core/thermal/mlp.h"
 
 #include <gtest/gtest.h>

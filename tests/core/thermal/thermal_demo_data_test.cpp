@@ -42,7 +42,7 @@ TEST(ThermalDemoData, ModularCompositionOnTheDemoTests) {
   thermal::ThermalFitOptions o;
   o.setSeed(1);
   const thermal::ModularEvaluation m = thermal::fitModular({z, c}, h, o);
-  EXPECT_GE(m.reductionPeak, 0.85);  // seed 004's headline (measured: 94.0 %)
+  EXPECT_GE(m.reductionPeak, 0.85);  // Abdulshahed 2016's headline (measured: 94.0 %)
   EXPECT_TRUE(test::near(m.errorPeak, 87.21, 0.01)) << m.errorPeak;
   // Same seed, same model, bit for bit.
   EXPECT_EQ(thermal::fitModular({z, c}, h, o).predicted, m.predicted);

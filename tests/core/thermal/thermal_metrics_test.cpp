@@ -1,4 +1,4 @@
-// Table 4's indices (seed 004) against values computed by hand.
+// Table 4's indices (Abdulshahed 2016, grey neural network thermal model) against values computed by hand.
 #include "core/thermal/thermal_metrics.h"
 
 #include <gtest/gtest.h>
