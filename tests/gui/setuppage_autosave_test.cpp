@@ -1,11 +1,8 @@
-// Small gaps a process engineer would notice (offscreen):
-//  * every dataset kind of the project format has a readable title on the project overview;
-//  * unsaved relation-graph edits of the setup page are part of the autosave side file and come back
-//    on recovery as unsaved edits (the project itself may be clean);
+// The setup page's relation-graph edits and runs (offscreen):
+//  * unsaved relation-graph edits are part of the autosave side file and come back on recovery as
+//    unsaved edits (the project itself may be clean);
 //  * the graph editor's Revert is one undo step: Ctrl+Z brings the edits back;
-//  * the setup page's progress bar shows only while a run goes on (like the other pages);
-//  * the matching page's tables fit the default window (1280 x 800) in German and Polish, and the
-//    kinematics page's long labels wrap instead of being cut short.
+//  * the progress bar shows only while a run goes on (like the other pages).
 #include <gtest/gtest.h>
 
 #include <QAbstractButton>
@@ -52,46 +49,6 @@
 
 namespace metrofit {
 namespace {
-
-/// The dataset kinds declared in core/project/project.h (namespace dataset_kind), read from the
-/// source so that a kind added there without a title fails this test.
-std::vector<std::string> declaredDatasetKinds() {
-  std::ifstream in(test::sourceDir() / "core/project/project.h");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  const std::size_t begin = s.find("namespace dataset_kind {");
-  const std::size_t end = s.find("}  // namespace dataset_kind");
-  if (begin == std::string::npos || end == std::string::npos) return {};
-  const std::string block = s.substr(begin, end - begin);
-  static const std::regex kind(R"re(inline constexpr const char\* k\w+ = "([a-z_]+)";)re");
-  std::vector<std::string> kinds;
-  for (auto it = std::sregex_iterator(block.begin(), block.end(), kind); it != std::sregex_iterator(); ++it)
-    kinds.push_back((*it)[1]);
-  return kinds;
-}
-
-TEST(DatasetKindTitle, EveryKindOfTheProjectFormatHasItsOwnTitle) {
-  const std::vector<std::string> kinds = declaredDatasetKinds();
-  ASSERT_GE(kinds.size(), 6u) << "core/project/project.h dataset_kind was not found";
-  QSet<QString> titles;
-  for (const std::string& k : kinds) {
-    const QString kind = QString::fromStdString(k);
-    const QString title = datasetKindTitle(kind);
-    EXPECT_FALSE(title.isEmpty()) << k;
-    EXPECT_NE(title, kind) << k << " has no human title";
-    EXPECT_FALSE(title.contains(QLatin1Char('_'))) << k << ": " << title.toStdString();
-    titles.insert(title);
-  }
-  EXPECT_EQ(titles.size(), static_cast<qsizetype>(kinds.size())) << "two kinds share a title";
-  EXPECT_EQ(datasetKindTitle(QString::fromLatin1(dataset_kind::kFeatureSeries)),
-            QStringLiteral("SPC feature series"));
-  // Every kind the demo project uses is one of them.
-  QTemporaryDir dir;
-  const Project demo = loadProject(extractDemoProject(dir.filePath(QStringLiteral("demo"))).toStdString());
-  for (const DatasetRef& d : demo.datasets)
-    EXPECT_NE(std::find(kinds.begin(), kinds.end(), d.kind), kinds.end()) << d.id << " " << d.kind;
-}
 
 using test::readAll;
 using test::setModified;
@@ -327,129 +284,6 @@ TEST_F(SetupGapsTest, ProgressBarShowsOnlyWhileARunGoesOn) {
   ASSERT_TRUE(page.startRun());
   EXPECT_FALSE(bar->isVisibleTo(&page)) << "the exact optimum is shown at once";
 }
-
-/// Widths of the visible columns of a table (for the failure message).
-std::string columnWidths(const QTableWidget* t) {
-  std::string s;
-  for (int c = 0; c < t->columnCount(); ++c) {
-    if (t->isColumnHidden(c)) continue;
-    const QTableWidgetItem* h = t->horizontalHeaderItem(c);
-    s += (h ? h->text().replace(QLatin1Char('\n'), QLatin1Char(' ')).toStdString() : std::string("?")) + "=" +
-         std::to_string(t->columnWidth(c)) + " ";
-  }
-  return s + "| viewport " + std::to_string(t->viewport()->width());
-}
-
-/// No horizontal scrolling, and no cell or header text wider than its column (nothing clipped).
-void expectFits(QTableWidget* t, const std::string& what) {
-  SCOPED_TRACE(what);
-  ASSERT_TRUE(t->isVisible());
-  EXPECT_FALSE(t->horizontalScrollBar()->isVisible()) << columnWidths(t);
-  EXPECT_LE(t->horizontalHeader()->length(), t->viewport()->width()) << columnWidths(t);
-  const QFontMetrics fm(t->font());
-  for (int c = 0; c < t->columnCount(); ++c) {
-    if (t->isColumnHidden(c)) continue;
-    const QTableWidgetItem* h = t->horizontalHeaderItem(c);
-    ASSERT_NE(h, nullptr);
-    for (const QString& line : h->text().split(QLatin1Char('\n')))
-      EXPECT_LE(fm.horizontalAdvance(line), t->columnWidth(c)) << "header " << line.toStdString();
-    for (int r = 0; r < t->rowCount(); ++r) {
-      const QTableWidgetItem* item = t->item(r, c);
-      if (item == nullptr || t->columnSpan(r, c) > 1) continue;
-      // Text may wrap at spaces (onto a higher row), no word may be cut.
-      const QFontMetrics fm(item->font());
-      for (const QString& word : item->text().split(QLatin1Char(' '), Qt::SkipEmptyParts))
-        EXPECT_LE(fm.horizontalAdvance(word), t->columnWidth(c))
-            << "row " << r << ": " << item->text().toStdString();
-      const QRect box =
-          fm.boundingRect(QRect(0, 0, t->columnWidth(c) - 6, 10000), Qt::TextWordWrap, item->text());
-      EXPECT_LE(box.height(), t->rowHeight(r)) << "row " << r << ": " << item->text().toStdString();
-    }
-  }
-}
-
-class MatchingTablesTest : public ::testing::TestWithParam<const char*> {};
-
-TEST_P(MatchingTablesTest, FitTheDefaultWindowWithoutScrollingSideways) {
-  const QString language = QString::fromLatin1(GetParam());
-  QTranslator translator;
-  if (language != QLatin1String("en")) {
-    ASSERT_TRUE(translator.load(QStringLiteral(METROFIT_QM_DIR "/metrofit_") + language));
-    QCoreApplication::installTranslator(&translator);
-  }
-  const QLocale previous;
-  QLocale::setDefault(QLocale(language));
-  {
-    QTemporaryDir dir;
-    const QString demo = extractDemoProject(dir.filePath(QStringLiteral("demo")));
-    MainWindow window;
-    QString error;
-    ASSERT_TRUE(window.openProject(demo, &error)) << error.toStdString();
-    window.resize(1280, 800);  // the default size, as in the screenshots
-    window.show();
-    window.showPage(Page::Matching);
-    MatchingPage* page = window.matchingPage();
-    page->showView(QStringLiteral("results"));
-    ASSERT_TRUE(page->result().has_value());
-    QTest::qWait(50);
-    expectFits(page->methodsTable(), "methods");
-    expectFits(page->machineTable(), "machine");
-    page->showView(QStringLiteral("remeasure"));
-    QTest::qWait(50);
-    expectFits(page->remeasureTable(), "remeasure");
-    page->showView(QStringLiteral("points"));
-    QTest::qWait(50);
-    expectFits(page->pointTable(), "points");
-    window.document()->undoStack()->setClean();
-  }
-  QLocale::setDefault(previous);
-  QCoreApplication::removeTranslator(&translator);
-}
-
-/// The kinematics page's tables: the label column takes what the numbers leave; a long (translated)
-/// label wraps onto a higher row instead of being cut short ("Winkel der X-…").
-TEST_P(MatchingTablesTest, KinematicsLabelsWrapInsteadOfBeingCut) {
-  const QString language = QString::fromLatin1(GetParam());
-  QTranslator translator;
-  if (language != QLatin1String("en")) {
-    ASSERT_TRUE(translator.load(QStringLiteral(METROFIT_QM_DIR "/metrofit_") + language));
-    QCoreApplication::installTranslator(&translator);
-  }
-  {
-    QTemporaryDir dir;
-    MainWindow window;
-    QString error;
-    ASSERT_TRUE(window.openProject(extractDemoProject(dir.filePath(QStringLiteral("demo"))), &error))
-        << error.toStdString();
-    window.resize(1280, 800);
-    window.show();
-    window.showPage(Page::Kinematics);
-    QWidget* page = window.page(Page::Kinematics);
-    QMetaObject::invokeMethod(page, "showView", Q_ARG(QString, QStringLiteral("path")));
-    QTest::qWait(50);
-    for (const char* name : {"identifiedErrorTable", "compensationTable"}) {
-      SCOPED_TRACE(name);
-      auto* t = page->findChild<QTableWidget*>(QString::fromLatin1(name));
-      ASSERT_NE(t, nullptr);
-      ASSERT_GE(t->rowCount(), 6);
-      EXPECT_EQ(t->textElideMode(), Qt::ElideNone);
-      for (int r = 0; r < t->rowCount(); ++r) {
-        const QTableWidgetItem* item = t->item(r, 0);
-        ASSERT_NE(item, nullptr);
-        const QFontMetrics fm(item->font());
-        for (const QString& word : item->text().split(QLatin1Char(' '), Qt::SkipEmptyParts))
-          EXPECT_LE(fm.horizontalAdvance(word), t->columnWidth(0)) << item->text().toStdString();
-        const QRect box =
-            fm.boundingRect(QRect(0, 0, t->columnWidth(0) - 8, 10000), Qt::TextWordWrap, item->text());
-        EXPECT_LE(box.height(), t->rowHeight(r))
-            << "row " << r << " cut short: " << item->text().toStdString();
-      }
-    }
-  }
-  QCoreApplication::removeTranslator(&translator);
-}
-
-INSTANTIATE_TEST_SUITE_P(Languages, MatchingTablesTest, ::testing::Values("de", "pl", "en"));
 
 }  // namespace
 }  // namespace metrofit
