@@ -238,10 +238,10 @@ TEST_F(DiagnosisLocaleTest, PolishPageHasNoDotDecimalsInAnyDomain) {
     for (const QTableWidget* table : {check->testTable(), check->structureTable(), check->outlierTable()})
       for (int r = 0; r < table->rowCount(); ++r)
         for (int c = 0; c < table->columnCount(); ++c)
-          if (table->item(r, c)->data(Qt::UserRole).typeId() ==
-              QMetaType::Double)  // the numbers (names may have dots)
-            EXPECT_FALSE(dotDecimal.match(table->item(r, c)->text()).hasMatch())
+          if (table->item(r, c)->data(Qt::UserRole).typeId() == QMetaType::Double) {  // the numbers
+            EXPECT_FALSE(dotDecimal.match(table->item(r, c)->text()).hasMatch())      // (names may have dots)
                 << diagnosisDomainKey(d) << ": " << table->item(r, c)->text().toStdString();
+          }
     const auto* info = page.findChild<QLabel*>(QStringLiteral("diagnosisInfo"));
     ASSERT_NE(info, nullptr);
     EXPECT_FALSE(dotDecimal.match(info->text()).hasMatch()) << info->text().toStdString();  // tolerance 0,035
