@@ -9,6 +9,16 @@
 
 namespace metrofit {
 
+namespace {
+/// The "subgroup" of an SPC block (default: the options' own), checked against the chart's range
+/// with the field named.
+int subgroupSetting(const JsonReader& block, int defaultSize) {
+  const long n = block.has("subgroup") ? block.integer("subgroup") : defaultSize;
+  if (n < kMinSubgroupSize || n > kMaxSubgroupSize) block.fail("must be between 2 and 25", "subgroup");
+  return static_cast<int>(n);
+}
+}  // namespace
+
 std::vector<DatasetRef> circularTestDatasets(const Project& project) {
   std::vector<DatasetRef> out;
   for (const DatasetRef& d : project.datasets) {
@@ -52,9 +62,7 @@ KinematicStudySettings kinematicStudySettings(const Project& project) {
     KinematicSpcSettings k;
     k.dataset = spc.string("dataset");
     k.column = spc.string("column");
-    const long n = spc.has("subgroup") ? spc.integer("subgroup") : 5;
-    if (n < kMinSubgroupSize || n > kMaxSubgroupSize) spc.fail("must be between 2 and 25", "subgroup");
-    k.options.subgroupSize = static_cast<int>(n);
+    k.options.subgroupSize = subgroupSetting(spc, k.options.subgroupSize);
     if (spc.has("lsl") != spc.has("usl"))
       spc.fail("give lsl and usl together", spc.has("lsl") ? "usl" : "lsl");
     if (spc.has("lsl")) {
@@ -63,7 +71,7 @@ KinematicStudySettings kinematicStudySettings(const Project& project) {
       if (!(*k.options.lsl < *k.options.usl)) spc.fail("must be below usl", "lsl");
     }
     if (spc.has("nominal")) k.options.nominal = spc.number("nominal");
-    k.options.coverageFactor = spc.number("coverage", 2.0);
+    k.options.coverageFactor = spc.number("coverage", k.options.coverageFactor);
     std::string why;
     if (!k.options.isValid(&why)) spc.fail(why);
     s.spc = k;
@@ -77,10 +85,8 @@ KinematicStudySettings kinematicStudySettings(const Project& project) {
     k.deviationColumn = f.string("deviation_column", k.deviationColumn);
     k.xNominalY = f.number("x_nominal_y", 0.0);
     k.yNominalX = f.number("y_nominal_x", 0.0);
-    const long n = f.has("subgroup") ? f.integer("subgroup") : 5;
-    if (n < kMinSubgroupSize || n > kMaxSubgroupSize) f.fail("must be between 2 and 25", "subgroup");
-    k.options.subgroupSize = static_cast<int>(n);
-    k.options.coverageFactor = f.number("coverage", 2.0);
+    k.options.subgroupSize = subgroupSetting(f, k.options.subgroupSize);
+    k.options.coverageFactor = f.number("coverage", k.options.coverageFactor);
     std::string why;
     if (!k.options.isValid(&why)) f.fail(why);
     s.fromSpc = k;
