@@ -9,7 +9,7 @@
 // residual against the variable of the strongest structure with the generic fit. Generic effects
 // (`unexplained:<against>`) are listed with the named ones, their form in the parameters column.
 // Apply (Ctrl+Shift+A) writes the accepted effects its study can include (canApplyEffect: the generic
-// ones in thermal only; the button's tooltip says which are left out and why) to
+// ones in thermal, kinematic and matching; the button's tooltip says which are left out and why) to
 // studies.diagnosis.<domain>.applied as one undoable edit of the project document.
 #include <QWidget>
 #include <memory>

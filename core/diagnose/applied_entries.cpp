@@ -61,10 +61,13 @@ void forEachAppliedEntry(const nlohmann::json& applied, const std::string& field
 }
 
 nlohmann::json genericShapeJson(const GenericForm& f) {
-  return {{"against", f.against},      {"form", formName(f.form)}, {"knots", f.knots},
-          {"harmonics", f.harmonics},  {"levels", f.levels},       {"centre", f.centre},
-          {"scale", f.scale},          {"subset", f.subset},       {"without_linear", f.withoutLinear},
-          {"components", f.components}};
+  nlohmann::json j = {
+      {"against", f.against},      {"form", formName(f.form)}, {"knots", f.knots},
+      {"harmonics", f.harmonics},  {"levels", f.levels},       {"centre", f.centre},
+      {"scale", f.scale},          {"subset", f.subset},       {"without_linear", f.withoutLinear},
+      {"components", f.components}};
+  if (!f.projectedOff.empty()) j["projected_off"] = f.projectedOff;
+  return j;
 }
 
 GenericForm genericShapeOf(const AppliedEntry& entry, const std::string& source) {
@@ -135,6 +138,13 @@ GenericForm genericShapeOf(const AppliedEntry& entry, const std::string& source)
   f.subset = flag("subset");
   f.withoutLinear = flag("without_linear");
   f.components = integer("components", 1, 3);
+  if (const auto k = s.find("projected_off"); k != s.end()) {
+    if (!k->is_array()) fail("projected_off", "must be a list of effect names");
+    for (const auto& v : *k) {
+      if (!v.is_string()) fail("projected_off", "must be a list of effect names (text)");
+      f.projectedOff.push_back(v.get<std::string>());
+    }
+  }
   return f;
 }
 

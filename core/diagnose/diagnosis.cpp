@@ -79,12 +79,13 @@ void LoopProgress::addNote(Diagnosis& d) const {
 }
 
 Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std::string>& excluded)>& run,
-                                  double margin) {
+                                  double margin, bool genericDependsOnNamed) {
   LoopRun cur = run({});
   const Diagnosis& d = cur.diagnosis;
   bool named = false, generic = false;
   for (const Candidate* c : d.accepted()) (c->generic ? generic : named) = true;
-  if (cur.stopped || !named || !(generic || (d.residualCheck && !d.residualCheck->white)))
+  if (cur.stopped || !(named || genericDependsOnNamed) ||
+      !(generic || (d.residualCheck && !d.residualCheck->white)))
     return std::move(cur.diagnosis);
   std::vector<std::set<std::string>> alternatives;
   for (const Candidate* c : d.accepted())

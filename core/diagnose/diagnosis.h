@@ -169,8 +169,13 @@ inline constexpr const char* kEveryNamedEffect = "*";
 /// only when, beside the generic alternative, it still has the evidence it was accepted on), else
 /// the alternative with the lowest criterion wins. Names accepted first and not in the winner are listed with
 /// accepted = false and the comparison as evidence. At most 1 + (accepted names) + 1 runs.
+/// `genericDependsOnNamed`: the domain's generic bases depend on the named effects open in the run
+/// (matching projects them off the named effects, so a generic effect cannot trade against a name);
+/// then the generic-only run is also tried when the first run accepted no name but a generic effect
+/// or left a non-white residual (a generic effect of the first run may have lost the part of its
+/// shape that a name's column also has).
 Diagnosis keepNamedOnlyWhenNeeded(const std::function<LoopRun(const std::set<std::string>& excluded)>& run,
-                                  double margin);
+                                  double margin, bool genericDependsOnNamed = false);
 
 /// Puts the outliers excluded before the fit into d.residualCheck (with the threshold used) and,
 /// when there are any, the note "<k> gross errors excluded before the fit ...:" followed by

@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/QR>
+#include <Eigen/SVD>
 
 #include "core/common/error.h"
 #include "core/diagnose/loop.h"
@@ -28,9 +29,9 @@ struct EffectDef {
   Kind kind = Kind::Scale;
   int surface = -1;
   int params = 1;
-  /// Generic (`unexplained:<against>`): the basis per point (points x q) and its shape. Along the
-  /// nominal normal where the set has normals, else one set of q columns per coordinate.
-  std::shared_ptr<const Eigen::MatrixXd> basis;
+  /// Generic (`unexplained:<against>`): the displacement of each of its parameters at every point
+  /// (rows 3i..3i+2 = point i, part frame; GenericBasis) and its shape.
+  std::shared_ptr<const struct GenericBasis> generic;
   std::optional<GenericForm> shape;
 };
 
@@ -76,6 +77,131 @@ Problem makeProblem(const ProbePointSet& set) {
   return pb;
 }
 
+/// A generic effect's basis as the loop fits it. The shape's basis G (points x q, a function of one
+/// variable: variableBasis) spread over the observed directions (along the normal: G n; else one
+/// set of q columns per coordinate: `raw` = q * dims columns) and then PROJECTED OFF what the
+/// posture and the catalogue's effects can do: the rigid motions and the displacements of every
+/// named effect (scale, surface offsets, distortion), observed as the fit observes them. So a
+/// generic effect explains only what neither the posture nor a named effect can, its coefficients
+/// cannot trade against a named effect's (a bowed top face is not reported as a scale of -790 ppm
+/// plus a generic effect cancelling it), and the named effects keep the share their columns
+/// explain. Directions of G that the projection removes (singular value below 1e-6 of the largest
+/// of the unprojected spread basis) are dropped: `displacement` has the r kept directions
+/// (rows 3i..3i+2: point i, part frame), `toRaw` (raw x r) maps its coefficients to coefficients
+/// of the spread basis (Candidate::genericCoefficients, read by matchingGenericDisplacement).
+struct GenericBasis {
+  Eigen::MatrixXd displacement;  ///< 3 n x r
+  Eigen::MatrixXd observed;      ///< per n x r: `displacement` as the fit observes it (part frame)
+  Eigen::MatrixXd toRaw;         ///< raw x r
+};
+
+int observedDims(const Problem& pb) {
+  return pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3);
+}
+
+/// What the fit observes of displacement d at point i (part frame): the component along the nominal
+/// normal, or the in-plane coordinates, or all three.
+void observeAt(const Problem& pb, std::size_t i, const Eigen::Vector3d& d, Eigen::Ref<Eigen::VectorXd> out) {
+  if (pb.mode == Mode::Normal)
+    out(0) = pb.set->points[i].normal.dot(d);
+  else
+    out = d.head(pb.perPoint);
+}
+
+/// The displacement at point i of an observed vector (the inverse of observeAt on its directions).
+Eigen::Vector3d unobserveAt(const Problem& pb, std::size_t i, const Eigen::Ref<const Eigen::VectorXd>& o) {
+  if (pb.mode == Mode::Normal) return o(0) * pb.set->points[i].normal;
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  d.head(pb.perPoint) = o;
+  return d;
+}
+
+void effectColumns(const Problem& pb, const EffectDef& e, std::size_t i, std::vector<Eigen::Vector3d>& out);
+
+/// The named effects the catalogue offers for a set: scale, a surface offset per surface (with
+/// normals), distortion.
+std::vector<EffectDef> namedEffects(const Problem& pb) {
+  std::vector<EffectDef> defs;
+  defs.push_back({"scale", Kind::Scale, -1, 1, nullptr, std::nullopt});
+  if (pb.set->hasNormals)
+    for (std::size_t s = 0; s < pb.surfaces.size(); ++s)
+      defs.push_back(
+          {"surface_offset:" + pb.surfaces[s], Kind::Offset, static_cast<int>(s), 1, nullptr, std::nullopt});
+  defs.push_back({"distortion", Kind::Distortion, -1, 2, nullptr, std::nullopt});
+  return defs;
+}
+
+/// An orthonormal basis (per n rows) of what the posture and the named effects can do, observed.
+Eigen::MatrixXd postureAndNamedSpace(const Problem& pb, const std::vector<EffectDef>& named) {
+  const std::size_t n = pb.points();
+  const int per = pb.perPoint;
+  std::size_t k = 0;
+  std::vector<std::vector<Eigen::Vector3d>> at(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d qc = pb.set->points[i].nominal - pb.qMean;
+    std::vector<Eigen::Vector3d>& g = at[i];
+    if (pb.mode == Mode::Planar) {
+      g = {Eigen::Vector3d(-qc.y(), qc.x(), 0.0), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
+    } else {
+      g = {Eigen::Vector3d::UnitX().cross(qc), Eigen::Vector3d::UnitY().cross(qc),
+           Eigen::Vector3d::UnitZ().cross(qc), Eigen::Vector3d::UnitX(),
+           Eigen::Vector3d::UnitY(),           Eigen::Vector3d::UnitZ()};
+    }
+    for (const EffectDef& e : named) effectColumns(pb, e, i, g);
+    k = g.size();
+  }
+  Eigen::MatrixXd B(static_cast<Eigen::Index>(n) * per, static_cast<Eigen::Index>(k));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < k; ++j)
+      observeAt(pb, i, at[i][j],
+                B.block(static_cast<Eigen::Index>(i) * per, static_cast<Eigen::Index>(j), per, 1));
+  for (Eigen::Index j = 0; j < B.cols(); ++j)
+    if (const double nrm = B.col(j).norm(); nrm > 0.0) B.col(j) /= nrm;
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(B);
+  const Eigen::Index rank = qr.rank();
+  return Eigen::MatrixXd(qr.householderQ()).leftCols(rank);
+}
+
+/// The shape's basis spread over the observed directions (raw: q * dims columns, coordinate-major
+/// as Candidate::genericCoefficients), observed (per n rows).
+Eigen::MatrixXd spreadObserved(const Problem& pb, const Eigen::MatrixXd& G) {
+  const std::size_t n = pb.points();
+  const int per = pb.perPoint, dims = observedDims(pb);
+  const Eigen::Index q = G.cols();
+  Eigen::MatrixXd O = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n) * per, q * dims);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    for (int c = 0; c < dims; ++c)
+      for (Eigen::Index j = 0; j < q; ++j) {
+        const Eigen::Vector3d d =
+            G(row, j) * (pb.mode == Mode::Normal ? pb.set->points[i].normal : Eigen::Vector3d::Unit(c));
+        observeAt(pb, i, d, O.block(row * per, c * q + j, per, 1));
+      }
+  }
+  return O;
+}
+
+GenericBasis projectedGeneric(const Problem& pb, const Eigen::MatrixXd& G, const Eigen::MatrixXd& space) {
+  const Eigen::MatrixXd O = spreadObserved(pb, G);
+  const Eigen::MatrixXd P = O - space * (space.transpose() * O);
+  GenericBasis b;
+  const Eigen::BDCSVD<Eigen::MatrixXd> raw(O);
+  const double top = raw.singularValues().size() ? raw.singularValues()(0) : 0.0;
+  const Eigen::BDCSVD<Eigen::MatrixXd> svd(P, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  Eigen::Index r = 0;
+  while (r < svd.singularValues().size() && svd.singularValues()(r) > 1e-6 * top) ++r;
+  b.toRaw = svd.matrixV().leftCols(r);
+  b.observed = P * b.toRaw;
+  const std::size_t n = pb.points();
+  const int per = pb.perPoint;
+  b.displacement.resize(3 * static_cast<Eigen::Index>(n), r);
+  for (std::size_t i = 0; i < n; ++i)
+    for (Eigen::Index k = 0; k < r; ++k)
+      b.displacement.block<3, 1>(3 * static_cast<Eigen::Index>(i), k) =
+          unobserveAt(pb, i, b.observed.block(static_cast<Eigen::Index>(i) * per, k, per, 1));
+  return b;
+}
+
 /// Displacement columns of effect `e` at point i (part frame), one per parameter.
 void effectColumns(const Problem& pb, const EffectDef& e, std::size_t i, std::vector<Eigen::Vector3d>& out) {
   const ProbePoint& p = pb.set->points[i];
@@ -92,15 +218,9 @@ void effectColumns(const Problem& pb, const EffectDef& e, std::size_t i, std::ve
       out.push_back(1e-6 * Eigen::Vector3d(qc.y(), qc.x(), 0.0));
       break;
     case Kind::Generic: {
-      const Eigen::MatrixXd& G = *e.basis;
-      const auto row = static_cast<Eigen::Index>(i);
-      if (pb.mode == Mode::Normal) {
-        for (Eigen::Index j = 0; j < G.cols(); ++j) out.push_back(G(row, j) * p.normal);
-      } else {
-        const int dims = pb.mode == Mode::Planar ? 2 : 3;
-        for (int c = 0; c < dims; ++c)
-          for (Eigen::Index j = 0; j < G.cols(); ++j) out.push_back(G(row, j) * Eigen::Vector3d::Unit(c));
-      }
+      const Eigen::MatrixXd& D = e.generic->displacement;
+      const auto row = 3 * static_cast<Eigen::Index>(i);
+      for (Eigen::Index k = 0; k < D.cols(); ++k) out.push_back(D.block<3, 1>(row, k));
       break;
     }
   }
@@ -440,29 +560,16 @@ ResidualCheckInput matchingCheckInput(const Problem& pb, const FitState& s,
   return in;
 }
 
-/// Parameters of a generic effect from its coefficients (along the normal: one set; else the rms
-/// over the coordinates).
-std::vector<Parameter> genericParameters(const Problem& pb, const EffectDef& e, const Eigen::VectorXd& beta,
-                                         Eigen::Index at, const std::vector<ResidualVariable>& vars,
+/// Parameters of a generic effect from its coefficients: the rms and range of what it adds to the
+/// observations (the projected basis is no function of the variable alone, so its summary is that
+/// of its contribution; summariseContribution).
+std::vector<Parameter> genericParameters(const EffectDef& e, const Eigen::VectorXd& beta, Eigen::Index at,
                                          Phrases* text) {
   std::vector<Parameter> out = {Parameter{"form", std::string(formName(e.shape->form)), std::nullopt}};
-  const ResidualVariable* v = findVariable(vars, e.shape->against);
-  if (!v) return out;
-  const Eigen::Index q = e.basis->cols();
-  if (pb.mode == Mode::Normal) {
-    const GenericSummary gs = summariseGeneric(*e.shape, beta.segment(at, q), v->values, "mm");
-    for (const auto& [k, val] : gs.numbers) out.push_back({k, val, std::nullopt});
-    if (text) *text = gs.text;
-  } else {
-    const int dims = pb.mode == Mode::Planar ? 2 : 3;
-    double ms = 0.0;
-    for (int c = 0; c < dims; ++c) {
-      const GenericSummary gs = summariseGeneric(*e.shape, beta.segment(at + c * q, q), v->values, "mm");
-      ms += std::pow(gs.numbers.front().second, 2);
-      if (text && c == 0) *text = gs.text;
-    }
-    out.push_back({"rms", std::sqrt(ms), std::nullopt});
-  }
+  const Eigen::VectorXd contribution = e.generic->observed * beta.segment(at, e.params);
+  const GenericSummary gs = summariseContribution(*e.shape, contribution, "mm");
+  for (const auto& [k, val] : gs.numbers) out.push_back({k, val, std::nullopt});
+  if (text) *text = gs.text;
   return out;
 }
 
@@ -493,13 +600,18 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
   const Problem pb = makeProblem(set);
   const std::size_t nPts = pb.points();
 
-  std::vector<EffectDef> defs;
-  defs.push_back({"scale", Kind::Scale, -1, 1, nullptr, std::nullopt});
-  if (set.hasNormals)
-    for (std::size_t s = 0; s < pb.surfaces.size(); ++s)
-      defs.push_back(
-          {"surface_offset:" + pb.surfaces[s], Kind::Offset, static_cast<int>(s), 1, nullptr, std::nullopt});
-  defs.push_back({"distortion", Kind::Distortion, -1, 2, nullptr, std::nullopt});
+  const std::vector<EffectDef> defs = namedEffects(pb);
+  // The generic bases are projected off the posture and the named effects of this run (not those
+  // keepNamedOnlyWhenNeeded excluded: without a named effect, a generic one may take its share).
+  std::vector<EffectDef> open;
+  std::vector<std::string> openNames;
+  if (!excluded.count(kEveryNamedEffect))
+    for (const EffectDef& e : defs)
+      if (!excluded.count(e.name)) {
+        open.push_back(e);
+        openNames.push_back(e.name);
+      }
+  const Eigen::MatrixXd space = postureAndNamedSpace(pb, open);
 
   matching::ClosedFormOptions cf;
   cf.locks = locks;
@@ -540,12 +652,15 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
   class Domain final : public LoopDomain {
    public:
     Domain(const Problem& pb, const Fitter& fitter, const AcceptanceOptions& acceptance,
-           const std::vector<EffectDef>& defs, const std::vector<ResidualVariable>& vars,
+           const std::vector<EffectDef>& defs, const Eigen::MatrixXd& space,
+           const std::vector<std::string>& spaceNames, const std::vector<ResidualVariable>& vars,
            const std::vector<std::size_t>& orig, FitState start)
         : pb_(pb),
           fitter_(fitter),
           acceptance_(acceptance),
           defs_(defs),
+          space_(space),
+          spaceNames_(spaceNames),
           vars_(vars),
           orig_(orig),
           current_(std::move(start)),
@@ -581,10 +696,23 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
       EffectDef e;
       e.name = "unexplained:" + g.against;
       e.kind = Kind::Generic;
-      e.basis = std::make_shared<const Eigen::MatrixXd>(variableBasis(g, *findVariable(vars_, g.against)));
+      e.generic = std::make_shared<const GenericBasis>(
+          projectedGeneric(pb_, variableBasis(g, *findVariable(vars_, g.against)), space_));
       e.shape = g;
-      e.params = static_cast<int>(e.basis->cols()) *
-                 (pb_.mode == Mode::Normal ? 1 : (pb_.mode == Mode::Planar ? 2 : 3));
+      e.shape->projectedOff = spaceNames_;
+      e.params = static_cast<int>(e.generic->displacement.cols());
+      if (e.params == 0) {  // all of it is posture or a named effect
+        LoopTrial t;
+        t.candidate.name = e.name;
+        t.candidate.generic = e.shape;
+        t.candidate.rmseBefore = t.candidate.rmseAfter = summarise(current_, pb_.points()).rmse;
+        t.candidate.parameters = {Parameter{"form", std::string(formName(g.form)), std::nullopt}};
+        t.candidate.setEvidence(
+            {Phrase("not identifiable: the posture and the catalogue's effects explain all of it")});
+        if (slots_.size() <= slot) slots_.resize(slot + 1);
+        slots_[slot] = Slot{e, current_};
+        return t;
+      }
       return fit(e, penalty, slot);
     }
     void accept(std::size_t slot, Candidate&) override {
@@ -599,12 +727,12 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
       // Accepted effects carry the parameters of the final joint fit.
       Eigen::Index at = 0;
       for (std::size_t j = 0; j < accepted.size(); ++j) {
-        accepted[j]->parameters =
-            accepted_[j].kind == Kind::Generic
-                ? genericParameters(pb_, accepted_[j], current_.beta, at, vars_, nullptr)
-                : parameters(accepted_[j], current_.beta, current_.est.covariance, at);
+        accepted[j]->parameters = accepted_[j].kind == Kind::Generic
+                                      ? genericParameters(accepted_[j], current_.beta, at, nullptr)
+                                      : parameters(accepted_[j], current_.beta, current_.est.covariance, at);
         if (accepted_[j].kind == Kind::Generic) {
-          const Eigen::VectorXd w = current_.beta.segment(at, accepted_[j].params);
+          const Eigen::VectorXd w =
+              accepted_[j].generic->toRaw * current_.beta.segment(at, accepted_[j].params);
           accepted[j]->genericCoefficients.assign(w.data(), w.data() + w.size());
         }
         at += accepted_[j].params;
@@ -644,7 +772,7 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
       } else {
         t.estimable = true;
         Phrases genericText;
-        cand.parameters = generic ? genericParameters(pb_, e, st.beta, at, vars_, &genericText)
+        cand.parameters = generic ? genericParameters(e, st.beta, at, &genericText)
                                   : parameters(e, st.beta, st.est.covariance, at);
         cand.rmseAfter = summarise(st, nPts).rmse;
         const AcceptanceDecision dec = decideAcceptance(acceptance_, current_.rss, st.rss, nObs,
@@ -668,6 +796,8 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
     const Fitter& fitter_;
     const AcceptanceOptions& acceptance_;
     const std::vector<EffectDef>& defs_;
+    const Eigen::MatrixXd& space_;
+    const std::vector<std::string>& spaceNames_;
     const std::vector<ResidualVariable>& vars_;
     const std::vector<std::size_t>& orig_;
     FitState current_;
@@ -676,7 +806,7 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
     std::vector<Slot> slots_;
   };
 
-  Domain domain(pb, fitter, acceptance, defs, vars, orig, std::move(current));
+  Domain domain(pb, fitter, acceptance, defs, space, openNames, vars, orig, std::move(current));
   LoopStyle style;
   style.maxRounds = options.maxRounds;
   style.tiesWithPoints = true;
@@ -736,7 +866,7 @@ Diagnosis diagnoseMatching(const ProbePointSet& set, const MatchingDiagnosisOpti
   }
   Diagnosis result = keepNamedOnlyWhenNeeded(
       [&](const std::set<std::string>& ex) { return runMatching(kept, orig, options, ex, observer); },
-      options.acceptance.bicThreshold);
+      options.acceptance.bicThreshold, /*genericDependsOnNamed=*/true);
   attachOutliers(result, std::move(outliers), threshold, [](const Outlier& o) {
     return Phrase(" point %1 (row %2, %3 mm)",
                   {A::name(o.id.value_or("")), A::integer(o.row.value_or(0)), A::number(o.residual, 3)});
@@ -755,55 +885,22 @@ std::vector<Eigen::Vector3d> matchingGenericDisplacement(const ProbePointSet& se
   if (!v) return {};
   GenericForm f = shape;
   f.components = 1;
-  EffectDef e;
-  e.kind = Kind::Generic;
-  e.basis = std::make_shared<const Eigen::MatrixXd>(variableBasis(f, *v));
-  e.shape = f;
-  const int dims = pb.mode == Mode::Normal ? 1 : (pb.mode == Mode::Planar ? 2 : 3);
-  if (static_cast<Eigen::Index>(coefficients.size()) != e.basis->cols() * dims) return {};
+  const Eigen::MatrixXd O = spreadObserved(pb, variableBasis(f, *v));
+  if (static_cast<Eigen::Index>(coefficients.size()) != O.cols()) return {};
+  // What the loop fitted (projectedGeneric): the spread basis with the coefficients, without what
+  // the posture and the named effects of its run (shape.projectedOff) can do.
+  std::vector<EffectDef> named;
+  for (const EffectDef& e : namedEffects(pb))
+    if (std::find(shape.projectedOff.begin(), shape.projectedOff.end(), e.name) != shape.projectedOff.end())
+      named.push_back(e);
+  const Eigen::MatrixXd space = postureAndNamedSpace(pb, named);
+  const Eigen::VectorXd c = Eigen::Map<const Eigen::VectorXd>(coefficients.data(), O.cols());
+  Eigen::VectorXd o = O * c;
+  o -= space * (space.transpose() * o);
   const std::size_t n = set.points.size();
-  std::vector<Eigen::Vector3d> d(n, Eigen::Vector3d::Zero());
-  std::vector<Eigen::Vector3d> cols;
-  for (std::size_t i = 0; i < n; ++i) {
-    cols.clear();
-    effectColumns(pb, e, i, cols);
-    for (std::size_t j = 0; j < cols.size(); ++j) d[i] += coefficients[j] * cols[j];
-  }
-  // Its rigid part, fitted as the matching observes (along the normal, or the coordinates): small
-  // rotation w x qc and translation t about the centroid; the deformation is what is left.
-  const int per = pb.perPoint, rigid = pb.rigid;
-  Eigen::MatrixXd A(static_cast<Eigen::Index>(n) * per, rigid);
-  Eigen::VectorXd b(A.rows());
-  for (std::size_t i = 0; i < n; ++i) {
-    const ProbePoint& p = set.points[i];
-    const Eigen::Vector3d qc = p.nominal - pb.qMean;
-    std::vector<Eigen::Vector3d> g;  // displacement of each rigid parameter at the point
-    if (pb.mode == Mode::Planar) {
-      g = {Eigen::Vector3d(-qc.y(), qc.x(), 0.0), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
-    } else {
-      g = {Eigen::Vector3d::UnitX().cross(qc), Eigen::Vector3d::UnitY().cross(qc),
-           Eigen::Vector3d::UnitZ().cross(qc), Eigen::Vector3d::UnitX(),
-           Eigen::Vector3d::UnitY(),           Eigen::Vector3d::UnitZ()};
-    }
-    for (int c = 0; c < per; ++c) {
-      const Eigen::Index row = static_cast<Eigen::Index>(i) * per + c;
-      const auto observe = [&](const Eigen::Vector3d& x) { return per == 1 ? p.normal.dot(x) : x(c); };
-      for (int k = 0; k < rigid; ++k) A(row, k) = observe(g[static_cast<std::size_t>(k)]);
-      b(row) = observe(d[i]);
-    }
-  }
-  const Eigen::VectorXd x = A.completeOrthogonalDecomposition().solve(b);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d qc = set.points[i].nominal - pb.qMean;
-    Eigen::Vector3d r = Eigen::Vector3d::Zero();
-    if (pb.mode == Mode::Planar) {
-      r = x(0) * Eigen::Vector3d(-qc.y(), qc.x(), 0.0) + Eigen::Vector3d(x(1), x(2), 0.0);
-    } else {
-      r = Eigen::Vector3d(x(0), x(1), x(2)).cross(qc) + Eigen::Vector3d(x(3), x(4), x(5));
-    }
-    // Along the normal only what the fit observes is removed.
-    d[i] -= per == 1 ? Eigen::Vector3d(set.points[i].normal.dot(r) * set.points[i].normal) : r;
-  }
+  std::vector<Eigen::Vector3d> d(n);
+  for (std::size_t i = 0; i < n; ++i)
+    d[i] = unobserveAt(pb, i, o.segment(static_cast<Eigen::Index>(i) * pb.perPoint, pb.perPoint));
   return d;
 }
 

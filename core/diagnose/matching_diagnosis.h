@@ -69,10 +69,12 @@ struct MatchingDiagnosisOptions {
 /// `unexplained:<against>` with the coefficients w the diagnosis estimated (Candidate::
 /// genericCoefficients): genericBasis(shape) w on the variable `against` of the set (as the loop
 /// computes its variables: row, x, y, z, angle, surface, nx, ny, nz, surface:<s>), along the nominal
-/// normal where the set has normals, else per coordinate; minus its least-squares rigid part (a
-/// rotation and translation about the centroid, observed as the fit observes), which is the posture
-/// and not a deformation of the part. Empty when the set has no such variable or w does not have one
-/// number per column.
+/// normal where the set has normals, else per coordinate; minus its least-squares projection on what
+/// the posture (a rotation and translation about the centroid) and the catalogue's named effects
+/// of the loop's run (shape.projectedOff: scale, surface offsets, distortion) can do, observed as
+/// the fit observes: the loop fits the
+/// generic effect so projected, so it is the part of the deformation no named effect and no posture
+/// represents. Empty when the set has no such variable or w does not have one number per column.
 std::vector<Eigen::Vector3d> matchingGenericDisplacement(const ProbePointSet& set, const GenericForm& shape,
                                                          const std::vector<double>& coefficients);
 

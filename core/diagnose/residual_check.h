@@ -96,6 +96,10 @@ struct GenericForm {
   /// Vector observations (ResidualCheckInput::components): the basis is repeated per component
   /// (observation i is component i % components), q columns each, zero on the other components.
   int components = 1;
+  /// Matching (core/diagnose/matching_diagnosis.h): the named effects the basis is projected off
+  /// besides the posture (the catalogue's effects the loop could accept in its run); empty in the
+  /// other domains. Serialised as "projected_off" only when not empty.
+  std::vector<std::string> projectedOff;
 };
 
 /// The basis of `form` on `values` (one row per value; no intercept column).

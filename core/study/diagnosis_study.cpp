@@ -175,7 +175,7 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer)
 
 bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c) {
   return !c.generic.has_value() || domain == "thermal" ||
-         (domain == "kinematic" && !c.genericCoefficients.empty());
+         ((domain == "kinematic" || domain == "matching") && !c.genericCoefficients.empty());
 }
 
 nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis) {

@@ -67,13 +67,12 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& settings, Observer* ob
 /// study's model: the study's applied-effects parser (core/diagnose/thermal_applied.h,
 /// core/diagnose/applied_kinematic.h, core/diagnose/applied_setup_matching.h) knows it. The catalogue's
 /// named effects: yes. A generic effect `unexplained:<against>` (Candidate::generic): in the thermal
-/// study (its basis columns are refitted by every model) and the kinematic one (a displacement with
-/// the diagnosis's coefficients, core/diagnose/applied_kinematic.h). Not yet in setup and matching,
-/// where it is reported (candidate table, residual check, report) but not applied: the matching
-/// study could read it (core/diagnose/applied_setup_matching.h), but the loop's generic bases are
-/// not projected off the rigid motion and the named effects, so their coefficients can trade
-/// against a named effect (a bowed block: unexplained:x with scale -790 ppm) and are not a
-/// deformation the study can use.
+/// study (its basis columns are refitted by every model), the kinematic one (a displacement with the
+/// diagnosis's coefficients, core/diagnose/applied_kinematic.h) and the matching one (the deformation
+/// of the nominal points with the diagnosis's coefficients, projected off the posture and the named
+/// effects as the loop fitted it: core/diagnose/matching_diagnosis.h matchingGenericDisplacement). Not
+/// yet in setup, where it is reported (candidate table, residual check, report) but not applied: the
+/// setup study's applied-effects parser reads the named effects only.
 bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c);
 
 /// The accepted effects Apply can add (canApplyEffect) as stored under "applied":

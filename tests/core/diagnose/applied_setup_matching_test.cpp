@@ -22,6 +22,7 @@
 #include "core/project/project.h"
 #include "core/setup/exact.h"
 #include "core/setup/objective.h"
+#include "core/study/diagnosis_study.h"
 #include "core/study/matching_study.h"
 #include "testsupport.h"
 
@@ -296,9 +297,9 @@ TEST(AppliedMatchingEffects, ScaleInTheModelDropsTheResidualLikeTheDiagnosis) {
 /// A block written here from a closed form: a top face z = 20 (77 points), four side faces, each point
 /// with its nominal normal; the part sits at a posture (rotation 0.2 mrad about (1, 2, 3), translation
 /// (50, -30, 20) um) and its top face is bowed by 12 (x / 50)^2 um along the normal; noise 0.5 um
-/// along the normal. (On this block the loop accepts unexplained:x, scale -790 ppm and
-/// unexplained:row, 2.94 -> 0.80 um along the normals: the generic bases are not yet projected off
-/// the rigid motion and the named effects, so Apply of a matching generic effect stays off.)
+/// along the normal. (Before the loop projected its generic bases off the posture and the named
+/// effects it accepted unexplained:x, surface offsets of -84 and -61 um on faces that are not bowed
+/// and unexplained:row, 2.94 -> 0.79 um, and the study with them got worse: 3.41 -> 19.5 um.)
 ProbePointSet bowedBlock() {
   ProbePointSet set;
   set.source = "bowed.csv";
@@ -372,6 +373,38 @@ TEST(AppliedMatchingEffects, GenericDisplacementIsItsShapeWithoutTheRigidPart) {
     EXPECT_NEAR(p.normal.dot(m.nominal - p.nominal), expected(i), 1e-12) << p.id;
     EXPECT_NEAR((m.nominal - p.nominal - p.normal * expected(i)).norm(), 0.0, 1e-12) << p.id;  // along n only
     EXPECT_EQ(m.measured, p.measured);
+  }
+
+  // Fitted in a run that could still accept scale and the top's offset (shape.projected_off): the
+  // displacement is also without its least-squares part along those two effects' columns (scale:
+  // (q - centroid).n per ppm; offset: 1 on the top's points).
+  // Linear in the data row (the point's order, 1..n): no symmetry of the block makes it orthogonal
+  // to the names.
+  GenericForm g;
+  g.against = "row";
+  g.form = DependenceForm::Linear;
+  g.centre = 0.0;
+  g.scale = static_cast<double>(n);
+  g.projectedOff = {"scale", "surface_offset:top"};
+  const nlohmann::json entry2 = {
+      {"name", "unexplained:row"}, {"shape", genericShapeJson(g)}, {"coefficients", {0.01}}};
+  ASSERT_EQ(entry2["shape"]["projected_off"], nlohmann::json({"scale", "surface_offset:top"}));
+  const ProbePointSet model2 =
+      applyMatchingEffects(set, parseAppliedMatchingEffects(nlohmann::json::array({entry2})));
+  Eigen::MatrixXd A2(n, 8);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const ProbePoint& p = set.points[static_cast<std::size_t>(i)];
+    A2.row(i) << A.row(i), 1e-6 * (p.nominal - c).dot(p.normal), p.surface == "top" ? 1.0 : 0.0;
+    b(i) = 0.01 * static_cast<double>(i + 1) / static_cast<double>(n);
+  }
+  const Eigen::VectorXd rigidOnly = b - A * A.colPivHouseholderQr().solve(b);
+  const Eigen::VectorXd expected2 = b - A2 * A2.colPivHouseholderQr().solve(b);
+  EXPECT_GT((expected2 - rigidOnly).norm(), 0.1 * rigidOnly.norm());  // the names took a share
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const ProbePoint& p = set.points[static_cast<std::size_t>(i)];
+    EXPECT_NEAR(p.normal.dot(model2.points[static_cast<std::size_t>(i)].nominal - p.nominal), expected2(i),
+                1e-12)
+        << p.id;
   }
 }
 
@@ -463,6 +496,80 @@ TEST(AppliedMatchingEffects, BadEntriesNameTheField) {
       {{"name", "scale"}, {"parameters", {{"ppm", true}}}}};
   EXPECT_EQ(errorField([&] { matching::matchingStudySettings(project, "p.metrofit"); }),
             "studies.diagnosis.matching.applied[0].parameters.ppm");
+}
+
+TEST(AppliedMatchingEffects, BowedTopIsAGenericEffectOfThatFaceAndApplyHelpsTheStudy) {
+  // The bow is in no catalogue: the loop reports it as a generic effect of the top face alone, names
+  // no catalogue effect, leaves a white residual at the noise (0.5 um), and Apply carries it into
+  // the study, whose error drops.
+  const ProbePointSet set = bowedBlock();
+  MatchingDiagnosisOptions o;
+  o.toleranceMm = 0.02;
+  const Diagnosis d = diagnoseMatching(set, o);
+  ASSERT_EQ(d.accepted().size(), 1u);
+  const Candidate& c = *d.accepted().front();
+  EXPECT_EQ(c.name, "unexplained:surface:top");
+  ASSERT_TRUE(c.generic.has_value());
+  EXPECT_NEAR(d.baseline.rmse, 0.00294, 0.0001);
+  EXPECT_GT(d.final.rmse, 0.0004);
+  EXPECT_LT(d.final.rmse, 0.0006);
+  ASSERT_TRUE(d.residualCheck.has_value());
+  EXPECT_TRUE(d.residualCheck->white);
+  // No name was accepted: the run with generic effects only (projected off the posture alone) is
+  // as good as the first one (projected off the names too) and is kept (keepNamedOnlyWhenNeeded).
+  const std::vector<std::string>& off = c.generic->projectedOff;
+  EXPECT_TRUE(off.empty());
+
+  // The bow's range on the top face is 12 um (12 (x/50)^2 for x in [-50, 50]); the reported range
+  // of the contribution is that of what is left after the posture and the top's offset.
+  double range = 0.0;
+  for (const Parameter& p : c.parameters)
+    if (p.name == "range") range = std::get<double>(p.value);
+  EXPECT_NEAR(range, 0.012, 0.001);
+
+  // Independently of the loop's fit: the model's points (the applied displacement on the nominal
+  // points) against the measured ones, with a posture fitted here (linearised rigid least squares
+  // along the normals), leave the noise.
+  const nlohmann::json applied = metrofit::appliedEffects(d);
+  ASSERT_EQ(applied.size(), 1u);
+  EXPECT_FALSE(applied[0]["shape"].contains("projected_off"));
+  const AppliedMatchingEffects effects = parseAppliedMatchingEffects(applied);
+  ASSERT_EQ(effects.generic.size(), 1u);
+  const ProbePointSet model = applyMatchingEffects(set, effects);
+  auto rigidResidualRms = [](const ProbePointSet& s, const std::vector<Eigen::Vector3d>& nominal) {
+    const auto n = static_cast<Eigen::Index>(s.points.size());
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& q : nominal) centroid += q;
+    centroid /= static_cast<double>(n);
+    Eigen::MatrixXd A(n, 6);
+    Eigen::VectorXd b(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const ProbePoint& p = s.points[static_cast<std::size_t>(i)];
+      const Eigen::Vector3d q = nominal[static_cast<std::size_t>(i)] - centroid;
+      A.row(i) << q.cross(p.normal).transpose(), p.normal.transpose();
+      b(i) = p.normal.dot(p.measured - nominal[static_cast<std::size_t>(i)]);
+    }
+    const Eigen::VectorXd x = A.colPivHouseholderQr().solve(b);
+    return std::sqrt((b - A * x).squaredNorm() / static_cast<double>(n));
+  };
+  std::vector<Eigen::Vector3d> declared, withBow;
+  for (std::size_t i = 0; i < set.points.size(); ++i) {
+    declared.push_back(set.points[i].nominal);
+    withBow.push_back(model.points[i].nominal);
+  }
+  const double before = rigidResidualRms(set, declared), after = rigidResidualRms(set, withBow);
+  EXPECT_NEAR(before, 0.00294, 0.0001);
+  EXPECT_LT(after, 0.0006);
+  EXPECT_NEAR(after, d.final.rmse, 0.0001);
+
+  // The study: the bowed model fits the part better (its optimiser's posture, deviation along the
+  // normals); 3.41 -> 1.79 um measured with this budget.
+  matching::MatchingStudyOptions o0 = fastStudy(), o1 = fastStudy();
+  o1.applied = effects;
+  const double e0 = normalRms(matching::runMatchingStudy(set, o0).primaryRun().after);
+  const double e1 = normalRms(matching::runMatchingStudy(set, o1).primaryRun().after);
+  EXPECT_NEAR(e0, 0.00341, 0.0002);
+  EXPECT_LT(e1, 0.6 * e0);
 }
 
 }  // namespace
