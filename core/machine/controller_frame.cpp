@@ -100,6 +100,15 @@ bool FrameOptions::isValid(std::string* why) const {
     if (why) *why = "the number of decimals must be in 0..12";
     return false;
   }
+  const bool nameOk =
+      !programName.empty() && programName.size() <= 32 &&
+      programName.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-") ==
+          std::string::npos;
+  if (!nameOk) {
+    if (why)
+      *why = "the HEIDENHAIN program name '" + programName + "' must be 1..32 letters, digits, '_' or '-'";
+    return false;
+  }
   return fanucProgramNumberOk(programNumber, why);
 }
 
@@ -124,7 +133,7 @@ std::string writeControllerFrame(const Eigen::Matrix3d& R, const Eigen::Vector3d
       const auto a = spatialAnglesDeg(R);
       int n = 0;
       auto block = [&](const std::string& s) { line(std::to_string(n++) + " " + s); };
-      block("BEGIN PGM METROFIT_FRAME MM");
+      block("BEGIN PGM " + options.programName + " MM");
       block("; Metrofit posture correction as a tilted working plane" + (title.empty() ? "" : ": " + title));
       block("; Datum shift (mm) then PLANE SPATIAL: R = Rz(SPC) Ry(SPB) Rx(SPA), rotations about");
       block("; the non-tilted X, Y, Z in the order A, B, C; positive by the right-hand rule.");
@@ -137,7 +146,7 @@ std::string writeControllerFrame(const Eigen::Matrix3d& R, const Eigen::Vector3d
       block("CYCL DEF 7.3 Z" + number(t.z(), d, true));
       block("PLANE SPATIAL SPA" + number(a[0], d, true) + " SPB" + number(a[1], d, true) + " SPC" +
             number(a[2], d, true) + " STAY");
-      block("END PGM METROFIT_FRAME MM");
+      block("END PGM " + options.programName + " MM");
       break;
     }
     case FrameFormat::Siemens: {

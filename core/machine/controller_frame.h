@@ -28,9 +28,9 @@
 //  * HEIDENHAIN: CYCL DEF 7 DATUM SHIFT (7.1 X, 7.2 Y, 7.3 Z) BEFORE the PLANE block, so the plane
 //    tilts about the shifted datum. PLANE ... STAY: the control computes the rotary-axis positions
 //    but does not move them (position them in a later block, or replace STAY by MOVE / TURN).
-//    Written as a complete program METROFIT_FRAME.H to CALL PGM from the part program after the
-//    preset is active; datum shift and tilted plane stay active after the call (reset with
-//    PLANE RESET STAY and CYCL DEF 7 with X+0 Y+0 Z+0).
+//    Written as a complete program (FrameOptions::programName, default METROFIT_FRAME) to CALL PGM from the
+//    part program after the preset is active; datum shift and tilted plane stay active after the call (reset
+//    with PLANE RESET STAY and CYCL DEF 7 with X+0 Y+0 Z+0).
 //  * SINUMERIK: TRANS X= Y= Z= (programmable frame, on top of the active settable frame G54 ...),
 //    then the three AROT blocks; a subprogram ending with M17. The programmable frame stays
 //    active after the return; TRANS without values resets it. Orienting the tool needs CYCLE800
@@ -65,7 +65,10 @@ std::array<double, 3> eulerZxzAnglesDeg(const Eigen::Matrix3d& R);
 struct FrameOptions {
   int decimals = 4;          ///< 0..12
   int programNumber = 7101;  ///< FANUC O-number (1..7999, see setup/export.h)
-  std::string title;         ///< first comment line
+  /// HEIDENHAIN program name of BEGIN PGM / END PGM: the file's name without its extension (the control
+  /// lists the program under its file name). Letters, digits, '_' and '-', at most 32 characters.
+  std::string programName = "METROFIT_FRAME";
+  std::string title;  ///< first comment line
 
   bool isValid(std::string* why) const;
 };

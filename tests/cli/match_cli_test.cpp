@@ -207,6 +207,8 @@ TEST_F(MatchCli, FrameFileRebuildsThePosture) {
   (void)runJson(
       "match --data p.csv --method closed-form --frame heidenhain --frame-out f.h --frame-decimals 10", tmp);
   const std::string h = test::readText(tmp.file("f.h"));
+  EXPECT_EQ(h.rfind("0 BEGIN PGM f MM\n", 0), 0u) << h;  // the program is named after its file
+  EXPECT_NE(h.find(" END PGM f MM\n"), std::string::npos) << h;
   double spa, spb, spc;
   const auto p = h.find("PLANE SPATIAL SPA");
   ASSERT_NE(p, std::string::npos) << h;

@@ -189,6 +189,15 @@ TEST(ControllerFrame, HeidenhainProgramLayout) {
   EXPECT_EQ(l[9], "9 CYCL DEF 7.2 Y-2.2500");
   EXPECT_EQ(l[10], "10 CYCL DEF 7.3 Z+0.0000");
   EXPECT_EQ(l[11], "11 PLANE SPATIAL SPA+0.0000 SPB+0.0000 SPC+30.0000 STAY");
+  FrameOptions o;
+  o.programName = "PART_17";
+  const auto named =
+      lines(writeControllerFrame(Rz(30.0), Eigen::Vector3d::Zero(), FrameFormat::Heidenhain, o));
+  EXPECT_EQ(named.front(), "0 BEGIN PGM PART_17 MM");
+  EXPECT_EQ(named.back(), "12 END PGM PART_17 MM");
+  o.programName = "part 17";
+  EXPECT_THROW((void)writeControllerFrame(Rz(30.0), Eigen::Vector3d::Zero(), FrameFormat::Heidenhain, o),
+               OptionsError);
 }
 
 TEST(ControllerFrame, SiemensAndFanucLayout) {
