@@ -4418,8 +4418,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>add along %1; file %2 (program O9001)</source>
-        <translation>entlang %1 addieren; Datei %2 (Programm O9001)</translation>
+        <source>add along %1; file %2 (program O7001)</source>
+        <translation>entlang %1 addieren; Datei %2 (Programm O7001)</translation>
     </message>
     <message>
         <location line="+4"/>

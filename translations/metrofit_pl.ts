@@ -4422,8 +4422,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>add along %1; file %2 (program O9001)</source>
-        <translation>dodaj wzdłuż %1; plik %2 (program O9001)</translation>
+        <source>add along %1; file %2 (program O7001)</source>
+        <translation>dodaj wzdłuż %1; plik %2 (program O7001)</translation>
     </message>
     <message>
         <location line="+4"/>

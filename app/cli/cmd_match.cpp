@@ -4,6 +4,11 @@
 //   [--allow-scale]
 //         [--machine xfyzba|ac-table|bc-table] [--machine-def M.json] [--lock rx,ry,...]
 //         [--reference ID,ID,ID] [--seed N] [--out F] [--remeasure [--remeasure-noise MM]]
+//         [--frame heidenhain|siemens|fanuc --frame-out F [--frame-decimals N]]
+//
+// --frame writes the posture as a controller frame (core/machine/controller_frame.h: HEIDENHAIN
+// datum shift + PLANE SPATIAL, SINUMERIK TRANS + AROT, FANUC G68.2 Euler angles) to --frame-out and
+// adds "frame": {"format", "file", "angles_deg"} to the JSON.
 //
 // --remeasure runs the remeasure loop of Step 7 on a simulated cell whose part is where the probe
 // found it (core/matching/remeasure.h partAsMeasured) and adds "remeasure" (remeasure.h toJson): the
@@ -16,8 +21,10 @@
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,7 +33,9 @@
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
+#include "core/io/file_io.h"
 #include "core/io/json_util.h"
+#include "core/machine/controller_frame.h"
 #include "core/machine/machine.h"
 #include "core/matching/hole_table.h"
 #include "core/matching/matching.h"
@@ -37,7 +46,8 @@ namespace metrofit::cli {
 namespace {
 
 struct MatchArgs {
-  std::string data, method = "sade", machine = "xfyzba", machineDef, lock, reference, out;
+  std::string data, method = "sade", machine = "xfyzba", machineDef, lock, reference, out, frame, frameOut;
+  int frameDecimals = 4;
   std::uint64_t seed = 1;
   double tolerance = matching::kDefaultToleranceMm, remeasureNoise = 0.006;
   bool allowScale = false, remeasure = false;
@@ -70,6 +80,10 @@ machine::MachineDefinition machineFor(const MatchArgs& a, bool machineGiven) {
 
 int runMatch(const MatchArgs& a, bool machineGiven) {
   using namespace matching;
+  if (!a.frame.empty() && a.frameOut.empty())
+    throw OptionsError(ErrorContext{{}, 0, 0, "--frame"}, "needs --frame-out FILE");
+  if (a.frame.empty() && !a.frameOut.empty())
+    throw OptionsError(ErrorContext{{}, 0, 0, "--frame-out"}, "needs --frame heidenhain|siemens|fanuc");
   const ProbePointSet set = readProbePointsAnyFormat(a.data, 1, csvOptions());
   MatchOptions o;
   o.method = parseMatchMethod(a.method, "--method");
@@ -105,6 +119,26 @@ int runMatch(const MatchArgs& a, bool machineGiven) {
   m["definition"] = def.toJson();
   j["machine"] = std::move(m);
   j["data"] = a.data;
+  if (!a.frame.empty()) {
+    const machine::FrameFormat ff = machine::parseFrameFormat(a.frame, "--frame");
+    machine::FrameOptions fo;
+    fo.decimals = a.frameDecimals;
+    fo.title = a.data;
+    // The TNC lists a program under its file name: BEGIN PGM takes the name of --frame-out, made valid.
+    std::string stem = std::filesystem::path(a.frameOut).stem().string();
+    for (char& c : stem)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
+    if (!stem.empty()) fo.programName = stem.substr(0, 32);
+    writeFileAtomic(a.frameOut, machine::writeControllerFrame(r.pose.rotation, r.pose.translation, ff, fo));
+    const auto angles = ff == machine::FrameFormat::Fanuc ? machine::eulerZxzAnglesDeg(r.pose.rotation)
+                                                          : machine::spatialAnglesDeg(r.pose.rotation);
+    j["frame"] = {{"format", a.frame},
+                  {"file", a.frameOut},
+                  {"angles_deg", {angles[0], angles[1], angles[2]}},
+                  {"angles", ff == machine::FrameFormat::Fanuc        ? "I,J,K: Rz(I) Rx(J) Rz(K)"
+                             : ff == machine::FrameFormat::Heidenhain ? "SPA,SPB,SPC: Rz(SPC) Ry(SPB) Rx(SPA)"
+                                                                      : "X,Y,Z: Rz(Z) Ry(Y) Rx(X)"}};
+  }
   std::optional<RemeasureResult> loop;
   if (a.remeasure) {
     RemeasureOptions ro;
@@ -126,6 +160,7 @@ int runMatch(const MatchArgs& a, bool machineGiven) {
                      machine::topologyName(def.topology) + " S" + names[0] + " " + fmt(adj.rotaryDeg[0]) +
                      " deg, S" + names[1] + " " + fmt(adj.rotaryDeg[1]) + " deg";
   if (!adj.withinTravel) line += " (OUTSIDE TRAVEL: " + adj.travelMessage + ")";
+  if (!a.frame.empty()) line += "; " + a.frame + " frame -> " + a.frameOut;
   if (loop) {
     line += "; remeasure: " + loop->run.message;
     if (const ToleranceEvaluation* t = loop->trueRemaining())
@@ -163,6 +198,13 @@ void registerMatchCommand(CLI::App& app) {
                 "Also run the remeasure loop on a simulated cell holding the measured part");
   sub->add_option("--remeasure-noise", a->remeasureNoise, "Probing noise of the remeasure loop, mm (1 sigma)")
       ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  sub->add_option("--frame", a->frame,
+                  "Also write the posture as a controller frame: heidenhain|siemens|fanuc")
+      ->check(CLI::IsMember(machine::frameFormatNames()));
+  sub->add_option("--frame-out", a->frameOut, "File for --frame (written atomically)");
+  sub->add_option("--frame-decimals", a->frameDecimals, "Decimals of the --frame values (mm and deg)")
+      ->check(CLI::Range(0, 12))
       ->capture_default_str();
   addSeed(sub, a->seed);
   addCsvOptions(sub);

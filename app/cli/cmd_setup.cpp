@@ -3,6 +3,10 @@
 //   setup --model M.json --data R.csv [--data R2.dmo ...] [--method exact|cripso|pso|ga|coa]
 //         [--budget N] [--seed N] [--time-limit S] [--out F]
 //         [--export fanuc|heidenhain|siemens|csv --export-out F] [--tool-offset wear|geometry]
+//         [--export heidenhain-table --export-table CURRENT.PR|CURRENT.T --export-out F] [--program-number N]
+//
+// heidenhain-table: the control's current preset or tool table (saved from the control) with the
+// corrections added to its cells, for import (core/setup/export.h updateHeidenhainTable).
 //
 // Reads the relation-graph model (core/setup/model.h) and the measurement reports (CSV of
 // docs/file-formats.md#cmm-report-series or DMIS output, core/setup/report.h), corrects the setup data with
@@ -54,7 +58,8 @@ namespace metrofit::cli {
 namespace {
 
 struct SetupArgs {
-  std::string model, method = "exact", out, exportFormat, exportOut, toolOffset = "wear";
+  std::string model, method = "exact", out, exportFormat, exportOut, exportTable, toolOffset = "wear";
+  int programNumber = setup::ExportOptions{}.programNumber;
   std::vector<std::string> data;
   long budget = setup::kPaperBudget;
   std::uint64_t seed = 1;
@@ -127,7 +132,21 @@ int runSetup(const SetupArgs& a) {
   if (!a.exportFormat.empty() && a.exportOut.empty())
     throw OptionsError(ErrorContext{{}, 0, 0, "--export"}, "needs --export-out FILE");
   if (a.exportFormat.empty() && !a.exportOut.empty())
-    throw OptionsError(ErrorContext{{}, 0, 0, "--export-out"}, "needs --export fanuc|heidenhain|siemens|csv");
+    throw OptionsError(ErrorContext{{}, 0, 0, "--export-out"},
+                       "needs --export fanuc|heidenhain|heidenhain-table|siemens|csv");
+  if ((a.exportFormat == "heidenhain-table") != !a.exportTable.empty()) {
+    throw OptionsError(ErrorContext{{}, 0, 0, a.exportTable.empty() ? "--export" : "--export-table"},
+                       a.exportTable.empty()
+                           ? "heidenhain-table needs --export-table CURRENT.PR|CURRENT.T (the "
+                             "control's current preset or tool table)"
+                           : "goes with --export heidenhain-table only");
+  }
+  {
+    setup::ExportOptions xo;
+    xo.programNumber = a.programNumber;
+    std::string why;
+    if (!xo.isValid(&why)) throw OptionsError(ErrorContext{{}, 0, 0, "--program-number"}, why);
+  }
   const setup::Model model = setup::readModel(a.model);
   const setup::Measurements meas = setup::readMeasurements(a.data, model, csvOptions());
   const setup::SetupInstance inst(model, meas);
@@ -225,10 +244,19 @@ int runSetup(const SetupArgs& a) {
   if (!a.exportFormat.empty()) {
     setup::ExportOptions xo;
     xo.toolOffset = a.toolOffset == "geometry" ? setup::ToolOffset::Geometry : setup::ToolOffset::Wear;
-    const std::string text =
-        setup::exportCorrections(model, x, setup::parseControllerFormat(a.exportFormat, "--export"), xo);
-    writeFileAtomic(a.exportOut, text);
-    j["export"] = {{"format", a.exportFormat}, {"file", a.exportOut}};
+    xo.programNumber = a.programNumber;
+    if (a.exportFormat == "heidenhain-table") {
+      const setup::TableUpdate u =
+          setup::updateHeidenhainTable(model, x, readFile(a.exportTable), a.exportTable, xo);
+      writeFileAtomic(a.exportOut, u.text);
+      j["export"] = {{"format", a.exportFormat}, {"file", a.exportOut},  {"table", u.table},
+                     {"from", a.exportTable},    {"written", u.written}, {"not_written", u.notWritten}};
+    } else {
+      const std::string text =
+          setup::exportCorrections(model, x, setup::parseControllerFormat(a.exportFormat, "--export"), xo);
+      writeFileAtomic(a.exportOut, text);
+      j["export"] = {{"format", a.exportFormat}, {"file", a.exportOut}};
+    }
   }
   writeResult(a.out, dumpJson(j));
 
@@ -407,10 +435,15 @@ void registerSetupCommand(CLI::App& app) {
   sub->add_option("--time-limit", a->timeLimit,
                   "Time limit of every LP/MILP solve of the exact method, s (0: none)")
       ->check(CLI::Range(0.0, 1.0e6));
-  sub->add_option("--export", a->exportFormat,
-                  "Also write the corrections for a controller: fanuc|heidenhain|siemens|csv")
-      ->check(CLI::IsMember({"fanuc", "heidenhain", "siemens", "csv"}));
+  sub->add_option(
+         "--export", a->exportFormat,
+         "Also write the corrections for a controller: fanuc|heidenhain|heidenhain-table|siemens|csv")
+      ->check(CLI::IsMember({"fanuc", "heidenhain", "heidenhain-table", "siemens", "csv"}));
   sub->add_option("--export-out", a->exportOut, "File for --export (written atomically)");
+  existingFile(sub->add_option("--export-table", a->exportTable,
+                               "heidenhain-table: the control's current preset (.PR) or tool table (.T)"));
+  sub->add_option("--program-number", a->programNumber, "Fanuc program number of --export fanuc (1..7999)")
+      ->capture_default_str();
   sub->add_option("--tool-offset", a->toolOffset, "Tool register of the exports: wear|geometry")
       ->check(CLI::IsMember({"wear", "geometry"}))
       ->capture_default_str();

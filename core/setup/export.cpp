@@ -8,6 +8,7 @@
 #include "core/common/error.h"
 #include "core/common/run.h"
 #include "core/io/csv.h"
+#include "core/io/nc_program.h"
 
 namespace metrofit::setup {
 namespace {
@@ -82,9 +83,8 @@ bool ExportOptions::isValid(std::string* why) const {
     if (why) *why = w;
     return false;
   };
-  if (programNumber < 1 || programNumber > 9999) return no("the Fanuc program number must be in 1..9999");
   if (cuttingEdge < 1 || cuttingEdge > 12) return no("the cutting edge (D number) must be in 1..12");
-  return true;
+  return fanucProgramNumberOk(programNumber, why);
 }
 
 int registerOf(const Model& model, std::size_t i) {
@@ -126,6 +126,8 @@ std::string exportCorrections(const Model& model, std::span<const double> x, Con
       if (!title.empty()) line(fanucComment(title));
       line(fanucComment("G91: EACH VALUE IS ADDED TO THE OFFSET REGISTER, MM"));
       line(fanucComment("+ MOVES THE WORK ZERO / TOOL TIP TOWARDS +" + model.axis));
+      line(fanucComment(std::string("TOOL ") + (wear ? "WEAR L11" : "GEOMETRY L10") +
+                        ": OFFSET MEMORY C; ACTS AT THE NEXT G43 H"));
       line("G21 G91");
       for (std::size_t i = 0; i < model.setup.size(); ++i) {
         const SetupDatum& d = model.setup[i];
@@ -166,6 +168,8 @@ std::string exportCorrections(const Model& model, std::span<const double> x, Con
           model.axis + ".");
       line("; PRESET.PR: enter each value in column " + model.axis +
            " of row NR with \"Correct\" (incremental).");
+      line("; Activate the preset again and call the tool again (TOOL CALL) for the values to act.");
+      line("; A file the control imports instead: --export heidenhain-table with the current table.");
       std::string machine;
       for (std::size_t i = 0; i < model.setup.size(); ++i) {
         if (model.setup[i].kind == DatumKind::Machine)
@@ -197,6 +201,17 @@ std::string exportCorrections(const Model& model, std::span<const double> x, Con
       line(
           "; Reselect the settable frame (G54 ...) and the tool offset (D) for "
           "the values to take effect.");
+      line(
+          "; Needs MD18600 $MN_FRAME_FINE_TRANS = 1 (fine offset of settable frames; else alarm "
+          "\"FRAME: fine offset not possible\").");
+      int maxFrame = 0;
+      for (std::size_t i = 0; i < model.setup.size(); ++i)
+        if (model.setup[i].kind == DatumKind::Wks) maxFrame = std::max(maxFrame, registerOf(model, i));
+      if (maxFrame >= 5) {
+        line("; Frame " + std::to_string(maxFrame) +
+             " (G505..G599) needs MD28080 $MC_MM_NUM_USER_FRAMES >= " + std::to_string(maxFrame + 1) +
+             " (settable frames G500, G54..G57, G505..).");
+      }
       for (std::size_t i = 0; i < model.setup.size(); ++i) {
         const SetupDatum& d = model.setup[i];
         const std::string v = number(x[i], dec, true);
@@ -252,6 +267,166 @@ std::string exportCorrections(const Model& model, std::span<const double> x, Con
     }
   }
   return out;
+}
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return {};
+  const auto e = s.find_last_not_of(" \t");
+  return s.substr(b, e - b + 1);
+}
+
+struct Column {
+  std::string name;
+  std::size_t start = 0, end = std::string::npos;  ///< [start, end); npos: to the end of the line
+};
+
+/// Columns of a TNC table's header line: each starts where its name starts and ends where the next begins.
+std::vector<Column> tableColumns(const std::string& header) {
+  std::vector<Column> cols;
+  std::size_t i = 0;
+  while (i < header.size()) {
+    if (header[i] == ' ') {
+      ++i;
+      continue;
+    }
+    const std::size_t b = i;
+    while (i < header.size() && header[i] != ' ') ++i;
+    if (!cols.empty()) cols.back().end = b;
+    cols.push_back(Column{header.substr(b, i - b), b, std::string::npos});
+  }
+  return cols;
+}
+
+}  // namespace
+
+TableUpdate updateHeidenhainTable(const Model& model, std::span<const double> x, const std::string& table,
+                                  const std::string& source, const ExportOptions& options) {
+  requireValid(options, "export options");
+  if (x.size() != model.setup.size()) {
+    throw ValidationError(ErrorContext{model.source, 0, 0, "setup"},
+                          "got " + std::to_string(x.size()) + " corrections for " +
+                              std::to_string(model.setup.size()) + " setup data");
+  }
+  // Lines, keeping the file's line ending (TNC files are often CRLF).
+  std::vector<std::string> lines;
+  const bool crlf = table.find("\r\n") != std::string::npos;
+  {
+    std::size_t b = 0;
+    while (b < table.size()) {
+      std::size_t e = table.find('\n', b);
+      if (e == std::string::npos) e = table.size();
+      std::string l = table.substr(b, e - b);
+      if (!l.empty() && l.back() == '\r') l.pop_back();
+      lines.push_back(l);
+      b = e + 1;
+    }
+  }
+  auto fail = [&](std::size_t line, const std::string& what) -> void {
+    throw ValidationError(ErrorContext{source, static_cast<int>(line), 0, {}}, what);
+  };
+  if (lines.empty() || lines[0].rfind("BEGIN ", 0) != 0)
+    fail(1, "is not a HEIDENHAIN table: the first line must start with 'BEGIN <NAME>.<EXT>'");
+  // "BEGIN NAME.EXT UNIT ..."
+  std::string rest = lines[0].substr(6);
+  const std::size_t sp = rest.find(' ');
+  const std::string nameExt = rest.substr(0, sp);
+  const std::string unit = sp == std::string::npos ? std::string() : trim(rest.substr(sp + 1)).substr(0, 4);
+  const std::size_t dot = nameExt.rfind('.');
+  std::string ext = dot == std::string::npos ? std::string() : nameExt.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const bool preset = ext == "PR";
+  if (!preset && ext != "T")
+    fail(1, "'" + nameExt + "' is neither a preset table (.PR) nor a tool table (.T)");
+  double perMm = 1.0;
+  if (unit.rfind("MM", 0) == 0 && (unit.size() == 2 || unit[2] == ' ')) {
+    perMm = 1.0;
+  } else if (unit == "INCH") {
+    perMm = 1.0 / 25.4;
+  } else {
+    fail(1, "the BEGIN line names no unit (MM or INCH) after '" + nameExt + "'");
+  }
+  // Optional structure preamble (#STRUCTBEGIN ... #STRUCTEND) before the column names.
+  std::size_t headerLine = 1;
+  if (headerLine < lines.size() && lines[headerLine].rfind("#STRUCTBEGIN", 0) == 0) {
+    while (headerLine < lines.size() && lines[headerLine].rfind("#STRUCTEND", 0) != 0) ++headerLine;
+    ++headerLine;
+  }
+  if (headerLine >= lines.size()) fail(lines.size(), "has no line of column names");
+  const std::vector<Column> cols = tableColumns(lines[headerLine]);
+  auto column = [&](std::initializer_list<const char*> names) -> const Column* {
+    for (const char* n : names)
+      for (const Column& c : cols)
+        if (c.name == n) return &c;
+    return nullptr;
+  };
+  const bool wear = options.toolOffset == ToolOffset::Wear;
+  const Column* key = preset ? column({"NO", "NR"}) : column({"T"});
+  const std::string valueName = preset ? model.axis : (wear ? "DL" : "L");
+  const Column* value = column({valueName.c_str()});
+  if (!key) fail(headerLine + 1, std::string("has no column ") + (preset ? "NO (or NR)" : "T"));
+  if (!value) fail(headerLine + 1, "has no column " + valueName);
+  std::size_t endLine = headerLine + 1;
+  while (endLine < lines.size() && trim(lines[endLine]) != "[END]") ++endLine;
+  if (endLine >= lines.size()) fail(lines.size(), "has no '[END]' line");
+
+  auto cell = [](const std::string& l, const Column& c) {
+    if (c.start >= l.size()) return std::string();
+    return trim(l.substr(c.start, c.end == std::string::npos ? std::string::npos : c.end - c.start));
+  };
+  TableUpdate u;
+  u.table = nameExt;
+  const int dec = decimalsFor(model.stepMm) + (perMm == 1.0 ? 0 : 1);
+  for (std::size_t i = 0; i < model.setup.size(); ++i) {
+    const SetupDatum& d = model.setup[i];
+    const bool mine = preset ? d.kind == DatumKind::Wks : d.kind == DatumKind::Tool;
+    if (!mine) {
+      u.notWritten.push_back(d.id);
+      continue;
+    }
+    const int reg = registerOf(model, i);
+    std::size_t row = 0;
+    for (std::size_t l = headerLine + 1; l < endLine && row == 0; ++l) {
+      const std::string k = cell(lines[l], *key);
+      if (!k.empty() && k.size() <= 9 && k.find_first_not_of("0123456789") == std::string::npos &&
+          std::stol(k) == reg)
+        row = l;
+    }
+    if (row == 0) {
+      fail(headerLine + 1, "has no row " + key->name + " " + std::to_string(reg) + " for setup[" +
+                               std::to_string(i) + "] '" + d.id + "'");
+    }
+    const std::string old = cell(lines[row], *value);
+    double v = 0.0;
+    if (!old.empty()) {
+      char* end = nullptr;
+      v = std::strtod(old.c_str(), &end);
+      if (end == old.c_str() || *end != '\0' || !std::isfinite(v))
+        fail(row + 1, "column " + valueName + ": '" + old + "' is not a number");
+    }
+    // Keep the precision the cell has (a preset often holds 4 or 5 decimals).
+    const std::size_t dp = old.find('.');
+    const int oldDec =
+        dp == std::string::npos ? 0 : static_cast<int>(std::min<std::size_t>(old.size() - dp - 1, 9));
+    const std::string nv = number(v + x[i] * perMm, std::max(dec, oldDec), true);
+    std::string& l = lines[row];
+    if (l.size() < value->start) l.resize(value->start, ' ');
+    if (value->end == std::string::npos) {  // the last column runs to the end of the line
+      l.replace(value->start, std::string::npos, nv);
+    } else {
+      const std::size_t width = value->end - value->start;
+      if (nv.size() >= width)  // one blank at least keeps the cell apart from the next column
+        fail(row + 1, "column " + valueName + ": the new value " + nv + " does not fit its " +
+                          std::to_string(width) + " characters");
+      if (l.size() < value->end) l.resize(value->end, ' ');
+      l.replace(value->start, width, nv + std::string(width - nv.size(), ' '));
+    }
+    u.written.push_back(d.id);
+  }
+  for (const std::string& l : lines) u.text += l + (crlf ? "\r\n" : "\n");
+  return u;
 }
 
 }  // namespace metrofit::setup

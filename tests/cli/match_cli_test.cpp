@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include <Eigen/Core>
+
 #include "cli/cli_runner.h"
 #include "core/io/json_util.h"
 #include "testsupport.h"
@@ -146,13 +148,72 @@ TEST_F(MatchCli, BadInputExits2WithOneLine) {
         Case{"match --data two.csv", "two.csv: has 2 points"},
         Case{"match --data p.csv --machine hexapod", "--machine"},
         Case{"match --data p.csv --machine-def bad.json", "bad.json"},
-        Case{"match --data p.csv --method icp", "--method"}}) {
+        Case{"match --data p.csv --method icp", "--method"},
+        Case{"match --data p.csv --frame fanuc", "field '--frame': needs --frame-out FILE"},
+        Case{"match --data p.csv --frame-out f.nc",
+             "field '--frame-out': needs --frame heidenhain|siemens|fanuc"},
+        Case{"match --data p.csv --frame haas --frame-out f.nc", "--frame"},
+        Case{"match --data p.csv --frame siemens --frame-out f.spf --frame-decimals 13",
+             "--frame-decimals"}}) {
     const CliRun r = cli(c.args + " --out r.json", tmp);
     EXPECT_EQ(r.code, 2) << c.args << ": " << r.err;
     EXPECT_EQ(lines(r.err), 1) << c.args << ": " << r.err;
     EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
     EXPECT_FALSE(std::filesystem::exists(tmp.file("r.json"))) << c.args;
   }
+}
+
+TEST_F(MatchCli, FrameFileRebuildsThePosture) {
+  // The G68.2 block of --frame fanuc, read back here with Fanuc's Euler convention (I about Z, J about
+  // the new X, K about the new Z: R = Rz(I) Rx(J) Rz(K)), gives the rotation of the JSON's
+  // rotation_deg (CONTRACT: R = Rz(rz) Ry(ry) Rx(rx)) and its translation.
+  const nlohmann::json j = runJson(
+      "match --data p.csv --method closed-form --frame fanuc --frame-out f.nc --frame-decimals 10", tmp);
+  EXPECT_EQ(j.at("frame").at("format"), "fanuc");
+  EXPECT_EQ(j.at("frame").at("file"), "f.nc");
+  const std::string text = test::readText(tmp.file("f.nc"));
+  double x, y, z, i, jj, k;
+  const auto at = text.find("\nG68.2 ");
+  ASSERT_NE(at, std::string::npos) << text;
+  ASSERT_EQ(std::sscanf(text.c_str() + at, "\nG68.2 X%lf Y%lf Z%lf I%lf J%lf K%lf", &x, &y, &z, &i, &jj, &k),
+            6)
+      << text;
+  const double d = 3.14159265358979323846 / 180.0;
+  auto rz = [&](double a) {
+    Eigen::Matrix3d m;
+    m << std::cos(a * d), -std::sin(a * d), 0, std::sin(a * d), std::cos(a * d), 0, 0, 0, 1;
+    return m;
+  };
+  auto ry = [&](double a) {
+    Eigen::Matrix3d m;
+    m << std::cos(a * d), 0, std::sin(a * d), 0, 1, 0, -std::sin(a * d), 0, std::cos(a * d);
+    return m;
+  };
+  auto rx = [&](double a) {
+    Eigen::Matrix3d m;
+    m << 1, 0, 0, 0, std::cos(a * d), -std::sin(a * d), 0, std::sin(a * d), std::cos(a * d);
+    return m;
+  };
+  const auto& r = j.at("rotation_deg");
+  const Eigen::Matrix3d R = rz(r[2].get<double>()) * ry(r[1].get<double>()) * rx(r[0].get<double>());
+  EXPECT_LT((rz(i) * rx(jj) * rz(k) - R).cwiseAbs().maxCoeff(), 1e-9) << text;
+  const auto& t = j.at("translation_mm");
+  EXPECT_NEAR(x, t[0].get<double>(), 1e-9);
+  EXPECT_NEAR(y, t[1].get<double>(), 1e-9);
+  EXPECT_NEAR(z, t[2].get<double>(), 1e-9);
+  EXPECT_EQ(text.rfind("%\nO7101 (METROFIT POSTURE FRAME)\n", 0), 0u) << text;
+
+  // HEIDENHAIN: the datum shift is t, PLANE SPATIAL rebuilds R as Rz(SPC) Ry(SPB) Rx(SPA).
+  (void)runJson(
+      "match --data p.csv --method closed-form --frame heidenhain --frame-out f.h --frame-decimals 10", tmp);
+  const std::string h = test::readText(tmp.file("f.h"));
+  EXPECT_EQ(h.rfind("0 BEGIN PGM f MM\n", 0), 0u) << h;  // the program is named after its file
+  EXPECT_NE(h.find(" END PGM f MM\n"), std::string::npos) << h;
+  double spa, spb, spc;
+  const auto p = h.find("PLANE SPATIAL SPA");
+  ASSERT_NE(p, std::string::npos) << h;
+  ASSERT_EQ(std::sscanf(h.c_str() + p, "PLANE SPATIAL SPA%lf SPB%lf SPC%lf", &spa, &spb, &spc), 3) << h;
+  EXPECT_LT((rz(spc) * ry(spb) * rx(spa) - R).cwiseAbs().maxCoeff(), 1e-9) << h;
 }
 
 TEST_F(MatchCli, GaSimplexIsThePapersComparison) {

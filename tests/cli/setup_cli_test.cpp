@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 #include "cli/cli_runner.h"
@@ -107,7 +108,7 @@ TEST(SetupCli, ExportAndDmisData) {
       cli("setup --model m.json --data " + dmo + " --export fanuc --export-out offsets.nc --out r.json", tmp);
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string nc = test::readText(tmp.file("offsets.nc"));
-  EXPECT_EQ(nc.rfind("%\nO9001 (METROFIT SETUP CORRECTIONS)\n(SMALL)\n", 0), 0u) << nc;
+  EXPECT_EQ(nc.rfind("%\nO7001 (METROFIT SETUP CORRECTIONS)\n(SMALL)\n", 0), 0u) << nc;
   EXPECT_NE(nc.find("G10 L2 P1 Z"), std::string::npos);
   EXPECT_NE(nc.find("G10 L11 P5 R"), std::string::npos);
   const nlohmann::json j = readJsonFile(tmp.file("r.json"));
@@ -141,7 +142,15 @@ TEST(SetupCli, BadInputExits2WithOneLineNamingFileLineAndField) {
       {"setup --model m.json --data r.csv --export fanuc",
        "metrofit-cli: field '--export': needs --export-out FILE\n"},
       {"setup --model m.json --data r.csv --export-out x.nc",
-       "metrofit-cli: field '--export-out': needs --export fanuc|heidenhain|siemens|csv\n"},
+       "metrofit-cli: field '--export-out': needs --export fanuc|heidenhain|heidenhain-table|siemens|csv\n"},
+      {"setup --model m.json --data r.csv --export heidenhain-table --export-out t.t",
+       "metrofit-cli: field '--export': heidenhain-table needs --export-table CURRENT.PR|CURRENT.T (the "
+       "control's current preset or tool table)\n"},
+      {"setup --model m.json --data r.csv --export fanuc --export-out x.nc --program-number 9001",
+       "metrofit-cli: field '--program-number': the Fanuc program number O9001 is in O9000-O9999, which "
+       "parameter 3202 bit 4 (NE9) = 1 protects from editing and registration (the file would not load; "
+       "O9000-O9029 are also called by T/M/G codes as macros); choose 1..7999, or clear NE9 on the "
+       "control\n"},
   };
   for (const Case& c : cases) {
     const CliRun r = cli(c.args, tmp);
@@ -167,6 +176,56 @@ TEST(SetupCli, BadInputExits2WithOneLineNamingFileLineAndField) {
   const CliRun w = cli("setup --model m.json --data r.csv --out no/such/dir/r.json", tmp);
   EXPECT_EQ(w.code, 2);
   EXPECT_FALSE(std::filesystem::exists(tmp.file("no")));
+}
+
+// --export heidenhain-table: the control's current tool table (written here in the TNC table layout:
+// BEGIN line, column names whose positions start the columns, left-aligned cells, [END]) comes back
+// with the correction of T5 added to its DL cell and every other byte unchanged.
+TEST(SetupCli, HeidenhainTableExport) {
+  test::TempDir tmp;
+  test::writeText(tmp.file("m.json"), kSmallModel);
+  test::writeText(tmp.file("r.csv"), kSmallReport);
+  const std::string table =
+      "BEGIN TOOL.T MM\n"
+      "T       NAME                            L           R           DL        DR\n"
+      "5       END_MILL_D10                    +85.125     +5          +0.002    +0\n"
+      "[END]\n";
+  test::writeText(tmp.file("TOOL.T"), table);
+  const CliRun r = cli(
+      "setup --model m.json --data r.csv --export heidenhain-table --export-table TOOL.T --export-out new.t",
+      tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["export"]["table"], "TOOL.T");
+  EXPECT_EQ(j["export"]["written"], nlohmann::json::array({"T5"}));
+  EXPECT_EQ(j["export"]["not_written"], nlohmann::json::array({"W1"}));
+  const double t5 = j["corrections_mm"]["T5"].get<double>();
+  const std::string out = test::readText(tmp.file("new.t"));
+  std::vector<std::string> in, got;
+  for (const std::string* text : {&table, &out}) {
+    std::istringstream s(*text);
+    auto& v = text == &table ? in : got;
+    for (std::string l; std::getline(s, l);) v.push_back(l);
+  }
+  ASSERT_EQ(got.size(), 4u) << out;
+  EXPECT_EQ(got[0], in[0]);
+  EXPECT_EQ(got[1], in[1]);
+  EXPECT_EQ(got[3], "[END]");
+  // DL is the column from position 64 to 74 (where "DL" and "DR" start in the header line).
+  ASSERT_EQ(in[1].find("DL"), 64u);
+  ASSERT_EQ(in[1].find("DR"), 74u);
+  EXPECT_EQ(got[2].substr(0, 64), in[2].substr(0, 64));
+  EXPECT_EQ(got[2].substr(74), in[2].substr(74));
+  EXPECT_NEAR(std::stod(got[2].substr(64, 10)), 0.002 + t5, 1e-9) << got[2];
+  // The table is required and must be a preset or tool table.
+  test::writeText(tmp.file("pallet.p"), "BEGIN PALLET.P MM\nNR\n[END]\n");
+  const CliRun bad = cli(
+      "setup --model m.json --data r.csv --export heidenhain-table --export-table pallet.p --export-out x.t",
+      tmp);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(bad.err,
+            "metrofit-cli: pallet.p:1: 'PALLET.P' is neither a preset table (.PR) nor a tool table (.T)\n");
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("x.t")));
 }
 
 // resources/demo/setup/paper_example_report.csv is reproducible from the command line, as

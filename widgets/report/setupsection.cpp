@@ -326,7 +326,7 @@ void writeSetupSection(ReportPainter& out, const ReportContext& context) {
                            : kind == setup::DatumKind::Tool ? ReportText::tr("tool lengths")
                                                             : ReportText::tr("machine points");
       f.changes.push_back({what, values.join(QStringLiteral(", ")) + QStringLiteral(" mm"),
-                           ReportText::tr("add along %1; file %2 (program O9001)")
+                           ReportText::tr("add along %1; file %2 (program O7001)")
                                .arg(QString::fromStdString(model.axis), file)});
     }
   }
