@@ -5,14 +5,17 @@
 // missing or invalid settings show a message naming the field instead of crashing.
 #include <gtest/gtest.h>
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDir>
 #include <QImage>
 #include <QPainter>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QStyle>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTest>
 #include <QUndoStack>
 #include <algorithm>
 #include <cmath>
@@ -100,6 +103,36 @@ TEST_F(DiagnosisPageTest, KinematicAndThermalTablesListTheCoreLoopsEffects) {
   EXPECT_FALSE(page.result()->accepted().empty());
   EXPECT_EQ(page.errorBars()->categoryCount(), 3);  // rmse, max |e|, held-out rmse
   grab(page, QStringLiteral("thermal"));
+}
+
+// The evidence ("validation rmse 4.08 → 0.9...": cut short at 1280 x 800) wraps onto higher rows:
+// every word fits its column and every row is as high as its wrapped text.
+TEST_F(DiagnosisPageTest, EvidenceWrapsInsteadOfBeingCutShort) {
+  DiagnosisPage page(&document_);
+  page.resize(1000, 700);
+  page.show();
+  page.setDomain(DiagnosisDomain::Thermal);
+  ASSERT_TRUE(page.runNow()) << page.statusText().toStdString();
+  QTest::qWait(50);
+  const QTableWidget* t = page.candidateTable();
+  constexpr int kEvidence = 5;
+  EXPECT_EQ(t->textElideMode(), Qt::ElideNone);
+  EXPECT_TRUE(t->wordWrap());
+  ASSERT_GT(t->rowCount(), 3);
+  int wrapped = 0;
+  for (int r = 0; r < t->rowCount(); ++r) {
+    const QTableWidgetItem* item = t->item(r, kEvidence);
+    ASSERT_NE(item, nullptr);
+    const QFontMetrics fm(item->data(Qt::FontRole).isValid() ? item->font() : t->font());  // bold: accepted
+    // The delegate's text rect: the cell less the focus-frame margin + 1 on each side.
+    const int margin = 2 * (t->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, t) + 1);
+    const int width = t->columnWidth(kEvidence) - margin;
+    const QRect box = fm.boundingRect(QRect(0, 0, width, 10000), Qt::TextWordWrap, item->text());
+    EXPECT_LE(box.height(), t->rowHeight(r)) << "row " << r << " cut short: " << item->text().toStdString();
+    if (box.height() > fm.height()) ++wrapped;
+  }
+  EXPECT_GT(wrapped, 0);  // the thermal evidence is longer than the column: the test sees wrapping
+  grab(page, QStringLiteral("thermal-evidence"));
 }
 
 TEST_F(DiagnosisPageTest, WorkerGivesTheSynchronousResult) {
