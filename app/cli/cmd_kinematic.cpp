@@ -1,6 +1,10 @@
 // metrofit-cli kinematic identify|compensate (docs/file-formats.md#kinematic-identify-result) and the
 // kinematic simulators.
 //   identify   --data C.csv [--out E.json]
+//       the JSON also has "iso230_4": the ISO 230-4 results of the test (core/kinematics/iso230_4.h)
+//   circular   --data C.csv [--out R.json]
+//       the ISO 230-4 results (G, H, F per direction) of a circular test in either form: x/y or the
+//       radial-only form a ballbar exports (angle_deg, deviation_um | deviation_mm, ...)
 //   identify3  --xy C1.csv --yz C2.csv --zx C3.csv [--out E3.json]
 //       the three-axis actuator errors from circular tests in three planes (identification3.h)
 //   compensate3 --errors3 E3.json --path N.csv [--out F.csv]
@@ -49,6 +53,7 @@
 #include "core/kinematics/export.h"
 #include "core/kinematics/identification.h"
 #include "core/kinematics/identification3.h"
+#include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
 #include "core/kinematics/spc_actuator.h"
 #include "core/sim/circular_sim.h"
@@ -86,7 +91,9 @@ int runIdentify(const IdentifyArgs& a) {
   if (r.run.termination == Termination::Failed) {
     throw std::runtime_error("identification failed on " + a.data + ": " + r.run.message);
   }
-  writeResult(a.out, dumpJson(identifyResultToJson(r)));
+  nlohmann::json j = identifyResultToJson(r);
+  j["iso230_4"] = iso230ResultToJson(evaluateIso230_4(circularTraceOf(path)));
+  writeResult(a.out, dumpJson(j));
   const ActuatorErrors2& e = r.errors;
   std::fprintf(
       stderr,
@@ -96,6 +103,35 @@ int runIdentify(const IdentifyArgs& a) {
       g(e.yAxisAngleDeg).c_str(), g(e.squarenessDeg()).c_str(), g(r.squarenessStdErrDeg, "%.2g").c_str(),
       g(r.rmseMm, "%.3g").c_str(), r.run.iterations, r.run.iterations == 1 ? "" : "s",
       toString(r.run.termination));
+  return 0;
+}
+
+std::string isoSummary(const Iso230Result& iso) {
+  std::string out;
+  for (const Iso230Direction& d : iso.directions) {
+    out += std::string(out.empty() ? "" : "; ") + (d.counterClockwise ? "CCW" : "CW") + " G " +
+           g(d.circularDeviationMm * 1000.0, "%.3g") + " um, F " +
+           g(d.radialDeviationMinMm * 1000.0, "%.3g") + ".." + g(d.radialDeviationMaxMm * 1000.0, "%.3g") +
+           " um";
+  }
+  if (iso.circularHysteresisMm) out += "; H " + g(*iso.circularHysteresisMm * 1000.0, "%.3g") + " um";
+  return out;
+}
+
+int runCircular(const IdentifyArgs& a) {
+  const CircularTrace trace = readCircularTrace(a.data, csvOptions());
+  const Iso230Result iso = evaluateIso230_4(trace);
+  if (iso.directions.empty()) {
+    throw ValidationError(ErrorContext{a.data, 0, 0, {}},
+                          "no direction of the test has 3 points on a circle: no ISO 230-4 results");
+  }
+  nlohmann::json j;
+  j["form"] = trace.radialOnly ? "radial" : "xy";
+  j["points"] = trace.size();
+  j["iso230_4"] = iso230ResultToJson(iso);
+  writeResult(a.out, dumpJson(j));
+  std::fprintf(stderr, "kinematic circular: %zu points (%s form): %s\n", trace.size(),
+               trace.radialOnly ? "radial" : "x/y", isoSummary(iso).c_str());
   return 0;
 }
 
@@ -477,6 +513,20 @@ void registerKinematicCommands(CLI::App& app) {
   addCsvOptions(id);
   addOut(id, a->out);
   id->callback([a] { selectRunner([a]() -> int { return runIdentify(*a); }); });
+
+  auto ci = std::make_shared<IdentifyArgs>();
+  auto* circular = kin->add_subcommand(
+      "circular",
+      "ISO 230-4 results (circular deviation G, hysteresis H, radial deviation F) of a circular test");
+  existingFile(
+      circular
+          ->add_option("--data", ci->data,
+                       "Circular test (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, or the radial-only "
+                       "form angle_deg,deviation_um)")
+          ->required());
+  addCsvOptions(circular);
+  addOut(circular, ci->out);
+  circular->callback([ci] { selectRunner([ci]() -> int { return runCircular(*ci); }); });
 
   auto b = std::make_shared<CompensateArgs>();
   auto* comp = kin->add_subcommand("compensate", "Compensated references for a nominal path");

@@ -89,6 +89,84 @@ TEST(KinematicCli, IdentifyWritesTheContractJson) {
   EXPECT_EQ(test::listFolder(tmp.path()), (std::vector<std::string>{"c.csv", "e.json"}));
 }
 
+/// A circular test written here (docs/file-formats.md#circular-test), commands on a circle of radius 50 about
+/// the origin, one loop CCW then one CW (1 deg steps); the measured radius about c0 = (0.01, 0) is
+/// 50 + A cos 3 theta (+ h on the CW loop). Radial form: angle_deg,deviation_um,direction of the same points.
+std::string lobedCircle(bool radial, double amp, double h) {
+  std::string text =
+      radial ? "angle_deg,deviation_um,direction\n" : "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n";
+  char buf[160];
+  for (int loop = 0; loop < 2; ++loop) {
+    for (int k = 0; k < 360; ++k) {
+      const double th = (loop == 0 ? k : 360 - k) * std::numbers::pi / 180.0;
+      const double r = 50.0 + amp * std::cos(3.0 * th) + (loop == 1 ? h : 0.0);
+      const double x = 0.01 + r * std::cos(th), y = r * std::sin(th);
+      if (radial) {
+        std::snprintf(buf, sizeof buf, "%.12f,%.9f,%s\n", std::atan2(y, x) * 180.0 / std::numbers::pi,
+                      (std::hypot(x, y) - 50.0) * 1000.0, loop == 0 ? "ccw" : "cw");
+      } else {
+        std::snprintf(buf, sizeof buf, "%.12f,%.12f,%.12f,%.12f\n", 50.0 * std::cos(th), 50.0 * std::sin(th),
+                      x, y);
+      }
+      text += buf;
+    }
+  }
+  return text;
+}
+
+TEST(KinematicCli, CircularWritesTheIso230ResultsOfBothForms) {
+  test::TempDir tmp;
+  // G = 2A = 6 um about the LSQ centre (0.01, 0); H = h = 2 um; F about the nominal centre (0, 0) adds
+  // the offset of 10 um.
+  test::writeText(tmp.file("xy.csv"), lobedCircle(false, 0.003, 0.002));
+  test::writeText(tmp.file("ballbar.csv"), lobedCircle(true, 0.003, 0.002));
+  for (const char* name : {"xy.csv", "ballbar.csv"}) {
+    const CliRun r = cli(std::string("kinematic circular --data ") + name, tmp);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("kinematic circular: 720 points", 0), 0u) << r.err;
+    const nlohmann::json j = parseJson(r.out, "stdout");
+    const bool radial = std::string(name) == "ballbar.csv";
+    EXPECT_EQ(j["form"], radial ? "radial" : "xy");
+    EXPECT_EQ(j["points"], 720);
+    const nlohmann::json& iso = j["iso230_4"];
+    // The radial form without radius_mm uses the linearised circle: O(e^2/R) = 1e-6 um here, within the
+    // 9 digits written.
+    EXPECT_EQ(iso["linearised"], radial);
+    for (const char* dir : {"ccw", "cw"}) {
+      ASSERT_TRUE(iso[dir].is_object()) << name << " " << dir;
+      EXPECT_EQ(iso[dir]["points"], 360);
+      EXPECT_NEAR(iso[dir]["circular_deviation_g_um"].get<double>(), 6.0, 1e-3) << name << " " << dir;
+      EXPECT_NEAR(iso[dir]["lsq_centre_mm"][0].get<double>(), 0.01, 1e-6) << name;
+      EXPECT_NEAR(iso[dir]["lsq_centre_mm"][1].get<double>(), 0.0, 1e-6) << name;
+      // About the nominal centre the deviation is 10 cos t + 3 cos 3t (+ 2 on CW) + O(e^2/R = 0.001 um):
+      // largest at t = 0, smallest at t = 180 deg.
+      const double shift = std::string(dir) == "cw" ? 2.0 : 0.0;
+      EXPECT_NEAR(iso[dir]["radial_deviation_f_max_um"].get<double>(), 13.0 + shift, 0.01) << name;
+      EXPECT_NEAR(iso[dir]["radial_deviation_f_min_um"].get<double>(), -13.0 + shift, 0.01) << name;
+    }
+    EXPECT_NEAR(iso["circular_hysteresis_h_um"].get<double>(), 2.0, 1e-3) << name;
+    EXPECT_EQ(iso["f_about"], "nominal centre");
+  }
+  // identify writes the same results under iso230_4, besides its own keys.
+  const CliRun id = cli("kinematic identify --data xy.csv", tmp);
+  ASSERT_EQ(id.code, 0) << id.err;
+  const nlohmann::json j = parseJson(id.out, "stdout");
+  EXPECT_TRUE(j.contains("origin_mm"));
+  EXPECT_NEAR(j["iso230_4"]["cw"]["circular_deviation_g_um"].get<double>(), 6.0, 1e-3);
+  EXPECT_NEAR(j["iso230_4"]["circular_hysteresis_h_um"].get<double>(), 2.0, 1e-3);
+  // A radial-only test cannot be identified: one line naming the file.
+  expectBadInput(
+      "kinematic identify --data ballbar.csv",
+      "ballbar.csv: is a radial-only circular test (angle_deg, deviation): the kinematic identification "
+      "needs the x/y columns x_cmd_mm, y_cmd_mm, x_meas_mm, y_meas_mm (`kinematic circular` gives its "
+      "ISO 230-4 results)",
+      tmp);
+  test::writeText(tmp.file("bad.csv"), "angle_deg,deviation_um,direction\n0,1,ccw\n1,2,up\n2,3,ccw\n");
+  expectBadInput("kinematic circular --data bad.csv",
+                 "bad.csv:3:3: field 'direction': 'up' is not a direction (ccw or cw)", tmp);
+}
+
 TEST(KinematicCli, CompensateWritesReferencesGcodeAndStepNc) {
   test::TempDir tmp;
   writeCircularTest(tmp, "c.csv");
