@@ -921,6 +921,36 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>gemessene Koordinate in mm</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>angle of a radial-only circular test in deg</source>
+        <translation>Winkel eines rein radialen Kreisformtests in Grad</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>radial deviation in µm (radial-only circular test)</source>
+        <translation>radiale Abweichung in µm (rein radialer Kreisformtest)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>radial deviation in mm (radial-only circular test)</source>
+        <translation>radiale Abweichung in mm (rein radialer Kreisformtest)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>direction of travel: ccw or cw</source>
+        <translation>Fahrtrichtung: ccw (Gegenuhrzeigersinn) oder cw (Uhrzeigersinn)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run number</source>
+        <translation>Laufnummer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal radius in mm</source>
+        <translation>Nennradius in mm</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>part number</source>
         <translation>Teilenummer</translation>
@@ -957,12 +987,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+22"/>
-        <location line="+154"/>
+        <location line="+158"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-138"/>
+        <location line="-142"/>
         <source>&amp;Import</source>
         <translation>&amp;Importieren</translation>
     </message>
@@ -1042,7 +1072,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Vorschau (erste %1 Zeilen)</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+95"/>
         <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
         <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Alle Dateien (*)</translation>
     </message>
@@ -1415,8 +1445,33 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Dieser Kreisformtest kann nicht identifiziert werden:
 %1</translation>
     </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: G %2 µm, F %3 … %4 µm</source>
+        <translation>%1: G %2 µm, F %3 … %4 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CCW</source>
+        <translation>GUZ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>UZ</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>H %1 µm</source>
+        <translation>H %1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ISO 230-4: %1</source>
+        <translation>ISO 230-4: %1</translation>
+    </message>
     <message numerus="yes">
-        <location line="+13"/>
+        <location line="+6"/>
         <source>%1 points, nominal circle R %2 mm about (%3, %4) mm; %n loop(s).</source>
         <translation>
             <numerusform>%1 Punkte, Nennkreis R %2 mm um (%3, %4) mm; %n Umlauf.</numerusform>
@@ -1424,7 +1479,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Effects applied on the Diagnosis page belong to the circular test %1 (the one the diagnosis ran on); this test uses the declared model.</source>
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zum Kreisformtest %1 (auf dem die Diagnose lief); dieser Test verwendet das deklarierte Modell.</translation>
     </message>
@@ -2979,7 +3034,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+224"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+254"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>ja</translation>
@@ -3102,13 +3157,13 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Für jede Studie wird das deklarierte Modell angepasst und sein Residuum berechnet; Kandidateneffekte, die dem Modell fehlen, werden einzeln getestet und jeweils mit ihren Parametern und deren Standardfehlern geschätzt. Ein Effekt wird nur bei ausreichender Evidenz übernommen (Verbesserung auf den Testdaten bei Thermik, sonst ein Informationskriterium mit konservativer Schwelle) und wenn er den Fehler praktisch relevant verringert; das Modell wird mit ihm neu angepasst und die Suche wiederholt, bis nichts mehr gefunden wird.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
-        <location line="+224"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-202"/>
+        <location line="+254"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="-254"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -3124,41 +3179,96 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+227"/>
+        <location line="+257"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-225"/>
-        <location line="+227"/>
+        <location line="-255"/>
+        <location line="+257"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-225"/>
-        <location line="+226"/>
+        <location line="-255"/>
+        <location line="+256"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-254"/>
+        <location line="+256"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-254"/>
+        <location line="+256"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="-254"/>
         <source>RMS residual (µm)</source>
         <translation>RMS-Residuum (µm)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
+        <source>ISO 230-4 results</source>
+        <translation>Ergebnisse nach ISO 230-4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Per direction: the circular deviation G (radial range about the path&apos;s own least-squares centre) and the radial deviation F (largest and smallest deviation from the nominal radius about the nominal centre).</source>
+        <translation>Je Richtung: die Kreisformabweichung G (radiale Spanne um den eigenen Ausgleichskreismittelpunkt der Bahn) und die Radialabweichung F (größte und kleinste Abweichung vom Nennradius um den Nennmittelpunkt).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>direction</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>G (µm)</source>
+        <translation>G (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>F max (µm)</source>
+        <translation>F max (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>F min (µm)</source>
+        <translation>F min (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>LSQ centre (mm)</source>
+        <translation>Ausgleichskreismittelpunkt (mm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CCW</source>
+        <translation>GUZ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>UZ</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Circular hysteresis H (largest radial difference between the CW and the CCW path at the same angle, about one least-squares centre): %1 µm.</source>
+        <translation>Umkehrspanne H (größte radiale Differenz zwischen der Bahn im Uhrzeigersinn und der im Gegenuhrzeigersinn beim selben Winkel, um einen gemeinsamen Ausgleichskreismittelpunkt): %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Circular hysteresis H: not available (the test has one direction only).</source>
+        <translation>Umkehrspanne H: nicht verfügbar (der Test hat nur eine Richtung).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Circular test “%1”</source>
         <translation>Kreisformtest „%1“</translation>
     </message>
@@ -3188,7 +3298,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Compensation</source>
         <translation>Kompensation</translation>
     </message>

@@ -921,6 +921,36 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>współrzędna zmierzona w mm</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>angle of a radial-only circular test in deg</source>
+        <translation>kąt testu okrągłości tylko z odchyłkami promieniowymi w stopniach</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>radial deviation in µm (radial-only circular test)</source>
+        <translation>odchyłka promieniowa w µm (test okrągłości tylko promieniowy)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>radial deviation in mm (radial-only circular test)</source>
+        <translation>odchyłka promieniowa w mm (test okrągłości tylko promieniowy)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>direction of travel: ccw or cw</source>
+        <translation>kierunek ruchu: ccw (przeciwnie do wskazówek zegara) lub cw (zgodnie)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run number</source>
+        <translation>numer przebiegu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal radius in mm</source>
+        <translation>promień nominalny w mm</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>part number</source>
         <translation>numer części</translation>
@@ -957,12 +987,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+22"/>
-        <location line="+154"/>
+        <location line="+158"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-138"/>
+        <location line="-142"/>
         <source>&amp;Import</source>
         <translation>&amp;Importuj</translation>
     </message>
@@ -1042,7 +1072,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Podgląd (pierwsze %1 wierszy)</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+95"/>
         <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
         <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Wszystkie pliki (*)</translation>
     </message>
@@ -1415,8 +1445,33 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można zidentyfikować tego testu kołowego:
 %1</translation>
     </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: G %2 µm, F %3 … %4 µm</source>
+        <translation>%1: G %2 µm, F %3 … %4 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CCW</source>
+        <translation>CCW</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>CW</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>H %1 µm</source>
+        <translation>H %1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ISO 230-4: %1</source>
+        <translation>ISO 230-4: %1</translation>
+    </message>
     <message numerus="yes">
-        <location line="+13"/>
+        <location line="+6"/>
         <source>%1 points, nominal circle R %2 mm about (%3, %4) mm; %n loop(s).</source>
         <translation>
             <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3, %4) mm; %n pętla.</numerusform>
@@ -1425,7 +1480,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Effects applied on the Diagnosis page belong to the circular test %1 (the one the diagnosis ran on); this test uses the declared model.</source>
         <translation>Efekty zastosowane na stronie Diagnoza należą do testu kołowego %1 (tego, na którym przeprowadzono diagnozę); ten test używa zadeklarowanego modelu.</translation>
     </message>
@@ -2982,7 +3037,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+224"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+254"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>tak</translation>
@@ -3105,13 +3160,13 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dla każdego studium dopasowywany jest zadeklarowany model i obliczane jego residuum; brakujące w modelu efekty kandydujące są sprawdzane kolejno, każdy estymowany wraz z parametrami i ich błędami standardowymi. Efekt jest przyjmowany tylko na podstawie dowodów (poprawa na danych testowych dla termiki, w pozostałych przypadkach kryterium informacyjne z ostrożnym progiem) i gdy zmniejsza błąd o praktycznie istotną wartość; model jest ponownie dopasowywany z tym efektem, a wyszukiwanie powtarzane, dopóki nic więcej nie zostanie znalezione.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
-        <location line="+224"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-202"/>
+        <location line="+254"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="-254"/>
         <source>identified</source>
         <translation>zidentyfikowany</translation>
     </message>
@@ -3127,41 +3182,96 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+227"/>
+        <location line="+257"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-225"/>
-        <location line="+227"/>
+        <location line="-255"/>
+        <location line="+257"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-225"/>
-        <location line="+226"/>
+        <location line="-255"/>
+        <location line="+256"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-254"/>
+        <location line="+256"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-254"/>
+        <location line="+256"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="-254"/>
         <source>RMS residual (µm)</source>
         <translation>residuum RMS (µm)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
+        <source>ISO 230-4 results</source>
+        <translation>Wyniki według ISO 230-4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Per direction: the circular deviation G (radial range about the path&apos;s own least-squares centre) and the radial deviation F (largest and smallest deviation from the nominal radius about the nominal centre).</source>
+        <translation>Dla każdego kierunku: odchyłka kołowości G (rozstęp promieni wokół środka okręgu średniokwadratowego danej ścieżki) i odchyłka promieniowa F (największa i najmniejsza odchyłka od promienia nominalnego wokół środka nominalnego).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>direction</source>
+        <translation>kierunek</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>G (µm)</source>
+        <translation>G (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>F max (µm)</source>
+        <translation>F maks. (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>F min (µm)</source>
+        <translation>F min. (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>LSQ centre (mm)</source>
+        <translation>środek okręgu LSQ (mm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CCW</source>
+        <translation>CCW</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>CW</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Circular hysteresis H (largest radial difference between the CW and the CCW path at the same angle, about one least-squares centre): %1 µm.</source>
+        <translation>Histereza kołowa H (największa różnica promieniowa między ścieżką CW i CCW przy tym samym kącie, wokół jednego wspólnego środka okręgu średniokwadratowego): %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Circular hysteresis H: not available (the test has one direction only).</source>
+        <translation>Histereza kołowa H: niedostępna (test ma tylko jeden kierunek).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Circular test “%1”</source>
         <translation>Test kołowy „%1”</translation>
     </message>
@@ -3191,7 +3301,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Compensation</source>
         <translation>Kompensacja</translation>
     </message>

@@ -11,7 +11,7 @@
 //       Eq. 15 in three axes: references x_cmd_mm,y_cmd_mm,z_cmd_mm for a nominal path x_mm,y_mm,z_mm
 //   from-spc   --x-data X.csv --y-data Y.csv [--position-column C] [--deviation-column C]
 //              [--x-nominal-y Y0] [--y-nominal-x X0] [--subgroup N] [--coverage K]
-//              [--path N.csv --references F.csv] [--out E.json]
+//              [--path N.csv --references F.csv] [--dfq F.dfq] [--out E.json]
 //       the SPC regression offset angles of two edges -> actuator errors -> compensation
 //       (spc_actuator.h); E.json is readable by `compensate --errors`
 //   compensate --errors E.json --path N.csv [--out F.csv] [--gcode F.nc] [--step-nc F.p21]
@@ -47,6 +47,7 @@
 #include "core/common/rng.h"
 #include "core/common/run.h"
 #include "core/io/csv.h"
+#include "core/io/dfq.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/kinematics/cartesian_model.h"
@@ -230,8 +231,28 @@ struct FromSpcArgs {
   double xNominalY = 0.0, yNominalX = 0.0;
   int subgroup = 5;
   double coverage = 2.0;
-  std::string path, references, out;
+  std::string path, references, out, dfq;
 };
+
+/// The two edges' deviations as two characteristics of a Q-DAS DFQ file (core/io/dfq.h).
+std::string edgesDfq(const FromSpcArgs& a, const AxisFeatureSeries& xf, const AxisFeatureSeries& yf) {
+  DfqPart part;
+  part.number = "from-spc";
+  part.description = "Edges machined along X (" + std::filesystem::path(a.xData).filename().string() +
+                     ") and along Y (" + std::filesystem::path(a.yData).filename().string() + ")";
+  const AxisFeatureSeries* series[2] = {&xf, &yf};
+  const char* names[2] = {"X edge", "Y edge"};
+  for (int i = 0; i < 2; ++i) {
+    DfqCharacteristic c;
+    c.number = std::string(names[i]) + " " + a.deviationColumn;
+    c.description = std::string(names[i]) + ": deviation across the axis (measured - nominal)";
+    c.nominal = 0.0;
+    c.unit = "mm";
+    c.values = series[i]->deviationMm;
+    part.characteristics.push_back(std::move(c));
+  }
+  return writeDfq(part);
+}
 
 int runFromSpc(const FromSpcArgs& a) {
   if (a.references.empty() != a.path.empty()) {
@@ -267,7 +288,9 @@ int runFromSpc(const FromSpcArgs& a) {
     j["compensation"]["references"] = a.references;
     j["compensation"]["largest_correction_mm"] = largest;
   }
+  const std::string dfq = a.dfq.empty() ? std::string() : edgesDfq(a, xf, yf);
   if (!a.references.empty()) writeFileAtomic(a.references, refs);
+  if (!a.dfq.empty()) writeFileAtomic(a.dfq, dfq);
   writeResult(a.out, dumpJson(j));
   const ActuatorErrors2& e = r.errors;
   std::fprintf(
@@ -592,6 +615,8 @@ void registerKinematicCommands(CLI::App& app) {
   existingFile(fs->add_option("--path", d->path, "Nominal path to compensate (CSV x_mm,y_mm)"));
   fs->add_option("--references", d->references,
                  "Compensated references of --path (CSV x_cmd_mm,y_cmd_mm; atomic)");
+  fs->add_option("--dfq", d->dfq,
+                 "Also write the two edges' deviations as a Q-DAS DFQ file (two characteristics; atomic)");
   addCsvOptions(fs);
   addOut(fs, d->out);
   fs->callback([d] { selectRunner([d]() -> int { return runFromSpc(*d); }); });

@@ -27,6 +27,7 @@
 #include "core/diagnose/applied_setup_matching.h"
 #include "core/io/file_io.h"
 #include "core/kinematics/export.h"
+#include "core/kinematics/iso230_4.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/diagnose/coretexts.h"
 #include "widgets/document/projectdocument.h"
@@ -359,7 +360,20 @@ bool KinematicsPage::identify() {
   } catch (const std::exception& e) {
     error_ = QString::fromStdString(e.what());
     info_->clear();
-    message_->setText(tr("Cannot identify this circular test:\n%1").arg(error_));
+    QString text = tr("Cannot identify this circular test:\n%1").arg(error_);
+    // A radial-only (ballbar) test cannot be identified, but it has its ISO 230-4 results.
+    if (const DatasetRef* ref = document_->project().dataset(id.toStdString())) {
+      try {
+        const CircularTrace trace = readCircularTrace(document_->datasetPath(*ref).toStdString(), ref->csv);
+        if (trace.radialOnly) {
+          if (const QString iso = isoText(evaluateIso230_4(trace)); !iso.isEmpty())
+            text += QLatin1Char('\n') + iso;
+        }
+      } catch (const std::exception&) {
+        // The message above names the problem.
+      }
+    }
+    message_->setText(text);
     stack_->setCurrentWidget(message_);
     updateButtons();
     return false;
@@ -367,6 +381,20 @@ bool KinematicsPage::identify() {
   showStudy();
   updateButtons();
   return true;
+}
+
+/// One line of ISO 230-4 results (core/kinematics/iso230_4.h) in µm: G and F per direction, H.
+QString KinematicsPage::isoText(const Iso230Result& iso) {
+  QStringList parts;
+  for (const Iso230Direction& d : iso.directions) {
+    parts << tr("%1: G %2 µm, F %3 … %4 µm")
+                 .arg(d.counterClockwise ? tr("CCW") : tr("CW"))
+                 .arg(d.circularDeviationMm * 1000.0, 0, 'f', 2)
+                 .arg(d.radialDeviationMinMm * 1000.0, 0, 'f', 2)
+                 .arg(d.radialDeviationMaxMm * 1000.0, 0, 'f', 2);
+  }
+  if (iso.circularHysteresisMm) parts << tr("H %1 µm").arg(*iso.circularHysteresisMm * 1000.0, 0, 'f', 2);
+  return parts.isEmpty() ? QString() : tr("ISO 230-4: %1").arg(parts.join(QStringLiteral("; ")));
 }
 
 void KinematicsPage::showStudy() {
@@ -379,6 +407,7 @@ void KinematicsPage::showStudy() {
                      .arg(mm4(s.analysis.centreMm.x()), mm4(s.analysis.centreMm.y()));
   if (!s.dataset.description.empty())
     info.prepend(QString::fromStdString(s.dataset.description) + QLatin1Char('\n'));
+  if (const QString iso = isoText(s.analysis.iso); !iso.isEmpty()) info += QLatin1Char('\n') + iso;
   if (const QString elsewhere = appliedElsewhere(document_->project(), "kinematic", s.dataset.id);
       !elsewhere.isEmpty()) {
     info += QLatin1Char('\n') +

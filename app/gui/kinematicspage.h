@@ -30,6 +30,7 @@ class CircularPathView;
 class PolarDeviationView;
 class ProjectDocument;
 class SpcView;
+struct Iso230Result;
 
 class KinematicsPage : public QWidget {
   Q_OBJECT
@@ -70,6 +71,12 @@ class KinematicsPage : public QWidget {
   QLabel* fromSpcLabel() const { return fromSpcLabel_; }
   QLabel* threeAxisLabel() const { return threeAxisLabel_; }
   QPushButton* compensateButton() const { return compensateButton_; }
+  /// The test's summary above the tabs (points, nominal circle, loops, ISO 230-4 results).
+  QLabel* infoLabel() const { return info_; }
+  /// The message shown instead of the tabs when the test cannot be identified.
+  QLabel* messageLabel() const { return message_; }
+  /// "ISO 230-4: CCW: G … µm, F … … … µm; CW: …; H … µm" (empty without a direction).
+  static QString isoText(const Iso230Result& iso);
 
  private:
   void refresh();

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -488,6 +490,91 @@ std::string edgeCsv(char axis, double ox, double oy, double aDeg, double bDeg, i
     csv += line;
   }
   return csv;
+}
+
+/// The fields of a Q-DAS DFQ file, read by the AQDEF K-field rule (docs/file-formats.md#q-das-dfq-export;
+/// pypi.org/project/aqdefreader, pypi.org/project/qdas-parser): "Kxxxx[/i] value" per line; values
+/// K0001/i and times K0004/i collected per characteristic i, every other field keyed "Kxxxx/i".
+struct DfqFields {
+  std::map<std::string, std::string> fields;
+  std::map<int, std::vector<double>> values;
+  std::map<int, std::vector<std::string>> times;
+};
+
+DfqFields readDfq(const std::string& text) {
+  DfqFields d;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    EXPECT_FALSE(line.empty());
+    EXPECT_EQ(line.back(), '\r');  // CR LF
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto space = line.find(' ');
+    const std::string key = line.substr(0, space), value = line.substr(space + 1);
+    const auto slash = key.find('/');
+    const int index = slash == std::string::npos ? 0 : std::stoi(key.substr(slash + 1));
+    if (key.rfind("K0001/", 0) == 0) {
+      d.values[index].push_back(std::stod(value));
+    } else if (key.rfind("K0004/", 0) == 0) {
+      d.times[index].push_back(value);
+    } else {
+      d.fields[key] = value;
+    }
+  }
+  return d;
+}
+
+TEST(KinematicCli, SpcAndFromSpcWriteQdasDfq) {
+  test::TempDir tmp;
+  // A German spreadsheet export with times: ';' and decimal commas.
+  test::writeText(tmp.file("bores.csv"),
+                  "timestamp;diameter_mm\n2024-05-03T10:15:00;20,003\n2024-05-03T10:16:00;19,998\n"
+                  "2024-05-03T10:17:00;20,001\n2024-05-03T10:18:00;20,004\n2024-05-03 10:19;19,997\n"
+                  "2024-05-03T10:20:00;20,000\n");
+  const CliRun r =
+      cli("spc --data bores.csv --column diameter_mm --subgroup 2 --lsl 19.95 --usl 20.05 "
+          "--nominal 20 --dfq b.dfq --dfq-part P-17",
+          tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const DfqFields d = readDfq(test::readText(tmp.file("b.dfq")));
+  EXPECT_EQ(d.fields.at("K0100"), "1");
+  EXPECT_EQ(d.fields.at("K1001/1"), "P-17");
+  EXPECT_EQ(d.fields.at("K2001/1"), "diameter_mm");
+  EXPECT_EQ(std::stod(d.fields.at("K2101/1")), 20.0);
+  EXPECT_EQ(std::stod(d.fields.at("K2110/1")), 19.95);
+  EXPECT_EQ(std::stod(d.fields.at("K2111/1")), 20.05);
+  EXPECT_EQ(d.fields.at("K2142/1"), "mm");
+  EXPECT_EQ(d.values.at(1), (std::vector<double>{20.003, 19.998, 20.001, 20.004, 19.997, 20.0}));
+  ASSERT_EQ(d.times.at(1).size(), 6u);
+  EXPECT_EQ(d.times.at(1).front(), "03.05.2024/10:15:00");
+  EXPECT_EQ(d.times.at(1)[4], "03.05.2024/10:19:00");
+
+  // A bad time: exit 2, one line naming the cell, no DFQ file.
+  test::writeText(
+      tmp.file("badtime.csv"),
+      "timestamp,d_mm\n2024-05-03T10:15:00,1\nyesterday,2\n2024-05-03T10:17:00,3\n2024-05-03T10:18:00,2\n");
+  expectBadInput("spc --data badtime.csv --column d_mm --subgroup 2 --dfq x.dfq",
+                 "badtime.csv:3:1: field 'timestamp': 'yesterday' is not a date-time YYYY-MM-DDTHH:MM[:SS]",
+                 tmp);
+
+  // from-spc: the two edges' deviations as two characteristics.
+  test::writeText(tmp.file("ex.csv"), edgeCsv('x', 0.012, -0.008, 0.03, -0.05, 40));
+  test::writeText(tmp.file("ey.csv"), edgeCsv('y', 0.012, -0.008, 0.03, -0.05, 30));
+  const CliRun f = cli("kinematic from-spc --x-data ex.csv --y-data ey.csv --dfq e.dfq --out e.json", tmp);
+  ASSERT_EQ(f.code, 0) << f.err;
+  const DfqFields e = readDfq(test::readText(tmp.file("e.dfq")));
+  EXPECT_EQ(e.fields.at("K0100"), "2");
+  EXPECT_EQ(e.fields.at("K2001/1"), "X edge deviation_mm");
+  EXPECT_EQ(e.fields.at("K2001/2"), "Y edge deviation_mm");
+  EXPECT_EQ(e.fields.at("K2142/2"), "mm");
+  EXPECT_EQ(std::stod(e.fields.at("K2101/1")), 0.0);
+  EXPECT_EQ(e.fields.count("K2110/1"), 0u);
+  const auto xs = readCsvFile(tmp.file("ex.csv")).numericColumn("deviation_mm");
+  const auto ys = readCsvFile(tmp.file("ey.csv")).numericColumn("deviation_mm");
+  EXPECT_EQ(e.values.at(1), xs);
+  EXPECT_EQ(e.values.at(2), ys);
+  EXPECT_EQ(e.values.at(2).size(), 30u);
+  EXPECT_TRUE(e.times.empty());
 }
 
 TEST(KinematicCli, FromSpcTurnsTheOffsetAnglesIntoActuatorErrorsAndReferences) {

@@ -72,6 +72,35 @@ void writeErrors(ReportPainter& out, const KinematicStudyData& s) {
   out.table(t);
 }
 
+/// ISO 230-4 results of the test (core/kinematics/iso230_4.h), in µm.
+void writeIso230(ReportPainter& out, const Iso230Result& iso) {
+  if (iso.directions.empty()) return;
+  out.subheading(ReportText::tr("ISO 230-4 results"), out.mm(30.0));
+  out.paragraph(
+      ReportText::tr("Per direction: the circular deviation G (radial range about the path's own "
+                     "least-squares centre) and the radial deviation F (largest and smallest "
+                     "deviation from the nominal radius about the nominal centre)."));
+  ReportTable t;
+  t.header = {ReportText::tr("direction"), ReportText::tr("G (µm)"), ReportText::tr("F max (µm)"),
+              ReportText::tr("F min (µm)"), ReportText::tr("LSQ centre (mm)")};
+  t.widths = {1.0, 1.0, 1.0, 1.0, 2.0};
+  t.alignment = {Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
+  for (const Iso230Direction& d : iso.directions) {
+    t.rows.push_back({d.counterClockwise ? ReportText::tr("CCW") : ReportText::tr("CW"),
+                      um(d.circularDeviationMm, 2), um(d.radialDeviationMaxMm, 2),
+                      um(d.radialDeviationMinMm, 2),
+                      QStringLiteral("%1, %2").arg(QString::number(d.lsqCentreMm.x(), 'f', 4),
+                                                   QString::number(d.lsqCentreMm.y(), 'f', 4))});
+  }
+  out.table(t);
+  out.paragraph(
+      iso.circularHysteresisMm
+          ? ReportText::tr("Circular hysteresis H (largest radial difference between the CW and the "
+                           "CCW path at the same angle, about one least-squares centre): %1 µm.")
+                .arg(um(*iso.circularHysteresisMm, 2))
+          : ReportText::tr("Circular hysteresis H: not available (the test has one direction only)."));
+}
+
 CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyData& s) {
   out.subheading(ReportText::tr("Circular test “%1”").arg(QString::fromStdString(s.dataset.id)),
                  out.mm(60.0));
@@ -136,6 +165,7 @@ CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyDa
   style.lineWidth = 1.1;
   drawScaled(out, left, 400.0, [&](QPainter& p, const QRectF& r) { paintPathPlot(p, r, pd, style); });
   drawScaled(out, right, 400.0, [&](QPainter& p, const QRectF& r) { paintPolarPlot(p, r, polar, style); });
+  writeIso230(out, s.analysis.iso);
 
   out.subheading(ReportText::tr("Compensation"), out.mm(30.0));
   out.paragraph(
