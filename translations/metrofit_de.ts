@@ -1278,7 +1278,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+148"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+149"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -1446,7 +1446,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+27"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -3034,7 +3034,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+254"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+256"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>ja</translation>
@@ -3269,11 +3269,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location line="+331"/>
         <source>Circular test “%1”</source>
         <translation>Kreisformtest „%1“</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-323"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 Punkte; Nennkreis R %2 mm um (%3, %4) mm; %5 Umläufe (gegen, dann mit dem Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (%8, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt bestimmt (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
     </message>
@@ -3294,11 +3295,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+294"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-279"/>
         <source>Compensation</source>
         <translation>Kompensation</translation>
     </message>
@@ -3624,12 +3626,37 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Rechtwinkligkeit XY %1°, YZ %2°, ZX %3° (Kreisformtests in drei Ebenen).</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
+        <source>%1 points of a radial-only circular test (angle and radial deviation, as ballbar software exports it); %2 loops. It has no commanded and measured x/y coordinates, so the actuator errors cannot be identified from it and no compensation is computed; its ISO 230-4 results follow.</source>
+        <translation>%1 Punkte eines rein radialen Kreisformtests (Winkel und radiale Abweichung, wie Ballbar-Software sie exportiert); %2 Schleifen. Er hat keine Soll- und Ist-Koordinaten x/y, daher lassen sich die Antriebsfehler daraus nicht identifizieren und es wird keine Kompensation berechnet; es folgen seine Ergebnisse nach ISO 230-4.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Circular test %1 (radial only): largest circular deviation G %2 µm.</source>
+        <translation>Kreisformtest %1 (nur radial): größte Kreisformabweichung G %2 µm.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Circular hysteresis H %1 µm.</source>
+        <translation>Umkehrspanne H %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The test gives the ISO 230-4 results only: a radial-only test cannot identify the actuator errors.</source>
+        <translation>Der Test liefert nur die Ergebnisse nach ISO 230-4: ein rein radialer Test kann die Antriebsfehler nicht identifizieren.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>To identify and compensate the actuator errors, record the circular test with commanded and measured x/y coordinates.</source>
+        <translation>Um die Antriebsfehler zu identifizieren und zu kompensieren, den Kreisformtest mit Soll- und Ist-Koordinaten x/y aufzeichnen.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Kinematic compensation and SPC</source>
         <translation>Kinematische Kompensation und SPC</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+27"/>
         <source>Cannot analyse the circular test: %1</source>
         <translation>Der Kreisformtest kann nicht ausgewertet werden: %1</translation>
     </message>

@@ -1278,7 +1278,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+148"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+149"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identyfikuj</translation>
     </message>
@@ -1446,7 +1446,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+27"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -3037,7 +3037,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+254"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+256"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>tak</translation>
@@ -3272,11 +3272,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location line="+331"/>
         <source>Circular test “%1”</source>
         <translation>Test kołowy „%1”</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-323"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 punktów; okrąg nominalny R %2 mm wokół (%3, %4) mm; %5 pętli (przeciwnie, potem zgodnie z ruchem wskazówek zegara). Błędy napędów maszyny kartezjańskiej (%8, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wyznaczono metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
     </message>
@@ -3297,11 +3298,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+294"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-279"/>
         <source>Compensation</source>
         <translation>Kompensacja</translation>
     </message>
@@ -3627,12 +3629,37 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Prostopadłość XY %1°, YZ %2°, ZX %3° (testy kołowe w trzech płaszczyznach).</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
+        <source>%1 points of a radial-only circular test (angle and radial deviation, as ballbar software exports it); %2 loops. It has no commanded and measured x/y coordinates, so the actuator errors cannot be identified from it and no compensation is computed; its ISO 230-4 results follow.</source>
+        <translation>%1 punktów testu okrągłości tylko z odchyłkami promieniowymi (kąt i odchyłka promieniowa, tak jak eksportuje je oprogramowanie ballbar); pętle: %2. Test nie ma zadanych i zmierzonych współrzędnych x/y, więc nie można z niego zidentyfikować błędów napędów i nie oblicza się kompensacji; poniżej jego wyniki według ISO 230-4.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Circular test %1 (radial only): largest circular deviation G %2 µm.</source>
+        <translation>Test okrągłości %1 (tylko promieniowy): największa odchyłka kołowości G %2 µm.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Circular hysteresis H %1 µm.</source>
+        <translation>Histereza kołowa H %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The test gives the ISO 230-4 results only: a radial-only test cannot identify the actuator errors.</source>
+        <translation>Test daje tylko wyniki według ISO 230-4: test wyłącznie promieniowy nie pozwala zidentyfikować błędów napędów.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>To identify and compensate the actuator errors, record the circular test with commanded and measured x/y coordinates.</source>
+        <translation>Aby zidentyfikować i skompensować błędy napędów, zarejestruj test okrągłości z zadanymi i zmierzonymi współrzędnymi x/y.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Kinematic compensation and SPC</source>
         <translation>Kompensacja kinematyczna i SPC</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+27"/>
         <source>Cannot analyse the circular test: %1</source>
         <translation>Nie można przeanalizować testu okrągłości: %1</translation>
     </message>

@@ -215,6 +215,26 @@ TEST_F(KinematicsPageTest, RadialOnlyTestSaysWhyItCannotBeIdentifiedAndShowsItsI
   EXPECT_TRUE(message.contains(QStringLiteral("CW: G 4.00 µm"))) << message.toStdString();
   EXPECT_TRUE(message.contains(QStringLiteral("H 1.50 µm"))) << message.toStdString();
   EXPECT_FALSE(page.compensateButton()->isEnabled());
+
+  // As the kinematics study's test, the report shows its ISO 230-4 results and says why there is no
+  // identification (the report of an x/y test would fail on it).
+  doc_.setStudyValue(QStringLiteral("kinematics"), QStringLiteral("/dataset"), "ballbar",
+                     QStringLiteral("x"));
+  doc_.save();
+  const QString pdf = QDir(dir_.path()).filePath(QStringLiteral("r.pdf"));
+  ReportOptions o;
+  o.projectPath = projectPath_;
+  o.resolutionDpi = 100;
+  writeReport(loadProject(projectPath_.toStdString()), pdf, o);
+  QProcess p;
+  p.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+  ASSERT_TRUE(p.waitForFinished(60000));
+  const QString report = QString::fromUtf8(p.readAllStandardOutput()).simplified();
+  EXPECT_TRUE(report.contains(QStringLiteral("720 points of a radial-only circular test")))
+      << report.toStdString();
+  EXPECT_TRUE(report.contains(QStringLiteral("ISO 230-4 results")));
+  EXPECT_TRUE(report.contains(QStringLiteral("largest circular deviation G 4.0 µm"))) << report.toStdString();
+  EXPECT_TRUE(report.contains(QStringLiteral("Circular hysteresis H 1.5 µm")));
 }
 
 TEST(KinematicsPageEmpty, ProjectWithoutCircularTestShowsAMessage) {
