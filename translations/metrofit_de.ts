@@ -1419,7 +1419,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&amp;Antriebe</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+15"/>
         <source>C&amp;ircular test:</source>
         <translation>Kreisform&amp;test:</translation>
     </message>
@@ -1446,7 +1446,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+42"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -1579,7 +1579,8 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Bahn (XY)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-116"/>
+        <location line="+121"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>

@@ -1419,7 +1419,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&amp;Napędy</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+15"/>
         <source>C&amp;ircular test:</source>
         <translation>Test kołow&amp;y:</translation>
     </message>
@@ -1446,7 +1446,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+42"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -1580,7 +1580,8 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Tor (XY)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-116"/>
+        <location line="+121"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>

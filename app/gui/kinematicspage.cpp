@@ -241,6 +241,16 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   tabs_->addTab(actuators, tr("&Actuators"));
   stack_->addWidget(tabs_);
   stack_->addWidget(message_);
+  radialPage_ = new QWidget(this);
+  radialLabel_ = new QLabel(radialPage_);
+  radialLabel_->setObjectName(QStringLiteral("kinematicsRadialMessage"));
+  radialLabel_->setWordWrap(true);
+  radialLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  radialPolar_ = new PolarDeviationView(radialPage_);
+  auto* radialLayout = new QVBoxLayout(radialPage_);
+  radialLayout->addWidget(radialLabel_);
+  radialLayout->addWidget(radialPolar_, 1);
+  stack_->addWidget(radialPage_);
 
   auto* top = new QHBoxLayout;
   auto* comboLabel = new QLabel(tr("C&ircular test:"), this);
@@ -361,13 +371,24 @@ bool KinematicsPage::identify() {
     error_ = QString::fromStdString(e.what());
     info_->clear();
     QString text = tr("Cannot identify this circular test:\n%1").arg(error_);
-    // A radial-only (ballbar) test cannot be identified, but it has its ISO 230-4 results.
+    // A radial-only (ballbar) test cannot be identified, but it has its ISO 230-4 results and polar plot.
     if (const DatasetRef* ref = document_->project().dataset(id.toStdString())) {
       try {
         const CircularTrace trace = readCircularTrace(document_->datasetPath(*ref).toStdString(), ref->csv);
         if (trace.radialOnly) {
-          if (const QString iso = isoText(evaluateIso230_4(trace)); !iso.isEmpty())
-            text += QLatin1Char('\n') + iso;
+          const CircularAnalysis a = analyseCircularTrace(trace);
+          if (const QString iso = isoText(a.iso); !iso.isEmpty()) text += QLatin1Char('\n') + iso;
+          PolarPlotData polar;
+          // The plot needs a radius to magnify around; a file without radius_mm is drawn on 100 mm.
+          polar.radiusMm = trace.nominalRadiusMm.value_or(100.0);
+          polar.loops = a.loops;
+          polar.title = tr("Radial deviation (polar, magnified)");
+          radialPolar_->setData(polar);
+          radialLabel_->setText(text);
+          message_->setText(text);
+          stack_->setCurrentWidget(radialPage_);
+          updateButtons();
+          return false;
         }
       } catch (const std::exception&) {
         // The message above names the problem.
@@ -381,6 +402,10 @@ bool KinematicsPage::identify() {
   showStudy();
   updateButtons();
   return true;
+}
+
+QWidget* KinematicsPage::currentView() const {
+  return stack_->currentWidget();
 }
 
 /// One line of ISO 230-4 results (core/kinematics/iso230_4.h) in µm: G and F per direction, H.

@@ -214,6 +214,17 @@ TEST_F(KinematicsPageTest, RadialOnlyTestSaysWhyItCannotBeIdentifiedAndShowsItsI
   EXPECT_TRUE(message.contains(QStringLiteral("ISO 230-4: CCW: G 4.00 µm"))) << message.toStdString();
   EXPECT_TRUE(message.contains(QStringLiteral("CW: G 4.00 µm"))) << message.toStdString();
   EXPECT_TRUE(message.contains(QStringLiteral("H 1.50 µm"))) << message.toStdString();
+  // Instead of the tabs: the message and the polar plot of both runs (drawn on 100 mm: no radius_mm).
+  ASSERT_NE(page.radialPolarView(), nullptr);
+  EXPECT_EQ(page.currentView(), page.radialPolarView()->parentWidget());
+  const PolarPlotData& polar = page.radialPolarView()->data();
+  ASSERT_EQ(polar.loops.size(), 2u);
+  EXPECT_TRUE(polar.loops[0].counterClockwise);
+  EXPECT_FALSE(polar.loops[1].counterClockwise);
+  EXPECT_EQ(polar.loops[1].points.size(), 360u);
+  EXPECT_EQ(polar.radiusMm, 100.0);
+  page.resize(900, 600);
+  save(page, "kinematics_radial_only.png");
   EXPECT_FALSE(page.compensateButton()->isEnabled());
 
   // As the kinematics study's test, the report shows its ISO 230-4 results and says why there is no
