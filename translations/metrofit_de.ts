@@ -1125,12 +1125,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+355"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+358"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-95"/>
         <source>measured, CCW loop</source>
         <translation>gemessen, Umlauf gegen den Uhrzeigersinn</translation>
     </message>
@@ -1145,12 +1145,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>erwartet nach Kompensation</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>nominal R %1 mm</source>
         <translation>Nenn-R %1 mm</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+1"/>
+        <source>nominal circle (radius not in the file, drawn as %1 mm)</source>
+        <translation>Nennkreis (Radius nicht in der Datei, gezeichnet mit %1 mm)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>plotted radius = R + k × radial deviation, k = %1; rings every %2 µm</source>
         <translation>dargestellter Radius = R + k × radiale Abweichung, k = %1; Ringe alle %2 µm</translation>
     </message>
@@ -1446,7 +1451,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 %1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -3296,12 +3301,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+294"/>
+        <location line="+295"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-280"/>
         <source>Compensation</source>
         <translation>Kompensation</translation>
     </message>
@@ -3632,7 +3637,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 Punkte eines rein radialen Kreisformtests (Winkel und radiale Abweichung, wie Ballbar-Software sie exportiert); %2 Schleifen. Er hat keine Soll- und Ist-Koordinaten x/y, daher lassen sich die Antriebsfehler daraus nicht identifizieren und es wird keine Kompensation berechnet; es folgen seine Ergebnisse nach ISO 230-4.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Circular test %1 (radial only): largest circular deviation G %2 µm.</source>
         <translation>Kreisformtest %1 (nur radial): größte Kreisformabweichung G %2 µm.</translation>
     </message>

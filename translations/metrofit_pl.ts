@@ -1125,12 +1125,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+355"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+358"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-95"/>
         <source>measured, CCW loop</source>
         <translation>zmierzony, pętla przeciwnie do ruchu wskazówek zegara</translation>
     </message>
@@ -1145,12 +1145,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>oczekiwany po kompensacji</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>nominal R %1 mm</source>
         <translation>nominalny R %1 mm</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+1"/>
+        <source>nominal circle (radius not in the file, drawn as %1 mm)</source>
+        <translation>okrąg nominalny (promienia brak w pliku, narysowany jako %1 mm)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>plotted radius = R + k × radial deviation, k = %1; rings every %2 µm</source>
         <translation>promień na wykresie = R + k × odchyłka promieniowa, k = %1; okręgi co %2 µm</translation>
     </message>
@@ -1446,7 +1451,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 %1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -3299,12 +3304,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+294"/>
+        <location line="+295"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-280"/>
         <source>Compensation</source>
         <translation>Kompensacja</translation>
     </message>
@@ -3635,7 +3640,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>%1 punktów testu okrągłości tylko z odchyłkami promieniowymi (kąt i odchyłka promieniowa, tak jak eksportuje je oprogramowanie ballbar); pętle: %2. Test nie ma zadanych i zmierzonych współrzędnych x/y, więc nie można z niego zidentyfikować błędów napędów i nie oblicza się kompensacji; poniżej jego wyniki według ISO 230-4.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Circular test %1 (radial only): largest circular deviation G %2 µm.</source>
         <translation>Test okrągłości %1 (tylko promieniowy): największa odchyłka kołowości G %2 µm.</translation>
     </message>

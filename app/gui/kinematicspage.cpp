@@ -381,6 +381,7 @@ bool KinematicsPage::identify() {
           PolarPlotData polar;
           // The plot needs a radius to magnify around; a file without radius_mm is drawn on 100 mm.
           polar.radiusMm = trace.nominalRadiusMm.value_or(100.0);
+          polar.radiusKnown = trace.nominalRadiusMm.has_value();
           polar.loops = a.loops;
           polar.title = tr("Radial deviation (polar, magnified)");
           radialPolar_->setData(polar);

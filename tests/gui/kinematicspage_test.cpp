@@ -223,6 +223,7 @@ TEST_F(KinematicsPageTest, RadialOnlyTestSaysWhyItCannotBeIdentifiedAndShowsItsI
   EXPECT_FALSE(polar.loops[1].counterClockwise);
   EXPECT_EQ(polar.loops[1].points.size(), 360u);
   EXPECT_EQ(polar.radiusMm, 100.0);
+  EXPECT_FALSE(polar.radiusKnown);  // the legend says the radius is only the drawing's
   page.resize(900, 600);
   save(page, "kinematics_radial_only.png");
   EXPECT_FALSE(page.compensateButton()->isEnabled());

@@ -447,6 +447,7 @@ void writeRadialTest(ReportPainter& out, const ReportContext& context, const Rad
   PolarPlotData polar;
   // The plot needs a radius to draw the deviations around; a file without radius_mm is drawn on 100 mm.
   polar.radiusMm = t.trace.nominalRadiusMm.value_or(100.0);
+  polar.radiusKnown = t.trace.nominalRadiusMm.has_value();
   polar.loops = a.loops;
   polar.title = ReportText::tr("Radial deviation (polar, magnified)");
   polar.autoScale();
