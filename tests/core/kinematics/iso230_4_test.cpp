@@ -127,6 +127,29 @@ TEST(Iso230_4, LoopsRadiallyApartByHGiveHysteresisH) {
   EXPECT_GT(bound, 1e-7);  // the bound is the interpolation's, not a tolerance for nothing
 }
 
+TEST(Iso230_4, HysteresisIsNotInterpolatedAcrossAPartialArcsGap) {
+  // CCW: a full loop of radius R + A cos 3t; CW: only the half 180 -> 0 deg, h further out. Where both
+  // exist the difference is h; interpolating the CW arc across its 180 deg gap would compare the CCW
+  // radius at 240 deg (R + A) with the mean of the CW ends (R + h), a difference |A - h| = 2 um here.
+  const double r = 100.0, amp = 0.003, h = 0.001;
+  MeasuredPath p;
+  p.source = "arc.csv";
+  for (int k = 0; k < 360; ++k) {
+    p.command.push_back(r * unit(k));
+    p.measured.push_back((r + amp * std::cos(3.0 * k * kPi / 180.0)) * unit(k));
+  }
+  for (int k = 180; k >= 0; --k) {
+    p.command.push_back(r * unit(k));
+    p.measured.push_back((r + amp * std::cos(3.0 * k * kPi / 180.0) + h) * unit(k));
+  }
+  const Iso230Result iso = evaluateIso230_4(circularTraceOf(p));
+  ASSERT_EQ(iso.directions.size(), 2u);
+  ASSERT_TRUE(iso.circularHysteresisMm);
+  // One LSQ centre of both: the half arc pulls it off the origin, but at the same angle both radii move
+  // alike (to first order), so the difference stays h.
+  EXPECT_NEAR(*iso.circularHysteresisMm, h, 1e-6);
+}
+
 TEST(Iso230_4, OneDirectionHasNoHysteresis) {
   MeasuredPath p;
   p.source = "ccw.csv";
