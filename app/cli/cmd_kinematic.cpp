@@ -537,20 +537,6 @@ void registerKinematicCommands(CLI::App& app) {
   addOut(id, a->out);
   id->callback([a] { selectRunner([a]() -> int { return runIdentify(*a); }); });
 
-  auto ci = std::make_shared<IdentifyArgs>();
-  auto* circular = kin->add_subcommand(
-      "circular",
-      "ISO 230-4 results (circular deviation G, hysteresis H, radial deviation F) of a circular test");
-  existingFile(
-      circular
-          ->add_option("--data", ci->data,
-                       "Circular test (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, or the radial-only "
-                       "form angle_deg,deviation_um)")
-          ->required());
-  addCsvOptions(circular);
-  addOut(circular, ci->out);
-  circular->callback([ci] { selectRunner([ci]() -> int { return runCircular(*ci); }); });
-
   auto b = std::make_shared<CompensateArgs>();
   auto* comp = kin->add_subcommand("compensate", "Compensated references for a nominal path");
   existingFile(comp->add_option("--errors", b->errors, "Errors (JSON written by identify)")->required());
@@ -564,6 +550,20 @@ void registerKinematicCommands(CLI::App& app) {
       ->check(positiveNumber())
       ->capture_default_str();
   comp->callback([b] { selectRunner([b]() -> int { return runCompensate(*b); }); });
+
+  auto ci = std::make_shared<IdentifyArgs>();
+  auto* circular = kin->add_subcommand(
+      "circular",
+      "ISO 230-4 results (circular deviation G, hysteresis H, radial deviation F) of a circular test");
+  existingFile(
+      circular
+          ->add_option("--data", ci->data,
+                       "Circular test (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, or the radial-only "
+                       "form angle_deg,deviation_um)")
+          ->required());
+  addCsvOptions(circular);
+  addOut(circular, ci->out);
+  circular->callback([ci] { selectRunner([ci]() -> int { return runCircular(*ci); }); });
 
   auto c = std::make_shared<Identify3Args>();
   auto* id3 = kin->add_subcommand(
