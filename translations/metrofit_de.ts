@@ -921,6 +921,36 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>gemessene Koordinate in mm</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>angle of a radial-only circular test in deg</source>
+        <translation>Winkel eines rein radialen Kreisformtests in Grad</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>radial deviation in µm (radial-only circular test)</source>
+        <translation>radiale Abweichung in µm (rein radialer Kreisformtest)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>radial deviation in mm (radial-only circular test)</source>
+        <translation>radiale Abweichung in mm (rein radialer Kreisformtest)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>direction of travel: ccw or cw</source>
+        <translation>Fahrtrichtung: ccw (Gegenuhrzeigersinn) oder cw (Uhrzeigersinn)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run number</source>
+        <translation>Laufnummer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal radius in mm</source>
+        <translation>Nennradius in mm</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>part number</source>
         <translation>Teilenummer</translation>
@@ -957,12 +987,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+22"/>
-        <location line="+154"/>
+        <location line="+158"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-138"/>
+        <location line="-142"/>
         <source>&amp;Import</source>
         <translation>&amp;Importieren</translation>
     </message>
@@ -1042,7 +1072,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Vorschau (erste %1 Zeilen)</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+95"/>
         <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
         <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Alle Dateien (*)</translation>
     </message>
@@ -1095,12 +1125,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+355"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+358"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-95"/>
         <source>measured, CCW loop</source>
         <translation>gemessen, Umlauf gegen den Uhrzeigersinn</translation>
     </message>
@@ -1115,12 +1145,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>erwartet nach Kompensation</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>nominal R %1 mm</source>
         <translation>Nenn-R %1 mm</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+1"/>
+        <source>nominal circle (radius not in the file, drawn as %1 mm)</source>
+        <translation>Nennkreis (Radius nicht in der Datei, gezeichnet mit %1 mm)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>plotted radius = R + k × radial deviation, k = %1; rings every %2 µm</source>
         <translation>dargestellter Radius = R + k × radiale Abweichung, k = %1; Ringe alle %2 µm</translation>
     </message>
@@ -1248,7 +1283,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+148"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+149"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -1389,7 +1424,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&amp;Antriebe</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+15"/>
         <source>C&amp;ircular test:</source>
         <translation>Kreisform&amp;test:</translation>
     </message>
@@ -1415,8 +1450,33 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Dieser Kreisformtest kann nicht identifiziert werden:
 %1</translation>
     </message>
+    <message>
+        <location line="+43"/>
+        <source>%1: G %2 µm, F %3 … %4 µm</source>
+        <translation>%1: G %2 µm, F %3 … %4 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CCW</source>
+        <translation>GUZ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>UZ</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>H %1 µm</source>
+        <translation>H %1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ISO 230-4: %1</source>
+        <translation>ISO 230-4: %1</translation>
+    </message>
     <message numerus="yes">
-        <location line="+13"/>
+        <location line="+6"/>
         <source>%1 points, nominal circle R %2 mm about (%3, %4) mm; %n loop(s).</source>
         <translation>
             <numerusform>%1 Punkte, Nennkreis R %2 mm um (%3, %4) mm; %n Umlauf.</numerusform>
@@ -1424,7 +1484,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Effects applied on the Diagnosis page belong to the circular test %1 (the one the diagnosis ran on); this test uses the declared model.</source>
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zum Kreisformtest %1 (auf dem die Diagnose lief); dieser Test verwendet das deklarierte Modell.</translation>
     </message>
@@ -1524,7 +1584,8 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Bahn (XY)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-116"/>
+        <location line="+121"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
@@ -2979,7 +3040,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+224"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+256"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>ja</translation>
@@ -3102,13 +3163,13 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Für jede Studie wird das deklarierte Modell angepasst und sein Residuum berechnet; Kandidateneffekte, die dem Modell fehlen, werden einzeln getestet und jeweils mit ihren Parametern und deren Standardfehlern geschätzt. Ein Effekt wird nur bei ausreichender Evidenz übernommen (Verbesserung auf den Testdaten bei Thermik, sonst ein Informationskriterium mit konservativer Schwelle) und wenn er den Fehler praktisch relevant verringert; das Modell wird mit ihm neu angepasst und die Suche wiederholt, bis nichts mehr gefunden wird.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
-        <location line="+224"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-202"/>
+        <location line="+254"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="-254"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -3124,46 +3185,102 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+227"/>
+        <location line="+257"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-225"/>
-        <location line="+227"/>
+        <location line="-255"/>
+        <location line="+257"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-225"/>
-        <location line="+226"/>
+        <location line="-255"/>
+        <location line="+256"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-254"/>
+        <location line="+256"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-254"/>
+        <location line="+256"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="-254"/>
         <source>RMS residual (µm)</source>
         <translation>RMS-Residuum (µm)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
+        <source>ISO 230-4 results</source>
+        <translation>Ergebnisse nach ISO 230-4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Per direction: the circular deviation G (radial range about the path&apos;s own least-squares centre) and the radial deviation F (largest and smallest deviation from the nominal radius about the nominal centre).</source>
+        <translation>Je Richtung: die Kreisformabweichung G (radiale Spanne um den eigenen Ausgleichskreismittelpunkt der Bahn) und die Radialabweichung F (größte und kleinste Abweichung vom Nennradius um den Nennmittelpunkt).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>direction</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>G (µm)</source>
+        <translation>G (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>F max (µm)</source>
+        <translation>F max (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>F min (µm)</source>
+        <translation>F min (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>LSQ centre (mm)</source>
+        <translation>Ausgleichskreismittelpunkt (mm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CCW</source>
+        <translation>GUZ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>UZ</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Circular hysteresis H (largest radial difference between the CW and the CCW path at the same angle, about one least-squares centre): %1 µm.</source>
+        <translation>Umkehrspanne H (größte radiale Differenz zwischen der Bahn im Uhrzeigersinn und der im Gegenuhrzeigersinn beim selben Winkel, um einen gemeinsamen Ausgleichskreismittelpunkt): %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Circular hysteresis H: not available (the test has one direction only).</source>
+        <translation>Umkehrspanne H: nicht verfügbar (der Test hat nur eine Richtung).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+331"/>
         <source>Circular test “%1”</source>
         <translation>Kreisformtest „%1“</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-323"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 Punkte; Nennkreis R %2 mm um (%3, %4) mm; %5 Umläufe (gegen, dann mit dem Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (%8, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt bestimmt (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
     </message>
@@ -3184,11 +3301,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+295"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-280"/>
         <source>Compensation</source>
         <translation>Kompensation</translation>
     </message>
@@ -3514,12 +3632,37 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Rechtwinkligkeit XY %1°, YZ %2°, ZX %3° (Kreisformtests in drei Ebenen).</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
+        <source>%1 points of a radial-only circular test (angle and radial deviation, as ballbar software exports it); %2 loops. It has no commanded and measured x/y coordinates, so the actuator errors cannot be identified from it and no compensation is computed; its ISO 230-4 results follow.</source>
+        <translation>%1 Punkte eines rein radialen Kreisformtests (Winkel und radiale Abweichung, wie Ballbar-Software sie exportiert); %2 Schleifen. Er hat keine Soll- und Ist-Koordinaten x/y, daher lassen sich die Antriebsfehler daraus nicht identifizieren und es wird keine Kompensation berechnet; es folgen seine Ergebnisse nach ISO 230-4.</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Circular test %1 (radial only): largest circular deviation G %2 µm.</source>
+        <translation>Kreisformtest %1 (nur radial): größte Kreisformabweichung G %2 µm.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Circular hysteresis H %1 µm.</source>
+        <translation>Umkehrspanne H %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The test gives the ISO 230-4 results only: a radial-only test cannot identify the actuator errors.</source>
+        <translation>Der Test liefert nur die Ergebnisse nach ISO 230-4: ein rein radialer Test kann die Antriebsfehler nicht identifizieren.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>To identify and compensate the actuator errors, record the circular test with commanded and measured x/y coordinates.</source>
+        <translation>Um die Antriebsfehler zu identifizieren und zu kompensieren, den Kreisformtest mit Soll- und Ist-Koordinaten x/y aufzeichnen.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Kinematic compensation and SPC</source>
         <translation>Kinematische Kompensation und SPC</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+27"/>
         <source>Cannot analyse the circular test: %1</source>
         <translation>Der Kreisformtest kann nicht ausgewertet werden: %1</translation>
     </message>

@@ -921,6 +921,36 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>współrzędna zmierzona w mm</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>angle of a radial-only circular test in deg</source>
+        <translation>kąt testu okrągłości tylko z odchyłkami promieniowymi w stopniach</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>radial deviation in µm (radial-only circular test)</source>
+        <translation>odchyłka promieniowa w µm (test okrągłości tylko promieniowy)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>radial deviation in mm (radial-only circular test)</source>
+        <translation>odchyłka promieniowa w mm (test okrągłości tylko promieniowy)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>direction of travel: ccw or cw</source>
+        <translation>kierunek ruchu: ccw (przeciwnie do wskazówek zegara) lub cw (zgodnie)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run number</source>
+        <translation>numer przebiegu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal radius in mm</source>
+        <translation>promień nominalny w mm</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>part number</source>
         <translation>numer części</translation>
@@ -957,12 +987,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+22"/>
-        <location line="+154"/>
+        <location line="+158"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-138"/>
+        <location line="-142"/>
         <source>&amp;Import</source>
         <translation>&amp;Importuj</translation>
     </message>
@@ -1042,7 +1072,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Podgląd (pierwsze %1 wierszy)</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+95"/>
         <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
         <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Wszystkie pliki (*)</translation>
     </message>
@@ -1095,12 +1125,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+355"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+358"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-95"/>
         <source>measured, CCW loop</source>
         <translation>zmierzony, pętla przeciwnie do ruchu wskazówek zegara</translation>
     </message>
@@ -1115,12 +1145,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>oczekiwany po kompensacji</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>nominal R %1 mm</source>
         <translation>nominalny R %1 mm</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+1"/>
+        <source>nominal circle (radius not in the file, drawn as %1 mm)</source>
+        <translation>okrąg nominalny (promienia brak w pliku, narysowany jako %1 mm)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>plotted radius = R + k × radial deviation, k = %1; rings every %2 µm</source>
         <translation>promień na wykresie = R + k × odchyłka promieniowa, k = %1; okręgi co %2 µm</translation>
     </message>
@@ -1248,7 +1283,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+148"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+149"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identyfikuj</translation>
     </message>
@@ -1389,7 +1424,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&amp;Napędy</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+15"/>
         <source>C&amp;ircular test:</source>
         <translation>Test kołow&amp;y:</translation>
     </message>
@@ -1415,8 +1450,33 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można zidentyfikować tego testu kołowego:
 %1</translation>
     </message>
+    <message>
+        <location line="+43"/>
+        <source>%1: G %2 µm, F %3 … %4 µm</source>
+        <translation>%1: G %2 µm, F %3 … %4 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CCW</source>
+        <translation>CCW</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>CW</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>H %1 µm</source>
+        <translation>H %1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ISO 230-4: %1</source>
+        <translation>ISO 230-4: %1</translation>
+    </message>
     <message numerus="yes">
-        <location line="+13"/>
+        <location line="+6"/>
         <source>%1 points, nominal circle R %2 mm about (%3, %4) mm; %n loop(s).</source>
         <translation>
             <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3, %4) mm; %n pętla.</numerusform>
@@ -1425,7 +1485,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Effects applied on the Diagnosis page belong to the circular test %1 (the one the diagnosis ran on); this test uses the declared model.</source>
         <translation>Efekty zastosowane na stronie Diagnoza należą do testu kołowego %1 (tego, na którym przeprowadzono diagnozę); ten test używa zadeklarowanego modelu.</translation>
     </message>
@@ -1525,7 +1585,8 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Tor (XY)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-116"/>
+        <location line="+121"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
@@ -2982,7 +3043,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+224"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+256"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>tak</translation>
@@ -3105,13 +3166,13 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dla każdego studium dopasowywany jest zadeklarowany model i obliczane jego residuum; brakujące w modelu efekty kandydujące są sprawdzane kolejno, każdy estymowany wraz z parametrami i ich błędami standardowymi. Efekt jest przyjmowany tylko na podstawie dowodów (poprawa na danych testowych dla termiki, w pozostałych przypadkach kryterium informacyjne z ostrożnym progiem) i gdy zmniejsza błąd o praktycznie istotną wartość; model jest ponownie dopasowywany z tym efektem, a wyszukiwanie powtarzane, dopóki nic więcej nie zostanie znalezione.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-172"/>
-        <location line="+224"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-202"/>
+        <location line="+254"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="-254"/>
         <source>identified</source>
         <translation>zidentyfikowany</translation>
     </message>
@@ -3127,46 +3188,102 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+227"/>
+        <location line="+257"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-225"/>
-        <location line="+227"/>
+        <location line="-255"/>
+        <location line="+257"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-225"/>
-        <location line="+226"/>
+        <location line="-255"/>
+        <location line="+256"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-254"/>
+        <location line="+256"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+226"/>
+        <location line="-254"/>
+        <location line="+256"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="-254"/>
         <source>RMS residual (µm)</source>
         <translation>residuum RMS (µm)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
+        <source>ISO 230-4 results</source>
+        <translation>Wyniki według ISO 230-4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Per direction: the circular deviation G (radial range about the path&apos;s own least-squares centre) and the radial deviation F (largest and smallest deviation from the nominal radius about the nominal centre).</source>
+        <translation>Dla każdego kierunku: odchyłka kołowości G (rozstęp promieni wokół środka okręgu średniokwadratowego danej ścieżki) i odchyłka promieniowa F (największa i najmniejsza odchyłka od promienia nominalnego wokół środka nominalnego).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>direction</source>
+        <translation>kierunek</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>G (µm)</source>
+        <translation>G (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>F max (µm)</source>
+        <translation>F maks. (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>F min (µm)</source>
+        <translation>F min. (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>LSQ centre (mm)</source>
+        <translation>środek okręgu LSQ (mm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CCW</source>
+        <translation>CCW</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>CW</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Circular hysteresis H (largest radial difference between the CW and the CCW path at the same angle, about one least-squares centre): %1 µm.</source>
+        <translation>Histereza kołowa H (największa różnica promieniowa między ścieżką CW i CCW przy tym samym kącie, wokół jednego wspólnego środka okręgu średniokwadratowego): %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Circular hysteresis H: not available (the test has one direction only).</source>
+        <translation>Histereza kołowa H: niedostępna (test ma tylko jeden kierunek).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+331"/>
         <source>Circular test “%1”</source>
         <translation>Test kołowy „%1”</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-323"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 punktów; okrąg nominalny R %2 mm wokół (%3, %4) mm; %5 pętli (przeciwnie, potem zgodnie z ruchem wskazówek zegara). Błędy napędów maszyny kartezjańskiej (%8, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wyznaczono metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
     </message>
@@ -3187,11 +3304,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+295"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-280"/>
         <source>Compensation</source>
         <translation>Kompensacja</translation>
     </message>
@@ -3517,12 +3635,37 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Prostopadłość XY %1°, YZ %2°, ZX %3° (testy kołowe w trzech płaszczyznach).</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
+        <source>%1 points of a radial-only circular test (angle and radial deviation, as ballbar software exports it); %2 loops. It has no commanded and measured x/y coordinates, so the actuator errors cannot be identified from it and no compensation is computed; its ISO 230-4 results follow.</source>
+        <translation>%1 punktów testu okrągłości tylko z odchyłkami promieniowymi (kąt i odchyłka promieniowa, tak jak eksportuje je oprogramowanie ballbar); pętle: %2. Test nie ma zadanych i zmierzonych współrzędnych x/y, więc nie można z niego zidentyfikować błędów napędów i nie oblicza się kompensacji; poniżej jego wyniki według ISO 230-4.</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Circular test %1 (radial only): largest circular deviation G %2 µm.</source>
+        <translation>Test okrągłości %1 (tylko promieniowy): największa odchyłka kołowości G %2 µm.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Circular hysteresis H %1 µm.</source>
+        <translation>Histereza kołowa H %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The test gives the ISO 230-4 results only: a radial-only test cannot identify the actuator errors.</source>
+        <translation>Test daje tylko wyniki według ISO 230-4: test wyłącznie promieniowy nie pozwala zidentyfikować błędów napędów.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>To identify and compensate the actuator errors, record the circular test with commanded and measured x/y coordinates.</source>
+        <translation>Aby zidentyfikować i skompensować błędy napędów, zarejestruj test okrągłości z zadanymi i zmierzonymi współrzędnymi x/y.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Kinematic compensation and SPC</source>
         <translation>Kompensacja kinematyczna i SPC</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+27"/>
         <source>Cannot analyse the circular test: %1</source>
         <translation>Nie można przeanalizować testu okrągłości: %1</translation>
     </message>

@@ -1,13 +1,17 @@
 // metrofit-cli kinematic identify|compensate (docs/file-formats.md#kinematic-identify-result) and the
 // kinematic simulators.
 //   identify   --data C.csv [--out E.json]
+//       the JSON also has "iso230_4": the ISO 230-4 results of the test (core/kinematics/iso230_4.h)
+//   circular   --data C.csv [--out R.json]
+//       the ISO 230-4 results (G, H, F per direction) of a circular test in either form: x/y or the
+//       radial-only form a ballbar exports (angle_deg, deviation_um | deviation_mm, ...)
 //   identify3  --xy C1.csv --yz C2.csv --zx C3.csv [--out E3.json]
 //       the three-axis actuator errors from circular tests in three planes (identification3.h)
 //   compensate3 --errors3 E3.json --path N.csv [--out F.csv]
 //       Eq. 15 in three axes: references x_cmd_mm,y_cmd_mm,z_cmd_mm for a nominal path x_mm,y_mm,z_mm
 //   from-spc   --x-data X.csv --y-data Y.csv [--position-column C] [--deviation-column C]
 //              [--x-nominal-y Y0] [--y-nominal-x X0] [--subgroup N] [--coverage K]
-//              [--path N.csv --references F.csv] [--out E.json]
+//              [--path N.csv --references F.csv] [--dfq F.dfq] [--out E.json]
 //       the SPC regression offset angles of two edges -> actuator errors -> compensation
 //       (spc_actuator.h); E.json is readable by `compensate --errors`
 //   compensate --errors E.json --path N.csv [--out F.csv] [--gcode F.nc] [--step-nc F.p21]
@@ -43,12 +47,14 @@
 #include "core/common/rng.h"
 #include "core/common/run.h"
 #include "core/io/csv.h"
+#include "core/io/dfq.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/kinematics/cartesian_model.h"
 #include "core/kinematics/export.h"
 #include "core/kinematics/identification.h"
 #include "core/kinematics/identification3.h"
+#include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
 #include "core/kinematics/spc_actuator.h"
 #include "core/sim/circular_sim.h"
@@ -86,7 +92,9 @@ int runIdentify(const IdentifyArgs& a) {
   if (r.run.termination == Termination::Failed) {
     throw std::runtime_error("identification failed on " + a.data + ": " + r.run.message);
   }
-  writeResult(a.out, dumpJson(identifyResultToJson(r)));
+  nlohmann::json j = identifyResultToJson(r);
+  j["iso230_4"] = iso230ResultToJson(evaluateIso230_4(circularTraceOf(path)));
+  writeResult(a.out, dumpJson(j));
   const ActuatorErrors2& e = r.errors;
   std::fprintf(
       stderr,
@@ -96,6 +104,35 @@ int runIdentify(const IdentifyArgs& a) {
       g(e.yAxisAngleDeg).c_str(), g(e.squarenessDeg()).c_str(), g(r.squarenessStdErrDeg, "%.2g").c_str(),
       g(r.rmseMm, "%.3g").c_str(), r.run.iterations, r.run.iterations == 1 ? "" : "s",
       toString(r.run.termination));
+  return 0;
+}
+
+std::string isoSummary(const Iso230Result& iso) {
+  std::string out;
+  for (const Iso230Direction& d : iso.directions) {
+    out += std::string(out.empty() ? "" : "; ") + (d.counterClockwise ? "CCW" : "CW") + " G " +
+           g(d.circularDeviationMm * 1000.0, "%.3g") + " um, F " +
+           g(d.radialDeviationMinMm * 1000.0, "%.3g") + ".." + g(d.radialDeviationMaxMm * 1000.0, "%.3g") +
+           " um";
+  }
+  if (iso.circularHysteresisMm) out += "; H " + g(*iso.circularHysteresisMm * 1000.0, "%.3g") + " um";
+  return out;
+}
+
+int runCircular(const IdentifyArgs& a) {
+  const CircularTrace trace = readCircularTrace(a.data, csvOptions());
+  const Iso230Result iso = evaluateIso230_4(trace);
+  if (iso.directions.empty()) {
+    throw ValidationError(ErrorContext{a.data, 0, 0, {}},
+                          "no direction of the test has 3 points on a circle: no ISO 230-4 results");
+  }
+  nlohmann::json j;
+  j["form"] = trace.radialOnly ? "radial" : "xy";
+  j["points"] = trace.size();
+  j["iso230_4"] = iso230ResultToJson(iso);
+  writeResult(a.out, dumpJson(j));
+  std::fprintf(stderr, "kinematic circular: %zu points (%s form): %s\n", trace.size(),
+               trace.radialOnly ? "radial" : "x/y", isoSummary(iso).c_str());
   return 0;
 }
 
@@ -194,8 +231,28 @@ struct FromSpcArgs {
   double xNominalY = 0.0, yNominalX = 0.0;
   int subgroup = 5;
   double coverage = 2.0;
-  std::string path, references, out;
+  std::string path, references, out, dfq;
 };
+
+/// The two edges' deviations as two characteristics of a Q-DAS DFQ file (core/io/dfq.h).
+std::string edgesDfq(const FromSpcArgs& a, const AxisFeatureSeries& xf, const AxisFeatureSeries& yf) {
+  DfqPart part;
+  part.number = "from-spc";
+  part.description = "Edges machined along X (" + std::filesystem::path(a.xData).filename().string() +
+                     ") and along Y (" + std::filesystem::path(a.yData).filename().string() + ")";
+  const AxisFeatureSeries* series[2] = {&xf, &yf};
+  const char* names[2] = {"X edge", "Y edge"};
+  for (int i = 0; i < 2; ++i) {
+    DfqCharacteristic c;
+    c.number = std::string(names[i]) + " " + a.deviationColumn;
+    c.description = std::string(names[i]) + ": deviation across the axis (measured - nominal)";
+    c.nominal = 0.0;
+    c.unit = "mm";
+    c.values = series[i]->deviationMm;
+    part.characteristics.push_back(std::move(c));
+  }
+  return writeDfq(part);
+}
 
 int runFromSpc(const FromSpcArgs& a) {
   if (a.references.empty() != a.path.empty()) {
@@ -231,7 +288,9 @@ int runFromSpc(const FromSpcArgs& a) {
     j["compensation"]["references"] = a.references;
     j["compensation"]["largest_correction_mm"] = largest;
   }
+  const std::string dfq = a.dfq.empty() ? std::string() : edgesDfq(a, xf, yf);
   if (!a.references.empty()) writeFileAtomic(a.references, refs);
+  if (!a.dfq.empty()) writeFileAtomic(a.dfq, dfq);
   writeResult(a.out, dumpJson(j));
   const ActuatorErrors2& e = r.errors;
   std::fprintf(
@@ -492,6 +551,20 @@ void registerKinematicCommands(CLI::App& app) {
       ->capture_default_str();
   comp->callback([b] { selectRunner([b]() -> int { return runCompensate(*b); }); });
 
+  auto ci = std::make_shared<IdentifyArgs>();
+  auto* circular = kin->add_subcommand(
+      "circular",
+      "ISO 230-4 results (circular deviation G, hysteresis H, radial deviation F) of a circular test");
+  existingFile(
+      circular
+          ->add_option("--data", ci->data,
+                       "Circular test (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, or the radial-only "
+                       "form angle_deg,deviation_um)")
+          ->required());
+  addCsvOptions(circular);
+  addOut(circular, ci->out);
+  circular->callback([ci] { selectRunner([ci]() -> int { return runCircular(*ci); }); });
+
   auto c = std::make_shared<Identify3Args>();
   auto* id3 = kin->add_subcommand(
       "identify3", "Identify the three-axis actuator errors from circular tests in the XY, YZ and ZX planes");
@@ -542,6 +615,8 @@ void registerKinematicCommands(CLI::App& app) {
   existingFile(fs->add_option("--path", d->path, "Nominal path to compensate (CSV x_mm,y_mm)"));
   fs->add_option("--references", d->references,
                  "Compensated references of --path (CSV x_cmd_mm,y_cmd_mm; atomic)");
+  fs->add_option("--dfq", d->dfq,
+                 "Also write the two edges' deviations as a Q-DAS DFQ file (two characteristics; atomic)");
   addCsvOptions(fs);
   addOut(fs, d->out);
   fs->callback([d] { selectRunner([d]() -> int { return runFromSpc(*d); }); });

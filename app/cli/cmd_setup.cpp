@@ -7,6 +7,8 @@
 //
 // heidenhain-table: the control's current preset or tool table (saved from the control) with the
 // corrections added to its cells, for import (core/setup/export.h updateHeidenhainTable).
+//         [--dfq F.dfq]: also the measured features as a Q-DAS DFQ file (core/io/dfq.h), one
+//         characteristic per measured dimension
 //
 // Reads the relation-graph model (core/setup/model.h) and the measurement reports (CSV of
 // docs/file-formats.md#cmm-report-series or DMIS output, core/setup/report.h), corrects the setup data with
@@ -34,6 +36,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,6 +46,7 @@
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
+#include "core/io/dfq.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/setup/exact.h"
@@ -58,7 +62,7 @@ namespace metrofit::cli {
 namespace {
 
 struct SetupArgs {
-  std::string model, method = "exact", out, exportFormat, exportOut, exportTable, toolOffset = "wear";
+  std::string model, method = "exact", out, exportFormat, exportOut, exportTable, toolOffset = "wear", dfq;
   int programNumber = setup::ExportOptions{}.programNumber;
   std::vector<std::string> data;
   long budget = setup::kPaperBudget;
@@ -126,6 +130,37 @@ nlohmann::json certificateJson(const setup::ExactCertificate& c) {
           {"least_norm_rounds", c.normRounds},
           {"cuts", c.cuts},
           {"solver_calls", c.solverCalls}};
+}
+
+/// The measured features of the report series as a Q-DAS DFQ file: one characteristic per model dimension
+/// that was measured, its values in report order. With a nominal in the model the values are the measured
+/// sizes and the limits nominal + lower / upper; without one the values are the deviations (measured -
+/// nominal) with nominal 0 and the limits lower / upper.
+std::string measurementsDfq(const setup::Model& model, const setup::Measurements& meas, const SetupArgs& a) {
+  DfqPart part;
+  part.number = std::filesystem::path(a.model).stem().string();
+  part.description = "Metrofit measured features of " + std::to_string(meas.parts.size()) + " part(s)";
+  std::vector<DfqCharacteristic> byDimension(model.dimensions.size());
+  for (const auto& row : meas.rows) {
+    const setup::Dimension& d = model.dimensions[row.dimension];
+    byDimension[row.dimension].values.push_back(d.nominal ? *d.nominal + row.deviationMm : row.deviationMm);
+  }
+  for (std::size_t i = 0; i < model.dimensions.size(); ++i) {
+    DfqCharacteristic& c = byDimension[i];
+    if (c.values.empty()) continue;
+    const setup::Dimension& d = model.dimensions[i];
+    const double nominal = d.nominal.value_or(0.0);
+    c.number = d.id;
+    c.description = d.nominal ? d.id : d.id + " deviation (measured - nominal)";
+    c.nominal = nominal;
+    if (d.lower < d.upper) {  // a zero-width tolerance is no SPC limit pair
+      c.lowerLimit = nominal + d.lower;
+      c.upperLimit = nominal + d.upper;
+    }
+    c.unit = "mm";
+    part.characteristics.push_back(std::move(c));
+  }
+  return writeDfq(part);
 }
 
 int runSetup(const SetupArgs& a) {
@@ -258,6 +293,7 @@ int runSetup(const SetupArgs& a) {
       j["export"] = {{"format", a.exportFormat}, {"file", a.exportOut}};
     }
   }
+  if (!a.dfq.empty()) writeFileAtomic(a.dfq, measurementsDfq(model, meas, a));
   writeResult(a.out, dumpJson(j));
 
   std::string line = "setup: " + a.method + " on " + std::to_string(inst.dimensions()) + " dimensions of " +
@@ -444,6 +480,9 @@ void registerSetupCommand(CLI::App& app) {
                                "heidenhain-table: the control's current preset (.PR) or tool table (.T)"));
   sub->add_option("--program-number", a->programNumber, "Fanuc program number of --export fanuc (1..7999)")
       ->capture_default_str();
+  sub->add_option(
+      "--dfq", a->dfq,
+      "Also write the measured features as a Q-DAS DFQ file (one characteristic per dimension; atomic)");
   sub->add_option("--tool-offset", a->toolOffset, "Tool register of the exports: wear|geometry")
       ->check(CLI::IsMember({"wear", "geometry"}))
       ->capture_default_str();

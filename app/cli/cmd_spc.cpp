@@ -1,15 +1,21 @@
 // metrofit-cli spc: X-bar/R chart limits, capability indices and the SPC-gated
 // compensation decision of a measured feature.
 //   spc --data F.csv --column C --subgroup N [--lsl L --usl U] [--nominal X] [--coverage K] [--out J.json]
+//       [--dfq F.dfq [--dfq-part P]]: also the series as a Q-DAS DFQ file (core/io/dfq.h): one
+//       characteristic (the column) with its nominal, limits, unit (the column name's suffix) and values,
+//       the times from a `timestamp` column when the file has one
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
 #include "core/io/csv.h"
+#include "core/io/dfq.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/spc/spc.h"
@@ -18,7 +24,7 @@ namespace metrofit::cli {
 namespace {
 
 struct SpcArgs {
-  std::string data, column, out;
+  std::string data, column, out, dfq, dfqPart;
   int subgroup = 5;
   double lsl = 0.0, usl = 0.0, nominal = 0.0, coverage = 2.0;
   CLI::Option *lslOpt = nullptr, *uslOpt = nullptr, *nominalOpt = nullptr;
@@ -58,11 +64,52 @@ SpcOptions spcOptions(const SpcArgs& a) {
   return o;
 }
 
+/// The unit of a column from its name's suffix ("diameter_mm" -> "mm"), as ASCII; empty when none.
+std::string unitOf(const std::string& column) {
+  const auto pos = column.rfind('_');
+  if (pos == std::string::npos) return {};
+  const std::string u = column.substr(pos + 1);
+  for (const char* known : {"mm", "um", "deg", "s", "min", "h", "ppm"}) {
+    if (u == known) return u;
+  }
+  return {};
+}
+
+std::string seriesDfq(const SpcArgs& a, const CsvTable& table, const std::vector<double>& values,
+                      const SpcOptions& o) {
+  DfqPart part;
+  const std::string file = std::filesystem::path(a.data).filename().string();
+  part.number = a.dfqPart.empty() ? std::filesystem::path(a.data).stem().string() : a.dfqPart;
+  part.description = "Metrofit SPC series " + a.column + " of " + file;
+  DfqCharacteristic c;
+  c.number = a.column;
+  c.description = a.column + " (" + file + ")";
+  c.nominal = o.nominal;
+  c.lowerLimit = o.lsl;
+  c.upperLimit = o.usl;
+  c.unit = unitOf(a.column);
+  c.values = values;
+  if (const int t = table.columnIndex("timestamp"); t >= 0) {
+    for (std::size_t r = 0; r < table.rowCount(); ++r) {
+      const std::string& cell = table.cell(r, static_cast<std::size_t>(t));
+      const std::optional<std::string> q = qdasDateTime(cell);
+      if (!q) {
+        throw ParseError(ErrorContext{displayPath(a.data), table.lineOf(r), t + 1, "timestamp"},
+                         "'" + cell + "' is not a date-time YYYY-MM-DDTHH:MM[:SS]");
+      }
+      c.times.push_back(*q);
+    }
+  }
+  part.characteristics.push_back(std::move(c));
+  return writeDfq(part);
+}
+
 int runSpc(const SpcArgs& a) {
   const SpcOptions o = spcOptions(a);
   const CsvTable table = readCsvFile(a.data, csvOptions());
   const std::vector<double> values = table.numericColumn(a.column);
   const SpcResult r = analyseSpc(values, o, ErrorContext{displayPath(a.data), 0, 0, a.column});
+  if (!a.dfq.empty()) writeFileAtomic(a.dfq, seriesDfq(a, table, values, o));
   writeResult(a.out, dumpJson(spcResultToJson(r)));
   std::string line = "spc: column '" + a.column + "', " + std::to_string(r.chart.subgroups()) +
                      " subgroups of " + std::to_string(o.subgroupSize);
@@ -95,6 +142,10 @@ void registerSpcCommand(CLI::App& app) {
   sub->add_option("--coverage", a->coverage, "Coverage factor k of the interval of the mean")
       ->check(positiveNumber())
       ->capture_default_str();
+  sub->add_option("--dfq", a->dfq,
+                  "Also write the series as a Q-DAS DFQ file (K-field format SPC packages import; atomic)");
+  sub->add_option("--dfq-part", a->dfqPart,
+                  "Part number (K1001) of the DFQ file. Default: the data file's name");
   addOut(sub, a->out);
   sub->callback([a] { selectRunner([a]() -> int { return runSpc(*a); }); });
 }

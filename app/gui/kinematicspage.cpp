@@ -27,6 +27,7 @@
 #include "core/diagnose/applied_setup_matching.h"
 #include "core/io/file_io.h"
 #include "core/kinematics/export.h"
+#include "core/kinematics/iso230_4.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/diagnose/coretexts.h"
 #include "widgets/document/projectdocument.h"
@@ -240,6 +241,16 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   tabs_->addTab(actuators, tr("&Actuators"));
   stack_->addWidget(tabs_);
   stack_->addWidget(message_);
+  radialPage_ = new QWidget(this);
+  radialLabel_ = new QLabel(radialPage_);
+  radialLabel_->setObjectName(QStringLiteral("kinematicsRadialMessage"));
+  radialLabel_->setWordWrap(true);
+  radialLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  radialPolar_ = new PolarDeviationView(radialPage_);
+  auto* radialLayout = new QVBoxLayout(radialPage_);
+  radialLayout->addWidget(radialLabel_);
+  radialLayout->addWidget(radialPolar_, 1);
+  stack_->addWidget(radialPage_);
 
   auto* top = new QHBoxLayout;
   auto* comboLabel = new QLabel(tr("C&ircular test:"), this);
@@ -359,7 +370,32 @@ bool KinematicsPage::identify() {
   } catch (const std::exception& e) {
     error_ = QString::fromStdString(e.what());
     info_->clear();
-    message_->setText(tr("Cannot identify this circular test:\n%1").arg(error_));
+    QString text = tr("Cannot identify this circular test:\n%1").arg(error_);
+    // A radial-only (ballbar) test cannot be identified, but it has its ISO 230-4 results and polar plot.
+    if (const DatasetRef* ref = document_->project().dataset(id.toStdString())) {
+      try {
+        const CircularTrace trace = readCircularTrace(document_->datasetPath(*ref).toStdString(), ref->csv);
+        if (trace.radialOnly) {
+          const CircularAnalysis a = analyseCircularTrace(trace);
+          if (const QString iso = isoText(a.iso); !iso.isEmpty()) text += QLatin1Char('\n') + iso;
+          PolarPlotData polar;
+          // The plot needs a radius to magnify around; a file without radius_mm is drawn on 100 mm.
+          polar.radiusMm = trace.nominalRadiusMm.value_or(100.0);
+          polar.radiusKnown = trace.nominalRadiusMm.has_value();
+          polar.loops = a.loops;
+          polar.title = tr("Radial deviation (polar, magnified)");
+          radialPolar_->setData(polar);
+          radialLabel_->setText(text);
+          message_->setText(text);
+          stack_->setCurrentWidget(radialPage_);
+          updateButtons();
+          return false;
+        }
+      } catch (const std::exception&) {
+        // The message above names the problem.
+      }
+    }
+    message_->setText(text);
     stack_->setCurrentWidget(message_);
     updateButtons();
     return false;
@@ -367,6 +403,24 @@ bool KinematicsPage::identify() {
   showStudy();
   updateButtons();
   return true;
+}
+
+QWidget* KinematicsPage::currentView() const {
+  return stack_->currentWidget();
+}
+
+/// One line of ISO 230-4 results (core/kinematics/iso230_4.h) in µm: G and F per direction, H.
+QString KinematicsPage::isoText(const Iso230Result& iso) {
+  QStringList parts;
+  for (const Iso230Direction& d : iso.directions) {
+    parts << tr("%1: G %2 µm, F %3 … %4 µm")
+                 .arg(d.counterClockwise ? tr("CCW") : tr("CW"))
+                 .arg(d.circularDeviationMm * 1000.0, 0, 'f', 2)
+                 .arg(d.radialDeviationMinMm * 1000.0, 0, 'f', 2)
+                 .arg(d.radialDeviationMaxMm * 1000.0, 0, 'f', 2);
+  }
+  if (iso.circularHysteresisMm) parts << tr("H %1 µm").arg(*iso.circularHysteresisMm * 1000.0, 0, 'f', 2);
+  return parts.isEmpty() ? QString() : tr("ISO 230-4: %1").arg(parts.join(QStringLiteral("; ")));
 }
 
 void KinematicsPage::showStudy() {
@@ -379,6 +433,7 @@ void KinematicsPage::showStudy() {
                      .arg(mm4(s.analysis.centreMm.x()), mm4(s.analysis.centreMm.y()));
   if (!s.dataset.description.empty())
     info.prepend(QString::fromStdString(s.dataset.description) + QLatin1Char('\n'));
+  if (const QString iso = isoText(s.analysis.iso); !iso.isEmpty()) info += QLatin1Char('\n') + iso;
   if (const QString elsewhere = appliedElsewhere(document_->project(), "kinematic", s.dataset.id);
       !elsewhere.isEmpty()) {
     info += QLatin1Char('\n') +

@@ -30,6 +30,7 @@ class CircularPathView;
 class PolarDeviationView;
 class ProjectDocument;
 class SpcView;
+struct Iso230Result;
 
 class KinematicsPage : public QWidget {
   Q_OBJECT
@@ -70,6 +71,16 @@ class KinematicsPage : public QWidget {
   QLabel* fromSpcLabel() const { return fromSpcLabel_; }
   QLabel* threeAxisLabel() const { return threeAxisLabel_; }
   QPushButton* compensateButton() const { return compensateButton_; }
+  /// The test's summary above the tabs (points, nominal circle, loops, ISO 230-4 results).
+  QLabel* infoLabel() const { return info_; }
+  /// The message shown instead of the tabs when the test cannot be identified.
+  QLabel* messageLabel() const { return message_; }
+  /// A radial-only (ballbar) test: its polar plot, shown with the message instead of the tabs.
+  PolarDeviationView* radialPolarView() const { return radialPolar_; }
+  /// The page the stack shows: the tabs, the message, or the radial-only test's message and plot.
+  QWidget* currentView() const;
+  /// "ISO 230-4: CCW: G … µm, F … … … µm; CW: …; H … µm" (empty without a direction).
+  static QString isoText(const Iso230Result& iso);
 
  private:
   void refresh();
@@ -90,6 +101,9 @@ class KinematicsPage : public QWidget {
   QTabWidget* tabs_;
   CircularPathView* path_;
   PolarDeviationView* polar_;
+  QWidget* radialPage_ = nullptr;
+  QLabel* radialLabel_ = nullptr;
+  PolarDeviationView* radialPolar_ = nullptr;
   QTableWidget* errors_;
   QTableWidget* compensationTable_;
   SpcView* spc_;

@@ -2,6 +2,7 @@
 
 #include "core/common/error.h"
 #include "core/io/csv.h"
+#include "core/kinematics/iso230_4.h"
 
 namespace metrofit {
 namespace {
@@ -13,6 +14,13 @@ std::string num(double v) {
 }  // namespace
 
 MeasuredPath measuredPathFromCsv(const CsvTable& t) {
+  if (isRadialCircularTest(t)) {
+    throw ValidationError(
+        ErrorContext{t.source(), 0, 0, {}},
+        "is a radial-only circular test (angle_deg, deviation): the kinematic identification "
+        "needs the x/y columns x_cmd_mm, y_cmd_mm, x_meas_mm, y_meas_mm (`kinematic circular` "
+        "gives its ISO 230-4 results)");
+  }
   const std::size_t xc = t.requireColumn("x_cmd_mm"), yc = t.requireColumn("y_cmd_mm");
   const std::size_t xm = t.requireColumn("x_meas_mm"), ym = t.requireColumn("y_meas_mm");
   MeasuredPath p;

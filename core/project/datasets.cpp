@@ -7,6 +7,7 @@
 
 #include "core/common/error.h"
 #include "core/io/file_io.h"
+#include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
 #include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
@@ -84,7 +85,7 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
   } else if (kind == dataset_kind::kProbePoints) {
     (void)probePointsFromCsv(table, 1);
   } else if (kind == dataset_kind::kCircularTest) {
-    (void)measuredPathFromCsv(table);
+    (void)circularTraceFromCsv(table);  // the x/y or the radial-only form
   } else if (kind == dataset_kind::kCmmReport) {
     for (const char* c :
          {"part", "time_min", "dimension", "nominal_mm", "measured_mm", "lower_tol_mm", "upper_tol_mm"})

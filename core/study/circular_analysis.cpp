@@ -34,38 +34,31 @@ CircularAnalysis analyseCircularTest(const MeasuredPath& path) {
   // The checks `metrofit-cli kinematic identify` makes first, so that a path it cannot take (too few
   // points, not finite, identical or collinear points) gets the CLI's message, not one of our own.
   checkIdentifiable(path);
-  const std::size_t n = path.size();
-  const ErrorContext where{path.source, 0, 0, "x_cmd_mm"};
-  if (n < 3)
-    throw ValidationError(where, "a circular test needs at least 3 points, got " + std::to_string(n));
+  return analyseCircularTrace(circularTraceOf(path));
+}
+
+CircularAnalysis analyseCircularTrace(const CircularTrace& t) {
+  const std::size_t n = t.size();
+  if (n < 3) {
+    throw ValidationError(ErrorContext{t.source, 0, 0, t.radialOnly ? "angle_deg" : "x_cmd_mm"},
+                          "a circular test needs at least 3 points, got " + std::to_string(n));
+  }
   CircularAnalysis a;
-  for (const auto& c : path.command) a.centreMm += c;
-  a.centreMm /= static_cast<double>(n);
-  for (const auto& c : path.command) a.radiusMm += (c - a.centreMm).norm();
-  a.radiusMm /= static_cast<double>(n);
-  if (!(a.radiusMm > 0.0) || !std::isfinite(a.radiusMm)) {
-    throw ValidationError(where, "the commanded points do not describe a circle (radius 0)");
-  }
-
-  // Direction of each point: the turn of the command from it to the next one.
-  std::vector<bool> ccw(n, true);
-  for (std::size_t k = 0; k + 1 < n; ++k) {
-    const Eigen::Vector2d u = path.command[k] - a.centreMm, v = path.command[k + 1] - a.centreMm;
-    ccw[k] = u.x() * v.y() - u.y() * v.x() >= 0.0;
-  }
-  ccw[n - 1] = ccw[n - 2];
-
-  const std::vector<RadialPoint> radial = radialDeviations(path.measured, a.centreMm, a.radiusMm);
-  a.minDeviationMm = a.maxDeviationMm = radial.front().deviationMm;
+  a.radialOnly = t.radialOnly;
+  a.centreMm = t.nominalCentreMm;
+  a.radiusMm = t.nominalRadiusMm.value_or(0.0);
+  a.minDeviationMm = a.maxDeviationMm = t.deviationMm.front();
   for (std::size_t k = 0; k < n; ++k) {
-    if (a.loops.empty() || a.loops.back().counterClockwise != ccw[k]) {
-      a.loops.push_back(CircularLoop{ccw[k], k, {}});
+    const bool newRun = !t.run.empty() && k > 0 && t.run[k] != t.run[k - 1];
+    if (a.loops.empty() || a.loops.back().counterClockwise != t.counterClockwise[k] || newRun) {
+      a.loops.push_back(CircularLoop{t.counterClockwise[k], k, {}});
     }
-    a.loops.back().points.push_back(radial[k]);
-    a.minDeviationMm = std::min(a.minDeviationMm, radial[k].deviationMm);
-    a.maxDeviationMm = std::max(a.maxDeviationMm, radial[k].deviationMm);
-    a.maxAbsDeviationMm = std::max(a.maxAbsDeviationMm, std::abs(radial[k].deviationMm));
+    a.loops.back().points.push_back({t.angleDeg[k], t.deviationMm[k]});
+    a.minDeviationMm = std::min(a.minDeviationMm, t.deviationMm[k]);
+    a.maxDeviationMm = std::max(a.maxDeviationMm, t.deviationMm[k]);
+    a.maxAbsDeviationMm = std::max(a.maxAbsDeviationMm, std::abs(t.deviationMm[k]));
   }
+  a.iso = evaluateIso230_4(t);
   return a;
 }
 

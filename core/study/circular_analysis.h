@@ -5,7 +5,10 @@
 // give. Plain C++ on top of core/kinematics; no Qt, so the page, the report and the tests share it.
 //
 // Nominal circle: centre = mean of the commanded points, radius = mean distance of the commanded
-// points from it (the commands of a circular test lie on the circle).
+// points from it (the commands of a circular test lie on the circle). A radial-only test (the ballbar
+// form, docs/file-formats.md#circular-test) is already about its nominal circle: centre (0, 0), radius
+// its radius_mm column (0 when it has none; the radial deviations do not need it).
+// ISO 230-4 results (G, H, F per direction): core/kinematics/iso230_4.h, on every test.
 // Radial deviation of a point p: |p - centre| - radius (mm), at the angle of p about the centre.
 // Loops: a point belongs to a CCW loop when the command turns counter-clockwise about the centre
 // from it to the next point (the last point takes its predecessor's direction); consecutive points
@@ -36,6 +39,7 @@
 #include "core/diagnose/applied_kinematic.h"
 #include "core/kinematics/cartesian_model.h"
 #include "core/kinematics/identification.h"
+#include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
 
 namespace metrofit {
@@ -57,12 +61,17 @@ struct CircularAnalysis {
   std::vector<CircularLoop> loops;  ///< of the measured path
   double maxAbsDeviationMm = 0.0;   ///< over all measured points
   double minDeviationMm = 0.0, maxDeviationMm = 0.0;
+  bool radialOnly = false;  ///< a radial-only test: no x/y, no identification
+  Iso230Result iso;         ///< ISO 230-4 results
 };
 
 /// The InputError of checkIdentifiable (core/kinematics/identification.h: the checks of `metrofit-cli
 /// kinematic identify`) when the path cannot be identified; ValidationError (field x_cmd_mm) when the
 /// commanded points have no radius.
 CircularAnalysis analyseCircularTest(const MeasuredPath& path);
+/// Any circular test (the x/y form through circularTraceOf, or a radial-only one): the loops, the radial
+/// deviations and the ISO 230-4 results. ValidationError for fewer than 3 points.
+CircularAnalysis analyseCircularTrace(const CircularTrace& trace);
 
 /// Radial deviations of points about a circle.
 std::vector<RadialPoint> radialDeviations(const std::vector<Eigen::Vector2d>& points,

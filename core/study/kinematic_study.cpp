@@ -101,18 +101,40 @@ KinematicStudySettings kinematicStudySettings(const Project& project) {
   return s;
 }
 
-KinematicStudyData loadKinematicStudy(const Project& project,
-                                      const std::function<std::string(const DatasetRef&)>& resolve,
-                                      const std::string& datasetId) {
-  KinematicStudyData d;
-  d.settings = kinematicStudySettings(project);
-  const std::string id = datasetId.empty() ? d.settings.dataset : datasetId;
+namespace {
+/// The circular test the study uses (`datasetId`, else the study's "dataset", else the first one).
+const DatasetRef* studyCircularTest(const Project& project, const KinematicStudySettings& settings,
+                                    const std::string& datasetId) {
+  const std::string id = datasetId.empty() ? settings.dataset : datasetId;
   const DatasetRef* ref = id.empty() ? project.firstOfKind(dataset_kind::kCircularTest) : project.dataset(id);
   if (ref == nullptr) {
     throw ValidationError(ErrorContext{{}, 0, 0, std::string("studies.") + study::kKinematics + ".dataset"},
                           id.empty() ? "the project has no circular_test dataset"
                                      : "names the dataset '" + id + "', which the project does not have");
   }
+  return ref;
+}
+}  // namespace
+
+std::optional<RadialStudyTest> radialStudyTest(const Project& project,
+                                               const std::function<std::string(const DatasetRef&)>& resolve,
+                                               const std::string& datasetId) {
+  const DatasetRef* ref = studyCircularTest(project, kinematicStudySettings(project), datasetId);
+  const CsvTable table = readCsvFile(resolve(*ref), ref->csv);
+  if (!isRadialCircularTest(table)) return std::nullopt;
+  RadialStudyTest t;
+  t.dataset = *ref;
+  t.trace = radialTraceFromCsv(table);
+  t.analysis = analyseCircularTrace(t.trace);
+  return t;
+}
+
+KinematicStudyData loadKinematicStudy(const Project& project,
+                                      const std::function<std::string(const DatasetRef&)>& resolve,
+                                      const std::string& datasetId) {
+  KinematicStudyData d;
+  d.settings = kinematicStudySettings(project);
+  const DatasetRef* ref = studyCircularTest(project, d.settings, datasetId);
   d.dataset = *ref;
   // The simulated machine belongs to the study's own circular test, not to any other one.
   if (!d.settings.dataset.empty() && d.settings.dataset != ref->id) d.settings.simulatedMachine.reset();

@@ -110,6 +110,19 @@ KinematicStudyData loadKinematicStudy(const Project& project,
                                       const std::function<std::string(const DatasetRef&)>& resolve,
                                       const std::string& datasetId = {});
 
+/// The study's circular test (`datasetId`, else the study's) when it is radial-only (a ballbar export:
+/// angle and radial deviation, no x/y), which loadKinematicStudy refuses: its trace and analysis (loops,
+/// ISO 230-4 results). nullopt for an x/y test. Throws as loadKinematicStudy for a missing dataset or an
+/// unreadable file.
+struct RadialStudyTest {
+  DatasetRef dataset;
+  CircularTrace trace;
+  CircularAnalysis analysis;
+};
+std::optional<RadialStudyTest> radialStudyTest(const Project& project,
+                                               const std::function<std::string(const DatasetRef&)>& resolve,
+                                               const std::string& datasetId = {});
+
 /// Compensation preview of the study's circular test (the simulated machine when the settings give one).
 CompensationPreview compensateStudy(const KinematicStudyData& study);
 

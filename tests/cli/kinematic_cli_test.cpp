@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -87,6 +89,84 @@ TEST(KinematicCli, IdentifyWritesTheContractJson) {
   ASSERT_EQ(s.code, 0);
   EXPECT_EQ(parseJson(s.out, "stdout"), j);
   EXPECT_EQ(test::listFolder(tmp.path()), (std::vector<std::string>{"c.csv", "e.json"}));
+}
+
+/// A circular test written here (docs/file-formats.md#circular-test), commands on a circle of radius 50 about
+/// the origin, one loop CCW then one CW (1 deg steps); the measured radius about c0 = (0.01, 0) is
+/// 50 + A cos 3 theta (+ h on the CW loop). Radial form: angle_deg,deviation_um,direction of the same points.
+std::string lobedCircle(bool radial, double amp, double h) {
+  std::string text =
+      radial ? "angle_deg,deviation_um,direction\n" : "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n";
+  char buf[160];
+  for (int loop = 0; loop < 2; ++loop) {
+    for (int k = 0; k < 360; ++k) {
+      const double th = (loop == 0 ? k : 360 - k) * std::numbers::pi / 180.0;
+      const double r = 50.0 + amp * std::cos(3.0 * th) + (loop == 1 ? h : 0.0);
+      const double x = 0.01 + r * std::cos(th), y = r * std::sin(th);
+      if (radial) {
+        std::snprintf(buf, sizeof buf, "%.12f,%.9f,%s\n", std::atan2(y, x) * 180.0 / std::numbers::pi,
+                      (std::hypot(x, y) - 50.0) * 1000.0, loop == 0 ? "ccw" : "cw");
+      } else {
+        std::snprintf(buf, sizeof buf, "%.12f,%.12f,%.12f,%.12f\n", 50.0 * std::cos(th), 50.0 * std::sin(th),
+                      x, y);
+      }
+      text += buf;
+    }
+  }
+  return text;
+}
+
+TEST(KinematicCli, CircularWritesTheIso230ResultsOfBothForms) {
+  test::TempDir tmp;
+  // G = 2A = 6 um about the LSQ centre (0.01, 0); H = h = 2 um; F about the nominal centre (0, 0) adds
+  // the offset of 10 um.
+  test::writeText(tmp.file("xy.csv"), lobedCircle(false, 0.003, 0.002));
+  test::writeText(tmp.file("ballbar.csv"), lobedCircle(true, 0.003, 0.002));
+  for (const char* name : {"xy.csv", "ballbar.csv"}) {
+    const CliRun r = cli(std::string("kinematic circular --data ") + name, tmp);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("kinematic circular: 720 points", 0), 0u) << r.err;
+    const nlohmann::json j = parseJson(r.out, "stdout");
+    const bool radial = std::string(name) == "ballbar.csv";
+    EXPECT_EQ(j["form"], radial ? "radial" : "xy");
+    EXPECT_EQ(j["points"], 720);
+    const nlohmann::json& iso = j["iso230_4"];
+    // The radial form without radius_mm uses the linearised circle: O(e^2/R) = 1e-6 um here, within the
+    // 9 digits written.
+    EXPECT_EQ(iso["linearised"], radial);
+    for (const char* dir : {"ccw", "cw"}) {
+      ASSERT_TRUE(iso[dir].is_object()) << name << " " << dir;
+      EXPECT_EQ(iso[dir]["points"], 360);
+      EXPECT_NEAR(iso[dir]["circular_deviation_g_um"].get<double>(), 6.0, 1e-3) << name << " " << dir;
+      EXPECT_NEAR(iso[dir]["lsq_centre_mm"][0].get<double>(), 0.01, 1e-6) << name;
+      EXPECT_NEAR(iso[dir]["lsq_centre_mm"][1].get<double>(), 0.0, 1e-6) << name;
+      // About the nominal centre the deviation is 10 cos t + 3 cos 3t (+ 2 on CW) + O(e^2/R = 0.001 um):
+      // largest at t = 0, smallest at t = 180 deg.
+      const double shift = std::string(dir) == "cw" ? 2.0 : 0.0;
+      EXPECT_NEAR(iso[dir]["radial_deviation_f_max_um"].get<double>(), 13.0 + shift, 0.01) << name;
+      EXPECT_NEAR(iso[dir]["radial_deviation_f_min_um"].get<double>(), -13.0 + shift, 0.01) << name;
+    }
+    EXPECT_NEAR(iso["circular_hysteresis_h_um"].get<double>(), 2.0, 1e-3) << name;
+    EXPECT_EQ(iso["f_about"], "nominal centre");
+  }
+  // identify writes the same results under iso230_4, besides its own keys.
+  const CliRun id = cli("kinematic identify --data xy.csv", tmp);
+  ASSERT_EQ(id.code, 0) << id.err;
+  const nlohmann::json j = parseJson(id.out, "stdout");
+  EXPECT_TRUE(j.contains("origin_mm"));
+  EXPECT_NEAR(j["iso230_4"]["cw"]["circular_deviation_g_um"].get<double>(), 6.0, 1e-3);
+  EXPECT_NEAR(j["iso230_4"]["circular_hysteresis_h_um"].get<double>(), 2.0, 1e-3);
+  // A radial-only test cannot be identified: one line naming the file.
+  expectBadInput(
+      "kinematic identify --data ballbar.csv",
+      "ballbar.csv: is a radial-only circular test (angle_deg, deviation): the kinematic identification "
+      "needs the x/y columns x_cmd_mm, y_cmd_mm, x_meas_mm, y_meas_mm (`kinematic circular` gives its "
+      "ISO 230-4 results)",
+      tmp);
+  test::writeText(tmp.file("bad.csv"), "angle_deg,deviation_um,direction\n0,1,ccw\n1,2,up\n2,3,ccw\n");
+  expectBadInput("kinematic circular --data bad.csv",
+                 "bad.csv:3:3: field 'direction': 'up' is not a direction (ccw or cw)", tmp);
 }
 
 TEST(KinematicCli, CompensateWritesReferencesGcodeAndStepNc) {
@@ -410,6 +490,91 @@ std::string edgeCsv(char axis, double ox, double oy, double aDeg, double bDeg, i
     csv += line;
   }
   return csv;
+}
+
+/// The fields of a Q-DAS DFQ file, read by the AQDEF K-field rule (docs/file-formats.md#q-das-dfq-export;
+/// pypi.org/project/aqdefreader, pypi.org/project/qdas-parser): "Kxxxx[/i] value" per line; values
+/// K0001/i and times K0004/i collected per characteristic i, every other field keyed "Kxxxx/i".
+struct DfqFields {
+  std::map<std::string, std::string> fields;
+  std::map<int, std::vector<double>> values;
+  std::map<int, std::vector<std::string>> times;
+};
+
+DfqFields readDfq(const std::string& text) {
+  DfqFields d;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    EXPECT_FALSE(line.empty());
+    EXPECT_EQ(line.back(), '\r');  // CR LF
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto space = line.find(' ');
+    const std::string key = line.substr(0, space), value = line.substr(space + 1);
+    const auto slash = key.find('/');
+    const int index = slash == std::string::npos ? 0 : std::stoi(key.substr(slash + 1));
+    if (key.rfind("K0001/", 0) == 0) {
+      d.values[index].push_back(std::stod(value));
+    } else if (key.rfind("K0004/", 0) == 0) {
+      d.times[index].push_back(value);
+    } else {
+      d.fields[key] = value;
+    }
+  }
+  return d;
+}
+
+TEST(KinematicCli, SpcAndFromSpcWriteQdasDfq) {
+  test::TempDir tmp;
+  // A German spreadsheet export with times: ';' and decimal commas.
+  test::writeText(tmp.file("bores.csv"),
+                  "timestamp;diameter_mm\n2024-05-03T10:15:00;20,003\n2024-05-03T10:16:00;19,998\n"
+                  "2024-05-03T10:17:00;20,001\n2024-05-03T10:18:00;20,004\n2024-05-03 10:19;19,997\n"
+                  "2024-05-03T10:20:00;20,000\n");
+  const CliRun r =
+      cli("spc --data bores.csv --column diameter_mm --subgroup 2 --lsl 19.95 --usl 20.05 "
+          "--nominal 20 --dfq b.dfq --dfq-part P-17",
+          tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const DfqFields d = readDfq(test::readText(tmp.file("b.dfq")));
+  EXPECT_EQ(d.fields.at("K0100"), "1");
+  EXPECT_EQ(d.fields.at("K1001/1"), "P-17");
+  EXPECT_EQ(d.fields.at("K2001/1"), "diameter_mm");
+  EXPECT_EQ(std::stod(d.fields.at("K2101/1")), 20.0);
+  EXPECT_EQ(std::stod(d.fields.at("K2110/1")), 19.95);
+  EXPECT_EQ(std::stod(d.fields.at("K2111/1")), 20.05);
+  EXPECT_EQ(d.fields.at("K2142/1"), "mm");
+  EXPECT_EQ(d.values.at(1), (std::vector<double>{20.003, 19.998, 20.001, 20.004, 19.997, 20.0}));
+  ASSERT_EQ(d.times.at(1).size(), 6u);
+  EXPECT_EQ(d.times.at(1).front(), "03.05.2024/10:15:00");
+  EXPECT_EQ(d.times.at(1)[4], "03.05.2024/10:19:00");
+
+  // A bad time: exit 2, one line naming the cell, no DFQ file.
+  test::writeText(
+      tmp.file("badtime.csv"),
+      "timestamp,d_mm\n2024-05-03T10:15:00,1\nyesterday,2\n2024-05-03T10:17:00,3\n2024-05-03T10:18:00,2\n");
+  expectBadInput("spc --data badtime.csv --column d_mm --subgroup 2 --dfq x.dfq",
+                 "badtime.csv:3:1: field 'timestamp': 'yesterday' is not a date-time YYYY-MM-DDTHH:MM[:SS]",
+                 tmp);
+
+  // from-spc: the two edges' deviations as two characteristics.
+  test::writeText(tmp.file("ex.csv"), edgeCsv('x', 0.012, -0.008, 0.03, -0.05, 40));
+  test::writeText(tmp.file("ey.csv"), edgeCsv('y', 0.012, -0.008, 0.03, -0.05, 30));
+  const CliRun f = cli("kinematic from-spc --x-data ex.csv --y-data ey.csv --dfq e.dfq --out e.json", tmp);
+  ASSERT_EQ(f.code, 0) << f.err;
+  const DfqFields e = readDfq(test::readText(tmp.file("e.dfq")));
+  EXPECT_EQ(e.fields.at("K0100"), "2");
+  EXPECT_EQ(e.fields.at("K2001/1"), "X edge deviation_mm");
+  EXPECT_EQ(e.fields.at("K2001/2"), "Y edge deviation_mm");
+  EXPECT_EQ(e.fields.at("K2142/2"), "mm");
+  EXPECT_EQ(std::stod(e.fields.at("K2101/1")), 0.0);
+  EXPECT_EQ(e.fields.count("K2110/1"), 0u);
+  const auto xs = readCsvFile(tmp.file("ex.csv")).numericColumn("deviation_mm");
+  const auto ys = readCsvFile(tmp.file("ey.csv")).numericColumn("deviation_mm");
+  EXPECT_EQ(e.values.at(1), xs);
+  EXPECT_EQ(e.values.at(2), ys);
+  EXPECT_EQ(e.values.at(2).size(), 30u);
+  EXPECT_TRUE(e.times.empty());
 }
 
 TEST(KinematicCli, FromSpcTurnsTheOffsetAnglesIntoActuatorErrorsAndReferences) {

@@ -157,6 +157,37 @@ TEST(ProjectCli, AddChecksTheFileAndNamesWhatIsWrong) {
   EXPECT_EQ(list[1]["columns"], (nlohmann::json{"time_min", "T1", "dZ"}));
 }
 
+TEST(ProjectCli, BallbarExportIsAddedAsACircularTestByItsColumns) {
+  // The radial-only form (docs/file-formats.md#circular-test) with a ballbar program's own column names,
+  // mapped to the roles; a bad direction cell is refused naming line and column.
+  test::TempDir tmp;
+  ASSERT_EQ(cli("project new P.metrofit", tmp).code, 0);
+  std::string text = "Angle;Deviation;Dir\n";
+  for (int k = 0; k < 8; ++k) text += std::to_string(45 * k) + ";" + (k % 2 ? "1,5" : "-0,5") + ";CCW\n";
+  for (int k = 8; k > 0; --k) text += std::to_string(45 * k) + ";" + (k % 2 ? "2,5" : "0,5") + ";CW\n";
+  test::writeText(tmp.file("qc20.csv"), text);
+  CliRun r = cli("project add P.metrofit circular-test qc20.csv", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("qc20.csv"), std::string::npos) << r.err;
+  r =
+      cli("project add P.metrofit circular-test qc20.csv --map angle_deg=Angle --map deviation_um=Deviation "
+          "--map direction=Dir",
+          tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = cli("project list P.metrofit", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json list = parseJson(r.out, "stdout");
+  ASSERT_EQ(list.size(), 1u);
+  EXPECT_EQ(list[0]["kind"], "circular_test");
+  EXPECT_EQ(list[0]["rows"], 16);
+  test::writeText(tmp.file("bad.csv"), "angle_deg,deviation_um,direction\n0,1,ccw\n90,2,ccw\n180,1,left\n");
+  r = cli("project add P.metrofit circular-test bad.csv", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("bad.csv:4:3: field 'direction': 'left' is not a direction"), std::string::npos)
+      << r.err;
+}
+
 TEST(ProjectCli, RealHoleTableAndTheDemoProject) {
   test::TempDir tmp;
   if (std::filesystem::exists(kRealPlate)) {

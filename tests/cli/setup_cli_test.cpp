@@ -7,10 +7,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/cli_runner.h"
+#include "core/io/csv.h"
 #include "core/io/json_util.h"
 #include "testsupport.h"
 
@@ -76,6 +79,54 @@ TEST(SetupCli, ExactOnThePaperExampleWritesTheContractKeys) {
   EXPECT_EQ(j["trace"][0]["stage"], "lp");
   EXPECT_EQ(j["dimensions"].size(), 28u);
   EXPECT_EQ(j["parts"], 3);
+}
+
+TEST(SetupCli, DfqHasOneCharacteristicPerMeasuredDimension) {
+  // Read back by the AQDEF K-field rule (docs/file-formats.md#q-das-dfq-export;
+  // pypi.org/project/aqdefreader): "Kxxxx/i value" lines, K0100 the count, K2001/i the characteristic,
+  // K2101/K2110/K2111 nominal and limits, K0001/i the values; compared with the report's own columns.
+  test::TempDir tmp;
+  const std::string report = (test::sourceDir() / "resources/demo/setup/paper_example_report.csv").string();
+  const CliRun r =
+      cli("setup --model " + demo("paper_example.json") + " --data '" + report + "' --dfq f.dfq --out r.json",
+          tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::map<std::string, std::string> fields;
+  std::map<int, std::vector<double>> values;
+  std::istringstream in(test::readText(tmp.file("f.dfq")));
+  std::string line;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto space = line.find(' ');
+    const std::string key = line.substr(0, space), value = line.substr(space + 1);
+    if (key.rfind("K0001/", 0) == 0) {
+      values[std::stoi(key.substr(6))].push_back(std::stod(value));
+    } else {
+      fields[key] = value;
+    }
+  }
+  const CsvTable t = readCsvFile(report);
+  const auto nominal = t.numericColumn("nominal_mm"), measured = t.numericColumn("measured_mm");
+  const auto lower = t.numericColumn("lower_tol_mm"), upper = t.numericColumn("upper_tol_mm");
+  const std::size_t dim = t.requireColumn("dimension");
+  std::map<std::string, int> index;
+  for (const auto& [key, value] : fields) {
+    if (key.rfind("K2001/", 0) == 0) index[value] = std::stoi(key.substr(6));
+  }
+  EXPECT_EQ(fields.at("K0100"), "28");
+  EXPECT_EQ(index.size(), 28u);
+  std::map<int, std::size_t> seen;
+  for (std::size_t row = 0; row < t.rowCount(); ++row) {
+    const int i = index.at(t.cell(row, dim));
+    const std::string k = "/" + std::to_string(i);
+    EXPECT_NEAR(std::stod(fields.at("K2101" + k)), nominal[row], 1e-12);
+    EXPECT_NEAR(std::stod(fields.at("K2110" + k)), nominal[row] + lower[row], 1e-12);
+    EXPECT_NEAR(std::stod(fields.at("K2111" + k)), nominal[row] + upper[row], 1e-12);
+    EXPECT_EQ(fields.at("K2142" + k), "mm");
+    ASSERT_LT(seen[i], values[i].size());
+    EXPECT_NEAR(values[i][seen[i]++], measured[row], 1e-9) << t.cell(row, dim);
+  }
+  for (const auto& [i, n] : seen) EXPECT_EQ(n, values[i].size()) << i;  // 3 parts each, nothing more
 }
 
 TEST(SetupCli, MetaheuristicsAreReproducibleAndReportTheirGap) {

@@ -41,6 +41,7 @@
 #include "app/gui/projectnavigator.h"
 #include "app/gui/thermalpage.h"
 #include "core/common/error.h"
+#include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
 #include "core/project/project.h"
 #include "core/study/diagnosis_study.h"
@@ -466,6 +467,56 @@ void onNextModal(QObject* owner, std::function<void(T*)> handle) {
     }
   });
   timer->start();
+}
+
+TEST_F(ImportDialogTest, BallbarExportIsACircularTestByItsRoles) {
+  // A ballbar export from a German spreadsheet (docs/file-formats.md#circular-test, radial-only form):
+  // angle, radial deviation in um, direction, with its own column names; 360 points CCW, then 360 CW,
+  // an offset circle of 5 um with a 3-lobe form of 2 um: G = 4 um per direction.
+  QByteArray text = "Winkel [Grad];Abweichung [um];Richtung\n";
+  for (int loop = 0; loop < 2; ++loop) {
+    for (int k = 0; k < 360; ++k) {
+      const double th = (loop == 0 ? k : 360 - k) * M_PI / 180.0;
+      const double dev = 5.0 * std::cos(th) + 2.0 * std::cos(3.0 * th);
+      text += QByteArray::number(loop == 0 ? k : 360 - k) + ';' +
+              QByteArray::number(dev, 'f', 6).replace('.', ',') + ';' + (loop == 0 ? "GUZ" : "UZ") + '\n';
+    }
+  }
+  text.replace("GUZ", "ccw").replace(";UZ", ";cw");
+  const QString file = dir_.filePath(QStringLiteral("ballbar.csv"));
+  writeFile(file, text);
+  EXPECT_EQ(ImportDialog::guessKind(file, text.left(200)), QStringLiteral("circular-test"));
+  EXPECT_TRUE(
+      ImportDialog::rolesForKind(QStringLiteral("circular-test")).contains(QStringLiteral("deviation_um")));
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(file);
+  EXPECT_EQ(dialog.kind(), QStringLiteral("circular-test"));
+  EXPECT_FALSE(dialog.canImport());  // the readers' columns are not there yet
+  dialog.setRole(QStringLiteral("Winkel [Grad]"), QStringLiteral("angle_deg"));
+  dialog.setRole(QStringLiteral("Abweichung [um]"), QStringLiteral("deviation_um"));
+  dialog.setRole(QStringLiteral("Richtung"), QStringLiteral("direction"));
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  doc_.addDataset(dialog.dataset());
+  const DatasetRef* ref = doc_.project().dataset("ballbar");
+  ASSERT_NE(ref, nullptr);
+  const CircularTrace trace =
+      readCircularTrace(QFile::encodeName(doc_.datasetPath(*ref)).toStdString(), ref->csv);
+  EXPECT_TRUE(trace.radialOnly);
+  ASSERT_EQ(trace.size(), 720u);
+  const Iso230Result iso = evaluateIso230_4(trace);
+  ASSERT_EQ(iso.directions.size(), 2u);
+  for (const Iso230Direction& d : iso.directions) EXPECT_NEAR(d.circularDeviationMm, 0.004, 1e-6);
+  // The kinematic identification refuses it with the file named.
+  try {
+    (void)loadKinematicStudy(
+        doc_.project(),
+        [this](const DatasetRef& d) { return QFile::encodeName(doc_.datasetPath(d)).toStdString(); },
+        "ballbar");
+    FAIL() << "identified a radial-only test";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("ballbar.csv: is a radial-only circular test"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST_F(ImportDialogTest, ContextMenuRenamesAndRemovesAfterAsking) {

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include <QDir>
+#include <QFileInfo>
 #include <QImage>
 #include <QLabel>
 #include <QPushButton>
@@ -35,6 +36,7 @@
 
 #include "core/project/project.h"
 #include "core/sim/circular_sim.h"
+#include "core/study/kinematic_study.h"
 
 namespace metrofit {
 namespace {
@@ -87,6 +89,34 @@ TEST_F(KinematicsPageTest, IdentifiedErrorsEqualTheClis) {
   EXPECT_EQ(t->item(3, 1)->text(), QString::number(r.errors.yAxisAngleDeg, 'f', 6));
   EXPECT_EQ(t->item(2, 3)->text(), QStringLiteral("0.010000"));
   EXPECT_EQ(t->item(3, 3)->text(), QStringLiteral("-0.020000"));
+  // The ISO 230-4 results of the test equal the CLI's (identify's iso230_4) and the summary shows them in um.
+  const Iso230Result& iso = page.study()->analysis.iso;
+  ASSERT_EQ(iso.directions.size(), 2u);
+  ASSERT_TRUE(iso.circularHysteresisMm);
+  const nlohmann::json& ji = j["iso230_4"];
+  EXPECT_NEAR(iso.directions[0].circularDeviationMm * 1000.0,
+              ji["ccw"]["circular_deviation_g_um"].get<double>(), 1e-9);
+  EXPECT_NEAR(iso.directions[1].circularDeviationMm * 1000.0,
+              ji["cw"]["circular_deviation_g_um"].get<double>(), 1e-9);
+  EXPECT_NEAR(iso.directions[1].radialDeviationMaxMm * 1000.0,
+              ji["cw"]["radial_deviation_f_max_um"].get<double>(), 1e-9);
+  EXPECT_NEAR(*iso.circularHysteresisMm * 1000.0, ji["circular_hysteresis_h_um"].get<double>(), 1e-9);
+  const QString info = page.infoLabel()->text();
+  EXPECT_TRUE(info.contains(QStringLiteral("ISO 230-4: CCW: G %1 µm, F %2 … %3 µm")
+                                .arg(iso.directions[0].circularDeviationMm * 1000.0, 0, 'f', 2)
+                                .arg(iso.directions[0].radialDeviationMinMm * 1000.0, 0, 'f', 2)
+                                .arg(iso.directions[0].radialDeviationMaxMm * 1000.0, 0, 'f', 2)))
+      << info.toStdString();
+  EXPECT_TRUE(info.contains(QStringLiteral("H %1 µm").arg(*iso.circularHysteresisMm * 1000.0, 0, 'f', 2)))
+      << info.toStdString();
+  // A squareness error g = b - a turns the circle of radius R into an ellipse: r = R - g R sin(2 theta) / 2
+  // to first order, so G = R |g|; the demo's noise (0.5 um per coordinate, 360 points per loop) widens
+  // the range by up to about 3 sigma on each side.
+  const double squarenessRad = std::abs(r.errors.squarenessDeg()) * M_PI / 180.0;
+  for (const Iso230Direction& d : iso.directions) {
+    EXPECT_NEAR(d.circularDeviationMm, page.study()->analysis.radiusMm * squarenessRad, 0.004);
+  }
+
   // The targets on the demo (0.5 um noise).
   EXPECT_NEAR(r.errors.xAxisAngleDeg, 0.01, 1e-3);
   EXPECT_NEAR(r.errors.yAxisAngleDeg, -0.02, 1e-3);
@@ -155,6 +185,68 @@ TEST_F(KinematicsPageTest, ExportsGcodeAndStepNc) {
   // An unwritable target is an error message, not a crash, and leaves nothing.
   EXPECT_FALSE(page.exportGcode(QDir(dir_.path()).filePath(QStringLiteral("no/such/dir/c.nc")), &error));
   EXPECT_FALSE(error.isEmpty());
+}
+
+TEST_F(KinematicsPageTest, RadialOnlyTestSaysWhyItCannotBeIdentifiedAndShowsItsIsoResults) {
+  // A ballbar export (docs/file-formats.md#circular-test): 360 points CCW, 360 CW (directions from the
+  // angles), an offset of 5 um with a 3-lobe form of 2 um, the CW run 1.5 um out: G = 4 um, H = 1.5 um.
+  std::string text = "angle_deg,deviation_um\n";
+  for (int loop = 0; loop < 2; ++loop) {
+    for (int k = 0; k < 360; ++k) {
+      const int deg = loop == 0 ? k : 360 - k;
+      const double th = deg * M_PI / 180.0;
+      text += std::to_string(deg) + "," +
+              std::to_string(5.0 * std::cos(th) + 2.0 * std::cos(3.0 * th) + (loop == 1 ? 1.5 : 0.0)) + "\n";
+    }
+  }
+  std::ofstream(QDir(dir_.path()).filePath(QStringLiteral("ballbar.csv")).toStdString()) << text;
+  DatasetRef ref;
+  ref.id = "ballbar";
+  ref.kind = dataset_kind::kCircularTest;
+  ref.path = QDir(dir_.path()).filePath(QStringLiteral("ballbar.csv")).toStdString();
+  doc_.addDataset(ref);
+  KinematicsPage page(&doc_);
+  page.selectDataset(QStringLiteral("ballbar"));
+  EXPECT_EQ(page.study(), nullptr);
+  EXPECT_TRUE(page.errorMessage().contains(QStringLiteral("ballbar.csv: is a radial-only circular test")))
+      << page.errorMessage().toStdString();
+  const QString message = page.messageLabel()->text();
+  EXPECT_TRUE(message.contains(QStringLiteral("ISO 230-4: CCW: G 4.00 µm"))) << message.toStdString();
+  EXPECT_TRUE(message.contains(QStringLiteral("CW: G 4.00 µm"))) << message.toStdString();
+  EXPECT_TRUE(message.contains(QStringLiteral("H 1.50 µm"))) << message.toStdString();
+  // Instead of the tabs: the message and the polar plot of both runs (drawn on 100 mm: no radius_mm).
+  ASSERT_NE(page.radialPolarView(), nullptr);
+  EXPECT_EQ(page.currentView(), page.radialPolarView()->parentWidget());
+  const PolarPlotData& polar = page.radialPolarView()->data();
+  ASSERT_EQ(polar.loops.size(), 2u);
+  EXPECT_TRUE(polar.loops[0].counterClockwise);
+  EXPECT_FALSE(polar.loops[1].counterClockwise);
+  EXPECT_EQ(polar.loops[1].points.size(), 360u);
+  EXPECT_EQ(polar.radiusMm, 100.0);
+  EXPECT_FALSE(polar.radiusKnown);  // the legend says the radius is only the drawing's
+  page.resize(900, 600);
+  save(page, "kinematics_radial_only.png");
+  EXPECT_FALSE(page.compensateButton()->isEnabled());
+
+  // As the kinematics study's test, the report shows its ISO 230-4 results and says why there is no
+  // identification (the report of an x/y test would fail on it).
+  doc_.setStudyValue(QStringLiteral("kinematics"), QStringLiteral("/dataset"), "ballbar",
+                     QStringLiteral("x"));
+  doc_.save();
+  const QString pdf = QDir(dir_.path()).filePath(QStringLiteral("r.pdf"));
+  ReportOptions o;
+  o.projectPath = projectPath_;
+  o.resolutionDpi = 100;
+  writeReport(loadProject(projectPath_.toStdString()), pdf, o);
+  QProcess p;
+  p.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+  ASSERT_TRUE(p.waitForFinished(60000));
+  const QString report = QString::fromUtf8(p.readAllStandardOutput()).simplified();
+  EXPECT_TRUE(report.contains(QStringLiteral("720 points of a radial-only circular test")))
+      << report.toStdString();
+  EXPECT_TRUE(report.contains(QStringLiteral("ISO 230-4 results")));
+  EXPECT_TRUE(report.contains(QStringLiteral("largest circular deviation G 4.0 µm"))) << report.toStdString();
+  EXPECT_TRUE(report.contains(QStringLiteral("Circular hysteresis H 1.5 µm")));
 }
 
 TEST(KinematicsPageEmpty, ProjectWithoutCircularTestShowsAMessage) {
@@ -304,6 +396,17 @@ TEST_F(KinematicsActuatorsTest, ReportStatesTheChainAndTheThreeAxes) {
   EXPECT_TRUE(text.contains(QStringLiteral("Compensation applied (Eq. 15)")));
   EXPECT_TRUE(text.contains(QStringLiteral("Three axes: circular tests in XY, YZ and ZX")));
   EXPECT_TRUE(text.contains(QStringLiteral("From the SPC offset angles: origin")));
+  // The ISO 230-4 results of the circular test, H with the value the study computes.
+  EXPECT_TRUE(text.contains(QStringLiteral("ISO 230-4 results"))) << text.toStdString();
+  const KinematicStudyData s =
+      loadKinematicStudy(loadProject(projectPath_.toStdString()), [this](const DatasetRef& d) {
+        return QDir(QFileInfo(projectPath_).path()).filePath(QString::fromStdString(d.path)).toStdString();
+      });
+  ASSERT_TRUE(s.analysis.iso.circularHysteresisMm);
+  EXPECT_TRUE(text.contains(QStringLiteral("Circular hysteresis H"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(
+      QStringLiteral("): %1 µm.").arg(*s.analysis.iso.circularHysteresisMm * 1000.0, 0, 'f', 2)))
+      << text.toStdString();
 }
 
 }  // namespace

@@ -118,6 +118,16 @@ QString roleDescription(const QString& role) {
       {QStringLiteral("y_cmd_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "commanded coordinate in mm")},
       {QStringLiteral("x_meas_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured coordinate in mm")},
       {QStringLiteral("y_meas_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "measured coordinate in mm")},
+      {QStringLiteral("angle_deg"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "angle of a radial-only circular test in deg")},
+      {QStringLiteral("deviation_um"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "radial deviation in µm (radial-only circular test)")},
+      {QStringLiteral("deviation_mm"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "radial deviation in mm (radial-only circular test)")},
+      {QStringLiteral("direction"),
+       QT_TRANSLATE_NOOP("metrofit::ImportDialog", "direction of travel: ccw or cw")},
+      {QStringLiteral("run"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "run number")},
+      {QStringLiteral("radius_mm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal radius in mm")},
       {QStringLiteral("part"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "part number")},
       {QStringLiteral("dimension"),
        QT_TRANSLATE_NOOP("metrofit::ImportDialog", "dimension id of the setup model")},
@@ -273,6 +283,8 @@ QString ImportDialog::guessKind(const QString& path, const QByteArray& head) {
   const auto has = [&header](const char* name) { return header.contains(QLatin1String(name)); };
   if (has("nominal") && has("measured")) return QStringLiteral("cmm-report");
   if (has("x_cmd") || has("x_meas")) return QStringLiteral("circular-test");
+  // A ballbar export: angle and radial deviation.
+  if ((has("angle") || has("winkel")) && (has("dev") || has("abw"))) return QStringLiteral("circular-test");
   if (has("qx") && has("px")) return QStringLiteral("probe-points");
   if (has("time") || has("zeit") || has("czas") || has("temp") || has("disp"))
     return QStringLiteral("thermal-log");
@@ -291,8 +303,10 @@ QStringList ImportDialog::rolesForKind(const QString& kind) {
             QStringLiteral("qz"), QStringLiteral("px"),      QStringLiteral("py"), QStringLiteral("pz"),
             QStringLiteral("nx"), QStringLiteral("ny"),      QStringLiteral("nz")};
   if (kind == QLatin1String("circular-test"))
-    return {QStringLiteral("x_cmd_mm"), QStringLiteral("y_cmd_mm"), QStringLiteral("x_meas_mm"),
-            QStringLiteral("y_meas_mm")};
+    return {QStringLiteral("x_cmd_mm"),     QStringLiteral("y_cmd_mm"),  QStringLiteral("x_meas_mm"),
+            QStringLiteral("y_meas_mm"),    QStringLiteral("angle_deg"), QStringLiteral("deviation_um"),
+            QStringLiteral("deviation_mm"), QStringLiteral("direction"), QStringLiteral("run"),
+            QStringLiteral("radius_mm")};
   if (kind == QLatin1String("cmm-report"))
     return {QStringLiteral("part"),        QStringLiteral("time_min"),    QStringLiteral("dimension"),
             QStringLiteral("nominal_mm"),  QStringLiteral("measured_mm"), QStringLiteral("lower_tol_mm"),

@@ -264,7 +264,10 @@ std::vector<LegendItem> polarLegendItems(const PolarPlotData& d) {
   if (cw) items.push_back({kinematic_colour::clockwise(), PlotText::tr("measured, CW loop")});
   if (!d.compensated.empty())
     items.push_back({kinematic_colour::expected(), PlotText::tr("expected after compensation")});
-  items.push_back({kinematic_colour::nominal(), PlotText::tr("nominal R %1 mm").arg(d.radiusMm, 0, 'g', 6),
+  items.push_back({kinematic_colour::nominal(),
+                   d.radiusKnown ? PlotText::tr("nominal R %1 mm").arg(d.radiusMm, 0, 'g', 6)
+                                 : PlotText::tr("nominal circle (radius not in the file, drawn as %1 mm)")
+                                       .arg(d.radiusMm, 0, 'g', 6),
                    Qt::DashLine});
   return items;
 }

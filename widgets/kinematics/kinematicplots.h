@@ -64,6 +64,9 @@ QColor bars();
 
 struct PolarPlotData {
   double radiusMm = 0.0;
+  /// False when the test gives no nominal radius (a radial-only test without radius_mm): radiusMm is then
+  /// only the circle the deviations are drawn around, and the legend says so.
+  bool radiusKnown = true;
   std::vector<CircularLoop> loops;       ///< measured, CCW / CW
   std::vector<RadialPoint> compensated;  ///< expected after compensation (may be empty)
   /// Magnification k and ring step (mm); 0 chooses them from the data (see autoScale()).

@@ -8,9 +8,11 @@
 #include <QCoreApplication>
 #include <QPainter>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <functional>
+#include <optional>
 
 #include "core/common/error.h"
 #include "core/study/kinematic_study.h"
@@ -70,6 +72,35 @@ void writeErrors(ReportPainter& out, const KinematicStudyData& s) {
       truth ? deg(truth->squarenessDeg()) : QString());
   row(ReportText::tr("RMS residual (µm)"), um(r.rmseMm), QString(), QString());
   out.table(t);
+}
+
+/// ISO 230-4 results of the test (core/kinematics/iso230_4.h), in µm.
+void writeIso230(ReportPainter& out, const Iso230Result& iso) {
+  if (iso.directions.empty()) return;
+  out.subheading(ReportText::tr("ISO 230-4 results"), out.mm(30.0));
+  out.paragraph(
+      ReportText::tr("Per direction: the circular deviation G (radial range about the path's own "
+                     "least-squares centre) and the radial deviation F (largest and smallest "
+                     "deviation from the nominal radius about the nominal centre)."));
+  ReportTable t;
+  t.header = {ReportText::tr("direction"), ReportText::tr("G (µm)"), ReportText::tr("F max (µm)"),
+              ReportText::tr("F min (µm)"), ReportText::tr("LSQ centre (mm)")};
+  t.widths = {1.0, 1.0, 1.0, 1.0, 2.0};
+  t.alignment = {Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
+  for (const Iso230Direction& d : iso.directions) {
+    t.rows.push_back({d.counterClockwise ? ReportText::tr("CCW") : ReportText::tr("CW"),
+                      um(d.circularDeviationMm, 2), um(d.radialDeviationMaxMm, 2),
+                      um(d.radialDeviationMinMm, 2),
+                      QStringLiteral("%1, %2").arg(QString::number(d.lsqCentreMm.x(), 'f', 4),
+                                                   QString::number(d.lsqCentreMm.y(), 'f', 4))});
+  }
+  out.table(t);
+  out.paragraph(
+      iso.circularHysteresisMm
+          ? ReportText::tr("Circular hysteresis H (largest radial difference between the CW and the "
+                           "CCW path at the same angle, about one least-squares centre): %1 µm.")
+                .arg(um(*iso.circularHysteresisMm, 2))
+          : ReportText::tr("Circular hysteresis H: not available (the test has one direction only)."));
 }
 
 CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyData& s) {
@@ -136,6 +167,7 @@ CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyDa
   style.lineWidth = 1.1;
   drawScaled(out, left, 400.0, [&](QPainter& p, const QRectF& r) { paintPathPlot(p, r, pd, style); });
   drawScaled(out, right, 400.0, [&](QPainter& p, const QRectF& r) { paintPolarPlot(p, r, polar, style); });
+  writeIso230(out, s.analysis.iso);
 
   out.subheading(ReportText::tr("Compensation"), out.mm(30.0));
   out.paragraph(
@@ -398,6 +430,55 @@ void concludeKinematics(ReportPainter& out, const ReportContext& context, const 
 
 }  // namespace
 
+namespace {
+
+/// The section of a radial-only circular test (no identification): the polar plot and the ISO 230-4 results.
+void writeRadialTest(ReportPainter& out, const ReportContext& context, const RadialStudyTest& t) {
+  const CircularAnalysis& a = t.analysis;
+  out.subheading(ReportText::tr("Circular test “%1”").arg(QString::fromStdString(t.dataset.id)),
+                 out.mm(60.0));
+  if (!t.dataset.description.empty()) out.paragraph(QString::fromStdString(t.dataset.description));
+  out.paragraph(ReportText::tr("%1 points of a radial-only circular test (angle and radial deviation, as "
+                               "ballbar software exports it); %2 loops. It has no commanded and measured x/y "
+                               "coordinates, so the actuator errors cannot be identified from it and no "
+                               "compensation is computed; its ISO 230-4 results follow.")
+                    .arg(t.trace.size())
+                    .arg(a.loops.size()));
+  PolarPlotData polar;
+  // The plot needs a radius to draw the deviations around; a file without radius_mm is drawn on 100 mm.
+  polar.radiusMm = t.trace.nominalRadiusMm.value_or(100.0);
+  polar.radiusKnown = t.trace.nominalRadiusMm.has_value();
+  polar.loops = a.loops;
+  polar.title = ReportText::tr("Radial deviation (polar, magnified)");
+  polar.autoScale();
+  out.skip(out.mm(2.0));
+  const QRectF box = out.reserve(out.mm(92.0));
+  const QRectF plot(box.left() + box.width() / 4.0, box.top(), box.width() / 2.0, box.height());
+  PlotStyle style;
+  style.fontPx = 10.0;
+  style.lineWidth = 1.1;
+  drawScaled(out, plot, 400.0, [&](QPainter& p, const QRectF& r) { paintPolarPlot(p, r, polar, style); });
+  writeIso230(out, a.iso);
+  double g = 0.0;
+  for (const Iso230Direction& d : a.iso.directions) g = std::max(g, d.circularDeviationMm);
+  SectionFinding f;
+  f.study = kinematicSectionTitle();
+  f.found = ReportText::tr("Circular test %1 (radial only): largest circular deviation G %2 µm.")
+                .arg(QString::fromStdString(t.dataset.id), um(g, 1));
+  if (a.iso.circularHysteresisMm)
+    f.found += QLatin1Char(' ') +
+               ReportText::tr("Circular hysteresis H %1 µm.").arg(um(*a.iso.circularHysteresisMm, 1));
+  f.conclusion = ReportText::tr(
+      "The test gives the ISO 230-4 results only: a radial-only test cannot identify "
+      "the actuator errors.");
+  f.recommendation = ReportText::tr(
+      "To identify and compensate the actuator errors, record the circular test "
+      "with commanded and measured x/y coordinates.");
+  concludeSection(out, context, f);
+}
+
+}  // namespace
+
 QString kinematicSectionTitle() {
   return ReportText::tr("Kinematic compensation and SPC");
 }
@@ -410,6 +491,11 @@ void writeKinematicSection(ReportPainter& out, const ReportContext& context) {
     }
     return ref.path;
   };
+  // A radial-only test (a ballbar export) cannot be identified: its ISO 230-4 results and polar plot.
+  if (const std::optional<RadialStudyTest> radial = radialStudyTest(project, resolve)) {
+    writeRadialTest(out, context, *radial);
+    return;
+  }
   // Only the study's circular test (the report shows the studies the project declares).
   try {
     const KinematicStudyData s = loadKinematicStudy(project, resolve);
