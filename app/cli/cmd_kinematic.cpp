@@ -42,6 +42,7 @@
 #include "core/common/error.h"
 #include "core/common/rng.h"
 #include "core/common/run.h"
+#include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
@@ -204,9 +205,9 @@ int runFromSpc(const FromSpcArgs& a) {
                           "compensated references go)");
   }
   AxisFeatureSeries xf =
-      axisFeatureFromCsv(readCsvFile(a.xData, csvOptions()), a.positionColumn, a.deviationColumn);
+      axisFeatureFromCsv(readFeatureTable(a.xData, csvOptions()), a.positionColumn, a.deviationColumn);
   AxisFeatureSeries yf =
-      axisFeatureFromCsv(readCsvFile(a.yData, csvOptions()), a.positionColumn, a.deviationColumn);
+      axisFeatureFromCsv(readFeatureTable(a.yData, csvOptions()), a.positionColumn, a.deviationColumn);
   xf.nominalCrossMm = a.xNominalY;
   yf.nominalCrossMm = a.yNominalX;
   SpcActuatorOptions o;

@@ -9,6 +9,7 @@
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
+#include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
@@ -60,7 +61,7 @@ SpcOptions spcOptions(const SpcArgs& a) {
 
 int runSpc(const SpcArgs& a) {
   const SpcOptions o = spcOptions(a);
-  const CsvTable table = readCsvFile(a.data, csvOptions());
+  const CsvTable table = readFeatureTable(a.data, csvOptions());
   const std::vector<double> values = table.numericColumn(a.column);
   const SpcResult r = analyseSpc(values, o, ErrorContext{displayPath(a.data), 0, 0, a.column});
   writeResult(a.out, dumpJson(spcResultToJson(r)));
