@@ -16,6 +16,8 @@ namespace metrofit::setup {
 namespace {
 
 constexpr double kLimitTolMm = 1e-6;  ///< report limits / nominals must match the model this closely
+/// A DMIS tolerance actual more than this many tolerance widths outside its band is implausible.
+constexpr double kImplausibleWidths = 10.0;
 
 std::string fmt(double v) {
   std::ostringstream s;
@@ -471,6 +473,23 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
                 "; read the tolerance actual as " +
                 (options.taMeaning == DmisTaMeaning::Actual ? "a deviation" : "the actual value") +
                 " or with the other sign convention");
+      }
+      // Without INTOL / OUTOL the band itself is the check: a tolerance actual that lands more than
+      // kImplausibleWidths tolerance widths outside it was read in the wrong meaning (an actual
+      // diameter taken as a deviation, say), not measured on a part worth correcting.
+      const double width = up - lo;
+      if (!hasStatus && width > 0.0 &&
+          (dev < lo - kImplausibleWidths * width || dev > up + kImplausibleWidths * width)) {
+        const bool asActualValue = options.taMeaning == DmisTaMeaning::Actual ||
+                                   (options.taMeaning == DmisTaMeaning::Auto && nominal &&
+                                    std::abs(v.value - *nominal) < std::abs(v.value));
+        throw ValidationError(
+            ErrorContext{source, v.line, 0, field},
+            "the tolerance actual " + fmt(v.value) + " read as " +
+                (asActualValue ? "the actual value" : "a deviation") + " gives the deviation " + fmt(dev) +
+                " mm, more than " + fmt(kImplausibleWidths) + " tolerance widths outside the tolerance " +
+                fmt(lo) + " / " + fmt(up) + " of '" + d.id + "'; read it as " +
+                (asActualValue ? "a deviation" : "the actual value") + " or with the other sign convention");
       }
       m.rows.push_back({part, 0.0, q, dev, source, v.line});
       continue;

@@ -39,7 +39,9 @@
 //         the model), Auto (Actual when the value is nearer the nominal than zero, else
 //         Deviation). Plausibility:
 //         when the statement says INTOL / OUTOL / OUTTOL, the deviation must be inside / outside the
-//         tolerance (T's limits, else the model's), else a ValidationError names the line.
+//         tolerance (T's limits, else the model's), else a ValidationError names the line; without
+//         such a word the deviation must not lie more than 10 tolerance widths outside the band
+//         (else a ValidationError naming TA(label) says which reading to try instead).
 //    Labels that name no dimension are skipped (DMIS files carry datums and other features); a
 //    dimension found in neither form is an error. POL coordinates are an error.
 //
