@@ -46,6 +46,7 @@
 #include "core/common/error.h"
 #include "core/common/rng.h"
 #include "core/common/run.h"
+#include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
 #include "core/io/dfq.h"
 #include "core/io/file_io.h"
@@ -261,9 +262,9 @@ int runFromSpc(const FromSpcArgs& a) {
                           "compensated references go)");
   }
   AxisFeatureSeries xf =
-      axisFeatureFromCsv(readCsvFile(a.xData, csvOptions()), a.positionColumn, a.deviationColumn);
+      axisFeatureFromCsv(readFeatureTable(a.xData, csvOptions()), a.positionColumn, a.deviationColumn);
   AxisFeatureSeries yf =
-      axisFeatureFromCsv(readCsvFile(a.yData, csvOptions()), a.positionColumn, a.deviationColumn);
+      axisFeatureFromCsv(readFeatureTable(a.yData, csvOptions()), a.positionColumn, a.deviationColumn);
   xf.nominalCrossMm = a.xNominalY;
   yf.nominalCrossMm = a.yNominalX;
   SpcActuatorOptions o;

@@ -14,6 +14,7 @@
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
+#include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
 #include "core/io/dfq.h"
 #include "core/io/file_io.h"
@@ -106,7 +107,7 @@ std::string seriesDfq(const SpcArgs& a, const CsvTable& table, const std::vector
 
 int runSpc(const SpcArgs& a) {
   const SpcOptions o = spcOptions(a);
-  const CsvTable table = readCsvFile(a.data, csvOptions());
+  const CsvTable table = readFeatureTable(a.data, csvOptions());
   const std::vector<double> values = table.numericColumn(a.column);
   const SpcResult r = analyseSpc(values, o, ErrorContext{displayPath(a.data), 0, 0, a.column});
   if (!a.dfq.empty()) writeFileAtomic(a.dfq, seriesDfq(a, table, values, o));

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <unordered_set>
 
 #include "core/common/error.h"
@@ -504,6 +505,24 @@ void CsvTable::requireRows(std::size_t n) const {
 
 void CsvTable::failAt(std::size_t row, std::size_t col, const std::string& what) const {
   throw ParseError(ErrorContext{source_, lines_[row], static_cast<long>(col + 1), header_[col]}, what);
+}
+
+CsvTable CsvTable::fromCells(std::string source, std::vector<std::string> header,
+                             std::vector<std::vector<std::string>> rows, std::vector<long> lines) {
+  if (rows.size() != lines.size()) throw std::invalid_argument("CsvTable::fromCells: one line per row");
+  for (std::size_t i = 0; i < header.size(); ++i)
+    for (std::size_t j = i + 1; j < header.size(); ++j)
+      if (header[i] == header[j])
+        throw std::invalid_argument("CsvTable::fromCells: duplicate column '" + header[i] + "'");
+  for (const auto& r : rows)
+    if (r.size() != header.size()) throw std::invalid_argument("CsvTable::fromCells: ragged row");
+  CsvTable t;
+  t.source_ = std::move(source);
+  t.dialect_ = CsvDialect{',', '.'};
+  t.header_ = std::move(header);
+  t.rows_ = std::move(rows);
+  t.lines_ = std::move(lines);
+  return t;
 }
 
 double CsvTable::number(std::size_t row, std::size_t col) const {

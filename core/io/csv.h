@@ -67,6 +67,12 @@ class CsvTable {
  public:
   static constexpr std::size_t kMaxFieldBytes = 64 * 1024;
 
+  /// A table built by another reader (a report turned into columns): numbers as '.'-decimal text,
+  /// `lines[r]` the physical line of the file that row r comes from. Rows must have one cell per
+  /// header name and the names must be unique (std::invalid_argument otherwise: a bug of the caller).
+  static CsvTable fromCells(std::string source, std::vector<std::string> header,
+                            std::vector<std::vector<std::string>> rows, std::vector<long> lines);
+
   const std::string& source() const { return source_; }
   const std::vector<std::string>& header() const { return header_; }
   const std::vector<std::string>& comments() const { return comments_; }  ///< '#' lines, without '#'

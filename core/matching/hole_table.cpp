@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -223,10 +224,76 @@ HoleTable readHoleTable(const std::string& path, std::size_t minPoints) {
   return holeTableFromText(readFile(path), displayPath(path), minPoints);
 }
 
+ProbePointSet probePointsFromCmmReport(const CmmTextReport& report, std::size_t minPoints) {
+  if (report.runs.size() != 1) {
+    throw ValidationError(
+        ErrorContext{report.source, report.runs.size() > 1 ? report.runs[1].line : 0, 0, {}},
+        "the report has " + std::to_string(report.runs.size()) +
+            " runs; probe points are read from a report of one run");
+  }
+  const bool pcdmis = report.format == CmmReportFormat::PcDmis;
+  ProbePointSet set;
+  set.source = report.source;
+  int withZ = 0;
+  const CmmFeature* firstWithoutZ = nullptr;
+  const CmmFeature* firstWithZ = nullptr;
+  std::map<std::string, long> ids;
+  for (const CmmFeature& f : report.runs.front().features) {
+    if (pcdmis && f.type.rfind("LOCATION", 0) != 0) continue;
+    const auto axis = [&](const char* a) {
+      const CmmValue* v = f.value(pcdmis ? std::string(a) : std::string(a) + " Location");
+      return v && v->nominal ? v : nullptr;
+    };
+    const CmmValue *x = axis("X"), *y = axis("Y"), *z = axis("Z");
+    if (!x || !y) continue;
+    ProbePoint p;
+    p.id = pcdmis || !f.label.empty() ? f.label : "step" + std::to_string(f.step);
+    if (const auto [it, fresh] = ids.emplace(p.id, f.line); !fresh) {
+      if (pcdmis)
+        throw ValidationError(
+            ErrorContext{report.source, f.line, 0, p.id},
+            "duplicate point id '" + p.id + "' (first on line " + std::to_string(it->second) + ")");
+      p.id += "@step" + std::to_string(f.step);
+      ids.emplace(p.id, f.line);
+    }
+    std::string type = f.featureType;
+    for (char& c : type) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    p.surface = type.empty() ? std::string("feature") : type;
+    const CmmValue* d = f.value(pcdmis ? "D" : "Diameter");
+    if (d && d->nominal) p.surface += " D" + CsvWriter::formatNumber(*d->nominal, 6);
+    p.nominal = {*x->nominal, *y->nominal, z ? *z->nominal : 0.0};
+    p.measured = {x->actual, y->actual, z ? z->actual : 0.0};
+    if (z) {
+      ++withZ;
+      if (!firstWithZ) firstWithZ = &f;
+    } else if (!firstWithoutZ) {
+      firstWithoutZ = &f;
+    }
+    set.points.push_back(std::move(p));
+  }
+  if (withZ > 0 && firstWithoutZ) {
+    throw ValidationError(ErrorContext{report.source, firstWithoutZ->line, 0, firstWithoutZ->label},
+                          "this feature has no Z but others have one (first on line " +
+                              std::to_string(firstWithZ->line) +
+                              "); probe points are either all planar or all 3-D");
+  }
+  set.planar = withZ == 0;
+  set.hasNormals = false;
+  if (set.points.size() < minPoints) {
+    throw ValidationError(ErrorContext{report.source, 0, 0, {}},
+                          "has " + std::to_string(set.points.size()) +
+                              " features with a nominal and actual X and Y location, at least " +
+                              std::to_string(minPoints) + " needed");
+  }
+  return set;
+}
+
 ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minPoints,
                                        const CsvReadOptions& csv) {
   const std::string text = readFile(path);
   if (looksLikeHoleTable(text)) return holeTableFromText(text, displayPath(path), minPoints).points;
+  if (looksLikeCmmTextReport(text))
+    return probePointsFromCmmReport(cmmTextReportFromText(text, displayPath(path)), minPoints);
   return probePointsFromCsv(parseCsv(text, displayPath(path), csv), minPoints);
 }
 

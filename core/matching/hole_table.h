@@ -27,6 +27,7 @@
 #include <map>
 #include <string>
 
+#include "core/io/cmm_text_report.h"
 #include "core/matching/probe_points.h"
 
 namespace metrofit {
@@ -46,9 +47,20 @@ bool looksLikeHoleTable(const std::string& text);
 HoleTable holeTableFromText(const std::string& text, const std::string& source, std::size_t minPoints = 3);
 HoleTable readHoleTable(const std::string& path, std::size_t minPoints = 3);
 
+/// Probe points from a CMM text report of one run (core/io/cmm_text_report.h): one point per
+/// feature that prints a nominal and an actual X and Y location (PC-DMIS: the X / Y / Z rows of a
+/// LOCATION dimension; OGP: X / Y / Z Location), q = the nominals, p = the actuals, in mm; planar
+/// (z = 0) when no feature has a Z, an error naming the line when only some have one. Ids: the
+/// PC-DMIS dimension name (LOC1) or the OGP label ("step<n>" without one); surface: the feature
+/// type in lower case ("circle", "sphere"), with " D<nominal>" when a diameter (D / Diameter) has a
+/// nominal, so features of different nominal size are separate groups. Position-only (no normals).
+/// ValidationError for several runs or fewer than `minPoints` points.
+ProbePointSet probePointsFromCmmReport(const CmmTextReport& report, std::size_t minPoints = 3);
+
 /// Probe points from a file in any accepted form, detected by content: a PC-DMIS hole table
-/// (looksLikeHoleTable) or the CSV of docs/file-formats.md#contact-probed-points in the dialect `csv`
-/// (probePointsFromCsv). The file is read once, so "-" (standard input) works.
+/// (looksLikeHoleTable), a CMM text report (looksLikeCmmTextReport: probePointsFromCmmReport) or the CSV of
+/// docs/file-formats.md#contact-probed-points in the dialect `csv` (probePointsFromCsv). The file is read
+/// once, so "-" (standard input) works.
 ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minPoints = 3,
                                        const CsvReadOptions& csv = {});
 

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/common/error.h"
+#include "core/io/cmm_text_report.h"
 #include "core/io/file_io.h"
 #include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
@@ -69,6 +70,26 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
     if (!setup::looksLikeDmis(text))
       throw ParseError(ErrorContext{shown, 1, 0, {}}, "not a DMIS file (its first statement is not DMISMN)");
     s.rows = dmisMeasuredCount(text);
+    return s;
+  }
+  // CMM text reports (OGP step / summary reports, PC-DMIS text reports), recognised by content.
+  if ((kind == dataset_kind::kCmmReport || kind == dataset_kind::kFeatureSeries ||
+       kind == dataset_kind::kProbePoints) &&
+      looksLikeCmmTextReport(text)) {
+    const CmmTextReport report = cmmTextReportFromText(text, shown);
+    if (kind == dataset_kind::kFeatureSeries) {
+      const CsvTable table = cmmReportFeatureTable(report);
+      s.rows = static_cast<long>(table.rowCount());
+      s.columns = table.header();
+    } else if (kind == dataset_kind::kProbePoints) {
+      s.rows = static_cast<long>(probePointsFromCmmReport(report, 1).points.size());
+      s.columns = {"id", "surface", "qx", "qy", "qz", "px", "py", "pz"};
+    } else {
+      // Values a setup model can name: those with a nominal (or a printed deviation).
+      for (const CmmRun& run : report.runs)
+        for (const CmmFeature& f : run.features)
+          for (const CmmValue& v : f.values) s.rows += v.nominal || v.printedDeviation ? 1 : 0;
+    }
     return s;
   }
   if (kind == dataset_kind::kHoleTable || (kind == dataset_kind::kProbePoints && looksLikeHoleTable(text))) {
@@ -147,7 +168,10 @@ nlohmann::json datasetListJson(const Project& project, const std::string& projec
 }
 
 CsvTable readDatasetTable(const std::string& projectPath, const DatasetRef& dataset) {
-  return readCsvFile(resolveDatasetPath(projectPath, dataset), dataset.csv);
+  const std::string path = resolveDatasetPath(projectPath, dataset);
+  // A feature series may be a CMM text report (one row per run); every other kind is CSV here.
+  if (dataset.kind == dataset_kind::kFeatureSeries) return readFeatureTable(path, dataset.csv);
+  return readCsvFile(path, dataset.csv);
 }
 
 DatasetRef addDataset(Project& project, const std::string& projectPath, const AddDatasetRequest& request) {
@@ -185,8 +209,9 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
   (void)s;
   const fs::path folder = fs::absolute(fs::path(parentFolder(projectPath))).lexically_normal();
   if (fromStdin) {
-    ref.path = ref.id + extensionFor(ref.kind);
-    writeFileAtomic((folder / ref.path).string(), readFile("-", 256u << 20));
+    const std::string content = readFile("-", 256u << 20);
+    ref.path = ref.id + (looksLikeCmmTextReport(content) ? std::string(".txt") : extensionFor(ref.kind));
+    writeFileAtomic((folder / ref.path).string(), content);
   } else {
     const fs::path file = fs::absolute(fs::path(request.file)).lexically_normal();
     const fs::path rel = file.lexically_relative(folder);

@@ -6,12 +6,15 @@
 //
 // Kinds, as the command line spells them (the project file writes '_' for '-'):
 //   thermal-log    CSV, read as a thermal log (time column, strictly increasing time)
-//   probe-points   CSV of contact-probed points, or a PC-DMIS hole-table report
+//   probe-points   CSV of contact-probed points, a PC-DMIS hole-table report or a CMM text report
 //   circular-test  CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm
-//   cmm-report     CSV part,time_min,dimension,nominal_mm,measured_mm,lower_tol_mm,upper_tol_mm, or a
-//                  DMIS output file (the setup study reads it against its model)
+//   cmm-report     CSV part,time_min,dimension,nominal_mm,measured_mm,lower_tol_mm,upper_tol_mm, a
+//                  DMIS output file or a CMM text report (OGP step / summary report, PC-DMIS text
+//                  report; core/io/cmm_text_report.h), told apart by content (the setup study reads
+//                  it against its model); rows: the values with a nominal
 //   setup-model    JSON relation graph (no CSV options)
-//   feature-series CSV of measured feature values in production order (SPC)
+//   feature-series CSV of measured feature values in production order (SPC), or a CMM text report
+//                  (one row per run, cmmReportFeatureTable)
 //   dmis           DMIS output file (no CSV options)
 //   hole-table     PC-DMIS hole-table report (no CSV options)
 // A dataset is checked when it is added: the file is read as its kind says, so a wrong delimiter or

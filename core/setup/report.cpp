@@ -16,6 +16,8 @@ namespace metrofit::setup {
 namespace {
 
 constexpr double kLimitTolMm = 1e-6;  ///< report limits / nominals must match the model this closely
+/// A DMIS tolerance actual more than this many tolerance widths outside its band is implausible.
+constexpr double kImplausibleWidths = 10.0;
 
 std::string fmt(double v) {
   std::ostringstream s;
@@ -472,6 +474,23 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
                 (options.taMeaning == DmisTaMeaning::Actual ? "a deviation" : "the actual value") +
                 " or with the other sign convention");
       }
+      // Without INTOL / OUTOL the band itself is the check: a tolerance actual that lands more than
+      // kImplausibleWidths tolerance widths outside it was read in the wrong meaning (an actual
+      // diameter taken as a deviation, say), not measured on a part worth correcting.
+      const double width = up - lo;
+      if (!hasStatus && width > 0.0 &&
+          (dev < lo - kImplausibleWidths * width || dev > up + kImplausibleWidths * width)) {
+        const bool asActualValue = options.taMeaning == DmisTaMeaning::Actual ||
+                                   (options.taMeaning == DmisTaMeaning::Auto && nominal &&
+                                    std::abs(v.value - *nominal) < std::abs(v.value));
+        throw ValidationError(
+            ErrorContext{source, v.line, 0, field},
+            "the tolerance actual " + fmt(v.value) + " read as " +
+                (asActualValue ? "the actual value" : "a deviation") + " gives the deviation " + fmt(dev) +
+                " mm, more than " + fmt(kImplausibleWidths) + " tolerance widths outside the tolerance " +
+                fmt(lo) + " / " + fmt(up) + " of '" + d.id + "'; read it as " +
+                (asActualValue ? "a deviation" : "the actual value") + " or with the other sign convention");
+      }
       m.rows.push_back({part, 0.0, q, dev, source, v.line});
       continue;
     }
@@ -486,6 +505,126 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
 
 Measurements readDmisReport(const std::string& path, const Model& model, const DmisOptions& options) {
   return dmisReportFromText(readFile(path, 256u << 20), displayPath(path), model, options);
+}
+
+namespace {
+
+/// "oriball:Diameter" -> {"oriball", "Diameter"}; "oriball" -> {"oriball", ""}.
+std::pair<std::string, std::string> splitReportLabel(const std::string& label) {
+  const auto colon = label.rfind(':');
+  if (colon == std::string::npos) return {trim(label), {}};
+  return {trim(std::string_view(label).substr(0, colon)), trim(std::string_view(label).substr(colon + 1))};
+}
+
+std::string collapse(std::string_view s) {
+  std::string out;
+  for (char c : s)
+    if (c != ' ' && c != '\t') out += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+bool featureNamed(const CmmFeature& f, const std::string& name, CmmReportFormat format) {
+  const std::string u = upper(name);
+  if (!f.label.empty() && upper(f.label) == u) return true;
+  if (format == CmmReportFormat::PcDmis) return !f.featureName.empty() && upper(f.featureName) == u;
+  return collapse(name) == "STEP" + std::to_string(f.step);
+}
+
+const CmmValue* reportValue(const CmmFeature& f, const std::string& value, const std::string& axis,
+                            CmmReportFormat format) {
+  const bool ogp = format != CmmReportFormat::PcDmis;
+  if (!value.empty()) {
+    if (const CmmValue* v = f.value(value)) return v;
+    const std::string u = upper(value);
+    if (ogp && (u == "X" || u == "Y" || u == "Z")) return f.value(u + " Location");
+    return nullptr;
+  }
+  if (const CmmValue* v = f.value(ogp ? axis + " Location" : axis)) return v;
+  const CmmValue* only = nullptr;
+  int withNominal = 0;
+  for (const CmmValue& v : f.values) {
+    if (v.nominal) {
+      only = &v;
+      ++withNominal;
+    }
+  }
+  return withNominal == 1 ? only : nullptr;
+}
+
+std::string valueNames(const CmmFeature& f) {
+  std::string out;
+  for (const CmmValue& v : f.values) out += (out.empty() ? "" : ", ") + v.name;
+  return out.empty() ? std::string("none") : out;
+}
+
+std::string featureTitle(const CmmFeature& f, CmmReportFormat format) {
+  if (format == CmmReportFormat::PcDmis) return "dimension '" + f.label + "'";
+  return "step " + std::to_string(f.step) + (f.label.empty() ? std::string() : " '" + f.label + "'");
+}
+
+}  // namespace
+
+Measurements cmmTextReportMeasurements(const CmmTextReport& report, const Model& model) {
+  Measurements m;
+  m.sources.push_back(report.source);
+  const std::string base = baseName(report.source);
+  for (std::size_t k = 0; k < report.runs.size(); ++k) {
+    const CmmRun& run = report.runs[k];
+    const std::string part = report.runs.size() == 1 ? base : base + " run " + std::to_string(k + 1);
+    addPart(m, part);
+    for (std::size_t q = 0; q < model.dimensions.size(); ++q) {
+      const Dimension& d = model.dimensions[q];
+      const auto [featureName, valueName] = splitReportLabel(d.dmisLabel());
+      const CmmFeature* found = nullptr;
+      for (const CmmFeature& f : run.features) {
+        if (!featureNamed(f, featureName, report.format)) continue;
+        if (found) {
+          throw ValidationError(ErrorContext{report.source, f.line, 0, d.id},
+                                "the label '" + featureName + "' of dimension '" + d.id + "' names " +
+                                    featureTitle(*found, report.format) + " (line " +
+                                    std::to_string(found->line) + ") and " + featureTitle(f, report.format) +
+                                    (report.format == CmmReportFormat::PcDmis
+                                         ? std::string()
+                                         : "; name one as 'Step " + std::to_string(f.step) + "'"));
+        }
+        found = &f;
+      }
+      if (!found) continue;  // finish() reports a dimension measured in no run
+      const CmmValue* v = reportValue(*found, valueName, model.axis, report.format);
+      if (!v) {
+        throw ValidationError(
+            ErrorContext{report.source, found->line, 0, d.id},
+            featureTitle(*found, report.format) + " has no value '" +
+                (valueName.empty()
+                     ? (report.format == CmmReportFormat::PcDmis ? model.axis : model.axis + " Location")
+                     : valueName) +
+                "' for dimension '" + d.id + "' (it has: " + valueNames(*found) +
+                "); name one in the label as '" + featureName + ":<value>'");
+      }
+      if (!v->nominal && !v->printedDeviation) {
+        throw ValidationError(ErrorContext{report.source, v->line, 0, v->name},
+                              "the report prints no nominal for this value of " +
+                                  featureTitle(*found, report.format) + ", so dimension '" + d.id +
+                                  "' has no deviation");
+      }
+      const double tol = v->rounding + 1e-9;
+      if (v->upper && v->lower && (*v->upper != 0.0 || *v->lower != 0.0) &&
+          (std::abs(*v->lower - d.lower) > tol || std::abs(*v->upper - d.upper) > tol)) {
+        throw ValidationError(ErrorContext{report.source, v->line, 0, v->name},
+                              "tolerance " + fmt(*v->lower) + " / " + fmt(*v->upper) +
+                                  " differs from the model's limits " + fmt(d.lower) + " / " + fmt(d.upper) +
+                                  " of '" + d.id + "'");
+      }
+      if (v->nominal && d.nominal && std::abs(*v->nominal - *d.nominal) > tol) {
+        throw ValidationError(ErrorContext{report.source, v->line, 0, v->name},
+                              "nominal " + fmt(*v->nominal) + " differs from the model's nominal " +
+                                  fmt(*d.nominal) + " of '" + d.id + "'");
+      }
+      m.rows.push_back({part, 0.0, q, plainDeviation(*v), report.source, v->line});
+    }
+  }
+  finish(m, model, report.source);
+  return m;
 }
 
 Measurements mergeMeasurements(const std::vector<Measurements>& sets, const Model& model) {
@@ -519,6 +658,8 @@ Measurements readMeasurements(const std::vector<std::string>& paths, const Model
     const std::string text = readFile(p, 256u << 20);
     if (looksLikeDmis(text))
       sets.push_back(dmisReportFromText(text, displayPath(p), model));
+    else if (looksLikeCmmTextReport(text))
+      sets.push_back(cmmTextReportMeasurements(cmmTextReportFromText(text, displayPath(p)), model));
     else
       sets.push_back(cmmReportFromCsv(parseCsv(text, displayPath(p), csv), model));
   }

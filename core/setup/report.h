@@ -39,15 +39,34 @@
 //         the model), Auto (Actual when the value is nearer the nominal than zero, else
 //         Deviation). Plausibility:
 //         when the statement says INTOL / OUTOL / OUTTOL, the deviation must be inside / outside the
-//         tolerance (T's limits, else the model's), else a ValidationError names the line.
+//         tolerance (T's limits, else the model's), else a ValidationError names the line; without
+//         such a word the deviation must not lie more than 10 tolerance widths outside the band
+//         (else a ValidationError naming TA(label) says which reading to try instead).
 //    Labels that name no dimension are skipped (DMIS files carry datums and other features); a
 //    dimension found in neither form is an error. POL coordinates are an error.
+//
+// 3. CMM text reports (core/io/cmm_text_report.h, docs/file-formats.md#cmm-text-reports): OGP step
+//    reports (.RTN printouts, plain or RTF), OGP summary reports (one part per run) and PC-DMIS
+//    standard text reports. A dimension's label (Dimension::dmisLabel()) names a feature and,
+//    after a ':', one of its values: "oriball" or "oriball:Diameter", "Step 7:Diameter",
+//    "LOC1:D". The feature is found by its label (OGP Comment or summary step title, PC-DMIS
+//    dimension name), as "Step n" / "step<n>" (OGP) or by the dimensioned feature's name (PC-DMIS
+//    CIR1); case-insensitively. Without a value name the location along the model's axis is taken
+//    (OGP "Z Location", PC-DMIS axis Z), or the feature's only value with a nominal. For OGP, "X" /
+//    "Y" / "Z" stand for "X Location" etc. The deviation is actual - nominal with its plain sign
+//    (OGP PRINTS sign(nominal) * (actual - nominal) for locations; the reader has checked the
+//    printed values against that rule), nominal 0 for form values. Tolerance limits printed in the
+//    report (not both 0) and a printed nominal are checked against the model within the printed
+//    rounding. A label that names two features of one run, a missing value or a value without a
+//    nominal is a ValidationError naming the line. Parts: the file's base name for a single-run
+//    report, "<base> run <k>" for the k-th run of an OGP summary.
 //
 // Errors are ParseError / ValidationError naming file, line and field.
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
 #include "core/setup/model.h"
 
@@ -96,9 +115,12 @@ Measurements readDmisReport(const std::string& path, const Model& model, const D
 /// True when the text looks like DMIS (its first statement is DMISMN, DMISMD or FILNAM).
 bool looksLikeDmis(std::string_view text);
 
-/// Reads one or more report files (CSV or DMIS, told apart by content) and merges them: the deviation of each
-/// dimension is the mean over all rows of all files. The same (part, dimension) in two files is an error
-/// naming the second file and line.
+/// Reads a CMM text report (OGP step or summary report, PC-DMIS text report) against the model (3. above).
+Measurements cmmTextReportMeasurements(const CmmTextReport& report, const Model& model);
+
+/// Reads one or more report files (CSV, DMIS or a CMM text report, told apart by content) and merges them:
+/// the deviation of each dimension is the mean over all rows of all files. The same (part, dimension) in two
+/// files is an error naming the second file and line.
 Measurements readMeasurements(const std::vector<std::string>& paths, const Model& model,
                               const CsvReadOptions& csv = {});
 /// Merges measurement sets (same rules as readMeasurements).

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/common/error.h"
+#include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
 #include "core/io/json_util.h"
 
@@ -165,7 +166,7 @@ KinematicStudyData loadKinematicStudy(const Project& project,
       series.column = k.column;
       series.unit = columnUnit(k.column);
       const std::string file = resolve(*sref);
-      series.values = readCsvFile(file, sref->csv).numericColumn(k.column);
+      series.values = readFeatureTable(file, sref->csv).numericColumn(k.column);
       series.result = analyseSpc(series.values, k.options, ErrorContext{file, 0, 0, k.column});
       d.spc = std::move(series);
     } catch (const std::exception& e) {
@@ -187,7 +188,7 @@ KinematicStudyData loadKinematicStudy(const Project& project,
                                                  (i == 0 ? "x_dataset" : "y_dataset")},
                                 "names the dataset '" + ids[i] + "', which the project does not have");
         }
-        series[i] = axisFeatureFromCsv(readCsvFile(resolve(*ref)), k.positionColumn, k.deviationColumn);
+        series[i] = axisFeatureFromCsv(readFeatureTable(resolve(*ref)), k.positionColumn, k.deviationColumn);
       }
       series[0].nominalCrossMm = k.xNominalY;
       series[1].nominalCrossMm = k.yNominalX;

@@ -233,4 +233,38 @@ TEST(ProjectCli, RealHoleTableAndTheDemoProject) {
 }
 
 }  // namespace
+// The OGP reports of ../shared/data/real/cmm-ogp-hps-svt (real, GPL-3.0, read in place): added without
+// options, recognised by their content; a garbled copy fails with one line naming file and line.
+TEST(ProjectCli, RealOgpReportsAreAddedWithoutOptions) {
+  const std::string dir = "/work/shared/data/real/cmm-ogp-hps-svt/survey_data/";
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "real data not here: " << dir;
+  test::TempDir tmp;
+  ASSERT_EQ(cli("project new P.metrofit", tmp).code, 0);
+  CliRun r =
+      cli("project add P.metrofit cmm-report " + dir + "meas1/L0_axial_top_module1_1.txt --id rtf", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = cli("project add P.metrofit cmm-report " + dir + "L123_fixture_sho.txt --id summary", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = cli("project add P.metrofit feature-series " + dir + "L123_fixture_sho.txt --id runs", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = cli("project list P.metrofit", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json list = parseJson(r.out, "stdout");
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_EQ(list[1]["rows"], 533);  // the summary's 533 printed deviations
+  EXPECT_EQ(list[2]["rows"], 13);   // one row per run
+  // The runs as an SPC series: the hole-pin diameter of "Step 7" over the 13 runs.
+  r = cli("spc --data " + dir + "L123_fixture_sho.txt --column step7.diameter --subgroup 2", tmp);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("6 subgroups of 2"), std::string::npos) << r.err;
+  // A garbled copy: a letter in a number on line 15.
+  std::string text = test::readText(dir + "fixture/L0/empty_fixture0.txt");
+  text.replace(text.find("+454.74389"), 10, "+454.7O389");
+  test::writeText(tmp.file("garbled.txt"), text);
+  r = cli("project add P.metrofit cmm-report garbled.txt", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("garbled.txt:15:"), std::string::npos) << r.err;
+}
+
 }  // namespace metrofit

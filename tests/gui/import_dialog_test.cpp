@@ -395,6 +395,35 @@ TEST_F(ImportDialogTest, FilesThatAreNotCsvAreImportedWithoutDialectOrMapping) {
   EXPECT_FALSE(importButton(dialog)->isEnabled());
 }
 
+// CMM text reports are recognised by content and imported without dialect or mapping: a real OGP
+// step report wrapped in RTF (../shared/data/real/cmm-ogp-hps-svt, GPL-3.0, read in place) and a
+// PC-DMIS text report written here from the PC-DMIS help ("Dimension Command Format").
+TEST_F(ImportDialogTest, CmmTextReportsAreImportedWithoutOptions) {
+  const std::string pcdmis =
+      "DIM LOC1= LOCATION OF CIRCLE CIR1  UNITS=MM ,$\n"
+      "GRAPH=OFF  TEXT=OFF  MULT=10.00  OUTPUT=BOTH  HALF ANGLE=NO\n"
+      "AX    NOMINAL       +TOL       -TOL       MEAS        DEV     OUTTOL\n"
+      "X      10.000      0.050      0.050     10.012      0.012      0.000 ----#----\n"
+      "END OF DIMENSION LOC1\n";
+  EXPECT_EQ(ImportDialog::guessKind(QStringLiteral("r.txt"), QByteArray::fromStdString(pcdmis)),
+            QStringLiteral("cmm-report"));
+  const QString real =
+      QStringLiteral("/work/shared/data/real/cmm-ogp-hps-svt/survey_data/meas1/L0_axial_top_module1_1.txt");
+  if (!QFileInfo::exists(real)) GTEST_SKIP() << "real data not here";
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(real);
+  EXPECT_EQ(dialog.kind(), QStringLiteral("cmm-report"));
+  EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_FALSE(dialog.findChild<QComboBox*>(QStringLiteral("importDelimiter"))->isEnabled());
+  EXPECT_FALSE(dialog.findChild<QTableWidget*>(QStringLiteral("importMapping"))->isEnabled());
+  EXPECT_EQ(dialog.dataset().kind, dataset_kind::kCmmReport);
+  EXPECT_EQ(dialog.dataset().csv, CsvReadOptions{});
+  // The same report as a feature series (one row per run) is accepted too.
+  dialog.setKind(QStringLiteral("feature-series"));
+  EXPECT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.dataset().kind, dataset_kind::kFeatureSeries);
+}
+
 TEST_F(ImportDialogTest, MappedCircularTestIsReadAlikeByKinematicsAndDiagnosis) {
   // The demo's circular test as a German export: ';', decimal commas, its own column names.
   QFile demo(QString::fromStdString((test::sourceDir() / "resources/demo/data/circular_demo.csv").string()));

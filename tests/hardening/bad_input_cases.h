@@ -129,6 +129,37 @@ inline const std::string kDmis =
     "TA(D2)=TOL/DISTB,-0.021,INTOL\n"
     "ENDFIL\n";
 
+// A PC-DMIS standard text report against kModel (layout from the PC-DMIS help, "Dimension Command
+// Format"): POS_D1 on the model's axis Z, D2 the diameter row.
+inline const std::string kPcDmis =
+    "PART NAME  : BAD INPUT TEST\n"
+    "DIM POS_D1= LOCATION OF PLANE PLN1  UNITS=MM ,$\n"
+    "GRAPH=OFF  TEXT=OFF  MULT=10.00  OUTPUT=BOTH  HALF ANGLE=NO\n"
+    "AX    NOMINAL       +TOL       -TOL       MEAS        DEV     OUTTOL\n"
+    "Z      42.000      0.020      0.020     42.013      0.013      0.000 ----#----\n"
+    "END OF DIMENSION POS_D1\n"
+    "DIM D2= LOCATION OF CIRCLE CIR2  UNITS=MM ,$\n"
+    "GRAPH=OFF  TEXT=OFF  MULT=10.00  OUTPUT=BOTH  HALF ANGLE=NO\n"
+    "AX    NOMINAL       +TOL       -TOL       MEAS        DEV     OUTTOL\n"
+    "D      18.500      0.030      0.050     18.479     -0.021      0.000 --#------\n"
+    "END OF DIMENSION D2\n";
+
+// An OGP summary report of two runs (the layout of OGP's "Nominal Actual Tolerances Deviation"
+// report; locations print sign(nominal) * (actual - nominal)).
+inline const std::string kOgpSummary =
+    "Machine Serial Number: 0000000           Page:    1\n"
+    "Routine Name           Run #       Date & Time\n"
+    "bracket.RTN                1 Mon Jan 05 08:00:00 2015\n"
+    "Feature      Unit   Nominal     Actual      Tolerances      Deviation   Exceeded\n"
+    "Step 1 - Ball A\n"
+    "Y Location     -00050.000 -00050.003        +00000.003\n"
+    "Machine Serial Number: 0000000           Page:    1\n"
+    "Routine Name           Run #       Date & Time\n"
+    "bracket.RTN                2 Mon Jan 05 09:00:00 2015\n"
+    "Feature      Unit   Nominal     Actual      Tolerances      Deviation   Exceeded\n"
+    "Step 1 - Ball A\n"
+    "Y Location     -00050.000 -00049.998        -00000.002\n";
+
 inline std::string circle() {
   // 16 points CCW then 16 CW on a 50 mm circle with a small, smooth deviation.
   std::string s = "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n";
@@ -767,6 +798,46 @@ inline std::vector<Case> cases() {
        "setup --model m.json --data p.dmo --out out.json",
        {{"m.json", kModel}, {"p.dmo", "DMISMN/'x',05.0\n" + binary()}},
        {"p.dmo:3:1", "binary"},
+       json},
+      // ---- CMM text reports ----------------------------------------------------------------------
+      {"TR01",
+       "PC-DMIS text report",
+       "DEV is not MEAS - NOMINAL",
+       "setup --model m.json --data r.txt --out out.json",
+       {{"m.json", kModel}, {"r.txt", replaced(kPcDmis, "42.013      0.013", "42.013      0.031")}},
+       {"r.txt:5", "MEAS - NOMINAL"},
+       json},
+      {"TR02",
+       "PC-DMIS text report",
+       "text in a number",
+       "setup --model m.json --data r.txt --out out.json",
+       {{"m.json", kModel}, {"r.txt", replaced(kPcDmis, "18.479", "18.4T9")}},
+       {"r.txt:10", "'18.4T9' is not a number"},
+       json},
+      {"TR03",
+       "PC-DMIS text report",
+       "row with a missing value",
+       "setup --model m.json --data r.txt --out out.json",
+       {{"m.json", kModel}, {"r.txt", replaced(kPcDmis, "      0.000 --#------", " --#------")}},
+       {"r.txt:10", "expected 6 values"},
+       json},
+      {"TR04",
+       "OGP summary report",
+       "printed deviation does not follow sign(nominal) * (actual - nominal)",
+       "spc --data s.txt --column step1.y_location --subgroup 2 --out out.json",
+       {{"s.txt", replaced(kOgpSummary, "+00000.003", "-00000.003")}},
+       {"s.txt:6", "sign(nominal) * (actual - nominal)"},
+       json},
+      {"TR05",
+       "OGP step report",
+       "RTF document cut off (truncated)",
+       "setup --model m.json --data r.txt --out out.json",
+       {{"m.json", kModel},
+        {"r.txt",
+         "{\\rtf1\\ansi\\deff0{\\fonttbl{\\f0\\froman\\fprq1 Courier New;}}\r\n\\fs20 "
+         "C:\\\\r\\\\bracket.RTN\r\n"
+         " Step:  1     MM     Cart  Decimal Degree   Measure\r\nComment:\r\nPOS_D1\r\n"}},
+       {"r.txt:6", "truncated"},
        json},
       // ---- circular test / measured path (CSV) --------------------------------------------------
       {"CT01",

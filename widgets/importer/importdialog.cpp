@@ -22,6 +22,7 @@
 #include <string_view>
 #include <utility>
 
+#include "core/io/cmm_text_report.h"
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
 #include "core/project/datasets.h"
@@ -271,6 +272,8 @@ QString ImportDialog::guessKind(const QString& path, const QByteArray& head) {
   if (suffix == QLatin1String("dmi") || suffix == QLatin1String("dms") || suffix == QLatin1String("dmis") ||
       setup::looksLikeDmis(text))
     return QStringLiteral("dmis");
+  // CMM text reports (OGP step / summary reports, plain or RTF; PC-DMIS text reports): by content.
+  if (looksLikeCmmTextReport(text)) return QStringLiteral("cmm-report");
   if (looksLikeHoleTable(text)) return QStringLiteral("hole-table");
   // A CSV file: by its column names.
   const auto [line, comments] = headerLine(text);
@@ -397,7 +400,7 @@ QString ImportDialog::role(const QString& column) const {
 
 CsvReadOptions ImportDialog::csvOptions() const {
   CsvReadOptions o;
-  if (!datasetKindIsCsv(projectKind(kind()).toStdString())) return o;
+  if (!datasetKindIsCsv(projectKind(kind()).toStdString()) || looksLikeCmmTextReport(text_)) return o;
   o.dialect.delimiter = static_cast<char>(delimiter_->currentData().toInt());
   o.dialect.decimal = static_cast<char>(decimal_->currentData().toInt());
   for (const std::string& column : header_) {
@@ -511,7 +514,8 @@ void ImportDialog::revalidate() {
   updating_ = true;
   problem_.clear();
   const std::string cliKind = kind().toStdString();
-  const bool csv = datasetKindIsCsv(projectKind(kind()).toStdString());
+  // A CMM text report is read by its own reader whatever CSV kind it is imported as.
+  const bool csv = datasetKindIsCsv(projectKind(kind()).toStdString()) && !looksLikeCmmTextReport(text_);
   delimiter_->setEnabled(csv);
   decimal_->setEnabled(csv);
   mapping_->setEnabled(csv);

@@ -127,5 +127,36 @@ TEST(Dmis, FeatureSyntaxErrors) {
   EXPECT_FALSE(looksLikeDmis("part,time_min\n"));
 }
 
+TEST(Dmis, ToleranceActualFarOutsideTheBandNamesTheLabel) {
+  // No INTOL / OUTOL: the band is the check. D2 (nominal 18.5, -0.05 / 0.03, width 0.08) written as
+  // the actual diameter 18.44 by the QIF-to-DMIS converter, but read as a deviation.
+  const std::string head = "DMISMN/'x',05.3\nTA(POS_D1)=TOL/CORTOL,ZAXIS,0.011\n";
+  DmisOptions deviation;
+  deviation.taMeaning = DmisTaMeaning::Deviation;
+  EXPECT_EQ(
+      dmisError(head + "TA(D2)=TOL/DIAM,18.44\n", deviation),
+      "out.dmi:3: field 'TA(D2)': the tolerance actual 18.44 read as a deviation gives the deviation 18.44 "
+      "mm, more than 10 tolerance widths outside the tolerance -0.05 / 0.03 of 'D2'; read it as the actual "
+      "value or with the other sign convention");
+  // Auto reads it as the actual value (nearer the nominal): -0.06, a plausible part.
+  const Measurements m = dmisReportFromText(head + "TA(D2)=TOL/DIAM,18.44\n", "out.dmi", test::smallModel());
+  EXPECT_TRUE(near(m.deviationMm[1], -0.06, 1e-12));
+  // Read as the actual value (42.011 for D1 is fine), a deviation-sized number lands about 18.5 mm off.
+  DmisOptions actual;
+  actual.taMeaning = DmisTaMeaning::Actual;
+  EXPECT_NE(dmisError("DMISMN/'x',05.3\nTA(POS_D1)=TOL/CORTOL,ZAXIS,42.011\nTA(D2)=TOL/DIAM,0.02\n", actual)
+                .find("read as the actual value gives the deviation -18.48"),
+            std::string::npos);
+  // D1 (-0.02 / 0.02, width 0.04): 0.41 is 9.75 widths above the band and kept; 0.43 is 10.25 widths.
+  const std::string d2 = "TA(D2)=TOL/DIAM,18.44\n";
+  EXPECT_TRUE(near(dmisReportFromText("DMISMN/'x',05.3\nTA(POS_D1)=TOL/CORTOL,ZAXIS,0.41\n" + d2, "out.dmi",
+                                      test::smallModel())
+                       .deviationMm[0],
+                   0.41, 1e-12));
+  EXPECT_NE(dmisError("DMISMN/'x',05.3\nTA(POS_D1)=TOL/CORTOL,ZAXIS,0.43\n" + d2)
+                .find("out.dmi:2: field 'TA(POS_D1)': the tolerance actual 0.43 read as a deviation"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace metrofit::setup
