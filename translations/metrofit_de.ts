@@ -454,7 +454,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+417"/>
+        <location line="+420"/>
         <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
         <translation>%1: ein generischer Effekt (was kein Effekt des Katalogs erklärt) kann dem Modell der Studie (%2) noch nicht hinzugefügt werden; er wird hier und in der Residuenprüfung angezeigt, nicht übernommen</translation>
     </message>
@@ -464,7 +464,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-512"/>
+        <location line="-515"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
@@ -500,12 +500,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+5"/>
-        <location line="+303"/>
+        <location line="+306"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
     </message>
     <message>
-        <location line="-289"/>
+        <location line="-292"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Das deklarierte Modell, wie es vor dem Hinzufügen eines Effekts angepasst wurde</translation>
     </message>
@@ -555,7 +555,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Übernommen</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>Every candidate effect tried, in the order tried (Ctrl+C copies the selected rows)</source>
         <translation>Alle getesteten Kandidateneffekte in der Reihenfolge des Tests (Strg+C kopiert die ausgewählten Zeilen)</translation>
     </message>
@@ -816,7 +816,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+50"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+51"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>Komma ( , )</translation>
@@ -987,12 +987,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+22"/>
-        <location line="+158"/>
+        <location line="+160"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-142"/>
+        <location line="-144"/>
         <source>&amp;Import</source>
         <translation>&amp;Importieren</translation>
     </message>
@@ -1072,7 +1072,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Vorschau (erste %1 Zeilen)</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+97"/>
         <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
         <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Alle Dateien (*)</translation>
     </message>
@@ -1097,7 +1097,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Zeile</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Choose a file to import.</source>
         <translation>Wählen Sie eine Datei zum Importieren.</translation>
     </message>
@@ -1794,7 +1794,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+55"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+58"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Metrofit-Projekte (*.metrofit)</translation>
     </message>
@@ -1860,12 +1860,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+4"/>
-        <location line="+158"/>
+        <location line="+166"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location line="-157"/>
+        <location line="-165"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
@@ -1962,22 +1962,22 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Das Projekt kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+14"/>
         <source>Recovered the autosaved project; save it to keep it.</source>
         <translation>Das automatisch gesicherte Projekt wurde wiederhergestellt; speichern Sie es, um es zu behalten.</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-56"/>
         <source>Cannot save the setup model</source>
         <translation>Das Einrichtmodell kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+84"/>
         <source>The setup model (relation graph) has unsaved edits. Do you want to save them?</source>
         <translation>Das Einrichtmodell (Beziehungsgraph) hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
@@ -1992,7 +1992,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+139"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
@@ -2012,7 +2012,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1 als „%2“ importiert</translation>
     </message>
     <message>
-        <location line="-170"/>
+        <location line="-171"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Das Projekt „%1“ hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
@@ -2054,17 +2054,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="-16"/>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location line="-12"/>
+        <location line="-13"/>
         <source>Save project as</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Export report</source>
         <translation>Bericht exportieren</translation>
     </message>

@@ -454,7 +454,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+417"/>
+        <location line="+420"/>
         <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
         <translation>%1: efektu ogólnego (tego, czego nie wyjaśnia żaden efekt z katalogu) nie można jeszcze dodać do modelu badania (%2); jest pokazany tutaj i w sprawdzeniu residuów, nie zastosowany</translation>
     </message>
@@ -464,7 +464,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-512"/>
+        <location line="-515"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
@@ -500,12 +500,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+5"/>
-        <location line="+303"/>
+        <location line="+306"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
     </message>
     <message>
-        <location line="-289"/>
+        <location line="-292"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Zadeklarowany model dopasowany przed dodaniem jakiegokolwiek efektu</translation>
     </message>
@@ -555,7 +555,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Przyjęty</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>Every candidate effect tried, in the order tried (Ctrl+C copies the selected rows)</source>
         <translation>Wszystkie wypróbowane efekty kandydujące w kolejności prób (Ctrl+C kopiuje zaznaczone wiersze)</translation>
     </message>
@@ -816,7 +816,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+50"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+51"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>przecinek ( , )</translation>
@@ -987,12 +987,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+22"/>
-        <location line="+158"/>
+        <location line="+160"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-142"/>
+        <location line="-144"/>
         <source>&amp;Import</source>
         <translation>&amp;Importuj</translation>
     </message>
@@ -1072,7 +1072,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Podgląd (pierwsze %1 wierszy)</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+97"/>
         <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
         <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Wszystkie pliki (*)</translation>
     </message>
@@ -1097,7 +1097,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Wiersz</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Choose a file to import.</source>
         <translation>Wybierz plik do importu.</translation>
     </message>
@@ -1796,7 +1796,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+55"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+58"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Projekty Metrofit (*.metrofit)</translation>
     </message>
@@ -1862,12 +1862,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+4"/>
-        <location line="+158"/>
+        <location line="+166"/>
         <source>&amp;Save</source>
         <translation>&amp;Zapisz</translation>
     </message>
     <message>
-        <location line="-157"/>
+        <location line="-165"/>
         <source>Save &amp;As…</source>
         <translation>Zapisz &amp;jako…</translation>
     </message>
@@ -1964,22 +1964,22 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można otworzyć projektu</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Opened %1</source>
         <translation>Otwarto %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+14"/>
         <source>Recovered the autosaved project; save it to keep it.</source>
         <translation>Przywrócono automatycznie zapisany projekt; zapisz go, aby go zachować.</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-56"/>
         <source>Cannot save the setup model</source>
         <translation>Nie można zapisać modelu ustawczego</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+84"/>
         <source>The setup model (relation graph) has unsaved edits. Do you want to save them?</source>
         <translation>Model ustawczy (graf relacji) ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
@@ -1994,7 +1994,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Niezapisane zmiany</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+139"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
@@ -2014,7 +2014,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zaimportowano %1 jako „%2”</translation>
     </message>
     <message>
-        <location line="-170"/>
+        <location line="-171"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Projekt „%1” ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
@@ -2056,17 +2056,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="-16"/>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>Saved %1</source>
         <translation>Zapisano %1</translation>
     </message>
     <message>
-        <location line="-12"/>
+        <location line="-13"/>
         <source>Save project as</source>
         <translation>Zapisz projekt jako</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Export report</source>
         <translation>Eksport raportu</translation>
     </message>

@@ -1,7 +1,5 @@
 #include "app/gui/mainwindow.h"
 
-#include <algorithm>
-
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
@@ -16,7 +14,6 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
-#include <QScrollBar>
 #include <QStackedWidget>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -293,18 +290,10 @@ bool MainWindow::openProject(const QString& path, QString* error) {
     return false;
   }
   fileChangedBar_->hide();
-  fitNavigatorWidth();
   addRecentFile(document_->fileName());
   statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(document_->fileName())),
                            kStatusTimeoutMs);
   return true;
-}
-
-void MainWindow::fitNavigatorWidth() {
-  const int content = navigator_->columnWidth(0) + 2 * navigator_->frameWidth() +
-                      navigator_->verticalScrollBar()->sizeHint().width() + 8;
-  const int wanted = std::clamp(content, navigator_->minimumWidth(), std::max(360, width() / 3));
-  resizeDocks({navigatorDock_}, {wanted}, Qt::Horizontal);
 }
 
 void MainWindow::recoverUntitled() {
@@ -424,7 +413,6 @@ bool MainWindow::saveAs() {
   }
   if (!saveSetupModel()) return false;
   fileChangedBar_->hide();
-  fitNavigatorWidth();
   addRecentFile(document_->fileName());
   statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->fileName())),
                            kStatusTimeoutMs);

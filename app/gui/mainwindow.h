@@ -68,9 +68,6 @@ class MainWindow : public QMainWindow {
   void createActions();
   void createMenus();
   void updateTitle();
-  /// Widens the navigator dock to its longest title (at most a third of the window), so the
-  /// project's title is read whole without scrolling sideways.
-  void fitNavigatorWidth();
   /// The Edit menu's stack: the setup model's while the setup page shows its graph, else the project's.
   void updateActiveUndoStack();
   /// Saves the setup model when it has unsaved edits (Save writes both documents); false on failure.
