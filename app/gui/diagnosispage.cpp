@@ -231,8 +231,8 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
 
   content_->addWidget(charts);
   content_->addWidget(table_);
-  content_->setStretchFactor(0, 3);
-  content_->setStretchFactor(1, 2);
+  content_->setStretchFactor(0, 1);  // equal: the wrapped evidence rows are higher than one line
+  content_->setStretchFactor(1, 1);
   content_->setChildrenCollapsible(false);
   check_->setObjectName(QStringLiteral("diagnosisResidualCheck"));
   tabs_->setObjectName(QStringLiteral("diagnosisTabs"));

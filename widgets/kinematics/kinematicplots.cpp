@@ -518,7 +518,7 @@ void paintPathPlot(QPainter& p, const QRectF& area, const PathPlotData& d, const
   p.setFont(plotFont(s, 0.9));
   p.setPen(Qt::black);
   p.drawText(L.plotArea().adjusted(s.fontPx * 0.5, 0, -s.fontPx * 0.5, -s.fontPx * 0.4),
-             Qt::AlignRight | Qt::AlignBottom,
+             Qt::AlignRight | Qt::AlignBottom | Qt::TextWordWrap,  // a narrow plot wraps it, never cuts it
              PlotText::tr("deviations from the nominal point × %1")
                  .arg(s.locale.toString(L.magnification(), 'g', 6)));
   p.restore();
