@@ -1794,7 +1794,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+58"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+55"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Metrofit-Projekte (*.metrofit)</translation>
     </message>
@@ -1860,12 +1860,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+4"/>
-        <location line="+166"/>
+        <location line="+158"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location line="-165"/>
+        <location line="-157"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
@@ -1962,22 +1962,22 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Das Projekt kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
         <source>Recovered the autosaved project; save it to keep it.</source>
         <translation>Das automatisch gesicherte Projekt wurde wiederhergestellt; speichern Sie es, um es zu behalten.</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-48"/>
         <source>Cannot save the setup model</source>
         <translation>Das Einrichtmodell kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+76"/>
         <source>The setup model (relation graph) has unsaved edits. Do you want to save them?</source>
         <translation>Das Einrichtmodell (Beziehungsgraph) hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
@@ -1992,7 +1992,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location line="+139"/>
+        <location line="+138"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
@@ -2012,7 +2012,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1 als „%2“ importiert</translation>
     </message>
     <message>
-        <location line="-171"/>
+        <location line="-170"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Das Projekt „%1“ hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
@@ -2054,17 +2054,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="-16"/>
-        <location line="+23"/>
+        <location line="+22"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location line="-13"/>
+        <location line="-12"/>
         <source>Save project as</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+23"/>
         <source>Export report</source>
         <translation>Bericht exportieren</translation>
     </message>
@@ -3377,7 +3377,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+354"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+355"/>
         <location filename="../widgets/report/summarysection.cpp" line="+150"/>
         <source>value</source>
         <translation>Wert</translation>
@@ -3889,12 +3889,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+69"/>
+        <location line="+105"/>
         <source>frame rotation</source>
         <translation>Drehung des Koordinatensystems</translation>
     </message>
     <message>
-        <location line="-68"/>
+        <location line="-104"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Maschineneinstellwerte (%1%2)</translation>
     </message>
@@ -3902,6 +3902,26 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+2"/>
         <source>, OUTSIDE TRAVEL</source>
         <translation>, AUSSERHALB DES VERFAHRWEGS</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>control</source>
+        <translation>Steuerung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>blocks (mm, °)</source>
+        <translation>Sätze (mm, °)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>The same posture as a controller frame (instead of the axis values)</source>
+        <translation>Dieselbe Lage als Steuerungs-Frame (statt der Achswerte)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Datum shift then rotation of the working plane; no axis moves (STAY). The whole programs: metrofit-cli match --frame heidenhain|siemens|fanuc.</source>
+        <translation>Nullpunktverschiebung, dann Schwenken der Bearbeitungsebene; keine Achse fährt (STAY). Die vollständigen Programme: metrofit-cli match --frame heidenhain|siemens|fanuc.</translation>
     </message>
     <message>
         <location line="+7"/>

@@ -1796,7 +1796,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+58"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+55"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Projekty Metrofit (*.metrofit)</translation>
     </message>
@@ -1862,12 +1862,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+4"/>
-        <location line="+166"/>
+        <location line="+158"/>
         <source>&amp;Save</source>
         <translation>&amp;Zapisz</translation>
     </message>
     <message>
-        <location line="-165"/>
+        <location line="-157"/>
         <source>Save &amp;As…</source>
         <translation>Zapisz &amp;jako…</translation>
     </message>
@@ -1964,22 +1964,22 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można otworzyć projektu</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Opened %1</source>
         <translation>Otwarto %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
         <source>Recovered the autosaved project; save it to keep it.</source>
         <translation>Przywrócono automatycznie zapisany projekt; zapisz go, aby go zachować.</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-48"/>
         <source>Cannot save the setup model</source>
         <translation>Nie można zapisać modelu ustawczego</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+76"/>
         <source>The setup model (relation graph) has unsaved edits. Do you want to save them?</source>
         <translation>Model ustawczy (graf relacji) ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
@@ -1994,7 +1994,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Niezapisane zmiany</translation>
     </message>
     <message>
-        <location line="+139"/>
+        <location line="+138"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
@@ -2014,7 +2014,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zaimportowano %1 jako „%2”</translation>
     </message>
     <message>
-        <location line="-171"/>
+        <location line="-170"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Projekt „%1” ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
@@ -2056,17 +2056,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="-16"/>
-        <location line="+23"/>
+        <location line="+22"/>
         <source>Saved %1</source>
         <translation>Zapisano %1</translation>
     </message>
     <message>
-        <location line="-13"/>
+        <location line="-12"/>
         <source>Save project as</source>
         <translation>Zapisz projekt jako</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+23"/>
         <source>Export report</source>
         <translation>Eksport raportu</translation>
     </message>
@@ -3380,7 +3380,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+354"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+355"/>
         <location filename="../widgets/report/summarysection.cpp" line="+150"/>
         <source>value</source>
         <translation>wartość</translation>
@@ -3892,12 +3892,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+69"/>
+        <location line="+105"/>
         <source>frame rotation</source>
         <translation>obrót układu współrzędnych</translation>
     </message>
     <message>
-        <location line="-68"/>
+        <location line="-104"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Wartości nastawienia maszyny (%1%2)</translation>
     </message>
@@ -3905,6 +3905,26 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+2"/>
         <source>, OUTSIDE TRAVEL</source>
         <translation>, POZA ZAKRESEM PRZESUWU</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>control</source>
+        <translation>Sterowanie</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>blocks (mm, °)</source>
+        <translation>Bloki (mm, °)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>The same posture as a controller frame (instead of the axis values)</source>
+        <translation>To samo położenie jako układ (frame) sterowania (zamiast wartości osi)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Datum shift then rotation of the working plane; no axis moves (STAY). The whole programs: metrofit-cli match --frame heidenhain|siemens|fanuc.</source>
+        <translation>Przesunięcie punktu zerowego, potem obrót płaszczyzny obróbki; żadna oś się nie porusza (STAY). Pełne programy: metrofit-cli match --frame heidenhain|siemens|fanuc.</translation>
     </message>
     <message>
         <location line="+7"/>

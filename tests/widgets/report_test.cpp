@@ -344,6 +344,9 @@ TEST_F(ReportTest, PageOneSummarisesAndSectionsConclude) {
       << page1.toStdString();
 
   const QString all = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")}).out;
+  // The posture also as a controller frame for the three controls, in their own words.
+  for (const char* block : {"PLANE SPATIAL SPA", "CYCL DEF 7.1 X", "AROT Z=", "TRANS X=", "G68.2 X"})
+    EXPECT_TRUE(all.contains(QString::fromUtf8(block))) << "the report lacks the frame block " << block;
   EXPECT_EQ(all.count(QStringLiteral("Conclusion")), 2);  // thermal, matching (probe points has none)
   EXPECT_GE(all.count(QStringLiteral("Recommendation: ")), 2);
   EXPECT_TRUE(all.contains(QStringLiteral("References")));

@@ -21,6 +21,7 @@
 #include <Eigen/Geometry>
 
 #include "core/common/axis_ticks.h"
+#include "core/machine/controller_frame.h"
 #include "core/study/matching_study.h"
 #include "widgets/common/palette.h"
 #include "widgets/report/reportpainter.h"
@@ -367,6 +368,42 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
                      .arg(adj.withinTravel ? QString() : ReportText::tr(", OUTSIDE TRAVEL")),
                  out.mm(40.0));
   out.table(machineTable);
+
+  // The same posture as a controller frame (core/machine/controller_frame.h; metrofit-cli match
+  // --frame): the blocks that set it, for a control that rotates the working plane instead of
+  // taking axis adjustment values.
+  {
+    const matching::Pose& pose = res.primaryRun().pose;
+    ReportTable frames;
+    frames.header = {ReportText::tr("control"), ReportText::tr("blocks (mm, °)")};
+    frames.widths = {0.8, 3.2};
+    frames.alignment = {Qt::AlignLeft, Qt::AlignLeft};
+    const std::pair<machine::FrameFormat, QString> controls[] = {
+        {machine::FrameFormat::Heidenhain, QStringLiteral("HEIDENHAIN")},
+        {machine::FrameFormat::Siemens, QStringLiteral("SINUMERIK")},
+        {machine::FrameFormat::Fanuc, QStringLiteral("FANUC")}};
+    for (const auto& [format, name] : controls) {
+      const QString text =
+          QString::fromStdString(machine::writeControllerFrame(pose.rotation, pose.translation, format));
+      QStringList blocks;
+      for (QString line : text.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        line = line.trimmed();
+        if (format == machine::FrameFormat::Heidenhain)  // drop the block number
+          line = line.section(QLatin1Char(' '), 1);
+        if (line.startsWith(QLatin1String("CYCL DEF 7.")) ||
+            line.startsWith(QLatin1String("PLANE SPATIAL")) || line.startsWith(QLatin1String("TRANS ")) ||
+            line.startsWith(QLatin1String("AROT ")) || line.startsWith(QLatin1String("G68.2")))
+          blocks << line;
+      }
+      frames.rows.push_back({name, blocks.join(QStringLiteral("; "))});
+    }
+    out.subheading(ReportText::tr("The same posture as a controller frame (instead of the axis values)"),
+                   out.mm(30.0));
+    out.table(frames);
+    out.paragraph(
+        ReportText::tr("Datum shift then rotation of the working plane; no axis moves (STAY). The "
+                       "whole programs: metrofit-cli match --frame heidenhain|siemens|fanuc."));
+  }
 
   // Remeasure loop.
   if (res.remeasure) {
