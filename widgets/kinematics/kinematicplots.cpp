@@ -348,7 +348,9 @@ void paintPolarPlot(QPainter& p, const QRectF& area, const PolarPlotData& data, 
                  Qt::AlignCenter, QStringLiteral("%1°").arg(a));
     }
   }
-  // Scale rings: deviation j * step; the ring 0 is the nominal circle.
+  // Scale rings: deviation j * step; the ring 0 is the nominal circle. Their labels are drawn after
+  // the loops, on a white box, so a curve passing the label's place never hides it.
+  std::vector<std::pair<QRectF, QString>> ringLabels;
   for (int j = L.innerRing(); j <= L.outerRing(); ++j) {
     const double rho = (d.radiusMm + L.magnification() * j * L.ringStepMm()) * L.pixelsPerMm();
     p.setPen(j == 0 ? pen(kinematic_colour::nominal(), s.lineWidth, Qt::DashLine)
@@ -361,9 +363,8 @@ void paintPolarPlot(QPainter& p, const QRectF& area, const PolarPlotData& data, 
                                        .arg(s.locale.toString(um, 'g', 4));
     const double t = 62.0 * kDegToRad;
     const QPointF at = c + QPointF(rho * std::cos(t), -rho * std::sin(t));
-    p.setPen(QColor(80, 80, 80));
-    p.drawText(QRectF(at.x() + 2, at.y() - fm.height(), s.fontPx * 6, fm.height()),
-               Qt::AlignLeft | Qt::AlignBottom, label);
+    ringLabels.push_back(
+        {QRectF(at.x() + 2, at.y() - fm.height(), fm.horizontalAdvance(label) + 2, fm.height()), label});
   }
   // The loops.
   auto drawRadial = [&](const std::vector<RadialPoint>& pts, const QColor& colour, double width) {
@@ -380,6 +381,12 @@ void paintPolarPlot(QPainter& p, const QRectF& area, const PolarPlotData& data, 
     drawRadial(l.points,
                l.counterClockwise ? kinematic_colour::counterClockwise() : kinematic_colour::clockwise(),
                s.lineWidth);
+  }
+  p.setFont(small);
+  for (const auto& [box, label] : ringLabels) {
+    p.fillRect(box.adjusted(-1, 0, 1, 0), QColor(255, 255, 255, 215));
+    p.setPen(QColor(80, 80, 80));
+    p.drawText(box, Qt::AlignLeft | Qt::AlignBottom, label);
   }
   // Legend.
   const double used = drawLegend(p, L.legendArea(), polarLegendItems(d), s);
