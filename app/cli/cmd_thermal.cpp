@@ -194,8 +194,10 @@ int runFit(const FitArgs& a, bool fractionGiven) {
                       {"cv_rmse", cv}};
   }
   if (!std::isnan(t.cvRmse)) j["cv_rmse"] = t.cvRmse;
-  j["heldout_check"] = {{"passed", !ev.heldoutFails()},
-                        {"rule", "held-out E >= 0, finite, and a stable grey model (b1 > 0)"}};
+  // "heldout_verdict": the model's pass / fail on the held-out rows (diagnose's "heldout_check" is the
+  // residual check of those rows, so the fit's verdict has a name of its own).
+  j["heldout_verdict"] = {{"passed", !ev.heldoutFails()},
+                          {"rule", "held-out E >= 0, finite, and a stable grey model (b1 > 0)"}};
   if (o.model == ThermalModelKind::Gnnmci || o.model == ThermalModelKind::Mlp) j["seed"] = a.seed;
   if (o.model == ThermalModelKind::Gnnmci) {
     j["training"]["method"] = toString(o.gnnmci.training);
