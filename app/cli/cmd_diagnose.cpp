@@ -158,7 +158,7 @@ int runKinematic(const MethodArgs& a) {
 /// Setup (core/diagnose/setup_diagnosis.h): the report series (CSV or DMIS) against the model.
 int runSetup(const MethodArgs& a) {
   const setup::Model model = setup::readModel(a.model);
-  const setup::Measurements m = setup::readMeasurements({a.data}, model, csvOptions());
+  const setup::Measurements m = setup::readMeasurements({a.data}, model, csvOptions(), dmisOptions());
   diagnose::Diagnosis d;
   {
     Progress progress("diagnose setup");
@@ -226,6 +226,7 @@ void registerDiagnoseCommands(CLI::App& app) {
     } else {
       addCsvOptions(sub);
     }
+    if (std::string(domain) == "setup") addDmisOptions(sub);
     addOut(sub, a->out);
     const std::string d = domain;
     sub->callback([a, d] {

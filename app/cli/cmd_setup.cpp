@@ -183,7 +183,7 @@ int runSetup(const SetupArgs& a) {
     if (!xo.isValid(&why)) throw OptionsError(ErrorContext{{}, 0, 0, "--program-number"}, why);
   }
   const setup::Model model = setup::readModel(a.model);
-  const setup::Measurements meas = setup::readMeasurements(a.data, model, csvOptions());
+  const setup::Measurements meas = setup::readMeasurements(a.data, model, csvOptions(), dmisOptions());
   const setup::SetupInstance inst(model, meas);
 
   setup::ExactOptions eo;
@@ -350,7 +350,7 @@ int runSetupValidate(const ValidateArgs& a) {
                          "'" + m + "' is not a metaheuristic of the setup correction (cripso, pso, ga, coa)");
   }
   std::optional<setup::Measurements> measured;
-  if (!a.data.empty()) measured = setup::readMeasurements(a.data, model);
+  if (!a.data.empty()) measured = setup::readMeasurements(a.data, model, csvOptions(), dmisOptions());
 
   const bool tty = ::isatty(::fileno(stderr)) != 0;
   const setup::ValidationResult r =
@@ -462,6 +462,7 @@ void registerSetupCommand(CLI::App& app) {
       sub->add_option("--data", a->data, "Measurement report(s): CMM series CSV or DMIS output, required")
           ->take_all());
   addCsvOptions(sub);
+  addDmisOptions(sub);
   sub->add_option("--method", a->method, "exact|cripso|pso|ga|coa")
       ->check(CLI::IsMember(setup::setupMethodNames()))
       ->capture_default_str();

@@ -28,6 +28,8 @@ namespace {
 
 std::function<int()> g_selected;
 std::string g_delimiter = "auto";
+std::string g_taMeaning = "auto";
+std::string g_taSign = "plain";
 std::string g_decimal = "auto";
 std::string g_sampleInterval;  ///< --sample-interval as given ("15s"), empty when not given
 int g_argc = 0;
@@ -164,6 +166,27 @@ void addSampleIntervalOption(CLI::App* sub) {
 void addThermalLogOptions(CLI::App* sub) {
   addCsvOptions(sub);
   addSampleIntervalOption(sub);
+}
+
+void addDmisOptions(CLI::App* sub) {
+  sub->add_option(
+         "--ta-meaning", g_taMeaning,
+         "DMIS output without F/FA: TA(label) is the deviation, the actual value, or auto (nearer the "
+         "nominal than zero: the actual value)")
+      ->check(CLI::IsMember({"auto", "deviation", "actual"}))
+      ->capture_default_str();
+  sub->add_option("--ta-sign", g_taSign,
+                  "DMIS output: plain (TA = actual - nominal) or nominal (the writer reports sign(nominal) * "
+                  "(actual - nominal))")
+      ->check(CLI::IsMember({"plain", "nominal"}))
+      ->capture_default_str();
+}
+
+setup::DmisOptions dmisOptions() {
+  setup::DmisOptions o;
+  o.taMeaning = setup::parseDmisTaMeaning(g_taMeaning, "--ta-meaning");
+  o.signFollowsNominal = g_taSign == "nominal";
+  return o;
 }
 
 CsvReadOptions csvOptions() {

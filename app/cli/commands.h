@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/io/csv.h"
+#include "core/setup/report.h"
 #include "core/thermal/thermal_log.h"
 
 namespace CLI {
@@ -47,6 +48,11 @@ void addSampleIntervalOption(CLI::App* sub);
 void addThermalLogOptions(CLI::App* sub);
 /// The dialect, and the sampling interval when given (an OptionsError when it does not parse).
 CsvReadOptions csvOptions();
+/// --ta-meaning auto|deviation|actual and --ta-sign plain|nominal: how a DMIS output file's
+/// TA(label)=TOL/... is read when the file has no F and FA to compute the deviation from
+/// (docs/file-formats.md#dmis-output); dmisOptions() returns the setting.
+void addDmisOptions(CLI::App* sub);
+setup::DmisOptions dmisOptions();
 std::vector<std::string> splitList(const std::string& commaSeparated);
 /// Reads a thermal log and checks that target and every input name a column (inputs != target).
 ThermalLog readThermalArgs(const std::string& data, const std::string& target, const std::string& inputList,

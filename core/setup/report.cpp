@@ -652,12 +652,12 @@ Measurements mergeMeasurements(const std::vector<Measurements>& sets, const Mode
 }
 
 Measurements readMeasurements(const std::vector<std::string>& paths, const Model& model,
-                              const CsvReadOptions& csv) {
+                              const CsvReadOptions& csv, const DmisOptions& dmis) {
   std::vector<Measurements> sets;
   for (const auto& p : paths) {
     const std::string text = readFile(p, 256u << 20);
     if (looksLikeDmis(text))
-      sets.push_back(dmisReportFromText(text, displayPath(p), model));
+      sets.push_back(dmisReportFromText(text, displayPath(p), model, dmis));
     else if (looksLikeCmmTextReport(text))
       sets.push_back(cmmTextReportMeasurements(cmmTextReportFromText(text, displayPath(p)), model));
     else

@@ -121,8 +121,10 @@ Measurements cmmTextReportMeasurements(const CmmTextReport& report, const Model&
 /// Reads one or more report files (CSV, DMIS or a CMM text report, told apart by content) and merges them:
 /// the deviation of each dimension is the mean over all rows of all files. The same (part, dimension) in two
 /// files is an error naming the second file and line.
+/// `dmis`: how a DMIS file's TA(label) values without F/FA are read (metrofit-cli setup --ta-meaning,
+/// --ta-sign).
 Measurements readMeasurements(const std::vector<std::string>& paths, const Model& model,
-                              const CsvReadOptions& csv = {});
+                              const CsvReadOptions& csv = {}, const DmisOptions& dmis = {});
 /// Merges measurement sets (same rules as readMeasurements).
 Measurements mergeMeasurements(const std::vector<Measurements>& sets, const Model& model);
 

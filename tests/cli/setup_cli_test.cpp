@@ -177,6 +177,44 @@ TEST(SetupCli, ExportAndDmisData) {
             std::string::npos);
 }
 
+// DMIS output with tolerance actuals only (no F / FA), written from the statement syntax of the DMIS
+// standard (TA(label)=TOL/CORTOL|DIAM,value,INTOL): 0.012 for POS_D1 is a deviation, 18.52 for D2 (nominal
+// 18.5) an actual diameter. --ta-meaning says how to read them; the plausibility check against the
+// tolerance names the label when the chosen reading contradicts the file's INTOL.
+TEST(SetupCli, DmisToleranceActualMeaningIsAnOption) {
+  test::TempDir tmp;
+  test::writeText(tmp.file("m.json"), kSmallModel);
+  test::writeText(tmp.file("r.dmi"),
+                  "DMISMN/'x',05.3\nTA(POS_D1)=TOL/CORTOL,ZAXIS,0.012,INTOL\nTA(D2)=TOL/DIAM,18.52,INTOL\n");
+  CliRun r = cli("setup --model m.json --data r.dmi", tmp);  // auto: by the nearer of nominal and zero
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["dimensions"][0]["deviation_before_mm"].get<double>(), 0.012, 1e-12);
+  EXPECT_NEAR(j["dimensions"][1]["deviation_before_mm"].get<double>(), 0.020, 1e-12);
+  r = cli("setup --model m.json --data r.dmi --ta-meaning actual", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("r.dmi:2: field 'TA(POS_D1)': the deviation -41.988 mm is outside"), std::string::npos)
+      << r.err;
+  r = cli("setup --model m.json --data r.dmi --ta-meaning deviation", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("r.dmi:3: field 'TA(D2)': the deviation 18.52 mm is outside"), std::string::npos)
+      << r.err;
+  r = cli("setup --model m.json --data r.dmi --ta-meaning mean", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--ta-meaning"), std::string::npos) << r.err;
+  // --ta-sign nominal: this writer reports sign(nominal) * (actual - nominal); with positive nominals the
+  // same numbers.
+  r = cli("setup --model m.json --data r.dmi --ta-sign nominal", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["dimensions"][0]["deviation_before_mm"].get<double>(), 0.012, 1e-12);
+  // diagnose setup reads the report with the same options.
+  r = cli("diagnose setup --model m.json --data r.dmi --ta-meaning actual", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("TA(POS_D1)"), std::string::npos) << r.err;
+}
+
 TEST(SetupCli, BadInputExits2WithOneLineNamingFileLineAndField) {
   test::TempDir tmp;
   test::writeText(tmp.file("m.json"), kSmallModel);
