@@ -316,12 +316,7 @@ void KinematicsPage::refresh() {
   QString settingsError;  // studies.kinematics cannot be read
   {
     const QSignalBlocker blocker(combo_);
-    combo_->clear();
-    for (const DatasetRef& d : datasets_) {
-      const QString id = QString::fromStdString(d.id);
-      combo_->addItem(id, id);
-      combo_->setItemData(combo_->count() - 1, QString::fromStdString(d.description), Qt::ToolTipRole);
-    }
+    fillDatasetCombo(combo_, datasets_);
     int keep = combo_->findData(previous);
     if (keep < 0) {
       try {

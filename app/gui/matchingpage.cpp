@@ -595,12 +595,7 @@ void MatchingPage::refresh() {
   }
   {
     const QSignalBlocker blocker(combo_);
-    combo_->clear();
-    for (const DatasetRef& d : sets_) {
-      const QString id = QString::fromStdString(d.id);
-      combo_->addItem(id, id);
-      combo_->setItemData(combo_->count() - 1, QString::fromStdString(d.description), Qt::ToolTipRole);
-    }
+    fillDatasetCombo(combo_, sets_);
     const int keep = combo_->findData(previous);
     combo_->setCurrentIndex(keep >= 0 ? keep : 0);
   }

@@ -149,12 +149,7 @@ void ThermalPage::refresh() {
   const QString previous = currentDataset();
   {
     const QSignalBlocker blocker(combo_);
-    combo_->clear();
-    for (const DatasetRef& d : logs_) {
-      const QString id = QString::fromStdString(d.id);
-      combo_->addItem(id, id);
-      combo_->setItemData(combo_->count() - 1, QString::fromStdString(d.description), Qt::ToolTipRole);
-    }
+    fillDatasetCombo(combo_, logs_);
     const int keep = combo_->findData(previous);
     combo_->setCurrentIndex(keep >= 0 ? keep : 0);
   }

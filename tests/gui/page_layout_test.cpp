@@ -214,5 +214,24 @@ TEST_P(MatchingTablesTest, KinematicsLabelsWrapInsteadOfBeingCut) {
 
 INSTANTIATE_TEST_SUITE_P(Languages, MatchingTablesTest, ::testing::Values("de", "pl", "en"));
 
+// The dataset chooser of the matching, thermal and kinematics pages (fillDatasetCombo): what was
+// there goes, each dataset is one item with its id as text and data and its description as tooltip.
+TEST(DatasetCombo, ItemsAreTheIdsWithTheirDescriptionsAsTooltips) {
+  QComboBox combo;
+  combo.addItem(QStringLiteral("stale"));
+  std::vector<DatasetRef> sets(2);
+  sets[0].id = "thermal_caiviac";
+  sets[0].description = "CAIVIAC spindle, 46 h";
+  sets[1].id = "thermal_sim";
+  fillDatasetCombo(&combo, sets);
+  ASSERT_EQ(combo.count(), 2);
+  EXPECT_EQ(combo.itemText(0), QStringLiteral("thermal_caiviac"));
+  EXPECT_EQ(combo.itemData(0).toString(), QStringLiteral("thermal_caiviac"));
+  EXPECT_EQ(combo.itemData(0, Qt::ToolTipRole).toString(), QStringLiteral("CAIVIAC spindle, 46 h"));
+  EXPECT_EQ(combo.findData(QStringLiteral("thermal_sim")), 1);
+  fillDatasetCombo(&combo, {});
+  EXPECT_EQ(combo.count(), 0);
+}
+
 }  // namespace
 }  // namespace metrofit

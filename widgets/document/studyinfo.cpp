@@ -1,5 +1,6 @@
 #include "widgets/document/studyinfo.h"
 
+#include <QComboBox>
 #include <QCoreApplication>
 
 #include "core/project/project.h"
@@ -101,6 +102,15 @@ QString datasetKindTitle(const QString& kind) {
   if (kind == QLatin1String(dataset_kind::kHoleTable))
     return QCoreApplication::translate("StudyInfo", "Hole table");
   return kind;
+}
+
+void fillDatasetCombo(QComboBox* combo, const std::vector<DatasetRef>& datasets) {
+  combo->clear();
+  for (const DatasetRef& d : datasets) {
+    const QString id = QString::fromStdString(d.id);
+    combo->addItem(id, id);
+    combo->setItemData(combo->count() - 1, QString::fromStdString(d.description), Qt::ToolTipRole);
+  }
 }
 
 }  // namespace metrofit

@@ -3,8 +3,13 @@
 // navigator, the study pages and the undo command texts (translated, context "StudyInfo").
 #include <QString>
 #include <QStringList>
+#include <vector>
+
+class QComboBox;
 
 namespace metrofit {
+
+struct DatasetRef;
 
 /// The studies in navigator order (the keys of metrofit::study::kAll).
 QStringList studyKeys();
@@ -16,5 +21,8 @@ QString studySummary(const QString& study);
 QStringList studyDatasetKinds(const QString& study);
 /// Readable name of a dataset kind ("Thermal log"); the kind itself when unknown.
 QString datasetKindTitle(const QString& kind);
+/// A study page's dataset chooser: cleared, then one item per dataset (text and data: its id; tooltip:
+/// its description). The caller blocks the combo's signals and chooses the current item.
+void fillDatasetCombo(QComboBox* combo, const std::vector<DatasetRef>& datasets);
 
 }  // namespace metrofit
