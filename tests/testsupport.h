@@ -22,6 +22,16 @@ inline std::filesystem::path sourceDir() {
 inline std::filesystem::path binDir() {
   return env("METROFIT_BIN_DIR", "bin");
 }
+/// A file or folder of the real measured data (../shared/data/real next to the source tree, see its
+/// README.md; not in the repository): $METROFIT_REAL_DATA, else <source>/../shared/data/real, else
+/// /work/shared/data/real. A test that needs it skips when it is not there (GTEST_SKIP).
+inline std::filesystem::path realData(const std::string& relative) {
+  const std::string fromEnv = env("METROFIT_REAL_DATA");
+  if (!fromEnv.empty()) return std::filesystem::path(fromEnv) / relative;
+  const std::filesystem::path beside = sourceDir().parent_path() / "shared" / "data" / "real";
+  if (std::filesystem::exists(beside)) return beside / relative;
+  return std::filesystem::path("/work/shared/data/real") / relative;
+}
 inline std::filesystem::path outDir() {
   std::filesystem::path p = env("METROFIT_TEST_OUT", "test-output");
   std::filesystem::create_directories(p);

@@ -112,9 +112,9 @@ bool FrameOptions::isValid(std::string* why) const {
   return fanucProgramNumberOk(programNumber, why);
 }
 
-std::string writeControllerFrame(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, FrameFormat format,
-                                 const FrameOptions& options) {
-  requireValid(options, "frame options");
+namespace {
+
+void requireProperPosture(const Eigen::Matrix3d& R, const Eigen::Vector3d& t) {
   const ErrorContext ctx{{}, 0, 0, "posture"};
   if (!R.allFinite() || !t.allFinite()) throw ValidationError(ctx, "the posture has a non-finite value");
   const double orth = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
@@ -123,14 +123,59 @@ std::string writeControllerFrame(const Eigen::Matrix3d& R, const Eigen::Vector3d
         ctx, "the rotation is not a proper rotation (|R^T R - I| = " + number(orth, 12, false) + ", det " +
                  number(R.determinant(), 6, false) + ")");
   }
+}
+
+/// The blocks that set the frame (no block numbers), unchecked.
+std::vector<std::string> frameBlocks(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, FrameFormat format,
+                                     int d) {
+  switch (format) {
+    case FrameFormat::Heidenhain: {
+      const auto a = spatialAnglesDeg(R);
+      return {"CYCL DEF 7.0 DATUM SHIFT", "CYCL DEF 7.1 X" + number(t.x(), d, true),
+              "CYCL DEF 7.2 Y" + number(t.y(), d, true), "CYCL DEF 7.3 Z" + number(t.z(), d, true),
+              "PLANE SPATIAL SPA" + number(a[0], d, true) + " SPB" + number(a[1], d, true) + " SPC" +
+                  number(a[2], d, true) + " STAY"};
+    }
+    case FrameFormat::Siemens: {
+      const auto a = spatialAnglesDeg(R);
+      return {"TRANS X=" + number(t.x(), d, false) + " Y=" + number(t.y(), d, false) +
+                  " Z=" + number(t.z(), d, false),
+              "AROT Z=" + number(a[2], d, false), "AROT Y=" + number(a[1], d, false),
+              "AROT X=" + number(a[0], d, false)};
+    }
+    case FrameFormat::Fanuc: {
+      const auto e = eulerZxzAnglesDeg(R);
+      return {"G68.2 X" + number(t.x(), d, false) + " Y" + number(t.y(), d, false) + " Z" +
+              number(t.z(), d, false) + " I" + number(e[0], d, false) + " J" + number(e[1], d, false) + " K" +
+              number(e[2], d, false)};
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+std::vector<std::string> controllerFrameBlocks(const Eigen::Matrix3d& R, const Eigen::Vector3d& t,
+                                               FrameFormat format, int decimals) {
+  FrameOptions o;
+  o.decimals = decimals;
+  requireValid(o, "frame options");
+  requireProperPosture(R, t);
+  return frameBlocks(R, t, format, decimals);
+}
+
+std::string writeControllerFrame(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, FrameFormat format,
+                                 const FrameOptions& options) {
+  requireValid(options, "frame options");
+  requireProperPosture(R, t);
   const int d = options.decimals;
+  const std::vector<std::string> blocks = frameBlocks(R, t, format, d);
   const std::string title = printable(options.title, false);
   std::string out;
   auto line = [&](const std::string& s) { out += s + "\n"; };
 
   switch (format) {
     case FrameFormat::Heidenhain: {
-      const auto a = spatialAnglesDeg(R);
       int n = 0;
       auto block = [&](const std::string& s) { line(std::to_string(n++) + " " + s); };
       block("BEGIN PGM " + options.programName + " MM");
@@ -140,33 +185,22 @@ std::string writeControllerFrame(const Eigen::Matrix3d& R, const Eigen::Vector3d
       block("; CALL PGM after the preset of the part is active; the shift and the plane stay");
       block("; active. STAY: the rotary axes are not moved. Reset: PLANE RESET STAY, datum shift 0.");
       block("; The scale of a fit is not applied.");
-      block("CYCL DEF 7.0 DATUM SHIFT");
-      block("CYCL DEF 7.1 X" + number(t.x(), d, true));
-      block("CYCL DEF 7.2 Y" + number(t.y(), d, true));
-      block("CYCL DEF 7.3 Z" + number(t.z(), d, true));
-      block("PLANE SPATIAL SPA" + number(a[0], d, true) + " SPB" + number(a[1], d, true) + " SPC" +
-            number(a[2], d, true) + " STAY");
+      for (const std::string& b : blocks) block(b);
       block("END PGM " + options.programName + " MM");
       break;
     }
     case FrameFormat::Siemens: {
-      const auto a = spatialAnglesDeg(R);
       line("; Metrofit posture correction as a programmable frame" + (title.empty() ? "" : ": " + title));
       line("; TRANS (mm) on top of the active settable frame, then AROT about the rotated Z, Y', X''");
       line("; (one axis per block, independent of MD 10600 $MN_FRAME_ANGLE_INPUT_MODE):");
       line("; R = Rz(Z) Ry(Y) Rx(X), positive by the right-hand rule. Call after G54 ...; the frame");
       line("; stays active after M17; TRANS without values resets it. The tool is not oriented:");
       line("; use CYCLE800 or TRAORI for that. The scale of a fit is not applied.");
-      line("TRANS X=" + number(t.x(), d, false) + " Y=" + number(t.y(), d, false) +
-           " Z=" + number(t.z(), d, false));
-      line("AROT Z=" + number(a[2], d, false));
-      line("AROT Y=" + number(a[1], d, false));
-      line("AROT X=" + number(a[0], d, false));
+      for (const std::string& b : blocks) line(b);
       line("M17");
       break;
     }
     case FrameFormat::Fanuc: {
-      const auto e = eulerZxzAnglesDeg(R);
       std::string o = std::to_string(options.programNumber);
       o = std::string(o.size() < 4 ? 4 - o.size() : 0, '0') + o;
       line("%");
@@ -176,9 +210,7 @@ std::string writeControllerFrame(const Eigen::Matrix3d& R, const Eigen::Vector3d
       line(fanucComment("X Y Z: ORIGIN IN THE CURRENT WORK OFFSET, MM. CANCEL WITH G69"));
       line(fanucComment("G53.1 NOT WRITTEN: IT MOVES THE ROTARY AXES. SCALE NOT APPLIED"));
       line("G21");
-      line("G68.2 X" + number(t.x(), d, false) + " Y" + number(t.y(), d, false) + " Z" +
-           number(t.z(), d, false) + " I" + number(e[0], d, false) + " J" + number(e[1], d, false) + " K" +
-           number(e[2], d, false));
+      for (const std::string& b : blocks) line(b);
       line("M99");
       line("%");
       break;

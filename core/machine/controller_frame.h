@@ -75,6 +75,11 @@ struct FrameOptions {
 
 /// The frame for posture (R, t) in the control's language (see above). ValidationError when R is not
 /// a rotation or a value is not finite.
+/// Only the blocks that set the frame (no program frame, comments or block numbers), as written by
+/// writeControllerFrame: HEIDENHAIN CYCL DEF 7.0-7.3 and PLANE SPATIAL ... STAY, SINUMERIK TRANS and
+/// AROT Z/Y/X, FANUC G68.2. Same checks as writeControllerFrame.
+std::vector<std::string> controllerFrameBlocks(const Eigen::Matrix3d& R, const Eigen::Vector3d& t,
+                                               FrameFormat format, int decimals = 4);
 std::string writeControllerFrame(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, FrameFormat format,
                                  const FrameOptions& options = {});
 

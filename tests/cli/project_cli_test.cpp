@@ -28,7 +28,7 @@ nlohmann::json readJson(const test::TempDir& tmp, const std::string& name) {
   return parseJson(test::readText(tmp.file(name)), name);
 }
 
-const std::string kRealPlate = "/work/shared/data/real/cmm-plugplate-sdss/D8131_1";
+const std::string kRealPlate = test::realData("cmm-plugplate-sdss/D8131_1").string();
 
 TEST(ProjectCli, GermanLogWithMappedColumnsInAProject) {
   test::TempDir tmp;
@@ -236,7 +236,7 @@ TEST(ProjectCli, RealHoleTableAndTheDemoProject) {
 // The OGP reports of ../shared/data/real/cmm-ogp-hps-svt (real, GPL-3.0, read in place): added without
 // options, recognised by their content; a garbled copy fails with one line naming file and line.
 TEST(ProjectCli, RealOgpReportsAreAddedWithoutOptions) {
-  const std::string dir = "/work/shared/data/real/cmm-ogp-hps-svt/survey_data/";
+  const std::string dir = test::realData("cmm-ogp-hps-svt/survey_data").string() + "/";
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "real data not here: " << dir;
   test::TempDir tmp;
   ASSERT_EQ(cli("project new P.metrofit", tmp).code, 0);

@@ -407,8 +407,8 @@ TEST_F(ImportDialogTest, CmmTextReportsAreImportedWithoutOptions) {
       "END OF DIMENSION LOC1\n";
   EXPECT_EQ(ImportDialog::guessKind(QStringLiteral("r.txt"), QByteArray::fromStdString(pcdmis)),
             QStringLiteral("cmm-report"));
-  const QString real =
-      QStringLiteral("/work/shared/data/real/cmm-ogp-hps-svt/survey_data/meas1/L0_axial_top_module1_1.txt");
+  const QString real = QString::fromStdString(
+      test::realData("cmm-ogp-hps-svt/survey_data/meas1/L0_axial_top_module1_1.txt").string());
   if (!QFileInfo::exists(real)) GTEST_SKIP() << "real data not here";
   ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
   dialog.setFile(real);

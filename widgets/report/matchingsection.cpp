@@ -383,18 +383,9 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
         {machine::FrameFormat::Siemens, QStringLiteral("SINUMERIK")},
         {machine::FrameFormat::Fanuc, QStringLiteral("FANUC")}};
     for (const auto& [format, name] : controls) {
-      const QString text =
-          QString::fromStdString(machine::writeControllerFrame(pose.rotation, pose.translation, format));
       QStringList blocks;
-      for (QString line : text.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
-        line = line.trimmed();
-        if (format == machine::FrameFormat::Heidenhain)  // drop the block number
-          line = line.section(QLatin1Char(' '), 1);
-        if (line.startsWith(QLatin1String("CYCL DEF 7.")) ||
-            line.startsWith(QLatin1String("PLANE SPATIAL")) || line.startsWith(QLatin1String("TRANS ")) ||
-            line.startsWith(QLatin1String("AROT ")) || line.startsWith(QLatin1String("G68.2")))
-          blocks << line;
-      }
+      for (const std::string& b : machine::controllerFrameBlocks(pose.rotation, pose.translation, format))
+        blocks << QString::fromStdString(b);
       frames.rows.push_back({name, blocks.join(QStringLiteral("; "))});
     }
     out.subheading(ReportText::tr("The same posture as a controller frame (instead of the axis values)"),

@@ -108,10 +108,7 @@ TEST(CsvDialect, OptionSpellings) {
 
 // Real data: the Wenzel CMM export is tab separated (cmm-wenzel-lens-points/CIR4_1).
 TEST(CsvDialect, ReadsTheRealTabSeparatedWenzelExport) {
-  const auto path =
-      test::sourceDir().parent_path() / "shared" / "data" / "real" / "cmm-wenzel-lens-points" / "CIR4_1";
-  const std::string real = "/work/shared/data/real/cmm-wenzel-lens-points/CIR4_1";
-  const std::string file = std::filesystem::exists(path) ? path.string() : real;
+  const std::string file = test::realData("cmm-wenzel-lens-points/CIR4_1").string();
   if (!std::filesystem::exists(file)) GTEST_SKIP() << "real data not here: " << file;
   const CsvTable t = readCsvFile(file);
   EXPECT_EQ(t.dialect().delimiter, '\t');
@@ -127,7 +124,8 @@ TEST(CsvDialect, ReadsTheRealTabSeparatedWenzelExport) {
 // Real data written the German way: the SJTU spindle log with ';' and decimal commas must give the
 // numbers of the original comma-separated file.
 TEST(CsvDialect, GermanCopyOfARealLogReadsTheSameNumbers) {
-  const std::string file = "/work/shared/data/real/thermal-spindle-sjtu/thermal_expansion_error_original.csv";
+  const std::string file =
+      test::realData("thermal-spindle-sjtu/thermal_expansion_error_original.csv").string();
   if (!std::filesystem::exists(file)) GTEST_SKIP() << "real data not here: " << file;
   std::istringstream in(test::readText(file));
   std::string line, head, german;

@@ -227,6 +227,26 @@ TEST(ControllerFrame, SiemensAndFanucLayout) {
   EXPECT_EQ(f[9], "%");
 }
 
+// The frame's blocks alone (what the report prints) are the program's command blocks, in order.
+TEST(ControllerFrame, BlocksAreTheProgramsCommandBlocks) {
+  const Eigen::Vector3d t(1.5, -2.25, 0.0);
+  const auto h = lines(writeControllerFrame(Rz(30.0), t, FrameFormat::Heidenhain));
+  EXPECT_EQ(controllerFrameBlocks(Rz(30.0), t, FrameFormat::Heidenhain),
+            (std::vector<std::string>{"CYCL DEF 7.0 DATUM SHIFT", "CYCL DEF 7.1 X+1.5000",
+                                      "CYCL DEF 7.2 Y-2.2500", "CYCL DEF 7.3 Z+0.0000",
+                                      "PLANE SPATIAL SPA+0.0000 SPB+0.0000 SPC+30.0000 STAY"}));
+  EXPECT_EQ(h[11], "11 PLANE SPATIAL SPA+0.0000 SPB+0.0000 SPC+30.0000 STAY");
+  EXPECT_EQ(controllerFrameBlocks(Rz(30.0), t, FrameFormat::Fanuc, 3),
+            std::vector<std::string>{"G68.2 X1.500 Y-2.250 Z0.000 I0.000 J0.000 K30.000"});
+  const auto s = controllerFrameBlocks(Rz(30.0), t, FrameFormat::Siemens);
+  ASSERT_EQ(s.size(), 4u);
+  EXPECT_EQ(s[0], "TRANS X=1.5000 Y=-2.2500 Z=0.0000");
+  EXPECT_EQ(s[1], "AROT Z=30.0000");
+  Eigen::Matrix3d bad = Eigen::Matrix3d::Identity();
+  bad(0, 0) = -1.0;  // a reflection
+  EXPECT_THROW((void)controllerFrameBlocks(bad, t, FrameFormat::Fanuc), ValidationError);
+}
+
 TEST(ControllerFrame, Errors) {
   Eigen::Matrix3d notRotation = Eigen::Matrix3d::Identity();
   notRotation(0, 0) = -1.0;  // a reflection

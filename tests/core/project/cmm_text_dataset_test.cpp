@@ -89,10 +89,7 @@ TEST(CmmTextDataset, PcDmisLocationsAreProbePoints) {
 }
 
 fs::path ogp(const std::string& rel) {
-  const fs::path here =
-      test::sourceDir().parent_path() / "shared" / "data" / "real" / "cmm-ogp-hps-svt" / "survey_data" / rel;
-  if (fs::exists(here)) return here;
-  return fs::path("/work/shared/data/real/cmm-ogp-hps-svt/survey_data") / rel;
+  return test::realData("cmm-ogp-hps-svt/survey_data/" + rel);
 }
 
 TEST(CmmTextDataset, ReportsAreAddedAsTheirKindsWithoutOptions) {

@@ -42,10 +42,7 @@ namespace fs = std::filesystem;
 using metrofit::test::near;
 
 fs::path ogpDir() {
-  const fs::path here =
-      metrofit::test::sourceDir().parent_path() / "shared" / "data" / "real" / "cmm-ogp-hps-svt";
-  if (fs::exists(here)) return here;
-  return "/work/shared/data/real/cmm-ogp-hps-svt";
+  return metrofit::test::realData("cmm-ogp-hps-svt");
 }
 
 #define REQUIRE_OGP() \
