@@ -373,13 +373,7 @@ bool KinematicsPage::identify() {
         if (trace.radialOnly) {
           const CircularAnalysis a = analyseCircularTrace(trace);
           if (const QString iso = isoText(a.iso); !iso.isEmpty()) text += QLatin1Char('\n') + iso;
-          PolarPlotData polar;
-          // The plot needs a radius to magnify around; a file without radius_mm is drawn on 100 mm.
-          polar.radiusMm = trace.nominalRadiusMm.value_or(100.0);
-          polar.radiusKnown = trace.nominalRadiusMm.has_value();
-          polar.loops = a.loops;
-          polar.title = tr("Radial deviation (polar, magnified)");
-          radialPolar_->setData(polar);
+          radialPolar_->setData(radialTestPolarData(trace, a, tr("Radial deviation (polar, magnified)")));
           radialLabel_->setText(text);
           message_->setText(text);
           stack_->setCurrentWidget(radialPage_);
@@ -485,22 +479,8 @@ void KinematicsPage::showStudy() {
   fitRowsToLabels(errors_);
 
   // Measured path and its radial deviations.
-  PathPlotData pd;
-  pd.centreMm = s.analysis.centreMm;
-  pd.radiusMm = s.analysis.radiusMm;
-  pd.nominal = s.measured.command;
-  pd.measured = s.measured.measured;
-  pd.counterClockwise.assign(s.measured.size(), true);
-  for (const CircularLoop& l : s.analysis.loops) {
-    for (std::size_t i = 0; i < l.points.size(); ++i) pd.counterClockwise[l.first + i] = l.counterClockwise;
-  }
-  pd.title = tr("Path (XY)");
-  path_->setData(pd);
-  PolarPlotData polar;
-  polar.radiusMm = s.analysis.radiusMm;
-  polar.loops = s.analysis.loops;
-  polar.title = tr("Radial deviation (polar, magnified)");
-  polar_->setData(polar);
+  path_->setData(circularPathData(s.measured, s.analysis, tr("Path (XY)")));
+  polar_->setData(circularPolarData(s.analysis, tr("Radial deviation (polar, magnified)")));
 
   compensationTable_->setRowCount(1);
   setRow(compensationTable_, 0, {tr("measured"), um(s.analysis.maxAbsDeviationMm)});
@@ -632,13 +612,9 @@ bool KinematicsPage::compensate() {
 void KinematicsPage::showCompensation() {
   const CompensationPreview& c = *compensation_;
   PathPlotData pd = path_->data();
-  pd.references = c.references;
-  pd.expected = c.expected;
-  path_->setData(pd);
   PolarPlotData polar = polar_->data();
-  polar.magnification = 0.0;
-  polar.ringStepMm = 0.0;
-  polar.compensated = radialDeviations(c.expected, study_->analysis.centreMm, study_->analysis.radiusMm);
+  addCompensationPreview(pd, polar, c, study_->analysis);
+  path_->setData(pd);
   polar_->setData(polar);
 
   int rows = 5 + (c.maxSimulatedMm ? 1 : 0);

@@ -15,6 +15,8 @@
 #include <numbers>
 #include <vector>
 
+#include "core/kinematics/iso230_4.h"
+#include "core/kinematics/measured_path.h"
 #include "core/spc/control_chart.h"
 #include "core/spc/spc.h"
 #include "core/study/circular_analysis.h"
@@ -305,6 +307,86 @@ TEST(SpcView, TableShowsTheIndicesOfTheAnalysis) {
   save(view.grab().toImage(), "kinematics-spcview.png");
   view.setMessage(QStringLiteral("nothing"));
   EXPECT_FALSE(view.meanChart()->hasChart());
+}
+
+// The plot data the kinematics page and the report both draw (one builder each, widgets/kinematics/
+// kinematicplots.h): loop directions per point, the preview's radial deviations |e - c| - R at
+// atan2 angles written out here, the histogram of only the values the chart used, and a radial-only
+// test without a radius drawn around 100 mm and marked so.
+TEST(PlotData, CircularTestBuildersCarryTheStudyAsTheFormulasSay) {
+  MeasuredPath m;
+  for (int i = 0; i < 6; ++i) {
+    const double t = i * 60.0 * std::numbers::pi / 180.0;
+    m.command.emplace_back(50.0 * std::cos(t), 50.0 * std::sin(t));
+    m.measured.emplace_back(50.01 * std::cos(t), 50.01 * std::sin(t));
+  }
+  CircularAnalysis a;
+  a.centreMm = Eigen::Vector2d(0.002, -0.001);
+  a.radiusMm = 50.0;
+  a.loops.resize(2);
+  a.loops[0].counterClockwise = true;
+  a.loops[0].first = 0;
+  a.loops[0].points.resize(2);
+  a.loops[1].counterClockwise = false;
+  a.loops[1].first = 2;
+  a.loops[1].points.resize(4);
+  const PathPlotData path = circularPathData(m, a, QStringLiteral("t"));
+  ASSERT_EQ(path.counterClockwise.size(), 6u);
+  EXPECT_EQ(path.counterClockwise, (std::vector<bool>{true, true, false, false, false, false}));
+  EXPECT_EQ(path.nominal, m.command);
+  EXPECT_EQ(path.measured, m.measured);
+  EXPECT_DOUBLE_EQ(path.radiusMm, 50.0);
+  EXPECT_EQ(path.title, QStringLiteral("t"));
+
+  PathPlotData p2 = path;
+  PolarPlotData polar = circularPolarData(a, QStringLiteral("p"));
+  EXPECT_EQ(polar.loops.size(), 2u);
+  CompensationPreview c;
+  c.references = {Eigen::Vector2d(1, 2)};
+  c.expected = {Eigen::Vector2d(0.002, 50.006), Eigen::Vector2d(-49.990, -0.001)};
+  addCompensationPreview(p2, polar, c, a);
+  EXPECT_EQ(p2.references, c.references);
+  EXPECT_EQ(p2.expected, c.expected);
+  ASSERT_EQ(polar.compensated.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Eigen::Vector2d d = c.expected[i] - a.centreMm;
+    double angle = std::atan2(d.y(), d.x()) * 180.0 / std::numbers::pi;
+    if (angle < 0.0) angle += 360.0;
+    EXPECT_NEAR(polar.compensated[i].deviationMm, d.norm() - 50.0, 1e-12) << i;
+    EXPECT_NEAR(polar.compensated[i].angleDeg, angle, 1e-9) << i;
+  }
+  EXPECT_NEAR(polar.compensated[0].deviationMm, 0.007, 1e-12);
+  EXPECT_GT(polar.magnification, 0.0);  // chosen again for the preview
+  EXPECT_GT(polar.ringStepMm, 0.0);
+
+  CircularTrace trace;
+  trace.radialOnly = true;
+  const PolarPlotData noRadius = radialTestPolarData(trace, a, QStringLiteral("r"));
+  EXPECT_DOUBLE_EQ(noRadius.radiusMm, 100.0);
+  EXPECT_FALSE(noRadius.radiusKnown);
+  trace.nominalRadiusMm = 75.0;
+  const PolarPlotData withRadius = radialTestPolarData(trace, a, QStringLiteral("r"));
+  EXPECT_DOUBLE_EQ(withRadius.radiusMm, 75.0);
+  EXPECT_TRUE(withRadius.radiusKnown);
+
+  SpcResult r;
+  r.valuesUsed = 10;  // two subgroups of five; the eleventh value is the incomplete subgroup
+  r.options.lsl = 9.9;
+  r.options.usl = 10.1;
+  r.options.nominal = 10.0;
+  r.chart.grandMean = 10.02;
+  std::vector<double> values;
+  for (int i = 0; i < 11; ++i) values.push_back(10.0 + 0.01 * i);
+  const HistogramData h = spcHistogramData(r, values, QStringLiteral("mm"), QStringLiteral("h"));
+  ASSERT_EQ(h.values.size(), 10u);
+  EXPECT_DOUBLE_EQ(h.values.back(), 10.09);
+  EXPECT_EQ(*h.lsl, 9.9);
+  EXPECT_EQ(*h.usl, 10.1);
+  EXPECT_EQ(*h.nominal, 10.0);
+  EXPECT_EQ(*h.mean, 10.02);
+  int counted = 0;
+  for (int n : h.bins.counts) counted += n;
+  EXPECT_EQ(counted, 10);
 }
 
 }  // namespace

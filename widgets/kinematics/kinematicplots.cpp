@@ -12,6 +12,9 @@
 #include <cmath>
 #include <numbers>
 #include "core/common/axis_ticks.h"
+#include "core/kinematics/iso230_4.h"
+#include "core/kinematics/measured_path.h"
+#include "core/spc/spc.h"
 
 namespace metrofit {
 namespace {
@@ -748,6 +751,66 @@ void paintHistogram(QPainter& p, const QRectF& area, const HistogramData& d, con
     p.drawText(box, Qt::AlignVCenter | (right ? Qt::AlignLeft : Qt::AlignRight), m.name);
   }
   p.restore();
+}
+
+// ---- plot data shared by the views and the report ---------------------------------------------
+
+PathPlotData circularPathData(const MeasuredPath& measured, const CircularAnalysis& analysis,
+                              const QString& title) {
+  PathPlotData pd;
+  pd.centreMm = analysis.centreMm;
+  pd.radiusMm = analysis.radiusMm;
+  pd.nominal = measured.command;
+  pd.measured = measured.measured;
+  pd.counterClockwise.assign(measured.size(), true);
+  for (const CircularLoop& l : analysis.loops) {
+    for (std::size_t i = 0; i < l.points.size() && l.first + i < pd.counterClockwise.size(); ++i)
+      pd.counterClockwise[l.first + i] = l.counterClockwise;
+  }
+  pd.title = title;
+  return pd;
+}
+
+PolarPlotData circularPolarData(const CircularAnalysis& analysis, const QString& title) {
+  PolarPlotData polar;
+  polar.radiusMm = analysis.radiusMm;
+  polar.loops = analysis.loops;
+  polar.title = title;
+  return polar;
+}
+
+PolarPlotData radialTestPolarData(const CircularTrace& trace, const CircularAnalysis& analysis,
+                                  const QString& title) {
+  PolarPlotData polar = circularPolarData(analysis, title);
+  // The plot needs a radius to draw the deviations around; a file without radius_mm is drawn on 100 mm.
+  polar.radiusMm = trace.nominalRadiusMm.value_or(100.0);
+  polar.radiusKnown = trace.nominalRadiusMm.has_value();
+  return polar;
+}
+
+void addCompensationPreview(PathPlotData& path, PolarPlotData& polar, const CompensationPreview& preview,
+                            const CircularAnalysis& analysis) {
+  path.references = preview.references;
+  path.expected = preview.expected;
+  polar.compensated = radialDeviations(preview.expected, analysis.centreMm, analysis.radiusMm);
+  polar.magnification = 0.0;
+  polar.ringStepMm = 0.0;
+  polar.autoScale();
+}
+
+HistogramData spcHistogramData(const SpcResult& result, const std::vector<double>& values,
+                               const QString& unit, const QString& title) {
+  HistogramData h;
+  const std::size_t used = std::min(result.valuesUsed, values.size());
+  h.values.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(used));
+  h.bins = histogramBins(h.values);
+  h.lsl = result.options.lsl;
+  h.usl = result.options.usl;
+  h.nominal = result.options.nominal;
+  h.mean = result.chart.grandMean;
+  h.unit = unit;
+  h.title = title;
+  return h;
 }
 
 }  // namespace metrofit

@@ -31,6 +31,12 @@
 #include "core/spc/control_chart.h"
 #include "core/study/circular_analysis.h"
 
+namespace metrofit {
+struct MeasuredPath;
+struct CircularTrace;
+struct SpcResult;
+}  // namespace metrofit
+
 class QPainter;
 
 namespace metrofit {
@@ -79,6 +85,14 @@ struct PolarPlotData {
   void autoScale();
 };
 
+/// The radial deviations of a circular test's loops about its nominal circle (page and report).
+PolarPlotData circularPolarData(const CircularAnalysis& analysis, const QString& title);
+
+/// The same for a radial-only test (a ballbar export): the deviations are drawn around its nominal
+/// radius, or around 100 mm, marked as not the test's radius, when the file gives none.
+PolarPlotData radialTestPolarData(const CircularTrace& trace, const CircularAnalysis& analysis,
+                                  const QString& title);
+
 class PolarPlotLayout {
  public:
   PolarPlotLayout(const QRectF& area, const PolarPlotData& data, const PlotStyle& style = {});
@@ -116,6 +130,16 @@ struct PathPlotData {
   double magnification = 0.0;  ///< 0: niceFloor(0.3 R / largest deviation)
   QString title;
 };
+
+/// The measured path of a circular test as the kinematics page and the report draw it: the nominal
+/// circle of the analysis, commanded and measured points, each point's loop direction.
+PathPlotData circularPathData(const MeasuredPath& measured, const CircularAnalysis& analysis,
+                              const QString& title);
+
+/// Adds a compensation preview to both plots: the compensated references and the expected path, and
+/// the expected path's radial deviations (the polar scale is chosen again for them).
+void addCompensationPreview(PathPlotData& path, PolarPlotData& polar, const CompensationPreview& preview,
+                            const CircularAnalysis& analysis);
 
 class PathPlotLayout {
  public:
@@ -181,6 +205,11 @@ struct HistogramData {
   QString unit;
   QString title;
 };
+
+/// The histogram of an SPC series as the SPC view and the report draw it: the values the chart used,
+/// their bins, the specification limits, the nominal and the grand mean.
+HistogramData spcHistogramData(const SpcResult& result, const std::vector<double>& values,
+                               const QString& unit, const QString& title);
 
 class HistogramLayout {
  public:

@@ -193,14 +193,7 @@ void SpcView::setResult(const SpcResult& r, const std::vector<double>& values, c
                         const QString& unit) {
   mean_->setChart(r.chart, unit);
   range_->setChart(r.chart, unit);
-  HistogramData h;
-  h.values.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(r.valuesUsed));
-  h.bins = histogramBins(h.values);
-  h.lsl = r.options.lsl;
-  h.usl = r.options.usl;
-  h.nominal = r.options.nominal;
-  h.mean = r.chart.grandMean;
-  h.unit = unit;
+  HistogramData h = spcHistogramData(r, values, unit, QString());
   h.title = tr("Histogram of %1 (%2 values)").arg(name).arg(h.values.size());
   histogram_->setData(h);
 

@@ -138,24 +138,9 @@ CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyDa
   }
 
   const CompensationPreview c = compensateStudy(s);
-  PathPlotData pd;
-  pd.centreMm = s.analysis.centreMm;
-  pd.radiusMm = s.analysis.radiusMm;
-  pd.nominal = s.measured.command;
-  pd.measured = s.measured.measured;
-  pd.counterClockwise.assign(s.measured.size(), true);
-  for (const CircularLoop& l : s.analysis.loops) {
-    for (std::size_t i = 0; i < l.points.size(); ++i) pd.counterClockwise[l.first + i] = l.counterClockwise;
-  }
-  pd.references = c.references;
-  pd.expected = c.expected;
-  pd.title = ReportText::tr("Path (XY)");
-  PolarPlotData polar;
-  polar.radiusMm = s.analysis.radiusMm;
-  polar.loops = s.analysis.loops;
-  polar.compensated = radialDeviations(c.expected, s.analysis.centreMm, s.analysis.radiusMm);
-  polar.title = ReportText::tr("Radial deviation (polar, magnified)");
-  polar.autoScale();
+  PathPlotData pd = circularPathData(s.measured, s.analysis, ReportText::tr("Path (XY)"));
+  PolarPlotData polar = circularPolarData(s.analysis, ReportText::tr("Radial deviation (polar, magnified)"));
+  addCompensationPreview(pd, polar, c, s.analysis);
 
   out.skip(out.mm(2.0));
   const QRectF box = out.reserve(out.mm(92.0));
@@ -219,14 +204,7 @@ void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
     drawScaled(out, box, 700.0,
                [&](QPainter& p, const QRectF& rr) { paintControlChart(p, rr, r.chart, kind, unit, style); });
   }
-  HistogramData h;
-  h.values.assign(k.values.begin(), k.values.begin() + static_cast<std::ptrdiff_t>(r.valuesUsed));
-  h.bins = histogramBins(h.values);
-  h.lsl = r.options.lsl;
-  h.usl = r.options.usl;
-  h.nominal = r.options.nominal;
-  h.mean = r.chart.grandMean;
-  h.unit = unit;
+  HistogramData h = spcHistogramData(r, k.values, unit, QString());
   h.title = ReportText::tr("Histogram of %1 (%2 values)")
                 .arg(QString::fromStdString(k.column))
                 .arg(h.values.size());
@@ -444,12 +422,8 @@ void writeRadialTest(ReportPainter& out, const ReportContext& context, const Rad
                                "compensation is computed; its ISO 230-4 results follow.")
                     .arg(t.trace.size())
                     .arg(a.loops.size()));
-  PolarPlotData polar;
-  // The plot needs a radius to draw the deviations around; a file without radius_mm is drawn on 100 mm.
-  polar.radiusMm = t.trace.nominalRadiusMm.value_or(100.0);
-  polar.radiusKnown = t.trace.nominalRadiusMm.has_value();
-  polar.loops = a.loops;
-  polar.title = ReportText::tr("Radial deviation (polar, magnified)");
+  PolarPlotData polar =
+      radialTestPolarData(t.trace, a, ReportText::tr("Radial deviation (polar, magnified)"));
   polar.autoScale();
   out.skip(out.mm(2.0));
   const QRectF box = out.reserve(out.mm(92.0));
