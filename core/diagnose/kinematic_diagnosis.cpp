@@ -462,14 +462,10 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
         : d_(d), o_(o), vars_(vars), orig_(orig), cur_(std::move(start)) {}
 
     std::vector<std::string> namedCandidates(const std::set<std::string>& excluded) override {
-      std::vector<std::string> names;
-      const bool all = excluded.count(kEveryNamedEffect) > 0;
-      if (!state_.backlash && !all && !excluded.count("backlash")) names.push_back("backlash");
-      if (!state_.scale && !all && !excluded.count("scale")) names.push_back("scale");
-      if ((!state_.cyclic[0] || !state_.cyclic[1]) && !all && !excluded.count("cyclic"))
-        names.push_back("cyclic");
-      if (!state_.servo && !all && !excluded.count("servo_lag")) names.push_back("servo_lag");
-      return names;
+      // cyclic stays open until both axes have it.
+      return openNamedEffects(
+          {"backlash", "scale", "cyclic", "servo_lag"},
+          {state_.backlash, state_.scale, state_.cyclic[0] && state_.cyclic[1], state_.servo}, excluded);
     }
     ResidualCheck roundCheck() override {
       // A generic effect is the part of f(v) the current model cannot absorb: its basis is projected

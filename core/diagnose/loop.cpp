@@ -138,4 +138,14 @@ LoopRun runLoop(LoopDomain& domain, const LoopStyle& style, const std::set<std::
   return out;
 }
 
+std::vector<std::string> openNamedEffects(const std::vector<std::string>& names,
+                                          const std::vector<bool>& accepted,
+                                          const std::set<std::string>& excluded) {
+  std::vector<std::string> out;
+  if (excluded.count(kEveryNamedEffect)) return out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (!(i < accepted.size() && accepted[i]) && !excluded.count(names[i])) out.push_back(names[i]);
+  return out;
+}
+
 }  // namespace metrofit::diagnose

@@ -102,6 +102,13 @@ struct LoopStyle {
   const char* candidateComponent = nullptr;
 };
 
+/// LoopDomain::namedCandidates of a domain whose named effects are `names`: those not accepted yet
+/// (`accepted[i]`) and not in `excluded`, in the order of `names`; none when `excluded` holds
+/// kEveryNamedEffect.
+std::vector<std::string> openNamedEffects(const std::vector<std::string>& names,
+                                          const std::vector<bool>& accepted,
+                                          const std::set<std::string>& excluded);
+
 /// One run of the loop (for keepNamedOnlyWhenNeeded, diagnosis.h). `d` carries the domain, units,
 /// baseline and notes set by the caller; the loop adds the effects and the domain finishes it.
 LoopRun runLoop(LoopDomain& domain, const LoopStyle& style, const std::set<std::string>& excluded,

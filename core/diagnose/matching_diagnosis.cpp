@@ -667,11 +667,9 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
           used_(defs.size(), false) {}
 
     std::vector<std::string> namedCandidates(const std::set<std::string>& excluded) override {
-      std::vector<std::string> out;
-      if (excluded.count(kEveryNamedEffect)) return out;
-      for (std::size_t c = 0; c < defs_.size(); ++c)
-        if (!used_[c] && !excluded.count(defs_[c].name)) out.push_back(defs_[c].name);
-      return out;
+      std::vector<std::string> names;
+      for (const auto& d : defs_) names.push_back(d.name);
+      return openNamedEffects(names, used_, excluded);
     }
     ResidualCheck roundCheck() override {
       return checkResidual(matchingCheckInput(pb_, current_, vars_, orig_));

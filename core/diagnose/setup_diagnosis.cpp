@@ -271,11 +271,9 @@ LoopRun runSetup(const setup::Model& model, const setup::Measurements& measureme
           Zacc_(y.size(), 0) {}
 
     std::vector<std::string> namedCandidates(const std::set<std::string>& excluded) override {
-      std::vector<std::string> out;
-      if (excluded.count(kEveryNamedEffect)) return out;
-      for (std::size_t c = 0; c < defs_.size(); ++c)
-        if (!used_[c] && !excluded.count(defs_[c].name)) out.push_back(defs_[c].name);
-      return out;
+      std::vector<std::string> names;
+      for (const auto& d : defs_) names.push_back(d.name);
+      return openNamedEffects(names, used_, excluded);
     }
     ResidualCheck roundCheck() override {
       return checkResidual(setupCheckInput(current_.residual, X_, Zacc_, vars_));

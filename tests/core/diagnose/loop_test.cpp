@@ -152,4 +152,12 @@ TEST(SharedLoop, AStopAfterACandidateEndsTheLoopWithANote) {
 }
 
 }  // namespace
+TEST(Loop, OpenNamedEffectsAreTheNotAcceptedNotExcludedInOrder) {
+  const std::vector<std::string> names{"a", "b", "c", "d"};
+  EXPECT_EQ(openNamedEffects(names, {false, true, false, false}, {"d"}),
+            (std::vector<std::string>{"a", "c"}));
+  EXPECT_EQ(openNamedEffects(names, {}, {}), names);  // nothing accepted yet
+  EXPECT_TRUE(openNamedEffects(names, {false, false, false, false}, {kEveryNamedEffect}).empty());
+}
+
 }  // namespace metrofit::diagnose
