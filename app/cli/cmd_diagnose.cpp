@@ -7,7 +7,6 @@
 //   diagnose matching  --data P.csv [--tolerance T] [--out R.json]
 // Every domain writes the JSON of docs/file-formats.md#diagnose-result (core/diagnose/diagnosis.h toJson)
 // through finishDiagnosis, which also prints the one-line summary.
-#include <unistd.h>
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -51,33 +50,12 @@ std::string num(double v, int digits = 3) {
   return std::isfinite(v) ? CsvWriter::formatNumber(v, digits) : "n/a";
 }
 
-/// Progress on stderr when it is a terminal (one line, erased before the summary).
-class Progress {
- public:
-  explicit Progress(std::string what)
-      : what_(std::move(what)),
-        tty_(::isatty(::fileno(stderr)) == 1),
-        observer_([this](const IterationSummary& s) {
-          if (tty_) {
-            std::fprintf(stderr, "\r%s: candidate %ld", what_.c_str(), s.evaluations);
-            std::fflush(stderr);
-            shown_ = true;
-          }
-          return ObserverDecision::Continue;
-        }) {}
-  ~Progress() {
-    if (shown_) std::fprintf(stderr, "\r%*s\r", static_cast<int>(what_.size()) + 24, "");
-  }
-  Progress(const Progress&) = delete;
-  Progress& operator=(const Progress&) = delete;
-  Observer* observer() { return &observer_; }
-
- private:
-  std::string what_;
-  bool tty_;
-  bool shown_ = false;
-  FunctionObserver observer_;
-};
+/// The progress line of a diagnosis on a terminal: "diagnose thermal: candidate 12".
+std::function<std::string(const IterationSummary&)> candidateLine(std::string what) {
+  return [what = std::move(what)](const IterationSummary& s) {
+    return what + ": candidate " + std::to_string(s.evaluations);
+  };
+}
 
 /// Writes the JSON of docs/file-formats.md#diagnose-result (atomically to `out`, or stdout) and prints the
 /// one-line summary: "diagnose <domain> on <data>: rmse a -> b <unit>[, held-out h0 -> h1]; accepted: x
@@ -137,7 +115,7 @@ int runThermal(const MethodArgs& a) {
   o.seed = a.seed;
   diagnose::Diagnosis d;
   {
-    Progress progress("diagnose thermal");
+    TerminalProgress progress(candidateLine("diagnose thermal"));
     d = diagnose::diagnoseThermal(log, o, progress.observer());
   }
   return finishDiagnosis(d, a.data, a.out);
@@ -149,7 +127,7 @@ int runKinematic(const MethodArgs& a) {
   o.feedMmPerMin = a.feed;
   diagnose::Diagnosis d;
   {
-    Progress progress("diagnose kinematic");
+    TerminalProgress progress(candidateLine("diagnose kinematic"));
     d = diagnose::diagnoseKinematic(path, o, progress.observer());
   }
   return finishDiagnosis(d, a.data, a.out);
@@ -161,7 +139,7 @@ int runSetup(const MethodArgs& a) {
   const setup::Measurements m = setup::readMeasurements({a.data}, model, csvOptions(), dmisOptions());
   diagnose::Diagnosis d;
   {
-    Progress progress("diagnose setup");
+    TerminalProgress progress(candidateLine("diagnose setup"));
     d = diagnose::diagnoseSetup(model, m, {}, progress.observer());
   }
   return finishDiagnosis(d, a.data, a.out);
@@ -174,7 +152,7 @@ int runMatching(const MethodArgs& a) {
   o.toleranceMm = a.tolerance;
   diagnose::Diagnosis d;
   {
-    Progress progress("diagnose matching");
+    TerminalProgress progress(candidateLine("diagnose matching"));
     d = diagnose::diagnoseMatching(set, o, progress.observer());
   }
   return finishDiagnosis(d, a.data, a.out);

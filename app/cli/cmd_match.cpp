@@ -20,7 +20,6 @@
 // stderr.
 #include <CLI/CLI.hpp>
 
-#include <unistd.h>
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
@@ -102,16 +101,12 @@ int runMatch(const MatchArgs& a, bool machineGiven) {
   const machine::MachineDefinition def = machineFor(a, machineGiven);
 
   // Progress on a terminal only (the run takes milliseconds on typical sets, longer on large ones).
-  const bool tty = ::isatty(::fileno(stderr)) != 0;
-  FunctionObserver progress([&](const IterationSummary& s) {
-    if (tty && s.iteration % 20 == 0) {
-      std::fprintf(stderr, "\rmatch: iteration %ld, best %s mm", s.iteration, fmt(s.best).c_str());
-      std::fflush(stderr);
-    }
-    return ObserverDecision::Continue;
-  });
-  const MatchResult r = matchPosture(set, o, &progress);
-  if (tty) std::fprintf(stderr, "\r\033[K");
+  const MatchResult r = [&] {
+    TerminalProgress progress([](const IterationSummary& s) {
+      return "match: iteration " + std::to_string(s.iteration) + ", best " + fmt(s.best) + " mm";
+    });
+    return matchPosture(set, o, progress.observer());
+  }();
 
   const machine::Adjustment adj = machine::adjustmentFor(def, r.pose.rotation, r.pose.translation);
   nlohmann::json j = toJson(r, set);

@@ -30,7 +30,6 @@
 // commands.cpp on the `simulate` subcommand.
 #include <CLI/CLI.hpp>
 
-#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -207,21 +206,15 @@ int runSetup(const SetupArgs& a) {
   } else {
     const setup::SetupProblem problem(inst);
     const auto algorithm = setup::makeSetupAlgorithm(a.method, a.budget, a.seed);
-    const bool tty = ::isatty(::fileno(stderr)) != 0;
-    auto last = std::chrono::steady_clock::now();
-    FunctionObserver progress([&](const IterationSummary& s) {
-      const auto now = std::chrono::steady_clock::now();
-      if (tty && now - last > std::chrono::milliseconds(200)) {
-        last = now;
-        std::fprintf(stderr, "\rsetup: %s %3.0f%%, f1 %s mm", a.method.c_str(),
-                     100.0 * std::max(0.0, s.progress),
-                     s.components.empty() ? "?" : fmt(s.components[0].value).c_str());
-        std::fflush(stderr);
-      }
-      return ObserverDecision::Continue;
-    });
-    const optim::Result r = algorithm->optimise(problem, &progress);
-    if (tty) std::fprintf(stderr, "\r\033[K");
+    optim::Result r;
+    {
+      TerminalProgress progress([&a](const IterationSummary& s) {
+        return "setup: " + a.method + " " +
+               std::to_string(static_cast<int>(100.0 * std::max(0.0, s.progress))) + " %, f1 " +
+               (s.components.empty() ? std::string("?") : fmt(s.components[0].value)) + " mm";
+      });
+      r = algorithm->optimise(problem, progress.observer());
+    }
     x = r.bestX;
     evaluations = r.run.evaluations;
     for (const auto& s : r.run.trace) trace.push_back(traceEntry(s));
@@ -352,14 +345,13 @@ int runSetupValidate(const ValidateArgs& a) {
   std::optional<setup::Measurements> measured;
   if (!a.data.empty()) measured = setup::readMeasurements(a.data, model, csvOptions(), dmisOptions());
 
-  const bool tty = ::isatty(::fileno(stderr)) != 0;
-  const setup::ValidationResult r =
-      setup::runValidation(model, o, nullptr, [tty](std::size_t done, std::size_t total) {
-        if (!tty) return;
-        std::fprintf(stderr, "\rsetup validate: set %zu of %zu", done, total);
-        std::fflush(stderr);
-      });
-  if (tty) std::fprintf(stderr, "\r\033[K");
+  setup::ValidationResult r;
+  {
+    TerminalProgress progress;
+    r = setup::runValidation(model, o, nullptr, [&progress](std::size_t done, std::size_t total) {
+      progress.show("setup validate: set " + std::to_string(done) + " of " + std::to_string(total));
+    });
+  }
   const setup::ValidationSummary sum = setup::summarizeValidation(model, o, r);
 
   nlohmann::json j;

@@ -1,6 +1,5 @@
 // metrofit-cli thermal fit|predict|hysteresis|modular|simulate (docs/file-formats.md#thermal-fit-result;
 // Abdulshahed 2016, grey neural network thermal model).
-#include <unistd.h>
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -60,37 +59,14 @@ std::string num(double v, int digits = 4) {
   return std::isfinite(v) ? CsvWriter::formatNumber(v, digits) : "n/a";
 }
 
-/// Progress on stderr when it is a terminal (docs/file-formats.md#exit-status-and-output), erased before the
-/// summary line.
-class Progress {
- public:
-  explicit Progress(std::string what)
-      : what_(std::move(what)),
-        tty_(::isatty(::fileno(stderr)) == 1),
-        observer_([this](const IterationSummary& s) {
-          if (tty_ && s.progress >= 0.0) {
-            const int pct = static_cast<int>(100.0 * s.progress);
-            if (pct != last_) {
-              std::fprintf(stderr, "\r%s: %3d %%", what_.c_str(), pct);
-              std::fflush(stderr);
-              last_ = pct;
-            }
-          }
-          return ObserverDecision::Continue;
-        }) {}
-  ~Progress() {
-    if (tty_ && last_ >= 0) std::fprintf(stderr, "\r%*s\r", static_cast<int>(what_.size()) + 8, "");
-  }
-  Progress(const Progress&) = delete;
-  Progress& operator=(const Progress&) = delete;
-  Observer* observer() { return &observer_; }
-
- private:
-  std::string what_;
-  bool tty_;
-  int last_ = -1;
-  FunctionObserver observer_;
-};
+/// The progress line of a training on a terminal: "thermal fit:  42 %" (nothing before the first
+/// progress value).
+std::function<std::string(const IterationSummary&)> percentLine(std::string what) {
+  return [what = std::move(what)](const IterationSummary& s) {
+    if (s.progress < 0.0) return std::string();
+    return what + ": " + std::to_string(static_cast<int>(100.0 * s.progress)) + " %";
+  };
+}
 
 double seconds(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -158,7 +134,7 @@ int runFit(const FitArgs& a, bool fractionGiven) {
     o.model = selection.chosen;
   }
   {
-    Progress progress("thermal fit");
+    TerminalProgress progress(percentLine("thermal fit"));
     ev = thermal::fitAndEvaluate(series, fraction, o, progress.observer());
   }
   const double secs = seconds(start);
@@ -272,7 +248,7 @@ int runModular(const ModularArgs& a) {
   const thermal::ThermalFitOptions o = fitOptions(a.model, a.training, a.seed, 0);
   thermal::ModularEvaluation m;
   {
-    Progress progress("thermal modular");
+    TerminalProgress progress(percentLine("thermal modular"));
     m = thermal::fitModular(train, test, o, progress.observer());
   }
   if (m.training.run.termination == Termination::Cancelled)

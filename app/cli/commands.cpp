@@ -24,6 +24,29 @@
 #include "widgets/report/report.h"
 
 namespace metrofit::cli {
+
+TerminalProgress::TerminalProgress(std::function<std::string(const IterationSummary&)> line)
+    : tty_(::isatty(::fileno(stderr)) == 1),
+      line_(std::move(line)),
+      observer_([this](const IterationSummary& s) {
+        if (tty_ && line_)
+          if (const std::string l = line_(s); !l.empty()) show(l);
+        return ObserverDecision::Continue;
+      }) {}
+
+TerminalProgress::~TerminalProgress() {
+  if (shown_) std::fprintf(stderr, "\r\033[K");
+}
+
+void TerminalProgress::show(const std::string& line) {
+  if (!tty_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (shown_ && now - last_ < std::chrono::milliseconds(200)) return;
+  last_ = now;
+  std::fprintf(stderr, "\r%s\033[K", line.c_str());
+  std::fflush(stderr);
+  shown_ = true;
+}
 namespace {
 
 std::function<int()> g_selected;

@@ -2,12 +2,14 @@
 // metrofit-cli subcommands. main.cpp only builds the CLI11 parser and maps errors to exit codes:
 //   0 success, 2 bad input (metrofit::InputError or a command-line error: one line naming the
 //   file / line / field / option), 1 any other failure. Results go to --out (atomically) or stdout.
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "core/common/run.h"
 #include "core/io/csv.h"
 #include "core/setup/report.h"
 #include "core/thermal/thermal_log.h"
@@ -24,6 +26,28 @@ namespace metrofit::cli {
 void registerCommands(CLI::App& app, int argc, char** argv);
 /// Runs the selected subcommand (after a successful parse). Returns the exit code.
 int runSelected();
+
+/// Progress of a long run on stderr when stderr is a terminal (never in a pipe or a test): one line,
+/// rewritten at most every 200 ms, erased when the object goes, before the summary line.
+class TerminalProgress {
+ public:
+  /// `line` makes the progress line from an observer's summary ("diagnose thermal: 42 %").
+  explicit TerminalProgress(std::function<std::string(const IterationSummary&)> line = {});
+  ~TerminalProgress();
+  TerminalProgress(const TerminalProgress&) = delete;
+  TerminalProgress& operator=(const TerminalProgress&) = delete;
+  /// An observer that shows `line` of each summary and never stops the run.
+  Observer* observer() { return &observer_; }
+  /// Shows a line directly (progress that does not come through an observer).
+  void show(const std::string& line);
+
+ private:
+  bool tty_;
+  bool shown_ = false;
+  std::chrono::steady_clock::time_point last_{};
+  std::function<std::string(const IterationSummary&)> line_;
+  FunctionObserver observer_;
+};
 
 /// Writes `text` to `outPath` atomically, or to stdout when outPath is empty.
 void writeResult(const std::string& outPath, const std::string& text);
