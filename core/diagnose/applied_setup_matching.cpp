@@ -84,6 +84,46 @@ std::vector<AppliedSetupEffect> parseAppliedSetupEffects(const nlohmann::json& a
     AppliedSetupEffect e;
     e.name = name;
     std::string datum;
+    if (name.rfind("unexplained:", 0) == 0) {
+      if (!seen.insert(name).second) fail(source, at + ".name", "'" + name + "' is applied twice");
+      GenericForm shape = genericShapeOf(entry, source);
+      if (!setupGenericPredictsNextPart(shape.against))
+        fail(source, at + ".name",
+             "'" + name +
+                 "' cannot be applied: it says nothing about the next part (only unexplained:time, "
+                 "unexplained:datum:<id> and unexplained:dimension:<id> can)");
+      if (shape.against.rfind("datum:", 0) == 0) {
+        const int index = model.setupIndex(shape.against.substr(6));
+        if (index < 0)
+          fail(source, at + ".name",
+               "'" + name + "': the model has no setup datum '" + shape.against.substr(6) + "'");
+        e.datum = static_cast<std::size_t>(index);
+      } else if (shape.against.rfind("dimension:", 0) == 0) {
+        const std::string id = shape.against.substr(10);
+        for (std::size_t q = 0; q < model.dimensions.size(); ++q)
+          if (model.dimensions[q].id == id) e.dimension = q;
+        if (!e.dimension)
+          fail(source, at + ".name", "'" + name + "': the model has no dimension '" + id + "'");
+      } else {
+        e.perPart = false;  // time
+      }
+      const auto c = entry.json.find("coefficients");
+      if (c == entry.json.end() || !c->is_array())
+        fail(source, at + ".coefficients", "'" + name + "' needs its coefficients (mm), a list of numbers");
+      for (const auto& x : *c) {
+        if (!x.is_number() || !std::isfinite(x.get<double>()))
+          fail(source, at + ".coefficients", "must be finite numbers (mm)");
+        e.coefficients.push_back(x.get<double>());
+      }
+      if (static_cast<Eigen::Index>(e.coefficients.size()) != genericBasis(shape, {1.0}).cols())
+        fail(source, at + ".coefficients",
+             "must be one per column of the shape's basis (" +
+                 std::to_string(genericBasis(shape, {1.0}).cols()) + "), got " +
+                 std::to_string(e.coefficients.size()));
+      e.shape = std::move(shape);
+      out.push_back(std::move(e));
+      return;
+    }
     if (name.rfind("tool_wear:", 0) == 0) {
       e.perPart = true;
       datum = name.substr(10);
@@ -92,7 +132,8 @@ std::vector<AppliedSetupEffect> parseAppliedSetupEffects(const nlohmann::json& a
       datum = name.substr(6);
     } else {
       fail(source, at + ".name",
-           "'" + name + "' is not a setup effect (tool_wear:<tool> or drift:<setup datum>)");
+           "'" + name +
+               "' is not a setup effect (tool_wear:<tool>, drift:<setup datum> or unexplained:<variable>)");
     }
     if (datum.empty()) fail(source, at + ".name", "'" + name + "' names no setup datum");
     const int index = model.setupIndex(datum);
@@ -107,7 +148,13 @@ std::vector<AppliedSetupEffect> parseAppliedSetupEffects(const nlohmann::json& a
   return out;
 }
 
+bool setupGenericPredictsNextPart(const std::string& against) {
+  return against == "time" || (against.rfind("datum:", 0) == 0 && against.size() > 6) ||
+         (against.rfind("dimension:", 0) == 0 && against.size() > 10);
+}
+
 std::string describe(const AppliedSetupEffect& e) {
+  if (e.shape) return e.name + " (" + formName(e.shape->form) + ")";
   return e.name + (e.perPart ? fmt(" (%.4g mm/part)", e.rate) : fmt(" (%.4g mm/min)", e.rate));
 }
 
@@ -154,8 +201,17 @@ SetupPrediction predictSetupDeviations(const setup::Model& model, const setup::M
   // The effects' contribution to dimension q at part number p and time t.
   auto effect = [&](std::size_t q, double p, double t) {
     double s = 0.0;
-    for (const AppliedSetupEffect& e : effects)
-      s += G(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(e.datum)) * e.rate * (e.perPart ? p : t);
+    for (const AppliedSetupEffect& e : effects) {
+      const double gain = G(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(e.datum));
+      if (!e.shape) {
+        s += gain * e.rate * (e.perPart ? p : t);
+        continue;
+      }
+      if (e.dimension && *e.dimension != q) continue;
+      const Eigen::RowVectorXd b = genericBasis(*e.shape, {e.perPart ? p : t}).row(0);
+      const double f = b.dot(Eigen::Map<const Eigen::VectorXd>(e.coefficients.data(), b.size()));
+      s += (e.shape->against.rfind("datum:", 0) == 0 ? gain : 1.0) * f;
+    }
     return s;
   };
   // Constant parts, over all rows and over the rows of every part but the last.

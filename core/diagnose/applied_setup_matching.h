@@ -12,7 +12,12 @@
 // over the measured parts:
 //   c_q        = mean over the rows r of q of (y_r - sum_k G[q][i_k] r_k x_k(r))   (the constant part)
 //   e_q(next)  = c_q + sum_k G[q][i_k] r_k x_k(next)
-// with x_k the part number (tool wear) or the time (drift); the next part is the largest measured
+// with x_k the part number (tool wear) or the time (drift); a generic effect `unexplained:<against>`
+// {"shape": ..., "coefficients": w} (docs/file-formats.md#generic-effects) adds B(v) w, B its shape's
+// basis and v the variable it was fitted against: the time (unexplained:time, every dimension), the
+// part number weighted by the datum's gain G[q][i] (unexplained:datum:<id>) or the part number on one
+// dimension only (unexplained:dimension:<id>); the others (row, part, dimension) say nothing about
+// the next part and cannot be applied. The next part is the largest measured
 // part number + 1, its time the last part's mean time + the mean time between parts. Without
 // effects e_q(next) is the mean deviation (the declared model of the study). Part numbers follow
 // setup_diagnosis.h: the numbers of the "part" column when every part name is a number, else 1, 2,
@@ -69,11 +74,19 @@ std::string appliedEffectsElsewhere(const Project& project, const std::string& d
 // ---- setup ----
 
 struct AppliedSetupEffect {
-  std::string name;       ///< "tool_wear:T23", "drift:W1"
-  std::size_t datum = 0;  ///< index into the model's setup data
-  bool perPart = true;    ///< tool wear (rate per part) or drift (rate per minute)
+  std::string name;       ///< "tool_wear:T23", "drift:W1", "unexplained:datum:W1"
+  std::size_t datum = 0;  ///< index into the model's setup data (tool wear, drift, unexplained:datum:)
+  bool perPart = true;    ///< tool wear (rate per part) or drift (rate per minute); generic: part number
   double rate = 0.0;      ///< mm_per_part or mm_per_min
+  /// A generic effect: its shape (against time, datum:<id> or dimension:<id>) and coefficients (mm).
+  std::optional<GenericForm> shape;
+  std::vector<double> coefficients;
+  std::optional<std::size_t> dimension;  ///< unexplained:dimension:<id>: the one dimension it acts on
 };
+
+/// Whether a setup generic effect fitted against `against` can be applied (it predicts the next part):
+/// time, datum:<id> and dimension:<id>.
+bool setupGenericPredictsNextPart(const std::string& against);
 
 /// Reads the list against the model (see above). `field` prefixes the error fields.
 std::vector<AppliedSetupEffect> parseAppliedSetupEffects(const nlohmann::json& applied,

@@ -405,20 +405,24 @@ LoopRun runSetup(const setup::Model& model, const setup::Measurements& measureme
       Eigen::Index col = 0;
       for (std::size_t j = 0; j < accepted.size(); ++j) {
         Candidate& c = *accepted[j];
-        const Eigen::Index w = width_[j];
+        const Eigen::Index width = width_[j];
         if (c.generic) {
           if (const ResidualVariable* v = findVariable(vars_, c.generic->against)) {
             const GenericSummary gs =
-                summariseGeneric(*c.generic, current_.beta.segment(col, w), v->values, "mm");
+                summariseGeneric(*c.generic, current_.beta.segment(col, width), v->values, "mm");
             c.parameters = {Parameter{"form", std::string(formName(c.generic->form)), std::nullopt}};
             for (const auto& [k, val] : gs.numbers) c.parameters.push_back({k, val, std::nullopt});
+            // Apply (applied_setup_matching.h) predicts the next part with these coefficients of the
+            // shape's basis.
+            const Eigen::VectorXd w = current_.beta.segment(col, width);
+            c.genericCoefficients.assign(w.data(), w.data() + w.size());
           }
         } else {
           Parameter& p = c.parameters.front();
           p.value = current_.beta(col);
           p.standardError = std::sqrt(std::max(0.0, current_.covariance(col, col)));
         }
-        col += w;
+        col += width;
       }
       d.final = summarise(current_.residual);
     }

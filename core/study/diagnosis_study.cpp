@@ -1,5 +1,7 @@
 #include "core/study/diagnosis_study.h"
 
+#include "core/diagnose/applied_setup_matching.h"
+
 #include <cmath>
 
 #include "core/common/error.h"
@@ -174,8 +176,10 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer)
 }
 
 bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c) {
-  return !c.generic.has_value() || domain == "thermal" ||
-         ((domain == "kinematic" || domain == "matching") && !c.genericCoefficients.empty());
+  if (!c.generic.has_value() || domain == "thermal") return true;
+  if (c.genericCoefficients.empty()) return false;
+  return domain == "kinematic" || domain == "matching" ||
+         (domain == "setup" && diagnose::setupGenericPredictsNextPart(c.generic->against));
 }
 
 nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis) {

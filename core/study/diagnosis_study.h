@@ -70,14 +70,16 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& settings, Observer* ob
 /// study (its basis columns are refitted by every model), the kinematic one (a displacement with the
 /// diagnosis's coefficients, core/diagnose/applied_kinematic.h) and the matching one (the deformation
 /// of the nominal points with the diagnosis's coefficients, projected off the posture and the named
-/// effects as the loop fitted it: core/diagnose/matching_diagnosis.h matchingGenericDisplacement). Not
-/// yet in setup, where it is reported (candidate table, residual check, report) but not applied: the
-/// setup study's applied-effects parser reads the named effects only.
+/// effects as the loop fitted it: core/diagnose/matching_diagnosis.h matchingGenericDisplacement) and
+/// the setup one when it predicts the next part (against time, datum:<id> or dimension:<id>:
+/// core/diagnose/applied_setup_matching.h); a setup effect of the row, the part or the dimension
+/// category is reported (candidate table, residual check, report) but not applied.
 bool canApplyEffect(const std::string& domain, const diagnose::Candidate& c);
 
 /// The accepted effects Apply can add (canApplyEffect) as stored under "applied":
 /// [{"name": ..., "parameters": {name: value}}], a generic effect with its "shape"
-/// (core/diagnose/applied_entries.h genericShapeJson) and, in kinematic, its "coefficients".
+/// (core/diagnose/applied_entries.h genericShapeJson) and, in kinematic, matching and setup, its
+/// "coefficients".
 nlohmann::json appliedEffects(const diagnose::Diagnosis& diagnosis);
 
 /// A parameter's value as text ("12.3" or the text value), `digits` significant digits.

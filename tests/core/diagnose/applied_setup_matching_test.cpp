@@ -22,6 +22,7 @@
 #include "core/project/project.h"
 #include "core/setup/exact.h"
 #include "core/setup/objective.h"
+#include "core/sim/effects_setup.h"
 #include "core/study/diagnosis_study.h"
 #include "core/study/matching_study.h"
 #include "testsupport.h"
@@ -570,6 +571,93 @@ TEST(AppliedMatchingEffects, BowedTopIsAGenericEffectOfThatFaceAndApplyHelpsTheS
   const double e1 = normalRms(matching::runMatchingStudy(set, o1).primaryRun().after);
   EXPECT_NEAR(e0, 0.00341, 0.0002);
   EXPECT_LT(e1, 0.6 * e0);
+}
+
+// A step the catalogue does not model (from part 7 on one dimension sits 10 noise sigmas higher:
+// the part was re-clamped against a chip), simulated without any named effect: the loop accepts a
+// generic effect, Apply stores it with its coefficients and the study's prediction for the next part
+// is the step's level, i.e. the mean of that dimension over parts 7..12 (written out here), not the
+// mean over all twelve parts; the other dimensions keep their means.
+TEST(AppliedSetupEffects, AStepAfterARefixtureIsAppliedAsAGenericEffectAndPredictsTheNextPart) {
+  const setup::Model model = paperModel();
+  SetupEffectsSimOptions o;
+  o.base.w1 = 0.03;
+  o.base.w2 = 0.01;
+  o.base.parts = 12;
+  o.base.minutesPerPart = 12.0;
+  o.base.resolutionMm = 0.0001;
+  o.base.seed = 3;
+  setup::Measurements m =
+      setup::cmmReportFromCsv(parseCsv(simulateSetupEffectsReport(model, o), "sim.csv"), model);
+  const double sigma = 0.01 / std::sqrt(3.0);
+  const std::size_t dim = m.rows.front().dimension;
+  for (auto& r : m.rows)
+    if (r.dimension == dim && std::stoi(r.part) >= 7) r.deviationMm += 10.0 * sigma;
+
+  const Diagnosis d = diagnoseSetup(model, m);
+  ASSERT_EQ(d.accepted().size(), 1u) << toJson(d)["effects"].dump().substr(0, 3000);
+  const Candidate& c = *d.accepted().front();
+  ASSERT_TRUE(c.generic.has_value()) << toJson(d)["effects"].dump().substr(0, 3000);
+  EXPECT_EQ(c.name, "unexplained:dimension:" + model.dimensions[dim].id) << toJson(d)["effects"].dump().substr(0, 3000);
+  EXPECT_TRUE(canApplyEffect("setup", c));
+  const nlohmann::json applied = appliedOf(d);
+  const std::vector<AppliedSetupEffect> effects = parseAppliedSetupEffects(applied, model);
+  ASSERT_EQ(effects.size(), 1u);
+  ASSERT_TRUE(effects[0].dimension.has_value());
+  EXPECT_EQ(*effects[0].dimension, dim);
+
+  double late = 0.0, all = 0.0;
+  int nLate = 0, nAll = 0;
+  for (const auto& r : m.rows) {
+    if (r.dimension != dim) continue;
+    all += r.deviationMm;
+    ++nAll;
+    if (std::stoi(r.part) >= 7) {
+      late += r.deviationMm;
+      ++nLate;
+    }
+  }
+  late /= nLate;
+  all /= nAll;
+  const SetupPrediction e0 = predictSetupDeviations(model, m, {});
+  const SetupPrediction e1 = predictSetupDeviations(model, m, effects);
+  EXPECT_NEAR(e0.deviationMm[dim], all, 1e-12);
+  // The step's level, within the noise of six parts' mean (and far from the all-parts mean).
+  EXPECT_NEAR(e1.deviationMm[dim], late, 2.0 * sigma / std::sqrt(static_cast<double>(nLate)));
+  EXPECT_GT(std::abs(e1.deviationMm[dim] - all), 3.0 * sigma);
+  for (std::size_t q = 0; q < model.dimensions.size(); ++q)
+    if (q != dim) EXPECT_NEAR(e1.deviationMm[q], e0.deviationMm[q], 1e-12) << model.dimensions[q].id;
+  EXPECT_LT(e1.rmseMm, e0.rmseMm);
+  ASSERT_TRUE(e0.nextPartRmseMm && e1.nextPartRmseMm);
+  EXPECT_LT(*e1.nextPartRmseMm, *e0.nextPartRmseMm);
+}
+
+TEST(AppliedSetupEffects, GenericEffectsThatSayNothingOfTheNextPartAreRefusedNamingTheField) {
+  const setup::Model model = paperModel();
+  GenericForm level;
+  level.against = "part";
+  level.form = DependenceForm::Level;
+  level.levels = 3;
+  const nlohmann::json part = {{{"name", "unexplained:part"},
+                                {"parameters", nlohmann::json::object()},
+                                {"shape", genericShapeJson(level)},
+                                {"coefficients", {0.01, 0.02}}}};
+  EXPECT_EQ(errorField([&] { parseAppliedSetupEffects(part, model); }),
+            "studies.diagnosis.setup.applied[0].name");
+  GenericForm step;
+  step.against = "time";
+  step.form = DependenceForm::Step;
+  step.knots = {60.0};
+  nlohmann::json time = {{{"name", "unexplained:time"},
+                          {"parameters", nlohmann::json::object()},
+                          {"shape", genericShapeJson(step)},
+                          {"coefficients", {0.01, 0.02, 0.03}}}};
+  EXPECT_EQ(errorField([&] { parseAppliedSetupEffects(time, model); }),
+            "studies.diagnosis.setup.applied[0].coefficients");
+  time[0]["coefficients"] = nlohmann::json::array({0.01});
+  const std::vector<AppliedSetupEffect> e = parseAppliedSetupEffects(time, model);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(describe(e), "unexplained:time (step)");
 }
 
 }  // namespace
