@@ -4,7 +4,7 @@
 <context>
     <name>StudyInfo</name>
     <message>
-        <location filename="../widgets/document/studyinfo.cpp" line="+16"/>
+        <location filename="../widgets/document/studyinfo.cpp" line="+17"/>
         <source>Setup correction</source>
         <translation>Einrichtdatenkorrektur</translation>
     </message>
@@ -454,17 +454,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+420"/>
-        <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
-        <translation>%1: ein generischer Effekt (was kein Effekt des Katalogs erklärt) kann dem Modell der Studie (%2) noch nicht hinzugefügt werden; er wird hier und in der Residuenprüfung angezeigt, nicht übernommen</translation>
-    </message>
-    <message>
-        <location line="+162"/>
+        <location line="+583"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-515"/>
+        <location line="-516"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
@@ -572,12 +567,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     <message>
         <location line="+1"/>
         <location line="+168"/>
-        <location line="+118"/>
+        <location line="+119"/>
         <source>Residual chec&amp;k</source>
         <translation>Residuen&amp;prüfung</translation>
     </message>
     <message>
-        <location line="-284"/>
+        <location line="-285"/>
         <source>The candidate effects tried, their residual plots and the error before / after</source>
         <translation>Die getesteten Kandidateneffekte, ihre Residuendiagramme und der Fehler vorher / nachher</translation>
     </message>
@@ -654,7 +649,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Diagnose läuft … Schritt %1, aktueller rmse %2</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+35"/>
+        <source>%1: a generic effect of the data row, the part or the dimension says nothing about the next part, so the study (%2) cannot include it; it is reported here and in the residual check, not applied</source>
+        <translation>%1: Ein generischer Effekt der Datenzeile, des Teils oder des Maßes sagt nichts über das nächste Teil aus, daher kann die Studie (%2) ihn nicht aufnehmen; er wird hier und in der Residuenprüfung berichtet, aber nicht angewendet</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Nothing to apply. %1.</source>
         <translation>Nichts zu übernehmen. %1.</translation>
     </message>
@@ -1125,12 +1125,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+358"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+363"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-97"/>
         <source>measured, CCW loop</source>
         <translation>gemessen, Umlauf gegen den Uhrzeigersinn</translation>
     </message>
@@ -1160,7 +1160,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>dargestellter Radius = R + k × radiale Abweichung, k = %1; Ringe alle %2 µm</translation>
     </message>
     <message>
-        <location line="+189"/>
+        <location line="+196"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -1434,7 +1434,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Kompensieren</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+55"/>
         <source>The kinematics study&apos;s settings are invalid: %1</source>
         <translation>Die Einstellungen der Kinematik-Studie sind ungültig: %1</translation>
     </message>
@@ -1451,7 +1451,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 %1</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+37"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -1495,56 +1495,56 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+6"/>
-        <location line="+103"/>
+        <location line="+89"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-87"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+101"/>
+        <location line="+87"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-99"/>
+        <location line="-85"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+99"/>
+        <location line="+85"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-97"/>
+        <location line="-83"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Der X-Antrieb bewegt sich entlang (cos a, sin a); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+97"/>
+        <location line="+83"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-81"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Der Y-Antrieb bewegt sich entlang (-sin b, cos b); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+95"/>
+        <location line="+81"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-93"/>
+        <location line="-79"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Der Winkel zwischen den Achsen beträgt 90° + (b − a)</translation>
     </message>
@@ -1579,18 +1579,18 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Das Residuum des deklarierten Modells (Ursprung und Achswinkel, ohne übernommene Effekte)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+6"/>
         <source>Path (XY)</source>
         <translation>Bahn (XY)</translation>
     </message>
     <message>
-        <location line="-116"/>
-        <location line="+121"/>
+        <location line="-106"/>
+        <location line="+107"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>measured</source>
         <translation>gemessen</translation>
     </message>
@@ -1701,7 +1701,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Identifikation nicht möglich:&lt;br&gt;%1</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+30"/>
         <source>measured (before)</source>
         <translation>gemessen (vorher)</translation>
     </message>
@@ -2422,7 +2422,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+23"/>
-        <location line="+265"/>
+        <location line="+260"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
@@ -3040,7 +3040,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+256"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+234"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>ja</translation>
@@ -3163,13 +3163,13 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Für jede Studie wird das deklarierte Modell angepasst und sein Residuum berechnet; Kandidateneffekte, die dem Modell fehlen, werden einzeln getestet und jeweils mit ihren Parametern und deren Standardfehlern geschätzt. Ein Effekt wird nur bei ausreichender Evidenz übernommen (Verbesserung auf den Testdaten bei Thermik, sonst ein Informationskriterium mit konservativer Schwelle) und wenn er den Fehler praktisch relevant verringert; das Modell wird mit ihm neu angepasst und die Suche wiederholt, bis nichts mehr gefunden wird.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-202"/>
-        <location line="+254"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-180"/>
+        <location line="+232"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-254"/>
+        <location line="-232"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -3185,36 +3185,36 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+257"/>
+        <location line="+235"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-255"/>
-        <location line="+257"/>
+        <location line="-233"/>
+        <location line="+235"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-255"/>
-        <location line="+256"/>
+        <location line="-233"/>
+        <location line="+234"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-254"/>
-        <location line="+256"/>
+        <location line="-232"/>
+        <location line="+234"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-254"/>
-        <location line="+256"/>
+        <location line="-232"/>
+        <location line="+234"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-254"/>
+        <location line="-232"/>
         <source>RMS residual (µm)</source>
         <translation>RMS-Residuum (µm)</translation>
     </message>
@@ -3275,12 +3275,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+331"/>
+        <location line="+309"/>
         <source>Circular test “%1”</source>
         <translation>Kreisformtest „%1“</translation>
     </message>
     <message>
-        <location line="-323"/>
+        <location line="-301"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 Punkte; Nennkreis R %2 mm um (%3, %4) mm; %5 Umläufe (gegen, dann mit dem Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (%8, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt bestimmt (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
     </message>
@@ -3295,18 +3295,18 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>RMS-Residuum des deklarierten Modells allein: %1 µm.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+5"/>
         <source>Path (XY)</source>
         <translation>Bahn (XY)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+295"/>
+        <location line="+1"/>
+        <location line="+284"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-269"/>
         <source>Compensation</source>
         <translation>Kompensation</translation>
     </message>
@@ -3366,7 +3366,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Statistische Prozessregelung von „%1“ (%2)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+14"/>
         <source>Histogram of %1 (%2 values)</source>
         <translation>Histogramm von %1 (%2 Werte)</translation>
     </message>
@@ -3637,7 +3637,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 Punkte eines rein radialen Kreisformtests (Winkel und radiale Abweichung, wie Ballbar-Software sie exportiert); %2 Schleifen. Er hat keine Soll- und Ist-Koordinaten x/y, daher lassen sich die Antriebsfehler daraus nicht identifizieren und es wird keine Kompensation berechnet; es folgen seine Ergebnisse nach ISO 230-4.</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+21"/>
         <source>Circular test %1 (radial only): largest circular deviation G %2 µm.</source>
         <translation>Kreisformtest %1 (nur radial): größte Kreisformabweichung G %2 µm.</translation>
     </message>
@@ -3889,12 +3889,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+105"/>
+        <location line="+96"/>
         <source>frame rotation</source>
         <translation>Drehung des Koordinatensystems</translation>
     </message>
     <message>
-        <location line="-104"/>
+        <location line="-95"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Maschineneinstellwerte (%1%2)</translation>
     </message>
@@ -3914,7 +3914,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Sätze (mm, °)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+13"/>
         <source>The same posture as a controller frame (instead of the axis values)</source>
         <translation>Dieselbe Lage als Steuerungs-Frame (statt der Achswerte)</translation>
     </message>
@@ -6925,7 +6925,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Noch keine SPC-Reihe.</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+19"/>
         <source>Histogram of %1 (%2 values)</source>
         <translation>Histogramm von %1 (%2 Werte)</translation>
     </message>
@@ -7721,7 +7721,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&amp;Thermoprotokoll:</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+82"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Dieses Projekt hat kein Thermoprotokoll. Fügen Sie der Projektdatei einen Datensatz der Art „thermal_log“ hinzu (eine Zeitspalte, Sensorspalten und die Verlagerung).</translation>
     </message>

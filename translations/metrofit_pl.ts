@@ -4,7 +4,7 @@
 <context>
     <name>StudyInfo</name>
     <message>
-        <location filename="../widgets/document/studyinfo.cpp" line="+16"/>
+        <location filename="../widgets/document/studyinfo.cpp" line="+17"/>
         <source>Setup correction</source>
         <translation>Korekcja danych ustawczych</translation>
     </message>
@@ -454,17 +454,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+420"/>
-        <source>%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study (%2) yet; it is reported here and in the residual check, not applied</source>
-        <translation>%1: efektu ogólnego (tego, czego nie wyjaśnia żaden efekt z katalogu) nie można jeszcze dodać do modelu badania (%2); jest pokazany tutaj i w sprawdzeniu residuów, nie zastosowany</translation>
-    </message>
-    <message>
-        <location line="+162"/>
+        <location line="+583"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-515"/>
+        <location line="-516"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
@@ -572,12 +567,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     <message>
         <location line="+1"/>
         <location line="+168"/>
-        <location line="+118"/>
+        <location line="+119"/>
         <source>Residual chec&amp;k</source>
         <translation>Sprawdzenie re&amp;siduów</translation>
     </message>
     <message>
-        <location line="-284"/>
+        <location line="-285"/>
         <source>The candidate effects tried, their residual plots and the error before / after</source>
         <translation>Wypróbowane efekty kandydujące, ich wykresy residuów i błąd przed / po</translation>
     </message>
@@ -654,7 +649,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Diagnozowanie … krok %1, bieżący rmse %2</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+35"/>
+        <source>%1: a generic effect of the data row, the part or the dimension says nothing about the next part, so the study (%2) cannot include it; it is reported here and in the residual check, not applied</source>
+        <translation>%1: efekt ogólny wiersza danych, części lub wymiaru nic nie mówi o następnej części, więc badanie (%2) nie może go uwzględnić; jest raportowany tutaj i w sprawdzeniu residuum, ale nie zastosowany</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Nothing to apply. %1.</source>
         <translation>Nie ma czego zastosować. %1.</translation>
     </message>
@@ -1125,12 +1125,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+358"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+363"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-97"/>
         <source>measured, CCW loop</source>
         <translation>zmierzony, pętla przeciwnie do ruchu wskazówek zegara</translation>
     </message>
@@ -1160,7 +1160,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>promień na wykresie = R + k × odchyłka promieniowa, k = %1; okręgi co %2 µm</translation>
     </message>
     <message>
-        <location line="+189"/>
+        <location line="+196"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -1434,7 +1434,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Kompensuj</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+55"/>
         <source>The kinematics study&apos;s settings are invalid: %1</source>
         <translation>Ustawienia badania kinematyki są nieprawidłowe: %1</translation>
     </message>
@@ -1451,7 +1451,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 %1</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+37"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -1496,56 +1496,56 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+6"/>
-        <location line="+103"/>
+        <location line="+89"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-87"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+101"/>
+        <location line="+87"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-99"/>
+        <location line="-85"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+99"/>
+        <location line="+85"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-97"/>
+        <location line="-83"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Napęd X porusza się wzdłuż (cos a, sin a); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+97"/>
+        <location line="+83"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-81"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Napęd Y porusza się wzdłuż (-sin b, cos b); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+95"/>
+        <location line="+81"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-93"/>
+        <location line="-79"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Kąt między osiami wynosi 90° + (b − a)</translation>
     </message>
@@ -1580,18 +1580,18 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Residuum zadeklarowanego modelu (początek i kąty osi, bez zastosowanych efektów)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+6"/>
         <source>Path (XY)</source>
         <translation>Tor (XY)</translation>
     </message>
     <message>
-        <location line="-116"/>
-        <location line="+121"/>
+        <location line="-106"/>
+        <location line="+107"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>measured</source>
         <translation>zmierzony</translation>
     </message>
@@ -1703,7 +1703,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: identyfikacja niemożliwa:&lt;br&gt;%1</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+30"/>
         <source>measured (before)</source>
         <translation>zmierzony (przed)</translation>
     </message>
@@ -2424,7 +2424,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+23"/>
-        <location line="+265"/>
+        <location line="+260"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
@@ -3043,7 +3043,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+256"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+234"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
         <source>yes</source>
         <translation>tak</translation>
@@ -3166,13 +3166,13 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dla każdego studium dopasowywany jest zadeklarowany model i obliczane jego residuum; brakujące w modelu efekty kandydujące są sprawdzane kolejno, każdy estymowany wraz z parametrami i ich błędami standardowymi. Efekt jest przyjmowany tylko na podstawie dowodów (poprawa na danych testowych dla termiki, w pozostałych przypadkach kryterium informacyjne z ostrożnym progiem) i gdy zmniejsza błąd o praktycznie istotną wartość; model jest ponownie dopasowywany z tym efektem, a wyszukiwanie powtarzane, dopóki nic więcej nie zostanie znalezione.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-202"/>
-        <location line="+254"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-180"/>
+        <location line="+232"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-254"/>
+        <location line="-232"/>
         <source>identified</source>
         <translation>zidentyfikowany</translation>
     </message>
@@ -3188,36 +3188,36 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+257"/>
+        <location line="+235"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-255"/>
-        <location line="+257"/>
+        <location line="-233"/>
+        <location line="+235"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-255"/>
-        <location line="+256"/>
+        <location line="-233"/>
+        <location line="+234"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-254"/>
-        <location line="+256"/>
+        <location line="-232"/>
+        <location line="+234"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-254"/>
-        <location line="+256"/>
+        <location line="-232"/>
+        <location line="+234"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-254"/>
+        <location line="-232"/>
         <source>RMS residual (µm)</source>
         <translation>residuum RMS (µm)</translation>
     </message>
@@ -3278,12 +3278,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+331"/>
+        <location line="+309"/>
         <source>Circular test “%1”</source>
         <translation>Test kołowy „%1”</translation>
     </message>
     <message>
-        <location line="-323"/>
+        <location line="-301"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 punktów; okrąg nominalny R %2 mm wokół (%3, %4) mm; %5 pętli (przeciwnie, potem zgodnie z ruchem wskazówek zegara). Błędy napędów maszyny kartezjańskiej (%8, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wyznaczono metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
     </message>
@@ -3298,18 +3298,18 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Residuum RMS samego zadeklarowanego modelu: %1 µm.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+5"/>
         <source>Path (XY)</source>
         <translation>Tor (XY)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+295"/>
+        <location line="+1"/>
+        <location line="+284"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-269"/>
         <source>Compensation</source>
         <translation>Kompensacja</translation>
     </message>
@@ -3369,7 +3369,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Statystyczne sterowanie procesem: „%1” (%2)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+14"/>
         <source>Histogram of %1 (%2 values)</source>
         <translation>Histogram %1 (wartości: %2)</translation>
     </message>
@@ -3640,7 +3640,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>%1 punktów testu okrągłości tylko z odchyłkami promieniowymi (kąt i odchyłka promieniowa, tak jak eksportuje je oprogramowanie ballbar); pętle: %2. Test nie ma zadanych i zmierzonych współrzędnych x/y, więc nie można z niego zidentyfikować błędów napędów i nie oblicza się kompensacji; poniżej jego wyniki według ISO 230-4.</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+21"/>
         <source>Circular test %1 (radial only): largest circular deviation G %2 µm.</source>
         <translation>Test okrągłości %1 (tylko promieniowy): największa odchyłka kołowości G %2 µm.</translation>
     </message>
@@ -3892,12 +3892,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+105"/>
+        <location line="+96"/>
         <source>frame rotation</source>
         <translation>obrót układu współrzędnych</translation>
     </message>
     <message>
-        <location line="-104"/>
+        <location line="-95"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Wartości nastawienia maszyny (%1%2)</translation>
     </message>
@@ -3917,7 +3917,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Bloki (mm, °)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+13"/>
         <source>The same posture as a controller frame (instead of the axis values)</source>
         <translation>To samo położenie jako układ (frame) sterowania (zamiast wartości osi)</translation>
     </message>
@@ -6947,7 +6947,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Brak jeszcze serii SPC.</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+19"/>
         <source>Histogram of %1 (%2 values)</source>
         <translation>Histogram %1 (wartości: %2)</translation>
     </message>
@@ -7743,7 +7743,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>&amp;Rejestr termiczny:</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+82"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Ten projekt nie zawiera rejestru termicznego. Dodaj do pliku projektu zbiór danych rodzaju „thermal_log” (kolumna czasu, kolumny czujników i przemieszczenie).</translation>
     </message>

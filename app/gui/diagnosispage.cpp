@@ -476,10 +476,11 @@ void DiagnosisPage::updateApplyButton() {
     applyButton_->setToolTip(normal);
     return;
   }
-  // A generic effect is a shape fitted to this residual; no study's model can include it yet.
+  // Only setup leaves effects out: a generic effect of the row, the part or the dimension category
+  // says nothing about the next part the setup study predicts.
   const QString why =
-      tr("%1: a generic effect (what no catalogue effect explains) cannot be added to the model of the study "
-         "(%2) yet; it is reported here and in the residual check, not applied")
+      tr("%1: a generic effect of the data row, the part or the dimension says nothing about the next part, "
+         "so the study (%2) cannot include it; it is reported here and in the residual check, not applied")
           .arg(left.join(QStringLiteral(", ")), domainTitle(domain()));
   applyButton_->setToolTip(
       applicable.isEmpty() ? tr("Nothing to apply. %1.").arg(why)

@@ -329,9 +329,9 @@ TEST_F(ResidualCheckPageTest, GenericEffectIsListedWithItsFormAndAppliedInTherma
   EXPECT_EQ(applied[1].at("shape").at("knots"), nlohmann::json::parse("[20.0, 22.0, 24.0, 26.0, 28.0]"));
   EXPECT_EQ(applied[1].at("parameters").at("rms"), 2.1);
 
-  // Setup (its study does not apply generic effects yet): the generic effect is left out, the tooltip
-  // says why, and with only a generic effect accepted nothing can be applied. (Kinematic applies a
-  // generic effect with its coefficients; the fixture's has none.)
+  // Setup applies a generic effect only with its coefficients and only of a variable that predicts the
+  // next part (time, datum:<id>, dimension:<id>); the fixture's (against T1, no coefficients) is left
+  // out, the tooltip says why, and with only a generic effect accepted nothing can be applied.
   diagnose::Diagnosis kinematic = fixture();
   kinematic.domain = "setup";
   DiagnosisPage kin(&document_);
@@ -352,6 +352,22 @@ TEST_F(ResidualCheckPageTest, GenericEffectIsListedWithItsFormAndAppliedInTherma
   EXPECT_FALSE(other.applyAccepted());
   EXPECT_TRUE(appliedEffects(only).empty());
   EXPECT_EQ(appliedEffects(fixture(true)).size(), 1u);
+  EXPECT_TRUE(other.applyButton()->toolTip().contains(QStringLiteral("says nothing about the next part")))
+      << other.applyButton()->toolTip().toStdString();
+  diagnose::Diagnosis timed = fixture(true);
+  timed.domain = "setup";
+  for (diagnose::Candidate& c : timed.effects)
+    if (c.generic) {
+      c.name = "unexplained:time";
+      c.generic->against = "time";
+      c.genericCoefficients = {0.001, 0.002};
+    }
+  DiagnosisPage third(&document_);
+  third.setDomain(DiagnosisDomain::Setup);
+  third.setResult(timed);
+  EXPECT_TRUE(third.applyButton()->isEnabled()) << third.applyButton()->toolTip().toStdString();
+  ASSERT_EQ(appliedEffects(timed).size(), 1u);
+  EXPECT_EQ(appliedEffects(timed)[0].at("coefficients"), nlohmann::json::parse("[0.001, 0.002]"));
 }
 
 TEST(ResidualCheckTextTest, SentencesInReadersWords) {
