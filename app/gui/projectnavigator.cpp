@@ -1,8 +1,15 @@
 #include "app/gui/projectnavigator.h"
 
+#include <QFontMetrics>
 #include <QHeaderView>
 #include <QMenu>
+#include <QRegularExpression>
 #include <QSignalBlocker>
+#include <QStyle>
+#include <QStyledItemDelegate>
+
+#include <algorithm>
+#include <functional>
 
 #include "app/gui/datasetactions.h"
 
@@ -10,6 +17,32 @@
 #include "widgets/document/studyinfo.h"
 
 namespace metrofit {
+namespace {
+
+/// Rows as high as their text wrapped to the column (the tree's own size hint does not wrap).
+class WrappingDelegate : public QStyledItemDelegate {
+ public:
+  explicit WrappingDelegate(QTreeWidget* tree) : QStyledItemDelegate(tree), tree_(tree) {}
+  QSize sizeHint(const QStyleOptionViewItem& option, const QModelIndex& index) const override {
+    QSize size = QStyledItemDelegate::sizeHint(option, index);
+    int depth = 0;
+    for (QModelIndex p = index.parent(); p.isValid(); p = p.parent()) ++depth;
+    QStyleOptionViewItem o = option;
+    initStyleOption(&o, index);
+    const int indent = (depth + (tree_->rootIsDecorated() ? 1 : 0)) * tree_->indentation();
+    const int margin = 2 * (tree_->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, &o, tree_) + 1);
+    const int available = std::max(20, tree_->columnWidth(0) - indent - margin);
+    const QRect text =
+        QFontMetrics(o.font).boundingRect(QRect(0, 0, available, 100000), Qt::TextWordWrap, o.text);
+    size.setHeight(std::max(size.height(), text.height() + 4));
+    return size;
+  }
+
+ private:
+  QTreeWidget* tree_;
+};
+
+}  // namespace
 
 ProjectNavigator::ProjectNavigator(ProjectDocument* document, QWidget* parent)
     : QTreeWidget(parent), document_(document) {
@@ -17,12 +50,15 @@ ProjectNavigator::ProjectNavigator(ProjectDocument* document, QWidget* parent)
   setHeaderHidden(true);
   setColumnCount(1);
   setRootIsDecorated(true);
-  setUniformRowHeights(true);
-  // Long project names and dataset ids: the column is as wide as its longest item and scrolls;
-  // nothing is cut to "…".
+  // Long project names wrap onto more lines within the dock's width (nothing is cut to "…" or
+  // scrolled out of sight); a dataset id without spaces that is wider than the dock still makes
+  // the column wider and the tree scroll sideways.
+  setUniformRowHeights(false);
+  setWordWrap(true);
+  setItemDelegate(new WrappingDelegate(this));
   setTextElideMode(Qt::ElideNone);
   header()->setStretchLastSection(false);
-  header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  header()->setSectionResizeMode(0, QHeaderView::Fixed);
   setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
   connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* current) {
     if (!current) return;
@@ -68,6 +104,34 @@ void ProjectNavigator::refresh() {
   }
   root_->setText(0, document_->displayName());
   root_->setToolTip(0, tr("%1: project overview (Ctrl+1)").arg(document_->displayName()));
+  fitColumn();
+}
+
+void ProjectNavigator::resizeEvent(QResizeEvent* event) {
+  QTreeWidget::resizeEvent(event);
+  fitColumn();
+}
+
+void ProjectNavigator::fitColumn() {
+  if (!root_) return;
+  static const QRegularExpression space(QStringLiteral("\\s+"));
+  // Widest word of an item at its depth: the indentation, the decoration and the text margins.
+  int need = 0;
+  const std::function<void(QTreeWidgetItem*, int)> visit = [&](QTreeWidgetItem* item, int depth) {
+    const QFontMetrics fm(item->font(0));
+    int word = 0;
+    for (const QString& w : item->text(0).split(space, Qt::SkipEmptyParts))
+      word = std::max(word, fm.horizontalAdvance(w));
+    need = std::max(need,
+                    (depth + (rootIsDecorated() ? 1 : 0)) * indentation() + word + 4 * fm.averageCharWidth());
+    for (int i = 0; i < item->childCount(); ++i) visit(item->child(i), depth + 1);
+  };
+  visit(root_, 0);
+  const int width = std::max(viewport()->width(), need);
+  if (columnWidth(0) != width) {
+    setColumnWidth(0, width);
+    doItemsLayout();
+  }
 }
 
 void ProjectNavigator::rebuild() {
@@ -100,6 +164,7 @@ void ProjectNavigator::rebuild() {
   }
   expandAll();
   setCurrentItem(itemForPage(page));
+  fitColumn();
   updateGeometry();
 }
 

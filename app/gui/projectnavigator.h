@@ -27,9 +27,15 @@ class ProjectNavigator : public QTreeWidget {
   /// An item was selected: its page and, for a dataset item, the dataset id (else empty).
   void pageActivated(metrofit::Page page, const QString& datasetId);
 
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
  private:
   void refresh();
   void rebuild();
+  /// The column is the viewport's width, or wider when a word (a dataset id) needs more; rows are
+  /// laid out again so that wrapped names get their height.
+  void fitColumn();
 
   ProjectDocument* document_;
   QTreeWidgetItem* root_ = nullptr;

@@ -17,6 +17,7 @@
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QStackedWidget>
 #include <QStyleOptionViewItem>
@@ -159,15 +160,15 @@ TEST_F(MainWindowTest, NavigatorShowsEveryPage) {
   EXPECT_TRUE(window_.overviewPage()->isVisible());
 }
 
-// The navigator shows every title whole ("Demo cell: 5-axis machining ce..." was cut):
-// its column is as wide as its items (a dock narrower than that scrolls sideways instead).
-TEST_F(MainWindowTest, NavigatorTitlesAreNotElided) {
+// The navigator shows every title whole ("Demo cell: 5-axis machining ce..." was cut, then scrolled
+// out of sight): a long project name wraps onto a second line within the dock, every item's text
+// wrapped to its row fits the row's height, and at 1280 x 800 nothing needs a sideways scroll.
+TEST_F(MainWindowTest, NavigatorTitlesAreWholeAndWrapInsteadOfScrolling) {
   window_.resize(1280, 800);
   QApplication::processEvents();
   ProjectNavigator* nav = window_.navigator();
   EXPECT_EQ(nav->textElideMode(), Qt::ElideNone);
-  QStyleOptionViewItem option;
-  option.initFrom(nav);
+  EXPECT_TRUE(nav->wordWrap());
   QAbstractItemModel* model = nav->model();
   QList<QModelIndex> pending{model->index(0, 0)};
   int checked = 0;
@@ -175,11 +176,20 @@ TEST_F(MainWindowTest, NavigatorTitlesAreNotElided) {
     const QModelIndex index = pending.takeFirst();
     for (int r = 0; r < model->rowCount(index); ++r) pending << model->index(r, 0, index);
     const QRect rect = nav->visualRect(index);
-    const int needed = nav->itemDelegate()->sizeHint(option, index).width();
-    EXPECT_GE(rect.width(), needed) << index.data().toString().toStdString();
+    const QFont font = qvariant_cast<QFont>(index.data(Qt::FontRole));
+    const QFontMetrics fm(index.data(Qt::FontRole).isValid() ? font : nav->font());
+    const QRect text =
+        fm.boundingRect(QRect(0, 0, rect.width() - 6, 100000), Qt::TextWordWrap, index.data().toString());
+    EXPECT_LE(text.height(), rect.height()) << index.data().toString().toStdString();
+    EXPECT_LE(rect.right(), nav->viewport()->width()) << index.data().toString().toStdString();
     ++checked;
   }
   EXPECT_GT(checked, 20);
+  EXPECT_FALSE(nav->horizontalScrollBar()->isVisible());
+  // The demo's name is longer than the dock is wide: its row holds two lines.
+  const QModelIndex root = model->index(0, 0);
+  EXPECT_GE(nav->visualRect(root).height(), 2 * QFontMetrics(nav->font()).lineSpacing())
+      << nav->visualRect(root).height();
 }
 
 TEST_F(MainWindowTest, DatasetItemsSelectTheirData) {
