@@ -394,14 +394,10 @@ ThermalSelection chooseThermalModel(const ThermalSeries& series, std::size_t fit
   return sel;
 }
 
-ModularEvaluation fitModular(const std::vector<ThermalSeries>& trainingTests, const ThermalSeries& test,
-                             const ThermalFitOptions& o, Observer* observer) {
-  if (!test.hasTarget())
-    throw ValidationError(ErrorContext{test.source, 0, 0, test.targetName},
-                          "the test log has no target column");
-  ModularEvaluation m;
-  m.training = fitThermalModel(trainingTests, o, observer);
-  m.predicted = predictTarget(m.training.model, test);
+namespace {
+
+/// The figures of a modular prediction of `test` (m.predicted set): metrics and the error reduction.
+void modularFigures(const ThermalSeries& test, ModularEvaluation& m) {
   m.test = thermalMetrics(test.target, m.predicted);
   double ss = 0.0;
   for (std::size_t k = 0; k < test.rows(); ++k) {
@@ -413,6 +409,58 @@ ModularEvaluation fitModular(const std::vector<ThermalSeries>& trainingTests, co
   m.residualPeak = m.test.residualBand;
   m.reductionPeak = m.errorPeak > 0.0 ? 1.0 - m.residualPeak / m.errorPeak : 0.0;
   m.reductionRms = m.errorRms > 0.0 ? 1.0 - m.test.rmse / m.errorRms : 0.0;
+}
+
+void requireTarget(const ThermalSeries& test) {
+  if (!test.hasTarget())
+    throw ValidationError(ErrorContext{test.source, 0, 0, test.targetName},
+                          "the test log has no target column");
+}
+
+}  // namespace
+
+ModularEvaluation fitModular(const std::vector<ThermalSeries>& trainingTests, const ThermalSeries& test,
+                             const ThermalFitOptions& o, Observer* observer) {
+  requireTarget(test);
+  ModularEvaluation m;
+  m.training = fitThermalModel(trainingTests, o, observer);
+  m.predicted = predictTarget(m.training.model, test);
+  modularFigures(test, m);
+  return m;
+}
+
+ThermalModule fitThermalModule(const std::string& name, const ThermalSeries& test, const ThermalFitOptions& o,
+                               Observer* observer) {
+  ThermalModule module;
+  module.name = name;
+  module.test = test.source;
+  module.training = fitThermalModel({test}, o, observer);
+  return module;
+}
+
+ModulesEvaluation evaluateModules(const std::vector<ThermalModule>& modules,
+                                  const std::vector<ThermalSeries>& tests) {
+  if (modules.empty() || modules.size() != tests.size())
+    throw ValidationError(ErrorContext{}, "one test series per module is needed, " +
+                                              std::to_string(tests.size()) + " for " +
+                                              std::to_string(modules.size()) + " modules");
+  const ThermalSeries& first = tests.front();
+  requireTarget(first);
+  ModulesEvaluation m;
+  m.predicted.assign(first.rows(), first.target.front());
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    const ThermalSeries& t = tests[i];
+    if (t.rows() != first.rows() || t.target != first.target)
+      throw ValidationError(ErrorContext{t.source, 0, 0, t.targetName},
+                            "module '" + modules[i].name + "': not the same test log as the first module's");
+    if (t.inputNames != modules[i].training.model.inputs)
+      throw ValidationError(ErrorContext{t.source, 0, 0, t.targetName},
+                            "module '" + modules[i].name + "' needs its own inputs on the test log");
+    std::vector<double> c = predictChange(modules[i].training.model, t);
+    for (std::size_t k = 0; k < c.size(); ++k) m.predicted[k] += c[k];
+    m.contributions.push_back(std::move(c));
+  }
+  modularFigures(first, m);
   return m;
 }
 

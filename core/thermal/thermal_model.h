@@ -169,6 +169,30 @@ struct ModularEvaluation {
 ModularEvaluation fitModular(const std::vector<ThermalSeries>& trainingTests, const ThermalSeries& test,
                              const ThermalFitOptions& options, Observer* observer = nullptr);
 
+/// Section 4.3 as separate modules: each module (e.g. the Z-axis and the C-axis heating) is identified
+/// on its own test with its own inputs, and the combined prediction is the sum of the modules'
+/// predicted changes, so that one module can be identified again (a new C test) while the others
+/// keep their models.
+struct ThermalModule {
+  std::string name;          ///< "z", "c"
+  ThermalTraining training;  ///< identified on its own test, or a saved model taken as it is
+  std::string test;          ///< the test it was identified on (empty for a saved model)
+};
+/// Identifies one module on its test (the series' target and inputs are the module's).
+ThermalModule fitThermalModule(const std::string& name, const ThermalSeries& test,
+                               const ThermalFitOptions& options, Observer* observer = nullptr);
+
+struct ModulesEvaluation : ModularEvaluation {
+  /// Per module, its predicted change of the target on the test log (the combined prediction is the
+  /// test's first value plus their sum).
+  std::vector<std::vector<double>> contributions;
+};
+/// The modules' combined prediction of the test log (`tests[i]`: the test log with module i's inputs and
+/// the target). ValidationError when the counts differ, a module's inputs are not its test series'
+/// inputs, or the test log has no target.
+ModulesEvaluation evaluateModules(const std::vector<ThermalModule>& modules,
+                                  const std::vector<ThermalSeries>& tests);
+
 /// JSON form of a fitted model ({"format": "metrofit-thermal-model", "version": 1, ...}).
 nlohmann::json thermalModelToJson(const ThermalModel& model);
 /// Reads a model written by thermalModelToJson; ValidationError naming `source` and the field.
