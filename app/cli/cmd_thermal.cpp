@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,7 +43,9 @@ struct HysteresisArgs {
 
 struct ModularArgs {
   std::vector<std::string> train;
-  std::string test, target, inputs, model = "gnnmci", training = "pso-ls", out, saveModel;
+  std::vector<std::string> modules;       ///< NAME:FILE:INPUTS
+  std::vector<std::string> moduleModels;  ///< NAME:MODEL.json
+  std::string test, target, inputs, model = "gnnmci", training = "pso-ls", out, saveModel, saveModules;
   std::uint64_t seed = 1;
 };
 
@@ -237,7 +240,112 @@ int runHysteresis(const HysteresisArgs& a) {
   return 0;
 }
 
+[[noreturn]] void moduleFail(const std::string& option, const std::string& what) {
+  throw OptionsError(ErrorContext{{}, 0, 0, option}, what);
+}
+
+/// `thermal modular --module NAME:FILE:INPUTS ... [--module-model NAME:MODEL.json ...]`: each module
+/// identified on its own test (or taken from a saved model), the test log predicted as their sum.
+int runModules(const ModularArgs& a) {
+  if (!a.train.empty()) moduleFail("--module", "cannot be combined with --train (one pooled model)");
+  const ThermalLog testLog = readThermalLog(a.test, 3, csvOptions());
+  (void)testLog.channel(a.target);
+  const thermal::ThermalFitOptions o = fitOptions(a.model, a.training, a.seed, 0);
+  std::vector<thermal::ThermalModule> modules;
+  std::vector<thermal::ThermalSeries> tests;
+  std::vector<std::string> names;
+  const auto checkName = [&](const std::string& option, const std::string& name) {
+    if (name.empty()) moduleFail(option, "a module needs a name before the first ':'");
+    for (const auto& n : names)
+      if (n == name) moduleFail(option, "module '" + name + "' is given twice");
+    names.push_back(name);
+  };
+  const auto testSeries = [&](const std::string& option, const std::string& name,
+                              const std::vector<std::string>& inputs) {
+    for (const auto& in : inputs) {
+      if (in == a.target) moduleFail(option, "module '" + name + "': '" + in + "' is also the --target");
+      if (testLog.indexOf(in) < 0)
+        moduleFail(option, "module '" + name + "': the test log " + a.test + " has no column '" + in + "'");
+    }
+    return thermal::selectThermalSeries(testLog, a.target, inputs);
+  };
+  for (const std::string& spec : a.modules) {
+    const std::size_t first = spec.find(':'), last = spec.rfind(':');
+    if (first == std::string::npos || last == first)
+      moduleFail("--module", "expected NAME:FILE:INPUTS (e.g. z:z_test.csv:T5,T6), got '" + spec + "'");
+    const std::string name = spec.substr(0, first), file = spec.substr(first + 1, last - first - 1);
+    checkName("--module", name);
+    const std::vector<std::string> inputs = splitList(spec.substr(last + 1));
+    if (inputs.empty()) moduleFail("--module", "module '" + name + "' needs at least one input column");
+    const ThermalLog log = readThermalArgs(file, a.target, spec.substr(last + 1));
+    {
+      TerminalProgress progress(percentLine("thermal modular: module " + name));
+      modules.push_back(thermal::fitThermalModule(name, thermal::selectThermalSeries(log, a.target, inputs),
+                                                  o, progress.observer()));
+    }
+    if (modules.back().training.run.termination == Termination::Cancelled)
+      throw std::runtime_error("training was cancelled");
+    tests.push_back(testSeries("--module", name, inputs));
+  }
+  for (const std::string& spec : a.moduleModels) {
+    const std::size_t colon = spec.find(':');
+    if (colon == std::string::npos)
+      moduleFail("--module-model", "expected NAME:MODEL.json, got '" + spec + "'");
+    const std::string name = spec.substr(0, colon), file = spec.substr(colon + 1);
+    checkName("--module-model", name);
+    thermal::ThermalModule m;
+    m.name = name;
+    m.training.model = thermal::thermalModelFromJson(readJsonFile(file), file);
+    if (m.training.model.target != a.target)
+      moduleFail("--module-model", "module '" + name + "' (" + file + ") models '" + m.training.model.target +
+                                       "', not the --target '" + a.target + "'");
+    tests.push_back(testSeries("--module-model", name, m.training.model.inputs));
+    modules.push_back(std::move(m));
+  }
+  const thermal::ModulesEvaluation m = thermal::evaluateModules(modules, tests);
+  nlohmann::json j;
+  j["target"] = a.target;
+  j["test"] = a.test;
+  j["R"] = m.test.r;
+  j["RMSE"] = m.test.rmse;
+  j["E"] = m.test.e;
+  j["residual_band"] = m.test.residualBand;
+  j["error_peak"] = m.errorPeak;
+  j["error_rms"] = m.errorRms;
+  j["reduction_peak"] = m.reductionPeak;
+  j["reduction_rms"] = m.reductionRms;
+  j["modules"] = nlohmann::json::array();
+  const std::string unit = unitOf(testLog, a.target);
+  std::string parts;
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    const thermal::ThermalModule& mod = modules[i];
+    double peak = 0.0;
+    for (double v : m.contributions[i]) peak = std::abs(v) > std::abs(peak) ? v : peak;
+    nlohmann::json e{{"name", mod.name},
+                     {"model", toString(mod.training.model.kind)},
+                     {"inputs", mod.training.model.inputs},
+                     {"identified_on", mod.test.empty() ? nlohmann::json(nullptr) : nlohmann::json(mod.test)},
+                     {"contribution_peak", peak},
+                     {"parameters", thermal::thermalModelParameters(mod.training.model)}};
+    j["modules"].push_back(std::move(e));
+    parts += (parts.empty() ? "" : ", ") + mod.name + " " + num(peak) + unit;
+    if (!a.saveModules.empty()) {
+      const std::string path = (std::filesystem::path(a.saveModules) / (mod.name + ".json")).string();
+      writeResult(path, dumpJson(thermal::thermalModelToJson(mod.training.model)));
+    }
+  }
+  writeResult(a.out, dumpJson(j));
+  summary("thermal modular: " + std::to_string(modules.size()) + " modules (" + parts +
+          " at their peaks), on " + a.test + ": error " + num(m.errorPeak) + unit + " -> +-" +
+          num(m.residualPeak) + unit + " (" + num(100.0 * m.reductionPeak, 3) + " % less), RMSE " +
+          num(m.test.rmse) + unit + ", R " + num(m.test.r, 3) + ", E " + num(m.test.e, 3));
+  return 0;
+}
+
 int runModular(const ModularArgs& a) {
+  if (!a.modules.empty() || !a.moduleModels.empty()) return runModules(a);
+  if (a.train.empty()) moduleFail("--train", "give the training tests (--train) or the modules (--module)");
+  if (a.inputs.empty()) moduleFail("--inputs", "is required with --train");
   const auto inputs = splitList(a.inputs);
   std::vector<thermal::ThermalSeries> train;
   for (const auto& f : a.train) {
@@ -362,9 +470,18 @@ void registerThermalCommands(CLI::App& app) {
   auto* mod = th->add_subcommand(
       "modular", "Fit one model on several tests (e.g. Z and C heating), predict another (Section 4.3)");
   existingFile(
-      mod->add_option("--train", m->train, "Training test log (CSV); repeat for each test")->required());
+      mod->add_option("--train", m->train,
+                      "Training test log (CSV); repeat for each test (one model fitted on all of them)"));
+  mod->add_option(
+      "--module", m->modules,
+      "NAME:FILE:INPUTS, e.g. z:z_test.csv:T5,T6: a module identified on its own test with its own "
+      "inputs; repeat per module, the test log is predicted as their sum");
+  mod->add_option("--module-model", m->moduleModels,
+                  "NAME:MODEL.json: a module taken from a saved model (identify only the others again)");
+  mod->add_option("--save-modules", m->saveModules, "Folder to write each module's model to (NAME.json)");
   existingFile(mod->add_option("--test", m->test, "Test log to predict (CSV)")->required());
-  addColumns(mod, m->target, m->inputs);
+  mod->add_option("--target", m->target, "Column to model (e.g. disp_z_um)")->required();
+  mod->add_option("--inputs", m->inputs, "Comma-separated input columns (with --train)");
   mod->add_option("--model", m->model, "gnnmci|gmc|mlp|linear|lag|dlag (see thermal fit)")
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp", "linear", "lag", "dlag"}))
       ->capture_default_str();

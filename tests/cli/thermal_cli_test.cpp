@@ -276,5 +276,56 @@ TEST(ThermalCli, HysteresisAndModular) {
     EXPECT_TRUE(mj[key].is_number()) << key;
 }
 
+// Modules identified on their own tests (Z module on the Z test with the Z motor sensors, C module on
+// the C test with the C motor sensor), the combined test predicted as their sum; the C module saved and
+// taken back with --module-model while Z is identified again gives the same prediction; bad module
+// specifications exit 2 naming the option.
+TEST(ThermalCli, ModulesEachOnTheirOwnTestAndOneTakenFromASavedModel) {
+  test::TempDir tmp;
+  for (const char* t : {"z", "c", "combined"})
+    ASSERT_EQ(cli(std::string("thermal simulate --test ") + t + " --out " + t + ".csv", tmp).code, 0);
+  const std::string common = " --test combined.csv --target disp_z_um --model dlag";
+  const CliRun m = cli("thermal modular --module z:z.csv:T5,T6 --module c:c.csv:T1" + common +
+                           " --save-modules . --out m.json",
+                       tmp);
+  ASSERT_EQ(m.code, 0) << m.err;
+  EXPECT_EQ(lines(m.err), 1);
+  EXPECT_NE(m.err.find("2 modules"), std::string::npos) << m.err;
+  const nlohmann::json mj = readJson(tmp, "m.json");
+  ASSERT_EQ(mj["modules"].size(), 2u);
+  EXPECT_EQ(mj["modules"][0]["name"], "z");
+  EXPECT_EQ(mj["modules"][0]["inputs"], (nlohmann::json{"T5", "T6"}));
+  EXPECT_EQ(mj["modules"][0]["identified_on"], "z.csv");
+  EXPECT_EQ(mj["modules"][1]["inputs"], (nlohmann::json{"T1"}));
+  // Both drives cool the ram's growth (negative) and neither module explains it all alone.
+  const double zPeak = mj["modules"][0]["contribution_peak"].get<double>();
+  const double cPeak = mj["modules"][1]["contribution_peak"].get<double>();
+  EXPECT_LT(zPeak, 0.0);
+  EXPECT_LT(cPeak, 0.0);
+  EXPECT_LT(std::abs(zPeak), mj["error_peak"].get<double>());
+  EXPECT_LT(std::abs(cPeak), mj["error_peak"].get<double>());
+  EXPECT_GE(mj["reduction_peak"].get<double>(), 0.9);
+
+  const CliRun again = cli(
+      "thermal modular --module z:z.csv:T5,T6 --module-model c:c.json" + common + " --out again.json", tmp);
+  ASSERT_EQ(again.code, 0) << again.err;
+  const nlohmann::json aj = readJson(tmp, "again.json");
+  EXPECT_TRUE(aj["modules"][1]["identified_on"].is_null());
+  EXPECT_DOUBLE_EQ(aj["RMSE"].get<double>(), mj["RMSE"].get<double>());
+  EXPECT_DOUBLE_EQ(aj["modules"][1]["contribution_peak"].get<double>(), cPeak);
+
+  for (const auto& [args, field] : std::vector<std::pair<std::string, std::string>>{
+           {" --module z.csv:T5", "--module"},
+           {" --module z:z.csv:T5 --module z:c.csv:T1", "--module"},
+           {" --module z:z.csv:T5 --train c.csv", "--module"},
+           {" --module z:z.csv:NOPE", "NOPE"},
+           {" --module-model c", "--module-model"}}) {
+    const CliRun bad = cli("thermal modular" + args + common, tmp);
+    EXPECT_EQ(bad.code, 2) << args << "\n" << bad.err;
+    EXPECT_EQ(lines(bad.err), 1) << args << "\n" << bad.err;
+    EXPECT_NE(bad.err.find(field), std::string::npos) << args << "\n" << bad.err;
+  }
+}
+
 }  // namespace
 }  // namespace metrofit
