@@ -2896,8 +2896,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+70"/>
-        <location line="+11"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+106"/>
+        <location line="+39"/>
         <source>%1: project overview (Ctrl+1)</source>
         <translation>%1: Projektübersicht (Strg+1)</translation>
     </message>
@@ -2911,7 +2911,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+621"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+650"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -3041,7 +3041,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+14"/>
         <location filename="../widgets/report/kinematicsection.cpp" line="+234"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-365"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -4892,7 +4892,27 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Modulare Modelle (%1, Abschnitt 4.3)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+35"/>
+        <source>modules, summed (distributed lag)</source>
+        <translation>Module, summiert (verteilte Verzögerung)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 with inputs %2, up to %3 %4</source>
+        <translation>%1 mit den Eingängen %2, bis zu %3 %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Module by module (the last row and the dotted curves): each module is identified on its own test alone, with the channels its own heating moves at least twice as much as the other test&apos;s, by the distributed-lag model, and the combined test is predicted as the sum of the modules, so that one module can be identified again without the others: %1.</source>
+        <translation>Modul für Modul (die letzte Zeile und die gepunkteten Kurven): Jedes Modul wird allein an seinem eigenen Test identifiziert, mit den Kanälen, die seine eigene Erwärmung mindestens doppelt so stark bewegt wie der andere Test, durch das Modell mit verteilter Verzögerung, und der kombinierte Test wird als Summe der Module vorhergesagt, sodass ein Modul ohne die anderen neu identifiziert werden kann: %1.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Module by module: not identified (%1).</source>
+        <translation>Modul für Modul: nicht identifiziert (%1).</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>The thermal models could not be fitted: %1</source>
         <translation>Die thermischen Modelle konnten nicht angepasst werden: %1</translation>
     </message>
@@ -4952,7 +4972,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Kompensieren Sie nicht mit diesen Modellen. Zeichnen Sie einen längeren Test mit Aufheizen und Abkühlen auf, setzen Sie Sensoren nahe den Wärmequellen und suchen Sie mit dem geschlossenen Regelkreis (Diagnose) die Verzögerung oder Eingänge, die dem Modell fehlen.</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-287"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Diagramme der ersten %1 von %2 Sensoren; die Tabelle listet alle.</translation>
     </message>
@@ -7354,7 +7374,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>gemessen (kombinierter Test)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+22"/>
+        <source>module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>modules, summed</source>
+        <translation>Module, summiert</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>PSO iteration</source>
         <translation>PSO-Iteration</translation>
     </message>
@@ -7392,7 +7422,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Übernommene Effekte %1: %2.</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+92"/>
         <source>Applied effects %1: Train (Ctrl+R) fits each model with and without them and keeps the lower held-out error.</source>
         <translation>Übernommene Effekte %1: Trainieren (Strg+R) passt jedes Modell mit und ohne sie an und behält den kleineren Fehler auf den Testdaten.</translation>
     </message>
@@ -7438,50 +7468,50 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+77"/>
+        <location line="+104"/>
         <location line="+108"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location line="-185"/>
-        <location line="+185"/>
+        <location line="-212"/>
+        <location line="+212"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
     <message>
-        <location line="-184"/>
-        <location line="+184"/>
+        <location line="-211"/>
+        <location line="+211"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-184"/>
-        <location line="+184"/>
+        <location line="-211"/>
+        <location line="+211"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-183"/>
-        <location line="+77"/>
+        <location line="-210"/>
+        <location line="+104"/>
         <location line="+106"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-183"/>
-        <location line="+183"/>
+        <location line="-210"/>
+        <location line="+210"/>
         <source>band</source>
         <translation>Band</translation>
     </message>
     <message>
-        <location line="-182"/>
-        <location line="+182"/>
+        <location line="-209"/>
+        <location line="+209"/>
         <source>verdict</source>
         <translation>Urteil</translation>
     </message>
     <message>
-        <location line="-175"/>
+        <location line="-202"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -7511,7 +7541,27 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&lt;b&gt;Modularer Fall:&lt;/b&gt; GNNMCI(1,N), angepasst an den Z- und C-Tests, verringert den Fehler des kombinierten Tests um %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+27"/>
+        <source>modules, summed (distributed lag)</source>
+        <translation>Module, summiert (verteilte Verzögerung)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 (inputs %2) contributes up to %3 %4</source>
+        <translation>%1 (Eingänge %2) trägt bis zu %3 %4 bei</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Module by module, each identified on its own test: %1.</source>
+        <translation>Modul für Modul, jedes an seinem eigenen Test identifiziert: %1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Module by module: not identified (%1).</source>
+        <translation>Modul für Modul: nicht identifiziert (%1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>error → band (%1)</source>
         <translation>Fehler → Band (%1)</translation>
     </message>
@@ -7631,7 +7681,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Modulare Modelle (Abschnitt 4.3)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+33"/>
         <source>Performance indices (Table 4)</source>
         <translation>Gütekennzahlen (Tabelle 4)</translation>
     </message>

@@ -2899,8 +2899,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+70"/>
-        <location line="+11"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+106"/>
+        <location line="+39"/>
         <source>%1: project overview (Ctrl+1)</source>
         <translation>%1: przegląd projektu (Ctrl+1)</translation>
     </message>
@@ -2914,7 +2914,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+621"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+650"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -3044,7 +3044,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+14"/>
         <location filename="../widgets/report/kinematicsection.cpp" line="+234"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-337"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-365"/>
         <source>yes</source>
         <translation>tak</translation>
     </message>
@@ -4901,7 +4901,27 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Modele modułowe (%1, rozdział 4.3)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+35"/>
+        <source>modules, summed (distributed lag)</source>
+        <translation>moduły, zsumowane (rozłożone opóźnienie)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 with inputs %2, up to %3 %4</source>
+        <translation>%1 z wejściami %2, do %3 %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Module by module (the last row and the dotted curves): each module is identified on its own test alone, with the channels its own heating moves at least twice as much as the other test&apos;s, by the distributed-lag model, and the combined test is predicted as the sum of the modules, so that one module can be identified again without the others: %1.</source>
+        <translation>Moduł po module (ostatni wiersz i kropkowane krzywe): każdy moduł jest identyfikowany wyłącznie na własnym teście, z kanałami, które jego własne nagrzewanie zmienia co najmniej dwa razy bardziej niż drugi test, modelem z rozłożonym opóźnieniem, a test łączony jest przewidywany jako suma modułów, dzięki czemu jeden moduł można zidentyfikować ponownie bez pozostałych: %1.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Module by module: not identified (%1).</source>
+        <translation>Moduł po module: nie zidentyfikowano (%1).</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>The thermal models could not be fitted: %1</source>
         <translation>Nie udało się dopasować modeli termicznych: %1</translation>
     </message>
@@ -4961,7 +4981,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Nie kompensuj tymi modelami. Zarejestruj dłuższy test obejmujący nagrzewanie i chłodzenie, dodaj czujniki blisko źródeł ciepła i użyj zamkniętej pętli (diagnozy), aby znaleźć opóźnienie lub wejścia, których brakuje modelowi.</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-287"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Wykresy pierwszych %1 z %2 czujników; tabela zawiera wszystkie.</translation>
     </message>
@@ -7376,7 +7396,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>zmierzony (test łączony)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+22"/>
+        <source>module %1</source>
+        <translation>moduł %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>modules, summed</source>
+        <translation>moduły, zsumowane</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>PSO iteration</source>
         <translation>iteracja PSO</translation>
     </message>
@@ -7414,7 +7444,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zastosowane efekty %1: %2.</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+92"/>
         <source>Applied effects %1: Train (Ctrl+R) fits each model with and without them and keeps the lower held-out error.</source>
         <translation>Zastosowane efekty %1: Trenuj (Ctrl+R) dopasowuje każdy model z nimi i bez nich i zachowuje mniejszy błąd danych testowych.</translation>
     </message>
@@ -7460,50 +7490,50 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+77"/>
+        <location line="+104"/>
         <location line="+108"/>
         <source>model</source>
         <translation>model</translation>
     </message>
     <message>
-        <location line="-185"/>
-        <location line="+185"/>
+        <location line="-212"/>
+        <location line="+212"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
     <message>
-        <location line="-184"/>
-        <location line="+184"/>
+        <location line="-211"/>
+        <location line="+211"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-184"/>
-        <location line="+184"/>
+        <location line="-211"/>
+        <location line="+211"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-183"/>
-        <location line="+77"/>
+        <location line="-210"/>
+        <location line="+104"/>
         <location line="+106"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-183"/>
-        <location line="+183"/>
+        <location line="-210"/>
+        <location line="+210"/>
         <source>band</source>
         <translation>pasmo</translation>
     </message>
     <message>
-        <location line="-182"/>
-        <location line="+182"/>
+        <location line="-209"/>
+        <location line="+209"/>
         <source>verdict</source>
         <translation>ocena</translation>
     </message>
     <message>
-        <location line="-175"/>
+        <location line="-202"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -7533,7 +7563,27 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>&lt;b&gt;Przypadek modułowy:&lt;/b&gt; GNNMCI(1,N) dopasowany na testach Z i C zmniejsza błąd testu łączonego o %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+27"/>
+        <source>modules, summed (distributed lag)</source>
+        <translation>moduły, zsumowane (rozłożone opóźnienie)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 (inputs %2) contributes up to %3 %4</source>
+        <translation>%1 (wejścia %2) wnosi do %3 %4</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Module by module, each identified on its own test: %1.</source>
+        <translation>Moduł po module, każdy zidentyfikowany na własnym teście: %1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Module by module: not identified (%1).</source>
+        <translation>Moduł po module: nie zidentyfikowano (%1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>error → band (%1)</source>
         <translation>błąd → pasmo (%1)</translation>
     </message>
@@ -7653,7 +7703,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Modele modułowe (rozdział 4.3)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+33"/>
         <source>Performance indices (Table 4)</source>
         <translation>Wskaźniki jakości (tabela 4)</translation>
     </message>

@@ -303,8 +303,8 @@ void ThermalPage::updateModular(bool now) {
     const ThermalLog cl = readThermalLog(paths[1], 3, csv[1]);
     run.testLog = std::make_shared<ThermalLog>(readThermalLog(paths[2], 3, csv[2]));
     const ThermalModelSettings s = defaultThermalModelSettings(*run.testLog, nlohmann::json::object(), {});
-    run.result = std::make_shared<ModularComparison>(
-        compareModularModels({&zl, &cl}, *run.testLog, s.target, modularInputs(*run.testLog), 1));
+    run.result = std::make_shared<ModularComparison>(compareModularModels(
+        {&zl, &cl}, *run.testLog, s.target, modularInputs(*run.testLog), 1, {}, {kModularZId, kModularCId}));
     return run;
   });
 }

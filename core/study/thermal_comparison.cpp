@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/common/error.h"
 #include "core/diagnose/thermal_applied.h"
 #include "core/thermal/thermal_data.h"
 
@@ -155,10 +156,38 @@ ThermalComparison compareThermalModels(const ThermalLog& log, const ThermalModel
   return c;
 }
 
+std::vector<std::vector<std::string>> moduleInputs(const std::vector<const ThermalLog*>& trainingTests,
+                                                   const ThermalLog& test, const std::string& target) {
+  // The largest change of a channel from its first value over a log (0 when the log lacks it).
+  const auto rise = [](const ThermalLog& log, const std::string& name) {
+    const int i = log.indexOf(name);
+    if (i < 0) return 0.0;
+    const std::vector<double>& v = log.channels[static_cast<std::size_t>(i)].values;
+    double r = 0.0;
+    for (double x : v) r = std::max(r, std::abs(x - v.front()));
+    return r;
+  };
+  std::vector<std::vector<std::string>> out(trainingTests.size());
+  for (const ThermalChannel& c : test.channels) {
+    const ChannelKind kind = channelKind(c);
+    if (c.name == target || (kind != ChannelKind::Temperature && kind != ChannelKind::Strain)) continue;
+    for (std::size_t i = 0; i < trainingTests.size(); ++i) {
+      const double own = rise(*trainingTests[i], c.name);
+      bool leads = own > 0.0 && trainingTests[i]->indexOf(c.name) >= 0;
+      for (std::size_t j = 0; j < trainingTests.size() && leads; ++j)
+        if (j != i && (trainingTests[j]->indexOf(c.name) < 0 || own < 2.0 * rise(*trainingTests[j], c.name)))
+          leads = false;
+      if (leads) out[i].push_back(c.name);
+    }
+  }
+  return out;
+}
+
 ModularComparison compareModularModels(const std::vector<const ThermalLog*>& trainingTests,
                                        const ThermalLog& test, const std::string& target,
                                        const std::vector<std::string>& inputs, std::uint64_t seed,
-                                       const ThermalComparisonObserver& observer) {
+                                       const ThermalComparisonObserver& observer,
+                                       const std::vector<std::string>& moduleNames) {
   ModularComparison m;
   m.target = target;
   m.inputs = inputs;
@@ -174,6 +203,30 @@ ModularComparison compareModularModels(const std::vector<const ThermalLog*>& tra
       break;
     }
   }
+  if (m.cancelled) return m;
+  // The same case module by module.
+  ModularModules& mm = m.modules;
+  mm.inputs = moduleInputs(trainingTests, test, target);
+  std::vector<thermal::ThermalModule> modules;
+  std::vector<thermal::ThermalSeries> tests;
+  for (std::size_t i = 0; i < trainingTests.size(); ++i) {
+    mm.names.push_back(i < moduleNames.size() ? moduleNames[i] : trainingTests[i]->source);
+    if (mm.inputs[i].empty()) {
+      mm.why = "no temperature or strain channel moves at least twice as much in " + mm.names.back() +
+               " as in the other tests";
+      continue;
+    }
+    if (!mm.why.empty()) continue;
+    try {
+      modules.push_back(thermal::fitThermalModule(
+          mm.names.back(), thermal::selectThermalSeries(*trainingTests[i], target, mm.inputs[i]),
+          fitOptions(thermal::ThermalModelKind::DistributedLag, seed)));
+      tests.push_back(thermal::selectThermalSeries(test, target, mm.inputs[i]));
+    } catch (const InputError& e) {
+      mm.why = mm.names.back() + ": " + e.what();
+    }
+  }
+  if (mm.why.empty()) mm.evaluation = thermal::evaluateModules(modules, tests);
   return m;
 }
 

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,19 +83,36 @@ struct ThermalComparison {
 ThermalComparison compareThermalModels(const ThermalLog& log, const ThermalModelSettings& settings,
                                        const ThermalComparisonObserver& observer = {});
 
+/// The modular case as separate modules (each identified on its own test, the combined test predicted as
+/// their sum): module i takes the temperature and strain channels that its own test moves at least
+/// twice as much as every other training test does (the sensors its own heating reaches), and is
+/// identified with the distributed-lag model on its test.
+struct ModularModules {
+  std::vector<std::string> names;                ///< one per training test
+  std::vector<std::vector<std::string>> inputs;  ///< per module
+  std::optional<thermal::ModulesEvaluation> evaluation;
+  std::string why;  ///< why there is no evaluation (a module without inputs, a failed fit)
+};
+/// The channels of the rule above, per training test (same order).
+std::vector<std::vector<std::string>> moduleInputs(const std::vector<const ThermalLog*>& trainingTests,
+                                                   const ThermalLog& test, const std::string& target);
+
 struct ModularComparison {
   std::string target;
   std::vector<std::string> inputs;
   thermal::ThermalSeries test;                                        ///< the combined test
   std::array<thermal::ModularEvaluation, kThermalModelCount> models;  ///< in kThermalModelOrder
+  ModularModules modules;                                             ///< the same case module by module
   bool cancelled = false;
 };
 
 /// Section 4.3: each model fitted on the training tests together, predicting `test`.
+/// `moduleNames` name the training tests' modules (default: their sources).
 ModularComparison compareModularModels(const std::vector<const ThermalLog*>& trainingTests,
                                        const ThermalLog& test, const std::string& target,
                                        const std::vector<std::string>& inputs, std::uint64_t seed,
-                                       const ThermalComparisonObserver& observer = {});
+                                       const ThermalComparisonObserver& observer = {},
+                                       const std::vector<std::string>& moduleNames = {});
 
 /// Dataset ids of the modular case in a project (the demo's): the Z-heating, the C-heating and the
 /// combined (helical) test.

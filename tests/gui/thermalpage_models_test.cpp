@@ -9,6 +9,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -18,6 +19,7 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "app/gui/thermalpage.h"
@@ -225,6 +227,45 @@ TEST_F(ThermalPageModelsTest, SettingsEditsAreWrittenToTheStudyAndUndone) {
   document_.undoStack()->redo();
   EXPECT_EQ(seed->value(), 7);
   EXPECT_EQ(document_.project().studies["thermal"]["seed"], 7);
+}
+
+// The demo's modular case on the Models tab: besides the pooled models, the same case module by module
+// (each module identified on its own test with the channels its own heating moves, the helical test
+// predicted as their sum): a last table row and a line naming each module's inputs and contribution,
+// the figures those of the study code (core/study/thermal_comparison.h) for the same logs.
+TEST_F(ThermalPageModelsTest, ModularCaseShowsEachModulesContribution) {
+  std::filesystem::copy(test::sourceDir() / "resources/demo", tmp_.file("demo"),
+                        std::filesystem::copy_options::recursive);
+  document_.load(QString::fromStdString(tmp_.file("demo/demo.metrofit")));
+  ThermalPage page(&document_);
+  page.selectDataset(QString::fromLatin1(kModularCombinedId));
+  page.showView(QStringLiteral("models"));
+  ThermalModelView* view = page.modelView();
+  const QTableWidget* table = view->modularTable();
+  const int last = static_cast<int>(kThermalModelOrder.size());  // after the pooled models
+  QTest::qWaitFor([&] { return table->rowCount() == last + 1; },
+                  120000);  // the modular run is a background run
+  ASSERT_EQ(table->rowCount(), last + 1) << view->statusText().toStdString();
+  EXPECT_EQ(table->item(last, 0)->text(), QStringLiteral("modules, summed (distributed lag)"));
+  const QString line = view->modularModulesLabel()->text();
+  EXPECT_TRUE(
+      line.contains(QStringLiteral("thermal_modular_z (inputs T5, T6, FBG1_ue, FBG4_ue) contributes up to")))
+      << line.toStdString();
+  EXPECT_TRUE(line.contains(QStringLiteral("thermal_modular_c (inputs T1, T3) contributes up to")))
+      << line.toStdString();
+  // The table's reduction is the study code's for the same three logs.
+  const auto log = [&](const char* id) {
+    return readThermalLog(document_.datasetPath(*document_.project().dataset(id)).toStdString());
+  };
+  const ThermalLog z = log(kModularZId), c = log(kModularCId), h = log(kModularCombinedId);
+  const ModularComparison m =
+      compareModularModels({&z, &c}, h, "disp_z_um", modularInputs(h), 1, {}, {kModularZId, kModularCId});
+  ASSERT_TRUE(m.modules.evaluation.has_value());
+  EXPECT_EQ(table->item(last, 2)->text(),
+            QLocale().toString(100.0 * m.modules.evaluation->reductionPeak, 'f', 1));
+  if (auto* tabs = view->findChild<QTabWidget*>(QStringLiteral("thermalModelResultTabs")))
+    tabs->setCurrentIndex(1);
+  grab(page, QStringLiteral("modular-modules.png"));
 }
 
 }  // namespace

@@ -373,6 +373,42 @@ QChart* makeModularChart(const ThermalLog& testLog, const ModularComparison& mod
     p->attachAxis(time.axis);
     p->attachAxis(y);
   }
+  // Module by module: each module's contribution (drawn from the test's first value) and their sum.
+  if (const auto& ev = modular.modules.evaluation; ev && ev->predicted.size() == s.rows()) {
+    const QColor colours[] = {QColor(0x00, 0x80, 0x80), QColor(0x80, 0x00, 0x80), QColor(0x80, 0x60, 0x00)};
+    // Legend names without the modules' common prefix up to an underscore ("thermal_modular_z" -> "z").
+    std::vector<std::string> names = modular.modules.names;
+    std::size_t common = 0;
+    if (names.size() > 1) {
+      std::size_t n = 0;
+      while (std::all_of(names.begin(), names.end(),
+                         [&](const std::string& s) { return n < s.size() && s[n] == names.front()[n]; }))
+        ++n;
+      const std::size_t cut = names.front().rfind('_', n == 0 ? 0 : n - 1);
+      if (cut != std::string::npos && cut + 1 <= n) common = cut + 1;
+    }
+    for (std::string& n : names)
+      if (common < n.size()) n = n.substr(common);
+    for (std::size_t i = 0; i < ev->contributions.size() && i < names.size(); ++i) {
+      std::vector<double> v = ev->contributions[i];
+      for (double& x : v) x += s.target.front();
+      QLineSeries* c = timeSeries(s.timeMin, v, time.scale, options.maxPointsPerSeries, nullptr);
+      c->setName(ModelChartsText::tr("module %1").arg(QString::fromStdString(names[i])));
+      c->setPen(QPen(colours[i % 3], 1.2, Qt::DotLine));
+      chart->addSeries(c);
+      c->attachAxis(time.axis);
+      c->attachAxis(y);
+    }
+    QLineSeries* sum = timeSeries(s.timeMin, ev->predicted, time.scale, options.maxPointsPerSeries, nullptr);
+    sum->setName(ModelChartsText::tr("modules, summed"));
+    sum->setPen(QPen(Qt::black, 1.5, Qt::DashDotLine));
+    chart->addSeries(sum);
+    sum->attachAxis(time.axis);
+    sum->attachAxis(y);
+    measured.add(ev->predicted.front());
+    for (const auto& c : ev->contributions)
+      for (double x : c) measured.add(s.target.front() + x);
+  }
   if (measured.valid()) {
     const double pad = 0.15 * std::max(measured.hi - measured.lo, 1e-9);
     setRange(y, {measured.lo - pad, measured.hi + pad});

@@ -145,6 +145,7 @@ struct ThermalModelView::Impl {
   QTabWidget* resultTabs = nullptr;
   QLabel* modularText = nullptr;
   QTableWidget* modularTable = nullptr;
+  QLabel* modularModules = nullptr;
   QChartView* modularChart = nullptr;
 
   // Training state.
@@ -393,11 +394,42 @@ struct ThermalModelView::Impl {
       modularTable->setItem(row, 4, cell(number(100.0 * ev.reductionRms, 1)));
       modularTable->setItem(row, 5, cell(number(ev.test.e, 4)));
     }
+    // The same case module by module: each identified on its own test, the combined test their sum.
+    QStringList parts;
+    if (const auto& ev = m.modules.evaluation) {
+      const int row = modularTable->rowCount();
+      modularTable->insertRow(row);
+      modularTable->setItem(row, 0, cell(ThermalModelView::tr("modules, summed (distributed lag)"), true));
+      modularTable->setItem(
+          row, 1, cell(number(ev->errorPeak, 1) + QStringLiteral(" → ±") + number(ev->residualPeak, 1)));
+      modularTable->setItem(row, 2, cell(number(100.0 * ev->reductionPeak, 1)));
+      modularTable->setItem(row, 3, cell(number(ev->test.rmse, 2)));
+      modularTable->setItem(row, 4, cell(number(100.0 * ev->reductionRms, 1)));
+      modularTable->setItem(row, 5, cell(number(ev->test.e, 4)));
+      for (std::size_t i = 0; i < m.modules.names.size() && i < ev->contributions.size(); ++i) {
+        double peak = 0.0;
+        for (double v : ev->contributions[i]) peak = std::abs(v) > std::abs(peak) ? v : peak;
+        QStringList inputs;
+        for (const std::string& in : m.modules.inputs[i]) inputs << QString::fromStdString(in);
+        parts << ThermalModelView::tr("%1 (inputs %2) contributes up to %3 %4")
+                     .arg(QString::fromStdString(m.modules.names[i]), inputs.join(QStringLiteral(", ")),
+                          number(peak, 1), unit);
+      }
+    }
+    modularModules->setText(
+        m.modules.evaluation ? ThermalModelView::tr("Module by module, each identified on its own test: %1.")
+                                   .arg(parts.join(QStringLiteral("; ")))
+                             : ThermalModelView::tr("Module by module: not identified (%1).")
+                                   .arg(QString::fromStdString(m.modules.why)));
     modularTable->setHorizontalHeaderLabels(
         {ThermalModelView::tr("model"), ThermalModelView::tr("error → band (%1)").arg(unit),
          ThermalModelView::tr("less (peak, %)"), ThermalModelView::tr("RMSE (%1)").arg(unit),
          ThermalModelView::tr("less (RMS, %)"), ThermalModelView::tr("E")});
     modularTable->resizeColumnsToContents();
+    // Every row visible (the pooled models and the modules' row), no inner scroll bar.
+    modularTable->setMaximumHeight(
+        modularTable->horizontalHeader()->height() +
+        modularTable->rowCount() * modularTable->verticalHeader()->defaultSectionSize() + 4);
     ModelChartOptions o;
     o.legend = true;
     replaceChart(modularChart, makeModularChart(modularLog, m, o));
@@ -525,13 +557,17 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   d->modularTable->verticalHeader()->setVisible(false);
   d->modularTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
   d->modularTable->verticalHeader()->setDefaultSectionSize(22);
-  d->modularTable->setMaximumHeight(4 * 22 + 8);
+  d->modularTable->setMaximumHeight(5 * 22 + 8);
+  d->modularModules = new QLabel(d->modularGroup);
+  d->modularModules->setObjectName(QStringLiteral("thermalModularModules"));
+  d->modularModules->setWordWrap(true);
   d->modularTable->horizontalHeader()->setStretchLastSection(true);
   d->modularChart = newChartView(d->modularGroup, 220);
   auto* modularLayout = new QVBoxLayout(d->modularGroup);
   modularLayout->setContentsMargins(4, 4, 4, 4);
   modularLayout->addWidget(d->modularText);
   modularLayout->addWidget(d->modularTable);
+  modularLayout->addWidget(d->modularModules);
   modularLayout->addWidget(d->modularChart, 1);
   d->modularHeadline = new QLabel(this);
   d->modularHeadline->setObjectName(QStringLiteral("thermalModularHeadline"));
@@ -758,6 +794,9 @@ QTableWidget* ThermalModelView::metricsTable() const {
 }
 QTableWidget* ThermalModelView::modularTable() const {
   return d->modularTable;
+}
+QLabel* ThermalModelView::modularModulesLabel() const {
+  return d->modularModules;
 }
 
 }  // namespace metrofit

@@ -12,6 +12,7 @@
 #include <QWidget>
 #include <memory>
 
+class QLabel;
 class QProgressBar;
 class QPushButton;
 class QTableWidget;
@@ -58,6 +59,8 @@ class ThermalModelView : public QWidget {
   QPushButton* cancelButton() const;
   QTableWidget* metricsTable() const;
   QTableWidget* modularTable() const;
+  /// The modules line of the modular case (each module's inputs and contribution).
+  QLabel* modularModulesLabel() const;
 
  signals:
   /// A training ended: completed true, or false when cancelled or failed.
