@@ -4,7 +4,7 @@
 <context>
     <name>StudyInfo</name>
     <message>
-        <location filename="../widgets/document/studyinfo.cpp" line="+16"/>
+        <location filename="../widgets/document/studyinfo.cpp" line="+17"/>
         <source>Setup correction</source>
         <translation>Einrichtdatenkorrektur</translation>
     </message>
@@ -1125,12 +1125,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+358"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+360"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-97"/>
         <source>measured, CCW loop</source>
         <translation>gemessen, Umlauf gegen den Uhrzeigersinn</translation>
     </message>
@@ -1160,7 +1160,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>dargestellter Radius = R + k × radiale Abweichung, k = %1; Ringe alle %2 µm</translation>
     </message>
     <message>
-        <location line="+189"/>
+        <location line="+196"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -1434,7 +1434,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Kompensieren</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+55"/>
         <source>The kinematics study&apos;s settings are invalid: %1</source>
         <translation>Die Einstellungen der Kinematik-Studie sind ungültig: %1</translation>
     </message>
@@ -2422,7 +2422,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+23"/>
-        <location line="+265"/>
+        <location line="+260"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
@@ -2931,7 +2931,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lageausrichtung</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>form %1</source>
         <translation>Form %1</translation>
     </message>
@@ -3889,12 +3889,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+105"/>
+        <location line="+96"/>
         <source>frame rotation</source>
         <translation>Drehung des Koordinatensystems</translation>
     </message>
     <message>
-        <location line="-104"/>
+        <location line="-95"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Maschineneinstellwerte (%1%2)</translation>
     </message>
@@ -3914,7 +3914,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Sätze (mm, °)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+13"/>
         <source>The same posture as a controller frame (instead of the axis values)</source>
         <translation>Dieselbe Lage als Steuerungs-Frame (statt der Achswerte)</translation>
     </message>
@@ -5229,12 +5229,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+112"/>
+        <location line="+140"/>
         <source>dimension %1</source>
         <translation>Maß %1</translation>
     </message>
     <message>
-        <location line="-105"/>
+        <location line="-133"/>
         <source>time</source>
         <comment>in a sentence</comment>
         <translation>der Zeit</translation>
@@ -5336,7 +5336,23 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Spitze</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
+        <source>%1 min</source>
+        <comment>a period</comment>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>periodic, period %1</source>
+        <translation>periodisch, Periode %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>a cycle with a period of %1</source>
+        <translation>ein Zyklus mit der Periode %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>a linear trend</source>
         <translation>ein linearer Trend</translation>
     </message>
@@ -5366,7 +5382,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>ein eigenes Niveau je Gruppe</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+40"/>
         <source>%1 (%2, %3 % of the residual variance)</source>
         <translation>%1 (%2, %3 % der Residuenvarianz)</translation>
     </message>
@@ -7721,7 +7737,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&amp;Thermoprotokoll:</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+82"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Dieses Projekt hat kein Thermoprotokoll. Fügen Sie der Projektdatei einen Datensatz der Art „thermal_log“ hinzu (eine Zeitspalte, Sensorspalten und die Verlagerung).</translation>
     </message>
@@ -8273,12 +8289,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+97"/>
+        <location line="+98"/>
         <source>step</source>
         <translation>Sprung</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>periodic</source>
         <translation>periodisch</translation>
     </message>
@@ -8346,6 +8362,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+1"/>
         <source>, strongest harmonic %1 (amplitude %2%3)</source>
         <translation>, stärkste Harmonische %1 (Amplitude %2%3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, period %1, amplitude %2%3</source>
+        <translation>, Periode %1, Amplitude %2%3</translation>
     </message>
     <message>
         <location line="+3"/>

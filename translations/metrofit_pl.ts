@@ -4,7 +4,7 @@
 <context>
     <name>StudyInfo</name>
     <message>
-        <location filename="../widgets/document/studyinfo.cpp" line="+16"/>
+        <location filename="../widgets/document/studyinfo.cpp" line="+17"/>
         <source>Setup correction</source>
         <translation>Korekcja danych ustawczych</translation>
     </message>
@@ -1125,12 +1125,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+358"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+360"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-97"/>
         <source>measured, CCW loop</source>
         <translation>zmierzony, pętla przeciwnie do ruchu wskazówek zegara</translation>
     </message>
@@ -1160,7 +1160,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>promień na wykresie = R + k × odchyłka promieniowa, k = %1; okręgi co %2 µm</translation>
     </message>
     <message>
-        <location line="+189"/>
+        <location line="+196"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -1434,7 +1434,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Kompensuj</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+55"/>
         <source>The kinematics study&apos;s settings are invalid: %1</source>
         <translation>Ustawienia badania kinematyki są nieprawidłowe: %1</translation>
     </message>
@@ -2424,7 +2424,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+23"/>
-        <location line="+265"/>
+        <location line="+260"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
@@ -2934,7 +2934,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dopasowanie położenia</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>form %1</source>
         <translation>postać %1</translation>
     </message>
@@ -3892,12 +3892,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+105"/>
+        <location line="+96"/>
         <source>frame rotation</source>
         <translation>obrót układu współrzędnych</translation>
     </message>
     <message>
-        <location line="-104"/>
+        <location line="-95"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Wartości nastawienia maszyny (%1%2)</translation>
     </message>
@@ -3917,7 +3917,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Bloki (mm, °)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+13"/>
         <source>The same posture as a controller frame (instead of the axis values)</source>
         <translation>To samo położenie jako układ (frame) sterowania (zamiast wartości osi)</translation>
     </message>
@@ -5238,12 +5238,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+112"/>
+        <location line="+140"/>
         <source>dimension %1</source>
         <translation>wymiar %1</translation>
     </message>
     <message>
-        <location line="-105"/>
+        <location line="-133"/>
         <source>time</source>
         <comment>in a sentence</comment>
         <translation>czasu</translation>
@@ -5345,7 +5345,23 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>impuls</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
+        <source>%1 min</source>
+        <comment>a period</comment>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>periodic, period %1</source>
+        <translation>okresowa, okres %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>a cycle with a period of %1</source>
+        <translation>cykl o okresie %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>a linear trend</source>
         <translation>trend liniowy</translation>
     </message>
@@ -5375,7 +5391,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>inny poziom w każdej grupie</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+40"/>
         <source>%1 (%2, %3 % of the residual variance)</source>
         <translation>%1 (%2, %3 % wariancji residuum)</translation>
     </message>
@@ -7743,7 +7759,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>&amp;Rejestr termiczny:</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+82"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Ten projekt nie zawiera rejestru termicznego. Dodaj do pliku projektu zbiór danych rodzaju „thermal_log” (kolumna czasu, kolumny czujników i przemieszczenie).</translation>
     </message>
@@ -8295,12 +8311,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+97"/>
+        <location line="+98"/>
         <source>step</source>
         <translation>skok</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>periodic</source>
         <translation>okresowa</translation>
     </message>
@@ -8368,6 +8384,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+1"/>
         <source>, strongest harmonic %1 (amplitude %2%3)</source>
         <translation>, najsilniejsza harmoniczna %1 (amplituda %2%3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, period %1, amplitude %2%3</source>
+        <translation>, okres %1, amplituda %2%3</translation>
     </message>
     <message>
         <location line="+3"/>
