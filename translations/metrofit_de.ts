@@ -1126,6 +1126,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     <name>metrofit::KinematicPlots</name>
     <message>
         <location filename="../widgets/kinematics/kinematicplots.cpp" line="+363"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+360"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
@@ -2931,7 +2932,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lageausrichtung</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>form %1</source>
         <translation>Form %1</translation>
     </message>
@@ -5249,12 +5250,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+112"/>
+        <location line="+140"/>
         <source>dimension %1</source>
         <translation>Maß %1</translation>
     </message>
     <message>
-        <location line="-105"/>
+        <location line="-133"/>
         <source>time</source>
         <comment>in a sentence</comment>
         <translation>der Zeit</translation>
@@ -5356,7 +5357,23 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Spitze</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
+        <source>%1 min</source>
+        <comment>a period</comment>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>periodic, period %1</source>
+        <translation>periodisch, Periode %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>a cycle with a period of %1</source>
+        <translation>ein Zyklus mit der Periode %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>a linear trend</source>
         <translation>ein linearer Trend</translation>
     </message>
@@ -5386,7 +5403,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>ein eigenes Niveau je Gruppe</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+40"/>
         <source>%1 (%2, %3 % of the residual variance)</source>
         <translation>%1 (%2, %3 % der Residuenvarianz)</translation>
     </message>
@@ -8323,12 +8340,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+97"/>
+        <location line="+98"/>
         <source>step</source>
         <translation>Sprung</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>periodic</source>
         <translation>periodisch</translation>
     </message>
@@ -8396,6 +8413,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+1"/>
         <source>, strongest harmonic %1 (amplitude %2%3)</source>
         <translation>, stärkste Harmonische %1 (Amplitude %2%3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, period %1, amplitude %2%3</source>
+        <translation>, Periode %1, Amplitude %2%3</translation>
     </message>
     <message>
         <location line="+3"/>

@@ -1126,6 +1126,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <name>metrofit::KinematicPlots</name>
     <message>
         <location filename="../widgets/kinematics/kinematicplots.cpp" line="+363"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+360"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
@@ -2934,7 +2935,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dopasowanie położenia</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>form %1</source>
         <translation>postać %1</translation>
     </message>
@@ -5258,12 +5259,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+112"/>
+        <location line="+140"/>
         <source>dimension %1</source>
         <translation>wymiar %1</translation>
     </message>
     <message>
-        <location line="-105"/>
+        <location line="-133"/>
         <source>time</source>
         <comment>in a sentence</comment>
         <translation>czasu</translation>
@@ -5365,7 +5366,23 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>impuls</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
+        <source>%1 min</source>
+        <comment>a period</comment>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>periodic, period %1</source>
+        <translation>okresowa, okres %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>a cycle with a period of %1</source>
+        <translation>cykl o okresie %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>a linear trend</source>
         <translation>trend liniowy</translation>
     </message>
@@ -5395,7 +5412,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>inny poziom w każdej grupie</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+40"/>
         <source>%1 (%2, %3 % of the residual variance)</source>
         <translation>%1 (%2, %3 % wariancji residuum)</translation>
     </message>
@@ -8345,12 +8362,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+97"/>
+        <location line="+98"/>
         <source>step</source>
         <translation>skok</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>periodic</source>
         <translation>okresowa</translation>
     </message>
@@ -8418,6 +8435,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+1"/>
         <source>, strongest harmonic %1 (amplitude %2%3)</source>
         <translation>, najsilniejsza harmoniczna %1 (amplituda %2%3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, period %1, amplitude %2%3</source>
+        <translation>, okres %1, amplituda %2%3</translation>
     </message>
     <message>
         <location line="+3"/>

@@ -574,7 +574,7 @@ void DiagnosisPage::fillTable() {
     QString parameters = parameterText(c, u);
     if (c.generic) {
       // A generic effect: its form first ("form: smooth"), then whatever parameters core gave it.
-      const QString form = tr("form: %1").arg(dependenceFormName(c.generic->form));
+      const QString form = tr("form: %1").arg(dependenceFormLabel(*c.generic, QLocale()));
       parameters = parameters.isEmpty() ? form : form + QStringLiteral("; ") + parameters;
       table_->item(r, ColEffect)
           ->setToolTip(

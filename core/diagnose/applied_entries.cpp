@@ -67,6 +67,7 @@ nlohmann::json genericShapeJson(const GenericForm& f) {
       {"scale", f.scale},          {"subset", f.subset},       {"without_linear", f.withoutLinear},
       {"components", f.components}};
   if (!f.projectedOff.empty()) j["projected_off"] = f.projectedOff;
+  if (f.period > 0.0) j["period"] = f.period;
   return j;
 }
 
@@ -130,6 +131,9 @@ GenericForm genericShapeOf(const AppliedEntry& entry, const std::string& source)
   f.harmonics = integer("harmonics", 0, 50);
   if (f.form == DependenceForm::Periodic && f.harmonics < 1)
     fail("harmonics", "a periodic form needs 1 harmonic or more");
+  f.period = number("period", 0.0);
+  if (f.period < 0.0 || (f.period > 0.0 && f.form != DependenceForm::Periodic))
+    fail("period", "must be a positive number (the period of a periodic form)");
   f.levels = integer("levels", 0, 100000);
   if (f.form == DependenceForm::Level && f.levels < 2) fail("levels", "a level form needs 2 levels or more");
   f.centre = number("centre", 0.0);

@@ -393,6 +393,40 @@ TEST(ResidualCheckTextTest, SentencesInReadersWords) {
   EXPECT_TRUE(w.back().startsWith(QStringLiteral("No measurement was excluded"))) << w.back().toStdString();
 }
 
+TEST(ResidualCheckTextTest, ACycleInTimeReadsWithItsPeriodInMinutes) {
+  // Thermal: a cycle of 47 min in time, left in the residual and accepted as a generic effect.
+  diagnose::Diagnosis d = fixture();
+  diagnose::GenericForm cycle;
+  cycle.against = "time";
+  cycle.form = DependenceForm::Periodic;
+  cycle.harmonics = 1;
+  cycle.period = 47.0;
+  d.residualCheck->structure[1].form = DependenceForm::Periodic;
+  d.residualCheck->structure[1].shape = cycle;
+  d.effects[1].name = "unexplained:time";
+  d.effects[1].generic = cycle;
+  const QStringList s = residualCheckSentences(d, QLocale::c());
+  ASSERT_GE(s.size(), 2);
+  EXPECT_TRUE(s[0].contains(
+      QStringLiteral("time (a cycle with a period of 47.0 min, 8.1 % of the residual variance")))
+      << s[0].toStdString();
+  EXPECT_TRUE(s[1].contains(QStringLiteral("a cycle with a period of 47.0 min in time")))
+      << s[1].toStdString();
+  EXPECT_EQ(dependenceFormLabel(cycle, QLocale::c()).toStdString(), "periodic, period 47.0 min");
+  EXPECT_EQ(dependenceFormLabel(d.residualCheck->structure[1], QLocale(QLocale::German)).toStdString(),
+            "periodic, period 47,0 min");  // untranslated here: the German number only
+  // A path angle's harmonics keep their plain name (period 360 degrees implied).
+  diagnose::GenericForm angle = cycle;
+  angle.against = "angle";
+  angle.period = 0.0;
+  EXPECT_EQ(dependenceFormLabel(angle, QLocale::c()).toStdString(), "periodic");
+  EXPECT_EQ(dependenceFormWords(angle, QLocale::c()).toStdString(), "a periodic pattern");
+  // Another ordered variable: the number alone (its unit is not known).
+  diagnose::GenericForm rows = cycle;
+  rows.against = "row";
+  EXPECT_EQ(dependenceFormLabel(rows, QLocale::c()).toStdString(), "periodic, period 47.0");
+}
+
 TEST(ResidualCheckTextTest, HeldOutRowsGetTheirOwnSentences) {
   // Thermal: the held-out rows' check (a step after the fit rows, one gross error) is said apart.
   diagnose::Diagnosis d = fixture();

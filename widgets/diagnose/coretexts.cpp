@@ -150,6 +150,7 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("metrofit::core", "%1 in %2, rms %3%4, range %5%4"),
     QT_TRANSLATE_NOOP("metrofit::core", ", step %1%2 at %3"),
     QT_TRANSLATE_NOOP("metrofit::core", ", strongest harmonic %1 (amplitude %2%3)"),
+    QT_TRANSLATE_NOOP("metrofit::core", ", period %1, amplitude %2%3"),
     // the open world in the loops: outliers excluded first, residual variables' axis titles, a named
     // effect that does not explain what it was chosen for (diagnosis.cpp keepNamedOnlyWhenNeeded)
     QT_TRANSLATE_NOOP("metrofit::core",

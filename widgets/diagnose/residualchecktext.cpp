@@ -92,9 +92,33 @@ QString dependenceFormName(diagnose::DependenceForm form) {
   return dependenceFormName(std::string(diagnose::formName(form)));
 }
 
+QString periodText(const diagnose::GenericForm& shape, const QLocale& locale) {
+  if (shape.form != diagnose::DependenceForm::Periodic || !(shape.period > 0.0)) return {};
+  const QString value = localNumber(shape.period, 1, 'f', locale);
+  // The thermal log's time is in minutes (docs/file-formats.md#thermal-log).
+  return shape.against == "time" ? ResidualCheckText::tr("%1 min", "a period").arg(value) : value;
+}
+
+QString dependenceFormLabel(const diagnose::GenericForm& shape, const QLocale& locale) {
+  const QString period = periodText(shape, locale);
+  if (period.isEmpty()) return dependenceFormName(shape.form);
+  return ResidualCheckText::tr("periodic, period %1").arg(period);
+}
+
+QString dependenceFormLabel(const diagnose::StructureItem& item, const QLocale& locale) {
+  diagnose::GenericForm shape = item.shape;
+  shape.form = item.form;
+  shape.against = item.against;
+  return dependenceFormLabel(shape, locale);
+}
+
 namespace {
 
-QString formWords(diagnose::DependenceForm form, const std::vector<double>& knots, const QLocale& locale) {
+QString formWords(const diagnose::GenericForm& shape, const QLocale& locale) {
+  const diagnose::DependenceForm form = shape.form;
+  const std::vector<double>& knots = shape.knots;
+  if (const QString period = periodText(shape, locale); !period.isEmpty())
+    return ResidualCheckText::tr("a cycle with a period of %1").arg(period);
   switch (form) {
     case diagnose::DependenceForm::Linear:
       return ResidualCheckText::tr("a linear trend");
@@ -115,15 +139,19 @@ QString formWords(diagnose::DependenceForm form, const std::vector<double>& knot
 }  // namespace
 
 QString dependenceFormWords(const diagnose::StructureItem& item, const QLocale& locale) {
-  // The change point is in the shape of a step (StructureItem::shape), when core filled it.
-  return formWords(item.form,
-                   item.form == diagnose::DependenceForm::Step ? item.shape.knots : std::vector<double>{},
-                   locale);
+  // The change point of a step and the period of a cycle are in the shape (StructureItem::shape), when
+  // core filled it.
+  diagnose::GenericForm shape = item.shape;
+  shape.form = item.form;
+  shape.against = item.against;
+  if (item.form != diagnose::DependenceForm::Step) shape.knots.clear();
+  return formWords(shape, locale);
 }
 
 QString dependenceFormWords(const diagnose::GenericForm& form, const QLocale& locale) {
-  return formWords(form.form,
-                   form.form == diagnose::DependenceForm::Step ? form.knots : std::vector<double>{}, locale);
+  diagnose::GenericForm shape = form;
+  if (form.form != diagnose::DependenceForm::Step) shape.knots.clear();
+  return formWords(shape, locale);
 }
 
 QString formatPValue(double p, const QLocale& locale) {

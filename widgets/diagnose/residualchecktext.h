@@ -30,8 +30,16 @@ QString residualVariableWords(const std::string& against);
 /// A form for a table cell: "linear", "smooth", "step", "periodic", "per level", "spike".
 QString dependenceFormName(const std::string& form);
 QString dependenceFormName(diagnose::DependenceForm form);
+/// A form with its shape for a table cell or a legend: dependenceFormName, and for a form periodic
+/// in time (or another ordered variable) its period: "periodic, period 47.0 min".
+QString dependenceFormLabel(const diagnose::GenericForm& shape, const QLocale& locale);
+QString dependenceFormLabel(const diagnose::StructureItem& item, const QLocale& locale);
+/// The period of a shape periodic in an ordered variable: "47.0 min" for time (minutes), else the
+/// number alone; empty for other shapes (a path angle's period is 360 deg).
+QString periodText(const diagnose::GenericForm& shape, const QLocale& locale);
 /// A form in a sentence: "a linear trend", "a smooth curve", "a step" ("a step at 12.5" when the
-/// change point is known), "a periodic pattern", "a different level per group", "isolated spikes".
+/// change point is known), "a periodic pattern" ("a cycle with a period of 47.0 min" when periodic in
+/// time), "a different level per group", "isolated spikes".
 QString dependenceFormWords(const diagnose::StructureItem& item, const QLocale& locale);
 QString dependenceFormWords(const diagnose::GenericForm& form, const QLocale& locale);
 

@@ -120,7 +120,7 @@ QString chartTitleOf(const diagnose::ResidualCheck& c) {
   const QString variable = residualVariableName(c.plot->against);
   if (it == c.structure.end()) return ResidualCheckView::tr("Final residual against %1").arg(variable);
   return ResidualCheckView::tr("Final residual against %1 with the generic fit (%2)")
-      .arg(variable, dependenceFormName(it->form));
+      .arg(variable, dependenceFormLabel(*it, QLocale()));
 }
 
 QString yTitle(const QString& units) {
@@ -483,7 +483,7 @@ void ResidualCheckView::setDiagnosis(const diagnose::Diagnosis& d) {
     const diagnose::StructureItem& s = c.structure[static_cast<std::size_t>(r)];
     setCell(structure_, r, 0, residualVariableName(s.against));
     structure_->item(r, 0)->setData(Qt::UserRole, QString::fromStdString(s.against));
-    setCell(structure_, r, 1, dependenceFormName(s.form));
+    setCell(structure_, r, 1, dependenceFormLabel(s, locale));
     setCell(structure_, r, 2, locale.toString(100.0 * s.share, 'f', 1), right);
     structure_->item(r, 2)->setData(Qt::UserRole, s.share);
     setCell(structure_, r, 3, formatPValue(s.p, locale), right);
@@ -572,8 +572,8 @@ void ResidualCheckView::showChart(const diagnose::ResidualCheck& c, const QStrin
   charts_->residual->setColor(residualColour());
   charts_->residual->setBorderColor(residualColour());
   charts_->residual->setMarkerSize(5.0);
-  const QString form =
-      dependenceFormName(c.structure.empty() ? std::string() : diagnose::formName(c.structure.front().form));
+  const QString form = c.structure.empty() ? dependenceFormName(std::string())
+                                           : dependenceFormLabel(c.structure.front(), QLocale());
   for (std::size_t k = 0; k < s.fits.size(); ++k) {
     auto* fit = new QLineSeries;
     fit->setName(s.fits.size() == 1

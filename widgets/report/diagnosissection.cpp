@@ -73,7 +73,8 @@ QString parameters(const diagnose::Candidate& c) {
   QStringList parts;
   const bool formGiven = std::any_of(c.parameters.begin(), c.parameters.end(),
                                      [](const diagnose::Parameter& p) { return p.name == "form"; });
-  if (c.generic && !formGiven) parts << ReportText::tr("form %1").arg(dependenceFormName(c.generic->form));
+  if (c.generic && !formGiven)
+    parts << ReportText::tr("form %1").arg(dependenceFormLabel(*c.generic, QLocale::c()));
   for (const diagnose::Parameter& p : c.parameters) {
     QString s = QString::fromStdString(p.name) + QStringLiteral(" ") +
                 QString::fromStdString(formatParameterValue(p));
@@ -290,7 +291,7 @@ void writeResidualCheck(ReportPainter& out, const diagnose::Diagnosis& d) {
   const QString title = strongest == c.structure.end()
                             ? ReportText::tr("Final residual against %1").arg(variable)
                             : ReportText::tr("Final residual against %1 with the generic fit (%2)")
-                                  .arg(variable, dependenceFormName(strongest->form));
+                                  .arg(variable, dependenceFormLabel(*strongest, QLocale::c()));
   out.skip(out.mm(2.0));
   const QRectF box = out.reserve(out.mm(70.0));
   const diagnose::ResidualCheck::Plot& plot = *c.plot;
