@@ -1796,7 +1796,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die Kinematikstudie nennt keine SPC-Reihe zum Exportieren.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+22"/>
         <location line="+5"/>
         <source>Export Q-DAS DFQ</source>
         <translation>Q-DAS-DFQ exportieren</translation>
@@ -2156,7 +2156,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+76"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+75"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -2402,17 +2402,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Nachkommastellen der Werte in mm und ° (FANUC IS-B nimmt 3)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>The blocks that set the frame; the saved program adds its frame and comments</source>
         <translation>Die Sätze, die den Frame setzen; das gespeicherte Programm ergänzt Programmrahmen und Kommentare</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Controller frame</source>
         <translation>Steuerungs-Frame</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Contro&amp;l:</source>
         <translation>Steueru&amp;ng:</translation>
     </message>
@@ -2422,7 +2422,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&amp;Nachkommastellen:</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+22"/>
         <source>Methods and &amp;machine</source>
         <translation>Methoden und &amp;Maschine</translation>
     </message>
@@ -2503,7 +2503,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+24"/>
-        <location line="+288"/>
+        <location line="+289"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
@@ -2524,17 +2524,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Es gibt noch keine Lage zum Schreiben: zuerst die Ausrichtung ausführen (Strg+R)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Datum shift (CYCL DEF 7) to the origin t, then PLANE SPATIAL with R = Rz(SPC) Ry(SPB) Rx(SPA) about the non-tilted axes; STAY: no axis moves. Call the saved program (CALL PGM) once the part&apos;s preset is active.</source>
         <translation>Nullpunktverschiebung (CYCL DEF 7) zum Ursprung t, dann PLANE SPATIAL mit R = Rz(SPC) Ry(SPB) Rx(SPA) um die ungeschwenkten Achsen; STAY: keine Achse bewegt sich. Das gespeicherte Programm (CALL PGM) aufrufen, sobald der Bezugspunkt des Werkstücks aktiv ist.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>TRANS to the origin t on top of the active settable frame (G54 …), then AROT about Z, Y&apos;, X&apos;&apos;: R = Rz(Z) Ry(Y) Rx(X). The tool is not oriented: use CYCLE800 or TRAORI for that.</source>
         <translation>TRANS zum Ursprung t auf den aktiven einstellbaren Frame (G54 …), dann AROT um Z, Y&apos;, X&apos;&apos;: R = Rz(Z) Ry(Y) Rx(X). Das Werkzeug wird nicht ausgerichtet: dafür CYCLE800 oder TRAORI verwenden.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>G68.2 with the origin t and the Euler angles R = Rz(I) Rx(J) Rz(K), cancelled with G69. G53.1 is not written: it moves the rotary axes, program it at a safe position.</source>
         <translation>G68.2 mit dem Ursprung t und den Euler-Winkeln R = Rz(I) Rx(J) Rz(K), aufgehoben mit G69. G53.1 wird nicht geschrieben: es bewegt die Drehachsen, an einer sicheren Position programmieren.</translation>
     </message>
@@ -2564,7 +2564,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Es gibt noch keine Lage zum Schreiben: zuerst die Ausrichtung ausführen.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>HEIDENHAIN programs (*.h)</source>
         <translation>HEIDENHAIN-Programme (*.h)</translation>
     </message>
@@ -2579,7 +2579,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>FANUC-Programme (*.nc)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Save the controller frame</source>
         <translation>Steuerungs-Frame speichern</translation>
     </message>
@@ -2594,7 +2594,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Der Frame kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="-587"/>
+        <location line="-593"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Fügen Sie der Projektdatei einen Datensatz der Art „probe_points“ hinzu (Kennung, Fläche, Sollpunkt, Normale, Messpunkt).</translation>
     </message>
@@ -2621,7 +2621,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zu den Antastpunkten %1 (auf denen die Diagnose lief); diese Punkte verwenden das deklarierte Modell.</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+118"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
@@ -2780,7 +2780,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-425"/>
+        <location line="-426"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -6763,7 +6763,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
         <translation>Das Modell wurde gespeichert, aber der KMG-Messbericht passt nicht mehr dazu (die Läufe verwenden den Bericht, wie er mit dem vorherigen Modell eingelesen wurde): %1</translation>
     </message>
@@ -6856,7 +6856,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Die Korrekturen zur aktuellen Bezugspunkttabelle (.PR) oder Werkzeugtabelle (.T) der Steuerung addieren, die von der Steuerung gespeichert wurde, und das Ergebnis zum Einlesen in eine neue Datei schreiben; die Zeilen sind die Register des Modells</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>Tool re&amp;gister:</source>
         <translation>Werkzeug&amp;register:</translation>
     </message>
@@ -6871,13 +6871,13 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Geometrie (L)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>The register the tool-length corrections go to in every export: the wear (DL, Fanuc H wear) or the geometry (L)</source>
         <translation>Das Register, in das die Werkzeuglängenkorrekturen bei jedem Export gehen: Verschleiß (DL, Fanuc H-Verschleiß) oder Geometrie (L)</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <location line="+234"/>
+        <location line="+12"/>
+        <location line="+235"/>
         <source>There is no measurement report to export</source>
         <translation>Es gibt keinen Messbericht zum Exportieren</translation>
     </message>
@@ -7024,7 +7024,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Es gibt keinen Messbericht zum Exportieren.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Export Q-DAS DFQ</source>
         <translation>Q-DAS-DFQ exportieren</translation>
     </message>

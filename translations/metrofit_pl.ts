@@ -1798,7 +1798,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Badanie kinematyki nie wskazuje serii SPC do eksportu.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+22"/>
         <location line="+5"/>
         <source>Export Q-DAS DFQ</source>
         <translation>Eksport Q-DAS DFQ</translation>
@@ -2158,7 +2158,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+76"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+75"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -2404,17 +2404,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Miejsca po przecinku wartości w mm i ° (FANUC IS-B przyjmuje 3)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>The blocks that set the frame; the saved program adds its frame and comments</source>
         <translation>Bloki ustawiające frame; zapisany program dodaje ramę programu i komentarze</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Controller frame</source>
         <translation>Frame sterowania</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Contro&amp;l:</source>
         <translation>Ste&amp;rowanie:</translation>
     </message>
@@ -2424,7 +2424,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&amp;Miejsca po przecinku:</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+22"/>
         <source>Methods and &amp;machine</source>
         <translation>Metody i &amp;maszyna</translation>
     </message>
@@ -2505,7 +2505,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+24"/>
-        <location line="+288"/>
+        <location line="+289"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
@@ -2526,17 +2526,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie ma jeszcze położenia do zapisania: najpierw uruchom dopasowanie (Ctrl+R)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Datum shift (CYCL DEF 7) to the origin t, then PLANE SPATIAL with R = Rz(SPC) Ry(SPB) Rx(SPA) about the non-tilted axes; STAY: no axis moves. Call the saved program (CALL PGM) once the part&apos;s preset is active.</source>
         <translation>Przesunięcie punktu zerowego (CYCL DEF 7) do początku t, następnie PLANE SPATIAL z R = Rz(SPC) Ry(SPB) Rx(SPA) wokół nienachylonych osi; STAY: żadna oś się nie porusza. Wywołaj zapisany program (CALL PGM), gdy punkt bazowy detalu jest aktywny.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>TRANS to the origin t on top of the active settable frame (G54 …), then AROT about Z, Y&apos;, X&apos;&apos;: R = Rz(Z) Ry(Y) Rx(X). The tool is not oriented: use CYCLE800 or TRAORI for that.</source>
         <translation>TRANS do początku t na aktywny nastawny frame (G54 …), następnie AROT wokół Z, Y&apos;, X&apos;&apos;: R = Rz(Z) Ry(Y) Rx(X). Narzędzie nie jest orientowane: użyj do tego CYCLE800 lub TRAORI.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>G68.2 with the origin t and the Euler angles R = Rz(I) Rx(J) Rz(K), cancelled with G69. G53.1 is not written: it moves the rotary axes, program it at a safe position.</source>
         <translation>G68.2 z początkiem t i kątami Eulera R = Rz(I) Rx(J) Rz(K), odwoływane przez G69. G53.1 nie jest zapisywane: porusza osiami obrotowymi, zaprogramuj je w bezpiecznym położeniu.</translation>
     </message>
@@ -2566,7 +2566,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie ma jeszcze położenia do zapisania: najpierw uruchom dopasowanie.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>HEIDENHAIN programs (*.h)</source>
         <translation>Programy HEIDENHAIN (*.h)</translation>
     </message>
@@ -2581,7 +2581,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Programy FANUC (*.nc)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Save the controller frame</source>
         <translation>Zapisz frame sterowania</translation>
     </message>
@@ -2596,7 +2596,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można zapisać frame’u</translation>
     </message>
     <message>
-        <location line="-587"/>
+        <location line="-593"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Ten projekt nie zawiera punktów sondowania. Dodaj do pliku projektu zbiór danych rodzaju „probe_points” (identyfikator, powierzchnia, punkt nominalny, normalna, punkt zmierzony).</translation>
     </message>
@@ -2623,7 +2623,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Efekty zastosowane na stronie Diagnoza należą do punktów sondowania %1 (tych, na których przeprowadzono diagnozę); te punkty używają zadeklarowanego modelu.</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+118"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
@@ -2783,7 +2783,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-425"/>
+        <location line="-426"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -6782,7 +6782,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
         <translation>Model zapisano, ale raport WMP już do niego nie pasuje (przebiegi używają raportu wczytanego względem poprzedniego modelu): %1</translation>
     </message>
@@ -6875,7 +6875,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dodaj korekcje do bieżącej tabeli punktów bazowych (.PR) lub tabeli narzędzi (.T) sterowania, zapisanej ze sterowania, i zapisz wynik do nowego pliku do importu; wiersze to rejestry modelu</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>Tool re&amp;gister:</source>
         <translation>Re&amp;jestr narzędzia:</translation>
     </message>
@@ -6890,13 +6890,13 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>geometria (L)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>The register the tool-length corrections go to in every export: the wear (DL, Fanuc H wear) or the geometry (L)</source>
         <translation>Rejestr, do którego trafiają korekcje długości narzędzia w każdym eksporcie: zużycie (DL, Fanuc zużycie H) lub geometria (L)</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <location line="+234"/>
+        <location line="+12"/>
+        <location line="+235"/>
         <source>There is no measurement report to export</source>
         <translation>Brak raportu pomiarowego do eksportu</translation>
     </message>
@@ -7045,7 +7045,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Brak raportu pomiarowego do eksportu.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Export Q-DAS DFQ</source>
         <translation>Eksport Q-DAS DFQ</translation>
     </message>

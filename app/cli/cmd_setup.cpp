@@ -50,8 +50,8 @@
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/setup/exact.h"
-#include "core/setup/measurements_dfq.h"
 #include "core/setup/export.h"
+#include "core/setup/measurements_dfq.h"
 #include "core/setup/methods.h"
 #include "core/setup/model.h"
 #include "core/setup/objective.h"
@@ -264,8 +264,8 @@ int runSetup(const SetupArgs& a) {
     }
   }
   if (!a.dfq.empty()) {
-    writeFileAtomic(a.dfq, writeDfq(setup::measurementsDfqPart(model, meas,
-                                                               std::filesystem::path(a.model).stem().string())));
+    writeFileAtomic(a.dfq, writeDfq(setup::measurementsDfqPart(
+                               model, meas, std::filesystem::path(a.model).stem().string())));
   }
   writeResult(a.out, dumpJson(j));
 

@@ -767,9 +767,8 @@ bool KinematicsPage::exportSpcDfq(const QString& path, QString* error) {
     const std::string file = document_->datasetPath(series.dataset).toStdString();
     const CsvTable table = readFeatureTable(file, series.dataset.csv);
     const std::vector<double> values = table.numericColumn(series.column);
-    writeFileAtomic(path.toStdString(),
-                    writeDfq(seriesDfqPart(table, series.column, values, o.nominal, o.lsl, o.usl, file, {},
-                                           displayPath(file))));
+    writeFileAtomic(path.toStdString(), writeDfq(seriesDfqPart(table, series.column, values, o.nominal, o.lsl,
+                                                               o.usl, file, {}, displayPath(file))));
   } catch (const std::exception& e) {
     if (error) *error = QString::fromUtf8(e.what());
     return false;

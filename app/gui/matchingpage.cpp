@@ -7,7 +7,6 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFontDatabase>
-#include <QFormLayout>
 #include <QFontMetrics>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -432,27 +431,36 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
     frameText_->setReadOnly(true);
     frameText_->setLineWrapMode(QPlainTextEdit::NoWrap);
     frameText_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    frameText_->setToolTip(tr("The blocks that set the frame; the saved program adds its frame and comments"));
+    frameText_->setToolTip(
+        tr("The blocks that set the frame; the saved program adds its frame and comments"));
     saveFrame_->setObjectName(QStringLiteral("saveFrame"));
     frameNote_->setObjectName(QStringLiteral("frameNote"));
     frameNote_->setWordWrap(true);
     frameNote_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // One group: the settings and Save in a row (the tab is low), the blocks and the note under it.
     auto* group = new QGroupBox(tr("Controller frame"), frameTab_);
-    auto* form = new QFormLayout(group);
     auto* controlLabel = new QLabel(tr("Contro&l:"), group);
     controlLabel->setBuddy(frameControl_);
     auto* decimalsLabel = new QLabel(tr("&Decimals:"), group);
     decimalsLabel->setBuddy(frameDecimals_);
-    form->addRow(controlLabel, frameControl_);
-    form->addRow(decimalsLabel, frameDecimals_);
-    form->addRow(saveFrame_);
-    auto* frameLayout = new QHBoxLayout(frameTab_);
+    auto* row = new QHBoxLayout;
+    row->addWidget(controlLabel);
+    row->addWidget(frameControl_);
+    row->addSpacing(12);
+    row->addWidget(decimalsLabel);
+    row->addWidget(frameDecimals_);
+    row->addStretch(1);
+    row->addWidget(saveFrame_);
+    auto* body = new QHBoxLayout;
+    body->addWidget(frameText_, 3);
+    body->addWidget(frameNote_, 2, Qt::AlignTop);
+    auto* groupLayout = new QVBoxLayout(group);
+    groupLayout->setContentsMargins(6, 4, 6, 6);
+    groupLayout->addLayout(row);
+    groupLayout->addLayout(body, 1);
+    auto* frameLayout = new QVBoxLayout(frameTab_);
     frameLayout->setContentsMargins(4, 4, 4, 4);
-    auto* left = new QVBoxLayout;
-    left->addWidget(group);
-    left->addWidget(frameNote_, 1, Qt::AlignTop);
-    frameLayout->addLayout(left, 2);
-    frameLayout->addWidget(frameText_, 3);
+    frameLayout->addWidget(group);
   }
 
   tabs_->addTab(resultsTab, tr("Methods and &machine"));
@@ -829,7 +837,8 @@ bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& 
       settingsError_ = QString::fromUtf8(e.what());
     }
   }
-  if (const nlohmann::json n = document_->studyValue(study, QStringLiteral("/frame_decimals")); !n.is_null()) {
+  if (const nlohmann::json n = document_->studyValue(study, QStringLiteral("/frame_decimals"));
+      !n.is_null()) {
     if (n.is_number_integer() && n.get<long long>() >= 0 && n.get<long long>() <= 12)
       decimals = n.get<int>();
     else
@@ -1205,17 +1214,20 @@ void MatchingPage::fillFrame() {
   QString note;
   switch (frameFormat()) {
     case machine::FrameFormat::Heidenhain:
-      note = tr("Datum shift (CYCL DEF 7) to the origin t, then PLANE SPATIAL with R = Rz(SPC) Ry(SPB) "
-                "Rx(SPA) about the non-tilted axes; STAY: no axis moves. Call the saved program (CALL PGM) "
-                "once the part's preset is active.");
+      note =
+          tr("Datum shift (CYCL DEF 7) to the origin t, then PLANE SPATIAL with R = Rz(SPC) Ry(SPB) "
+             "Rx(SPA) about the non-tilted axes; STAY: no axis moves. Call the saved program (CALL PGM) "
+             "once the part's preset is active.");
       break;
     case machine::FrameFormat::Siemens:
-      note = tr("TRANS to the origin t on top of the active settable frame (G54 …), then AROT about Z, Y', "
-                "X'': R = Rz(Z) Ry(Y) Rx(X). The tool is not oriented: use CYCLE800 or TRAORI for that.");
+      note =
+          tr("TRANS to the origin t on top of the active settable frame (G54 …), then AROT about Z, Y', "
+             "X'': R = Rz(Z) Ry(Y) Rx(X). The tool is not oriented: use CYCLE800 or TRAORI for that.");
       break;
     case machine::FrameFormat::Fanuc:
-      note = tr("G68.2 with the origin t and the Euler angles R = Rz(I) Rx(J) Rz(K), cancelled with G69. "
-                "G53.1 is not written: it moves the rotary axes, program it at a safe position.");
+      note =
+          tr("G68.2 with the origin t and the Euler angles R = Rz(I) Rx(J) Rz(K), cancelled with G69. "
+             "G53.1 is not written: it moves the rotary axes, program it at a safe position.");
       break;
   }
   note = tr("Posture of %1 as a controller frame (mm, °).").arg(methodShort(primary.method)) +
@@ -1225,8 +1237,8 @@ void MatchingPage::fillFrame() {
                                    .arg(QLocale().toString(primary.pose.scale, 'f', 7));
   try {
     QStringList lines;
-    for (const std::string& b : machine::controllerFrameBlocks(primary.pose.rotation, primary.pose.translation,
-                                                                frameFormat(), frameDecimals_->value()))
+    for (const std::string& b : machine::controllerFrameBlocks(
+             primary.pose.rotation, primary.pose.translation, frameFormat(), frameDecimals_->value()))
       lines << QString::fromStdString(b);
     frameText_->setPlainText(lines.join(QLatin1Char('\n')));
     saveFrame_->setEnabled(true);
@@ -1251,8 +1263,9 @@ bool MatchingPage::saveFrame(const QString& path, QString* error) const {
     fo.decimals = frameDecimals_->value();
     fo.title = datasetFile_.toStdString();
     fo.programName = machine::frameProgramName(path.toStdString());
-    writeFileAtomic(path.toStdString(), machine::writeControllerFrame(primary.pose.rotation,
-                                                                      primary.pose.translation, frameFormat(), fo));
+    writeFileAtomic(
+        path.toStdString(),
+        machine::writeControllerFrame(primary.pose.rotation, primary.pose.translation, frameFormat(), fo));
   } catch (const std::exception& e) {
     if (error) *error = QString::fromUtf8(e.what());
     return false;
@@ -1268,7 +1281,8 @@ void MatchingPage::saveFrameDialog() {
   const QString filter = format == machine::FrameFormat::Heidenhain ? tr("HEIDENHAIN programs (*.h)")
                          : format == machine::FrameFormat::Siemens  ? tr("SINUMERIK subprograms (*.spf)")
                                                                     : tr("FANUC programs (*.nc)");
-  const QString dir = document_->fileName().isEmpty() ? QString() : QFileInfo(document_->fileName()).absolutePath();
+  const QString dir =
+      document_->fileName().isEmpty() ? QString() : QFileInfo(document_->fileName()).absolutePath();
   const QString start = QDir(dir).filePath(QStringLiteral("POSTURE_FRAME") + suffix);
   const QString path = QFileDialog::getSaveFileName(this, tr("Save the controller frame"), start,
                                                     filter + QStringLiteral(";;") + tr("All files (*)"));

@@ -704,7 +704,8 @@ bool SetupPage::saveModel(QString* error) {
       d->measModel = saved;
       d->dataError.clear();
       applyEffects();
-      results_->setMeasurements(d->measModel, &*d->rawMeasurements, QString::fromStdString(d->files.modelPath));
+      results_->setMeasurements(d->measModel, &*d->rawMeasurements,
+                                QString::fromStdString(d->files.modelPath));
     } catch (const std::exception& e) {
       error_ = tr("The model was saved, but the CMM report does not match it any more (the runs use the "
                   "report as read against the previous model): %1")

@@ -13,6 +13,7 @@ namespace metrofit::setup {
 /// in the model the values are the measured sizes and the limits nominal + lower / upper; without one
 /// the values are the deviations (measured - nominal) with nominal 0 and the limits lower / upper (no
 /// limits for a zero-width tolerance). K1001 is `partNumber` (the model file's name without extension).
-DfqPart measurementsDfqPart(const Model& model, const Measurements& measurements, const std::string& partNumber);
+DfqPart measurementsDfqPart(const Model& model, const Measurements& measurements,
+                            const std::string& partNumber);
 
 }  // namespace metrofit::setup

@@ -37,6 +37,7 @@
 #include "app/gui/matchingpage.h"
 #include "app/gui/setuppage.h"
 #include "cli/cli_runner.h"
+#include "cli/dfq_fields.h"
 #include "core/project/project.h"
 #include "core/sim/probe_sim.h"
 #include "core/study/kinematic_study.h"
@@ -76,7 +77,8 @@ class FramePageTest : public ::testing::Test {
     ASSERT_TRUE(dir_.isValid());
     ProbeSimOptions o = ProbeSimOptions::sPieceDefaults();
     o.seed = 11;
-    test::writeText(dir_.filePath(QStringLiteral("s.csv")).toStdString(), probePointsToCsv(simulateProbing(o)));
+    test::writeText(dir_.filePath(QStringLiteral("s.csv")).toStdString(),
+                    probePointsToCsv(simulateProbing(o)));
     Project p;
     p.name = "frame test";
     DatasetRef d;
@@ -122,9 +124,10 @@ TEST_F(FramePageTest, FrameIsTheCliFileForEveryControl) {
   page_->grab().save(out.filePath(QStringLiteral("matching_frame.png")));
 
   test::TempDir tmp;
-  const std::pair<machine::FrameFormat, const char*> controls[] = {{machine::FrameFormat::Heidenhain, "heidenhain"},
-                                                                   {machine::FrameFormat::Siemens, "siemens"},
-                                                                   {machine::FrameFormat::Fanuc, "fanuc"}};
+  const std::pair<machine::FrameFormat, const char*> controls[] = {
+      {machine::FrameFormat::Heidenhain, "heidenhain"},
+      {machine::FrameFormat::Siemens, "siemens"},
+      {machine::FrameFormat::Fanuc, "fanuc"}};
   const char* suffix[] = {".h", ".spf", ".nc"};
   int k = 0;
   for (const auto& [format, name] : controls) {
@@ -132,10 +135,10 @@ TEST_F(FramePageTest, FrameIsTheCliFileForEveryControl) {
     page_->setFrameFormat(format);
     page_->frameDecimalsSpin()->setValue(k == 2 ? 3 : 5);
     const std::string file = std::string("POSTURE_") + name + suffix[k];
-    const test::CliRun cli = test::cli("match --data " + quoted(dataFile()) +
-                                           " --method closed-form --frame " + name + " --frame-out " + file +
-                                           " --frame-decimals " + std::to_string(k == 2 ? 3 : 5),
-                                       tmp);
+    const test::CliRun cli =
+        test::cli("match --data " + quoted(dataFile()) + " --method closed-form --frame " + name +
+                      " --frame-out " + file + " --frame-decimals " + std::to_string(k == 2 ? 3 : 5),
+                  tmp);
     ASSERT_EQ(cli.code, 0) << cli.err;
     const std::string cliText = test::readText(tmp.file(file));
     // Saved by the page under the same file name: the same bytes.
@@ -217,26 +220,8 @@ TEST_F(FramePageTest, ControlAndDecimalsAreUndoableStudySettings) {
 
 // ---- setup page: HEIDENHAIN tables and DFQ ------------------------------------------------------------
 
-/// The fields of a DFQ file by the AQDEF K-field rule: "Kxxxx[/i] value", one per line.
-struct DfqFields {
-  std::map<std::string, std::string> fields;
-  std::map<int, std::vector<double>> values;
-};
-
-DfqFields readDfq(const std::string& text) {
-  DfqFields d;
-  for (const std::string& line : splitLines(text)) {
-    const auto space = line.find(' ');
-    const std::string key = line.substr(0, space), value = line.substr(space + 1);
-    const auto slash = key.find('/');
-    const int index = slash == std::string::npos ? 0 : std::stoi(key.substr(slash + 1));
-    if (key.rfind("K0001/", 0) == 0)
-      d.values[index].push_back(std::stod(value));
-    else
-      d.fields[key] = value;
-  }
-  return d;
-}
+using test::DfqFields;
+using test::readDfq;
 
 /// A TNC table's cells of one row by the header's column positions (a column starts where its name
 /// starts and ends where the next begins).
@@ -259,7 +244,8 @@ std::map<std::string, std::pair<std::size_t, std::size_t>> columns(const std::st
 
 std::string cellOf(const std::string& line, std::pair<std::size_t, std::size_t> col) {
   if (col.first >= line.size()) return {};
-  std::string s = line.substr(col.first, col.second == std::string::npos ? std::string::npos : col.second - col.first);
+  std::string s =
+      line.substr(col.first, col.second == std::string::npos ? std::string::npos : col.second - col.first);
   s.erase(s.find_last_not_of(' ') + 1);
   s.erase(0, s.find_first_not_of(' '));
   return s;
@@ -339,12 +325,14 @@ TEST_F(SetupExportsTest, HeidenhainTablesGetOnlyTheTargetCells) {
 
   // The preset table as the TNC saves it (TNC7 user's manual, "Preset table": NR, DOC, X, Y, Z, SPA,
   // SPB, SPC; layout of the TNC's table files): rows 0 and 9 are no setup datum of the model.
-  std::string preset = "BEGIN PRESET.PR MM\r\nNR      DOC              X              Y              Z              "
-                       "SPA         SPB         SPC\r\n";
+  std::string preset =
+      "BEGIN PRESET.PR MM\r\nNR      DOC              X              Y              Z              "
+      "SPA         SPB         SPC\r\n";
   for (int r = 0; r <= 9; ++r) {
     char row[200];
-    std::snprintf(row, sizeof row, "%-8d%-17s%-15s%-15s%-15s%-12s%-12s%s\r\n", r, r == 0 ? "machine" : "fixture",
-                  "+12.5", "-3", r == 3 ? "-412.8765" : "-398.25", "+0", "+0", "+0");
+    std::snprintf(row, sizeof row, "%-8d%-17s%-15s%-15s%-15s%-12s%-12s%s\r\n", r,
+                  r == 0 ? "machine" : "fixture", "+12.5", "-3", r == 3 ? "-412.8765" : "-398.25", "+0", "+0",
+                  "+0");
     preset += row;
   }
   preset += "[END]\r\n";
@@ -365,10 +353,10 @@ TEST_F(SetupExportsTest, HeidenhainTablesGetOnlyTheTargetCells) {
   expectOnlyTargetCells(preset, test::readText(presetOut.toStdString()), "NR", "Z", presetTargets);
   // The same as the CLI writes from the same table.
   test::TempDir tmp;
-  const test::CliRun cli = test::cli("setup --model " + quoted(modelPath()) + " --data " + quoted(reportPath()) +
-                                         " --export heidenhain-table --export-table " + quoted(presetIn) +
-                                         " --export-out P.PR",
-                                     tmp);
+  const test::CliRun cli =
+      test::cli("setup --model " + quoted(modelPath()) + " --data " + quoted(reportPath()) +
+                    " --export heidenhain-table --export-table " + quoted(presetIn) + " --export-out P.PR",
+                tmp);
   ASSERT_EQ(cli.code, 0) << cli.err;
   EXPECT_EQ(test::readText(tmp.file("P.PR")), test::readText(presetOut.toStdString()));
 
@@ -378,23 +366,27 @@ TEST_F(SetupExportsTest, HeidenhainTablesGetOnlyTheTargetCells) {
       "BEGIN TOOL.T MM Version: 'Update:110.24'\n"
       "T       NAME                            L           R           R2          DL        DR        DOC\n"
       "0       NULLTOOL                        +0          +0          +0          +0        +0        zero\n"
-      "5       END_MILL_D10                    +85.125     +5          +0          +0        -0.01     rough\n"
-      "7       DRILL_D8                        +92         +4          +0          +0.002    +0        drill\n"
-      "23      BALL_D6                         +70.5       +3          +3          -0.005    +0        finish\n"
+      "5       END_MILL_D10                    +85.125     +5          +0          +0        -0.01     "
+      "rough\n"
+      "7       DRILL_D8                        +92         +4          +0          +0.002    +0        "
+      "drill\n"
+      "23      BALL_D6                         +70.5       +3          +3          -0.005    +0        "
+      "finish\n"
       "[END]\n";
   const QString toolIn = dir_.filePath(QStringLiteral("TOOL.T"));
   test::writeText(toolIn.toStdString(), tool);
   const std::map<long, double> toolTargets{{5, x.at("T5")}, {23, x.at("T23")}};
-  ASSERT_TRUE(results->updateHeidenhainTable(toolIn, dir_.filePath(QStringLiteral("out/TOOL.T")), &error, &update))
+  ASSERT_TRUE(
+      results->updateHeidenhainTable(toolIn, dir_.filePath(QStringLiteral("out/TOOL.T")), &error, &update))
       << error.toStdString();
   EXPECT_EQ(update.written, (std::vector<std::string>{"T5", "T23"}));
-  expectOnlyTargetCells(tool, test::readText(dir_.filePath(QStringLiteral("out/TOOL.T")).toStdString()), "T", "DL",
-                        toolTargets);
+  expectOnlyTargetCells(tool, test::readText(dir_.filePath(QStringLiteral("out/TOOL.T")).toStdString()), "T",
+                        "DL", toolTargets);
   results->setToolOffset(setup::ToolOffset::Geometry);
   ASSERT_TRUE(results->updateHeidenhainTable(toolIn, dir_.filePath(QStringLiteral("out/TOOL_L.T")), &error))
       << error.toStdString();
-  expectOnlyTargetCells(tool, test::readText(dir_.filePath(QStringLiteral("out/TOOL_L.T")).toStdString()), "T", "L",
-                        toolTargets);
+  expectOnlyTargetCells(tool, test::readText(dir_.filePath(QStringLiteral("out/TOOL_L.T")).toStdString()),
+                        "T", "L", toolTargets);
 
   // A table that is not one: core's message, nothing written.
   const QString bad = dir_.filePath(QStringLiteral("PALLET.P"));

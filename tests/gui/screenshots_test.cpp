@@ -100,11 +100,10 @@ QStringList expectedShots() {
   QStringList names = {
       QStringLiteral("overview"),           QStringLiteral("setup-graph"),
       QStringLiteral("setup-convergence"),  QStringLiteral("matching-3d"),
-      QStringLiteral("matching-frame"),
-      QStringLiteral("kinematics-path"),    QStringLiteral("kinematics-spc"),
-      QStringLiteral("thermal-trend"),      QStringLiteral("thermal-hysteresis"),
-      QStringLiteral("thermal-models"),     QStringLiteral("diagnosis"),
-      QStringLiteral("diagnosis-residual"),
+      QStringLiteral("matching-frame"),     QStringLiteral("kinematics-path"),
+      QStringLiteral("kinematics-spc"),     QStringLiteral("thermal-trend"),
+      QStringLiteral("thermal-hysteresis"), QStringLiteral("thermal-models"),
+      QStringLiteral("diagnosis"),          QStringLiteral("diagnosis-residual"),
   };
   const metrofit::Project demo =
       metrofit::loadProject((metrofit::test::sourceDir() / "resources/demo/demo.metrofit").string());

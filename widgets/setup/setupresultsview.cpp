@@ -97,24 +97,28 @@ SetupResultsView::SetupResultsView(QWidget* parent)
          "control, and write the result to a new file for import; the rows are the registers of the model"));
   table->setEnabled(false);
   connect(table, &QPushButton::clicked, this, &SetupResultsView::tableDialog);
-  exports->addWidget(table);
   exportButtons_ << table;
   auto* toolLabel = new QLabel(tr("Tool re&gister:"), this);
   toolLabel->setBuddy(toolOffset_);
   toolOffset_->setObjectName(QStringLiteral("exportToolOffset"));
   toolOffset_->addItem(tr("wear (DL)"), static_cast<int>(setup::ToolOffset::Wear));
   toolOffset_->addItem(tr("geometry (L)"), static_cast<int>(setup::ToolOffset::Geometry));
-  toolOffset_->setToolTip(tr("The register the tool-length corrections go to in every export: the wear "
-                             "(DL, Fanuc H wear) or the geometry (L)"));
+  toolOffset_->setToolTip(
+      tr("The register the tool-length corrections go to in every export: the wear "
+         "(DL, Fanuc H wear) or the geometry (L)"));
   exports->addSpacing(8);
   exports->addWidget(toolLabel);
   exports->addWidget(toolOffset_);
   exports->addStretch(1);
+  // A second row: the page must fit 1280 px in German and Polish too.
+  auto* more = new QHBoxLayout;
+  more->addWidget(table);
+  more->addStretch(1);
   dfqButton_->setObjectName(QStringLiteral("export_dfq"));
   dfqButton_->setEnabled(false);
   dfqButton_->setToolTip(tr("There is no measurement report to export"));
   connect(dfqButton_, &QPushButton::clicked, this, &SetupResultsView::dfqDialog);
-  exports->addWidget(dfqButton_);
+  more->addWidget(dfqButton_);
 
   auto* left = new QWidget(this);
   auto* leftLayout = new QVBoxLayout(left);
@@ -140,6 +144,7 @@ SetupResultsView::SetupResultsView(QWidget* parent)
   layout->addWidget(summary_);
   layout->addWidget(splitter, 1);
   layout->addLayout(exports);
+  layout->addLayout(more);
   clear(tr("No result yet: choose a method and press Run (Ctrl+R)."));
 }
 
@@ -356,7 +361,8 @@ bool SetupResultsView::exportDfq(const QString& path, QString* error) const {
   }
   try {
     const std::string part = QFileInfo(modelFile_).completeBaseName().toStdString();
-    writeFileAtomic(path.toStdString(), writeDfq(setup::measurementsDfqPart(measModel_, *measurements_, part)));
+    writeFileAtomic(path.toStdString(),
+                    writeDfq(setup::measurementsDfqPart(measModel_, *measurements_, part)));
   } catch (const std::exception& e) {
     if (error) *error = QString::fromUtf8(e.what());
     return false;
