@@ -2503,7 +2503,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+24"/>
-        <location line="+289"/>
+        <location line="+292"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
@@ -2594,7 +2594,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Der Frame kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="-593"/>
+        <location line="-596"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Fügen Sie der Projektdatei einen Datensatz der Art „probe_points“ hinzu (Kennung, Fläche, Sollpunkt, Normale, Messpunkt).</translation>
     </message>
@@ -2621,7 +2621,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zu den Antastpunkten %1 (auf denen die Diagnose lief); diese Punkte verwenden das deklarierte Modell.</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+121"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
@@ -2780,7 +2780,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-426"/>
+        <location line="-429"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>

@@ -2505,7 +2505,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+24"/>
-        <location line="+289"/>
+        <location line="+292"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
@@ -2596,7 +2596,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można zapisać frame’u</translation>
     </message>
     <message>
-        <location line="-593"/>
+        <location line="-596"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Ten projekt nie zawiera punktów sondowania. Dodaj do pliku projektu zbiór danych rodzaju „probe_points” (identyfikator, powierzchnia, punkt nominalny, normalna, punkt zmierzony).</translation>
     </message>
@@ -2623,7 +2623,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Efekty zastosowane na stronie Diagnoza należą do punktów sondowania %1 (tych, na których przeprowadzono diagnozę); te punkty używają zadeklarowanego modelu.</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+121"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
@@ -2783,7 +2783,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-426"/>
+        <location line="-429"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>

@@ -842,7 +842,10 @@ bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& 
     if (n.is_number_integer() && n.get<long long>() >= 0 && n.get<long long>() <= 12)
       decimals = n.get<int>();
     else
-      settingsError_ = QStringLiteral("studies.matching.frame_decimals: must be an integer in 0..12");
+      settingsError_ =
+          QString::fromUtf8(ValidationError(ErrorContext{{}, 0, 0, "studies.matching.frame_decimals"},
+                                            "must be an integer in 0..12")
+                                .what());
   }
   {
     const QSignalBlocker b1(frameControl_), b2(frameDecimals_);

@@ -15,6 +15,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
+#include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSpinBox>
@@ -216,6 +217,25 @@ TEST_F(FramePageTest, ControlAndDecimalsAreUndoableStudySettings) {
   again.load(document_.fileName());
   MatchingPage other(&again);
   EXPECT_EQ(other.frameFormat(), machine::FrameFormat::Siemens);
+}
+
+TEST_F(FramePageTest, BadSettingsAreNamedAndTheDefaultsUsed) {
+  Project p = loadProject(document_.fileName().toStdString());
+  p.studies["matching"]["frame"] = "okuma";
+  p.studies["matching"]["frame_decimals"] = 13;
+  const QString path = dir_.filePath(QStringLiteral("bad.metrofit"));
+  saveProject(p, path.toStdString());
+  ProjectDocument document;
+  document.load(path);
+  MatchingPage page(&document);
+  const QLabel* status = page.findChild<QLabel*>(QStringLiteral("matchingStatus"));
+  ASSERT_NE(status, nullptr);
+  EXPECT_TRUE(status->text().contains(QStringLiteral("studies.matching.frame")))
+      << status->text().toStdString();
+  EXPECT_EQ(page.frameFormat(), machine::FrameFormat::Heidenhain);
+  EXPECT_EQ(page.frameDecimalsSpin()->value(), 4);
+  ASSERT_TRUE(page.runNow()) << page.errorMessage().toStdString();
+  EXPECT_FALSE(page.frameText().isEmpty());
 }
 
 // ---- setup page: HEIDENHAIN tables and DFQ ------------------------------------------------------------
