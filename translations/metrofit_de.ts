@@ -140,12 +140,12 @@
 <context>
     <name>metrofit::Autosave</name>
     <message>
-        <location filename="../app/gui/autosave.cpp" line="+179"/>
+        <location filename="../app/gui/autosave.cpp" line="+186"/>
         <source>cannot create the autosave folder %1</source>
         <translation>der Ordner für die automatische Sicherung %1 kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+69"/>
         <location line="+60"/>
         <source>The autosaved copy cannot be read: %1</source>
         <translation>Die automatisch gesicherte Kopie kann nicht gelesen werden: %1</translation>
@@ -1284,7 +1284,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+149"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+152"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -1325,12 +1325,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+2"/>
-        <location line="+43"/>
+        <location line="+58"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-43"/>
+        <location line="-58"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -1375,7 +1375,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Bah&amp;n</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
+        <source>Export Q-DAS &amp;DFQ…</source>
+        <translation>Q-DAS-&amp;DFQ exportieren…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>S&amp;PC</source>
         <translation>S&amp;PC</translation>
     </message>
@@ -1497,55 +1502,65 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     <message>
         <location line="+6"/>
         <location line="+89"/>
+        <location line="+108"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
         <location line="-87"/>
+        <location line="-106"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+87"/>
+        <location line="+106"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
         <location line="-85"/>
+        <location line="-104"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+85"/>
+        <location line="+104"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
         <location line="-83"/>
+        <location line="-102"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Der X-Antrieb bewegt sich entlang (cos a, sin a); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+83"/>
+        <location line="+102"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
         <location line="-81"/>
+        <location line="-100"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Der Y-Antrieb bewegt sich entlang (-sin b, cos b); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+81"/>
+        <location line="+100"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
         <location line="-79"/>
+        <location line="-98"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Der Winkel zwischen den Achsen beträgt 90° + (b − a)</translation>
     </message>
@@ -1596,7 +1611,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>gemessen</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
+        <source>Write the feature series with its limits as a Q-DAS DFQ file (the K-field file SPC packages import)</source>
+        <translation>Die Merkmalsreihe mit ihren Grenzen als Q-DAS-DFQ-Datei schreiben (die K-Feld-Datei, die SPC-Programme importieren)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The kinematics study names no SPC series to export</source>
+        <translation>Die Kinematikstudie nennt keine SPC-Reihe zum Exportieren</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Cannot chart the SPC series:
 %1</source>
         <translation>Die SPC-Reihe kann nicht dargestellt werden:
@@ -1777,7 +1802,23 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>G-Code exportieren</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
+        <source>The kinematics study names no SPC series to export.</source>
+        <translation>Die Kinematikstudie nennt keine SPC-Reihe zum Exportieren.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <location line="+5"/>
+        <source>Export Q-DAS DFQ</source>
+        <translation>Q-DAS-DFQ exportieren</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>Q-DAS DFQ files (*.dfq);;All files (*)</source>
+        <translation>Q-DAS-DFQ-Dateien (*.dfq);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Export compensated path as STEP-NC</source>
         <translation>Kompensierte Bahn als STEP-NC exportieren</translation>
     </message>
@@ -2126,7 +2167,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+60"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+75"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -2171,7 +2212,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+19"/>
+        <source>Save fr&amp;ame…</source>
+        <translation>Fr&amp;ame speichern…</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>The posture shown after matching and used for the machine adjustment (every method is run for the comparison table)</source>
         <translation>Die nach der Ausrichtung angezeigte und für die Maschineneinstellung verwendete Lage (für die Vergleichstabelle wird jede Methode ausgeführt)</translation>
     </message>
@@ -2357,7 +2403,37 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Abweichung nachher (mm)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+10"/>
+        <source>The control the frame is written for: HEIDENHAIN datum shift and PLANE SPATIAL, SINUMERIK TRANS and AROT, FANUC G68.2</source>
+        <translation>Die Steuerung, für die der Frame geschrieben wird: HEIDENHAIN Nullpunktverschiebung und PLANE SPATIAL, SINUMERIK TRANS und AROT, FANUC G68.2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Decimals of the values in mm and ° (FANUC IS-B takes 3)</source>
+        <translation>Nachkommastellen der Werte in mm und ° (FANUC IS-B nimmt 3)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The blocks that set the frame; the saved program adds its frame and comments</source>
+        <translation>Die Sätze, die den Frame setzen; das gespeicherte Programm ergänzt Programmrahmen und Kommentare</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Controller frame</source>
+        <translation>Steuerungs-Frame</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Contro&amp;l:</source>
+        <translation>Steueru&amp;ng:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Decimals:</source>
+        <translation>&amp;Nachkommastellen:</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>Methods and &amp;machine</source>
         <translation>Methoden und &amp;Maschine</translation>
     </message>
@@ -2375,6 +2451,11 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <location line="+1"/>
         <source>&amp;Points</source>
         <translation>&amp;Punkte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Controller frame</source>
+        <translation>Steuerungs-&amp;Frame</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -2424,6 +2505,18 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     <message>
         <location line="+23"/>
         <location line="+260"/>
+        <location line="+6"/>
+        <source>Change the control of the frame</source>
+        <translation>Steuerung des Frames ändern</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Change the decimals of the frame</source>
+        <translation>Nachkommastellen des Frames ändern</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <location line="+292"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
@@ -2434,7 +2527,87 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig: %1</translation>
     </message>
     <message>
-        <location line="-130"/>
+        <location line="+350"/>
+        <source>No posture yet: press Run (Ctrl+R).</source>
+        <translation>Noch keine Lage: Ausführen drücken (Strg+R).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>There is no posture to write yet: run the matching first (Ctrl+R)</source>
+        <translation>Es gibt noch keine Lage zum Schreiben: zuerst die Ausrichtung ausführen (Strg+R)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Datum shift (CYCL DEF 7) to the origin t, then PLANE SPATIAL with R = Rz(SPC) Ry(SPB) Rx(SPA) about the non-tilted axes; STAY: no axis moves. Call the saved program (CALL PGM) once the part&apos;s preset is active.</source>
+        <translation>Nullpunktverschiebung (CYCL DEF 7) zum Ursprung t, dann PLANE SPATIAL mit R = Rz(SPC) Ry(SPB) Rx(SPA) um die ungeschwenkten Achsen; STAY: keine Achse bewegt sich. Das gespeicherte Programm (CALL PGM) aufrufen, sobald der Bezugspunkt des Werkstücks aktiv ist.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>TRANS to the origin t on top of the active settable frame (G54 …), then AROT about Z, Y&apos;, X&apos;&apos;: R = Rz(Z) Ry(Y) Rx(X). The tool is not oriented: use CYCLE800 or TRAORI for that.</source>
+        <translation>TRANS zum Ursprung t auf den aktiven einstellbaren Frame (G54 …), dann AROT um Z, Y&apos;, X&apos;&apos;: R = Rz(Z) Ry(Y) Rx(X). Das Werkzeug wird nicht ausgerichtet: dafür CYCLE800 oder TRAORI verwenden.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>G68.2 with the origin t and the Euler angles R = Rz(I) Rx(J) Rz(K), cancelled with G69. G53.1 is not written: it moves the rotary axes, program it at a safe position.</source>
+        <translation>G68.2 mit dem Ursprung t und den Euler-Winkeln R = Rz(I) Rx(J) Rz(K), aufgehoben mit G69. G53.1 wird nicht geschrieben: es bewegt die Drehachsen, an einer sicheren Position programmieren.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Posture of %1 as a controller frame (mm, °).</source>
+        <translation>Lage von %1 als Steuerungs-Frame (mm, °).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The fitted scale %1 is not applied: no control frame scales.</source>
+        <translation>Der angepasste Maßstab %1 wird nicht angewandt: kein Steuerungs-Frame skaliert.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Write the frame program for the control to a file (as metrofit-cli match --frame does)</source>
+        <translation>Das Frame-Programm für die Steuerung in eine Datei schreiben (wie metrofit-cli match --frame)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cannot write the posture as a frame: %1</source>
+        <translation>Die Lage kann nicht als Frame geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>There is no posture to write yet: run the matching first.</source>
+        <translation>Es gibt noch keine Lage zum Schreiben: zuerst die Ausrichtung ausführen.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>HEIDENHAIN programs (*.h)</source>
+        <translation>HEIDENHAIN-Programme (*.h)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SINUMERIK subprograms (*.spf)</source>
+        <translation>SINUMERIK-Unterprogramme (*.spf)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FANUC programs (*.nc)</source>
+        <translation>FANUC-Programme (*.nc)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Save the controller frame</source>
+        <translation>Steuerungs-Frame speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot save the frame</source>
+        <translation>Der Frame kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <location line="-596"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Fügen Sie der Projektdatei einen Datensatz der Art „probe_points“ hinzu (Kennung, Fläche, Sollpunkt, Normale, Messpunkt).</translation>
     </message>
@@ -2446,7 +2619,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1 points on %2 surfaces, %3%4.</source>
         <translation>%1 Punkte auf %2 Flächen, %3%4.</translation>
     </message>
@@ -2461,7 +2634,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zu den Antastpunkten %1 (auf denen die Diagnose lief); diese Punkte verwenden das deklarierte Modell.</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+121"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
@@ -2486,7 +2659,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation> Abgebrochen: die bisher beste gefundene Lage.</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>BEFORE matching
 %1 of %2 out of ±%3 mm, max |d| %4 mm</source>
         <translation>VOR der Ausrichtung
@@ -2620,7 +2793,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-397"/>
+        <location line="-429"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -6518,7 +6691,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Dieses Projekt hat kein Einrichtmodell. Fügen Sie der Projektdatei einen Datensatz der Art „setup_model“ (der Beziehungsgraph, JSON) und einen „cmm_report“ hinzu.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>This project has no CMM report for the setup study (a dataset of kind &quot;cmm_report&quot;).</source>
         <translation>Dieses Projekt hat keinen KMG-Messbericht für die Einrichtstudie (ein Datensatz der Art „cmm_report“).</translation>
     </message>
@@ -6543,7 +6716,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Noch kein Ergebnis für dieses Modell: Methode wählen und Ausführen drücken (Strg+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="+8"/>
+        <location line="+10"/>
         <source>The edited model has %n problem(s), the first: %1</source>
         <translation>
             <numerusform>Das bearbeitete Modell hat %n Problem: %1</numerusform>
@@ -6639,7 +6812,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
         <translation>Das Modell wurde gespeichert, aber der KMG-Messbericht passt nicht mehr dazu (die Läufe verwenden den Bericht, wie er mit dem vorherigen Modell eingelesen wurde): %1</translation>
     </message>
@@ -6652,7 +6825,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupResultsView</name>
     <message>
-        <location filename="../widgets/setup/setupresultsview.cpp" line="+30"/>
+        <location filename="../widgets/setup/setupresultsview.cpp" line="+35"/>
         <source>machine point</source>
         <translation>Maschinenpunkt</translation>
     </message>
@@ -6667,7 +6840,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Werkzeuglänge</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+17"/>
+        <source>Export Q-DAS &amp;DFQ…</source>
+        <translation>Q-DAS-&amp;DFQ exportieren…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Setup datum</source>
         <translation>Einrichtdatum</translation>
     </message>
@@ -6717,7 +6895,43 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&amp;CSV…</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+9"/>
+        <source>Update HEIDENHAIN &amp;table…</source>
+        <translation>HEIDENHAIN-&amp;Tabelle aktualisieren…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Add the corrections to the control&apos;s current preset table (.PR) or tool table (.T), saved from the control, and write the result to a new file for import; the rows are the registers of the model</source>
+        <translation>Die Korrekturen zur aktuellen Bezugspunkttabelle (.PR) oder Werkzeugtabelle (.T) der Steuerung addieren, die von der Steuerung gespeichert wurde, und das Ergebnis zum Einlesen in eine neue Datei schreiben; die Zeilen sind die Register des Modells</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Tool re&amp;gister:</source>
+        <translation>Werkzeug&amp;register:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>wear (DL)</source>
+        <translation>Verschleiß (DL)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>geometry (L)</source>
+        <translation>Geometrie (L)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The register the tool-length corrections go to in every export: the wear (DL, Fanuc H wear) or the geometry (L)</source>
+        <translation>Das Register, in das die Werkzeuglängenkorrekturen bei jedem Export gehen: Verschleiß (DL, Fanuc H-Verschleiß) oder Geometrie (L)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+235"/>
+        <source>There is no measurement report to export</source>
+        <translation>Es gibt keinen Messbericht zum Exportieren</translation>
+    </message>
+    <message>
+        <location line="-206"/>
         <source>No result yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Noch kein Ergebnis: Methode wählen und Ausführen drücken (Strg+R).</translation>
     </message>
@@ -6784,11 +6998,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+10"/>
+        <location line="+40"/>
         <source>There are no corrections to export yet.</source>
         <translation>Es gibt noch keine Korrekturen zum Exportieren.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-18"/>
         <source>Export corrections</source>
         <translation>Korrekturen exportieren</translation>
     </message>
@@ -6796,6 +7011,81 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+4"/>
         <source>Cannot export the corrections</source>
         <translation>Die Korrekturen können nicht exportiert werden</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>The updated table must go to a new file: %1 is the table read from the control.</source>
+        <translation>Die aktualisierte Tabelle muss in eine neue Datei: %1 ist die von der Steuerung gelesene Tabelle.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>The control&apos;s current table (saved from the control)</source>
+        <translation>Aktuelle Tabelle der Steuerung (von der Steuerung gespeichert)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>HEIDENHAIN preset and tool tables (*.PR *.pr *.T *.t);;All files (*)</source>
+        <translation>HEIDENHAIN-Bezugspunkt- und Werkzeugtabellen (*.PR *.pr *.T *.t);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Write the updated table to</source>
+        <translation>Aktualisierte Tabelle schreiben nach</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot update the HEIDENHAIN table</source>
+        <translation>Die HEIDENHAIN-Tabelle kann nicht aktualisiert werden</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 written to %2. Cells updated: %3.</source>
+        <translation>%1 nach %2 geschrieben. Aktualisierte Zellen: %3.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not in this table: %1.</source>
+        <translation>Nicht in dieser Tabelle: %1.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Import it with no NC program running, then activate the preset again or call the tool again.</source>
+        <translation>Einlesen, während kein NC-Programm läuft, dann den Bezugspunkt erneut aktivieren bzw. das Werkzeug erneut aufrufen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>HEIDENHAIN table updated</source>
+        <translation>HEIDENHAIN-Tabelle aktualisiert</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Write the measured features of the report as a Q-DAS DFQ file (one characteristic per measured dimension)</source>
+        <translation>Die gemessenen Merkmale des Berichts als Q-DAS-DFQ-Datei schreiben (ein Merkmal je gemessenem Maß)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>There is no measurement report to export.</source>
+        <translation>Es gibt keinen Messbericht zum Exportieren.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Export Q-DAS DFQ</source>
+        <translation>Q-DAS-DFQ exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Q-DAS DFQ files (*.dfq);;All files (*)</source>
+        <translation>Q-DAS-DFQ-Dateien (*.dfq);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot export the DFQ file</source>
+        <translation>Die DFQ-Datei kann nicht exportiert werden</translation>
     </message>
 </context>
 <context>
@@ -7230,7 +7520,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+174"/>
+        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+179"/>
         <source>loop area in %1 × %2</source>
         <translation>Schleifenfläche in %1 × %2</translation>
     </message>
@@ -7305,12 +7595,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Schleifenfläche und Verzug je Sensor</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+59"/>
         <source>Analysing the hysteresis of %1…</source>
         <translation>Hysterese von %1 wird analysiert…</translation>
     </message>
     <message>
-        <location line="-161"/>
+        <location line="-179"/>
         <source>All sensors</source>
         <translation>Alle Sensoren</translation>
     </message>

@@ -140,12 +140,12 @@
 <context>
     <name>metrofit::Autosave</name>
     <message>
-        <location filename="../app/gui/autosave.cpp" line="+179"/>
+        <location filename="../app/gui/autosave.cpp" line="+186"/>
         <source>cannot create the autosave folder %1</source>
         <translation>nie można utworzyć folderu automatycznego zapisu %1</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+69"/>
         <location line="+60"/>
         <source>The autosaved copy cannot be read: %1</source>
         <translation>Nie można odczytać automatycznie zapisanej kopii: %1</translation>
@@ -1284,7 +1284,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+149"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+152"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identyfikuj</translation>
     </message>
@@ -1325,12 +1325,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+2"/>
-        <location line="+43"/>
+        <location line="+58"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-43"/>
+        <location line="-58"/>
         <source>identified</source>
         <translation>wyznaczony</translation>
     </message>
@@ -1375,7 +1375,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&amp;Tor</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
+        <source>Export Q-DAS &amp;DFQ…</source>
+        <translation>Eksportuj Q-DAS &amp;DFQ…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>S&amp;PC</source>
         <translation>S&amp;PC</translation>
     </message>
@@ -1498,55 +1503,65 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <message>
         <location line="+6"/>
         <location line="+89"/>
+        <location line="+108"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
         <location line="-87"/>
+        <location line="-106"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+87"/>
+        <location line="+106"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
         <location line="-85"/>
+        <location line="-104"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+85"/>
+        <location line="+104"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
         <location line="-83"/>
+        <location line="-102"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Napęd X porusza się wzdłuż (cos a, sin a); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+83"/>
+        <location line="+102"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
         <location line="-81"/>
+        <location line="-100"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Napęd Y porusza się wzdłuż (-sin b, cos b); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+81"/>
+        <location line="+100"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
         <location line="-79"/>
+        <location line="-98"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Kąt między osiami wynosi 90° + (b − a)</translation>
     </message>
@@ -1597,7 +1612,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>zmierzony</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
+        <source>Write the feature series with its limits as a Q-DAS DFQ file (the K-field file SPC packages import)</source>
+        <translation>Zapisz serię cechy wraz z granicami jako plik Q-DAS DFQ (plik pól K importowany przez programy SPC)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The kinematics study names no SPC series to export</source>
+        <translation>Badanie kinematyki nie wskazuje serii SPC do eksportu</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Cannot chart the SPC series:
 %1</source>
         <translation>Nie można wykreślić serii SPC:
@@ -1779,7 +1804,23 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Eksport G-code</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
+        <source>The kinematics study names no SPC series to export.</source>
+        <translation>Badanie kinematyki nie wskazuje serii SPC do eksportu.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <location line="+5"/>
+        <source>Export Q-DAS DFQ</source>
+        <translation>Eksport Q-DAS DFQ</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>Q-DAS DFQ files (*.dfq);;All files (*)</source>
+        <translation>Pliki Q-DAS DFQ (*.dfq);;Wszystkie pliki (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Export compensated path as STEP-NC</source>
         <translation>Eksport skompensowanego toru jako STEP-NC</translation>
     </message>
@@ -2128,7 +2169,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+60"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+75"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -2173,7 +2214,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Anuluj</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+19"/>
+        <source>Save fr&amp;ame…</source>
+        <translation>Z&amp;apisz frame…</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>The posture shown after matching and used for the machine adjustment (every method is run for the comparison table)</source>
         <translation>Położenie pokazywane po dopasowaniu i używane do nastawienia maszyny (do tabeli porównawczej uruchamiana jest każda metoda)</translation>
     </message>
@@ -2359,7 +2405,37 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Odchyłka po (mm)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+10"/>
+        <source>The control the frame is written for: HEIDENHAIN datum shift and PLANE SPATIAL, SINUMERIK TRANS and AROT, FANUC G68.2</source>
+        <translation>Sterowanie, dla którego zapisywany jest frame: HEIDENHAIN przesunięcie punktu zerowego i PLANE SPATIAL, SINUMERIK TRANS i AROT, FANUC G68.2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Decimals of the values in mm and ° (FANUC IS-B takes 3)</source>
+        <translation>Miejsca po przecinku wartości w mm i ° (FANUC IS-B przyjmuje 3)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The blocks that set the frame; the saved program adds its frame and comments</source>
+        <translation>Bloki ustawiające frame; zapisany program dodaje ramę programu i komentarze</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Controller frame</source>
+        <translation>Frame sterowania</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Contro&amp;l:</source>
+        <translation>Ste&amp;rowanie:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Decimals:</source>
+        <translation>&amp;Miejsca po przecinku:</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>Methods and &amp;machine</source>
         <translation>Metody i &amp;maszyna</translation>
     </message>
@@ -2377,6 +2453,11 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <location line="+1"/>
         <source>&amp;Points</source>
         <translation>Pu&amp;nkty</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Controller frame</source>
+        <translation>&amp;Frame sterowania</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -2426,6 +2507,18 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <message>
         <location line="+23"/>
         <location line="+260"/>
+        <location line="+6"/>
+        <source>Change the control of the frame</source>
+        <translation>Zmień sterowanie frame’u</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Change the decimals of the frame</source>
+        <translation>Zmień miejsca po przecinku frame’u</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <location line="+292"/>
         <location line="+12"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
@@ -2436,7 +2529,87 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Ustawienia studium dopasowania są nieprawidłowe: %1</translation>
     </message>
     <message>
-        <location line="-130"/>
+        <location line="+350"/>
+        <source>No posture yet: press Run (Ctrl+R).</source>
+        <translation>Brak położenia: naciśnij Uruchom (Ctrl+R).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>There is no posture to write yet: run the matching first (Ctrl+R)</source>
+        <translation>Nie ma jeszcze położenia do zapisania: najpierw uruchom dopasowanie (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Datum shift (CYCL DEF 7) to the origin t, then PLANE SPATIAL with R = Rz(SPC) Ry(SPB) Rx(SPA) about the non-tilted axes; STAY: no axis moves. Call the saved program (CALL PGM) once the part&apos;s preset is active.</source>
+        <translation>Przesunięcie punktu zerowego (CYCL DEF 7) do początku t, następnie PLANE SPATIAL z R = Rz(SPC) Ry(SPB) Rx(SPA) wokół nienachylonych osi; STAY: żadna oś się nie porusza. Wywołaj zapisany program (CALL PGM), gdy punkt bazowy detalu jest aktywny.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>TRANS to the origin t on top of the active settable frame (G54 …), then AROT about Z, Y&apos;, X&apos;&apos;: R = Rz(Z) Ry(Y) Rx(X). The tool is not oriented: use CYCLE800 or TRAORI for that.</source>
+        <translation>TRANS do początku t na aktywny nastawny frame (G54 …), następnie AROT wokół Z, Y&apos;, X&apos;&apos;: R = Rz(Z) Ry(Y) Rx(X). Narzędzie nie jest orientowane: użyj do tego CYCLE800 lub TRAORI.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>G68.2 with the origin t and the Euler angles R = Rz(I) Rx(J) Rz(K), cancelled with G69. G53.1 is not written: it moves the rotary axes, program it at a safe position.</source>
+        <translation>G68.2 z początkiem t i kątami Eulera R = Rz(I) Rx(J) Rz(K), odwoływane przez G69. G53.1 nie jest zapisywane: porusza osiami obrotowymi, zaprogramuj je w bezpiecznym położeniu.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Posture of %1 as a controller frame (mm, °).</source>
+        <translation>Położenie z %1 jako frame sterowania (mm, °).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The fitted scale %1 is not applied: no control frame scales.</source>
+        <translation>Dopasowana skala %1 nie jest stosowana: żaden frame sterowania nie skaluje.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Write the frame program for the control to a file (as metrofit-cli match --frame does)</source>
+        <translation>Zapisz program frame’u dla sterowania do pliku (jak metrofit-cli match --frame)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cannot write the posture as a frame: %1</source>
+        <translation>Nie można zapisać położenia jako frame: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>There is no posture to write yet: run the matching first.</source>
+        <translation>Nie ma jeszcze położenia do zapisania: najpierw uruchom dopasowanie.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>HEIDENHAIN programs (*.h)</source>
+        <translation>Programy HEIDENHAIN (*.h)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SINUMERIK subprograms (*.spf)</source>
+        <translation>Podprogramy SINUMERIK (*.spf)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FANUC programs (*.nc)</source>
+        <translation>Programy FANUC (*.nc)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Save the controller frame</source>
+        <translation>Zapisz frame sterowania</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Wszystkie pliki (*)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot save the frame</source>
+        <translation>Nie można zapisać frame’u</translation>
+    </message>
+    <message>
+        <location line="-596"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Ten projekt nie zawiera punktów sondowania. Dodaj do pliku projektu zbiór danych rodzaju „probe_points” (identyfikator, powierzchnia, punkt nominalny, normalna, punkt zmierzony).</translation>
     </message>
@@ -2448,7 +2621,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1 points on %2 surfaces, %3%4.</source>
         <translation>Punkty: %1, powierzchnie: %2, %3%4.</translation>
     </message>
@@ -2463,7 +2636,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Efekty zastosowane na stronie Diagnoza należą do punktów sondowania %1 (tych, na których przeprowadzono diagnozę); te punkty używają zadeklarowanego modelu.</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+121"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
@@ -2488,7 +2661,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation> Anulowano: najlepsze dotąd znalezione położenie.</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>BEFORE matching
 %1 of %2 out of ±%3 mm, max |d| %4 mm</source>
         <translation>PRZED dopasowaniem
@@ -2623,7 +2796,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-397"/>
+        <location line="-429"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -6535,7 +6708,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ten projekt nie ma modelu ustawczego. Dodaj do pliku projektu zbiór danych rodzaju „setup_model” (graf relacji, JSON) oraz „cmm_report”.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>This project has no CMM report for the setup study (a dataset of kind &quot;cmm_report&quot;).</source>
         <translation>Ten projekt nie ma raportu WMP dla studium ustawienia (zbiór danych rodzaju „cmm_report”).</translation>
     </message>
@@ -6560,7 +6733,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Brak jeszcze wyniku dla tego modelu: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="+8"/>
+        <location line="+10"/>
         <source>The edited model has %n problem(s), the first: %1</source>
         <translation>
             <numerusform>Edytowany model ma %n problem: %1</numerusform>
@@ -6658,7 +6831,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
         <translation>Model zapisano, ale raport WMP już do niego nie pasuje (przebiegi używają raportu wczytanego względem poprzedniego modelu): %1</translation>
     </message>
@@ -6671,7 +6844,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupResultsView</name>
     <message>
-        <location filename="../widgets/setup/setupresultsview.cpp" line="+30"/>
+        <location filename="../widgets/setup/setupresultsview.cpp" line="+35"/>
         <source>machine point</source>
         <translation>punkt maszyny</translation>
     </message>
@@ -6686,7 +6859,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>długość narzędzia</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+17"/>
+        <source>Export Q-DAS &amp;DFQ…</source>
+        <translation>Eksportuj Q-DAS &amp;DFQ…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Setup datum</source>
         <translation>Dana ustawcza</translation>
     </message>
@@ -6736,7 +6914,43 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>&amp;CSV…</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+9"/>
+        <source>Update HEIDENHAIN &amp;table…</source>
+        <translation>Aktualizuj &amp;tabelę HEIDENHAIN…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Add the corrections to the control&apos;s current preset table (.PR) or tool table (.T), saved from the control, and write the result to a new file for import; the rows are the registers of the model</source>
+        <translation>Dodaj korekcje do bieżącej tabeli punktów bazowych (.PR) lub tabeli narzędzi (.T) sterowania, zapisanej ze sterowania, i zapisz wynik do nowego pliku do importu; wiersze to rejestry modelu</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Tool re&amp;gister:</source>
+        <translation>Re&amp;jestr narzędzia:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>wear (DL)</source>
+        <translation>zużycie (DL)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>geometry (L)</source>
+        <translation>geometria (L)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The register the tool-length corrections go to in every export: the wear (DL, Fanuc H wear) or the geometry (L)</source>
+        <translation>Rejestr, do którego trafiają korekcje długości narzędzia w każdym eksporcie: zużycie (DL, Fanuc zużycie H) lub geometria (L)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+235"/>
+        <source>There is no measurement report to export</source>
+        <translation>Brak raportu pomiarowego do eksportu</translation>
+    </message>
+    <message>
+        <location line="-206"/>
         <source>No result yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Brak jeszcze wyniku: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
     </message>
@@ -6805,11 +7019,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+10"/>
+        <location line="+40"/>
         <source>There are no corrections to export yet.</source>
         <translation>Nie ma jeszcze korekcji do wyeksportowania.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-18"/>
         <source>Export corrections</source>
         <translation>Eksport korekcji</translation>
     </message>
@@ -6817,6 +7032,81 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+4"/>
         <source>Cannot export the corrections</source>
         <translation>Nie można wyeksportować korekcji</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>The updated table must go to a new file: %1 is the table read from the control.</source>
+        <translation>Zaktualizowana tabela musi trafić do nowego pliku: %1 to tabela odczytana ze sterowania.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>The control&apos;s current table (saved from the control)</source>
+        <translation>Bieżąca tabela sterowania (zapisana ze sterowania)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>HEIDENHAIN preset and tool tables (*.PR *.pr *.T *.t);;All files (*)</source>
+        <translation>Tabele punktów bazowych i narzędzi HEIDENHAIN (*.PR *.pr *.T *.t);;Wszystkie pliki (*)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Write the updated table to</source>
+        <translation>Zapisz zaktualizowaną tabelę do</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot update the HEIDENHAIN table</source>
+        <translation>Nie można zaktualizować tabeli HEIDENHAIN</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 written to %2. Cells updated: %3.</source>
+        <translation>%1 zapisano do %2. Zaktualizowane komórki: %3.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none</source>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not in this table: %1.</source>
+        <translation>Nie w tej tabeli: %1.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Import it with no NC program running, then activate the preset again or call the tool again.</source>
+        <translation>Zaimportuj ją, gdy żaden program NC nie działa, a następnie ponownie aktywuj punkt bazowy lub ponownie wywołaj narzędzie.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>HEIDENHAIN table updated</source>
+        <translation>Tabela HEIDENHAIN zaktualizowana</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Write the measured features of the report as a Q-DAS DFQ file (one characteristic per measured dimension)</source>
+        <translation>Zapisz zmierzone cechy raportu jako plik Q-DAS DFQ (jedna charakterystyka na każdy zmierzony wymiar)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>There is no measurement report to export.</source>
+        <translation>Brak raportu pomiarowego do eksportu.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Export Q-DAS DFQ</source>
+        <translation>Eksport Q-DAS DFQ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Q-DAS DFQ files (*.dfq);;All files (*)</source>
+        <translation>Pliki Q-DAS DFQ (*.dfq);;Wszystkie pliki (*)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot export the DFQ file</source>
+        <translation>Nie można wyeksportować pliku DFQ</translation>
     </message>
 </context>
 <context>
@@ -7252,7 +7542,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+174"/>
+        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+179"/>
         <source>loop area in %1 × %2</source>
         <translation>pole pętli w %1 × %2</translation>
     </message>
@@ -7327,12 +7617,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Pole pętli i opóźnienie dla każdego czujnika</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+59"/>
         <source>Analysing the hysteresis of %1…</source>
         <translation>Analiza histerezy %1…</translation>
     </message>
     <message>
-        <location line="-161"/>
+        <location line="-179"/>
         <source>All sensors</source>
         <translation>Wszystkie czujniki</translation>
     </message>

@@ -120,10 +120,7 @@ int runMatch(const MatchArgs& a, bool machineGiven) {
     fo.decimals = a.frameDecimals;
     fo.title = a.data;
     // The TNC lists a program under its file name: BEGIN PGM takes the name of --frame-out, made valid.
-    std::string stem = std::filesystem::path(a.frameOut).stem().string();
-    for (char& c : stem)
-      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
-    if (!stem.empty()) fo.programName = stem.substr(0, 32);
+    fo.programName = machine::frameProgramName(a.frameOut);
     writeFileAtomic(a.frameOut, machine::writeControllerFrame(r.pose.rotation, r.pose.translation, ff, fo));
     const auto angles = ff == machine::FrameFormat::Fanuc ? machine::eulerZxzAnglesDeg(r.pose.rotation)
                                                           : machine::spatialAnglesDeg(r.pose.rotation);

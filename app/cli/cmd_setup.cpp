@@ -50,6 +50,7 @@
 #include "core/io/json_util.h"
 #include "core/setup/exact.h"
 #include "core/setup/export.h"
+#include "core/setup/measurements_dfq.h"
 #include "core/setup/methods.h"
 #include "core/setup/model.h"
 #include "core/setup/objective.h"
@@ -129,37 +130,6 @@ nlohmann::json certificateJson(const setup::ExactCertificate& c) {
           {"least_norm_rounds", c.normRounds},
           {"cuts", c.cuts},
           {"solver_calls", c.solverCalls}};
-}
-
-/// The measured features of the report series as a Q-DAS DFQ file: one characteristic per model dimension
-/// that was measured, its values in report order. With a nominal in the model the values are the measured
-/// sizes and the limits nominal + lower / upper; without one the values are the deviations (measured -
-/// nominal) with nominal 0 and the limits lower / upper.
-std::string measurementsDfq(const setup::Model& model, const setup::Measurements& meas, const SetupArgs& a) {
-  DfqPart part;
-  part.number = std::filesystem::path(a.model).stem().string();
-  part.description = "Metrofit measured features of " + std::to_string(meas.parts.size()) + " part(s)";
-  std::vector<DfqCharacteristic> byDimension(model.dimensions.size());
-  for (const auto& row : meas.rows) {
-    const setup::Dimension& d = model.dimensions[row.dimension];
-    byDimension[row.dimension].values.push_back(d.nominal ? *d.nominal + row.deviationMm : row.deviationMm);
-  }
-  for (std::size_t i = 0; i < model.dimensions.size(); ++i) {
-    DfqCharacteristic& c = byDimension[i];
-    if (c.values.empty()) continue;
-    const setup::Dimension& d = model.dimensions[i];
-    const double nominal = d.nominal.value_or(0.0);
-    c.number = d.id;
-    c.description = d.nominal ? d.id : d.id + " deviation (measured - nominal)";
-    c.nominal = nominal;
-    if (d.lower < d.upper) {  // a zero-width tolerance is no SPC limit pair
-      c.lowerLimit = nominal + d.lower;
-      c.upperLimit = nominal + d.upper;
-    }
-    c.unit = "mm";
-    part.characteristics.push_back(std::move(c));
-  }
-  return writeDfq(part);
 }
 
 int runSetup(const SetupArgs& a) {
@@ -286,7 +256,10 @@ int runSetup(const SetupArgs& a) {
       j["export"] = {{"format", a.exportFormat}, {"file", a.exportOut}};
     }
   }
-  if (!a.dfq.empty()) writeFileAtomic(a.dfq, measurementsDfq(model, meas, a));
+  if (!a.dfq.empty()) {
+    writeFileAtomic(a.dfq, writeDfq(setup::measurementsDfqPart(
+                               model, meas, std::filesystem::path(a.model).stem().string())));
+  }
   writeResult(a.out, dumpJson(j));
 
   std::string line = "setup: " + a.method + " on " + std::to_string(inst.dimensions()) + " dimensions of " +

@@ -65,52 +65,15 @@ SpcOptions spcOptions(const SpcArgs& a) {
   return o;
 }
 
-/// The unit of a column from its name's suffix ("diameter_mm" -> "mm"), as ASCII; empty when none.
-std::string unitOf(const std::string& column) {
-  const auto pos = column.rfind('_');
-  if (pos == std::string::npos) return {};
-  const std::string u = column.substr(pos + 1);
-  for (const char* known : {"mm", "um", "deg", "s", "min", "h", "ppm"}) {
-    if (u == known) return u;
-  }
-  return {};
-}
-
-std::string seriesDfq(const SpcArgs& a, const CsvTable& table, const std::vector<double>& values,
-                      const SpcOptions& o) {
-  DfqPart part;
-  const std::string file = std::filesystem::path(a.data).filename().string();
-  part.number = a.dfqPart.empty() ? std::filesystem::path(a.data).stem().string() : a.dfqPart;
-  part.description = "Metrofit SPC series " + a.column + " of " + file;
-  DfqCharacteristic c;
-  c.number = a.column;
-  c.description = a.column + " (" + file + ")";
-  c.nominal = o.nominal;
-  c.lowerLimit = o.lsl;
-  c.upperLimit = o.usl;
-  c.unit = unitOf(a.column);
-  c.values = values;
-  if (const int t = table.columnIndex("timestamp"); t >= 0) {
-    for (std::size_t r = 0; r < table.rowCount(); ++r) {
-      const std::string& cell = table.cell(r, static_cast<std::size_t>(t));
-      const std::optional<std::string> q = qdasDateTime(cell);
-      if (!q) {
-        throw ParseError(ErrorContext{displayPath(a.data), table.lineOf(r), t + 1, "timestamp"},
-                         "'" + cell + "' is not a date-time YYYY-MM-DDTHH:MM[:SS]");
-      }
-      c.times.push_back(*q);
-    }
-  }
-  part.characteristics.push_back(std::move(c));
-  return writeDfq(part);
-}
-
 int runSpc(const SpcArgs& a) {
   const SpcOptions o = spcOptions(a);
   const CsvTable table = readFeatureTable(a.data, csvOptions());
   const std::vector<double> values = table.numericColumn(a.column);
   const SpcResult r = analyseSpc(values, o, ErrorContext{displayPath(a.data), 0, 0, a.column});
-  if (!a.dfq.empty()) writeFileAtomic(a.dfq, seriesDfq(a, table, values, o));
+  if (!a.dfq.empty()) {
+    writeFileAtomic(a.dfq, writeDfq(seriesDfqPart(table, a.column, values, o.nominal, o.lsl, o.usl, a.data,
+                                                  a.dfqPart, displayPath(a.data))));
+  }
   writeResult(a.out, dumpJson(spcResultToJson(r)));
   std::string line = "spc: column '" + a.column + "', " + std::to_string(r.chart.subgroups()) +
                      " subgroups of " + std::to_string(o.subgroupSize);

@@ -16,7 +16,6 @@
 #include <QTimer>
 #include <QUndoStack>
 #include <QWidget>
-#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cerrno>
 #include <exception>
@@ -107,9 +106,16 @@ Autosave::Autosave(ProjectDocument* document, QObject* parent)
       document_(document),
       extras_(AutosaveExtras::of(document)),
       timer_(new QTimer(this)),
+      writer_(new BackgroundRun<QString>(this)),
       untitledFolder_(defaultUntitledFolder()) {
   connect(timer_, &QTimer::timeout, this, [this] { tick(); });
-  connect(&watcher_, &QFutureWatcher<QString>::finished, this, &Autosave::onWriteFinished);
+  connect(writer_, &BackgroundRunBase::finished, this, &Autosave::onWriteFinished);
+  // The job catches what writeFileAtomic throws; anything else still ends the pending write.
+  connect(writer_, &BackgroundRunBase::failed, this, [this](const QString& message) {
+    if (!pending_) return;
+    pending_ = false;
+    emit failed(message);
+  });
   connect(document_, &ProjectDocument::changed, this, [this] { ++generation_; });
   connect(extras_, &AutosaveExtras::changed, this, [this] { ++generation_; });
   // Saved (either half): the side file goes, so it never holds what is older than the files; while
@@ -128,7 +134,8 @@ bool Autosave::anythingModified() const {
 }
 
 Autosave::~Autosave() {
-  watcher_.waitForFinished();
+  // A side file being written is finished (atomically), never left half-written.
+  writer_->waitForWorker();
 }
 
 int Autosave::intervalSetting() {
@@ -186,27 +193,26 @@ bool Autosave::tick() {
   pending_ = true;
   pendingFile_ = target;
   pendingGeneration_ = generation_;
-  watcher_.setFuture(QtConcurrent::run([path = encodedPath(target), text = std::move(text)]() -> QString {
+  writer_->start([path = encodedPath(target), text = std::move(text)](RunObserver&) -> QString {
     try {
       writeFileAtomic(path, text);
     } catch (const std::exception& e) {
       return QString::fromStdString(e.what());
     }
     return {};
-  }));
+  });
   return true;
 }
 
 void Autosave::waitForWrite() {
   if (!pending_) return;
-  watcher_.waitForFinished();
-  onWriteFinished();
+  writer_->waitForFinished();  // emits finished (onWriteFinished) or failed now, not from the event loop
 }
 
 void Autosave::onWriteFinished() {
-  if (!pending_) return;  // handled already (waitForWrite, then the watcher's signal)
+  if (!pending_) return;  // handled already
   pending_ = false;
-  const QString error = watcher_.result();
+  const QString error = writer_->takeResult().value_or(QString());
   if (!error.isEmpty()) {
     emit failed(error);
     return;

@@ -22,7 +22,6 @@
 // object "unsaved": {key: value} in the side file (loadProject ignores it), and a recovery hands
 // each value back to its source after the project is open.
 #include <QDateTime>
-#include <QFutureWatcher>
 #include <QObject>
 #include <QPointer>
 #include <QString>
@@ -31,6 +30,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "widgets/common/backgroundrun.h"
 
 class QTimer;
 class QWidget;
@@ -177,7 +178,9 @@ class Autosave : public QObject {
   ProjectDocument* document_;
   AutosaveExtras* extras_;
   QTimer* timer_;
-  QFutureWatcher<QString> watcher_;  ///< result: the error message, empty on success
+  /// The write of the side file (writeFileAtomic) off the GUI thread; result: the error message, empty on
+  /// success.
+  BackgroundRun<QString>* writer_;
   Decider decider_;
   QString untitledFolder_;
   QString writtenFile_;

@@ -25,6 +25,9 @@
 
 #include "app/gui/notesedit.h"
 #include "core/diagnose/applied_setup_matching.h"
+#include "core/io/cmm_text_report.h"
+#include "core/io/csv.h"
+#include "core/io/dfq.h"
 #include "core/io/file_io.h"
 #include "core/kinematics/export.h"
 #include "core/kinematics/iso230_4.h"
@@ -216,7 +219,22 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   pathTab->setChildrenCollapsible(false);
   pathTab->setSizes({330, 360, 360});
   tabs_->addTab(pathTab, tr("&Path"));
-  tabs_->addTab(spc_, tr("S&PC"));
+  spcTab_ = new QWidget(this);
+  {
+    auto* spcLayout = new QVBoxLayout(spcTab_);
+    spcLayout->setContentsMargins(0, 0, 0, 0);
+    spcLayout->addWidget(spc_, 1);
+    auto* row = new QHBoxLayout;
+    row->setContentsMargins(4, 0, 4, 4);
+    row->addStretch(1);
+    spcDfqButton_ = new QPushButton(tr("Export Q-DAS &DFQ…"), spcTab_);
+    spcDfqButton_->setObjectName(QStringLiteral("spcDfq"));
+    spcDfqButton_->setEnabled(false);
+    row->addWidget(spcDfqButton_);
+    spcLayout->addLayout(row);
+    connect(spcDfqButton_, &QPushButton::clicked, this, &KinematicsPage::onExportSpcDfq);
+  }
+  tabs_->addTab(spcTab_, tr("S&PC"));
 
   auto* actuators = new QWidget(this);
   auto* actLayout = new QVBoxLayout(actuators);
@@ -485,6 +503,11 @@ void KinematicsPage::showStudy() {
   compensationTable_->setRowCount(1);
   setRow(compensationTable_, 0, {tr("measured"), um(s.analysis.maxAbsDeviationMm)});
 
+  spcDfqButton_->setEnabled(s.spc.has_value());
+  spcDfqButton_->setToolTip(
+      s.spc ? tr("Write the feature series with its limits as a Q-DAS DFQ file (the K-field file SPC "
+                 "packages import)")
+            : tr("The kinematics study names no SPC series to export"));
   if (s.spc) {
     spc_->setResult(s.spc->result, s.spc->values, QString::fromStdString(s.spc->column),
                     QString::fromStdString(s.spc->unit));
@@ -707,6 +730,38 @@ void KinematicsPage::onExportGcode() {
   if (file.isEmpty()) return;
   QString error;
   if (!exportGcode(file, &error)) QMessageBox::warning(this, tr("Export G-code"), error);
+}
+
+bool KinematicsPage::exportSpcDfq(const QString& path, QString* error) {
+  if (!study_ || !study_->spc || !study_->settings.spc) {
+    if (error) *error = tr("The kinematics study names no SPC series to export.");
+    return false;
+  }
+  try {
+    const KinematicSpcSeries& series = *study_->spc;
+    const SpcOptions& o = study_->settings.spc->options;
+    const std::string file = document_->datasetPath(series.dataset).toStdString();
+    const CsvTable table = readFeatureTable(file, series.dataset.csv);
+    const std::vector<double> values = table.numericColumn(series.column);
+    writeFileAtomic(path.toStdString(), writeDfq(seriesDfqPart(table, series.column, values, o.nominal, o.lsl,
+                                                               o.usl, file, {}, displayPath(file))));
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
+  return true;
+}
+
+void KinematicsPage::onExportSpcDfq() {
+  const QString dir = QFileInfo(document_->fileName()).absolutePath();
+  const QString name =
+      study_ && study_->spc ? QString::fromStdString(study_->spc->dataset.id) : QStringLiteral("spc");
+  const QString file = QFileDialog::getSaveFileName(this, tr("Export Q-DAS DFQ"),
+                                                    QDir(dir).filePath(name + QStringLiteral(".dfq")),
+                                                    tr("Q-DAS DFQ files (*.dfq);;All files (*)"));
+  if (file.isEmpty()) return;
+  QString error;
+  if (!exportSpcDfq(file, &error)) QMessageBox::warning(this, tr("Export Q-DAS DFQ"), error);
 }
 
 void KinematicsPage::onExportStepNc() {

@@ -48,6 +48,11 @@ class KinematicsPage : public QWidget {
   /// Write the compensated references (compensating first when needed). False with `error`.
   bool exportGcode(const QString& path, QString* error = nullptr);
   bool exportStepNc(const QString& path, QString* error = nullptr);
+  /// Writes the SPC tab's feature series as a Q-DAS DFQ file (atomically), as `metrofit-cli spc --data
+  /// <its file> --column C --subgroup N [--lsl --usl] [--nominal] --dfq path` does. False with `error`
+  /// when the study has no SPC series or core refuses.
+  bool exportSpcDfq(const QString& path, QString* error = nullptr);
+  QPushButton* spcDfqButton() const { return spcDfqButton_; }
 
   void selectDataset(const QString& id);
   QString currentDataset() const;
@@ -90,6 +95,7 @@ class KinematicsPage : public QWidget {
   void showActuators();
   void onExportGcode();
   void onExportStepNc();
+  void onExportSpcDfq();
   void updateButtons();
 
   ProjectDocument* document_;
@@ -115,6 +121,8 @@ class KinematicsPage : public QWidget {
   QPushButton* compensateButton_;
   QPushButton* gcodeButton_;
   QPushButton* stepNcButton_;
+  QPushButton* spcDfqButton_ = nullptr;
+  QWidget* spcTab_ = nullptr;
   std::optional<KinematicStudyData> study_;
   std::optional<CompensationPreview> compensation_;
   QString error_;

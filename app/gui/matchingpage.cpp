@@ -2,7 +2,11 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFontDatabase>
 #include <QFontMetrics>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -10,9 +14,12 @@
 #include <QKeySequence>
 #include <QLabel>
 #include <QLocale>
+#include <QMessageBox>
+#include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStyle>
@@ -25,6 +32,8 @@
 #include <set>
 
 #include "app/gui/notesedit.h"
+#include "core/common/error.h"
+#include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/document/projectdocument.h"
@@ -53,6 +62,12 @@ using matching::MatchMethod;
 constexpr MatchMethod kMethods[] = {MatchMethod::Sade, MatchMethod::GaSimplex, MatchMethod::ClosedForm,
                                     MatchMethod::Minimax};
 constexpr const char* kDofNames[] = {"rx", "ry", "rz", "x", "y", "z"};
+
+/// The controls of the frame tab, in the combo's order, with the names the user knows them by.
+constexpr std::pair<machine::FrameFormat, const char*> kFrameControls[] = {
+    {machine::FrameFormat::Heidenhain, "HEIDENHAIN"},
+    {machine::FrameFormat::Siemens, "SINUMERIK"},
+    {machine::FrameFormat::Fanuc, "FANUC"}};
 
 QString methodTitle(MatchMethod m) {
   switch (m) {
@@ -294,6 +309,12 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
       remeasureLabel_(new QLabel(this)),
       curve_(nullptr),
       table_(nullptr),
+      frameControl_(new QComboBox(this)),
+      frameDecimals_(new QSpinBox(this)),
+      frameText_(new QPlainTextEdit(this)),
+      saveFrame_(new QPushButton(tr("Save fr&ame…"), this)),
+      frameNote_(new QLabel(this)),
+      frameTab_(nullptr),
       message_(new QLabel(this)),
       run_(new BackgroundRun<matching::MatchingStudyResult>(this)) {
   auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kMatching)), this);
@@ -393,10 +414,60 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
       makeTable(tabs_, {tr("Point"), tr("Surface"), tr("Deviation before (mm)"), tr("Deviation after (mm)")});
   new ColumnFitter(table_, {1}, false);
 
+  // The posture as a controller frame: the group of settings left, the blocks right.
+  frameTab_ = new QWidget(tabs_);
+  {
+    for (const auto& [format, name] : kFrameControls)
+      frameControl_->addItem(QString::fromLatin1(name), static_cast<int>(format));
+    frameControl_->setObjectName(QStringLiteral("frameControl"));
+    frameControl_->setToolTip(
+        tr("The control the frame is written for: HEIDENHAIN datum shift and PLANE SPATIAL, SINUMERIK "
+           "TRANS and AROT, FANUC G68.2"));
+    frameDecimals_->setObjectName(QStringLiteral("frameDecimals"));
+    frameDecimals_->setRange(0, 12);
+    frameDecimals_->setValue(machine::FrameOptions{}.decimals);
+    frameDecimals_->setToolTip(tr("Decimals of the values in mm and ° (FANUC IS-B takes 3)"));
+    frameText_->setObjectName(QStringLiteral("frameText"));
+    frameText_->setReadOnly(true);
+    frameText_->setLineWrapMode(QPlainTextEdit::NoWrap);
+    frameText_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    frameText_->setToolTip(
+        tr("The blocks that set the frame; the saved program adds its frame and comments"));
+    saveFrame_->setObjectName(QStringLiteral("saveFrame"));
+    frameNote_->setObjectName(QStringLiteral("frameNote"));
+    frameNote_->setWordWrap(true);
+    frameNote_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // One group: the settings and Save in a row (the tab is low), the blocks and the note under it.
+    auto* group = new QGroupBox(tr("Controller frame"), frameTab_);
+    auto* controlLabel = new QLabel(tr("Contro&l:"), group);
+    controlLabel->setBuddy(frameControl_);
+    auto* decimalsLabel = new QLabel(tr("&Decimals:"), group);
+    decimalsLabel->setBuddy(frameDecimals_);
+    auto* row = new QHBoxLayout;
+    row->addWidget(controlLabel);
+    row->addWidget(frameControl_);
+    row->addSpacing(12);
+    row->addWidget(decimalsLabel);
+    row->addWidget(frameDecimals_);
+    row->addStretch(1);
+    row->addWidget(saveFrame_);
+    auto* body = new QHBoxLayout;
+    body->addWidget(frameText_, 3);
+    body->addWidget(frameNote_, 2, Qt::AlignTop);
+    auto* groupLayout = new QVBoxLayout(group);
+    groupLayout->setContentsMargins(6, 4, 6, 6);
+    groupLayout->addLayout(row);
+    groupLayout->addLayout(body, 1);
+    auto* frameLayout = new QVBoxLayout(frameTab_);
+    frameLayout->setContentsMargins(4, 4, 4, 4);
+    frameLayout->addWidget(group);
+  }
+
   tabs_->addTab(resultsTab, tr("Methods and &machine"));
   tabs_->addTab(curve_, tr("&Optimisation curve"));
   tabs_->addTab(remeasureTab, tr("Re&measure loop"));
   tabs_->addTab(table_, tr("&Points"));
+  tabs_->addTab(frameTab_, tr("&Controller frame"));
 
   content_->addWidget(views);
   content_->addWidget(tabs_);
@@ -482,6 +553,18 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
                       tr("Change the matching locks"), false);
     });
   }
+  connect(frameControl_, &QComboBox::currentIndexChanged, this, [this] {
+    fillFrame();
+    writeStudyValue(QStringLiteral("/frame"), machine::toString(frameFormat()),
+                    tr("Change the control of the frame"), false);
+  });
+  connect(frameDecimals_, &QSpinBox::valueChanged, this, [this] {
+    fillFrame();
+    writeStudyValue(QStringLiteral("/frame_decimals"), frameDecimals_->value(),
+                    tr("Change the decimals of the frame"), true);
+  });
+  connect(frameDecimals_, &QSpinBox::editingFinished, document_, &ProjectDocument::endEditSequence);
+  connect(saveFrame_, &QPushButton::clicked, this, &MatchingPage::saveFrameDialog);
   connect(runButton_, &QPushButton::clicked, this, &MatchingPage::startRun);
   connect(cancelButton_, &QPushButton::clicked, this, &MatchingPage::cancelRun);
   // The observer's progress of the method running now (rough, SADE, GA-simplex, minimax, remeasure).
@@ -635,7 +718,8 @@ void MatchingPage::showPoints(int comboIndex) {
     return;
   }
   try {
-    rawSet_ = readProbePointsAnyFormat(document_->datasetPath(dataset).toStdString(), 3, dataset.csv);
+    datasetFile_ = document_->datasetPath(dataset);
+    rawSet_ = readProbePointsAnyFormat(datasetFile_.toStdString(), 3, dataset.csv);
     set_ = matching::studyModelSet(*rawSet_, settings_.options, projectFile_.toStdString());
     const ProbePointSet& points = *set_;
     std::set<std::string> surfaces;
@@ -683,6 +767,7 @@ void MatchingPage::showPoints(int comboIndex) {
   machineLabel_->clear();
   updateViews();
   fillPointTable();
+  fillFrame();
 }
 
 matching::MatchingStudyOptions MatchingPage::currentOptions() const {
@@ -738,6 +823,36 @@ bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& 
     changed |= locks_[k]->isChecked() != locks.locked[k];
     locks_[k]->setChecked(locks.locked[k]);
   }
+  // The frame's control and decimals (no effect on the run: only the frame tab changes).
+  machine::FrameFormat format = machine::FrameFormat::Heidenhain;
+  int decimals = machine::FrameOptions{}.decimals;
+  const QString study = QString::fromLatin1(study::kMatching);
+  if (const nlohmann::json f = document_->studyValue(study, QStringLiteral("/frame")); !f.is_null()) {
+    try {
+      if (!f.is_string())
+        throw ValidationError(ErrorContext{{}, 0, 0, "studies.matching.frame"},
+                              "must be one of heidenhain, siemens, fanuc");
+      format = machine::parseFrameFormat(f.get<std::string>(), "studies.matching.frame");
+    } catch (const std::exception& e) {
+      settingsError_ = QString::fromUtf8(e.what());
+    }
+  }
+  if (const nlohmann::json n = document_->studyValue(study, QStringLiteral("/frame_decimals"));
+      !n.is_null()) {
+    if (n.is_number_integer() && n.get<long long>() >= 0 && n.get<long long>() <= 12)
+      decimals = n.get<int>();
+    else
+      settingsError_ =
+          QString::fromUtf8(ValidationError(ErrorContext{{}, 0, 0, "studies.matching.frame_decimals"},
+                                            "must be an integer in 0..12")
+                                .what());
+  }
+  {
+    const QSignalBlocker b1(frameControl_), b2(frameDecimals_);
+    frameControl_->setCurrentIndex(std::max(0, frameControl_->findData(static_cast<int>(format))));
+    frameDecimals_->setValue(decimals);
+  }
+  fillFrame();
   return changed;
 }
 
@@ -834,6 +949,7 @@ void MatchingPage::applyResult() {
   fillMachineTable();
   fillRemeasureTable();
   fillPointTable();
+  fillFrame();
   std::vector<std::pair<double, double>> optimum;
   curve_->clear();
   for (const matching::MatchResult& r : result_->runs) {
@@ -1075,6 +1191,109 @@ void MatchingPage::fillPointTable() {
   ColumnFitter::of(table_)->fit();
 }
 
+machine::FrameFormat MatchingPage::frameFormat() const {
+  return static_cast<machine::FrameFormat>(frameControl_->currentData().toInt());
+}
+
+void MatchingPage::setFrameFormat(machine::FrameFormat format) {
+  const int index = frameControl_->findData(static_cast<int>(format));
+  if (index >= 0) frameControl_->setCurrentIndex(index);
+}
+
+QString MatchingPage::frameText() const {
+  return frameText_->toPlainText();
+}
+
+void MatchingPage::fillFrame() {
+  frameText_->clear();
+  if (!result_) {
+    frameText_->setPlaceholderText(tr("No posture yet: press Run (Ctrl+R)."));
+    frameNote_->clear();
+    saveFrame_->setEnabled(false);
+    saveFrame_->setToolTip(tr("There is no posture to write yet: run the matching first (Ctrl+R)"));
+    return;
+  }
+  const matching::MatchResult& primary = result_->primaryRun();
+  QString note;
+  switch (frameFormat()) {
+    case machine::FrameFormat::Heidenhain:
+      note =
+          tr("Datum shift (CYCL DEF 7) to the origin t, then PLANE SPATIAL with R = Rz(SPC) Ry(SPB) "
+             "Rx(SPA) about the non-tilted axes; STAY: no axis moves. Call the saved program (CALL PGM) "
+             "once the part's preset is active.");
+      break;
+    case machine::FrameFormat::Siemens:
+      note =
+          tr("TRANS to the origin t on top of the active settable frame (G54 …), then AROT about Z, Y', "
+             "X'': R = Rz(Z) Ry(Y) Rx(X). The tool is not oriented: use CYCLE800 or TRAORI for that.");
+      break;
+    case machine::FrameFormat::Fanuc:
+      note =
+          tr("G68.2 with the origin t and the Euler angles R = Rz(I) Rx(J) Rz(K), cancelled with G69. "
+             "G53.1 is not written: it moves the rotary axes, program it at a safe position.");
+      break;
+  }
+  note = tr("Posture of %1 as a controller frame (mm, °).").arg(methodShort(primary.method)) +
+         QLatin1Char(' ') + note;
+  if (std::abs(primary.pose.scale - 1.0) > 1e-12)
+    note += QLatin1Char(' ') + tr("The fitted scale %1 is not applied: no control frame scales.")
+                                   .arg(QLocale().toString(primary.pose.scale, 'f', 7));
+  try {
+    QStringList lines;
+    for (const std::string& b : machine::controllerFrameBlocks(
+             primary.pose.rotation, primary.pose.translation, frameFormat(), frameDecimals_->value()))
+      lines << QString::fromStdString(b);
+    frameText_->setPlainText(lines.join(QLatin1Char('\n')));
+    saveFrame_->setEnabled(true);
+    saveFrame_->setToolTip(
+        tr("Write the frame program for the control to a file (as metrofit-cli match --frame does)"));
+  } catch (const std::exception& e) {
+    note = tr("Cannot write the posture as a frame: %1").arg(QString::fromUtf8(e.what()));
+    saveFrame_->setEnabled(false);
+    saveFrame_->setToolTip(note);
+  }
+  frameNote_->setText(note);
+}
+
+bool MatchingPage::saveFrame(const QString& path, QString* error) const {
+  if (!result_) {
+    if (error) *error = tr("There is no posture to write yet: run the matching first.");
+    return false;
+  }
+  try {
+    const matching::MatchResult& primary = result_->primaryRun();
+    machine::FrameOptions fo;
+    fo.decimals = frameDecimals_->value();
+    fo.title = datasetFile_.toStdString();
+    fo.programName = machine::frameProgramName(path.toStdString());
+    writeFileAtomic(
+        path.toStdString(),
+        machine::writeControllerFrame(primary.pose.rotation, primary.pose.translation, frameFormat(), fo));
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
+  return true;
+}
+
+void MatchingPage::saveFrameDialog() {
+  const machine::FrameFormat format = frameFormat();
+  const QString suffix = format == machine::FrameFormat::Heidenhain ? QStringLiteral(".h")
+                         : format == machine::FrameFormat::Siemens  ? QStringLiteral(".spf")
+                                                                    : QStringLiteral(".nc");
+  const QString filter = format == machine::FrameFormat::Heidenhain ? tr("HEIDENHAIN programs (*.h)")
+                         : format == machine::FrameFormat::Siemens  ? tr("SINUMERIK subprograms (*.spf)")
+                                                                    : tr("FANUC programs (*.nc)");
+  const QString dir =
+      document_->fileName().isEmpty() ? QString() : QFileInfo(document_->fileName()).absolutePath();
+  const QString start = QDir(dir).filePath(QStringLiteral("POSTURE_FRAME") + suffix);
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save the controller frame"), start,
+                                                    filter + QStringLiteral(";;") + tr("All files (*)"));
+  if (path.isEmpty()) return;
+  QString error;
+  if (!saveFrame(path, &error)) QMessageBox::critical(this, tr("Cannot save the frame"), error);
+}
+
 void MatchingPage::showView(const QString& view) {
   if (set_ && !result_) runNow();
   if (view == QLatin1String("convergence") || view == QLatin1String("curve")) {
@@ -1083,6 +1302,8 @@ void MatchingPage::showView(const QString& view) {
     tabs_->setCurrentIndex(2);
   } else if (view == QLatin1String("points")) {
     tabs_->setCurrentWidget(table_);
+  } else if (view == QLatin1String("frame")) {
+    tabs_->setCurrentWidget(frameTab_);
   } else {  // "3d", "matching", "results", "machine"
     tabs_->setCurrentIndex(0);
   }

@@ -4,6 +4,10 @@
 // two linked 3D views before and after matching side by side, the optimisation curve of SADE and
 // GA-simplex, one table of rough / SADE / GA-simplex / closed-form / minimax, the machine adjustment
 // values for the study's machine, the remeasure loop's rounds and the points with their deviations.
+// The "Controller frame" tab shows the same posture as a frame of the control (HEIDENHAIN datum shift +
+// PLANE SPATIAL, SINUMERIK TRANS + AROT, FANUC G68.2; core/machine/controller_frame.h): its blocks, and
+// "Save frame…" writes the whole program as `metrofit-cli match --frame ... --frame-out` does. The
+// control and the decimals are study settings (studies.matching.frame, .frame_decimals; undoable).
 //
 // A run computes every method (core/study/matching_study.h) in a worker thread; the method selector picks
 // the posture shown "after" and used for the machine adjustment. Settings come from the project's
@@ -19,6 +23,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/machine/controller_frame.h"
 #include "core/matching/probe_points.h"
 #include "core/project/project.h"
 #include "core/study/matching_study.h"
@@ -29,7 +34,9 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
+class QPlainTextEdit;
 class QPushButton;
+class QSpinBox;
 class QSplitter;
 class QStackedWidget;
 class QTabWidget;
@@ -66,6 +73,21 @@ class MatchingPage : public QWidget {
   const std::optional<matching::MatchingStudyResult>& result() const { return result_; }
   bool isRunning() const;
 
+  /// The controller frame of the shown result (tab "Controller frame").
+  QComboBox* frameControlCombo() const { return frameControl_; }
+  QSpinBox* frameDecimalsSpin() const { return frameDecimals_; }
+  QPlainTextEdit* frameTextBox() const { return frameText_; }
+  QPushButton* saveFrameButton() const { return saveFrame_; }
+  machine::FrameFormat frameFormat() const;
+  void setFrameFormat(machine::FrameFormat format);
+  /// The frame's blocks (controllerFrameBlocks) of the primary method's posture, one per line; empty
+  /// without a result.
+  QString frameText() const;
+  /// Writes the frame program of the primary posture to `path` (atomically) as `metrofit-cli match
+  /// --frame F --frame-out path --frame-decimals N --data <dataset file>` does. False with the message
+  /// in *error (no result, or core's message).
+  bool saveFrame(const QString& path, QString* error = nullptr) const;
+
   /// Settings (also through the controls).
   void setMethod(matching::MatchMethod method);
   void setTolerance(double toleranceMm);
@@ -80,7 +102,7 @@ class MatchingPage : public QWidget {
   void cancelRun();
 
   /// Switches to a view with results on it for the demo: "3d" (before / after), "convergence",
-  /// "results", "machine", "remeasure", "points". Runs the study synchronously first if needed.
+  /// "results", "machine", "remeasure", "points", "frame". Runs the study synchronously first if needed.
   Q_INVOKABLE void showView(const QString& view);
 
  signals:
@@ -104,6 +126,8 @@ class MatchingPage : public QWidget {
   void fillMachineTable();
   void fillRemeasureTable();
   void fillPointTable();
+  void fillFrame();
+  void saveFrameDialog();
   void reevaluate();
   void setRunning(bool running);
 
@@ -130,6 +154,13 @@ class MatchingPage : public QWidget {
   QLabel* remeasureLabel_;
   MatchingCurveView* curve_;
   QTableWidget* table_;
+  QComboBox* frameControl_;
+  QSpinBox* frameDecimals_;
+  QPlainTextEdit* frameText_;
+  QPushButton* saveFrame_;
+  QLabel* frameNote_;
+  QWidget* frameTab_;
+  QString datasetFile_;  ///< the shown probe points' file (the frame program's title)
   QLabel* message_;
   QString error_;
   /// Why studies.matching cannot be read (the page then uses the defaults and says so); empty when valid.

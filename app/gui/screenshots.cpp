@@ -113,6 +113,7 @@ int runScreenshots(const QString& outDir, QTextStream& err) {
       {QStringLiteral("setup-graph"), pageView(Page::Setup, QStringLiteral("graph"))},
       {QStringLiteral("setup-convergence"), pageView(Page::Setup, QStringLiteral("convergence"))},
       {QStringLiteral("matching-3d"), pageView(Page::Matching, QStringLiteral("3d"))},
+      {QStringLiteral("matching-frame"), pageView(Page::Matching, QStringLiteral("frame"))},
       {QStringLiteral("kinematics-path"), pageView(Page::Kinematics, QStringLiteral("path"))},
       {QStringLiteral("kinematics-spc"), pageView(Page::Kinematics, QStringLiteral("spc"))},
       {QStringLiteral("thermal-trend"), pageView(Page::Thermal, QStringLiteral("trend"))},

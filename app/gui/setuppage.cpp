@@ -384,6 +384,8 @@ void SetupPage::reload() {
   editor_->setModel(model);
   validation_->setModel(model);
   validation_->setMeasurements(d->measModel, d->rawMeasurements ? &*d->rawMeasurements : nullptr);
+  results_->setMeasurements(d->measModel, d->rawMeasurements ? &*d->rawMeasurements : nullptr,
+                            QString::fromStdString(d->files.modelPath));
   convergence_->clearRuns();
 }
 
@@ -448,6 +450,8 @@ void SetupPage::onModelEdited() {
   results_->clear(tr("No result for this model yet: choose a method and press Run (Ctrl+R)."));
   validation_->setModel(editor_->model());
   validation_->setMeasurements(d->measModel, d->rawMeasurements ? &*d->rawMeasurements : nullptr);
+  results_->setMeasurements(d->measModel, d->rawMeasurements ? &*d->rawMeasurements : nullptr,
+                            QString::fromStdString(d->files.modelPath));
   error_.clear();
   if (!d->dataError.isEmpty()) {
     error_ = d->dataError;
@@ -700,6 +704,8 @@ bool SetupPage::saveModel(QString* error) {
       d->measModel = saved;
       d->dataError.clear();
       applyEffects();
+      results_->setMeasurements(d->measModel, &*d->rawMeasurements,
+                                QString::fromStdString(d->files.modelPath));
     } catch (const std::exception& e) {
       error_ = tr("The model was saved, but the CMM report does not match it any more (the runs use the "
                   "report as read against the previous model): %1")

@@ -4,8 +4,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "core/common/error.h"
+#include "core/io/csv.h"
 
 namespace metrofit {
 namespace {
@@ -100,6 +102,47 @@ std::string writeDfq(const DfqPart& part) {
     }
   }
   return out;
+}
+
+std::string dfqColumnUnit(const std::string& column) {
+  const auto pos = column.rfind('_');
+  if (pos == std::string::npos) return {};
+  const std::string u = column.substr(pos + 1);
+  for (const char* known : {"mm", "um", "deg", "s", "min", "h", "ppm"}) {
+    if (u == known) return u;
+  }
+  return {};
+}
+
+DfqPart seriesDfqPart(const CsvTable& table, const std::string& column, const std::vector<double>& values,
+                      std::optional<double> nominal, std::optional<double> lowerLimit,
+                      std::optional<double> upperLimit, const std::string& dataPath,
+                      const std::string& partNumber, const std::string& source) {
+  DfqPart part;
+  const std::string file = std::filesystem::path(dataPath).filename().string();
+  part.number = partNumber.empty() ? std::filesystem::path(dataPath).stem().string() : partNumber;
+  part.description = "Metrofit SPC series " + column + " of " + file;
+  DfqCharacteristic c;
+  c.number = column;
+  c.description = column + " (" + file + ")";
+  c.nominal = nominal;
+  c.lowerLimit = lowerLimit;
+  c.upperLimit = upperLimit;
+  c.unit = dfqColumnUnit(column);
+  c.values = values;
+  if (const int t = table.columnIndex("timestamp"); t >= 0) {
+    for (std::size_t r = 0; r < table.rowCount(); ++r) {
+      const std::string& cell = table.cell(r, static_cast<std::size_t>(t));
+      const std::optional<std::string> q = qdasDateTime(cell);
+      if (!q) {
+        throw ParseError(ErrorContext{source, table.lineOf(r), t + 1, "timestamp"},
+                         "'" + cell + "' is not a date-time YYYY-MM-DDTHH:MM[:SS]");
+      }
+      c.times.push_back(*q);
+    }
+  }
+  part.characteristics.push_back(std::move(c));
+  return part;
 }
 
 }  // namespace metrofit

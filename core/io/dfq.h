@@ -23,6 +23,8 @@
 
 namespace metrofit {
 
+class CsvTable;
+
 struct DfqCharacteristic {
   std::string number;                                     ///< K2001
   std::string description;                                ///< K2002
@@ -45,5 +47,19 @@ std::string writeDfq(const DfqPart& part);
 /// An ISO 8601 date-time "YYYY-MM-DDTHH:MM:SS" (or with a space for T; seconds optional) as Q-DAS writes
 /// it, "DD.MM.YYYY/HH:MM:SS"; nullopt when `iso` is not such a date-time.
 std::optional<std::string> qdasDateTime(const std::string& iso);
+
+/// The unit of a column from its name's suffix ("diameter_mm" -> "mm"; one of mm, um, deg, s, min, h,
+/// ppm), ASCII; empty when the name has none.
+std::string dfqColumnUnit(const std::string& column);
+
+/// One measured feature series as a DFQ part, as `spc --dfq` writes it: one characteristic `column`
+/// with `nominal`, the limits and the unit of its name (dfqColumnUnit), `values` in row order, and the
+/// times from the table's `timestamp` column when it has one. `dataPath` is the file the table was read
+/// from (its name goes into the descriptions), `partNumber` K1001 (empty: the file's name without its
+/// extension). ParseError naming `source`, the line and "timestamp" for a time that is not a date-time.
+DfqPart seriesDfqPart(const CsvTable& table, const std::string& column, const std::vector<double>& values,
+                      std::optional<double> nominal, std::optional<double> lowerLimit,
+                      std::optional<double> upperLimit, const std::string& dataPath,
+                      const std::string& partNumber = {}, const std::string& source = {});
 
 }  // namespace metrofit

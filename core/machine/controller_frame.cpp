@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include <Eigen/LU>
 
@@ -110,6 +111,13 @@ bool FrameOptions::isValid(std::string* why) const {
     return false;
   }
   return fanucProgramNumberOk(programNumber, why);
+}
+
+std::string frameProgramName(const std::string& file) {
+  std::string stem = std::filesystem::path(file).stem().string();
+  for (char& c : stem)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
+  return stem.empty() ? FrameOptions{}.programName : stem.substr(0, 32);
 }
 
 namespace {

@@ -73,6 +73,12 @@ struct FrameOptions {
   bool isValid(std::string* why) const;
 };
 
+/// The HEIDENHAIN program name of a frame written to `file` (the control lists a program under its file
+/// name): the file's name without its extension, every character other than a letter, digit, '_' or '-'
+/// replaced by '_', cut to 32 characters; FrameOptions{}.programName when nothing is left. The CLI
+/// (match --frame-out) and the GUI's "Save frame" name the program so.
+std::string frameProgramName(const std::string& file);
+
 /// The frame for posture (R, t) in the control's language (see above). ValidationError when R is not
 /// a rotation or a value is not finite.
 /// Only the blocks that set the frame (no program frame, comments or block numbers), as written by

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.h"
+#include "cli/dfq_fields.h"
 #include "core/io/csv.h"
 #include "core/io/json_util.h"
 #include "core/kinematics/cartesian_model.h"
@@ -492,37 +493,8 @@ std::string edgeCsv(char axis, double ox, double oy, double aDeg, double bDeg, i
   return csv;
 }
 
-/// The fields of a Q-DAS DFQ file, read by the AQDEF K-field rule (docs/file-formats.md#q-das-dfq-export;
-/// pypi.org/project/aqdefreader, pypi.org/project/qdas-parser): "Kxxxx[/i] value" per line; values
-/// K0001/i and times K0004/i collected per characteristic i, every other field keyed "Kxxxx/i".
-struct DfqFields {
-  std::map<std::string, std::string> fields;
-  std::map<int, std::vector<double>> values;
-  std::map<int, std::vector<std::string>> times;
-};
-
-DfqFields readDfq(const std::string& text) {
-  DfqFields d;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    EXPECT_FALSE(line.empty());
-    EXPECT_EQ(line.back(), '\r');  // CR LF
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const auto space = line.find(' ');
-    const std::string key = line.substr(0, space), value = line.substr(space + 1);
-    const auto slash = key.find('/');
-    const int index = slash == std::string::npos ? 0 : std::stoi(key.substr(slash + 1));
-    if (key.rfind("K0001/", 0) == 0) {
-      d.values[index].push_back(std::stod(value));
-    } else if (key.rfind("K0004/", 0) == 0) {
-      d.times[index].push_back(value);
-    } else {
-      d.fields[key] = value;
-    }
-  }
-  return d;
-}
+using test::DfqFields;
+using test::readDfq;
 
 TEST(KinematicCli, SpcAndFromSpcWriteQdasDfq) {
   test::TempDir tmp;

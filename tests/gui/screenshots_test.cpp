@@ -100,10 +100,10 @@ QStringList expectedShots() {
   QStringList names = {
       QStringLiteral("overview"),           QStringLiteral("setup-graph"),
       QStringLiteral("setup-convergence"),  QStringLiteral("matching-3d"),
-      QStringLiteral("kinematics-path"),    QStringLiteral("kinematics-spc"),
-      QStringLiteral("thermal-trend"),      QStringLiteral("thermal-hysteresis"),
-      QStringLiteral("thermal-models"),     QStringLiteral("diagnosis"),
-      QStringLiteral("diagnosis-residual"),
+      QStringLiteral("matching-frame"),     QStringLiteral("kinematics-path"),
+      QStringLiteral("kinematics-spc"),     QStringLiteral("thermal-trend"),
+      QStringLiteral("thermal-hysteresis"), QStringLiteral("thermal-models"),
+      QStringLiteral("diagnosis"),          QStringLiteral("diagnosis-residual"),
   };
   const metrofit::Project demo =
       metrofit::loadProject((metrofit::test::sourceDir() / "resources/demo/demo.metrofit").string());
@@ -128,7 +128,7 @@ TEST(ScreenshotsTest, WritesOneNonBlankPngPerView) {
   const QStringList written = QDir(dir).entryList({QStringLiteral("*.png")}, QDir::Files, QDir::Name);
   const QStringList expected = expectedShots();
   EXPECT_EQ(written, expected);
-  EXPECT_TRUE(expected.contains(QStringLiteral("12-thermal-trend-thermal_caiviac.png")));
+  EXPECT_TRUE(expected.contains(QStringLiteral("13-thermal-trend-thermal_caiviac.png")));
   for (const QString& name : expected) {
     SCOPED_TRACE(name.toStdString());
     const QImage image(QDir(dir).filePath(name));

@@ -1,6 +1,9 @@
 #include "widgets/setup/setupresultsview.h"
 
+#include <QComboBox>
+#include <QDir>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -14,7 +17,9 @@
 #include <QVBoxLayout>
 #include <exception>
 
+#include "core/io/dfq.h"
 #include "core/io/file_io.h"
+#include "core/setup/measurements_dfq.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/setup/setupcharts.h"
 #include "widgets/setup/setupmargins.h"
@@ -46,7 +51,9 @@ SetupResultsView::SetupResultsView(QWidget* parent)
       summary_(new QLabel(this)),
       table_(new QTableWidget(this)),
       margins_(new SetupMarginsWidget(this)),
-      parts_(new QLabel(this)) {
+      parts_(new QLabel(this)),
+      toolOffset_(new QComboBox(this)),
+      dfqButton_(new QPushButton(tr("Export Q-DAS &DFQ…"), this)) {
   summary_->setObjectName(QStringLiteral("setupResultSummary"));
   summary_->setWordWrap(true);
   summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -83,7 +90,35 @@ SetupResultsView::SetupResultsView(QWidget* parent)
     exports->addWidget(button);
     exportButtons_ << button;
   }
+  auto* table = new QPushButton(tr("Update HEIDENHAIN &table…"), this);
+  table->setObjectName(QStringLiteral("export_heidenhain_table"));
+  table->setToolTip(
+      tr("Add the corrections to the control's current preset table (.PR) or tool table (.T), saved from the "
+         "control, and write the result to a new file for import; the rows are the registers of the model"));
+  table->setEnabled(false);
+  connect(table, &QPushButton::clicked, this, &SetupResultsView::tableDialog);
+  exportButtons_ << table;
+  auto* toolLabel = new QLabel(tr("Tool re&gister:"), this);
+  toolLabel->setBuddy(toolOffset_);
+  toolOffset_->setObjectName(QStringLiteral("exportToolOffset"));
+  toolOffset_->addItem(tr("wear (DL)"), static_cast<int>(setup::ToolOffset::Wear));
+  toolOffset_->addItem(tr("geometry (L)"), static_cast<int>(setup::ToolOffset::Geometry));
+  toolOffset_->setToolTip(
+      tr("The register the tool-length corrections go to in every export: the wear "
+         "(DL, Fanuc H wear) or the geometry (L)"));
+  exports->addSpacing(8);
+  exports->addWidget(toolLabel);
+  exports->addWidget(toolOffset_);
   exports->addStretch(1);
+  // A second row: the page must fit 1280 px in German and Polish too.
+  auto* more = new QHBoxLayout;
+  more->addWidget(table);
+  more->addStretch(1);
+  dfqButton_->setObjectName(QStringLiteral("export_dfq"));
+  dfqButton_->setEnabled(false);
+  dfqButton_->setToolTip(tr("There is no measurement report to export"));
+  connect(dfqButton_, &QPushButton::clicked, this, &SetupResultsView::dfqDialog);
+  more->addWidget(dfqButton_);
 
   auto* left = new QWidget(this);
   auto* leftLayout = new QVBoxLayout(left);
@@ -109,6 +144,7 @@ SetupResultsView::SetupResultsView(QWidget* parent)
   layout->addWidget(summary_);
   layout->addWidget(splitter, 1);
   layout->addLayout(exports);
+  layout->addLayout(more);
   clear(tr("No result yet: choose a method and press Run (Ctrl+R)."));
 }
 
@@ -213,7 +249,9 @@ bool SetupResultsView::exportTo(setup::ControllerFormat format, const QString& p
     return false;
   }
   try {
-    const std::string text = setup::exportCorrections(model_, result_->x, format);
+    setup::ExportOptions options;
+    options.toolOffset = toolOffset();
+    const std::string text = setup::exportCorrections(model_, result_->x, format, options);
     writeFileAtomic(path.toStdString(), text);
   } catch (const std::exception& e) {
     if (error) *error = QString::fromStdString(e.what());
@@ -234,6 +272,111 @@ void SetupResultsView::exportDialog(setup::ControllerFormat format) {
   QString error;
   if (!exportTo(format, path, &error))
     QMessageBox::critical(this, tr("Cannot export the corrections"), error);
+}
+
+setup::ToolOffset SetupResultsView::toolOffset() const {
+  return static_cast<setup::ToolOffset>(toolOffset_->currentData().toInt());
+}
+
+void SetupResultsView::setToolOffset(setup::ToolOffset offset) {
+  toolOffset_->setCurrentIndex(std::max(0, toolOffset_->findData(static_cast<int>(offset))));
+}
+
+bool SetupResultsView::updateHeidenhainTable(const QString& tablePath, const QString& outPath, QString* error,
+                                             setup::TableUpdate* update) const {
+  if (!result_) {
+    if (error) *error = tr("There are no corrections to export yet.");
+    return false;
+  }
+  const QFileInfo in(tablePath), out(outPath);
+  if (in.absoluteFilePath() == out.absoluteFilePath() ||
+      (out.exists() && in.canonicalFilePath() == out.canonicalFilePath())) {
+    if (error)
+      *error = tr("The updated table must go to a new file: %1 is the table read from the control.")
+                   .arg(QDir::toNativeSeparators(outPath));
+    return false;
+  }
+  try {
+    setup::ExportOptions options;
+    options.toolOffset = toolOffset();
+    const std::string source = tablePath.toStdString();
+    const setup::TableUpdate u =
+        setup::updateHeidenhainTable(model_, result_->x, readFile(source), source, options);
+    writeFileAtomic(outPath.toStdString(), u.text);
+    if (update) *update = u;
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
+  return true;
+}
+
+void SetupResultsView::tableDialog() {
+  const QString table = QFileDialog::getOpenFileName(
+      this, tr("The control's current table (saved from the control)"), QString(),
+      tr("HEIDENHAIN preset and tool tables (*.PR *.pr *.T *.t);;All files (*)"));
+  if (table.isEmpty()) return;
+  const QFileInfo in(table);
+  const QString proposal =
+      in.dir().filePath(in.completeBaseName() + QStringLiteral("_corrected.") + in.suffix());
+  const QString out = QFileDialog::getSaveFileName(this, tr("Write the updated table to"), proposal);
+  if (out.isEmpty()) return;
+  QString error;
+  setup::TableUpdate update;
+  if (!updateHeidenhainTable(table, out, &error, &update)) {
+    QMessageBox::critical(this, tr("Cannot update the HEIDENHAIN table"), error);
+    return;
+  }
+  QStringList written, skipped;
+  for (const std::string& id : update.written) written << QString::fromStdString(id);
+  for (const std::string& id : update.notWritten) skipped << QString::fromStdString(id);
+  QString text = tr("%1 written to %2. Cells updated: %3.")
+                     .arg(QString::fromStdString(update.table), QDir::toNativeSeparators(out),
+                          written.isEmpty() ? tr("none") : written.join(QStringLiteral(", ")));
+  if (!skipped.isEmpty())
+    text += QLatin1Char(' ') + tr("Not in this table: %1.").arg(skipped.join(QStringLiteral(", ")));
+  text += QLatin1Char(' ') + tr("Import it with no NC program running, then activate the preset again or "
+                                "call the tool again.");
+  QMessageBox::information(this, tr("HEIDENHAIN table updated"), text);
+}
+
+void SetupResultsView::setMeasurements(const setup::Model& model, const setup::Measurements* measurements,
+                                       const QString& modelFile) {
+  measModel_ = model;
+  modelFile_ = modelFile;
+  if (measurements)
+    measurements_ = *measurements;
+  else
+    measurements_.reset();
+  dfqButton_->setEnabled(measurements_.has_value());
+  dfqButton_->setToolTip(measurements_ ? tr("Write the measured features of the report as a Q-DAS DFQ file "
+                                            "(one characteristic per measured dimension)")
+                                       : tr("There is no measurement report to export"));
+}
+
+bool SetupResultsView::exportDfq(const QString& path, QString* error) const {
+  if (!measurements_) {
+    if (error) *error = tr("There is no measurement report to export.");
+    return false;
+  }
+  try {
+    const std::string part = QFileInfo(modelFile_).completeBaseName().toStdString();
+    writeFileAtomic(path.toStdString(),
+                    writeDfq(setup::measurementsDfqPart(measModel_, *measurements_, part)));
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
+  return true;
+}
+
+void SetupResultsView::dfqDialog() {
+  const QString name = QFileInfo(modelFile_).completeBaseName() + QStringLiteral(".dfq");
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export Q-DAS DFQ"), name,
+                                                    tr("Q-DAS DFQ files (*.dfq);;All files (*)"));
+  if (path.isEmpty()) return;
+  QString error;
+  if (!exportDfq(path, &error)) QMessageBox::critical(this, tr("Cannot export the DFQ file"), error);
 }
 
 }  // namespace metrofit

@@ -4,7 +4,6 @@
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
-#include <QFutureWatcher>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -15,15 +14,18 @@
 #include <QStackedWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
+#include <optional>
+#include <utility>
 
 #include "core/thermal/hysteresis.h"
 #include "core/thermal/thermal_data.h"
 #include "core/thermal/thermal_log.h"
+#include "widgets/common/backgroundrun.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/thermal/thermalcharts.h"
@@ -73,9 +75,12 @@ struct ThermalHysteresisView::Impl {
   QTableWidget* table = nullptr;
   QLabel* phases = nullptr;
   int charts = 0;
-  QFutureWatcher<Analysis>* watcher = nullptr;
+  BackgroundRun<Analysis>* run = nullptr;
+  /// The latest request while an older one still runs (the analysis cannot stop midway): started when
+  /// that one ends, whose result is then dropped.
+  std::optional<BackgroundRun<Analysis>::Job> queued;
   int generation = 0;    ///< the latest request; older results are dropped
-  bool pending = false;  ///< the watcher runs the latest request
+  bool pending = false;  ///< the latest request runs or waits in `queued`
 
   QChartView* chartView(QChart* chart, QWidget* parent, int minHeight) {
     auto* view = new QChartView(chart, parent);
@@ -262,11 +267,26 @@ ThermalHysteresisView::ThermalHysteresisView(QWidget* parent) : QWidget(parent),
 
   connect(d->combo, &QComboBox::currentIndexChanged, this,
           [this](int) { setSensor(d->combo->currentData().toString()); });
-  d->watcher = new QFutureWatcher<Analysis>(this);
-  connect(d->watcher, &QFutureWatcher<Analysis>::finished, this, [this] {
-    if (!d->pending || d->watcher->future().resultCount() == 0) return;
-    const Analysis& a = d->watcher->result();
-    if (a.generation != d->generation) return;  // replaced by a later request meanwhile
+  d->run = new BackgroundRun<Analysis>(this);
+  connect(d->run, &BackgroundRunBase::finished, this, [this] {
+    const std::optional<Analysis> a = d->run->takeResult();
+    if (d->queued) {  // a later request waited for this one: its result is not shown
+      d->run->start(*std::exchange(d->queued, std::nullopt));
+      return;
+    }
+    if (!d->pending || !a || a->generation != d->generation) return;  // replaced by setLog meanwhile
+    emit analysisFinished(d->apply(*a));
+  });
+  // analyse() catches what the core throws; anything else is shown as the analysis' error.
+  connect(d->run, &BackgroundRunBase::failed, this, [this](const QString& message) {
+    if (d->queued) {
+      d->run->start(*std::exchange(d->queued, std::nullopt));
+      return;
+    }
+    if (!d->pending) return;
+    Analysis a;
+    a.generation = d->generation;
+    a.error = message;
     emit analysisFinished(d->apply(a));
   });
   connect(d->table, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
@@ -276,11 +296,14 @@ ThermalHysteresisView::ThermalHysteresisView(QWidget* parent) : QWidget(parent),
 }
 
 ThermalHysteresisView::~ThermalHysteresisView() {
-  d->watcher->waitForFinished();
+  d->queued.reset();
+  d->run->disconnect(this);
+  d->run->waitForWorker();
 }
 
 bool ThermalHysteresisView::setLog(const ThermalLog& log, const std::string& target,
                                    const std::vector<std::string>& inputs) {
+  d->queued.reset();  // a running analysis ends unseen (its generation is old)
   return d->apply(analyse(++d->generation, log, target, inputs));
 }
 
@@ -293,20 +316,24 @@ void ThermalHysteresisView::analyseLater(const ThermalLog& log, const std::strin
   d->table->setRowCount(0);
   d->phases->clear();
   d->charts = 0;
-  d->watcher->setFuture(QtConcurrent::run(
-      [generation, log, target, inputs] { return analyse(generation, log, target, inputs); }));
+  BackgroundRun<Analysis>::Job job = [generation, log, target, inputs](RunObserver&) {
+    return analyse(generation, log, target, inputs);
+  };
+  if (d->run->isRunning())
+    d->queued = std::move(job);
+  else
+    d->run->start(std::move(job));
 }
 
 bool ThermalHysteresisView::isAnalysing() const {
-  return d->watcher->isRunning();
+  return d->run->isRunning();
 }
 
 bool ThermalHysteresisView::finishAnalysis() {
   if (!d->pending) return d->error.isEmpty();
-  d->watcher->waitForFinished();
-  const bool ok = d->apply(d->watcher->result());
-  emit analysisFinished(ok);
-  return ok;
+  // Each wait ends a run now (its signal shows the result, or starts the queued request).
+  while (d->run->isRunning()) d->run->waitForFinished();
+  return d->error.isEmpty();
 }
 
 void ThermalHysteresisView::setSensor(const QString& sensor) {

@@ -247,6 +247,23 @@ TEST(ControllerFrame, BlocksAreTheProgramsCommandBlocks) {
   EXPECT_THROW((void)controllerFrameBlocks(bad, t, FrameFormat::Fanuc), ValidationError);
 }
 
+// The TNC lists a program under its file name (BEGIN PGM <name>): the name of the file the frame goes
+// to, made a valid program name (letters, digits, '_', '-'; at most 32), as the CLI and the GUI write it.
+TEST(ControllerFrame, ProgramNameIsTheFileNameMadeValid) {
+  EXPECT_EQ(frameProgramName("/tmp/out/POSTURE.h"), "POSTURE");
+  EXPECT_EQ(frameProgramName("cell 3/my frame.v2.H"), "my_frame_v2");
+  EXPECT_EQ(frameProgramName("FRAME-7"), "FRAME-7");
+  EXPECT_EQ(frameProgramName(std::string(40, 'A') + ".h"), std::string(32, 'A'));
+  EXPECT_EQ(frameProgramName("Lage\xc3\xa4.h"), "Lage__");  // UTF-8 bytes are no TNC name characters
+  EXPECT_EQ(frameProgramName(""), FrameOptions{}.programName);
+  for (const char* file : {"/tmp/out/POSTURE.h", "cell 3/my frame.v2.H", "x y z.h", "\xc3\xa4\xc3\xb6.h"}) {
+    FrameOptions o;
+    o.programName = frameProgramName(file);
+    std::string why;
+    EXPECT_TRUE(o.isValid(&why)) << file << ": " << why;
+  }
+}
+
 TEST(ControllerFrame, Errors) {
   Eigen::Matrix3d notRotation = Eigen::Matrix3d::Identity();
   notRotation(0, 0) = -1.0;  // a reflection
