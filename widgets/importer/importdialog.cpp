@@ -162,7 +162,7 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
       decimal_(new QComboBox(this)),
       headerLines_(new QSpinBox(this)),
       comment_(new QLineEdit(this)),
-      skipBadRows_(new QCheckBox(tr("S&kip unreadable rows"), this)),
+      skipBadRows_(new QCheckBox(tr("Skip &unreadable rows"), this)),
       dmisBox_(new QGroupBox(tr("DMIS tolerance actuals"), this)),
       taMeaning_(new QComboBox(this)),
       taSign_(new QComboBox(this)),
