@@ -300,7 +300,7 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   layout->addWidget(embed_);
   layout->addWidget(problemLabel_);
   layout->addWidget(buttons_);
-  resize(1000, 640);
+  resize(1000, 680);
 
   connect(browse, &QPushButton::clicked, this, &ImportDialog::browse);
   connect(buttons_, &QDialogButtonBox::accepted, this, [this] { importNow(); });
@@ -808,6 +808,9 @@ void ImportDialog::revalidate() {
     ready += QLatin1Char(' ') + tr("The file is copied to %1.")
                                     .arg(QString::fromStdString(embeddedDatasetPath(
                                         dataset_.id, file_.toStdString(), dataset_.kind)));
+  // The list of unreadable rows takes room from the preview only when it has something to say.
+  rowProblems_->setVisible(rowProblems_->count() > 0);
+  problemsTitle->setVisible(rowProblems_->count() > 0);
   problemLabel_->setText(problem_.isEmpty() ? ready : problem_);
   problemLabel_->setStyleSheet(problem_.isEmpty() ? QString() : QStringLiteral("color: #b00020;"));
   buttons_->button(QDialogButtonBox::Ok)->setEnabled(problem_.isEmpty());
