@@ -741,6 +741,11 @@ TEST_F(ImportDialogTest, HeaderOverrideAndEveryUnreadableRowIsListed) {
   auto* preview = dialog.findChild<QTableWidget*>(QStringLiteral("importPreview"));
   EXPECT_EQ(preview->rowCount(), 3);
   EXPECT_EQ(preview->item(2, 0)->text(), QStringLiteral("40"));
+  // A picture of the dialog in this state, to look at (the list under the preview, the problem line).
+  dialog.show();
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);  // replaced mapping widgets
+  QApplication::processEvents();
+  dialog.grab().save(QString::fromStdString((test::outDir() / "import_dialog_unreadable_rows.png").string()));
   dialog.setSkipBadRows(true);
   ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
   EXPECT_TRUE(

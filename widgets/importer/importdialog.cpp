@@ -283,6 +283,7 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   previewLayout->addWidget(preview_, 1);
   auto* problemsTitle = new QLabel(tr("Rows that cannot be read:"), previewBox);
   problemsTitle->setObjectName(QStringLiteral("importRowProblemsTitle"));
+  problemsTitle->setWordWrap(true);  // its hint must not widen the preview at the mapping's cost
   previewLayout->addWidget(problemsTitle);
   previewLayout->addWidget(rowProblems_);
   auto* splitter = new QSplitter(Qt::Horizontal, this);
