@@ -816,7 +816,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+51"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+57"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>Komma ( , )</translation>
@@ -834,11 +834,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     <message>
         <location line="+2"/>
         <location line="+11"/>
+        <location line="+114"/>
         <source>detect</source>
         <translation>erkennen</translation>
     </message>
     <message>
-        <location line="-4"/>
+        <location line="-118"/>
         <source>point ( . )</source>
         <translation>Punkt ( . )</translation>
     </message>
@@ -986,13 +987,68 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Temperatur in °C (eine Eingangsgröße)</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <location line="+160"/>
+        <location line="+18"/>
+        <source>Skip &amp;unreadable rows</source>
+        <translation>Nicht &amp;lesbare Zeilen überspringen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DMIS tolerance actuals</source>
+        <translation>DMIS-Toleranz-Istwerte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cop&amp;y the file into the project (data folder)</source>
+        <translation>Datei in das Projekt kop&amp;ieren (Ordner data)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+223"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-210"/>
+        <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
+        <translation>Zeilen vor den Spaltennamen, unabhängig vom Inhalt übersprungen (Vorspann eines Messgeräts)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>What starts a comment line before the column names</source>
+        <translation>Womit eine Kommentarzeile vor den Spaltennamen beginnt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Leave out the rows listed under the preview; the project keeps this setting and the readers count the rows they leave out. Off: the first unreadable row is an error.</source>
+        <translation>Die unter der Vorschau aufgeführten Zeilen auslassen; das Projekt speichert diese Einstellung, und die Leser zählen die ausgelassenen Zeilen. Aus: Die erste nicht lesbare Zeile ist ein Fehler.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>auto (nearer the nominal: the actual value)</source>
+        <translation>automatisch (näher am Nennmaß: der Istwert)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deviation (actual − nominal)</source>
+        <translation>Abweichung (Ist − Nenn)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>actual value</source>
+        <translation>Istwert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>plain (actual − nominal)</source>
+        <translation>unverändert (Ist − Nenn)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>follows the nominal&apos;s sign</source>
+        <translation>folgt dem Vorzeichen des Nennmaßes</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&amp;Import</source>
         <translation>&amp;Importieren</translation>
     </message>
@@ -1037,12 +1093,32 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Dezimal&amp;zeichen:</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
+        <source>&amp;Comment prefix:</source>
+        <translation>&amp;Kommentarzeichen:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Lines before the header:</source>
+        <translation>Zeilen &amp;vor der Kopfzeile:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Found:</source>
         <translation>Gefunden:</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
+        <source>TA &amp;value is:</source>
+        <translation>TA-&amp;Wert ist:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TA si&amp;gn:</source>
+        <translation>TA-Vor&amp;zeichen:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Column in the file</source>
         <translation>Spalte in der Datei</translation>
     </message>
@@ -1072,7 +1148,23 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Vorschau (erste %1 Zeilen)</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+3"/>
+        <location line="+432"/>
+        <source>Rows that cannot be read:</source>
+        <translation>Nicht lesbare Zeilen:</translation>
+    </message>
+    <message>
+        <location line="-377"/>
+        <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
+        <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the project first: the copy goes into the project&apos;s folder</source>
+        <translation>Zuerst das Projekt speichern: Die Kopie kommt in den Ordner des Projekts</translation>
+    </message>
+    <message>
+        <location line="+60"/>
         <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
         <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Alle Dateien (*)</translation>
     </message>
@@ -1087,7 +1179,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1: die Datei ist größer als 256 MiB</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+198"/>
         <source>as in the file</source>
         <translation>wie in der Datei</translation>
     </message>
@@ -1097,7 +1189,32 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Zeile</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+45"/>
+        <source>DMIS output: add a setup model to the project to preview the deviations read with these settings.</source>
+        <translation>DMIS-Ausgabe: Fügen Sie dem Projekt ein Einrichtmodell hinzu, um die mit diesen Einstellungen gelesenen Abweichungen in der Vorschau zu sehen.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Dimension</source>
+        <translation>Maß</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Deviation (mm)</source>
+        <translation>Abweichung (mm)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>DMIS output read against the setup model “%1”.</source>
+        <translation>DMIS-Ausgabe, gelesen mit dem Einrichtmodell „%1“.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>DMIS output; read against the setup model “%1”: %2</source>
+        <translation>DMIS-Ausgabe; gelesen mit dem Einrichtmodell „%1“: %2</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Choose a file to import.</source>
         <translation>Wählen Sie eine Datei zum Importieren.</translation>
     </message>
@@ -1107,7 +1224,22 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Keine CSV-Datei: gelesen als %1 (ohne Trennzeichen, Dezimalzeichen und Spaltenzuordnung).</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+20"/>
+        <source>detect (%1)</source>
+        <translation>erkennen (%1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Rows that cannot be read (%1): tick “Skip unreadable rows” to import without them.</source>
+        <translation>Nicht lesbare Zeilen (%1): „Nicht lesbare Zeilen überspringen“ ankreuzen, um ohne sie zu importieren.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Rows that cannot be read (%1), left out:</source>
+        <translation>Nicht lesbare Zeilen (%1), ausgelassen:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>%1 (detected)</source>
         <translation>%1 (erkannt)</translation>
     </message>
@@ -1117,9 +1249,27 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Trennzeichen %1 · Dezimalzeichen %2 · Kopfzeile in Zeile %3 (%4 Spalten) · Kommentarzeilen: %5 · Datenzeilen: %6</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+33"/>
+        <source>%1: already exists; an embedded copy never overwrites a file (choose another id)</source>
+        <translation>%1: existiert bereits; eine eingebettete Kopie überschreibt nie eine Datei (andere Kennung wählen)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Ready to import as %1 “%2”.</source>
         <translation>Bereit zum Import als %1 „%2“.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n unreadable row(s) will be left out.</source>
+        <translation>
+            <numerusform>%n nicht lesbare Zeile wird ausgelassen.</numerusform>
+            <numerusform>%n nicht lesbare Zeilen werden ausgelassen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The file is copied to %1.</source>
+        <translation>Die Datei wird nach %1 kopiert.</translation>
     </message>
 </context>
 <context>
@@ -6696,7 +6846,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Dieses Projekt hat keinen KMG-Messbericht für die Einrichtstudie (ein Datensatz der Art „cmm_report“).</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>The project has no setup model dataset to revert to.</source>
         <translation>Das Projekt hat keinen Einrichtmodell-Datensatz zum Zurücksetzen.</translation>
     </message>
@@ -6813,6 +6963,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+23"/>
+        <location line="+22"/>
         <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
         <translation>Das Modell wurde gespeichert, aber der KMG-Messbericht passt nicht mehr dazu (die Läufe verwenden den Bericht, wie er mit dem vorherigen Modell eingelesen wurde): %1</translation>
     </message>

@@ -816,7 +816,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+51"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+57"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>przecinek ( , )</translation>
@@ -834,11 +834,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <message>
         <location line="+2"/>
         <location line="+11"/>
+        <location line="+114"/>
         <source>detect</source>
         <translation>wykryj</translation>
     </message>
     <message>
-        <location line="-4"/>
+        <location line="-118"/>
         <source>point ( . )</source>
         <translation>kropka ( . )</translation>
     </message>
@@ -986,13 +987,68 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>temperatura w °C (wielkość wejściowa)</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <location line="+160"/>
+        <location line="+18"/>
+        <source>Skip &amp;unreadable rows</source>
+        <translation>Pomiń &amp;nieczytelne wiersze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DMIS tolerance actuals</source>
+        <translation>Wartości rzeczywiste tolerancji DMIS</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cop&amp;y the file into the project (data folder)</source>
+        <translation>S&amp;kopiuj plik do projektu (folder data)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+223"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-210"/>
+        <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
+        <translation>Wiersze przed nazwami kolumn, pomijane bez względu na treść (nagłówek przyrządu)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>What starts a comment line before the column names</source>
+        <translation>Czym zaczyna się wiersz komentarza przed nazwami kolumn</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Leave out the rows listed under the preview; the project keeps this setting and the readers count the rows they leave out. Off: the first unreadable row is an error.</source>
+        <translation>Pomiń wiersze wymienione pod podglądem; projekt zapamiętuje to ustawienie, a czytniki liczą pominięte wiersze. Wyłączone: pierwszy nieczytelny wiersz jest błędem.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>auto (nearer the nominal: the actual value)</source>
+        <translation>automatycznie (bliżej wartości nominalnej: wartość rzeczywista)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deviation (actual − nominal)</source>
+        <translation>odchyłka (rzeczywista − nominalna)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>actual value</source>
+        <translation>wartość rzeczywista</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>plain (actual − nominal)</source>
+        <translation>zwykły (rzeczywista − nominalna)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>follows the nominal&apos;s sign</source>
+        <translation>zgodny ze znakiem wartości nominalnej</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&amp;Import</source>
         <translation>&amp;Importuj</translation>
     </message>
@@ -1037,12 +1093,32 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Znak dzi&amp;esiętny:</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
+        <source>&amp;Comment prefix:</source>
+        <translation>Prefiks &amp;komentarza:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Lines before the header:</source>
+        <translation>&amp;Wiersze przed nagłówkiem:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Found:</source>
         <translation>Wykryto:</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
+        <source>TA &amp;value is:</source>
+        <translation>&amp;Wartość TA to:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TA si&amp;gn:</source>
+        <translation>&amp;Znak TA:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Column in the file</source>
         <translation>Kolumna w pliku</translation>
     </message>
@@ -1072,7 +1148,23 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Podgląd (pierwsze %1 wierszy)</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+3"/>
+        <location line="+432"/>
+        <source>Rows that cannot be read:</source>
+        <translation>Wiersze, których nie można odczytać:</translation>
+    </message>
+    <message>
+        <location line="-377"/>
+        <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
+        <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the project first: the copy goes into the project&apos;s folder</source>
+        <translation>Najpierw zapisz projekt: kopia trafia do folderu projektu</translation>
+    </message>
+    <message>
+        <location line="+60"/>
         <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
         <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Wszystkie pliki (*)</translation>
     </message>
@@ -1087,7 +1179,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>%1: plik jest większy niż 256 MiB</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+198"/>
         <source>as in the file</source>
         <translation>jak w pliku</translation>
     </message>
@@ -1097,7 +1189,32 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Wiersz</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+45"/>
+        <source>DMIS output: add a setup model to the project to preview the deviations read with these settings.</source>
+        <translation>Wynik DMIS: dodaj do projektu model ustawczy, aby zobaczyć podgląd odchyłek odczytanych z tymi ustawieniami.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Dimension</source>
+        <translation>Wymiar</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Deviation (mm)</source>
+        <translation>Odchyłka (mm)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>DMIS output read against the setup model “%1”.</source>
+        <translation>Wynik DMIS odczytany względem modelu ustawczego „%1”.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>DMIS output; read against the setup model “%1”: %2</source>
+        <translation>Wynik DMIS; odczyt względem modelu ustawczego „%1”: %2</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Choose a file to import.</source>
         <translation>Wybierz plik do importu.</translation>
     </message>
@@ -1107,7 +1224,22 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>To nie jest plik CSV: czytany jako %1 (bez separatora, znaku dziesiętnego i przyporządkowania kolumn).</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+20"/>
+        <source>detect (%1)</source>
+        <translation>wykryj (%1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Rows that cannot be read (%1): tick “Skip unreadable rows” to import without them.</source>
+        <translation>Wiersze, których nie można odczytać (%1): zaznacz „Pomiń nieczytelne wiersze”, aby zaimportować bez nich.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Rows that cannot be read (%1), left out:</source>
+        <translation>Wiersze, których nie można odczytać (%1), pominięte:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>%1 (detected)</source>
         <translation>%1 (wykryto)</translation>
     </message>
@@ -1117,9 +1249,28 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>separator %1 · znak dziesiętny %2 · nagłówek w wierszu %3 (%4 kolumn) · wiersze komentarza: %5 · wiersze danych: %6</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+33"/>
+        <source>%1: already exists; an embedded copy never overwrites a file (choose another id)</source>
+        <translation>%1: już istnieje; osadzona kopia nigdy nie nadpisuje pliku (wybierz inny identyfikator)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Ready to import as %1 “%2”.</source>
         <translation>Gotowe do importu jako %1 „%2”.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n unreadable row(s) will be left out.</source>
+        <translation>
+            <numerusform>%n nieczytelny wiersz zostanie pominięty.</numerusform>
+            <numerusform>%n nieczytelne wiersze zostaną pominięte.</numerusform>
+            <numerusform>%n nieczytelnych wierszy zostanie pominiętych.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The file is copied to %1.</source>
+        <translation>Plik zostanie skopiowany do %1.</translation>
     </message>
 </context>
 <context>
@@ -6713,7 +6864,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ten projekt nie ma raportu WMP dla studium ustawienia (zbiór danych rodzaju „cmm_report”).</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>The project has no setup model dataset to revert to.</source>
         <translation>Projekt nie ma zbioru danych modelu ustawczego, do którego można wrócić.</translation>
     </message>
@@ -6832,6 +6983,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+23"/>
+        <location line="+22"/>
         <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
         <translation>Model zapisano, ale raport WMP już do niego nie pasuje (przebiegi używają raportu wczytanego względem poprzedniego modelu): %1</translation>
     </message>

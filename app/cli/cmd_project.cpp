@@ -1,6 +1,8 @@
 // metrofit-cli project: own data in a project (docs/file-formats.md#own-data-in-a-project).
 //   project new P.metrofit [--name TEXT]
 //   project add P.metrofit KIND FILE [--id ID] [--map ROLE=COLUMN ...] [--delimiter D] [--decimal D]
+//               [--header-lines N] [--comment PREFIX] [--skip-bad-rows] [--ta-meaning M] [--ta-sign S]
+//               [--embed]
 //   project list P.metrofit [--out FILE]
 // The logic is core/project/datasets.h; this file only parses the command line.
 #include <CLI/CLI.hpp>
@@ -27,6 +29,10 @@ struct ProjectArgs {
   std::string id;
   std::vector<std::string> map;
   std::string out;
+  int headerLines = -1;
+  std::string comment;
+  bool skipBadRows = false;
+  bool embed = false;
 };
 
 int runNew(const ProjectArgs& a) {
@@ -47,11 +53,28 @@ int runAdd(const ProjectArgs& a) {
   r.id = a.id;
   r.csv = csvOptions();
   for (const auto& m : a.map) r.csv.columnMap.push_back(parseColumnMapping(m));
+  r.csv.headerLines = a.headerLines;
+  if (!a.comment.empty() &&
+      (a.comment.size() > 16 || a.comment.find_first_of("\r\n\"") != std::string::npos ||
+       a.comment.front() == ' ' || a.comment.front() == '\t'))
+    throw OptionsError(
+        ErrorContext{{}, 0, 0, "--comment"},
+        "must be 1 to 16 characters, not starting with a blank, without quotes or line breaks");
+  r.csv.commentPrefix = a.comment;
+  r.csv.skipBadRows = a.skipBadRows;
+  r.dmis = dmisOptions();
+  r.embed = a.embed;
   const DatasetRef ref = addDataset(p, a.project, r);
   saveProject(p, a.project);
   const DatasetSummary s = summarizeDataset(a.project, ref);
-  std::fprintf(stderr, "project add: '%s' (%s, %ld rows) -> %s\n", ref.id.c_str(), ref.kind.c_str(), s.rows,
-               ref.path.c_str());
+  std::string skipped;
+  if (ref.csv.skipBadRows) {
+    skipped = ", " + std::to_string(s.skipped.size()) + " unreadable rows skipped";
+    for (const CsvRowProblem& row : s.skipped)
+      std::fprintf(stderr, "  skipped %s\n", describeRowProblem(row).c_str());
+  }
+  std::fprintf(stderr, "project add: '%s' (%s, %ld rows%s) -> %s\n", ref.id.c_str(), ref.kind.c_str(), s.rows,
+               skipped.c_str(), ref.path.c_str());
   return 0;
 }
 
@@ -90,6 +113,19 @@ void registerProjectCommands(CLI::App& app) {
                   "ROLE=COLUMN: read the file's COLUMN as ROLE (e.g. time_min=Zeit); repeatable")
       ->take_all();
   addThermalLogOptions(add);
+  add->add_option(
+         "--header-lines", a->headerLines,
+         "CSV: the first N lines are a preamble, skipped whatever they hold; the column names follow "
+         "(default: detect, skipping blank and comment lines)")
+      ->check(CLI::Range(0, 10000));
+  add->add_option("--comment", a->comment, "CSV: what starts a comment line before the header (default #)");
+  add->add_flag("--skip-bad-rows", a->skipBadRows,
+                "CSV: leave out rows that cannot be read (stored in the project, counted when read); "
+                "default: the first such row is an error");
+  addDmisOptions(add);
+  add->add_flag("--embed", a->embed,
+                "Copy the file into the project's folder as data/<id>.<ext> (never overwriting) instead of "
+                "referencing it");
   add->callback([a] { selectRunner([a]() -> int { return runAdd(*a); }); });
 
   auto l = std::make_shared<ProjectArgs>();

@@ -401,7 +401,8 @@ void SetupPage::readReport(const setup::Model& model) {
     return;
   }
   try {
-    d->rawMeasurements = setup::readMeasurements({d->files.reportPath}, model, d->files.reportCsv);
+    d->rawMeasurements =
+        setup::readMeasurements({d->files.reportPath}, model, d->files.reportCsv, d->files.reportDmis);
     applyEffects();
   } catch (const std::exception& e) {
     d->dataError = QString::fromStdString(e.what());
@@ -699,7 +700,8 @@ bool SetupPage::saveModel(QString* error) {
   // The report is checked against the saved model from now on, when it still matches it.
   if (!d->files.reportPath.empty()) {
     try {
-      setup::Measurements m = setup::readMeasurements({d->files.reportPath}, saved, d->files.reportCsv);
+      setup::Measurements m =
+          setup::readMeasurements({d->files.reportPath}, saved, d->files.reportCsv, d->files.reportDmis);
       d->rawMeasurements = std::move(m);
       d->measModel = saved;
       d->dataError.clear();

@@ -76,10 +76,25 @@ struct Record {
 
 class Tokenizer {
  public:
-  Tokenizer(std::string_view text, const std::string& source, char delimiter)
-      : t_(text), source_(source), delimiter_(delimiter) {}
+  Tokenizer(std::string_view text, const std::string& source, char delimiter, std::string_view commentPrefix,
+            std::size_t start, long firstLine)
+      : t_(text),
+        source_(source),
+        delimiter_(delimiter),
+        prefix_(commentPrefix),
+        pos_(start),
+        line_(firstLine) {}
 
   bool done() const { return pos_ >= t_.size(); }
+  /// The last error was about the file (binary data, bad encoding), not about one row.
+  bool fatal() const { return fatal_; }
+  /// After a row-level error: continues at the next line.
+  void skipRestOfLine() {
+    if (pos_ >= t_.size()) return;
+    const std::size_t nl = t_.find('\n', pos_);
+    pos_ = nl == std::string_view::npos ? t_.size() : nl + 1;
+    ++line_;
+  }
 
   Record next() {
     Record rec;
@@ -91,6 +106,10 @@ class Tokenizer {
     long col = 1;             // 1-based field index
     long quoteLine = line_;
     auto fail = [&](const std::string& what) -> void {
+      throw ParseError(ErrorContext{source_, line_, col, {}}, what);
+    };
+    auto failFile = [&](const std::string& what) -> void {
+      fatal_ = true;
       throw ParseError(ErrorContext{source_, line_, col, {}}, what);
     };
     auto endField = [&]() {
@@ -108,15 +127,15 @@ class Tokenizer {
     while (pos_ < t_.size()) {
       const char c = t_[pos_];
       const auto u = static_cast<unsigned char>(c);
-      if (u == 0) fail("binary data (a NUL byte); this is not a CSV text file");
+      if (u == 0) failFile("binary data (a NUL byte); this is not a CSV text file");
       if (u >= 0x80) {
         const std::size_t n = utf8Length(t_, pos_);
         if (n == 0) {
           if (t_.find('\0') != std::string_view::npos)  // e.g. a PNG: 0x89 before the first NUL
-            fail("binary data (not UTF-8, NUL bytes in the file); this is not a CSV text file");
+            failFile("binary data (not UTF-8, NUL bytes in the file); this is not a CSV text file");
           char buf[64];
           std::snprintf(buf, sizeof buf, "invalid UTF-8 byte 0x%02X; save the file as UTF-8", u);
-          fail(buf);
+          failFile(buf);
         }
         if (afterQuote) fail("text after the closing quote of a quoted field");
         field.append(t_.substr(pos_, n));
@@ -151,18 +170,19 @@ class Tokenizer {
         ++line_;
         break;
       }
-      if (!anyContent && rec.fields.empty() && field.empty() && c == '#' && !seenHeader_) {
+      if (!anyContent && rec.fields.empty() && field.empty() && !seenHeader_ &&
+          t_.substr(pos_).starts_with(prefix_)) {
         // Comment line: up to the end of the line.
         const std::size_t end = t_.find('\n', pos_);
-        std::string_view body =
-            t_.substr(pos_ + 1, (end == std::string_view::npos ? t_.size() : end) - pos_ - 1);
+        const std::size_t from = pos_ + prefix_.size();
+        std::string_view body = t_.substr(from, (end == std::string_view::npos ? t_.size() : end) - from);
         if (!body.empty() && body.back() == '\r') body.remove_suffix(1);
         for (std::size_t i = 0; i < body.size(); ++i) {
           const auto b = static_cast<unsigned char>(body[i]);
-          if (b == 0) fail("binary data (a NUL byte); this is not a CSV text file");
+          if (b == 0) failFile("binary data (a NUL byte); this is not a CSV text file");
           if (b >= 0x80) {
             const std::size_t n = utf8Length(body, i);
-            if (n == 0) fail("invalid UTF-8 in a comment line; save the file as UTF-8");
+            if (n == 0) failFile("invalid UTF-8 in a comment line; save the file as UTF-8");
             i += n - 1;
           }
         }
@@ -224,13 +244,15 @@ class Tokenizer {
   std::string_view t_;
   const std::string& source_;
   char delimiter_;
+  std::string_view prefix_;
   std::size_t pos_ = 0;
   long line_ = 1;
   bool seenHeader_ = false;
+  bool fatal_ = false;
 };
 
 /// The first line that is neither blank nor a '#' comment (the header), without its line end.
-std::string_view headerLine(std::string_view text) {
+std::string_view headerLine(std::string_view text, std::string_view commentPrefix) {
   std::size_t pos = 0;
   while (pos < text.size()) {
     const std::size_t end = text.find('\n', pos);
@@ -239,7 +261,7 @@ std::string_view headerLine(std::string_view text) {
     pos = end == std::string_view::npos ? text.size() : end + 1;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     const std::string_view body = trimBlanks(line);
-    if (body.empty() || body.front() == '#') continue;
+    if (body.empty() || body.starts_with(commentPrefix)) continue;
     return line;
   }
   return {};
@@ -247,8 +269,8 @@ std::string_view headerLine(std::string_view text) {
 
 /// The delimiter of the header line: the most frequent of ',', ';', tab outside quotes (',' wins
 /// ties and is the answer when none occurs).
-char detectDelimiter(std::string_view text) {
-  const std::string_view header = headerLine(text);
+char detectDelimiter(std::string_view text, std::string_view commentPrefix) {
+  const std::string_view header = headerLine(text, commentPrefix);
   std::size_t comma = 0, semicolon = 0, tab = 0;
   bool inQuotes = false;
   for (char c : header) {
@@ -356,13 +378,43 @@ CsvTable parseCsv(std::string_view text, const std::string& source, const CsvRea
                      "the file is empty (expected a header row and data rows)");
   }
 
-  const char delimiter = options.dialect.delimiter ? options.dialect.delimiter : detectDelimiter(text);
+  const std::string_view prefix =
+      options.commentPrefix.empty() ? std::string_view("#") : options.commentPrefix;
+  // A preamble of header_lines lines is skipped whatever it holds.
+  std::size_t start = 0;
+  long firstLine = 1;
+  for (int k = 0; k < options.headerLines && start < text.size(); ++k, ++firstLine) {
+    const std::size_t nl = text.find('\n', start);
+    start = nl == std::string_view::npos ? text.size() : nl + 1;
+  }
+  if (text.substr(start).find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    throw ParseError(ErrorContext{source, firstLine, 0, {}},
+                     "no header row after the " + std::to_string(options.headerLines) +
+                         " header lines skipped (is the header line count right?)");
+  }
+  const char delimiter =
+      options.dialect.delimiter ? options.dialect.delimiter : detectDelimiter(text.substr(start), prefix);
   table.dialect_.delimiter = delimiter;
-  Tokenizer tok(text, source, delimiter);
+  Tokenizer tok(text, source, delimiter, prefix, start, firstLine);
   bool haveHeader = false;
   long headerLine = 0;
+  std::vector<std::size_t> rowNumbers;  // data row number (1-based) of each kept row
+  std::size_t dataRow = 0;              // data rows seen after the header, readable or not
   while (!tok.done()) {
-    Record rec = tok.next();
+    Record rec;
+    try {
+      rec = tok.next();
+    } catch (const ParseError& e) {
+      if (!options.skipBadRows || !haveHeader || tok.fatal()) throw;
+      const long col = e.context().column;
+      table.skipped_.push_back({e.context().line, ++dataRow,
+                                col >= 1 && col <= static_cast<long>(table.header_.size())
+                                    ? table.header_[static_cast<std::size_t>(col - 1)]
+                                    : std::string(),
+                                e.detail()});
+      tok.skipRestOfLine();
+      continue;
+    }
     if (rec.isBlank) continue;
     if (rec.isComment) {
       table.comments_.push_back(std::move(rec.fields.front()));
@@ -391,24 +443,86 @@ CsvTable parseCsv(std::string_view text, const std::string& source, const CsvRea
                              csvDelimiterName(delimiter) + "' (read it with delimiter tab or auto)");
       }
       table.header_ = std::move(rec.fields);
+      table.headerLine_ = headerLine;
       continue;
     }
+    ++dataRow;
     if (rec.fields.size() != table.header_.size()) {
       const long col = static_cast<long>(std::min(rec.fields.size(), table.header_.size()) + 1);
-      throw ParseError(ErrorContext{source, rec.line, col, {}},
-                       "row has " + std::to_string(rec.fields.size()) + " fields, the header (line " +
-                           std::to_string(headerLine) + ") has " + std::to_string(table.header_.size()));
+      const std::string why = "row has " + std::to_string(rec.fields.size()) + " fields, the header (line " +
+                              std::to_string(headerLine) + ") has " + std::to_string(table.header_.size());
+      if (!options.skipBadRows) throw ParseError(ErrorContext{source, rec.line, col, {}}, why);
+      table.skipped_.push_back({rec.line, dataRow, {}, why});
+      continue;
     }
     table.rows_.push_back(std::move(rec.fields));
     table.lines_.push_back(rec.line);
+    rowNumbers.push_back(dataRow);
   }
   if (!haveHeader) {
     throw ParseError(ErrorContext{source, 0, 0, {}},
                      "no header row (the file has only comments or blank lines)");
   }
   table.dialect_.decimal = options.dialect.decimal ? options.dialect.decimal : table.detectDecimal();
+  if (options.skipBadRows) table.dropUnreadableRows(rowNumbers);
   table.mapColumns(options.columnMap);
   return table;
+}
+
+std::vector<CsvRowProblem> csvRowProblems(std::string_view text, const std::string& source,
+                                          const CsvReadOptions& options) {
+  CsvReadOptions o = options;
+  o.skipBadRows = true;
+  o.columnMap.clear();  // the problems name the file's own columns
+  return parseCsv(text, source, o).skippedRows();
+}
+
+std::string describeRowProblem(const CsvRowProblem& p) {
+  std::string out = "line " + std::to_string(p.line) + " (row " + std::to_string(p.row) + ")";
+  if (!p.column.empty()) out += ", column '" + p.column + "'";
+  return out + ": " + p.why;
+}
+
+void CsvTable::dropUnreadableRows(const std::vector<std::size_t>& rowNumbers) {
+  // A column is numeric when more than half of its cells are numbers in the file's decimal form; a
+  // row with a cell of a numeric column that is not a number (or is empty) cannot be read.
+  const std::size_t rows = rows_.size();
+  std::vector<bool> numeric(header_.size(), false);
+  for (std::size_t c = 0; c < header_.size(); ++c) {
+    std::size_t numbers = 0;
+    for (std::size_t r = 0; r < rows; ++r) numbers += isNumber(r, c) ? 1 : 0;
+    numeric[c] = 2 * numbers > rows;
+  }
+  std::vector<std::vector<std::string>> keptRows;
+  std::vector<long> keptLines;
+  for (std::size_t r = 0; r < rows; ++r) {
+    bool bad = false;
+    for (std::size_t c = 0; c < header_.size() && !bad; ++c) {
+      if (!numeric[c] || isNumber(r, c)) continue;
+      try {
+        (void)number(r, c);
+      } catch (const ParseError& e) {
+        skipped_.push_back({lines_[r], rowNumbers[r], header_[c], e.detail()});
+        bad = true;
+      }
+    }
+    if (bad) continue;
+    keptRows.push_back(std::move(rows_[r]));
+    keptLines.push_back(lines_[r]);
+  }
+  rows_ = std::move(keptRows);
+  lines_ = std::move(keptLines);
+  std::stable_sort(skipped_.begin(), skipped_.end(),
+                   [](const CsvRowProblem& a, const CsvRowProblem& b) { return a.line < b.line; });
+}
+
+bool CsvTable::isNumber(std::size_t row, std::size_t col) const {
+  try {
+    (void)number(row, col);
+    return true;
+  } catch (const ParseError&) {
+    return false;
+  }
 }
 
 CsvTable readCsvFile(const std::string& path, const CsvReadOptions& options) {

@@ -55,8 +55,28 @@ struct CsvReadOptions {
   /// Thermal logs without a time column: the rows are this many minutes apart, the first at 0
   /// (0: the log must have a time column). Other readers ignore it.
   double sampleIntervalMin = 0.0;
+  /// Lines before the column-name row, skipped whatever they hold (an instrument's preamble);
+  /// -1: detect (blank lines and comment lines before the header are skipped).
+  int headerLines = -1;
+  /// What starts a comment line before the header; empty: "#".
+  std::string commentPrefix;
+  /// Rows that cannot be read (a wrong number of fields, or a cell that is not a number in a column
+  /// whose other cells mostly are) are left out and listed in CsvTable::skippedRows() instead of
+  /// being an error; false (the default): the first such row is an error.
+  bool skipBadRows = false;
   bool operator==(const CsvReadOptions&) const = default;
 };
+
+/// One row that cannot be read: where and why.
+struct CsvRowProblem {
+  long line = 0;        ///< physical line (1-based)
+  std::size_t row = 0;  ///< data row (1-based, counting every row after the header)
+  std::string column;   ///< the file's column name (empty: the whole row)
+  std::string why;      ///< e.g. "'abc' is not a number"
+  bool operator==(const CsvRowProblem&) const = default;
+};
+/// "line 7 (row 5), column 'T1': 'abc' is not a number".
+std::string describeRowProblem(const CsvRowProblem& problem);
 
 /// Parses "ROLE=COLUMN" (split at the first '='); OptionsError naming `option` when either side is
 /// empty.
@@ -80,6 +100,10 @@ class CsvTable {
   std::size_t columnCount() const { return header_.size(); }
   /// The dialect the file was read with (detection resolved: both members are set).
   const CsvDialect& dialect() const { return dialect_; }
+  /// Physical line (1-based) of the column-name row.
+  long headerLineNumber() const { return headerLine_; }
+  /// Rows left out because CsvReadOptions::skipBadRows was set (empty otherwise).
+  const std::vector<CsvRowProblem>& skippedRows() const { return skipped_; }
 
   /// Renames the file's column `column` to `role` for every (role, column) pair. ValidationError
   /// naming the file and the role when `column` is not in the header, or when `role` already names
@@ -110,17 +134,26 @@ class CsvTable {
  private:
   friend CsvTable parseCsv(std::string_view, const std::string&, const CsvReadOptions&);
   char detectDecimal() const;
+  /// CsvReadOptions::skipBadRows: moves the rows with a non-number in a numeric column to skipped_.
+  void dropUnreadableRows(const std::vector<std::size_t>& rowNumbers);
+  bool isNumber(std::size_t row, std::size_t col) const;
   std::string source_;
   CsvDialect dialect_{',', '.'};
   std::vector<std::string> comments_;
   std::vector<std::string> header_;
   std::vector<std::vector<std::string>> rows_;
   std::vector<long> lines_;
+  long headerLine_ = 0;
+  std::vector<CsvRowProblem> skipped_;
 };
 
 /// Parses CSV text in the given dialect (detected where 0) and applies the column mapping;
 /// `source` names the file in error messages.
 CsvTable parseCsv(std::string_view text, const std::string& source, const CsvReadOptions& options = {});
+/// Every row of the text that cannot be read (as CsvReadOptions::skipBadRows says), in file order;
+/// errors that are not about a row (no header, a bad encoding) are thrown as by parseCsv.
+std::vector<CsvRowProblem> csvRowProblems(std::string_view text, const std::string& source,
+                                          const CsvReadOptions& options = {});
 /// Reads and parses a CSV file (FileError if it cannot be read); "-" reads standard input
 /// (readFile) and is named "<stdin>" in messages.
 CsvTable readCsvFile(const std::string& path, const CsvReadOptions& options = {});

@@ -70,6 +70,7 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
     if (!setup::looksLikeDmis(text))
       throw ParseError(ErrorContext{shown, 1, 0, {}}, "not a DMIS file (its first statement is not DMISMN)");
     s.rows = dmisMeasuredCount(text);
+    s.dmis = true;
     return s;
   }
   // CMM text reports (OGP step / summary reports, PC-DMIS text reports), recognised by content.
@@ -101,6 +102,7 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
   const CsvTable table = parseCsv(text, shown, csv);
   s.rows = static_cast<long>(table.rowCount());
   s.columns = table.header();
+  s.skipped = table.skippedRows();
   if (kind == dataset_kind::kThermalLog) {
     (void)thermalLogFromCsv(table, 3, csv.sampleIntervalMin);
   } else if (kind == dataset_kind::kProbePoints) {
@@ -161,8 +163,10 @@ nlohmann::json datasetListJson(const Project& project, const std::string& projec
   nlohmann::json out = nlohmann::json::array();
   for (const DatasetRef& d : project.datasets) {
     const DatasetSummary s = summarizeDataset(projectPath, d);
-    out.push_back(
-        {{"id", s.id}, {"kind", s.kind}, {"path", s.path}, {"rows", s.rows}, {"columns", s.columns}});
+    nlohmann::json entry{
+        {"id", s.id}, {"kind", s.kind}, {"path", s.path}, {"rows", s.rows}, {"columns", s.columns}};
+    if (d.csv.skipBadRows) entry["skipped_rows"] = s.skipped.size();
+    out.push_back(std::move(entry));
   }
   return out;
 }
@@ -174,16 +178,45 @@ CsvTable readDatasetTable(const std::string& projectPath, const DatasetRef& data
   return readCsvFile(path, dataset.csv);
 }
 
+std::string embeddedDatasetPath(const std::string& id, const std::string& file, const std::string& kind) {
+  std::string ext = file == "-" ? std::string() : fs::path(file).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext.size() < 2) ext = extensionFor(kind);
+  return "data/" + id + ext;
+}
+
+void embedDataset(const std::string& projectPath, const std::string& file, DatasetRef& dataset) {
+  const std::string rel = embeddedDatasetPath(dataset.id, file, dataset.kind);
+  const fs::path folder = fs::absolute(fs::path(parentFolder(projectPath))).lexically_normal();
+  const fs::path target = folder / rel;
+  std::error_code ec;
+  if (fs::exists(target, ec))
+    throw ValidationError(ErrorContext{target.string(), 0, 0, {}},
+                          "already exists; an embedded copy never overwrites a file (choose another id, "
+                          "or remove or rename the file)");
+  const std::string content = readFile(file, 256u << 20);
+  fs::create_directories(target.parent_path(), ec);
+  if (ec)
+    throw FileError(ErrorContext{target.parent_path().string(), 0, 0, {}},
+                    "cannot create the folder (" + ec.message() + ")");
+  writeFileAtomic(target.string(), content);
+  dataset.path = rel;
+}
+
 DatasetRef addDataset(Project& project, const std::string& projectPath, const AddDatasetRequest& request) {
   DatasetRef ref;
   ref.kind = datasetKindFromName(request.kind);
   ref.csv = request.csv;
   ref.description = request.description;
+  ref.dmis = request.dmis;
   if (!datasetKindIsCsv(ref.kind) &&
-      (!(request.csv.dialect == CsvDialect{}) || !request.csv.columnMap.empty())) {
+      (!(request.csv.dialect == CsvDialect{}) || !request.csv.columnMap.empty() ||
+       request.csv.headerLines >= 0 || !request.csv.commentPrefix.empty() || request.csv.skipBadRows)) {
     throw ValidationError(
         ErrorContext{{}, 0, 0, "KIND"},
-        "a " + ref.kind + " dataset is not a CSV file; --delimiter, --decimal and --map do not apply");
+        "a " + ref.kind +
+            " dataset is not a CSV file; --delimiter, --decimal, --map, --header-lines, --comment and "
+            "--skip-bad-rows do not apply");
   }
   if (ref.kind != dataset_kind::kThermalLog && request.csv.sampleIntervalMin > 0.0) {
     throw ValidationError(ErrorContext{{}, 0, 0, "--sample-interval"},
@@ -204,11 +237,20 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
     throw ValidationError(ErrorContext{projectPath, 0, 0, "--id"},
                           "the project already has a dataset '" + ref.id + "'");
 
-  // Read and check the file before the project changes.
+  // Read and check the file before the project changes. A DMIS reading applies to DMIS files only: a
+  // dmis dataset, or a cmm-report that turns out to be one.
+  const auto notDmis = [&] {
+    return ValidationError(ErrorContext{displayPath(request.file), 0, 0, "--ta-meaning"},
+                           "is not a DMIS file; --ta-meaning and --ta-sign apply to DMIS output only");
+  };
+  const bool dmisReading = !(ref.dmis == setup::DmisOptions{});
+  if (dmisReading && ref.kind != dataset_kind::kDmis && ref.kind != dataset_kind::kCmmReport) throw notDmis();
   const DatasetSummary s = inspect(request.file, displayPath(request.file), ref.kind, ref.csv);
-  (void)s;
+  if (dmisReading && !s.dmis) throw notDmis();
   const fs::path folder = fs::absolute(fs::path(parentFolder(projectPath))).lexically_normal();
-  if (fromStdin) {
+  if (request.embed) {
+    embedDataset(projectPath, request.file, ref);
+  } else if (fromStdin) {
     const std::string content = readFile("-", 256u << 20);
     ref.path = ref.id + (looksLikeCmmTextReport(content) ? std::string(".txt") : extensionFor(ref.kind));
     writeFileAtomic((folder / ref.path).string(), content);

@@ -41,14 +41,17 @@ bool datasetKindIsCsv(const std::string& kind);
 struct DatasetSummary {
   std::string id;
   std::string kind;
-  std::string path;                  ///< as stored in the project (relative to its folder)
-  long rows = 0;                     ///< data rows, points, holes, dimensions or measured features
-  std::vector<std::string> columns;  ///< the columns as the readers see them (after the mapping)
+  std::string path;                    ///< as stored in the project (relative to its folder)
+  long rows = 0;                       ///< data rows, points, holes, dimensions or measured features
+  std::vector<std::string> columns;    ///< the columns as the readers see them (after the mapping)
+  bool dmis = false;                   ///< read as a DMIS output file
+  std::vector<CsvRowProblem> skipped;  ///< rows left out (CsvReadOptions::skipBadRows)
 };
 
 /// Reads a dataset as its kind says, with its dialect and mapping; InputError when it cannot be read.
 DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset);
-/// `project list`: [{"id", "kind", "path", "rows", "columns"}] in project order.
+/// `project list`: [{"id", "kind", "path", "rows", "columns"}] in project order; a dataset that skips
+/// unreadable rows also has "skipped_rows" (their count).
 nlohmann::json datasetListJson(const Project& project, const std::string& projectPath);
 
 /// The CSV table of a CSV dataset, read with the dataset's dialect and mapping.
@@ -60,13 +63,26 @@ struct AddDatasetRequest {
   std::string id;    ///< empty: the file's base name without extension (made unique)
   CsvReadOptions csv;
   std::string description;
+  setup::DmisOptions dmis = {};  ///< DMIS files only (a DMIS dataset or a cmm-report that is a DMIS file)
+  /// Copy the file into the project's folder as data/<id>.<ext> (embedDataset) instead of referencing it.
+  bool embed = false;
 };
+
+/// Where an embedded copy of `file` goes, relative to the project's folder: "data/<id>.<ext>" with
+/// the file's own extension (lower case), or the kind's usual one when the file has none.
+std::string embeddedDatasetPath(const std::string& id, const std::string& file, const std::string& kind);
+/// Copies `file` to embeddedDatasetPath(...) in the folder of `projectPath` (creating data/) and
+/// points dataset.path to the copy. ValidationError naming the copy when it exists already (an
+/// embedded file is never overwritten); FileError when it cannot be written.
+void embedDataset(const std::string& projectPath, const std::string& file, DatasetRef& dataset);
 
 /// Adds a dataset to `project` (saved at `projectPath`): the file is referenced relative to the
 /// project's folder (absolute when it is on another root), or, for "-" (standard input), copied into
 /// the project's folder as "<id>.<ext>" (an --id is then required). The file is read and checked as
 /// its kind says before anything is changed. ValidationError for a duplicate id, CSV options on a
-/// kind that is not CSV, an unknown kind. Returns the new dataset (also appended to the project).
+/// kind that is not CSV, DMIS options on a file that is not DMIS, an unknown kind, an embedded copy
+/// that exists already. With `embed`, the file is copied (embedDataset). Returns the new dataset
+/// (also appended to the project).
 DatasetRef addDataset(Project& project, const std::string& projectPath, const AddDatasetRequest& request);
 
 }  // namespace metrofit

@@ -38,6 +38,16 @@ nlohmann::json Project::toJson() const {
     if (d.csv.dialect.delimiter) o["delimiter"] = csvDelimiterName(d.csv.dialect.delimiter);
     if (d.csv.dialect.decimal) o["decimal"] = csvDecimalName(d.csv.dialect.decimal);
     if (d.csv.sampleIntervalMin > 0.0) o["sample_interval_min"] = d.csv.sampleIntervalMin;
+    if (d.csv.headerLines >= 0) o["header_lines"] = d.csv.headerLines;
+    if (!d.csv.commentPrefix.empty()) o["comment"] = d.csv.commentPrefix;
+    if (d.csv.skipBadRows) o["skip_bad_rows"] = true;
+    if (!(d.dmis == setup::DmisOptions{})) {
+      nlohmann::json dmis = nlohmann::json::object();
+      if (d.dmis.taMeaning != setup::DmisTaMeaning::Auto)
+        dmis["ta_meaning"] = setup::dmisTaMeaningName(d.dmis.taMeaning);
+      if (d.dmis.signFollowsNominal) dmis["ta_sign"] = "nominal";
+      o["dmis"] = std::move(dmis);
+    }
     if (!d.csv.columnMap.empty()) {
       nlohmann::json map = nlohmann::json::object();
       for (const auto& [role, column] : d.csv.columnMap) map[role] = column;
@@ -92,6 +102,37 @@ Project Project::fromJson(const nlohmann::json& j, const std::string& source) {
         ref.csv.sampleIntervalMin = d.number("sample_interval_min");
         if (!(ref.csv.sampleIntervalMin > 0.0) || !std::isfinite(ref.csv.sampleIntervalMin))
           d.fail("must be a positive number of minutes", "sample_interval_min");
+      }
+      const std::string inDataset = "dataset '" + ref.id + "': ";
+      if (d.has("header_lines")) {
+        const long n = d.integer("header_lines");
+        if (n < 0 || n > 10000)
+          d.fail(inDataset + "must be a number of lines from 0 to 10000", "header_lines");
+        ref.csv.headerLines = static_cast<int>(n);
+      }
+      if (d.has("comment")) {
+        ref.csv.commentPrefix = d.string("comment");
+        if (ref.csv.commentPrefix.empty() || ref.csv.commentPrefix.size() > 16 ||
+            ref.csv.commentPrefix.find_first_of("\r\n\"") != std::string::npos ||
+            ref.csv.commentPrefix.front() == ' ' || ref.csv.commentPrefix.front() == '\t')
+          d.fail(inDataset +
+                     "must be 1 to 16 characters, not starting with a blank, without quotes or line breaks",
+                 "comment");
+      }
+      if (d.has("skip_bad_rows")) ref.csv.skipBadRows = d.boolean("skip_bad_rows", false);
+      if (d.has("dmis")) {
+        const JsonReader dmis = d.object("dmis");
+        for (const auto& [key, value] : dmis.json().items())
+          if (key != "ta_meaning" && key != "ta_sign")
+            dmis.fail(inDataset + "unknown key (dmis takes ta_meaning and ta_sign)", key);
+        try {
+          if (dmis.has("ta_meaning"))
+            ref.dmis.taMeaning = setup::parseDmisTaMeaning(dmis.string("ta_meaning"), "ta_meaning");
+          if (dmis.has("ta_sign"))
+            ref.dmis.signFollowsNominal = setup::parseDmisTaSign(dmis.string("ta_sign"), "ta_sign");
+        } catch (const OptionsError& e) {
+          dmis.fail(inDataset + e.detail(), e.context().field);
+        }
       }
       if (d.has("map")) {
         const JsonReader map = d.object("map");

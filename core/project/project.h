@@ -16,7 +16,11 @@
 // Dataset paths are relative to the project file's folder (absolute paths are kept as they are).
 // "delimiter" (",", ";", "tab"), "decimal" (".", ",") and "map" (role -> the file's column) say how a
 // CSV dataset is read (core/io/csv.h); absent means auto-detection and no mapping, so projects written
-// before them read as before. core/project/datasets.h adds and lists datasets.
+// before them read as before. Optional, written only when not the default: "header_lines" (lines
+// before the column-name row), "comment" (the comment prefix, default "#"), "skip_bad_rows" (true:
+// unreadable rows are left out and counted) and, for a DMIS file, "dmis": {"ta_meaning":
+// "auto|deviation|actual", "ta_sign": "plain|nominal"} (core/setup/dmis_options.h).
+// core/project/datasets.h adds and lists datasets.
 // Study objects are owned by the method that uses them; unknown keys are preserved on save.
 #include <string>
 #include <vector>
@@ -24,6 +28,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/csv.h"
+#include "core/setup/dmis_options.h"
 
 namespace metrofit::machine {
 struct MachineDefinition;  // core/machine/machine.h
@@ -61,8 +66,9 @@ struct DatasetRef {
   std::string kind;  ///< one of dataset_kind
   std::string path;  ///< relative to the project folder, or absolute
   std::string description;
-  std::string licence;  ///< e.g. "MIT (CAIVIAC), see LICENSE-MIT.txt" for real data
-  CsvReadOptions csv;   ///< how a CSV dataset is read: dialect (0 = detect) and column mapping
+  std::string licence;           ///< e.g. "MIT (CAIVIAC), see LICENSE-MIT.txt" for real data
+  CsvReadOptions csv;            ///< how a CSV dataset is read: dialect (0 = detect) and column mapping
+  setup::DmisOptions dmis = {};  ///< how a DMIS file's TA(label) values are read
   bool operator==(const DatasetRef&) const = default;
 };
 

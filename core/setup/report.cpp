@@ -245,6 +245,24 @@ DmisTaMeaning parseDmisTaMeaning(const std::string& text, const std::string& opt
   throw OptionsError(ErrorContext{{}, 0, 0, option}, "'" + text + "' is not auto, deviation or actual");
 }
 
+std::string dmisTaMeaningName(DmisTaMeaning meaning) {
+  switch (meaning) {
+    case DmisTaMeaning::Deviation:
+      return "deviation";
+    case DmisTaMeaning::Actual:
+      return "actual";
+    case DmisTaMeaning::Auto:
+      break;
+  }
+  return "auto";
+}
+
+bool parseDmisTaSign(const std::string& text, const std::string& option) {
+  if (text == "plain") return false;
+  if (text == "nominal") return true;
+  throw OptionsError(ErrorContext{{}, 0, 0, option}, "'" + text + "' is not plain or nominal");
+}
+
 namespace {
 
 /// A feature statement F(label) / FA(label): its position and, for round features, its diameter.

@@ -68,6 +68,7 @@
 
 #include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
+#include "core/setup/dmis_options.h"
 #include "core/setup/model.h"
 
 namespace metrofit::setup {
@@ -91,21 +92,6 @@ struct Measurements {
 /// Reads a CMM report series (CSV) against the model.
 Measurements cmmReportFromCsv(const CsvTable& table, const Model& model);
 Measurements readCmmReport(const std::string& path, const Model& model, const CsvReadOptions& csv = {});
-
-/// What TA(label)=TOL/type,value means when the file has no F and FA to compute the deviation from.
-enum class DmisTaMeaning {
-  Auto,       ///< nearer the nominal than zero: the actual value; else the deviation
-  Deviation,  ///< actual - nominal (DMIS output of CORTOL / PROFP as CMMs write it)
-  Actual,     ///< the actual value (the QIF-to-DMIS converter's TOL/DIAM)
-};
-DmisTaMeaning parseDmisTaMeaning(const std::string& text, const std::string& option = "TA meaning");
-
-struct DmisOptions {
-  DmisTaMeaning taMeaning = DmisTaMeaning::Auto;
-  /// The writer reports sign(nominal) * (actual - nominal) (some do for negative nominals); the reader
-  /// turns it back into actual - nominal.
-  bool signFollowsNominal = false;
-};
 
 /// Reads one DMIS output file (text) against the model; `source` names it in errors.
 Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model,

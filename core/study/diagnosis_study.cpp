@@ -70,7 +70,9 @@ std::string diagnosisSettingsKey(const DiagnosisSettings& s) {
       {"d", diagnosisDomainKey(s.domain)},
       {"p", s.datasetPath},
       {"csv",
-       {static_cast<int>(s.csv.dialect.delimiter), static_cast<int>(s.csv.dialect.decimal), s.csv.columnMap}},
+       {static_cast<int>(s.csv.dialect.delimiter), static_cast<int>(s.csv.dialect.decimal), s.csv.columnMap,
+        s.csv.headerLines, s.csv.commentPrefix, s.csv.skipBadRows}},
+      {"dmis", {setup::dmisTaMeaningName(s.dmis.taMeaning), s.dmis.signFollowsNominal}},
       {"t", s.target},
       {"i", s.inputs},
       {"f", s.trainFraction},
@@ -108,6 +110,7 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
   const DatasetRef& dataset = datasetOf(project, out.datasetId, source, prefix + "dataset");
   out.datasetPath = resolveDatasetPath(projectPath, dataset);
   out.csv = dataset.csv;
+  out.dmis = dataset.dmis;
   switch (domain) {
     case DiagnosisDomain::Thermal: {
       out.target = stringKey(block, "target", source, prefix);
@@ -162,7 +165,7 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer)
     }
     case DiagnosisDomain::Setup: {
       const setup::Model model = setup::readModel(s.modelPath);
-      const setup::Measurements m = setup::readMeasurements({s.datasetPath}, model, s.csv);
+      const setup::Measurements m = setup::readMeasurements({s.datasetPath}, model, s.csv, s.dmis);
       return diagnose::diagnoseSetup(model, m, {}, observer);
     }
     case DiagnosisDomain::Matching: {

@@ -38,6 +38,7 @@ struct DiagnosisSettings {
   std::string datasetId;
   std::string datasetPath;  ///< resolved against the project file's folder
   CsvReadOptions csv;       ///< the dataset's dialect and column mapping (core/project/datasets.h)
+  setup::DmisOptions dmis;  ///< how the dataset's DMIS TA(label) values are read (its "dmis" key)
   std::string target;       ///< thermal
   std::vector<std::string> inputs;
   double trainFraction = diagnose::ThermalDiagnosisOptions{}.trainFraction;

@@ -47,6 +47,7 @@ SetupStudyFiles setupStudyFiles(const Project& project, const std::string& proje
     files.reportId = r->id;
     files.reportPath = resolveDatasetPath(projectPath, *r);
     files.reportCsv = r->csv;
+    files.reportDmis = r->dmis;
   }
   if (study != nullptr) {
     if (const auto it = study->find("method"); it != study->end() && it->is_string()) {

@@ -268,3 +268,99 @@ TEST(ProjectCli, RealOgpReportsAreAddedWithoutOptions) {
 }
 
 }  // namespace metrofit
+
+namespace metrofit {
+namespace {
+
+// Reading settings of `project add` (docs/file-formats.md#own-data-in-a-project): --header-lines,
+// --comment, --skip-bad-rows, --ta-meaning / --ta-sign, --embed. Files written here from the formats'
+// descriptions: a CSV with an instrument preamble; DMIS output in the statement syntax of the standard.
+TEST(ProjectCli, AddTakesHeaderCommentSkipDmisAndEmbedOptions) {
+  test::TempDir tmp;
+  std::filesystem::create_directories(tmp.path() / "p");
+  ASSERT_EQ(cli("project new p/P.metrofit", tmp).code, 0);
+  test::writeText(
+      tmp.file("rig.csv"),
+      "Thermal test rig 3\nOperator: K.\n% sensors calibrated\ntime_min,T1,disp_z_um\n0,20.0,0.0\n"
+      "10,n/a,1.5\n20,21.0,2.5\n30,21.5\n40,22.0,4.0\n");
+  // Detected, the preamble is the header: refused, exit 2, nothing added.
+  CliRun r = cli("project add p/P.metrofit thermal-log rig.csv", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  // With the preamble and the comment prefix, strict: an unreadable row is the error (the ragged
+  // line 8 when the file is parsed, before the numbers are read).
+  r = cli("project add p/P.metrofit thermal-log rig.csv --header-lines 2 --comment %", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "metrofit-cli: rig.csv:8:3: row has 2 fields, the header (line 4) has 3\n");
+  // Skipping: both bad rows are named and counted, the project keeps the settings.
+  r = cli("project add p/P.metrofit thermal-log rig.csv --header-lines 2 --comment % --skip-bad-rows", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("skipped line 6 (row 2), column 'T1': 'n/a' is not a number"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("skipped line 8 (row 4): row has 2 fields, the header (line 4) has 3"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("3 rows, 2 unreadable rows skipped"), std::string::npos) << r.err;
+  nlohmann::json project = readJson(tmp, "p/P.metrofit");
+  EXPECT_EQ(project["datasets"][0]["header_lines"], 2);
+  EXPECT_EQ(project["datasets"][0]["comment"], "%");
+  EXPECT_EQ(project["datasets"][0]["skip_bad_rows"], true);
+  EXPECT_FALSE(project["datasets"][0].contains("dmis"));
+  r = cli("project list p/P.metrofit", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json list = parseJson(r.out, "stdout");
+  EXPECT_EQ(list[0]["rows"], 3);
+  EXPECT_EQ(list[0]["skipped_rows"], 2);
+
+  // DMIS: the TA reading is stored with the dataset; the defaults are not written.
+  test::writeText(
+      tmp.file("part7.dmi"),
+      "DMISMN/'part 7',05.3\nTA(POS_D1)=TOL/CORTOL,ZAXIS,0.012,INTOL\nTA(D2)=TOL/DIAM,18.52,INTOL\n");
+  r = cli("project add p/P.metrofit dmis part7.dmi --ta-meaning actual --ta-sign nominal", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = cli("project add p/P.metrofit dmis part7.dmi --id plain", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  project = readJson(tmp, "p/P.metrofit");
+  EXPECT_EQ(project["datasets"][1]["dmis"],
+            (nlohmann::json{{"ta_meaning", "actual"}, {"ta_sign", "nominal"}}));
+  EXPECT_FALSE(project["datasets"][2].contains("dmis"));
+
+  // Embed: copied to p/data/<id>.<ext>, the path relative to the project; never overwritten.
+  r = cli("project add p/P.metrofit dmis part7.dmi --id copy --embed", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(test::readText(tmp.file("p/data/copy.dmi")), test::readText(tmp.file("part7.dmi")));
+  project = readJson(tmp, "p/P.metrofit");
+  EXPECT_EQ(project["datasets"][3]["path"], "data/copy.dmi");
+  EXPECT_EQ(project["datasets"][0]["path"], "../rig.csv");  // the default links
+  test::writeText(tmp.file("p/data/taken.dmi"), "DMISMN/'other',05.3\n");
+  r = cli("project add p/P.metrofit dmis part7.dmi --id taken --embed", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("taken.dmi: already exists; an embedded copy never overwrites a file"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(test::readText(tmp.file("p/data/taken.dmi")), "DMISMN/'other',05.3\n");
+
+  // Bad values: exit 2, one line naming the option; nothing added.
+  struct Case {
+    std::string args, needle;
+  };
+  const Case cases[] = {
+      {"dmis part7.dmi --id b1 --ta-meaning measured", "--ta-meaning"},
+      {"dmis part7.dmi --id b2 --ta-sign minus", "--ta-sign"},
+      {"thermal-log rig.csv --id b3 --header-lines -1", "--header-lines"},
+      {"thermal-log rig.csv --id b4 --comment ' x'", "--comment"},
+      {"feature-series rig.csv --id b5 --ta-meaning actual", "field '--ta-meaning': is not a DMIS file"},
+      {"dmis part7.dmi --id b6 --header-lines 1", "do not apply"},
+  };
+  for (const Case& c : cases) {
+    r = cli("project add p/P.metrofit " + c.args, tmp);
+    EXPECT_EQ(r.code, 2) << c.args;
+    EXPECT_EQ(lines(r.err), 1) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
+  }
+  EXPECT_EQ(readJson(tmp, "p/P.metrofit")["datasets"].size(), 4u);
+}
+
+}  // namespace
+}  // namespace metrofit

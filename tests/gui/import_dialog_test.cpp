@@ -41,11 +41,15 @@
 #include "app/gui/projectnavigator.h"
 #include "app/gui/thermalpage.h"
 #include "core/common/error.h"
+#include "core/io/json_util.h"
 #include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
 #include "core/project/project.h"
+#include "core/setup/model.h"
+#include "core/setup/report.h"
 #include "core/study/diagnosis_study.h"
 #include "core/study/kinematic_study.h"
+#include "core/study/setup_study.h"
 #include "core/study/thermal_comparison.h"
 #include "core/thermal/thermal_data.h"
 #include "core/thermal/thermal_log.h"
@@ -633,6 +637,173 @@ TEST_F(ImportDialogTest, DroppedFileOpensTheDialogAndIsImportedUndoably) {
   window.document()->undoStack()->undo();
   EXPECT_TRUE(window.document()->project().datasets.empty());
   window.document()->undoStack()->setClean();
+}
+
+// DMIS output written from the statement syntax of the standard: POS_D1 as nominal and actual point
+// (deviation FA - F along z = 0.008 mm), D2 only as a tolerance actual, TA(D2)=TOL/DIAM,18.52 -- the
+// actual diameter (nominal 18.5), as the QIF-to-DMIS converter writes it.
+constexpr const char* kDmisModel = R"({"name": "small", "step_mm": 0.001, "bounds_mm": [-0.1, 0.1],
+  "setup": [{"id": "W1", "kind": "wks"}, {"id": "T5", "kind": "tool"}],
+  "features": [{"id": "F1"}, {"id": "F2"}],
+  "dimensions": [{"id": "D1", "nominal": 42.0, "lower": -0.02, "upper": 0.02, "label": "POS_D1"},
+                 {"id": "D2", "nominal": 18.5, "lower": -0.05, "upper": 0.03}],
+  "arcs": [{"from": "W1", "to": "F1", "weight": 1}, {"from": "T5", "to": "F1", "weight": 1},
+           {"from": "W1", "to": "F2", "weight": -1}, {"from": "F1", "to": "D1", "weight": 1},
+           {"from": "F1", "to": "D2", "weight": 1}, {"from": "F2", "to": "D2", "weight": -1}]})";
+constexpr const char* kDmisPart =
+    "DMISMN/'part 7',05.3\n"
+    "UNITS/MM,ANGDEG\n"
+    "F(POS_D1)=FEAT/POINT,CART,10,20,42,0,0,1\n"
+    "FA(POS_D1)=FEAT/POINT,CART,10,20,42.008,0,0,1\n"
+    "TA(D2)=TOL/DIAM,18.52,INTOL\n"
+    "ENDFIL\n";
+
+TEST_F(ImportDialogTest, DmisTaMeaningIsChosenInTheDialogAndUsedByTheSetupStudy) {
+  writeFile(dir_.filePath(QStringLiteral("m.json")), kDmisModel);
+  writeFile(dir_.filePath(QStringLiteral("part7.dmi")), kDmisPart);
+  {
+    ImportDialog model(doc_.project(), doc_.projectPathForDatasets());
+    model.setFile(dir_.filePath(QStringLiteral("m.json")));
+    ASSERT_TRUE(model.canImport()) << model.problem().toStdString();
+    doc_.addDataset(model.dataset());
+  }
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  // A CSV file has no TA controls.
+  dialog.setFile(logPath_);
+  EXPECT_FALSE(dialog.isDmisFile());
+  EXPECT_FALSE(dialog.findChild<QWidget*>(QStringLiteral("importDmis"))->isVisibleTo(&dialog));
+  dialog.setFile(dir_.filePath(QStringLiteral("part7.dmi")));
+  EXPECT_EQ(dialog.kind(), QStringLiteral("dmis"));
+  EXPECT_TRUE(dialog.isDmisFile());
+  EXPECT_TRUE(dialog.findChild<QWidget*>(QStringLiteral("importDmis"))->isVisibleTo(&dialog));
+  auto* preview = dialog.findChild<QTableWidget*>(QStringLiteral("importPreview"));
+  auto* found = dialog.findChild<QLabel*>(QStringLiteral("importDetected"));
+  // Read as a deviation, 18.52 mm is far outside D2's band: the preview says so, naming TA(D2).
+  dialog.setTaMeaning(QStringLiteral("deviation"));
+  EXPECT_TRUE(found->text().contains(QStringLiteral("TA(D2)"))) << found->text().toStdString();
+  // Read as the actual value: D2's deviation is 18.52 - 18.5.
+  dialog.setTaMeaning(QStringLiteral("actual"));
+  ASSERT_EQ(preview->rowCount(), 2) << found->text().toStdString();
+  EXPECT_EQ(preview->item(1, 0)->text(), QStringLiteral("D2"));
+  EXPECT_NEAR(preview->item(1, 1)->text().toDouble(), 0.02, 1e-9);
+  EXPECT_NEAR(preview->item(0, 1)->text().toDouble(), 0.008, 1e-9);
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.dataset().dmis.taMeaning, setup::DmisTaMeaning::Actual);
+  EXPECT_FALSE(dialog.dataset().dmis.signFollowsNominal);
+  importButton(dialog)->click();
+  ASSERT_EQ(dialog.result(), QDialog::Accepted);
+  doc_.addDataset(dialog.dataset());
+  doc_.save();
+  // The saved project says how the file is read, and the setup study reads it that way.
+  const nlohmann::json saved = readJsonFile(doc_.fileName().toStdString());
+  EXPECT_EQ(saved["datasets"][1]["dmis"], (nlohmann::json{{"ta_meaning", "actual"}}));
+  const Project reopened = loadProject(doc_.fileName().toStdString());
+  const SetupStudyFiles files = setupStudyFiles(reopened, doc_.fileName().toStdString());
+  EXPECT_EQ(files.reportId, "part7");
+  const setup::Model model = setup::readModel(files.modelPath);
+  const setup::Measurements m =
+      setup::readMeasurements({files.reportPath}, model, files.reportCsv, files.reportDmis);
+  EXPECT_NEAR(m.deviationMm[0], 0.008, 1e-12);
+  EXPECT_NEAR(m.deviationMm[1], 18.52 - 18.5, 1e-12);
+}
+
+// A log with an instrument preamble (two lines, then a '%' comment) and two unreadable rows: line 6
+// ('n/a' in T1) and line 8 (a field missing).
+constexpr const char* kPreambleLog =
+    "Thermal test rig 3\n"
+    "Operator: K.\n"
+    "% sensors calibrated\n"
+    "time_min,T1,disp_z_um\n"
+    "0,20.0,0.0\n"
+    "10,n/a,1.5\n"
+    "20,21.0,2.5\n"
+    "30,21.5\n"
+    "40,22.0,4.0\n";
+
+TEST_F(ImportDialogTest, HeaderOverrideAndEveryUnreadableRowIsListed) {
+  const QString path = dir_.filePath(QStringLiteral("rig.csv"));
+  writeFile(path, kPreambleLog);
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(path);
+  EXPECT_FALSE(dialog.canImport());  // detected: the preamble is taken for the header
+  dialog.setKind(QStringLiteral("thermal-log"));
+  dialog.setHeaderLines(2);
+  dialog.setCommentPrefix(QStringLiteral("%"));
+  // Both bad rows are listed, with line, row, column and why; strict, the first is the problem.
+  EXPECT_EQ(dialog.rowProblems(),
+            (QStringList{QStringLiteral("line 6 (row 2), column 'T1': 'n/a' is not a number"),
+                         QStringLiteral("line 8 (row 4): row has 2 fields, the header (line 4) has 3")}));
+  EXPECT_FALSE(dialog.canImport());
+  EXPECT_TRUE(dialog.problem().contains(QStringLiteral("rig.csv:6:2: field 'T1'")))
+      << dialog.problem().toStdString();
+  EXPECT_FALSE(importButton(dialog)->isEnabled());
+  // The preview shows the readable rows.
+  auto* preview = dialog.findChild<QTableWidget*>(QStringLiteral("importPreview"));
+  EXPECT_EQ(preview->rowCount(), 3);
+  EXPECT_EQ(preview->item(2, 0)->text(), QStringLiteral("40"));
+  // A picture of the dialog in this state, to look at (the list under the preview, the problem line).
+  dialog.show();
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);  // replaced mapping widgets
+  QApplication::processEvents();
+  dialog.grab().save(QString::fromStdString((test::outDir() / "import_dialog_unreadable_rows.png").string()));
+  dialog.setSkipBadRows(true);
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_TRUE(
+      dialog.findChild<QLabel*>(QStringLiteral("importProblem"))->text().contains(QStringLiteral("2")));
+  const CsvReadOptions o = dialog.dataset().csv;
+  EXPECT_EQ(o.headerLines, 2);
+  EXPECT_EQ(o.commentPrefix, "%");
+  EXPECT_TRUE(o.skipBadRows);
+  importButton(dialog)->click();
+  ASSERT_EQ(dialog.result(), QDialog::Accepted);
+  doc_.addDataset(dialog.dataset());
+  // The thermal log read the way the project says: three rows, time 0, 20, 40 min.
+  const ThermalLog log = readThermalLog(resolveDatasetPath(doc_.fileName().toStdString(), dialog.dataset()),
+                                        3, dialog.dataset().csv);
+  EXPECT_EQ(log.rows(), 3u);
+}
+
+TEST_F(ImportDialogTest, EmbedCopiesIntoTheDataFolderAndRefusesToOverwrite) {
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  const QString outside = dir_.filePath(QStringLiteral("elsewhere/Messung.CSV"));
+  ASSERT_TRUE(QDir(dir_.path()).mkpath(QStringLiteral("elsewhere")));
+  writeFile(outside, germanLog());
+  dialog.setFile(outside);
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.dataset().path, "elsewhere/Messung.CSV");  // the default links
+  // data/aufwaermung.csv exists: an embedded copy with that id is refused, nothing is written.
+  dialog.setDatasetId(QStringLiteral("aufwaermung"));
+  dialog.setEmbed(true);
+  EXPECT_FALSE(dialog.canImport());
+  EXPECT_TRUE(dialog.problem().contains(QStringLiteral("already exists"))) << dialog.problem().toStdString();
+  dialog.setDatasetId(QStringLiteral("messung"));
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  importButton(dialog)->click();
+  ASSERT_EQ(dialog.result(), QDialog::Accepted);
+  EXPECT_EQ(dialog.dataset().path, "data/messung.csv");
+  QFile copy(dir_.filePath(QStringLiteral("data/messung.csv")));
+  ASSERT_TRUE(copy.open(QIODevice::ReadOnly));
+  EXPECT_EQ(copy.readAll(), germanLog());
+  doc_.addDataset(dialog.dataset());
+  EXPECT_EQ(test::readText(resolveDatasetPath(doc_.fileName().toStdString(), doc_.project().datasets.back())),
+            germanLog().toStdString());
+  // A copy that appears between the check and the click is not overwritten either: the dialog stays open.
+  ImportDialog late(doc_.project(), doc_.projectPathForDatasets());
+  late.setFile(outside);
+  late.setDatasetId(QStringLiteral("late"));
+  late.setEmbed(true);
+  ASSERT_TRUE(late.canImport()) << late.problem().toStdString();
+  writeFile(dir_.filePath(QStringLiteral("data/late.csv")), "x\n");
+  importButton(late)->click();
+  EXPECT_NE(late.result(), QDialog::Accepted);
+  EXPECT_TRUE(late.problem().contains(QStringLiteral("already exists"))) << late.problem().toStdString();
+  QFile lateFile(dir_.filePath(QStringLiteral("data/late.csv")));
+  ASSERT_TRUE(lateFile.open(QIODevice::ReadOnly));
+  EXPECT_EQ(lateFile.readAll(), QByteArray("x\n"));
+  // An untitled project cannot embed (no folder yet).
+  ProjectDocument untitled;
+  ImportDialog unsaved(untitled.project(), untitled.projectPathForDatasets());
+  EXPECT_FALSE(unsaved.findChild<QWidget*>(QStringLiteral("importEmbed"))->isEnabled());
 }
 
 }  // namespace

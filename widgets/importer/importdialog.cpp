@@ -1,5 +1,6 @@
 #include "widgets/importer/importdialog.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -12,8 +13,10 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -22,11 +25,14 @@
 #include <string_view>
 #include <utility>
 
+#include "core/common/error.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
 #include "core/project/datasets.h"
+#include "core/setup/model.h"
 #include "core/setup/report.h"
+#include "core/study/setup_study.h"
 #include "widgets/document/studyinfo.h"
 
 namespace metrofit {
@@ -154,6 +160,14 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
       id_(new QLineEdit(this)),
       delimiter_(new QComboBox(this)),
       decimal_(new QComboBox(this)),
+      headerLines_(new QSpinBox(this)),
+      comment_(new QLineEdit(this)),
+      skipBadRows_(new QCheckBox(tr("Skip &unreadable rows"), this)),
+      dmisBox_(new QGroupBox(tr("DMIS tolerance actuals"), this)),
+      taMeaning_(new QComboBox(this)),
+      taSign_(new QComboBox(this)),
+      embed_(new QCheckBox(tr("Cop&y the file into the project (data folder)"), this)),
+      rowProblems_(new QListWidget(this)),
       detected_(new QLabel(this)),
       mapping_(new QTableWidget(this)),
       preview_(new QTableWidget(this)),
@@ -168,6 +182,31 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   delimiter_->setObjectName(QStringLiteral("importDelimiter"));
   decimal_->setObjectName(QStringLiteral("importDecimal"));
   detected_->setObjectName(QStringLiteral("importDetected"));
+  headerLines_->setObjectName(QStringLiteral("importHeaderLines"));
+  headerLines_->setRange(-1, 10000);
+  headerLines_->setValue(-1);
+  headerLines_->setSpecialValueText(tr("detect"));
+  headerLines_->setToolTip(
+      tr("Lines before the column names, skipped whatever they hold (an instrument's preamble)"));
+  comment_->setObjectName(QStringLiteral("importComment"));
+  comment_->setPlaceholderText(QStringLiteral("#"));
+  comment_->setMaxLength(16);
+  comment_->setToolTip(tr("What starts a comment line before the column names"));
+  skipBadRows_->setObjectName(QStringLiteral("importSkipBadRows"));
+  skipBadRows_->setToolTip(
+      tr("Leave out the rows listed under the preview; the project keeps this setting and the readers "
+         "count the rows they leave out. Off: the first unreadable row is an error."));
+  dmisBox_->setObjectName(QStringLiteral("importDmis"));
+  taMeaning_->setObjectName(QStringLiteral("importTaMeaning"));
+  taMeaning_->addItem(tr("auto (nearer the nominal: the actual value)"), QStringLiteral("auto"));
+  taMeaning_->addItem(tr("deviation (actual − nominal)"), QStringLiteral("deviation"));
+  taMeaning_->addItem(tr("actual value"), QStringLiteral("actual"));
+  taSign_->setObjectName(QStringLiteral("importTaSign"));
+  taSign_->addItem(tr("plain (actual − nominal)"), QStringLiteral("plain"));
+  taSign_->addItem(tr("follows the nominal's sign"), QStringLiteral("nominal"));
+  embed_->setObjectName(QStringLiteral("importEmbed"));
+  rowProblems_->setObjectName(QStringLiteral("importRowProblems"));
+  rowProblems_->setMaximumHeight(110);
   detected_->setWordWrap(true);
   detected_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   mapping_->setObjectName(QStringLiteral("importMapping"));
@@ -201,7 +240,22 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   auto* dialectForm = new QFormLayout(dialect);
   dialectForm->addRow(tr("&Delimiter:"), delimiter_);
   dialectForm->addRow(tr("Decimal &mark:"), decimal_);
+  auto* headerRow = new QHBoxLayout;
+  headerRow->addWidget(headerLines_);
+  auto* commentLabel = new QLabel(tr("&Comment prefix:"), dialect);
+  commentLabel->setBuddy(comment_);
+  headerRow->addWidget(commentLabel);
+  headerRow->addWidget(comment_);
+  headerRow->addWidget(skipBadRows_);
+  headerRow->addStretch(1);
+  auto* headerLabel = new QLabel(tr("&Lines before the header:"), dialect);
+  headerLabel->setBuddy(headerLines_);
+  dialectForm->addRow(headerLabel, headerRow);
   dialectForm->addRow(tr("Found:"), detected_);
+  auto* dmisForm = new QFormLayout(dmisBox_);
+  dmisForm->addRow(tr("TA &value is:"), taMeaning_);
+  dmisForm->addRow(tr("TA si&gn:"), taSign_);
+  dmisBox_->setVisible(false);
 
   mapping_->setColumnCount(MapColumnCount);
   mapping_->setHorizontalHeaderLabels({tr("Column in the file"), tr("First value"), tr("Read as")});
@@ -226,7 +280,12 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   mappingLayout->addWidget(mapping_, 1);
   auto* previewBox = new QGroupBox(tr("Preview (first %1 rows)").arg(kPreviewRows), this);
   auto* previewLayout = new QVBoxLayout(previewBox);
-  previewLayout->addWidget(preview_);
+  previewLayout->addWidget(preview_, 1);
+  auto* problemsTitle = new QLabel(tr("Rows that cannot be read:"), previewBox);
+  problemsTitle->setObjectName(QStringLiteral("importRowProblemsTitle"));
+  problemsTitle->setWordWrap(true);  // its hint must not widen the preview at the mapping's cost
+  previewLayout->addWidget(problemsTitle);
+  previewLayout->addWidget(rowProblems_);
   auto* splitter = new QSplitter(Qt::Horizontal, this);
   splitter->addWidget(mappingBox);
   splitter->addWidget(previewBox);
@@ -237,15 +296,15 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form);
   layout->addWidget(dialect);
+  layout->addWidget(dmisBox_);
   layout->addWidget(splitter, 1);
+  layout->addWidget(embed_);
   layout->addWidget(problemLabel_);
   layout->addWidget(buttons_);
-  resize(1000, 640);
+  resize(1000, 680);
 
   connect(browse, &QPushButton::clicked, this, &ImportDialog::browse);
-  connect(buttons_, &QDialogButtonBox::accepted, this, [this] {
-    if (canImport()) accept();
-  });
+  connect(buttons_, &QDialogButtonBox::accepted, this, [this] { importNow(); });
   connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
   connect(kind_, &QComboBox::currentIndexChanged, this, [this] {
     if (updating_) return;
@@ -262,6 +321,25 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   connect(id_, &QLineEdit::textChanged, this, [this] {
     if (!updating_) revalidate();
   });
+  connect(headerLines_, &QSpinBox::valueChanged, this, [this] {
+    if (!updating_) revalidate();
+  });
+  connect(comment_, &QLineEdit::textChanged, this, [this] {
+    if (!updating_) revalidate();
+  });
+  for (QCheckBox* box : {skipBadRows_, embed_})
+    connect(box, &QCheckBox::toggled, this, [this] {
+      if (!updating_) revalidate();
+    });
+  for (QComboBox* box : {taMeaning_, taSign_})
+    connect(box, &QComboBox::currentIndexChanged, this, [this] {
+      if (!updating_) revalidate();
+    });
+  const bool saved = QFileInfo::exists(projectPath_);
+  embed_->setEnabled(saved);
+  embed_->setToolTip(saved ? tr("Copy the file to the project's data folder as <id>.<extension> and refer to "
+                                "the copy; the import never overwrites a file there")
+                           : tr("Save the project first: the copy goes into the project's folder"));
   revalidate();
 }
 
@@ -338,13 +416,19 @@ void ImportDialog::setFile(const QString& path) {
     text_ = f.readAll().toStdString();
   }
   {
-    const QSignalBlocker b1(kind_), b2(delimiter_), b3(decimal_), b4(id_);
+    const QSignalBlocker b1(kind_), b2(delimiter_), b3(decimal_), b4(id_), b5(headerLines_), b6(comment_),
+        b7(skipBadRows_), b8(taMeaning_), b9(taSign_);
     fileEdit_->setText(QDir::toNativeSeparators(file_));
     fileEdit_->setToolTip(fileEdit_->text());
     const int k = kind_->findData(guessKind(file_, QByteArray::fromStdString(text_.substr(0, 64 * 1024))));
     if (k >= 0) kind_->setCurrentIndex(k);
     delimiter_->setCurrentIndex(0);
     decimal_->setCurrentIndex(0);
+    headerLines_->setValue(-1);
+    comment_->clear();
+    skipBadRows_->setChecked(false);
+    taMeaning_->setCurrentIndex(0);
+    taSign_->setCurrentIndex(0);
     id_->clear();
     id_->setPlaceholderText(QFileInfo(file_).completeBaseName());
   }
@@ -400,9 +484,13 @@ QString ImportDialog::role(const QString& column) const {
 
 CsvReadOptions ImportDialog::csvOptions() const {
   CsvReadOptions o;
-  if (!datasetKindIsCsv(projectKind(kind()).toStdString()) || looksLikeCmmTextReport(text_)) return o;
+  if (!datasetKindIsCsv(projectKind(kind()).toStdString()) || looksLikeCmmTextReport(text_) || isDmisFile())
+    return o;
   o.dialect.delimiter = static_cast<char>(delimiter_->currentData().toInt());
   o.dialect.decimal = static_cast<char>(decimal_->currentData().toInt());
+  o.headerLines = headerLines_->value();
+  o.commentPrefix = comment_->text().toStdString();
+  o.skipBadRows = skipBadRows_->isChecked();
   for (const std::string& column : header_) {
     const QString role = roles_.value(QString::fromStdString(column));
     if (!role.isEmpty() && role.toStdString() != column) o.columnMap.emplace_back(role.toStdString(), column);
@@ -411,6 +499,72 @@ CsvReadOptions ImportDialog::csvOptions() const {
   // and reopened dataset equals the one imported.
   std::sort(o.columnMap.begin(), o.columnMap.end());
   return o;
+}
+
+void ImportDialog::setHeaderLines(int lines) {
+  headerLines_->setValue(lines);
+}
+
+void ImportDialog::setCommentPrefix(const QString& prefix) {
+  comment_->setText(prefix);
+}
+
+void ImportDialog::setSkipBadRows(bool skip) {
+  skipBadRows_->setChecked(skip);
+}
+
+QStringList ImportDialog::rowProblems() const {
+  QStringList out;
+  for (int i = 0; i < rowProblems_->count(); ++i) out << rowProblems_->item(i)->text();
+  return out;
+}
+
+bool ImportDialog::isDmisFile() const {
+  const QString k = kind();
+  return (k == QLatin1String("dmis") || k == QLatin1String("cmm-report")) && setup::looksLikeDmis(text_);
+}
+
+void ImportDialog::setTaMeaning(const QString& meaning) {
+  const int i = taMeaning_->findData(meaning);
+  if (i >= 0) taMeaning_->setCurrentIndex(i);
+}
+
+void ImportDialog::setTaSign(const QString& sign) {
+  const int i = taSign_->findData(sign);
+  if (i >= 0) taSign_->setCurrentIndex(i);
+}
+
+setup::DmisOptions ImportDialog::dmisOptions() const {
+  setup::DmisOptions o;
+  if (!isDmisFile()) return o;
+  o.taMeaning = setup::parseDmisTaMeaning(taMeaning_->currentData().toString().toStdString());
+  o.signFollowsNominal = taSign_->currentData().toString() == QLatin1String("nominal");
+  return o;
+}
+
+void ImportDialog::setEmbed(bool embed) {
+  embed_->setChecked(embed);
+}
+
+bool ImportDialog::embed() const {
+  return embed_->isEnabled() && embed_->isChecked();
+}
+
+void ImportDialog::importNow() {
+  if (!canImport()) return;
+  if (embed()) {
+    try {
+      embedDataset(QFile::encodeName(projectPath_).toStdString(), QFile::encodeName(file_).toStdString(),
+                   dataset_);
+    } catch (const std::exception& e) {
+      problem_ = QString::fromStdString(e.what());
+      problemLabel_->setText(problem_);
+      problemLabel_->setStyleSheet(QStringLiteral("color: #b00020;"));
+      buttons_->button(QDialogButtonBox::Ok)->setEnabled(false);
+      return;
+    }
+  }
+  accept();
 }
 
 void ImportDialog::guessRoles() {
@@ -509,16 +663,59 @@ void ImportDialog::fillPreview(const CsvTable& table) {
   }
 }
 
+void ImportDialog::previewDmis() {
+  // With a setup model in the project: the deviations the setup study will read with these settings.
+  const SetupStudyFiles files = setupStudyFiles(project_, QFile::encodeName(projectPath_).toStdString());
+  if (files.modelPath.empty()) {
+    detected_->setText(
+        tr("DMIS output: add a setup model to the project to preview the deviations read "
+           "with these settings."));
+    return;
+  }
+  try {
+    const setup::Model model = setup::readModel(files.modelPath);
+    const setup::Measurements m =
+        setup::dmisReportFromText(text_, displayPath(file_.toStdString()), model, dmisOptions());
+    preview_->clear();
+    preview_->setColumnCount(2);
+    preview_->setRowCount(static_cast<int>(model.dimensions.size()));
+    preview_->setHorizontalHeaderLabels({tr("Dimension"), tr("Deviation (mm)")});
+    for (std::size_t q = 0; q < model.dimensions.size(); ++q) {
+      preview_->setItem(static_cast<int>(q), 0,
+                        new QTableWidgetItem(QString::fromStdString(model.dimensions[q].id)));
+      preview_->setItem(static_cast<int>(q), 1,
+                        new QTableWidgetItem(m.samples[q] > 0 ? QString::number(m.deviationMm[q], 'g', 6)
+                                                              : QStringLiteral("–")));
+    }
+    preview_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    detected_->setText(
+        tr("DMIS output read against the setup model “%1”.").arg(QString::fromStdString(files.modelId)));
+  } catch (const std::exception& e) {
+    // Not a reason to refuse the file (it may belong to another model): said, not blocking.
+    detected_->setText(tr("DMIS output; read against the setup model “%1”: %2")
+                           .arg(QString::fromStdString(files.modelId), QString::fromStdString(e.what())));
+  }
+}
+
 void ImportDialog::revalidate() {
   if (updating_) return;
   updating_ = true;
   problem_.clear();
   const std::string cliKind = kind().toStdString();
   // A CMM text report is read by its own reader whatever CSV kind it is imported as.
-  const bool csv = datasetKindIsCsv(projectKind(kind()).toStdString()) && !looksLikeCmmTextReport(text_);
+  const bool csv =
+      datasetKindIsCsv(projectKind(kind()).toStdString()) && !looksLikeCmmTextReport(text_) && !isDmisFile();
   delimiter_->setEnabled(csv);
   decimal_->setEnabled(csv);
+  headerLines_->setEnabled(csv);
+  comment_->setEnabled(csv);
+  skipBadRows_->setEnabled(csv);
   mapping_->setEnabled(csv);
+  rowProblems_->clear();
+  dmisBox_->setVisible(!file_.isEmpty() && readError_.isEmpty() && isDmisFile());
+  auto* problemsTitle = findChild<QLabel*>(QStringLiteral("importRowProblemsTitle"));
+  problemsTitle->setText(tr("Rows that cannot be read:"));
+  int skipped = 0;
   if (file_.isEmpty()) {
     problem_ = tr("Choose a file to import.");
     detected_->clear();
@@ -533,16 +730,38 @@ void ImportDialog::revalidate() {
                            .arg(datasetKindTitle(projectKind(kind()))));
     if (!header_.empty()) rebuildMapping({});
     showRawPreview();
+    if (isDmisFile()) previewDmis();
   } else {
     const std::string shown = displayPath(file_.toStdString());
     CsvReadOptions dialectOnly;
     dialectOnly.dialect.delimiter = static_cast<char>(delimiter_->currentData().toInt());
     dialectOnly.dialect.decimal = static_cast<char>(decimal_->currentData().toInt());
+    dialectOnly.headerLines = headerLines_->value();
+    dialectOnly.commentPrefix = comment_->text().toStdString();
+    // The preview shows the rows that can be read and lists the others under it.
+    dialectOnly.skipBadRows = true;
     try {
       const CsvTable table = parseCsv(text_, shown, dialectOnly);
       if (table.header() != header_) rebuildMapping(table.header());
       fillPreview(table);
-      const auto [line, comments] = headerLine(text_);
+      const long line = table.headerLineNumber();
+      const auto comments = static_cast<long>(table.comments().size());
+      headerLines_->setSpecialValueText(tr("detect (%1)").arg(line - 1));
+      for (const CsvRowProblem& p : table.skippedRows())
+        rowProblems_->addItem(QString::fromStdString(describeRowProblem(p)));
+      skipped = static_cast<int>(table.skippedRows().size());
+      if (skipped > 0 && !skipBadRows_->isChecked()) {
+        problemsTitle->setText(
+            tr("Rows that cannot be read (%1): tick “Skip unreadable rows” to import without them.")
+                .arg(skipped));
+        // Strict: the first unreadable row is the error, as the readers give it.
+        const CsvRowProblem& first = table.skippedRows().front();
+        const int column = table.columnIndex(first.column);
+        problem_ = QString::fromStdString(
+            ParseError(ErrorContext{shown, first.line, column + 1L, first.column}, first.why).what());
+      } else if (skipped > 0) {
+        problemsTitle->setText(tr("Rows that cannot be read (%1), left out:").arg(skipped));
+      }
       const auto found = [](char chosen, const QString& text) {
         return chosen == 0 ? tr("%1 (detected)").arg(text) : text;
       };
@@ -569,15 +788,31 @@ void ImportDialog::revalidate() {
       request.file = QFile::encodeName(file_).toStdString();
       request.id = id_->text().trimmed().toStdString();
       request.csv = csvOptions();
+      request.dmis = dmisOptions();
       dataset_ = addDataset(scratch, QFile::encodeName(projectPath_).toStdString(), request);
     } catch (const std::exception& e) {
       problem_ = QString::fromStdString(e.what());
     }
   }
-  problemLabel_->setText(problem_.isEmpty() ? tr("Ready to import as %1 “%2”.")
-                                                  .arg(datasetKindTitle(projectKind(kind())),
-                                                       QString::fromStdString(dataset_.id))
-                                            : problem_);
+  if (problem_.isEmpty() && embed()) {
+    const QString copy =
+        QString::fromStdString(embeddedDatasetPath(dataset_.id, file_.toStdString(), dataset_.kind));
+    const QString target = QFileInfo(projectPath_).absoluteDir().filePath(copy);
+    if (QFileInfo::exists(target))
+      problem_ = tr("%1: already exists; an embedded copy never overwrites a file (choose another id)")
+                     .arg(QDir::toNativeSeparators(target));
+  }
+  QString ready = tr("Ready to import as %1 “%2”.")
+                      .arg(datasetKindTitle(projectKind(kind())), QString::fromStdString(dataset_.id));
+  if (skipped > 0) ready += QLatin1Char(' ') + tr("%n unreadable row(s) will be left out.", nullptr, skipped);
+  if (embed())
+    ready += QLatin1Char(' ') + tr("The file is copied to %1.")
+                                    .arg(QString::fromStdString(embeddedDatasetPath(
+                                        dataset_.id, file_.toStdString(), dataset_.kind)));
+  // The list of unreadable rows takes room from the preview only when it has something to say.
+  rowProblems_->setVisible(rowProblems_->count() > 0);
+  problemsTitle->setVisible(rowProblems_->count() > 0);
+  problemLabel_->setText(problem_.isEmpty() ? ready : problem_);
   problemLabel_->setStyleSheet(problem_.isEmpty() ? QString() : QStringLiteral("color: #b00020;"));
   buttons_->button(QDialogButtonBox::Ok)->setEnabled(problem_.isEmpty());
   updating_ = false;

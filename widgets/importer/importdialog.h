@@ -9,11 +9,17 @@
 //     can be read as a role the readers look for (time_s / time_min / time_h, disp_z_um, qx, x_cmd_mm,
 //     nominal_mm, ...), stored as the dataset's CsvReadOptions::columnMap (the project keeps the
 //     mapping, not a converted copy of the file),
-//   * a preview of the first rows (the file's own column names, with the role they are read as),
+//   * for CSV kinds the lines before the header and the comment prefix (detected, overridable: an
+//     instrument's preamble that is not '#'-commented), and "skip unreadable rows",
+//   * for DMIS files how TA(label) values are read (meaning auto / deviation / actual, sign plain /
+//     nominal); with a setup model in the project the preview shows the deviations read with them,
+//   * a preview of the first rows (the file's own column names, with the role they are read as) and,
+//     under it, every row that cannot be read (line, row, column, why),
 //   * the first problem as one line naming file, line and field (core's InputError), in which case
-//     the Import button stays disabled.
+//     the Import button stays disabled (unreadable rows do not block when they are skipped),
+//   * "copy into the project" (embed: data/<id>.<ext>, never overwriting), default: link the file.
 // The dialog does not change the project: after accept() the caller adds dataset() through the
-// document's undo stack (ProjectDocument::addDataset).
+// document's undo stack (ProjectDocument::addDataset). An embedded file is copied on accept().
 #include <QDialog>
 #include <QMap>
 #include <QString>
@@ -23,10 +29,14 @@
 #include "core/io/csv.h"
 #include "core/project/project.h"
 
+class QCheckBox;
 class QComboBox;
 class QDialogButtonBox;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
+class QListWidget;
+class QSpinBox;
 class QTableWidget;
 
 namespace metrofit {
@@ -55,8 +65,28 @@ class ImportDialog : public QDialog {
   /// Reads the file's column `column` as `role`; an empty role keeps the file's name.
   void setRole(const QString& column, const QString& role);
   QString role(const QString& column) const;
-  /// Dialect and mapping as they will be stored in the dataset (the mapping sorted by role).
+  /// Lines before the header (-1: detect).
+  void setHeaderLines(int lines);
+  /// The comment prefix (empty: "#").
+  void setCommentPrefix(const QString& prefix);
+  /// Leave out the rows that cannot be read instead of refusing the file.
+  void setSkipBadRows(bool skip);
+  /// Every row that cannot be read, one line each ("line 7 (row 5), column 'T1': ..."), as listed
+  /// under the preview.
+  QStringList rowProblems() const;
+  /// Dialect, header settings and mapping as they will be stored in the dataset (the mapping sorted
+  /// by role).
   CsvReadOptions csvOptions() const;
+  /// True when the file is read as DMIS output (the TA controls are shown).
+  bool isDmisFile() const;
+  /// "auto", "deviation" or "actual".
+  void setTaMeaning(const QString& meaning);
+  /// "plain" or "nominal".
+  void setTaSign(const QString& sign);
+  setup::DmisOptions dmisOptions() const;
+  /// Copy the file into the project's data/ folder on import (only for a saved project).
+  void setEmbed(bool embed);
+  bool embed() const;
 
   /// True when the file can be read as the chosen kind (the Import button is enabled).
   bool canImport() const { return problem_.isEmpty(); }
@@ -77,6 +107,8 @@ class ImportDialog : public QDialog {
   void revalidate();
   void showRawPreview();
   void fillPreview(const CsvTable& table);
+  void previewDmis();
+  void importNow();
 
   Project project_;
   QString projectPath_;
@@ -94,6 +126,14 @@ class ImportDialog : public QDialog {
   QLineEdit* id_;
   QComboBox* delimiter_;
   QComboBox* decimal_;
+  QSpinBox* headerLines_;
+  QLineEdit* comment_;
+  QCheckBox* skipBadRows_;
+  QGroupBox* dmisBox_;
+  QComboBox* taMeaning_;
+  QComboBox* taSign_;
+  QCheckBox* embed_;
+  QListWidget* rowProblems_;
   QLabel* detected_;
   QTableWidget* mapping_;
   QTableWidget* preview_;

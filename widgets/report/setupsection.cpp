@@ -132,8 +132,8 @@ void writeSetupSection(ReportPainter& out, const ReportContext& context) {
     out.paragraph(ReportText::tr("The project has no CMM report for this model: nothing to correct."));
     return;
   }
-  setup::Measurements measurements =
-      setup::readMeasurements({reportSet->path.toStdString()}, model, reportSet->ref.csv);
+  setup::Measurements measurements = setup::readMeasurements({reportSet->path.toStdString()}, model,
+                                                             reportSet->ref.csv, reportSet->ref.dmis);
   // The effects added with the diagnosis page's Apply: the deviations become the next part's prediction.
   diagnose::SetupPrediction prediction, declared;
   const std::vector<diagnose::AppliedSetupEffect> applied =
