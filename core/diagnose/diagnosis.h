@@ -85,9 +85,9 @@ struct Candidate {
   Phrases evidenceParts;             ///< evidence == english(evidenceParts)
   /// A generic effect (`unexplained:<against>`, docs/file-formats.md#generic-effects): its fixed shape.
   std::optional<GenericForm> generic;
-  /// Kinematic generic effects: the coefficients w of genericBasis(*generic) from the final fit, so
-  /// that the displacement genericBasis(shape) w can be evaluated on a path (Apply). Empty otherwise
-  /// (thermal refits its generic columns).
+  /// Kinematic, matching and setup generic effects: the coefficients w of genericBasis(*generic) from
+  /// the final fit, so that a study can evaluate genericBasis(shape) w (Apply). Empty in thermal (its
+  /// study refits the generic columns).
   std::vector<double> genericCoefficients;
 
   /// Replaces the evidence (string and phrases).
