@@ -1003,12 +1003,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+8"/>
-        <location line="+223"/>
+        <location line="+224"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-210"/>
+        <location line="-211"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Zeilen vor den Spaltennamen, unabhängig vom Inhalt übersprungen (Vorspann eines Messgeräts)</translation>
     </message>
@@ -1149,7 +1149,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+3"/>
-        <location line="+432"/>
+        <location line="+433"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
@@ -1276,7 +1276,6 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     <name>metrofit::KinematicPlots</name>
     <message>
         <location filename="../widgets/kinematics/kinematicplots.cpp" line="+363"/>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+360"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
@@ -1651,66 +1650,56 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+6"/>
-        <location line="+89"/>
-        <location line="+108"/>
+        <location line="+94"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-87"/>
-        <location line="-106"/>
+        <location line="-92"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+87"/>
-        <location line="+106"/>
+        <location line="+92"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-85"/>
-        <location line="-104"/>
+        <location line="-90"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+85"/>
-        <location line="+104"/>
+        <location line="+90"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-83"/>
-        <location line="-102"/>
+        <location line="-88"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Der X-Antrieb bewegt sich entlang (cos a, sin a); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+83"/>
-        <location line="+102"/>
+        <location line="+88"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-81"/>
-        <location line="-100"/>
+        <location line="-86"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Der Y-Antrieb bewegt sich entlang (-sin b, cos b); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+81"/>
-        <location line="+100"/>
+        <location line="+86"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-79"/>
-        <location line="-98"/>
+        <location line="-84"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Der Winkel zwischen den Achsen beträgt 90° + (b − a)</translation>
     </message>
@@ -2653,8 +2642,6 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Sperren der Ausrichtung ändern</translation>
     </message>
     <message>
-        <location line="+23"/>
-        <location line="+260"/>
         <location line="+6"/>
         <source>Change the control of the frame</source>
         <translation>Steuerung des Frames ändern</translation>
@@ -6962,8 +6949,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+23"/>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
         <translation>Das Modell wurde gespeichert, aber der KMG-Messbericht passt nicht mehr dazu (die Läufe verwenden den Bericht, wie er mit dem vorherigen Modell eingelesen wurde): %1</translation>
     </message>
@@ -7832,7 +7818,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>gemessen (kombinierter Test)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+35"/>
         <source>module %1</source>
         <translation>Modul %1</translation>
     </message>
@@ -7927,49 +7913,49 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+7"/>
         <location line="+104"/>
-        <location line="+108"/>
+        <location line="+112"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location line="-212"/>
-        <location line="+212"/>
+        <location line="-216"/>
+        <location line="+216"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
     <message>
-        <location line="-211"/>
-        <location line="+211"/>
+        <location line="-215"/>
+        <location line="+215"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-211"/>
-        <location line="+211"/>
+        <location line="-215"/>
+        <location line="+215"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-210"/>
+        <location line="-214"/>
         <location line="+104"/>
-        <location line="+106"/>
+        <location line="+110"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-210"/>
-        <location line="+210"/>
+        <location line="-214"/>
+        <location line="+214"/>
         <source>band</source>
         <translation>Band</translation>
     </message>
     <message>
-        <location line="-209"/>
-        <location line="+209"/>
+        <location line="-213"/>
+        <location line="+213"/>
         <source>verdict</source>
         <translation>Urteil</translation>
     </message>
     <message>
-        <location line="-202"/>
+        <location line="-206"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -8039,7 +8025,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>weniger (RMS, %)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+22"/>
         <source>%1: %p%</source>
         <translation>%1: %p%</translation>
     </message>

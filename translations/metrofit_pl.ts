@@ -1003,12 +1003,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+8"/>
-        <location line="+223"/>
+        <location line="+224"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-210"/>
+        <location line="-211"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Wiersze przed nazwami kolumn, pomijane bez względu na treść (nagłówek przyrządu)</translation>
     </message>
@@ -1149,7 +1149,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+3"/>
-        <location line="+432"/>
+        <location line="+433"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
@@ -1277,7 +1277,6 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <name>metrofit::KinematicPlots</name>
     <message>
         <location filename="../widgets/kinematics/kinematicplots.cpp" line="+363"/>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+360"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
@@ -1653,66 +1652,56 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+6"/>
-        <location line="+89"/>
-        <location line="+108"/>
+        <location line="+94"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-87"/>
-        <location line="-106"/>
+        <location line="-92"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+87"/>
-        <location line="+106"/>
+        <location line="+92"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-85"/>
-        <location line="-104"/>
+        <location line="-90"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+85"/>
-        <location line="+104"/>
+        <location line="+90"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-83"/>
-        <location line="-102"/>
+        <location line="-88"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Napęd X porusza się wzdłuż (cos a, sin a); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+83"/>
-        <location line="+102"/>
+        <location line="+88"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-81"/>
-        <location line="-100"/>
+        <location line="-86"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Napęd Y porusza się wzdłuż (-sin b, cos b); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+81"/>
-        <location line="+100"/>
+        <location line="+86"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-79"/>
-        <location line="-98"/>
+        <location line="-84"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Kąt między osiami wynosi 90° + (b − a)</translation>
     </message>
@@ -2656,8 +2645,6 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmiana blokad dopasowania</translation>
     </message>
     <message>
-        <location line="+23"/>
-        <location line="+260"/>
         <location line="+6"/>
         <source>Change the control of the frame</source>
         <translation>Zmień sterowanie frame’u</translation>
@@ -6982,8 +6969,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+23"/>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>The model was saved, but the CMM report does not match it any more (the runs use the report as read against the previous model): %1</source>
         <translation>Model zapisano, ale raport WMP już do niego nie pasuje (przebiegi używają raportu wczytanego względem poprzedniego modelu): %1</translation>
     </message>
@@ -7855,7 +7841,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>zmierzony (test łączony)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+35"/>
         <source>module %1</source>
         <translation>moduł %1</translation>
     </message>
@@ -7950,49 +7936,49 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+7"/>
         <location line="+104"/>
-        <location line="+108"/>
+        <location line="+112"/>
         <source>model</source>
         <translation>model</translation>
     </message>
     <message>
-        <location line="-212"/>
-        <location line="+212"/>
+        <location line="-216"/>
+        <location line="+216"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
     <message>
-        <location line="-211"/>
-        <location line="+211"/>
+        <location line="-215"/>
+        <location line="+215"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-211"/>
-        <location line="+211"/>
+        <location line="-215"/>
+        <location line="+215"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-210"/>
+        <location line="-214"/>
         <location line="+104"/>
-        <location line="+106"/>
+        <location line="+110"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-210"/>
-        <location line="+210"/>
+        <location line="-214"/>
+        <location line="+214"/>
         <source>band</source>
         <translation>pasmo</translation>
     </message>
     <message>
-        <location line="-209"/>
-        <location line="+209"/>
+        <location line="-213"/>
+        <location line="+213"/>
         <source>verdict</source>
         <translation>ocena</translation>
     </message>
     <message>
-        <location line="-202"/>
+        <location line="-206"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -8062,7 +8048,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>mniej (RMS, %)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+22"/>
         <source>%1: %p%</source>
         <translation>%1: %p%</translation>
     </message>

@@ -225,13 +225,17 @@ struct OurMethod {
 template <class Algo>
 OurMethod ours(std::string name, int population = 1, std::string peer = {},
                typename Algo::Options preset = {}) {
-  return {std::move(name), population, std::move(peer),
+  return {std::move(name),
+          population,
+          std::move(peer),
           [preset](const optim::Problem& p, std::uint64_t seed, long budget) {
             typename Algo::Options o = preset;
             o.common.seed = seed;
             o.common.maxEvaluations = budget;
             return Algo(o).optimise(p);
-          }};
+          },
+          0,
+          {}};
 }
 
 struct PeerMethod {

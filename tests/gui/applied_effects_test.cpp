@@ -91,7 +91,7 @@ TEST_F(AppliedEffectsTest, ThermalModelsIncludeTheAppliedInputAndUndoRestoresThe
                   thermalLogToCsv(simulateThermalEffects(so)));
   Project p = document_.project();
   p.datasets.push_back(
-      {"sim_rpm", "thermal_log", "data/sim_rpm.csv", "simulated, undeclared spindle speed", ""});
+      {"sim_rpm", "thermal_log", "data/sim_rpm.csv", "simulated, undeclared spindle speed", "", {}});
   p.studies["thermal"] = {{"dataset", "sim_rpm"}, {"target", "disp_z_um"}, {"inputs", {"T2", "T4", "T_amb"}}};
   p.studies["diagnosis"]["thermal"]["dataset"] = "sim_rpm";
   saveProject(p, project_.toStdString());

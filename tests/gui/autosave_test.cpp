@@ -363,8 +363,11 @@ void clickOnNextMessageBox(const QString& buttonText, const QString& grab, QStri
 TEST_F(AutosaveTest, TheRecoveryDialogOffersThreeChoices) {
   const QDateTime now = QDateTime::currentDateTime();
   const RecoveryOffer offer{QStringLiteral("/work/cell 4.metrofit"),
-                            QStringLiteral("/work/cell 4.metrofit.autosave"), now, now.addSecs(-600),
-                            QStringLiteral("Cell 4")};
+                            QStringLiteral("/work/cell 4.metrofit.autosave"),
+                            now,
+                            now.addSecs(-600),
+                            QStringLiteral("Cell 4"),
+                            {}};
   QString text;
   clickOnNextMessageBox(QStringLiteral("&Recover"), QStringLiteral("recover-project"), &text);
   EXPECT_EQ(Autosave::askUser(nullptr, offer), RecoveryChoice::Recover);
@@ -373,8 +376,12 @@ TEST_F(AutosaveTest, TheRecoveryDialogOffersThreeChoices) {
   EXPECT_EQ(Autosave::askUser(nullptr, offer), RecoveryChoice::Discard);
   clickOnNextMessageBox(QStringLiteral("&Open original"), QStringLiteral("original"), &text);
   EXPECT_EQ(Autosave::askUser(nullptr, offer), RecoveryChoice::OpenOriginal);
-  const RecoveryOffer untitled{QString(), QStringLiteral("/tmp/untitled-7.metrofit.autosave"), now,
-                               QDateTime(), QStringLiteral("Cell 5")};
+  const RecoveryOffer untitled{QString(),
+                               QStringLiteral("/tmp/untitled-7.metrofit.autosave"),
+                               now,
+                               QDateTime(),
+                               QStringLiteral("Cell 5"),
+                               {}};
   clickOnNextMessageBox(QStringLiteral("&Keep for later"), QStringLiteral("recover-untitled"), &text);
   EXPECT_EQ(Autosave::askUser(nullptr, untitled), RecoveryChoice::OpenOriginal);
   EXPECT_TRUE(text.contains(QStringLiteral("“Cell 5”"))) << text.toStdString();

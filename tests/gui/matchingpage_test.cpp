@@ -77,8 +77,8 @@ class MatchingPageTest : public ::testing::Test {
                     "id,qx,qy,px,py\nA,0,0,0,0\nA,1,0,1,0\n");
     Project p;
     p.name = "matching page test";
-    p.datasets.push_back({"s_piece", dataset_kind::kProbePoints, "s.csv", "S-piece", ""});
-    p.datasets.push_back({"bad", dataset_kind::kProbePoints, "bad.csv", "duplicate ids", ""});
+    p.datasets.push_back({"s_piece", dataset_kind::kProbePoints, "s.csv", "S-piece", "", {}});
+    p.datasets.push_back({"bad", dataset_kind::kProbePoints, "bad.csv", "duplicate ids", "", {}});
     p.studies["matching"] = {
         {"dataset", "s_piece"}, {"tolerance_mm", 0.035}, {"machine", {{"topology", "ac"}}}};
     const QString path = dir_.filePath(QStringLiteral("p.metrofit"));
@@ -229,7 +229,7 @@ TEST_F(MatchingPageTest, WorkerRunReportsFinishesAndCanBeCancelled) {
   }
   test::writeText(dir_.filePath(QStringLiteral("large.csv")).toStdString(), probePointsToCsv(large));
   Project p = document_.project();
-  p.datasets.push_back({"large", dataset_kind::kProbePoints, "large.csv", "20000 points", ""});
+  p.datasets.push_back({"large", dataset_kind::kProbePoints, "large.csv", "20000 points", "", {}});
   saveProject(p, document_.fileName().toStdString());
   document_.load(document_.fileName());
   page_->selectDataset(QStringLiteral("large"));

@@ -47,7 +47,7 @@ class ThermalPageModelsTest : public ::testing::Test {
     test::writeText(tmp_.file("log.csv"), thermalLogToCsv(simulateThermalTest(so)));
     Project p;
     p.name = "generated";
-    p.datasets.push_back({"gen", "thermal_log", "log.csv", "generated", ""});
+    p.datasets.push_back({"gen", "thermal_log", "log.csv", "generated", "", {}});
     p.studies["thermal"] = {
         {"dataset", "gen"}, {"target", "disp_z_um"}, {"inputs", {"T1", "T2", "T3", "T4"}}};
     saveProject(p, tmp_.file("p.metrofit"));
@@ -243,8 +243,9 @@ TEST_F(ThermalPageModelsTest, ModularCaseShowsEachModulesContribution) {
   ThermalModelView* view = page.modelView();
   const QTableWidget* table = view->modularTable();
   const int last = static_cast<int>(kThermalModelOrder.size());  // after the pooled models
-  QTest::qWaitFor([&] { return table->rowCount() == last + 1; },
-                  120000);  // the modular run is a background run
+  // The modular run is a background run.
+  ASSERT_TRUE(QTest::qWaitFor([&] { return table->rowCount() == last + 1; }, 120000))
+      << view->statusText().toStdString();
   ASSERT_EQ(table->rowCount(), last + 1) << view->statusText().toStdString();
   EXPECT_EQ(table->item(last, 0)->text(), QStringLiteral("modules, summed (distributed lag)"));
   const QString line = view->modularModulesLabel()->text();

@@ -120,9 +120,14 @@ class ReportTest : public ::testing::Test {
     Project p;
     p.name = "Report test cell";
     p.description = "A synthetic project: one heating / cooling run and one probed block.";
-    p.datasets.push_back({"thermal_run", dataset_kind::kThermalLog, "data/thermal.csv",
-                          "Spindle warm-up and cool-down (synthetic).", "CC0-1.0"});
-    p.datasets.push_back({"probe_block", dataset_kind::kProbePoints, "data/probes.csv", "Probed block.", ""});
+    p.datasets.push_back({"thermal_run",
+                          dataset_kind::kThermalLog,
+                          "data/thermal.csv",
+                          "Spindle warm-up and cool-down (synthetic).",
+                          "CC0-1.0",
+                          {}});
+    p.datasets.push_back(
+        {"probe_block", dataset_kind::kProbePoints, "data/probes.csv", "Probed block.", "", {}});
     // The report shows the studies a project declares.
     p.studies["thermal"] = {
         {"dataset", "thermal_run"}, {"target", "disp_z_um"}, {"inputs", {"T1", "T2", "T3"}}};
@@ -291,8 +296,12 @@ TEST(ReportReal, CaiviacSpindleLog) {
   ASSERT_TRUE(dir.isValid());
   Project p;
   p.name = "CAIVIAC spindle";
-  p.datasets.push_back({"caiviac", dataset_kind::kThermalLog, QFileInfo(csv).absoluteFilePath().toStdString(),
-                        "Spindle thermal drift, 16 temperatures, 5 displacements.", "MIT (CAIVIAC)"});
+  p.datasets.push_back({"caiviac",
+                        dataset_kind::kThermalLog,
+                        QFileInfo(csv).absoluteFilePath().toStdString(),
+                        "Spindle thermal drift, 16 temperatures, 5 displacements.",
+                        "MIT (CAIVIAC)",
+                        {}});
   p.studies["thermal"] = {{"dataset", "caiviac"}};
   const QString projectPath = dir.filePath(QStringLiteral("caiviac.metrofit"));
   saveProject(p, projectPath.toStdString());

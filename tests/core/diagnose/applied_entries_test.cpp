@@ -126,7 +126,7 @@ TEST(AppliedEntries, SetupPreambleMessages) {
             "(text)");
   EXPECT_EQ(setupEffects(J::parse(R"([{"name": "wobble"}])")),
             "demo.metrofit: field 'studies.diagnosis.setup.applied[0].name': 'wobble' is not a setup effect "
-            "(tool_wear:<tool> or drift:<setup datum>)");
+            "(tool_wear:<tool>, drift:<setup datum> or unexplained:<variable>)");
   EXPECT_EQ(setupEffects(J()), "no error");
 }
 

@@ -598,7 +598,8 @@ TEST(AppliedSetupEffects, AStepAfterARefixtureIsAppliedAsAGenericEffectAndPredic
   ASSERT_EQ(d.accepted().size(), 1u) << toJson(d)["effects"].dump().substr(0, 3000);
   const Candidate& c = *d.accepted().front();
   ASSERT_TRUE(c.generic.has_value()) << toJson(d)["effects"].dump().substr(0, 3000);
-  EXPECT_EQ(c.name, "unexplained:dimension:" + model.dimensions[dim].id) << toJson(d)["effects"].dump().substr(0, 3000);
+  EXPECT_EQ(c.name, "unexplained:dimension:" + model.dimensions[dim].id)
+      << toJson(d)["effects"].dump().substr(0, 3000);
   EXPECT_TRUE(canApplyEffect("setup", c));
   const nlohmann::json applied = appliedOf(d);
   const std::vector<AppliedSetupEffect> effects = parseAppliedSetupEffects(applied, model);
@@ -626,7 +627,9 @@ TEST(AppliedSetupEffects, AStepAfterARefixtureIsAppliedAsAGenericEffectAndPredic
   EXPECT_NEAR(e1.deviationMm[dim], late, 2.0 * sigma / std::sqrt(static_cast<double>(nLate)));
   EXPECT_GT(std::abs(e1.deviationMm[dim] - all), 3.0 * sigma);
   for (std::size_t q = 0; q < model.dimensions.size(); ++q)
-    if (q != dim) EXPECT_NEAR(e1.deviationMm[q], e0.deviationMm[q], 1e-12) << model.dimensions[q].id;
+    if (q != dim) {
+      EXPECT_NEAR(e1.deviationMm[q], e0.deviationMm[q], 1e-12) << model.dimensions[q].id;
+    }
   EXPECT_LT(e1.rmseMm, e0.rmseMm);
   ASSERT_TRUE(e0.nextPartRmseMm && e1.nextPartRmseMm);
   EXPECT_LT(*e1.nextPartRmseMm, *e0.nextPartRmseMm);
