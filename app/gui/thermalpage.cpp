@@ -4,6 +4,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
+#include <QPushButton>
 #include <QSignalBlocker>
 #include <QStackedWidget>
 #include <QTabWidget>
@@ -101,6 +102,13 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   connect(document_, &ProjectDocument::changed, this, &ThermalPage::refresh);
   connect(tabs_, &QTabWidget::currentChanged, this, &ThermalPage::onTabChanged);
   connect(models_, &ThermalModelView::settingsEdited, this, [this] {
+    if (logId_.isEmpty()) return;
+    settings_[logId_] = models_->settings();
+    writeStudySettings(settings_[logId_]);
+  });
+  // Training the models on a log declares the thermal study on it (when the project has none yet), so
+  // that the report of a project built from imported files has its thermal section (undoable).
+  connect(models_->trainButton(), &QPushButton::clicked, this, [this] {
     if (logId_.isEmpty()) return;
     settings_[logId_] = models_->settings();
     writeStudySettings(settings_[logId_]);

@@ -11,6 +11,8 @@
 //   * a file dropped on the main window opens the dialog and is imported (one undo step).
 #include <gtest/gtest.h>
 
+#include <QProcess>
+
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -58,6 +60,7 @@
 #include "testsupport.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/importer/importdialog.h"
+#include "widgets/report/report.h"
 #include "widgets/thermal/thermalmodelview.h"
 
 namespace metrofit {
@@ -234,7 +237,33 @@ TEST_F(ImportDialogTest, ImportedLogKeepsDialectAndMappingAndFitsTheKnownFormula
   ASSERT_EQ(fit.predicted.size(), static_cast<std::size_t>(kRows));
   EXPECT_NEAR(fit.predicted.back(), displacement(kRows - 1), 1e-5);
 
-  // Undo removes the dataset (and the page sees it gone), redo brings it back unchanged.
+  // Train on the page declares the thermal study on the log (one undoable step), and the PDF report of
+  // the project (what the GUI's Export report writes) then has its thermal section with the imported
+  // log, its file in the appendix.
+  EXPECT_TRUE(doc_.project().studies.value("thermal", nlohmann::json()).is_null());
+  page.modelView()->trainButton()->click();
+  EXPECT_EQ(doc_.project().studies.at("thermal").at("dataset"), "spindel");
+  EXPECT_EQ(doc_.project().studies.at("thermal").at("target"), "disp_z_um");
+  (void)QTest::qWaitFor([&] { return !page.modelView()->isRunning(); }, 60000);
+  const QString pdf = QDir(dir_.path()).filePath(QStringLiteral("shop.pdf"));
+  ReportOptions ro;
+  ro.projectPath = doc_.fileName();
+  ro.resolutionDpi = 150;
+  const ReportSummary summary = writeReport(doc_.project(), pdf, ro);
+  EXPECT_TRUE(summary.sections.contains(QStringLiteral("Thermal")))
+      << summary.sections.join(',').toStdString();
+  QProcess pdftotext;
+  pdftotext.start(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+  ASSERT_TRUE(pdftotext.waitForFinished(60000));
+  const QString text = QString::fromUtf8(pdftotext.readAllStandardOutput());
+  EXPECT_TRUE(text.contains(QStringLiteral("data/aufwaermung.csv")));
+  EXPECT_TRUE(text.contains(QStringLiteral("spindel")));
+
+  // Undo takes the study back, then removes the dataset (and the page sees it gone); redo brings it
+  // back unchanged.
+  doc_.undoStack()->undo();
+  EXPECT_FALSE(doc_.project().studies.contains("thermal") &&
+               doc_.project().studies.at("thermal").contains("dataset"));
   doc_.undoStack()->undo();
   EXPECT_TRUE(doc_.project().datasets.empty());
   EXPECT_TRUE(page.currentDataset().isEmpty());
