@@ -240,6 +240,18 @@ int runHysteresis(const HysteresisArgs& a) {
   return 0;
 }
 
+/// The figures of a prediction of the test log (thermal modular, pooled or module by module).
+void addModularFigures(nlohmann::json& j, const thermal::ModularEvaluation& m) {
+  j["R"] = m.test.r;
+  j["RMSE"] = m.test.rmse;
+  j["E"] = m.test.e;
+  j["residual_band"] = m.test.residualBand;
+  j["error_peak"] = m.errorPeak;
+  j["error_rms"] = m.errorRms;
+  j["reduction_peak"] = m.reductionPeak;
+  j["reduction_rms"] = m.reductionRms;
+}
+
 [[noreturn]] void moduleFail(const std::string& option, const std::string& what) {
   throw OptionsError(ErrorContext{{}, 0, 0, option}, what);
 }
@@ -306,14 +318,7 @@ int runModules(const ModularArgs& a) {
   nlohmann::json j;
   j["target"] = a.target;
   j["test"] = a.test;
-  j["R"] = m.test.r;
-  j["RMSE"] = m.test.rmse;
-  j["E"] = m.test.e;
-  j["residual_band"] = m.test.residualBand;
-  j["error_peak"] = m.errorPeak;
-  j["error_rms"] = m.errorRms;
-  j["reduction_peak"] = m.reductionPeak;
-  j["reduction_rms"] = m.reductionRms;
+  addModularFigures(j, m);
   j["modules"] = nlohmann::json::array();
   const std::string unit = unitOf(testLog, a.target);
   std::string parts;
@@ -367,14 +372,7 @@ int runModular(const ModularArgs& a) {
   j["inputs"] = inputs;
   j["train"] = a.train;
   j["test"] = a.test;
-  j["R"] = m.test.r;
-  j["RMSE"] = m.test.rmse;
-  j["E"] = m.test.e;
-  j["residual_band"] = m.test.residualBand;
-  j["error_peak"] = m.errorPeak;
-  j["error_rms"] = m.errorRms;
-  j["reduction_peak"] = m.reductionPeak;
-  j["reduction_rms"] = m.reductionRms;
+  addModularFigures(j, m);
   j["parameters"] = thermal::thermalModelParameters(m.training.model);
   j["training"] = trainingJson(m.training);
   if (!a.saveModel.empty()) writeResult(a.saveModel, dumpJson(thermal::thermalModelToJson(m.training.model)));
