@@ -324,8 +324,7 @@ int runModules(const ModularArgs& a) {
   std::string parts;
   for (std::size_t i = 0; i < modules.size(); ++i) {
     const thermal::ThermalModule& mod = modules[i];
-    double peak = 0.0;
-    for (double v : m.contributions[i]) peak = std::abs(v) > std::abs(peak) ? v : peak;
+    const double peak = m.contributionPeaks[i];
     nlohmann::json e{{"name", mod.name},
                      {"model", toString(mod.training.model.kind)},
                      {"inputs", mod.training.model.inputs},

@@ -457,7 +457,12 @@ ModulesEvaluation evaluateModules(const std::vector<ThermalModule>& modules,
       throw ValidationError(ErrorContext{t.source, 0, 0, t.targetName},
                             "module '" + modules[i].name + "' needs its own inputs on the test log");
     std::vector<double> c = predictChange(modules[i].training.model, t);
-    for (std::size_t k = 0; k < c.size(); ++k) m.predicted[k] += c[k];
+    double peak = 0.0;
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      m.predicted[k] += c[k];
+      if (std::abs(c[k]) > std::abs(peak)) peak = c[k];
+    }
+    m.contributionPeaks.push_back(peak);
     m.contributions.push_back(std::move(c));
   }
   modularFigures(first, m);

@@ -186,6 +186,8 @@ struct ModulesEvaluation : ModularEvaluation {
   /// Per module, its predicted change of the target on the test log (the combined prediction is the
   /// test's first value plus their sum).
   std::vector<std::vector<double>> contributions;
+  /// Per module, its contribution of the largest magnitude (with its sign).
+  std::vector<double> contributionPeaks;
 };
 /// The modules' combined prediction of the test log (`tests[i]`: the test log with module i's inputs and
 /// the target). ValidationError when the counts differ, a module's inputs are not its test series'

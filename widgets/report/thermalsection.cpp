@@ -547,8 +547,7 @@ void writeModular(ReportPainter& out, const ReportContext& context, const Therma
   if (const auto& ev = m->modules.evaluation) {
     QStringList parts;
     for (std::size_t i = 0; i < m->modules.names.size() && i < ev->contributions.size(); ++i) {
-      double peak = 0.0;
-      for (double v : ev->contributions[i]) peak = std::abs(v) > std::abs(peak) ? v : peak;
+      const double peak = ev->contributionPeaks[i];
       parts << ReportText::tr("%1 with inputs %2, up to %3 %4")
                    .arg(QString::fromStdString(m->modules.names[i]), joined(m->modules.inputs[i]),
                         metric(peak, 1), unit);

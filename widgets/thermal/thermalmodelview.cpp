@@ -407,8 +407,7 @@ struct ThermalModelView::Impl {
       modularTable->setItem(row, 4, cell(number(100.0 * ev->reductionRms, 1)));
       modularTable->setItem(row, 5, cell(number(ev->test.e, 4)));
       for (std::size_t i = 0; i < m.modules.names.size() && i < ev->contributions.size(); ++i) {
-        double peak = 0.0;
-        for (double v : ev->contributions[i]) peak = std::abs(v) > std::abs(peak) ? v : peak;
+        const double peak = ev->contributionPeaks[i];
         QStringList inputs;
         for (const std::string& in : m.modules.inputs[i]) inputs << QString::fromStdString(in);
         parts << ThermalModelView::tr("%1 (inputs %2) contributes up to %3 %4")
