@@ -27,7 +27,7 @@ using thermal::ThermalModelKind;
 
 struct FitArgs {
   std::string data, target, inputs, model = "gnnmci", training = "pso-ls", out, saveModel;
-  double trainFraction = 0.5;
+  double trainFraction = thermal::kDefaultTrainFraction;  // used only when --train-fraction is given
   std::uint64_t seed = 1;
   int iterations = 0;
 };

@@ -84,7 +84,7 @@ struct AxisEffects {
 
 /// Reads an applied list (see the header comment); `feedMmPerMin` is the feed of the test the
 /// servo lag was found on. An empty or null list gives no effects.
-AxisEffects axisEffectsFromApplied(const nlohmann::json& applied, double feedMmPerMin = 1000.0,
+AxisEffects axisEffectsFromApplied(const nlohmann::json& applied, double feedMmPerMin = kDefaultFeedMmPerMin,
                                    const std::string& field = kKinematicAppliedField);
 
 /// The path with every command replaced by its effective joints (motion from the commands).

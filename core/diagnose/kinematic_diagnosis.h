@@ -32,14 +32,15 @@
 // 2 ln(tests); the lowest dBIC wins the round, named or generic (so a drift is not backlash).
 #include "core/common/run.h"
 #include "core/diagnose/diagnosis.h"
+#include "core/kinematics/effects.h"
 #include "core/kinematics/measured_path.h"
 
 namespace metrofit::diagnose {
 
 struct KinematicDiagnosisOptions {
-  double feedMmPerMin = 1000.0;  ///< the feed rate of the test (for servo_lag's tau_s)
-  double bicMargin = 10.0;       ///< accept when dBIC < -bicMargin
-  double minRmseGain = 0.05;     ///< relative fit rmse reduction needed
+  double feedMmPerMin = kDefaultFeedMmPerMin;  ///< the feed rate of the test (for servo_lag's tau_s)
+  double bicMargin = 10.0;                     ///< accept when dBIC < -bicMargin
+  double minRmseGain = 0.05;                   ///< relative fit rmse reduction needed
   int maxRounds = 6;
   double minPeriodMm = 0.0;  ///< cyclic search range; 0: automatic (see the header comment)
   double maxPeriodMm = 0.0;

@@ -48,6 +48,7 @@
 #include "core/common/run.h"
 #include "core/diagnose/diagnosis.h"
 #include "core/diagnose/linear_evidence.h"
+#include "core/matching/matching.h"
 #include "core/matching/probe_points.h"
 
 namespace metrofit::diagnose {
@@ -57,7 +58,7 @@ struct MatchingDiagnosisOptions {
   AcceptanceOptions acceptance{10.0, 0.02, 0.0};
   /// Symmetric tolerance (mm): an effect must also reduce the rmse by at least
   /// relevantFractionOfTolerance * toleranceMm to be practically relevant.
-  double toleranceMm = 0.05;
+  double toleranceMm = matching::kDefaultToleranceMm;
   double relevantFractionOfTolerance = 0.01;
   int maxRounds = 10;
   int maxIterations = 50;  ///< Gauss-Newton iterations per fit

@@ -121,6 +121,7 @@
 #include "core/common/run.h"
 #include "core/diagnose/diagnosis.h"
 #include "core/thermal/thermal_log.h"
+#include "core/thermal/thermal_model.h"
 
 namespace metrofit::diagnose {
 
@@ -136,13 +137,14 @@ struct ThermalDiagnosisOptions {
   ThermalDeclaredModel declared = ThermalDeclaredModel::Linear;
   std::uint64_t seed = 1;           ///< GNNMCI's swarm (declared gnnmci)
   std::vector<std::string> inputs;  ///< the declared inputs
-  double trainFraction = 0.5;       ///< fit on the first fraction of the rows, hold out the rest
-  double minHeldoutGain = 0.10;     ///< relative validation (blocked CV) rmse reduction needed
-  double minExplainedNoise = 1.0;   ///< explained validation rms needed, in noise levels
-  int maxRounds = 6;                ///< at most this many effects are accepted
-  int lagGridPoints = 36;           ///< tau grid of the 1-D search
-  int validationFolds = 3;          ///< K of the rolling-origin validation inside the fit rows
-  bool tryPairs = true;             ///< when no single candidate passes, try pairs (see above)
+  double trainFraction =
+      thermal::kDefaultTrainFraction;  ///< fit on the first fraction of the rows, hold out the rest
+  double minHeldoutGain = 0.10;        ///< relative validation (blocked CV) rmse reduction needed
+  double minExplainedNoise = 1.0;      ///< explained validation rms needed, in noise levels
+  int maxRounds = 6;                   ///< at most this many effects are accepted
+  int lagGridPoints = 36;              ///< tau grid of the 1-D search
+  int validationFolds = 3;             ///< K of the rolling-origin validation inside the fit rows
+  bool tryPairs = true;                ///< when no single candidate passes, try pairs (see above)
 
   bool isValid(std::string* why) const;
 };

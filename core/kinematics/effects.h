@@ -20,6 +20,10 @@
 
 namespace metrofit {
 
+/// The feed of a circular test when none is given (mm/min): the simulator, the effects, the exports and
+/// the closed loop all start from it.
+inline constexpr double kDefaultFeedMmPerMin = 1000.0;
+
 /// Per point of a command path: the direction of each axis' last move (+1 / -1; the first point
 /// takes the direction of the first move of the axis) and the unit tangent of the motion through it
 /// (central difference; the incoming move at a reversal of the path, where the incoming and
@@ -38,7 +42,7 @@ struct KinematicEffects {
   double cyclicAmplitudeMm = 0.0;  ///< 0: no cyclic error
   double cyclicPhaseDeg = 0.0;
   double servoLagS = 0.0;  ///< `servo_lag` tau
-  double feedMmPerMin = 1000.0;
+  double feedMmPerMin = kDefaultFeedMmPerMin;
 
   bool isValid(std::string* why) const;
   /// The joint coordinates the axes actually reach (see the header comment) for command k.

@@ -36,12 +36,13 @@
 #include <Eigen/Core>
 
 #include "core/kinematics/cartesian_model.h"
+#include "core/kinematics/effects.h"
 
 namespace metrofit {
 
 struct GcodeOptions {
   std::string programName = "compensated path";  ///< parentheses and line breaks are replaced
-  double feedMmPerMin = 1000.0;
+  double feedMmPerMin = kDefaultFeedMmPerMin;
   int decimals = 4;  ///< 0.1 um
 
   bool isValid(std::string* why) const;

@@ -6,6 +6,7 @@
 #include "core/common/rng.h"
 #include "core/common/run.h"
 #include "core/io/csv.h"
+#include "core/sim/effects_kinematic.h"
 
 namespace metrofit {
 
@@ -51,23 +52,8 @@ std::vector<Eigen::Vector2d> circularTestCommands(const CircularSimOptions& o) {
 std::vector<Eigen::Vector2d> simulateMachine(const ActuatorErrors2& errors,
                                              const std::vector<Eigen::Vector2d>& commands, double noiseMm,
                                              std::uint64_t seed) {
-  if (!(noiseMm >= 0.0) || !std::isfinite(noiseMm)) {
-    throw OptionsError(ErrorContext{{}, 0, 0, "machine simulation"}, "noise must be finite and not negative");
-  }
-  const CartesianMachine2 machine = CartesianMachine2::fromErrors(errors);
-  Rng rng(seed);
-  std::vector<Eigen::Vector2d> out;
-  out.reserve(commands.size());
-  for (const auto& c : commands) {
-    Eigen::Vector2d p = machine.forward(c);
-    if (noiseMm > 0.0) {
-      const double nx = rng.normal(0.0, noiseMm);
-      const double ny = rng.normal(0.0, noiseMm);
-      p += Eigen::Vector2d(nx, ny);
-    }
-    out.push_back(p);
-  }
-  return out;
+  // The machine without axis effects: the joints reach the commands exactly.
+  return simulateMachineWithEffects(errors, KinematicEffects{}, commands, noiseMm, seed);
 }
 
 MeasuredPath simulateCircularTest(const CircularSimOptions& o) {

@@ -95,6 +95,7 @@
 #include <vector>
 
 #include "core/common/rng.h"
+#include "core/kinematics/effects.h"
 #include "core/kinematics/measured_path.h"
 #include "core/matching/probe_points.h"
 #include "core/setup/model.h"
@@ -165,7 +166,7 @@ struct OpenThermalCase {
 
 struct OpenKinematicCase {
   MeasuredPath path;
-  double feedMmPerMin = 1000.0;
+  double feedMmPerMin = kDefaultFeedMmPerMin;
   OpenWorldTruth truth;
 };
 

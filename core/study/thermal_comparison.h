@@ -28,7 +28,7 @@ namespace metrofit {
 struct ThermalModelSettings {
   std::string target;
   std::vector<std::string> inputs;
-  double trainFraction = 0.5;
+  double trainFraction = thermal::kDefaultTrainFraction;
   std::uint64_t seed = 1;
   /// Effects added to the model with Apply on the diagnosis page (studies.diagnosis.thermal.applied,
   /// core/diagnose/thermal_applied.h: lagged inputs, extra input columns, a drift term): every model

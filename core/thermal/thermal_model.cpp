@@ -60,7 +60,7 @@ bool ThermalFitOptions::isValid(std::string* why) const {
 }
 
 double defaultTrainFraction(ThermalModelKind kind) {
-  return kind == ThermalModelKind::Mlp ? 0.7 : 0.5;
+  return kind == ThermalModelKind::Mlp ? 0.7 : kDefaultTrainFraction;
 }
 
 std::size_t fitRowCount(std::size_t rows, double trainFraction) {

@@ -81,8 +81,12 @@ struct ThermalFitOptions {
   }
 };
 
-/// The train fraction when none is given: 0.7 for the MLP (Table 3's 70 / 30 split), 0.5 for the grey
-/// models (the default of `diagnose thermal`, docs/file-formats.md#the-declared-models).
+/// The fraction of a log's rows (from its start) a model is fitted on when none is given; the rest
+/// is held out. One fraction for every model in a comparison, the closed loop and the studies.
+inline constexpr double kDefaultTrainFraction = 0.5;
+
+/// The train fraction of `thermal fit` when none is given: 0.7 for the MLP (Table 3's 70 / 30 split), 0.5 for
+/// the grey models (the default of `diagnose thermal`, docs/file-formats.md#the-declared-models).
 double defaultTrainFraction(ThermalModelKind kind);
 
 /// A fitted model: predicts on any log that has its input columns.
@@ -122,7 +126,7 @@ std::size_t fitRowCount(std::size_t rows, double trainFraction);
 
 struct ThermalEvaluation {
   ThermalTraining training;
-  double trainFraction = 0.5;
+  double trainFraction = kDefaultTrainFraction;
   std::size_t fitRows = 0, heldoutRows = 0;
   std::vector<double> predicted;  ///< every row, the target's units
   ThermalMetrics fit, heldout;

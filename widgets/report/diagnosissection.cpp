@@ -50,18 +50,6 @@ QString domainTitle(DiagnosisDomain d) {
   return {};
 }
 
-/// Draws `paint` into `rect` at a design width of `designWidth` logical pixels (sets text size).
-void drawScaled(ReportPainter& out, const QRectF& rect, double designWidth,
-                const std::function<void(QPainter&, const QRectF&)>& paint) {
-  QPainter& p = out.painter();
-  p.save();
-  p.translate(rect.topLeft());
-  const double s = rect.width() / designWidth;
-  p.scale(s, s);
-  paint(p, QRectF(0.0, 0.0, designWidth, rect.height() / s));
-  p.restore();
-}
-
 /// The loop of one domain's settings, run once per report (the report is laid out twice).
 std::shared_ptr<const diagnose::Diagnosis> memoDiagnosis(const ReportContext& context,
                                                          const DiagnosisSettings& s) {
@@ -206,11 +194,11 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
     const QRectF box = out.reserve(out.mm(hasVectorField(plot) ? 95.0 : 70.0));
     if (hasVectorField(plot)) {
       const QRectF left(box.left() + box.width() * 0.15, box.top(), box.width() * 0.7, box.height());
-      drawScaled(out, left, 480.0,
-                 [&](QPainter& p, const QRectF& r) { paintResidualVectors(p, r, plot, title, 11.0); });
+      out.drawScaled(left, 480.0,
+                     [&](QPainter& p, const QRectF& r) { paintResidualVectors(p, r, plot, title, 11.0); });
     } else {
-      drawScaled(out, box, 700.0,
-                 [&](QPainter& p, const QRectF& r) { paintResidualScatter(p, r, plot, title, 11.0); });
+      out.drawScaled(box, 700.0,
+                     [&](QPainter& p, const QRectF& r) { paintResidualScatter(p, r, plot, title, 11.0); });
     }
   }
   if (d->residualCheck) writeResidualCheck(out, *d);
@@ -295,8 +283,8 @@ void writeResidualCheck(ReportPainter& out, const diagnose::Diagnosis& d) {
   out.skip(out.mm(2.0));
   const QRectF box = out.reserve(out.mm(70.0));
   const diagnose::ResidualCheck::Plot& plot = *c.plot;
-  drawScaled(out, box, 700.0,
-             [&](QPainter& p, const QRectF& r) { paintResidualCheck(p, r, plot, units, title, 11.0); });
+  out.drawScaled(box, 700.0,
+                 [&](QPainter& p, const QRectF& r) { paintResidualCheck(p, r, plot, units, title, 11.0); });
 }
 
 QString diagnosisSectionTitle() {

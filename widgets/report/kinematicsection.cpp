@@ -27,18 +27,6 @@ struct ReportText {
   Q_DECLARE_TR_FUNCTIONS(metrofit::Report)
 };
 
-/// Draws `paint` into `rect` at a design width of `designWidth` logical pixels (sets text size).
-void drawScaled(ReportPainter& out, const QRectF& rect, double designWidth,
-                const std::function<void(QPainter&, const QRectF&)>& paint) {
-  QPainter& p = out.painter();
-  p.save();
-  p.translate(rect.topLeft());
-  const double s = rect.width() / designWidth;
-  p.scale(s, s);
-  paint(p, QRectF(0.0, 0.0, designWidth, rect.height() / s));
-  p.restore();
-}
-
 QString um(double mm, int decimals = 3) {
   return QString::number(mm * 1000.0, 'f', decimals);
 }
@@ -150,8 +138,8 @@ CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyDa
   PlotStyle style;
   style.fontPx = 10.0;
   style.lineWidth = 1.1;
-  drawScaled(out, left, 400.0, [&](QPainter& p, const QRectF& r) { paintPathPlot(p, r, pd, style); });
-  drawScaled(out, right, 400.0, [&](QPainter& p, const QRectF& r) { paintPolarPlot(p, r, polar, style); });
+  out.drawScaled(left, 400.0, [&](QPainter& p, const QRectF& r) { paintPathPlot(p, r, pd, style); });
+  out.drawScaled(right, 400.0, [&](QPainter& p, const QRectF& r) { paintPolarPlot(p, r, polar, style); });
   writeIso230(out, s.analysis.iso);
 
   out.subheading(ReportText::tr("Compensation"), out.mm(30.0));
@@ -201,15 +189,16 @@ void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
   style.pointRadius = 2.2;
   for (const ControlChartKind kind : {ControlChartKind::Mean, ControlChartKind::Range}) {
     const QRectF box = out.reserve(out.mm(48.0));
-    drawScaled(out, box, 700.0,
-               [&](QPainter& p, const QRectF& rr) { paintControlChart(p, rr, r.chart, kind, unit, style); });
+    out.drawScaled(box, 700.0, [&](QPainter& p, const QRectF& rr) {
+      paintControlChart(p, rr, r.chart, kind, unit, style);
+    });
   }
   HistogramData h = spcHistogramData(r, k.values, unit, QString());
   h.title = ReportText::tr("Histogram of %1 (%2 values)")
                 .arg(QString::fromStdString(k.column))
                 .arg(h.values.size());
   const QRectF hbox = out.reserve(out.mm(48.0));
-  drawScaled(out, hbox, 700.0, [&](QPainter& p, const QRectF& rr) { paintHistogram(p, rr, h, style); });
+  out.drawScaled(hbox, 700.0, [&](QPainter& p, const QRectF& rr) { paintHistogram(p, rr, h, style); });
 
   ReportTable t;
   t.header = {ReportText::tr("index"), ReportText::tr("value")};
@@ -431,7 +420,7 @@ void writeRadialTest(ReportPainter& out, const ReportContext& context, const Rad
   PlotStyle style;
   style.fontPx = 10.0;
   style.lineWidth = 1.1;
-  drawScaled(out, plot, 400.0, [&](QPainter& p, const QRectF& r) { paintPolarPlot(p, r, polar, style); });
+  out.drawScaled(plot, 400.0, [&](QPainter& p, const QRectF& r) { paintPolarPlot(p, r, polar, style); });
   writeIso230(out, a.iso);
   double g = 0.0;
   for (const Iso230Direction& d : a.iso.directions) g = std::max(g, d.circularDeviationMm);

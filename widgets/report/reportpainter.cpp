@@ -286,6 +286,16 @@ void ReportPainter::table(const ReportTable& table) {
   skip(mm(3.0));
 }
 
+void ReportPainter::drawScaled(const QRectF& rect, double designWidth,
+                               const std::function<void(QPainter&, const QRectF&)>& paint) {
+  painter_.save();
+  painter_.translate(rect.topLeft());
+  const double s = rect.width() / designWidth;
+  painter_.scale(s, s);
+  paint(painter_, QRectF(0.0, 0.0, designWidth, rect.height() / s));
+  painter_.restore();
+}
+
 void ReportPainter::chart(QChart* chart, double height, double designWidthPx) {
   QGraphicsScene scene;  // owns the chart from here on
   scene.addItem(chart);

@@ -11,6 +11,7 @@
 #include <QRectF>
 #include <QString>
 #include <QStringList>
+#include <functional>
 
 QT_BEGIN_NAMESPACE
 class QPainter;
@@ -71,6 +72,10 @@ class ReportPainter {
   /// The chart is laid out at `designWidthPx` scene pixels wide, which sets its text size
   /// relative to the page.
   void chart(QChart* chart, double height, double designWidthPx = 760.0);
+  /// Calls `paint` to draw into `rect` laid out at `designWidth` logical pixels wide (which sets the
+  /// text size relative to the page), as the on-screen views draw the same plot.
+  void drawScaled(const QRectF& rect, double designWidth,
+                  const std::function<void(QPainter&, const QRectF&)>& paint);
 
  private:
   void decoratePage();
