@@ -15,6 +15,7 @@
 #include <QTemporaryDir>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -322,6 +323,57 @@ TEST(ReportReal, CaiviacSpindleLog) {
                  QStringLiteral("2"), QStringLiteral("-l"), QStringLiteral("2"), pdf, prefix})
                 .exitCode,
             0);
+}
+
+// One model's failure marks that model only: on a noise-free log whose target is exactly linear in its
+// one input (3.25 um/K, written with every decimal), GMC(1,N)'s least squares is rank deficient. The
+// thermal section still has the models' table: GMC(1,N)'s row says "not fitted" with the reason, the
+// linear model's held-out row its RMSE of 0 (an exact fit), and the conclusion names a fitted model.
+TEST_F(ReportTest, AModelThatCannotBeFittedIsMarkedAndTheOthersAreReported) {
+  std::ostringstream csv;
+  csv << "time_s,T1,disp_z_um\n";
+  for (int r = 0; r < 120; ++r) {
+    const double t = 30.0 * r;
+    const double temperature = std::round((21.0 + 9.0 * (1.0 - std::exp(-t / 1500.0))) * 1e4) / 1e4;
+    char line[96];
+    std::snprintf(line, sizeof line, "%d,%.4f,%.6f\n", static_cast<int>(t), temperature,
+                  3.25 * (temperature - 21.0) - 0.8);
+    csv << line;
+  }
+  writeText(dir_.filePath(QStringLiteral("data/linear.csv")), csv.str());
+  Project p;
+  p.name = "Linear log";
+  p.datasets.push_back({"spindel", dataset_kind::kThermalLog, "data/linear.csv", "", "", {}});
+  p.studies["thermal"] = {{"dataset", "spindel"}, {"target", "disp_z_um"}, {"inputs", {"T1"}}};
+  const QString projectPath = dir_.filePath(QStringLiteral("linear.metrofit"));
+  saveProject(p, projectPath.toStdString());
+  ReportOptions o;
+  o.projectPath = projectPath;
+  const QString pdf = dir_.filePath(QStringLiteral("linear.pdf"));
+  writeReport(loadProject(projectPath.toStdString()), pdf, o);
+  QString text = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")}).out;
+  text.replace(QRegularExpression(QStringLiteral("\\s+")), QStringLiteral(" "));
+  EXPECT_FALSE(text.contains(QStringLiteral("could not be fitted:"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("Performance indices"))) << text.toStdString();
+  EXPECT_TRUE(
+      text.contains(QStringLiteral("not fitted: the GMC(1,N) least-squares system is rank deficient")))
+      << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("GMC(1,N) could not be fitted (the GMC(1,N) least-squares")))
+      << text.toStdString();
+  // The linear model's rows (pdftotext -layout keeps a table row on one line): fitted and held out on
+  // 60 rows each, R = E = 1 and an RMSE and band of 0.00 um (an exact fit; the target reaches 26 um).
+  const QString layout =
+      run(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")}).out;
+  const QRegularExpression linearRows(
+      QStringLiteral("\\n\\s*linear\\s+fit, 60\\s+1\\.0000\\s+0\\.00\\s+1\\.0000\\s+±0\\.00\\s*\\n"
+                     "\\s*held out, 60\\s+1\\.0000\\s+0\\.00\\s+1\\.0000\\s+±0\\.00\\s+usable"));
+  EXPECT_TRUE(linearRows.match(layout).hasMatch()) << layout.toStdString();
+  EXPECT_FALSE(text.contains(
+      QRegularExpression(QStringLiteral("\\bnan\\b"), QRegularExpression::CaseInsensitiveOption)));
+  const QString prefix = QDir(outputDir()).filePath(QStringLiteral("report_one_model_not_fitted"));
+  run(QStringLiteral("pdftoppm"),
+      {QStringLiteral("-r"), QStringLiteral("80"), QStringLiteral("-png"), QStringLiteral("-f"),
+       QStringLiteral("2"), QStringLiteral("-l"), QStringLiteral("3"), pdf, prefix});
 }
 
 /// The text of one page (1-based) of a PDF.
