@@ -19,6 +19,7 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <random>
 #include <sstream>
 
 #include "core/common/error.h"
@@ -374,6 +375,73 @@ TEST_F(ReportTest, AModelThatCannotBeFittedIsMarkedAndTheOthersAreReported) {
   run(QStringLiteral("pdftoppm"),
       {QStringLiteral("-r"), QStringLiteral("80"), QStringLiteral("-png"), QStringLiteral("-f"),
        QStringLiteral("2"), QStringLiteral("-l"), QStringLiteral("3"), pdf, prefix});
+}
+
+// The modular case as the project declares it: studies.thermal.modules names a new C test for the C
+// module (the Modular tab's "Identify again…"). A two-drive plant written out here: Z and C drive
+// nodes are first-order lags (tau 20 and 15 min), the ram grows -5 um/K dTz + kc dTc plus 0.1 um
+// noise; the Z and C tests have kc = -3, the combined test and the new C test kc = -4. With the key the
+// report's modules predict the combined test within 0.15 um (the noise and the estimation error) and
+// say where C was identified; without it, C of the old machine leaves more than 1 um.
+TEST_F(ReportTest, TheModularSectionUsesTheModuleTestsOfTheThermalStudy) {
+  const auto plant = [](double z, double c, double kc, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> noise(0.0, 0.1);
+    std::string csv = "time_min,Tz,Tc,disp_z_um\n";
+    double tz = 20.0, tc = 20.0;
+    for (int k = 0; k <= 240; ++k) {
+      char line[128];
+      std::snprintf(line, sizeof line, "%d,%.6f,%.6f,%.6f\n", k, tz, tc,
+                    -5.0 * (tz - 20.0) + kc * (tc - 20.0) + noise(rng));
+      csv += line;
+      const double uz = k < 120 ? 8.0 * z : 0.0, uc = k < 120 ? 6.0 * c : 0.0;
+      tz = 20.0 + uz + (tz - 20.0 - uz) * std::exp(-1.0 / 20.0);
+      tc = 20.0 + uc + (tc - 20.0 - uc) * std::exp(-1.0 / 15.0);
+    }
+    return csv;
+  };
+  writeText(dir_.filePath(QStringLiteral("data/z.csv")), plant(1, 0, -3.0, 1));
+  writeText(dir_.filePath(QStringLiteral("data/c.csv")), plant(0, 1, -3.0, 2));
+  writeText(dir_.filePath(QStringLiteral("data/combined.csv")), plant(0.5, 0.5, -4.0, 5));
+  writeText(dir_.filePath(QStringLiteral("data/c_new.csv")), plant(0, 1, -4.0, 4));
+  Project p;
+  p.name = "Two drives";
+  p.datasets.push_back({"thermal_modular_z", dataset_kind::kThermalLog, "data/z.csv", "", "", {}});
+  p.datasets.push_back({"thermal_modular_c", dataset_kind::kThermalLog, "data/c.csv", "", "", {}});
+  p.datasets.push_back(
+      {"thermal_modular_combined", dataset_kind::kThermalLog, "data/combined.csv", "", "", {}});
+  p.datasets.push_back({"c_after_bearings", dataset_kind::kThermalLog, "data/c_new.csv", "", "", {}});
+  p.studies["thermal"] = {{"dataset", "thermal_modular_combined"}};
+  // The modules' row of the modular table (text with whitespace runs as one space): its RMSE.
+  const auto modulesRmse = [](const QString& text) {
+    const QRegularExpressionMatch m =
+        QRegularExpression(
+            QStringLiteral("modules, summed \\(distributed lag\\)\\s+(\\S+)\\s+(\\S+)\\s+(\\S+) %\\s+(\\S+)"))
+            .match(text);
+    return m.hasMatch() ? m.captured(4).toDouble() : -1.0;
+  };
+  for (const bool declared : {false, true}) {
+    if (declared)
+      p.studies["thermal"]["modules"] = {{"thermal_modular_c", {{"dataset", "c_after_bearings"}}}};
+    const QString projectPath = dir_.filePath(QStringLiteral("modules.metrofit"));
+    saveProject(p, projectPath.toStdString());
+    ReportOptions o;
+    o.projectPath = projectPath;
+    const QString pdf = dir_.filePath(declared ? QStringLiteral("declared.pdf") : QStringLiteral("own.pdf"));
+    writeReport(loadProject(projectPath.toStdString()), pdf, o);
+    QString text = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")}).out;
+    text.replace(QRegularExpression(QStringLiteral("\\s+")), QStringLiteral(" "));
+    const double rmse = modulesRmse(text);
+    if (declared) {
+      EXPECT_TRUE(text.contains(QStringLiteral("(identified again on c_after_bearings)")))
+          << text.toStdString();
+      EXPECT_GE(rmse, 0.0) << text.toStdString();
+      EXPECT_LT(rmse, 0.15) << text.toStdString();
+    } else {
+      EXPECT_FALSE(text.contains(QStringLiteral("identified again on"))) << text.toStdString();
+      EXPECT_GT(rmse, 1.0) << text.toStdString();
+    }
+  }
 }
 
 /// The text of one page (1-based) of a PDF.

@@ -97,5 +97,31 @@ TEST(ThermalComparisonFailure, BadInputThatEveryModelRefusesStillThrows) {
   EXPECT_THROW(compareThermalModels(linearLog(), s), ValidationError);
 }
 
+// The modular case likewise: fitted on two such logs together, GMC(1,N) is rank deficient and marked;
+// the linear model predicts a third log (the same heating, 1 K cooler at the start) exactly.
+TEST(ThermalComparisonFailure, TheModularCaseMarksTheModelThatCannotBeFitted) {
+  const ThermalLog a = linearLog(), b = linearLog();
+  std::string shifted = "time_s,T1,disp_z_um\n";
+  for (std::size_t k = 0; k < a.rows(); ++k) {
+    const double t1 = a.channel("T1").values[k] - 1.0;
+    char line[96];
+    std::snprintf(line, sizeof line, "%d,%.4f,%.6f\n", static_cast<int>(30 * k), t1,
+                  kSlope * (t1 - 21.0) - 0.8);
+    shifted += line;
+  }
+  const ThermalLog test = thermalLogFromCsv(parseCsv(shifted, "test.csv"));
+  ModularComparison m;
+  ASSERT_NO_THROW(m = compareModularModels({&a, &b}, test, "disp_z_um", {"T1"}, 1));
+  const std::size_t gmc = indexOf(thermal::ThermalModelKind::Gmc);
+  const std::size_t linear = indexOf(thermal::ThermalModelKind::Linear);
+  EXPECT_FALSE(m.fitted(gmc));
+  EXPECT_NE(m.failed[gmc].find("rank deficient"), std::string::npos) << m.failed[gmc];
+  ASSERT_TRUE(m.fitted(linear)) << m.failed[linear];
+  EXPECT_LT(m.models[linear].test.rmse, 1e-9);
+  // Both tests move T1 alike: no module has a channel of its own (said, not thrown).
+  EXPECT_FALSE(m.modules.evaluation.has_value());
+  EXPECT_FALSE(m.modules.why.empty());
+}
+
 }  // namespace
 }  // namespace metrofit
