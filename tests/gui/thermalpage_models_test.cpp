@@ -396,15 +396,36 @@ TEST_F(ThermalPageModelsTest, IdentifyOneModuleAgainKeepsTheOtherAndIsUndoable) 
   // Identify C again on the new C test: the row's "Identify again…" asks for the test (the project's
   // thermal logs but the combined test), then runs on the page's background run.
   QStringList offered;
-  QTimer::singleShot(0, [&offered] {
-    for (QWidget* w : QApplication::topLevelWidgets()) {
-      if (auto* dialog = qobject_cast<QInputDialog*>(w); dialog && dialog->isVisible()) {
-        offered = dialog->comboBoxItems();
-        dialog->setTextValue(QStringLiteral("c_after_bearings"));
-        dialog->accept();
+  const auto chooseNewCTest = [&offered] {
+    QTimer::singleShot(0, [&offered] {
+      for (QWidget* w : QApplication::topLevelWidgets()) {
+        if (auto* dialog = qobject_cast<QInputDialog*>(w); dialog && dialog->isVisible()) {
+          offered = dialog->comboBoxItems();
+          dialog->setTextValue(QStringLiteral("c_after_bearings"));
+          dialog->accept();
+        }
       }
-    }
-  });
+    });
+  };
+  // First cancelled: while it runs, Cancel and the progress bar are there and the actions are not;
+  // after Cancel the modules shown and the project are unchanged.
+  chooseNewCTest();
+  qobject_cast<QPushButton*>(again)->click();
+  ASSERT_TRUE(page.modularRun()->isRunning());
+  EXPECT_TRUE(view->modulesCancelButton()->isEnabled());
+  EXPECT_FALSE(view->modulesProgressBar()->isHidden());
+  EXPECT_FALSE(view->saveModulesButton()->isEnabled());
+  EXPECT_FALSE(again->isEnabled());
+  view->modulesCancelButton()->click();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return !page.modularRun()->isRunning(); }, 60000));
+  EXPECT_EQ(page.modularComparison()->modules.tests, before.modules.tests);
+  EXPECT_EQ(document_.undoStack()->count(), undoCount);
+  EXPECT_TRUE(view->modulesMessage().startsWith(QStringLiteral("Cancelled")))
+      << view->modulesMessage().toStdString();
+  EXPECT_TRUE(again->isEnabled());
+  EXPECT_TRUE(view->modulesProgressBar()->isHidden());
+  // Then to the end.
+  chooseNewCTest();
   qobject_cast<QPushButton*>(again)->click();
   EXPECT_EQ(offered, (QStringList{QString::fromLatin1(kModularZId), QString::fromLatin1(kModularCId),
                                   QStringLiteral("c_after_bearings")}));
