@@ -3222,7 +3222,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+650"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+691"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -3352,7 +3352,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+14"/>
         <location filename="../widgets/report/kinematicsection.cpp" line="+234"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-365"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-390"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -3384,7 +3384,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+236"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+245"/>
         <source>error (%1)</source>
         <translation>Fehler (%1)</translation>
     </message>
@@ -4361,7 +4361,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location filename="../widgets/report/setupsection.cpp" line="-93"/>
         <location line="+40"/>
         <location filename="../widgets/report/summarysection.cpp" line="+123"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-267"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-276"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
@@ -4796,7 +4796,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+1"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+1"/>
-        <location line="+175"/>
+        <location line="+176"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
@@ -5022,7 +5022,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>metrofit-cli setup --export fanuc schreibt denselben Text; Heidenhain, Siemens und CSV sind die weiteren Formate (siehe die Vorzeichenkonvention im Kopf).</translation>
     </message>
     <message>
-        <location filename="../widgets/report/thermalsection.cpp" line="-262"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-263"/>
         <source>%1 h</source>
         <translation>%1 h</translation>
     </message>
@@ -5153,7 +5153,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>im Diagramm</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -5193,7 +5193,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 über jedem Sensor (Abb. 9 in %5): Aufheizabschnitte (die Änderung von %1 wächst, %2 Zeilen) und Abkühlabschnitte (%3 Zeilen) in den Farben der Phasen des Verlaufsdiagramms. Schleifenfläche nach der Gaußschen Trapezformel; Verzögerung: die Zeitkonstante eines Verzögerungsglieds erster Ordnung zwischen Sensor und Verlagerung (&gt; 0: der Sensor eilt nach).%4</translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+102"/>
+        <source>not fitted: %1</source>
+        <translation>nicht angepasst: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: not fitted</source>
+        <translation>%1: nicht angepasst</translation>
+    </message>
+    <message>
+        <location line="+50"/>
         <source>Performance indices (Table 4 of %1): R correlation, RMSE, E Nash-Sutcliffe efficiency, band = largest |residual|. A model is usable for compensation only when on the held-out rows it does not diverge (RMSE at most %2 × the largest error), E ≥ %3 and R ≥ %4.</source>
         <translation>Gütemaße (Tabelle 4 in %1): R Korrelation, RMSE, E Nash-Sutcliffe-Effizienz, Band = größtes |Residuum|. Ein Modell taugt zur Kompensation nur, wenn es auf den zurückgehaltenen Zeilen nicht divergiert (RMSE höchstens %2 × der größte Fehler), E ≥ %3 und R ≥ %4.</translation>
     </message>
@@ -5203,7 +5213,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Modulare Modelle (%1, Abschnitt 4.3)</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+30"/>
+        <source>not fitted</source>
+        <translation>nicht angepasst</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 not fitted: %2.</source>
+        <translation>%1 nicht angepasst: %2.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>modules, summed (distributed lag)</source>
         <translation>Module, summiert (verteilte Verzögerung)</translation>
     </message>
@@ -5213,7 +5233,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 mit den Eingängen %2, bis zu %3 %4</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
+        <source> (identified again on %1)</source>
+        <translation> (erneut identifiziert an %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Module by module (the last row and the dotted curves): each module is identified on its own test alone, with the channels its own heating moves at least twice as much as the other test&apos;s, by the distributed-lag model, and the combined test is predicted as the sum of the modules, so that one module can be identified again without the others: %1.</source>
         <translation>Modul für Modul (die letzte Zeile und die gepunkteten Kurven): Jedes Modul wird allein an seinem eigenen Test identifiziert, mit den Kanälen, die seine eigene Erwärmung mindestens doppelt so stark bewegt wie der andere Test, durch das Modell mit verteilter Verzögerung, und der kombinierte Test wird als Summe der Module vorhergesagt, sodass ein Modul ohne die anderen neu identifiziert werden kann: %1.</translation>
     </message>
@@ -5233,7 +5258,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Prüfen Sie Zielgröße und Eingänge der thermischen Studie am Protokoll.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
+        <source>%1 could not be fitted (%2)</source>
+        <translation>%1 konnte nicht angepasst werden (%2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>%1 is not usable (%2)</source>
         <translation>%1 ist nicht verwendbar (%2)</translation>
     </message>
@@ -5283,7 +5313,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Kompensieren Sie nicht mit diesen Modellen. Zeichnen Sie einen längeren Test mit Aufheizen und Abkühlen auf, setzen Sie Sensoren nahe den Wärmequellen und suchen Sie mit dem geschlossenen Regelkreis (Diagnose) die Verzögerung oder Eingänge, die dem Modell fehlen.</translation>
     </message>
     <message>
-        <location line="-287"/>
+        <location line="-311"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Diagramme der ersten %1 von %2 Sensoren; die Tabelle listet alle.</translation>
     </message>
@@ -5344,41 +5374,41 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+90"/>
+        <location line="+98"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location line="-89"/>
-        <location line="+95"/>
+        <location line="-97"/>
+        <location line="+103"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-95"/>
-        <location line="+93"/>
+        <location line="-103"/>
+        <location line="+101"/>
         <source>RMSE (%1)</source>
         <translation>RMSE (%1)</translation>
     </message>
     <message>
-        <location line="-92"/>
-        <location line="+95"/>
+        <location line="-100"/>
+        <location line="+103"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-95"/>
-        <location line="+90"/>
+        <location line="-103"/>
+        <location line="+98"/>
         <source>band (%1)</source>
         <translation>Band (%1)</translation>
     </message>
     <message>
-        <location line="-89"/>
+        <location line="-97"/>
         <source>verdict</source>
         <translation>Urteil</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+19"/>
         <source>%1 PSO iterations, Eq. 2.9 %2 → %3</source>
         <translation>%1 PSO-Iterationen, Gl. 2.9 %2 → %3</translation>
     </message>
@@ -7757,7 +7787,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelCharts</name>
     <message>
-        <location filename="../widgets/thermal/thermalmodelcharts.cpp" line="+69"/>
+        <location filename="../widgets/thermal/thermalmodelcharts.cpp" line="+70"/>
         <source>time (h)</source>
         <translation>Zeit (h)</translation>
     </message>
@@ -7777,7 +7807,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Grenze Anpassung | Test</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+25"/>
+        <source>%1: not fitted</source>
+        <translation>%1: nicht angepasst</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <source>%1: lag %2 min</source>
         <translation>%1: Verzug %2 min</translation>
     </message>
@@ -7802,23 +7837,23 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>gemessen</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <location line="+46"/>
+        <location line="+14"/>
+        <location line="+47"/>
         <source>%1 (off scale)</source>
         <translation>%1 (außerhalb)</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-23"/>
         <source>residual</source>
         <translation>Rest</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>measured (combined test)</source>
         <translation>gemessen (kombinierter Test)</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>module %1</source>
         <translation>Modul %1</translation>
     </message>
@@ -7841,7 +7876,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+73"/>
+        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+76"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -7866,7 +7901,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Übernommene Effekte %1: %2.</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+107"/>
         <source>Applied effects %1: Train (Ctrl+R) fits each model with and without them and keeps the lower held-out error.</source>
         <translation>Übernommene Effekte %1: Trainieren (Strg+R) passt jedes Modell mit und ohne sie an und behält den kleineren Fehler auf den Testdaten.</translation>
     </message>
@@ -7891,7 +7926,13 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Beste Fitness nach Gl. 2.9 (Summe der quadrierten Residuen%1) je PSO-Iteration</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+39"/>
+        <location line="+133"/>
+        <source>not fitted: %1</source>
+        <translation>nicht angepasst: %1</translation>
+    </message>
+    <message>
+        <location line="-123"/>
         <source>fit (%1)</source>
         <translation>Anpassung (%1)</translation>
     </message>
@@ -7912,50 +7953,55 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+104"/>
-        <location line="+112"/>
+        <location line="+126"/>
+        <location line="+151"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location line="-216"/>
-        <location line="+216"/>
+        <location line="-277"/>
+        <location line="+277"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
     <message>
-        <location line="-215"/>
-        <location line="+215"/>
+        <location line="-276"/>
+        <location line="+276"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-215"/>
-        <location line="+215"/>
+        <location line="-276"/>
+        <location line="+276"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-214"/>
-        <location line="+104"/>
-        <location line="+110"/>
+        <location line="-275"/>
+        <location line="+126"/>
+        <location line="+149"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-214"/>
-        <location line="+214"/>
+        <location line="-275"/>
+        <location line="+275"/>
         <source>band</source>
         <translation>Band</translation>
     </message>
     <message>
-        <location line="-213"/>
-        <location line="+213"/>
+        <location line="-274"/>
+        <location line="+274"/>
         <source>verdict</source>
         <translation>Urteil</translation>
     </message>
     <message>
-        <location line="-206"/>
+        <location line="-266"/>
+        <source>%1 not fitted: %2.</source>
+        <translation>%1 nicht angepasst: %2.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -7980,17 +8026,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 Zeilen zur Anpassung, %2 Testdaten; %3.</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 % (GMC(1,N) %2 %, MLP %3 %).</source>
-        <translation>&lt;b&gt;Modularer Fall:&lt;/b&gt; GNNMCI(1,N), angepasst an den Z- und C-Tests, verringert den Fehler des kombinierten Tests um %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+60"/>
         <source>modules, summed (distributed lag)</source>
         <translation>Module, summiert (verteilte Verzögerung)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>%1 (inputs %2) contributes up to %3 %4</source>
         <translation>%1 (Eingänge %2) trägt bis zu %3 %4 bei</translation>
     </message>
@@ -8005,7 +8046,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Modul für Modul: nicht identifiziert (%1).</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>error → band (%1)</source>
         <translation>Fehler → Band (%1)</translation>
     </message>
@@ -8025,7 +8066,42 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>weniger (RMS, %)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+29"/>
+        <source>not identified</source>
+        <translation>nicht identifiziert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Identify again…</source>
+        <translation>Erneut identifizieren…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Identify this module again on another test of its drive (a thermal log of the project); the other modules keep their models</source>
+        <translation>Dieses Modul an einem anderen Test seines Antriebs (einem Thermoprotokoll des Projekts) erneut identifizieren; die anderen Module behalten ihre Modelle</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>identified on</source>
+        <translation>identifiziert an</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>inputs</source>
+        <translation>Eingänge</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>contribution (peak)</source>
+        <translation>Beitrag (Spitze)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>%1: %p%</source>
         <translation>%1: %p%</translation>
     </message>
@@ -8061,11 +8137,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+99"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-95"/>
         <source>Stop the training (Esc)</source>
         <translation>Das Training anhalten (Esc)</translation>
     </message>
@@ -8125,7 +8202,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Modulare Modelle (Abschnitt 4.3)</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+24"/>
+        <source>Save module models…</source>
+        <translation>Modulmodelle speichern…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Write each module&apos;s fitted model to a folder as NAME.json (the files of metrofit-cli thermal modular --save-modules)</source>
+        <translation>Das angepasste Modell jedes Moduls als NAME.json in einen Ordner schreiben (die Dateien von metrofit-cli thermal modular --save-modules)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Stop identifying the module; the modules shown stay</source>
+        <translation>Die Identifikation des Moduls anhalten; die angezeigten Module bleiben</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>Performance indices (Table 4)</source>
         <translation>Gütekennzahlen (Tabelle 4)</translation>
     </message>
@@ -8151,7 +8243,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Training nach %1 PSO-Iterationen abgebrochen; die angezeigten Ergebnisse sind die vorherigen.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="-332"/>
+        <source>not fitted</source>
+        <translation>nicht angepasst</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 (GMC(1,N) %2, MLP %3).</source>
+        <translation>&lt;b&gt;Modularer Fall:&lt;/b&gt; GNNMCI(1,N), angepasst an den Z- und C-Tests, verringert den Fehler des kombinierten Tests um %1 (GMC(1,N) %2, MLP %3).</translation>
+    </message>
+    <message>
+        <location line="+351"/>
         <source>Settings changed: Train (Ctrl+R) to update the results.</source>
         <translation>Einstellungen geändert: Trainieren (Strg+R), um die Ergebnisse zu aktualisieren.</translation>
     </message>
@@ -8180,7 +8282,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+74"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+82"/>
         <source>T&amp;rend</source>
         <translation>&amp;Verlauf</translation>
     </message>
@@ -8215,7 +8317,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&amp;Thermoprotokoll:</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+38"/>
+        <source>The module could not be identified again: %1</source>
+        <translation>Das Modul konnte nicht erneut identifiziert werden: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cancelled: the modules shown are unchanged.</source>
+        <translation>Abgebrochen: die angezeigten Module sind unverändert.</translation>
+    </message>
+    <message>
+        <location line="+66"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Dieses Projekt hat kein Thermoprotokoll. Fügen Sie der Projektdatei einen Datensatz der Art „thermal_log“ hinzu (eine Zeitspalte, Sensorspalten und die Verlagerung).</translation>
     </message>
@@ -8272,12 +8384,77 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Einstellungen des thermischen Modells ändern</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+95"/>
+        <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) not fitted: %6</source>
+        <translation>Gemeinsam an %1 und %2 angepasst, Vorhersage für %3 (Zielgröße %4; Eingänge %5; Startwert 1): GNNMCI(1,N) nicht angepasst: %6</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Modular case: %1</source>
         <translation>Modularer Fall: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
+        <source>The modules&apos; tests of the thermal study cannot be used (%1); the modules are identified on their own tests.</source>
+        <translation>Die Tests der Module aus der thermischen Studie können nicht verwendet werden (%1); die Module werden an ihren eigenen Tests identifiziert.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Modules identified on %1; the others kept their models. The modules&apos; sum: RMSE %2%3 on %4.</source>
+        <translation>Module an %1 identifiziert; die anderen haben ihre Modelle behalten. Summe der Module: RMSE %2%3 an %4.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the tests of the thermal study</source>
+        <translation>den Tests der thermischen Studie</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Identify module %1 again on %2</source>
+        <translation>Modul %1 an %2 erneut identifizieren</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Identifying…</source>
+        <translation>Identifikation läuft…</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Reading %1…</source>
+        <translation>%1 wird gelesen…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Identifying on %1…</source>
+        <translation>Identifikation an %1…</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>Saved %1 to %2.</source>
+        <translation>%1 in %2 gespeichert.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot save the module models: %1</source>
+        <translation>Die Modulmodelle können nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Identify %1 again</source>
+        <translation>%1 erneut identifizieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The test to identify module %1 on (a new test of its drive; now %2). The other modules keep their models.</source>
+        <translation>Der Test, an dem Modul %1 identifiziert wird (ein neuer Test seines Antriebs; jetzt %2). Die anderen Module behalten ihre Modelle.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Save module models to</source>
+        <translation>Modulmodelle speichern in</translation>
+    </message>
+    <message>
+        <location line="-160"/>
         <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) reduces the combined test&apos;s error by %6 %.</source>
         <translation>Gemeinsam an %1 und %2 angepasst, Vorhersage für %3 (Zielgröße %4; Eingänge %5; Startwert 1): GNNMCI(1,N) verringert den Fehler des kombinierten Tests um %6 %.</translation>
     </message>

@@ -3226,7 +3226,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+650"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+691"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -3356,7 +3356,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+14"/>
         <location filename="../widgets/report/kinematicsection.cpp" line="+234"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-365"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-390"/>
         <source>yes</source>
         <translation>tak</translation>
     </message>
@@ -3388,7 +3388,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+236"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+245"/>
         <source>error (%1)</source>
         <translation>błąd (%1)</translation>
     </message>
@@ -4365,7 +4365,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location filename="../widgets/report/setupsection.cpp" line="-93"/>
         <location line="+40"/>
         <location filename="../widgets/report/summarysection.cpp" line="+123"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-267"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-276"/>
         <source>file</source>
         <translation>plik</translation>
     </message>
@@ -4801,7 +4801,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+1"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+1"/>
-        <location line="+175"/>
+        <location line="+176"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
@@ -5027,7 +5027,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>metrofit-cli setup --export fanuc zapisuje ten sam tekst; Heidenhain, Siemens i CSV to pozostałe formaty (patrz konwencja znaków w nagłówku).</translation>
     </message>
     <message>
-        <location filename="../widgets/report/thermalsection.cpp" line="-262"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-263"/>
         <source>%1 h</source>
         <translation>%1 h</translation>
     </message>
@@ -5163,7 +5163,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>na wykresie</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -5203,7 +5203,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>%1 względem każdego czujnika (rys. 9 w %5): odcinki nagrzewania (zmiana %1 rośnie, wiersze: %2) i chłodzenia (wiersze: %3) w kolorach faz wykresu przebiegu. Pole pętli wzorem Gaussa; opóźnienie: stała czasowa członu inercyjnego pierwszego rzędu między czujnikiem a przemieszczeniem (&gt; 0: czujnik się opóźnia).%4</translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+102"/>
+        <source>not fitted: %1</source>
+        <translation>nie dopasowano: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: not fitted</source>
+        <translation>%1: nie dopasowano</translation>
+    </message>
+    <message>
+        <location line="+50"/>
         <source>Performance indices (Table 4 of %1): R correlation, RMSE, E Nash-Sutcliffe efficiency, band = largest |residual|. A model is usable for compensation only when on the held-out rows it does not diverge (RMSE at most %2 × the largest error), E ≥ %3 and R ≥ %4.</source>
         <translation>Wskaźniki jakości (tabela 4 w %1): R korelacja, RMSE, E sprawność Nasha-Sutcliffe’a, pasmo = największe |residuum|. Model nadaje się do kompensacji tylko wtedy, gdy na odłożonych wierszach nie rozbiega się (RMSE co najwyżej %2 × największy błąd), E ≥ %3 i R ≥ %4.</translation>
     </message>
@@ -5213,7 +5223,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Modele modułowe (%1, rozdział 4.3)</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+30"/>
+        <source>not fitted</source>
+        <translation>nie dopasowano</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 not fitted: %2.</source>
+        <translation>%1 nie dopasowano: %2.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>modules, summed (distributed lag)</source>
         <translation>moduły, zsumowane (rozłożone opóźnienie)</translation>
     </message>
@@ -5223,7 +5243,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>%1 z wejściami %2, do %3 %4</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
+        <source> (identified again on %1)</source>
+        <translation> (ponownie zidentyfikowany na %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Module by module (the last row and the dotted curves): each module is identified on its own test alone, with the channels its own heating moves at least twice as much as the other test&apos;s, by the distributed-lag model, and the combined test is predicted as the sum of the modules, so that one module can be identified again without the others: %1.</source>
         <translation>Moduł po module (ostatni wiersz i kropkowane krzywe): każdy moduł jest identyfikowany wyłącznie na własnym teście, z kanałami, które jego własne nagrzewanie zmienia co najmniej dwa razy bardziej niż drugi test, modelem z rozłożonym opóźnieniem, a test łączony jest przewidywany jako suma modułów, dzięki czemu jeden moduł można zidentyfikować ponownie bez pozostałych: %1.</translation>
     </message>
@@ -5243,7 +5268,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Sprawdź wielkość docelową i wejścia badania termicznego względem zapisu.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
+        <source>%1 could not be fitted (%2)</source>
+        <translation>%1 nie dało się dopasować (%2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>%1 is not usable (%2)</source>
         <translation>%1 nie nadaje się do użycia (%2)</translation>
     </message>
@@ -5293,7 +5323,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Nie kompensuj tymi modelami. Zarejestruj dłuższy test obejmujący nagrzewanie i chłodzenie, dodaj czujniki blisko źródeł ciepła i użyj zamkniętej pętli (diagnozy), aby znaleźć opóźnienie lub wejścia, których brakuje modelowi.</translation>
     </message>
     <message>
-        <location line="-287"/>
+        <location line="-311"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Wykresy pierwszych %1 z %2 czujników; tabela zawiera wszystkie.</translation>
     </message>
@@ -5354,41 +5384,41 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+90"/>
+        <location line="+98"/>
         <source>model</source>
         <translation>model</translation>
     </message>
     <message>
-        <location line="-89"/>
-        <location line="+95"/>
+        <location line="-97"/>
+        <location line="+103"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-95"/>
-        <location line="+93"/>
+        <location line="-103"/>
+        <location line="+101"/>
         <source>RMSE (%1)</source>
         <translation>RMSE (%1)</translation>
     </message>
     <message>
-        <location line="-92"/>
-        <location line="+95"/>
+        <location line="-100"/>
+        <location line="+103"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-95"/>
-        <location line="+90"/>
+        <location line="-103"/>
+        <location line="+98"/>
         <source>band (%1)</source>
         <translation>pasmo (%1)</translation>
     </message>
     <message>
-        <location line="-89"/>
+        <location line="-97"/>
         <source>verdict</source>
         <translation>ocena</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+19"/>
         <source>%1 PSO iterations, Eq. 2.9 %2 → %3</source>
         <translation>iteracje PSO: %1, równ. 2.9 %2 → %3</translation>
     </message>
@@ -7780,7 +7810,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelCharts</name>
     <message>
-        <location filename="../widgets/thermal/thermalmodelcharts.cpp" line="+69"/>
+        <location filename="../widgets/thermal/thermalmodelcharts.cpp" line="+70"/>
         <source>time (h)</source>
         <translation>czas (h)</translation>
     </message>
@@ -7800,7 +7830,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>granica dopas./test</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+25"/>
+        <source>%1: not fitted</source>
+        <translation>%1: nie dopasowano</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <source>%1: lag %2 min</source>
         <translation>%1: opóźnienie %2 min</translation>
     </message>
@@ -7825,23 +7860,23 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>zmierzony</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <location line="+46"/>
+        <location line="+14"/>
+        <location line="+47"/>
         <source>%1 (off scale)</source>
         <translation>%1 (poza skalą)</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-23"/>
         <source>residual</source>
         <translation>reszta</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>measured (combined test)</source>
         <translation>zmierzony (test łączony)</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>module %1</source>
         <translation>moduł %1</translation>
     </message>
@@ -7864,7 +7899,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+73"/>
+        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+76"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -7889,7 +7924,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zastosowane efekty %1: %2.</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+107"/>
         <source>Applied effects %1: Train (Ctrl+R) fits each model with and without them and keeps the lower held-out error.</source>
         <translation>Zastosowane efekty %1: Trenuj (Ctrl+R) dopasowuje każdy model z nimi i bez nich i zachowuje mniejszy błąd danych testowych.</translation>
     </message>
@@ -7914,7 +7949,13 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Najlepsze przystosowanie wg równ. 2.9 (suma kwadratów residuów%1) w każdej iteracji PSO</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+39"/>
+        <location line="+133"/>
+        <source>not fitted: %1</source>
+        <translation>nie dopasowano: %1</translation>
+    </message>
+    <message>
+        <location line="-123"/>
         <source>fit (%1)</source>
         <translation>dopasowanie (%1)</translation>
     </message>
@@ -7935,50 +7976,55 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+104"/>
-        <location line="+112"/>
+        <location line="+126"/>
+        <location line="+151"/>
         <source>model</source>
         <translation>model</translation>
     </message>
     <message>
-        <location line="-216"/>
-        <location line="+216"/>
+        <location line="-277"/>
+        <location line="+277"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
     <message>
-        <location line="-215"/>
-        <location line="+215"/>
+        <location line="-276"/>
+        <location line="+276"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-215"/>
-        <location line="+215"/>
+        <location line="-276"/>
+        <location line="+276"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-214"/>
-        <location line="+104"/>
-        <location line="+110"/>
+        <location line="-275"/>
+        <location line="+126"/>
+        <location line="+149"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-214"/>
-        <location line="+214"/>
+        <location line="-275"/>
+        <location line="+275"/>
         <source>band</source>
         <translation>pasmo</translation>
     </message>
     <message>
-        <location line="-213"/>
-        <location line="+213"/>
+        <location line="-274"/>
+        <location line="+274"/>
         <source>verdict</source>
         <translation>ocena</translation>
     </message>
     <message>
-        <location line="-206"/>
+        <location line="-266"/>
+        <source>%1 not fitted: %2.</source>
+        <translation>%1 nie dopasowano: %2.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1 %2 s</source>
         <translation>%1 %2 s</translation>
     </message>
@@ -8003,17 +8049,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>wiersze dopasowania: %1, dane testowe: %2; %3.</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 % (GMC(1,N) %2 %, MLP %3 %).</source>
-        <translation>&lt;b&gt;Przypadek modułowy:&lt;/b&gt; GNNMCI(1,N) dopasowany na testach Z i C zmniejsza błąd testu łączonego o %1 % (GMC(1,N) %2 %, MLP %3 %).</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+60"/>
         <source>modules, summed (distributed lag)</source>
         <translation>moduły, zsumowane (rozłożone opóźnienie)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>%1 (inputs %2) contributes up to %3 %4</source>
         <translation>%1 (wejścia %2) wnosi do %3 %4</translation>
     </message>
@@ -8028,7 +8069,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Moduł po module: nie zidentyfikowano (%1).</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>error → band (%1)</source>
         <translation>błąd → pasmo (%1)</translation>
     </message>
@@ -8048,7 +8089,42 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>mniej (RMS, %)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+29"/>
+        <source>not identified</source>
+        <translation>nie zidentyfikowano</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Identify again…</source>
+        <translation>Zidentyfikuj ponownie…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Identify this module again on another test of its drive (a thermal log of the project); the other modules keep their models</source>
+        <translation>Zidentyfikuj ten moduł ponownie na innym teście jego napędu (rejestrze termicznym projektu); pozostałe moduły zachowują swoje modele</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>module</source>
+        <translation>moduł</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>identified on</source>
+        <translation>zidentyfikowany na</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>inputs</source>
+        <translation>wejścia</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>contribution (peak)</source>
+        <translation>udział (szczyt)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>%1: %p%</source>
         <translation>%1: %p%</translation>
     </message>
@@ -8084,11 +8160,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+99"/>
         <source>Cancel</source>
         <translation>Anuluj</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-95"/>
         <source>Stop the training (Esc)</source>
         <translation>Zatrzymaj trenowanie (Esc)</translation>
     </message>
@@ -8148,7 +8225,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Modele modułowe (rozdział 4.3)</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+24"/>
+        <source>Save module models…</source>
+        <translation>Zapisz modele modułów…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Write each module&apos;s fitted model to a folder as NAME.json (the files of metrofit-cli thermal modular --save-modules)</source>
+        <translation>Zapisz dopasowany model każdego modułu w folderze jako NAZWA.json (pliki metrofit-cli thermal modular --save-modules)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Stop identifying the module; the modules shown stay</source>
+        <translation>Zatrzymaj identyfikację modułu; pokazane moduły pozostają</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>Performance indices (Table 4)</source>
         <translation>Wskaźniki jakości (tabela 4)</translation>
     </message>
@@ -8174,7 +8266,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Trenowanie anulowano po %1 iteracjach PSO; pokazane wyniki są poprzednie.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="-332"/>
+        <source>not fitted</source>
+        <translation>nie dopasowano</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;b&gt;Modular case:&lt;/b&gt; GNNMCI(1,N) fitted on the Z and C tests reduces the combined test&apos;s error by %1 (GMC(1,N) %2, MLP %3).</source>
+        <translation>&lt;b&gt;Przypadek modułowy:&lt;/b&gt; GNNMCI(1,N) dopasowany na testach Z i C zmniejsza błąd testu łączonego o %1 (GMC(1,N) %2, MLP %3).</translation>
+    </message>
+    <message>
+        <location line="+351"/>
         <source>Settings changed: Train (Ctrl+R) to update the results.</source>
         <translation>Zmieniono ustawienia: Trenuj (Ctrl+R), aby zaktualizować wyniki.</translation>
     </message>
@@ -8203,7 +8305,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+74"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+82"/>
         <source>T&amp;rend</source>
         <translation>&amp;Trend</translation>
     </message>
@@ -8238,7 +8340,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>&amp;Rejestr termiczny:</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+38"/>
+        <source>The module could not be identified again: %1</source>
+        <translation>Nie udało się ponownie zidentyfikować modułu: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cancelled: the modules shown are unchanged.</source>
+        <translation>Anulowano: pokazane moduły są bez zmian.</translation>
+    </message>
+    <message>
+        <location line="+66"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Ten projekt nie zawiera rejestru termicznego. Dodaj do pliku projektu zbiór danych rodzaju „thermal_log” (kolumna czasu, kolumny czujników i przemieszczenie).</translation>
     </message>
@@ -8295,12 +8407,77 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana ustawień modelu termicznego</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+95"/>
+        <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) not fitted: %6</source>
+        <translation>Dopasowane łącznie na %1 i %2, predykcja %3 (cel %4; wejścia %5; ziarno 1): GNNMCI(1,N) nie dopasowano: %6</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Modular case: %1</source>
         <translation>Przypadek modułowy: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
+        <source>The modules&apos; tests of the thermal study cannot be used (%1); the modules are identified on their own tests.</source>
+        <translation>Nie można użyć testów modułów z badania termicznego (%1); moduły są identyfikowane na własnych testach.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Modules identified on %1; the others kept their models. The modules&apos; sum: RMSE %2%3 on %4.</source>
+        <translation>Moduły zidentyfikowane na %1; pozostałe zachowały swoje modele. Suma modułów: RMSE %2%3 na %4.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the tests of the thermal study</source>
+        <translation>testach badania termicznego</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Identify module %1 again on %2</source>
+        <translation>Zidentyfikuj moduł %1 ponownie na %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Identifying…</source>
+        <translation>Identyfikacja…</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Reading %1…</source>
+        <translation>Odczyt %1…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Identifying on %1…</source>
+        <translation>Identyfikacja na %1…</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>Saved %1 to %2.</source>
+        <translation>Zapisano %1 w %2.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot save the module models: %1</source>
+        <translation>Nie można zapisać modeli modułów: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Identify %1 again</source>
+        <translation>Zidentyfikuj %1 ponownie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The test to identify module %1 on (a new test of its drive; now %2). The other modules keep their models.</source>
+        <translation>Test, na którym zidentyfikować moduł %1 (nowy test jego napędu; teraz %2). Pozostałe moduły zachowują swoje modele.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Save module models to</source>
+        <translation>Zapisz modele modułów w</translation>
+    </message>
+    <message>
+        <location line="-160"/>
         <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) reduces the combined test&apos;s error by %6 %.</source>
         <translation>Dopasowano łącznie na %1 i %2, prognoza dla %3 (wielkość docelowa %4; wejścia %5; ziarno 1): GNNMCI(1,N) zmniejsza błąd testu łączonego o %6 %.</translation>
     </message>

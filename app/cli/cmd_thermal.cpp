@@ -333,11 +333,8 @@ int runModules(const ModularArgs& a) {
                      {"parameters", thermal::thermalModelParameters(mod.training.model)}};
     j["modules"].push_back(std::move(e));
     parts += (parts.empty() ? "" : ", ") + mod.name + " " + num(peak) + unit;
-    if (!a.saveModules.empty()) {
-      const std::string path = (std::filesystem::path(a.saveModules) / (mod.name + ".json")).string();
-      writeResult(path, dumpJson(thermal::thermalModelToJson(mod.training.model)));
-    }
   }
+  if (!a.saveModules.empty()) thermal::saveThermalModules(modules, a.saveModules);
   writeResult(a.out, dumpJson(j));
   summary("thermal modular: " + std::to_string(modules.size()) + " modules (" + parts +
           " at their peaks), on " + a.test + ": error " + num(m.errorPeak) + unit + " -> +-" +

@@ -1,7 +1,11 @@
 #include "app/gui/thermalpage.h"
 
 #include <QComboBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QHBoxLayout>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
@@ -11,6 +15,8 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <exception>
+#include <map>
+#include <utility>
 
 #include "app/gui/notesedit.h"
 #include "core/diagnose/applied_setup_matching.h"
@@ -18,6 +24,7 @@
 #include "core/thermal/thermal_log.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
+#include "widgets/thermal/thermalcharts.h"
 #include "widgets/thermal/thermalhysteresisview.h"
 #include "widgets/thermal/thermalmodelview.h"
 #include "widgets/thermal/thermaltrendview.h"
@@ -117,9 +124,30 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
     if (std::optional<ModularRun> run = modular_->takeResult()) applyModular(*run);
   });
   connect(modular_, &BackgroundRunBase::failed, this, [this](const QString& message) {
+    if (moduleRunActive_) {  // the modules shown stay
+      moduleRunActive_ = false;
+      models_->setModulesRunning(false);
+      models_->setModulesMessage(tr("The module could not be identified again: %1").arg(message));
+      return;
+    }
     ModularRun run;
     run.error = message;
     applyModular(run);
+  });
+  connect(modular_, &BackgroundRunBase::cancelled, this, [this] {
+    modular_->takeResult();
+    if (!moduleRunActive_) return;
+    moduleRunActive_ = false;
+    models_->setModulesRunning(false);
+    models_->setModulesMessage(tr("Cancelled: the modules shown are unchanged."));
+  });
+  connect(modular_, &BackgroundRunBase::progress, this, [this](double fraction, const QString& text) {
+    if (moduleRunActive_) models_->setModulesProgress(fraction, text);
+  });
+  connect(models_, &ThermalModelView::identifyModuleRequested, this, &ThermalPage::askIdentifyModuleAgain);
+  connect(models_, &ThermalModelView::saveModulesRequested, this, &ThermalPage::askSaveModuleModels);
+  connect(models_, &ThermalModelView::modulesCancelRequested, this, [this] {
+    if (moduleRunActive_) modular_->cancel();
   });
   refresh();
 }
@@ -145,15 +173,21 @@ void ThermalPage::refresh() {
   }
   // Name or notes edits must not re-read the data.
   if (logs == logs_ && projectFile_ == document_->fileName() && combo_->count() > 0) {
-    if (!writingStudy_) syncSettingsFromStudy();  // undo / redo of a settings edit
-    updateInfo();                                 // Apply / undo on the diagnosis page
+    if (!writingStudy_) {
+      syncSettingsFromStudy();  // undo / redo of a settings edit
+      syncModulesFromStudy();   // undo / redo of a module's test
+    }
+    updateInfo();  // Apply / undo on the diagnosis page
     return;
   }
   logs_ = std::move(logs);
   projectFile_ = document_->fileName();
   settings_.clear();
   modularDone_ = false;
+  modularResult_.reset();
+  modularTestLog_.reset();
   models_->setModular(nullptr, nullptr, QString());
+  models_->setModulesMessage(QString());
   const QString previous = currentDataset();
   {
     const QSignalBlocker blocker(combo_);
@@ -303,9 +337,15 @@ void ThermalPage::updateModular(bool now) {
   const CsvReadOptions csv[3] = {z->csv, c->csv, h->csv};  // each log's dialect and mapping
   modularKey_ = projectFile_;
   modularDone_ = true;
+  // The modules on the tests the study names for them (studies.thermal.modules): every thermal log.
+  std::map<std::string, std::pair<std::string, CsvReadOptions>> sources;
+  for (const DatasetRef& d : document_->project().datasets)
+    if (d.kind == dataset_kind::kThermalLog) sources[d.id] = {document_->datasetPath(d).toStdString(), d.csv};
+  const nlohmann::json study = document_->studyValue(QString::fromLatin1(study::kThermal), QString());
   // A read error or a failed fit arrives as failed(message) and is shown in the info line.
+  moduleRunActive_ = false;
   modular_->setSynchronous(now);
-  modular_->start([paths, csv](RunObserver&) -> ModularRun {
+  modular_->start([paths, csv, sources, study](RunObserver&) -> ModularRun {
     ModularRun run;
     const ThermalLog zl = readThermalLog(paths[0], 3, csv[0]);
     const ThermalLog cl = readThermalLog(paths[1], 3, csv[1]);
@@ -313,29 +353,200 @@ void ThermalPage::updateModular(bool now) {
     const ThermalModelSettings s = defaultThermalModelSettings(*run.testLog, nlohmann::json::object(), {});
     run.result = std::make_shared<ModularComparison>(compareModularModels(
         {&zl, &cl}, *run.testLog, s.target, modularInputs(*run.testLog), 1, {}, {kModularZId, kModularCId}));
+    std::map<std::string, ThermalLog> logs;
+    const auto logOf = [&](const std::string& id) -> const ThermalLog* {
+      const auto source = sources.find(id);
+      if (source == sources.end()) return nullptr;
+      auto it = logs.find(id);
+      if (it == logs.end())
+        it = logs.emplace(id, readThermalLog(source->second.first, 3, source->second.second)).first;
+      return &it->second;
+    };
+    ModularModules modules = run.result->modules;
+    try {
+      if (identifyModulesOnStudyTests(modules, study, logOf, *run.testLog, s.target, 1))
+        run.result->modules = std::move(modules);
+    } catch (const std::exception& e) {
+      run.moduleError = QString::fromStdString(e.what());
+    }
     return run;
   });
 }
 
+QString ThermalPage::modularDescription(const ModularComparison& m) const {
+  QStringList inputs;
+  for (const std::string& s : m.inputs) inputs << QString::fromStdString(s);
+  if (!m.fitted(0)) {
+    return tr("Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) "
+              "not fitted: %6")
+        .arg(QString::fromLatin1(kModularZId), QString::fromLatin1(kModularCId),
+             QString::fromLatin1(kModularCombinedId), QString::fromStdString(m.target),
+             inputs.join(QStringLiteral(", ")), QString::fromStdString(m.failed[0]));
+  }
+  const double reduction = 100.0 * m.models[0].reductionPeak;
+  return tr("Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): "
+            "GNNMCI(1,N) reduces the "
+            "combined test's error by %6 %.")
+      .arg(QString::fromLatin1(kModularZId), QString::fromLatin1(kModularCId),
+           QString::fromLatin1(kModularCombinedId), QString::fromStdString(m.target),
+           inputs.join(QStringLiteral(", ")))
+      .arg(QLocale().toString(reduction, 'f', 1));
+}
+
 void ThermalPage::applyModular(const ModularRun& run) {
+  const bool moduleRun = std::exchange(moduleRunActive_, false);
+  if (moduleRun) models_->setModulesRunning(false);
   if (!run.error.isEmpty() || !run.result) {
+    if (moduleRun) return;  // the modules shown stay
+    modularResult_.reset();
+    modularTestLog_.reset();
     models_->setModular(nullptr, nullptr, QString());
     if (!run.error.isEmpty())
       info_->setText(info_->text() + QLatin1Char('\n') + tr("Modular case: %1").arg(run.error));
     return;
   }
-  const ModularComparison& m = *run.result;
-  QStringList inputs;
-  for (const std::string& s : m.inputs) inputs << QString::fromStdString(s);
-  const double reduction = 100.0 * m.models[0].reductionPeak;
-  const QString text = tr("Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): "
-                          "GNNMCI(1,N) reduces the "
-                          "combined test's error by %6 %.")
-                           .arg(QString::fromLatin1(kModularZId), QString::fromLatin1(kModularCId),
-                                QString::fromLatin1(kModularCombinedId), QString::fromStdString(m.target),
-                                inputs.join(QStringLiteral(", ")))
-                           .arg(QLocale().toString(reduction, 'f', 1));
-  models_->setModular(run.result, run.testLog.get(), text);
+  modularResult_ = run.result;
+  modularTestLog_ = run.testLog;
+  models_->setModular(run.result, run.testLog.get(), modularDescription(*run.result));
+  const ModularModules& mm = run.result->modules;
+  if (!run.moduleError.isEmpty()) {
+    models_->setModulesMessage(tr("The modules' tests of the thermal study cannot be used (%1); the modules "
+                                  "are identified on their own tests.")
+                                   .arg(run.moduleError));
+  } else if (moduleRun && mm.evaluation) {
+    const int ti = run.testLog ? run.testLog->indexOf(run.result->target) : -1;
+    const QString unit =
+        ti >= 0 ? QLatin1Char(' ') + displayUnit(run.testLog->channels[static_cast<std::size_t>(ti)].unit)
+                : QString();
+    models_->setModulesMessage(
+        tr("Modules identified on %1; the others kept their models. The modules' sum: RMSE %2%3 on %4.")
+            .arg(run.storeDataset.isEmpty() ? tr("the tests of the thermal study") : run.storeDataset,
+                 QLocale().toString(mm.evaluation->test.rmse, 'f', 2), unit,
+                 QString::fromLatin1(kModularCombinedId)));
+  } else {
+    models_->setModulesMessage(QString());
+  }
+  if (moduleRun && !run.storeModule.isEmpty()) {
+    // The module's test as a project setting (one undoable step); the modules shown already follow it.
+    writingStudy_ = true;
+    document_->endEditSequence();
+    document_->setStudyValue(QString::fromLatin1(study::kThermal),
+                             QStringLiteral("/modules/%1/dataset").arg(run.storeModule),
+                             run.storeDataset.toStdString(),
+                             tr("Identify module %1 again on %2").arg(run.storeModule, run.storeDataset));
+    document_->endEditSequence();
+    writingStudy_ = false;
+  }
+  syncModulesFromStudy();  // an undo / redo while the run was going on
+}
+
+bool ThermalPage::startModulesRun(const nlohmann::json& thermalStudy, const QString& storeModule,
+                                  const QString& storeDataset, bool now) {
+  if (!modularResult_ || !modularTestLog_ || !modularResult_->modules.evaluation || modular_->isRunning())
+    return false;
+  std::map<std::string, std::pair<std::string, CsvReadOptions>> sources;
+  for (const DatasetRef& d : document_->project().datasets)
+    if (d.kind == dataset_kind::kThermalLog) sources[d.id] = {document_->datasetPath(d).toStdString(), d.csv};
+  const std::shared_ptr<const ModularComparison> base = modularResult_;
+  const std::shared_ptr<ThermalLog> testLog = modularTestLog_;
+  moduleRunActive_ = true;
+  models_->setModulesRunning(true);
+  models_->setModulesMessage(tr("Identifying…"));
+  modular_->setSynchronous(now);
+  modular_->start([base, testLog, sources, thermalStudy, storeModule, storeDataset](RunObserver& observer) {
+    ModularRun run;
+    run.moduleRun = true;
+    run.storeModule = storeModule;
+    run.storeDataset = storeDataset;
+    run.testLog = testLog;
+    // Only the modules: the pooled models and every other module are copied as they are.
+    auto result = std::make_shared<ModularComparison>(*base);
+    std::map<std::string, ThermalLog> logs;
+    const auto logOf = [&](const std::string& id) -> const ThermalLog* {
+      const auto source = sources.find(id);
+      if (source == sources.end()) return nullptr;
+      observer.report(0.1, tr("Reading %1…").arg(QString::fromStdString(id)));
+      auto it = logs.find(id);
+      if (it == logs.end())
+        it = logs.emplace(id, readThermalLog(source->second.first, 3, source->second.second)).first;
+      observer.report(0.3, tr("Identifying on %1…").arg(QString::fromStdString(id)));
+      return &it->second;
+    };
+    if (identifyModulesOnStudyTests(result->modules, thermalStudy, logOf, *testLog, result->target, 1,
+                                    &observer) &&
+        !observer.isCancelled())
+      run.result = std::move(result);
+    observer.report(1.0);
+    return run;
+  });
+  return true;
+}
+
+void ThermalPage::syncModulesFromStudy() {
+  if (!modularResult_ || !modularResult_->modules.evaluation || modular_->isRunning()) return;
+  const nlohmann::json study = document_->studyValue(QString::fromLatin1(study::kThermal), QString());
+  const ModularModules& mm = modularResult_->modules;
+  if (studyModuleTests(study, mm.names) == mm.tests) return;
+  startModulesRun(study, QString(), QString(), modular_->isSynchronous());
+}
+
+bool ThermalPage::identifyModuleAgain(int module, const QString& datasetId, bool now) {
+  if (!modularResult_ || module < 0 ||
+      static_cast<std::size_t>(module) >= modularResult_->modules.names.size())
+    return false;
+  const DatasetRef* d = document_->project().dataset(datasetId.toStdString());
+  if (d == nullptr || d->kind != dataset_kind::kThermalLog) return false;
+  const std::string name = modularResult_->modules.names[static_cast<std::size_t>(module)];
+  nlohmann::json study = document_->studyValue(QString::fromLatin1(study::kThermal), QString());
+  if (!study.is_object()) study = nlohmann::json::object();
+  study["modules"][name]["dataset"] = datasetId.toStdString();
+  return startModulesRun(study, QString::fromStdString(name), datasetId, now);
+}
+
+bool ThermalPage::saveModuleModels(const QString& folder) {
+  if (!modularResult_ || !modularResult_->modules.evaluation) return false;
+  try {
+    thermal::saveThermalModules(modularResult_->modules.fitted, folder.toStdString());
+    QStringList files;
+    for (const thermal::ThermalModule& m : modularResult_->modules.fitted)
+      files << QString::fromStdString(m.name) + QStringLiteral(".json");
+    models_->setModulesMessage(
+        tr("Saved %1 to %2.").arg(files.join(QStringLiteral(", ")), QDir::toNativeSeparators(folder)));
+    return true;
+  } catch (const std::exception& e) {
+    models_->setModulesMessage(tr("Cannot save the module models: %1").arg(QString::fromStdString(e.what())));
+    return false;
+  }
+}
+
+void ThermalPage::askIdentifyModuleAgain(int module) {
+  if (!modularResult_ || module < 0 ||
+      static_cast<std::size_t>(module) >= modularResult_->modules.names.size())
+    return;
+  const ModularModules& mm = modularResult_->modules;
+  const QString name = QString::fromStdString(mm.names[static_cast<std::size_t>(module)]);
+  QStringList ids;
+  for (const DatasetRef& d : document_->project().datasets)
+    if (d.kind == dataset_kind::kThermalLog && d.id != kModularCombinedId)
+      ids << QString::fromStdString(d.id);
+  if (ids.isEmpty()) return;
+  const QString current = static_cast<std::size_t>(module) < mm.tests.size()
+                              ? QString::fromStdString(mm.tests[static_cast<std::size_t>(module)])
+                              : name;
+  bool ok = false;
+  const QString id = QInputDialog::getItem(
+      this, tr("Identify %1 again").arg(name),
+      tr("The test to identify module %1 on (a new test of its drive; now %2). The other modules keep "
+         "their models.")
+          .arg(name, current),
+      ids, std::max<qsizetype>(0, ids.indexOf(current)), false, &ok);
+  if (ok && !id.isEmpty()) identifyModuleAgain(module, id);
+}
+
+void ThermalPage::askSaveModuleModels() {
+  const QString folder = QFileDialog::getExistingDirectory(this, tr("Save module models to"),
+                                                           QFileInfo(document_->fileName()).absolutePath());
+  if (!folder.isEmpty()) saveModuleModels(folder);
 }
 
 void ThermalPage::showView(const QString& view) {

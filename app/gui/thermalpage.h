@@ -6,7 +6,11 @@
 //  * Models: GNNMCI(1,N), GMC(1,N) and the MLP fitted on the first part and compared on the rest
 //    (Table 4), trained in a worker thread with live PSO progress; when the project has the three
 //    modular tests (datasets kModularZId, kModularCId, kModularCombinedId of thermal_comparison.h), the
-//    combined test predicted from models fitted on the Z and C tests (Section 4.3).
+//    combined test predicted from models fitted on the Z and C tests (Section 4.3), and the same case
+//    module by module: each module identified on its own test; "Identify again…" re-fits one module on
+//    another test of its drive (a thermal log of the project) while the others keep their models,
+//    stored as studies.thermal.modules.<module>.dataset (undoable); "Save module models…" writes the
+//    modules' models as `thermal modular --save-modules` does.
 // A log that cannot be read shows its one-line error instead. The model settings start from the
 // project's thermal study (studies.thermal: dataset, target, inputs) and are kept per log for the
 // session; they do not edit the project, so they are not on the undo stack. Effects applied on the
@@ -57,6 +61,21 @@ class ThermalPage : public QWidget {
   /// and the modular case when the project has it.
   Q_INVOKABLE void showView(const QString& view);
 
+  /// The modular case shown (nullptr when there is none yet).
+  const ModularComparison* modularComparison() const { return modularResult_.get(); }
+  /// The run of the modular case and of its module runs (progress, cancel).
+  BackgroundRunBase* modularRun() const { return modular_; }
+  /// Identifies module `module` (a row of the Modular tab's modules table) again on the project's
+  /// thermal log `datasetId` (a new test of its drive) on the modular run (synchronously when `now`):
+  /// the other modules keep their fitted models as they are, the combined test is predicted again and,
+  /// when that worked, studies.thermal.modules.<module>.dataset = datasetId is written (one undoable
+  /// step; undo identifies the module on its previous test again). False when it cannot start (no
+  /// modular case, a run going on, an unknown module or dataset).
+  bool identifyModuleAgain(int module, const QString& datasetId, bool now = false);
+  /// Writes each module's fitted model to `folder` as NAME.json (the files of `metrofit-cli thermal
+  /// modular --save-modules`, thermal::saveThermalModules); false with the message shown on an error.
+  bool saveModuleModels(const QString& folder);
+
  private:
   void refresh();
   void showLog(int comboIndex);
@@ -97,11 +116,29 @@ class ThermalPage : public QWidget {
     std::shared_ptr<ModularComparison> result;
     QString error;
     std::shared_ptr<ThermalLog> testLog;
+    QString moduleError;     ///< the study's module tests could not be used (the modules as first fitted)
+    bool moduleRun = false;  ///< a run of the modules only (identify again, undo / redo of one)
+    QString storeModule, storeDataset;  ///< written to studies.thermal.modules when the run worked
   };
   BackgroundRun<ModularRun>* modular_;
   QString modularKey_;  ///< project file the modular result belongs to
   bool modularDone_ = false;
+  bool moduleRunActive_ = false;  ///< the modular run is a run of the modules only
+  std::shared_ptr<const ModularComparison> modularResult_;
+  std::shared_ptr<ThermalLog> modularTestLog_;
   void applyModular(const ModularRun& run);
+  /// The modules identified again on the tests `thermalStudy` names for them (a module run); on success
+  /// `storeModule`'s test `storeDataset` is written to the study.
+  bool startModulesRun(const nlohmann::json& thermalStudy, const QString& storeModule,
+                       const QString& storeDataset, bool now);
+  /// After undo / redo of a module's test: the modules shown follow studies.thermal.modules.
+  void syncModulesFromStudy();
+  /// "Identify again…" of a module: asks for the test (a thermal log of the project).
+  void askIdentifyModuleAgain(int module);
+  /// "Save module models…": asks for the folder.
+  void askSaveModuleModels();
+  /// The modular tab's description of the comparison.
+  QString modularDescription(const ModularComparison& m) const;
 };
 
 }  // namespace metrofit

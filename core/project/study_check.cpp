@@ -42,7 +42,10 @@ const Keys kThermalKeys = {{"dataset", dataset_kind::kThermalLog},
                            {"target", ""},
                            {"inputs", ""},
                            {"train_fraction", ""},
-                           {"seed", ""}};
+                           {"seed", ""},
+                           {"modules", ""}};
+/// studies.thermal.modules.<module>: the test the module is identified on (core/study/thermal_comparison.h).
+const Keys kThermalModuleKeys = {{"dataset", dataset_kind::kThermalLog}};
 const std::map<std::string, Keys> kDiagnosisKeys = {
     {"thermal",
      {{"dataset", dataset_kind::kThermalLog},
@@ -205,6 +208,14 @@ std::vector<StudyIssue> checkStudies(const Project& project) {
       c.names(s, "inputs", prefix);
       c.number(s, "train_fraction", prefix, 0.0, 1.0, "between 0 and 1 (the fitted share of the rows)");
       c.seed(s, prefix);
+      if (const auto modules = s.find("modules"); modules != s.end()) {
+        if (!modules->is_object()) {
+          c.add(prefix + ".modules", "must be an object: a module's name -> {\"dataset\": ID}");
+        } else {
+          for (auto m = modules->begin(); m != modules->end(); ++m)
+            c.block(*m, prefix + ".modules." + m.key(), kThermalModuleKeys);
+        }
+      }
     } else if (name == study::kDiagnosis) {
       if (!s.is_object()) {
         c.add(prefix, "must be an object of settings");

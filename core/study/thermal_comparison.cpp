@@ -5,7 +5,9 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <stdexcept>
 
 #include "core/common/error.h"
 #include "core/diagnose/thermal_applied.h"
@@ -75,6 +77,16 @@ thermal::ThermalFitOptions fitOptions(thermal::ThermalModelKind kind, std::uint6
   return o;
 }
 
+/// One line on why a model could not be fitted: the core's message without its location prefix (the
+/// log and the settings are those of the whole comparison).
+std::string failureReason(const std::exception& e) {
+  const auto* error = dynamic_cast<const Error*>(&e);
+  std::string text = error != nullptr && !error->detail().empty() ? error->detail() : std::string(e.what());
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
 }  // namespace
 
 ThermalModelSettings defaultThermalModelSettings(const ThermalLog& log, const nlohmann::json& study,
@@ -133,26 +145,74 @@ ThermalComparison compareThermalModels(const ThermalLog& log, const ThermalModel
     c.appliedSeries = thermal::selectThermalSeries(with.log, settings.target, with.inputs);
     c.appliedText = applied.text();
   }
+  c.fitRows = thermal::fitRowCount(c.series.rows(), settings.trainFraction);
+  c.heldoutRows = c.series.rows() - std::min(c.fitRows, c.series.rows());
+  // A model that cannot be fitted (a numerical failure of that model: a rank-deficient least-squares
+  // system, too few rows for its parameters) is recorded and the others are fitted. Bad settings
+  // (OptionsError) throw at once; bad data that every model refuses (a constant target, too few
+  // held-out rows) throws the first model's error after all have refused it.
+  std::exception_ptr firstError;
+  bool anyFitted = false;
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
     ModelObserver forward(observer, static_cast<int>(i));
     const auto start = std::chrono::steady_clock::now();
     const thermal::ThermalFitOptions options = fitOptions(kThermalModelOrder[i], settings.seed);
-    if (c.appliedText.empty()) {
-      c.models[i] = thermal::fitAndEvaluate(c.series, settings.trainFraction, options, &forward);
-      c.declaredHeldoutRmse[i] = c.models[i].heldout.rmse;
-      c.cancelled = c.models[i].training.run.termination == Termination::Cancelled;
-    } else {
-      diagnose::ThermalVariantFit v = diagnose::fitDeclaredAndWithEffects(
-          c.series, c.appliedSeries, settings.trainFraction, options, &forward);
-      c.declaredHeldoutRmse[i] = v.declared.heldout.rmse;
-      if (!v.cancelled || v.usesEffects) c.appliedHeldoutRmse[i] = v.withEffects.heldout.rmse;
-      c.usesApplied[i] = v.usesEffects;
-      c.cancelled = v.cancelled;
-      c.models[i] = v.usesEffects ? std::move(v.withEffects) : std::move(v.declared);
+    try {
+      if (c.appliedText.empty()) {
+        c.models[i] = thermal::fitAndEvaluate(c.series, settings.trainFraction, options, &forward);
+        c.declaredHeldoutRmse[i] = c.models[i].heldout.rmse;
+        c.cancelled = c.models[i].training.run.termination == Termination::Cancelled;
+      } else {
+        try {
+          diagnose::ThermalVariantFit v = diagnose::fitDeclaredAndWithEffects(
+              c.series, c.appliedSeries, settings.trainFraction, options, &forward);
+          c.declaredHeldoutRmse[i] = v.declared.heldout.rmse;
+          if (!v.cancelled || v.usesEffects) c.appliedHeldoutRmse[i] = v.withEffects.heldout.rmse;
+          c.usesApplied[i] = v.usesEffects;
+          c.cancelled = v.cancelled;
+          c.models[i] = v.usesEffects ? std::move(v.withEffects) : std::move(v.declared);
+        } catch (const OptionsError&) {
+          throw;
+        } catch (const std::exception&) {
+          // One variant cannot be fitted: the model keeps the other one (each fitted alone, the
+          // declared one first); when neither can, the declared variant's error is the model's.
+          std::exception_ptr declaredError;
+          try {
+            c.models[i] = thermal::fitAndEvaluate(c.series, settings.trainFraction, options, &forward);
+            c.declaredHeldoutRmse[i] = c.models[i].heldout.rmse;
+          } catch (const OptionsError&) {
+            throw;
+          } catch (const std::exception&) {
+            declaredError = std::current_exception();
+          }
+          if (declaredError) {
+            try {
+              c.models[i] =
+                  thermal::fitAndEvaluate(c.appliedSeries, settings.trainFraction, options, &forward);
+            } catch (const OptionsError&) {
+              throw;
+            } catch (const std::exception&) {
+              std::rethrow_exception(declaredError);
+            }
+            c.appliedHeldoutRmse[i] = c.models[i].heldout.rmse;
+            c.usesApplied[i] = true;
+          }
+          c.cancelled = c.models[i].training.run.termination == Termination::Cancelled;
+        }
+      }
+      anyFitted = anyFitted || !c.cancelled;
+    } catch (const OptionsError&) {
+      throw;
+    } catch (const std::exception& e) {
+      if (!firstError) firstError = std::current_exception();
+      c.models[i] = thermal::ThermalEvaluation{};
+      c.failed[i] = failureReason(e);
+      if (c.failed[i].empty()) c.failed[i] = "the fit failed";
     }
     c.seconds[i] = secondsSince(start);
     if (c.cancelled) break;
   }
+  if (!anyFitted && !c.cancelled && firstError) std::rethrow_exception(firstError);
   return c;
 }
 
@@ -195,15 +255,30 @@ ModularComparison compareModularModels(const std::vector<const ThermalLog*>& tra
   for (const ThermalLog* log : trainingTests)
     train.push_back(thermal::selectThermalSeries(*log, target, inputs));
   m.test = thermal::selectThermalSeries(test, target, inputs);
+  // As compareThermalModels: a model that cannot be fitted on these tests is recorded, the others are
+  // fitted; bad settings throw; an error that every model gives is thrown.
+  std::exception_ptr firstError;
+  bool anyFitted = false;
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
     ModelObserver forward(observer, static_cast<int>(i));
-    m.models[i] = thermal::fitModular(train, m.test, fitOptions(kThermalModelOrder[i], seed), &forward);
+    try {
+      m.models[i] = thermal::fitModular(train, m.test, fitOptions(kThermalModelOrder[i], seed), &forward);
+      anyFitted = true;
+    } catch (const OptionsError&) {
+      throw;
+    } catch (const std::exception& e) {
+      if (!firstError) firstError = std::current_exception();
+      m.models[i] = thermal::ModularEvaluation{};
+      m.failed[i] = failureReason(e);
+      if (m.failed[i].empty()) m.failed[i] = "the fit failed";
+    }
     if (m.models[i].training.run.termination == Termination::Cancelled) {
       m.cancelled = true;
       break;
     }
   }
   if (m.cancelled) return m;
+  if (!anyFitted && firstError) std::rethrow_exception(firstError);
   // The same case module by module.
   ModularModules& mm = m.modules;
   mm.inputs = moduleInputs(trainingTests, test, target);
@@ -226,8 +301,77 @@ ModularComparison compareModularModels(const std::vector<const ThermalLog*>& tra
       mm.why = mm.names.back() + ": " + e.what();
     }
   }
-  if (mm.why.empty()) mm.evaluation = thermal::evaluateModules(modules, tests);
+  mm.tests = mm.names;
+  if (mm.why.empty()) {
+    mm.evaluation = thermal::evaluateModules(modules, tests);
+    mm.fitted = std::move(modules);
+  }
   return m;
+}
+
+bool identifyModuleAgain(ModularModules& modules, std::size_t index, const ThermalLog& moduleTest,
+                         const std::string& testName, const ThermalLog& combined, const std::string& target,
+                         std::uint64_t seed, Observer* observer) {
+  if (!modules.evaluation || modules.fitted.size() != modules.names.size() || index >= modules.names.size())
+    throw std::invalid_argument("identifyModuleAgain: the modules are not all identified");
+  const std::vector<std::string>& inputs = modules.inputs[index];
+  std::vector<std::string> columns{target};
+  columns.insert(columns.end(), inputs.begin(), inputs.end());
+  for (const std::string& column : columns) {
+    if (moduleTest.indexOf(column) < 0)
+      throw ValidationError(ErrorContext{moduleTest.source, 0, 0, column},
+                            "the test of module '" + modules.names[index] + "' (" + testName +
+                                ") has no column '" + column + "'");
+  }
+  thermal::ThermalModule fresh = thermal::fitThermalModule(
+      modules.names[index], thermal::selectThermalSeries(moduleTest, target, inputs),
+      fitOptions(thermal::ThermalModelKind::DistributedLag, seed), observer);
+  if (fresh.training.run.termination == Termination::Cancelled) return false;
+  std::vector<thermal::ThermalModule> next = modules.fitted;
+  next[index] = std::move(fresh);
+  std::vector<thermal::ThermalSeries> tests;
+  for (const std::vector<std::string>& in : modules.inputs)
+    tests.push_back(thermal::selectThermalSeries(combined, target, in));
+  thermal::ModulesEvaluation evaluation = thermal::evaluateModules(next, tests);
+  modules.fitted = std::move(next);
+  modules.evaluation = std::move(evaluation);
+  if (modules.tests.size() != modules.names.size()) modules.tests = modules.names;
+  modules.tests[index] = testName;
+  return true;
+}
+
+std::vector<std::string> studyModuleTests(const nlohmann::json& study,
+                                          const std::vector<std::string>& names) {
+  std::vector<std::string> out = names;
+  if (!study.is_object()) return out;
+  const auto modules = study.find("modules");
+  if (modules == study.end() || !modules->is_object()) return out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto entry = modules->find(names[i]);
+    if (entry == modules->end() || !entry->is_object()) continue;
+    const auto dataset = entry->find("dataset");
+    if (dataset != entry->end() && dataset->is_string() && !dataset->get<std::string>().empty())
+      out[i] = dataset->get<std::string>();
+  }
+  return out;
+}
+
+bool identifyModulesOnStudyTests(ModularModules& modules, const nlohmann::json& thermalStudy,
+                                 const std::function<const ThermalLog*(const std::string&)>& logOf,
+                                 const ThermalLog& combined, const std::string& target, std::uint64_t seed,
+                                 Observer* observer) {
+  if (!modules.evaluation) return true;
+  const std::vector<std::string> wanted = studyModuleTests(thermalStudy, modules.names);
+  for (std::size_t i = 0; i < modules.names.size(); ++i) {
+    if (i < modules.tests.size() && wanted[i] == modules.tests[i]) continue;
+    const ThermalLog* log = logOf ? logOf(wanted[i]) : nullptr;
+    if (log == nullptr)
+      throw ValidationError(
+          ErrorContext{{}, 0, 0, "studies.thermal.modules." + modules.names[i] + ".dataset"},
+          "names the dataset '" + wanted[i] + "', which is not a thermal log of the project");
+    if (!identifyModuleAgain(modules, i, *log, wanted[i], combined, target, seed, observer)) return false;
+  }
+  return true;
 }
 
 std::vector<PhaseRun> phaseRuns(const std::vector<int>& phase) {

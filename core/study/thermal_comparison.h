@@ -9,6 +9,13 @@
 // the grey models, 0.7 for the MLP); the comparison needs the same held-out rows for all. Each model
 // is fitted exactly as `metrofit-cli thermal fit --model M --train-fraction F --seed S` does
 // (thermal::fitAndEvaluate with the default options and the seed), so the numbers agree bit for bit.
+// A model that cannot be fitted on a log (GMC(1,N) on a noise-free log whose target is exactly linear
+// in an input) is marked failed with its reason; the others are fitted and compared.
+//
+// Project keys of the thermal study read here (`studies.thermal`): "dataset", "target", "inputs",
+// "train_fraction", "seed" (defaultThermalModelSettings) and "modules": {MODULE: {"dataset": ID}}, the
+// test a module of the modular case is identified on when it is not the module's own first test (the
+// Modular tab's "Identify again…", one undoable edit; studyModuleTests, identifyModulesOnStudyTests).
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -72,13 +79,27 @@ struct ThermalComparison {
   std::array<double, kThermalModelCount> declaredHeldoutRmse{};  ///< held-out RMSE with the declared inputs
   std::array<double, kThermalModelCount> appliedHeldoutRmse{};   ///< held-out RMSE with the applied effects
   std::array<double, kThermalModelCount> seconds{};              ///< wall time of each model's fit(s)
-  bool cancelled = false;                                        ///< an observer stopped a training
+  /// Per model, why it could not be fitted (empty: fitted, or not run after a cancel): a failure of
+  /// that model alone (GMC(1,N)'s least squares is rank deficient on a noise-free log whose target is
+  /// exactly linear in an input; too few rows for its parameters) as a one-line reason. The other
+  /// models are fitted and shown; a failed model has no prediction, no figures (its `models` entry is
+  /// empty) and is never the best model.
+  std::array<std::string, kThermalModelCount> failed;
+  std::size_t fitRows = 0, heldoutRows = 0;  ///< the rows every model is fitted on / tested on
+  bool cancelled = false;                    ///< an observer stopped a training
+  /// Model i was fitted (not failed, not skipped after a cancel): its prediction covers every row.
+  bool fitted(std::size_t i) const {
+    return failed[i].empty() && !series.timeMin.empty() && models[i].predicted.size() == series.rows();
+  }
 };
 
 /// Fits and evaluates the three models (see above); with applied effects in the settings each model
-/// is fitted with and without them and keeps the better variant on the held-out rows.
+/// is fitted with and without them and keeps the better variant on the held-out rows (when one variant
+/// cannot be fitted, the other).
 /// Throws the core's InputError / OptionsError for bad columns or settings (a bad applied entry: a
-/// ValidationError naming studies.diagnosis.thermal.applied[i]...); `cancelled` is set (and the remaining
+/// ValidationError naming studies.diagnosis.thermal.applied[i]...; a bad train fraction, too few
+/// held-out rows, a constant target or input: every model refuses the log, and the first model's error
+/// is thrown). A model that fails alone is recorded in `failed`. `cancelled` is set (and the remaining
 /// models skipped) when the observer stops.
 ThermalComparison compareThermalModels(const ThermalLog& log, const ThermalModelSettings& settings,
                                        const ThermalComparisonObserver& observer = {});
@@ -90,6 +111,12 @@ ThermalComparison compareThermalModels(const ThermalLog& log, const ThermalModel
 struct ModularModules {
   std::vector<std::string> names;                ///< one per training test
   std::vector<std::vector<std::string>> inputs;  ///< per module
+  /// Per module, the test it was identified on: its training test's name (the module's name) or, after
+  /// identifyModuleAgain, the name given there.
+  std::vector<std::string> tests;
+  /// The modules as fitted (one per name when `evaluation` is set): saveThermalModules writes them,
+  /// identifyModuleAgain keeps all but one of them as they are.
+  std::vector<thermal::ThermalModule> fitted;
   std::optional<thermal::ModulesEvaluation> evaluation;
   std::string why;  ///< why there is no evaluation (a module without inputs, a failed fit)
 };
@@ -102,17 +129,57 @@ struct ModularComparison {
   std::vector<std::string> inputs;
   thermal::ThermalSeries test;                                        ///< the combined test
   std::array<thermal::ModularEvaluation, kThermalModelCount> models;  ///< in kThermalModelOrder
-  ModularModules modules;                                             ///< the same case module by module
+  /// Per model, why it could not be fitted on the training tests (empty: fitted), as
+  /// ThermalComparison::failed: a failed model has no prediction and no figures.
+  std::array<std::string, kThermalModelCount> failed;
+  ModularModules modules;  ///< the same case module by module
   bool cancelled = false;
+  /// Model i was fitted and predicts every row of the test.
+  bool fitted(std::size_t i) const {
+    return failed[i].empty() && !test.timeMin.empty() && models[i].predicted.size() == test.rows() &&
+           models[i].training.run.termination != Termination::Cancelled;
+  }
 };
 
 /// Section 4.3: each model fitted on the training tests together, predicting `test`.
-/// `moduleNames` name the training tests' modules (default: their sources).
+/// `moduleNames` name the training tests' modules (default: their sources). Bad columns throw the
+/// core's InputError; a model that cannot be fitted on these tests (a rank-deficient GMC(1,N)) is
+/// recorded in `failed` and the others are fitted.
 ModularComparison compareModularModels(const std::vector<const ThermalLog*>& trainingTests,
                                        const ThermalLog& test, const std::string& target,
                                        const std::vector<std::string>& inputs, std::uint64_t seed,
                                        const ThermalComparisonObserver& observer = {},
                                        const std::vector<std::string>& moduleNames = {});
+
+/// Identifies module `index` of `modules` again on another test of its drive (`moduleTest`, named
+/// `testName` in `tests`, e.g. a new C-heating test after new bearings), as compareModularModels identifies
+/// it: its own inputs, the distributed-lag model, `seed`. Every other module keeps its fitted model as it
+/// is (the same coefficients, not fitted again) and the combined test (`combined`, the log the modules
+/// were evaluated on) is predicted again as their sum. Needs every module fitted (`modules.evaluation`);
+/// InputError naming the log and column when `moduleTest` lacks the target or one of the module's inputs
+/// or the module cannot be fitted on it: `modules` is then unchanged. Returns false (and changes nothing)
+/// when the observer stops the fit.
+bool identifyModuleAgain(ModularModules& modules, std::size_t index, const ThermalLog& moduleTest,
+                         const std::string& testName, const ThermalLog& combined, const std::string& target,
+                         std::uint64_t seed, Observer* observer = nullptr);
+
+/// The tests named for the modules in the project's thermal study: `studies.thermal.modules`, an object
+/// {MODULE: {"dataset": ID}} (MODULE: the module's name, which in a project is the dataset id of its
+/// first test, kModularZId / kModularCId; ID: the thermal_log dataset the module is identified on instead).
+/// Per entry of `names`, the dataset id, or the name itself when the study names none.
+std::vector<std::string> studyModuleTests(const nlohmann::json& thermalStudy,
+                                          const std::vector<std::string>& names);
+
+/// Every module of `modules` whose test in the thermal study (studyModuleTests) is not the one it was
+/// identified on, identified again on that test (identifyModuleAgain; `logOf(id)` gives the thermal log
+/// of the project's dataset `id`, nullptr when the project has none): the modular case as the project
+/// declares it. Nothing happens without an evaluation (a module not identified). ValidationError naming
+/// studies.thermal.modules.MODULE.dataset when the project has no such thermal log; identifyModuleAgain's
+/// errors. Returns false when the observer stopped a fit.
+bool identifyModulesOnStudyTests(ModularModules& modules, const nlohmann::json& thermalStudy,
+                                 const std::function<const ThermalLog*(const std::string&)>& logOf,
+                                 const ThermalLog& combined, const std::string& target, std::uint64_t seed,
+                                 Observer* observer = nullptr);
 
 /// Dataset ids of the modular case in a project (the demo's): the Z-heating, the C-heating and the
 /// combined (helical) test.

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 
 #include "core/common/error.h"
 #include "core/io/csv.h"
+#include "core/io/file_io.h"
 #include "core/io/json_util.h"
 
 namespace metrofit::thermal {
@@ -498,6 +500,12 @@ Eigen::VectorXd eigenVec(const std::vector<double>& v) {
 }
 
 }  // namespace
+
+void saveThermalModules(const std::vector<ThermalModule>& modules, const std::string& folder) {
+  for (const ThermalModule& m : modules)
+    writeFileAtomic((std::filesystem::path(folder) / (m.name + ".json")).string(),
+                    dumpJson(thermalModelToJson(m.training.model)));
+}
 
 nlohmann::json thermalModelToJson(const ThermalModel& m) {
   nlohmann::json j;

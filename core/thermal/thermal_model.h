@@ -199,6 +199,11 @@ struct ModulesEvaluation : ModularEvaluation {
 ModulesEvaluation evaluateModules(const std::vector<ThermalModule>& modules,
                                   const std::vector<ThermalSeries>& tests);
 
+/// Writes each module's model to FOLDER/NAME.json (thermalModelToJson, each file written atomically):
+/// the files of `metrofit-cli thermal modular --save-modules FOLDER`, which `--module-model NAME:FILE`
+/// reads back. FileError when a file cannot be written (files written before it stay).
+void saveThermalModules(const std::vector<ThermalModule>& modules, const std::string& folder);
+
 /// JSON form of a fitted model ({"format": "metrofit-thermal-model", "version": 1, ...}).
 nlohmann::json thermalModelToJson(const ThermalModel& model);
 /// Reads a model written by thermalModelToJson; ValidationError naming `source` and the field.

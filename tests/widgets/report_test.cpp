@@ -15,9 +15,11 @@
 #include <QTemporaryDir>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <random>
 #include <sstream>
 
 #include "core/common/error.h"
@@ -322,6 +324,124 @@ TEST(ReportReal, CaiviacSpindleLog) {
                  QStringLiteral("2"), QStringLiteral("-l"), QStringLiteral("2"), pdf, prefix})
                 .exitCode,
             0);
+}
+
+// One model's failure marks that model only: on a noise-free log whose target is exactly linear in its
+// one input (3.25 um/K, written with every decimal), GMC(1,N)'s least squares is rank deficient. The
+// thermal section still has the models' table: GMC(1,N)'s row says "not fitted" with the reason, the
+// linear model's held-out row its RMSE of 0 (an exact fit), and the conclusion names a fitted model.
+TEST_F(ReportTest, AModelThatCannotBeFittedIsMarkedAndTheOthersAreReported) {
+  std::ostringstream csv;
+  csv << "time_s,T1,disp_z_um\n";
+  for (int r = 0; r < 120; ++r) {
+    const double t = 30.0 * r;
+    const double temperature = std::round((21.0 + 9.0 * (1.0 - std::exp(-t / 1500.0))) * 1e4) / 1e4;
+    char line[96];
+    std::snprintf(line, sizeof line, "%d,%.4f,%.6f\n", static_cast<int>(t), temperature,
+                  3.25 * (temperature - 21.0) - 0.8);
+    csv << line;
+  }
+  writeText(dir_.filePath(QStringLiteral("data/linear.csv")), csv.str());
+  Project p;
+  p.name = "Linear log";
+  p.datasets.push_back({"spindel", dataset_kind::kThermalLog, "data/linear.csv", "", "", {}});
+  p.studies["thermal"] = {{"dataset", "spindel"}, {"target", "disp_z_um"}, {"inputs", {"T1"}}};
+  const QString projectPath = dir_.filePath(QStringLiteral("linear.metrofit"));
+  saveProject(p, projectPath.toStdString());
+  ReportOptions o;
+  o.projectPath = projectPath;
+  const QString pdf = dir_.filePath(QStringLiteral("linear.pdf"));
+  writeReport(loadProject(projectPath.toStdString()), pdf, o);
+  QString text = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")}).out;
+  text.replace(QRegularExpression(QStringLiteral("\\s+")), QStringLiteral(" "));
+  EXPECT_FALSE(text.contains(QStringLiteral("could not be fitted:"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("Performance indices"))) << text.toStdString();
+  EXPECT_TRUE(
+      text.contains(QStringLiteral("not fitted: the GMC(1,N) least-squares system is rank deficient")))
+      << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("GMC(1,N) could not be fitted (the GMC(1,N) least-squares")))
+      << text.toStdString();
+  // The linear model's rows (pdftotext -layout keeps a table row on one line): fitted and held out on
+  // 60 rows each, R = E = 1 and an RMSE and band of 0.00 um (an exact fit; the target reaches 26 um).
+  const QString layout =
+      run(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")}).out;
+  const QRegularExpression linearRows(
+      QStringLiteral("\\n\\s*linear\\s+fit, 60\\s+1\\.0000\\s+0\\.00\\s+1\\.0000\\s+±0\\.00\\s*\\n"
+                     "\\s*held out, 60\\s+1\\.0000\\s+0\\.00\\s+1\\.0000\\s+±0\\.00\\s+usable"));
+  EXPECT_TRUE(linearRows.match(layout).hasMatch()) << layout.toStdString();
+  EXPECT_FALSE(text.contains(
+      QRegularExpression(QStringLiteral("\\bnan\\b"), QRegularExpression::CaseInsensitiveOption)));
+  const QString prefix = QDir(outputDir()).filePath(QStringLiteral("report_one_model_not_fitted"));
+  run(QStringLiteral("pdftoppm"),
+      {QStringLiteral("-r"), QStringLiteral("80"), QStringLiteral("-png"), QStringLiteral("-f"),
+       QStringLiteral("2"), QStringLiteral("-l"), QStringLiteral("3"), pdf, prefix});
+}
+
+// The modular case as the project declares it: studies.thermal.modules names a new C test for the C
+// module (the Modular tab's "Identify again…"). A two-drive plant written out here: Z and C drive
+// nodes are first-order lags (tau 20 and 15 min), the ram grows -5 um/K dTz + kc dTc plus 0.1 um
+// noise; the Z and C tests have kc = -3, the combined test and the new C test kc = -4. With the key the
+// report's modules predict the combined test within 0.15 um (the noise and the estimation error) and
+// say where C was identified; without it, C of the old machine leaves more than 1 um.
+TEST_F(ReportTest, TheModularSectionUsesTheModuleTestsOfTheThermalStudy) {
+  const auto plant = [](double z, double c, double kc, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> noise(0.0, 0.1);
+    std::string csv = "time_min,Tz,Tc,disp_z_um\n";
+    double tz = 20.0, tc = 20.0;
+    for (int k = 0; k <= 240; ++k) {
+      char line[128];
+      std::snprintf(line, sizeof line, "%d,%.6f,%.6f,%.6f\n", k, tz, tc,
+                    -5.0 * (tz - 20.0) + kc * (tc - 20.0) + noise(rng));
+      csv += line;
+      const double uz = k < 120 ? 8.0 * z : 0.0, uc = k < 120 ? 6.0 * c : 0.0;
+      tz = 20.0 + uz + (tz - 20.0 - uz) * std::exp(-1.0 / 20.0);
+      tc = 20.0 + uc + (tc - 20.0 - uc) * std::exp(-1.0 / 15.0);
+    }
+    return csv;
+  };
+  writeText(dir_.filePath(QStringLiteral("data/z.csv")), plant(1, 0, -3.0, 1));
+  writeText(dir_.filePath(QStringLiteral("data/c.csv")), plant(0, 1, -3.0, 2));
+  writeText(dir_.filePath(QStringLiteral("data/combined.csv")), plant(0.5, 0.5, -4.0, 5));
+  writeText(dir_.filePath(QStringLiteral("data/c_new.csv")), plant(0, 1, -4.0, 4));
+  Project p;
+  p.name = "Two drives";
+  p.datasets.push_back({"thermal_modular_z", dataset_kind::kThermalLog, "data/z.csv", "", "", {}});
+  p.datasets.push_back({"thermal_modular_c", dataset_kind::kThermalLog, "data/c.csv", "", "", {}});
+  p.datasets.push_back(
+      {"thermal_modular_combined", dataset_kind::kThermalLog, "data/combined.csv", "", "", {}});
+  p.datasets.push_back({"c_after_bearings", dataset_kind::kThermalLog, "data/c_new.csv", "", "", {}});
+  p.studies["thermal"] = {{"dataset", "thermal_modular_combined"}};
+  // The modules' row of the modular table (text with whitespace runs as one space): its RMSE.
+  const auto modulesRmse = [](const QString& text) {
+    const QRegularExpressionMatch m =
+        QRegularExpression(
+            QStringLiteral("modules, summed \\(distributed lag\\)\\s+(\\S+)\\s+(\\S+)\\s+(\\S+) %\\s+(\\S+)"))
+            .match(text);
+    return m.hasMatch() ? m.captured(4).toDouble() : -1.0;
+  };
+  for (const bool declared : {false, true}) {
+    if (declared)
+      p.studies["thermal"]["modules"] = {{"thermal_modular_c", {{"dataset", "c_after_bearings"}}}};
+    const QString projectPath = dir_.filePath(QStringLiteral("modules.metrofit"));
+    saveProject(p, projectPath.toStdString());
+    ReportOptions o;
+    o.projectPath = projectPath;
+    const QString pdf = dir_.filePath(declared ? QStringLiteral("declared.pdf") : QStringLiteral("own.pdf"));
+    writeReport(loadProject(projectPath.toStdString()), pdf, o);
+    QString text = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")}).out;
+    text.replace(QRegularExpression(QStringLiteral("\\s+")), QStringLiteral(" "));
+    const double rmse = modulesRmse(text);
+    if (declared) {
+      EXPECT_TRUE(text.contains(QStringLiteral("(identified again on c_after_bearings)")))
+          << text.toStdString();
+      EXPECT_GE(rmse, 0.0) << text.toStdString();
+      EXPECT_LT(rmse, 0.15) << text.toStdString();
+    } else {
+      EXPECT_FALSE(text.contains(QStringLiteral("identified again on"))) << text.toStdString();
+      EXPECT_GT(rmse, 1.0) << text.toStdString();
+    }
+  }
 }
 
 /// The text of one page (1-based) of a PDF.

@@ -123,14 +123,30 @@ std::shared_ptr<const ModularComparison> modularResults(const ReportContext& con
   const ThermalLog& test = *tests[2]->thermal;
   const ThermalModelSettings s = defaultThermalModelSettings(test, nlohmann::json::object(), {});
   const std::vector<std::string> inputs = modularInputs(test);
+  // The tests the thermal study names for the modules (studies.thermal.modules: a module identified
+  // again on a new test of its drive on the Modular tab).
+  const auto study = context.project->studies.find(study::kThermal);
+  const nlohmann::json thermalStudy =
+      study != context.project->studies.end() ? *study : nlohmann::json::object();
+  const std::vector<std::string> moduleTests = studyModuleTests(thermalStudy, {kModularZId, kModularCId});
+  const auto logOf = [&context](const std::string& id) -> const ThermalLog* {
+    for (const ReportDataset* d : context.ofKind(dataset_kind::kThermalLog))
+      if (d->ref.id == id && d->thermal) return &*d->thermal;
+    return nullptr;
+  };
   std::uint64_t key = contentHash(*tests[0]->thermal, "z") ^ (contentHash(*tests[1]->thermal, "c") * 3u) ^
                       (contentHash(test, s.target) * 7u);
+  for (std::size_t i = 0; i < moduleTests.size(); ++i)
+    if (const ThermalLog* log = logOf(moduleTests[i]))
+      key ^= contentHash(*log, "module " + std::to_string(i) + " " + moduleTests[i]) * (11u + 2u * i);
   const std::shared_ptr<const ModularResults> r = context.memo.get<ModularResults>(std::to_string(key), [&] {
     auto m = std::make_shared<ModularResults>();
     try {
-      m->comparison = std::make_shared<ModularComparison>(
+      auto c = std::make_shared<ModularComparison>(
           compareModularModels({&*tests[0]->thermal, &*tests[1]->thermal}, test, s.target, inputs, 1, {},
                                {kModularZId, kModularCId}));
+      identifyModulesOnStudyTests(c->modules, thermalStudy, logOf, test, s.target, 1);
+      m->comparison = std::move(c);
     } catch (const std::exception& e) {
       m->error = QString::fromStdString(e.what());
     }
@@ -303,6 +319,7 @@ QString appliedChoice(const ThermalLog& log, const ThermalComparison& c) {
   QStringList used, usedChange, notUsed, notUsedChange;
   bool allRise = true;
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+    if (!c.fitted(i)) continue;  // not fitted: its row in the table says why
     const QString change =
         ReportText::tr("%1 → %2%3")
             .arg(metric(c.declaredHeldoutRmse[i], dec), metric(c.appliedHeldoutRmse[i], dec), u);
@@ -437,7 +454,15 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
   QStringList trainingNotes;
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
     const thermal::ThermalEvaluation& ev = c.models[i];
-    if (ev.predicted.size() != c.series.rows()) continue;
+    if (!c.failed[i].empty()) {
+      // The model could not be fitted on this log (the others are): one row with the reason.
+      t.rows.push_back({thermalModelName(kThermalModelOrder[i]), QStringLiteral("—"), QString(), QString(),
+                        QString(), QString(),
+                        ReportText::tr("not fitted: %1").arg(QString::fromStdString(c.failed[i]))});
+      trainingNotes << ReportText::tr("%1: not fitted").arg(thermalModelName(kThermalModelOrder[i]));
+      continue;
+    }
+    if (!c.fitted(i)) continue;
     QString training;
     switch (kThermalModelOrder[i]) {
       case thermal::ThermalModelKind::Gnnmci:
@@ -527,8 +552,16 @@ void writeModular(ReportPainter& out, const ReportContext& context, const Therma
               ReportText::tr("E")};
   t.alignment = {Qt::AlignLeft,  Qt::AlignRight, Qt::AlignRight, Qt::AlignRight,
                  Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
+  QStringList notFitted;
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
     const thermal::ModularEvaluation& ev = m->models[i];
+    if (!m->fitted(i)) {
+      t.rows.push_back({thermalModelName(kThermalModelOrder[i]), ReportText::tr("not fitted"), QString(),
+                        QString(), QString(), QString(), QString(), QString()});
+      notFitted << ReportText::tr("%1 not fitted: %2.")
+                       .arg(thermalModelName(kThermalModelOrder[i]), QString::fromStdString(m->failed[i]));
+      continue;
+    }
     t.rows.push_back({thermalModelName(kThermalModelOrder[i]), metric(ev.errorPeak, 1),
                       QStringLiteral("±") + metric(ev.residualPeak, 1),
                       metric(100.0 * ev.reductionPeak, 1) + QStringLiteral(" %"), metric(ev.test.rmse, 2),
@@ -543,14 +576,18 @@ void writeModular(ReportPainter& out, const ReportContext& context, const Therma
                       metric(ev->test.e, 4)});
   }
   out.table(t);
+  if (!notFitted.isEmpty()) out.paragraph(notFitted.join(QLatin1Char(' ')), ReportPainter::Font::Small);
   // The same case module by module: each module on its own test, the combined test their sum.
   if (const auto& ev = m->modules.evaluation) {
     QStringList parts;
     for (std::size_t i = 0; i < m->modules.names.size() && i < ev->contributions.size(); ++i) {
       const double peak = ev->contributionPeaks[i];
-      parts << ReportText::tr("%1 with inputs %2, up to %3 %4")
-                   .arg(QString::fromStdString(m->modules.names[i]), joined(m->modules.inputs[i]),
-                        metric(peak, 1), unit);
+      QString part = ReportText::tr("%1 with inputs %2, up to %3 %4")
+                         .arg(QString::fromStdString(m->modules.names[i]), joined(m->modules.inputs[i]),
+                              metric(peak, 1), unit);
+      if (i < m->modules.tests.size() && m->modules.tests[i] != m->modules.names[i])
+        part += ReportText::tr(" (identified again on %1)").arg(QString::fromStdString(m->modules.tests[i]));
+      parts << part;
     }
     out.paragraph(
         ReportText::tr("Module by module (the last row and the dotted curves): each module is identified "
@@ -588,7 +625,12 @@ void concludeThermal(ReportPainter& out, const ReportContext& context, const Rep
   QStringList rejected;
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
     const thermal::ThermalEvaluation& ev = c.models[i];
-    if (ev.predicted.size() != c.series.rows()) continue;
+    if (!c.failed[i].empty()) {
+      rejected << ReportText::tr("%1 could not be fitted (%2)")
+                      .arg(thermalModelName(kThermalModelOrder[i]), QString::fromStdString(c.failed[i]));
+      continue;
+    }
+    if (!c.fitted(i)) continue;
     const thermal::ModelVerdict v = thermal::judgeThermalModel(ev.heldout, scale);
     if (v != thermal::ModelVerdict::Usable) {
       rejected << ReportText::tr("%1 is not usable (%2)")

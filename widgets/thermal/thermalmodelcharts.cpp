@@ -1,6 +1,7 @@
 // Hysteresis, model comparison, residual and training charts (see thermalmodelcharts.h).
 #include "widgets/thermal/thermalmodelcharts.h"
 
+#include <QAbstractAxis>
 #include <QAreaSeries>
 #include <QChart>
 #include <QCoreApplication>
@@ -146,8 +147,19 @@ void finishLegend(QChart* chart, bool legend) {
   chart->legend()->setAlignment(Qt::AlignBottom);
 }
 
-bool fitted(const thermal::ThermalEvaluation& ev, std::size_t rows) {
-  return ev.predicted.size() == rows && ev.training.run.termination != Termination::Cancelled;
+bool fitted(const ThermalComparison& c, std::size_t i) {
+  return c.fitted(i) && c.models[i].training.run.termination != Termination::Cancelled;
+}
+
+/// A legend entry without a curve for a model that could not be fitted ("GMC(1,N): not fitted"); the
+/// reason is in the tables next to the chart.
+void addNotFittedEntry(QChart* chart, std::size_t i, QAbstractAxis* x, QAbstractAxis* y) {
+  auto* entry = new QLineSeries;
+  entry->setName(ModelChartsText::tr("%1: not fitted").arg(thermalModelName(kThermalModelOrder[i])));
+  entry->setPen(QPen(thermalModelColor(kThermalModelOrder[i]), 1.5, Qt::DotLine));
+  chart->addSeries(entry);
+  entry->attachAxis(x);
+  entry->attachAxis(y);
 }
 
 }  // namespace
@@ -270,7 +282,7 @@ QChart* makeModelComparisonChart(const ThermalLog& log, const ThermalComparison&
   auto* y = new QValueAxis;
   y->setTitleText(QString::fromStdString(s.targetName) + unitSuffix(log, s.targetName));
   chart->addAxis(y, Qt::AlignLeft);
-  const std::size_t fitRows = c.models[0].fitRows;
+  const std::size_t fitRows = c.fitRows;
   if (s.rows() >= 2 && fitRows > 0 && fitRows < s.rows()) {
     addHeldOutBand(chart, time, 0.5 * (s.timeMin[fitRows - 1] + s.timeMin[fitRows]), s.timeMin.back());
   }
@@ -282,7 +294,8 @@ QChart* makeModelComparisonChart(const ThermalLog& log, const ThermalComparison&
   m->attachAxis(time.axis);
   m->attachAxis(y);
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
-    if (!fitted(c.models[i], s.rows())) continue;
+    if (!c.failed[i].empty()) addNotFittedEntry(chart, i, time.axis, y);
+    if (!fitted(c, i)) continue;
     Range pr;
     QLineSeries* p =
         timeSeries(s.timeMin, c.models[i].predicted, time.scale, options.maxPointsPerSeries, &pr);
@@ -315,7 +328,7 @@ QChart* makeResidualChart(const ThermalLog& log, const ThermalComparison& c,
   auto* y = new QValueAxis;
   y->setTitleText(ModelChartsText::tr("residual") + unitSuffix(log, s.targetName));
   chart->addAxis(y, Qt::AlignLeft);
-  const std::size_t fitRows = c.models[0].fitRows;
+  const std::size_t fitRows = c.fitRows;
   if (s.rows() >= 2 && fitRows > 0 && fitRows < s.rows()) {
     addHeldOutBand(chart, time, 0.5 * (s.timeMin[fitRows - 1] + s.timeMin[fitRows]), s.timeMin.back());
   }
@@ -326,7 +339,8 @@ QChart* makeResidualChart(const ThermalLog& log, const ThermalComparison& c,
   // runs away (an unstable grey model) is drawn off scale and named so.
   double extent = 0.0;
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
-    if (!fitted(c.models[i], s.rows())) continue;
+    if (!c.failed[i].empty()) addNotFittedEntry(chart, i, time.axis, y);
+    if (!fitted(c, i)) continue;
     std::vector<double> r(s.rows());
     for (std::size_t k = 0; k < s.rows(); ++k) r[k] = s.target[k] - c.models[i].predicted[k];
     Range rr;
@@ -365,7 +379,8 @@ QChart* makeModularChart(const ThermalLog& testLog, const ModularComparison& mod
   m->attachAxis(y);
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
     const auto& ev = modular.models[i];
-    if (ev.predicted.size() != s.rows() || ev.training.run.termination == Termination::Cancelled) continue;
+    if (!modular.failed[i].empty()) addNotFittedEntry(chart, i, time.axis, y);
+    if (!modular.fitted(i)) continue;
     QLineSeries* p = timeSeries(s.timeMin, ev.predicted, time.scale, options.maxPointsPerSeries, nullptr);
     p->setName(thermalModelName(kThermalModelOrder[i]));
     p->setPen(QPen(thermalModelColor(kThermalModelOrder[i]), 1.5, i == 0 ? Qt::SolidLine : Qt::DashLine));

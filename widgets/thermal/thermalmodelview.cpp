@@ -31,6 +31,8 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <utility>
+#include <vector>
 
 #include "core/common/run.h"
 #include "core/diagnose/thermal_applied.h"
@@ -69,6 +71,7 @@ QString appliedChoiceText(const ThermalComparison& r, const QString& unit) {
   QStringList used, usedChange, notUsed, notUsedChange;
   bool allRise = true;
   for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+    if (!r.fitted(i)) continue;  // not fitted: said in the table and the status
     const QString change =
         ThermalModelView::tr("%1 → %2%3")
             .arg(number(r.declaredHeldoutRmse[i], dec), number(r.appliedHeldoutRmse[i], dec), u);
@@ -109,6 +112,15 @@ void replaceChart(QChartView* view, QChart* chart) {
   delete old;
 }
 
+/// A table exactly as tall as its header and rows (no inner scroll bar): the header's size hint, as
+/// its height is 0 until the table is laid out.
+void fitRows(QTableWidget* table) {
+  int h = table->horizontalHeader()->sizeHint().height() + 2 * table->frameWidth();
+  for (int r = 0; r < table->rowCount(); ++r) h += table->rowHeight(r);
+  table->setMinimumHeight(h);
+  table->setMaximumHeight(h);
+}
+
 QTableWidgetItem* cell(const QString& text, bool left = false) {
   auto* item = new QTableWidgetItem(text);
   item->setTextAlignment(left ? (Qt::AlignLeft | Qt::AlignVCenter) : (Qt::AlignRight | Qt::AlignVCenter));
@@ -147,6 +159,12 @@ struct ThermalModelView::Impl {
   QTableWidget* modularTable = nullptr;
   QLabel* modularModules = nullptr;
   QChartView* modularChart = nullptr;
+  QTableWidget* modulesTable = nullptr;
+  QPushButton* saveModules = nullptr;
+  QPushButton* modulesCancel = nullptr;
+  QProgressBar* modulesProgress = nullptr;
+  QLabel* modulesMessage = nullptr;
+  bool modulesRunning = false;
 
   // Training state.
   BackgroundRun<std::shared_ptr<ThermalComparison>>* run = nullptr;
@@ -273,10 +291,27 @@ struct ThermalModelView::Impl {
     double scale = 0.0;
     for (double v : r.series.target) scale = std::max(scale, std::abs(v));
     const int dec = decimalsFor(scale);
+    metrics->clearSpans();
     metrics->setRowCount(0);
+    // A row across the columns must not widen its first column: its text is set after the sizing.
+    std::vector<std::pair<QTableWidgetItem*, QString>> notFittedRows;
     for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
       const thermal::ThermalEvaluation& ev = r.models[i];
-      if (ev.predicted.size() != r.series.rows()) continue;
+      if (!r.failed[i].empty()) {
+        // One row: the model's name and why it could not be fitted, across the figures' columns.
+        const int row = metrics->rowCount();
+        metrics->insertRow(row);
+        metrics->setItem(row, 0, cell(thermalModelName(kThermalModelOrder[i]), true));
+        const QString reason = QString::fromStdString(r.failed[i]);
+        QTableWidgetItem* why = cell(QString(), true);  // the text after the columns are sized
+        why->setToolTip(reason);
+        why->setForeground(QColor(0xb0, 0x20, 0x20));
+        metrics->setItem(row, 1, why);
+        metrics->setSpan(row, 1, 1, metrics->columnCount() - 1);
+        notFittedRows.push_back({why, ThermalModelView::tr("not fitted: %1").arg(reason)});
+        continue;
+      }
+      if (!r.fitted(i)) continue;
       for (int part = 0; part < 2; ++part) {
         const thermal::ThermalMetrics& m = part == 0 ? ev.fit : ev.heldout;
         const int row = metrics->rowCount();
@@ -323,11 +358,17 @@ struct ThermalModelView::Impl {
                                         ThermalModelView::tr("E"), ThermalModelView::tr("band") + u,
                                         ThermalModelView::tr("verdict")});
     metrics->resizeColumnsToContents();
+    for (const auto& [item, text] : notFittedRows) item->setText(text);
 
-    QStringList parts;
+    QStringList parts, notFitted;
     for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
       const thermal::ThermalEvaluation& ev = r.models[i];
-      if (ev.predicted.size() != r.series.rows()) continue;
+      if (!r.failed[i].empty()) {
+        notFitted << ThermalModelView::tr("%1 not fitted: %2.")
+                         .arg(thermalModelName(kThermalModelOrder[i]), QString::fromStdString(r.failed[i]));
+        continue;
+      }
+      if (!r.fitted(i)) continue;
       QString p = ThermalModelView::tr("%1 %2 s")
                       .arg(thermalModelName(kThermalModelOrder[i]))
                       .arg(QLocale().toString(r.seconds[i], 'f', 2));
@@ -339,7 +380,7 @@ struct ThermalModelView::Impl {
     QStringList notUsable;
     for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
       const thermal::ThermalEvaluation& ev = r.models[i];
-      if (ev.predicted.size() != r.series.rows()) continue;
+      if (!r.fitted(i)) continue;  // never the best: it has no figures
       const thermal::ModelVerdict v = thermal::judgeThermalModel(ev.heldout, scale);
       if (v != thermal::ModelVerdict::Usable) {
         notUsable << thermalModelName(kThermalModelOrder[i]) + QStringLiteral(" ") + thermalVerdictLabel(v) +
@@ -356,11 +397,12 @@ struct ThermalModelView::Impl {
                         "No model is usable for compensation: record a longer test or add "
                         "the inputs the diagnosis finds.");
     status->setText(ThermalModelView::tr("%1 fit rows, %2 held out; %3.")
-                        .arg(r.models[0].fitRows)
-                        .arg(r.models[0].heldoutRows)
+                        .arg(r.fitRows)
+                        .arg(r.heldoutRows)
                         .arg(parts.join(QStringLiteral(", "))) +
                     QLatin1Char(' ') + bestText +
-                    (notUsable.isEmpty() ? QString() : QLatin1Char(' ') + notUsable.join(QLatin1Char(' '))));
+                    (notUsable.isEmpty() ? QString() : QLatin1Char(' ') + notUsable.join(QLatin1Char(' '))) +
+                    (notFitted.isEmpty() ? QString() : QLatin1Char(' ') + notFitted.join(QLatin1Char(' '))));
     progress->setValue(kProgressMax);
     updateAppliedLabel();
   }
@@ -371,14 +413,19 @@ struct ThermalModelView::Impl {
     modularHeadline->setVisible(visible);
     if (!visible) return;
     const ModularComparison& m = *modular;
-    modularHeadline->setText(
-        ThermalModelView::tr(
-            "<b>Modular case:</b> GNNMCI(1,N) fitted on the Z and C tests reduces the combined "
-            "test's error by %1 % (GMC(1,N) %2 %, MLP %3 %).")
-            .arg(QLocale().toString(m.models[0].reductionPeak * 100.0, 'f', 1))
-            .arg(QLocale().toString(m.models[1].reductionPeak * 100.0, 'f', 1))
-            .arg(QLocale().toString(m.models[2].reductionPeak * 100.0, 'f', 1)));
+    // A model that could not be fitted on the tests says so instead of a reduction.
+    const auto reduction = [&m](std::size_t i) {
+      return m.fitted(i)
+                 ? QLocale().toString(m.models[i].reductionPeak * 100.0, 'f', 1) + QStringLiteral(" %")
+                 : ThermalModelView::tr("not fitted");
+    };
+    modularHeadline->setText(ThermalModelView::tr("<b>Modular case:</b> GNNMCI(1,N) fitted on the Z and C "
+                                                  "tests reduces the combined test's error by %1 (GMC(1,N) "
+                                                  "%2, MLP %3).")
+                                 .arg(reduction(0), reduction(1), reduction(2)));
+    modularTable->clearSpans();
     modularTable->setRowCount(0);
+    std::vector<std::pair<QTableWidgetItem*, QString>> notFittedRows;
     QString unit;
     if (const int ti = modularLog.indexOf(m.target); ti >= 0)
       unit = displayUnit(modularLog.channels[static_cast<std::size_t>(ti)].unit);
@@ -387,6 +434,16 @@ struct ThermalModelView::Impl {
       const int row = modularTable->rowCount();
       modularTable->insertRow(row);
       modularTable->setItem(row, 0, cell(thermalModelName(kThermalModelOrder[i]), true));
+      if (!m.failed[i].empty() || !m.fitted(i)) {
+        const QString reason = QString::fromStdString(m.failed[i]);
+        QTableWidgetItem* why = cell(QString(), true);  // the text after the columns are sized
+        why->setToolTip(reason);
+        why->setForeground(QColor(0xb0, 0x20, 0x20));
+        modularTable->setItem(row, 1, why);
+        modularTable->setSpan(row, 1, 1, modularTable->columnCount() - 1);
+        notFittedRows.push_back({why, ThermalModelView::tr("not fitted: %1").arg(reason)});
+        continue;
+      }
       modularTable->setItem(
           row, 1, cell(number(ev.errorPeak, 1) + QStringLiteral(" → ±") + number(ev.residualPeak, 1)));
       modularTable->setItem(row, 2, cell(number(100.0 * ev.reductionPeak, 1)));
@@ -420,18 +477,58 @@ struct ThermalModelView::Impl {
                                    .arg(parts.join(QStringLiteral("; ")))
                              : ThermalModelView::tr("Module by module: not identified (%1).")
                                    .arg(QString::fromStdString(m.modules.why)));
+    updateModulesTable(m, unit);
     modularTable->setHorizontalHeaderLabels(
         {ThermalModelView::tr("model"), ThermalModelView::tr("error → band (%1)").arg(unit),
          ThermalModelView::tr("less (peak, %)"), ThermalModelView::tr("RMSE (%1)").arg(unit),
          ThermalModelView::tr("less (RMS, %)"), ThermalModelView::tr("E")});
     modularTable->resizeColumnsToContents();
+    for (const auto& [item, text] : notFittedRows) item->setText(text);
     // Every row visible (the pooled models and the modules' row), no inner scroll bar.
-    modularTable->setMaximumHeight(
-        modularTable->horizontalHeader()->height() +
-        modularTable->rowCount() * modularTable->verticalHeader()->defaultSectionSize() + 4);
+    fitRows(modularTable);
     ModelChartOptions o;
     o.legend = true;
     replaceChart(modularChart, makeModularChart(modularLog, m, o));
+  }
+
+  /// One row per module: its name, the test it is identified on, its inputs, its contribution and
+  /// "Identify again…"; Save module models… when every module is identified.
+  void updateModulesTable(const ModularComparison& m, const QString& unit) {
+    const ModularModules& mm = m.modules;
+    modulesTable->setRowCount(0);
+    for (std::size_t i = 0; i < mm.names.size(); ++i) {
+      const int row = modulesTable->rowCount();
+      modulesTable->insertRow(row);
+      modulesTable->setItem(row, 0, cell(QString::fromStdString(mm.names[i]), true));
+      modulesTable->setItem(
+          row, 1, cell(QString::fromStdString(i < mm.tests.size() ? mm.tests[i] : mm.names[i]), true));
+      QStringList inputs;
+      if (i < mm.inputs.size())
+        for (const std::string& in : mm.inputs[i]) inputs << QString::fromStdString(in);
+      modulesTable->setItem(row, 2, cell(inputs.join(QStringLiteral(", ")), true));
+      const bool identified = mm.evaluation && i < mm.evaluation->contributionPeaks.size();
+      modulesTable->setItem(
+          row, 3,
+          cell(identified ? number(mm.evaluation->contributionPeaks[i], 1) + QLatin1Char(' ') + unit
+                          : ThermalModelView::tr("not identified")));
+      auto* again = new QPushButton(ThermalModelView::tr("Identify again…"), modulesTable);
+      again->setObjectName(QStringLiteral("thermalModuleIdentify%1").arg(row));
+      again->setToolTip(
+          ThermalModelView::tr("Identify this module again on another test of its drive (a "
+                               "thermal log of the project); the other modules keep their "
+                               "models"));
+      again->setEnabled(identified && !modulesRunning);
+      QObject::connect(again, &QPushButton::clicked, q,
+                       [this, row] { emit q->identifyModuleRequested(row); });
+      modulesTable->setCellWidget(row, 4, again);
+    }
+    modulesTable->setHorizontalHeaderLabels(
+        {ThermalModelView::tr("module"), ThermalModelView::tr("identified on"),
+         ThermalModelView::tr("inputs"), ThermalModelView::tr("contribution (peak)"), QString()});
+    modulesTable->resizeColumnsToContents();
+    modulesTable->horizontalHeader()->setSectionResizeMode(2, QHeaderView::Stretch);
+    fitRows(modulesTable);
+    saveModules->setEnabled(mm.evaluation.has_value() && !modulesRunning);
   }
 
   /// The worker's observer: records the PSO trace, reports progress (the first model to 80 %, the
@@ -562,12 +659,48 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   d->modularModules->setWordWrap(true);
   d->modularTable->horizontalHeader()->setStretchLastSection(true);
   d->modularChart = newChartView(d->modularGroup, 220);
+  d->modulesTable = new QTableWidget(0, 5, d->modularGroup);
+  enableTableCopy(d->modulesTable);
+  d->modulesTable->setObjectName(QStringLiteral("thermalModulesTable"));
+  d->modulesTable->verticalHeader()->setVisible(false);
+  d->modulesTable->verticalHeader()->setDefaultSectionSize(26);
+  d->modulesTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  d->modulesTable->horizontalHeader()->setStretchLastSection(false);
+  d->modulesTable->setMaximumHeight(3 * 26 + 8);
+  d->saveModules = new QPushButton(tr("Save module models…"), d->modularGroup);
+  d->saveModules->setObjectName(QStringLiteral("thermalSaveModules"));
+  d->saveModules->setToolTip(
+      tr("Write each module's fitted model to a folder as NAME.json (the files of metrofit-cli thermal "
+         "modular --save-modules)"));
+  d->saveModules->setEnabled(false);
+  d->modulesCancel = new QPushButton(tr("Cancel"), d->modularGroup);
+  d->modulesCancel->setObjectName(QStringLiteral("thermalModulesCancel"));
+  d->modulesCancel->setToolTip(tr("Stop identifying the module; the modules shown stay"));
+  d->modulesCancel->setEnabled(false);
+  d->modulesProgress = new QProgressBar(d->modularGroup);
+  d->modulesProgress->setObjectName(QStringLiteral("thermalModulesProgress"));
+  d->modulesProgress->setRange(0, kProgressMax);
+  d->modulesProgress->setValue(0);
+  d->modulesProgress->setVisible(false);
+  d->modulesMessage = new QLabel(d->modularGroup);
+  d->modulesMessage->setObjectName(QStringLiteral("thermalModulesMessage"));
+  d->modulesMessage->setWordWrap(true);
+  d->modulesMessage->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto* modulesActions = new QHBoxLayout;
+  modulesActions->addWidget(d->saveModules);
+  modulesActions->addWidget(d->modulesProgress, 1);
+  modulesActions->addWidget(d->modulesCancel);
+  modulesActions->addWidget(d->modulesMessage, 2);
   auto* modularLayout = new QVBoxLayout(d->modularGroup);
   modularLayout->setContentsMargins(4, 4, 4, 4);
   modularLayout->addWidget(d->modularText);
   modularLayout->addWidget(d->modularTable);
   modularLayout->addWidget(d->modularModules);
+  modularLayout->addWidget(d->modulesTable);
+  modularLayout->addLayout(modulesActions);
   modularLayout->addWidget(d->modularChart, 1);
+  connect(d->saveModules, &QPushButton::clicked, this, &ThermalModelView::saveModulesRequested);
+  connect(d->modulesCancel, &QPushButton::clicked, this, &ThermalModelView::modulesCancelRequested);
   d->modularHeadline = new QLabel(this);
   d->modularHeadline->setObjectName(QStringLiteral("thermalModularHeadline"));
   d->modularHeadline->setWordWrap(true);
@@ -796,6 +929,45 @@ QTableWidget* ThermalModelView::modularTable() const {
 }
 QLabel* ThermalModelView::modularModulesLabel() const {
   return d->modularModules;
+}
+QTableWidget* ThermalModelView::modulesTable() const {
+  return d->modulesTable;
+}
+QPushButton* ThermalModelView::saveModulesButton() const {
+  return d->saveModules;
+}
+QPushButton* ThermalModelView::modulesCancelButton() const {
+  return d->modulesCancel;
+}
+QProgressBar* ThermalModelView::modulesProgressBar() const {
+  return d->modulesProgress;
+}
+
+void ThermalModelView::setModulesRunning(bool running) {
+  d->modulesRunning = running;
+  d->modulesCancel->setEnabled(running);
+  d->modulesProgress->setVisible(running);
+  if (running) {
+    d->modulesProgress->setValue(0);
+    d->modulesProgress->resetFormat();
+  }
+  const bool identified = d->modular && d->modular->modules.evaluation.has_value();
+  d->saveModules->setEnabled(identified && !running);
+  for (int row = 0; row < d->modulesTable->rowCount(); ++row)
+    if (QWidget* w = d->modulesTable->cellWidget(row, 4)) w->setEnabled(identified && !running);
+}
+
+void ThermalModelView::setModulesProgress(double fraction, const QString& text) {
+  d->modulesProgress->setValue(static_cast<int>(std::clamp(fraction, 0.0, 1.0) * kProgressMax));
+  if (!text.isEmpty()) d->modulesProgress->setFormat(text);
+}
+
+void ThermalModelView::setModulesMessage(const QString& text) {
+  d->modulesMessage->setText(text);
+}
+
+QString ThermalModelView::modulesMessage() const {
+  return d->modulesMessage->text();
 }
 
 }  // namespace metrofit

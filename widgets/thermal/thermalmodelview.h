@@ -8,7 +8,11 @@
 // Applied effects in the settings (ThermalModelSettings::applied) are named under the inputs; each
 // model is fitted with and without them and keeps the lower held-out error, and the line says which
 // ("Applied effects lag:T2 (15.5 min): not used by GNNMCI(1,N), GMC(1,N), MLP (held-out error would
-// rise: 0.39 → 0.46 µm, ...)"), or why they cannot be used. Qt Charts stays behind the pimpl.
+// rise: 0.39 → 0.46 µm, ...)"), or why they cannot be used. A model that could not be fitted on the
+// log has one row "not fitted: <reason>" and a legend entry without a curve, and is never the best.
+// The modular tab lists the modules (each identified on its own test) with "Identify again…" per
+// module and "Save module models…"; the page runs them (app/gui/thermalpage.h). Qt Charts stays behind
+// the pimpl.
 #include <QWidget>
 #include <memory>
 
@@ -62,11 +66,33 @@ class ThermalModelView : public QWidget {
   /// The modules line of the modular case (each module's inputs and contribution).
   QLabel* modularModulesLabel() const;
 
+  /// The modules of the modular case, one row each: the module, the test it is identified on, its
+  /// inputs, its contribution and an "Identify again…" button (identifyModuleRequested(row)).
+  QTableWidget* modulesTable() const;
+  /// "Save module models…": saveModulesRequested().
+  QPushButton* saveModulesButton() const;
+  /// Cancel of a module run: modulesCancelRequested().
+  QPushButton* modulesCancelButton() const;
+  QProgressBar* modulesProgressBar() const;
+  /// A module run is going on (identifying a module again): the actions are disabled, Cancel and the
+  /// progress bar shown.
+  void setModulesRunning(bool running);
+  void setModulesProgress(double fraction, const QString& text);
+  /// The line under the modules (the last run's outcome, where the models were saved).
+  void setModulesMessage(const QString& text);
+  QString modulesMessage() const;
+
  signals:
   /// A training ended: completed true, or false when cancelled or failed.
   void trainingFinished(bool completed);
   /// The user changed a setting in the controls.
   void settingsEdited();
+  /// "Identify again…" of module `module` (a row of modulesTable()).
+  void identifyModuleRequested(int module);
+  /// "Save module models…".
+  void saveModulesRequested();
+  /// Cancel of the module run.
+  void modulesCancelRequested();
 
  private:
   struct Impl;

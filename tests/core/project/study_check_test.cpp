@@ -53,6 +53,23 @@ TEST(StudyCheck, DatasetOfTheWrongKindOrMissing) {
   EXPECT_NE(issues[1].message.find("probe_points"), std::string::npos);
 }
 
+// studies.thermal.modules: per module the thermal log it is identified on (core/study/thermal_comparison.h).
+TEST(StudyCheck, ThermalModulesNameThermalLogs) {
+  Project p = twoDatasets();
+  p.studies["thermal"] = {{"modules", {{"thermal_modular_c", {{"dataset", "log"}}}}}};
+  EXPECT_TRUE(checkStudies(p).empty()) << checkStudies(p).front().field;
+  p.studies["thermal"] = {{"modules",
+                           {{"thermal_modular_c", {{"dataset", "pts"}}},
+                            {"thermal_modular_z", {{"datset", "log"}}},
+                            {"x", {{"dataset", "gone"}}}}}};
+  const auto issues = checkStudies(p);
+  EXPECT_EQ(fields(issues), (std::vector<std::string>{"studies.thermal.modules.thermal_modular_c.dataset",
+                                                      "studies.thermal.modules.thermal_modular_z.datset",
+                                                      "studies.thermal.modules.x.dataset"}));
+  p.studies["thermal"] = {{"modules", {"log"}}};
+  EXPECT_EQ(fields(checkStudies(p)), (std::vector<std::string>{"studies.thermal.modules"}));
+}
+
 TEST(StudyCheck, MisspelledDatasetKind) {
   Project p = twoDatasets();
   p.datasets.push_back({"x", "thermal-log", "x.csv", "", "", {}});
