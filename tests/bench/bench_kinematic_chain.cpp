@@ -153,9 +153,9 @@ nlohmann::json benchKinematicChain(const KinematicChainBenchOptions& options) {
   const std::vector<Eigen::Vector2d> nominal = circularTestCommands(circle);
 
   ErrorStats chainErr, peerErr;
-  AbsStats before, afterChain, afterPeer;
+  AbsStats before, afterChain, afterChainApplied, afterPeer;
   std::array<AbsStats, 3> jointSq, separateSq;
-  int applied = 0;
+  int applied = 0, outOfControl = 0;
   double chainMs = 0.0, peerMs = 0.0, jointMs = 0.0, separateMs = 0.0;
   int failures3 = 0;
 
@@ -177,10 +177,12 @@ nlohmann::json benchKinematicChain(const KinematicChainBenchOptions& options) {
     chainMs += medianMs(repeat, [&] { sink = actuatorErrorsFromSpc(xEdge, yEdge).errors.xAxisAngleDeg; });
     chainErr.add(chain.errors, truth);
     if (chain.apply) ++applied;
+    if (chain.reason.rfind("not compensated: the residuals", 0) == 0) ++outOfControl;
     before.add(maxPathErrorMm(truth, nominal, nominal) * kUm);
     const std::vector<Eigen::Vector2d> refs =
         chain.apply ? compensatePath(CartesianMachine2::fromErrors(chain.errors), nominal) : nominal;
     afterChain.add(maxPathErrorMm(truth, refs, nominal) * kUm);
+    if (chain.apply) afterChainApplied.add(maxPathErrorMm(truth, refs, nominal) * kUm);
 
     // The peer: the 2-axis identification of a circular test of the same machine.
     CircularSimOptions test = circle;
@@ -241,9 +243,10 @@ nlohmann::json benchKinematicChain(const KinematicChainBenchOptions& options) {
   std::printf(
       "  compensated circle R 100 mm, max |P - nominal| on the true machine (um), mean (max) over seeds:\n"
       "    before %.3f (%.3f) -> after, chain %.3f (%.3f); after, circular test %.3f (%.3f)\n"
-      "    the SPC gate applied the compensation in %d of %d seeds\n",
+      "    the SPC gate applied the compensation in %d of %d seeds (not applied for a residual chart out of "
+      "control: %d); after, chain, where applied: %.3f (%.3f)\n",
       before.mean(), before.max, afterChain.mean(), afterChain.max, afterPeer.mean(), afterPeer.max, applied,
-      seeds);
+      seeds, outOfControl, afterChainApplied.mean(), afterChainApplied.max);
   std::printf(
       "three-plane identification (circular tests in XY, YZ, ZX, 720 points each), %d seeds%s\n"
       "                                   joint 9-parameter fit   peer: 3 separate 2-axis fits\n"
@@ -273,8 +276,10 @@ nlohmann::json benchKinematicChain(const KinematicChainBenchOptions& options) {
           {"peer_errors", peerErr.json()},
           {"circle_before_um", before.json()},
           {"circle_after_chain_um", afterChain.json()},
+          {"circle_after_chain_applied_um", afterChainApplied.json()},
           {"circle_after_peer_um", afterPeer.json()},
           {"compensation_applied", applied},
+          {"not_applied_out_of_control", outOfControl},
           {"chain_ms", chainMs / n},
           {"peer_ms", peerMs / n},
           {"ratio", chainMs / peerMs},
