@@ -602,6 +602,28 @@ TEST_F(KinematicsActuatorsTest, PickersChooseTheDatasetsUndoablyAndTheTablesShow
   stack->undo();
   EXPECT_EQ(x->currentData().toString(), QStringLiteral("edge_x"));
   EXPECT_FALSE(page.fromSpcTable()->isHidden());
+
+  // Renaming a chosen dataset renames the setting; removing one removes it (the chooser goes back to
+  // none and the study says what is missing); undo brings both back.
+  EXPECT_EQ(doc_.datasetReferences(QStringLiteral("edge_y")),
+            QStringList{QStringLiteral("studies.kinematics.from_spc.y_dataset")});
+  EXPECT_EQ(doc_.datasetReferences(QStringLiteral("plane_yz")),
+            QStringList{QStringLiteral("studies.kinematics.planes.yz")});
+  doc_.renameDataset(QStringLiteral("edge_y"), QStringLiteral("kante_y"));
+  EXPECT_EQ(doc_.studyValue(kin, QStringLiteral("/from_spc/y_dataset")), "kante_y");
+  EXPECT_EQ(y->currentData().toString(), QStringLiteral("kante_y"));
+  EXPECT_FALSE(page.fromSpcTable()->isHidden());
+  doc_.removeDataset(QStringLiteral("plane_yz"));
+  EXPECT_TRUE(doc_.studyValue(kin, QStringLiteral("/planes/yz")).is_null());
+  EXPECT_EQ(page.planeCombo(TestPlane::YZ)->currentData().toString(), QString());
+  EXPECT_TRUE(
+      page.threeAxisLabel()->text().contains(QStringLiteral("choose the circular test in the YZ plane")))
+      << page.threeAxisLabel()->text().toStdString();
+  stack->undo();
+  stack->undo();
+  EXPECT_EQ(y->currentData().toString(), QStringLiteral("edge_y"));
+  EXPECT_EQ(page.planeCombo(TestPlane::YZ)->currentData().toString(), QStringLiteral("plane_yz"));
+  EXPECT_EQ(columnTexts(page.threeAxisTable(), 3), threeAxisTexts);
 }
 
 TEST_F(KinematicsActuatorsTest, ReportStatesTheChainAndTheThreeAxes) {
