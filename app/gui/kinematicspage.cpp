@@ -315,6 +315,11 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   actLayout->addLayout(pickerRows[1]);
   actLayout->addWidget(threeAxisLabel_);
   actLayout->addWidget(threeAxisTable_, 1);
+  // With both tables hidden (nothing chosen yet) the messages stay under their choosers and the space
+  // left goes below them.
+  for (QLabel* l : {fromSpcLabel_, threeAxisLabel_})
+    l->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
+  actLayout->addStretch(0);
   // Tab order as shown: the edges, Save DFQ, their table, the plane tests, their table.
   QWidget* const order[] = {pickers_[0].combo, pickers_[1].combo, edgesDfqButton_,   fromSpcTable_,
                             pickers_[2].combo, pickers_[3].combo, pickers_[4].combo, threeAxisTable_};
