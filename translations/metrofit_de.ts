@@ -1433,7 +1433,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+152"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+155"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -1574,7 +1574,87 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>RMS (µm)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>Choose the edge along X</source>
+        <translation>Kante entlang X wählen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the edge along Y</source>
+        <translation>Kante entlang Y wählen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the XY circular test</source>
+        <translation>Kreisformtest XY wählen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the YZ circular test</source>
+        <translation>Kreisformtest YZ wählen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the ZX circular test</source>
+        <translation>Kreisformtest ZX wählen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Edge along &amp;X:</source>
+        <translation>Kante entlang &amp;X:</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Edge along &amp;Y:</source>
+        <translation>Kante entlang &amp;Y:</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>XY circular &amp;test:</source>
+        <translation>K&amp;reisformtest XY:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y&amp;Z circular test:</source>
+        <translation>Kreisformtest Y&amp;Z:</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ZX circ&amp;ular test:</source>
+        <translation>Kreisfor&amp;mtest ZX:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The edge machined along X and measured (feature series, CSV position_mm,deviation_mm)</source>
+        <translation>Die entlang X bearbeitete und gemessene Kante (Merkmalsreihe, CSV position_mm,deviation_mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The edge machined along Y and measured (feature series, CSV position_mm,deviation_mm)</source>
+        <translation>Die entlang Y bearbeitete und gemessene Kante (Merkmalsreihe, CSV position_mm,deviation_mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Circular test in the XY plane (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm)</source>
+        <translation>Kreisformtest in der XY-Ebene (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Circular test in the YZ plane (CSV y_cmd_mm,z_cmd_mm,y_meas_mm,z_meas_mm)</source>
+        <translation>Kreisformtest in der YZ-Ebene (CSV y_cmd_mm,z_cmd_mm,y_meas_mm,z_meas_mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Circular test in the ZX plane (CSV z_cmd_mm,x_cmd_mm,z_meas_mm,x_meas_mm)</source>
+        <translation>Kreisformtest in der ZX-Ebene (CSV z_cmd_mm,x_cmd_mm,z_meas_mm,x_meas_mm)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Save &amp;DFQ…</source>
+        <translation>DF&amp;Q speichern…</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>&amp;Actuators</source>
         <translation>&amp;Antriebe</translation>
     </message>
@@ -1589,7 +1669,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Kompensieren</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+26"/>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 (not in the project)</source>
+        <translation>%1 (nicht im Projekt)</translation>
+    </message>
+    <message>
+        <location line="+58"/>
         <source>The kinematics study&apos;s settings are invalid: %1</source>
         <translation>Die Einstellungen der Kinematik-Studie sind ungültig: %1</translation>
     </message>
@@ -1739,7 +1829,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Bahn (XY)</translation>
     </message>
     <message>
-        <location line="-106"/>
+        <location line="+81"/>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: choose the edges machined along X and along Y above (feature series, CSV position_mm,deviation_mm in mm, e.g. made by metrofit-cli simulate edge).</source>
+        <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt;: Wählen Sie oben die entlang X und entlang Y bearbeiteten Kanten (Merkmalsreihen, CSV position_mm,deviation_mm in mm, z. B. erzeugt mit metrofit-cli simulate edge).</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>&lt;b&gt;Three axes&lt;/b&gt;: choose the circular tests in the XY, YZ and ZX planes above (made e.g. by metrofit-cli simulate circular --plane yz).</source>
+        <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Wählen Sie oben die Kreisformtests in den Ebenen XY, YZ und ZX (z. B. erzeugt mit metrofit-cli simulate circular --plane yz).</translation>
+    </message>
+    <message>
+        <location line="-223"/>
         <location line="+107"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
@@ -1836,12 +1936,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die aus dem Kreisformtest identifizierte Maschine (eine unabhängige Schätzung) auf dem Nennkreis und auf den aus SPC abgeleiteten Sollwerten: größter Abstand von den Nennpunkten</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: the kinematics study names no edges. Set &quot;from_spc&quot;: {&quot;x_dataset&quot;, &quot;y_dataset&quot;} (CSV position_mm,deviation_mm, e.g. made by metrofit-cli simulate edge) in the project&apos;s kinematics study.</source>
-        <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt;: Die Kinematikstudie nennt keine Kanten. Setzen Sie &quot;from_spc&quot;: {&quot;x_dataset&quot;, &quot;y_dataset&quot;} (CSV position_mm,deviation_mm, z. B. erzeugt mit metrofit-cli simulate edge) in der Kinematikstudie des Projekts.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+10"/>
         <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: cannot derive the actuator errors:&lt;br&gt;%1</source>
         <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt;: Die Antriebsfehler können nicht abgeleitet werden:&lt;br&gt;%1</translation>
     </message>
@@ -1856,12 +1951,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>In der Ebene (u, v) bewegt sich der u-Antrieb entlang (cos a, sin a), der v-Antrieb entlang (−sin b, cos b); der Winkel zwischen ihnen ist 90° + (b − a)</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>&lt;b&gt;Three axes&lt;/b&gt;: the kinematics study names no plane tests. Set &quot;planes&quot;: {&quot;xy&quot;, &quot;yz&quot;, &quot;zx&quot;} (circular tests made e.g. by metrofit-cli simulate circular --plane yz) in the project&apos;s kinematics study.</source>
-        <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Die Kinematikstudie nennt keine Ebenentests. Setzen Sie &quot;planes&quot;: {&quot;xy&quot;, &quot;yz&quot;, &quot;zx&quot;} (Kreisformtests, z. B. erzeugt mit metrofit-cli simulate circular --plane yz) in der Kinematikstudie des Projekts.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+14"/>
         <source>&lt;b&gt;Three axes&lt;/b&gt;: cannot identify:&lt;br&gt;%1</source>
         <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Identifikation nicht möglich:&lt;br&gt;%1</translation>
     </message>
@@ -1926,7 +2016,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Größter |Sollwert − Nennpunkt|</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+12"/>
+        <source>Write the two edges&apos; deviations (mm) as a Q-DAS DFQ file, two characteristics</source>
+        <translation>Die Abweichungen (mm) der beiden Kanten als Q-DAS-DFQ-Datei schreiben, zwei Merkmale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose the edges machined along X and Y first</source>
+        <translation>Zuerst die entlang X und Y bearbeiteten Kanten wählen</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>Export compensated path as G-code</source>
         <translation>Kompensierte Bahn als G-Code exportieren</translation>
     </message>
@@ -1953,11 +2053,27 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="-3"/>
+        <location line="+30"/>
         <source>Q-DAS DFQ files (*.dfq);;All files (*)</source>
         <translation>Q-DAS-DFQ-Dateien (*.dfq);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-22"/>
+        <source>Choose the edges machined along X and Y first.</source>
+        <translation>Wählen Sie zuerst die entlang X und Y bearbeiteten Kanten.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Save the edges as Q-DAS DFQ</source>
+        <translation>Kanten als Q-DAS-DFQ speichern</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Save DFQ</source>
+        <translation>DFQ speichern</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Export compensated path as STEP-NC</source>
         <translation>Kompensierte Bahn als STEP-NC exportieren</translation>
     </message>
@@ -5228,7 +5344,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Module, summiert (verteilte Verzögerung)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>%1 with inputs %2, up to %3 %4</source>
         <translation>%1 mit den Eingängen %2, bis zu %3 %4</translation>
     </message>

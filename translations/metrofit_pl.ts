@@ -1434,7 +1434,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+152"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+155"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identyfikuj</translation>
     </message>
@@ -1575,7 +1575,87 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>RMS (µm)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>Choose the edge along X</source>
+        <translation>Wybór krawędzi wzdłuż X</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the edge along Y</source>
+        <translation>Wybór krawędzi wzdłuż Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the XY circular test</source>
+        <translation>Wybór testu kołowego XY</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the YZ circular test</source>
+        <translation>Wybór testu kołowego YZ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the ZX circular test</source>
+        <translation>Wybór testu kołowego ZX</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Edge along &amp;X:</source>
+        <translation>Kr&amp;awędź wzdłuż X:</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Edge along &amp;Y:</source>
+        <translation>K&amp;rawędź wzdłuż Y:</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>XY circular &amp;test:</source>
+        <translation>Test k&amp;ołowy XY:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y&amp;Z circular test:</source>
+        <translation>Test kołowy Y&amp;Z:</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ZX circ&amp;ular test:</source>
+        <translation>Test kołowy Z&amp;X:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The edge machined along X and measured (feature series, CSV position_mm,deviation_mm)</source>
+        <translation>Krawędź obrobiona wzdłuż X i zmierzona (seria cechy, CSV position_mm,deviation_mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The edge machined along Y and measured (feature series, CSV position_mm,deviation_mm)</source>
+        <translation>Krawędź obrobiona wzdłuż Y i zmierzona (seria cechy, CSV position_mm,deviation_mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Circular test in the XY plane (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm)</source>
+        <translation>Test kołowy w płaszczyźnie XY (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Circular test in the YZ plane (CSV y_cmd_mm,z_cmd_mm,y_meas_mm,z_meas_mm)</source>
+        <translation>Test kołowy w płaszczyźnie YZ (CSV y_cmd_mm,z_cmd_mm,y_meas_mm,z_meas_mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Circular test in the ZX plane (CSV z_cmd_mm,x_cmd_mm,z_meas_mm,x_meas_mm)</source>
+        <translation>Test kołowy w płaszczyźnie ZX (CSV z_cmd_mm,x_cmd_mm,z_meas_mm,x_meas_mm)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Save &amp;DFQ…</source>
+        <translation>Zapisz &amp;DFQ…</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>&amp;Actuators</source>
         <translation>&amp;Napędy</translation>
     </message>
@@ -1590,7 +1670,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Kompensuj</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+26"/>
+        <source>(none)</source>
+        <translation>(brak)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 (not in the project)</source>
+        <translation>%1 (nie ma w projekcie)</translation>
+    </message>
+    <message>
+        <location line="+58"/>
         <source>The kinematics study&apos;s settings are invalid: %1</source>
         <translation>Ustawienia badania kinematyki są nieprawidłowe: %1</translation>
     </message>
@@ -1741,7 +1831,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Tor (XY)</translation>
     </message>
     <message>
-        <location line="-106"/>
+        <location line="+81"/>
+        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: choose the edges machined along X and along Y above (feature series, CSV position_mm,deviation_mm in mm, e.g. made by metrofit-cli simulate edge).</source>
+        <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt;: wybierz powyżej krawędzie obrobione wzdłuż X i wzdłuż Y (serie cech, CSV position_mm,deviation_mm w mm, np. utworzone przez metrofit-cli simulate edge).</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>&lt;b&gt;Three axes&lt;/b&gt;: choose the circular tests in the XY, YZ and ZX planes above (made e.g. by metrofit-cli simulate circular --plane yz).</source>
+        <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: wybierz powyżej testy kołowe w płaszczyznach XY, YZ i ZX (utworzone np. przez metrofit-cli simulate circular --plane yz).</translation>
+    </message>
+    <message>
+        <location line="-223"/>
         <location line="+107"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
@@ -1839,12 +1939,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Maszyna zidentyfikowana z testu kołowego (niezależna estymacja) na okręgu nominalnym i na wartościach zadanych wyznaczonych z SPC: największa odległość od punktów nominalnych</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: the kinematics study names no edges. Set &quot;from_spc&quot;: {&quot;x_dataset&quot;, &quot;y_dataset&quot;} (CSV position_mm,deviation_mm, e.g. made by metrofit-cli simulate edge) in the project&apos;s kinematics study.</source>
-        <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt;: studium kinematyki nie wskazuje krawędzi. Ustaw &quot;from_spc&quot;: {&quot;x_dataset&quot;, &quot;y_dataset&quot;} (CSV position_mm,deviation_mm, np. z metrofit-cli simulate edge) w studium kinematyki projektu.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+10"/>
         <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: cannot derive the actuator errors:&lt;br&gt;%1</source>
         <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt;: nie można wyznaczyć błędów napędów:&lt;br&gt;%1</translation>
     </message>
@@ -1859,12 +1954,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>W płaszczyźnie (u, v) napęd u porusza się wzdłuż (cos a, sin a), napęd v wzdłuż (−sin b, cos b); kąt między nimi wynosi 90° + (b − a)</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>&lt;b&gt;Three axes&lt;/b&gt;: the kinematics study names no plane tests. Set &quot;planes&quot;: {&quot;xy&quot;, &quot;yz&quot;, &quot;zx&quot;} (circular tests made e.g. by metrofit-cli simulate circular --plane yz) in the project&apos;s kinematics study.</source>
-        <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: studium kinematyki nie wskazuje testów w płaszczyznach. Ustaw &quot;planes&quot;: {&quot;xy&quot;, &quot;yz&quot;, &quot;zx&quot;} (testy kołowe, np. z metrofit-cli simulate circular --plane yz) w studium kinematyki projektu.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+14"/>
         <source>&lt;b&gt;Three axes&lt;/b&gt;: cannot identify:&lt;br&gt;%1</source>
         <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: identyfikacja niemożliwa:&lt;br&gt;%1</translation>
     </message>
@@ -1929,7 +2019,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Największa |wartość zadana − punkt nominalny|</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+12"/>
+        <source>Write the two edges&apos; deviations (mm) as a Q-DAS DFQ file, two characteristics</source>
+        <translation>Zapisz odchyłki (mm) obu krawędzi jako plik Q-DAS DFQ, dwie cechy</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose the edges machined along X and Y first</source>
+        <translation>Najpierw wybierz krawędzie obrobione wzdłuż X i Y</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>Export compensated path as G-code</source>
         <translation>Eksport skompensowanego toru jako G-code</translation>
     </message>
@@ -1956,11 +2056,27 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="-3"/>
+        <location line="+30"/>
         <source>Q-DAS DFQ files (*.dfq);;All files (*)</source>
         <translation>Pliki Q-DAS DFQ (*.dfq);;Wszystkie pliki (*)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-22"/>
+        <source>Choose the edges machined along X and Y first.</source>
+        <translation>Najpierw wybierz krawędzie obrobione wzdłuż X i Y.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Save the edges as Q-DAS DFQ</source>
+        <translation>Zapisz krawędzie jako Q-DAS DFQ</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Save DFQ</source>
+        <translation>Zapisz DFQ</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Export compensated path as STEP-NC</source>
         <translation>Eksport skompensowanego toru jako STEP-NC</translation>
     </message>
@@ -5238,7 +5354,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>moduły, zsumowane (rozłożone opóźnienie)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>%1 with inputs %2, up to %3 %4</source>
         <translation>%1 z wejściami %2, do %3 %4</translation>
     </message>

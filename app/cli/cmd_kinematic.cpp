@@ -48,7 +48,6 @@
 #include "core/common/run.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
-#include "core/io/dfq.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/kinematics/cartesian_model.h"
@@ -235,26 +234,6 @@ struct FromSpcArgs {
   std::string path, references, out, dfq;
 };
 
-/// The two edges' deviations as two characteristics of a Q-DAS DFQ file (core/io/dfq.h).
-std::string edgesDfq(const FromSpcArgs& a, const AxisFeatureSeries& xf, const AxisFeatureSeries& yf) {
-  DfqPart part;
-  part.number = "from-spc";
-  part.description = "Edges machined along X (" + std::filesystem::path(a.xData).filename().string() +
-                     ") and along Y (" + std::filesystem::path(a.yData).filename().string() + ")";
-  const AxisFeatureSeries* series[2] = {&xf, &yf};
-  const char* names[2] = {"X edge", "Y edge"};
-  for (int i = 0; i < 2; ++i) {
-    DfqCharacteristic c;
-    c.number = std::string(names[i]) + " " + a.deviationColumn;
-    c.description = std::string(names[i]) + ": deviation across the axis (measured - nominal)";
-    c.nominal = 0.0;
-    c.unit = "mm";
-    c.values = series[i]->deviationMm;
-    part.characteristics.push_back(std::move(c));
-  }
-  return writeDfq(part);
-}
-
 int runFromSpc(const FromSpcArgs& a) {
   if (a.references.empty() != a.path.empty()) {
     throw ValidationError(ErrorContext{{}, 0, 0, a.path.empty() ? "--path" : "--references"},
@@ -289,7 +268,10 @@ int runFromSpc(const FromSpcArgs& a) {
     j["compensation"]["references"] = a.references;
     j["compensation"]["largest_correction_mm"] = largest;
   }
-  const std::string dfq = a.dfq.empty() ? std::string() : edgesDfq(a, xf, yf);
+  const std::string dfq =
+      a.dfq.empty() ? std::string()
+                    : edgesDfq(xf, yf, a.deviationColumn, std::filesystem::path(a.xData).filename().string(),
+                               std::filesystem::path(a.yData).filename().string());
   if (!a.references.empty()) writeFileAtomic(a.references, refs);
   if (!a.dfq.empty()) writeFileAtomic(a.dfq, dfq);
   writeResult(a.out, dumpJson(j));

@@ -22,6 +22,9 @@
 
 #include <algorithm>
 #include <exception>
+#include <iterator>
+
+#include <nlohmann/json.hpp>
 
 #include "app/gui/notesedit.h"
 #include "core/diagnose/applied_setup_matching.h"
@@ -252,10 +255,75 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
                               {tr("plane"), tr("u axis angle a (°)"), tr("v axis angle b (°)"),
                                tr("squareness b − a (°)"), tr("± std. error (°)"), tr("RMS (µm)")},
                               QStringLiteral("threeAxisTable"));
+  // The datasets of the chain and of the three-axis identification, chosen here (undoable edits of
+  // the study's settings; the study is computed again on the change).
+  const QStringList edgeKinds{QString::fromLatin1(dataset_kind::kFeatureSeries)};
+  const QStringList planeKinds{QString::fromLatin1(dataset_kind::kCircularTest),
+                               QString::fromLatin1(dataset_kind::kFeatureSeries)};
+  pickers_ = {
+      Picker{nullptr, QStringLiteral("/from_spc/x_dataset"), edgeKinds, tr("Choose the edge along X")},
+      Picker{nullptr, QStringLiteral("/from_spc/y_dataset"), edgeKinds, tr("Choose the edge along Y")},
+      Picker{nullptr, QStringLiteral("/planes/xy"), planeKinds, tr("Choose the XY circular test")},
+      Picker{nullptr, QStringLiteral("/planes/yz"), planeKinds, tr("Choose the YZ circular test")},
+      Picker{nullptr, QStringLiteral("/planes/zx"), planeKinds, tr("Choose the ZX circular test")}};
+  const QString pickerNames[5] = {QStringLiteral("edgeXCombo"), QStringLiteral("edgeYCombo"),
+                                  QStringLiteral("planeXyCombo"), QStringLiteral("planeYzCombo"),
+                                  QStringLiteral("planeZxCombo")};
+  const QString pickerLabels[5] = {tr("Edge along &X:"), tr("Edge along &Y:"), tr("XY circular &test:"),
+                                   tr("Y&Z circular test:"), tr("ZX circ&ular test:")};
+  const QString pickerTips[5] = {
+      tr("The edge machined along X and measured (feature series, CSV position_mm,deviation_mm)"),
+      tr("The edge machined along Y and measured (feature series, CSV position_mm,deviation_mm)"),
+      tr("Circular test in the XY plane (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm)"),
+      tr("Circular test in the YZ plane (CSV y_cmd_mm,z_cmd_mm,y_meas_mm,z_meas_mm)"),
+      tr("Circular test in the ZX plane (CSV z_cmd_mm,x_cmd_mm,z_meas_mm,x_meas_mm)")};
+  QHBoxLayout* pickerRows[2] = {new QHBoxLayout, new QHBoxLayout};
+  for (std::size_t i = 0; i < pickers_.size(); ++i) {
+    Picker& p = pickers_[i];
+    p.combo = new QComboBox(actuators);
+    p.combo->setObjectName(pickerNames[i]);
+    p.combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    p.combo->setMinimumContentsLength(12);
+    p.combo->setToolTip(pickerTips[i]);
+    auto* label = new QLabel(pickerLabels[i], actuators);
+    label->setBuddy(p.combo);
+    QHBoxLayout* row = pickerRows[i < 2 ? 0 : 1];
+    if (i != 0 && i != 2) row->addSpacing(12);
+    row->addWidget(label);
+    row->addWidget(p.combo);
+    connect(p.combo, &QComboBox::currentIndexChanged, this, [this, i](int index) {
+      if (index < 0) return;
+      const Picker& picker = pickers_[i];
+      const std::string id = picker.combo->currentData().toString().toStdString();
+      document_->endEditSequence();
+      document_->setStudyValue(QString::fromLatin1(study::kKinematics), picker.key,
+                               id.empty() ? nlohmann::json() : nlohmann::json(id), picker.undoText);
+      document_->endEditSequence();
+    });
+  }
+  edgesDfqButton_ = new QPushButton(tr("Save &DFQ…"), actuators);
+  edgesDfqButton_->setObjectName(QStringLiteral("edgesDfq"));
+  edgesDfqButton_->setEnabled(false);
+  connect(edgesDfqButton_, &QPushButton::clicked, this, &KinematicsPage::onExportEdgesDfq);
+  pickerRows[0]->addSpacing(12);
+  pickerRows[0]->addWidget(edgesDfqButton_);
+  pickerRows[0]->addStretch(1);
+  pickerRows[1]->addStretch(1);
+  actLayout->addLayout(pickerRows[0]);
   actLayout->addWidget(fromSpcLabel_);
   actLayout->addWidget(fromSpcTable_, 4);
+  actLayout->addLayout(pickerRows[1]);
   actLayout->addWidget(threeAxisLabel_);
   actLayout->addWidget(threeAxisTable_, 1);
+  // With both tables hidden (nothing chosen yet) the messages stay under their choosers and the space
+  // left goes below them.
+  for (QLabel* l : {fromSpcLabel_, threeAxisLabel_})
+    l->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
+  actLayout->addStretch(0);
+  // Tab order as shown: the edges, Save DFQ, their table, the plane tests, their table.
+  QWidget* const order[] = {pickers_[0].combo, pickers_[1].combo, edgesDfqButton_,   fromSpcTable_,
+                            pickers_[2].combo, pickers_[3].combo, pickers_[4].combo, threeAxisTable_};
+  for (std::size_t i = 0; i + 1 < std::size(order); ++i) QWidget::setTabOrder(order[i], order[i + 1]);
   tabs_->addTab(actuators, tr("&Actuators"));
   stack_->addWidget(tabs_);
   stack_->addWidget(message_);
@@ -314,7 +382,46 @@ void KinematicsPage::selectDataset(const QString& id) {
   if (index >= 0) combo_->setCurrentIndex(index);
 }
 
+void KinematicsPage::syncPickers() {
+  const Project& project = document_->project();
+  for (const Picker& p : pickers_) {
+    const nlohmann::json value = document_->studyValue(QString::fromLatin1(study::kKinematics), p.key);
+    const QString current = value.is_string() ? QString::fromStdString(value.get<std::string>()) : QString();
+    // (text, id, tooltip): none, the datasets of the picker's kinds, and the study's own choice when it
+    // is not among them (another kind, or not in the project: the study then says why it cannot use it).
+    std::vector<std::array<QString, 3>> items{{tr("(none)"), QString(), QString()}};
+    bool found = current.isEmpty();
+    for (const DatasetRef& d : project.datasets) {
+      if (!p.kinds.contains(QString::fromStdString(d.kind))) continue;
+      const QString id = QString::fromStdString(d.id);
+      items.push_back({id, id, QString::fromStdString(d.description)});
+      found = found || id == current;
+    }
+    if (!found) {
+      items.push_back(
+          {project.dataset(current.toStdString()) ? current : tr("%1 (not in the project)").arg(current),
+           current, QString()});
+    }
+    const QSignalBlocker blocker(p.combo);
+    bool same = p.combo->count() == static_cast<int>(items.size());
+    for (int i = 0; same && i < p.combo->count(); ++i) {
+      const auto& item = items[static_cast<std::size_t>(i)];
+      same = p.combo->itemText(i) == item[0] && p.combo->itemData(i).toString() == item[1] &&
+             p.combo->itemData(i, Qt::ToolTipRole).toString() == item[2];
+    }
+    if (!same) {
+      p.combo->clear();
+      for (const auto& item : items) {
+        p.combo->addItem(item[0], item[1]);
+        if (!item[2].isEmpty()) p.combo->setItemData(p.combo->count() - 1, item[2], Qt::ToolTipRole);
+      }
+    }
+    p.combo->setCurrentIndex(p.combo->findData(current));
+  }
+}
+
 void KinematicsPage::refresh() {
+  syncPickers();
   std::vector<DatasetRef> sets = circularTestDatasets(document_->project());
   const auto it = document_->project().studies.find(study::kKinematics);
   nlohmann::json settings = it != document_->project().studies.end() ? *it : nlohmann::json();
@@ -578,9 +685,9 @@ void KinematicsPage::showActuators() {
     fromSpcTable_->setVisible(false);
     fromSpcLabel_->setText(
         s.fromSpcError.empty()
-            ? tr("<b>From SPC to compensation</b>: the kinematics study names no edges. Set \"from_spc\": "
-                 "{\"x_dataset\", \"y_dataset\"} (CSV position_mm,deviation_mm, e.g. made by metrofit-cli "
-                 "simulate edge) in the project's kinematics study.")
+            ? tr("<b>From SPC to compensation</b>: choose the edges machined along X and along Y above "
+                 "(feature series, CSV position_mm,deviation_mm in mm, e.g. made by metrofit-cli simulate "
+                 "edge).")
             : tr("<b>From SPC to compensation</b>: cannot derive the actuator errors:<br>%1")
                   .arg(QString::fromStdString(s.fromSpcError).toHtmlEscaped()));
   }
@@ -606,13 +713,16 @@ void KinematicsPage::showActuators() {
              "cos b); the angle between them is 90° + (b − a)"));
     }
     fitRowsToLabels(threeAxisTable_);
+    // Its three rows in full, without a scroll bar (the from-SPC table above takes what is left).
+    int height = threeAxisTable_->horizontalHeader()->sizeHint().height() + 2 * threeAxisTable_->frameWidth();
+    for (int r = 0; r < threeAxisTable_->rowCount(); ++r) height += threeAxisTable_->rowHeight(r);
+    threeAxisTable_->setMinimumHeight(height);
   } else {
     threeAxisTable_->setVisible(false);
     threeAxisLabel_->setText(
         s.threeAxisError.empty()
-            ? tr("<b>Three axes</b>: the kinematics study names no plane tests. Set \"planes\": {\"xy\", "
-                 "\"yz\", \"zx\"} (circular tests made e.g. by metrofit-cli simulate circular --plane yz) in "
-                 "the project's kinematics study.")
+            ? tr("<b>Three axes</b>: choose the circular tests in the XY, YZ and ZX planes above (made "
+                 "e.g. by metrofit-cli simulate circular --plane yz).")
             : tr("<b>Three axes</b>: cannot identify:<br>%1")
                   .arg(QString::fromStdString(s.threeAxisError).toHtmlEscaped()));
   }
@@ -669,6 +779,11 @@ void KinematicsPage::updateButtons() {
   compensateButton_->setEnabled(ok);
   gcodeButton_->setEnabled(ok);
   stepNcButton_->setEnabled(ok);
+  edgesDfqButton_->setEnabled(ok && study_->fromSpc.has_value());
+  edgesDfqButton_->setToolTip(ok && study_->fromSpc
+                                  ? tr("Write the two edges' deviations (mm) as a Q-DAS DFQ file, two "
+                                       "characteristics")
+                                  : tr("Choose the edges machined along X and Y first"));
 }
 
 void KinematicsPage::showView(const QString& view) {
@@ -762,6 +877,36 @@ void KinematicsPage::onExportSpcDfq() {
   if (file.isEmpty()) return;
   QString error;
   if (!exportSpcDfq(file, &error)) QMessageBox::warning(this, tr("Export Q-DAS DFQ"), error);
+}
+
+bool KinematicsPage::exportEdgesDfq(const QString& path, QString* error) {
+  if (!study_ || !study_->fromSpc || !study_->settings.fromSpc || study_->fromSpcEdges.size() != 2) {
+    if (error) *error = tr("Choose the edges machined along X and Y first.");
+    return false;
+  }
+  try {
+    const AxisFeatureSeries& x = study_->fromSpcEdges[0];
+    const AxisFeatureSeries& y = study_->fromSpcEdges[1];
+    const auto fileName = [](const AxisFeatureSeries& s) {
+      return QFileInfo(QString::fromStdString(s.source)).fileName().toStdString();
+    };
+    writeFileAtomic(path.toStdString(),
+                    edgesDfq(x, y, study_->settings.fromSpc->deviationColumn, fileName(x), fileName(y)));
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
+  return true;
+}
+
+void KinematicsPage::onExportEdgesDfq() {
+  const QString dir = QFileInfo(document_->fileName()).absolutePath();
+  const QString file = QFileDialog::getSaveFileName(this, tr("Save the edges as Q-DAS DFQ"),
+                                                    QDir(dir).filePath(QStringLiteral("edges.dfq")),
+                                                    tr("Q-DAS DFQ files (*.dfq);;All files (*)"));
+  if (file.isEmpty()) return;
+  QString error;
+  if (!exportEdgesDfq(file, &error)) QMessageBox::warning(this, tr("Save DFQ"), error);
 }
 
 void KinematicsPage::onExportStepNc() {

@@ -6,11 +6,16 @@
 // tables), "spc" (X-bar / R charts, histogram, indices of the study's feature series) and
 // "actuators": the paper's chain from the SPC regression offset angles to actuator errors and their
 // compensation (studies.kinematics.from_spc), and the three-axis errors from circular tests in XY,
-// YZ and ZX (studies.kinematics.planes).
+// YZ and ZX (studies.kinematics.planes). The actuators view chooses those datasets (the edges among the
+// feature series, the plane tests among the circular tests and feature series, or none): a choice is an
+// undoable edit of the study setting, and the view shows the study computed again; "Save DFQ…" writes
+// the two edges as `metrofit-cli kinematic from-spc --dfq` does.
 // Effects applied on the diagnosis page (studies.diagnosis.kinematic.applied) are part of the model
 // (kinematic_study.h): a line names them, and Apply / undo identifies again.
+#include <QStringList>
 #include <QWidget>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -53,6 +58,15 @@ class KinematicsPage : public QWidget {
   /// when the study has no SPC series or core refuses.
   bool exportSpcDfq(const QString& path, QString* error = nullptr);
   QPushButton* spcDfqButton() const { return spcDfqButton_; }
+  /// Writes the from-SPC edges' deviations as a Q-DAS DFQ file (atomically), the file `metrofit-cli
+  /// kinematic from-spc --dfq` writes for the same edges. False with `error` when the chain has no result.
+  bool exportEdgesDfq(const QString& path, QString* error = nullptr);
+  QPushButton* edgesDfqButton() const { return edgesDfqButton_; }
+  /// The actuators view's dataset choosers (item data: the dataset id, "" for none): the edge along X
+  /// (axis 0) or Y (axis 1) of studies.kinematics.from_spc, the circular test of a plane of
+  /// studies.kinematics.planes.
+  QComboBox* edgeCombo(int axis) const { return pickers_[static_cast<std::size_t>(axis)].combo; }
+  QComboBox* planeCombo(TestPlane plane) const { return pickers_[2 + static_cast<std::size_t>(plane)].combo; }
 
   void selectDataset(const QString& id);
   QString currentDataset() const;
@@ -96,7 +110,18 @@ class KinematicsPage : public QWidget {
   void onExportGcode();
   void onExportStepNc();
   void onExportSpcDfq();
+  void onExportEdgesDfq();
   void updateButtons();
+  /// Puts the dataset choosers on the datasets and settings of the project (signals blocked).
+  void syncPickers();
+
+  /// A dataset chooser of the actuators view and the study setting it edits.
+  struct Picker {
+    QComboBox* combo = nullptr;
+    QString key;        ///< JSON pointer in the kinematics study: "/from_spc/x_dataset", "/planes/xy", ...
+    QStringList kinds;  ///< the dataset kinds it offers
+    QString undoText;
+  };
 
   ProjectDocument* document_;
   QComboBox* combo_;
@@ -122,6 +147,8 @@ class KinematicsPage : public QWidget {
   QPushButton* gcodeButton_;
   QPushButton* stepNcButton_;
   QPushButton* spcDfqButton_ = nullptr;
+  QPushButton* edgesDfqButton_ = nullptr;
+  std::array<Picker, 5> pickers_;  ///< edge X, edge Y, planes XY, YZ, ZX
   QWidget* spcTab_ = nullptr;
   std::optional<KinematicStudyData> study_;
   std::optional<CompensationPreview> compensation_;

@@ -3,11 +3,13 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <utility>
 
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
 #include "core/common/run.h"
+#include "core/io/dfq.h"
 
 namespace metrofit {
 namespace {
@@ -188,6 +190,25 @@ nlohmann::json spcActuatorResultToJson(const SpcActuatorResult& r, const AxisFea
       "P = origin + x_cmd (cos a, sin a) + y_cmd (-sin b, cos b) (IEEE Access kinematic compensation paper, "
       "Eq. 9, compensation Eq. 15)";
   return j;
+}
+
+std::string edgesDfq(const AxisFeatureSeries& xFeature, const AxisFeatureSeries& yFeature,
+                     const std::string& deviationColumn, const std::string& xName, const std::string& yName) {
+  DfqPart part;
+  part.number = "from-spc";
+  part.description = "Edges machined along X (" + xName + ") and along Y (" + yName + ")";
+  const AxisFeatureSeries* series[2] = {&xFeature, &yFeature};
+  const char* names[2] = {"X edge", "Y edge"};
+  for (int i = 0; i < 2; ++i) {
+    DfqCharacteristic c;
+    c.number = std::string(names[i]) + " " + deviationColumn;
+    c.description = std::string(names[i]) + ": deviation across the axis (measured - nominal)";
+    c.nominal = 0.0;
+    c.unit = "mm";
+    c.values = series[i]->deviationMm;
+    part.characteristics.push_back(std::move(c));
+  }
+  return writeDfq(part);
 }
 
 }  // namespace metrofit

@@ -114,4 +114,11 @@ SpcActuatorResult actuatorErrorsFromSpc(const AxisFeatureSeries& xFeature, const
 nlohmann::json spcActuatorResultToJson(const SpcActuatorResult& result, const AxisFeatureSeries& xFeature,
                                        const AxisFeatureSeries& yFeature);
 
+/// The two edges' deviations as a Q-DAS DFQ file (core/io/dfq.h): part "from-spc" described as "Edges
+/// machined along X (<xName>) and along Y (<yName>)", two characteristics "X edge <deviationColumn>" and
+/// "Y edge <deviationColumn>" (nominal 0, unit mm), the values in series order. What `metrofit-cli
+/// kinematic from-spc --dfq` and the kinematics page's Save DFQ write.
+std::string edgesDfq(const AxisFeatureSeries& xFeature, const AxisFeatureSeries& yFeature,
+                     const std::string& deviationColumn, const std::string& xName, const std::string& yName);
+
 }  // namespace metrofit

@@ -1,6 +1,7 @@
 #include "core/study/kinematic_study.h"
 
 #include <algorithm>
+#include <cctype>
 #include <stdexcept>
 
 #include "core/common/error.h"
@@ -11,6 +12,12 @@
 namespace metrofit {
 
 namespace {
+/// "xy" -> "XY".
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
 /// The "subgroup" of an SPC block (default: the options' own), checked against the chart's range
 /// with the field named.
 int subgroupSetting(const JsonReader& block, int defaultSize) {
@@ -80,8 +87,10 @@ KinematicStudySettings kinematicStudySettings(const Project& project) {
   if (study.has("from_spc")) {
     const JsonReader f = study.object("from_spc");
     KinematicFromSpcSettings k;
-    k.xDataset = f.string("x_dataset");
-    k.yDataset = f.string("y_dataset");
+    // Each edge is optional here (the page chooses them one at a time); loadKinematicStudy says which
+    // one is missing.
+    k.xDataset = f.string("x_dataset", "");
+    k.yDataset = f.string("y_dataset", "");
     k.positionColumn = f.string("position_column", k.positionColumn);
     k.deviationColumn = f.string("deviation_column", k.deviationColumn);
     k.xNominalY = f.number("x_nominal_y", 0.0);
@@ -96,7 +105,7 @@ KinematicStudySettings kinematicStudySettings(const Project& project) {
     const JsonReader p = study.object("planes");
     std::array<std::string, 3> ids;
     for (const TestPlane plane : kTestPlanes)
-      ids[static_cast<std::size_t>(plane)] = p.string(planeName(plane));
+      ids[static_cast<std::size_t>(plane)] = p.string(planeName(plane), "");
     s.planes = ids;
   }
   return s;
@@ -173,12 +182,22 @@ KinematicStudyData loadKinematicStudy(const Project& project,
       d.spcError = e.what();
     }
   }
-  if (d.settings.fromSpc) {
+  if (d.settings.fromSpc &&
+      (!d.settings.fromSpc->xDataset.empty() || !d.settings.fromSpc->yDataset.empty())) {
     const KinematicFromSpcSettings& k = *d.settings.fromSpc;
     try {
       AxisFeatureSeries series[2];
       const std::string ids[2] = {k.xDataset, k.yDataset};
       for (int i = 0; i < 2; ++i) {
+        if (ids[i].empty()) {
+          throw ValidationError(ErrorContext{{},
+                                             0,
+                                             0,
+                                             std::string("studies.") + study::kKinematics + ".from_spc." +
+                                                 (i == 0 ? "x_dataset" : "y_dataset")},
+                                i == 0 ? "missing: choose the edge machined along X"
+                                       : "missing: choose the edge machined along Y");
+        }
         const DatasetRef* ref = project.dataset(ids[i]);
         if (ref == nullptr) {
           throw ValidationError(ErrorContext{{},
@@ -188,7 +207,8 @@ KinematicStudyData loadKinematicStudy(const Project& project,
                                                  (i == 0 ? "x_dataset" : "y_dataset")},
                                 "names the dataset '" + ids[i] + "', which the project does not have");
         }
-        series[i] = axisFeatureFromCsv(readFeatureTable(resolve(*ref)), k.positionColumn, k.deviationColumn);
+        series[i] = axisFeatureFromCsv(readFeatureTable(resolve(*ref), ref->csv), k.positionColumn,
+                                       k.deviationColumn);
       }
       series[0].nominalCrossMm = k.xNominalY;
       series[1].nominalCrossMm = k.yNominalX;
@@ -203,15 +223,23 @@ KinematicStudyData loadKinematicStudy(const Project& project,
         d.fromSpcModelAfterMm = std::max(d.fromSpcModelAfterMm, (model.forward(refs[i]) - nominal[i]).norm());
       }
       d.fromSpc = std::move(r);
+      d.fromSpcEdges = {std::move(series[0]), std::move(series[1])};
     } catch (const std::exception& e) {
       d.fromSpcError = e.what();
     }
   }
-  if (d.settings.planes) {
+  if (d.settings.planes && std::any_of(d.settings.planes->begin(), d.settings.planes->end(),
+                                       [](const std::string& id) { return !id.empty(); })) {
     try {
       std::array<MeasuredPath, 3> tests;
       for (const TestPlane plane : kTestPlanes) {
         const std::string& id = (*d.settings.planes)[static_cast<std::size_t>(plane)];
+        if (id.empty()) {
+          throw ValidationError(
+              ErrorContext{
+                  {}, 0, 0, std::string("studies.") + study::kKinematics + ".planes." + planeName(plane)},
+              std::string("missing: choose the circular test in the ") + upper(planeName(plane)) + " plane");
+        }
         const DatasetRef* ref = project.dataset(id);
         if (ref == nullptr) {
           throw ValidationError(
@@ -219,7 +247,7 @@ KinematicStudyData loadKinematicStudy(const Project& project,
                   {}, 0, 0, std::string("studies.") + study::kKinematics + ".planes." + planeName(plane)},
               "names the dataset '" + id + "', which the project does not have");
         }
-        tests[static_cast<std::size_t>(plane)] = readPlanePath(resolve(*ref), plane);
+        tests[static_cast<std::size_t>(plane)] = readPlanePath(resolve(*ref), plane, ref->csv);
       }
       Identify3Result r = identifyActuatorErrors3(tests);
       if (r.run.termination == Termination::Failed) throw std::runtime_error(r.run.message);

@@ -13,10 +13,12 @@
 //                "subgroup": 5, "coverage": 2}
 //        the kinematic-compensation paper's chain from SPC to compensation (core/kinematics/spc_actuator.h):
 //        the edges machined along X and Y, their regression offset angles -> actuator errors -> Eq. 15
-//        references for the study's nominal circle
+//        references for the study's nominal circle. Either edge may be missing (the page chooses them
+//        one at a time): the chain then reports the missing one as its error; without both it is not run
 //   "planes": {"xy": "<id>", "yz": "<id>", "zx": "<id>"}
 //        circular tests in three planes for the three-axis identification
-//        (core/kinematics/identification3.h; YZ / ZX files have the plane's columns)
+//        (core/kinematics/identification3.h; YZ / ZX files have the plane's columns); a missing plane
+//        is the identification's error, none at all: not run
 // A wrong type or value is a ValidationError naming studies/kinematics/<key>.
 //
 // Applied effects: the effects added with Apply on the diagnosis page
@@ -90,6 +92,7 @@ struct KinematicStudyData {
   /// Eq. 15 references for the study's nominal circle (the circular test's commands) judged by the circular
   /// test's identified model, an independent estimate of the same machine.
   std::optional<SpcActuatorResult> fromSpc;
+  std::vector<AxisFeatureSeries> fromSpcEdges;  ///< the X and Y edges as read (with fromSpc)
   std::string fromSpcError;
   double fromSpcLargestCorrectionMm = 0.0;  ///< max |reference - nominal|
   double fromSpcModelBeforeMm = 0.0;        ///< identified model on the nominal commands: max |P - nominal|

@@ -12,6 +12,9 @@
 // matching targets and the SDSS plug plates against their own fits, bench_matching.cpp). Later issues add
 // --thermal, --diagnose, --real. --diagnose --open [--seeds N] [--quick] [--ratio R] [--domains
 // thermal,setup]: the open-world detection study of the closed loop (bench_open_world.h).
+// --kinematic-chain [--seeds N] (default 20): the kinematic-compensation paper's chain from SPC edges to
+// compensation and the three-plane identification on simulated machines with known errors, against the
+// circular-test identification and three separate 2-axis fits (bench_kinematic_chain.h).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -28,6 +31,7 @@
 #include "bench_diagnose_scale.h"
 #include "bench_diagnose_sm.h"
 #include "bench_kinematic.h"
+#include "bench_kinematic_chain.h"
 #include "bench_matching.h"
 #include "bench_open_world.h"
 #include "bench_optim.h"
@@ -119,6 +123,7 @@ int main(int argc, char** argv) {
   bool io = false, rng = false, optimizers = false, matching = false, realMatching = false;
   bool thermal = false, realThermal = false;    // --thermal, --real-thermal (bench_thermal.cpp)
   bool kinematic = false;                       // --kinematic (bench_kinematic.cpp)
+  bool kinematicChain = false;                  // --kinematic-chain (bench_kinematic_chain.cpp)
   bool diagnose = false, realDiagnose = false;  // --diagnose, --real-diagnose (bench_diagnose.cpp)
   bool open = false;                            // --diagnose --open (bench_open_world.cpp)
   metrofit::bench::OpenBenchOptions openOptions;
@@ -143,6 +148,8 @@ int main(int argc, char** argv) {
       setupBench = true;
     else if (a == "--kinematic")
       kinematic = true;
+    else if (a == "--kinematic-chain")
+      kinematicChain = true;
     else if (a == "--matching")
       matching = true;
     else if (a == "--real-matching")
@@ -211,7 +218,8 @@ int main(int argc, char** argv) {
       std::printf(
           "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick] [--only PROBLEMS] [--methods "
           "METHODS]] [--matching] [--real-matching] "
-          "[--thermal] [--real-thermal] [--kinematic] [--setup] [--diagnose [--quick]] [--diagnose --open "
+          "[--thermal] [--real-thermal] [--kinematic] [--kinematic-chain [--seeds N]] [--setup] [--diagnose "
+          "[--quick]] [--diagnose --open "
           "[--seeds N] [--quick] [--domains LIST]] [--real-diagnose] [--diagnose-scale [ROWS,...]] "
           "[--repeat N] "
           "[--json OUT] "
@@ -223,7 +231,7 @@ int main(int argc, char** argv) {
     }
   }
   if (!io && !rng && !optimizers && !matching && !realMatching && !thermal && !realThermal && !kinematic &&
-      !diagnose && !realDiagnose && !setupBench && scaleRows.empty())
+      !kinematicChain && !diagnose && !realDiagnose && !setupBench && scaleRows.empty())
     io = rng = optimizers = true;
   if (explicitSeeds > 0) openOptions.seeds = explicitSeeds;
   if (!openCase.empty()) {
@@ -246,6 +254,13 @@ int main(int argc, char** argv) {
     if (optimizers) result["optimizers"] = metrofit::bench::benchOptimizers(optimOptions);
     if (setupBench) result["setup"] = metrofit::bench::benchSetup(sourceDir, repeat);
     if (kinematic) result["kinematic"] = metrofit::bench::benchKinematic(repeat);
+    if (kinematicChain) {
+      // The paper's chain from SPC and the three-plane identification on simulated machines (default 20).
+      metrofit::bench::KinematicChainBenchOptions o;
+      if (explicitSeeds > 0) o.seeds = explicitSeeds;
+      o.repeat = repeat;
+      result["kinematic_chain"] = metrofit::bench::benchKinematicChain(o);
+    }
     // --matching: the matching targets (bench_matching.cpp); --real-matching: the SDSS plug plates in
     // ../shared/data/real/cmm-plugplate-sdss (not in the repository: no licence) against their own fits.
     if (matching) result["matching"] = metrofit::bench::benchMatching({});

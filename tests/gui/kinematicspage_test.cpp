@@ -7,21 +7,28 @@
 
 #include <cmath>
 
+#include <QComboBox>
+#include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QUndoStack>
 
+#include <array>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "app/gui/kinematicspage.h"
+#include "core/io/cmm_text_report.h"
 #include "core/io/json_util.h"
 #include "core/kinematics/part21.h"
 #include "qtapp.h"
@@ -375,10 +382,248 @@ TEST_F(KinematicsActuatorsTest, UnconfiguredStudySaysHowToConfigureIt) {
   KinematicsPage page(&doc);
   ASSERT_NE(page.study(), nullptr);
   EXPECT_TRUE(page.fromSpcTable()->isHidden());
-  EXPECT_TRUE(page.fromSpcLabel()->text().contains(QStringLiteral("from_spc")));
+  EXPECT_TRUE(page.fromSpcLabel()->text().contains(QStringLiteral("choose the edges")));
   EXPECT_TRUE(page.threeAxisTable()->isHidden());
   EXPECT_TRUE(page.threeAxisLabel()->text().contains(QStringLiteral("y_cmd_mm")))
       << page.threeAxisLabel()->text().toStdString();
+}
+
+/// The least-squares line d = c + s u through a CSV's position_mm / deviation_mm columns, written here
+/// from the textbook formula (s = Sud / Suu) with its own reader: the paper's regression line (Fig. 10).
+double leastSquaresSlope(const std::string& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "position_mm,deviation_mm") << file;
+  std::vector<double> u, d;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const auto comma = line.find(',');
+    u.push_back(std::stod(line.substr(0, comma)));
+    d.push_back(std::stod(line.substr(comma + 1)));
+  }
+  double mu = 0.0, md = 0.0;
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    mu += u[i];
+    md += d[i];
+  }
+  mu /= static_cast<double>(u.size());
+  md /= static_cast<double>(u.size());
+  double suu = 0.0, sud = 0.0;
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    suu += (u[i] - mu) * (u[i] - mu);
+    sud += (u[i] - mu) * (d[i] - md);
+  }
+  return sud / suu;
+}
+
+QStringList columnTexts(const QTableWidget* t, int column) {
+  QStringList out;
+  for (int r = 0; r < t->rowCount(); ++r)
+    out << (t->item(r, column) ? t->item(r, column)->text() : QString());
+  return out;
+}
+
+/// Chooses the dataset `id` in a combo as a user does (the change signal is not blocked).
+void choose(QComboBox* combo, const QString& id) {
+  const int index = combo->findData(id);
+  ASSERT_GE(index, 0) << id.toStdString();
+  combo->setCurrentIndex(index);
+}
+
+TEST_F(KinematicsActuatorsTest, PickersChooseTheDatasetsUndoablyAndTheTablesShowWhatCoreGives) {
+  // The study without the chain's settings, and an edge file without the deviation column.
+  const QDir d(dir_.path());
+  std::ofstream(d.filePath(QStringLiteral("bad_edge.csv")).toStdString())
+      << "position_mm,dev_um\n-100,1\n0,2\n100,3\n";
+  Project project = loadProject(projectPath_.toStdString());
+  project.studies["kinematics"].erase("from_spc");
+  project.studies["kinematics"].erase("planes");
+  project.datasets.push_back({"bad_edge", dataset_kind::kFeatureSeries, "bad_edge.csv", "", "", {}});
+  saveProject(project, projectPath_.toStdString());
+  doc_.load(projectPath_);
+  const QString kin = QStringLiteral("kinematics");
+
+  KinematicsPage page(&doc_);
+  page.resize(1150, 760);
+  page.showView(QStringLiteral("actuators"));
+  ASSERT_NE(page.study(), nullptr) << page.errorMessage().toStdString();
+  QComboBox* x = page.edgeCombo(0);
+  QComboBox* y = page.edgeCombo(1);
+  // Keyboard: every chooser has a label whose buddy it is (Alt + the label's letter).
+  for (QComboBox* c : {x, y, page.planeCombo(TestPlane::XY), page.planeCombo(TestPlane::YZ),
+                       page.planeCombo(TestPlane::ZX)}) {
+    bool buddy = false;
+    for (const QLabel* l : page.findChildren<QLabel*>()) buddy = buddy || l->buddy() == c;
+    EXPECT_TRUE(buddy) << c->objectName().toStdString();
+    EXPECT_NE(c->focusPolicy() & Qt::TabFocus, 0) << c->objectName().toStdString();
+  }
+  // Items: none, then the feature series (edges) or the circular tests and feature series (planes).
+  EXPECT_EQ(x->itemData(0).toString(), QString());
+  EXPECT_EQ(x->currentIndex(), 0);
+  EXPECT_GE(x->findData(QStringLiteral("edge_x")), 1);
+  EXPECT_GE(x->findData(QStringLiteral("bad_edge")), 1);
+  EXPECT_LT(x->findData(QStringLiteral("circular_demo")), 0);
+  EXPECT_GE(page.planeCombo(TestPlane::XY)->findData(QStringLiteral("circular_demo")), 1);
+  EXPECT_GE(page.planeCombo(TestPlane::YZ)->findData(QStringLiteral("plane_yz")), 1);
+  EXPECT_TRUE(page.fromSpcTable()->isHidden());
+  EXPECT_TRUE(page.fromSpcLabel()->text().contains(QStringLiteral("choose the edges")))
+      << page.fromSpcLabel()->text().toStdString();
+  EXPECT_FALSE(page.edgesDfqButton()->isEnabled());
+
+  // One edge: the setting is written, and the study says which edge is missing.
+  choose(x, QStringLiteral("edge_x"));
+  EXPECT_EQ(doc_.studyValue(kin, QStringLiteral("/from_spc/x_dataset")), "edge_x");
+  EXPECT_TRUE(page.fromSpcTable()->isHidden());
+  EXPECT_TRUE(page.fromSpcLabel()->text().contains(QStringLiteral(
+      "field 'studies.kinematics.from_spc.y_dataset': missing: choose the edge machined along Y")))
+      << page.fromSpcLabel()->text().toStdString();
+  choose(y, QStringLiteral("edge_y"));
+  EXPECT_EQ(doc_.studyValue(kin, QStringLiteral("/from_spc/y_dataset")), "edge_y");
+  EXPECT_EQ(page.tabs()->currentIndex(), 2);  // the view stays on the actuators
+
+  // The table equals core called directly on the same files ...
+  const std::string fx = d.filePath(QStringLiteral("edge_x.csv")).toStdString();
+  const std::string fy = d.filePath(QStringLiteral("edge_y.csv")).toStdString();
+  const AxisFeatureSeries sx = axisFeatureFromCsv(readFeatureTable(fx), "position_mm", "deviation_mm");
+  const AxisFeatureSeries sy = axisFeatureFromCsv(readFeatureTable(fy), "position_mm", "deviation_mm");
+  const SpcActuatorResult r = actuatorErrorsFromSpc(sx, sy);
+  QTableWidget* t = page.fromSpcTable();
+  ASSERT_FALSE(t->isHidden()) << page.fromSpcLabel()->text().toStdString();
+  ASSERT_EQ(t->rowCount(), 9);
+  EXPECT_EQ(t->item(0, 1)->text(), QString::number(r.x.line.angleDeg, 'f', 6));
+  EXPECT_EQ(t->item(1, 1)->text(), QString::number(r.y.line.angleDeg, 'f', 6));
+  EXPECT_EQ(t->item(2, 1)->text(), QString::number(r.errors.originMm.x() * 1000.0, 'f', 3));
+  EXPECT_EQ(t->item(3, 1)->text(), QString::number(r.errors.originMm.y() * 1000.0, 'f', 3));
+  EXPECT_EQ(t->item(4, 1)->text(), QString::number(r.errors.xAxisAngleDeg, 'f', 6));
+  EXPECT_EQ(t->item(5, 1)->text(), QString::number(r.errors.yAxisAngleDeg, 'f', 6));
+  EXPECT_EQ(t->item(6, 1)->text(), QString::number(r.errors.squarenessDeg(), 'f', 6));
+  // ... and the paper: the regression line's offset angle is atan(slope) (Fig. 10), the X actuator's
+  // angle a = atan(s_X), b = -atan(s_Y) (Eq. 9); slopes from the least-squares formula here.
+  const double slopeX = leastSquaresSlope(fx), slopeY = leastSquaresSlope(fy);
+  const double toDeg = 180.0 / M_PI;
+  EXPECT_NEAR(t->item(0, 1)->text().toDouble(), std::atan(slopeX) * toDeg, 5.1e-7);
+  EXPECT_NEAR(t->item(4, 1)->text().toDouble(), std::atan(slopeX) * toDeg, 5.1e-7);
+  EXPECT_NEAR(t->item(5, 1)->text().toDouble(), -std::atan(slopeY) * toDeg, 5.1e-7);
+  // The simulated machine's a = 0.01 deg, b = -0.02 deg: se of the angle ~7e-5 deg (0.5 um over 200 mm).
+  EXPECT_NEAR(t->item(4, 1)->text().toDouble(), 0.01, 4e-4);
+  EXPECT_NEAR(t->item(5, 1)->text().toDouble(), -0.02, 4e-4);
+
+  // Save DFQ writes what `metrofit-cli kinematic from-spc --dfq` writes for the same files.
+  ASSERT_TRUE(page.edgesDfqButton()->isEnabled());
+  const QString guiDfq = d.filePath(QStringLiteral("gui.dfq"));
+  QString error;
+  ASSERT_TRUE(page.exportEdgesDfq(guiDfq, &error)) << error.toStdString();
+  const std::string cliDfq = d.filePath(QStringLiteral("cli.dfq")).toStdString();
+  const std::string cmd = std::string("'") + METROFIT_CLI_EXECUTABLE + "' kinematic from-spc --x-data '" +
+                          fx + "' --y-data '" + fy + "' --dfq '" + cliDfq + "' --out /dev/null 2>/dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  EXPECT_EQ(test::readText(guiDfq.toStdString()), test::readText(cliDfq));
+  EXPECT_NE(test::readText(cliDfq).find("K2001/1 X edge deviation_mm"), std::string::npos);
+
+  // The three planes, one choice at a time.
+  EXPECT_TRUE(page.threeAxisTable()->isHidden());
+  choose(page.planeCombo(TestPlane::XY), QStringLiteral("plane_xy"));
+  choose(page.planeCombo(TestPlane::YZ), QStringLiteral("plane_yz"));
+  EXPECT_TRUE(page.threeAxisLabel()->text().contains(QStringLiteral(
+      "field 'studies.kinematics.planes.zx': missing: choose the circular test in the ZX plane")))
+      << page.threeAxisLabel()->text().toStdString();
+  choose(page.planeCombo(TestPlane::ZX), QStringLiteral("plane_zx"));
+  EXPECT_EQ(doc_.studyValue(kin, QStringLiteral("/planes")),
+            nlohmann::json({{"xy", "plane_xy"}, {"yz", "plane_yz"}, {"zx", "plane_zx"}}));
+  std::array<MeasuredPath, 3> tests;
+  for (const TestPlane p : kTestPlanes) {
+    tests[static_cast<std::size_t>(p)] = readPlanePath(
+        d.filePath(QStringLiteral("plane_%1.csv").arg(QLatin1String(planeName(p)))).toStdString(), p);
+  }
+  const Identify3Result r3 = identifyActuatorErrors3(tests);
+  QTableWidget* t3 = page.threeAxisTable();
+  ASSERT_FALSE(t3->isHidden()) << page.threeAxisLabel()->text().toStdString();
+  ASSERT_EQ(t3->rowCount(), 3);
+  const ActuatorErrors3 truth = machine3();
+  for (const TestPlane p : kTestPlanes) {
+    const int row = static_cast<int>(p);
+    const auto i = static_cast<std::size_t>(p);
+    EXPECT_EQ(t3->item(row, 1)->text(), QString::number(r3.errors.uAngleDeg[i], 'f', 6));
+    EXPECT_EQ(t3->item(row, 2)->text(), QString::number(r3.errors.vAngleDeg[i], 'f', 6));
+    EXPECT_EQ(t3->item(row, 3)->text(), QString::number(r3.errors.squarenessDeg(p), 'f', 6));
+    // The simulated machine's squareness (0.5 um noise on 720 points of R 100 mm: se ~ 3e-5 deg).
+    EXPECT_NEAR(t3->item(row, 3)->text().toDouble(), truth.squarenessDeg(p), 1.5e-4) << planeName(p);
+  }
+  const QStringList threeAxisTexts = columnTexts(t3, 3);
+  page.show();  // the rows fit their labels once the tables have their widths (queued)
+  QCoreApplication::processEvents();
+  QCoreApplication::processEvents();
+  save(page, "kinematics_actuator_pickers.png");
+  // The three-axis table shows its three rows without scrolling.
+  EXPECT_FALSE(t3->verticalScrollBar()->isVisible());
+
+  // Undo takes the choices back one at a time, the combos and the tables with them; redo again.
+  QUndoStack* stack = doc_.undoStack();
+  stack->undo();
+  EXPECT_EQ(page.planeCombo(TestPlane::ZX)->currentData().toString(), QString());
+  EXPECT_EQ(page.planeCombo(TestPlane::ZX)->currentText(), QStringLiteral("(none)"));
+  EXPECT_TRUE(doc_.studyValue(kin, QStringLiteral("/planes/zx")).is_null());
+  EXPECT_TRUE(page.threeAxisTable()->isHidden());
+  stack->undo();
+  stack->undo();
+  EXPECT_EQ(page.planeCombo(TestPlane::XY)->currentData().toString(), QString());
+  EXPECT_TRUE(page.threeAxisLabel()->text().contains(QStringLiteral("choose the circular tests")))
+      << page.threeAxisLabel()->text().toStdString();
+  stack->undo();  // the Y edge
+  EXPECT_EQ(y->currentData().toString(), QString());
+  EXPECT_TRUE(page.fromSpcTable()->isHidden());
+  for (int k = 0; k < 4; ++k) stack->redo();
+  EXPECT_EQ(y->currentData().toString(), QStringLiteral("edge_y"));
+  EXPECT_EQ(page.planeCombo(TestPlane::ZX)->currentData().toString(), QStringLiteral("plane_zx"));
+  EXPECT_FALSE(page.fromSpcTable()->isHidden());
+  EXPECT_EQ(page.fromSpcTable()->item(4, 1)->text(), QString::number(r.errors.xAxisAngleDeg, 'f', 6));
+  EXPECT_FALSE(page.threeAxisTable()->isHidden());
+  EXPECT_EQ(columnTexts(page.threeAxisTable(), 3), threeAxisTexts);
+
+  // A file without the deviation column: core's one-line message in the label, the table hidden.
+  std::string expected;
+  try {
+    axisFeatureFromCsv(readFeatureTable(d.filePath(QStringLiteral("bad_edge.csv")).toStdString()),
+                       "position_mm", "deviation_mm");
+  } catch (const std::exception& e) {
+    expected = e.what();
+  }
+  ASSERT_FALSE(expected.empty());
+  ASSERT_EQ(expected.find('\n'), std::string::npos) << expected;
+  choose(x, QStringLiteral("bad_edge"));
+  EXPECT_TRUE(page.fromSpcTable()->isHidden());
+  EXPECT_TRUE(page.fromSpcLabel()->text().contains(QString::fromStdString(expected).toHtmlEscaped()))
+      << page.fromSpcLabel()->text().toStdString() << "\nexpected: " << expected;
+  EXPECT_FALSE(page.edgesDfqButton()->isEnabled());
+  EXPECT_FALSE(page.threeAxisTable()->isHidden());  // the other study part is unaffected
+  QCoreApplication::processEvents();
+  save(page, "kinematics_actuator_pickers_bad_edge.png");
+  stack->undo();
+  EXPECT_EQ(x->currentData().toString(), QStringLiteral("edge_x"));
+  EXPECT_FALSE(page.fromSpcTable()->isHidden());
+
+  // Renaming a chosen dataset renames the setting; removing one removes it (the chooser goes back to
+  // none and the study says what is missing); undo brings both back.
+  EXPECT_EQ(doc_.datasetReferences(QStringLiteral("edge_y")),
+            QStringList{QStringLiteral("studies.kinematics.from_spc.y_dataset")});
+  EXPECT_EQ(doc_.datasetReferences(QStringLiteral("plane_yz")),
+            QStringList{QStringLiteral("studies.kinematics.planes.yz")});
+  doc_.renameDataset(QStringLiteral("edge_y"), QStringLiteral("kante_y"));
+  EXPECT_EQ(doc_.studyValue(kin, QStringLiteral("/from_spc/y_dataset")), "kante_y");
+  EXPECT_EQ(y->currentData().toString(), QStringLiteral("kante_y"));
+  EXPECT_FALSE(page.fromSpcTable()->isHidden());
+  doc_.removeDataset(QStringLiteral("plane_yz"));
+  EXPECT_TRUE(doc_.studyValue(kin, QStringLiteral("/planes/yz")).is_null());
+  EXPECT_EQ(page.planeCombo(TestPlane::YZ)->currentData().toString(), QString());
+  EXPECT_TRUE(
+      page.threeAxisLabel()->text().contains(QStringLiteral("choose the circular test in the YZ plane")))
+      << page.threeAxisLabel()->text().toStdString();
+  stack->undo();
+  stack->undo();
+  EXPECT_EQ(y->currentData().toString(), QStringLiteral("edge_y"));
+  EXPECT_EQ(page.planeCombo(TestPlane::YZ)->currentData().toString(), QStringLiteral("plane_yz"));
+  EXPECT_EQ(columnTexts(page.threeAxisTable(), 3), threeAxisTexts);
 }
 
 TEST_F(KinematicsActuatorsTest, ReportStatesTheChainAndTheThreeAxes) {

@@ -12,6 +12,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QLabel>
 #include <QLocale>
 #include <QProgressBar>
 #include <QPushButton>
@@ -208,6 +209,23 @@ TEST_P(MatchingTablesTest, KinematicsLabelsWrapInsteadOfBeingCut) {
             << "row " << r << " cut short: " << item->text().toStdString();
       }
     }
+    // The actuators view's dataset choosers: each label shown in full next to its combo box.
+    QMetaObject::invokeMethod(page, "showView", Q_ARG(QString, QStringLiteral("actuators")));
+    QTest::qWait(50);
+    for (const char* name : {"edgeXCombo", "edgeYCombo", "planeXyCombo", "planeYzCombo", "planeZxCombo"}) {
+      SCOPED_TRACE(name);
+      auto* combo = page->findChild<QComboBox*>(QString::fromLatin1(name));
+      ASSERT_NE(combo, nullptr);
+      EXPECT_TRUE(combo->isVisible());
+      const QLabel* label = nullptr;
+      for (const QLabel* l : page->findChildren<QLabel*>())
+        if (l->buddy() == combo) label = l;
+      ASSERT_NE(label, nullptr);
+      EXPECT_GE(label->width(), label->sizeHint().width()) << label->text().toStdString();
+      EXPECT_GE(combo->width(), combo->minimumSizeHint().width());
+    }
+    window.grab().save(QString::fromStdString(
+        (test::outDir() / ("kinematics-actuators-" + language.toStdString() + ".png")).string()));
   }
   QCoreApplication::removeTranslator(&translator);
 }

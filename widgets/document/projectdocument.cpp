@@ -75,16 +75,27 @@ std::optional<nlohmann::json> withValue(const std::optional<nlohmann::json>& stu
   return root;
 }
 
-/// Calls `visit(member, path)` for every "dataset" or "model" string member of `node` (at any depth).
+/// Whether the member `key` of an object that is the member `parentKey` names a dataset: "dataset",
+/// "model", a key ending in "_dataset" (the kinematics study's from_spc x_dataset / y_dataset) or a
+/// member of "planes" (its circular tests per plane).
+bool namesDataset(const std::string& parentKey, const std::string& key) {
+  const std::string suffix = "_dataset";
+  return key == "dataset" || key == "model" || parentKey == "planes" ||
+         (key.size() > suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0);
+}
+
+/// Calls `visit(member, path)` for every string member of `node` that names a dataset (namesDataset, at
+/// any depth).
 template <typename Json, typename Visit>
-void forEachDatasetMember(Json& node, const std::string& path, const Visit& visit) {
+void forEachDatasetMember(Json& node, const std::string& path, const Visit& visit,
+                          const std::string& nodeKey = {}) {
   if (node.is_object()) {
     for (auto it = node.begin(); it != node.end(); ++it) {
       const std::string child = path + "." + it.key();
-      if ((it.key() == "dataset" || it.key() == "model") && it.value().is_string()) {
+      if (namesDataset(nodeKey, it.key()) && it.value().is_string()) {
         visit(it.value(), child);
       } else {
-        forEachDatasetMember(it.value(), child, visit);
+        forEachDatasetMember(it.value(), child, visit, it.key());
       }
     }
   } else if (node.is_array()) {
@@ -93,14 +104,17 @@ void forEachDatasetMember(Json& node, const std::string& path, const Visit& visi
   }
 }
 
-/// Removes the "dataset" / "model" members naming `id` (at any depth).
-void eraseDatasetMembers(nlohmann::json& node, const std::string& id) {
+/// Removes the members naming `id` (namesDataset, at any depth).
+void eraseDatasetMembers(nlohmann::json& node, const std::string& id, const std::string& nodeKey = {}) {
   if (node.is_object()) {
-    for (const char* key : {"dataset", "model"}) {
-      const auto it = node.find(key);
-      if (it != node.end() && it->is_string() && it->get<std::string>() == id) node.erase(it);
+    for (auto it = node.begin(); it != node.end();) {
+      if (namesDataset(nodeKey, it.key()) && it->is_string() && it->get<std::string>() == id) {
+        it = node.erase(it);
+      } else {
+        eraseDatasetMembers(*it, id, it.key());
+        ++it;
+      }
     }
-    for (auto& [key, value] : node.items()) eraseDatasetMembers(value, id);
   } else if (node.is_array()) {
     for (auto& value : node) eraseDatasetMembers(value, id);
   }

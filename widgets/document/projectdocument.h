@@ -193,8 +193,10 @@ class ProjectDocument : public QObject {
   /// project without a file a file in the working directory (as datasetPath resolves them).
   QString projectPathForDatasets() const;
 
-  /// Study settings that name a dataset: every "dataset" or "model" member (at any depth of
-  /// `studies`) whose value is `id`, as "studies.thermal.dataset", "studies.kinematics.spc.dataset".
+  /// Study settings that name a dataset: every "dataset", "model" or "*_dataset" member and every member
+  /// of a "planes" object (at any depth of `studies`) whose value is `id`, as "studies.thermal.dataset",
+  /// "studies.kinematics.spc.dataset", "studies.kinematics.from_spc.x_dataset",
+  /// "studies.kinematics.planes.yz".
   QStringList datasetReferences(const QString& id) const;
   /// Adds a dataset (checked by core's addDataset, core/project/datasets.h) through the undo stack
   /// ("Import dataset <id>"). ValidationError when the id is empty or already in the project.
