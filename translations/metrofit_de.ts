@@ -1654,7 +1654,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>DF&amp;Q speichern…</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+23"/>
         <source>&amp;Actuators</source>
         <translation>&amp;Antriebe</translation>
     </message>
@@ -3273,7 +3273,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Notizen zu „%1“ bearbeiten</translation>
     </message>
     <message>
-        <location line="+185"/>
+        <location line="+199"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -3338,7 +3338,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+691"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+696"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -3358,7 +3358,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lageausrichtung</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+17"/>
         <source>form %1</source>
         <translation>Form %1</translation>
     </message>
@@ -3467,8 +3467,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+234"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-390"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+223"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-395"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -3590,13 +3590,13 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Für jede Studie wird das deklarierte Modell angepasst und sein Residuum berechnet; Kandidateneffekte, die dem Modell fehlen, werden einzeln getestet und jeweils mit ihren Parametern und deren Standardfehlern geschätzt. Ein Effekt wird nur bei ausreichender Evidenz übernommen (Verbesserung auf den Testdaten bei Thermik, sonst ein Informationskriterium mit konservativer Schwelle) und wenn er den Fehler praktisch relevant verringert; das Modell wird mit ihm neu angepasst und die Suche wiederholt, bis nichts mehr gefunden wird.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-180"/>
-        <location line="+232"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-181"/>
+        <location line="+233"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-233"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -3612,36 +3612,36 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+235"/>
+        <location line="+236"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+235"/>
+        <location line="-234"/>
+        <location line="+236"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+234"/>
+        <location line="-234"/>
+        <location line="+235"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-232"/>
-        <location line="+234"/>
+        <location line="-233"/>
+        <location line="+235"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-232"/>
-        <location line="+234"/>
+        <location line="-233"/>
+        <location line="+235"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-233"/>
         <source>RMS residual (µm)</source>
         <translation>RMS-Residuum (µm)</translation>
     </message>
@@ -3702,12 +3702,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+309"/>
+        <location line="+310"/>
         <source>Circular test “%1”</source>
         <translation>Kreisformtest „%1“</translation>
     </message>
     <message>
-        <location line="-301"/>
+        <location line="-302"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 Punkte; Nennkreis R %2 mm um (%3, %4) mm; %5 Umläufe (gegen, dann mit dem Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (%8, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt bestimmt (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
     </message>
@@ -3728,12 +3728,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+284"/>
+        <location line="+285"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="-269"/>
+        <location line="-270"/>
         <source>Compensation</source>
         <translation>Kompensation</translation>
     </message>
@@ -3793,7 +3793,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Statistische Prozessregelung von „%1“ (%2)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Histogram of %1 (%2 values)</source>
         <translation>Histogramm von %1 (%2 Werte)</translation>
     </message>
@@ -5339,12 +5339,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 nicht angepasst: %2.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>modules, summed (distributed lag)</source>
         <translation>Module, summiert (verteilte Verzögerung)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>%1 with inputs %2, up to %3 %4</source>
         <translation>%1 mit den Eingängen %2, bis zu %3 %4</translation>
     </message>
@@ -5429,7 +5429,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Kompensieren Sie nicht mit diesen Modellen. Zeichnen Sie einen längeren Test mit Aufheizen und Abkühlen auf, setzen Sie Sensoren nahe den Wärmequellen und suchen Sie mit dem geschlossenen Regelkreis (Diagnose) die Verzögerung oder Eingänge, die dem Modell fehlen.</translation>
     </message>
     <message>
-        <location line="-311"/>
+        <location line="-316"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Diagramme der ersten %1 von %2 Sensoren; die Tabelle listet alle.</translation>
     </message>
@@ -5550,11 +5550,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+69"/>
         <source>diverges</source>
         <translation>divergiert</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-60"/>
         <source>fit, %1</source>
         <translation>Anpassung, %1</translation>
     </message>
@@ -8059,60 +8060,61 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+6"/>
+        <location line="+120"/>
         <source>diverges</source>
         <translation>divergiert</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="-99"/>
         <source>Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows without bound on the held-out rows</source>
         <translation>Die kleinsten Quadrate ergaben ein instabiles GMC(1,N): b1 = %1 ≤ 0; seine Ausgabe wächst auf den Testdaten unbeschränkt</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+126"/>
+        <location line="+130"/>
         <location line="+151"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location line="-277"/>
-        <location line="+277"/>
+        <location line="-281"/>
+        <location line="+281"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
     <message>
-        <location line="-276"/>
-        <location line="+276"/>
+        <location line="-280"/>
+        <location line="+280"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-276"/>
-        <location line="+276"/>
+        <location line="-280"/>
+        <location line="+280"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-275"/>
-        <location line="+126"/>
+        <location line="-279"/>
+        <location line="+130"/>
         <location line="+149"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-275"/>
-        <location line="+275"/>
+        <location line="-279"/>
+        <location line="+279"/>
         <source>band</source>
         <translation>Band</translation>
     </message>
     <message>
-        <location line="-274"/>
-        <location line="+274"/>
+        <location line="-278"/>
+        <location line="+278"/>
         <source>verdict</source>
         <translation>Urteil</translation>
     </message>
     <message>
-        <location line="-266"/>
+        <location line="-270"/>
         <source>%1 not fitted: %2.</source>
         <translation>%1 nicht angepasst: %2.</translation>
     </message>
@@ -8142,7 +8144,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 Zeilen zur Anpassung, %2 Testdaten; %3.</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+64"/>
         <source>modules, summed (distributed lag)</source>
         <translation>Module, summiert (verteilte Verzögerung)</translation>
     </message>
@@ -8359,7 +8361,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Training nach %1 PSO-Iterationen abgebrochen; die angezeigten Ergebnisse sind die vorherigen.</translation>
     </message>
     <message>
-        <location line="-332"/>
+        <location line="-336"/>
         <source>not fitted</source>
         <translation>nicht angepasst</translation>
     </message>
@@ -8369,7 +8371,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&lt;b&gt;Modularer Fall:&lt;/b&gt; GNNMCI(1,N), angepasst an den Z- und C-Tests, verringert den Fehler des kombinierten Tests um %1 (GMC(1,N) %2, MLP %3).</translation>
     </message>
     <message>
-        <location line="+351"/>
+        <location line="+355"/>
         <source>Settings changed: Train (Ctrl+R) to update the results.</source>
         <translation>Einstellungen geändert: Trainieren (Strg+R), um die Ergebnisse zu aktualisieren.</translation>
     </message>

@@ -1655,7 +1655,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zapisz &amp;DFQ…</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+23"/>
         <source>&amp;Actuators</source>
         <translation>&amp;Napędy</translation>
     </message>
@@ -3277,7 +3277,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Edycja notatek: %1</translation>
     </message>
     <message>
-        <location line="+185"/>
+        <location line="+199"/>
         <source>Untitled</source>
         <translation>Bez nazwy</translation>
     </message>
@@ -3342,7 +3342,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+691"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+696"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -3362,7 +3362,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dopasowanie położenia</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+17"/>
         <source>form %1</source>
         <translation>postać %1</translation>
     </message>
@@ -3471,8 +3471,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+234"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-390"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+223"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-395"/>
         <source>yes</source>
         <translation>tak</translation>
     </message>
@@ -3594,13 +3594,13 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dla każdego studium dopasowywany jest zadeklarowany model i obliczane jego residuum; brakujące w modelu efekty kandydujące są sprawdzane kolejno, każdy estymowany wraz z parametrami i ich błędami standardowymi. Efekt jest przyjmowany tylko na podstawie dowodów (poprawa na danych testowych dla termiki, w pozostałych przypadkach kryterium informacyjne z ostrożnym progiem) i gdy zmniejsza błąd o praktycznie istotną wartość; model jest ponownie dopasowywany z tym efektem, a wyszukiwanie powtarzane, dopóki nic więcej nie zostanie znalezione.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-180"/>
-        <location line="+232"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-181"/>
+        <location line="+233"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-233"/>
         <source>identified</source>
         <translation>zidentyfikowany</translation>
     </message>
@@ -3616,36 +3616,36 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+235"/>
+        <location line="+236"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+235"/>
+        <location line="-234"/>
+        <location line="+236"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+234"/>
+        <location line="-234"/>
+        <location line="+235"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-232"/>
-        <location line="+234"/>
+        <location line="-233"/>
+        <location line="+235"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-232"/>
-        <location line="+234"/>
+        <location line="-233"/>
+        <location line="+235"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-233"/>
         <source>RMS residual (µm)</source>
         <translation>residuum RMS (µm)</translation>
     </message>
@@ -3706,12 +3706,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+309"/>
+        <location line="+310"/>
         <source>Circular test “%1”</source>
         <translation>Test kołowy „%1”</translation>
     </message>
     <message>
-        <location line="-301"/>
+        <location line="-302"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 punktów; okrąg nominalny R %2 mm wokół (%3, %4) mm; %5 pętli (przeciwnie, potem zgodnie z ruchem wskazówek zegara). Błędy napędów maszyny kartezjańskiej (%8, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wyznaczono metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
     </message>
@@ -3732,12 +3732,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+284"/>
+        <location line="+285"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="-269"/>
+        <location line="-270"/>
         <source>Compensation</source>
         <translation>Kompensacja</translation>
     </message>
@@ -3797,7 +3797,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Statystyczne sterowanie procesem: „%1” (%2)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Histogram of %1 (%2 values)</source>
         <translation>Histogram %1 (wartości: %2)</translation>
     </message>
@@ -5349,12 +5349,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>%1 nie dopasowano: %2.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>modules, summed (distributed lag)</source>
         <translation>moduły, zsumowane (rozłożone opóźnienie)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>%1 with inputs %2, up to %3 %4</source>
         <translation>%1 z wejściami %2, do %3 %4</translation>
     </message>
@@ -5439,7 +5439,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Nie kompensuj tymi modelami. Zarejestruj dłuższy test obejmujący nagrzewanie i chłodzenie, dodaj czujniki blisko źródeł ciepła i użyj zamkniętej pętli (diagnozy), aby znaleźć opóźnienie lub wejścia, których brakuje modelowi.</translation>
     </message>
     <message>
-        <location line="-311"/>
+        <location line="-316"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Wykresy pierwszych %1 z %2 czujników; tabela zawiera wszystkie.</translation>
     </message>
@@ -5560,11 +5560,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+69"/>
         <source>diverges</source>
         <translation>rozbieżny</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-60"/>
         <source>fit, %1</source>
         <translation>dopasowanie, %1</translation>
     </message>
@@ -8082,60 +8083,61 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+6"/>
+        <location line="+120"/>
         <source>diverges</source>
         <translation>rozbieżny</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="-99"/>
         <source>Least squares gave an unstable GMC(1,N): b1 = %1 ≤ 0; its output grows without bound on the held-out rows</source>
         <translation>Metoda najmniejszych kwadratów dała niestabilny GMC(1,N): b1 = %1 ≤ 0; jego wyjście rośnie bez ograniczeń na danych testowych</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+126"/>
+        <location line="+130"/>
         <location line="+151"/>
         <source>model</source>
         <translation>model</translation>
     </message>
     <message>
-        <location line="-277"/>
-        <location line="+277"/>
+        <location line="-281"/>
+        <location line="+281"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
     <message>
-        <location line="-276"/>
-        <location line="+276"/>
+        <location line="-280"/>
+        <location line="+280"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location line="-276"/>
-        <location line="+276"/>
+        <location line="-280"/>
+        <location line="+280"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location line="-275"/>
-        <location line="+126"/>
+        <location line="-279"/>
+        <location line="+130"/>
         <location line="+149"/>
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="-275"/>
-        <location line="+275"/>
+        <location line="-279"/>
+        <location line="+279"/>
         <source>band</source>
         <translation>pasmo</translation>
     </message>
     <message>
-        <location line="-274"/>
-        <location line="+274"/>
+        <location line="-278"/>
+        <location line="+278"/>
         <source>verdict</source>
         <translation>ocena</translation>
     </message>
     <message>
-        <location line="-266"/>
+        <location line="-270"/>
         <source>%1 not fitted: %2.</source>
         <translation>%1 nie dopasowano: %2.</translation>
     </message>
@@ -8165,7 +8167,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>wiersze dopasowania: %1, dane testowe: %2; %3.</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+64"/>
         <source>modules, summed (distributed lag)</source>
         <translation>moduły, zsumowane (rozłożone opóźnienie)</translation>
     </message>
@@ -8382,7 +8384,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Trenowanie anulowano po %1 iteracjach PSO; pokazane wyniki są poprzednie.</translation>
     </message>
     <message>
-        <location line="-332"/>
+        <location line="-336"/>
         <source>not fitted</source>
         <translation>nie dopasowano</translation>
     </message>
@@ -8392,7 +8394,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>&lt;b&gt;Przypadek modułowy:&lt;/b&gt; GNNMCI(1,N) dopasowany na testach Z i C zmniejsza błąd testu łączonego o %1 (GMC(1,N) %2, MLP %3).</translation>
     </message>
     <message>
-        <location line="+351"/>
+        <location line="+355"/>
         <source>Settings changed: Train (Ctrl+R) to update the results.</source>
         <translation>Zmieniono ustawienia: Trenuj (Ctrl+R), aby zaktualizować wyniki.</translation>
     </message>

@@ -5,9 +5,12 @@
 
 namespace metrofit::thermal {
 
+bool diverges(const ThermalMetrics& m, double scale) {
+  return !std::isfinite(m.rmse) || m.rmse > kDivergenceFactor * std::max(scale, 1e-9);
+}
+
 ModelVerdict judgeThermalModel(const ThermalMetrics& heldout, double scale) {
-  if (!std::isfinite(heldout.rmse) || heldout.rmse > kDivergenceFactor * std::max(scale, 1e-9))
-    return ModelVerdict::Diverges;
+  if (diverges(heldout, scale)) return ModelVerdict::Diverges;
   if (!std::isfinite(heldout.e) || heldout.e < kMinEfficiency) return ModelVerdict::NegativeEfficiency;
   if (!std::isfinite(heldout.r) || heldout.r < kMinCorrelation) return ModelVerdict::LowCorrelation;
   return ModelVerdict::Usable;

@@ -28,6 +28,9 @@ enum class ModelVerdict {
   LowCorrelation,      ///< R < kMinCorrelation
 };
 
+/// The prediction runs away: RMSE not finite or above kDivergenceFactor x `targetScale` (the largest
+/// |target| value). Tables show "diverges" instead of such figures.
+bool diverges(const ThermalMetrics& metrics, double targetScale);
 /// Judges a model by its held-out metrics; `targetScale` is the largest |target| value of the log.
 ModelVerdict judgeThermalModel(const ThermalMetrics& heldout, double targetScale);
 /// Largest |value|.

@@ -3,6 +3,7 @@
 // progress, Cancel stops it, showView switches tabs with results on them. Grabs of the page go to
 // $METROFIT_TEST_OUT/thermalpage for people to look at.
 #include <gtest/gtest.h>
+#include <cmath>
 
 #include "core/thermal/model_verdict.h"
 
@@ -271,6 +272,19 @@ TEST_F(ThermalPageModelsTest, ModularCaseShowsEachModulesContribution) {
   ASSERT_TRUE(m.modules.evaluation.has_value());
   EXPECT_EQ(table->item(last, 2)->text(),
             QLocale().toString(100.0 * m.modules.evaluation->reductionPeak, 'f', 1));
+  // A pooled model whose prediction runs away (RMSE above 100 x the error, the verdict's divergence
+  // rule) reads "diverges" in every figure, never a number like 2e+305; every other row has figures.
+  for (std::size_t i = 0; i < kThermalModelOrder.size(); ++i) {
+    const thermal::ModularEvaluation& ev = m.models[i];
+    const int row = static_cast<int>(i);
+    if (!m.fitted(i)) continue;
+    const bool runaway = !std::isfinite(ev.test.rmse) || ev.test.rmse > 100.0 * ev.errorPeak;
+    for (int c = 1; c <= 5; ++c) {
+      const QString text = table->item(row, c)->text();
+      EXPECT_EQ(text == QStringLiteral("diverges"), runaway) << i << " " << c << " " << text.toStdString();
+      EXPECT_FALSE(text.contains(QStringLiteral("e+"))) << text.toStdString();
+    }
+  }
   if (auto* tabs = view->findChild<QTabWidget*>(QStringLiteral("thermalModelResultTabs")))
     tabs->setCurrentIndex(1);
   grab(page, QStringLiteral("modular-modules.png"));

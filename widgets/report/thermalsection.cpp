@@ -493,7 +493,7 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
     for (int part = 0; part < 2; ++part) {
       const thermal::ThermalMetrics& m = part == 0 ? ev.fit : ev.heldout;
       // A model whose output runs away (an unstable GMC) is reported as such, not as 1e+68.
-      const bool runaway = !(std::isfinite(m.rmse) && m.rmse <= 100.0 * std::max(scale, 1e-9));
+      const bool runaway = thermal::diverges(m, scale);
       const QString diverges = ReportText::tr("diverges");
       QString verdict;
       if (part == 1) {
@@ -560,6 +560,11 @@ void writeModular(ReportPainter& out, const ReportContext& context, const Therma
                         QString(), QString(), QString(), QString(), QString()});
       notFitted << ReportText::tr("%1 not fitted: %2.")
                        .arg(thermalModelName(kThermalModelOrder[i]), QString::fromStdString(m->failed[i]));
+      continue;
+    }
+    if (thermal::diverges(ev.test, ev.errorPeak)) {  // a runaway prediction: no 1e+305 figures
+      const QString d = ReportText::tr("diverges");
+      t.rows.push_back({thermalModelName(kThermalModelOrder[i]), metric(ev.errorPeak, 1), d, d, d, d, d, d});
       continue;
     }
     t.rows.push_back({thermalModelName(kThermalModelOrder[i]), metric(ev.errorPeak, 1),

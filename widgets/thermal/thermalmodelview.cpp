@@ -323,7 +323,7 @@ struct ThermalModelView::Impl {
                               true));
         // A model whose output runs away (an unstable GMC) gets "diverges" instead of numbers
         // like 1e+68 that nobody can read; the tooltip gives the reason.
-        const bool runaway = !(std::isfinite(m.rmse) && m.rmse <= 100.0 * std::max(scale, 1e-9));
+        const bool runaway = thermal::diverges(m, scale);
         if (runaway) {
           for (int c = 2; c <= 5; ++c) metrics->setItem(row, c, cell(ThermalModelView::tr("diverges")));
         } else {
@@ -442,6 +442,10 @@ struct ThermalModelView::Impl {
         modularTable->setItem(row, 1, why);
         modularTable->setSpan(row, 1, 1, modularTable->columnCount() - 1);
         notFittedRows.push_back({why, ThermalModelView::tr("not fitted: %1").arg(reason)});
+        continue;
+      }
+      if (thermal::diverges(ev.test, ev.errorPeak)) {  // a runaway prediction: no 1e+305 figures
+        for (int c = 1; c <= 5; ++c) modularTable->setItem(row, c, cell(ThermalModelView::tr("diverges")));
         continue;
       }
       modularTable->setItem(

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "core/thermal/model_verdict.h"
@@ -37,6 +38,20 @@ TEST(ModelVerdict, UsableNegativeEfficiencyLowCorrelationDiverging) {
   // Thresholds are inclusive at the limit.
   ThermalMetrics edge{10, kMinCorrelation, 1.0, kMinEfficiency, 1.0};
   EXPECT_EQ(judgeThermalModel(edge, scale), ModelVerdict::Usable);
+}
+
+// The tables' "diverges" and the verdict are one rule: RMSE not finite or above 100 x the scale.
+TEST(ModelVerdict, DivergesIsTheVerdictsRule) {
+  ThermalMetrics m{10, 0.9, 1.0, 0.9, 1.0};
+  m.rmse = 2.16e305;
+  EXPECT_TRUE(diverges(m, 87.2));
+  m.rmse = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(diverges(m, 87.2));
+  m.rmse = 8000.0;  // exactly 100 x: not yet
+  EXPECT_FALSE(diverges(m, 80.0));
+  m.rmse = 8001.0;
+  EXPECT_TRUE(diverges(m, 80.0));
+  EXPECT_EQ(judgeThermalModel(m, 80.0), ModelVerdict::Diverges);
 }
 
 }  // namespace
