@@ -676,13 +676,7 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
   };
 
   Domain domain(d, o, vars, orig, std::move(cur));
-  LoopStyle style;
-  style.maxRounds = o.maxRounds;
-  style.stopAtMaxRounds = true;
-  style.listEveryRound = true;
-  style.markAccepted = true;
-  style.candidateComponent = "rmse_mm";
-  return runLoop(domain, style, excluded, observer, std::move(dg));
+  return runLoop(domain, LoopStyle::everyRound(o.maxRounds, "rmse_mm"), excluded, observer, std::move(dg));
 }
 
 }  // namespace

@@ -100,6 +100,18 @@ struct LoopStyle {
   bool tiesWithPoints = false;
   /// Progress after every candidate (component name, e.g. "rmse_mm") or, when null, after every round.
   const char* candidateComponent = nullptr;
+
+  /// The style of the loops that list every round (kinematic, thermal): rounds stop at `maxRounds`,
+  /// the accepted candidate is marked, progress after every candidate under `component`.
+  static LoopStyle everyRound(int maxRounds, const char* component) {
+    LoopStyle s;
+    s.maxRounds = maxRounds;
+    s.stopAtMaxRounds = true;
+    s.listEveryRound = true;
+    s.markAccepted = true;
+    s.candidateComponent = component;
+    return s;
+  }
 };
 
 /// LoopDomain::namedCandidates of a domain whose named effects are `names`: those not accepted yet

@@ -1744,12 +1744,7 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
                 {Phrase("accepted together with %1: validation rmse %2 -> %3%4 (%5), fit rmse %6 -> "
                         "%7%4, held-out rmse %8 -> %9%4, %10",
                         std::move(args))});
-            ResidualPlot plot;
-            plot.setLabels(timeLabel(), residualLabel(units));
-            plot.x = log.timeMin;
-            plot.before = curRes.r;
-            plot.after = after.r;
-            c.plot = std::move(plot);
+            c.plot = residualPlot(after);
             out.push_back(std::move(c));
           }
           state = bestStates;
@@ -1761,15 +1756,20 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
       return out;
     }
 
-    void accept(std::size_t slot, Candidate& c) override {
-      pb.pin(states[slot]);
-      const Residual after = pb.residual(states[slot][full], fits[slot]);
+    /// The current residual against time, before and `after` an accepted candidate.
+    ResidualPlot residualPlot(const Residual& after) const {
       ResidualPlot plot;
       plot.setLabels(timeLabel(), residualLabel(units));
       plot.x = log.timeMin;
       plot.before = curRes.r;
       plot.after = after.r;
-      c.plot = std::move(plot);
+      return plot;
+    }
+
+    void accept(std::size_t slot, Candidate& c) override {
+      pb.pin(states[slot]);
+      const Residual after = pb.residual(states[slot][full], fits[slot]);
+      c.plot = residualPlot(after);
       state = states[slot];
       cur = fits[slot];
       curRes = after;
@@ -1791,13 +1791,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
 
   pb.setObserver(observer);
   Domain domain(pb, log, o, u, d.units, variables, undeclared, full, noise, state, cur, curRes);
-  LoopStyle style;
-  style.maxRounds = o.maxRounds;
-  style.stopAtMaxRounds = true;
-  style.listEveryRound = true;
-  style.markAccepted = true;
-  style.candidateComponent = "cv_rmse";
-  Diagnosis out = runLoop(domain, style, {}, observer, std::move(d)).diagnosis;
+  Diagnosis out =
+      runLoop(domain, LoopStyle::everyRound(o.maxRounds, "cv_rmse"), {}, observer, std::move(d)).diagnosis;
   out.residualCheck->outliers = outliers;
   out.residualCheck->outlierThreshold = outlierThreshold;
   if (out.heldoutCheck) {
