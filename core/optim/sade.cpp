@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace metrofit::optim {
@@ -88,6 +89,16 @@ double Sade::crossoverRate(double crMin, double crMax, long g, long gm) {
 
 namespace {
 
+/// The decision box's lower and upper bounds.
+std::pair<std::vector<double>, std::vector<double>> bounds(const Problem& problem, std::size_t n) {
+  std::vector<double> lo(n), hi(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    lo[j] = problem.lower(j);
+    hi[j] = problem.upper(j);
+  }
+  return {std::move(lo), std::move(hi)};
+}
+
 /// Adaptation::SuccessHistory: SHADE (Tanabe & Fukunaga 2013), see the header.
 Result optimiseShade(const Sade::Options& o, Tracker& tracker, long gm) {
   Rng& rng = tracker.rng();
@@ -96,11 +107,7 @@ Result optimiseShade(const Sade::Options& o, Tracker& tracker, long gm) {
   const std::size_t np = static_cast<std::size_t>(o.populationSize);
   constexpr std::size_t kMemory = 6;  // H, L-SHADE's value
 
-  std::vector<double> lo(n), hi(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    lo[j] = problem.lower(j);
-    hi[j] = problem.upper(j);
-  }
+  const auto [lo, hi] = bounds(problem, n);
   std::vector<double> pop(np * n), next(np * n), trial(n);
   std::vector<double> fit(np), nextFit(np);
   randomPopulation(tracker, np, pop, fit);
@@ -216,11 +223,7 @@ Result Sade::optimise(const Problem& problem, Observer* observer) const {
   const std::size_t np = static_cast<std::size_t>(options_.populationSize);
   const long gm = options_.effectiveMaxGenerations();
 
-  std::vector<double> lo(n), hi(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    lo[j] = problem.lower(j);
-    hi[j] = problem.upper(j);
-  }
+  const auto [lo, hi] = bounds(problem, n);
 
   // Generation 0: NP uniform random feasible points.
   std::vector<double> pop(np * n), next(np * n), trial(n);
