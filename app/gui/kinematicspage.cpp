@@ -437,23 +437,21 @@ void KinematicsPage::refresh() {
   datasets_ = std::move(sets);
   studyJson_ = std::move(json);
   projectFile_ = document_->fileName();
-  const QString previous = currentDataset();
+  QString select = currentDataset();
   QString settingsError;  // studies.kinematics cannot be read
-  {
-    const QSignalBlocker blocker(combo_);
-    fillDatasetCombo(combo_, datasets_);
-    int keep = combo_->findData(previous);
-    if (keep < 0) {
-      try {
-        keep = combo_->findData(QString::fromStdString(kinematicStudySettings(document_->project()).dataset));
-      } catch (const std::exception& e) {
-        keep = -1;  // the first circular test, and the page says why (below)
-        settingsError = QString::fromStdString(e.what());
-      }
+  const auto has = [&](const QString& id) {
+    return std::any_of(datasets_.begin(), datasets_.end(),
+                       [&](const DatasetRef& d) { return QString::fromStdString(d.id) == id; });
+  };
+  if (!has(select)) {
+    try {
+      select = QString::fromStdString(kinematicStudySettings(document_->project()).dataset);
+    } catch (const std::exception& e) {
+      select.clear();  // the first circular test, and the page says why (below)
+      settingsError = QString::fromStdString(e.what());
     }
-    combo_->setCurrentIndex(keep >= 0 ? keep : 0);
   }
-  onDatasetChosen(combo_->currentIndex());
+  onDatasetChosen(fillDatasetCombo(combo_, datasets_, select));
   // identify() reads the same settings and fails with their message; should it not, say it here.
   if (!settingsError.isEmpty() && error_.isEmpty())
     info_->setText(info_->text() + QLatin1Char('\n') +

@@ -676,13 +676,7 @@ void MatchingPage::refresh() {
     previous = QString::fromStdString(settings_.datasetId);
     syncSettingsFromStudy(settings_);
   }
-  {
-    const QSignalBlocker blocker(combo_);
-    fillDatasetCombo(combo_, sets_);
-    const int keep = combo_->findData(previous);
-    combo_->setCurrentIndex(keep >= 0 ? keep : 0);
-  }
-  showPoints(combo_->currentIndex());
+  showPoints(fillDatasetCombo(combo_, sets_, previous));
 }
 
 void MatchingPage::showPoints(int comboIndex) {

@@ -189,13 +189,7 @@ void ThermalPage::refresh() {
   models_->setModular(nullptr, nullptr, QString());
   models_->setModulesMessage(QString());
   const QString previous = currentDataset();
-  {
-    const QSignalBlocker blocker(combo_);
-    fillDatasetCombo(combo_, logs_);
-    const int keep = combo_->findData(previous);
-    combo_->setCurrentIndex(keep >= 0 ? keep : 0);
-  }
-  showLog(combo_->currentIndex());
+  showLog(fillDatasetCombo(combo_, logs_, previous));
 }
 
 void ThermalPage::showLog(int comboIndex) {

@@ -241,14 +241,22 @@ TEST(DatasetCombo, ItemsAreTheIdsWithTheirDescriptionsAsTooltips) {
   sets[0].id = "thermal_caiviac";
   sets[0].description = "CAIVIAC spindle, 46 h";
   sets[1].id = "thermal_sim";
-  fillDatasetCombo(&combo, sets);
+  int emitted = 0;
+  QObject::connect(&combo, &QComboBox::currentIndexChanged, [&] { ++emitted; });
+  // The dataset asked for is chosen, without a signal (the page shows it itself).
+  EXPECT_EQ(fillDatasetCombo(&combo, sets, QStringLiteral("thermal_sim")), 1);
+  EXPECT_EQ(combo.currentIndex(), 1);
+  EXPECT_EQ(emitted, 0);
+  // A dataset the project no longer has: the first.
+  EXPECT_EQ(fillDatasetCombo(&combo, sets, QStringLiteral("gone")), 0);
   ASSERT_EQ(combo.count(), 2);
   EXPECT_EQ(combo.itemText(0), QStringLiteral("thermal_caiviac"));
   EXPECT_EQ(combo.itemData(0).toString(), QStringLiteral("thermal_caiviac"));
   EXPECT_EQ(combo.itemData(0, Qt::ToolTipRole).toString(), QStringLiteral("CAIVIAC spindle, 46 h"));
   EXPECT_EQ(combo.findData(QStringLiteral("thermal_sim")), 1);
-  fillDatasetCombo(&combo, {});
+  EXPECT_EQ(fillDatasetCombo(&combo, {}, QStringLiteral("thermal_sim")), -1);
   EXPECT_EQ(combo.count(), 0);
+  EXPECT_EQ(emitted, 0);
 }
 
 }  // namespace

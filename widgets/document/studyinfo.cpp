@@ -2,6 +2,7 @@
 
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QSignalBlocker>
 
 #include "core/project/project.h"
 
@@ -104,13 +105,17 @@ QString datasetKindTitle(const QString& kind) {
   return kind;
 }
 
-void fillDatasetCombo(QComboBox* combo, const std::vector<DatasetRef>& datasets) {
+int fillDatasetCombo(QComboBox* combo, const std::vector<DatasetRef>& datasets, const QString& select) {
+  const QSignalBlocker blocker(combo);
   combo->clear();
   for (const DatasetRef& d : datasets) {
     const QString id = QString::fromStdString(d.id);
     combo->addItem(id, id);
     combo->setItemData(combo->count() - 1, QString::fromStdString(d.description), Qt::ToolTipRole);
   }
+  const int keep = combo->findData(select);
+  combo->setCurrentIndex(keep >= 0 ? keep : 0);
+  return combo->currentIndex();
 }
 
 }  // namespace metrofit

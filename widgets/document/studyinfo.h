@@ -21,8 +21,9 @@ QString studySummary(const QString& study);
 QStringList studyDatasetKinds(const QString& study);
 /// Readable name of a dataset kind ("Thermal log"); the kind itself when unknown.
 QString datasetKindTitle(const QString& kind);
-/// A study page's dataset chooser: cleared, then one item per dataset (text and data: its id; tooltip:
-/// its description). The caller blocks the combo's signals and chooses the current item.
-void fillDatasetCombo(QComboBox* combo, const std::vector<DatasetRef>& datasets);
+/// A study page's dataset chooser, filled without emitting signals: cleared, then one item per dataset
+/// (text and data: its id; tooltip: its description), the current item the dataset `select` (the
+/// first when there is no such dataset). Returns the current index (-1: no datasets).
+int fillDatasetCombo(QComboBox* combo, const std::vector<DatasetRef>& datasets, const QString& select);
 
 }  // namespace metrofit
