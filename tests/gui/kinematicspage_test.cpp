@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -502,12 +503,19 @@ TEST_F(KinematicsActuatorsTest, PickersChooseTheDatasetsUndoablyAndTheTablesShow
   // angle a = atan(s_X), b = -atan(s_Y) (Eq. 9); slopes from the least-squares formula here.
   const double slopeX = leastSquaresSlope(fx), slopeY = leastSquaresSlope(fy);
   const double toDeg = 180.0 / M_PI;
-  EXPECT_NEAR(t->item(0, 1)->text().toDouble(), std::atan(slopeX) * toDeg, 5.1e-7);
-  EXPECT_NEAR(t->item(4, 1)->text().toDouble(), std::atan(slopeX) * toDeg, 5.1e-7);
-  EXPECT_NEAR(t->item(5, 1)->text().toDouble(), -std::atan(slopeY) * toDeg, 5.1e-7);
+  // A cell's number; a cell that is not a number fails here instead of reading as 0.
+  const auto cellValue = [&](int row) {
+    bool ok = false;
+    const double v = t->item(row, 1)->text().toDouble(&ok);
+    EXPECT_TRUE(ok) << "row " << row << ": '" << t->item(row, 1)->text().toStdString() << "'";
+    return ok ? v : std::numeric_limits<double>::quiet_NaN();
+  };
+  EXPECT_NEAR(cellValue(0), std::atan(slopeX) * toDeg, 5.1e-7);
+  EXPECT_NEAR(cellValue(4), std::atan(slopeX) * toDeg, 5.1e-7);
+  EXPECT_NEAR(cellValue(5), -std::atan(slopeY) * toDeg, 5.1e-7);
   // The simulated machine's a = 0.01 deg, b = -0.02 deg: se of the angle ~7e-5 deg (0.5 um over 200 mm).
-  EXPECT_NEAR(t->item(4, 1)->text().toDouble(), 0.01, 4e-4);
-  EXPECT_NEAR(t->item(5, 1)->text().toDouble(), -0.02, 4e-4);
+  EXPECT_NEAR(cellValue(4), 0.01, 4e-4);
+  EXPECT_NEAR(cellValue(5), -0.02, 4e-4);
 
   // Save DFQ writes what `metrofit-cli kinematic from-spc --dfq` writes for the same files.
   ASSERT_TRUE(page.edgesDfqButton()->isEnabled());
