@@ -9,6 +9,8 @@ PACKAGES=(
   # GUI: Qt 6 widgets, charts, OpenGL widgets, tools (linguist), svg; fonts for headless rendering
   qt6-base-dev qt6-base-dev-tools qt6-charts-dev libqt6opengl6-dev qt6-svg-dev
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-qpa-plugins libgl1-mesa-dev fonts-dejavu-core
+  # Qt's own dialogs in German and Polish; the locales the locale test matrix runs under
+  qt6-translations-l10n locales
   # 3D (VTK 9 without its Qt 5 module)
   libvtk9-dev
   # maths, data, exact solver
@@ -28,15 +30,31 @@ for p in "${PACKAGES[@]}"; do
   fi
 done
 
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+
+# The locale test matrix (C.UTF-8, de_DE.UTF-8, pl_PL.UTF-8): generate the two that are missing.
+ensure_locales() {
+  local need=()
+  for l in de_DE pl_PL; do
+    if ! locale -a 2>/dev/null | grep -qi "^${l}\.utf-\?8$"; then need+=("$l"); fi
+  done
+  [ ${#need[@]} -eq 0 ] && return 0
+  for l in "${need[@]}"; do
+    echo "install-deps: generating locale ${l}.UTF-8"
+    $SUDO localedef -i "$l" -f UTF-8 "${l}.UTF-8" || echo "install-deps: could not generate ${l}.UTF-8 (tests under it are skipped)"
+  done
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#PACKAGES[@]} packages present"
+  ensure_locales
   exit 0
 fi
 
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 echo "install-deps: installing ${#missing[@]} missing packages: ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -q
 $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+ensure_locales
 echo "install-deps: done"
