@@ -10,6 +10,7 @@
 #include <QFile>
 #include <QSettings>
 #include <QTemporaryDir>
+#include <clocale>
 #include <memory>
 
 // Tests that run under xvfb-run and render VTK views define METROFIT_TEST_QT_XVFB before including
@@ -42,6 +43,16 @@ class QtApplicationEnvironment : public ::testing::Environment {
     QCoreApplication::setOrganizationName(QStringLiteral("MetrofitTest"));
     QCoreApplication::setApplicationName(QStringLiteral("metrofit-gui-test"));
     app_ = std::make_unique<QApplication>(argc_, argv_);
+    // The locale test matrix (tests/CMakeLists.txt, LOCALES): QApplication has just set the C locale
+    // from LC_ALL; a locale that is not installed would leave "C" and pass the test unnoticed.
+    const QByteArray wanted = qgetenv("LC_ALL");
+    if (!wanted.isEmpty() && wanted != "C" && wanted != "POSIX") {
+      const char* numeric = std::setlocale(LC_NUMERIC, nullptr);
+      ASSERT_TRUE(numeric != nullptr && QByteArray(numeric) == wanted)
+          << "LC_ALL=" << wanted.constData() << " but the process runs in " << (numeric ? numeric : "?")
+          << ": the locale is not installed (packaging/install-deps.sh generates de_DE.UTF-8 and "
+             "pl_PL.UTF-8)";
+    }
   }
   void TearDown() override {
     app_.reset();

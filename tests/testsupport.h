@@ -3,14 +3,34 @@
 // paths ctest passes in (METROFIT_SOURCE_DIR, METROFIT_BIN_DIR, METROFIT_TEST_OUT).
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 namespace metrofit::test {
+
+/// A number as the files write it ('.' decimal mark), read independently of the test process's locale:
+/// the locale matrix (tests/CMakeLists.txt, LOCALES) runs GUI tests with LC_ALL=de_DE.UTF-8 /
+/// pl_PL.UTF-8, where std::stod stops at the '.'. Fails the test (and returns NaN) when `text` is not
+/// exactly one number.
+inline double cnumber(const std::string& text) {
+  std::string_view t(text);
+  while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+  while (!t.empty() && (t.back() == ' ' || t.back() == '\t' || t.back() == '\r')) t.remove_suffix(1);
+  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+  double v = 0.0;
+  const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (t.empty() || res.ec != std::errc() || res.ptr != t.data() + t.size()) {
+    ADD_FAILURE() << "'" << text << "' is not a '.'-decimal number";
+    return std::nan("");
+  }
+  return v;
+}
 
 inline std::string env(const char* name, const char* fallback = "") {
   const char* v = std::getenv(name);

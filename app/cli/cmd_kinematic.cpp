@@ -44,6 +44,7 @@
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/common/rng.h"
 #include "core/common/run.h"
 #include "core/io/cmm_text_report.h"
@@ -73,7 +74,7 @@ struct CompensateArgs {
 
 std::string g(double v, const char* format = "%.6g") {
   char buf[48];
-  std::snprintf(buf, sizeof buf, format, v);
+  metrofit::c_snprintf(buf, sizeof buf, format, v);
   return buf;
 }
 

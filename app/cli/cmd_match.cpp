@@ -32,6 +32,7 @@
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/machine/controller_frame.h"
@@ -55,7 +56,7 @@ struct MatchArgs {
 std::string fmt(double v) {
   if (v == 0.0) v = 0.0;  // no "-0" in the summary line
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
+  metrofit::c_snprintf(buf, sizeof buf, "%.4g", v);
   return buf;
 }
 

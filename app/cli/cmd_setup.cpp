@@ -45,6 +45,7 @@
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/dfq.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
@@ -72,7 +73,7 @@ struct SetupArgs {
 
 std::string fmt(double v, int decimals = 4) {
   char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  metrofit::c_snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
 }
 

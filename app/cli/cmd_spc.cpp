@@ -14,6 +14,7 @@
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
 #include "core/io/dfq.h"
@@ -33,7 +34,7 @@ struct SpcArgs {
 
 std::string g(double v, const char* format = "%.4g") {
   char buf[48];
-  std::snprintf(buf, sizeof buf, format, v);
+  metrofit::c_snprintf(buf, sizeof buf, format, v);
   return buf;
 }
 

@@ -6,6 +6,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <clocale>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -73,7 +74,10 @@ std::unique_ptr<QApplication> makeQtApp() {
   static int argc = 1;
   static char name[] = "metrofit-cli";
   static char* argv[] = {name, nullptr};
-  return std::make_unique<QApplication>(argc, argv);
+  auto app = std::make_unique<QApplication>(argc, argv);
+  // QApplication set the C locale from the environment; numbers stay '.'-decimal (issue 27).
+  std::setlocale(LC_NUMERIC, "C");
+  return app;
 }
 
 void summary(const std::string& line) {

@@ -524,14 +524,16 @@ QWidget* KinematicsPage::currentView() const {
 /// One line of ISO 230-4 results (core/kinematics/iso230_4.h) in µm: G and F per direction, H.
 QString KinematicsPage::isoText(const Iso230Result& iso) {
   QStringList parts;
+  const QLocale locale;  // the UI language's decimal mark, as every other number on the page
   for (const Iso230Direction& d : iso.directions) {
     parts << tr("%1: G %2 µm, F %3 … %4 µm")
                  .arg(d.counterClockwise ? tr("CCW") : tr("CW"))
-                 .arg(d.circularDeviationMm * 1000.0, 0, 'f', 2)
-                 .arg(d.radialDeviationMinMm * 1000.0, 0, 'f', 2)
-                 .arg(d.radialDeviationMaxMm * 1000.0, 0, 'f', 2);
+                 .arg(locale.toString(d.circularDeviationMm * 1000.0, 'f', 2))
+                 .arg(locale.toString(d.radialDeviationMinMm * 1000.0, 'f', 2))
+                 .arg(locale.toString(d.radialDeviationMaxMm * 1000.0, 'f', 2));
   }
-  if (iso.circularHysteresisMm) parts << tr("H %1 µm").arg(*iso.circularHysteresisMm * 1000.0, 0, 'f', 2);
+  if (iso.circularHysteresisMm)
+    parts << tr("H %1 µm").arg(locale.toString(*iso.circularHysteresisMm * 1000.0, 'f', 2));
   return parts.isEmpty() ? QString() : tr("ISO 230-4: %1").arg(parts.join(QStringLiteral("; ")));
 }
 
@@ -541,7 +543,7 @@ void KinematicsPage::showStudy() {
   QString info = tr("%1 points, nominal circle R %2 mm about (%3, %4) mm; %n loop(s).", nullptr,
                     static_cast<int>(s.analysis.loops.size()))
                      .arg(s.measured.size())
-                     .arg(s.analysis.radiusMm, 0, 'g', 6)
+                     .arg(QLocale().toString(s.analysis.radiusMm, 'g', 6))
                      .arg(mm4(s.analysis.centreMm.x()), mm4(s.analysis.centreMm.y()));
   if (!s.dataset.description.empty())
     info.prepend(QString::fromStdString(s.dataset.description) + QLatin1Char('\n'));

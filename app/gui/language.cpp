@@ -49,6 +49,14 @@ bool installTranslators(QCoreApplication& app, const QString& language) {
   return true;
 }
 
+bool useLanguage(QCoreApplication& app, const QString& language) {
+  const QLocale system = QLocale::system();
+  const bool keepSystem = system.name().left(2).toLower() == language ||
+                          (language == QLatin1String("en") && system.language() == QLocale::C);
+  QLocale::setDefault(keepSystem ? system : QLocale(language));
+  return installTranslators(app, language);
+}
+
 bool applyLanguageOption(QCoreApplication& app, const QString& code) {
   const QString language = code.trimmed().toLower();
   if (language == QLatin1String(kSystemLanguage) || !languageChoices().contains(language)) {

@@ -22,6 +22,11 @@ QString effectiveLanguage(const QString& choice);
 /// Installs Metrofit's (and, when present, Qt's own) translators for a language. Returns true when
 /// Metrofit's translation was found (always true for "en", which needs none).
 bool installTranslators(QCoreApplication& app, const QString& language);
+/// The UI language for the run from the Preferences: its translators, and its numbers on screen
+/// (QLocale's default): the system's own locale when it is of that language (a de_CH desktop keeps its
+/// formats), else the language's (English UI on a German desktop: 0.013, not 0,013), so no page shows
+/// "0.051" beside "3,969". Files never follow it (core/common/numformat.h). Returns installTranslators'.
+bool useLanguage(QCoreApplication& app, const QString& language);
 /// `metrofit --lang CODE`: for this run only, the language "en", "de" or "pl" (its translators and
 /// its locale for the numbers shown). An unknown code is reported on stderr and returns false.
 bool applyLanguageOption(QCoreApplication& app, const QString& code);

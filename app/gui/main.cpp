@@ -5,6 +5,7 @@
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTextStream>
+#include <clocale>
 #include <cstdio>
 
 #include "app/gui/language.h"
@@ -61,7 +62,7 @@ int main(int argc, char* argv[]) {
     // Help and the version need no display.
     QCoreApplication app(argc, argv);
     setApplicationNames();
-    metrofit::installTranslators(app, metrofit::effectiveLanguage(metrofit::languageSetting()));
+    metrofit::useLanguage(app, metrofit::effectiveLanguage(metrofit::languageSetting()));
     QCommandLineParser parser;
     configureParser(parser);
     parser.process(app);  // prints and exits
@@ -88,6 +89,11 @@ int main(int argc, char* argv[]) {
   QSurfaceFormat::setDefaultFormat(format);
 
   QApplication app(argc, argv);
+  // QApplication set the whole C locale from the environment (setlocale(LC_ALL, "") on Unix): numbers
+  // in files are written by core under an explicit C locale anyway (core/common/numformat.h), and
+  // with LC_NUMERIC "C" no library printf in the process writes a decimal comma either. What the
+  // user sees follows the UI language through QLocale (app/gui/language.cpp), not LC_NUMERIC.
+  std::setlocale(LC_NUMERIC, "C");
   setApplicationNames();
   QApplication::setApplicationDisplayName(QStringLiteral("Metrofit"));
 
@@ -114,7 +120,7 @@ int main(int argc, char* argv[]) {
   if (parser.isSet(kLanguageOption)) {
     if (!metrofit::applyLanguageOption(app, parser.value(kLanguageOption))) return 2;
   } else {
-    metrofit::installTranslators(app, metrofit::effectiveLanguage(metrofit::languageSetting()));
+    metrofit::useLanguage(app, metrofit::effectiveLanguage(metrofit::languageSetting()));
   }
 
   metrofit::MainWindow window;

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/diagnose/applied_entries.h"
 #include "core/diagnose/matching_diagnosis.h"
 #include "core/io/csv.h"
@@ -34,7 +35,7 @@ double entryNumber(const nlohmann::json& entry, const char* key, const std::stri
 
 std::string fmt(const char* f, double v) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
+  metrofit::c_snprintf(buf, sizeof buf, f, v);
   return buf;
 }
 

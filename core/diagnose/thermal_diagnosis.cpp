@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/diagnose/loop.h"
 #include "core/diagnose/thermal_applied.h"
 #include "core/io/csv.h"
@@ -373,7 +374,7 @@ class Problem {
     std::vector<ColumnSpec> out;
     auto lagKey = [](const std::string& col, double tau) {
       char buf[64];
-      std::snprintf(buf, sizeof buf, "@%a", tau);
+      metrofit::c_snprintf(buf, sizeof buf, "@%a", tau);
       return "lag:" + col + buf;
     };
     if (!grey()) {
@@ -451,7 +452,7 @@ class Problem {
     } else {  // lag:<col>@<tau>
       const std::size_t at = key.rfind('@');
       const std::vector<double>& x = log_.channel(key.substr(4, at - 4)).values;
-      const double tau = std::strtod(key.c_str() + at + 1, nullptr);
+      const double tau = metrofit::num::strtodC(key.c_str() + at + 1, nullptr);
       // Coarse: the lag of the group means on the groups' mean times (the grid only brackets tau).
       if (coarse) {
         const std::string name = key.substr(4, at - 4);

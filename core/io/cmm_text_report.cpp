@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/file_io.h"
 
 namespace metrofit {
@@ -138,7 +139,7 @@ bool isAngleName(std::string_view name) {
 
 std::string fmt(double v) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
+  metrofit::c_snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
 

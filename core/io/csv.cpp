@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/file_io.h"
 
 namespace metrofit {
@@ -30,7 +31,7 @@ std::string printable(std::string_view s) {
     const auto u = static_cast<unsigned char>(c);
     if (u < 0x20 || u == 0x7f) {
       char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02X", u);
+      metrofit::c_snprintf(buf, sizeof buf, "\\x%02X", u);
       out += buf;
     } else {
       out += c;
@@ -134,7 +135,7 @@ class Tokenizer {
           if (t_.find('\0') != std::string_view::npos)  // e.g. a PNG: 0x89 before the first NUL
             failFile("binary data (not UTF-8, NUL bytes in the file); this is not a CSV text file");
           char buf[64];
-          std::snprintf(buf, sizeof buf, "invalid UTF-8 byte 0x%02X; save the file as UTF-8", u);
+          metrofit::c_snprintf(buf, sizeof buf, "invalid UTF-8 byte 0x%02X; save the file as UTF-8", u);
           failFile(buf);
         }
         if (afterQuote) fail("text after the closing quote of a quoted field");

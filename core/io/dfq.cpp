@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/csv.h"
 
 namespace metrofit {
@@ -48,7 +49,7 @@ std::optional<std::string> qdasDateTime(const std::string& iso) {
   if (mo < 1 || mo > 12 || d < 1 || d > 31 || h > 23 || mi > 59 || s > 60 || h < 0 || mi < 0 || s < 0)
     return std::nullopt;
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%02d.%02d.%04d/%02d:%02d:%02d", d, mo, y, h, mi, s);
+  metrofit::c_snprintf(buf, sizeof buf, "%02d.%02d.%04d/%02d:%02d:%02d", d, mo, y, h, mi, s);
   return std::string(buf);
 }
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/file_io.h"
 
 namespace metrofit {
@@ -42,7 +43,7 @@ std::string printable(const std::string& s) {
       i += n - 1;
     } else {
       char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02X", u);
+      metrofit::c_snprintf(buf, sizeof buf, "\\x%02X", u);
       out += buf;
     }
   }

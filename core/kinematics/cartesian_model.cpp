@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/common/run.h"
 
 namespace metrofit {
@@ -48,7 +49,7 @@ bool ActuatorErrors2::isValid(std::string* why) const {
   if (!std::isfinite(xAxisAngleDeg) || !std::isfinite(yAxisAngleDeg)) return no("axis angles must be finite");
   if (std::abs(xAxisAngleDeg) > kMaxAngleDeg || std::abs(yAxisAngleDeg) > kMaxAngleDeg) {
     char buf[160];
-    std::snprintf(
+    metrofit::c_snprintf(
         buf, sizeof buf,
         "axis angles must be within +-45 deg (orientation errors of the actuators), got a = %g, b = %g",
         xAxisAngleDeg, yAxisAngleDeg);

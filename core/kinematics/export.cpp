@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/common/numformat.h"
 #include "core/common/run.h"
 #include "metrofit/version.h"
 
@@ -12,7 +13,7 @@ namespace {
 
 std::string fixed(double v, int decimals) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  metrofit::c_snprintf(buf, sizeof buf, "%.*f", decimals, v);
   std::string s = buf;
   // "-0.0000" -> "0.0000"
   if (s.front() == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/json_util.h"
 #include "core/optim/least_squares.h"
 
@@ -84,7 +85,7 @@ void evaluate(const MeasuredPath& p, const Eigen::Vector4d& th, Residuals& out, 
 
 std::string fmt(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
+  metrofit::c_snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/json_util.h"
 #include "core/optim/least_squares.h"
 
@@ -23,7 +24,7 @@ const char* const kLetters = "xyz";
 
 std::string fmt(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
+  metrofit::c_snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
 

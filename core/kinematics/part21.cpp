@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/file_io.h"
 
 namespace metrofit {
@@ -307,7 +308,7 @@ class Parser {
     }
     const std::string s(t_.substr(start, i_ - start));
     char* end = nullptr;
-    const double d = std::strtod(s.c_str(), &end);
+    const double d = metrofit::num::strtodC(s.c_str(), &end);
     if (end != s.c_str() + s.size() || !std::isfinite(d)) malformed("malformed number '" + s + "'");
     v.kind = real ? P21Value::Kind::Real : P21Value::Kind::Integer;
     v.number = d;

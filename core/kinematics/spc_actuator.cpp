@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "core/common/numformat.h"
 #include "core/common/run.h"
 #include "core/io/dfq.h"
 
@@ -19,7 +20,7 @@ constexpr double kRoundingSigmaMm = 1e-9;  ///< residual sigma below any measuri
 
 std::string fmt(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
+  metrofit::c_snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
 

@@ -8,6 +8,7 @@
 #include <Eigen/LU>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/common/run.h"
 #include "core/io/nc_program.h"
 
@@ -24,7 +25,7 @@ std::string number(double v, int decimals, bool plus) {
   double r = std::round(v * scale) / scale;
   if (r == 0.0) r = 0.0;  // no "-0"
   char buf[64];
-  std::snprintf(buf, sizeof buf, plus ? "%+.*f" : "%.*f", decimals, r);
+  metrofit::c_snprintf(buf, sizeof buf, plus ? "%+.*f" : "%.*f", decimals, r);
   return buf;
 }
 

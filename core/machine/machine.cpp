@@ -1,4 +1,5 @@
 #include "core/machine/machine.h"
+#include "core/common/numformat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -70,9 +71,9 @@ void checkTravel(const MachineDefinition& m, Adjustment& a) {
     if (a.rotaryDeg[i] < m.rotaryMinDeg[i] - 1e-9 || a.rotaryDeg[i] > m.rotaryMaxDeg[i] + 1e-9) {
       a.withinTravel = false;
       if (!a.travelMessage.empty()) a.travelMessage += "; ";
-      a.travelMessage += std::string(names[i]) + " = " + std::to_string(a.rotaryDeg[i]) +
-                         " deg is outside its travel [" + std::to_string(m.rotaryMinDeg[i]) + ", " +
-                         std::to_string(m.rotaryMaxDeg[i]) + "]";
+      a.travelMessage += std::string(names[i]) + " = " + num::toString(a.rotaryDeg[i]) +
+                         " deg is outside its travel [" + num::toString(m.rotaryMinDeg[i]) + ", " +
+                         num::toString(m.rotaryMaxDeg[i]) + "]";
     }
   }
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
 
@@ -81,13 +82,13 @@ bool isHeaderLine(const std::string& line) {
 
 std::string formatDiameter(double d) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", d);
+  metrofit::c_snprintf(buf, sizeof buf, "%.3f", d);
   return buf;
 }
 
 std::string formatMm(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4f", v);
+  metrofit::c_snprintf(buf, sizeof buf, "%.4f", v);
   return buf;
 }
 
@@ -173,7 +174,7 @@ HoleTable holeTableFromText(const std::string& text, const std::string& source, 
       const char* s = fields[c].c_str();
       char* end = nullptr;
       errno = 0;
-      v[c] = std::strtod(s, &end);
+      v[c] = metrofit::num::strtodC(s, &end);
       if (end == s || *end != '\0' || errno == ERANGE || !std::isfinite(v[c])) {
         throw ParseError(ErrorContext{source, static_cast<long>(i + 1), static_cast<long>(c + 1), header[c]},
                          "'" + fields[c] + "' is not a finite number");
@@ -182,7 +183,7 @@ HoleTable holeTableFromText(const std::string& text, const std::string& source, 
     const std::size_t row = set.points.size();
     ProbePoint p;
     char id[16];
-    std::snprintf(id, sizeof id, "H%03zu", row + 1);
+    metrofit::c_snprintf(id, sizeof id, "H%03zu", row + 1);
     p.id = id;
     p.nominal = {v[nomX], v[nomY], 0.0};
     p.measured = {v[measX], v[measY], 0.0};

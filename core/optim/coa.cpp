@@ -1,4 +1,5 @@
 #include "core/optim/coa.h"
+#include "core/common/numformat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,17 +26,17 @@ bool Coa::Options::isValid(std::string* why) const {
               std::to_string(minEggs) + ")");
   }
   if (!(radiusCoefficient > 0.0 && std::isfinite(radiusCoefficient))) {
-    return no("radiusCoefficient must be finite and > 0 (got " + std::to_string(radiusCoefficient) + ")");
+    return no("radiusCoefficient must be finite and > 0 (got " + num::toString(radiusCoefficient) + ")");
   }
   if (!(killFraction >= 0.0 && killFraction < 1.0)) {
-    return no("killFraction must be in [0, 1) (got " + std::to_string(killFraction) + ")");
+    return no("killFraction must be in [0, 1) (got " + num::toString(killFraction) + ")");
   }
   if (clusters < 1) return no("clusters must be at least 1 (got " + std::to_string(clusters) + ")");
   if (!(motionCoefficient > 0.0 && motionCoefficient <= 2.0)) {
-    return no("motionCoefficient must be in (0, 2] (got " + std::to_string(motionCoefficient) + ")");
+    return no("motionCoefficient must be in (0, 2] (got " + num::toString(motionCoefficient) + ")");
   }
   if (!(deviationAngle >= 0.0 && deviationAngle <= std::numbers::pi / 2.0)) {
-    return no("deviationAngle must be in [0, pi/2] radians (got " + std::to_string(deviationAngle) + ")");
+    return no("deviationAngle must be in [0, pi/2] radians (got " + num::toString(deviationAngle) + ")");
   }
   return true;
 }

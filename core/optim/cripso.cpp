@@ -1,4 +1,5 @@
 #include "core/optim/cripso.h"
+#include "core/common/numformat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,7 @@ bool Cripso::Options::isValid(std::string* why) const {
     return no("populationSize must be at least 2 (got " + std::to_string(populationSize) + ")");
   }
   if (!(inertia >= 0.0 && inertia <= 1.0)) {
-    return no("inertia w must be in [0, 1] (got " + std::to_string(inertia) + ")");
+    return no("inertia w must be in [0, 1] (got " + num::toString(inertia) + ")");
   }
   return true;
 }

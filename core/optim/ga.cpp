@@ -1,4 +1,5 @@
 #include "core/optim/ga.h"
+#include "core/common/numformat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,13 +19,13 @@ bool Ga::Options::isValid(std::string* why) const {
     return no("populationSize must be at least 4 (got " + std::to_string(populationSize) + ")");
   }
   if (!(mutationProbability >= 0.0 && mutationProbability <= 1.0)) {
-    return no("mutationProbability must be in [0, 1] (got " + std::to_string(mutationProbability) + ")");
+    return no("mutationProbability must be in [0, 1] (got " + num::toString(mutationProbability) + ")");
   }
   if (!(intermediateExtension >= 0.0 && intermediateExtension <= 1.0)) {
-    return no("intermediateExtension must be in [0, 1] (got " + std::to_string(intermediateExtension) + ")");
+    return no("intermediateExtension must be in [0, 1] (got " + num::toString(intermediateExtension) + ")");
   }
   if (!(mutationShape > 0.0 && std::isfinite(mutationShape))) {
-    return no("mutationShape must be finite and > 0 (got " + std::to_string(mutationShape) + ")");
+    return no("mutationShape must be finite and > 0 (got " + num::toString(mutationShape) + ")");
   }
   return true;
 }

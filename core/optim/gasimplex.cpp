@@ -1,4 +1,5 @@
 #include "core/optim/gasimplex.h"
+#include "core/common/numformat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,17 +20,17 @@ bool GaSimplex::Options::isValid(std::string* why) const {
   if (populationSize < 2)
     return no("the GA population size must be at least 2, got " + std::to_string(populationSize));
   if (!(crossoverProbability >= 0.0 && crossoverProbability <= 1.0))
-    return no("the crossover probability must be in [0, 1], got " + std::to_string(crossoverProbability));
+    return no("the crossover probability must be in [0, 1], got " + num::toString(crossoverProbability));
   if (!(mutationProbability >= 0.0 && mutationProbability <= 1.0))
     return no("the mutation probability must be in [0, 1] (0: 1/dimension), got " +
-              std::to_string(mutationProbability));
+              num::toString(mutationProbability));
   if (!(gaFraction > 0.0 && gaFraction <= 1.0))
-    return no("the GA share of the budget must be in (0, 1], got " + std::to_string(gaFraction));
+    return no("the GA share of the budget must be in (0, 1], got " + num::toString(gaFraction));
   if (!(simplexStep > 0.0 && simplexStep <= 1.0))
     return no("the simplex initial step must be in (0, 1] (fraction of each range), got " +
-              std::to_string(simplexStep));
+              num::toString(simplexStep));
   if (!(simplexTolerance >= 0.0) || !std::isfinite(simplexTolerance))
-    return no("the simplex tolerance must be finite and >= 0, got " + std::to_string(simplexTolerance));
+    return no("the simplex tolerance must be finite and >= 0, got " + num::toString(simplexTolerance));
   return true;
 }
 
@@ -135,7 +136,7 @@ Result GaSimplex::optimise(const Problem& problem, Observer* observer) const {
   Result result = tracker.finish();
   if (converged && result.run.termination == Termination::BudgetExhausted) {
     result.run.termination = Termination::Converged;
-    result.run.message = "GA then simplex converged (tolerance " + std::to_string(options_.simplexTolerance) +
+    result.run.message = "GA then simplex converged (tolerance " + num::toString(options_.simplexTolerance) +
                          ") after " + std::to_string(result.run.evaluations) + " evaluations";
   }
   return result;

@@ -12,13 +12,14 @@
 #include <Eigen/QR>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 
 namespace metrofit::optim {
 namespace {
 
 std::string num(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
+  metrofit::c_snprintf(buf, sizeof buf, "%g", v);
   return buf;
 }
 

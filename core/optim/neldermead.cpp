@@ -1,4 +1,5 @@
 #include "core/optim/neldermead.h"
+#include "core/common/numformat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,9 +19,9 @@ bool NelderMead::Options::isValid(std::string* why) const {
     if (!std::isfinite(start[i])) return no("start point coordinate " + std::to_string(i) + " is not finite");
   if (!(initialStep > 0.0 && initialStep <= 1.0))
     return no("the initial step must be in (0, 1] (fraction of each variable's range), got " +
-              std::to_string(initialStep));
+              num::toString(initialStep));
   if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
-    return no("the tolerance must be finite and >= 0, got " + std::to_string(tolerance));
+    return no("the tolerance must be finite and >= 0, got " + num::toString(tolerance));
   return true;
 }
 
@@ -159,7 +160,7 @@ Result NelderMead::optimise(const Problem& problem, Observer* observer) const {
   Result result = tracker.finish();
   if (converged && result.run.termination == Termination::BudgetExhausted) {
     result.run.termination = Termination::Converged;
-    result.run.message = "simplex converged (tolerance " + std::to_string(options_.tolerance) + ") after " +
+    result.run.message = "simplex converged (tolerance " + num::toString(options_.tolerance) + ") after " +
                          std::to_string(result.run.evaluations) + " evaluations";
   }
   return result;

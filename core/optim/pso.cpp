@@ -1,4 +1,5 @@
 #include "core/optim/pso.h"
+#include "core/common/numformat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,17 +17,17 @@ bool Pso::Options::isValid(std::string* why) const {
   if (!common.isValid(why)) return false;
   if (swarmSize < 2) return no("swarmSize must be at least 2 (got " + std::to_string(swarmSize) + ")");
   if (!(inertiaStart >= 0.0 && inertiaStart <= 1.2)) {
-    return no("inertiaStart must be in [0, 1.2] (got " + std::to_string(inertiaStart) + ")");
+    return no("inertiaStart must be in [0, 1.2] (got " + num::toString(inertiaStart) + ")");
   }
   if (!(inertiaEnd >= 0.0 && inertiaEnd <= 1.2)) {
-    return no("inertiaEnd must be in [0, 1.2] (got " + std::to_string(inertiaEnd) + ")");
+    return no("inertiaEnd must be in [0, 1.2] (got " + num::toString(inertiaEnd) + ")");
   }
   if (!(c1 >= 0.0 && std::isfinite(c1)))
-    return no("c1 must be finite and >= 0 (got " + std::to_string(c1) + ")");
+    return no("c1 must be finite and >= 0 (got " + num::toString(c1) + ")");
   if (!(c2 >= 0.0 && std::isfinite(c2)))
-    return no("c2 must be finite and >= 0 (got " + std::to_string(c2) + ")");
+    return no("c2 must be finite and >= 0 (got " + num::toString(c2) + ")");
   if (!(maxVelocity > 0.0 && maxVelocity <= 1.0)) {
-    return no("maxVelocity must be in (0, 1] of the range (got " + std::to_string(maxVelocity) + ")");
+    return no("maxVelocity must be in (0, 1] of the range (got " + num::toString(maxVelocity) + ")");
   }
   if (neighbours < 0 || 2L * neighbours + 1 > swarmSize) {
     return no("neighbours must be in [0, (swarmSize - 1) / 2] (got " + std::to_string(neighbours) +

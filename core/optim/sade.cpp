@@ -1,4 +1,5 @@
 #include "core/optim/sade.h"
+#include "core/common/numformat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,17 +24,17 @@ bool Sade::Options::isValid(std::string* why) const {
         "three partners besides the target), "
         "got " +
         std::to_string(populationSize));
-  if (!(f0 > 0.0 && f0 <= 1.0)) return no("F0 must be in (0, 1], got " + std::to_string(f0));
+  if (!(f0 > 0.0 && f0 <= 1.0)) return no("F0 must be in (0, 1], got " + num::toString(f0));
   if (maxGenerations < 0)
     return no(
         "the maximum generation Gm must be >= 1 (or 0: derived from the "
         "budget), got " +
         std::to_string(maxGenerations));
-  if (!(crMin >= 0.0 && crMin <= 1.0)) return no("CRmin must be in [0, 1], got " + std::to_string(crMin));
-  if (!(crMax >= 0.0 && crMax <= 1.0)) return no("CRmax must be in [0, 1], got " + std::to_string(crMax));
+  if (!(crMin >= 0.0 && crMin <= 1.0)) return no("CRmin must be in [0, 1], got " + num::toString(crMin));
+  if (!(crMax >= 0.0 && crMax <= 1.0)) return no("CRmax must be in [0, 1], got " + num::toString(crMax));
   if (crMin > crMax)
-    return no("CRmin must not exceed CRmax, got CRmin " + std::to_string(crMin) + " > CRmax " +
-              std::to_string(crMax));
+    return no("CRmin must not exceed CRmax, got CRmin " + num::toString(crMin) + " > CRmax " +
+              num::toString(crMax));
   return true;
 }
 

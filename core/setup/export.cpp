@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/common/run.h"
 #include "core/io/csv.h"
 #include "core/io/nc_program.h"
@@ -23,7 +24,7 @@ std::string number(double v, int decimals, bool plus) {
   double r = std::round(v * scale) / scale;
   if (r == 0.0) r = 0.0;
   char buf[64];
-  std::snprintf(buf, sizeof buf, plus ? "%+.*f" : "%.*f", decimals, r);
+  metrofit::c_snprintf(buf, sizeof buf, plus ? "%+.*f" : "%.*f", decimals, r);
   return buf;
 }
 
@@ -402,7 +403,7 @@ TableUpdate updateHeidenhainTable(const Model& model, std::span<const double> x,
     double v = 0.0;
     if (!old.empty()) {
       char* end = nullptr;
-      v = std::strtod(old.c_str(), &end);
+      v = metrofit::num::strtodC(old.c_str(), &end);
       if (end == old.c_str() || *end != '\0' || !std::isfinite(v))
         fail(row + 1, "column " + valueName + ": '" + old + "' is not a number");
     }

@@ -1,9 +1,9 @@
 #include "core/setup/model.h"
+#include "core/common/numformat.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <sstream>
 #include <unordered_map>
 
 #include "core/common/error.h"
@@ -13,11 +13,8 @@ namespace metrofit::setup {
 namespace {
 
 std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(12);
-  s << v;
-  return s.str();
-}
+  return num::general(v, 12);
+}  // as an ostream's precision(12), C locale
 
 std::string at(const char* list, std::size_t i) {
   return std::string(list) + "[" + std::to_string(i) + "]";

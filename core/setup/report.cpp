@@ -1,4 +1,5 @@
 #include "core/setup/report.h"
+#include "core/common/numformat.h"
 
 #include <algorithm>
 #include <array>
@@ -20,11 +21,8 @@ constexpr double kLimitTolMm = 1e-6;  ///< report limits / nominals must match t
 constexpr double kImplausibleWidths = 10.0;
 
 std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(12);
-  s << v;
-  return s.str();
-}
+  return num::general(v, 12);
+}  // as an ostream's precision(12), C locale
 
 std::string upper(std::string_view s) {
   std::string out(s);

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/common/rng.h"
 #include "core/common/run.h"
 
@@ -48,7 +49,7 @@ ProbePointSet simulateHolePlate(const HolePlateSimOptions& o, const MatchingEffe
     const double phi = 2.0 * std::numbers::pi * rng.uniform();
     ProbePoint p;
     char id[16];
-    std::snprintf(id, sizeof id, "H%03d", i + 1);
+    metrofit::c_snprintf(id, sizeof id, "H%03d", i + 1);
     p.id = id;
     p.surface = "hole";
     // Drill-file coordinates to 0.001 mm.

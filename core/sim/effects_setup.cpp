@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/common/rng.h"
 #include "core/common/run.h"
 #include "core/io/csv.h"
@@ -16,7 +17,7 @@ std::string number(double v, double resolution) {
   if (resolution <= 0.0) return CsvWriter::formatNumber(v);
   const int decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(resolution) - 1e-9)));
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, std::round(v / resolution) * resolution);
+  metrofit::c_snprintf(buf, sizeof buf, "%.*f", decimals, std::round(v / resolution) * resolution);
   std::string s = buf;
   if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);  // "-0.000"
   return s;

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/csv.h"
 #include "core/sim/circular_sim.h"
 #include "core/sim/effects_kinematic.h"
@@ -35,7 +36,7 @@ constexpr double kMatchingSigmaMm = 0.006;
 
 std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0) {
   char buf[160];
-  std::snprintf(buf, sizeof buf, f, a, b, c);
+  metrofit::c_snprintf(buf, sizeof buf, f, a, b, c);
   return buf;
 }
 

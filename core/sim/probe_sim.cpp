@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/common/rng.h"
 #include "core/common/run.h"
 
@@ -152,7 +153,7 @@ ProbePointSet simulateProbing(const ProbeSimOptions& o) {
   const AddPoint add = [&](const char* surface, const Eigen::Vector3d& q, const Eigen::Vector3d& n) {
     ProbePoint p;
     char id[16];
-    std::snprintf(id, sizeof id, "P%03d", ++counter);
+    metrofit::c_snprintf(id, sizeof id, "P%03d", ++counter);
     p.id = id;
     p.surface = surface;
     p.nominal = q;

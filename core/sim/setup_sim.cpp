@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/common/numformat.h"
 #include "core/common/rng.h"
 #include "core/common/run.h"
 #include "core/io/csv.h"
@@ -25,7 +26,7 @@ std::string number(double v, double resolution) {
   // Enough decimals for the resolution, no float noise.
   const int decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(resolution) - 1e-9)));
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  metrofit::c_snprintf(buf, sizeof buf, "%.*f", decimals, v);
   std::string s = buf;
   if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);  // "-0.000"
   return s;

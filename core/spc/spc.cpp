@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/numformat.h"
 #include "core/common/run.h"
 
 namespace metrofit {
@@ -14,7 +15,7 @@ namespace {
 
 std::string fmt(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
+  metrofit::c_snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
 

@@ -1,4 +1,5 @@
 #include "core/thermal/mlp.h"
+#include "core/common/numformat.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -174,7 +175,7 @@ MlpTraining trainMlp(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, const M
       run.message = "mu reached muMax (no step lowers the error)";
       break;
     case T::CostTolerance:
-      run.message = "MSE stalled (relative improvement below " + std::to_string(o.minRelativeImprovement) +
+      run.message = "MSE stalled (relative improvement below " + num::toString(o.minRelativeImprovement) +
                     " over " + std::to_string(o.stallEpochs) + " epochs)";
       break;
     case T::MaxIterations:

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "testsupport.h"
+
 namespace metrofit::test {
 
 /// Values K0001/i and times K0004/i collected per characteristic i, every other field keyed "Kxxxx/i".
@@ -31,7 +33,7 @@ inline DfqFields readDfq(const std::string& text) {
     const auto slash = key.find('/');
     const int index = slash == std::string::npos ? 0 : std::stoi(key.substr(slash + 1));
     if (key.rfind("K0001/", 0) == 0) {
-      d.values[index].push_back(std::stod(value));
+      d.values[index].push_back(cnumber(value));  // locale free (testsupport.h)
     } else if (key.rfind("K0004/", 0) == 0) {
       d.times[index].push_back(value);
     } else {

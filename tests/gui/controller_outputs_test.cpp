@@ -174,7 +174,7 @@ TEST_F(FramePageTest, FanucAnglesRebuildTheFittedRotation) {
   // The words X Y Z I J K of the block.
   std::map<char, double> word;
   std::istringstream in(block.substr(6));
-  for (std::string w; in >> w;) word[w[0]] = std::stod(w.substr(1));
+  for (std::string w; in >> w;) word[w[0]] = test::cnumber(w.substr(1));
   ASSERT_EQ(word.size(), 6u) << block;
   // FANUC G68.2 Euler angles: turn by I about Z, then by J about the new X, then by K about the new Z:
   // R = Rz(I) Rx(J) Rz(K), written out element by element.
@@ -324,7 +324,7 @@ void expectOnlyTargetCells(const std::string& before, const std::string& after, 
     const std::string oldCell = cellOf(a[l], value), newCell = cellOf(b[l], value);
     const std::size_t dp = oldCell.find('.');
     const int decimals = std::max(3, dp == std::string::npos ? 0 : static_cast<int>(oldCell.size() - dp - 1));
-    EXPECT_NEAR(std::stod(newCell), std::stod(oldCell) + targets.at(std::stol(k)),
+    EXPECT_NEAR(test::cnumber(newCell), test::cnumber(oldCell) + targets.at(std::stol(k)),
                 0.5 * std::pow(10.0, -decimals) + 1e-12)
         << oldCell << " -> " << newCell;
   }
@@ -432,7 +432,7 @@ std::map<std::string, std::vector<double>> reportValues(const std::string& path)
     std::vector<std::string> cells;
     std::stringstream ss(line);
     for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    v[cells.at(2)].push_back(std::stod(cells.at(4)));
+    v[cells.at(2)].push_back(test::cnumber(cells.at(4)));
   }
   return v;
 }
@@ -467,9 +467,9 @@ TEST_F(SetupExportsTest, SetupDfqIsTheCliFileAndReadsBackToTheReport) {
     const auto dim = std::find_if(model.dimensions.begin(), model.dimensions.end(),
                                   [&](const setup::Dimension& m) { return m.id == id; });
     ASSERT_NE(dim, model.dimensions.end());
-    EXPECT_DOUBLE_EQ(std::stod(d.fields.at("K2101/" + std::to_string(i))), *dim->nominal);
-    EXPECT_NEAR(std::stod(d.fields.at("K2110/" + std::to_string(i))), *dim->nominal + dim->lower, 1e-12);
-    EXPECT_NEAR(std::stod(d.fields.at("K2111/" + std::to_string(i))), *dim->nominal + dim->upper, 1e-12);
+    EXPECT_DOUBLE_EQ(test::cnumber(d.fields.at("K2101/" + std::to_string(i))), *dim->nominal);
+    EXPECT_NEAR(test::cnumber(d.fields.at("K2110/" + std::to_string(i))), *dim->nominal + dim->lower, 1e-12);
+    EXPECT_NEAR(test::cnumber(d.fields.at("K2111/" + std::to_string(i))), *dim->nominal + dim->upper, 1e-12);
     // The page's deviation of the dimension (the margins' "before") is the mean of the values - nominal.
     const auto& ids = inst->dimensionIds();
     const auto q = static_cast<std::size_t>(std::find(ids.begin(), ids.end(), id) - ids.begin());
@@ -510,9 +510,9 @@ TEST(KinematicsSpcDfq, IsTheCliFileAndReadsBackToThePageSeries) {
   EXPECT_EQ(d.fields.at("K0100"), "1");
   EXPECT_EQ(d.fields.at("K2001/1"), "diameter_mm");
   EXPECT_EQ(d.fields.at("K2142/1"), "mm");
-  EXPECT_EQ(std::stod(d.fields.at("K2110/1")), 99.98);
-  EXPECT_EQ(std::stod(d.fields.at("K2111/1")), 100.02);
-  EXPECT_EQ(std::stod(d.fields.at("K2101/1")), 100.0);
+  EXPECT_EQ(test::cnumber(d.fields.at("K2110/1")), 99.98);
+  EXPECT_EQ(test::cnumber(d.fields.at("K2111/1")), 100.02);
+  EXPECT_EQ(test::cnumber(d.fields.at("K2101/1")), 100.0);
   EXPECT_EQ(d.values.at(1), page.study()->spc->values);  // the series the SPC tab charts
   // ... and the file's column read here.
   std::ifstream in(data.toStdString());
@@ -529,7 +529,7 @@ TEST(KinematicsSpcDfq, IsTheCliFileAndReadsBackToThePageSeries) {
       ASSERT_LT(index, static_cast<int>(cells.size()));
       continue;
     }
-    column.push_back(std::stod(cells.at(static_cast<std::size_t>(index))));
+    column.push_back(test::cnumber(cells.at(static_cast<std::size_t>(index))));
   }
   EXPECT_EQ(d.values.at(1), column);
   EXPECT_EQ(column.size(), 25u);

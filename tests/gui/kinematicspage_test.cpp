@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <limits>
+#include <regex>
+#include <sstream>
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -14,6 +16,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QScrollBar>
 #include <QTabWidget>
@@ -29,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/gui/kinematicspage.h"
+#include "core/common/numformat.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/json_util.h"
 #include "core/kinematics/part21.h"
@@ -90,13 +94,13 @@ TEST_F(KinematicsPageTest, IdentifiedErrorsEqualTheClis) {
   QTableWidget* t = page.errorTable();
   ASSERT_GE(t->rowCount(), 5);
   EXPECT_EQ(t->item(0, 0)->text(), QStringLiteral("origin x (µm)"));
-  EXPECT_EQ(t->item(0, 1)->text(), QString::number(r.errors.originMm.x() * 1000.0, 'f', 3));
-  EXPECT_EQ(t->item(0, 2)->text(), QString::number(r.standardErrors.originMm.x() * 1000.0, 'f', 3));
+  EXPECT_EQ(t->item(0, 1)->text(), QLocale().toString(r.errors.originMm.x() * 1000.0, 'f', 3));
+  EXPECT_EQ(t->item(0, 2)->text(), QLocale().toString(r.standardErrors.originMm.x() * 1000.0, 'f', 3));
   EXPECT_EQ(t->item(2, 0)->text(), QStringLiteral("X axis angle a (deg)"));
-  EXPECT_EQ(t->item(2, 1)->text(), QString::number(r.errors.xAxisAngleDeg, 'f', 6));
-  EXPECT_EQ(t->item(3, 1)->text(), QString::number(r.errors.yAxisAngleDeg, 'f', 6));
-  EXPECT_EQ(t->item(2, 3)->text(), QStringLiteral("0.010000"));
-  EXPECT_EQ(t->item(3, 3)->text(), QStringLiteral("-0.020000"));
+  EXPECT_EQ(t->item(2, 1)->text(), QLocale().toString(r.errors.xAxisAngleDeg, 'f', 6));
+  EXPECT_EQ(t->item(3, 1)->text(), QLocale().toString(r.errors.yAxisAngleDeg, 'f', 6));
+  EXPECT_EQ(t->item(2, 3)->text(), QLocale().toString(0.01, 'f', 6));
+  EXPECT_EQ(t->item(3, 3)->text(), QLocale().toString(-0.02, 'f', 6));
   // The ISO 230-4 results of the test equal the CLI's (identify's iso230_4) and the summary shows them in um.
   const Iso230Result& iso = page.study()->analysis.iso;
   ASSERT_EQ(iso.directions.size(), 2u);
@@ -110,12 +114,14 @@ TEST_F(KinematicsPageTest, IdentifiedErrorsEqualTheClis) {
               ji["cw"]["radial_deviation_f_max_um"].get<double>(), 1e-9);
   EXPECT_NEAR(*iso.circularHysteresisMm * 1000.0, ji["circular_hysteresis_h_um"].get<double>(), 1e-9);
   const QString info = page.infoLabel()->text();
-  EXPECT_TRUE(info.contains(QStringLiteral("ISO 230-4: CCW: G %1 µm, F %2 … %3 µm")
-                                .arg(iso.directions[0].circularDeviationMm * 1000.0, 0, 'f', 2)
-                                .arg(iso.directions[0].radialDeviationMinMm * 1000.0, 0, 'f', 2)
-                                .arg(iso.directions[0].radialDeviationMaxMm * 1000.0, 0, 'f', 2)))
+  EXPECT_TRUE(
+      info.contains(QStringLiteral("ISO 230-4: CCW: G %1 µm, F %2 … %3 µm")
+                        .arg(QLocale().toString(iso.directions[0].circularDeviationMm * 1000.0, 'f', 2))
+                        .arg(QLocale().toString(iso.directions[0].radialDeviationMinMm * 1000.0, 'f', 2))
+                        .arg(QLocale().toString(iso.directions[0].radialDeviationMaxMm * 1000.0, 'f', 2))))
       << info.toStdString();
-  EXPECT_TRUE(info.contains(QStringLiteral("H %1 µm").arg(*iso.circularHysteresisMm * 1000.0, 0, 'f', 2)))
+  EXPECT_TRUE(info.contains(
+      QStringLiteral("H %1 µm").arg(QLocale().toString(*iso.circularHysteresisMm * 1000.0, 'f', 2))))
       << info.toStdString();
   // A squareness error g = b - a turns the circle of radius R into an ellipse: r = R - g R sin(2 theta) / 2
   // to first order, so G = R |g|; the demo's noise (0.5 um per coordinate, 360 points per loop) widens
@@ -149,7 +155,7 @@ TEST_F(KinematicsPageTest, CompensationBringsTheRadialDeviationBelow2um) {
   // The tables and the views show them.
   QTableWidget* t = page.compensationTable();
   ASSERT_GE(t->rowCount(), 4);
-  EXPECT_EQ(t->item(0, 1)->text(), QString::number(c->maxBeforeMm * 1000.0, 'f', 3));
+  EXPECT_EQ(t->item(0, 1)->text(), QLocale().toString(c->maxBeforeMm * 1000.0, 'f', 3));
   EXPECT_EQ(page.pathView()->data().references.size(), c->references.size());
   EXPECT_FALSE(page.polarView()->data().compensated.empty());
 }
@@ -186,6 +192,23 @@ TEST_F(KinematicsPageTest, ExportsGcodeAndStepNc) {
   const std::string g = test::readText(gcode.toStdString());
   EXPECT_EQ(g.rfind("%\n", 0), 0u) << g.substr(0, 80);
   EXPECT_NE(g.find("G01"), std::string::npos);
+  // Every G01 is "G01 X<number> Y<number>" with '.' decimals (ISO 6983 address words), whatever the
+  // process locale (this test also runs under de_DE.UTF-8 and pl_PL.UTF-8), and gives the references.
+  {
+    std::istringstream in(g);
+    std::size_t k = 0;
+    const std::regex g01("^G01 X([+-]?[0-9]+\\.[0-9]{4}) Y([+-]?[0-9]+\\.[0-9]{4})( F[0-9]+)?$");
+    for (std::string l; std::getline(in, l);) {
+      if (l.rfind("G01", 0) != 0) continue;
+      std::smatch m;
+      ASSERT_TRUE(std::regex_match(l, m, g01)) << l;
+      ASSERT_LT(k, page.compensation()->references.size());
+      const Eigen::Vector2d& r = page.compensation()->references[k++];
+      EXPECT_NEAR(test::cnumber(m[1].str()), r.x(), 0.5e-4 + 1e-9) << l;
+      EXPECT_NEAR(test::cnumber(m[2].str()), r.y(), 0.5e-4 + 1e-9) << l;
+    }
+    EXPECT_EQ(k, page.compensation()->references.size());
+  }
   const StepNcToolpath path = stepNcToolpath(readPart21(p21.toStdString()));
   ASSERT_EQ(path.points.size(), page.compensation()->references.size());
   EXPECT_DOUBLE_EQ(path.points[5].x(), page.compensation()->references[5].x());
@@ -203,8 +226,9 @@ TEST_F(KinematicsPageTest, RadialOnlyTestSaysWhyItCannotBeIdentifiedAndShowsItsI
     for (int k = 0; k < 360; ++k) {
       const int deg = loop == 0 ? k : 360 - k;
       const double th = deg * M_PI / 180.0;
+      // num::toString: '.' decimals whatever the test process's locale (the test data, not the subject).
       text += std::to_string(deg) + "," +
-              std::to_string(5.0 * std::cos(th) + 2.0 * std::cos(3.0 * th) + (loop == 1 ? 1.5 : 0.0)) + "\n";
+              num::toString(5.0 * std::cos(th) + 2.0 * std::cos(3.0 * th) + (loop == 1 ? 1.5 : 0.0)) + "\n";
     }
   }
   std::ofstream(QDir(dir_.path()).filePath(QStringLiteral("ballbar.csv")).toStdString()) << text;
@@ -219,9 +243,11 @@ TEST_F(KinematicsPageTest, RadialOnlyTestSaysWhyItCannotBeIdentifiedAndShowsItsI
   EXPECT_TRUE(page.errorMessage().contains(QStringLiteral("ballbar.csv: is a radial-only circular test")))
       << page.errorMessage().toStdString();
   const QString message = page.messageLabel()->text();
-  EXPECT_TRUE(message.contains(QStringLiteral("ISO 230-4: CCW: G 4.00 µm"))) << message.toStdString();
-  EXPECT_TRUE(message.contains(QStringLiteral("CW: G 4.00 µm"))) << message.toStdString();
-  EXPECT_TRUE(message.contains(QStringLiteral("H 1.50 µm"))) << message.toStdString();
+  // Numbers in the UI's locale (this test also runs with LC_ALL=de_DE.UTF-8 and pl_PL.UTF-8).
+  const QString four = QLocale().toString(4.0, 'f', 2), oneAndAHalf = QLocale().toString(1.5, 'f', 2);
+  EXPECT_TRUE(message.contains(QStringLiteral("ISO 230-4: CCW: G %1 µm").arg(four))) << message.toStdString();
+  EXPECT_TRUE(message.contains(QStringLiteral("CW: G %1 µm").arg(four))) << message.toStdString();
+  EXPECT_TRUE(message.contains(QStringLiteral("H %1 µm").arg(oneAndAHalf))) << message.toStdString();
   // Instead of the tabs: the message and the polar plot of both runs (drawn on 100 mm: no radius_mm).
   ASSERT_NE(page.radialPolarView(), nullptr);
   EXPECT_EQ(page.currentView(), page.radialPolarView()->parentWidget());
@@ -347,10 +373,10 @@ TEST_F(KinematicsActuatorsTest, PageShowsTheErrorsDerivedFromSpcAndTheThreeAxes)
   QTableWidget* t = page.fromSpcTable();
   EXPECT_FALSE(t->isHidden());
   ASSERT_EQ(t->rowCount(), 9);
-  EXPECT_EQ(t->item(0, 1)->text(), QString::number(r.x.line.angleDeg, 'f', 6));
+  EXPECT_EQ(t->item(0, 1)->text(), QLocale().toString(r.x.line.angleDeg, 'f', 6));
   EXPECT_EQ(t->item(4, 0)->text(), QStringLiteral("X axis angle a (deg)"));
-  EXPECT_EQ(t->item(4, 1)->text(), QString::number(r.errors.xAxisAngleDeg, 'f', 6));
-  EXPECT_EQ(t->item(4, 2)->text(), QString::number(s->identification.errors.xAxisAngleDeg, 'f', 6));
+  EXPECT_EQ(t->item(4, 1)->text(), QLocale().toString(r.errors.xAxisAngleDeg, 'f', 6));
+  EXPECT_EQ(t->item(4, 2)->text(), QLocale().toString(s->identification.errors.xAxisAngleDeg, 'f', 6));
   EXPECT_TRUE(page.fromSpcLabel()->text().contains(QStringLiteral("compensation applied")))
       << page.fromSpcLabel()->text().toStdString();
 
@@ -364,10 +390,11 @@ TEST_F(KinematicsActuatorsTest, PageShowsTheErrorsDerivedFromSpcAndTheThreeAxes)
     // The table shows the joint identification of the three simulated tests (0.5 um noise); its
     // squareness is within a few of the fit's own standard errors of the machine's true value, and
     // 1.5e-4 deg (0.5 um over 200 mm) bounds that from the noise alone.
-    EXPECT_NEAR(t3->item(row, 3)->text().toDouble(), truth.squarenessDeg(p), 1.5e-4) << planeName(p);
+    EXPECT_NEAR(QLocale().toDouble(t3->item(row, 3)->text()), truth.squarenessDeg(p), 1.5e-4) << planeName(p);
     const double se = s->threeAxis->squarenessStdErrDeg[static_cast<std::size_t>(row)];
     EXPECT_GT(se, 0.0) << planeName(p);
-    EXPECT_LE(std::abs(t3->item(row, 3)->text().toDouble() - truth.squarenessDeg(p)), 5.0 * se + 5e-7)
+    EXPECT_LE(std::abs(QLocale().toDouble(t3->item(row, 3)->text()) - truth.squarenessDeg(p)),
+              5.0 * se + 5e-7)
         << planeName(p) << " se " << se;  // + half a unit of the table's last digit
   }
   save(page, "kinematics_actuators.png");
@@ -400,8 +427,8 @@ double leastSquaresSlope(const std::string& file) {
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     const auto comma = line.find(',');
-    u.push_back(std::stod(line.substr(0, comma)));
-    d.push_back(std::stod(line.substr(comma + 1)));
+    u.push_back(test::cnumber(line.substr(0, comma)));
+    d.push_back(test::cnumber(line.substr(comma + 1)));
   }
   double mu = 0.0, md = 0.0;
   for (std::size_t i = 0; i < u.size(); ++i) {
@@ -492,13 +519,13 @@ TEST_F(KinematicsActuatorsTest, PickersChooseTheDatasetsUndoablyAndTheTablesShow
   QTableWidget* t = page.fromSpcTable();
   ASSERT_FALSE(t->isHidden()) << page.fromSpcLabel()->text().toStdString();
   ASSERT_EQ(t->rowCount(), 9);
-  EXPECT_EQ(t->item(0, 1)->text(), QString::number(r.x.line.angleDeg, 'f', 6));
-  EXPECT_EQ(t->item(1, 1)->text(), QString::number(r.y.line.angleDeg, 'f', 6));
-  EXPECT_EQ(t->item(2, 1)->text(), QString::number(r.errors.originMm.x() * 1000.0, 'f', 3));
-  EXPECT_EQ(t->item(3, 1)->text(), QString::number(r.errors.originMm.y() * 1000.0, 'f', 3));
-  EXPECT_EQ(t->item(4, 1)->text(), QString::number(r.errors.xAxisAngleDeg, 'f', 6));
-  EXPECT_EQ(t->item(5, 1)->text(), QString::number(r.errors.yAxisAngleDeg, 'f', 6));
-  EXPECT_EQ(t->item(6, 1)->text(), QString::number(r.errors.squarenessDeg(), 'f', 6));
+  EXPECT_EQ(t->item(0, 1)->text(), QLocale().toString(r.x.line.angleDeg, 'f', 6));
+  EXPECT_EQ(t->item(1, 1)->text(), QLocale().toString(r.y.line.angleDeg, 'f', 6));
+  EXPECT_EQ(t->item(2, 1)->text(), QLocale().toString(r.errors.originMm.x() * 1000.0, 'f', 3));
+  EXPECT_EQ(t->item(3, 1)->text(), QLocale().toString(r.errors.originMm.y() * 1000.0, 'f', 3));
+  EXPECT_EQ(t->item(4, 1)->text(), QLocale().toString(r.errors.xAxisAngleDeg, 'f', 6));
+  EXPECT_EQ(t->item(5, 1)->text(), QLocale().toString(r.errors.yAxisAngleDeg, 'f', 6));
+  EXPECT_EQ(t->item(6, 1)->text(), QLocale().toString(r.errors.squarenessDeg(), 'f', 6));
   // ... and the paper: the regression line's offset angle is atan(slope) (Fig. 10), the X actuator's
   // angle a = atan(s_X), b = -atan(s_Y) (Eq. 9); slopes from the least-squares formula here.
   const double slopeX = leastSquaresSlope(fx), slopeY = leastSquaresSlope(fy);
@@ -506,7 +533,7 @@ TEST_F(KinematicsActuatorsTest, PickersChooseTheDatasetsUndoablyAndTheTablesShow
   // A cell's number; a cell that is not a number fails here instead of reading as 0.
   const auto cellValue = [&](int row) {
     bool ok = false;
-    const double v = t->item(row, 1)->text().toDouble(&ok);
+    const double v = QLocale().toDouble(t->item(row, 1)->text(), &ok);
     EXPECT_TRUE(ok) << "row " << row << ": '" << t->item(row, 1)->text().toStdString() << "'";
     return ok ? v : std::numeric_limits<double>::quiet_NaN();
   };
@@ -552,11 +579,11 @@ TEST_F(KinematicsActuatorsTest, PickersChooseTheDatasetsUndoablyAndTheTablesShow
   for (const TestPlane p : kTestPlanes) {
     const int row = static_cast<int>(p);
     const auto i = static_cast<std::size_t>(p);
-    EXPECT_EQ(t3->item(row, 1)->text(), QString::number(r3.errors.uAngleDeg[i], 'f', 6));
-    EXPECT_EQ(t3->item(row, 2)->text(), QString::number(r3.errors.vAngleDeg[i], 'f', 6));
-    EXPECT_EQ(t3->item(row, 3)->text(), QString::number(r3.errors.squarenessDeg(p), 'f', 6));
+    EXPECT_EQ(t3->item(row, 1)->text(), QLocale().toString(r3.errors.uAngleDeg[i], 'f', 6));
+    EXPECT_EQ(t3->item(row, 2)->text(), QLocale().toString(r3.errors.vAngleDeg[i], 'f', 6));
+    EXPECT_EQ(t3->item(row, 3)->text(), QLocale().toString(r3.errors.squarenessDeg(p), 'f', 6));
     // The simulated machine's squareness (0.5 um noise on 720 points of R 100 mm: se ~ 3e-5 deg).
-    EXPECT_NEAR(t3->item(row, 3)->text().toDouble(), truth.squarenessDeg(p), 1.5e-4) << planeName(p);
+    EXPECT_NEAR(QLocale().toDouble(t3->item(row, 3)->text()), truth.squarenessDeg(p), 1.5e-4) << planeName(p);
   }
   const QStringList threeAxisTexts = columnTexts(t3, 3);
   page.show();  // the rows fit their labels once the tables have their widths (queued)
@@ -585,7 +612,7 @@ TEST_F(KinematicsActuatorsTest, PickersChooseTheDatasetsUndoablyAndTheTablesShow
   EXPECT_EQ(y->currentData().toString(), QStringLiteral("edge_y"));
   EXPECT_EQ(page.planeCombo(TestPlane::ZX)->currentData().toString(), QStringLiteral("plane_zx"));
   EXPECT_FALSE(page.fromSpcTable()->isHidden());
-  EXPECT_EQ(page.fromSpcTable()->item(4, 1)->text(), QString::number(r.errors.xAxisAngleDeg, 'f', 6));
+  EXPECT_EQ(page.fromSpcTable()->item(4, 1)->text(), QLocale().toString(r.errors.xAxisAngleDeg, 'f', 6));
   EXPECT_FALSE(page.threeAxisTable()->isHidden());
   EXPECT_EQ(columnTexts(page.threeAxisTable(), 3), threeAxisTexts);
 

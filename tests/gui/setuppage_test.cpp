@@ -105,22 +105,28 @@ TEST_F(SetupPageTest, ExactRunShowsTheCliCorrections) {
   }
   EXPECT_TRUE(results->summaryText().contains(QStringLiteral("f1 proven optimal")))
       << results->summaryText().toStdString();
-  EXPECT_TRUE(results->summaryText().contains(QString::number(j["f1_mm"].get<double>(), 'f', 4)))
+  EXPECT_TRUE(results->summaryText().contains(QLocale().toString(j["f1_mm"].get<double>(), 'f', 4)))
       << results->summaryText().toStdString();
   EXPECT_TRUE(results->partsText().contains(QStringLiteral("of 3"))) << results->partsText().toStdString();
   EXPECT_EQ(page_->convergenceView()->hasExact(), true);
 
-  // Export of the shown corrections: exactly what the CLI writes.
-  const QString nc = QString::fromStdString(tmp.file("offsets.nc"));
+  // Export of the shown corrections in every format: exactly what the CLI writes (the CLI runs in the
+  // C locale; this test also runs under de_DE.UTF-8 and pl_PL.UTF-8, where printf writes "0,013").
   QString error;
-  ASSERT_TRUE(results->exportTo(setup::ControllerFormat::Fanuc, nc, &error)) << error.toStdString();
-  const test::CliRun cliExport =
-      test::cli("setup --model '" + modelPath().toStdString() + "' --data '" +
-                    dir_.filePath(QStringLiteral("data/paper_example_report.csv")).toStdString() +
-                    "' --method exact --export fanuc --export-out cli.nc --out r.json",
-                tmp);
-  ASSERT_EQ(cliExport.code, 0) << cliExport.err;
-  EXPECT_EQ(test::readText(nc.toStdString()), test::readText(tmp.file("cli.nc")));
+  for (const auto format : {setup::ControllerFormat::Fanuc, setup::ControllerFormat::Heidenhain,
+                            setup::ControllerFormat::Siemens, setup::ControllerFormat::Csv}) {
+    const std::string name = setup::toString(format);
+    const QString nc = QString::fromStdString(tmp.file("offsets." + name));
+    ASSERT_TRUE(results->exportTo(format, nc, &error)) << error.toStdString();
+    const test::CliRun cliExport =
+        test::cli("setup --model '" + modelPath().toStdString() + "' --data '" +
+                      dir_.filePath(QStringLiteral("data/paper_example_report.csv")).toStdString() +
+                      "' --method exact --export " + name + " --export-out cli." + name + " --out r.json",
+                  tmp);
+    ASSERT_EQ(cliExport.code, 0) << cliExport.err;
+    const std::string gui = test::readText(nc.toStdString());
+    EXPECT_EQ(gui, test::readText(tmp.file("cli." + name))) << name;
+  }
   EXPECT_FALSE(
       results->exportTo(setup::ControllerFormat::Csv, QStringLiteral("/nonexistent-folder/c.csv"), &error));
   EXPECT_TRUE(error.contains(QStringLiteral("/nonexistent-folder/c.csv"))) << error.toStdString();

@@ -23,6 +23,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/project/project.h"
 #include "metrofit/version.h"
 #include "qtapp.h"
@@ -337,8 +338,8 @@ TEST_F(ReportTest, AModelThatCannotBeFittedIsMarkedAndTheOthersAreReported) {
     const double t = 30.0 * r;
     const double temperature = std::round((21.0 + 9.0 * (1.0 - std::exp(-t / 1500.0))) * 1e4) / 1e4;
     char line[96];
-    std::snprintf(line, sizeof line, "%d,%.4f,%.6f\n", static_cast<int>(t), temperature,
-                  3.25 * (temperature - 21.0) - 0.8);
+    metrofit::c_snprintf(line, sizeof line, "%d,%.4f,%.6f\n", static_cast<int>(t), temperature,
+                         3.25 * (temperature - 21.0) - 0.8);
     csv << line;
   }
   writeText(dir_.filePath(QStringLiteral("data/linear.csv")), csv.str());
@@ -391,8 +392,8 @@ TEST_F(ReportTest, TheModularSectionUsesTheModuleTestsOfTheThermalStudy) {
     double tz = 20.0, tc = 20.0;
     for (int k = 0; k <= 240; ++k) {
       char line[128];
-      std::snprintf(line, sizeof line, "%d,%.6f,%.6f,%.6f\n", k, tz, tc,
-                    -5.0 * (tz - 20.0) + kc * (tc - 20.0) + noise(rng));
+      metrofit::c_snprintf(line, sizeof line, "%d,%.6f,%.6f,%.6f\n", k, tz, tc,
+                           -5.0 * (tz - 20.0) + kc * (tc - 20.0) + noise(rng));
       csv += line;
       const double uz = k < 120 ? 8.0 * z : 0.0, uc = k < 120 ? 6.0 * c : 0.0;
       tz = 20.0 + uz + (tz - 20.0 - uz) * std::exp(-1.0 / 20.0);

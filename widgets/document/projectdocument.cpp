@@ -234,7 +234,8 @@ ProjectDocument::~ProjectDocument() = default;
 
 QString ProjectDocument::displayName() const {
   const QString name = fromStd(project_.name).trimmed();
-  return name.isEmpty() ? tr("Untitled") : name;
+  // A new project's name is core's default "Untitled" (Project::name): shown in the UI language.
+  return name.isEmpty() || name == fromStd(Project{}.name) ? tr("Untitled") : name;
 }
 
 bool ProjectDocument::isModified() const {

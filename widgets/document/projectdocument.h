@@ -144,7 +144,7 @@ class ProjectDocument : public QObject {
   const Project& project() const { return project_; }
   /// Absolute path of the project file; empty for a new, never saved project.
   QString fileName() const { return fileName_; }
-  /// The project name for titles ("Untitled" when it is empty).
+  /// The project name for titles ("Untitled", translated, when it is empty or core's default name).
   QString displayName() const;
   QUndoStack* undoStack() const { return undoStack_; }
   bool isModified() const;

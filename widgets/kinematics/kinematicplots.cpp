@@ -237,10 +237,6 @@ PlotStyle screenPlotStyle() {
   return s;
 }
 
-QString formatTick(double value, double step, int minDecimals) {
-  return QString::number(value, 'f', std::max(minDecimals, decimalsFor(step)));
-}
-
 // ---- polar -------------------------------------------------------------------------------------
 
 void PolarPlotData::autoScale() {
@@ -259,7 +255,7 @@ void PolarPlotData::autoScale() {
 namespace {
 
 /// The polar plot's legend entries (loops present, expected result, nominal circle).
-std::vector<LegendItem> polarLegendItems(const PolarPlotData& d) {
+std::vector<LegendItem> polarLegendItems(const PolarPlotData& d, const QLocale& locale) {
   std::vector<LegendItem> items;
   bool ccw = false, cw = false;
   for (const CircularLoop& l : d.loops) (l.counterClockwise ? ccw : cw) = true;
@@ -268,9 +264,9 @@ std::vector<LegendItem> polarLegendItems(const PolarPlotData& d) {
   if (!d.compensated.empty())
     items.push_back({kinematic_colour::expected(), PlotText::tr("expected after compensation")});
   items.push_back({kinematic_colour::nominal(),
-                   d.radiusKnown ? PlotText::tr("nominal R %1 mm").arg(d.radiusMm, 0, 'g', 6)
+                   d.radiusKnown ? PlotText::tr("nominal R %1 mm").arg(locale.toString(d.radiusMm, 'g', 6))
                                  : PlotText::tr("nominal circle (radius not in the file, drawn as %1 mm)")
-                                       .arg(d.radiusMm, 0, 'g', 6),
+                                       .arg(locale.toString(d.radiusMm, 'g', 6)),
                    Qt::DashLine});
   return items;
 }
@@ -305,8 +301,9 @@ PolarPlotLayout::PolarPlotLayout(const QRectF& area, const PolarPlotData& data, 
                            .boundingRect(QRectF(0, 0, std::max(1.0, legendWidth), 1e6),
                                          Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, polarNote(d, s))
                            .height();
-  const double legendH = std::max(s.fontPx * 1.25 * 4.3,
-                                  legendHeight(legendWidth, polarLegendItems(d), s) + noteH + s.fontPx * 0.3);
+  const double legendH =
+      std::max(s.fontPx * 1.25 * 4.3,
+               legendHeight(legendWidth, polarLegendItems(d, s.locale), s) + noteH + s.fontPx * 0.3);
   title_ = QRectF(area.left(), area.top(), area.width(), titleH);
   legend_ = QRectF(area.left() + s.fontPx, area.bottom() - legendH, area.width() - 2 * s.fontPx, legendH);
   const double pad = s.fontPx * 2.4;
@@ -392,7 +389,7 @@ void paintPolarPlot(QPainter& p, const QRectF& area, const PolarPlotData& data, 
     p.drawText(box, Qt::AlignLeft | Qt::AlignBottom, label);
   }
   // Legend.
-  const double used = drawLegend(p, L.legendArea(), polarLegendItems(d), s);
+  const double used = drawLegend(p, L.legendArea(), polarLegendItems(d, s.locale), s);
   p.setFont(plotFont(s, 0.95));
   p.setPen(Qt::black);
   p.drawText(QRectF(L.legendArea().left(), L.legendArea().top() + used, L.legendArea().width(),

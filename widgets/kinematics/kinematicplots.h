@@ -227,7 +227,4 @@ class HistogramLayout {
 void paintHistogram(QPainter& painter, const QRectF& area, const HistogramData& data,
                     const PlotStyle& style = {});
 
-/// A number with as many decimals as `step` needs (at least `minDecimals`).
-QString formatTick(double value, double step, int minDecimals = 0);
-
 }  // namespace metrofit

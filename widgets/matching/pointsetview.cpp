@@ -60,6 +60,7 @@
 #include <Eigen/Geometry>
 
 #include "core/common/axis_ticks.h"
+#include "core/common/numformat.h"
 #include "core/matching/probe_points.h"
 #include "widgets/common/palette.h"
 #include "widgets/matching/vtkglwidget.h"
@@ -651,7 +652,7 @@ PointSetView::Display PointSetView::display() const {
 void PointSetView::setExaggeration(double factor) {
   if (!std::isfinite(factor) || factor <= 0.0) {
     throw std::invalid_argument("PointSetView::setExaggeration: factor must be positive and finite, got " +
-                                std::to_string(factor));
+                                num::toString(factor));
   }
   d->exaggeration = factor;
   d->rebuild();
@@ -664,7 +665,7 @@ double PointSetView::exaggeration() const {
 void PointSetView::setTolerance(double toleranceMm) {
   if (!std::isfinite(toleranceMm) || toleranceMm < 0.0) {
     throw std::invalid_argument("PointSetView::setTolerance: tolerance must be >= 0 and finite, got " +
-                                std::to_string(toleranceMm));
+                                num::toString(toleranceMm));
   }
   d->tolerance = toleranceMm;
   d->rebuild();
@@ -673,7 +674,7 @@ void PointSetView::setTolerance(double toleranceMm) {
 void PointSetView::setColourRange(double rangeMm) {
   if (!std::isfinite(rangeMm) || rangeMm < 0.0) {
     throw std::invalid_argument("PointSetView::setColourRange: range must be >= 0 and finite, got " +
-                                std::to_string(rangeMm));
+                                num::toString(rangeMm));
   }
   d->fixedRange = rangeMm;
   d->rebuild();

@@ -281,7 +281,7 @@ void writeSetupSection(ReportPainter& out, const ReportContext& context) {
     const std::vector<SetupMarginRow> block(rows.begin() + static_cast<std::ptrdiff_t>(first),
                                             rows.begin() + static_cast<std::ptrdiff_t>(first + n));
     const QRectF r = out.reserve(setupMarginsHeight(n, rowHeight));
-    paintSetupMargins(out.painter(), r, block, small, rowHeight);
+    paintSetupMargins(out.painter(), r, block, small, rowHeight, QLocale::c());
     first += n;
   }
   out.skip(out.mm(2.0));

@@ -21,6 +21,7 @@
 #include <memory>
 #include <string>
 
+#include "core/common/numformat.h"
 #include "core/diagnose/thermal_applied.h"
 #include "core/study/thermal_comparison.h"
 #include "core/study/trend_analysis.h"
@@ -74,7 +75,7 @@ std::uint64_t contentHash(const ThermalLog& log, const std::string& extra) {
 }
 
 std::string settingsText(const ThermalModelSettings& s) {
-  std::string t = s.target + "|" + std::to_string(s.trainFraction) + "|" + std::to_string(s.seed);
+  std::string t = s.target + "|" + num::toString(s.trainFraction) + "|" + std::to_string(s.seed);
   for (const auto& in : s.inputs) t += "," + in;
   return t + "|" + s.applied.dump();
 }
@@ -500,7 +501,7 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
         const thermal::ModelVerdict v = thermal::judgeThermalModel(ev.heldout, scale);
         verdict = thermalVerdictLabel(v);
         if (v != thermal::ModelVerdict::Usable)
-          verdict += QStringLiteral(": ") + thermalVerdictReason(v, ev.heldout);
+          verdict += QStringLiteral(": ") + thermalVerdictReason(v, ev.heldout, QLocale::c());
       }
       t.rows.push_back({part == 0 ? thermalModelName(kThermalModelOrder[i]) : QString(),
                         (part == 0 ? ReportText::tr("fit, %1") : ReportText::tr("held out, %1")).arg(m.n),
@@ -639,7 +640,8 @@ void concludeThermal(ReportPainter& out, const ReportContext& context, const Rep
     const thermal::ModelVerdict v = thermal::judgeThermalModel(ev.heldout, scale);
     if (v != thermal::ModelVerdict::Usable) {
       rejected << ReportText::tr("%1 is not usable (%2)")
-                      .arg(thermalModelName(kThermalModelOrder[i]), thermalVerdictReason(v, ev.heldout));
+                      .arg(thermalModelName(kThermalModelOrder[i]),
+                           thermalVerdictReason(v, ev.heldout, QLocale::c()));
     } else if (best < 0 || ev.heldout.rmse < c.models[static_cast<std::size_t>(best)].heldout.rmse) {
       best = static_cast<int>(i);
     }

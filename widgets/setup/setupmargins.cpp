@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <QFontMetricsF>
+#include <QLocale>
 #include <QPainter>
 #include <algorithm>
 #include <cmath>
@@ -30,7 +31,7 @@ double setupMarginsHeight(std::size_t rows, double rowHeight) {
 }
 
 void paintSetupMargins(QPainter& painter, const QRectF& rect, const std::vector<SetupMarginRow>& rows,
-                       const QFont& font, double rowHeight) {
+                       const QFont& font, double rowHeight, const QLocale& locale) {
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing);
   painter.setFont(font);
@@ -91,7 +92,7 @@ void paintSetupMargins(QPainter& painter, const QRectF& rect, const std::vector<
   painter.drawLine(QPointF(xOf(0.0), top - 2 * u), QPointF(xOf(0.0), bottom + 2 * u));
   painter.setPen(QColor(0x30, 0x30, 0x30));
   for (double v = lo; v <= hi + step * 1e-6; v += step) {
-    const QString t = QString::number(std::abs(v) < step * 1e-6 ? 0.0 : v, 'f', step < 0.01 ? 3 : 2);
+    const QString t = locale.toString(std::abs(v) < step * 1e-6 ? 0.0 : v, 'f', step < 0.01 ? 3 : 2);
     const double w = fm.horizontalAdvance(t);
     painter.drawText(QRectF(xOf(v) - w / 2 - 2 * u, bottom + 2 * u, w + 4 * u, rowHeight * 0.8),
                      Qt::AlignCenter, t);
@@ -125,8 +126,9 @@ void paintSetupMargins(QPainter& painter, const QRectF& rect, const std::vector<
     const double mb = bar(r.before, kBefore, y + 0.32 * rowHeight);
     const double ma = bar(r.after, kAfter, y + 0.68 * rowHeight);
     painter.setPen(ma < 0.0 ? kOut : QColor(0x20, 0x20, 0x20));
-    const QString values =
-        QStringLiteral("%1 → %2").arg(mb, 0, 'f', 3).arg(ma, 0, 'f', 3).replace('-', QChar(0x2212));
+    const QString values = QStringLiteral("%1 → %2")
+                               .arg(locale.toString(mb, 'f', 3), locale.toString(ma, 'f', 3))
+                               .replace('-', QChar(0x2212));
     painter.drawText(QRectF(plotRight + 6.0 * u, y, valueWidth, rowHeight), Qt::AlignVCenter | Qt::AlignLeft,
                      values);
   }

@@ -5,6 +5,7 @@
 // the unilateral error budget delta_q of objective.h (red when the dimension is out of
 // tolerance). Drawn with QPainter, so the results view and the PDF report share it.
 #include <QFont>
+#include <QLocale>
 #include <QRectF>
 #include <QString>
 #include <QWidget>
@@ -23,8 +24,9 @@ struct SetupMarginRow {
 /// Height of the drawing for `rows` rows at `rowHeight` (plus legend and axis).
 double setupMarginsHeight(std::size_t rows, double rowHeight);
 /// Draws the rows into `rect` (see above). `font` sets the text size.
+/// Numbers in `locale`: the page's UI language by default; the report (in English) passes QLocale::c().
 void paintSetupMargins(QPainter& painter, const QRectF& rect, const std::vector<SetupMarginRow>& rows,
-                       const QFont& font, double rowHeight);
+                       const QFont& font, double rowHeight, const QLocale& locale = QLocale());
 
 /// A widget showing paintSetupMargins (its minimum height grows with the rows; put it in a scroll area).
 class SetupMarginsWidget : public QWidget {
