@@ -2,7 +2,7 @@
 //
 //   match --data P.csv|HOLES.txt [--tolerance T] [--method sade|ga-simplex|closed-form|minimax]
 //   [--allow-scale]
-//         [--machine xfyzba|ac-table|bc-table] [--machine-def M.json] [--lock rx,ry,...]
+//         [--machine xfyzba|ac-table|bc-table|head-table] [--machine-def M.json] [--lock rx,ry,...]
 //         [--reference ID,ID,ID] [--seed N] [--out F] [--remeasure [--remeasure-noise MM]]
 //         [--frame heidenhain|siemens|fanuc --frame-out F [--frame-decimals N]]
 //
@@ -41,6 +41,7 @@
 #include "core/matching/matching.h"
 #include "core/matching/probe_points.h"
 #include "core/matching/remeasure.h"
+#include "core/project/project.h"
 
 namespace metrofit::cli {
 namespace {
@@ -63,7 +64,17 @@ std::string fmt(double v) {
 machine::MachineDefinition machineFor(const MatchArgs& a, bool machineGiven) {
   const machine::Topology topology = machine::parseTopology(a.machine, "--machine");
   if (a.machineDef.empty()) return machine::MachineDefinition::preset(topology);
-  const nlohmann::json j = readJsonFile(a.machineDef);
+  nlohmann::json j = readJsonFile(a.machineDef);
+  if (j.is_object() && j.value("format", "") == "metrofit-project") {
+    // A project: its matching study's machine (the one the GUI's Machine dialog edits).
+    Project p;
+    if (j.contains("studies") && j["studies"].is_object()) p.studies = j["studies"];
+    machine::MachineDefinition fromProject;
+    if (!matchingMachine(p, &fromProject, a.machineDef))
+      throw ValidationError(ErrorContext{a.machineDef, 0, 0, "studies.matching.machine"},
+                            "the project defines no machine (Posture matching › Machine… in the GUI)");
+    j = fromProject.toJson();
+  }
   machine::MachineDefinition def = machine::MachineDefinition::fromJson(j, a.machineDef);
   if (!j.is_object() || !j.contains("topology")) {
     // The file holds geometry only: its values on top of the --machine preset.
@@ -180,11 +191,13 @@ void registerMatchCommand(CLI::App& app) {
       ->check(CLI::IsMember({"sade", "ga-simplex", "closed-form", "minimax"}))
       ->capture_default_str();
   sub->add_flag("--allow-scale", a->allowScale, "Fit an isotropic scale too");
-  auto* machineOpt = sub->add_option("--machine", a->machine, "Machine topology: xfyzba|ac-table|bc-table")
-                         ->check(CLI::IsMember(machine::topologyNames()))
-                         ->capture_default_str();
+  auto* machineOpt =
+      sub->add_option("--machine", a->machine, "Machine topology: xfyzba|ac-table|bc-table|head-table")
+          ->check(CLI::IsMember(machine::topologyNames()))
+          ->capture_default_str();
   existingFile(
-      sub->add_option("--machine-def", a->machineDef, "Machine definition (JSON: pivot lengths, travel)"));
+      sub->add_option("--machine-def", a->machineDef,
+                      "Machine definition (JSON: pivot lengths, travel; or a .metrofit project's machine)"));
   sub->add_option("--lock", a->lock, "Degrees of freedom held at 0: any of rx,ry,rz,x,y,z");
   sub->add_option("--reference", a->reference, "Three point ids for the rough matching (default: automatic)");
   sub->add_flag("--remeasure", a->remeasure,

@@ -18,6 +18,7 @@
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QShortcut>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QSplitter>
@@ -25,12 +26,14 @@
 #include <QStyle>
 #include <QTabWidget>
 #include <QTableWidget>
+#include <QUndoStack>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 #include <exception>
 #include <set>
 
+#include "app/gui/machinedialog.h"
 #include "app/gui/notesedit.h"
 #include "core/common/error.h"
 #include "core/io/file_io.h"
@@ -313,6 +316,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
       frameDecimals_(new QSpinBox(this)),
       frameText_(new QPlainTextEdit(this)),
       saveFrame_(new QPushButton(tr("Save fr&ame…"), this)),
+      machineButton_(new QPushButton(tr("Mac&hine…"), this)),
       frameNote_(new QLabel(this)),
       frameTab_(nullptr),
       message_(new QLabel(this)),
@@ -385,7 +389,17 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   auto* machineLayout = new QVBoxLayout(machineBox);
   machineLayout->setContentsMargins(4, 4, 4, 4);
   machineLabel_->setWordWrap(true);
-  machineLayout->addWidget(machineLabel_);
+  machineButton_->setObjectName(QStringLiteral("machineButton"));
+  machineButton_->setToolTip(
+      tr("The machine the adjustment values are for: topology, geometry, travel and control (Ctrl+Shift+M)"));
+  connect(machineButton_, &QPushButton::clicked, this, &MatchingPage::editMachine);
+  auto* machineShortcut = new QShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M), this);
+  machineShortcut->setContext(Qt::WidgetWithChildrenShortcut);
+  connect(machineShortcut, &QShortcut::activated, this, &MatchingPage::editMachine);
+  auto* machineRow = new QHBoxLayout;
+  machineRow->addWidget(machineLabel_, 1);
+  machineRow->addWidget(machineButton_, 0, Qt::AlignTop);
+  machineLayout->addLayout(machineRow);
   machineLayout->addWidget(machineTable_, 1);
   auto* resultsTab = new QSplitter(Qt::Horizontal, tabs_);
   resultsTab->addWidget(methodsTable_);
@@ -650,7 +664,17 @@ void MatchingPage::refresh() {
       const matching::MatchingStudySettings settings =
           matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
       settingsError_.clear();
-      if (!syncSettingsFromStudy(settings)) return;
+      // The machine has no control on the page: the adjustment values follow it without a new run.
+      const bool machineChanged = settings.options.machine.toJson() != settings_.options.machine.toJson();
+      settings_.options.machine = settings.options.machine;
+      if (machineChanged && result_) result_->machine = settings.options.machine;
+      if (!syncSettingsFromStudy(settings)) {
+        if (machineChanged && result_)
+          applyResult();
+        else if (machineChanged)
+          fillMachineLabel();
+        return;
+      }
     } catch (const std::exception& e) {
       settingsError_ = QString::fromUtf8(e.what());
       status_->setText(settingsErrorText());
@@ -758,7 +782,7 @@ void MatchingPage::showPoints(int comboIndex) {
   machineTable_->setRowCount(0);
   remeasureTable_->setRowCount(0);
   remeasureLabel_->clear();
-  machineLabel_->clear();
+  fillMachineLabel();
   updateViews();
   fillPointTable();
   fillFrame();
@@ -1042,17 +1066,75 @@ void MatchingPage::fillMethodsTable() {
   ColumnFitter::of(methodsTable_)->fit();
 }
 
-void MatchingPage::fillMachineTable() {
+namespace {
+QString topologyDescription(machine::Topology t) {
+  switch (t) {
+    case machine::Topology::Xfyzba:
+      return MatchingPage::tr("head-head, Eq. 12–13");
+    case machine::Topology::AcTable:
+    case machine::Topology::BcTable:
+      return MatchingPage::tr("table-table trunnion");
+    case machine::Topology::HeadTable:
+      return MatchingPage::tr("B swivel head, C rotary table");
+  }
+  return {};
+}
+}  // namespace
+
+bool MatchingPage::hasProjectMachine() const {
+  return !document_->studyValue(QString::fromLatin1(study::kMatching), QStringLiteral("/machine")).is_null();
+}
+
+void MatchingPage::fillMachineLabel() {
+  const machine::Topology t = settings_.options.machine.topology;
+  const QString which =
+      hasProjectMachine()
+          ? tr("the project's machine %1 (%2)")
+                .arg(QString::fromLatin1(machine::topologyName(t)), topologyDescription(t))
+          : tr("the default machine %1 (%2): no machine is defined for this project; enter yours with "
+               "Machine… (Ctrl+Shift+M) before using these values at the control")
+                .arg(QString::fromLatin1(machine::topologyName(t)), topologyDescription(t));
+  if (!result_) {
+    machineLabel_->setText(tr("Adjustment values will be for %1.").arg(which));
+    return;
+  }
   const machine::Adjustment& a = result_->adjustment;
-  const auto names = machine::rotaryAxisNames(a.topology);
   machineLabel_->setText(
-      tr("Machine adjustment values for %1 (%2), posture of %3. %4")
-          .arg(QString::fromLatin1(machine::topologyName(a.topology)))
-          .arg(a.topology == machine::Topology::Xfyzba ? tr("head-head, Eq. 12–13")
-                                                       : tr("table-table trunnion"))
+      tr("Machine adjustment values for %1, posture of %2. %3")
+          .arg(which)
           .arg(methodShort(result_->primary))
           .arg(a.withinTravel ? tr("Within travel.")
                               : tr("OUTSIDE TRAVEL: %1").arg(QString::fromStdString(a.travelMessage))));
+}
+
+void MatchingPage::editMachine() {
+  MachineDialog dialog(settings_.options.machine, frameFormat(), this);
+  if (dialog.exec() != QDialog::Accepted || !dialog.isDefinitionValid()) return;
+  setMachine(dialog.definition(), dialog.controller());
+}
+
+void MatchingPage::setMachine(const machine::MachineDefinition& definition, machine::FrameFormat controller) {
+  std::string why;
+  if (!definition.isValid(&why)) return;
+  document_->endEditSequence();
+  document_->undoStack()->beginMacro(tr("Change the machine"));
+  document_->setStudyValue(QString::fromLatin1(study::kMatching), QStringLiteral("/machine"),
+                           definition.toJson(), tr("Change the machine"));
+  if (controller != frameFormat() || hasFrameSetting())
+    document_->setStudyValue(QString::fromLatin1(study::kMatching), QStringLiteral("/frame"),
+                             machine::toString(controller), tr("Change the controller frame"));
+  document_->undoStack()->endMacro();
+  document_->endEditSequence();
+}
+
+bool MatchingPage::hasFrameSetting() const {
+  return !document_->studyValue(QString::fromLatin1(study::kMatching), QStringLiteral("/frame")).is_null();
+}
+
+void MatchingPage::fillMachineTable() {
+  const machine::Adjustment& a = result_->adjustment;
+  const auto names = machine::rotaryAxisNames(a.topology);
+  fillMachineLabel();
   machineTable_->setRowCount(0);
   auto addRow = [&](const QString& axis, double value, const QString& unit, int decimals) {
     const int row = machineTable_->rowCount();

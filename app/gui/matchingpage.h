@@ -78,6 +78,13 @@ class MatchingPage : public QWidget {
   QSpinBox* frameDecimalsSpin() const { return frameDecimals_; }
   QPlainTextEdit* frameTextBox() const { return frameText_; }
   QPushButton* saveFrameButton() const { return saveFrame_; }
+  /// "Machine…" (Ctrl+Shift+M): the project's machine (topology, geometry, travel, control).
+  QPushButton* machineButton() const { return machineButton_; }
+  QLabel* machineLabel() const { return machineLabel_; }
+  /// Opens the machine dialog; on OK writes studies.matching.machine and .frame in one undo step.
+  void editMachine();
+  /// Writes the machine and the control as the dialog does (one undo step "Change the machine").
+  void setMachine(const machine::MachineDefinition& definition, machine::FrameFormat controller);
   machine::FrameFormat frameFormat() const;
   void setFrameFormat(machine::FrameFormat format);
   /// The frame's blocks (controllerFrameBlocks) of the primary method's posture, one per line; empty
@@ -124,6 +131,10 @@ class MatchingPage : public QWidget {
   void updateViews();
   void fillMethodsTable();
   void fillMachineTable();
+  /// "Machine adjustment values for the project's machine ..." or the default machine's warning.
+  void fillMachineLabel();
+  bool hasProjectMachine() const;
+  bool hasFrameSetting() const;
   void fillRemeasureTable();
   void fillPointTable();
   void fillFrame();
@@ -158,6 +169,7 @@ class MatchingPage : public QWidget {
   QSpinBox* frameDecimals_;
   QPlainTextEdit* frameText_;
   QPushButton* saveFrame_;
+  QPushButton* machineButton_;
   QLabel* frameNote_;
   QWidget* frameTab_;
   QString datasetFile_;  ///< the shown probe points' file (the frame program's title)

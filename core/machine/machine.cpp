@@ -65,8 +65,28 @@ Eigen::Vector3d vec3(const JsonReader& parent, const std::string& key, const Eig
   return v;
 }
 
+constexpr Topology kTopologies[] = {Topology::Xfyzba, Topology::AcTable, Topology::BcTable,
+                                    Topology::HeadTable};
+
+std::string topologyList() {
+  std::string s;
+  for (Topology t : kTopologies) s += std::string(s.empty() ? "" : ", ") + topologyName(t);
+  return s;
+}
+
 void checkTravel(const MachineDefinition& m, Adjustment& a) {
   const auto names = rotaryAxisNames(m.topology);
+  static constexpr const char* kLinear[3] = {"X", "Y", "Z"};
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (a.linearMm(i) < m.linearMinMm[k] - 1e-9 || a.linearMm(i) > m.linearMaxMm[k] + 1e-9) {
+      a.withinTravel = false;
+      if (!a.travelMessage.empty()) a.travelMessage += "; ";
+      a.travelMessage += std::string("S") + kLinear[k] + " = " + num::toString(a.linearMm(i)) +
+                         " mm is outside its travel [" + num::toString(m.linearMinMm[k]) + ", " +
+                         num::toString(m.linearMaxMm[k]) + "]";
+    }
+  }
   for (std::size_t i = 0; i < 2; ++i) {
     if (a.rotaryDeg[i] < m.rotaryMinDeg[i] - 1e-9 || a.rotaryDeg[i] > m.rotaryMaxDeg[i] + 1e-9) {
       a.withinTravel = false;
@@ -88,20 +108,22 @@ const char* topologyName(Topology t) {
       return "ac-table";
     case Topology::BcTable:
       return "bc-table";
+    case Topology::HeadTable:
+      return "head-table";
   }
   return "?";
 }
 
 std::vector<std::string> topologyNames() {
-  return {"xfyzba", "ac-table", "bc-table"};
+  return {"xfyzba", "ac-table", "bc-table", "head-table"};
 }
 
 Topology parseTopology(const std::string& name, const std::string& field) {
-  for (Topology t : {Topology::Xfyzba, Topology::AcTable, Topology::BcTable}) {
+  for (Topology t : kTopologies) {
     if (name == topologyName(t)) return t;
   }
   throw OptionsError(ErrorContext{{}, 0, 0, field},
-                     "unknown machine topology '" + name + "' (one of xfyzba, ac-table, bc-table)");
+                     "unknown machine topology '" + name + "' (one of " + topologyList() + ")");
 }
 
 std::array<const char*, 2> rotaryAxisNames(Topology t) {
@@ -111,6 +133,7 @@ std::array<const char*, 2> rotaryAxisNames(Topology t) {
     case Topology::AcTable:
       return {"A", "C"};
     case Topology::BcTable:
+    case Topology::HeadTable:
       return {"B", "C"};
   }
   return {"?", "?"};
@@ -121,8 +144,13 @@ bool MachineDefinition::isValid(std::string* why) const {
     if (why) *why = w;
     return false;
   };
-  for (double v : {lx, ly, lz, lab}) {
-    if (!std::isfinite(v)) return no("pivot lengths LX, LY, LZ, LAB must be finite");
+  for (double v : {lx, ly, lz, lab, pivot}) {
+    if (!std::isfinite(v)) return no("pivot lengths LX, LY, LZ, LAB and pivot_mm must be finite");
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (std::isnan(linearMinMm[i]) || std::isnan(linearMaxMm[i]) || linearMinMm[i] == kUnlimited ||
+        linearMaxMm[i] == -kUnlimited || linearMinMm[i] > linearMaxMm[i])
+      return no(std::string("travel of linear axis ") + "XYZ"[i] + " must have min <= max");
   }
   if (!tiltAxisPoint.allFinite() || !rotaryAxisPoint.allFinite()) return no("axis points must be finite");
   for (std::size_t i = 0; i < 2; ++i) {
@@ -143,7 +171,16 @@ nlohmann::json MachineDefinition::toJson() const {
   j["LAB_mm"] = lab;
   j["tilt_axis_point_mm"] = {tiltAxisPoint.x(), tiltAxisPoint.y(), tiltAxisPoint.z()};
   j["rotary_axis_point_mm"] = {rotaryAxisPoint.x(), rotaryAxisPoint.y(), rotaryAxisPoint.z()};
+  j["pivot_mm"] = pivot;
   j["rotary_travel_deg"] = {{rotaryMinDeg[0], rotaryMaxDeg[0]}, {rotaryMinDeg[1], rotaryMaxDeg[1]}};
+  bool limited = false;
+  nlohmann::json linear = nlohmann::json::array();
+  for (std::size_t i = 0; i < 3; ++i) {
+    auto bound = [&](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+    limited = limited || std::isfinite(linearMinMm[i]) || std::isfinite(linearMaxMm[i]);
+    linear.push_back({bound(linearMinMm[i]), bound(linearMaxMm[i])});
+  }
+  if (limited) j["linear_travel_mm"] = std::move(linear);
   return j;
 }
 
@@ -154,14 +191,13 @@ MachineDefinition MachineDefinition::fromJson(const nlohmann::json& j, const std
   if (r.has("topology")) {
     const std::string name = r.string("topology");
     bool known = false;
-    for (Topology t : {Topology::Xfyzba, Topology::AcTable, Topology::BcTable}) {
+    for (Topology t : kTopologies) {
       if (name == topologyName(t)) {
         m = preset(t);
         known = true;
       }
     }
-    if (!known)
-      r.fail("unknown machine topology '" + name + "' (one of xfyzba, ac-table, bc-table)", "topology");
+    if (!known) r.fail("unknown machine topology '" + name + "' (one of " + topologyList() + ")", "topology");
   }
   m.lx = r.number("LX_mm", m.lx);
   m.ly = r.number("LY_mm", m.ly);
@@ -169,6 +205,23 @@ MachineDefinition MachineDefinition::fromJson(const nlohmann::json& j, const std
   m.lab = r.number("LAB_mm", m.lab);
   m.tiltAxisPoint = vec3(r, "tilt_axis_point_mm", m.tiltAxisPoint);
   m.rotaryAxisPoint = vec3(r, "rotary_axis_point_mm", m.rotaryAxisPoint);
+  m.pivot = r.number("pivot_mm", m.pivot);
+  if (r.has("linear_travel_mm")) {
+    const JsonReader a = r.array("linear_travel_mm");
+    const char* shape = "expected [[min, max], [min, max], [min, max]] for X, Y, Z (null: no limit)";
+    if (a.size() != 3) r.fail(shape, "linear_travel_mm");
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto& e = a.at(i).json();
+      if (!e.is_array() || e.size() != 2) r.fail(shape, "linear_travel_mm");
+      for (std::size_t k = 0; k < 2; ++k) {
+        if (e[k].is_null()) continue;
+        if (!e[k].is_number() || !std::isfinite(e[k].get<double>())) r.fail(shape, "linear_travel_mm");
+        (k == 0 ? m.linearMinMm : m.linearMaxMm)[i] = e[k].get<double>();
+      }
+      if (!(m.linearMinMm[i] <= m.linearMaxMm[i]))
+        a.at(i).fail(std::string("travel of linear axis ") + "XYZ"[i] + " must have min <= max");
+    }
+  }
   if (r.has("rotary_travel_deg")) {
     const JsonReader a = r.array("rotary_travel_deg");
     if (a.size() != 2) r.fail("expected [[min, max], [min, max]]", "rotary_travel_deg");
@@ -194,6 +247,9 @@ MachineDefinition MachineDefinition::preset(Topology t) {
   if (t == Topology::Xfyzba) {
     m.rotaryMinDeg = {-95.0, -180.0};  // A tilts the spindle, B swivels it
     m.rotaryMaxDeg = {95.0, 180.0};
+  } else if (t == Topology::HeadTable) {
+    m.rotaryMinDeg = {-110.0, -360.0};  // B swivel head, endless C table within one turn each way
+    m.rotaryMaxDeg = {110.0, 360.0};
   } else {
     m.rotaryMinDeg = {-120.0, -360.0};  // trunnion tilt, endless C within one turn each way
     m.rotaryMaxDeg = {120.0, 360.0};
@@ -217,6 +273,14 @@ Eigen::Vector3d tableToMachine(const MachineDefinition& m, double tiltDeg, doubl
   return a0 + tiltRotation(m.topology, tiltDeg * kDeg) * (c0 - a0 + rotZ(cDeg * kDeg) * (x - c0));
 }
 
+void headTableForward(const MachineDefinition& m, const Eigen::Vector3d& S, double bDeg,
+                      Eigen::Vector3d* cutterLocation, Eigen::Vector3d* toolAxis) {
+  const Eigen::Matrix3d head = rotY(bDeg * kDeg);
+  const Eigen::Vector3d pivot(0.0, 0.0, m.pivot);
+  if (cutterLocation) *cutterLocation = S + pivot - head * pivot;
+  if (toolAxis) *toolAxis = head * Eigen::Vector3d::UnitZ();
+}
+
 Adjustment adjustmentFor(const MachineDefinition& m, const Eigen::Matrix3d& R, const Eigen::Vector3d& t) {
   requireValid(m, "machine definition");
   if (!R.allFinite() || !t.allFinite() || std::abs(R.determinant() - 1.0) > 1e-6 ||
@@ -237,6 +301,25 @@ Adjustment adjustmentFor(const MachineDefinition& m, const Eigen::Matrix3d& R, c
     // Eq. (13) solved for the linear axes.
     a.linearMm = t + Eigen::Vector3d(m.lx, m.ly, m.lz + m.lab) -
                  rotY(sb) * (Eigen::Vector3d(0.0, 0.0, m.lab) + rotX(sa) * Eigen::Vector3d(m.lx, m.ly, m.lz));
+  } else if (m.topology == Topology::HeadTable) {
+    // c = (cos C sin B, -sin C sin B, cos B).
+    const double sB = std::hypot(c.x(), c.y());
+    double b = std::atan2(sB, c.z());  // in [0, pi]
+    double rot = 0.0;
+    if (sB > 1e-15) {
+      rot = std::atan2(-c.y(), c.x());
+      if (std::abs(rot) > std::numbers::pi / 2.0) {  // (-B, C + 180 deg) keeps |C| <= 90 deg
+        b = -b;
+        rot = rot > 0.0 ? rot - std::numbers::pi : rot + std::numbers::pi;
+      }
+    }
+    const Eigen::Matrix3d head = rotY(b);
+    const Eigen::Matrix3d rest = head.transpose() * rotZ(rot) * R;
+    a.rotaryDeg = {b / kDeg, rot / kDeg};
+    a.frameRotationDeg = std::atan2(rest(1, 0), rest(0, 0)) / kDeg;
+    const Eigen::Vector3d& c0 = m.rotaryAxisPoint;
+    const Eigen::Vector3d pivot(0.0, 0.0, m.pivot);
+    a.linearMm = c0 + rotZ(rot) * (t - c0) - pivot + head * pivot;
   } else {
     const double sT = std::hypot(c.x(), c.y());
     double tilt = std::atan2(sT, c.z());  // in [0, pi]
@@ -267,6 +350,16 @@ Frame realisedFrame(const MachineDefinition& m, const Adjustment& v) {
   if (m.topology == Topology::Xfyzba) {
     headHeadForward(m, v.linearMm, v.rotaryDeg[0], v.rotaryDeg[1], &f.origin, &f.toolAxis);
     f.rotation = rotY(v.rotaryDeg[1] * kDeg) * rotX(v.rotaryDeg[0] * kDeg) * phi;
+  } else if (m.topology == Topology::HeadTable) {
+    // Machine -> table coordinates: x = c0 + Rz(C)^T (M - c0).
+    const Eigen::Matrix3d Rz = rotZ(v.rotaryDeg[1] * kDeg);
+    const Eigen::Matrix3d head = rotY(v.rotaryDeg[0] * kDeg);
+    const Eigen::Vector3d& c0 = m.rotaryAxisPoint;
+    Eigen::Vector3d cl, axis;
+    headTableForward(m, v.linearMm, v.rotaryDeg[0], &cl, &axis);
+    f.origin = c0 + Rz.transpose() * (cl - c0);
+    f.rotation = Rz.transpose() * head * phi;
+    f.toolAxis = Rz.transpose() * axis;
   } else {
     const Eigen::Matrix3d Q = tiltRotation(m.topology, v.rotaryDeg[0] * kDeg) * rotZ(v.rotaryDeg[1] * kDeg);
     // Invert M(x) = a0 + Q' (c0 - a0 + Rz (x - c0)) for the machine point S.

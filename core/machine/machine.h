@@ -40,7 +40,24 @@
 // |C| <= 90 deg is taken (C = 0 when c = e_z: the trunnion's pole). The linear axes then go to the new
 // WCS origin (SX, SY, SZ) = M(t), and the remaining rotation about the tool, Rot_z(phi) = Q R, is again
 // the control's coordinate rotation. Forward check: M(R q + t) = (SX, SY, SZ) + Rot_z(phi) q for every q.
+//
+// ---- Head-table (B swivel head about y, C rotary table about z; "head-table") ----
+// The table turns the workpiece, the head tilts the tool: a table point x lies at the machine point
+//   M(x) = c_0 + Rot_z(C) (x - c_0),   orientation Q = Rot_z(C),
+// and the tool of a head whose B pivot is L above the cutter location point (L = pivot_mm, the pivot
+// length) at axis values (SX, SY, SZ, B) has
+//   CL = (SX, SY, SZ) + (0, 0, L) - Rot_y(B) (0, 0, L),   axis = Rot_y(B) e_z
+// (CL = (SX, SY, SZ) at B = 0). The adjusted WCS needs its z axis along the tool: Q R e_z = Rot_y(B) e_z,
+// i.e. c = R e_z = Rot_z(-C) (sin B, 0, cos B) = (cos C sin B, -sin C sin B, cos B), so
+// B = +-acos(c_z), C = atan2(-c_y, c_x) for B >= 0 (the solution with |C| <= 90 deg is taken, as for the
+// trunnions); the linear axes put CL on the new origin, (SX, SY, SZ) = M(t) - (0, 0, L) + Rot_y(B) (0,0,L),
+// and the rotation left about the tool, Rot_z(phi) = Rot_y(B)^T Q R, is the control's coordinate rotation.
+// Forward check: M(R q + t) = CL + Rot_y(B) Rot_z(phi) q for every q.
+//
+// Travel: the two rotary axes always have limits; the linear axes (SX, SY, SZ) optionally, in the
+// coordinates of the adjustment values.
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -50,21 +67,23 @@
 namespace metrofit::machine {
 
 enum class Topology {
-  Xfyzba,   ///< head-head, the paper's example ("xfyzba")
-  AcTable,  ///< table-table trunnion, A tilts about x and carries C ("ac-table")
-  BcTable,  ///< table-table trunnion, B tilts about y and carries C ("bc-table")
+  Xfyzba,     ///< head-head, the paper's example ("xfyzba")
+  AcTable,    ///< table-table trunnion, A tilts about x and carries C ("ac-table")
+  BcTable,    ///< table-table trunnion, B tilts about y and carries C ("bc-table")
+  HeadTable,  ///< B swivel head about y, C rotary table about z ("head-table")
 };
 
 const char* topologyName(Topology t);
-/// "xfyzba", "ac-table", "bc-table".
+/// "xfyzba", "ac-table", "bc-table", "head-table".
 std::vector<std::string> topologyNames();
 /// OptionsError naming `field` and the known names when `name` is unknown.
 Topology parseTopology(const std::string& name, const std::string& field);
-/// Names of the two rotary axes in the order of Adjustment::rotaryDeg: A,B | A,C | B,C.
+/// Names of the two rotary axes in the order of Adjustment::rotaryDeg: A,B | A,C | B,C | B,C.
 std::array<const char*, 2> rotaryAxisNames(Topology t);
 
 /// A machine's geometry (lives in the project file under studies.matching.machine).
 struct MachineDefinition {
+  static constexpr double kUnlimited = std::numeric_limits<double>::infinity();
   Topology topology = Topology::Xfyzba;
   // XFYZBA (Eq. 12-13), mm.
   double lx = 0.0, ly = 0.0, lz = -150.0;  ///< cutter location point in the A frame
@@ -72,14 +91,20 @@ struct MachineDefinition {
   // Table-table, mm, WCS coordinates at the zero position.
   Eigen::Vector3d tiltAxisPoint{0.0, 0.0, -100.0};  ///< a_0, on the tilt axis (A: parallel x, B: parallel y)
   Eigen::Vector3d rotaryAxisPoint{0.0, 0.0, 0.0};   ///< c_0, on the C axis (parallel z at T = 0)
+  // Head-table, mm: the B pivot's height above the cutter location point (the head's pivot length).
+  double pivot = 150.0;
   // Travel of the two rotary axes (order of rotaryAxisNames), deg.
   std::array<double, 2> rotaryMinDeg{-120.0, -360.0};
   std::array<double, 2> rotaryMaxDeg{120.0, 360.0};
+  // Travel of SX, SY, SZ, mm; +-infinity (the default) when not limited.
+  std::array<double, 3> linearMinMm{-kUnlimited, -kUnlimited, -kUnlimited};
+  std::array<double, 3> linearMaxMm{kUnlimited, kUnlimited, kUnlimited};
 
   bool isValid(std::string* why) const;
   /// {"topology": "xfyzba", "LX_mm": .., "LY_mm": .., "LZ_mm": .., "LAB_mm": ..,
-  ///  "tilt_axis_point_mm": [x, y, z], "rotary_axis_point_mm": [x, y, z],
-  ///  "rotary_travel_deg": [[min, max], [min, max]]}
+  ///  "tilt_axis_point_mm": [x, y, z], "rotary_axis_point_mm": [x, y, z], "pivot_mm": ..,
+  ///  "rotary_travel_deg": [[min, max], [min, max]],
+  ///  "linear_travel_mm": [[min, max], [min, max], [min, max]] (only when limited; null = no limit)}
   nlohmann::json toJson() const;
   /// Missing keys keep their defaults; ValidationError naming `source` and the field otherwise.
   static MachineDefinition fromJson(const nlohmann::json& j, const std::string& source);
@@ -116,6 +141,9 @@ void headHeadForward(const MachineDefinition& machine, const Eigen::Vector3d& li
 /// Table-table forward: machine coordinates of table point x at tilt T and rotary C (see above).
 Eigen::Vector3d tableToMachine(const MachineDefinition& machine, double tiltDeg, double cDeg,
                                const Eigen::Vector3d& x);
+/// Head-table forward: cutter location point and tool axis of the B head at (SX, SY, SZ, B).
+void headTableForward(const MachineDefinition& machine, const Eigen::Vector3d& linearMm, double bDeg,
+                      Eigen::Vector3d* cutterLocation, Eigen::Vector3d* toolAxis);
 
 /// {"topology": "xfyzba", "SX_mm": .., "SY_mm": .., "SZ_mm": .., "SA_deg": .., "SB_deg": ..,
 ///  "frame_rotation_deg": .., "within_travel": true} (rotary keys "S" + rotaryAxisNames + "_deg").

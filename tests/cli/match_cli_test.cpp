@@ -99,6 +99,24 @@ TEST_F(MatchCli, LocksScaleAndMachines) {
   test::writeText(tmp.file("m.json"), R"({"LZ_mm": -250, "LAB_mm": -80})");
   const nlohmann::json d = runJson("match --data p.csv --method closed-form --machine-def m.json", tmp);
   EXPECT_EQ(d.at("machine").at("definition").at("LZ_mm").get<double>(), -250.0);
+  const nlohmann::json ht = runJson("match --data p.csv --method closed-form --machine head-table", tmp);
+  EXPECT_EQ(ht.at("machine").at("topology"), "head-table");
+  EXPECT_TRUE(ht.at("machine").contains("SB_deg"));
+  EXPECT_TRUE(ht.at("machine").contains("SC_deg"));
+  // A project as the machine definition: its matching study's machine (what the GUI's dialog writes).
+  test::writeText(tmp.file("cell.metrofit"),
+                  R"({"format": "metrofit-project", "version": 1, "name": "cell", "datasets": [],
+                      "studies": {"matching": {"machine": {"topology": "head-table", "pivot_mm": 300,
+                                                           "linear_travel_mm": [[null, null], [-0.01, 0.01], [null, null]]}}}})");
+  const nlohmann::json pr =
+      runJson("match --data p.csv --method closed-form --machine-def cell.metrofit", tmp);
+  EXPECT_EQ(pr.at("machine").at("topology"), "head-table");
+  EXPECT_EQ(pr.at("machine").at("definition").at("pivot_mm").get<double>(), 300.0);
+  EXPECT_EQ(pr.at("machine").at("definition").at("linear_travel_mm")[1][0].get<double>(), -0.01);
+  // Same values as the same machine given as a machine file.
+  test::writeText(tmp.file("ht.json"), pr.at("machine").at("definition").dump());
+  const nlohmann::json file = runJson("match --data p.csv --method closed-form --machine-def ht.json", tmp);
+  EXPECT_EQ(file.at("machine"), pr.at("machine"));
 }
 
 TEST_F(MatchCli, RemeasureLoopReportsItsOutcome) {
@@ -140,6 +158,8 @@ TEST_F(MatchCli, BadInputExits2WithOneLine) {
                   "id,qx,qy,qz,px,py,pz\nA,0,0,0,0,0,0\nB,1,1,1,1,1,1\nC,2,2,2,2,2,2\n");
   test::writeText(tmp.file("two.csv"), "id,qx,qy,qz,px,py,pz\nA,0,0,0,0,0,0\nB,1,0,0,1,0,0\n");
   test::writeText(tmp.file("bad.json"), R"({"topology": "hexapod"})");
+  test::writeText(tmp.file("nomachine.metrofit"),
+                  R"({"format": "metrofit-project", "version": 1, "datasets": [], "studies": {}})");
   for (const Case& c :
        {Case{"match --data p.csv --lock rx,w", "--lock"},
         Case{"match --data p.csv --reference P001,P002", "--reference"},
@@ -148,6 +168,8 @@ TEST_F(MatchCli, BadInputExits2WithOneLine) {
         Case{"match --data two.csv", "two.csv: has 2 points"},
         Case{"match --data p.csv --machine hexapod", "--machine"},
         Case{"match --data p.csv --machine-def bad.json", "bad.json"},
+        Case{"match --data p.csv --machine-def nomachine.metrofit",
+             "nomachine.metrofit: field 'studies.matching.machine': the project defines no machine"},
         Case{"match --data p.csv --method icp", "--method"},
         Case{"match --data p.csv --frame fanuc", "field '--frame': needs --frame-out FILE"},
         Case{"match --data p.csv --frame-out f.nc",

@@ -7,11 +7,14 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
+#include <QLabel>
 #include <QLocale>
+#include <QProcess>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
@@ -20,9 +23,13 @@
 #include <QTest>
 #include <QUndoStack>
 #include <cmath>
+#include <fstream>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #define METROFIT_TEST_QT_XVFB
+#include "app/gui/machinedialog.h"
 #include "app/gui/matchingpage.h"
 #include "core/project/project.h"
 #include "core/sim/probe_sim.h"
@@ -292,6 +299,123 @@ TEST_F(MatchingPageTest, BadDataShowAReadableMessage) {
   page_->selectDataset(QStringLiteral("s_piece"));
   EXPECT_TRUE(page_->errorMessage().isEmpty());
   EXPECT_TRUE(page_->runNow());
+}
+
+// The machine of the project (issue 27 item 5): the dialog's definition goes into the study as one
+// undo step, the adjustment values follow it without a new run, and the exported JSON is what
+// `metrofit-cli match --machine-def` reads: the CLI gives the page's values for the same posture.
+TEST_F(MatchingPageTest, MachineDialogDefinesTheMachineUndoablyAndTheCliReadsTheSameJson) {
+  page_->setMethod(matching::MatchMethod::ClosedForm);  // deterministic: the CLI finds the same posture
+  ASSERT_TRUE(page_->runNow()) << page_->errorMessage().toStdString();
+  QTableWidget* table = page_->machineTable();
+  ASSERT_EQ(table->rowCount(), 6);
+  EXPECT_EQ(table->item(3, 0)->text(), QStringLiteral("SA"));
+  EXPECT_TRUE(page_->machineLabel()->text().contains(QStringLiteral("project's machine ac-table")))
+      << page_->machineLabel()->text().toStdString();
+  const double acX = cellNumber(table->item(0, 1));
+
+  // The dialog: head-table with a pivot, a C axis off the origin, SY limited so that the values leave it.
+  MachineDialog dialog(page_->result()->machine, machine::FrameFormat::Heidenhain);
+  QComboBox* topology = dialog.topologyCombo();
+  topology->setCurrentIndex(topology->findData(static_cast<int>(machine::Topology::HeadTable)));
+  dialog.findChild<QDoubleSpinBox*>(QStringLiteral("machinePivot"))->setValue(212.5);
+  dialog.findChild<QDoubleSpinBox*>(QStringLiteral("machineRotaryPointx"))->setValue(40.0);
+  dialog.findChild<QDoubleSpinBox*>(QStringLiteral("machineRotaryPointy"))->setValue(-25.0);
+  dialog.findChild<QCheckBox*>(QStringLiteral("machineLinearLimitedY"))->setChecked(true);
+  dialog.findChild<QDoubleSpinBox*>(QStringLiteral("machineLinearMinY"))->setValue(0.5);
+  dialog.findChild<QDoubleSpinBox*>(QStringLiteral("machineLinearMaxY"))->setValue(0.6);
+  ASSERT_TRUE(dialog.isDefinitionValid()) << dialog.problem().toStdString();
+  dialog.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&dialog));
+  save(dialog.grab().toImage(), QStringLiteral("machine-dialog.png"));
+  dialog.hide();
+  const machine::MachineDefinition def = dialog.definition();
+  EXPECT_EQ(def.topology, machine::Topology::HeadTable);
+  EXPECT_EQ(def.pivot, 212.5);
+  EXPECT_EQ(def.linearMinMm[1], 0.5);
+  EXPECT_TRUE(std::isinf(def.linearMinMm[0]));
+
+  const int undoBefore = document_.undoStack()->count();
+  page_->setMachine(def, dialog.controller());
+  EXPECT_EQ(document_.undoStack()->count(), undoBefore + 1) << "one undo step";
+  EXPECT_EQ(document_.project().studies["matching"]["machine"], def.toJson());
+  EXPECT_FALSE(document_.project().studies["matching"].contains("frame")) << "the control did not change";
+  // The values follow the machine without a new run: B and C rows, values of the head-table chain.
+  ASSERT_EQ(table->rowCount(), 6);
+  EXPECT_EQ(table->item(3, 0)->text(), QStringLiteral("SB"));
+  EXPECT_EQ(table->item(4, 0)->text(), QStringLiteral("SC"));
+  const matching::MatchResult& cf = *page_->result()->of(matching::MatchMethod::ClosedForm);
+  const machine::Adjustment a = machine::adjustmentFor(def, cf.pose.rotation, cf.pose.translation);
+  EXPECT_NEAR(cellNumber(table->item(0, 1)), a.linearMm.x(), 1e-4);
+  EXPECT_NEAR(cellNumber(table->item(3, 1)), a.rotaryDeg[0], 1e-5);
+  EXPECT_GT(std::abs(cellNumber(table->item(0, 1)) - acX), 1e-3) << "another machine, other values";
+  EXPECT_FALSE(a.withinTravel);
+  EXPECT_TRUE(page_->machineLabel()->text().contains(QStringLiteral("OUTSIDE TRAVEL: SY")))
+      << page_->machineLabel()->text().toStdString();
+
+  // Export: the CLI reads the same JSON and writes the page's values.
+  const QString machineFile = dir_.filePath(QStringLiteral("machine.json"));
+  ASSERT_TRUE(dialog.exportFile(machineFile)) << dialog.problem().toStdString();
+  QProcess cli;
+  const QString out = dir_.filePath(QStringLiteral("match.json"));
+  cli.start(QStringLiteral(METROFIT_CLI_EXECUTABLE),
+            {QStringLiteral("match"), QStringLiteral("--data"), dir_.filePath(QStringLiteral("s.csv")),
+             QStringLiteral("--method"), QStringLiteral("closed-form"), QStringLiteral("--machine-def"),
+             machineFile, QStringLiteral("--out"), out});
+  ASSERT_TRUE(cli.waitForFinished(60000));
+  ASSERT_EQ(cli.exitCode(), 0) << cli.readAllStandardError().toStdString();
+  std::ifstream in(out.toStdString());
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["machine"]["topology"], "head-table");
+  EXPECT_NEAR(j["machine"]["SX_mm"].get<double>(), cellNumber(table->item(0, 1)), 1e-4);
+  EXPECT_NEAR(j["machine"]["SY_mm"].get<double>(), cellNumber(table->item(1, 1)), 1e-4);
+  EXPECT_NEAR(j["machine"]["SZ_mm"].get<double>(), cellNumber(table->item(2, 1)), 1e-4);
+  EXPECT_NEAR(j["machine"]["SB_deg"].get<double>(), cellNumber(table->item(3, 1)), 1e-5);
+  EXPECT_NEAR(j["machine"]["SC_deg"].get<double>(), cellNumber(table->item(4, 1)), 1e-5);
+  EXPECT_EQ(j["machine"]["within_travel"], false);
+
+  // Undo: the project's AC machine and its values are back.
+  document_.undoStack()->undo();
+  EXPECT_EQ(document_.project().studies["matching"]["machine"], nlohmann::json({{"topology", "ac"}}));
+  EXPECT_EQ(table->item(3, 0)->text(), QStringLiteral("SA"));
+  EXPECT_NEAR(cellNumber(table->item(0, 1)), acX, 1e-9);
+
+  // No machine in the project: the label says the values are the default machine's.
+  document_.setStudyValue(QStringLiteral("matching"), QStringLiteral("/machine"), nlohmann::json(),
+                          QStringLiteral("remove"));
+  EXPECT_TRUE(page_->machineLabel()->text().contains(QStringLiteral("no machine is defined")))
+      << page_->machineLabel()->text().toStdString();
+  EXPECT_EQ(table->item(3, 0)->text(), QStringLiteral("SA"));
+  EXPECT_EQ(table->item(4, 0)->text(), QStringLiteral("SB"));
+}
+
+TEST_F(MatchingPageTest, MachineDialogRefusesInconsistentTravelAndNamesBadImports) {
+  MachineDialog dialog(machine::MachineDefinition::preset(machine::Topology::BcTable),
+                       machine::FrameFormat::Fanuc);
+  EXPECT_EQ(dialog.controller(), machine::FrameFormat::Fanuc);
+  EXPECT_TRUE(dialog.isDefinitionValid());
+  auto* ok = dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+  dialog.findChild<QDoubleSpinBox*>(QStringLiteral("machineRotaryMin0"))->setValue(50.0);
+  dialog.findChild<QDoubleSpinBox*>(QStringLiteral("machineRotaryMax0"))->setValue(40.0);
+  EXPECT_FALSE(dialog.isDefinitionValid());
+  EXPECT_FALSE(ok->isEnabled());
+  EXPECT_TRUE(dialog.problem().contains(QStringLiteral("SB"))) << dialog.problem().toStdString();
+  dialog.findChild<QDoubleSpinBox*>(QStringLiteral("machineRotaryMax0"))->setValue(60.0);
+  EXPECT_TRUE(dialog.isDefinitionValid());
+  EXPECT_TRUE(ok->isEnabled());
+
+  // A machine file with a bad value: the reason names the file and the field; the fields stay.
+  const QString bad = dir_.filePath(QStringLiteral("bad-machine.json"));
+  test::writeText(bad.toStdString(), R"({"topology": "head-table", "pivot_mm": "long"})");
+  EXPECT_FALSE(dialog.importFile(bad));
+  EXPECT_TRUE(dialog.problem().contains(QStringLiteral("bad-machine.json")))
+      << dialog.problem().toStdString();
+  EXPECT_TRUE(dialog.problem().contains(QStringLiteral("pivot_mm"))) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.definition().topology, machine::Topology::BcTable);
+  // A project file: its matching study's machine.
+  EXPECT_TRUE(dialog.importFile(dir_.filePath(QStringLiteral("p.metrofit"))))
+      << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.definition().topology, machine::Topology::AcTable);
 }
 
 }  // namespace

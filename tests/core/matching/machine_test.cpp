@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include <Eigen/Geometry>
+
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
@@ -151,6 +155,125 @@ TEST(Machine, DefinitionJsonRoundTripAndErrors) {
                ValidationError);
   EXPECT_THROW(parseTopology("abc", "--machine"), OptionsError);
   EXPECT_EQ(parseTopology("ac-table", "--machine"), Topology::AcTable);
+}
+
+/// The head-table chain written out here as 4x4 homogeneous transforms, independently of machine.cpp:
+/// a table point x lies at Tr(c0) Rz(C) Tr(-c0) x; the tool of a B head with pivot length L at axis
+/// values S has its cutter location point at Tr(S + (0,0,L)) Ry(B) Tr(0,0,-L) [0 0 0 1]^T and its axis
+/// Ry(B) [0 0 1 0]^T.
+struct HeadTableChain {
+  Eigen::Vector3d c0;
+  double pivot;
+  static Eigen::Matrix4d rot(const Eigen::Vector3d& axis, double deg) {
+    Eigen::Matrix4d H = Eigen::Matrix4d::Identity();
+    H.topLeftCorner<3, 3>() = Eigen::AngleAxisd(deg * M_PI / 180.0, axis).toRotationMatrix();
+    return H;
+  }
+  static Eigen::Matrix4d tr(const Eigen::Vector3d& v) {
+    Eigen::Matrix4d H = Eigen::Matrix4d::Identity();
+    H.topRightCorner<3, 1>() = v;
+    return H;
+  }
+  Eigen::Vector3d table(double cDeg, const Eigen::Vector3d& x) const {
+    return (tr(c0) * rot(Eigen::Vector3d::UnitZ(), cDeg) * tr(-c0) * x.homogeneous()).head<3>();
+  }
+  Eigen::Matrix4d head(const Eigen::Vector3d& S, double bDeg) const {
+    return tr(S + Eigen::Vector3d(0, 0, pivot)) * rot(Eigen::Vector3d::UnitY(), bDeg) *
+           tr(Eigen::Vector3d(0, 0, -pivot));
+  }
+};
+
+TEST(Machine, HeadTableForwardCheckForEveryPoint) {
+  MachineDefinition m = MachineDefinition::preset(Topology::HeadTable);
+  m.rotaryAxisPoint = {40.0, -25.0, 7.0};
+  m.pivot = 212.5;
+  const HeadTableChain chain{m.rotaryAxisPoint, m.pivot};
+  for (const Pose& p : postures()) {
+    const Adjustment a = adjustmentFor(m, p.rotation, p.translation);
+    EXPECT_EQ(a.topology, Topology::HeadTable);
+    EXPECT_LE(std::abs(a.rotaryDeg[1]), 90.0 + 1e-9);
+    const Eigen::Matrix4d head = chain.head(a.linearMm, a.rotaryDeg[0]);
+    // The tool lies along the workpiece's z axis as the table has turned it.
+    const Eigen::Vector3d axis = (head * Eigen::Vector4d(0, 0, 1, 0)).head<3>();
+    const Eigen::Vector3d wz = chain.table(a.rotaryDeg[1], p.translation + p.rotation.col(2)) -
+                               chain.table(a.rotaryDeg[1], p.translation);
+    EXPECT_LT((axis - wz).norm(), 1e-9);
+    // Every nominal point q, on the workpiece at R q + t, is where the tool goes for q programmed in
+    // the tilted working plane rotated by phi about the tool: CL(q) = head * (Rz(phi) q).
+    const Eigen::Matrix3d phi = matching::rotationZyx({0, 0, a.frameRotationDeg * matching::kRadPerDeg});
+    for (const Eigen::Vector3d& q : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(100, 0, 0),
+                                     Eigen::Vector3d(0, 80, 20), Eigen::Vector3d(-30, 45, -60)}) {
+      const Eigen::Vector3d onMachine = chain.table(a.rotaryDeg[1], p.rotation * q + p.translation);
+      const Eigen::Vector3d tool = (head * (phi * q).homogeneous()).head<3>();
+      EXPECT_LT((onMachine - tool).norm(), 1e-9);
+    }
+    const Frame f = realisedFrame(m, a);
+    EXPECT_LT((f.rotation - p.rotation).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT((f.origin - p.translation).norm(), 1e-9);
+    EXPECT_LT((f.toolAxis - p.rotation.col(2)).norm(), 1e-12);
+  }
+}
+
+TEST(Machine, HeadTableHandCases) {
+  // Workpiece tilted +10 deg about y at the table centre: the head swivels B = +10 deg, the table
+  // stays (C = 0), and the linear axes take the pivot's swing: SX = L sin 10, SZ = L cos 10 - L.
+  MachineDefinition m = MachineDefinition::preset(Topology::HeadTable);
+  m.pivot = 200.0;
+  const double s10 = std::sin(10.0 * M_PI / 180.0), c10 = std::cos(10.0 * M_PI / 180.0);
+  Adjustment a =
+      adjustmentFor(m, Pose::fromAnglesDeg({0.0, 10.0, 0.0}, {0, 0, 0}).rotation, Eigen::Vector3d::Zero());
+  EXPECT_NEAR(a.rotaryDeg[0], 10.0, 1e-12);
+  EXPECT_NEAR(a.rotaryDeg[1], 0.0, 1e-12);
+  EXPECT_NEAR(a.frameRotationDeg, 0.0, 1e-12);
+  EXPECT_NEAR(a.linearMm.x(), 200.0 * s10, 1e-9);
+  EXPECT_NEAR(a.linearMm.y(), 0.0, 1e-9);
+  EXPECT_NEAR(a.linearMm.z(), 200.0 * c10 - 200.0, 1e-9);
+  // The same tilt turned 30 deg about z (R = Rz(30) Ry(10)): the table turns it back, C = -30 deg.
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(30.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
+      Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  a = adjustmentFor(m, R, Eigen::Vector3d::Zero());
+  EXPECT_NEAR(a.rotaryDeg[0], 10.0, 1e-12);
+  EXPECT_NEAR(a.rotaryDeg[1], -30.0, 1e-12);
+  EXPECT_NEAR(a.frameRotationDeg, 0.0, 1e-12);
+  const nlohmann::json j = adjustmentToJson(a);
+  EXPECT_TRUE(j.contains("SB_deg"));
+  EXPECT_TRUE(j.contains("SC_deg"));
+  EXPECT_EQ(j.at("topology"), "head-table");
+}
+
+TEST(Machine, LinearTravelLimitsAreReportedAndRoundTrip) {
+  MachineDefinition m = MachineDefinition::preset(Topology::Xfyzba);
+  EXPECT_FALSE(m.toJson().contains("linear_travel_mm"));  // unlimited by default
+  const Pose p = Pose::fromAnglesDeg({0.0, 0.0, 0.0}, {0.5, -2.0, 0.1});
+  EXPECT_TRUE(adjustmentFor(m, p.rotation, p.translation).withinTravel);
+  m.linearMinMm[1] = -1.0;  // SY = -2 mm is below it
+  const Adjustment a = adjustmentFor(m, p.rotation, p.translation);
+  EXPECT_FALSE(a.withinTravel);
+  EXPECT_NE(a.travelMessage.find("SY = -2"), std::string::npos) << a.travelMessage;
+  EXPECT_EQ(a.travelMessage.find("SX"), std::string::npos) << a.travelMessage;
+  const nlohmann::json j = m.toJson();
+  ASSERT_TRUE(j.contains("linear_travel_mm"));
+  EXPECT_TRUE(j["linear_travel_mm"][0][0].is_null());
+  EXPECT_EQ(j["linear_travel_mm"][1][0], -1.0);
+  const MachineDefinition back = MachineDefinition::fromJson(j, "m.json");
+  EXPECT_EQ(back.linearMinMm, m.linearMinMm);
+  EXPECT_EQ(back.linearMaxMm, m.linearMaxMm);
+  try {
+    MachineDefinition::fromJson(
+        nlohmann::json::parse(R"({"linear_travel_mm": [[0, 1], [5, -5], [null, null]]})"), "m.json");
+    FAIL();
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("linear_travel_mm[1]"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("travel of linear axis Y"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(MachineDefinition::fromJson(nlohmann::json::parse(R"({"linear_travel_mm": [[0, 1]]})"), "m"),
+               ValidationError);
+  const MachineDefinition ht =
+      MachineDefinition::fromJson(nlohmann::json{{"topology", "head-table"}, {"pivot_mm", 90.5}}, "m");
+  EXPECT_EQ(ht.topology, Topology::HeadTable);
+  EXPECT_EQ(ht.pivot, 90.5);
+  EXPECT_EQ(ht.rotaryMaxDeg[0], 110.0);
 }
 
 }  // namespace

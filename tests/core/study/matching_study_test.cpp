@@ -272,7 +272,7 @@ TEST(ProjectMachine, InvalidMachinesAreRejectedOnLoad) {
   EXPECT_EQ(
       loadError({{"topology", "hexapod"}}),
       "cell.metrofit: field 'studies.matching.machine.topology': unknown machine topology 'hexapod' (one of "
-      "xfyzba, ac-table, bc-table)");
+      "xfyzba, ac-table, bc-table, head-table)");
   EXPECT_EQ(loadError({{"topology", "xfyzba"}, {"LX_mm", "long"}})
                 .rfind("cell.metrofit: field 'studies.matching.machine.LX_mm': ", 0),
             0u);
