@@ -818,29 +818,8 @@ bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& 
     locks_[k]->setChecked(locks.locked[k]);
   }
   // The frame's control and decimals (no effect on the run: only the frame tab changes).
-  machine::FrameFormat format = machine::FrameFormat::Heidenhain;
-  int decimals = machine::FrameOptions{}.decimals;
-  const QString study = QString::fromLatin1(study::kMatching);
-  if (const nlohmann::json f = document_->studyValue(study, QStringLiteral("/frame")); !f.is_null()) {
-    try {
-      if (!f.is_string())
-        throw ValidationError(ErrorContext{{}, 0, 0, "studies.matching.frame"},
-                              "must be one of heidenhain, siemens, fanuc");
-      format = machine::parseFrameFormat(f.get<std::string>(), "studies.matching.frame");
-    } catch (const std::exception& e) {
-      settingsError_ = QString::fromUtf8(e.what());
-    }
-  }
-  if (const nlohmann::json n = document_->studyValue(study, QStringLiteral("/frame_decimals"));
-      !n.is_null()) {
-    if (n.is_number_integer() && n.get<long long>() >= 0 && n.get<long long>() <= 12)
-      decimals = n.get<int>();
-    else
-      settingsError_ =
-          QString::fromUtf8(ValidationError(ErrorContext{{}, 0, 0, "studies.matching.frame_decimals"},
-                                            "must be an integer in 0..12")
-                                .what());
-  }
+  const machine::FrameFormat format = settings.frame;
+  const int decimals = settings.frameDecimals;
   {
     const QSignalBlocker b1(frameControl_), b2(frameDecimals_);
     frameControl_->setCurrentIndex(std::max(0, frameControl_->findData(static_cast<int>(format))));

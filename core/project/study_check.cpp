@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/common/error.h"
+#include "core/machine/controller_frame.h"
 
 namespace metrofit {
 namespace {
@@ -25,7 +26,9 @@ const Keys kMatchingKeys = {{"dataset", dataset_kind::kProbePoints},
                             {"allow_scale", ""},
                             {"seed", ""},
                             {"locks", ""},
-                            {"machine", ""}};
+                            {"machine", ""},
+                            {"frame", ""},
+                            {"frame_decimals", ""}};
 const Keys kKinematicsKeys = {{"dataset", dataset_kind::kCircularTest},
                               {"simulated_machine", ""},
                               {"spc", ""},
@@ -123,6 +126,24 @@ class Checker {
       add(prefix + "." + key, "must be a non-empty text");
   }
 
+  /// studies.matching.frame (a control of core/machine/controller_frame.h) and .frame_decimals (0..12):
+  /// the control and decimals of the matching page's controller frame and of the report's frame listing.
+  void frame(const nlohmann::json& j, const std::string& prefix) {
+    if (const auto it = j.find("frame"); it != j.end()) {
+      std::string names;
+      bool known = false;
+      for (const std::string& n : machine::frameFormatNames()) {
+        names += (names.empty() ? "" : ", ") + n;
+        known = known || (it->is_string() && it->get<std::string>() == n);
+      }
+      if (!known) add(prefix + ".frame", "must be one of " + names);
+    }
+    if (const auto it = j.find("frame_decimals"); it != j.end()) {
+      if (!it->is_number_integer() || it->get<long long>() < 0 || it->get<long long>() > 12)
+        add(prefix + ".frame_decimals", "must be an integer in 0..12");
+    }
+  }
+
   void names(const nlohmann::json& j, const std::string& key, const std::string& prefix) {
     const auto it = j.find(key);
     if (it == j.end()) return;
@@ -179,6 +200,8 @@ std::vector<StudyIssue> checkStudies(const Project& project) {
       c.seed(s, prefix);
     } else if (name == study::kMatching) {
       c.block(s, prefix, kMatchingKeys);  // values: core/study/matching_study.cpp checks them in full
+      if (!s.is_object()) continue;
+      c.frame(s, prefix);
     } else if (name == study::kKinematics) {
       c.block(s, prefix, kKinematicsKeys);
       if (s.is_object() && s.contains("spc")) {

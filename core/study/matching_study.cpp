@@ -106,6 +106,20 @@ MatchingStudySettings matchingStudySettings(const Project& project, const std::s
       fail("locks", "must be a list of rx, ry, rz, x, y, z (string, e.g. \"rz,z\")");
     s.options.locks = DofLocks::parse(j["locks"].get<std::string>(), prefix + "locks");
   }
+  if (j.contains("frame")) {
+    if (!j["frame"].is_string()) fail("frame", "must be one of heidenhain, siemens, fanuc");
+    const std::string name = j["frame"].get<std::string>();
+    const std::vector<std::string> names = machine::frameFormatNames();
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      fail("frame", "must be one of heidenhain, siemens, fanuc");
+    s.frame = machine::parseFrameFormat(name, prefix + "frame");
+  }
+  if (j.contains("frame_decimals")) {
+    if (!j["frame_decimals"].is_number_integer() || j["frame_decimals"].get<long long>() < 0 ||
+        j["frame_decimals"].get<long long>() > 12)
+      fail("frame_decimals", "must be an integer in 0..12");
+    s.frameDecimals = j["frame_decimals"].get<int>();
+  }
   s.options.applied = diagnose::parseAppliedMatchingEffects(
       diagnose::projectAppliedEffects(project, study::kMatching, s.datasetId, source), source);
   if (!matchingMachine(project, &s.options.machine, source))

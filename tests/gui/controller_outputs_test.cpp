@@ -17,6 +17,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QProcess>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTabWidget>
@@ -40,6 +41,7 @@
 #include "cli/cli_runner.h"
 #include "cli/dfq_fields.h"
 #include "core/project/project.h"
+#include "core/project/study_check.h"
 #include "core/sim/probe_sim.h"
 #include "core/study/kinematic_study.h"
 #include "qtapp.h"
@@ -217,6 +219,56 @@ TEST_F(FramePageTest, ControlAndDecimalsAreUndoableStudySettings) {
   again.load(document_.fileName());
   MatchingPage other(&again);
   EXPECT_EQ(other.frameFormat(), machine::FrameFormat::Siemens);
+}
+
+/// The text of a PDF (pdftotext from poppler-utils).
+std::string pdfText(const std::string& pdf) {
+  QProcess p;
+  p.start(QStringLiteral("pdftotext"), {QString::fromStdString(pdf), QStringLiteral("-")});
+  if (!p.waitForFinished(30000)) return {};
+  return p.readAllStandardOutput().toStdString();
+}
+
+// F2 of the GUI run: choosing a control wrote a key the study validator did not know, so the saved
+// project's report failed (metrofit-cli report exit 2) and reopening it showed an error. The control and
+// the decimals are matching settings now, and the report lists the study's control with its decimals.
+TEST_F(FramePageTest, ChosenControlIsAValidSettingAndTheReportShowsIt) {
+  ASSERT_TRUE(page_->runNow()) << page_->errorMessage().toStdString();
+  page_->setFrameFormat(machine::FrameFormat::Fanuc);
+  page_->frameDecimalsSpin()->setValue(3);
+  document_.endEditSequence();
+  page_->setFrameFormat(machine::FrameFormat::Heidenhain);  // back and forth: the key stays, and is valid
+  page_->setFrameFormat(machine::FrameFormat::Fanuc);
+  document_.save();
+  EXPECT_TRUE(checkStudies(document_.project()).empty()) << checkStudies(document_.project()).front().field;
+
+  // Reopened: the page shows the control and decimals and no settings error.
+  ProjectDocument again;
+  again.load(document_.fileName());
+  MatchingPage other(&again);
+  EXPECT_EQ(other.frameFormat(), machine::FrameFormat::Fanuc);
+  EXPECT_EQ(other.frameDecimalsSpin()->value(), 3);
+  const QLabel* status = other.findChild<QLabel*>(QStringLiteral("matchingStatus"));
+  ASSERT_NE(status, nullptr);
+  EXPECT_FALSE(status->text().contains(QStringLiteral("invalid"))) << status->text().toStdString();
+
+  // metrofit-cli report on the saved file: exit 0, the FANUC frame first, with 3 decimals.
+  test::TempDir tmp;
+  const std::string pdf = tmp.file("r.pdf");
+  const test::CliRun r =
+      test::cli("report --project '" + document_.fileName().toStdString() + "' --out '" + pdf + "'", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string text = pdfText(pdf);
+  const std::size_t listing = text.find("controller frame (instead of the axis values; decimals: 3)");
+  ASSERT_NE(listing, std::string::npos) << text;
+  const std::size_t fanuc = text.find("FANUC (the study's", listing);  // the cell may wrap
+  ASSERT_NE(fanuc, std::string::npos) << text.substr(listing, 600);
+  EXPECT_LT(fanuc, text.find("HEIDENHAIN", listing)) << "the study's control comes first";
+  // The G68.2 block of the page (3 decimals) is the report's.
+  const QString g68 = page_->frameText().section(QLatin1Char('\n'), 0, 0);
+  ASSERT_TRUE(g68.startsWith(QStringLiteral("G68.2"))) << page_->frameText().toStdString();
+  const QString firstWords = g68.section(QLatin1Char(' '), 0, 1);  // "G68.2 X12.345"
+  EXPECT_NE(text.find(firstWords.toStdString()), std::string::npos) << g68.toStdString();
 }
 
 TEST_F(FramePageTest, BadSettingsAreNamedAndTheDefaultsUsed) {
