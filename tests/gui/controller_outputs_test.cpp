@@ -41,7 +41,7 @@
 #include "cli/cli_runner.h"
 #include "cli/dfq_fields.h"
 #include "core/project/project.h"
-#include "core/project/study_check.h"
+#include "core/study/study_check.h"
 #include "core/sim/probe_sim.h"
 #include "core/study/kinematic_study.h"
 #include "qtapp.h"

@@ -1,4 +1,4 @@
-#include "core/project/study_check.h"
+#include "core/study/study_check.h"
 
 #include <algorithm>
 #include <cmath>

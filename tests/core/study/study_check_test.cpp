@@ -1,4 +1,4 @@
-// Study settings are checked, never quietly replaced (core/project/study_check.h): every bad
+// Study settings are checked, never quietly replaced (core/study/study_check.h): every bad
 // setting is one issue naming the study and the field; the demo project has none.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "core/common/error.h"
 #include "core/project/project.h"
-#include "core/project/study_check.h"
+#include "core/study/study_check.h"
 #include "testsupport.h"
 
 namespace metrofit {
