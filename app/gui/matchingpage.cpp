@@ -645,15 +645,24 @@ void MatchingPage::refresh() {
       showPoints(combo_->currentIndex());
       return;
     }
-    // Undo / redo of a settings edit: the controls follow the study.
+    // Undo / redo of a settings edit: the controls follow the study. Invalid settings are refused: the
+    // status line names the field and nothing runs until they are corrected (no default substituted).
+    const bool hadError = !settingsError_.isEmpty();
     try {
       const matching::MatchingStudySettings settings =
           matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
       settingsError_.clear();
-      if (!syncSettingsFromStudy(settings)) return;
+      const bool changed = syncSettingsFromStudy(settings);
+      if (hadError) {
+        runButton_->setEnabled(set_.has_value());
+        status_->setText(result_ ? tr("Settings changed: press Run (Ctrl+R) to match again.")
+                                 : tr("Not matched yet: press Run (Ctrl+R)."));
+      }
+      if (!changed) return;
     } catch (const std::exception& e) {
       settingsError_ = QString::fromUtf8(e.what());
       status_->setText(settingsErrorText());
+      runButton_->setEnabled(false);
       return;
     }
     if (result_) result_->primary = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
@@ -743,7 +752,7 @@ void MatchingPage::showPoints(int comboIndex) {
     info_->setToolTip(QString::fromStdString(dataset.description));
     status_->setText(settingsError_.isEmpty() ? tr("Not matched yet: press Run (Ctrl+R).")
                                               : settingsErrorText());
-    runButton_->setEnabled(true);
+    runButton_->setEnabled(settingsError_.isEmpty());  // invalid settings: refused, not replaced
     stack_->setCurrentWidget(content_);
   } catch (const std::exception& e) {
     error_ = QString::fromUtf8(e.what());
@@ -789,17 +798,7 @@ void MatchingPage::writeStudyValue(const QString& key, const nlohmann::json& val
 }
 
 bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& settings) {
-  matching::DofLocks locks;
-  const nlohmann::json list =
-      document_->studyValue(QString::fromLatin1(study::kMatching), QStringLiteral("/locks"));
-  if (list.is_string()) {
-    try {
-      locks = matching::DofLocks::parse(list.get<std::string>(), "studies.matching.locks");
-    } catch (const std::exception& e) {
-      locks = {};  // none locked, and the status line says why
-      settingsError_ = QString::fromUtf8(e.what());
-    }
-  }
+  const matching::DofLocks& locks = settings.options.locks;  // checked by matchingStudySettings
   bool changed = false;
   {
     const QSignalBlocker b1(toleranceSpin_), b2(methodCombo_), b3(allowScale_);
@@ -830,7 +829,9 @@ bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& 
 }
 
 QString MatchingPage::settingsErrorText() const {
-  return tr("The matching study's settings are invalid: %1").arg(settingsError_);
+  return tr("The matching study's settings are invalid, nothing is run until they are corrected (Undo, or "
+            "the project file): %1")
+      .arg(settingsError_);
 }
 
 void MatchingPage::settingsChanged() {
@@ -843,6 +844,10 @@ QString MatchingPage::infoText() const {
 
 bool MatchingPage::runNow() {
   if (!set_ || !rawSet_ || isRunning()) return false;
+  if (!settingsError_.isEmpty()) {
+    status_->setText(settingsErrorText());
+    return false;
+  }
   try {
     result_ = matching::runMatchingStudy(*rawSet_, currentOptions());
     error_.clear();
@@ -857,6 +862,10 @@ bool MatchingPage::runNow() {
 
 void MatchingPage::startRun() {
   if (!set_ || !rawSet_ || isRunning()) return;
+  if (!settingsError_.isEmpty()) {
+    status_->setText(settingsErrorText());
+    return;
+  }
   matching::MatchingStudyOptions options;
   try {
     options = currentOptions();

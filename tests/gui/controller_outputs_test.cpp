@@ -41,9 +41,9 @@
 #include "cli/cli_runner.h"
 #include "cli/dfq_fields.h"
 #include "core/project/project.h"
-#include "core/study/study_check.h"
 #include "core/sim/probe_sim.h"
 #include "core/study/kinematic_study.h"
+#include "core/study/study_check.h"
 #include "qtapp.h"
 #include "testsupport.h"
 #include "widgets/document/demoproject.h"
@@ -271,7 +271,9 @@ TEST_F(FramePageTest, ChosenControlIsAValidSettingAndTheReportShowsIt) {
   EXPECT_NE(text.find(firstWords.toStdString()), std::string::npos) << g68.toStdString();
 }
 
-TEST_F(FramePageTest, BadSettingsAreNamedAndTheDefaultsUsed) {
+// A bad setting is refused on the page as in the report: the status names the field and nothing runs
+// (issue 27 item 3: the page used to run with the defaults in place of the bad values).
+TEST_F(FramePageTest, BadSettingsAreNamedAndRefused) {
   Project p = loadProject(document_.fileName().toStdString());
   p.studies["matching"]["frame"] = "okuma";
   p.studies["matching"]["frame_decimals"] = 13;
@@ -284,8 +286,17 @@ TEST_F(FramePageTest, BadSettingsAreNamedAndTheDefaultsUsed) {
   ASSERT_NE(status, nullptr);
   EXPECT_TRUE(status->text().contains(QStringLiteral("studies.matching.frame")))
       << status->text().toStdString();
-  EXPECT_EQ(page.frameFormat(), machine::FrameFormat::Heidenhain);
-  EXPECT_EQ(page.frameDecimalsSpin()->value(), 4);
+  EXPECT_FALSE(page.runNow()) << "no run with settings the study does not hold";
+  EXPECT_FALSE(page.result().has_value());
+  EXPECT_TRUE(status->text().contains(QStringLiteral("studies.matching.frame")))
+      << status->text().toStdString();
+  // Corrected on the page (a valid control and decimals): the run goes ahead.
+  document.setStudyValue(QStringLiteral("matching"), QStringLiteral("/frame"), "siemens",
+                         QStringLiteral("fix"));
+  document.setStudyValue(QStringLiteral("matching"), QStringLiteral("/frame_decimals"), 3,
+                         QStringLiteral("fix"));
+  EXPECT_FALSE(status->text().contains(QStringLiteral("invalid"))) << status->text().toStdString();
+  EXPECT_EQ(page.frameFormat(), machine::FrameFormat::Siemens);
   ASSERT_TRUE(page.runNow()) << page.errorMessage().toStdString();
   EXPECT_FALSE(page.frameText().isEmpty());
 }
