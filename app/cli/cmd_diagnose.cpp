@@ -31,6 +31,7 @@
 #include "core/matching/probe_points.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
+#include "core/study/diagnosis_study.h"
 #include "core/thermal/thermal_log.h"
 
 namespace metrofit::cli {
@@ -38,11 +39,11 @@ namespace {
 
 struct MethodArgs {
   std::string model, data, method, machine, errors, path, target, inputs, out, declared = "linear";
-  // Defaults come from the options of each domain's closed loop.
+  // Defaults come from the diagnosis study's settings (core/study/diagnosis_study.h), as a project's.
   std::uint64_t seed = 1;
-  double tolerance = diagnose::MatchingDiagnosisOptions{}.toleranceMm;
-  double trainFraction = diagnose::ThermalDiagnosisOptions{}.trainFraction;
-  double feed = diagnose::KinematicDiagnosisOptions{}.feedMmPerMin;
+  double tolerance = DiagnosisSettings{}.toleranceMm;
+  double trainFraction = DiagnosisSettings{}.trainFraction;
+  double feed = DiagnosisSettings{}.feedMmPerMin;
   bool allowScale = false;
 };
 

@@ -42,16 +42,20 @@
 #include "core/matching/probe_points.h"
 #include "core/matching/remeasure.h"
 #include "core/project/project.h"
+#include "core/study/study_settings.h"
 
 namespace metrofit::cli {
 namespace {
 
+/// The defaults of the study's settings (core/study/study_settings.h MatchingSettings): what a project's
+/// matching study without these keys uses, so the CLI, the page and the report agree.
 struct MatchArgs {
-  std::string data, method = "sade", machine = "xfyzba", machineDef, lock, reference, out, frame, frameOut;
-  int frameDecimals = 4;
-  std::uint64_t seed = 1;
-  double tolerance = matching::kDefaultToleranceMm, remeasureNoise = 0.006;
-  bool allowScale = false, remeasure = false;
+  std::string data, method = matching::toString(MatchingSettings{}.method), machine = "xfyzba", machineDef,
+                    lock, reference, out, frame, frameOut;
+  int frameDecimals = MatchingSettings{}.frameDecimals;
+  std::uint64_t seed = MatchingSettings{}.seed;
+  double tolerance = MatchingSettings{}.toleranceMm, remeasureNoise = 0.006;
+  bool allowScale = MatchingSettings{}.allowScale, remeasure = false;
 };
 
 std::string fmt(double v) {

@@ -58,16 +58,19 @@
 #include "core/setup/report.h"
 #include "core/sim/setup_sim.h"
 #include "core/study/setup_validation.h"
+#include "core/study/study_settings.h"
 
 namespace metrofit::cli {
 namespace {
 
+/// method, budget and seed default to the study's settings (core/study/study_settings.h SetupSettings).
 struct SetupArgs {
-  std::string model, method = "exact", out, exportFormat, exportOut, exportTable, toolOffset = "wear", dfq;
+  std::string model, method = SetupSettings{}.method, out, exportFormat, exportOut, exportTable,
+                     toolOffset = "wear", dfq;
   int programNumber = setup::ExportOptions{}.programNumber;
   std::vector<std::string> data;
-  long budget = setup::kPaperBudget;
-  std::uint64_t seed = 1;
+  long budget = SetupSettings{}.budget;
+  std::uint64_t seed = SetupSettings{}.seed;
   double timeLimit = 0.0;
 };
 

@@ -659,7 +659,9 @@ void MatchingPage::refresh() {
       showPoints(combo_->currentIndex());
       return;
     }
-    // Undo / redo of a settings edit: the controls follow the study.
+    // Undo / redo of a settings edit: the controls follow the study. Invalid settings are refused: the
+    // status line names the field and nothing runs until they are corrected (no default substituted).
+    const bool hadError = !settingsError_.isEmpty();
     try {
       const matching::MatchingStudySettings settings =
           matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
@@ -668,7 +670,13 @@ void MatchingPage::refresh() {
       const bool machineChanged = settings.options.machine.toJson() != settings_.options.machine.toJson();
       settings_.options.machine = settings.options.machine;
       if (machineChanged && result_) result_->machine = settings.options.machine;
-      if (!syncSettingsFromStudy(settings)) {
+      const bool changed = syncSettingsFromStudy(settings);
+      if (hadError) {
+        runButton_->setEnabled(set_.has_value());
+        status_->setText(result_ ? tr("Settings changed: press Run (Ctrl+R) to match again.")
+                                 : tr("Not matched yet: press Run (Ctrl+R)."));
+      }
+      if (!changed) {
         if (machineChanged && result_)
           applyResult();
         else if (machineChanged)
@@ -678,6 +686,7 @@ void MatchingPage::refresh() {
     } catch (const std::exception& e) {
       settingsError_ = QString::fromUtf8(e.what());
       status_->setText(settingsErrorText());
+      runButton_->setEnabled(false);
       return;
     }
     if (result_) result_->primary = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
@@ -767,7 +776,7 @@ void MatchingPage::showPoints(int comboIndex) {
     info_->setToolTip(QString::fromStdString(dataset.description));
     status_->setText(settingsError_.isEmpty() ? tr("Not matched yet: press Run (Ctrl+R).")
                                               : settingsErrorText());
-    runButton_->setEnabled(true);
+    runButton_->setEnabled(settingsError_.isEmpty());  // invalid settings: refused, not replaced
     stack_->setCurrentWidget(content_);
   } catch (const std::exception& e) {
     error_ = QString::fromUtf8(e.what());
@@ -813,17 +822,7 @@ void MatchingPage::writeStudyValue(const QString& key, const nlohmann::json& val
 }
 
 bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& settings) {
-  matching::DofLocks locks;
-  const nlohmann::json list =
-      document_->studyValue(QString::fromLatin1(study::kMatching), QStringLiteral("/locks"));
-  if (list.is_string()) {
-    try {
-      locks = matching::DofLocks::parse(list.get<std::string>(), "studies.matching.locks");
-    } catch (const std::exception& e) {
-      locks = {};  // none locked, and the status line says why
-      settingsError_ = QString::fromUtf8(e.what());
-    }
-  }
+  const matching::DofLocks& locks = settings.options.locks;  // checked by matchingStudySettings
   bool changed = false;
   {
     const QSignalBlocker b1(toleranceSpin_), b2(methodCombo_), b3(allowScale_);
@@ -842,29 +841,8 @@ bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& 
     locks_[k]->setChecked(locks.locked[k]);
   }
   // The frame's control and decimals (no effect on the run: only the frame tab changes).
-  machine::FrameFormat format = machine::FrameFormat::Heidenhain;
-  int decimals = machine::FrameOptions{}.decimals;
-  const QString study = QString::fromLatin1(study::kMatching);
-  if (const nlohmann::json f = document_->studyValue(study, QStringLiteral("/frame")); !f.is_null()) {
-    try {
-      if (!f.is_string())
-        throw ValidationError(ErrorContext{{}, 0, 0, "studies.matching.frame"},
-                              "must be one of heidenhain, siemens, fanuc");
-      format = machine::parseFrameFormat(f.get<std::string>(), "studies.matching.frame");
-    } catch (const std::exception& e) {
-      settingsError_ = QString::fromUtf8(e.what());
-    }
-  }
-  if (const nlohmann::json n = document_->studyValue(study, QStringLiteral("/frame_decimals"));
-      !n.is_null()) {
-    if (n.is_number_integer() && n.get<long long>() >= 0 && n.get<long long>() <= 12)
-      decimals = n.get<int>();
-    else
-      settingsError_ =
-          QString::fromUtf8(ValidationError(ErrorContext{{}, 0, 0, "studies.matching.frame_decimals"},
-                                            "must be an integer in 0..12")
-                                .what());
-  }
+  const machine::FrameFormat format = settings.frame;
+  const int decimals = settings.frameDecimals;
   {
     const QSignalBlocker b1(frameControl_), b2(frameDecimals_);
     frameControl_->setCurrentIndex(std::max(0, frameControl_->findData(static_cast<int>(format))));
@@ -875,7 +853,9 @@ bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& 
 }
 
 QString MatchingPage::settingsErrorText() const {
-  return tr("The matching study's settings are invalid: %1").arg(settingsError_);
+  return tr("The matching study's settings are invalid, nothing is run until they are corrected (Undo, or "
+            "the project file): %1")
+      .arg(settingsError_);
 }
 
 void MatchingPage::settingsChanged() {
@@ -888,6 +868,10 @@ QString MatchingPage::infoText() const {
 
 bool MatchingPage::runNow() {
   if (!set_ || !rawSet_ || isRunning()) return false;
+  if (!settingsError_.isEmpty()) {
+    status_->setText(settingsErrorText());
+    return false;
+  }
   try {
     result_ = matching::runMatchingStudy(*rawSet_, currentOptions());
     error_.clear();
@@ -902,6 +886,10 @@ bool MatchingPage::runNow() {
 
 void MatchingPage::startRun() {
   if (!set_ || !rawSet_ || isRunning()) return;
+  if (!settingsError_.isEmpty()) {
+    status_->setText(settingsErrorText());
+    return;
+  }
   matching::MatchingStudyOptions options;
   try {
     options = currentOptions();

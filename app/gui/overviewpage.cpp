@@ -1,6 +1,6 @@
 #include "app/gui/overviewpage.h"
 
-#include "core/project/study_check.h"
+#include "core/study/study_check.h"
 
 #include <QDir>
 #include <QEvent>

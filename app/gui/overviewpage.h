@@ -26,7 +26,7 @@ class OverviewPage : public QWidget {
   /// The first-run hint ("New here? Open the demo project…"): shown until dismissed or used
   /// (remembered in QSettings under kFirstRunHintKey), and only while no project file is open.
   QFrame* firstRunHint() const { return hint_; }
-  /// The marked message listing the study settings no method can use (core/project/study_check.h);
+  /// The marked message listing the study settings no method can use (core/study/study_check.h);
   /// hidden when every setting is valid.
   QLabel* settingProblems() const { return problems_; }
   static constexpr const char* kFirstRunHintKey = "ui/firstRunHintDismissed";

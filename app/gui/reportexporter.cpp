@@ -34,6 +34,7 @@ bool ReportExporter::start(const ProjectDocument& document, const QString& pdfPa
   cancelled_ = false;
 
   QString projectFile = document.fileName();
+  shownName_ = projectFile.isEmpty() ? tr("the unsaved project") : QFileInfo(projectFile).fileName();
   snapshot_.reset();
   if (projectFile.isEmpty() || document.isModified()) {
     snapshot_ = std::make_unique<QTemporaryDir>();
@@ -55,6 +56,7 @@ bool ReportExporter::start(const ProjectDocument& document, const QString& pdfPa
     }
   }
 
+  passedFile_ = projectFile;
   process_ = new QProcess(this);
   QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
   env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));  // the report needs no display
@@ -106,8 +108,20 @@ void ReportExporter::onProcessFinished(int exitCode, QProcess::ExitStatus status
     const QStringList lines =
         QString::fromLocal8Bit(process_->readAllStandardError()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     finish(Outcome::Failed, lines.isEmpty() ? tr("metrofit-cli failed with exit code %1.").arg(exitCode)
-                                            : lines.last().trimmed());
+                                            : userMessage(lines.last().trimmed()));
   }
+}
+
+QString ReportExporter::userMessage(QString line) const {
+  // "metrofit-cli: /tmp/metrofit-xPqdqI/demo.metrofit: field ...: ..." -> "demo.metrofit: field ...": the
+  // user knows the file by its name, not by the snapshot's folder or the helper program.
+  const QString prefix = QStringLiteral("metrofit-cli: ");
+  if (line.startsWith(prefix)) line.remove(0, prefix.size());
+  if (!passedFile_.isEmpty()) {
+    line.replace(passedFile_, shownName_);
+    line.replace(QDir::toNativeSeparators(passedFile_), shownName_);
+  }
+  return line;
 }
 
 void ReportExporter::finish(Outcome outcome, const QString& message) {

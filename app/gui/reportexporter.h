@@ -51,10 +51,15 @@ class ReportExporter : public QObject {
  private:
   void onProcessFinished(int exitCode, QProcess::ExitStatus status);
   void finish(Outcome outcome, const QString& message);
+  /// metrofit-cli's error line as the user should read it: without the program's name, the project
+  /// named by its file name (not the temporary snapshot's path).
+  QString userMessage(QString line) const;
 
   QWidget* dialogParent_;
   QString cliPath_;
   QString pdfPath_;
+  QString passedFile_;  ///< the project file given to metrofit-cli (a snapshot's when modified)
+  QString shownName_;   ///< how the user knows that project: its file name
   QProcess* process_ = nullptr;
   QProgressDialog* progress_ = nullptr;
   std::unique_ptr<QTemporaryDir> snapshot_;

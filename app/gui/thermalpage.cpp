@@ -192,7 +192,19 @@ void ThermalPage::refresh() {
   showLog(fillDatasetCombo(combo_, logs_, previous));
 }
 
+void ThermalPage::showSettingsError(const QString& message) {
+  // Refused, not replaced: nothing is fitted with settings the study does not hold.
+  settingsInvalid_ = true;
+  error_ = message;
+  settings_.remove(logId_);
+  message_->setText(tr("The thermal study's settings are invalid, nothing is fitted until they are "
+                       "corrected (Undo, or the project file):\n%1")
+                        .arg(message));
+  stack_->setCurrentWidget(message_);
+}
+
 void ThermalPage::showLog(int comboIndex) {
+  settingsInvalid_ = false;
   error_.clear();
   logId_.clear();
   hysteresisKey_.clear();
@@ -224,8 +236,14 @@ void ThermalPage::showLog(int comboIndex) {
     updateInfo();
     if (!settings_.contains(logId_)) {
       const auto study = document_->project().studies.find(study::kThermal);
-      settings_[logId_] = defaultThermalModelSettings(
-          log_, study != document_->project().studies.end() ? *study : nlohmann::json::object(), dataset.id);
+      try {
+        settings_[logId_] = defaultThermalModelSettings(
+            log_, study != document_->project().studies.end() ? *study : nlohmann::json::object(),
+            dataset.id);
+      } catch (const std::exception& e) {
+        showSettingsError(QString::fromUtf8(e.what()));
+        return;
+      }
     }
     settings_[logId_].applied = diagnose::projectThermalApplied(document_->project(), dataset.id);
     models_->setLog(log_, settings_[logId_]);
@@ -290,10 +308,20 @@ void ThermalPage::syncSettingsFromStudy() {
       study.is_object() ? study.value("dataset", nlohmann::json()) : nlohmann::json();
   // Only the study's dataset (or any log while the study names none) follows the study; the applied
   // effects (Apply / undo on the diagnosis page) follow the project for every log they apply to.
+  if (settingsInvalid_) {  // corrected (or still not): show the log again or the error again
+    showLog(combo_->currentIndex());
+    return;
+  }
   ThermalModelSettings s = models_->settings();
-  if (dataset.is_null() || dataset == nlohmann::json(logId_.toStdString()))
-    s = defaultThermalModelSettings(log_, study.is_object() ? study : nlohmann::json::object(),
-                                    logId_.toStdString());
+  if (dataset.is_null() || dataset == nlohmann::json(logId_.toStdString())) {
+    try {
+      s = defaultThermalModelSettings(log_, study.is_object() ? study : nlohmann::json::object(),
+                                      logId_.toStdString());
+    } catch (const std::exception& e) {
+      showSettingsError(QString::fromUtf8(e.what()));
+      return;
+    }
+  }
   s.applied = diagnose::projectThermalApplied(document_->project(), logId_.toStdString());
   if (s == models_->settings()) return;
   settings_[logId_] = s;

@@ -79,6 +79,8 @@ class ThermalPage : public QWidget {
  private:
   void refresh();
   void showLog(int comboIndex);
+  /// Shows why the study's settings were refused (the field named) instead of the log.
+  void showSettingsError(const QString& message);
   void onTabChanged(int index);
   /// Starts the hysteresis analysis of the log and settings shown on a worker (the view shows it
   /// when ready); nothing when the view already has them.
@@ -110,7 +112,8 @@ class ThermalPage : public QWidget {
   QString infoBase_;       ///< the log's description (info_ without the applied-effects line)
   QString hysteresisKey_;  ///< what the hysteresis view shows (dataset, target, inputs)
   QHash<QString, ThermalModelSettings> settings_;  ///< per dataset id, this session
-  bool writingStudy_ = false;                      ///< the page's own edit of the document
+  bool settingsInvalid_ = false;  ///< the study's settings were refused (message_ names the field)
+  bool writingStudy_ = false;     ///< the page's own edit of the document
 
   struct ModularRun {
     std::shared_ptr<ModularComparison> result;

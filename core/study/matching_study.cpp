@@ -7,6 +7,7 @@
 #include "core/common/axis_ticks.h"
 #include "core/common/error.h"
 #include "core/project/project.h"
+#include "core/study/study_settings.h"
 
 namespace metrofit::matching {
 
@@ -82,30 +83,15 @@ MatchingStudySettings matchingStudySettings(const Project& project, const std::s
   } else if (const DatasetRef* d = project.firstOfKind(dataset_kind::kProbePoints)) {
     s.datasetId = d->id;
   }
-  if (j.contains("tolerance_mm")) {
-    if (!j["tolerance_mm"].is_number() || !(j["tolerance_mm"].get<double>() >= 0.0) ||
-        !std::isfinite(j["tolerance_mm"].get<double>()))
-      fail("tolerance_mm", "must be a number >= 0 (mm)");
-    s.options.toleranceMm = j["tolerance_mm"].get<double>();
-  }
-  if (j.contains("method")) {
-    if (!j["method"].is_string()) fail("method", "must be one of sade, ga-simplex, closed-form, minimax");
-    s.options.primary = parseMatchMethod(j["method"].get<std::string>(), prefix + "method");
-  }
-  if (j.contains("allow_scale")) {
-    if (!j["allow_scale"].is_boolean()) fail("allow_scale", "must be true or false");
-    s.options.allowScale = j["allow_scale"].get<bool>();
-  }
-  if (j.contains("seed")) {
-    if (!j["seed"].is_number_integer() || j["seed"].get<long long>() < 0)
-      fail("seed", "must be an integer >= 0");
-    s.options.seed = j["seed"].get<std::uint64_t>();
-  }
-  if (j.contains("locks")) {  // "rz,z": the degrees of freedom held at 0, as the CLI's --lock
-    if (!j["locks"].is_string())
-      fail("locks", "must be a list of rx, ry, rz, x, y, z (string, e.g. \"rz,z\")");
-    s.options.locks = DofLocks::parse(j["locks"].get<std::string>(), prefix + "locks");
-  }
+  // The values: the study's settings type (core/study/study_settings.h), refused with the field named.
+  const MatchingSettings m = MatchingSettings::fromJson(j, source);
+  s.options.toleranceMm = m.toleranceMm;
+  s.options.primary = m.method;
+  s.options.allowScale = m.allowScale;
+  s.options.seed = m.seed;
+  s.options.locks = DofLocks::parse(m.locks, prefix + "locks");  // "rz,z", as the CLI's --lock
+  s.frame = m.frame;
+  s.frameDecimals = m.frameDecimals;
   s.options.applied = diagnose::parseAppliedMatchingEffects(
       diagnose::projectAppliedEffects(project, study::kMatching, s.datasetId, source), source);
   if (!matchingMachine(project, &s.options.machine, source))

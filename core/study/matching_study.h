@@ -7,7 +7,9 @@
 // Project keys (studies.matching, all optional): "dataset" (a probe_points dataset id; default the
 // first of that kind), "tolerance_mm" (>= 0, default 0.05), "method" (sade | ga-simplex |
 // closed-form | minimax, the primary method, default sade), "allow_scale" (bool), "seed" (>= 0),
-// "machine" (project.h matchingMachine; default the XFYZBA preset). The effects added to the model
+// "machine" (project.h matchingMachine; default the XFYZBA preset), "frame" (heidenhain | siemens |
+// fanuc: the control of the page's controller frame and of the report's frame listing, default
+// heidenhain) and "frame_decimals" (0..12, default 4; no effect on the run). The effects added to the model
 // with the diagnosis page's Apply (studies.diagnosis.matching.applied: scale, surface_offset:<s>,
 // distortion; core/diagnose/applied_setup_matching.h) are part of the study's model when the
 // diagnosis ran on the study's dataset (studies.diagnosis.matching.dataset): the nominal
@@ -24,6 +26,7 @@
 #include <vector>
 
 #include "core/diagnose/applied_setup_matching.h"
+#include "core/machine/controller_frame.h"
 #include "core/machine/machine.h"
 #include "core/matching/matching.h"
 #include "core/matching/remeasure.h"
@@ -79,6 +82,9 @@ MatchingStudyResult runMatchingStudy(const ProbePointSet& set, const MatchingStu
 struct MatchingStudySettings {
   std::string datasetId;
   MatchingStudyOptions options;
+  /// The controller frame of the posture (studies.matching.frame, .frame_decimals).
+  machine::FrameFormat frame = machine::FrameFormat::Heidenhain;
+  int frameDecimals = machine::FrameOptions{}.decimals;
 };
 MatchingStudySettings matchingStudySettings(const Project& project, const std::string& source = {});
 

@@ -11,6 +11,7 @@
 
 #include "core/common/error.h"
 #include "core/diagnose/thermal_applied.h"
+#include "core/study/study_settings.h"
 #include "core/thermal/thermal_data.h"
 
 namespace metrofit {
@@ -46,11 +47,6 @@ std::vector<std::string> defaultInputs(const ThermalLog& log) {
     }
   }
   return inputs;
-}
-
-bool hasColumns(const ThermalLog& log, const std::string& target, const std::vector<std::string>& inputs) {
-  if (target.empty() || inputs.empty() || log.indexOf(target) < 0) return false;
-  return std::all_of(inputs.begin(), inputs.end(), [&](const std::string& n) { return log.indexOf(n) >= 0; });
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -92,25 +88,28 @@ std::string failureReason(const std::exception& e) {
 ThermalModelSettings defaultThermalModelSettings(const ThermalLog& log, const nlohmann::json& study,
                                                  const std::string& datasetId) {
   ThermalModelSettings s;
-  if (study.is_object() && study.value("dataset", std::string()) == datasetId) {
-    const std::string target = study.value("target", std::string());
-    std::vector<std::string> inputs;
-    if (const auto in = study.find("inputs"); in != study.end() && in->is_array()) {
-      for (const auto& v : *in) {
-        if (v.is_string()) inputs.push_back(v.get<std::string>());
-      }
+  const auto dataset = study.is_object() ? study.find("dataset") : study.end();
+  if (study.is_object() && dataset != study.end() && dataset->is_string() &&
+      dataset->get<std::string>() == datasetId) {
+    // The study's own log: its settings are used as they are or refused naming the field (a bad
+    // fraction, a column the log lacks), never replaced by the defaults below.
+    const ThermalSettings t = ThermalSettings::fromJson(study);
+    std::string have;
+    for (const ThermalChannel& c : log.channels) have += (have.empty() ? "" : ", ") + c.name;
+    const auto requireColumn = [&](const std::string& name, const char* key) {
+      if (log.indexOf(name) < 0)
+        throw ValidationError(ErrorContext{{}, 0, 0, std::string("studies.thermal.") + key},
+                              "names the column '" + name + "', which '" + datasetId +
+                                  "' does not have (it has: " + have + ")");
+    };
+    if (!t.target.empty()) requireColumn(t.target, "target");
+    for (const std::string& in : t.inputs) requireColumn(in, "inputs");
+    if (!t.target.empty() && !t.inputs.empty()) {
+      s.target = t.target;
+      s.inputs = t.inputs;
     }
-    if (hasColumns(log, target, inputs)) {
-      s.target = target;
-      s.inputs = inputs;
-    }
-    if (const auto f = study.find("train_fraction"); f != study.end() && f->is_number()) {
-      const double v = f->get<double>();
-      if (v > 0.0 && v < 1.0) s.trainFraction = v;
-    }
-    if (const auto seed = study.find("seed"); seed != study.end() && seed->is_number_unsigned()) {
-      s.seed = seed->get<std::uint64_t>();
-    }
+    s.trainFraction = t.trainFraction;
+    s.seed = t.seed;
   }
   if (s.target.empty()) {
     double best = -1.0;

@@ -46,10 +46,13 @@ struct ThermalModelSettings {
 };
 
 /// Settings for a log: the project's thermal study (`studies.thermal`: "dataset", "target",
-/// "inputs", optional "train_fraction", "seed") when it names this dataset or its columns exist in
-/// the log; otherwise the first displacement channel as target and, as inputs, the strain channels
-/// plus T2 when the log has strain sensors (the paper's choice, Section 4.3: FBG-1..4 and the ram
-/// temperature), else every non-ambient temperature (at most 8).
+/// "inputs", optional "train_fraction", "seed"; ThermalSettings of core/study/study_settings.h) when it
+/// names this dataset: its values are used as they are, and a bad one (a fraction outside (0, 1), a
+/// target or input the log does not have) is a ValidationError naming the field, never replaced by a
+/// default. Otherwise (another log, or a study without target and inputs) the first displacement
+/// channel as target and, as inputs, the strain channels plus T2 when the log has strain sensors (the
+/// paper's choice, Section 4.3: FBG-1..4 and the ram temperature), else every non-ambient temperature
+/// (at most 8).
 ThermalModelSettings defaultThermalModelSettings(const ThermalLog& log, const nlohmann::json& thermalStudy,
                                                  const std::string& datasetId);
 

@@ -17,6 +17,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QProcess>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTabWidget>
@@ -42,6 +43,7 @@
 #include "core/project/project.h"
 #include "core/sim/probe_sim.h"
 #include "core/study/kinematic_study.h"
+#include "core/study/study_check.h"
 #include "qtapp.h"
 #include "testsupport.h"
 #include "widgets/document/demoproject.h"
@@ -219,7 +221,59 @@ TEST_F(FramePageTest, ControlAndDecimalsAreUndoableStudySettings) {
   EXPECT_EQ(other.frameFormat(), machine::FrameFormat::Siemens);
 }
 
-TEST_F(FramePageTest, BadSettingsAreNamedAndTheDefaultsUsed) {
+/// The text of a PDF (pdftotext from poppler-utils).
+std::string pdfText(const std::string& pdf) {
+  QProcess p;
+  p.start(QStringLiteral("pdftotext"), {QString::fromStdString(pdf), QStringLiteral("-")});
+  if (!p.waitForFinished(30000)) return {};
+  return p.readAllStandardOutput().toStdString();
+}
+
+// F2 of the GUI run: choosing a control wrote a key the study validator did not know, so the saved
+// project's report failed (metrofit-cli report exit 2) and reopening it showed an error. The control and
+// the decimals are matching settings now, and the report lists the study's control with its decimals.
+TEST_F(FramePageTest, ChosenControlIsAValidSettingAndTheReportShowsIt) {
+  ASSERT_TRUE(page_->runNow()) << page_->errorMessage().toStdString();
+  page_->setFrameFormat(machine::FrameFormat::Fanuc);
+  page_->frameDecimalsSpin()->setValue(3);
+  document_.endEditSequence();
+  page_->setFrameFormat(machine::FrameFormat::Heidenhain);  // back and forth: the key stays, and is valid
+  page_->setFrameFormat(machine::FrameFormat::Fanuc);
+  document_.save();
+  EXPECT_TRUE(checkStudies(document_.project()).empty()) << checkStudies(document_.project()).front().field;
+
+  // Reopened: the page shows the control and decimals and no settings error.
+  ProjectDocument again;
+  again.load(document_.fileName());
+  MatchingPage other(&again);
+  EXPECT_EQ(other.frameFormat(), machine::FrameFormat::Fanuc);
+  EXPECT_EQ(other.frameDecimalsSpin()->value(), 3);
+  const QLabel* status = other.findChild<QLabel*>(QStringLiteral("matchingStatus"));
+  ASSERT_NE(status, nullptr);
+  EXPECT_FALSE(status->text().contains(QStringLiteral("invalid"))) << status->text().toStdString();
+
+  // metrofit-cli report on the saved file: exit 0, the FANUC frame first, with 3 decimals.
+  test::TempDir tmp;
+  const std::string pdf = tmp.file("r.pdf");
+  const test::CliRun r =
+      test::cli("report --project '" + document_.fileName().toStdString() + "' --out '" + pdf + "'", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string text = pdfText(pdf);
+  const std::size_t listing = text.find("controller frame (instead of the axis values; decimals: 3)");
+  ASSERT_NE(listing, std::string::npos) << text;
+  const std::size_t fanuc = text.find("FANUC (the study's", listing);  // the cell may wrap
+  ASSERT_NE(fanuc, std::string::npos) << text.substr(listing, 600);
+  EXPECT_LT(fanuc, text.find("HEIDENHAIN", listing)) << "the study's control comes first";
+  // The G68.2 block of the page (3 decimals) is the report's.
+  const QString g68 = page_->frameText().section(QLatin1Char('\n'), 0, 0);
+  ASSERT_TRUE(g68.startsWith(QStringLiteral("G68.2"))) << page_->frameText().toStdString();
+  const QString firstWords = g68.section(QLatin1Char(' '), 0, 1);  // "G68.2 X12.345"
+  EXPECT_NE(text.find(firstWords.toStdString()), std::string::npos) << g68.toStdString();
+}
+
+// A bad setting is refused on the page as in the report: the status names the field and nothing runs
+// (issue 27 item 3: the page used to run with the defaults in place of the bad values).
+TEST_F(FramePageTest, BadSettingsAreNamedAndRefused) {
   Project p = loadProject(document_.fileName().toStdString());
   p.studies["matching"]["frame"] = "okuma";
   p.studies["matching"]["frame_decimals"] = 13;
@@ -232,8 +286,17 @@ TEST_F(FramePageTest, BadSettingsAreNamedAndTheDefaultsUsed) {
   ASSERT_NE(status, nullptr);
   EXPECT_TRUE(status->text().contains(QStringLiteral("studies.matching.frame")))
       << status->text().toStdString();
-  EXPECT_EQ(page.frameFormat(), machine::FrameFormat::Heidenhain);
-  EXPECT_EQ(page.frameDecimalsSpin()->value(), 4);
+  EXPECT_FALSE(page.runNow()) << "no run with settings the study does not hold";
+  EXPECT_FALSE(page.result().has_value());
+  EXPECT_TRUE(status->text().contains(QStringLiteral("studies.matching.frame")))
+      << status->text().toStdString();
+  // Corrected on the page (a valid control and decimals): the run goes ahead.
+  document.setStudyValue(QStringLiteral("matching"), QStringLiteral("/frame"), "siemens",
+                         QStringLiteral("fix"));
+  document.setStudyValue(QStringLiteral("matching"), QStringLiteral("/frame_decimals"), 3,
+                         QStringLiteral("fix"));
+  EXPECT_FALSE(status->text().contains(QStringLiteral("invalid"))) << status->text().toStdString();
+  EXPECT_EQ(page.frameFormat(), machine::FrameFormat::Siemens);
   ASSERT_TRUE(page.runNow()) << page.errorMessage().toStdString();
   EXPECT_FALSE(page.frameText().isEmpty());
 }

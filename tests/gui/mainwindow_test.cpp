@@ -487,6 +487,25 @@ TEST_F(MainWindowTest, ReportExportErrorsAreOneLine) {
   EXPECT_FALSE(exporter.isRunning());
 }
 
+// F2 of the GUI run: the error dialog said "metrofit-cli: metrofit-xPqdqI/demo.metrofit: ..." (the
+// helper program and the temporary snapshot of the unsaved project). It names the user's file instead.
+TEST_F(MainWindowTest, ReportExportErrorNamesTheUsersFile) {
+  ReportExporter exporter(&window_);
+  exporter.setCliPath(QStringLiteral(METROFIT_CLI_EXECUTABLE));
+  QSignalSpy finished(&exporter, &ReportExporter::finished);
+  window_.document()->setStudyValue(QStringLiteral("matching"), QStringLiteral("/frame_decimals"), 13,
+                                    QStringLiteral("bad decimals"));
+  ASSERT_TRUE(exporter.start(*window_.document(), dir_.filePath(QStringLiteral("bad.pdf"))));
+  ASSERT_TRUE(finished.wait(kReportWaitMs));
+  EXPECT_EQ(finished.at(0).at(0).value<ReportExporter::Outcome>(), ReportExporter::Outcome::Failed);
+  const QString message = finished.at(0).at(1).toString();
+  EXPECT_TRUE(message.startsWith(QFileInfo(demo_).fileName() + QStringLiteral(": ")))
+      << message.toStdString();
+  EXPECT_TRUE(message.contains(QStringLiteral("studies.matching.frame_decimals"))) << message.toStdString();
+  EXPECT_FALSE(message.contains(QStringLiteral("metrofit-cli"))) << message.toStdString();
+  EXPECT_FALSE(message.contains(QLatin1Char('/'))) << message.toStdString();
+}
+
 TEST_F(MainWindowTest, ReportExportCanBeCancelled) {
   ReportExporter exporter(&window_);
   exporter.setCliPath(QStringLiteral(METROFIT_CLI_EXECUTABLE));

@@ -17,6 +17,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStackedWidget>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTest>
@@ -186,6 +187,42 @@ TEST_F(ThermalPageModelsTest, BadSettingsGiveAMessage) {
   view->setSettings(s);
   // The speed is 0 for the first 10 min only, so it is not constant; training works.
   EXPECT_TRUE(view->trainNow()) << view->statusText().toStdString();
+}
+
+// Issue 27 item 3: a bad study setting is refused on the page as in the report, the field named in a
+// message on the page, never replaced by a default (the page used to fit with the default fraction).
+TEST_F(ThermalPageModelsTest, BadStudySettingIsRefusedNamingTheField) {
+  makeProject(240.0);
+  ThermalPage page(&document_);
+  auto* tabs = page.findChild<QTabWidget*>(QStringLiteral("thermalTabs"));
+  auto* message = page.findChild<QLabel*>(QStringLiteral("thermalMessage"));
+  ASSERT_TRUE(tabs && message);
+  auto* stack = qobject_cast<QStackedWidget*>(tabs->parentWidget());
+  ASSERT_NE(stack, nullptr);
+  EXPECT_EQ(stack->currentWidget(), tabs);
+  document_.setStudyValue(QStringLiteral("thermal"), QStringLiteral("/train_fraction"), 1.5,
+                          QStringLiteral("break"));
+  EXPECT_EQ(stack->currentWidget(), message);
+  EXPECT_TRUE(message->text().contains(QStringLiteral("studies.thermal.train_fraction")))
+      << message->text().toStdString();
+  document_.undoStack()->undo();
+  EXPECT_EQ(stack->currentWidget(), tabs) << message->text().toStdString();
+  EXPECT_DOUBLE_EQ(page.modelView()->settings().trainFraction, 0.5);
+
+  // A target the log lacks: refused by name, not swapped for the first displacement channel.
+  document_.setStudyValue(QStringLiteral("thermal"), QStringLiteral("/target"), "disp_x_um",
+                          QStringLiteral("break"));
+  EXPECT_EQ(stack->currentWidget(), message);
+  EXPECT_TRUE(message->text().contains(QStringLiteral("studies.thermal.target")))
+      << message->text().toStdString();
+  document_.save();
+  ProjectDocument reopened;
+  reopened.load(document_.fileName());
+  ThermalPage other(&reopened);
+  auto* otherMessage = other.findChild<QLabel*>(QStringLiteral("thermalMessage"));
+  ASSERT_NE(otherMessage, nullptr);
+  EXPECT_TRUE(otherMessage->text().contains(QStringLiteral("disp_x_um")))
+      << otherMessage->text().toStdString();
 }
 
 TEST_F(ThermalPageModelsTest, SettingsEditsAreWrittenToTheStudyAndUndone) {

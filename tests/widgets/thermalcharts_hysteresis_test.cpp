@@ -13,6 +13,7 @@
 #include <cmath>
 #include <memory>
 
+#include "core/common/error.h"
 #include "core/sim/thermal_sim.h"
 #include "core/study/thermal_comparison.h"
 #include "core/thermal/hysteresis.h"
@@ -194,6 +195,18 @@ TEST(ThermalComparisonHelpers, DefaultSettingsAndDecimation) {
   EXPECT_EQ(s.target, "disp_z_um");
   EXPECT_EQ(s.inputs, (std::vector<std::string>{"T1", "T2", "T3", "T4"}));  // T_amb left out
   EXPECT_EQ(s.trainFraction, 0.5);
+  // The study's own log: a bad value is refused naming the field, not replaced by a default.
+  for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{
+           {"train_fraction", 1.5}, {"target", "disp_x_um"}, {"inputs", {"T1", "T9"}}, {"seed", -1}}) {
+    nlohmann::json bad = study;
+    bad[key] = value;
+    try {
+      (void)defaultThermalModelSettings(log, bad, "sim");
+      ADD_FAILURE() << key << " was not refused";
+    } catch (const ValidationError& e) {
+      EXPECT_EQ(e.context().field, "studies.thermal." + key) << e.what();
+    }
+  }
 
   const ThermalLog d = decimateThermalLog(log, 4);
   ASSERT_EQ(d.rows(), 121u);  // rows 0, 4, ..., 480

@@ -378,17 +378,26 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
     frames.header = {ReportText::tr("control"), ReportText::tr("blocks (mm, °)")};
     frames.widths = {0.8, 3.2};
     frames.alignment = {Qt::AlignLeft, Qt::AlignLeft};
-    const std::pair<machine::FrameFormat, QString> controls[] = {
+    // The study's control (studies.matching.frame, the page's Controller frame tab) first and marked,
+    // then the others; every one with the study's decimals (studies.matching.frame_decimals).
+    std::vector<std::pair<machine::FrameFormat, QString>> controls = {
         {machine::FrameFormat::Heidenhain, QStringLiteral("HEIDENHAIN")},
         {machine::FrameFormat::Siemens, QStringLiteral("SINUMERIK")},
         {machine::FrameFormat::Fanuc, QStringLiteral("FANUC")}};
+    std::stable_partition(controls.begin(), controls.end(),
+                          [&](const auto& c) { return c.first == settings.frame; });
     for (const auto& [format, name] : controls) {
       QStringList blocks;
-      for (const std::string& b : machine::controllerFrameBlocks(pose.rotation, pose.translation, format))
+      for (const std::string& b :
+           machine::controllerFrameBlocks(pose.rotation, pose.translation, format, settings.frameDecimals))
         blocks << QString::fromStdString(b);
-      frames.rows.push_back({name, blocks.join(QStringLiteral("; "))});
+      frames.rows.push_back(
+          {format == settings.frame ? ReportText::tr("%1 (the study's control)").arg(name) : name,
+           blocks.join(QStringLiteral("; "))});
     }
-    out.subheading(ReportText::tr("The same posture as a controller frame (instead of the axis values)"),
+    out.subheading(ReportText::tr("The same posture as a controller frame (instead of the axis values; "
+                                  "decimals: %1)")
+                       .arg(settings.frameDecimals),
                    out.mm(30.0));
     out.table(frames);
     out.paragraph(

@@ -18,7 +18,7 @@
 #include "core/matching/hole_table.h"
 #include "core/project/datasets.h"
 #include "core/project/project.h"
-#include "core/project/study_check.h"
+#include "core/study/study_check.h"
 #include "metrofit/version.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"

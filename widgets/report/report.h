@@ -24,7 +24,7 @@ struct ReportSummary {
 };
 
 /// Writes the report atomically (QSaveFile) to pdfPath. Throws metrofit::ValidationError naming the
-/// study and the field when a study setting is bad (core/project/study_check.h: checked before
+/// study and the field when a study setting is bad (core/study/study_check.h: checked before
 /// anything is drawn), metrofit::InputError when a dataset of the project cannot be read, metrofit::FileError
 /// when the PDF cannot be written, metrofit::OptionsError when resolutionDpi is outside [72, 1200]. On any
 /// error pdfPath is left as it was (absent, or the previous file).

@@ -205,7 +205,8 @@ TEST(Study, SettingsFromTheProject) {
   EXPECT_EQ(settingsError({{"tolerance_mm", -1}}),
             "cell.metrofit: field 'studies.matching.tolerance_mm': must be a number >= 0 (mm)");
   EXPECT_EQ(settingsError({{"method", "newton"}}),
-            "field 'studies.matching.method': unknown matching method 'newton' (one of sade, ga-simplex, "
+            "cell.metrofit: field 'studies.matching.method': unknown matching method 'newton' (one of sade, "
+            "ga-simplex, "
             "closed-form, minimax)");
   EXPECT_EQ(settingsError({{"allow_scale", "yes"}}),
             "cell.metrofit: field 'studies.matching.allow_scale': must be true or false");

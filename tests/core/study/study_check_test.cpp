@@ -1,4 +1,4 @@
-// Study settings are checked, never quietly replaced (core/project/study_check.h): every bad
+// Study settings are checked, never quietly replaced (core/study/study_check.h): every bad
 // setting is one issue naming the study and the field; the demo project has none.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "core/common/error.h"
 #include "core/project/project.h"
-#include "core/project/study_check.h"
+#include "core/study/study_check.h"
 #include "testsupport.h"
 
 namespace metrofit {
@@ -68,6 +68,25 @@ TEST(StudyCheck, ThermalModulesNameThermalLogs) {
                                                       "studies.thermal.modules.x.dataset"}));
   p.studies["thermal"] = {{"modules", {"log"}}};
   EXPECT_EQ(fields(checkStudies(p)), (std::vector<std::string>{"studies.thermal.modules"}));
+}
+
+// studies.matching.frame / .frame_decimals: the matching page's Controller frame tab writes them (F2 of the
+// GUI run: they were unknown keys, so the report refused a project after a control was chosen).
+TEST(StudyCheck, MatchingFrameIsASetting) {
+  Project p = twoDatasets();
+  for (const char* control : {"heidenhain", "siemens", "fanuc"}) {
+    p.studies["matching"] = {{"dataset", "pts"}, {"frame", control}, {"frame_decimals", 3}};
+    EXPECT_TRUE(checkStudies(p).empty()) << control << ": " << checkStudies(p).front().message;
+  }
+  p.studies["matching"] = {{"frame", "okuma"}, {"frame_decimals", 13}};
+  auto issues = checkStudies(p);
+  EXPECT_EQ(fields(issues),
+            (std::vector<std::string>{"studies.matching.frame", "studies.matching.frame_decimals"}));
+  EXPECT_NE(issues[0].message.find("heidenhain, siemens, fanuc"), std::string::npos);
+  EXPECT_NE(issues[1].message.find("0..12"), std::string::npos);
+  p.studies["matching"] = {{"frame", 1}, {"frame_decimals", 2.5}};
+  EXPECT_EQ(fields(checkStudies(p)),
+            (std::vector<std::string>{"studies.matching.frame", "studies.matching.frame_decimals"}));
 }
 
 TEST(StudyCheck, MisspelledDatasetKind) {

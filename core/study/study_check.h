@@ -1,5 +1,6 @@
 #pragma once
-// Validation of a project's study settings against what the methods read, so that a bad setting is
+// Validation of a project's study settings against what the methods read (the keys and value checks of
+// each study's settings type, core/study/study_settings.h), so that a bad setting is
 // an error naming the study and the field, never a quiet default (a thermal study whose target names
 // a column the log lacks, a dataset of a misspelled kind, an unknown setting, a study that names a
 // dataset of the wrong kind). The report runs it before it draws anything, the GUI when a project
@@ -13,16 +14,13 @@
 #include <vector>
 
 #include "core/project/project.h"
+#include "core/study/study_settings.h"
 
 namespace metrofit {
 
 /// One bad setting: the field as the project file spells it ("studies.thermal.target",
 /// "datasets[3].kind") and what is wrong with it.
-struct StudyIssue {
-  std::string field;
-  std::string message;
-  bool operator==(const StudyIssue&) const = default;
-};
+using StudyIssue = SettingIssue;
 
 /// The dataset kinds a project may hold (dataset_kind::..., plus the import formats).
 const std::vector<std::string>& knownDatasetKinds();

@@ -1,0 +1,380 @@
+#include "core/study/study_settings.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/common/error.h"
+#include "core/matching/pose.h"
+#include "core/project/project.h"
+
+namespace metrofit {
+namespace {
+
+using json = nlohmann::json;
+
+// ---- value checks (the messages the validator has always given) ---------------------------------------
+
+std::function<std::string(const json&)> text() {
+  return [](const json& v) {
+    return v.is_string() && !v.get<std::string>().empty() ? std::string() : "must be a non-empty text";
+  };
+}
+
+std::function<std::string(const json&)> seedValue() {
+  return [](const json& v) {
+    return v.is_number_unsigned() || (v.is_number_integer() && v.get<long long>() >= 0)
+               ? std::string()
+               : "must be an integer >= 0";
+  };
+}
+
+/// A finite number in the open interval (lo, hi).
+std::function<std::string(const json&)> numberIn(double lo, double hi, std::string range) {
+  return [lo, hi, range](const json& v) {
+    const bool ok =
+        v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() > lo && v.get<double>() < hi;
+    return ok ? std::string() : "must be a number " + range;
+  };
+}
+
+std::function<std::string(const json&)> columnNames() {
+  return [](const json& v) {
+    bool ok = v.is_array() && !v.empty();
+    if (ok)
+      for (const auto& e : v) ok = ok && e.is_string() && !e.get<std::string>().empty();
+    return ok ? std::string() : "must be a non-empty list of column names";
+  };
+}
+
+std::function<std::string(const json&)> oneOf(std::vector<std::string> names) {
+  return [names](const json& v) {
+    if (v.is_string() && std::find(names.begin(), names.end(), v.get<std::string>()) != names.end())
+      return std::string();
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    return "must be one of " + list;
+  };
+}
+
+std::string joinKeys(const std::vector<SettingField>& fields) {
+  std::vector<std::string> keys;
+  for (const SettingField& f : fields) keys.push_back(f.key);
+  std::sort(keys.begin(), keys.end());
+  std::string s;
+  for (const std::string& k : keys) s += (s.empty() ? "" : ", ") + k;
+  return s;
+}
+
+SettingField datasetField(std::string key, std::string kind) {
+  SettingField f;
+  f.key = std::move(key);
+  f.dataset = true;
+  f.datasetKind = std::move(kind);
+  return f;
+}
+
+SettingField valueField(std::string key, std::function<std::string(const json&)> check = {}) {
+  SettingField f;
+  f.key = std::move(key);
+  f.check = std::move(check);
+  return f;
+}
+
+SettingField blockField(std::string key, const std::vector<SettingField>* block, bool perEntry = false) {
+  SettingField f;
+  f.key = std::move(key);
+  f.block = block;
+  f.blockPerEntry = perEntry;
+  return f;
+}
+
+[[noreturn]] void throwFirst(const std::vector<SettingIssue>& issues, const std::string& source) {
+  throw ValidationError(ErrorContext{source, 0, 0, issues.front().field}, issues.front().message);
+}
+
+/// The study block of `study` checked against `fields` (without the project: dataset references are
+/// only checked to be texts); ValidationError for the first issue.
+void requireValid(const json& study, const char* name, const std::vector<SettingField>& fields,
+                  const std::string& source) {
+  if (study.is_null()) return;
+  std::vector<SettingIssue> issues;
+  checkSettingsBlock(study, std::string("studies.") + name, fields, issues);
+  if (!issues.empty()) throwFirst(issues, source);
+}
+
+bool invalid(std::string* field, std::string* why, const char* study, const std::string& key,
+             const std::string& message) {
+  if (field) *field = std::string("studies.") + study + "." + key;
+  if (why) *why = message;
+  return false;
+}
+
+const std::vector<std::string>& matchMethodNames() {
+  static const std::vector<std::string> names = {"sade", "ga-simplex", "closed-form", "minimax"};
+  return names;
+}
+
+}  // namespace
+
+void checkSettingsBlock(const json& j, const std::string& prefix, const std::vector<SettingField>& fields,
+                        std::vector<SettingIssue>& issues, const DatasetCheck& dataset) {
+  if (!j.is_object()) {
+    issues.push_back({prefix, "must be an object of settings"});
+    return;
+  }
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string field = prefix + "." + it.key();
+    if (it.key() == "notes") continue;
+    const auto known =
+        std::find_if(fields.begin(), fields.end(), [&](const SettingField& f) { return f.key == it.key(); });
+    if (known == fields.end()) {
+      issues.push_back({field, "is not a setting of this study (known: " + joinKeys(fields) + ", notes)"});
+      continue;
+    }
+    if (known->dataset) {
+      if (!it->is_string() || it->get<std::string>().empty())
+        issues.push_back({field, "must be the id of a dataset of the project"});
+      else if (dataset)
+        dataset(*it, field, known->datasetKind);
+    } else if (known->block != nullptr && known->blockPerEntry) {
+      if (!it->is_object()) {
+        issues.push_back({field, "must be an object: a module's name -> {\"dataset\": ID}"});
+        continue;
+      }
+      for (auto m = it->begin(); m != it->end(); ++m)
+        checkSettingsBlock(*m, field + "." + m.key(), *known->block, issues, dataset);
+    } else if (known->block != nullptr) {
+      checkSettingsBlock(*it, field, *known->block, issues, dataset);
+    } else if (known->check) {
+      if (std::string message = known->check(*it); !message.empty()) issues.push_back({field, message});
+    }
+  }
+}
+
+// ---- setup --------------------------------------------------------------------------------------------
+
+const std::vector<SettingField>& SetupSettings::fields() {
+  static const std::vector<SettingField> f = {
+      datasetField("model", dataset_kind::kSetupModel), datasetField("dataset", dataset_kind::kCmmReport),
+      valueField("method", oneOf(setup::setupMethodNames())),
+      valueField("budget", numberIn(0.0, 1e12, "> 0 (solutions)")), valueField("seed", seedValue())};
+  return f;
+}
+
+SetupSettings SetupSettings::fromJson(const json& j, const std::string& source) {
+  requireValid(j, kStudy, fields(), source);
+  SetupSettings s;
+  if (!j.is_object()) return s;
+  s.model = j.value("model", std::string());
+  s.dataset = j.value("dataset", std::string());
+  s.method = j.value("method", s.method);
+  if (const auto b = j.find("budget"); b != j.end()) s.budget = static_cast<long>(b->get<double>());
+  if (const auto v = j.find("seed"); v != j.end()) s.seed = v->get<std::uint64_t>();
+  return s;
+}
+
+json SetupSettings::toJson() const {
+  const SetupSettings d;
+  json j = json::object();
+  if (!model.empty()) j["model"] = model;
+  if (!dataset.empty()) j["dataset"] = dataset;
+  if (method != d.method) j["method"] = method;
+  if (budget != d.budget) j["budget"] = budget;
+  if (seed != d.seed) j["seed"] = seed;
+  return j;
+}
+
+bool SetupSettings::isValid(std::string* field, std::string* why) const {
+  const auto names = setup::setupMethodNames();
+  if (std::find(names.begin(), names.end(), method) == names.end())
+    return invalid(field, why, kStudy, "method", oneOf(names)(json()));
+  if (budget <= 0) return invalid(field, why, kStudy, "budget", "must be a number > 0 (solutions)");
+  return true;
+}
+
+// ---- matching -----------------------------------------------------------------------------------------
+
+const std::vector<SettingField>& MatchingSettings::fields() {
+  static const std::vector<SettingField> f = {
+      datasetField("dataset", dataset_kind::kProbePoints),
+      valueField("tolerance_mm",
+                 [](const json& v) {
+                   return v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() >= 0.0
+                              ? std::string()
+                              : "must be a number >= 0 (mm)";
+                 }),
+      valueField("method",
+                 [](const json& v) -> std::string {
+                   if (!v.is_string()) return "must be one of sade, ga-simplex, closed-form, minimax";
+                   if (oneOf(matchMethodNames())(v).empty()) return {};
+                   return "unknown matching method '" + v.get<std::string>() +
+                          "' (one of sade, ga-simplex, closed-form, minimax)";
+                 }),
+      valueField("allow_scale",
+                 [](const json& v) { return v.is_boolean() ? std::string() : "must be true or false"; }),
+      valueField("seed", seedValue()),
+      valueField("locks",
+                 [](const json& v) -> std::string {
+                   if (!v.is_string()) return "must be a list of rx, ry, rz, x, y, z (string, e.g. \"rz,z\")";
+                   try {
+                     matching::DofLocks::parse(v.get<std::string>(), "locks");
+                   } catch (const Error& e) {
+                     return e.detail();
+                   }
+                   return {};
+                 }),
+      valueField("machine"),  // project.h matchingMachine checks it (Project::fromJson)
+      valueField("frame", oneOf(machine::frameFormatNames())),
+      valueField("frame_decimals", [](const json& v) {
+        return v.is_number_integer() && v.get<long long>() >= 0 && v.get<long long>() <= 12
+                   ? std::string()
+                   : "must be an integer in 0..12";
+      })};
+  return f;
+}
+
+MatchingSettings MatchingSettings::fromJson(const json& j, const std::string& source) {
+  requireValid(j, kStudy, fields(), source);
+  MatchingSettings s;
+  if (!j.is_object()) return s;
+  s.dataset = j.value("dataset", std::string());
+  if (const auto v = j.find("tolerance_mm"); v != j.end()) s.toleranceMm = v->get<double>();
+  if (const auto v = j.find("method"); v != j.end())
+    s.method = matching::parseMatchMethod(v->get<std::string>(), std::string("studies.matching.method"));
+  s.allowScale = j.value("allow_scale", false);
+  if (const auto v = j.find("seed"); v != j.end()) s.seed = v->get<std::uint64_t>();
+  s.locks = j.value("locks", std::string());
+  if (const auto v = j.find("frame"); v != j.end())
+    s.frame = machine::parseFrameFormat(v->get<std::string>(), "studies.matching.frame");
+  if (const auto v = j.find("frame_decimals"); v != j.end()) s.frameDecimals = v->get<int>();
+  return s;
+}
+
+json MatchingSettings::toJson() const {
+  const MatchingSettings d;
+  json j = json::object();
+  if (!dataset.empty()) j["dataset"] = dataset;
+  if (toleranceMm != d.toleranceMm) j["tolerance_mm"] = toleranceMm;
+  if (method != d.method) j["method"] = matching::toString(method);
+  if (allowScale) j["allow_scale"] = true;
+  if (seed != d.seed) j["seed"] = seed;
+  if (!locks.empty()) j["locks"] = locks;
+  if (frame != d.frame) j["frame"] = machine::toString(frame);
+  if (frameDecimals != d.frameDecimals) j["frame_decimals"] = frameDecimals;
+  return j;
+}
+
+bool MatchingSettings::isValid(std::string* field, std::string* why) const {
+  if (!(toleranceMm >= 0.0) || !std::isfinite(toleranceMm))
+    return invalid(field, why, kStudy, "tolerance_mm", "must be a number >= 0 (mm)");
+  if (frameDecimals < 0 || frameDecimals > 12)
+    return invalid(field, why, kStudy, "frame_decimals", "must be an integer in 0..12");
+  try {
+    matching::DofLocks::parse(locks, "locks");
+  } catch (const Error& e) {
+    return invalid(field, why, kStudy, "locks", e.detail());
+  }
+  return true;
+}
+
+// ---- kinematics ---------------------------------------------------------------------------------------
+
+const std::vector<SettingField>& KinematicsSettings::fields() {
+  static const std::vector<SettingField> spc = {
+      datasetField("dataset", ""), valueField("column", text()), valueField("subgroup"), valueField("lsl"),
+      valueField("usl"),           valueField("nominal"),        valueField("coverage")};
+  static const std::vector<SettingField> fromSpc = {
+      datasetField("x_dataset", ""),  datasetField("y_dataset", ""), valueField("position_column"),
+      valueField("deviation_column"), valueField("x_nominal_y"),     valueField("y_nominal_x"),
+      valueField("subgroup"),         valueField("coverage")};
+  /// Any CSV dataset: the YZ and ZX tests have their plane's columns, not a circular_test's.
+  static const std::vector<SettingField> planes = {datasetField("xy", ""), datasetField("yz", ""),
+                                                   datasetField("zx", "")};
+  static const std::vector<SettingField> f = {
+      datasetField("dataset", dataset_kind::kCircularTest), valueField("simulated_machine"),
+      blockField("spc", &spc), blockField("from_spc", &fromSpc), blockField("planes", &planes)};
+  return f;
+}
+
+// ---- thermal ------------------------------------------------------------------------------------------
+
+const std::vector<SettingField>& ThermalSettings::fields() {
+  /// studies.thermal.modules.<module>: the test the module is identified on.
+  static const std::vector<SettingField> module = {datasetField("dataset", dataset_kind::kThermalLog)};
+  static const std::vector<SettingField> f = {
+      datasetField("dataset", dataset_kind::kThermalLog),
+      valueField("target", text()),
+      valueField("inputs", columnNames()),
+      valueField("train_fraction", numberIn(0.0, 1.0, "between 0 and 1 (the fitted share of the rows)")),
+      valueField("seed", seedValue()),
+      blockField("modules", &module, true)};
+  return f;
+}
+
+ThermalSettings ThermalSettings::fromJson(const json& j, const std::string& source) {
+  requireValid(j, kStudy, fields(), source);
+  ThermalSettings s;
+  if (!j.is_object()) return s;
+  s.dataset = j.value("dataset", std::string());
+  s.target = j.value("target", std::string());
+  if (const auto v = j.find("inputs"); v != j.end()) s.inputs = v->get<std::vector<std::string>>();
+  if (const auto v = j.find("train_fraction"); v != j.end()) s.trainFraction = v->get<double>();
+  if (const auto v = j.find("seed"); v != j.end()) s.seed = v->get<std::uint64_t>();
+  if (const auto m = j.find("modules"); m != j.end())
+    for (auto it = m->begin(); it != m->end(); ++it)
+      s.modules[it.key()] = it->value("dataset", std::string());
+  return s;
+}
+
+json ThermalSettings::toJson() const {
+  const ThermalSettings d;
+  json j = json::object();
+  if (!dataset.empty()) j["dataset"] = dataset;
+  if (!target.empty()) j["target"] = target;
+  if (!inputs.empty()) j["inputs"] = inputs;
+  if (trainFraction != d.trainFraction) j["train_fraction"] = trainFraction;
+  if (seed != d.seed) j["seed"] = seed;
+  for (const auto& [module, id] : modules) j["modules"][module] = {{"dataset", id}};
+  return j;
+}
+
+bool ThermalSettings::isValid(std::string* field, std::string* why) const {
+  if (!(trainFraction > 0.0 && trainFraction < 1.0))
+    return invalid(field, why, kStudy, "train_fraction",
+                   "must be a number between 0 and 1 (the fitted share of the rows)");
+  for (const std::string& in : inputs)
+    if (in.empty()) return invalid(field, why, kStudy, "inputs", "must be a non-empty list of column names");
+  return true;
+}
+
+// ---- diagnosis ----------------------------------------------------------------------------------------
+
+const std::map<std::string, std::vector<SettingField>>& DiagnosisStudySettings::domains() {
+  static const std::map<std::string, std::vector<SettingField>> d = {
+      {"thermal",
+       {datasetField("dataset", dataset_kind::kThermalLog), valueField("target"), valueField("inputs"),
+        valueField("train_fraction"), valueField("applied")}},
+      {"kinematic",
+       {datasetField("dataset", dataset_kind::kCircularTest), valueField("feed_mm_per_min"),
+        valueField("applied")}},
+      {"setup",
+       {datasetField("dataset", dataset_kind::kCmmReport), datasetField("model", dataset_kind::kSetupModel),
+        valueField("applied")}},
+      {"matching",
+       {datasetField("dataset", dataset_kind::kProbePoints), valueField("tolerance_mm"),
+        valueField("applied")}},
+  };
+  return d;
+}
+
+const std::vector<StudyType>& studyTypes() {
+  static const std::vector<StudyType> types = {
+      {SetupSettings::kStudy, &SetupSettings::fields(), nullptr},
+      {MatchingSettings::kStudy, &MatchingSettings::fields(), nullptr},
+      {KinematicsSettings::kStudy, &KinematicsSettings::fields(), nullptr},
+      {ThermalSettings::kStudy, &ThermalSettings::fields(), nullptr},
+      {DiagnosisStudySettings::kStudy, nullptr, &DiagnosisStudySettings::domains()}};
+  return types;
+}
+
+}  // namespace metrofit
