@@ -922,10 +922,15 @@ void MatchingPage::startRun() {
 
 void MatchingPage::declareStudyDataset() {
   const QString id = currentDataset();
-  if (id.isEmpty()) return;
+  // The study's dataset is a probe_points one (core/project/study_check.h); a hole table is matched
+  // on the page but cannot be the study's.
+  const DatasetRef* set = currentSetRef();
+  if (id.isEmpty() || !set || set->kind != dataset_kind::kProbePoints) return;
   const nlohmann::json current =
       document_->studyValue(QString::fromLatin1(study::kMatching), QStringLiteral("/dataset"));
-  if (current == nlohmann::json(id.toStdString())) return;
+  // Only a study without points gets them: a run on other points must not re-point the study (nor
+  // push an undo step between the user's own edits).
+  if (!current.is_null()) return;
   writeStudyValue(QStringLiteral("/dataset"), id.toStdString(), tr("Match the probe points %1").arg(id),
                   false);
 }

@@ -123,8 +123,8 @@ class MatchingPage : public QWidget {
   QString settingsErrorText() const;
   /// Writes one studies.matching value (undoable); `typing` lets consecutive edits merge.
   void writeStudyValue(const QString& key, const nlohmann::json& value, const QString& text, bool typing);
-  /// A run declares the points it matches as the study's dataset (studies.matching.dataset, undoable),
-  /// so that the report shows what the page shows.
+  /// A run on probe points declares them as the study's dataset when the study names none yet
+  /// (studies.matching.dataset, undoable), so that the report shows what the page shows.
   void declareStudyDataset();
   /// The settings a stored result is checked against (the study without notes and frame output, and
   /// the effects applied on the diagnosis page).
