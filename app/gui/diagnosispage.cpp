@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QComboBox>
+#include <QDir>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QKeySequence>
@@ -34,6 +35,14 @@
 
 namespace metrofit {
 namespace {
+
+/// The settings' key with the paths cleaned: a Save As to another folder resolves the same files as
+/// "<new folder>/../data/x.csv", which must not read as other data (the result stays).
+std::string pageSettingsKey(DiagnosisSettings s) {
+  s.datasetPath = QDir::cleanPath(QString::fromStdString(s.datasetPath)).toStdString();
+  if (!s.modelPath.empty()) s.modelPath = QDir::cleanPath(QString::fromStdString(s.modelPath)).toStdString();
+  return diagnosisSettingsKey(s);
+}
 
 /// Long parameter lists (cyclic: four values) must leave room for the evidence; tooltips show all.
 constexpr int kMaxParameterColumnWidth = 280;
@@ -284,7 +293,7 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
     setRunning(false);
     if (std::optional<diagnose::Diagnosis> r = run_->takeResult()) {
       result_ = std::move(*r);
-      if (settings_) settingsKey_ = diagnosisSettingsKey(*settings_);
+      if (settings_) settingsKey_ = pageSettingsKey(*settings_);
       showResult();
     }
     emit finished();
@@ -339,6 +348,11 @@ void DiagnosisPage::showMessage(const QString& text) {
 
 void DiagnosisPage::refresh() {
   if (isRunning()) return;
+  if (generation_ != document_->generation()) {  // File › New, Open: nothing of the last project stays
+    generation_ = document_->generation();
+    result_.reset();
+    settingsKey_.clear();
+  }
   settings_.reset();
   const DiagnosisDomain d = domain();
   const QString key = QString::fromLatin1(diagnosisDomainKey(d));
@@ -392,7 +406,7 @@ void DiagnosisPage::refresh() {
   info_->setText(info);
   stack_->setCurrentWidget(tabs_);
   runButton_->setEnabled(true);
-  if (result_ && settingsKey_ == diagnosisSettingsKey(s)) {
+  if (result_ && settingsKey_ == pageSettingsKey(s)) {
     showResult();
     return;
   }
@@ -413,7 +427,7 @@ void DiagnosisPage::refresh() {
 void DiagnosisPage::setResult(diagnose::Diagnosis result) {
   if (isRunning()) return;
   result_ = std::move(result);
-  settingsKey_ = settings_ ? diagnosisSettingsKey(*settings_) : std::string();
+  settingsKey_ = settings_ ? pageSettingsKey(*settings_) : std::string();
   showResult();
 }
 
@@ -425,7 +439,7 @@ bool DiagnosisPage::runNow() {
   }
   try {
     result_ = runDiagnosis(*settings_);
-    settingsKey_ = diagnosisSettingsKey(*settings_);
+    settingsKey_ = pageSettingsKey(*settings_);
     showResult();
     return true;
   } catch (const std::exception& e) {

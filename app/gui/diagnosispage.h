@@ -108,6 +108,7 @@ class DiagnosisPage : public QWidget {
 
   std::optional<DiagnosisSettings> settings_;
   std::string settingsKey_;  ///< the settings the shown result was computed with
+  quint64 generation_ = 0;   ///< the document's generation the page shows
   std::optional<diagnose::Diagnosis> result_;
   BackgroundRun<diagnose::Diagnosis>* run_;
 };

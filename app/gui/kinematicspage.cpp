@@ -423,6 +423,8 @@ void KinematicsPage::syncPickers() {
 void KinematicsPage::refresh() {
   syncPickers();
   std::vector<DatasetRef> sets = circularTestDatasets(document_->project());
+  // Resolved paths: a Save As to another folder (which rewrites relative paths) keeps the results.
+  for (DatasetRef& d : sets) d = document_->resolvedDataset(d);
   const auto it = document_->project().studies.find(study::kKinematics);
   nlohmann::json settings = it != document_->project().studies.end() ? *it : nlohmann::json();
   if (settings.is_object()) settings.erase("notes");  // notes edits must not re-run the study
@@ -431,12 +433,17 @@ void KinematicsPage::refresh() {
   if (const auto diag = document_->project().studies.find(study::kDiagnosis);
       diag != document_->project().studies.end() && diag->is_object() && diag->contains("kinematic"))
     json += (*diag)["kinematic"].dump();
-  for (const DatasetRef& d : document_->project().datasets) json += d.id + d.kind + d.path;
-  if (sets == datasets_ && json == studyJson_ && projectFile_ == document_->fileName() && combo_->count() > 0)
+  for (const DatasetRef& d : document_->project().datasets)
+    json += d.id + d.kind + document_->datasetPath(d).toStdString();
+  if (sets == datasets_ && json == studyJson_ && generation_ == document_->generation() &&
+      combo_->count() > 0) {
+    projectFile_ = document_->fileName();
     return;
+  }
   datasets_ = std::move(sets);
   studyJson_ = std::move(json);
   projectFile_ = document_->fileName();
+  generation_ = document_->generation();
   QString select = currentDataset();
   QString settingsError;  // studies.kinematics cannot be read
   const auto has = [&](const QString& id) {

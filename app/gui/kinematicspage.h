@@ -155,6 +155,7 @@ class KinematicsPage : public QWidget {
   QString error_;
   std::vector<DatasetRef> datasets_;
   QString projectFile_;
+  quint64 generation_ = 0;  ///< the document's generation the page shows
   std::string studyJson_;
 };
 

@@ -38,8 +38,10 @@
 #include "core/common/error.h"
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
+#include "core/project/stored_results.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/document/projectdocument.h"
+#include "widgets/document/storedresulttext.h"
 #include "widgets/document/studyinfo.h"
 #include "widgets/matching/matchingcurveview.h"
 #include "widgets/matching/pointsetview.h"
@@ -591,6 +593,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
       result_ = std::move(*r);
       error_.clear();
       applyResult();
+      storeResult();
     }
     emit finished();
   };
@@ -641,9 +644,13 @@ void MatchingPage::refresh() {
   std::vector<DatasetRef> sets;
   for (const DatasetRef& d : document_->project().datasets) {
     // A hole-table report is read as probe points too (readProbePointsAnyFormat).
-    if (d.kind == dataset_kind::kProbePoints || d.kind == dataset_kind::kHoleTable) sets.push_back(d);
+    if (d.kind == dataset_kind::kProbePoints || d.kind == dataset_kind::kHoleTable)
+      sets.push_back(document_->resolvedDataset(d));
   }
-  if (sets == sets_ && projectFile_ == document_->fileName() && combo_->count() > 0) {
+  // A Save As (the same files under paths relative to another folder) keeps the result; File › New
+  // and Open (another generation) drop it.
+  if (sets == sets_ && generation_ == document_->generation() && combo_->count() > 0) {
+    projectFile_ = document_->fileName();
     if (writingStudy_) return;
     // Apply on the diagnosis page (or its undo): the same points, another model of the part.
     if (appliedKeyOf(document_->project()) != appliedKey_) {
@@ -692,11 +699,13 @@ void MatchingPage::refresh() {
     if (result_) result_->primary = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
     reevaluate();
     settingsChanged();
+    showStoredStatus();
     return;
   }
   sets_ = std::move(sets);
-  const bool newProject = projectFile_ != document_->fileName() || combo_->count() == 0;
+  const bool newProject = generation_ != document_->generation() || combo_->count() == 0;
   projectFile_ = document_->fileName();
+  generation_ = document_->generation();
   QString previous = currentDataset();
   try {
     settings_ = matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
@@ -776,6 +785,9 @@ void MatchingPage::showPoints(int comboIndex) {
     info_->setToolTip(QString::fromStdString(dataset.description));
     status_->setText(settingsError_.isEmpty() ? tr("Not matched yet: press Run (Ctrl+R).")
                                               : settingsErrorText());
+    if (settingsError_.isEmpty()) {
+      if (const QString stored = storedResultText(); !stored.isEmpty()) status_->setText(stored);
+    }
     runButton_->setEnabled(settingsError_.isEmpty());  // invalid settings: refused, not replaced
     stack_->setCurrentWidget(content_);
   } catch (const std::exception& e) {
@@ -819,6 +831,13 @@ void MatchingPage::writeStudyValue(const QString& key, const nlohmann::json& val
   document_->setStudyValue(QString::fromLatin1(study::kMatching), key, value, text);
   if (!typing) document_->endEditSequence();
   writingStudy_ = false;
+  showStoredStatus();
+}
+
+void MatchingPage::showStoredStatus() {
+  if (result_ || !set_ || isRunning() || !settingsError_.isEmpty()) return;
+  const QString stored = storedResultText();
+  status_->setText(stored.isEmpty() ? tr("Not matched yet: press Run (Ctrl+R).") : stored);
 }
 
 bool MatchingPage::syncSettingsFromStudy(const matching::MatchingStudySettings& settings) {
@@ -862,6 +881,10 @@ void MatchingPage::settingsChanged() {
   if (result_) status_->setText(tr("Settings changed: press Run (Ctrl+R) to match again."));
 }
 
+QString MatchingPage::statusText() const {
+  return status_->text();
+}
+
 QString MatchingPage::infoText() const {
   return info_->text();
 }
@@ -873,9 +896,12 @@ bool MatchingPage::runNow() {
     return false;
   }
   try {
-    result_ = matching::runMatchingStudy(*rawSet_, currentOptions());
+    const matching::MatchingStudyOptions options = currentOptions();
+    declareStudyDataset();
+    result_ = matching::runMatchingStudy(*rawSet_, options);
     error_.clear();
     applyResult();
+    storeResult();
     return true;
   } catch (const std::exception& e) {
     error_ = QString::fromUtf8(e.what());
@@ -898,11 +924,106 @@ void MatchingPage::startRun() {
     status_->setText(tr("Matching failed: %1").arg(error_));
     return;
   }
+  declareStudyDataset();
   setRunning(true);
   status_->setText(tr("Matching …"));
   const ProbePointSet set = *rawSet_;  // runMatchingStudy adds the applied effects itself
   run_->start(
       [set, options](RunObserver& observer) { return matching::runMatchingStudy(set, options, &observer); });
+}
+
+void MatchingPage::declareStudyDataset() {
+  const QString id = currentDataset();
+  // The study's dataset is a probe_points one (core/project/study_check.h); a hole table is matched
+  // on the page but cannot be the study's.
+  const DatasetRef* set = currentSetRef();
+  if (id.isEmpty() || !set || set->kind != dataset_kind::kProbePoints) return;
+  const nlohmann::json current =
+      document_->studyValue(QString::fromLatin1(study::kMatching), QStringLiteral("/dataset"));
+  // Only a study without points gets them: a run on other points must not re-point the study (nor
+  // push an undo step between the user's own edits).
+  if (!current.is_null()) return;
+  writeStudyValue(QStringLiteral("/dataset"), id.toStdString(), tr("Match the probe points %1").arg(id),
+                  false);
+}
+
+nlohmann::json MatchingPage::storedSettingsJson() const {
+  // What decides the figures: the study's settings (not its notes nor how a frame is written) and the
+  // effects applied on the diagnosis page.
+  nlohmann::json study = document_->studyValue(QString::fromLatin1(study::kMatching), QString());
+  if (!study.is_object()) study = nlohmann::json::object();
+  for (const char* key : {"notes", "frame", "frame_decimals", "dataset"}) study.erase(key);
+  nlohmann::json applied =
+      document_->studyValue(QString::fromLatin1(study::kDiagnosis), QStringLiteral("/matching"));
+  return {{"study", study}, {"diagnosis", applied}};
+}
+
+const DatasetRef* MatchingPage::currentSetRef() const {
+  const int index = combo_->currentIndex();
+  if (index < 0 || index >= static_cast<int>(sets_.size())) return nullptr;
+  return &sets_[static_cast<std::size_t>(index)];
+}
+
+void MatchingPage::storeResult() {
+  const DatasetRef* dataset = currentSetRef();
+  if (!result_ || !set_ || !dataset) return;
+  const matching::MatchResult& primary = result_->primaryRun();
+  if (primary.run.termination == Termination::Cancelled) return;  // not the result of these settings
+  nlohmann::json figures = matching::toJson(primary, *set_);
+  figures.erase("trace");
+  try {
+    document_->setStoredResult(QString::fromLatin1(study::kMatching), QString::fromStdString(dataset->id),
+                               makeStoredResult(document_->projectPathForDatasets().toStdString(), *dataset,
+                                                storedSettingsJson(), std::move(figures)));
+  } catch (const std::exception&) {
+    // The points cannot be read any more: nothing is stored.
+  }
+}
+
+QString MatchingPage::storedResultText() const {
+  const DatasetRef* dataset = currentSetRef();
+  if (!dataset) return {};
+  const StoredResult stored =
+      storedResult(document_->project(), document_->projectPathForDatasets().toStdString(), study::kMatching,
+                   *dataset, storedSettingsJson());
+  const QString when = storedTimeText(stored.computed);
+  switch (stored.state) {
+    case StoredResultState::None:
+      return {};
+    case StoredResultState::SettingsChanged:
+      return tr("The stored result (computed %1) is out of date: the matching settings changed since. Not "
+                "matched with these settings yet: press Run (Ctrl+R).")
+          .arg(when);
+    case StoredResultState::DataChanged:
+      return tr("The stored result (computed %1) is out of date: the points file changed since. Press Run "
+                "(Ctrl+R) to match the points as they are now.")
+          .arg(when);
+    case StoredResultState::DataMissing:
+      return tr("The stored result (computed %1) cannot be checked: the points file cannot be read.")
+          .arg(when);
+    case StoredResultState::Current:
+      break;
+  }
+  const nlohmann::json& e = stored.entry;
+  const auto number = [&e](const char* key) {
+    const nlohmann::json v = e.value(key, nlohmann::json());
+    return v.is_number() ? v.get<double>() : 0.0;
+  };
+  const nlohmann::json oot = e.value("out_of_tolerance", nlohmann::json::object());
+  const auto count = [&oot](const char* key) {
+    const nlohmann::json v = oot.is_object() ? oot.value(key, nlohmann::json()) : nlohmann::json();
+    return v.is_number_integer() ? v.get<long long>() : 0LL;
+  };
+  const QLocale locale;
+  return tr("From the saved project, computed %1 with these settings on these points: %2: %3 of %4 points "
+            "out of ±%5 mm before, %6 after; RMSE %7 mm, max |d| %8 mm. Press Run (Ctrl+R) to see the "
+            "views.")
+      .arg(when, QString::fromStdString(e.value("method", std::string())))
+      .arg(count("before"))
+      .arg(e.value("points", 0LL))
+      .arg(locale.toString(number("tolerance_mm"), 'f', 3))
+      .arg(count("after"))
+      .arg(locale.toString(number("rmse_mm"), 'f', 4), locale.toString(number("max_abs_mm"), 'f', 4));
 }
 
 void MatchingPage::cancelRun() {

@@ -68,6 +68,13 @@ class MatchingPage : public QWidget {
   QString errorMessage() const { return error_; }
   /// The info line above the views (points, surfaces, applied effects).
   QString infoText() const;
+  /// What the project stores of the points shown (results.matching.<dataset>,
+  /// core/project/stored_results.h), or "" when nothing is stored: the stored figures marked "From the
+  /// saved project, computed <when>" when the settings and the points are those they came from, else
+  /// "out of date" with why. Shown in the status line until the points are matched again.
+  QString storedResultText() const;
+  /// The status line under the views (the run's figures, "Not matched yet", a stored result).
+  QString statusText() const;
   /// "Includes applied effects: ..." when studies.diagnosis.matching.applied is in use, else empty.
   QString appliedText() const { return appliedText_; }
   const std::optional<matching::MatchingStudyResult>& result() const { return result_; }
@@ -123,6 +130,18 @@ class MatchingPage : public QWidget {
   QString settingsErrorText() const;
   /// Writes one studies.matching value (undoable); `typing` lets consecutive edits merge.
   void writeStudyValue(const QString& key, const nlohmann::json& value, const QString& text, bool typing);
+  /// A run on probe points declares them as the study's dataset when the study names none yet
+  /// (studies.matching.dataset, undoable), so that the report shows what the page shows.
+  void declareStudyDataset();
+  /// The settings a stored result is checked against (the study without notes and frame output, and
+  /// the effects applied on the diagnosis page).
+  nlohmann::json storedSettingsJson() const;
+  /// The points shown (sets_, paths resolved), or nullptr.
+  const DatasetRef* currentSetRef() const;
+  /// Keeps the primary run's figures in the project (results.matching.<dataset>).
+  void storeResult();
+  /// Without a result: the status line says what is stored (storedResultText) or "Not matched yet".
+  void showStoredStatus();
   /// Puts the study's settings (and studies.matching.locks) into the controls with their signals
   /// blocked; true when a control changed.
   bool syncSettingsFromStudy(const matching::MatchingStudySettings& settings);
@@ -179,6 +198,7 @@ class MatchingPage : public QWidget {
   QString settingsError_;
   std::vector<DatasetRef> sets_;
   QString projectFile_;
+  quint64 generation_ = 0;  ///< the document's generation the page shows
 
   std::optional<ProbePointSet> set_;     ///< the study's model: rawSet_ with the applied effects
   std::optional<ProbePointSet> rawSet_;  ///< as read

@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDir>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -291,8 +292,10 @@ SetupPage::~SetupPage() {
 
 void SetupPage::refresh() {
   const SetupStudyFiles files = setupStudyFiles(document_->project(), document_->fileName().toStdString());
-  const QString key = document_->fileName() + QLatin1Char('\n') + QString::fromStdString(files.modelPath) +
-                      QLatin1Char('\n') + QString::fromStdString(files.reportPath);
+  // The generation, not the file name: Save As keeps every result, File › New and Open drop them.
+  const QString key = QString::number(document_->generation()) + QLatin1Char('\n') +
+                      QDir::cleanPath(QString::fromStdString(files.modelPath)) + QLatin1Char('\n') +
+                      QDir::cleanPath(QString::fromStdString(files.reportPath));
   if (d->loaded && key == d->loadedKey) {
     // Apply on the diagnosis page (or its undo): the same files, another model of the deviations.
     const std::string applied = appliedKeyOf(document_->project());
@@ -306,8 +309,11 @@ void SetupPage::refresh() {
     onModelEdited();
     return;
   }
+  const bool otherProject =
+      !d->loaded || !d->loadedKey.startsWith(QString::number(document_->generation()) + QLatin1Char('\n'));
   d->loadedKey = key;
   reload();
+  if (otherProject) validation_->clearResult();  // File › New, Open: nothing of the last project stays
 }
 
 void SetupPage::applyEffects() {

@@ -21,8 +21,11 @@
 #include "app/gui/notesedit.h"
 #include "core/diagnose/applied_setup_matching.h"
 #include "core/diagnose/thermal_applied.h"
+#include "core/project/stored_results.h"
+#include "core/study/thermal_result.h"
 #include "core/thermal/thermal_log.h"
 #include "widgets/document/projectdocument.h"
+#include "widgets/document/storedresulttext.h"
 #include "widgets/document/studyinfo.h"
 #include "widgets/thermal/thermalcharts.h"
 #include "widgets/thermal/thermalhysteresisview.h"
@@ -120,6 +123,10 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
     settings_[logId_] = models_->settings();
     writeStudySettings(settings_[logId_]);
   });
+  connect(models_, &ThermalModelView::trainingFinished, this, [this](bool completed) {
+    if (completed) storeResult();
+  });
+  connect(models_, &ThermalModelView::settingsEdited, this, &ThermalPage::showStoredResult);
   connect(modular_, &BackgroundRunBase::finished, this, [this] {
     if (std::optional<ModularRun> run = modular_->takeResult()) applyModular(*run);
   });
@@ -169,10 +176,13 @@ void ThermalPage::selectDataset(const QString& id) {
 void ThermalPage::refresh() {
   std::vector<DatasetRef> logs;
   for (const DatasetRef& d : document_->project().datasets) {
-    if (d.kind == dataset_kind::kThermalLog) logs.push_back(d);
+    if (d.kind == dataset_kind::kThermalLog) logs.push_back(document_->resolvedDataset(d));
   }
-  // Name or notes edits must not re-read the data.
-  if (logs == logs_ && projectFile_ == document_->fileName() && combo_->count() > 0) {
+  // Name or notes edits must not re-read the data; nor must a Save As (the same files under paths
+  // relative to another folder): the trained models stay. File › New and Open drop everything.
+  if (logs == logs_ && generation_ == document_->generation() && combo_->count() > 0) {
+    if (modularKey_ == projectFile_) modularKey_ = document_->fileName();
+    projectFile_ = document_->fileName();
     if (!writingStudy_) {
       syncSettingsFromStudy();  // undo / redo of a settings edit
       syncModulesFromStudy();   // undo / redo of a module's test
@@ -182,6 +192,7 @@ void ThermalPage::refresh() {
   }
   logs_ = std::move(logs);
   projectFile_ = document_->fileName();
+  generation_ = document_->generation();
   settings_.clear();
   modularDone_ = false;
   modularResult_.reset();
@@ -247,6 +258,7 @@ void ThermalPage::showLog(int comboIndex) {
     }
     settings_[logId_].applied = diagnose::projectThermalApplied(document_->project(), dataset.id);
     models_->setLog(log_, settings_[logId_]);
+    showStoredResult();
     stack_->setCurrentWidget(tabs_);
     onTabChanged(tabs_->currentIndex());
   } catch (const std::exception& e) {
@@ -327,6 +339,85 @@ void ThermalPage::syncSettingsFromStudy() {
   settings_[logId_] = s;
   models_->setSettings(s);
   if (tabs_->currentIndex() == kHysteresisTab) updateHysteresis();
+  showStoredResult();
+}
+
+const DatasetRef* ThermalPage::currentLogRef() const {
+  for (const DatasetRef& d : logs_)
+    if (QString::fromStdString(d.id) == logId_) return &d;
+  return nullptr;
+}
+
+void ThermalPage::storeResult() {
+  const ThermalComparison* c = models_->comparison();
+  const DatasetRef* dataset = currentLogRef();
+  if (!c || c->cancelled || !dataset) return;
+  try {
+    document_->setStoredResult(QString::fromLatin1(study::kThermal), logId_,
+                               makeStoredResult(document_->projectPathForDatasets().toStdString(), *dataset,
+                                                thermalSettingsJson(c->settings), thermalResultJson(*c)));
+  } catch (const std::exception&) {
+    // The log cannot be read any more (moved while training): nothing is stored, the page shows the run.
+  }
+}
+
+QString ThermalPage::storedResultText() const {
+  const DatasetRef* dataset = currentLogRef();
+  if (!dataset) return {};
+  const StoredResult stored =
+      storedResult(document_->project(), document_->projectPathForDatasets().toStdString(), study::kThermal,
+                   *dataset, thermalSettingsJson(models_->settings()));
+  const QString when = storedTimeText(stored.computed);
+  switch (stored.state) {
+    case StoredResultState::None:
+      return {};
+    case StoredResultState::SettingsChanged:
+      return tr("The stored result (computed %1) is out of date: the model settings changed since. Not "
+                "trained with these settings yet: Train (Ctrl+R).")
+          .arg(when);
+    case StoredResultState::DataChanged:
+      return tr("The stored result (computed %1) is out of date: the data file changed since. Train "
+                "(Ctrl+R) to fit the models on the data as it is now.")
+          .arg(when);
+    case StoredResultState::DataMissing:
+      return tr("The stored result (computed %1) cannot be checked: the data file cannot be read.").arg(when);
+    case StoredResultState::Current:
+      break;
+  }
+  const nlohmann::json& e = stored.entry;
+  const int ti = log_.indexOf(models_->settings().target);
+  const QString unit =
+      ti >= 0 ? QLatin1Char(' ') + displayUnit(log_.channels[static_cast<std::size_t>(ti)].unit) : QString();
+  const QLocale locale;
+  QStringList models;
+  QString bestFigure;
+  const std::string best = e.value("best_model", nlohmann::json()).is_string()
+                               ? e["best_model"].get<std::string>()
+                               : std::string();
+  if (e.contains("models") && e["models"].is_array()) {
+    for (const nlohmann::json& m : e["models"]) {
+      if (!m.is_object() || !m.value("model", nlohmann::json()).is_string()) continue;
+      const std::string name = m["model"].get<std::string>();
+      const nlohmann::json h = m.value("heldout_rmse", nlohmann::json());
+      const QString figure =
+          h.is_number() ? locale.toString(h.get<double>(), 'f', 2) + unit : tr("not fitted");
+      models << QStringLiteral("%1 %2").arg(QString::fromStdString(name), figure);
+      if (name == best) bestFigure = figure;
+    }
+  }
+  const QString bestText =
+      best.empty()
+          ? tr("no model usable for compensation")
+          : tr("best usable model %1 (held-out RMSE %2)").arg(QString::fromStdString(best), bestFigure);
+  return tr("From the saved project, computed %1 with these settings on this data: %2. Held-out RMSE: %3. "
+            "Train (Ctrl+R) to see the charts.")
+      .arg(when, bestText, models.join(QStringLiteral(", ")));
+}
+
+void ThermalPage::showStoredResult() {
+  if (models_->comparison() || models_->isRunning()) return;
+  const QString text = storedResultText();
+  if (!text.isEmpty()) models_->setStatusText(text);
 }
 
 void ThermalPage::onTabChanged(int index) {

@@ -55,6 +55,11 @@ class ThermalPage : public QWidget {
   ThermalModelView* modelView() const { return models_; }
   /// The error of the last read, empty when the log was read.
   QString errorMessage() const { return error_; }
+  /// What the project stores of the log shown (results.thermal.<log>, core/project/stored_results.h)
+  /// for the page, or "" when nothing is stored: the stored figures marked "From the saved project,
+  /// computed <when>" when the settings and the data are those they came from, else "out of date"
+  /// with why. Shown in the Models tab's status line until the models are trained.
+  QString storedResultText() const;
 
   /// Switches to "trend", "hysteresis" or "models" with results on it: the hysteresis analysis and,
   /// for "models", the three models (trained synchronously with the settings shown when none are)
@@ -81,6 +86,13 @@ class ThermalPage : public QWidget {
   void showLog(int comboIndex);
   /// Shows why the study's settings were refused (the field named) instead of the log.
   void showSettingsError(const QString& message);
+  /// The log shown (logs_, paths resolved), or nullptr.
+  const DatasetRef* currentLogRef() const;
+  /// Keeps the trained comparison in the project (results.thermal.<log>) with its settings and the
+  /// data's hash; the next save writes it.
+  void storeResult();
+  /// The stored result's text in the Models tab while it shows no trained models.
+  void showStoredResult();
   void onTabChanged(int index);
   /// Starts the hysteresis analysis of the log and settings shown on a worker (the view shows it
   /// when ready); nothing when the view already has them.
@@ -107,6 +119,7 @@ class ThermalPage : public QWidget {
   QString error_;
   std::vector<DatasetRef> logs_;
   QString projectFile_;
+  quint64 generation_ = 0;  ///< the document's generation the page shows (ProjectDocument::generation)
   ThermalLog log_;
   QString logId_;
   QString infoBase_;       ///< the log's description (info_ without the applied-effects line)

@@ -13,6 +13,7 @@
 
 #include "core/common/error.h"
 #include "core/project/datasets.h"
+#include "core/project/stored_results.h"
 #include "widgets/document/studyinfo.h"
 
 namespace metrofit {
@@ -347,7 +348,19 @@ void ProjectDocument::applyProject(const Project& project) {
   emit changed();
 }
 
+DatasetRef ProjectDocument::resolvedDataset(const DatasetRef& dataset) const {
+  DatasetRef d = dataset;
+  d.path = toStd(datasetPath(dataset));
+  return d;
+}
+
+void ProjectDocument::setStoredResult(const QString& study, const QString& datasetId,
+                                      const nlohmann::json& entry) {
+  metrofit::setStoredResult(project_, toStd(study), toStd(datasetId), entry);
+}
+
 void ProjectDocument::newProject() {
+  ++generation_;
   project_ = Project{};
   setFileName(QString());
   undoStack_->clear();
@@ -358,6 +371,7 @@ void ProjectDocument::newProject() {
 void ProjectDocument::load(const QString& path) {
   const QString absolute = QFileInfo(path).absoluteFilePath();
   Project loaded = loadProject(fileNameToStd(absolute));  // throws; nothing changed yet
+  ++generation_;
   project_ = std::move(loaded);
   setFileName(absolute);
   undoStack_->clear();

@@ -175,6 +175,20 @@ class ProjectDocument : public QObject {
   /// `undoText`; the file name stays). Nothing happens when the content is equal. Emits changed().
   void replaceProject(const Project& project, const QString& undoText);
 
+  /// Which project the document holds: a new number for every newProject() and load() (File › New,
+  /// Open, reload), the same across save() and saveAs(). A page drops every result, chart and text it
+  /// shows when the generation changes, and keeps them when only the file name changed (Save As).
+  quint64 generation() const { return generation_; }
+  /// The dataset with its path resolved to an absolute one (datasetPath): equal before and after a
+  /// Save As to another folder (which rewrites relative paths), so pages compare these to tell "the
+  /// same data" from "other data".
+  DatasetRef resolvedDataset(const DatasetRef& dataset) const;
+
+  /// Stores a study's result for a dataset in the project (results.<study>.<datasetId>, see
+  /// core/project/stored_results.h). Not an edit: no undo step, the document's modified state stays
+  /// and no signal is emitted (results follow edits, they are not edits); the next save writes it.
+  void setStoredResult(const QString& study, const QString& datasetId, const nlohmann::json& entry);
+
   /// A new empty project without a file; clears the undo stack.
   void newProject();
   /// Replaces the project with the file's content; clears the undo stack. Throws
@@ -254,6 +268,7 @@ class ProjectDocument : public QObject {
   QFileSystemWatcher* watcher_;
   QTimer* diskCheck_;  ///< coalesces the watcher's bursts of notifications
   quint64 editSequence_ = 0;
+  quint64 generation_ = 0;
   /// Size and modification time of the file as the document last wrote or read it.
   struct Stamp {
     qint64 size = -1;

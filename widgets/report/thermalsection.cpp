@@ -5,7 +5,10 @@
 // modular case, the combined test predicted from models fitted on the Z and C tests (Section 4.3).
 //
 // Run time: the models are trained here (fixed seed, default budgets). Logs longer than
-// kMaxModelRows rows are fitted on every k-th row (said in the section). The report is laid out
+// kMaxModelRows rows are fitted on every k-th row (said in the section), unless the project stores the
+// Thermal page's result for the log with the same settings and data (results.thermal.<log>,
+// core/project/stored_results.h): then the report fits every row as the page did, so it chooses the
+// same model with the same figures (and says so). The report is laid out
 // twice (report.cpp: page numbers first), so results are kept in the report's memo (ReportContext)
 // keyed by the log's content and the settings.
 #include <QChart>
@@ -23,7 +26,9 @@
 
 #include "core/common/numformat.h"
 #include "core/diagnose/thermal_applied.h"
+#include "core/project/stored_results.h"
 #include "core/study/thermal_comparison.h"
+#include "core/study/thermal_result.h"
 #include "core/study/trend_analysis.h"
 #include "core/thermal/hysteresis.h"
 #include "core/thermal/model_verdict.h"
@@ -51,6 +56,10 @@ constexpr std::size_t kMaxHysteresisCharts = 9;  ///< small multiples in the rep
 struct ThermalResults {
   ThermalModelSettings settings;
   std::size_t stride = 1;
+  /// The project stores the Thermal page's result for this log, settings and data: every row is
+  /// fitted, as the page did. `pageComputed` is when the page computed it, `pageBest` its best model.
+  bool asPage = false;
+  std::string pageComputed, pageBest;
   ThermalLog fitted;  ///< the log the models were fitted on (decimated when long)
   thermal::ThermalSeries hysteresisSeries;
   thermal::HysteresisAnalysis hysteresis;
@@ -81,13 +90,26 @@ std::string settingsText(const ThermalModelSettings& s) {
 }
 
 /// Hysteresis and the three models for one log (kept in the report's memo, see the header comment).
-std::shared_ptr<const ThermalResults> thermalResults(const ReportContext& context, const ThermalLog& log,
+std::shared_ptr<const ThermalResults> thermalResults(const ReportContext& context,
+                                                     const ReportDataset& dataset,
                                                      const ThermalModelSettings& settings) {
+  const ThermalLog& log = *dataset.thermal;
   const std::uint64_t key = contentHash(log, settingsText(settings));
   return context.memo.get<ThermalResults>(std::to_string(key), [&] {
     auto r = std::make_shared<ThermalResults>();
     r->settings = settings;
-    r->stride = log.rows() > kMaxModelRows ? (log.rows() + kMaxModelRows - 1) / kMaxModelRows : 1;
+    DatasetRef resolved = dataset.ref;
+    resolved.path = dataset.path.toStdString();  // absolute: no project path needed
+    const StoredResult stored =
+        storedResult(*context.project, {}, study::kThermal, resolved, thermalSettingsJson(settings));
+    if (stored.state == StoredResultState::Current) {
+      r->asPage = true;
+      r->pageComputed = stored.computed;
+      const nlohmann::json best = stored.entry.value("best_model", nlohmann::json());
+      r->pageBest = best.is_string() ? best.get<std::string>() : std::string();
+    }
+    r->stride =
+        !r->asPage && log.rows() > kMaxModelRows ? (log.rows() + kMaxModelRows - 1) / kMaxModelRows : 1;
     r->fitted = decimateThermalLog(log, r->stride);
     try {
       r->hysteresisSeries = thermal::selectThermalSeries(r->fitted, settings.target, settings.inputs);
@@ -417,11 +439,19 @@ void writeModels(ReportPainter& out, const ThermalLog& log, const ThermalResults
           .arg(s.inputs.size())
           .arg(QString::fromStdString(s.target), joined(s.inputs))
           .arg(100.0 * s.trainFraction, 0, 'f', 0);
-  if (r.stride > 1) {
+  if (r.asPage) {
+    text += QLatin1Char(' ') + ReportText::tr(
+                                   "Every row of the log is fitted, as on the Thermal page (trained there "
+                                   "%1, stored in the project with these settings and this data), so the "
+                                   "report chooses the page's model with the page's figures.")
+                                   .arg(QString::fromStdString(r.pageComputed));
+  } else if (r.stride > 1) {
     text += QLatin1Char(' ') +
             ReportText::tr(
                 "To keep the report's run time short, this %1-row log is fitted on every %2th row "
-                "(%3 rows); the GUI and metrofit-cli fit all rows.")
+                "(%3 rows); the GUI and metrofit-cli fit all rows and may choose another model. Train the "
+                "models on the Thermal page and save the project: the report then fits every row and "
+                "shows the page's choice.")
                 .arg(log.rows())
                 .arg(r.stride)
                 .arg(r.fitted.rows());
@@ -712,7 +742,7 @@ void writeThermalSection(ReportPainter& out, const ReportContext& context) {
     const ThermalLog& log = *dataset->thermal;
     ThermalModelSettings settings = defaultThermalModelSettings(log, thermalStudy, dataset->ref.id);
     settings.applied = diagnose::projectThermalApplied(*context.project, dataset->ref.id);
-    const std::shared_ptr<const ThermalResults> results = thermalResults(context, log, settings);
+    const std::shared_ptr<const ThermalResults> results = thermalResults(context, *dataset, settings);
     writeHysteresis(out, *results);
     writeModels(out, log, *results);
     if (dataset->ref.id == kModularCombinedId) {

@@ -59,6 +59,15 @@ struct SetupValidationView::Impl {
   std::unique_ptr<setup::ValidationResult> result;
 };
 
+namespace {
+QString introText() {
+  return SetupValidationView::tr(
+      "The paper's statistical validation: simulated measurement sets with setup-data and "
+      "random errors (Eq. 12–13), each corrected by the exact method and by M trials of the "
+      "chosen metaheuristics; the sets sorted by their budget before correction (Fig. 18).");
+}
+}  // namespace
+
 SetupValidationView::SetupValidationView(QWidget* parent) : QWidget(parent), d(std::make_unique<Impl>()) {
   setObjectName(QStringLiteral("setupValidationView"));
   d->sets = new QSpinBox(this);
@@ -108,10 +117,7 @@ SetupValidationView::SetupValidationView(QWidget* parent) : QWidget(parent), d(s
   d->summary->setObjectName(QStringLiteral("setupValidationSummary"));
   d->summary->setWordWrap(true);
   d->summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  d->summary->setText(
-      tr("The paper's statistical validation: simulated measurement sets with setup-data and "
-         "random errors (Eq. 12–13), each corrected by the exact method and by M trials of the "
-         "chosen metaheuristics; the sets sorted by their budget before correction (Fig. 18)."));
+  d->summary->setText(introText());
   d->chartView = new QChartView(this);
   enableChartExport(d->chartView, QStringLiteral("setup-validation"));
   d->chartView->setObjectName(QStringLiteral("setupValidationChart"));
@@ -201,6 +207,20 @@ bool SetupValidationView::isRunning() const {
 
 QProgressBar* SetupValidationView::progressBar() const {
   return d->progress;
+}
+
+void SetupValidationView::clearResult() {
+  if (isRunning()) {
+    d->runner.cancel();
+    d->runner.waitForFinished();
+  }
+  d->result.reset();
+  QChart* old = d->chartView->chart();
+  d->chartView->setChart(new QChart);
+  delete old;
+  d->progress->setRange(0, 1);
+  d->progress->setValue(0);
+  d->summary->setText(introText());
 }
 
 const setup::ValidationResult* SetupValidationView::result() const {

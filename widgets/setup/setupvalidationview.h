@@ -44,6 +44,9 @@ class SetupValidationView : public QWidget {
   bool isRunning() const;
   /// Blocks until the running validation has finished and its result is shown (tests).
   void waitForFinished();
+  /// Drops the result shown: no result, an empty chart and the introductory text (another project).
+  /// A running validation is cancelled first.
+  void clearResult();
   /// The last result (nullptr before the first one).
   const setup::ValidationResult* result() const;
   QString summaryText() const;

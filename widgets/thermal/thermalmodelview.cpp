@@ -878,8 +878,11 @@ bool ThermalModelView::trainNow() {
   }
   try {
     d->show(std::make_shared<ThermalComparison>(compareThermalModels(d->log, s)));
-    const std::lock_guard lock(d->liveMutex);
-    d->liveCount = 0;
+    {
+      const std::lock_guard lock(d->liveMutex);
+      d->liveCount = 0;
+    }
+    emit trainingFinished(true);
     return true;
   } catch (const std::exception& e) {
     d->status->setText(tr("Training failed: %1").arg(QString::fromStdString(e.what())));
@@ -897,6 +900,10 @@ bool ThermalModelView::isRunning() const {
 
 const ThermalComparison* ThermalModelView::comparison() const {
   return d->result.get();
+}
+
+void ThermalModelView::setStatusText(const QString& text) {
+  d->status->setText(text);
 }
 
 QString ThermalModelView::statusText() const {

@@ -51,6 +51,8 @@ class ThermalModelView : public QWidget {
   const ThermalComparison* comparison() const;
   /// Status line under the progress bar (last error, timing, cancellation).
   QString statusText() const;
+  /// Replaces the status line (the page's note on a stored result while nothing is trained).
+  void setStatusText(const QString& text);
   /// PSO iterations received live during the last training.
   int liveIterations() const;
 
@@ -83,7 +85,7 @@ class ThermalModelView : public QWidget {
   QString modulesMessage() const;
 
  signals:
-  /// A training ended: completed true, or false when cancelled or failed.
+  /// A training ended (train() or trainNow()): completed true, or false when cancelled or failed.
   void trainingFinished(bool completed);
   /// The user changed a setting in the controls.
   void settingsEdited();
