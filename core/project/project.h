@@ -99,7 +99,8 @@ class Project {
 /// The machine of the matching study, studies.matching.machine:
 ///   {"topology": "xfyzba" | "ac-table" | "bc-table" | "head-table" (also "ac", "bc"), "LX_mm": ..,
 ///    "LY_mm": .., "LZ_mm": .., "LAB_mm": .., "tilt_axis_point_mm": [..], "rotary_axis_point_mm": [..],
-///    "pivot_mm": .., "rotary_travel_deg": [[min, max], [min, max]], "linear_travel_mm": [[min, max] x 3]}   (machine::MachineDefinition::toJson; missing
+///    "pivot_mm": .., "rotary_travel_deg": [[min, max], [min, max]], "linear_travel_mm": [[min, max] x 3]}
+///    (machine::MachineDefinition::toJson; missing
 /// keys take the topology's preset). Returns false (and leaves *out alone) when the study has none;
 /// ValidationError naming `source` and the field "studies.matching.machine.<key>" when it is invalid.
 /// Project::fromJson runs this check, so a loaded project's machine is valid.
