@@ -4,7 +4,7 @@
 <context>
     <name>StudyInfo</name>
     <message>
-        <location filename="../widgets/document/studyinfo.cpp" line="+17"/>
+        <location filename="../widgets/document/studyinfo.cpp" line="+18"/>
         <source>Setup correction</source>
         <translation>Einrichtdatenkorrektur</translation>
     </message>
@@ -97,7 +97,7 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+22"/>
+        <location filename="../app/gui/main.cpp" line="+23"/>
         <source>Metrofit — a workbench for machining error compensation.</source>
         <translation>Metrofit — eine Werkbank für die Kompensation von Bearbeitungsfehlern.</translation>
     </message>
@@ -434,7 +434,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
 <context>
     <name>metrofit::DiagnosisPage</name>
     <message>
-        <location filename="../app/gui/diagnosispage.cpp" line="+55"/>
+        <location filename="../app/gui/diagnosispage.cpp" line="+64"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -454,12 +454,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+583"/>
+        <location line="+588"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-516"/>
+        <location line="-521"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
@@ -495,12 +495,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+5"/>
-        <location line="+306"/>
+        <location line="+311"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-297"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Das deklarierte Modell, wie es vor dem Hinzufügen eines Effekts angepasst wurde</translation>
     </message>
@@ -566,13 +566,13 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+1"/>
-        <location line="+168"/>
+        <location line="+173"/>
         <location line="+119"/>
         <source>Residual chec&amp;k</source>
         <translation>Residuen&amp;prüfung</translation>
     </message>
     <message>
-        <location line="-285"/>
+        <location line="-290"/>
         <source>The candidate effects tried, their residual plots and the error before / after</source>
         <translation>Die getesteten Kandidateneffekte, ihre Residuendiagramme und der Fehler vorher / nachher</translation>
     </message>
@@ -588,7 +588,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+47"/>
-        <location line="+136"/>
+        <location line="+141"/>
         <source>The diagnosis failed: %1</source>
         <translation>Die Diagnose ist fehlgeschlagen: %1</translation>
     </message>
@@ -1275,12 +1275,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+363"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+360"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="-97"/>
+        <location line="-98"/>
         <source>measured, CCW loop</source>
         <translation>gemessen, Umlauf gegen den Uhrzeigersinn</translation>
     </message>
@@ -1310,7 +1310,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>dargestellter Radius = R + k × radiale Abweichung, k = %1; Ringe alle %2 µm</translation>
     </message>
     <message>
-        <location line="+196"/>
+        <location line="+197"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -1679,7 +1679,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1 (nicht im Projekt)</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+63"/>
         <source>The kinematics study&apos;s settings are invalid: %1</source>
         <translation>Die Einstellungen der Kinematik-Studie sind ungültig: %1</translation>
     </message>
@@ -1696,7 +1696,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 %1</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -1711,7 +1711,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>UZ</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>H %1 µm</source>
         <translation>H %1 µm</translation>
     </message>
@@ -1839,8 +1839,8 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Wählen Sie oben die Kreisformtests in den Ebenen XY, YZ und ZX (z. B. erzeugt mit metrofit-cli simulate circular --plane yz).</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+107"/>
+        <location line="-225"/>
+        <location line="+109"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
@@ -2086,6 +2086,224 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <location line="+3"/>
         <source>Export STEP-NC</source>
         <translation>STEP-NC exportieren</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::MachineDialog</name>
+    <message>
+        <location filename="../app/gui/machinedialog.cpp" line="+40"/>
+        <source>Head-head XFYZBA (A and B on the head; the paper&apos;s machine)</source>
+        <translation>Kopf-Kopf XFYZBA (A und B im Kopf; die Maschine der Veröffentlichung)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Table-table AC (A trunnion carrying a C table)</source>
+        <translation>Tisch-Tisch AC (A-Schwenkbrücke mit C-Tisch)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Table-table BC (B trunnion carrying a C table)</source>
+        <translation>Tisch-Tisch BC (B-Schwenkbrücke mit C-Tisch)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Head-table (B swivel head, C rotary table)</source>
+        <translation>Kopf-Tisch (B-Schwenkkopf, C-Rundtisch)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Head-head geometry (Eq. 12–13)</source>
+        <translation>Kopf-Kopf-Geometrie (Gl. 12–13)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tilt axis (table-table)</source>
+        <translation>Schwenkachse (Tisch-Tisch)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Swivel head (head-table)</source>
+        <translation>Schwenkkopf (Kopf-Tisch)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C axis of the rotary table</source>
+        <translation>C-Achse des Rundtischs</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The kinematics the adjustment values are computed for</source>
+        <translation>Die Kinematik, für die die Korrekturwerte berechnet werden</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The control the controller frame is written for</source>
+        <translation>Die Steuerung, für die der Steuerungs-Frame geschrieben wird</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Topology:</source>
+        <translation>&amp;Topologie:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Control:</source>
+        <translation>&amp;Steuerung:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>LX (cutter location in the A frame):</source>
+        <translation>LX (Werkzeugposition im A-Koordinatensystem):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LY:</source>
+        <translation>LY:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LZ:</source>
+        <translation>LZ:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LAB (A origin in the B frame):</source>
+        <translation>LAB (Ursprung von A im B-Koordinatensystem):</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>A point on the tilt axis at the zero position (workpiece coordinates):</source>
+        <translation>Ein Punkt auf der Schwenkachse in Nullstellung (Werkstückkoordinaten):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A point on the C axis at the zero position (workpiece coordinates):</source>
+        <translation>Ein Punkt auf der C-Achse in Nullstellung (Werkstückkoordinaten):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Pivot length (B axis above the tool point):</source>
+        <translation>Pivotlänge (B-Achse über der Werkzeugspitze):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Travel</source>
+        <translation>Verfahrbereich</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limited</source>
+        <translation>Begrenzt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Minimum</source>
+        <translation>Minimum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Maximum</source>
+        <translation>Maximum</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>always</source>
+        <translation>immer</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Check the adjustment value S%1 against a travel</source>
+        <translation>Den Korrekturwert S%1 gegen einen Verfahrbereich prüfen</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&amp;Preset</source>
+        <translation>&amp;Vorgabe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The topology&apos;s default geometry and travel</source>
+        <translation>Die Standardgeometrie und der Standardverfahrbereich der Topologie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Import…</source>
+        <translation>&amp;Importieren…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Read a machine JSON (as metrofit-cli match --machine-def reads) or a project</source>
+        <translation>Eine Maschinen-JSON (wie metrofit-cli match --machine-def sie liest) oder ein Projekt lesen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>E&amp;xport…</source>
+        <translation>E&amp;xportieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write the machine JSON for metrofit-cli match --machine-def</source>
+        <translation>Die Maschinen-JSON für metrofit-cli match --machine-def schreiben</translation>
+    </message>
+    <message>
+        <location line="+94"/>
+        <source>B tilt axis (parallel to Y)</source>
+        <translation>B-Schwenkachse (parallel zu Y)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A tilt axis (parallel to X)</source>
+        <translation>A-Schwenkachse (parallel zu X)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Travel of %1: the minimum %2° is above the maximum %3°.</source>
+        <translation>Verfahrbereich von %1: das Minimum %2° liegt über dem Maximum %3°.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Travel of S%1: the minimum %2 mm is above the maximum %3 mm.</source>
+        <translation>Verfahrbereich von S%1: das Minimum %2 mm liegt über dem Maximum %3 mm.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1 has no machine (studies.matching.machine).</source>
+        <translation>%1 enthält keine Maschine (studies.matching.machine).</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Import a machine</source>
+        <translation>Maschine importieren</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Machine or project (*.json *.metrofit);;All files (*)</source>
+        <translation>Maschine oder Projekt (*.json *.metrofit);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Export the machine</source>
+        <translation>Maschine exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Machine JSON (*.json)</source>
+        <translation>Maschinen-JSON (*.json)</translation>
     </message>
 </context>
 <context>
@@ -2422,7 +2640,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+75"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+80"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -2470,6 +2688,11 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <location line="+19"/>
         <source>Save fr&amp;ame…</source>
         <translation>Fr&amp;ame speichern…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mac&amp;hine…</source>
+        <translation>Masc&amp;hine…</translation>
     </message>
     <message>
         <location line="+18"/>
@@ -2543,12 +2766,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+0"/>
-        <location line="+24"/>
+        <location line="+34"/>
         <source>RMSE (mm)</source>
         <translation>RMSE (mm)</translation>
     </message>
     <message>
-        <location line="-23"/>
+        <location line="-33"/>
         <source>max |d| (mm)</source>
         <translation>max |d| (mm)</translation>
     </message>
@@ -2583,7 +2806,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Einheit</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+9"/>
+        <source>The machine the adjustment values are for: topology, geometry, travel and control (Ctrl+Shift+M)</source>
+        <translation>Die Maschine, für die die Korrekturwerte gelten: Topologie, Geometrie, Verfahrbereich und Steuerung (Strg+Umschalt+M)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Round</source>
         <translation>Runde</translation>
     </message>
@@ -2768,19 +2996,14 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Nachkommastellen des Frames ändern</translation>
     </message>
     <message>
-        <location line="+24"/>
-        <location line="+292"/>
-        <location line="+12"/>
+        <location line="+25"/>
+        <location line="+303"/>
+        <location line="+16"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="-32"/>
-        <source>The matching study&apos;s settings are invalid: %1</source>
-        <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig: %1</translation>
-    </message>
-    <message>
-        <location line="+350"/>
+        <location line="+471"/>
         <source>No posture yet: press Run (Ctrl+R).</source>
         <translation>Noch keine Lage: Ausführen drücken (Strg+R).</translation>
     </message>
@@ -2860,7 +3083,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Der Frame kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="-596"/>
+        <location line="-745"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Fügen Sie der Projektdatei einen Datensatz der Art „probe_points“ hinzu (Kennung, Fläche, Sollpunkt, Normale, Messpunkt).</translation>
     </message>
@@ -2887,17 +3110,48 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zu den Antastpunkten %1 (auf denen die Diagnose lief); diese Punkte verwenden das deklarierte Modell.</translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="-96"/>
+        <location line="+198"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="-6"/>
+        <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
+        <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (Rückgängig oder die Projektdatei): %1</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>Matching …</source>
         <translation>Ausrichtung läuft …</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+17"/>
+        <source>Match the probe points %1</source>
+        <translation>Die Antastpunkte %1 ausrichten</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>The stored result (computed %1) is out of date: the matching settings changed since. Not matched with these settings yet: press Run (Ctrl+R).</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Ausrichtungseinstellungen haben sich seitdem geändert. Mit diesen Einstellungen noch nicht ausgerichtet: Ausführen drücken (Strg+R).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) is out of date: the points file changed since. Press Run (Ctrl+R) to match the points as they are now.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Punktedatei hat sich seitdem geändert. Ausführen (Strg+R) drücken, um die Punkte in ihrem jetzigen Stand auszurichten.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) cannot be checked: the points file cannot be read.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) kann nicht geprüft werden: die Punktedatei ist nicht lesbar.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>From the saved project, computed %1 with these settings on these points: %2: %3 of %4 points out of ±%5 mm before, %6 after; RMSE %7 mm, max |d| %8 mm. Press Run (Ctrl+R) to see the views.</source>
+        <translation>Aus dem gespeicherten Projekt, berechnet %1 mit diesen Einstellungen auf diesen Punkten: %2: %3 von %4 Punkten außerhalb ±%5 mm vorher, %6 nachher; RMSE %7 mm, max |d| %8 mm. Ausführen (Strg+R) drücken, um die Ansichten zu sehen.</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>(The loop ran with the previous tolerance: Run again.)</source>
         <translation>(Die Schleife lief mit der vorherigen Toleranz: erneut ausführen.)</translation>
     </message>
@@ -2949,21 +3203,41 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+13"/>
-        <source>Machine adjustment values for %1 (%2), posture of %3. %4</source>
-        <translation>Maschineneinstellwerte für %1 (%2), Lage aus %3. %4</translation>
-    </message>
-    <message>
-        <location line="+2"/>
         <source>head-head, Eq. 12–13</source>
         <translation>Kopf-Kopf, Gl. 12–13</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>table-table trunnion</source>
         <translation>Tisch-Tisch, Schwenkbrücke</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>B swivel head, C rotary table</source>
+        <translation>B-Schwenkkopf, C-Rundtisch</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the project&apos;s machine %1 (%2)</source>
+        <translation>die Maschine des Projekts %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the default machine %1 (%2): no machine is defined for this project; enter yours with Machine… (Ctrl+Shift+M) before using these values at the control</source>
+        <translation>die Standardmaschine %1 (%2): für dieses Projekt ist keine Maschine definiert; geben Sie Ihre mit Maschine… (Strg+Umschalt+M) ein, bevor Sie diese Werte an der Steuerung verwenden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Adjustment values will be for %1.</source>
+        <translation>Die Korrekturwerte gelten für %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Machine adjustment values for %1, posture of %2. %3</source>
+        <translation>Maschinen-Korrekturwerte für %1, Lage von %2. %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Within travel.</source>
         <translation>Innerhalb des Verfahrwegs.</translation>
     </message>
@@ -2973,7 +3247,18 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>AUSSERHALB DES VERFAHRWEGS: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
+        <location line="+2"/>
+        <source>Change the machine</source>
+        <translation>Maschine ändern</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Change the controller frame</source>
+        <translation>Steuerungs-Frame ändern</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <location line="+1"/>
         <location line="+1"/>
         <source>mm</source>
@@ -3046,7 +3331,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-429"/>
+        <location line="-578"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -3066,12 +3351,14 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lizenz: %1.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="-85"/>
+        <location line="+102"/>
+        <location line="+54"/>
         <source>Not matched yet: press Run (Ctrl+R).</source>
         <translation>Noch nicht ausgerichtet: Ausführen drücken (Strg+R).</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-44"/>
         <source>Cannot show these probe points:
 %1</source>
         <translation>Diese Antastpunkte können nicht angezeigt werden:
@@ -3167,7 +3454,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/matching/pointsetview.cpp" line="+313"/>
+        <location filename="../widgets/matching/pointsetview.cpp" line="+314"/>
         <source>deviation
 (mm)</source>
         <translation>Abw.
@@ -3258,7 +3545,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ProjectDocument</name>
     <message>
-        <location filename="../widgets/document/projectdocument.cpp" line="+34"/>
+        <location filename="../widgets/document/projectdocument.cpp" line="+35"/>
         <source>Rename project</source>
         <translation>Projekt umbenennen</translation>
     </message>
@@ -3273,12 +3560,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Notizen zu „%1“ bearbeiten</translation>
     </message>
     <message>
-        <location line="+199"/>
+        <location line="+200"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+146"/>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>das Projekt wurde noch nicht gespeichert; wählen Sie mit „Speichern unter“ einen Dateinamen</translation>
     </message>
@@ -3338,7 +3625,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+696"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+728"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -3468,7 +3755,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+14"/>
         <location filename="../widgets/report/kinematicsection.cpp" line="+223"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-395"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-404"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -3500,7 +3787,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+245"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+253"/>
         <source>error (%1)</source>
         <translation>Fehler (%1)</translation>
     </message>
@@ -4316,12 +4603,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+96"/>
+        <location line="+105"/>
         <source>frame rotation</source>
         <translation>Drehung des Koordinatensystems</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-104"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Maschineneinstellwerte (%1%2)</translation>
     </message>
@@ -4341,12 +4628,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Sätze (mm, °)</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>The same posture as a controller frame (instead of the axis values)</source>
-        <translation>Dieselbe Lage als Steuerungs-Frame (statt der Achswerte)</translation>
+        <location line="+17"/>
+        <source>%1 (the study&apos;s control)</source>
+        <translation>%1 (die Steuerung der Studie)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>The same posture as a controller frame (instead of the axis values; decimals: %1)</source>
+        <translation>Dieselbe Lage als Steuerungs-Frame (statt der Achswerte; Nachkommastellen: %1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Datum shift then rotation of the working plane; no axis moves (STAY). The whole programs: metrofit-cli match --frame heidenhain|siemens|fanuc.</source>
         <translation>Nullpunktverschiebung, dann Schwenken der Bearbeitungsebene; keine Achse fährt (STAY). Die vollständigen Programme: metrofit-cli match --frame heidenhain|siemens|fanuc.</translation>
     </message>
@@ -4477,7 +4769,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location filename="../widgets/report/setupsection.cpp" line="-93"/>
         <location line="+40"/>
         <location filename="../widgets/report/summarysection.cpp" line="+123"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-276"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-284"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
@@ -4912,7 +5204,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+1"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+1"/>
-        <location line="+176"/>
+        <location line="+184"/>
         <source>rows</source>
         <translation>Zeilen</translation>
     </message>
@@ -5138,7 +5430,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>metrofit-cli setup --export fanuc schreibt denselben Text; Heidenhain, Siemens und CSV sind die weiteren Formate (siehe die Vorzeichenkonvention im Kopf).</translation>
     </message>
     <message>
-        <location filename="../widgets/report/thermalsection.cpp" line="-263"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-271"/>
         <source>%1 h</source>
         <translation>%1 h</translation>
     </message>
@@ -5309,7 +5601,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 über jedem Sensor (Abb. 9 in %5): Aufheizabschnitte (die Änderung von %1 wächst, %2 Zeilen) und Abkühlabschnitte (%3 Zeilen) in den Farben der Phasen des Verlaufsdiagramms. Schleifenfläche nach der Gaußschen Trapezformel; Verzögerung: die Zeitkonstante eines Verzögerungsglieds erster Ordnung zwischen Sensor und Verlagerung (&gt; 0: der Sensor eilt nach).%4</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+61"/>
+        <source>Every row of the log is fitted, as on the Thermal page (trained there %1, stored in the project with these settings and this data), so the report chooses the page&apos;s model with the page&apos;s figures.</source>
+        <translation>Jede Zeile des Protokolls wird angepasst, wie auf der Seite Thermik (dort trainiert %1, im Projekt mit diesen Einstellungen und diesen Daten gespeichert); der Bericht wählt daher das Modell der Seite mit deren Kennzahlen.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>To keep the report&apos;s run time short, this %1-row log is fitted on every %2th row (%3 rows); the GUI and metrofit-cli fit all rows and may choose another model. Train the models on the Thermal page and save the project: the report then fits every row and shows the page&apos;s choice.</source>
+        <translation>Um die Laufzeit des Berichts kurz zu halten, wird dieses Protokoll mit %1 Zeilen an jeder %2. Zeile angepasst (%3 Zeilen); die GUI und metrofit-cli passen alle Zeilen an und können ein anderes Modell wählen. Trainieren Sie die Modelle auf der Seite Thermik und speichern Sie das Projekt: der Bericht passt dann jede Zeile an und zeigt die Wahl der Seite.</translation>
+    </message>
+    <message>
+        <location line="+42"/>
         <source>not fitted: %1</source>
         <translation>nicht angepasst: %1</translation>
     </message>
@@ -5384,7 +5686,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 ist nicht verwendbar (%2)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>%1 varies by RMS %2%3 (peak %4%3) on the held-out rows</source>
         <translation>%1 schwankt auf den zurückgehaltenen Zeilen um RMS %2%3 (Spitze %4%3)</translation>
     </message>
@@ -5429,7 +5731,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Kompensieren Sie nicht mit diesen Modellen. Zeichnen Sie einen längeren Test mit Aufheizen und Abkühlen auf, setzen Sie Sensoren nahe den Wärmequellen und suchen Sie mit dem geschlossenen Regelkreis (Diagnose) die Verzögerung oder Eingänge, die dem Modell fehlen.</translation>
     </message>
     <message>
-        <location line="-316"/>
+        <location line="-325"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Diagramme der ersten %1 von %2 Sensoren; die Tabelle listet alle.</translation>
     </message>
@@ -5474,12 +5776,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>GNNMCI(1,N) (PSO, 90 Partikel, 100 Iterationen, Startwert %1), GMC(1,N) (kleinste Quadrate) und das MLP (%2-10-1, Levenberg-Marquardt, Startwert %1) sagen %3 aus %4 vorher; jedes wird an den ersten %5 % der Zeilen angepasst und am Rest getestet (Testdaten, schattiert).</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>To keep the report&apos;s run time short, this %1-row log is fitted on every %2th row (%3 rows); the GUI and metrofit-cli fit all rows.</source>
-        <translation>Um die Laufzeit des Berichts kurz zu halten, wird dieses Protokoll mit %1 Zeilen an jeder %2. Zeile angepasst (%3 Zeilen); die GUI und metrofit-cli verwenden alle Zeilen.</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+29"/>
         <source>The models could not be fitted: %1</source>
         <translation>Die Modelle konnten nicht angepasst werden: %1</translation>
     </message>
@@ -5593,12 +5890,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ReportExporter</name>
     <message>
-        <location filename="../app/gui/reportexporter.cpp" line="+51"/>
+        <location filename="../app/gui/reportexporter.cpp" line="+37"/>
+        <source>the unsaved project</source>
+        <translation>das ungespeicherte Projekt</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Cannot prepare the report: %1</source>
         <translation>Der Bericht kann nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Cannot run %1: %2</source>
         <translation>%1 kann nicht ausgeführt werden: %2</translation>
     </message>
@@ -6731,7 +7033,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupMargins</name>
     <message>
-        <location filename="../widgets/setup/setupmargins.cpp" line="+80"/>
+        <location filename="../widgets/setup/setupmargins.cpp" line="+81"/>
         <source>tolerance zone</source>
         <translation>Toleranzzone</translation>
     </message>
@@ -6764,7 +7066,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupMarginsWidget</name>
     <message>
-        <location line="+53"/>
+        <location line="+54"/>
         <source>Run a method to see the margins before and after correction.</source>
         <translation>Eine Methode ausführen, um die Abstände vor und nach der Korrektur zu sehen.</translation>
     </message>
@@ -6840,7 +7142,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+99"/>
+        <location filename="../app/gui/setuppage.cpp" line="+100"/>
         <source>&amp;Save model</source>
         <translation>Modell &amp;speichern</translation>
     </message>
@@ -6965,7 +7267,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Startwert der Einrichtung ändern</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+99"/>
         <source>The applied effects cannot be used: %1</source>
         <translation>Die übernommenen Effekte können nicht verwendet werden: %1</translation>
     </message>
@@ -7375,7 +7677,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupValidationView</name>
     <message>
-        <location filename="../widgets/setup/setupvalidationview.cpp" line="+67"/>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+76"/>
         <source>Simulated measurement sets N (the paper: 100)</source>
         <translation>Simulierte Messreihen N (Veröffentlichung: 100)</translation>
     </message>
@@ -7415,12 +7717,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-46"/>
         <source>The paper&apos;s statistical validation: simulated measurement sets with setup-data and random errors (Eq. 12–13), each corrected by the exact method and by M trials of the chosen metaheuristics; the sets sorted by their budget before correction (Fig. 18).</source>
         <translation>Die statistische Validierung der Veröffentlichung: simulierte Messreihen mit Einrichtdaten- und Zufallsfehlern (Gl. 12–13), jeweils korrigiert mit der exakten Methode und mit M Versuchen der gewählten Metaheuristiken; die Reihen sortiert nach ihrem Budget vor der Korrektur (Abb. 18).</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+64"/>
         <source>Measurement sets N:</source>
         <translation>Messreihen N:</translation>
     </message>
@@ -7455,7 +7757,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Methoden:</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+113"/>
         <source>Choose at least one method.</source>
         <translation>Wählen Sie mindestens eine Methode.</translation>
     </message>
@@ -7661,6 +7963,14 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+3"/>
         <source>compensation</source>
         <translation>Kompensation</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::StoredResult</name>
+    <message>
+        <location filename="../widgets/document/storedresulttext.cpp" line="+11"/>
+        <source>at an unknown time</source>
+        <translation>zu unbekannter Zeit</translation>
     </message>
 </context>
 <context>
@@ -8351,12 +8661,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+35"/>
-        <location line="+115"/>
+        <location line="+118"/>
         <source>Training failed: %1</source>
         <translation>Das Training ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="-129"/>
+        <location line="-132"/>
         <source>Training cancelled after %1 PSO iterations; the results shown are the previous ones.</source>
         <translation>Training nach %1 PSO-Iterationen abgebrochen; die angezeigten Ergebnisse sind die vorherigen.</translation>
     </message>
@@ -8400,7 +8710,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+82"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+85"/>
         <source>T&amp;rend</source>
         <translation>&amp;Verlauf</translation>
     </message>
@@ -8435,7 +8745,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&amp;Thermoprotokoll:</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+42"/>
         <source>The module could not be identified again: %1</source>
         <translation>Das Modul konnte nicht erneut identifiziert werden: %1</translation>
     </message>
@@ -8445,7 +8755,14 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Abgebrochen: die angezeigten Module sind unverändert.</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+62"/>
+        <source>The thermal study&apos;s settings are invalid, nothing is fitted until they are corrected (Undo, or the project file):
+%1</source>
+        <translation>Die Einstellungen der Thermikstudie sind ungültig; nichts wird angepasst, bis sie korrigiert sind (Rückgängig oder die Projektdatei):
+%1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Dieses Projekt hat kein Thermoprotokoll. Fügen Sie der Projektdatei einen Datensatz der Art „thermal_log“ hinzu (eine Zeitspalte, Sensorspalten und die Verlagerung).</translation>
     </message>
@@ -8460,7 +8777,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lizenz: %1.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+24"/>
         <source>Cannot show this thermal log:
 %1</source>
         <translation>Dieses Thermoprotokoll kann nicht angezeigt werden:
@@ -8502,7 +8819,42 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Einstellungen des thermischen Modells ändern</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+66"/>
+        <source>The stored result (computed %1) is out of date: the model settings changed since. Not trained with these settings yet: Train (Ctrl+R).</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Modelleinstellungen haben sich seitdem geändert. Mit diesen Einstellungen noch nicht trainiert: Trainieren (Strg+R).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) is out of date: the data file changed since. Train (Ctrl+R) to fit the models on the data as it is now.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Datendatei hat sich seitdem geändert. Trainieren (Strg+R), um die Modelle an die Daten in ihrem jetzigen Stand anzupassen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) cannot be checked: the data file cannot be read.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) kann nicht geprüft werden: die Datendatei ist nicht lesbar.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>not fitted</source>
+        <translation>nicht angepasst</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>no model usable for compensation</source>
+        <translation>kein für die Kompensation verwendbares Modell</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>best usable model %1 (held-out RMSE %2)</source>
+        <translation>bestes verwendbares Modell %1 (RMSE zurückgehalten %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>From the saved project, computed %1 with these settings on this data: %2. Held-out RMSE: %3. Train (Ctrl+R) to see the charts.</source>
+        <translation>Aus dem gespeicherten Projekt, berechnet %1 mit diesen Einstellungen auf diesen Daten: %2. RMSE zurückgehalten: %3. Trainieren (Strg+R), um die Diagramme zu sehen.</translation>
+    </message>
+    <message>
+        <location line="+81"/>
         <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) not fitted: %6</source>
         <translation>Gemeinsam an %1 und %2 angepasst, Vorhersage für %3 (Zielgröße %4; Eingänge %5; Startwert 1): GNNMCI(1,N) nicht angepasst: %6</translation>
     </message>
@@ -8608,7 +8960,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>nicht verwendbar</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>its prediction diverges on the held-out rows</source>
         <translation>seine Vorhersage divergiert auf den zurückgehaltenen Zeilen</translation>
     </message>

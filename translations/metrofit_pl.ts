@@ -4,7 +4,7 @@
 <context>
     <name>StudyInfo</name>
     <message>
-        <location filename="../widgets/document/studyinfo.cpp" line="+17"/>
+        <location filename="../widgets/document/studyinfo.cpp" line="+18"/>
         <source>Setup correction</source>
         <translation>Korekcja danych ustawczych</translation>
     </message>
@@ -97,7 +97,7 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+22"/>
+        <location filename="../app/gui/main.cpp" line="+23"/>
         <source>Metrofit — a workbench for machining error compensation.</source>
         <translation>Metrofit — warsztat do kompensacji błędów obróbki.</translation>
     </message>
@@ -434,7 +434,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
 <context>
     <name>metrofit::DiagnosisPage</name>
     <message>
-        <location filename="../app/gui/diagnosispage.cpp" line="+55"/>
+        <location filename="../app/gui/diagnosispage.cpp" line="+64"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -454,12 +454,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+583"/>
+        <location line="+588"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-516"/>
+        <location line="-521"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
@@ -495,12 +495,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+5"/>
-        <location line="+306"/>
+        <location line="+311"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-297"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Zadeklarowany model dopasowany przed dodaniem jakiegokolwiek efektu</translation>
     </message>
@@ -566,13 +566,13 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+1"/>
-        <location line="+168"/>
+        <location line="+173"/>
         <location line="+119"/>
         <source>Residual chec&amp;k</source>
         <translation>Sprawdzenie re&amp;siduów</translation>
     </message>
     <message>
-        <location line="-285"/>
+        <location line="-290"/>
         <source>The candidate effects tried, their residual plots and the error before / after</source>
         <translation>Wypróbowane efekty kandydujące, ich wykresy residuów i błąd przed / po</translation>
     </message>
@@ -588,7 +588,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+47"/>
-        <location line="+136"/>
+        <location line="+141"/>
         <source>The diagnosis failed: %1</source>
         <translation>Diagnoza nie powiodła się: %1</translation>
     </message>
@@ -1276,12 +1276,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicPlots</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+363"/>
+        <location filename="../widgets/kinematics/kinematicplots.cpp" line="+360"/>
         <source>0 µm</source>
         <translation>0 µm</translation>
     </message>
     <message>
-        <location line="-97"/>
+        <location line="-98"/>
         <source>measured, CCW loop</source>
         <translation>zmierzony, pętla przeciwnie do ruchu wskazówek zegara</translation>
     </message>
@@ -1311,7 +1311,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>promień na wykresie = R + k × odchyłka promieniowa, k = %1; okręgi co %2 µm</translation>
     </message>
     <message>
-        <location line="+196"/>
+        <location line="+197"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -1680,7 +1680,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>%1 (nie ma w projekcie)</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+63"/>
         <source>The kinematics study&apos;s settings are invalid: %1</source>
         <translation>Ustawienia badania kinematyki są nieprawidłowe: %1</translation>
     </message>
@@ -1697,7 +1697,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 %1</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -1712,7 +1712,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>CW</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>H %1 µm</source>
         <translation>H %1 µm</translation>
     </message>
@@ -1841,8 +1841,8 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: wybierz powyżej testy kołowe w płaszczyznach XY, YZ i ZX (utworzone np. przez metrofit-cli simulate circular --plane yz).</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+107"/>
+        <location line="-225"/>
+        <location line="+109"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
@@ -2089,6 +2089,224 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <location line="+3"/>
         <source>Export STEP-NC</source>
         <translation>Eksport STEP-NC</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::MachineDialog</name>
+    <message>
+        <location filename="../app/gui/machinedialog.cpp" line="+40"/>
+        <source>Head-head XFYZBA (A and B on the head; the paper&apos;s machine)</source>
+        <translation>Głowica-głowica XFYZBA (A i B w głowicy; obrabiarka z publikacji)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Table-table AC (A trunnion carrying a C table)</source>
+        <translation>Stół-stół AC (kołyska A z obrotowym stołem C)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Table-table BC (B trunnion carrying a C table)</source>
+        <translation>Stół-stół BC (kołyska B z obrotowym stołem C)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Head-table (B swivel head, C rotary table)</source>
+        <translation>Głowica-stół (głowica uchylna B, stół obrotowy C)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Head-head geometry (Eq. 12–13)</source>
+        <translation>Geometria głowica-głowica (równ. 12–13)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tilt axis (table-table)</source>
+        <translation>Oś uchylna (stół-stół)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Swivel head (head-table)</source>
+        <translation>Głowica uchylna (głowica-stół)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C axis of the rotary table</source>
+        <translation>Oś C stołu obrotowego</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Machine</source>
+        <translation>Obrabiarka</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The kinematics the adjustment values are computed for</source>
+        <translation>Kinematyka, dla której obliczane są wartości korekty</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The control the controller frame is written for</source>
+        <translation>Sterowanie, dla którego zapisywany jest frame sterowania</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Topology:</source>
+        <translation>&amp;Topologia:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Control:</source>
+        <translation>&amp;Sterowanie:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>LX (cutter location in the A frame):</source>
+        <translation>LX (położenie narzędzia w układzie A):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LY:</source>
+        <translation>LY:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LZ:</source>
+        <translation>LZ:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LAB (A origin in the B frame):</source>
+        <translation>LAB (początek układu A w układzie B):</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>A point on the tilt axis at the zero position (workpiece coordinates):</source>
+        <translation>Punkt na osi uchylnej w położeniu zerowym (współrzędne przedmiotu):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A point on the C axis at the zero position (workpiece coordinates):</source>
+        <translation>Punkt na osi C w położeniu zerowym (współrzędne przedmiotu):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Pivot length (B axis above the tool point):</source>
+        <translation>Długość wahadła (oś B nad końcem narzędzia):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Travel</source>
+        <translation>Zakres ruchu</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Axis</source>
+        <translation>Oś</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limited</source>
+        <translation>Ograniczona</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Minimum</source>
+        <translation>Minimum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Maximum</source>
+        <translation>Maksimum</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>always</source>
+        <translation>zawsze</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Check the adjustment value S%1 against a travel</source>
+        <translation>Sprawdzaj wartość korekty S%1 względem zakresu ruchu</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&amp;Preset</source>
+        <translation>&amp;Ustawienie domyślne</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The topology&apos;s default geometry and travel</source>
+        <translation>Domyślna geometria i zakres ruchu topologii</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Import…</source>
+        <translation>&amp;Importuj…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Read a machine JSON (as metrofit-cli match --machine-def reads) or a project</source>
+        <translation>Wczytaj plik JSON obrabiarki (tak jak czyta go metrofit-cli match --machine-def) lub projekt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>E&amp;xport…</source>
+        <translation>E&amp;ksportuj…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write the machine JSON for metrofit-cli match --machine-def</source>
+        <translation>Zapisz plik JSON obrabiarki dla metrofit-cli match --machine-def</translation>
+    </message>
+    <message>
+        <location line="+94"/>
+        <source>B tilt axis (parallel to Y)</source>
+        <translation>Oś uchylna B (równoległa do Y)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A tilt axis (parallel to X)</source>
+        <translation>Oś uchylna A (równoległa do X)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Travel of %1: the minimum %2° is above the maximum %3°.</source>
+        <translation>Zakres ruchu %1: minimum %2° jest większe od maksimum %3°.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Travel of S%1: the minimum %2 mm is above the maximum %3 mm.</source>
+        <translation>Zakres ruchu S%1: minimum %2 mm jest większe od maksimum %3 mm.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1 has no machine (studies.matching.machine).</source>
+        <translation>%1 nie zawiera obrabiarki (studies.matching.machine).</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Import a machine</source>
+        <translation>Importuj obrabiarkę</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Machine or project (*.json *.metrofit);;All files (*)</source>
+        <translation>Obrabiarka lub projekt (*.json *.metrofit);;Wszystkie pliki (*)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Export the machine</source>
+        <translation>Eksportuj obrabiarkę</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Machine JSON (*.json)</source>
+        <translation>JSON obrabiarki (*.json)</translation>
     </message>
 </context>
 <context>
@@ -2425,7 +2643,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+75"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+80"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -2473,6 +2691,11 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <location line="+19"/>
         <source>Save fr&amp;ame…</source>
         <translation>Z&amp;apisz frame…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mac&amp;hine…</source>
+        <translation>O&amp;brabiarka…</translation>
     </message>
     <message>
         <location line="+18"/>
@@ -2546,12 +2769,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+0"/>
-        <location line="+24"/>
+        <location line="+34"/>
         <source>RMSE (mm)</source>
         <translation>RMSE (mm)</translation>
     </message>
     <message>
-        <location line="-23"/>
+        <location line="-33"/>
         <source>max |d| (mm)</source>
         <translation>maks. |d| (mm)</translation>
     </message>
@@ -2586,7 +2809,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Jednostka</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+9"/>
+        <source>The machine the adjustment values are for: topology, geometry, travel and control (Ctrl+Shift+M)</source>
+        <translation>Obrabiarka, dla której są wartości korekty: topologia, geometria, zakres ruchu i sterowanie (Ctrl+Shift+M)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Round</source>
         <translation>Runda</translation>
     </message>
@@ -2771,19 +2999,14 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmień miejsca po przecinku frame’u</translation>
     </message>
     <message>
-        <location line="+24"/>
-        <location line="+292"/>
-        <location line="+12"/>
+        <location line="+25"/>
+        <location line="+303"/>
+        <location line="+16"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
     </message>
     <message>
-        <location line="-32"/>
-        <source>The matching study&apos;s settings are invalid: %1</source>
-        <translation>Ustawienia studium dopasowania są nieprawidłowe: %1</translation>
-    </message>
-    <message>
-        <location line="+350"/>
+        <location line="+471"/>
         <source>No posture yet: press Run (Ctrl+R).</source>
         <translation>Brak położenia: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
@@ -2863,7 +3086,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można zapisać frame’u</translation>
     </message>
     <message>
-        <location line="-596"/>
+        <location line="-745"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Ten projekt nie zawiera punktów sondowania. Dodaj do pliku projektu zbiór danych rodzaju „probe_points” (identyfikator, powierzchnia, punkt nominalny, normalna, punkt zmierzony).</translation>
     </message>
@@ -2890,17 +3113,48 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Efekty zastosowane na stronie Diagnoza należą do punktów sondowania %1 (tych, na których przeprowadzono diagnozę); te punkty używają zadeklarowanego modelu.</translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="-96"/>
+        <location line="+198"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="-6"/>
+        <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
+        <translation>Ustawienia badania dopasowania są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (Cofnij lub plik projektu): %1</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>Matching …</source>
         <translation>Dopasowywanie …</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+17"/>
+        <source>Match the probe points %1</source>
+        <translation>Dopasuj punkty sondowania %1</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>The stored result (computed %1) is out of date: the matching settings changed since. Not matched with these settings yet: press Run (Ctrl+R).</source>
+        <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia dopasowania zmieniły się od tego czasu. Jeszcze nie dopasowano z tymi ustawieniami: naciśnij Uruchom (Ctrl+R).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) is out of date: the points file changed since. Press Run (Ctrl+R) to match the points as they are now.</source>
+        <translation>Zapisany wynik (obliczony %1) jest nieaktualny: plik punktów zmienił się od tego czasu. Naciśnij Uruchom (Ctrl+R), aby dopasować punkty w obecnej postaci.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) cannot be checked: the points file cannot be read.</source>
+        <translation>Nie można sprawdzić zapisanego wyniku (obliczonego %1): nie można odczytać pliku punktów.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>From the saved project, computed %1 with these settings on these points: %2: %3 of %4 points out of ±%5 mm before, %6 after; RMSE %7 mm, max |d| %8 mm. Press Run (Ctrl+R) to see the views.</source>
+        <translation>Z zapisanego projektu, obliczono %1 z tymi ustawieniami dla tych punktów: %2: %3 z %4 punktów poza ±%5 mm przed, %6 po; RMSE %7 mm, maks. |d| %8 mm. Naciśnij Uruchom (Ctrl+R), aby zobaczyć widoki.</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>(The loop ran with the previous tolerance: Run again.)</source>
         <translation>(Pętla działała z poprzednią tolerancją: uruchom ponownie.)</translation>
     </message>
@@ -2952,21 +3206,41 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+13"/>
-        <source>Machine adjustment values for %1 (%2), posture of %3. %4</source>
-        <translation>Wartości nastawienia maszyny dla %1 (%2), położenie z %3. %4</translation>
-    </message>
-    <message>
-        <location line="+2"/>
         <source>head-head, Eq. 12–13</source>
         <translation>głowica-głowica, równ. 12–13</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>table-table trunnion</source>
         <translation>stół-stół, kołyska</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>B swivel head, C rotary table</source>
+        <translation>głowica uchylna B, stół obrotowy C</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the project&apos;s machine %1 (%2)</source>
+        <translation>obrabiarka projektu %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the default machine %1 (%2): no machine is defined for this project; enter yours with Machine… (Ctrl+Shift+M) before using these values at the control</source>
+        <translation>domyślna obrabiarka %1 (%2): dla tego projektu nie zdefiniowano obrabiarki; wprowadź swoją przez Obrabiarka… (Ctrl+Shift+M), zanim użyjesz tych wartości na sterowaniu</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Adjustment values will be for %1.</source>
+        <translation>Wartości korekty będą dla: %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Machine adjustment values for %1, posture of %2. %3</source>
+        <translation>Wartości korekty obrabiarki dla: %1, położenie z %2. %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Within travel.</source>
         <translation>W zakresie przesuwu.</translation>
     </message>
@@ -2976,7 +3250,18 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>POZA ZAKRESEM PRZESUWU: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
+        <location line="+2"/>
+        <source>Change the machine</source>
+        <translation>Zmień obrabiarkę</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Change the controller frame</source>
+        <translation>Zmień frame sterowania</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <location line="+1"/>
         <location line="+1"/>
         <source>mm</source>
@@ -3050,7 +3335,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-429"/>
+        <location line="-578"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -3070,12 +3355,14 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Licencja: %1.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="-85"/>
+        <location line="+102"/>
+        <location line="+54"/>
         <source>Not matched yet: press Run (Ctrl+R).</source>
         <translation>Jeszcze nie dopasowano: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-44"/>
         <source>Cannot show these probe points:
 %1</source>
         <translation>Nie można wyświetlić tych punktów sondowania:
@@ -3171,7 +3458,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/matching/pointsetview.cpp" line="+313"/>
+        <location filename="../widgets/matching/pointsetview.cpp" line="+314"/>
         <source>deviation
 (mm)</source>
         <translation>odchyłka
@@ -3262,7 +3549,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ProjectDocument</name>
     <message>
-        <location filename="../widgets/document/projectdocument.cpp" line="+34"/>
+        <location filename="../widgets/document/projectdocument.cpp" line="+35"/>
         <source>Rename project</source>
         <translation>Zmiana nazwy projektu</translation>
     </message>
@@ -3277,12 +3564,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Edycja notatek: %1</translation>
     </message>
     <message>
-        <location line="+199"/>
+        <location line="+200"/>
         <source>Untitled</source>
         <translation>Bez nazwy</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+146"/>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>projekt nie został jeszcze zapisany; wybierz nazwę pliku poleceniem „Zapisz jako”</translation>
     </message>
@@ -3342,7 +3629,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+696"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+728"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -3472,7 +3759,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+14"/>
         <location filename="../widgets/report/kinematicsection.cpp" line="+223"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-395"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-404"/>
         <source>yes</source>
         <translation>tak</translation>
     </message>
@@ -3504,7 +3791,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+245"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+253"/>
         <source>error (%1)</source>
         <translation>błąd (%1)</translation>
     </message>
@@ -4320,12 +4607,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+96"/>
+        <location line="+105"/>
         <source>frame rotation</source>
         <translation>obrót układu współrzędnych</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-104"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Wartości nastawienia maszyny (%1%2)</translation>
     </message>
@@ -4345,12 +4632,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Bloki (mm, °)</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>The same posture as a controller frame (instead of the axis values)</source>
-        <translation>To samo położenie jako układ (frame) sterowania (zamiast wartości osi)</translation>
+        <location line="+17"/>
+        <source>%1 (the study&apos;s control)</source>
+        <translation>%1 (sterowanie badania)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>The same posture as a controller frame (instead of the axis values; decimals: %1)</source>
+        <translation>To samo położenie jako frame sterowania (zamiast wartości osi; miejsca po przecinku: %1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Datum shift then rotation of the working plane; no axis moves (STAY). The whole programs: metrofit-cli match --frame heidenhain|siemens|fanuc.</source>
         <translation>Przesunięcie punktu zerowego, potem obrót płaszczyzny obróbki; żadna oś się nie porusza (STAY). Pełne programy: metrofit-cli match --frame heidenhain|siemens|fanuc.</translation>
     </message>
@@ -4481,7 +4773,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location filename="../widgets/report/setupsection.cpp" line="-93"/>
         <location line="+40"/>
         <location filename="../widgets/report/summarysection.cpp" line="+123"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-276"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-284"/>
         <source>file</source>
         <translation>plik</translation>
     </message>
@@ -4917,7 +5209,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+1"/>
         <location filename="../widgets/report/thermalsection.cpp" line="+1"/>
-        <location line="+176"/>
+        <location line="+184"/>
         <source>rows</source>
         <translation>wiersze</translation>
     </message>
@@ -5143,7 +5435,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>metrofit-cli setup --export fanuc zapisuje ten sam tekst; Heidenhain, Siemens i CSV to pozostałe formaty (patrz konwencja znaków w nagłówku).</translation>
     </message>
     <message>
-        <location filename="../widgets/report/thermalsection.cpp" line="-263"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-271"/>
         <source>%1 h</source>
         <translation>%1 h</translation>
     </message>
@@ -5319,7 +5611,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>%1 względem każdego czujnika (rys. 9 w %5): odcinki nagrzewania (zmiana %1 rośnie, wiersze: %2) i chłodzenia (wiersze: %3) w kolorach faz wykresu przebiegu. Pole pętli wzorem Gaussa; opóźnienie: stała czasowa członu inercyjnego pierwszego rzędu między czujnikiem a przemieszczeniem (&gt; 0: czujnik się opóźnia).%4</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+61"/>
+        <source>Every row of the log is fitted, as on the Thermal page (trained there %1, stored in the project with these settings and this data), so the report chooses the page&apos;s model with the page&apos;s figures.</source>
+        <translation>Każdy wiersz rejestru jest dopasowywany, jak na stronie Termika (wytrenowano tam %1, zapisano w projekcie z tymi ustawieniami i tymi danymi), więc raport wybiera model strony z jej wartościami.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>To keep the report&apos;s run time short, this %1-row log is fitted on every %2th row (%3 rows); the GUI and metrofit-cli fit all rows and may choose another model. Train the models on the Thermal page and save the project: the report then fits every row and shows the page&apos;s choice.</source>
+        <translation>Aby skrócić czas tworzenia raportu, ten rejestr o %1 wierszach jest dopasowywany co %2. wiersz (%3 wierszy); GUI i metrofit-cli dopasowują wszystkie wiersze i mogą wybrać inny model. Wytrenuj modele na stronie Termika i zapisz projekt: raport dopasuje wtedy każdy wiersz i pokaże wybór strony.</translation>
+    </message>
+    <message>
+        <location line="+42"/>
         <source>not fitted: %1</source>
         <translation>nie dopasowano: %1</translation>
     </message>
@@ -5394,7 +5696,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>%1 nie nadaje się do użycia (%2)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>%1 varies by RMS %2%3 (peak %4%3) on the held-out rows</source>
         <translation>%1 zmienia się na odłożonych wierszach o RMS %2%3 (szczyt %4%3)</translation>
     </message>
@@ -5439,7 +5741,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Nie kompensuj tymi modelami. Zarejestruj dłuższy test obejmujący nagrzewanie i chłodzenie, dodaj czujniki blisko źródeł ciepła i użyj zamkniętej pętli (diagnozy), aby znaleźć opóźnienie lub wejścia, których brakuje modelowi.</translation>
     </message>
     <message>
-        <location line="-316"/>
+        <location line="-325"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Wykresy pierwszych %1 z %2 czujników; tabela zawiera wszystkie.</translation>
     </message>
@@ -5484,12 +5786,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>GNNMCI(1,N) (PSO, 90 cząstek, 100 iteracji, ziarno %1), GMC(1,N) (najmniejsze kwadraty) i MLP (%2-10-1, Levenberg-Marquardt, ziarno %1) przewidują %3 na podstawie %4; każdy jest dopasowany na pierwszych %5 % wierszy i testowany na reszcie (dane testowe, zacienione).</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>To keep the report&apos;s run time short, this %1-row log is fitted on every %2th row (%3 rows); the GUI and metrofit-cli fit all rows.</source>
-        <translation>Aby skrócić czas tworzenia raportu, ten rejestr (wiersze: %1) jest dopasowywany na co %2. wierszu (wiersze: %3); GUI i metrofit-cli dopasowują wszystkie wiersze.</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+29"/>
         <source>The models could not be fitted: %1</source>
         <translation>Nie można było dopasować modeli: %1</translation>
     </message>
@@ -5603,12 +5900,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ReportExporter</name>
     <message>
-        <location filename="../app/gui/reportexporter.cpp" line="+51"/>
+        <location filename="../app/gui/reportexporter.cpp" line="+37"/>
+        <source>the unsaved project</source>
+        <translation>niezapisany projekt</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Cannot prepare the report: %1</source>
         <translation>Nie można przygotować raportu: %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Cannot run %1: %2</source>
         <translation>Nie można uruchomić %1: %2</translation>
     </message>
@@ -6749,7 +7051,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupMargins</name>
     <message>
-        <location filename="../widgets/setup/setupmargins.cpp" line="+80"/>
+        <location filename="../widgets/setup/setupmargins.cpp" line="+81"/>
         <source>tolerance zone</source>
         <translation>pole tolerancji</translation>
     </message>
@@ -6782,7 +7084,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupMarginsWidget</name>
     <message>
-        <location line="+53"/>
+        <location line="+54"/>
         <source>Run a method to see the margins before and after correction.</source>
         <translation>Uruchom metodę, aby zobaczyć zapasy przed i po korekcji.</translation>
     </message>
@@ -6858,7 +7160,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+99"/>
+        <location filename="../app/gui/setuppage.cpp" line="+100"/>
         <source>&amp;Save model</source>
         <translation>Zapi&amp;sz model</translation>
     </message>
@@ -6983,7 +7285,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana ziarna ustawienia</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+99"/>
         <source>The applied effects cannot be used: %1</source>
         <translation>Nie można użyć zastosowanych efektów: %1</translation>
     </message>
@@ -7397,7 +7699,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupValidationView</name>
     <message>
-        <location filename="../widgets/setup/setupvalidationview.cpp" line="+67"/>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+76"/>
         <source>Simulated measurement sets N (the paper: 100)</source>
         <translation>Symulowane zestawy pomiarów N (publikacja: 100)</translation>
     </message>
@@ -7437,12 +7739,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Anuluj</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-46"/>
         <source>The paper&apos;s statistical validation: simulated measurement sets with setup-data and random errors (Eq. 12–13), each corrected by the exact method and by M trials of the chosen metaheuristics; the sets sorted by their budget before correction (Fig. 18).</source>
         <translation>Walidacja statystyczna z publikacji: symulowane zestawy pomiarów z błędami danych ustawczych i losowymi (równ. 12–13), każdy korygowany metodą dokładną i M próbami wybranych metaheurystyk; zestawy posortowane wg budżetu przed korekcją (rys. 18).</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+64"/>
         <source>Measurement sets N:</source>
         <translation>Zestawy pomiarów N:</translation>
     </message>
@@ -7477,7 +7779,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Metody:</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+113"/>
         <source>Choose at least one method.</source>
         <translation>Wybierz co najmniej jedną metodę.</translation>
     </message>
@@ -7684,6 +7986,14 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+3"/>
         <source>compensation</source>
         <translation>kompensacja</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::StoredResult</name>
+    <message>
+        <location filename="../widgets/document/storedresulttext.cpp" line="+11"/>
+        <source>at an unknown time</source>
+        <translation>w nieznanym czasie</translation>
     </message>
 </context>
 <context>
@@ -8374,12 +8684,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+35"/>
-        <location line="+115"/>
+        <location line="+118"/>
         <source>Training failed: %1</source>
         <translation>Trenowanie nie powiodło się: %1</translation>
     </message>
     <message>
-        <location line="-129"/>
+        <location line="-132"/>
         <source>Training cancelled after %1 PSO iterations; the results shown are the previous ones.</source>
         <translation>Trenowanie anulowano po %1 iteracjach PSO; pokazane wyniki są poprzednie.</translation>
     </message>
@@ -8423,7 +8733,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+82"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+85"/>
         <source>T&amp;rend</source>
         <translation>&amp;Trend</translation>
     </message>
@@ -8458,7 +8768,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>&amp;Rejestr termiczny:</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+42"/>
         <source>The module could not be identified again: %1</source>
         <translation>Nie udało się ponownie zidentyfikować modułu: %1</translation>
     </message>
@@ -8468,7 +8778,14 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Anulowano: pokazane moduły są bez zmian.</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+62"/>
+        <source>The thermal study&apos;s settings are invalid, nothing is fitted until they are corrected (Undo, or the project file):
+%1</source>
+        <translation>Ustawienia badania termicznego są nieprawidłowe; nic nie zostanie dopasowane, dopóki nie zostaną poprawione (Cofnij lub plik projektu):
+%1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>This project has no thermal log. Add a dataset of kind &quot;thermal_log&quot; to the project file (a time column, sensor columns and the displacement).</source>
         <translation>Ten projekt nie zawiera rejestru termicznego. Dodaj do pliku projektu zbiór danych rodzaju „thermal_log” (kolumna czasu, kolumny czujników i przemieszczenie).</translation>
     </message>
@@ -8483,7 +8800,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Licencja: %1.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+24"/>
         <source>Cannot show this thermal log:
 %1</source>
         <translation>Nie można wyświetlić tego rejestru termicznego:
@@ -8525,7 +8842,42 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana ustawień modelu termicznego</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+66"/>
+        <source>The stored result (computed %1) is out of date: the model settings changed since. Not trained with these settings yet: Train (Ctrl+R).</source>
+        <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia modeli zmieniły się od tego czasu. Jeszcze nie wytrenowano z tymi ustawieniami: Trenuj (Ctrl+R).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) is out of date: the data file changed since. Train (Ctrl+R) to fit the models on the data as it is now.</source>
+        <translation>Zapisany wynik (obliczony %1) jest nieaktualny: plik danych zmienił się od tego czasu. Trenuj (Ctrl+R), aby dopasować modele do danych w obecnej postaci.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) cannot be checked: the data file cannot be read.</source>
+        <translation>Nie można sprawdzić zapisanego wyniku (obliczonego %1): nie można odczytać pliku danych.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>not fitted</source>
+        <translation>niedopasowany</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>no model usable for compensation</source>
+        <translation>brak modelu użytecznego do kompensacji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>best usable model %1 (held-out RMSE %2)</source>
+        <translation>najlepszy użyteczny model %1 (RMSE na odłożonych %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>From the saved project, computed %1 with these settings on this data: %2. Held-out RMSE: %3. Train (Ctrl+R) to see the charts.</source>
+        <translation>Z zapisanego projektu, obliczono %1 z tymi ustawieniami dla tych danych: %2. RMSE na odłożonych: %3. Trenuj (Ctrl+R), aby zobaczyć wykresy.</translation>
+    </message>
+    <message>
+        <location line="+81"/>
         <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) not fitted: %6</source>
         <translation>Dopasowane łącznie na %1 i %2, predykcja %3 (cel %4; wejścia %5; ziarno 1): GNNMCI(1,N) nie dopasowano: %6</translation>
     </message>
@@ -8631,7 +8983,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>nieużyteczny</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>its prediction diverges on the held-out rows</source>
         <translation>jego prognoza rozbiega się na odłożonych wierszach</translation>
     </message>
