@@ -141,6 +141,17 @@ QString appliedElsewhere(const Project& project, const char* domain, const std::
   return QString::fromStdString(diagnose::appliedEffectsElsewhere(project, domain, datasetId));
 }
 
+/// The item data of a study value that is not a dataset id (a number, an empty text ...): the page
+/// refuses such settings, and any choice of the chooser, "(none)" included, replaces it.
+const QString kNotAnId = QStringLiteral("\u0001(not a dataset id)");
+
+/// The dataset id a chooser shows for a study value: "" for none (no key), kNotAnId for a bad value.
+QString pickerValue(const nlohmann::json& v) {
+  if (v.is_null()) return {};
+  if (!v.is_string() || v.get<std::string>().empty()) return kNotAnId;
+  return QString::fromStdString(v.get<std::string>());
+}
+
 }  // namespace
 
 KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
@@ -306,7 +317,7 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
         document_, p.combo, QString::fromLatin1(study::kKinematics), key,
         [this, key] {
           const nlohmann::json v = document_->studyValue(QString::fromLatin1(study::kKinematics), key);
-          return v.is_string() ? QString::fromStdString(v.get<std::string>()) : QString();
+          return pickerValue(v);
         },
         p.undoText);
   }
@@ -396,7 +407,7 @@ void KinematicsPage::syncPickers() {
   const Project& project = document_->project();
   for (const Picker& p : pickers_) {
     const nlohmann::json value = document_->studyValue(QString::fromLatin1(study::kKinematics), p.key);
-    const QString current = value.is_string() ? QString::fromStdString(value.get<std::string>()) : QString();
+    const QString current = pickerValue(value);
     // (text, id, tooltip): none, the datasets of the picker's kinds, and the study's own choice when it
     // is not among them (another kind, or not in the project: the study then says why it cannot use it).
     std::vector<std::array<QString, 3>> items{{tr("(none)"), QString(), QString()}};
@@ -407,7 +418,10 @@ void KinematicsPage::syncPickers() {
       items.push_back({id, id, QString::fromStdString(d.description)});
       found = found || id == current;
     }
-    if (!found) {
+    if (current == kNotAnId) {
+      items.push_back(
+          {tr("%1 (not a dataset id)").arg(QString::fromStdString(value.dump())), current, QString()});
+    } else if (!found) {
       items.push_back(
           {project.dataset(current.toStdString()) ? current : tr("%1 (not in the project)").arg(current),
            current, QString()});

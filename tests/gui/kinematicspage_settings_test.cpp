@@ -103,6 +103,26 @@ TEST_F(KinematicsSettingsPageTest, ABadValueSetWhileOpenIsRefusedAndUndoRunsAgai
   EXPECT_TRUE(page.compensateButton()->isEnabled());
 }
 
+TEST_F(KinematicsSettingsPageTest, ABadDatasetChoiceIsShownAndTheChooserReplacesIt) {
+  writeStudyValue("/planes/yz", 5);
+  ProjectDocument doc;
+  doc.load(projectPath_);
+  KinematicsPage page(&doc);
+  EXPECT_EQ(page.study(), nullptr);
+  EXPECT_TRUE(page.messageLabel()->text().contains(QStringLiteral("studies.kinematics.planes.yz")))
+      << page.messageLabel()->text().toStdString();
+  QComboBox* yz = page.planeCombo(TestPlane::YZ);
+  EXPECT_TRUE(yz->currentText().contains(QStringLiteral("not a dataset id")))
+      << yz->currentText().toStdString();
+  yz->setCurrentIndex(0);  // (none): the key goes, the study runs
+  EXPECT_EQ(doc.studyValue(kKin, QStringLiteral("/planes/yz")), nlohmann::json());
+  EXPECT_NE(page.study(), nullptr) << page.errorMessage().toStdString();
+  EXPECT_TRUE(page.settingsError().isEmpty());
+  doc.undoStack()->undo();
+  EXPECT_EQ(page.study(), nullptr);
+  EXPECT_TRUE(yz->currentText().contains(QStringLiteral("not a dataset id")));
+}
+
 TEST_F(KinematicsSettingsPageTest, TheCompensatedResultIsStoredAndShownAfterSaveAsAndReopen) {
   ProjectDocument doc;
   doc.load(projectPath_);
