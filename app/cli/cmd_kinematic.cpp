@@ -59,6 +59,8 @@
 #include "core/kinematics/measured_path.h"
 #include "core/kinematics/spc_actuator.h"
 #include "core/sim/circular_sim.h"
+#include "core/spc/control_chart.h"
+#include "core/study/study_settings.h"
 
 namespace metrofit::cli {
 namespace {
@@ -227,11 +229,15 @@ int runCompensate3(const Compensate3Args& a) {
   return 0;
 }
 
+/// The defaults are the project study's (studies.kinematics.from_spc, KinematicsSettings::FromSpc).
 struct FromSpcArgs {
-  std::string xData, yData, positionColumn = "position_mm", deviationColumn = "deviation_mm";
-  double xNominalY = 0.0, yNominalX = 0.0;
-  int subgroup = 5;
-  double coverage = 2.0;
+  std::string xData, yData;
+  std::string positionColumn = KinematicsSettings::FromSpc{}.positionColumn;
+  std::string deviationColumn = KinematicsSettings::FromSpc{}.deviationColumn;
+  double xNominalY = KinematicsSettings::FromSpc{}.xNominalY,
+         yNominalX = KinematicsSettings::FromSpc{}.yNominalX;
+  int subgroup = KinematicsSettings::FromSpc{}.subgroup;
+  double coverage = KinematicsSettings::FromSpc{}.coverage;
   std::string path, references, out, dfq;
 };
 
@@ -591,7 +597,7 @@ void registerKinematicCommands(CLI::App& app) {
   fs->add_option("--x-nominal-y", d->xNominalY, "Nominal Y of the X edge, mm")->capture_default_str();
   fs->add_option("--y-nominal-x", d->yNominalX, "Nominal X of the Y edge, mm")->capture_default_str();
   fs->add_option("--subgroup", d->subgroup, "Subgroup size of the residual X-bar/R chart (2..25)")
-      ->check(CLI::Range(2, 25))
+      ->check(CLI::Range(kMinSubgroupSize, kMaxSubgroupSize))
       ->capture_default_str();
   fs->add_option("--coverage", d->coverage, "Coverage factor k: a slope or intercept counts beyond +-k se")
       ->check(positiveNumber())

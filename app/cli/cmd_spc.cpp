@@ -21,14 +21,16 @@
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/spc/spc.h"
+#include "core/study/study_settings.h"
 
 namespace metrofit::cli {
 namespace {
 
+/// The defaults are the project study's SPC series (studies.kinematics.spc, KinematicsSettings::Spc).
 struct SpcArgs {
   std::string data, column, out, dfq, dfqPart;
-  int subgroup = 5;
-  double lsl = 0.0, usl = 0.0, nominal = 0.0, coverage = 2.0;
+  int subgroup = KinematicsSettings::Spc{}.subgroup;
+  double lsl = 0.0, usl = 0.0, nominal = 0.0, coverage = KinematicsSettings::Spc{}.coverage;
   CLI::Option *lslOpt = nullptr, *uslOpt = nullptr, *nominalOpt = nullptr;
 };
 

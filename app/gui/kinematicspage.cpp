@@ -23,10 +23,12 @@
 #include <algorithm>
 #include <exception>
 #include <iterator>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
 #include "app/gui/notesedit.h"
+#include "app/gui/studysettingbinding.h"
 #include "core/diagnose/applied_setup_matching.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
@@ -34,9 +36,11 @@
 #include "core/io/file_io.h"
 #include "core/kinematics/export.h"
 #include "core/kinematics/iso230_4.h"
+#include "core/project/stored_results.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/diagnose/coretexts.h"
 #include "widgets/document/projectdocument.h"
+#include "widgets/document/storedresulttext.h"
 #include "widgets/document/studyinfo.h"
 #include "widgets/kinematics/kinematicsviews.h"
 
@@ -137,6 +141,17 @@ QString appliedElsewhere(const Project& project, const char* domain, const std::
   return QString::fromStdString(diagnose::appliedEffectsElsewhere(project, domain, datasetId));
 }
 
+/// The item data of a study value that is not a dataset id (a number, an empty text ...): the page
+/// refuses such settings, and any choice of the chooser, "(none)" included, replaces it.
+const QString kNotAnId = QStringLiteral("\u0001(not a dataset id)");
+
+/// The dataset id a chooser shows for a study value: "" for none (no key), kNotAnId for a bad value.
+QString pickerValue(const nlohmann::json& v) {
+  if (v.is_null()) return {};
+  if (!v.is_string() || v.get<std::string>().empty()) return kNotAnId;
+  return QString::fromStdString(v.get<std::string>());
+}
+
 }  // namespace
 
 KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
@@ -168,6 +183,11 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   combo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   combo_->setMinimumContentsLength(14);
   info_->setObjectName(QStringLiteral("kinematicsInfo"));
+  stored_ = new QLabel(this);
+  stored_->setObjectName(QStringLiteral("kinematicsStored"));
+  stored_->setWordWrap(true);
+  stored_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  stored_->setVisible(false);
   info_->setWordWrap(true);
   info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   message_->setObjectName(QStringLiteral("kinematicsMessage"));
@@ -291,15 +311,15 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
     if (i != 0 && i != 2) row->addSpacing(12);
     row->addWidget(label);
     row->addWidget(p.combo);
-    connect(p.combo, &QComboBox::currentIndexChanged, this, [this, i](int index) {
-      if (index < 0) return;
-      const Picker& picker = pickers_[i];
-      const std::string id = picker.combo->currentData().toString().toStdString();
-      document_->endEditSequence();
-      document_->setStudyValue(QString::fromLatin1(study::kKinematics), picker.key,
-                               id.empty() ? nlohmann::json() : nlohmann::json(id), picker.undoText);
-      document_->endEditSequence();
-    });
+    // A choice is an undoable edit of the study; "(none)" removes the key.
+    const QString key = p.key;
+    bindStudyDatasetSetting(
+        document_, p.combo, QString::fromLatin1(study::kKinematics), key,
+        [this, key] {
+          const nlohmann::json v = document_->studyValue(QString::fromLatin1(study::kKinematics), key);
+          return pickerValue(v);
+        },
+        p.undoText);
   }
   edgesDfqButton_ = new QPushButton(tr("Save &DFQ…"), actuators);
   edgesDfqButton_->setObjectName(QStringLiteral("edgesDfq"));
@@ -357,6 +377,7 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);
   layout->addWidget(info_);
+  layout->addWidget(stored_);
   layout->addWidget(stack_, 1);
   layout->addWidget(notes);
 
@@ -386,7 +407,7 @@ void KinematicsPage::syncPickers() {
   const Project& project = document_->project();
   for (const Picker& p : pickers_) {
     const nlohmann::json value = document_->studyValue(QString::fromLatin1(study::kKinematics), p.key);
-    const QString current = value.is_string() ? QString::fromStdString(value.get<std::string>()) : QString();
+    const QString current = pickerValue(value);
     // (text, id, tooltip): none, the datasets of the picker's kinds, and the study's own choice when it
     // is not among them (another kind, or not in the project: the study then says why it cannot use it).
     std::vector<std::array<QString, 3>> items{{tr("(none)"), QString(), QString()}};
@@ -397,7 +418,10 @@ void KinematicsPage::syncPickers() {
       items.push_back({id, id, QString::fromStdString(d.description)});
       found = found || id == current;
     }
-    if (!found) {
+    if (current == kNotAnId) {
+      items.push_back(
+          {tr("%1 (not a dataset id)").arg(QString::fromStdString(value.dump())), current, QString()});
+    } else if (!found) {
       items.push_back(
           {project.dataset(current.toStdString()) ? current : tr("%1 (not in the project)").arg(current),
            current, QString()});
@@ -445,24 +469,21 @@ void KinematicsPage::refresh() {
   projectFile_ = document_->fileName();
   generation_ = document_->generation();
   QString select = currentDataset();
-  QString settingsError;  // studies.kinematics cannot be read
+  // Settings that cannot be read are refused (identify() shows why, naming the field): never a default
+  // in place of a bad value.
+  settingsError_.clear();
+  QString studyDataset;
+  try {
+    studyDataset = QString::fromStdString(kinematicStudySettings(document_->project()).dataset);
+  } catch (const std::exception& e) {
+    settingsError_ = QString::fromStdString(e.what());
+  }
   const auto has = [&](const QString& id) {
     return std::any_of(datasets_.begin(), datasets_.end(),
                        [&](const DatasetRef& d) { return QString::fromStdString(d.id) == id; });
   };
-  if (!has(select)) {
-    try {
-      select = QString::fromStdString(kinematicStudySettings(document_->project()).dataset);
-    } catch (const std::exception& e) {
-      select.clear();  // the first circular test, and the page says why (below)
-      settingsError = QString::fromStdString(e.what());
-    }
-  }
+  if (!has(select)) select = studyDataset;
   onDatasetChosen(fillDatasetCombo(combo_, datasets_, select));
-  // identify() reads the same settings and fails with their message; should it not, say it here.
-  if (!settingsError.isEmpty() && error_.isEmpty())
-    info_->setText(info_->text() + QLatin1Char('\n') +
-                   tr("The kinematics study's settings are invalid: %1").arg(settingsError));
 }
 
 void KinematicsPage::onDatasetChosen(int) {
@@ -471,10 +492,26 @@ void KinematicsPage::onDatasetChosen(int) {
   identify();
 }
 
+void KinematicsPage::showSettingsError() {
+  error_ = settingsError_;
+  info_->clear();
+  stored_->setVisible(false);
+  message_->setText(tr("The kinematics study's settings are invalid; nothing is run until they are "
+                       "corrected (Undo, or the project file):\n%1")
+                        .arg(settingsError_));
+  stack_->setCurrentWidget(message_);
+  updateButtons();
+}
+
 bool KinematicsPage::identify() {
   error_.clear();
   study_.reset();
   compensation_.reset();
+  stored_->setVisible(false);
+  if (!settingsError_.isEmpty()) {
+    showSettingsError();
+    return false;
+  }
   const QString id = currentDataset();
   if (id.isEmpty()) {
     info_->clear();
@@ -521,6 +558,7 @@ bool KinematicsPage::identify() {
   }
   showStudy();
   updateButtons();
+  showStoredResult();
   return true;
 }
 
@@ -746,7 +784,82 @@ bool KinematicsPage::compensate() {
   }
   showCompensation();
   updateButtons();
+  storeResult();
+  showStoredResult();
   return true;
+}
+
+void KinematicsPage::storeResult() {
+  if (!study_ || !compensation_) return;
+  try {
+    const DatasetRef dataset = document_->resolvedDataset(study_->dataset);
+    document_->setStoredResult(QString::fromLatin1(study::kKinematics), QString::fromStdString(dataset.id),
+                               makeStoredResult(document_->projectPathForDatasets().toStdString(), dataset,
+                                                kinematicStoredSettings(document_->project(), dataset.id),
+                                                kinematicResultJson(*study_, *compensation_)));
+  } catch (const std::exception&) {
+    // The test cannot be read any more: nothing is stored, the page shows the result.
+  }
+}
+
+QString KinematicsPage::storedResultText() const {
+  const QString id = currentDataset();
+  const auto it = std::find_if(datasets_.begin(), datasets_.end(),
+                               [&](const DatasetRef& d) { return QString::fromStdString(d.id) == id; });
+  if (id.isEmpty() || it == datasets_.end() || !settingsError_.isEmpty()) return {};
+  StoredResult stored;
+  try {
+    stored = storedResult(document_->project(), document_->projectPathForDatasets().toStdString(),
+                          study::kKinematics, *it, kinematicStoredSettings(document_->project(), it->id));
+  } catch (const std::exception&) {
+    return {};
+  }
+  const QString when = storedTimeText(stored.computed);
+  switch (stored.state) {
+    case StoredResultState::None:
+      return {};
+    case StoredResultState::SettingsChanged:
+      return tr("The stored result (computed %1) is out of date: the kinematics settings changed since. "
+                "Compensate (Ctrl+K) to compute it with these settings.")
+          .arg(when);
+    case StoredResultState::DataChanged:
+      return tr("The stored result (computed %1) is out of date: the circular test's file changed since. "
+                "Compensate (Ctrl+K) to compute it on the test as it is now.")
+          .arg(when);
+    case StoredResultState::DataMissing:
+      return tr("The stored result (computed %1) cannot be checked: the circular test's file cannot be read.")
+          .arg(when);
+    case StoredResultState::Current:
+      break;
+  }
+  const nlohmann::json& e = stored.entry;
+  const auto number = [](const nlohmann::json& block, const char* key) {
+    const nlohmann::json v = block.is_object() ? block.value(key, nlohmann::json()) : nlohmann::json();
+    return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
+  };
+  const nlohmann::json identified = e.value("identified", nlohmann::json());
+  const nlohmann::json comp = e.value("compensation", nlohmann::json());
+  QString text =
+      tr("From the saved project, computed %1 with these settings on this test: identified origin (%2, %3) "
+         "µm, X axis angle a %4°, Y axis angle b %5°, squareness b − a %6°, RMS residual %7 µm. "
+         "Compensation: max radial deviation %8 µm measured, %9 µm expected after (RMS %10 µm), largest "
+         "correction %11 µm.")
+          .arg(when, um(number(identified, "origin_x_mm")), um(number(identified, "origin_y_mm")),
+               deg(number(identified, "x_axis_angle_deg")), deg(number(identified, "y_axis_angle_deg")),
+               deg(number(identified, "squareness_deg")), um(number(identified, "rmse_mm")),
+               um(number(comp, "max_before_mm")), um(number(comp, "max_expected_mm")))
+          .arg(um(number(comp, "rms_expected_mm")), um(number(comp, "largest_correction_mm")));
+  if (comp.is_object() && comp.contains("max_simulated_mm"))
+    text +=
+        QLatin1Char(' ') + tr("Simulated machine after: %1 µm.").arg(um(number(comp, "max_simulated_mm")));
+  return text + QLatin1Char(' ') + tr("Compensate (Ctrl+K) to see the compensated path.");
+}
+
+void KinematicsPage::showStoredResult() {
+  // The compensation computed here is the result; a stored one is shown until then.
+  const QString text = compensation_ ? QString() : storedResultText();
+  stored_->setText(text);
+  stored_->setVisible(!text.isEmpty());
 }
 
 void KinematicsPage::showCompensation() {
@@ -782,7 +895,7 @@ void KinematicsPage::showCompensation() {
 
 void KinematicsPage::updateButtons() {
   const bool ok = study_.has_value();
-  identifyButton_->setEnabled(!currentDataset().isEmpty());
+  identifyButton_->setEnabled(!currentDataset().isEmpty() && settingsError_.isEmpty());
   compensateButton_->setEnabled(ok);
   gcodeButton_->setEnabled(ok);
   stepNcButton_->setEnabled(ok);

@@ -94,6 +94,13 @@ class KinematicsPage : public QWidget {
   QLabel* infoLabel() const { return info_; }
   /// The message shown instead of the tabs when the test cannot be identified.
   QLabel* messageLabel() const { return message_; }
+  /// The result stored in the project for the test shown (results.kinematics.<dataset>, computed by
+  /// Compensate): "From the saved project, computed …: …" with its figures, or why it is out of date;
+  /// hidden when nothing is stored or the page shows the compensation it computed.
+  QLabel* storedLabel() const { return stored_; }
+  QString storedResultText() const;
+  /// Why the study's settings are refused (the field named), empty when they are good.
+  QString settingsError() const { return settingsError_; }
   /// A radial-only (ballbar) test: its polar plot, shown with the message instead of the tabs.
   PolarDeviationView* radialPolarView() const { return radialPolar_; }
   /// The page the stack shows: the tabs, the message, or the radial-only test's message and plot.
@@ -114,6 +121,11 @@ class KinematicsPage : public QWidget {
   void updateButtons();
   /// Puts the dataset choosers on the datasets and settings of the project (signals blocked).
   void syncPickers();
+  /// Keeps the compensated study's figures in the project (results.kinematics.<dataset>).
+  void storeResult();
+  void showStoredResult();
+  /// Refuses to run with settings that cannot be read: the message names the field.
+  void showSettingsError();
 
   /// A dataset chooser of the actuators view and the study setting it edits.
   struct Picker {
@@ -127,6 +139,8 @@ class KinematicsPage : public QWidget {
   QComboBox* combo_;
   QLabel* info_;
   QLabel* applied_ = nullptr;  ///< "Includes applied effects: ..." (hidden when none)
+  QLabel* stored_ = nullptr;   ///< the stored result (storedLabel)
+  QString settingsError_;      ///< studies.kinematics cannot be read: nothing runs
   QStackedWidget* stack_;
   QLabel* message_;
   QTabWidget* tabs_;

@@ -56,4 +56,28 @@ void bindStudySetting(ProjectDocument* document, QSpinBox* spin, const QString& 
   });
 }
 
+void bindStudyDatasetSetting(ProjectDocument* document, QComboBox* combo, const QString& study,
+                             const QString& key, std::function<QString()> effective,
+                             const QString& undoText) {
+  auto syncing = std::make_shared<bool>(false);
+  QObject::connect(combo, &QComboBox::currentIndexChanged, combo,
+                   [document, combo, study, key, effective, undoText, syncing] {
+                     if (*syncing || combo->currentIndex() < 0) return;
+                     const QString value = combo->currentData().toString();
+                     if (value == effective()) return;
+                     document->endEditSequence();
+                     document->setStudyValue(
+                         study, key, value.isEmpty() ? nlohmann::json() : nlohmann::json(value.toStdString()),
+                         undoText);
+                     document->endEditSequence();
+                   });
+  QObject::connect(document, &ProjectDocument::changed, combo, [combo, effective, syncing] {
+    const int index = combo->findData(effective());
+    if (index < 0 || index == combo->currentIndex()) return;
+    *syncing = true;
+    combo->setCurrentIndex(index);
+    *syncing = false;
+  });
+}
+
 }  // namespace metrofit

@@ -24,4 +24,11 @@ void bindStudySetting(ProjectDocument* document, QComboBox* combo, const QString
 void bindStudySetting(ProjectDocument* document, QSpinBox* spin, const QString& study, const QString& key,
                       std::function<qint64()> effective, bool writeUnsigned, const QString& undoText);
 
+/// A dataset chooser: a combo box whose items carry a dataset id as their data, "" for none. Choosing
+/// none removes the key (a study names no dataset rather than an empty one); `effective` gives the id
+/// the study names ("" when none). The items may change with the project (the page fills them); the
+/// binding only writes a choice that differs from the study's.
+void bindStudyDatasetSetting(ProjectDocument* document, QComboBox* combo, const QString& study,
+                             const QString& key, std::function<QString()> effective, const QString& undoText);
+
 }  // namespace metrofit

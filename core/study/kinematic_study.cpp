@@ -7,7 +7,6 @@
 #include "core/common/error.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
-#include "core/io/json_util.h"
 
 namespace metrofit {
 
@@ -18,13 +17,6 @@ std::string upper(std::string s) {
   return s;
 }
 
-/// The "subgroup" of an SPC block (default: the options' own), checked against the chart's range
-/// with the field named.
-int subgroupSetting(const JsonReader& block, int defaultSize) {
-  const long n = block.has("subgroup") ? block.integer("subgroup") : defaultSize;
-  if (n < kMinSubgroupSize || n > kMaxSubgroupSize) block.fail("must be between 2 and 25", "subgroup");
-  return static_cast<int>(n);
-}
 }  // namespace
 
 std::vector<DatasetRef> circularTestDatasets(const Project& project) {
@@ -44,71 +36,49 @@ std::string columnUnit(const std::string& column) {
   return {};
 }
 
-KinematicStudySettings kinematicStudySettings(const Project& project) {
+KinematicStudySettings kinematicStudySettings(const KinematicsSettings& k) {
   KinematicStudySettings s;
-  const auto it = project.studies.find(study::kKinematics);
-  if (it == project.studies.end() || it->is_null()) return s;
-  const JsonReader study(*it, "project", std::string("studies.") + study::kKinematics);
-  study.requireObject();
-  s.dataset = study.string("dataset", "");
-  if (study.has("simulated_machine")) {
-    const JsonReader m = study.object("simulated_machine");
+  s.dataset = k.dataset;
+  if (k.simulatedMachine) {
     ActuatorErrors2 e;
-    const JsonReader origin = m.array("origin_mm");
-    if (origin.size() != 2 || !origin.json()[0].is_number() || !origin.json()[1].is_number()) {
-      origin.fail("must be [x, y] in mm");
-    }
-    e.originMm = Eigen::Vector2d(origin.json()[0].get<double>(), origin.json()[1].get<double>());
-    e.xAxisAngleDeg = m.number("x_axis_angle_deg");
-    e.yAxisAngleDeg = m.number("y_axis_angle_deg");
-    std::string why;
-    if (!e.isValid(&why)) m.fail(why);
+    e.originMm = Eigen::Vector2d(k.simulatedMachine->originXMm, k.simulatedMachine->originYMm);
+    e.xAxisAngleDeg = k.simulatedMachine->xAxisAngleDeg;
+    e.yAxisAngleDeg = k.simulatedMachine->yAxisAngleDeg;
     s.simulatedMachine = e;
   }
-  if (study.has("spc")) {
-    const JsonReader spc = study.object("spc");
-    KinematicSpcSettings k;
-    k.dataset = spc.string("dataset");
-    k.column = spc.string("column");
-    k.options.subgroupSize = subgroupSetting(spc, k.options.subgroupSize);
-    if (spc.has("lsl") != spc.has("usl"))
-      spc.fail("give lsl and usl together", spc.has("lsl") ? "usl" : "lsl");
-    if (spc.has("lsl")) {
-      k.options.lsl = spc.number("lsl");
-      k.options.usl = spc.number("usl");
-      if (!(*k.options.lsl < *k.options.usl)) spc.fail("must be below usl", "lsl");
-    }
-    if (spc.has("nominal")) k.options.nominal = spc.number("nominal");
-    k.options.coverageFactor = spc.number("coverage", k.options.coverageFactor);
-    std::string why;
-    if (!k.options.isValid(&why)) spc.fail(why);
-    s.spc = k;
+  if (k.spc) {
+    KinematicSpcSettings spc;
+    spc.dataset = k.spc->dataset;
+    spc.column = k.spc->column;
+    spc.options.subgroupSize = k.spc->subgroup;
+    spc.options.lsl = k.spc->lsl;
+    spc.options.usl = k.spc->usl;
+    spc.options.nominal = k.spc->nominal;
+    spc.options.coverageFactor = k.spc->coverage;
+    s.spc = spc;
   }
-  if (study.has("from_spc")) {
-    const JsonReader f = study.object("from_spc");
-    KinematicFromSpcSettings k;
+  if (k.fromSpc) {
     // Each edge is optional here (the page chooses them one at a time); loadKinematicStudy says which
     // one is missing.
-    k.xDataset = f.string("x_dataset", "");
-    k.yDataset = f.string("y_dataset", "");
-    k.positionColumn = f.string("position_column", k.positionColumn);
-    k.deviationColumn = f.string("deviation_column", k.deviationColumn);
-    k.xNominalY = f.number("x_nominal_y", 0.0);
-    k.yNominalX = f.number("y_nominal_x", 0.0);
-    k.options.subgroupSize = subgroupSetting(f, k.options.subgroupSize);
-    k.options.coverageFactor = f.number("coverage", k.options.coverageFactor);
-    std::string why;
-    if (!k.options.isValid(&why)) f.fail(why);
-    s.fromSpc = k;
+    KinematicFromSpcSettings f;
+    f.xDataset = k.fromSpc->xDataset;
+    f.yDataset = k.fromSpc->yDataset;
+    f.positionColumn = k.fromSpc->positionColumn;
+    f.deviationColumn = k.fromSpc->deviationColumn;
+    f.xNominalY = k.fromSpc->xNominalY;
+    f.yNominalX = k.fromSpc->yNominalX;
+    f.options.subgroupSize = k.fromSpc->subgroup;
+    f.options.coverageFactor = k.fromSpc->coverage;
+    s.fromSpc = f;
   }
-  if (study.has("planes")) {
-    const JsonReader p = study.object("planes");
-    std::array<std::string, 3> ids;
-    for (const TestPlane plane : kTestPlanes)
-      ids[static_cast<std::size_t>(plane)] = p.string(planeName(plane), "");
-    s.planes = ids;
-  }
+  s.planes = k.planes;
   return s;
+}
+
+KinematicStudySettings kinematicStudySettings(const Project& project) {
+  const auto it = project.studies.find(study::kKinematics);
+  if (it == project.studies.end()) return {};
+  return kinematicStudySettings(KinematicsSettings::fromJson(*it, "project"));
 }
 
 namespace {
@@ -262,6 +232,31 @@ KinematicStudyData loadKinematicStudy(const Project& project,
 CompensationPreview compensateStudy(const KinematicStudyData& study) {
   return previewCompensation(study.measured, study.analysis, study.identification.errors,
                              study.settings.simulatedMachine, &study.applied);
+}
+
+nlohmann::json kinematicStoredSettings(const Project& project, const std::string& datasetId) {
+  const auto it = project.studies.find(study::kKinematics);
+  const KinematicsSettings settings =
+      it == project.studies.end() ? KinematicsSettings{} : KinematicsSettings::fromJson(*it, "project");
+  return {{"study", settings.toJson()}, {"applied", projectAxisEffects(project, datasetId).text()}};
+}
+
+nlohmann::json kinematicResultJson(const KinematicStudyData& study, const CompensationPreview& c) {
+  const IdentifyResult& r = study.identification;
+  nlohmann::json compensation = {
+      {"max_before_mm", c.maxBeforeMm},     {"max_model_mm", c.maxModelMm},
+      {"max_expected_mm", c.maxExpectedMm}, {"rms_before_mm", c.rmsBeforeMm},
+      {"rms_expected_mm", c.rmsExpectedMm}, {"largest_correction_mm", c.largestCorrectionMm}};
+  if (c.maxSimulatedMm) compensation["max_simulated_mm"] = *c.maxSimulatedMm;
+  return {{"points", study.measured.size()},
+          {"identified",
+           {{"origin_x_mm", r.errors.originMm.x()},
+            {"origin_y_mm", r.errors.originMm.y()},
+            {"x_axis_angle_deg", r.errors.xAxisAngleDeg},
+            {"y_axis_angle_deg", r.errors.yAxisAngleDeg},
+            {"squareness_deg", r.errors.squarenessDeg()},
+            {"rmse_mm", r.rmseMm}}},
+          {"compensation", std::move(compensation)}};
 }
 
 }  // namespace metrofit

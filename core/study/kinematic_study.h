@@ -19,7 +19,8 @@
 //        circular tests in three planes for the three-axis identification
 //        (core/kinematics/identification3.h; YZ / ZX files have the plane's columns); a missing plane
 //        is the identification's error, none at all: not run
-// A wrong type or value is a ValidationError naming studies/kinematics/<key>.
+// The keys, their defaults and checks: KinematicsSettings (core/study/study_settings.h). A wrong type or
+// value is a ValidationError naming the field (studies.kinematics.spc.subgroup).
 //
 // Applied effects: the effects added with Apply on the diagnosis page
 // (studies.diagnosis.kinematic.applied, core/diagnose/applied_kinematic.h) belong to the machine model of
@@ -40,9 +41,12 @@
 #include "core/project/project.h"
 #include "core/spc/spc.h"
 #include "core/study/circular_analysis.h"
+#include "core/study/study_settings.h"
 
 namespace metrofit {
 
+// The study's values as the methods take them, converted from KinematicsSettings
+// (core/study/study_settings.h), the one owner of the keys, their defaults and checks.
 struct KinematicSpcSettings {
   std::string dataset;
   std::string column;
@@ -51,7 +55,7 @@ struct KinematicSpcSettings {
 
 struct KinematicFromSpcSettings {
   std::string xDataset, yDataset;
-  std::string positionColumn = "position_mm", deviationColumn = "deviation_mm";
+  std::string positionColumn, deviationColumn;
   double xNominalY = 0.0, yNominalX = 0.0;
   SpcActuatorOptions options;
 };
@@ -64,6 +68,9 @@ struct KinematicStudySettings {
   std::optional<std::array<std::string, 3>> planes;  ///< dataset ids, index TestPlane
 };
 
+/// The study's settings as KinematicsSettings reads them (ValidationError naming source "project" and
+/// the field), converted for the methods.
+KinematicStudySettings kinematicStudySettings(const KinematicsSettings& settings);
 KinematicStudySettings kinematicStudySettings(const Project& project);
 
 /// The unit at the end of a column name ("diameter_mm" -> "mm", "dev_um" -> "µm"; else empty).
@@ -128,5 +135,17 @@ std::optional<RadialStudyTest> radialStudyTest(const Project& project,
 
 /// Compensation preview of the study's circular test (the simulated machine when the settings give one).
 CompensationPreview compensateStudy(const KinematicStudyData& study);
+
+/// What the figures of a result of the circular test `datasetId` depend on, stored with it
+/// (results.kinematics.<dataset>, core/project/stored_results.h): {"study": the study's settings
+/// (KinematicsSettings::toJson, only what differs from the defaults), "applied": the applied effects of
+/// that test (text, "" for none)}. ValidationError for bad settings.
+nlohmann::json kinematicStoredSettings(const Project& project, const std::string& datasetId);
+
+/// The figures of a compensated study as the project stores them: {"points", "identified": {"origin_x_mm",
+/// "origin_y_mm", "x_axis_angle_deg", "y_axis_angle_deg", "squareness_deg", "rmse_mm"}, "compensation":
+/// {"max_before_mm", "max_model_mm", "max_expected_mm", "rms_before_mm", "rms_expected_mm",
+/// "largest_correction_mm"[, "max_simulated_mm"]}}.
+nlohmann::json kinematicResultJson(const KinematicStudyData& study, const CompensationPreview& compensation);
 
 }  // namespace metrofit

@@ -54,7 +54,10 @@ std::vector<StudyIssue> checkStudies(const Project& project) {
     if (type == types.end()) {
       issues.push_back({prefix, "is not a study (one of: setup, matching, kinematics, thermal, diagnosis)"});
     } else if (type->fields != nullptr) {
+      const std::size_t before = issues.size();
       checkSettingsBlock(*it, prefix, *type->fields, issues, dataset);
+      // The rules between keys, on keys that are good each (one issue at a time: no echo of a bad key).
+      if (issues.size() == before && type->checkBlock != nullptr) type->checkBlock(*it, issues);
     } else if (!it->is_object()) {
       issues.push_back({prefix, "must be an object of settings"});
     } else {

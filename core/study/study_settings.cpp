@@ -4,8 +4,11 @@
 #include <cmath>
 
 #include "core/common/error.h"
+#include "core/kinematics/cartesian_model.h"
+#include "core/kinematics/identification3.h"
 #include "core/matching/pose.h"
 #include "core/project/project.h"
+#include "core/spc/control_chart.h"
 
 namespace metrofit {
 namespace {
@@ -279,21 +282,196 @@ bool MatchingSettings::isValid(std::string* field, std::string* why) const {
 
 // ---- kinematics ---------------------------------------------------------------------------------------
 
+namespace {
+
+std::string finiteNumber(const json& v, const std::string& what) {
+  return v.is_number() && std::isfinite(v.get<double>()) ? std::string() : "must be " + what;
+}
+
+/// "subgroup" of the SPC blocks: the range of the A2/D3/D4 table.
+std::string subgroupCheck(const json& v) {
+  return v.is_number_integer() && v.get<long long>() >= kMinSubgroupSize &&
+                 v.get<long long>() <= kMaxSubgroupSize
+             ? std::string()
+             : "must be an integer between 2 and 25 (the range of the A2/D3/D4 table)";
+}
+
+std::string coverageCheck(const json& v) {
+  return v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() > 0.0
+             ? std::string()
+             : "must be a number > 0 (the coverage factor k)";
+}
+
+std::string angleCheck(const json& v) {
+  const double limit = ActuatorErrors2::kMaxAngleDeg;
+  return v.is_number() && std::isfinite(v.get<double>()) && std::abs(v.get<double>()) <= limit
+             ? std::string()
+             : "must be a number within +-45 deg (an orientation error of the actuator)";
+}
+
+std::string originCheck(const json& v) {
+  const bool ok = v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number() &&
+                  std::isfinite(v[0].get<double>()) && std::isfinite(v[1].get<double>());
+  return ok ? std::string() : "must be [x, y] in mm";
+}
+
+const char* const kKinematicsPrefix = "studies.kinematics";
+
+}  // namespace
+
 const std::vector<SettingField>& KinematicsSettings::fields() {
+  static const std::vector<SettingField> machine = {valueField("origin_mm", originCheck),
+                                                    valueField("x_axis_angle_deg", angleCheck),
+                                                    valueField("y_axis_angle_deg", angleCheck)};
   static const std::vector<SettingField> spc = {
-      datasetField("dataset", ""), valueField("column", text()), valueField("subgroup"), valueField("lsl"),
-      valueField("usl"),           valueField("nominal"),        valueField("coverage")};
+      datasetField("dataset", ""),
+      valueField("column", text()),
+      valueField("subgroup", subgroupCheck),
+      valueField("lsl",
+                 [](const json& v) { return finiteNumber(v, "a number (the lower specification limit)"); }),
+      valueField("usl",
+                 [](const json& v) { return finiteNumber(v, "a number (the upper specification limit)"); }),
+      valueField("nominal", [](const json& v) { return finiteNumber(v, "a number (the desired value)"); }),
+      valueField("coverage", coverageCheck)};
   static const std::vector<SettingField> fromSpc = {
-      datasetField("x_dataset", ""),  datasetField("y_dataset", ""), valueField("position_column"),
-      valueField("deviation_column"), valueField("x_nominal_y"),     valueField("y_nominal_x"),
-      valueField("subgroup"),         valueField("coverage")};
+      datasetField("x_dataset", ""),
+      datasetField("y_dataset", ""),
+      valueField("position_column", text()),
+      valueField("deviation_column", text()),
+      valueField("x_nominal_y", [](const json& v) { return finiteNumber(v, "a number (mm)"); }),
+      valueField("y_nominal_x", [](const json& v) { return finiteNumber(v, "a number (mm)"); }),
+      valueField("subgroup", subgroupCheck),
+      valueField("coverage", coverageCheck)};
   /// Any CSV dataset: the YZ and ZX tests have their plane's columns, not a circular_test's.
   static const std::vector<SettingField> planes = {datasetField("xy", ""), datasetField("yz", ""),
                                                    datasetField("zx", "")};
   static const std::vector<SettingField> f = {
-      datasetField("dataset", dataset_kind::kCircularTest), valueField("simulated_machine"),
+      datasetField("dataset", dataset_kind::kCircularTest), blockField("simulated_machine", &machine),
       blockField("spc", &spc), blockField("from_spc", &fromSpc), blockField("planes", &planes)};
   return f;
+}
+
+void KinematicsSettings::checkBlock(const json& j, std::vector<SettingIssue>& issues) {
+  if (!j.is_object()) return;
+  const std::string prefix = kKinematicsPrefix;
+  if (const auto m = j.find("simulated_machine"); m != j.end() && m->is_object()) {
+    for (const char* key : {"origin_mm", "x_axis_angle_deg", "y_axis_angle_deg"})
+      if (!m->contains(key)) issues.push_back({prefix + ".simulated_machine." + key, "missing"});
+  }
+  if (const auto spc = j.find("spc"); spc != j.end() && spc->is_object()) {
+    for (const char* key : {"dataset", "column"})
+      if (!spc->contains(key)) issues.push_back({prefix + ".spc." + key, "missing"});
+    const bool lsl = spc->contains("lsl"), usl = spc->contains("usl");
+    if (lsl != usl) {
+      issues.push_back({prefix + ".spc." + (lsl ? "usl" : "lsl"), "give lsl and usl together"});
+    } else if (lsl && (*spc)["lsl"].is_number() && (*spc)["usl"].is_number() &&
+               !((*spc)["lsl"].get<double>() < (*spc)["usl"].get<double>())) {
+      issues.push_back({prefix + ".spc.lsl", "must be below usl"});
+    }
+  }
+}
+
+KinematicsSettings KinematicsSettings::fromJson(const json& j, const std::string& source) {
+  requireValid(j, kStudy, fields(), source);
+  std::vector<SettingIssue> issues;
+  checkBlock(j, issues);
+  if (!issues.empty()) throwFirst(issues, source);
+  KinematicsSettings s;
+  if (!j.is_object()) return s;
+  s.dataset = j.value("dataset", std::string());
+  if (const auto m = j.find("simulated_machine"); m != j.end()) {
+    SimulatedMachine machine;
+    machine.originXMm = (*m)["origin_mm"][0].get<double>();
+    machine.originYMm = (*m)["origin_mm"][1].get<double>();
+    machine.xAxisAngleDeg = (*m)["x_axis_angle_deg"].get<double>();
+    machine.yAxisAngleDeg = (*m)["y_axis_angle_deg"].get<double>();
+    s.simulatedMachine = machine;
+  }
+  if (const auto b = j.find("spc"); b != j.end()) {
+    Spc spc;
+    spc.dataset = (*b)["dataset"].get<std::string>();
+    spc.column = (*b)["column"].get<std::string>();
+    spc.subgroup = b->value("subgroup", spc.subgroup);
+    if (b->contains("lsl")) spc.lsl = (*b)["lsl"].get<double>();
+    if (b->contains("usl")) spc.usl = (*b)["usl"].get<double>();
+    if (b->contains("nominal")) spc.nominal = (*b)["nominal"].get<double>();
+    spc.coverage = b->value("coverage", spc.coverage);
+    s.spc = spc;
+  }
+  if (const auto b = j.find("from_spc"); b != j.end()) {
+    FromSpc f;
+    f.xDataset = b->value("x_dataset", std::string());
+    f.yDataset = b->value("y_dataset", std::string());
+    f.positionColumn = b->value("position_column", f.positionColumn);
+    f.deviationColumn = b->value("deviation_column", f.deviationColumn);
+    f.xNominalY = b->value("x_nominal_y", f.xNominalY);
+    f.yNominalX = b->value("y_nominal_x", f.yNominalX);
+    f.subgroup = b->value("subgroup", f.subgroup);
+    f.coverage = b->value("coverage", f.coverage);
+    s.fromSpc = f;
+  }
+  if (const auto b = j.find("planes"); b != j.end()) {
+    std::array<std::string, 3> ids;
+    for (const TestPlane plane : kTestPlanes)
+      ids[static_cast<std::size_t>(plane)] = b->value(planeName(plane), std::string());
+    s.planes = ids;
+  }
+  return s;
+}
+
+json KinematicsSettings::toJson() const {
+  json j = json::object();
+  if (!dataset.empty()) j["dataset"] = dataset;
+  if (simulatedMachine) {
+    // The three keys together (the block has no defaults).
+    j["simulated_machine"] = {{"origin_mm", {simulatedMachine->originXMm, simulatedMachine->originYMm}},
+                              {"x_axis_angle_deg", simulatedMachine->xAxisAngleDeg},
+                              {"y_axis_angle_deg", simulatedMachine->yAxisAngleDeg}};
+  }
+  if (spc) {
+    const Spc d;
+    json b = {{"dataset", spc->dataset}, {"column", spc->column}};
+    if (spc->subgroup != d.subgroup) b["subgroup"] = spc->subgroup;
+    if (spc->lsl) b["lsl"] = *spc->lsl;
+    if (spc->usl) b["usl"] = *spc->usl;
+    if (spc->nominal) b["nominal"] = *spc->nominal;
+    if (spc->coverage != d.coverage) b["coverage"] = spc->coverage;
+    j["spc"] = std::move(b);
+  }
+  if (fromSpc) {
+    const FromSpc d;
+    json b = json::object();
+    if (!fromSpc->xDataset.empty()) b["x_dataset"] = fromSpc->xDataset;
+    if (!fromSpc->yDataset.empty()) b["y_dataset"] = fromSpc->yDataset;
+    if (fromSpc->positionColumn != d.positionColumn) b["position_column"] = fromSpc->positionColumn;
+    if (fromSpc->deviationColumn != d.deviationColumn) b["deviation_column"] = fromSpc->deviationColumn;
+    if (fromSpc->xNominalY != d.xNominalY) b["x_nominal_y"] = fromSpc->xNominalY;
+    if (fromSpc->yNominalX != d.yNominalX) b["y_nominal_x"] = fromSpc->yNominalX;
+    if (fromSpc->subgroup != d.subgroup) b["subgroup"] = fromSpc->subgroup;
+    if (fromSpc->coverage != d.coverage) b["coverage"] = fromSpc->coverage;
+    j["from_spc"] = std::move(b);
+  }
+  if (planes) {
+    json b = json::object();
+    for (const TestPlane plane : kTestPlanes)
+      if (const std::string& id = (*planes)[static_cast<std::size_t>(plane)]; !id.empty())
+        b[planeName(plane)] = id;
+    j["planes"] = std::move(b);
+  }
+  return j;
+}
+
+bool KinematicsSettings::isValid(std::string* field, std::string* why) const {
+  // The same per-key checks as fields() and the same rules between keys as checkBlock, on the JSON the
+  // values write: one place knows them.
+  const json j = toJson();
+  std::vector<SettingIssue> issues;
+  checkSettingsBlock(j, kKinematicsPrefix, fields(), issues);
+  if (issues.empty()) checkBlock(j, issues);
+  if (issues.empty()) return true;
+  if (field) *field = issues.front().field;
+  if (why) *why = issues.front().message;
+  return false;
 }
 
 // ---- thermal ------------------------------------------------------------------------------------------
@@ -371,7 +549,7 @@ const std::vector<StudyType>& studyTypes() {
   static const std::vector<StudyType> types = {
       {SetupSettings::kStudy, &SetupSettings::fields(), nullptr},
       {MatchingSettings::kStudy, &MatchingSettings::fields(), nullptr},
-      {KinematicsSettings::kStudy, &KinematicsSettings::fields(), nullptr},
+      {KinematicsSettings::kStudy, &KinematicsSettings::fields(), nullptr, &KinematicsSettings::checkBlock},
       {ThermalSettings::kStudy, &ThermalSettings::fields(), nullptr},
       {DiagnosisStudySettings::kStudy, nullptr, &DiagnosisStudySettings::domains()}};
   return types;

@@ -10,6 +10,7 @@
 // kinematic_study.h, thermal_comparison.h, diagnosis_study.h. Every key is optional; a missing key
 // takes the default written here (a dataset id left empty: the study uses the project's first
 // dataset of the kind).
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -19,9 +20,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/kinematics/spc_actuator.h"
 #include "core/machine/controller_frame.h"
 #include "core/matching/matching.h"
 #include "core/setup/methods.h"
+#include "core/spc/spc.h"
 #include "core/thermal/thermal_model.h"
 
 namespace metrofit {
@@ -94,10 +97,58 @@ struct MatchingSettings {
   bool operator==(const MatchingSettings&) const = default;
 };
 
-/// studies.kinematics (core/study/kinematic_study.h reads the values: kinematicStudySettings).
+/// studies.kinematics (core/study/kinematic_study.h: what each key does; kinematicStudySettings converts
+/// these values for the study). The CLI's `spc` and `kinematic from-spc` option defaults are the blocks'.
 struct KinematicsSettings {
   static constexpr const char* kStudy = "kinematics";
+
+  /// "simulated_machine": the true errors of the simulated circular test ("origin_mm": [x, y],
+  /// "x_axis_angle_deg", "y_axis_angle_deg", all required when the block is given; |angle| <= 45).
+  struct SimulatedMachine {
+    double originXMm = 0.0, originYMm = 0.0;
+    double xAxisAngleDeg = 0.0, yAxisAngleDeg = 0.0;
+    bool operator==(const SimulatedMachine&) const = default;
+  };
+  /// "spc": the feature series charted on the SPC view ("dataset" and "column" required).
+  struct Spc {
+    std::string dataset;                            ///< "dataset": a CSV dataset id
+    std::string column;                             ///< "column"
+    int subgroup = SpcOptions{}.subgroupSize;       ///< "subgroup" (2..25)
+    std::optional<double> lsl, usl;                 ///< "lsl", "usl": both or neither, lsl < usl
+    std::optional<double> nominal;                  ///< "nominal"
+    double coverage = SpcOptions{}.coverageFactor;  ///< "coverage" (> 0)
+    bool operator==(const Spc&) const = default;
+  };
+  /// "from_spc": the chain from the SPC regression of two machined edges to the actuator errors.
+  struct FromSpc {
+    static constexpr const char* kPositionColumn = "position_mm";
+    static constexpr const char* kDeviationColumn = "deviation_mm";
+    std::string xDataset, yDataset;                         ///< "x_dataset", "y_dataset" ("" = not chosen)
+    std::string positionColumn = kPositionColumn;           ///< "position_column"
+    std::string deviationColumn = kDeviationColumn;         ///< "deviation_column"
+    double xNominalY = 0.0;                                 ///< "x_nominal_y" (mm)
+    double yNominalX = 0.0;                                 ///< "y_nominal_x" (mm)
+    int subgroup = SpcActuatorOptions{}.subgroupSize;       ///< "subgroup" (2..25)
+    double coverage = SpcActuatorOptions{}.coverageFactor;  ///< "coverage" (> 0)
+    bool operator==(const FromSpc&) const = default;
+  };
+
+  std::string dataset;  ///< "dataset": a circular_test dataset id ("" = the first)
+  std::optional<SimulatedMachine> simulatedMachine;
+  std::optional<Spc> spc;
+  std::optional<FromSpc> fromSpc;  ///< given (possibly with no edge chosen yet) or not
+  /// "planes": {"xy", "yz", "zx"} circular tests ("" = not chosen), index TestPlane; given or not.
+  std::optional<std::array<std::string, 3>> planes;
+
   static const std::vector<SettingField>& fields();
+  /// The rules between keys of a block (lsl with usl, lsl < usl, spc's dataset and column, the simulated
+  /// machine's three keys and its angles) for a block whose keys fields() accepts; the validator runs
+  /// them too.
+  static void checkBlock(const nlohmann::json& study, std::vector<SettingIssue>& issues);
+  static KinematicsSettings fromJson(const nlohmann::json& study, const std::string& source = {});
+  nlohmann::json toJson() const;
+  bool isValid(std::string* field, std::string* why) const;
+  bool operator==(const KinematicsSettings&) const = default;
 };
 
 /// studies.thermal (core/study/thermal_comparison.h).
@@ -130,6 +181,8 @@ struct StudyType {
   const char* name;
   const std::vector<SettingField>* fields;                          ///< nullptr: the diagnosis
   const std::map<std::string, std::vector<SettingField>>* domains;  ///< the diagnosis's blocks
+  /// The rules between keys (nullptr: none), run on a block whose keys are all good.
+  void (*checkBlock)(const nlohmann::json& study, std::vector<SettingIssue>& issues) = nullptr;
 };
 const std::vector<StudyType>& studyTypes();
 

@@ -24,6 +24,7 @@
 #include "core/kinematics/measured_path.h"
 #include "core/kinematics/part21.h"
 #include "core/sim/circular_sim.h"
+#include "core/study/study_settings.h"
 #include "testsupport.h"
 
 namespace metrofit {
@@ -699,6 +700,31 @@ TEST(KinematicCli, DemoDataIsWhatTheDocumentedCommandsWrite) {
   EXPECT_NEAR(id.errors.yAxisAngleDeg, -0.02, 1e-3);
   EXPECT_NEAR(id.errors.originMm.x(), 0.004, 1e-3);
   EXPECT_NEAR(id.errors.originMm.y(), -0.003, 1e-3);
+}
+
+// The option defaults are the project study's (KinematicsSettings, the one owner of studies.kinematics):
+// `spc` as studies.kinematics.spc, `kinematic from-spc` as studies.kinematics.from_spc.
+TEST(KinematicCli, OptionDefaultsAreTheStudysDefaults) {
+  test::TempDir tmp;
+  const auto shown = [](double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  };
+  const test::CliRun fromSpc = test::cli("kinematic from-spc --help", tmp);
+  ASSERT_EQ(fromSpc.code, 0) << fromSpc.err;
+  const KinematicsSettings::FromSpc f;
+  for (const std::string& option :
+       {"--position-column TEXT=" + f.positionColumn, "--deviation-column TEXT=" + f.deviationColumn,
+        "--x-nominal-y FLOAT=" + shown(f.xNominalY), "--y-nominal-x FLOAT=" + shown(f.yNominalX),
+        "--subgroup INT:INT in [2 - 25]=" + std::to_string(f.subgroup),
+        "--coverage FLOAT:POSITIVE=" + shown(f.coverage)})
+    EXPECT_NE(fromSpc.out.find(option), std::string::npos) << option << "\n" << fromSpc.out;
+  const test::CliRun spc = test::cli("spc --help", tmp);
+  ASSERT_EQ(spc.code, 0) << spc.err;
+  const std::string coverage = "--coverage FLOAT:POSITIVE=" + shown(KinematicsSettings::Spc{}.coverage);
+  EXPECT_NE(spc.out.find(coverage), std::string::npos) << spc.out;
+  EXPECT_NE(spc.out.find("--subgroup INT REQUIRED"), std::string::npos) << "the contract: --subgroup N";
 }
 
 }  // namespace
