@@ -310,7 +310,102 @@ bool isDecimalForm(std::string_view s, char sep) {
   return i == s.size();
 }
 
+/// A cell that reads as a number in either decimal form ("12", "-0.5", "3,25", "1e-3"): the test the
+/// header detection uses to tell a row of values from a row of names.
+bool looksNumeric(std::string_view s) {
+  s = trimBlanks(s);
+  if (s.size() >= 2 && s.front() == '"' && s.back() == '"') s = trimBlanks(s.substr(1, s.size() - 2));
+  if (s.empty()) return false;
+  std::string t(s);
+  if (t.find(',') != std::string::npos) {
+    if (t.find('.') != std::string::npos || t.find(',') != t.rfind(',')) return false;
+    t[t.find(',')] = '.';
+  }
+  double v = 0.0;
+  const char* b = t.data();
+  if (*b == '+') ++b;
+  const auto [ptr, ec] = std::from_chars(b, t.data() + t.size(), v);
+  return ec == std::errc() && ptr == t.data() + t.size();
+}
+
+/// The fields of one physical line split at `delimiter` outside double quotes (no unquoting: enough
+/// to count fields and look at their form).
+std::vector<std::string_view> splitLine(std::string_view line, char delimiter) {
+  std::vector<std::string_view> fields;
+  bool inQuotes = false;
+  std::size_t from = 0;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (line[i] == '"') inQuotes = !inQuotes;
+    if (!inQuotes && line[i] == delimiter) {
+      fields.push_back(line.substr(from, i - from));
+      from = i + 1;
+    }
+  }
+  fields.push_back(line.substr(from));
+  return fields;
+}
+
+char lineDelimiter(std::string_view line) {
+  std::size_t comma = 0, semicolon = 0, tab = 0;
+  bool inQuotes = false;
+  for (char c : line) {
+    if (c == '"') inQuotes = !inQuotes;
+    if (inQuotes) continue;
+    comma += c == ',';
+    semicolon += c == ';';
+    tab += c == '\t';
+  }
+  if (semicolon > comma && semicolon >= tab) return ';';
+  if (tab > comma && tab > semicolon) return '\t';
+  return ',';
+}
+
 }  // namespace
+
+long detectCsvPreamble(std::string_view text, const CsvReadOptions& options) {
+  const std::string_view prefix =
+      options.commentPrefix.empty() ? std::string_view("#") : options.commentPrefix;
+  if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  struct Line {
+    long index;  // 0-based physical line
+    std::string_view text;
+  };
+  // The first lines that are neither blank nor comments (a header far down is not looked for).
+  constexpr std::size_t kLookAhead = 60;
+  std::vector<Line> lines;
+  std::size_t pos = 0;
+  long index = 0;
+  while (pos < text.size() && lines.size() < kLookAhead) {
+    const std::size_t end = text.find('\n', pos);
+    std::string_view line =
+        text.substr(pos, end == std::string_view::npos ? std::string_view::npos : end - pos);
+    pos = end == std::string_view::npos ? text.size() : end + 1;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    const std::string_view body = trimBlanks(line);
+    if (!body.empty() && !body.starts_with(prefix)) lines.push_back({index, line});
+    ++index;
+  }
+  if (lines.size() < 2) return 0;
+  // The header is the first row whose fields are names above rows of numbers: at least two fields,
+  // most of them not numbers, and the next row has as many fields, most of them numbers.
+  for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+    const char d = options.dialect.delimiter ? options.dialect.delimiter : lineDelimiter(lines[i].text);
+    const auto names = splitLine(lines[i].text, d);
+    if (names.size() < 2) continue;
+    std::size_t nameCount = 0;
+    for (std::string_view f : names) nameCount += !looksNumeric(f) && !trimBlanks(f).empty();
+    if (2 * nameCount <= names.size()) continue;
+    const auto values = splitLine(lines[i + 1].text, d);
+    if (values.size() != names.size()) continue;
+    std::size_t numberCount = 0;
+    for (std::string_view f : values) numberCount += looksNumeric(f);
+    if (2 * numberCount <= values.size()) continue;
+    // The first row of the file is the header: the reader's own rule (comments and blank lines
+    // before it skipped) gives the same; otherwise skip every line above it.
+    return i == 0 ? 0 : lines[i].index;
+  }
+  return 0;
+}
 
 char parseCsvDelimiter(std::string_view text, const std::string& option) {
   if (text == "auto") return 0;
@@ -381,11 +476,20 @@ CsvTable parseCsv(std::string_view text, const std::string& source, const CsvRea
 
   const std::string_view prefix =
       options.commentPrefix.empty() ? std::string_view("#") : options.commentPrefix;
-  // A preamble of header_lines lines is skipped whatever it holds.
+  // A preamble of header_lines lines is skipped whatever it holds; detected (-1): the title lines
+  // above the first row of names over a row of numbers (detectCsvPreamble), kept as comments.
   std::size_t start = 0;
   long firstLine = 1;
-  for (int k = 0; k < options.headerLines && start < text.size(); ++k, ++firstLine) {
+  const long preamble = options.headerLines >= 0 ? options.headerLines : detectCsvPreamble(text, options);
+  for (long k = 0; k < preamble && start < text.size(); ++k, ++firstLine) {
     const std::size_t nl = text.find('\n', start);
+    if (options.headerLines < 0) {
+      std::string_view line =
+          text.substr(start, nl == std::string_view::npos ? std::string_view::npos : nl - start);
+      line = trimBlanks(line);
+      if (line.starts_with(prefix)) line = trimBlanks(line.substr(prefix.size()));
+      if (!line.empty()) table.comments_.emplace_back(line);
+    }
     start = nl == std::string_view::npos ? text.size() : nl + 1;
   }
   if (text.substr(start).find_first_not_of(" \t\r\n") == std::string_view::npos) {

@@ -56,7 +56,9 @@ struct CsvReadOptions {
   /// (0: the log must have a time column). Other readers ignore it.
   double sampleIntervalMin = 0.0;
   /// Lines before the column-name row, skipped whatever they hold (an instrument's preamble);
-  /// -1: detect (blank lines and comment lines before the header are skipped).
+  /// -1: detect: blank lines and comment lines before the header are skipped, and so are title lines
+  /// above the header when the header is not the first row (detectCsvPreamble: the header is the
+  /// first row whose fields are mostly names above a row of as many fields, mostly numbers).
   int headerLines = -1;
   /// What starts a comment line before the header; empty: "#".
   std::string commentPrefix;
@@ -95,7 +97,8 @@ class CsvTable {
 
   const std::string& source() const { return source_; }
   const std::vector<std::string>& header() const { return header_; }
-  const std::vector<std::string>& comments() const { return comments_; }  ///< '#' lines, without '#'
+  /// '#' lines without '#', and the title lines a detected header skipped (CsvReadOptions::headerLines).
+  const std::vector<std::string>& comments() const { return comments_; }
   std::size_t rowCount() const { return rows_.size(); }
   std::size_t columnCount() const { return header_.size(); }
   /// The dialect the file was read with (detection resolved: both members are set).
@@ -146,6 +149,13 @@ class CsvTable {
   long headerLine_ = 0;
   std::vector<CsvRowProblem> skipped_;
 };
+
+/// The lines before the header that CsvReadOptions::headerLines = -1 skips beyond comments and blank
+/// lines: 0 when the first row that is not blank or a comment is the header, else the 0-based line of
+/// the first row whose fields (split at the given delimiter, or the line's own most frequent of ',', ';',
+/// tab) are at least two, mostly not numbers, and whose next row has as many fields, mostly numbers in
+/// either decimal form. Only the first 60 such rows are looked at; none found: 0.
+long detectCsvPreamble(std::string_view text, const CsvReadOptions& options);
 
 /// Parses CSV text in the given dialect (detected where 0) and applies the column mapping;
 /// `source` names the file in error messages.

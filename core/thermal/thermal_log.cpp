@@ -27,6 +27,50 @@ std::string unitOf(const std::string& name) {
   return {};
 }
 
+/// The unit a column names in brackets at its end, as German and Polish spreadsheets and data loggers
+/// write it ("Verlagerung K3 [µm]", "Temperatur T1 [°C]", "Drehzahl [1/min]", "Temperatura (°C)"):
+/// the unit as core spells it and the factor to that unit ("[mm]" of a displacement: "um", 1000;
+/// "[nm]": "um", 0.001). Empty when the name ends in no bracket or an unknown unit.
+struct BracketUnit {
+  std::string unit;
+  double factor = 1.0;
+};
+
+bool isDisplacementName(const std::string& lowerName) {
+  for (const char* w : {"disp", "verlagerung", "verschiebung", "auslenkung", "przemieszczenie", "przesuni",
+                        "odkszta", "deformation", "delta", "ch"})
+    if (lowerName.starts_with(w) || (std::string(w).size() > 3 && lowerName.find(w) != std::string::npos))
+      return true;
+  return false;
+}
+
+BracketUnit bracketUnit(const std::string& name) {
+  std::string n = name;
+  while (!n.empty() && std::isspace(static_cast<unsigned char>(n.back()))) n.pop_back();
+  if (n.empty() || (n.back() != ']' && n.back() != ')')) return {};
+  const char open = n.back() == ']' ? '[' : '(';
+  const auto at = n.rfind(open);
+  if (at == std::string::npos) return {};
+  std::string u = n.substr(at + 1, n.size() - at - 2);
+  u.erase(std::remove_if(u.begin(), u.end(), [](unsigned char c) { return std::isspace(c); }), u.end());
+  const std::string l = lower(u);
+  if (l == "\xc2\xb5m" || l == "\xce\xbcm" || l == "um" || l == "mym" || l == "mikron") return {"um", 1.0};
+  if (l == "mm")
+    return isDisplacementName(lower(n.substr(0, at))) ? BracketUnit{"um", 1000.0} : BracketUnit{"mm", 1.0};
+  if (l == "nm") return {"um", 0.001};
+  if (l == "\xc2\xb0"
+           "c" ||
+      l == "degc" || l == "grad" || l == "\xc2\xb0" || l == "c")
+    return {"degC", 1.0};
+  if (l == "k") return {"K", 1.0};
+  if (l == "1/min" || l == "u/min" || l == "rpm" || l == "min-1" || l == "min^-1" || l == "obr/min" ||
+      l == "min\xe2\x81\xbb\xc2\xb9")
+    return {"rpm", 1.0};
+  if (l == "\xc2\xb5\xce\xb5" || l == "ue" || l == "microstrain") return {"ue", 1.0};
+  if (l == "w") return {"W", 1.0};
+  return {};
+}
+
 }  // namespace
 
 ChannelKind channelKind(const ThermalChannel& c) {
@@ -38,7 +82,16 @@ ChannelKind channelKind(const ThermalChannel& c) {
   if (u == "rpm") return ChannelKind::Speed;
   if (n.starts_with("disp") || n.starts_with("delta") || n.starts_with("ch"))
     return ChannelKind::Displacement;
-  if (n.starts_with("fbg") || n.starts_with("strain")) return ChannelKind::Strain;
+  if (n.starts_with("fbg") || n.starts_with("strain") || n.starts_with("dehnung") || n.starts_with("odkszta"))
+    return ChannelKind::Strain;
+  // German and Polish names (Drehzahl / Prędkość obrotowa, Verlagerung / Przemieszczenie, Temperatur /
+  // Temperatura), before the "t..." rule that would take "Drehzahl"'s neighbours for temperatures.
+  if (n.find("drehzahl") != std::string::npos ||
+      n.find("pr\xc4\x99"
+             "dko\xc5\x9b\xc4\x87") != std::string::npos ||
+      n.find("predkosc") != std::string::npos || n.find("obroty") != std::string::npos)
+    return ChannelKind::Speed;
+  if (isDisplacementName(n)) return ChannelKind::Displacement;
   if (n.starts_with("t") || n.find("temp") != std::string::npos) return ChannelKind::Temperature;
   if (n.find("rpm") != std::string::npos || n.find("speed") != std::string::npos) return ChannelKind::Speed;
   return ChannelKind::Other;
@@ -139,6 +192,13 @@ ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows, double 
     ch.name = table.header()[c];
     ch.unit = unitOf(ch.name);
     ch.values = table.numericColumn(c);
+    if (ch.unit.empty()) {
+      // "Verlagerung K3 [mm]": read in µm like every displacement of the log (one axis, one unit).
+      const BracketUnit b = bracketUnit(ch.name);
+      ch.unit = b.unit;
+      if (b.factor != 1.0)
+        for (double& v : ch.values) v *= b.factor;
+    }
     log.channels.push_back(std::move(ch));
   }
   return log;

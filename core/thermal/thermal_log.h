@@ -14,7 +14,9 @@ class CsvTable;
 
 struct ThermalChannel {
   std::string name;            ///< column name as in the file, e.g. "T1", "disp_z_um"
-  std::string unit;            ///< derived from the name suffix: "um", "mm", "degC", "rpm", ... or ""
+  std::string unit;            ///< from the name suffix ("_um", "_degC", "_rpm") or a trailing bracket
+                               ///< ("[µm]", "[°C]", "[1/min]"; a displacement in "[mm]" or "[nm]" is
+                               ///< read in µm: unit "um", values converted), else ""
   std::vector<double> values;  ///< one per row
 };
 

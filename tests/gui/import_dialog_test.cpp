@@ -553,10 +553,10 @@ TEST_F(ImportDialogTest, BallbarExportIsACircularTestByItsRoles) {
   ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
   dialog.setFile(file);
   EXPECT_EQ(dialog.kind(), QStringLiteral("circular-test"));
-  EXPECT_FALSE(dialog.canImport());  // the readers' columns are not there yet
-  dialog.setRole(QStringLiteral("Winkel [Grad]"), QStringLiteral("angle_deg"));
-  dialog.setRole(QStringLiteral("Abweichung [um]"), QStringLiteral("deviation_um"));
-  dialog.setRole(QStringLiteral("Richtung"), QStringLiteral("direction"));
+  // The German names are mapped to the readers' roles without being asked (core/project/import_guess.h).
+  EXPECT_EQ(dialog.role(QStringLiteral("Winkel [Grad]")), QStringLiteral("angle_deg"));
+  EXPECT_EQ(dialog.role(QStringLiteral("Abweichung [um]")), QStringLiteral("deviation_um"));
+  EXPECT_EQ(dialog.role(QStringLiteral("Richtung")), QStringLiteral("direction"));
   ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
   doc_.addDataset(dialog.dataset());
   const DatasetRef* ref = doc_.project().dataset("ballbar");
@@ -833,6 +833,73 @@ TEST_F(ImportDialogTest, EmbedCopiesIntoTheDataFolderAndRefusesToOverwrite) {
   ProjectDocument untitled;
   ImportDialog unsaved(untitled.project(), untitled.projectPathForDatasets());
   EXPECT_FALSE(unsaved.findChild<QWidget*>(QStringLiteral("importEmbed"))->isEnabled());
+}
+
+// Issue 28 item 1: files as German and Polish shops write them, written here from those conventions.
+constexpr const char* kTitledGermanLog =
+    "Spindel-W\xC3\xA4rmegang DMU 50, Messung vom 01.05.2024\n"
+    "Zeit [min];Temperatur T1 [\xC2\xB0"
+    "C];Verlagerung K3 [\xC2\xB5m];Drehzahl [1/min]\n"
+    "0;20,5;0,0;0\n"
+    "0,25;20,7;1,25;1250\n"
+    "0,5;21,0;2,5;1250\n"
+    "0,75;21,2;3,0;1250\n";
+
+TEST_F(ImportDialogTest, ATitleLineAboveAGermanHeaderIsFoundAndTheRolesAreMapped) {
+  const QString path = dir_.filePath(QStringLiteral("Spindel_Waermegang.csv"));
+  writeFile(path, kTitledGermanLog);
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(path);
+  EXPECT_EQ(dialog.kind(), QStringLiteral("thermal-log"));
+  EXPECT_EQ(dialog.role(QStringLiteral("Zeit [min]")), QStringLiteral("time_min"));
+  EXPECT_EQ(dialog.role(QStringLiteral("Drehzahl [1/min]")), QStringLiteral("spindle_rpm"));
+  EXPECT_EQ(dialog.role(QStringLiteral("Verlagerung K3 [\xC2\xB5m]")), QString());
+  EXPECT_TRUE(dialog.rowProblems().isEmpty()) << dialog.rowProblems().join(QLatin1Char('\n')).toStdString();
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  const QString found = dialog.findChild<QLabel*>(QStringLiteral("importDetected"))->text();
+  EXPECT_TRUE(found.contains(QStringLiteral("line 2"))) << found.toStdString();
+
+  // Forcing the title to be the header makes it another kind; back to the right line, the kind and the
+  // roles are guessed again.
+  dialog.setHeaderLines(0);
+  EXPECT_EQ(dialog.kind(), QStringLiteral("feature-series"));
+  dialog.setHeaderLines(1);
+  EXPECT_EQ(dialog.kind(), QStringLiteral("thermal-log"));
+  EXPECT_EQ(dialog.role(QStringLiteral("Zeit [min]")), QStringLiteral("time_min"));
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  // A kind the user chose stays.
+  dialog.setKind(QStringLiteral("feature-series"));
+  dialog.setHeaderLines(-1);
+  EXPECT_EQ(dialog.kind(), QStringLiteral("feature-series"));
+
+  // Imported: the log reads with its units, the speed is the spindle speed.
+  dialog.setKind(QStringLiteral("thermal-log"));
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  importButton(dialog)->click();
+  ASSERT_EQ(dialog.result(), QDialog::Accepted);
+  doc_.addDataset(dialog.dataset());
+  const ThermalLog log = readThermalLog(resolveDatasetPath(doc_.fileName().toStdString(), dialog.dataset()),
+                                        3, dialog.dataset().csv);
+  EXPECT_EQ(log.rows(), 4u);
+  EXPECT_DOUBLE_EQ(log.timeMin[3], 0.75);
+  ASSERT_GE(log.indexOf("spindle_rpm"), 0);
+  EXPECT_EQ(channelKind(log.channel("spindle_rpm")), ChannelKind::Speed);
+  EXPECT_EQ(log.channel("Verlagerung K3 [\xC2\xB5m]").unit, "um");
+  EXPECT_EQ(log.channel("Temperatur T1 [\xC2\xB0"
+                        "C]")
+                .unit,
+            "degC");
+}
+
+TEST_F(ImportDialogTest, TheRealWenzelPointsWithoutExtensionAreProbePointsWithTheirIdsMapped) {
+  const auto real = test::realData("cmm-wenzel-lens-points/SPH1_1");
+  if (!std::filesystem::exists(real)) GTEST_SKIP() << "no real data at " << real;
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(QString::fromStdString(real.string()));
+  EXPECT_EQ(dialog.kind(), QStringLiteral("probe-points"));
+  EXPECT_EQ(dialog.role(QStringLiteral("ID")), QStringLiteral("id"));
+  EXPECT_EQ(dialog.role(QStringLiteral("x")), QStringLiteral("px"));
+  EXPECT_EQ(dialog.role(QStringLiteral("z")), QStringLiteral("pz"));
 }
 
 }  // namespace

@@ -30,6 +30,7 @@
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
 #include "core/project/datasets.h"
+#include "core/project/import_guess.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
 #include "core/study/setup_study.h"
@@ -75,27 +76,6 @@ QString decimalText(char c) {
   }
 }
 
-/// The physical line (1-based) of the header and the number of '#' comment lines before it.
-std::pair<long, int> headerLine(const std::string& text) {
-  long line = 0;
-  int comments = 0;
-  std::size_t pos = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
-  while (pos < text.size()) {
-    ++line;
-    const std::size_t nl = text.find('\n', pos);
-    std::string_view l(text.data() + pos, (nl == std::string::npos ? text.size() : nl) - pos);
-    pos = nl == std::string::npos ? text.size() : nl + 1;
-    const auto first = l.find_first_not_of(" \t\r");
-    if (first == std::string_view::npos) continue;
-    if (l[first] == '#') {
-      ++comments;
-      continue;
-    }
-    return {line, comments};
-  }
-  return {0, comments};
-}
-
 /// What a role means to the readers (the combo box items' tooltips).
 QString roleDescription(const QString& role) {
   static const QMap<QString, const char*> text{
@@ -110,6 +90,7 @@ QString roleDescription(const QString& role) {
       {QStringLiteral("disp_z_um"),
        QT_TRANSLATE_NOOP("metrofit::ImportDialog", "displacement in Z in µm (a target)")},
       {QStringLiteral("T_amb"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "ambient temperature in °C")},
+      {QStringLiteral("spindle_rpm"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "spindle speed in 1/min")},
       {QStringLiteral("id"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "point id")},
       {QStringLiteral("surface"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "surface name")},
       {QStringLiteral("qx"), QT_TRANSLATE_NOOP("metrofit::ImportDialog", "nominal point in mm")},
@@ -308,24 +289,25 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
   connect(kind_, &QComboBox::currentIndexChanged, this, [this] {
     if (updating_) return;
+    kindChosen_ = true;       // the user's choice: no longer re-guessed when the dialect changes
     rebuildMapping(header_);  // the role suggestions are the kind's
     guessRoles();
     revalidate();
   });
   connect(delimiter_, &QComboBox::currentIndexChanged, this, [this] {
-    if (!updating_) revalidate();
+    if (!updating_) reguessKind();
   });
   connect(decimal_, &QComboBox::currentIndexChanged, this, [this] {
-    if (!updating_) revalidate();
+    if (!updating_) reguessKind();
   });
   connect(id_, &QLineEdit::textChanged, this, [this] {
     if (!updating_) revalidate();
   });
   connect(headerLines_, &QSpinBox::valueChanged, this, [this] {
-    if (!updating_) revalidate();
+    if (!updating_) reguessKind();
   });
   connect(comment_, &QLineEdit::textChanged, this, [this] {
-    if (!updating_) revalidate();
+    if (!updating_) reguessKind();
   });
   for (QCheckBox* box : {skipBadRows_, embed_})
     connect(box, &QCheckBox::toggled, this, [this] {
@@ -344,41 +326,42 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
 }
 
 QString ImportDialog::guessKind(const QString& path, const QByteArray& head) {
-  const QString suffix = QFileInfo(path).suffix().toLower();
-  const std::string text = head.toStdString();
-  if (suffix == QLatin1String("json")) return QStringLiteral("setup-model");
-  if (suffix == QLatin1String("dmi") || suffix == QLatin1String("dms") || suffix == QLatin1String("dmis") ||
-      setup::looksLikeDmis(text))
-    return QStringLiteral("dmis");
-  // CMM text reports (OGP step / summary reports, plain or RTF; PC-DMIS text reports): by content.
-  if (looksLikeCmmTextReport(text)) return QStringLiteral("cmm-report");
-  if (looksLikeHoleTable(text)) return QStringLiteral("hole-table");
-  // A CSV file: by its column names.
-  const auto [line, comments] = headerLine(text);
-  (void)comments;
-  QString header;
-  if (line > 0) {
-    const QStringList lines = QString::fromUtf8(head).split(QLatin1Char('\n'));
-    if (line - 1 < lines.size()) header = lines[static_cast<int>(line - 1)].toLower();
+  return QString::fromStdString(guessDatasetKind(path.toStdString(), head.toStdString()));
+}
+
+void ImportDialog::reguessKind() {
+  // The kind follows what the file turns out to be once the dialect or the header line is right
+  // (a title line above the header, a ';' file read with ','), until the user chooses one.
+  if (!kindChosen_ && readError_.isEmpty() && !text_.empty()) {
+    CsvReadOptions o;
+    o.dialect.delimiter = static_cast<char>(delimiter_->currentData().toInt());
+    o.dialect.decimal = static_cast<char>(decimal_->currentData().toInt());
+    o.headerLines = headerLines_->value();
+    o.commentPrefix = comment_->text().trimmed().toStdString();
+    const QString guessed = QString::fromStdString(
+        guessDatasetKind(file_.toStdString(), std::string_view(text_).substr(0, 64 * 1024), o));
+    const int k = kind_->findData(guessed);
+    if (k >= 0 && k != kind_->currentIndex()) {
+      {
+        const QSignalBlocker block(kind_);
+        kind_->setCurrentIndex(k);
+      }
+      roles_.clear();
+      revalidate();
+      rebuildMapping(header_);
+      guessRoles();
+    }
   }
-  const auto has = [&header](const char* name) { return header.contains(QLatin1String(name)); };
-  if (has("nominal") && has("measured")) return QStringLiteral("cmm-report");
-  if (has("x_cmd") || has("x_meas")) return QStringLiteral("circular-test");
-  // A ballbar export: angle and radial deviation.
-  if ((has("angle") || has("winkel")) && (has("dev") || has("abw"))) return QStringLiteral("circular-test");
-  if (has("qx") && has("px")) return QStringLiteral("probe-points");
-  if (has("time") || has("zeit") || has("czas") || has("temp") || has("disp"))
-    return QStringLiteral("thermal-log");
-  return QStringLiteral("feature-series");
+  revalidate();
 }
 
 QStringList ImportDialog::rolesForKind(const QString& kind) {
   if (kind == QLatin1String("thermal-log"))
-    return {QStringLiteral("time_s"),    QStringLiteral("time_min"),  QStringLiteral("time_h"),
-            QStringLiteral("disp_x_um"), QStringLiteral("disp_y_um"), QStringLiteral("disp_z_um"),
-            QStringLiteral("T1"),        QStringLiteral("T2"),        QStringLiteral("T3"),
-            QStringLiteral("T4"),        QStringLiteral("T5"),        QStringLiteral("T6"),
-            QStringLiteral("T_amb")};
+    return {QStringLiteral("time_s"),    QStringLiteral("time_min"),   QStringLiteral("time_h"),
+            QStringLiteral("disp_x_um"), QStringLiteral("disp_y_um"),  QStringLiteral("disp_z_um"),
+            QStringLiteral("T1"),        QStringLiteral("T2"),         QStringLiteral("T3"),
+            QStringLiteral("T4"),        QStringLiteral("T5"),         QStringLiteral("T6"),
+            QStringLiteral("T_amb"),     QStringLiteral("spindle_rpm")};
   if (kind == QLatin1String("probe-points"))
     return {QStringLiteral("id"), QStringLiteral("surface"), QStringLiteral("qx"), QStringLiteral("qy"),
             QStringLiteral("qz"), QStringLiteral("px"),      QStringLiteral("py"), QStringLiteral("pz"),
@@ -397,9 +380,14 @@ QStringList ImportDialog::rolesForKind(const QString& kind) {
 
 void ImportDialog::browse() {
   const QString start = file_.isEmpty() ? QFileInfo(projectPath_).path() : QFileInfo(file_).path();
+  // All files first: CMM exports and data loggers often write files without an extension (a Wenzel
+  // point file "SPH1_1"), which the data-file filter would hide.
+  QString selected = tr("All files (*)");
   const QString path = QFileDialog::getOpenFileName(
       this, tr("Import data"), start,
-      tr("Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)"));
+      tr("All files (*)") + QStringLiteral(";;") +
+          tr("Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.dfq)"),
+      &selected);
   if (!path.isEmpty()) setFile(path);
 }
 
@@ -420,6 +408,7 @@ void ImportDialog::setFile(const QString& path) {
         b7(skipBadRows_), b8(taMeaning_), b9(taSign_);
     fileEdit_->setText(QDir::toNativeSeparators(file_));
     fileEdit_->setToolTip(fileEdit_->text());
+    kindChosen_ = false;
     const int k = kind_->findData(guessKind(file_, QByteArray::fromStdString(text_.substr(0, 64 * 1024))));
     if (k >= 0) kind_->setCurrentIndex(k);
     delimiter_->setCurrentIndex(0);
@@ -568,8 +557,23 @@ void ImportDialog::importNow() {
 }
 
 void ImportDialog::guessRoles() {
-  // Only what is certain: a thermal log's time column when the file names its unit.
-  if (kind() != QLatin1String("thermal-log") || header_.empty()) return;
+  if (header_.empty()) return;
+  // Core's suggestions (core/project/import_guess.h): names matched ignoring case, in English, German
+  // and Polish, with the unit from the bracket; a column the user gave a role keeps it.
+  bool changed = false;
+  for (const auto& [role, column] : suggestColumnRoles(kind().toStdString(), header_)) {
+    const QString c = QString::fromStdString(column);
+    const QString r = QString::fromStdString(role);
+    if (!roles_.value(c).isEmpty()) continue;
+    bool used = false;
+    for (auto it = roles_.cbegin(); it != roles_.cend(); ++it) used = used || it.value() == r;
+    if (used) continue;
+    roles_[c] = r;
+    changed = true;
+  }
+  if (changed) rebuildMapping(header_);
+  // A thermal log's time column when the file names its unit in another way ("t (s)", "t_s").
+  if (kind() != QLatin1String("thermal-log")) return;
   for (const std::string& c : header_) {
     if (c == "time_s" || c == "time_min" || c == "time_h") return;
     if (!roles_.value(QString::fromStdString(c)).isEmpty()) {

@@ -104,6 +104,8 @@ class ImportDialog : public QDialog {
   void browse();
   void rebuildMapping(const std::vector<std::string>& header);
   void guessRoles();
+  /// Guesses the kind again with the dialect and header lines shown, unless the user chose one.
+  void reguessKind();
   void revalidate();
   void showRawPreview();
   void fillPreview(const CsvTable& table);
@@ -120,6 +122,7 @@ class ImportDialog : public QDialog {
   QString problem_;
   DatasetRef dataset_;
   bool updating_ = false;
+  bool kindChosen_ = false;  ///< the user chose the kind: it is not guessed again
 
   QLineEdit* fileEdit_;
   QComboBox* kind_;
