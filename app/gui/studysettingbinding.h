@@ -12,6 +12,7 @@
 
 class QComboBox;
 class QSpinBox;
+class QDoubleSpinBox;
 
 namespace metrofit {
 
@@ -23,5 +24,10 @@ void bindStudySetting(ProjectDocument* document, QComboBox* combo, const QString
 /// A spin box holding an integer; `writeUnsigned` writes a JSON unsigned number (seeds).
 void bindStudySetting(ProjectDocument* document, QSpinBox* spin, const QString& study, const QString& key,
                       std::function<qint64()> effective, bool writeUnsigned, const QString& undoText);
+
+/// A double spin box holding a number (written as a JSON number). Typing merges into one undo step
+/// until editingFinished; a value equal to `effective` at the box's decimals is not written.
+void bindStudySetting(ProjectDocument* document, QDoubleSpinBox* spin, const QString& study,
+                      const QString& key, std::function<double()> effective, const QString& undoText);
 
 }  // namespace metrofit
