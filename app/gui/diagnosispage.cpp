@@ -898,8 +898,12 @@ void DiagnosisPage::fillControls() {
   // The numbers: what the study holds (clamped to the box), else the default.
   const auto show = [&](QDoubleSpinBox* box, const char* key, double fallback) {
     const nlohmann::json v = document_->studyValue(study, QString::fromLatin1(key));
+    const double shown =
+        std::clamp(v.is_number() ? v.get<double>() : fallback, box->minimum(), box->maximum());
+    // Unchanged: left alone, so that typing in the box is not disturbed by its own edit.
+    if (std::abs(box->value() - shown) < 0.5 * std::pow(10.0, -box->decimals())) return;
     const QSignalBlocker blocker(box);
-    box->setValue(v.is_number() ? v.get<double>() : fallback);
+    box->setValue(shown);
   };
   const DiagnosisDomainSettings defaults;
   show(trainFraction_, "/thermal/train_fraction", defaults.trainFraction);
