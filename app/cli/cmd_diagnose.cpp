@@ -32,6 +32,7 @@
 #include "core/setup/model.h"
 #include "core/setup/report.h"
 #include "core/study/diagnosis_study.h"
+#include "core/study/study_settings.h"
 #include "core/thermal/thermal_log.h"
 
 namespace metrofit::cli {
@@ -39,11 +40,12 @@ namespace {
 
 struct MethodArgs {
   std::string model, data, method, machine, errors, path, target, inputs, out, declared = "linear";
-  // Defaults come from the diagnosis study's settings (core/study/diagnosis_study.h), as a project's.
-  std::uint64_t seed = 1;
-  double tolerance = DiagnosisSettings{}.toleranceMm;
-  double trainFraction = DiagnosisSettings{}.trainFraction;
-  double feed = DiagnosisSettings{}.feedMmPerMin;
+  // Defaults come from the diagnosis study's settings type (core/study/study_settings.h
+  // DiagnosisDomainSettings), as a project's; the seed (no study key) from the thermal loop's options.
+  std::uint64_t seed = diagnose::ThermalDiagnosisOptions{}.seed;
+  double tolerance = DiagnosisDomainSettings{}.toleranceMm;
+  double trainFraction = DiagnosisDomainSettings{}.trainFraction;
+  double feed = DiagnosisDomainSettings{}.feedMmPerMin;
   bool allowScale = false;
 };
 

@@ -16,6 +16,7 @@
 #include "core/io/csv.h"
 #include "core/io/json_util.h"
 #include "core/sim/thermal_modular_sim.h"
+#include "core/study/study_settings.h"
 #include "core/thermal/hysteresis.h"
 #include "core/thermal/thermal_log.h"
 #include "core/thermal/thermal_model.h"
@@ -25,10 +26,12 @@ namespace {
 
 using thermal::ThermalModelKind;
 
+// The defaults a project's thermal study has (core/study/study_settings.h ThermalSettings), as the report
+// and the Thermal page use them; --train-fraction's own default depends on the model (defaultTrainFraction).
 struct FitArgs {
   std::string data, target, inputs, model = "gnnmci", training = "pso-ls", out, saveModel;
-  double trainFraction = thermal::kDefaultTrainFraction;  // used only when --train-fraction is given
-  std::uint64_t seed = 1;
+  double trainFraction = ThermalSettings{}.trainFraction;  // used only when --train-fraction is given
+  std::uint64_t seed = ThermalSettings{}.seed;
   int iterations = 0;
 };
 
@@ -38,7 +41,7 @@ struct PredictArgs {
 
 struct HysteresisArgs {
   std::string data, target, inputs, out;
-  double smoothingMin = 10.0;
+  double smoothingMin = thermal::HysteresisOptions{}.smoothingMin;
 };
 
 struct ModularArgs {
@@ -46,12 +49,12 @@ struct ModularArgs {
   std::vector<std::string> modules;       ///< NAME:FILE:INPUTS
   std::vector<std::string> moduleModels;  ///< NAME:MODEL.json
   std::string test, target, inputs, model = "gnnmci", training = "pso-ls", out, saveModel, saveModules;
-  std::uint64_t seed = 1;
+  std::uint64_t seed = ThermalSettings{}.seed;
 };
 
 struct SimulateArgs {
   std::string test = "z", out;
-  std::uint64_t seed = 1;
+  std::uint64_t seed = ModularSimOptions{}.seed;
 };
 
 void summary(const std::string& line) {
@@ -419,10 +422,13 @@ void registerThermalCommands(CLI::App& app) {
       ->check(CLI::IsMember({"gnnmci", "gmc", "mlp", "linear", "lag", "dlag", "auto"}))
       ->capture_default_str();
   addThermalLogOptions(fit);
-  auto* fraction = fit->add_option("--train-fraction", f->trainFraction,
-                                   "Fraction of rows (from the start) used for fitting; default 0.5, 0.7 for "
-                                   "mlp (Table 3)")
-                       ->check(CLI::Range(0.05, 0.95));
+  // The defaults in the help are the constants the fit uses (thermal::defaultTrainFraction), not re-typed.
+  auto* fraction =
+      fit->add_option("--train-fraction", f->trainFraction,
+                      "Fraction of rows (from the start) used for fitting; default " +
+                          num(thermal::defaultTrainFraction(ThermalModelKind::Gnnmci)) + ", " +
+                          num(thermal::defaultTrainFraction(ThermalModelKind::Mlp)) + " for mlp (Table 3)")
+          ->check(CLI::Range(0.05, 0.95));
   fit->add_option("--training", f->training,
                   "gnnmci: pso-ls (swarm over w11, layer-C weights by least squares) or pso (all weights)")
       ->check(CLI::IsMember({"pso", "pso-ls"}))

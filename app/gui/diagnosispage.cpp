@@ -5,6 +5,7 @@
 #include <QClipboard>
 #include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QKeySequence>
@@ -26,11 +27,15 @@
 #include <set>
 
 #include "app/gui/notesedit.h"
+#include "app/gui/studysettingbinding.h"
+#include "core/project/stored_results.h"
+#include "core/study/study_settings.h"
 #include "widgets/diagnose/coretexts.h"
 #include "widgets/diagnose/residualchecktext.h"
 #include "widgets/diagnose/residualcheckview.h"
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/document/projectdocument.h"
+#include "widgets/document/storedresulttext.h"
 #include "widgets/document/studyinfo.h"
 
 namespace metrofit {
@@ -125,6 +130,49 @@ QString parameterText(const diagnose::Candidate& c, const QString& units) {
   return parts.join(QStringLiteral("; "));
 }
 
+/// The figures of a run as the status line shows them: "rmse a → b u, held-out rmse ..., max |e| ...
+/// Accepted: x, y (N candidates tried)." The same for a run and for a stored result.
+QString summaryText(double baseline, double after, std::optional<double> heldoutBaseline,
+                    std::optional<double> heldoutFinal, double maxBaseline, double maxFinal,
+                    const QStringList& accepted, int tried, const QString& u) {
+  QString text = DiagnosisPage::tr("rmse %1 → %2 %3").arg(num(baseline), num(after), u);
+  if (heldoutBaseline && heldoutFinal)
+    text += DiagnosisPage::tr(", held-out rmse %1 → %2 %3").arg(num(*heldoutBaseline), num(*heldoutFinal), u);
+  text += DiagnosisPage::tr(", max |e| %1 → %2 %3").arg(num(maxBaseline), num(maxFinal), u);
+  if (accepted.empty())
+    text += DiagnosisPage::tr(". No undeclared effect found (%1 candidates tried).").arg(tried);
+  else
+    text += DiagnosisPage::tr(". Accepted: %1 (%2 candidates tried).")
+                .arg(accepted.join(QStringLiteral(", ")))
+                .arg(tried);
+  return text;
+}
+
+/// A number of a stored result (null: not finite, as core writes it).
+double storedNumber(const nlohmann::json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_number() ? it->get<double>() : std::nan("");
+}
+
+std::optional<double> storedOptional(const nlohmann::json& j, const char* key) {
+  const auto it = j.find(key);
+  if (it == j.end()) return std::nullopt;
+  return it->is_number() ? it->get<double>() : std::nan("");
+}
+
+int domainIndex(DiagnosisDomain d) {
+  for (int i = 0; i < 4; ++i)
+    if (kDiagnosisDomains[i] == d) return i;
+  return 0;
+}
+
+/// The dataset kind a key of the domain's block names (DiagnosisDomainSettings::fields).
+std::string fieldKind(const std::string& domain, const std::string& key) {
+  for (const SettingField& f : DiagnosisDomainSettings::fields(domain))
+    if (f.key == key) return f.datasetKind;
+  return {};
+}
+
 }  // namespace
 
 DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
@@ -147,6 +195,11 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
       table_(new QTableWidget(this)),
       tabs_(new QTabWidget(this)),
       check_(new ResidualCheckView(this)),
+      controls_(new QStackedWidget(this)),
+      trainFraction_(new QDoubleSpinBox(this)),
+      feed_(new QDoubleSpinBox(this)),
+      setupModel_(new QComboBox(this)),
+      tolerance_(new QDoubleSpinBox(this)),
       run_(new BackgroundRun<diagnose::Diagnosis>(this)) {
   auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kDiagnosis)), this);
   QFont titleFont = title->font();
@@ -269,8 +322,11 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
 
   auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kDiagnosis), this);
 
+  buildControls();
+
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);
+  layout->addWidget(controls_);
   layout->addWidget(info_);
   layout->addWidget(status_);
   layout->addWidget(notes_);
@@ -278,6 +334,7 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
   layout->addWidget(notes);
 
   connect(domainCombo_, &QComboBox::currentIndexChanged, this, [this] {
+    controls_->setCurrentIndex(domainIndex(domain()));
     result_.reset();
     settingsKey_.clear();
     refresh();
@@ -294,6 +351,7 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
     if (std::optional<diagnose::Diagnosis> r = run_->takeResult()) {
       result_ = std::move(*r);
       if (settings_) settingsKey_ = pageSettingsKey(*settings_);
+      storeResult(runDatasetId_, runSettings_);
       showResult();
     }
     emit finished();
@@ -354,6 +412,8 @@ void DiagnosisPage::refresh() {
     settingsKey_.clear();
   }
   settings_.reset();
+  settingsError_.clear();
+  fillControls();
   const DiagnosisDomain d = domain();
   const QString key = QString::fromLatin1(diagnosisDomainKey(d));
   try {
@@ -365,9 +425,17 @@ void DiagnosisPage::refresh() {
     status_->clear();
     result_.reset();
     settingsKey_.clear();
-    showMessage(tr("No usable %1 data for the diagnosis:\n%2\n\nConfigure it in the project file under "
-                   "studies.diagnosis.%3 (see the documentation of the diagnosis study).")
-                    .arg(domainTitle(d).toLower(), QString::fromUtf8(e.what()), key));
+    if (hasDiagnosisSettings(document_->project(), d)) {
+      // Refused, not replaced: nothing runs with settings the study does not hold.
+      settingsError_ = QString::fromUtf8(e.what());
+      showMessage(tr("The %1 settings of the diagnosis are invalid; nothing runs until they are corrected "
+                     "(above, Undo, or the project file under studies.diagnosis.%2):\n%3")
+                      .arg(domainTitle(d).toLower(), key, settingsError_));
+    } else {
+      showMessage(tr("No usable %1 data for the diagnosis:\n%2\n\nConfigure it in the project file under "
+                     "studies.diagnosis.%3 (see the documentation of the diagnosis study).")
+                      .arg(domainTitle(d).toLower(), QString::fromUtf8(e.what()), key));
+    }
     return;
   }
   const DiagnosisSettings& s = *settings_;
@@ -412,7 +480,8 @@ void DiagnosisPage::refresh() {
   }
   result_.reset();
   settingsKey_.clear();
-  status_->setText(tr("Not run yet: press Run (Ctrl+R)."));
+  const QString stored = storedResultText();
+  status_->setText(stored.isEmpty() ? tr("Not run yet: press Run (Ctrl+R).") : stored);
   notes_->clear();
   notes_->setVisible(false);
   plotCombo_->clear();
@@ -438,8 +507,10 @@ bool DiagnosisPage::runNow() {
     return false;
   }
   try {
+    const nlohmann::json stored = storedSettings();
     result_ = runDiagnosis(*settings_);
     settingsKey_ = pageSettingsKey(*settings_);
+    storeResult(settings_->datasetId, stored);
     showResult();
     return true;
   } catch (const std::exception& e) {
@@ -453,6 +524,8 @@ void DiagnosisPage::startRun() {
   setRunning(true);
   status_->setText(tr("Diagnosing …"));
   const DiagnosisSettings settings = *settings_;
+  runSettings_ = storedSettings();
+  runDatasetId_ = settings.datasetId;
   run_->start([settings](RunObserver& run) {
     long steps = 0;
     // The loops report no fraction: the text names the step and the current rmse.
@@ -474,6 +547,7 @@ void DiagnosisPage::setRunning(bool running) {
   cancelButton_->setEnabled(running);
   progress_->setVisible(running);
   domainCombo_->setEnabled(!running);
+  controls_->setEnabled(!running);
   updateApplyButton();
 }
 
@@ -506,20 +580,10 @@ void DiagnosisPage::showResult() {
   if (!result_) return;
   const diagnose::Diagnosis& d = *result_;
   const QString u = displayUnits(d.units);
-  const auto accepted = d.accepted();
-  QString text = tr("rmse %1 → %2 %3").arg(num(d.baseline.rmse), num(d.final.rmse), u);
-  if (d.baseline.heldoutRmse && d.final.heldoutRmse)
-    text += tr(", held-out rmse %1 → %2 %3").arg(num(*d.baseline.heldoutRmse), num(*d.final.heldoutRmse), u);
-  text += tr(", max |e| %1 → %2 %3").arg(num(d.baseline.maxAbs), num(d.final.maxAbs), u);
-  if (accepted.empty()) {
-    text += tr(". No undeclared effect found (%1 candidates tried).").arg(d.effects.size());
-  } else {
-    QStringList names;
-    for (const auto* c : accepted) names << QString::fromStdString(c->name);
-    text += tr(". Accepted: %1 (%2 candidates tried).")
-                .arg(names.join(QStringLiteral(", ")))
-                .arg(d.effects.size());
-  }
+  QStringList names;
+  for (const auto* c : d.accepted()) names << QString::fromStdString(c->name);
+  QString text = summaryText(d.baseline.rmse, d.final.rmse, d.baseline.heldoutRmse, d.final.heldoutRmse,
+                             d.baseline.maxAbs, d.final.maxAbs, names, static_cast<int>(d.effects.size()), u);
   // The loops' stop notes (diagnose::LoopProgress): per candidate "cancelled", per round "stopped by ...".
   if (std::any_of(d.notes.begin(), d.notes.end(), [](const std::string& n) {
         return n == "cancelled" || n.starts_with("stopped by the observer");
@@ -690,6 +754,250 @@ void DiagnosisPage::showView(const QString& view) {
   } else if (!order.empty()) {
     setDomain(order.front());
   }
+}
+
+QComboBox* DiagnosisPage::datasetCombo(DiagnosisDomain domain) const {
+  return datasetCombos_[domainIndex(domain)];
+}
+
+void DiagnosisPage::buildControls() {
+  const QString study = QString::fromLatin1(study::kDiagnosis);
+  // The value the project holds for a key of a domain's block, or the type's default: the controls show
+  // what the study holds (an invalid value is refused above the results, not replaced).
+  const auto number = [this, study](const char* domain, const char* key, double fallback) {
+    return [this, study, domain, key, fallback] {
+      const nlohmann::json v = document_->studyValue(
+          study, QStringLiteral("/%1/%2").arg(QLatin1String(domain), QLatin1String(key)));
+      return v.is_number() ? v.get<double>() : fallback;
+    };
+  };
+  const auto text = [this, study](const char* domain, const char* key) {
+    return [this, study, domain, key] {
+      const nlohmann::json v = document_->studyValue(
+          study, QStringLiteral("/%1/%2").arg(QLatin1String(domain), QLatin1String(key)));
+      return v.is_string() ? QString::fromStdString(v.get<std::string>()) : QString();
+    };
+  };
+  const DiagnosisDomainSettings defaults;
+  for (int i = 0; i < 4; ++i) {
+    const DiagnosisDomain d = kDiagnosisDomains[i];
+    const char* key = diagnosisDomainKey(d);
+    auto* page = new QWidget(controls_);
+    auto* row = new QHBoxLayout(page);
+    row->setContentsMargins(0, 0, 0, 0);
+    auto* combo = new QComboBox(page);
+    combo->setObjectName(QStringLiteral("diagnosisData_%1").arg(QLatin1String(key)));
+    combo->setToolTip(tr("The dataset the %1 diagnosis runs on (studies.diagnosis.%2.dataset)")
+                          .arg(domainTitle(d).toLower(), QLatin1String(key)));
+    combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    datasetCombos_[i] = combo;
+    auto* label = new QLabel(tr("Da&ta:"), page);
+    label->setBuddy(combo);
+    row->addWidget(label);
+    row->addWidget(combo);
+    bindStudySetting(document_, combo, study, QStringLiteral("/%1/dataset").arg(QLatin1String(key)),
+                     text(key, "dataset"), tr("Choose the %1 diagnosis data").arg(domainTitle(d).toLower()));
+    const auto addBox = [&](QDoubleSpinBox* box, const QString& caption, const QString& tip) {
+      box->setToolTip(tip);
+      box->setParent(page);
+      auto* l = new QLabel(caption, page);
+      l->setBuddy(box);
+      row->addSpacing(12);
+      row->addWidget(l);
+      row->addWidget(box);
+    };
+    switch (d) {
+      case DiagnosisDomain::Thermal:
+        trainFraction_->setObjectName(QStringLiteral("diagnosisTrainFraction"));
+        trainFraction_->setRange(0.05, 0.95);
+        trainFraction_->setDecimals(2);
+        trainFraction_->setSingleStep(0.05);
+        trainFraction_->setValue(defaults.trainFraction);
+        addBox(trainFraction_, tr("Train &fraction:"),
+               tr("The share of the rows (from the start) the model is fitted on; the rest is held out "
+                  "(studies.diagnosis.thermal.train_fraction)"));
+        bindStudySetting(document_, trainFraction_, study, QStringLiteral("/thermal/train_fraction"),
+                         number("thermal", "train_fraction", defaults.trainFraction),
+                         tr("Change the diagnosis train fraction"));
+        break;
+      case DiagnosisDomain::Kinematic:
+        feed_->setObjectName(QStringLiteral("diagnosisFeed"));
+        feed_->setRange(1.0, 1e6);
+        feed_->setDecimals(0);
+        feed_->setSingleStep(100.0);
+        feed_->setSuffix(QStringLiteral(" mm/min"));
+        feed_->setValue(defaults.feedMmPerMin);
+        addBox(feed_, tr("&Feed:"),
+               tr("The feed of the circular test, for the servo lag's time constant "
+                  "(studies.diagnosis.kinematic.feed_mm_per_min)"));
+        bindStudySetting(document_, feed_, study, QStringLiteral("/kinematic/feed_mm_per_min"),
+                         number("kinematic", "feed_mm_per_min", defaults.feedMmPerMin),
+                         tr("Change the diagnosis feed"));
+        break;
+      case DiagnosisDomain::Setup: {
+        setupModel_->setObjectName(QStringLiteral("diagnosisSetupModel"));
+        setupModel_->setParent(page);
+        setupModel_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+        setupModel_->setToolTip(
+            tr("The setup model whose setup data are diagnosed (studies.diagnosis.setup.model)"));
+        auto* l = new QLabel(tr("&Model:"), page);
+        l->setBuddy(setupModel_);
+        row->addSpacing(12);
+        row->addWidget(l);
+        row->addWidget(setupModel_);
+        bindStudySetting(document_, setupModel_, study, QStringLiteral("/setup/model"),
+                         text("setup", "model"), tr("Choose the diagnosis setup model"));
+        break;
+      }
+      case DiagnosisDomain::Matching:
+        tolerance_->setObjectName(QStringLiteral("diagnosisTolerance"));
+        tolerance_->setRange(0.0001, 100.0);
+        tolerance_->setDecimals(4);
+        tolerance_->setSingleStep(0.005);
+        tolerance_->setSuffix(QStringLiteral(" mm"));
+        tolerance_->setValue(defaults.toleranceMm);
+        addBox(tolerance_, tr("&Tolerance ±:"),
+               tr("The symmetric tolerance an effect must matter against "
+                  "(studies.diagnosis.matching.tolerance_mm)"));
+        bindStudySetting(document_, tolerance_, study, QStringLiteral("/matching/tolerance_mm"),
+                         number("matching", "tolerance_mm", defaults.toleranceMm),
+                         tr("Change the diagnosis tolerance"));
+        break;
+    }
+    row->addStretch(1);
+    controls_->addWidget(page);
+  }
+  controls_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
+  controls_->setCurrentIndex(domainIndex(domain()));
+}
+
+void DiagnosisPage::fillControls() {
+  const Project& project = document_->project();
+  const QString study = QString::fromLatin1(study::kDiagnosis);
+  // Refilled from the project (datasets added or removed) without edits; the bindings keep them in step
+  // with the study afterwards.
+  const auto fill = [&](QComboBox* combo, const std::string& kind, const QString& key) {
+    const QSignalBlocker blocker(combo);
+    combo->clear();
+    for (const DatasetRef& ds : project.datasets) {
+      if (ds.kind != kind) continue;
+      combo->addItem(QString::fromStdString(ds.id), QString::fromStdString(ds.id));
+      if (!ds.description.empty())
+        combo->setItemData(combo->count() - 1, QString::fromStdString(ds.description), Qt::ToolTipRole);
+    }
+    const nlohmann::json v = document_->studyValue(study, key);
+    combo->setCurrentIndex(v.is_string() ? combo->findData(QString::fromStdString(v.get<std::string>()))
+                                         : -1);
+  };
+  for (int i = 0; i < 4; ++i) {
+    const std::string key = diagnosisDomainKey(kDiagnosisDomains[i]);
+    fill(datasetCombos_[i], fieldKind(key, "dataset"),
+         QStringLiteral("/%1/dataset").arg(QString::fromStdString(key)));
+  }
+  fill(setupModel_, fieldKind("setup", "model"), QStringLiteral("/setup/model"));
+  // The numbers: what the study holds (clamped to the box), else the default.
+  const auto show = [&](QDoubleSpinBox* box, const char* key, double fallback) {
+    const nlohmann::json v = document_->studyValue(study, QString::fromLatin1(key));
+    const double shown =
+        std::clamp(v.is_number() ? v.get<double>() : fallback, box->minimum(), box->maximum());
+    // Unchanged: left alone, so that typing in the box is not disturbed by its own edit.
+    if (std::abs(box->value() - shown) < 0.5 * std::pow(10.0, -box->decimals())) return;
+    const QSignalBlocker blocker(box);
+    box->setValue(shown);
+  };
+  const DiagnosisDomainSettings defaults;
+  show(trainFraction_, "/thermal/train_fraction", defaults.trainFraction);
+  show(feed_, "/kinematic/feed_mm_per_min", defaults.feedMmPerMin);
+  show(tolerance_, "/matching/tolerance_mm", defaults.toleranceMm);
+}
+
+nlohmann::json DiagnosisPage::storedSettings() const {
+  if (!settings_) return nullptr;
+  const std::string key = diagnosisDomainKey(settings_->domain);
+  const nlohmann::json block = document_->studyValue(QString::fromLatin1(study::kDiagnosis),
+                                                     QStringLiteral("/") + QString::fromStdString(key));
+  try {
+    nlohmann::json j = DiagnosisDomainSettings::fromJson(block, key).toJson();
+    j.erase("applied");  // the loop fits the declared model; Apply does not change what it computes
+    j["domain"] = key;
+    if (!settings_->modelId.empty()) {
+      if (const DatasetRef* model = document_->project().dataset(settings_->modelId)) {
+        try {
+          j["model_hash"] = datasetDataHash(document_->projectPathForDatasets().toStdString(), *model);
+        } catch (const std::exception&) {
+          j["model_hash"] = nullptr;  // unreadable now: never equal to a stored hash
+        }
+      }
+    }
+    return j;
+  } catch (const std::exception&) {
+    return nullptr;
+  }
+}
+
+void DiagnosisPage::storeResult(const std::string& datasetId, const nlohmann::json& settings) {
+  if (!result_ || settings.is_null()) return;
+  // A cancelled run holds only the rounds done so far: not a result of these settings.
+  if (std::any_of(result_->notes.begin(), result_->notes.end(), [](const std::string& n) {
+        return n == "cancelled" || n.starts_with("stopped by the observer");
+      }))
+    return;
+  const DatasetRef* dataset = document_->project().dataset(datasetId);
+  if (!dataset) return;
+  try {
+    document_->setStoredResult(QString::fromLatin1(study::kDiagnosis), QString::fromStdString(datasetId),
+                               makeStoredResult(document_->projectPathForDatasets().toStdString(), *dataset,
+                                                settings, diagnose::toJson(*result_)));
+  } catch (const std::exception&) {
+    // The data cannot be read any more (moved during the run): nothing is stored, the page shows the run.
+  }
+}
+
+QString DiagnosisPage::storedResultText() const {
+  if (!settings_) return {};
+  const DatasetRef* dataset = document_->project().dataset(settings_->datasetId);
+  const nlohmann::json settings = storedSettings();
+  if (!dataset || settings.is_null()) return {};
+  const StoredResult stored =
+      storedResult(document_->project(), document_->projectPathForDatasets().toStdString(), study::kDiagnosis,
+                   *dataset, settings);
+  const QString when = storedTimeText(stored.computed);
+  switch (stored.state) {
+    case StoredResultState::None:
+      return {};
+    case StoredResultState::SettingsChanged:
+      return tr("The stored result (computed %1) is out of date: the settings changed since. Not run with "
+                "these settings yet: press Run (Ctrl+R).")
+          .arg(when);
+    case StoredResultState::DataChanged:
+      return tr("The stored result (computed %1) is out of date: the data file changed since. Run (Ctrl+R) "
+                "on the data as it is now.")
+          .arg(when);
+    case StoredResultState::DataMissing:
+      return tr("The stored result (computed %1) cannot be checked: the data file cannot be read.").arg(when);
+    case StoredResultState::Current:
+      break;
+  }
+  const nlohmann::json& e = stored.entry;
+  const nlohmann::json baseline = e.value("baseline", nlohmann::json::object());
+  const nlohmann::json after = e.value("final", nlohmann::json::object());
+  QStringList accepted;
+  int tried = 0;
+  if (const auto effects = e.find("effects"); effects != e.end() && effects->is_array()) {
+    tried = static_cast<int>(effects->size());
+    for (const nlohmann::json& c : *effects)
+      if (c.is_object() && c.value("accepted", false) && c.value("name", nlohmann::json()).is_string())
+        accepted << QString::fromStdString(c["name"].get<std::string>());
+  }
+  const std::string units =
+      e.value("units", nlohmann::json()).is_string() ? e["units"].get<std::string>() : "";
+  const QString figures = summaryText(
+      storedNumber(baseline, "rmse"), storedNumber(after, "rmse"), storedOptional(baseline, "heldout_rmse"),
+      storedOptional(after, "heldout_rmse"), storedNumber(baseline, "max_abs"),
+      storedNumber(after, "max_abs"), accepted, tried, displayUnits(units));
+  return tr("From the saved project (computed %1 with these settings on this data): %2 Run (Ctrl+R) for "
+            "the plots, the candidate table and the residual check.")
+      .arg(when, figures);
 }
 
 }  // namespace metrofit

@@ -11,6 +11,20 @@
 // Apply (Ctrl+Shift+A) writes the accepted effects its study can include (canApplyEffect: the generic
 // ones in thermal, kinematic and matching; the button's tooltip says which are left out and why) to
 // studies.diagnosis.<domain>.applied as one undoable edit of the project document.
+//
+// The settings of each domain (studies.diagnosis.<domain>: core/study/study_settings.h
+// DiagnosisDomainSettings owns the keys and defaults) are edited in the row below the title: the data,
+// thermal's train fraction, kinematic's feed, setup's model, matching's tolerance, each bound through
+// app/gui/studysettingbinding.h (undoable; undo moves the control back). A bad value in the project
+// file (train_fraction = 2) is refused: the page names the field and nothing runs until it is
+// corrected; no default is put in its place.
+//
+// A completed run is stored in the project (core/project/stored_results.h) under
+// results.diagnosis.<dataset id>: the diagnose-result JSON (core/diagnose/diagnosis.h toJson) with the
+// settings it ran with (the domain's block without "applied" and "notes", plus "domain"; setup also the
+// model file's hash). A dataset serves one domain only (each domain reads its own dataset kind), so the
+// dataset id alone is the key; "domain" in the settings makes a mismatch read as out of date. A reopened
+// project shows it as "From the saved project (computed ...)" or as out of date.
 #include <QWidget>
 #include <memory>
 #include <optional>
@@ -20,6 +34,7 @@
 #include "widgets/common/backgroundrun.h"
 
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -57,6 +72,17 @@ class DiagnosisPage : public QWidget {
   ResidualCheckView* residualCheckView() const { return check_; }
   /// The result tabs: 0 the effects (plots and candidate table), 1 the residual check.
   QTabWidget* resultTabs() const { return tabs_; }
+  QPushButton* runButton() const { return runButton_; }
+  /// The settings controls: the data of each domain (items carry the dataset id), thermal's train
+  /// fraction, kinematic's feed (mm/min), setup's model (a setup_model dataset id), matching's
+  /// tolerance (mm).
+  QComboBox* datasetCombo(DiagnosisDomain domain) const;
+  QDoubleSpinBox* trainFractionBox() const { return trainFraction_; }
+  QDoubleSpinBox* feedBox() const { return feed_; }
+  QComboBox* setupModelCombo() const { return setupModel_; }
+  QDoubleSpinBox* toleranceBox() const { return tolerance_; }
+  /// Why the current domain's settings are refused ("" when they are usable or not configured).
+  QString settingsError() const { return settingsError_; }
 
   /// Shows a result computed elsewhere as if the current settings had produced it (tests with a
   /// hand-built diagnosis); it is dropped like a computed one when the settings change.
@@ -86,6 +112,13 @@ class DiagnosisPage : public QWidget {
   void copySelection();
   void showMessage(const QString& text);
   void updateApplyButton();
+  void buildControls();
+  void fillControls();
+  /// The settings a result is stored with (see the header comment); null when the settings are unusable.
+  nlohmann::json storedSettings() const;
+  void storeResult(const std::string& datasetId, const nlohmann::json& settings);
+  /// The stored result of the current settings as the status line shows it ("" when none).
+  QString storedResultText() const;
 
   ProjectDocument* document_;
   QComboBox* domainCombo_;
@@ -105,6 +138,15 @@ class DiagnosisPage : public QWidget {
   QTableWidget* table_;
   QTabWidget* tabs_;
   ResidualCheckView* check_;
+  QStackedWidget* controls_;
+  QComboBox* datasetCombos_[4] = {};  ///< per domain, in the order of kDiagnosisDomains
+  QDoubleSpinBox* trainFraction_;
+  QDoubleSpinBox* feed_;
+  QComboBox* setupModel_;
+  QDoubleSpinBox* tolerance_;
+  QString settingsError_;
+  nlohmann::json runSettings_;  ///< the stored settings of the run in the worker
+  std::string runDatasetId_;
 
   std::optional<DiagnosisSettings> settings_;
   std::string settingsKey_;  ///< the settings the shown result was computed with

@@ -1,8 +1,10 @@
 #include "app/gui/studysettingbinding.h"
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QSpinBox>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
@@ -76,6 +78,32 @@ void bindStudyDatasetSetting(ProjectDocument* document, QComboBox* combo, const 
     if (index < 0 || index == combo->currentIndex()) return;
     *syncing = true;
     combo->setCurrentIndex(index);
+    *syncing = false;
+  });
+}
+
+void bindStudySetting(ProjectDocument* document, QDoubleSpinBox* spin, const QString& study,
+                      const QString& key, std::function<double()> effective, const QString& undoText) {
+  auto syncing = std::make_shared<bool>(false);
+  const auto shown = [spin, effective] {
+    const double v = effective();
+    return std::isfinite(v) ? std::clamp(v, spin->minimum(), spin->maximum()) : spin->minimum();
+  };
+  // Equal as the box shows them (its decimals): showing a value is never an edit.
+  const auto same = [spin](double a, double b) {
+    return std::abs(a - b) < 0.5 * std::pow(10.0, -spin->decimals());
+  };
+  QObject::connect(spin, &QDoubleSpinBox::valueChanged, spin,
+                   [document, study, key, shown, same, undoText, syncing](double value) {
+                     if (*syncing || same(value, shown())) return;
+                     document->setStudyValue(study, key, value, undoText);  // typing: one undo step
+                   });
+  QObject::connect(spin, &QDoubleSpinBox::editingFinished, document, &ProjectDocument::endEditSequence);
+  QObject::connect(document, &ProjectDocument::changed, spin, [spin, shown, same, syncing] {
+    const double value = shown();
+    if (same(value, spin->value())) return;
+    *syncing = true;
+    spin->setValue(value);
     *syncing = false;
   });
 }

@@ -12,6 +12,7 @@
 
 class QComboBox;
 class QSpinBox;
+class QDoubleSpinBox;
 
 namespace metrofit {
 
@@ -30,5 +31,10 @@ void bindStudySetting(ProjectDocument* document, QSpinBox* spin, const QString& 
 /// binding only writes a choice that differs from the study's.
 void bindStudyDatasetSetting(ProjectDocument* document, QComboBox* combo, const QString& study,
                              const QString& key, std::function<QString()> effective, const QString& undoText);
+
+/// A double spin box holding a number (written as a JSON number). Typing merges into one undo step
+/// until editingFinished; a value equal to `effective` at the box's decimals is not written.
+void bindStudySetting(ProjectDocument* document, QDoubleSpinBox* spin, const QString& study,
+                      const QString& key, std::function<double()> effective, const QString& undoText);
 
 }  // namespace metrofit

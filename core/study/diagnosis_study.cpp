@@ -15,6 +15,7 @@
 #include "core/matching/hole_table.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
+#include "core/study/study_settings.h"
 #include "core/thermal/thermal_log.h"
 
 namespace metrofit {
@@ -22,23 +23,6 @@ namespace {
 
 [[noreturn]] void fail(const std::string& source, const std::string& field, const std::string& what) {
   throw ValidationError(ErrorContext{source, 0, 0, field}, what);
-}
-
-std::string stringKey(const nlohmann::json& block, const char* key, const std::string& source,
-                      const std::string& prefix) {
-  const auto it = block.find(key);
-  if (it == block.end()) fail(source, prefix + key, "is missing");
-  if (!it->is_string() || it->get<std::string>().empty())
-    fail(source, prefix + key, "must be a non-empty text");
-  return it->get<std::string>();
-}
-
-double numberKey(const nlohmann::json& block, const char* key, double fallback, const std::string& source,
-                 const std::string& prefix) {
-  const auto it = block.find(key);
-  if (it == block.end()) return fallback;
-  if (!it->is_number() || !std::isfinite(it->get<double>())) fail(source, prefix + key, "must be a number");
-  return it->get<double>();
 }
 
 /// The dataset with this id, resolved; ValidationError when the project has none.
@@ -102,48 +86,27 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
   if (it == s->end() || !it->is_object())
     fail(source, prefix.substr(0, prefix.size() - 1),
          "is missing: no " + key + " data configured for diagnosis");
-  const nlohmann::json& block = *it;
+  // The keys, their defaults and checks: one owner (core/study/study_settings.h DiagnosisDomainSettings).
+  const DiagnosisDomainSettings block = DiagnosisDomainSettings::fromJson(*it, key, source);
 
   DiagnosisSettings out;
   out.domain = domain;
-  out.datasetId = stringKey(block, "dataset", source, prefix);
+  out.datasetId = block.dataset;
   const DatasetRef& dataset = datasetOf(project, out.datasetId, source, prefix + "dataset");
   out.datasetPath = resolveDatasetPath(projectPath, dataset);
   out.csv = dataset.csv;
   out.dmis = dataset.dmis;
-  switch (domain) {
-    case DiagnosisDomain::Thermal: {
-      out.target = stringKey(block, "target", source, prefix);
-      const auto in = block.find("inputs");
-      if (in == block.end()) fail(source, prefix + "inputs", "is missing");
-      if (!in->is_array() || in->empty())
-        fail(source, prefix + "inputs", "must be a non-empty list of column names");
-      for (const auto& v : *in) {
-        if (!v.is_string()) fail(source, prefix + "inputs", "must be a list of column names");
-        out.inputs.push_back(v.get<std::string>());
-      }
-      out.trainFraction =
-          numberKey(block, "train_fraction", DiagnosisSettings{}.trainFraction, source, prefix);
-      if (out.trainFraction < 0.05 || out.trainFraction > 0.95)
-        fail(source, prefix + "train_fraction", "must be between 0.05 and 0.95");
-      break;
-    }
-    case DiagnosisDomain::Kinematic:
-      out.feedMmPerMin =
-          numberKey(block, "feed_mm_per_min", DiagnosisSettings{}.feedMmPerMin, source, prefix);
-      if (out.feedMmPerMin <= 0.0) fail(source, prefix + "feed_mm_per_min", "must be positive");
-      break;
-    case DiagnosisDomain::Setup:
-      out.modelId = stringKey(block, "model", source, prefix);
-      out.modelPath =
-          resolveDatasetPath(projectPath, datasetOf(project, out.modelId, source, prefix + "model"));
-      break;
-    case DiagnosisDomain::Matching:
-      out.toleranceMm = numberKey(block, "tolerance_mm", DiagnosisSettings{}.toleranceMm, source, prefix);
-      if (out.toleranceMm <= 0.0) fail(source, prefix + "tolerance_mm", "must be positive");
-      break;
+  out.target = block.target;
+  out.inputs = block.inputs;
+  out.trainFraction = block.trainFraction;
+  out.feedMmPerMin = block.feedMmPerMin;
+  out.toleranceMm = block.toleranceMm;
+  if (domain == DiagnosisDomain::Setup) {
+    out.modelId = block.model;
+    out.modelPath =
+        resolveDatasetPath(projectPath, datasetOf(project, out.modelId, source, prefix + "model"));
   }
-  if (const auto a = block.find("applied"); a != block.end() && a->is_array()) out.applied = *a;
+  out.applied = block.applied;
   return out;
 }
 

@@ -9,9 +9,11 @@
 //     "<domain>":  {..., "applied": [{"name": EFFECT, "parameters": {NAME: VALUE}}]}
 //   }
 //
-// Every key is read defensively: a missing or ill-typed key gives a ValidationError whose message
-// names the field ("studies.diagnosis.thermal.target"), never a crash. "applied" holds the effects
-// the user added to the domain's model with Apply (diagnosis page, undoable).
+// The keys, their defaults and their checks have one owner, DiagnosisDomainSettings
+// (core/study/study_settings.h); diagnosisSettings reads the block through it and resolves the
+// datasets. A missing, ill-typed or out-of-range key gives a ValidationError whose message names the
+// field ("studies.diagnosis.thermal.train_fraction"), never a crash and never a default in its place.
+// "applied" holds the effects the user added to the domain's model with Apply (diagnosis page, undoable).
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@
 #include "core/diagnose/matching_diagnosis.h"
 #include "core/diagnose/thermal_diagnosis.h"
 #include "core/project/project.h"
+#include "core/study/study_settings.h"
 
 namespace metrofit {
 
@@ -41,12 +44,12 @@ struct DiagnosisSettings {
   setup::DmisOptions dmis;  ///< how the dataset's DMIS TA(label) values are read (its "dmis" key)
   std::string target;       ///< thermal
   std::vector<std::string> inputs;
-  double trainFraction = diagnose::ThermalDiagnosisOptions{}.trainFraction;
+  double trainFraction = DiagnosisDomainSettings{}.trainFraction;
   std::string modelId;  ///< setup
   std::string modelPath;
-  double toleranceMm = diagnose::MatchingDiagnosisOptions{}.toleranceMm;     ///< matching
-  double feedMmPerMin = diagnose::KinematicDiagnosisOptions{}.feedMmPerMin;  ///< kinematic
-  nlohmann::json applied = nlohmann::json::array();                          ///< effects added with Apply
+  double toleranceMm = DiagnosisDomainSettings{}.toleranceMm;    ///< matching
+  double feedMmPerMin = DiagnosisDomainSettings{}.feedMmPerMin;  ///< kinematic
+  nlohmann::json applied = nlohmann::json::array();              ///< effects added with Apply
 };
 
 /// A text that is equal for two settings exactly when runDiagnosis gives the same result for both

@@ -527,21 +527,162 @@ bool ThermalSettings::isValid(std::string* field, std::string* why) const {
 
 // ---- diagnosis ----------------------------------------------------------------------------------------
 
-const std::map<std::string, std::vector<SettingField>>& DiagnosisStudySettings::domains() {
+namespace {
+
+/// A finite number in the closed interval [lo, hi].
+std::function<std::string(const json&)> numberWithin(double lo, double hi, std::string range) {
+  return [lo, hi, range](const json& v) {
+    const bool ok =
+        v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() >= lo && v.get<double>() <= hi;
+    return ok ? std::string() : "must be a number " + range;
+  };
+}
+
+constexpr double kMinDiagnosisTrainFraction = 0.05, kMaxDiagnosisTrainFraction = 0.95;
+const char* const kTrainFractionRange = "between 0.05 and 0.95 (the fitted share of the rows)";
+const char* const kFeedRange = "> 0 (mm/min)";
+const char* const kToleranceRange = "> 0 (mm)";
+
+std::function<std::string(const json&)> positive(const char* range) {
+  return [range](const json& v) {
+    return v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() > 0.0
+               ? std::string()
+               : std::string("must be a number ") + range;
+  };
+}
+
+std::function<std::string(const json&)> appliedList() {
+  return [](const json& v) {
+    return v.is_array() ? std::string()
+                        : std::string("must be a list of effects ([{\"name\": ..., \"parameters\": {...}}])");
+  };
+}
+
+std::string diagnosisPrefix(const std::string& domain) {
+  return std::string("studies.") + DiagnosisStudySettings::kStudy + "." + domain;
+}
+
+}  // namespace
+
+const std::vector<std::string>& DiagnosisDomainSettings::domainNames() {
+  static const std::vector<std::string> names = {"thermal", "kinematic", "setup", "matching"};
+  return names;
+}
+
+const std::vector<SettingField>& DiagnosisDomainSettings::fields(const std::string& domain) {
   static const std::map<std::string, std::vector<SettingField>> d = {
       {"thermal",
-       {datasetField("dataset", dataset_kind::kThermalLog), valueField("target"), valueField("inputs"),
-        valueField("train_fraction"), valueField("applied")}},
+       {datasetField("dataset", dataset_kind::kThermalLog), valueField("target", text()),
+        valueField("inputs", columnNames()),
+        valueField("train_fraction",
+                   numberWithin(kMinDiagnosisTrainFraction, kMaxDiagnosisTrainFraction, kTrainFractionRange)),
+        valueField("applied", appliedList())}},
       {"kinematic",
-       {datasetField("dataset", dataset_kind::kCircularTest), valueField("feed_mm_per_min"),
-        valueField("applied")}},
+       {datasetField("dataset", dataset_kind::kCircularTest),
+        valueField("feed_mm_per_min", positive(kFeedRange)), valueField("applied", appliedList())}},
       {"setup",
        {datasetField("dataset", dataset_kind::kCmmReport), datasetField("model", dataset_kind::kSetupModel),
-        valueField("applied")}},
+        valueField("applied", appliedList())}},
       {"matching",
-       {datasetField("dataset", dataset_kind::kProbePoints), valueField("tolerance_mm"),
-        valueField("applied")}},
+       {datasetField("dataset", dataset_kind::kProbePoints),
+        valueField("tolerance_mm", positive(kToleranceRange)), valueField("applied", appliedList())}},
   };
+  static const std::vector<SettingField> none;
+  const auto it = d.find(domain);
+  return it == d.end() ? none : it->second;
+}
+
+DiagnosisDomainSettings DiagnosisDomainSettings::fromJson(const json& block, const std::string& domain,
+                                                          const std::string& source) {
+  const std::string prefix = diagnosisPrefix(domain);
+  const auto& names = domainNames();
+  if (std::find(names.begin(), names.end(), domain) == names.end())
+    throw ValidationError(ErrorContext{source, 0, 0, prefix},
+                          "is not a domain of the diagnosis (known: kinematic, matching, setup, thermal)");
+  std::vector<SettingIssue> issues;
+  checkSettingsBlock(block, prefix, fields(domain), issues);
+  if (!issues.empty()) throwFirst(issues, source);
+  const auto required = [&](const char* key) {
+    if (!block.contains(key))
+      throw ValidationError(ErrorContext{source, 0, 0, prefix + "." + key}, "is missing");
+    return block.at(key).get<std::string>();
+  };
+  DiagnosisDomainSettings s;
+  s.domain = domain;
+  s.dataset = required("dataset");
+  if (domain == "thermal") {
+    s.target = required("target");
+    if (!block.contains("inputs"))
+      throw ValidationError(ErrorContext{source, 0, 0, prefix + ".inputs"}, "is missing");
+    s.inputs = block.at("inputs").get<std::vector<std::string>>();
+    if (const auto v = block.find("train_fraction"); v != block.end()) s.trainFraction = v->get<double>();
+  } else if (domain == "kinematic") {
+    if (const auto v = block.find("feed_mm_per_min"); v != block.end()) s.feedMmPerMin = v->get<double>();
+  } else if (domain == "setup") {
+    s.model = required("model");
+  } else if (const auto v = block.find("tolerance_mm"); v != block.end()) {
+    s.toleranceMm = v->get<double>();
+  }
+  if (const auto a = block.find("applied"); a != block.end()) s.applied = *a;
+  return s;
+}
+
+json DiagnosisDomainSettings::toJson() const {
+  const DiagnosisDomainSettings d;
+  json j = json::object();
+  if (!dataset.empty()) j["dataset"] = dataset;
+  if (domain == "thermal") {
+    if (!target.empty()) j["target"] = target;
+    if (!inputs.empty()) j["inputs"] = inputs;
+    if (trainFraction != d.trainFraction) j["train_fraction"] = trainFraction;
+  } else if (domain == "kinematic") {
+    if (feedMmPerMin != d.feedMmPerMin) j["feed_mm_per_min"] = feedMmPerMin;
+  } else if (domain == "setup") {
+    if (!model.empty()) j["model"] = model;
+  } else if (domain == "matching") {
+    if (toleranceMm != d.toleranceMm) j["tolerance_mm"] = toleranceMm;
+  }
+  if (applied.is_array() && !applied.empty()) j["applied"] = applied;
+  return j;
+}
+
+bool DiagnosisDomainSettings::isValid(std::string* field, std::string* why) const {
+  const std::string study = std::string(DiagnosisStudySettings::kStudy) + "." + domain;
+  const auto& names = domainNames();
+  if (std::find(names.begin(), names.end(), domain) == names.end()) {
+    if (field) *field = diagnosisPrefix(domain);
+    if (why) *why = "is not a domain of the diagnosis (known: kinematic, matching, setup, thermal)";
+    return false;
+  }
+  if (dataset.empty()) return invalid(field, why, study.c_str(), "dataset", "is missing");
+  if (domain == "thermal") {
+    if (target.empty()) return invalid(field, why, study.c_str(), "target", "is missing");
+    if (inputs.empty() || std::any_of(inputs.begin(), inputs.end(), [](const auto& i) { return i.empty(); }))
+      return invalid(field, why, study.c_str(), "inputs", "must be a non-empty list of column names");
+    if (!(trainFraction >= kMinDiagnosisTrainFraction && trainFraction <= kMaxDiagnosisTrainFraction))
+      return invalid(field, why, study.c_str(), "train_fraction",
+                     std::string("must be a number ") + kTrainFractionRange);
+  } else if (domain == "kinematic") {
+    if (!(feedMmPerMin > 0.0) || !std::isfinite(feedMmPerMin))
+      return invalid(field, why, study.c_str(), "feed_mm_per_min",
+                     std::string("must be a number ") + kFeedRange);
+  } else if (domain == "setup") {
+    if (model.empty()) return invalid(field, why, study.c_str(), "model", "is missing");
+  } else if (!(toleranceMm > 0.0) || !std::isfinite(toleranceMm)) {
+    return invalid(field, why, study.c_str(), "tolerance_mm",
+                   std::string("must be a number ") + kToleranceRange);
+  }
+  if (!applied.is_array()) return invalid(field, why, study.c_str(), "applied", appliedList()(applied));
+  return true;
+}
+
+const std::map<std::string, std::vector<SettingField>>& DiagnosisStudySettings::domains() {
+  static const std::map<std::string, std::vector<SettingField>> d = [] {
+    std::map<std::string, std::vector<SettingField>> m;
+    for (const std::string& name : DiagnosisDomainSettings::domainNames())
+      m[name] = DiagnosisDomainSettings::fields(name);
+    return m;
+  }();
   return d;
 }
 

@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/kinematics/effects.h"
 #include "core/kinematics/spc_actuator.h"
 #include "core/machine/controller_frame.h"
 #include "core/matching/matching.h"
@@ -168,7 +169,39 @@ struct ThermalSettings {
   bool operator==(const ThermalSettings&) const = default;
 };
 
-/// studies.diagnosis.<domain> (core/study/diagnosis_study.h reads the values: diagnosisSettings).
+/// studies.diagnosis.<domain>, one domain's block (core/study/diagnosis_study.h: diagnosisSettings reads
+/// it through this type and resolves the datasets). The defaults are those of the closed loops' options
+/// (core/diagnose: ThermalDiagnosisOptions, KinematicDiagnosisOptions, MatchingDiagnosisOptions use the
+/// same constants; tests/core/study/study_settings_test.cpp checks they agree). "dataset" (every domain),
+/// "target" and "inputs" (thermal) and "model" (setup) are required: fromJson refuses a block without
+/// them ("is missing").
+struct DiagnosisDomainSettings {
+  std::string domain = "thermal";   ///< the block's name: "thermal", "kinematic", "setup" or "matching"
+  std::string dataset;              ///< "dataset": thermal_log, circular_test, cmm_report or probe_points id
+  std::string target;               ///< thermal "target": the log's column the declared model predicts
+  std::vector<std::string> inputs;  ///< thermal "inputs": the declared inputs
+  double trainFraction = thermal::kDefaultTrainFraction;  ///< thermal "train_fraction" in [0.05, 0.95]
+  std::string model;                                      ///< setup "model": a setup_model dataset id
+  double feedMmPerMin = kDefaultFeedMmPerMin;             ///< kinematic "feed_mm_per_min" (> 0)
+  double toleranceMm = matching::kDefaultToleranceMm;     ///< matching "tolerance_mm" (> 0)
+  nlohmann::json applied = nlohmann::json::array();       ///< "applied": effects added with Apply
+
+  /// The domains' names in the order of the diagnosis page ("thermal", "kinematic", "setup", "matching").
+  static const std::vector<std::string>& domainNames();
+  /// The keys of `domain`'s block (empty for an unknown domain).
+  static const std::vector<SettingField>& fields(const std::string& domain);
+  /// ValidationError naming `source` and the field ("studies.diagnosis.thermal.train_fraction") of the
+  /// first bad value or missing required key; an unknown domain names "studies.diagnosis.<domain>".
+  static DiagnosisDomainSettings fromJson(const nlohmann::json& block, const std::string& domain,
+                                          const std::string& source = {});
+  /// The domain's keys that differ from the defaults (the required ones when set).
+  nlohmann::json toJson() const;
+  /// False with the field ("studies.diagnosis.matching.tolerance_mm") and what is wrong.
+  bool isValid(std::string* field, std::string* why) const;
+  bool operator==(const DiagnosisDomainSettings&) const = default;
+};
+
+/// studies.diagnosis: a block per domain (DiagnosisDomainSettings).
 struct DiagnosisStudySettings {
   static constexpr const char* kStudy = "diagnosis";
   /// The keys of each domain's block ("thermal", "kinematic", "setup", "matching").

@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QImage>
 #include <QPainter>
 #include <QPushButton>
@@ -23,6 +24,7 @@
 #include "app/gui/diagnosispage.h"
 #include "core/project/project.h"
 #include "core/study/diagnosis_study.h"
+#include "core/study/study_settings.h"
 #include "demo_document_fixture.h"
 #include "qtapp.h"
 #include "widgets/diagnose/residualplot.h"
@@ -236,6 +238,90 @@ TEST_F(DiagnosisPageTest, NoDiagnosisStudyAndBadKeysShowMessages) {
   page.setDomain(DiagnosisDomain::Thermal);
   EXPECT_TRUE(page.message().contains(QStringLiteral("studies.diagnosis.thermal.inputs")))
       << page.message().toStdString();
+}
+
+// One policy for a bad value (issue 27): a study value the project file holds out of range is refused on the
+// page, the field named in the visible message, nothing runs; the control shows the nearest value it can
+// hold but nothing is written until the user edits it, and an edit on the page corrects it.
+TEST_F(DiagnosisPageTest, ABadStudyValueIsRefusedNamingTheFieldAndNothingRuns) {
+  Project p = document_.project();
+  p.studies["diagnosis"]["thermal"]["train_fraction"] = 2;
+  p.studies["diagnosis"]["matching"]["tolerance_mm"] = -0.01;
+  const QString path = dir_.filePath(QStringLiteral("bad.metrofit"));
+  saveProject(p, path.toStdString());
+  document_.load(path);
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Thermal);
+  EXPECT_TRUE(page.message().contains(QStringLiteral("studies.diagnosis.thermal.train_fraction")))
+      << page.message().toStdString();
+  EXPECT_TRUE(page.message().contains(QStringLiteral("between 0.05 and 0.95")))
+      << page.message().toStdString();
+  EXPECT_TRUE(page.settingsError().contains(QStringLiteral("studies.diagnosis.thermal.train_fraction")));
+  EXPECT_FALSE(page.runButton()->isEnabled());
+  EXPECT_FALSE(page.runNow());
+  page.startRun();
+  EXPECT_FALSE(page.isRunning());
+  EXPECT_FALSE(page.result().has_value());
+  // Nothing was substituted: the project still holds the bad value (no edit by showing it).
+  EXPECT_EQ(document_.project().studies["diagnosis"]["thermal"]["train_fraction"], 2);
+  EXPECT_FALSE(document_.isModified());
+  page.setDomain(DiagnosisDomain::Matching);
+  EXPECT_TRUE(page.message().contains(QStringLiteral("studies.diagnosis.matching.tolerance_mm")))
+      << page.message().toStdString();
+  EXPECT_FALSE(page.runButton()->isEnabled());
+  // The other domains still run.
+  page.setDomain(DiagnosisDomain::Setup);
+  EXPECT_TRUE(page.message().isEmpty()) << page.message().toStdString();
+  EXPECT_TRUE(page.runButton()->isEnabled());
+  // Corrected on the page (one undoable edit): accepted, Run enabled; Undo brings the refusal back.
+  page.setDomain(DiagnosisDomain::Thermal);
+  page.trainFractionBox()->setValue(0.6);
+  EXPECT_EQ(document_.project().studies["diagnosis"]["thermal"]["train_fraction"], 0.6);
+  EXPECT_TRUE(page.message().isEmpty()) << page.message().toStdString();
+  EXPECT_TRUE(page.settingsError().isEmpty());
+  EXPECT_TRUE(page.runButton()->isEnabled());
+  document_.undoStack()->undo();
+  EXPECT_EQ(document_.project().studies["diagnosis"]["thermal"]["train_fraction"], 2);
+  EXPECT_TRUE(page.message().contains(QStringLiteral("studies.diagnosis.thermal.train_fraction")));
+  EXPECT_FALSE(page.runButton()->isEnabled());
+}
+
+// The controls edit studies.diagnosis.<domain> through the undo stack and follow undo / redo.
+TEST_F(DiagnosisPageTest, ControlsWriteTheStudyAndFollowUndo) {
+  DiagnosisPage page(&document_);
+  const auto value = [&](const char* domain, const char* key) {
+    return document_.project().studies["diagnosis"][domain].value(key, nlohmann::json());
+  };
+  EXPECT_EQ(page.datasetCombo(DiagnosisDomain::Thermal)->currentData().toString(),
+            QStringLiteral("diagnose_thermal"));
+  EXPECT_DOUBLE_EQ(page.trainFractionBox()->value(), 0.5);
+  EXPECT_DOUBLE_EQ(page.toleranceBox()->value(), 0.035);
+  EXPECT_DOUBLE_EQ(page.feedBox()->value(), DiagnosisDomainSettings{}.feedMmPerMin);
+  EXPECT_EQ(page.setupModelCombo()->currentData().toString(), QStringLiteral("setup_model"));
+  EXPECT_FALSE(document_.isModified());  // showing is not an edit
+  page.setDomain(DiagnosisDomain::Kinematic);
+  page.feedBox()->setValue(2500.0);
+  EXPECT_EQ(value("kinematic", "feed_mm_per_min"), 2500.0);
+  const int circular =
+      page.datasetCombo(DiagnosisDomain::Kinematic)->findData(QStringLiteral("circular_demo"));
+  ASSERT_GE(circular, 0);
+  page.datasetCombo(DiagnosisDomain::Kinematic)->setCurrentIndex(circular);
+  EXPECT_EQ(value("kinematic", "dataset"), "circular_demo");
+  EXPECT_TRUE(page.message().isEmpty()) << page.message().toStdString();
+  document_.undoStack()->undo();
+  EXPECT_EQ(value("kinematic", "dataset"), "diagnose_circular");
+  EXPECT_EQ(page.datasetCombo(DiagnosisDomain::Kinematic)->currentData().toString(),
+            QStringLiteral("diagnose_circular"));
+  document_.undoStack()->undo();
+  EXPECT_TRUE(value("kinematic", "feed_mm_per_min").is_null());
+  EXPECT_DOUBLE_EQ(page.feedBox()->value(), DiagnosisDomainSettings{}.feedMmPerMin);
+  // Only the datasets of the domain's kind are offered.
+  for (int i = 0; i < page.datasetCombo(DiagnosisDomain::Matching)->count(); ++i) {
+    const DatasetRef* d = document_.project().dataset(
+        page.datasetCombo(DiagnosisDomain::Matching)->itemData(i).toString().toStdString());
+    ASSERT_NE(d, nullptr);
+    EXPECT_EQ(d->kind, "probe_points");
+  }
 }
 
 TEST_F(DiagnosisPageTest, ShowViewRunsAConfiguredDomain) {
