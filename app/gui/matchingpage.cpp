@@ -31,14 +31,18 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <limits>
+#include <optional>
 #include <set>
 
 #include "app/gui/machinedialog.h"
 #include "app/gui/notesedit.h"
+#include "app/gui/studysettingbinding.h"
 #include "core/common/error.h"
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
 #include "core/project/stored_results.h"
+#include "core/study/study_settings.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/storedresulttext.h"
@@ -52,6 +56,22 @@ namespace {
 
 /// studies.diagnosis.matching.applied and .dataset as text ("" when absent), to notice Apply and its
 /// undo.
+/// The one setting `key` of studies.matching read on its own (MatchingSettings::fromJson / isValid), so
+/// that a bad value of another key does not hide it; nullopt when it is refused (the binding then
+/// leaves its control as it is: refused, never replaced by a default).
+std::optional<MatchingSettings> matchingSettingField(const Project& project, const char* key) {
+  const auto study = project.studies.find(study::kMatching);
+  nlohmann::json one = nlohmann::json::object();
+  if (study != project.studies.end() && study->is_object() && study->contains(key)) one[key] = (*study)[key];
+  try {
+    MatchingSettings s = MatchingSettings::fromJson(one);
+    if (!s.isValid(nullptr, nullptr)) return std::nullopt;
+    return s;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 std::string appliedKeyOf(const Project& project) {
   const auto s = project.studies.find(study::kDiagnosis);
   if (s == project.studies.end() || !s->is_object()) return {};
@@ -550,16 +570,38 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
     writeStudyValue(QStringLiteral("/method"), matching::toString(method), tr("Change the matching method"),
                     false);
   });
+  // The tolerance, the scale and the frame's decimals are bound to studies.matching through the shared
+  // binding (app/gui/studysettingbinding.h: one undo step per edit, typing merged; undo / redo / load
+  // put the control back); the page's own reactions stay here.
+  const auto field = [this](const char* key) { return matchingSettingField(document_->project(), key); };
+  bindStudySetting(
+      document_, toleranceSpin_, QString::fromLatin1(study::kMatching), QStringLiteral("/tolerance_mm"),
+      [field]() -> std::optional<double> {
+        const auto s = field("tolerance_mm");
+        return s ? std::optional<double>(s->toleranceMm) : std::nullopt;
+      },
+      tr("Change the matching tolerance"));
+  bindStudySetting(
+      document_, allowScale_, QString::fromLatin1(study::kMatching), QStringLiteral("/allow_scale"),
+      [field]() -> std::optional<bool> {
+        const auto s = field("allow_scale");
+        return s ? std::optional<bool>(s->allowScale) : std::nullopt;
+      },
+      tr("Change the matching scale"));
+  bindStudySetting(
+      document_, frameDecimals_, QString::fromLatin1(study::kMatching), QStringLiteral("/frame_decimals"),
+      [field] {
+        const auto s = field("frame_decimals");
+        return s ? static_cast<qint64>(s->frameDecimals) : std::numeric_limits<qint64>::min();
+      },
+      false, tr("Change the decimals of the frame"));
   connect(toleranceSpin_, &QDoubleSpinBox::valueChanged, this, [this] {
     reevaluate();
-    writeStudyValue(QStringLiteral("/tolerance_mm"), toleranceSpin_->value(),
-                    tr("Change the matching tolerance"), true);
+    if (!writingStudy_) showStoredStatus();
   });
-  connect(toleranceSpin_, &QDoubleSpinBox::editingFinished, document_, &ProjectDocument::endEditSequence);
   connect(allowScale_, &QCheckBox::toggled, this, [this] {
     settingsChanged();
-    writeStudyValue(QStringLiteral("/allow_scale"), allowScale_->isChecked(), tr("Change the matching scale"),
-                    false);
+    if (!writingStudy_) showStoredStatus();
   });
   for (QCheckBox* box : locks_) {
     connect(box, &QCheckBox::toggled, this, [this] {
@@ -574,12 +616,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
     writeStudyValue(QStringLiteral("/frame"), machine::toString(frameFormat()),
                     tr("Change the control of the frame"), false);
   });
-  connect(frameDecimals_, &QSpinBox::valueChanged, this, [this] {
-    fillFrame();
-    writeStudyValue(QStringLiteral("/frame_decimals"), frameDecimals_->value(),
-                    tr("Change the decimals of the frame"), true);
-  });
-  connect(frameDecimals_, &QSpinBox::editingFinished, document_, &ProjectDocument::endEditSequence);
+  connect(frameDecimals_, &QSpinBox::valueChanged, this, [this] { fillFrame(); });
   connect(saveFrame_, &QPushButton::clicked, this, &MatchingPage::saveFrameDialog);
   connect(runButton_, &QPushButton::clicked, this, &MatchingPage::startRun);
   connect(cancelButton_, &QPushButton::clicked, this, &MatchingPage::cancelRun);
