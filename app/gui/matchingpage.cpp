@@ -54,8 +54,6 @@ namespace metrofit {
 
 namespace {
 
-/// studies.diagnosis.matching.applied and .dataset as text ("" when absent), to notice Apply and its
-/// undo.
 /// The one setting `key` of studies.matching read on its own (MatchingSettings::fromJson / isValid), so
 /// that a bad value of another key does not hide it; nullopt when it is refused (the binding then
 /// leaves its control as it is: refused, never replaced by a default).
@@ -72,6 +70,8 @@ std::optional<MatchingSettings> matchingSettingField(const Project& project, con
   }
 }
 
+/// studies.diagnosis.matching.applied and .dataset as text ("" when absent), to notice Apply and its
+/// undo.
 std::string appliedKeyOf(const Project& project) {
   const auto s = project.studies.find(study::kDiagnosis);
   if (s == project.studies.end() || !s->is_object()) return {};

@@ -273,6 +273,26 @@ TEST_F(SettingsRoundTripTest, ThermalPage) {
   cliReport(saved);
 }
 
+// A train fraction the study accepts but the page's control would round or clamp is refused with the
+// field named (the page used to fit with the clamped value while the report used the study's); a
+// fraction the control can show is used as it is.
+TEST_F(SettingsRoundTripTest, ThermalValueThePageCannotShowIsRefused) {
+  openDemo("thermal", {"thermal_sim"});
+  document_.setStudyValue(QStringLiteral("thermal"), QStringLiteral("/train_fraction"), 0.995,
+                          QStringLiteral("edit"));
+  ThermalPage page(&document_);
+  EXPECT_TRUE(page.errorMessage().contains(QStringLiteral("studies.thermal.train_fraction")))
+      << page.errorMessage().toStdString();
+  document_.endEditSequence();
+  document_.setStudyValue(QStringLiteral("thermal"), QStringLiteral("/train_fraction"), 0.95,
+                          QStringLiteral("edit"));
+  EXPECT_TRUE(page.errorMessage().isEmpty()) << page.errorMessage().toStdString();
+  EXPECT_DOUBLE_EQ(page.modelView()->settings().trainFraction, 0.95);
+  document_.undoStack()->undo();
+  EXPECT_TRUE(page.errorMessage().contains(QStringLiteral("studies.thermal.train_fraction")))
+      << page.errorMessage().toStdString();
+}
+
 // ---- Matching ------------------------------------------------------------------------------------
 
 TEST_F(SettingsRoundTripTest, MatchingPage) {
