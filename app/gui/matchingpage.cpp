@@ -34,6 +34,7 @@
 #include <limits>
 #include <optional>
 #include <set>
+#include <stdexcept>
 
 #include "app/gui/machinedialog.h"
 #include "app/gui/notesedit.h"
@@ -68,6 +69,27 @@ std::optional<MatchingSettings> matchingSettingField(const Project& project, con
   } catch (const std::exception&) {
     return std::nullopt;
   }
+}
+
+/// The study's settings (matchingStudySettings) when the page's controls can show them as they are: a
+/// tolerance the spin box would clamp or round (0, 20 mm, 0.0355 mm; all valid for the study and the
+/// report) is refused naming the field, never matched with the value the control shows instead.
+matching::MatchingStudySettings readMatchingSettings(const Project& project, const QString& projectFile,
+                                                     const QDoubleSpinBox* tolerance) {
+  matching::MatchingStudySettings s = matching::matchingStudySettings(project, projectFile.toStdString());
+  const double t = s.options.toleranceMm;
+  const double scale = std::pow(10.0, tolerance->decimals());
+  if (t < tolerance->minimum() || t > tolerance->maximum() ||
+      std::abs(std::round(t * scale) / scale - t) > 1e-9 * std::max(1.0, t)) {
+    throw std::runtime_error(
+        MatchingPage::tr(
+            "studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm "
+            "in steps of %4 mm)")
+            .arg(QString::number(t, 'g', 12), QString::number(tolerance->minimum()),
+                 QString::number(tolerance->maximum()), QString::number(1.0 / scale))
+            .toStdString());
+  }
+  return s;
 }
 
 /// studies.diagnosis.matching.applied and .dataset as text ("" when absent), to notice Apply and its
@@ -693,7 +715,7 @@ void MatchingPage::refresh() {
     if (appliedKeyOf(document_->project()) != appliedKey_) {
       if (isRunning()) cancelRun();
       try {
-        settings_ = matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
+        settings_ = readMatchingSettings(document_->project(), projectFile_, toleranceSpin_);
         settingsError_.clear();
       } catch (const std::exception& e) {
         // showPoints says what is wrong with the applied effects, the status line any other setting.
@@ -708,7 +730,7 @@ void MatchingPage::refresh() {
     const bool hadError = !settingsError_.isEmpty();
     try {
       const matching::MatchingStudySettings settings =
-          matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
+          readMatchingSettings(document_->project(), projectFile_, toleranceSpin_);
       settingsError_.clear();
       // The machine has no control on the page: the adjustment values follow it without a new run.
       const bool machineChanged = settings.options.machine.toJson() != settings_.options.machine.toJson();
@@ -745,7 +767,7 @@ void MatchingPage::refresh() {
   generation_ = document_->generation();
   QString previous = currentDataset();
   try {
-    settings_ = matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
+    settings_ = readMatchingSettings(document_->project(), projectFile_, toleranceSpin_);
     settingsError_.clear();
   } catch (const std::exception& e) {
     settings_ = {};

@@ -348,3 +348,36 @@ TEST_F(SettingsRoundTripTest, MatchingPage) {
 
 }  // namespace
 }  // namespace metrofit
+
+namespace metrofit {
+namespace {
+
+// A tolerance the study accepts but the page's spin box would clamp or round (0, 20 mm, 0.0355 mm) is
+// refused with the field named and nothing is matched (the page used to match with the clamped value
+// while the report used the study's); a value the control shows is used as it is.
+TEST_F(SettingsRoundTripTest, MatchingToleranceThePageCannotShowIsRefused) {
+  openDemo("matching", {"probe_s_piece"});
+  for (const double bad : {0.0, 20.0, 0.0355}) {
+    document_.endEditSequence();
+    document_.setStudyValue(QStringLiteral("matching"), QStringLiteral("/tolerance_mm"), bad,
+                            QStringLiteral("edit"));
+    MatchingPage page(&document_);
+    EXPECT_TRUE(page.statusText().contains(QStringLiteral("studies.matching.tolerance_mm")))
+        << bad << ": " << page.statusText().toStdString();
+    EXPECT_FALSE(page.runNow()) << bad;
+  }
+  MatchingPage page(&document_);
+  document_.endEditSequence();
+  document_.setStudyValue(QStringLiteral("matching"), QStringLiteral("/tolerance_mm"), 0.04,
+                          QStringLiteral("edit"));
+  EXPECT_FALSE(page.statusText().contains(QStringLiteral("studies.matching")))
+      << page.statusText().toStdString();
+  EXPECT_DOUBLE_EQ(page.findChild<QDoubleSpinBox*>(QStringLiteral("matchingTolerance"))->value(), 0.04);
+  EXPECT_TRUE(page.runNow()) << page.errorMessage().toStdString();
+  document_.undoStack()->undo();  // back to 0.0355
+  EXPECT_TRUE(page.statusText().contains(QStringLiteral("studies.matching.tolerance_mm")))
+      << page.statusText().toStdString();
+}
+
+}  // namespace
+}  // namespace metrofit
