@@ -22,6 +22,7 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <exception>
 #include <set>
@@ -765,10 +766,13 @@ void DiagnosisPage::buildControls() {
   // The value the project holds for a key of a domain's block, or the type's default: the controls show
   // what the study holds (an invalid value is refused above the results, not replaced).
   const auto number = [this, study](const char* domain, const char* key, double fallback) {
-    return [this, study, domain, key, fallback] {
+    // The study's value, the default when there is none, nullopt for a value the page refuses.
+    return [this, study, domain, key, fallback]() -> std::optional<double> {
       const nlohmann::json v = document_->studyValue(
           study, QStringLiteral("/%1/%2").arg(QLatin1String(domain), QLatin1String(key)));
-      return v.is_number() ? v.get<double>() : fallback;
+      if (v.is_null()) return fallback;
+      if (v.is_number()) return v.get<double>();
+      return std::nullopt;
     };
   };
   const auto text = [this, study](const char* domain, const char* key) {

@@ -114,6 +114,7 @@ MainWindow::MainWindow(QWidget* parent)
   });
   connect(document_, &ProjectDocument::changed, this, &MainWindow::updateTitle);
   connect(document_, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(document_, &ProjectDocument::unsavedResultsChanged, this, &MainWindow::updateTitle);
   connect(document_, &ProjectDocument::fileChangedOnDisk, this,
           [this](const QString& file) { fileChangedBar_->showFor(file, document_->isModified()); });
   connect(fileChangedBar_, &FileChangedBar::reloadRequested, this, &MainWindow::reloadFromDisk);
@@ -236,7 +237,8 @@ void MainWindow::showPage(Page page) {
 void MainWindow::updateTitle() {
   setWindowTitle(tr("%1[*] — Metrofit").arg(document_->displayName()));
   auto* setup = qobject_cast<SetupPage*>(page(Page::Setup));
-  setWindowModified(document_->isModified() || (setup && setup->modelEditor()->isModified()));
+  setWindowModified(document_->isModified() || document_->hasUnsavedResults() ||
+                    (setup && setup->modelEditor()->isModified()));
 }
 
 void MainWindow::updateActiveUndoStack() {
@@ -305,12 +307,15 @@ bool MainWindow::maybeSave() {
   // The setup model is its own file with its own undo stack (the graph editor): its unsaved edits
   // are asked about together with the project's.
   auto* setup = qobject_cast<SetupPage*>(page(Page::Setup));
+  // A run's result is kept in the project (ProjectDocument::setStoredResult) without being an edit:
+  // it is lost too when the project is not saved, so it is asked about as well.
   const bool modelEdited = setup && setup->modelEditor()->isModified();
-  if (!document_->isModified() && !modelEdited) return true;
+  const bool projectUnsaved = document_->isModified() || document_->hasUnsavedResults();
+  if (!projectUnsaved && !modelEdited) return true;
   switch (unsavedDecider_ ? unsavedDecider_() : askUnsavedChanges()) {
     case UnsavedChoice::Save:
       if (!saveSetupModel()) return false;
-      return !document_->isModified() || save();
+      return !projectUnsaved || save();
     case UnsavedChoice::Discard:
       autosave_->removeWritten();
       return true;
@@ -320,18 +325,32 @@ bool MainWindow::maybeSave() {
   return false;
 }
 
-MainWindow::UnsavedChoice MainWindow::askUnsavedChanges() {
+QString MainWindow::unsavedChangesText() const {
   auto* setup = qobject_cast<SetupPage*>(page(Page::Setup));
   const bool modelEdited = setup && setup->modelEditor()->isModified();
   QString text =
       tr("The project \"%1\" has unsaved changes. Do you want to save them?").arg(document_->displayName());
-  if (modelEdited && !document_->isModified()) {
+  if (document_->hasUnsavedResults()) {
+    // The results are in the project: saving it keeps them, with or without other changes.
+    text = document_->isModified() || modelEdited
+               ? tr("The project \"%1\" has unsaved changes, and the results of the last run are not saved "
+                    "either. Do you want to save them?")
+                     .arg(document_->displayName())
+               : tr("The results of the last run are not saved in the project \"%1\" (they are lost when "
+                    "it is closed without saving). Do you want to save them?")
+                     .arg(document_->displayName());
+  } else if (modelEdited && !document_->isModified()) {
     text = tr("The setup model (relation graph) has unsaved edits. Do you want to save them?");
   } else if (modelEdited) {
     text = tr("The project \"%1\" and the setup model (relation graph) have unsaved changes. Do you want to "
               "save them?")
                .arg(document_->displayName());
   }
+  return text;
+}
+
+MainWindow::UnsavedChoice MainWindow::askUnsavedChanges() {
+  const QString text = unsavedChangesText();
   QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"), text,
                   QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
   box.setObjectName(QStringLiteral("unsavedChangesBox"));

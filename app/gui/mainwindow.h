@@ -43,6 +43,9 @@ class MainWindow : public QMainWindow {
   Autosave* autosave() const { return autosave_; }
   /// Replaces the unsaved-changes question (default: a message box); tests inject the answer.
   void setUnsavedChangesDecider(UnsavedDecider decider) { unsavedDecider_ = std::move(decider); }
+  /// The question asked before unsaved changes are lost: names the project's edits, the setup model's
+  /// unsaved edits and results of a run that are not saved yet (ProjectDocument::hasUnsavedResults).
+  QString unsavedChangesText() const;
   QWidget* page(Page page) const;
   Page currentPage() const;
 

@@ -31,14 +31,19 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <limits>
+#include <optional>
 #include <set>
+#include <stdexcept>
 
 #include "app/gui/machinedialog.h"
 #include "app/gui/notesedit.h"
+#include "app/gui/studysettingbinding.h"
 #include "core/common/error.h"
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
 #include "core/project/stored_results.h"
+#include "core/study/study_settings.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/storedresulttext.h"
@@ -49,6 +54,43 @@
 namespace metrofit {
 
 namespace {
+
+/// The one setting `key` of studies.matching read on its own (MatchingSettings::fromJson / isValid), so
+/// that a bad value of another key does not hide it; nullopt when it is refused (the binding then
+/// leaves its control as it is: refused, never replaced by a default).
+std::optional<MatchingSettings> matchingSettingField(const Project& project, const char* key) {
+  const auto study = project.studies.find(study::kMatching);
+  nlohmann::json one = nlohmann::json::object();
+  if (study != project.studies.end() && study->is_object() && study->contains(key)) one[key] = (*study)[key];
+  try {
+    MatchingSettings s = MatchingSettings::fromJson(one);
+    if (!s.isValid(nullptr, nullptr)) return std::nullopt;
+    return s;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+/// The study's settings (matchingStudySettings) when the page's controls can show them as they are: a
+/// tolerance the spin box would clamp or round (0, 20 mm, 0.0355 mm; all valid for the study and the
+/// report) is refused naming the field, never matched with the value the control shows instead.
+matching::MatchingStudySettings readMatchingSettings(const Project& project, const QString& projectFile,
+                                                     const QDoubleSpinBox* tolerance) {
+  matching::MatchingStudySettings s = matching::matchingStudySettings(project, projectFile.toStdString());
+  const double t = s.options.toleranceMm;
+  const double scale = std::pow(10.0, tolerance->decimals());
+  if (t < tolerance->minimum() || t > tolerance->maximum() ||
+      std::abs(std::round(t * scale) / scale - t) > 1e-9 * std::max(1.0, t)) {
+    throw std::runtime_error(
+        MatchingPage::tr(
+            "studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm "
+            "in steps of %4 mm)")
+            .arg(QString::number(t, 'g', 12), QString::number(tolerance->minimum()),
+                 QString::number(tolerance->maximum()), QString::number(1.0 / scale))
+            .toStdString());
+  }
+  return s;
+}
 
 /// studies.diagnosis.matching.applied and .dataset as text ("" when absent), to notice Apply and its
 /// undo.
@@ -550,16 +592,38 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
     writeStudyValue(QStringLiteral("/method"), matching::toString(method), tr("Change the matching method"),
                     false);
   });
+  // The tolerance, the scale and the frame's decimals are bound to studies.matching through the shared
+  // binding (app/gui/studysettingbinding.h: one undo step per edit, typing merged; undo / redo / load
+  // put the control back); the page's own reactions stay here.
+  const auto field = [this](const char* key) { return matchingSettingField(document_->project(), key); };
+  bindStudySetting(
+      document_, toleranceSpin_, QString::fromLatin1(study::kMatching), QStringLiteral("/tolerance_mm"),
+      [field]() -> std::optional<double> {
+        const auto s = field("tolerance_mm");
+        return s ? std::optional<double>(s->toleranceMm) : std::nullopt;
+      },
+      tr("Change the matching tolerance"));
+  bindStudySetting(
+      document_, allowScale_, QString::fromLatin1(study::kMatching), QStringLiteral("/allow_scale"),
+      [field]() -> std::optional<bool> {
+        const auto s = field("allow_scale");
+        return s ? std::optional<bool>(s->allowScale) : std::nullopt;
+      },
+      tr("Change the matching scale"));
+  bindStudySetting(
+      document_, frameDecimals_, QString::fromLatin1(study::kMatching), QStringLiteral("/frame_decimals"),
+      [field] {
+        const auto s = field("frame_decimals");
+        return s ? static_cast<qint64>(s->frameDecimals) : std::numeric_limits<qint64>::min();
+      },
+      false, tr("Change the decimals of the frame"));
   connect(toleranceSpin_, &QDoubleSpinBox::valueChanged, this, [this] {
     reevaluate();
-    writeStudyValue(QStringLiteral("/tolerance_mm"), toleranceSpin_->value(),
-                    tr("Change the matching tolerance"), true);
+    if (!writingStudy_) showStoredStatus();
   });
-  connect(toleranceSpin_, &QDoubleSpinBox::editingFinished, document_, &ProjectDocument::endEditSequence);
   connect(allowScale_, &QCheckBox::toggled, this, [this] {
     settingsChanged();
-    writeStudyValue(QStringLiteral("/allow_scale"), allowScale_->isChecked(), tr("Change the matching scale"),
-                    false);
+    if (!writingStudy_) showStoredStatus();
   });
   for (QCheckBox* box : locks_) {
     connect(box, &QCheckBox::toggled, this, [this] {
@@ -574,12 +638,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
     writeStudyValue(QStringLiteral("/frame"), machine::toString(frameFormat()),
                     tr("Change the control of the frame"), false);
   });
-  connect(frameDecimals_, &QSpinBox::valueChanged, this, [this] {
-    fillFrame();
-    writeStudyValue(QStringLiteral("/frame_decimals"), frameDecimals_->value(),
-                    tr("Change the decimals of the frame"), true);
-  });
-  connect(frameDecimals_, &QSpinBox::editingFinished, document_, &ProjectDocument::endEditSequence);
+  connect(frameDecimals_, &QSpinBox::valueChanged, this, [this] { fillFrame(); });
   connect(saveFrame_, &QPushButton::clicked, this, &MatchingPage::saveFrameDialog);
   connect(runButton_, &QPushButton::clicked, this, &MatchingPage::startRun);
   connect(cancelButton_, &QPushButton::clicked, this, &MatchingPage::cancelRun);
@@ -656,7 +715,7 @@ void MatchingPage::refresh() {
     if (appliedKeyOf(document_->project()) != appliedKey_) {
       if (isRunning()) cancelRun();
       try {
-        settings_ = matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
+        settings_ = readMatchingSettings(document_->project(), projectFile_, toleranceSpin_);
         settingsError_.clear();
       } catch (const std::exception& e) {
         // showPoints says what is wrong with the applied effects, the status line any other setting.
@@ -671,7 +730,7 @@ void MatchingPage::refresh() {
     const bool hadError = !settingsError_.isEmpty();
     try {
       const matching::MatchingStudySettings settings =
-          matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
+          readMatchingSettings(document_->project(), projectFile_, toleranceSpin_);
       settingsError_.clear();
       // The machine has no control on the page: the adjustment values follow it without a new run.
       const bool machineChanged = settings.options.machine.toJson() != settings_.options.machine.toJson();
@@ -708,7 +767,7 @@ void MatchingPage::refresh() {
   generation_ = document_->generation();
   QString previous = currentDataset();
   try {
-    settings_ = matching::matchingStudySettings(document_->project(), projectFile_.toStdString());
+    settings_ = readMatchingSettings(document_->project(), projectFile_, toleranceSpin_);
     settingsError_.clear();
   } catch (const std::exception& e) {
     settings_ = {};

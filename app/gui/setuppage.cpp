@@ -17,7 +17,9 @@
 #include <QToolBar>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <cmath>
 #include <exception>
+#include <limits>
 #include <mutex>
 
 #include "app/gui/autosave.h"
@@ -25,12 +27,16 @@
 #include "app/gui/studysettingbinding.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
+#include "core/project/stored_results.h"
 #include "core/setup/exact.h"
+#include "core/setup/export.h"
 #include "core/setup/methods.h"
 #include "core/setup/objective.h"
 #include "core/study/setup_study.h"
+#include "core/study/study_settings.h"
 #include "widgets/common/backgroundrun.h"
 #include "widgets/document/projectdocument.h"
+#include "widgets/document/storedresulttext.h"
 #include "widgets/document/studyinfo.h"
 #include "widgets/setup/setupcharts.h"
 #include "widgets/setup/setupconvergenceview.h"
@@ -58,6 +64,40 @@ std::string appliedKeyOf(const Project& project) {
 
 constexpr int kProgressSteps = 1000;
 
+/// studies.setup as the project holds it (an empty object when there is none).
+nlohmann::json setupStudyJson(const Project& project) {
+  const auto s = project.studies.find(study::kSetup);
+  return s == project.studies.end() ? nlohmann::json::object() : *s;
+}
+
+/// The one run setting `key` of studies.setup read on its own (SetupSettings::fromJson / isValid), so
+/// that a bad budget does not hide a good method; nullopt when it is refused.
+std::optional<SetupSettings> setupSettingField(const Project& project, const char* key) {
+  const nlohmann::json study = setupStudyJson(project);
+  nlohmann::json one = nlohmann::json::object();
+  if (study.is_object() && study.contains(key)) one[key] = study[key];
+  try {
+    SetupSettings s = SetupSettings::fromJson(one);
+    if (!s.isValid(nullptr, nullptr)) return std::nullopt;
+    return s;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+/// FNV-1a 64 of a text as "fnv1a64:<16 hex>" (the model a stored run was computed on).
+std::string fnv1a64(const std::string& text) {
+  std::uint64_t h = 14695981039346656037ULL;
+  for (const unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
+  static const char* hex = "0123456789abcdef";
+  std::string out = "fnv1a64:";
+  for (int shift = 60; shift >= 0; shift -= 4) out += hex[(h >> shift) & 0xF];
+  return out;
+}
+
 /// The convergence points the worker collects for the chart while a run goes on.
 struct LiveTrace {
   std::mutex mutex;
@@ -74,6 +114,7 @@ struct SetupPage::Impl {
   std::optional<setup::Measurements> measurements;     ///< with the applied effects
   std::optional<setup::Measurements> rawMeasurements;  ///< as read
   std::string appliedKey;                              ///< studies.diagnosis.setup.applied as text
+  std::string studyKey;                                ///< studies.setup as text (readSettings)
   std::vector<diagnose::AppliedSetupEffect> applied;
   std::optional<diagnose::SetupPrediction> prediction, declared;
   QString dataError;     ///< model or report could not be read
@@ -151,12 +192,14 @@ SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
     method_->addItem(setupMethodTitle(name), name);
   }
   method_->setToolTip(tr("exact: the LP/MILP optimum (GLPK); the metaheuristics with the paper's settings"));
-  budget_->setRange(100, 100000000);
+  // Every budget and seed the study accepts up to what a spin box holds; a larger one is refused by
+  // readSettings (never clamped).
+  budget_->setRange(1, std::numeric_limits<int>::max());
   budget_->setSingleStep(1000);
   budget_->setValue(static_cast<int>(setup::kPaperBudget));
   budget_->setSuffix(tr(" solutions"));
   budget_->setToolTip(tr("Solutions a metaheuristic evaluates (the paper: 5000)"));
-  seed_->setRange(0, 1000000000);
+  seed_->setRange(0, std::numeric_limits<int>::max());
   seed_->setValue(1);
   seed_->setToolTip(tr("Seed of the metaheuristic: the same seed gives the same run"));
   run_->setToolTip(tr("Run the method (Ctrl+R)"));
@@ -223,18 +266,32 @@ SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
   connect(clearRuns_, &QPushButton::clicked, this, [this] { convergence_->clearRuns(); });
   connect(budget_, &QSpinBox::valueChanged, this, [this](int v) { convergence_->setBudget(v); });
   // The run settings are studies.setup.method / budget / seed (undoable edits; undo moves the controls).
-  const auto files = [this] {
-    return setupStudyFiles(document_->project(), document_->fileName().toStdString());
-  };
+  // A refused value leaves its control as it is (the info line names the field); choosing a value
+  // writes it, which corrects the study.
+  const auto field = [this](const char* key) { return setupSettingField(document_->project(), key); };
   bindStudySetting(
       document_, method_, QString::fromLatin1(study::kSetup), QStringLiteral("/method"),
-      [files] { return QString::fromStdString(files().method); }, tr("Change the setup method"));
+      [field] {
+        const auto s = field("method");
+        return s ? QString::fromStdString(s->method) : QString();
+      },
+      tr("Change the setup method"));
   bindStudySetting(
       document_, budget_, QString::fromLatin1(study::kSetup), QStringLiteral("/budget"),
-      [files] { return static_cast<qint64>(files().budget); }, false, tr("Change the setup budget"));
+      [field] {
+        const auto s = field("budget");
+        return s ? static_cast<qint64>(s->budget) : std::numeric_limits<qint64>::min();
+      },
+      false, tr("Change the setup budget"));
   bindStudySetting(
       document_, seed_, QString::fromLatin1(study::kSetup), QStringLiteral("/seed"),
-      [files] { return static_cast<qint64>(files().seed); }, true, tr("Change the setup seed"));
+      [field] {
+        const auto s = field("seed");
+        return s && s->seed <= static_cast<std::uint64_t>(std::numeric_limits<qint64>::max())
+                   ? static_cast<qint64>(s->seed)
+                   : std::numeric_limits<qint64>::min();
+      },
+      true, tr("Change the setup seed"));
 
   auto* top = new QHBoxLayout;
   top->addWidget(title);
@@ -297,6 +354,17 @@ void SetupPage::refresh() {
                       QDir::cleanPath(QString::fromStdString(files.modelPath)) + QLatin1Char('\n') +
                       QDir::cleanPath(QString::fromStdString(files.reportPath));
   if (d->loaded && key == d->loadedKey) {
+    // An edit of the run settings (or its undo): refused or accepted again, the stored result's state.
+    if (const std::string study = setupStudyJson(document_->project()).dump(); study != d->studyKey) {
+      d->studyKey = study;
+      const QString settingsBefore = settingsError_;
+      readSettings();
+      if (settingsBefore != settingsError_) {
+        updateInfo();
+        updateControls();
+      }
+      showStoredResult();
+    }
     // Apply on the diagnosis page (or its undo): the same files, another model of the deviations.
     const std::string applied = appliedKeyOf(document_->project());
     if (applied == d->appliedKey) return;
@@ -370,10 +438,19 @@ void SetupPage::reload() {
   d->measurements.reset();
   d->rawMeasurements.reset();
   d->appliedKey = appliedKeyOf(document_->project());
-  const int methodIndex = method_->findData(QString::fromStdString(d->files.method));
-  if (methodIndex >= 0) method_->setCurrentIndex(methodIndex);
-  budget_->setValue(static_cast<int>(d->files.budget));
-  seed_->setValue(static_cast<int>(d->files.seed));
+  // The controls show the study's values; a refused one is not replaced by a default (readSettings
+  // names it, Run stays disabled).
+  readSettings();
+  if (const auto s = setupSettingField(document_->project(), "method")) {
+    const int methodIndex = method_->findData(QString::fromStdString(s->method));
+    if (methodIndex >= 0) method_->setCurrentIndex(methodIndex);
+  }
+  if (const auto s = setupSettingField(document_->project(), "budget");
+      s && s->budget >= budget_->minimum() && s->budget <= budget_->maximum())
+    budget_->setValue(static_cast<int>(s->budget));
+  if (const auto s = setupSettingField(document_->project(), "seed");
+      s && s->seed <= static_cast<std::uint64_t>(seed_->maximum()))
+    seed_->setValue(static_cast<int>(s->seed));
   setup::Model model;
   if (d->files.modelPath.empty()) {
     d->dataError =
@@ -476,6 +553,31 @@ void SetupPage::onModelEdited() {
   }
   updateInfo();
   updateControls();
+  showStoredResult();
+}
+
+void SetupPage::readSettings() {
+  settingsError_.clear();
+  const nlohmann::json study = setupStudyJson(document_->project());
+  d->studyKey = study.dump();
+  try {
+    const SetupSettings s = SetupSettings::fromJson(study, document_->fileName().toStdString());
+    std::string field, why;
+    if (!s.isValid(&field, &why)) {
+      settingsError_ = QString::fromStdString(field + ": " + why);
+    } else if (const auto b = study.find("budget");
+               b != study.end() && b->is_number_float() && std::floor(b->get<double>()) != b->get<double>()) {
+      settingsError_ = tr("studies.setup.budget: must be a whole number of solutions");
+    } else if (s.budget > budget_->maximum()) {
+      settingsError_ = tr("studies.setup.budget: more solutions than the page can run (at most %1)")
+                           .arg(budget_->maximum());
+    } else if (s.seed > static_cast<std::uint64_t>(seed_->maximum())) {
+      settingsError_ =
+          tr("studies.setup.seed: larger than the page can use (at most %1)").arg(seed_->maximum());
+    }
+  } catch (const std::exception& e) {
+    settingsError_ = QString::fromStdString(e.what());
+  }
 }
 
 void SetupPage::updateInfo() {
@@ -536,13 +638,19 @@ void SetupPage::updateInfo() {
                                     .arg(QString::fromStdString(elsewhere));
   }
   if (!error_.isEmpty()) text += QLatin1Char('\n') + error_;
+  if (!settingsError_.isEmpty())
+    text +=
+        QLatin1Char('\n') + tr("The setup study's run settings are invalid, nothing is run until they are "
+                               "corrected (choose a value, Undo, or the project file): %1")
+                                .arg(settingsError_);
   info_->setText(text);
-  info_->setStyleSheet(error_.isEmpty() ? QString() : QStringLiteral("color: #b01818;"));
+  info_->setStyleSheet(error_.isEmpty() && settingsError_.isEmpty() ? QString()
+                                                                    : QStringLiteral("color: #b01818;"));
 }
 
 void SetupPage::updateControls() {
   const bool running = isRunning();
-  run_->setEnabled(!running && d->instance.has_value());
+  run_->setEnabled(!running && d->instance.has_value() && settingsError_.isEmpty());
   cancel_->setEnabled(running);
   method_->setEnabled(!running);
   budget_->setEnabled(!running);
@@ -575,12 +683,17 @@ bool SetupPage::isRunning() const {
 }
 
 bool SetupPage::startRun() {
+  if (!settingsError_.isEmpty()) {  // refused, not replaced by a default
+    runStatus_->setText(tr("Not run: %1").arg(settingsError_));
+    return false;
+  }
   if (isRunning() || !ensureExact()) return false;
   const std::string method = method_->currentData().toString().toStdString();
   const long budget = budget_->value();
   const auto seed = static_cast<std::uint64_t>(seed_->value());
   if (method == "exact") {
     showOutcome(*d->exact);
+    storeResult(*d->exact);
     runStatus_->setText(tr("Exact optimum: %1 solver calls in %2 ms.")
                             .arg(d->exact->evaluations)
                             .arg(QLocale().toString(d->exact->seconds * 1e3, 'f', 2)));
@@ -614,6 +727,7 @@ bool SetupPage::runSynchronously(const QString& method, long budget, unsigned lo
   if (isRunning() || !ensureExact()) return false;
   if (method == QLatin1String("exact")) {
     showOutcome(*d->exact);
+    storeResult(*d->exact);
     return true;
   }
   try {
@@ -621,6 +735,7 @@ bool SetupPage::runSynchronously(const QString& method, long budget, unsigned lo
     const int run = convergence_->addRun(method, seed);
     convergence_->appendPoints(run, outcome.trace);
     showOutcome(outcome);
+    storeResult(outcome);
     progress_->setValue(kProgressSteps);
   } catch (const std::exception& e) {
     error_ = QString::fromStdString(e.what());
@@ -669,7 +784,10 @@ void SetupPage::onRunFinished(const QString& error) {
                   .arg(QLocale().toString(d->exact->score.f1 - o.score.f1, 'f', 4));
     text += cancelled ? tr(" — cancelled.") : QStringLiteral(".");
     runStatus_->setText(text);
-    if (d->runInstance && d->instance) showOutcome(o);
+    if (d->runInstance && d->instance) {
+      showOutcome(o);
+      if (!cancelled) storeResult(o);
+    }
   }
   d->runInstance.reset();
   updateControls();
@@ -731,7 +849,7 @@ void SetupPage::showView(const QString& view) {
     graph_->setFocus();
   } else if (view == QLatin1String("convergence")) {
     tabs_->setCurrentIndex(1);
-    if (convergence_->runs().empty() && ensureExact()) {
+    if (convergence_->runs().empty() && settingsError_.isEmpty() && ensureExact()) {
       runSynchronously(QStringLiteral("cripso"), setup::kPaperBudget, 1);
       runSynchronously(QStringLiteral("pso"), setup::kPaperBudget, 1);
       runStatus_->setText(tr("CRIPSO and PSO, seed 1, %1 solutions each, against the exact optimum.")
@@ -739,7 +857,7 @@ void SetupPage::showView(const QString& view) {
     }
   } else if (view == QLatin1String("results")) {
     tabs_->setCurrentIndex(2);
-    if (!results_->hasResult()) runSynchronously(QStringLiteral("exact"), 0, 0);
+    if (!results_->hasResult() && settingsError_.isEmpty()) runSynchronously(QStringLiteral("exact"), 0, 0);
   } else if (view == QLatin1String("validation")) {
     tabs_->setCurrentIndex(3);
     if (validation_->result() == nullptr && !validation_->isRunning()) {
@@ -748,6 +866,156 @@ void SetupPage::showView(const QString& view) {
       if (validation_->start()) validation_->waitForFinished();
     }
   }
+}
+
+nlohmann::json SetupPage::storedSettingsJson() const {
+  // What decides the figures: the run settings, the model as edited (its tolerances, bounds, arcs)
+  // and the effects applied on the diagnosis page (they change the deviations).
+  nlohmann::json settings = nlohmann::json::object();
+  try {
+    settings["study"] = SetupSettings::fromJson(setupStudyJson(document_->project())).toJson();
+  } catch (const std::exception&) {
+    settings["study"] = nullptr;  // refused: nothing stored matches
+  }
+  // Without the study's dataset ids: they name the data, whose hash the envelope keeps.
+  if (settings["study"].is_object()) {
+    settings["study"].erase("model");
+    settings["study"].erase("dataset");
+  }
+  settings["model"] = fnv1a64(setup::modelToJson(editor_->model()).dump());
+  settings["diagnosis"] =
+      document_->studyValue(QString::fromLatin1(study::kDiagnosis), QStringLiteral("/setup/applied"));
+  return settings;
+}
+
+void SetupPage::storeResult(const SetupRunOutcome& o) {
+  if (!settingsError_.isEmpty() || !d->instance || !d->measurements || d->files.reportId.empty()) return;
+  if (o.termination == Termination::Cancelled) return;
+  // Only a run of the study's own settings is the study's result (showView's demo runs are not).
+  SetupSettings s;
+  try {
+    s = SetupSettings::fromJson(setupStudyJson(document_->project()));
+  } catch (const std::exception&) {
+    return;
+  }
+  if (o.method != s.method) return;
+  if (o.method != "exact" && (o.budget != s.budget || o.seed != s.seed)) return;
+  const DatasetRef* report = document_->project().dataset(d->files.reportId);
+  if (!report) return;
+  const setup::Model& model = editor_->model();
+  nlohmann::json corrections = nlohmann::json::array();
+  for (std::size_t i = 0; i < model.setup.size() && i < o.x.size(); ++i) {
+    nlohmann::json c = {{"datum", model.setup[i].id},
+                        {"correction_mm", std::abs(o.x[i]) < 5e-10 ? 0.0 : o.x[i]}};
+    try {
+      c["register"] = setup::registerOf(model, i);
+    } catch (const std::exception&) {
+    }
+    corrections.push_back(std::move(c));
+  }
+  const SetupPartsSummary parts = partsSummary(*d->instance, d->measModel, *d->measurements, o.x);
+  nlohmann::json figures = {{"method", o.method},
+                            {"f1_before", o.f1Before},
+                            {"f1", o.score.f1},
+                            {"f2", o.score.f2},
+                            {"f", o.score.f},
+                            {"evaluations", o.evaluations},
+                            {"termination", toString(o.termination)},
+                            {"corrections", std::move(corrections)},
+                            {"parts",
+                             {{"parts", parts.parts},
+                              {"in_tolerance_before", parts.inToleranceBefore},
+                              {"in_tolerance_after", parts.inToleranceAfter},
+                              {"rescued", parts.rescued},
+                              {"lost", parts.lost}}}};
+  if (o.method == "exact") {
+    figures["f1_optimal"] = o.f1Optimal;
+    figures["f2_optimal"] = o.f2Optimal;
+  } else {
+    figures["budget"] = o.budget;
+    figures["seed"] = o.seed;
+  }
+  if (d->exact)
+    figures["exact"] = {{"f1", d->exact->score.f1}, {"f2", d->exact->score.f2}, {"f", d->exact->score.f}};
+  try {
+    document_->setStoredResult(QString::fromLatin1(study::kSetup), QString::fromStdString(d->files.reportId),
+                               makeStoredResult(document_->projectPathForDatasets().toStdString(), *report,
+                                                storedSettingsJson(), std::move(figures)));
+  } catch (const std::exception&) {
+    // The report cannot be read any more: nothing is stored, the page shows the run.
+  }
+}
+
+QString SetupPage::storedResultText() const {
+  if (d->files.reportId.empty() || !settingsError_.isEmpty()) return {};
+  const DatasetRef* report = document_->project().dataset(d->files.reportId);
+  if (!report) return {};
+  const StoredResult stored =
+      storedResult(document_->project(), document_->projectPathForDatasets().toStdString(), study::kSetup,
+                   *report, storedSettingsJson());
+  const QString when = storedTimeText(stored.computed);
+  switch (stored.state) {
+    case StoredResultState::None:
+      return {};
+    case StoredResultState::SettingsChanged:
+      return tr("The stored result (computed %1) is out of date: the run settings, the model or the applied "
+                "effects changed since. Not run with these yet: press Run (Ctrl+R).")
+          .arg(when);
+    case StoredResultState::DataChanged:
+      return tr("The stored result (computed %1) is out of date: the CMM report changed since. Press Run "
+                "(Ctrl+R) to correct the setup for the report as it is now.")
+          .arg(when);
+    case StoredResultState::DataMissing:
+      return tr("The stored result (computed %1) cannot be checked: the CMM report cannot be read.")
+          .arg(when);
+    case StoredResultState::Current:
+      break;
+  }
+  const nlohmann::json& e = stored.entry;
+  const auto number = [&e](const char* key) {
+    const nlohmann::json v = e.value(key, nlohmann::json());
+    return v.is_number() ? v.get<double>() : 0.0;
+  };
+  const QLocale locale;
+  const auto mm = [&locale](double v) { return locale.toString(v, 'f', 4); };
+  QStringList corrections;
+  if (e.contains("corrections") && e["corrections"].is_array()) {
+    for (const nlohmann::json& c : e["corrections"]) {
+      if (!c.is_object() || !c.value("datum", nlohmann::json()).is_string()) continue;
+      const nlohmann::json v = c.value("correction_mm", nlohmann::json());
+      corrections << QStringLiteral("%1 %2").arg(
+          QString::fromStdString(c["datum"].get<std::string>()),
+          locale.toString(v.is_number() ? v.get<double>() : 0.0, 'f', 3));
+    }
+  }
+  const nlohmann::json parts = e.value("parts", nlohmann::json::object());
+  const auto count = [&parts](const char* key) {
+    const nlohmann::json v = parts.is_object() ? parts.value(key, nlohmann::json()) : nlohmann::json();
+    return v.is_number_integer() ? v.get<long long>() : 0LL;
+  };
+  const QString method = QString::fromStdString(e.value("method", std::string()));
+  return tr("From the saved project (computed %1 with these settings, this model and this report): %2: f1 %3 "
+            "→ "
+            "%4 mm, |x| = f2 %5 mm, f %6; corrections (mm) %7; %8 of %9 parts in tolerance before, %10 "
+            "after. "
+            "Press Run (Ctrl+R) to see the tables and exports.")
+      .arg(when, setupMethodTitle(method), mm(number("f1_before")), mm(number("f1")), mm(number("f2")),
+           mm(number("f")), corrections.join(QStringLiteral(", ")))
+      .arg(count("in_tolerance_before"))
+      .arg(count("parts"))
+      .arg(count("in_tolerance_after"));
+}
+
+void SetupPage::showStoredResult() {
+  if (results_->hasResult() || isRunning()) return;
+  QString text;
+  if (!settingsError_.isEmpty()) {
+    text = tr("Nothing is run while the setup study's run settings are invalid: %1").arg(settingsError_);
+  } else {
+    text = storedResultText();
+    if (text.isEmpty()) text = tr("No result for this model yet: choose a method and press Run (Ctrl+R).");
+  }
+  results_->clear(text);
 }
 
 }  // namespace metrofit

@@ -65,6 +65,16 @@ class SetupPage : public QWidget {
   QProgressBar* progressBar() const { return progress_; }
   /// Why the study cannot run (unreadable model or report, invalid edited model); empty when it can.
   QString errorMessage() const { return error_; }
+  /// Why the study's run settings (studies.setup.method, budget, seed) are refused, the field named
+  /// ("studies.setup.budget: must be a number > 0 (solutions)"); empty when they are good. A refused
+  /// setting is never replaced by a default: Run stays disabled until it is corrected (an edit of the
+  /// control, Undo, or the project file).
+  QString settingsError() const { return settingsError_; }
+  /// What the project stores of the setup run for the study's report (results.setup.<report>,
+  /// core/project/stored_results.h), or "" when nothing is stored: "From the saved project (computed
+  /// <when>) ..." with the figures when the settings, the model and the data are those they came
+  /// from, else "out of date" with why. Shown on the Results tab until a run is made.
+  QString storedResultText() const;
   /// The info text (model, report, applied effects).
   QString infoText() const;
   /// The effects of studies.diagnosis.setup.applied in use (empty: the declared model).
@@ -105,6 +115,16 @@ class SetupPage : public QWidget {
   void flushTrace();
   void onRunFinished(const QString& error);
   void showOutcome(const SetupRunOutcome& outcome);
+  /// Reads studies.setup's run settings (SetupSettings::fromJson / isValid): settingsError_ names
+  /// the field of a refused one.
+  void readSettings();
+  /// The settings a stored result is compared with: the study's run settings (SetupSettings::toJson),
+  /// a hash of the model the run used (edits included) and the effects applied on the diagnosis page.
+  nlohmann::json storedSettingsJson() const;
+  /// Keeps a finished run of the study's settings in the project (results.setup.<report>).
+  void storeResult(const SetupRunOutcome& outcome);
+  /// Without a run shown: the Results tab says what is stored (storedResultText).
+  void showStoredResult();
   void updateInfo();
   /// d->measurements from the raw report and studies.diagnosis.setup.applied.
   void applyEffects();
@@ -137,6 +157,7 @@ class SetupPage : public QWidget {
   SetupResultsView* results_;
   SetupValidationView* validation_;
   QString error_;
+  QString settingsError_;
 };
 
 }  // namespace metrofit

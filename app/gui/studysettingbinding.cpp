@@ -1,7 +1,9 @@
 #include "app/gui/studysettingbinding.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLineEdit>
 #include <QSpinBox>
 #include <algorithm>
 #include <cmath>
@@ -36,12 +38,11 @@ void bindStudySetting(ProjectDocument* document, QComboBox* combo, const QString
 void bindStudySetting(ProjectDocument* document, QSpinBox* spin, const QString& study, const QString& key,
                       std::function<qint64()> effective, bool writeUnsigned, const QString& undoText) {
   auto syncing = std::make_shared<bool>(false);
-  const auto shown = [spin, effective] {
-    return static_cast<int>(std::clamp<qint64>(effective(), spin->minimum(), spin->maximum()));
-  };
   QObject::connect(spin, &QSpinBox::valueChanged, spin,
-                   [document, study, key, shown, writeUnsigned, undoText, syncing](int value) {
-                     if (*syncing || value == shown()) return;
+                   [document, study, key, effective, writeUnsigned, undoText, syncing](int value) {
+                     // A value the spin box cannot show (refused by the page, never clamped) is
+                     // replaced by any edit.
+                     if (*syncing || value == effective()) return;
                      // Typing merges into one undo step until editingFinished.
                      const nlohmann::json json = writeUnsigned && value >= 0
                                                      ? nlohmann::json(static_cast<std::uint64_t>(value))
@@ -49,11 +50,80 @@ void bindStudySetting(ProjectDocument* document, QSpinBox* spin, const QString& 
                      document->setStudyValue(study, key, json, undoText);
                    });
   QObject::connect(spin, &QSpinBox::editingFinished, document, &ProjectDocument::endEditSequence);
-  QObject::connect(document, &ProjectDocument::changed, spin, [spin, shown, syncing] {
-    const int value = shown();
-    if (value == spin->value()) return;
+  QObject::connect(document, &ProjectDocument::changed, spin, [spin, effective, syncing] {
+    const qint64 value = effective();
+    if (value < spin->minimum() || value > spin->maximum() || value == spin->value()) return;
     *syncing = true;
-    spin->setValue(value);
+    spin->setValue(static_cast<int>(value));
+    *syncing = false;
+  });
+}
+
+void bindStudySetting(ProjectDocument* document, QDoubleSpinBox* spin, const QString& study,
+                      const QString& key, std::function<std::optional<double>()> effective,
+                      const QString& undoText) {
+  auto syncing = std::make_shared<bool>(false);
+  // Equal as the spin box shows them (its decimals): a project value with more digits is no edit.
+  const auto same = [spin](double a, double b) {
+    return std::abs(a - b) <= 0.5 * std::pow(10.0, -spin->decimals());
+  };
+  QObject::connect(spin, &QDoubleSpinBox::valueChanged, spin,
+                   [document, study, key, effective, same, undoText, syncing](double value) {
+                     if (*syncing) return;
+                     if (const std::optional<double> v = effective(); v && same(*v, value)) return;
+                     document->setStudyValue(study, key, value, undoText);
+                   });
+  QObject::connect(spin, &QDoubleSpinBox::editingFinished, document, &ProjectDocument::endEditSequence);
+  QObject::connect(document, &ProjectDocument::changed, spin, [spin, effective, same, syncing] {
+    const std::optional<double> value = effective();
+    if (!value || !std::isfinite(*value) || *value < spin->minimum() || *value > spin->maximum() ||
+        same(*value, spin->value()))
+      return;
+    *syncing = true;
+    spin->setValue(*value);
+    *syncing = false;
+  });
+}
+
+void bindStudySetting(ProjectDocument* document, QCheckBox* box, const QString& study, const QString& key,
+                      std::function<std::optional<bool>()> effective, const QString& undoText) {
+  auto syncing = std::make_shared<bool>(false);
+  QObject::connect(box, &QCheckBox::toggled, box,
+                   [document, study, key, effective, undoText, syncing](bool on) {
+                     if (*syncing) return;
+                     if (const std::optional<bool> v = effective(); v && *v == on) return;
+                     document->endEditSequence();
+                     document->setStudyValue(study, key, on, undoText);
+                     document->endEditSequence();
+                   });
+  QObject::connect(document, &ProjectDocument::changed, box, [box, effective, syncing] {
+    const std::optional<bool> value = effective();
+    if (!value || *value == box->isChecked()) return;
+    *syncing = true;
+    box->setChecked(*value);  // the page's own reactions to the change still run
+    *syncing = false;
+  });
+}
+
+void bindStudySetting(ProjectDocument* document, QLineEdit* edit, const QString& study, const QString& key,
+                      std::function<std::optional<QString>()> effective, bool emptyRemoves,
+                      const QString& undoText) {
+  auto syncing = std::make_shared<bool>(false);
+  QObject::connect(edit, &QLineEdit::textChanged, edit,
+                   [document, study, key, effective, emptyRemoves, undoText, syncing](const QString& text) {
+                     if (*syncing) return;
+                     if (const std::optional<QString> v = effective(); v && *v == text) return;
+                     const nlohmann::json json = text.isEmpty() && emptyRemoves
+                                                     ? nlohmann::json()
+                                                     : nlohmann::json(text.toStdString());
+                     document->setStudyValue(study, key, json, undoText);
+                   });
+  QObject::connect(edit, &QLineEdit::editingFinished, document, &ProjectDocument::endEditSequence);
+  QObject::connect(document, &ProjectDocument::changed, edit, [edit, effective, syncing] {
+    const std::optional<QString> value = effective();
+    if (!value || *value == edit->text()) return;
+    *syncing = true;
+    edit->setText(*value);
     *syncing = false;
   });
 }
@@ -78,32 +148,6 @@ void bindStudyDatasetSetting(ProjectDocument* document, QComboBox* combo, const 
     if (index < 0 || index == combo->currentIndex()) return;
     *syncing = true;
     combo->setCurrentIndex(index);
-    *syncing = false;
-  });
-}
-
-void bindStudySetting(ProjectDocument* document, QDoubleSpinBox* spin, const QString& study,
-                      const QString& key, std::function<double()> effective, const QString& undoText) {
-  auto syncing = std::make_shared<bool>(false);
-  const auto shown = [spin, effective] {
-    const double v = effective();
-    return std::isfinite(v) ? std::clamp(v, spin->minimum(), spin->maximum()) : spin->minimum();
-  };
-  // Equal as the box shows them (its decimals): showing a value is never an edit.
-  const auto same = [spin](double a, double b) {
-    return std::abs(a - b) < 0.5 * std::pow(10.0, -spin->decimals());
-  };
-  QObject::connect(spin, &QDoubleSpinBox::valueChanged, spin,
-                   [document, study, key, shown, same, undoText, syncing](double value) {
-                     if (*syncing || same(value, shown())) return;
-                     document->setStudyValue(study, key, value, undoText);  // typing: one undo step
-                   });
-  QObject::connect(spin, &QDoubleSpinBox::editingFinished, document, &ProjectDocument::endEditSequence);
-  QObject::connect(document, &ProjectDocument::changed, spin, [spin, shown, same, syncing] {
-    const double value = shown();
-    if (same(value, spin->value())) return;
-    *syncing = true;
-    spin->setValue(value);
     *syncing = false;
   });
 }

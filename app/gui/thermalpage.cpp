@@ -14,7 +14,9 @@
 #include <QTabWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <cmath>
 #include <exception>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -203,6 +205,21 @@ void ThermalPage::refresh() {
   showLog(fillDatasetCombo(combo_, logs_, previous));
 }
 
+QString ThermalPage::unshownSetting(const ThermalModelSettings& s) const {
+  // The controls would round or clamp these: fitted with what they show, the page would use another
+  // value than the study holds (the report uses the study's). Refused like a bad value instead.
+  const ThermalModelSettings shown = models_->settings();
+  if (std::abs(shown.trainFraction - s.trainFraction) > 1e-9)
+    return tr("studies.thermal.train_fraction: %1 cannot be set on the page (it takes 0.01 to 0.99 in steps "
+              "of 0.01)")
+        .arg(QString::number(s.trainFraction, 'g', 12));
+  if (shown.seed != s.seed)
+    return tr("studies.thermal.seed: %1 is larger than the page can use (at most %2)")
+        .arg(s.seed)
+        .arg(std::numeric_limits<int>::max());
+  return {};
+}
+
 void ThermalPage::showSettingsError(const QString& message) {
   // Refused, not replaced: nothing is fitted with settings the study does not hold.
   settingsInvalid_ = true;
@@ -258,6 +275,10 @@ void ThermalPage::showLog(int comboIndex) {
     }
     settings_[logId_].applied = diagnose::projectThermalApplied(document_->project(), dataset.id);
     models_->setLog(log_, settings_[logId_]);
+    if (const QString unshown = unshownSetting(settings_[logId_]); !unshown.isEmpty()) {
+      showSettingsError(unshown);
+      return;
+    }
     showStoredResult();
     stack_->setCurrentWidget(tabs_);
     onTabChanged(tabs_->currentIndex());
@@ -338,6 +359,10 @@ void ThermalPage::syncSettingsFromStudy() {
   if (s == models_->settings()) return;
   settings_[logId_] = s;
   models_->setSettings(s);
+  if (const QString unshown = unshownSetting(s); !unshown.isEmpty()) {
+    showSettingsError(unshown);
+    return;
+  }
   if (tabs_->currentIndex() == kHysteresisTab) updateHysteresis();
   showStoredResult();
 }

@@ -86,6 +86,9 @@ class ThermalPage : public QWidget {
   void showLog(int comboIndex);
   /// Shows why the study's settings were refused (the field named) instead of the log.
   void showSettingsError(const QString& message);
+  /// The field the model view cannot show as the study holds it (a train fraction it would round or
+  /// clamp, a seed beyond its range), named with why; empty when the view shows `s` exactly.
+  QString unshownSetting(const ThermalModelSettings& s) const;
   /// The log shown (logs_, paths resolved), or nullptr.
   const DatasetRef* currentLogRef() const;
   /// Keeps the trained comparison in the project (results.thermal.<log>) with its settings and the

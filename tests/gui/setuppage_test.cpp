@@ -18,6 +18,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
+#include <iterator>
 #include <map>
 
 #include <QLocale>
@@ -25,6 +26,7 @@
 
 #include "app/gui/setuppage.h"
 #include "cli/cli_runner.h"
+#include "core/project/project.h"
 #include "core/setup/model.h"
 #include "core/study/setup_validation.h"
 #include "qtapp.h"
@@ -271,6 +273,99 @@ TEST_F(SetupPageTest, EditedModelIsSavedAtomically) {
   EXPECT_FALSE(page_->saveModel(&error));
   EXPECT_TRUE(error.contains(QStringLiteral("paper_example.json"))) << error.toStdString();
   EXPECT_FALSE(error.contains(QLatin1Char('\n'))) << error.toStdString();
+}
+
+}  // namespace
+}  // namespace metrofit
+
+namespace metrofit {
+namespace {
+
+// Issue 27 item 3: a bad run setting written in the project file (studies.setup.method, budget,
+// seed) is refused with the field named on the page and Run is disabled; the control is never set
+// to a default in its place, and choosing a value in the control corrects the study (undoable).
+struct BadSetupSetting {
+  const char* key;
+  nlohmann::json value;
+  const char* field;
+};
+
+class SetupSettingsRefusalTest : public ::testing::TestWithParam<int> {};
+
+const BadSetupSetting kBadSettings[] = {
+    {"method", "simplex", "studies.setup.method"},
+    {"method", 3, "studies.setup.method"},
+    {"budget", -5, "studies.setup.budget"},
+    {"budget", "lots", "studies.setup.budget"},
+    {"budget", 2500.5, "studies.setup.budget"},
+    {"budget", 1e10, "studies.setup.budget"},  // valid for the study, more than the page can run
+    {"seed", -1, "studies.setup.seed"},
+    {"seed", "one", "studies.setup.seed"},
+};
+
+TEST_P(SetupSettingsRefusalTest, IsNamedAndNothingRuns) {
+  const BadSetupSetting& bad = kBadSettings[GetParam()];
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  const QString path = extractDemoProject(dir.path());
+  Project p = loadProject(path.toStdString());
+  p.studies["setup"]["method"] = "pso";  // a good value beside the bad one stays shown
+  p.studies["setup"][bad.key] = bad.value;
+  saveProject(p, path.toStdString());
+  ProjectDocument document;
+  document.load(path);
+  SetupPage page(&document);
+  const QString field = QString::fromLatin1(bad.field);
+  EXPECT_TRUE(page.settingsError().contains(field)) << page.settingsError().toStdString();
+  EXPECT_TRUE(page.infoText().contains(field)) << page.infoText().toStdString();
+  EXPECT_FALSE(page.runButton()->isEnabled()) << "refused, not replaced by a default";
+  EXPECT_FALSE(page.startRun());
+  EXPECT_FALSE(page.resultsView()->hasResult());
+  EXPECT_FALSE(document.isModified()) << "showing a bad project is no edit";
+  EXPECT_EQ(document.project().studies["setup"][bad.key], bad.value) << "the bad value is not rewritten";
+  if (std::string(bad.key) != "method") {
+    EXPECT_EQ(page.methodCombo()->currentData().toString(), QStringLiteral("pso"));
+  }
+
+  // Choosing a value in the control corrects the study in one undo step; undo brings the refusal back.
+  if (std::string(bad.key) == "method") {
+    page.methodCombo()->setCurrentIndex(page.methodCombo()->findData(QStringLiteral("cripso")));
+    EXPECT_EQ(document.project().studies["setup"]["method"], "cripso");
+  } else if (std::string(bad.key) == "budget") {
+    page.budgetSpin()->setValue(page.budgetSpin()->value() == 3000 ? 3001 : 3000);
+    EXPECT_TRUE(document.project().studies["setup"]["budget"].is_number_integer());
+  } else {
+    page.seedSpin()->setValue(page.seedSpin()->value() == 7 ? 8 : 7);
+    EXPECT_TRUE(document.project().studies["setup"]["seed"].is_number_unsigned());
+  }
+  EXPECT_TRUE(page.settingsError().isEmpty()) << page.settingsError().toStdString();
+  EXPECT_TRUE(page.runButton()->isEnabled());
+  EXPECT_FALSE(page.infoText().contains(field)) << page.infoText().toStdString();
+  document.undoStack()->undo();
+  EXPECT_EQ(document.project().studies["setup"][bad.key], bad.value);
+  EXPECT_TRUE(page.settingsError().contains(field)) << page.settingsError().toStdString();
+  EXPECT_FALSE(page.runButton()->isEnabled());
+}
+
+INSTANTIATE_TEST_SUITE_P(BadValues, SetupSettingsRefusalTest,
+                         ::testing::Range(0, static_cast<int>(std::size(kBadSettings))));
+
+// A setting broken by an edit (another page, an import) is refused the same way.
+TEST(SetupSettingsRefusal, AnEditThatBreaksASettingDisablesRun) {
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  ProjectDocument document;
+  document.load(extractDemoProject(dir.path()));
+  SetupPage page(&document);
+  ASSERT_TRUE(page.runButton()->isEnabled());
+  const int budget = page.budgetSpin()->value();
+  document.setStudyValue(QStringLiteral("setup"), QStringLiteral("/budget"), 0, QStringLiteral("break"));
+  EXPECT_TRUE(page.settingsError().contains(QStringLiteral("studies.setup.budget")));
+  EXPECT_FALSE(page.runButton()->isEnabled());
+  EXPECT_EQ(page.budgetSpin()->value(), budget) << "the control is not moved to a substitute";
+  document.undoStack()->undo();
+  EXPECT_TRUE(page.settingsError().isEmpty());
+  EXPECT_TRUE(page.runButton()->isEnabled());
 }
 
 }  // namespace

@@ -154,6 +154,75 @@ TEST_F(UnsavedChangesTest, UnsavedSetupModelEditsAreAskedAboutAndSaved) {
   EXPECT_DOUBLE_EQ(saved.dimensions.front().lower, lower);
 }
 
+// Issue 27 item 4: a run keeps its result in the project (results.<study>) without an edit, so
+// quitting or File › New after a run used to lose it without a question. The document tracks results
+// that are not saved (cleared by a save, a load and New); the question says so and Save keeps them.
+TEST_F(UnsavedChangesTest, UnsavedResultsOfARunAreAskedAboutAndSaved) {
+  auto* setup = qobject_cast<SetupPage*>(window_.page(Page::Setup));
+  ASSERT_NE(setup, nullptr);
+  ProjectDocument* document = window_.document();
+  ASSERT_FALSE(document->hasUnsavedResults());
+  EXPECT_FALSE(window_.isWindowModified());
+  ASSERT_TRUE(setup->startRun()) << setup->errorMessage().toStdString();  // the study's method: exact
+  ASSERT_TRUE(document->project().results.contains("setup"));
+  EXPECT_FALSE(document->isModified()) << "a result is not an edit (no undo step)";
+  EXPECT_TRUE(document->hasUnsavedResults());
+  EXPECT_TRUE(window_.isWindowModified()) << "the title says something is not saved";
+  const QString text = window_.unsavedChangesText();
+  EXPECT_TRUE(text.contains(QStringLiteral("results of the last run are not saved"))) << text.toStdString();
+
+  answer_ = Choice::Cancel;
+  EXPECT_FALSE(window_.close());
+  EXPECT_EQ(asked_, 1);
+  QAction* newAction = actionWithShortcut(window_, QKeySequence::New);
+  ASSERT_NE(newAction, nullptr);
+  newAction->trigger();
+  EXPECT_EQ(asked_, 2) << "File › New asks too";
+  EXPECT_EQ(document->fileName(), QFileInfo(demo_).absoluteFilePath());
+  EXPECT_TRUE(document->hasUnsavedResults());
+
+  // With an edit as well, one question names both.
+  document->setValue(ProjectField::name(), QStringLiteral("edited and run"));
+  EXPECT_TRUE(window_.unsavedChangesText().contains(QStringLiteral("unsaved changes")));
+  EXPECT_TRUE(window_.unsavedChangesText().contains(QStringLiteral("results of the last run")));
+
+  answer_ = Choice::Save;
+  EXPECT_TRUE(window_.close());
+  EXPECT_EQ(asked_, 3);
+  EXPECT_FALSE(document->hasUnsavedResults());
+  const Project saved = loadProject(demo_.toStdString());
+  EXPECT_EQ(saved.name, "edited and run");
+  ASSERT_TRUE(saved.results.contains("setup"));
+  EXPECT_TRUE(saved.results["setup"].contains("setup_report")) << saved.results.dump();
+}
+
+TEST_F(UnsavedChangesTest, UnsavedResultsAreDiscardedOnNewAndClearedBySaveAndOpen) {
+  auto* setup = qobject_cast<SetupPage*>(window_.page(Page::Setup));
+  ASSERT_NE(setup, nullptr);
+  ProjectDocument* document = window_.document();
+  ASSERT_TRUE(setup->startRun());
+  ASSERT_TRUE(document->hasUnsavedResults());
+  document->save();  // a save clears it: nothing more to ask
+  EXPECT_FALSE(document->hasUnsavedResults());
+  EXPECT_FALSE(window_.isWindowModified());
+  EXPECT_TRUE(loadProject(demo_.toStdString()).results.contains("setup"));
+
+  ASSERT_TRUE(setup->startRun());
+  ASSERT_TRUE(document->hasUnsavedResults());
+  ASSERT_TRUE(window_.openProject(demo_));  // reopened (no question: openProject is the caller's choice)
+  EXPECT_FALSE(document->hasUnsavedResults());
+
+  ASSERT_TRUE(setup->startRun());
+  answer_ = Choice::Discard;
+  QAction* newAction = actionWithShortcut(window_, QKeySequence::New);
+  ASSERT_NE(newAction, nullptr);
+  newAction->trigger();
+  EXPECT_EQ(asked_, 1);
+  EXPECT_TRUE(document->fileName().isEmpty());
+  EXPECT_FALSE(document->hasUnsavedResults());
+  EXPECT_FALSE(window_.isWindowModified());
+}
+
 TEST_F(UnsavedChangesTest, OpeningAProjectWithANewerAutosaveOffersRecovery) {
   Project autosaved = loadProject(demo_.toStdString());
   autosaved.name = "from the autosave";

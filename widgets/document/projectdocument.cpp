@@ -357,6 +357,13 @@ DatasetRef ProjectDocument::resolvedDataset(const DatasetRef& dataset) const {
 void ProjectDocument::setStoredResult(const QString& study, const QString& datasetId,
                                       const nlohmann::json& entry) {
   metrofit::setStoredResult(project_, toStd(study), toStd(datasetId), entry);
+  setUnsavedResults(true);
+}
+
+void ProjectDocument::setUnsavedResults(bool unsaved) {
+  if (unsaved == unsavedResults_) return;
+  unsavedResults_ = unsaved;
+  emit unsavedResultsChanged(unsaved);
 }
 
 void ProjectDocument::newProject() {
@@ -364,6 +371,7 @@ void ProjectDocument::newProject() {
   project_ = Project{};
   setFileName(QString());
   undoStack_->clear();
+  setUnsavedResults(false);
   ++editSequence_;
   emit changed();
 }
@@ -375,6 +383,7 @@ void ProjectDocument::load(const QString& path) {
   project_ = std::move(loaded);
   setFileName(absolute);
   undoStack_->clear();
+  setUnsavedResults(false);
   ++editSequence_;
   emit changed();
 }
@@ -410,6 +419,7 @@ void ProjectDocument::saveAs(const QString& path) {
   project_ = std::move(toSave);
   setFileName(absolute);
   undoStack_->setClean();
+  setUnsavedResults(false);
   ++editSequence_;
   if (rebased) emit changed();
 }

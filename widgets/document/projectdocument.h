@@ -186,8 +186,12 @@ class ProjectDocument : public QObject {
 
   /// Stores a study's result for a dataset in the project (results.<study>.<datasetId>, see
   /// core/project/stored_results.h). Not an edit: no undo step, the document's modified state stays
-  /// and no signal is emitted (results follow edits, they are not edits); the next save writes it.
+  /// and changed() is not emitted (results follow edits, they are not edits); the next save writes it.
+  /// Until then hasUnsavedResults() is true (unsavedResultsChanged), so that closing, New and Open ask
+  /// before the result is lost.
   void setStoredResult(const QString& study, const QString& datasetId, const nlohmann::json& entry);
+  /// A result was stored (setStoredResult) since the last load, save or New: quitting now loses it.
+  bool hasUnsavedResults() const { return unsavedResults_; }
 
   /// A new empty project without a file; clears the undo stack.
   void newProject();
@@ -235,6 +239,8 @@ class ProjectDocument : public QObject {
   void studyValueChanged(const QString& study, const QString& key);
   void fileNameChanged(const QString& fileName);
   void modifiedChanged(bool modified);
+  /// hasUnsavedResults() changed (a run stored its result; a save, load or New cleared it).
+  void unsavedResultsChanged(bool unsaved);
   /// The open file was changed or removed on disk by another program.
   void fileChangedOnDisk(const QString& fileName);
 
@@ -258,6 +264,7 @@ class ProjectDocument : public QObject {
   quint64 editSequence() const { return editSequence_; }
 
   void setFileName(const QString& path);
+  void setUnsavedResults(bool unsaved);
   void watch(const QString& path);
   void onWatchedFileChanged(const QString& path);
   void checkFileOnDisk();
@@ -269,6 +276,7 @@ class ProjectDocument : public QObject {
   QTimer* diskCheck_;  ///< coalesces the watcher's bursts of notifications
   quint64 editSequence_ = 0;
   quint64 generation_ = 0;
+  bool unsavedResults_ = false;
   /// Size and modification time of the file as the document last wrote or read it.
   struct Stamp {
     qint64 size = -1;

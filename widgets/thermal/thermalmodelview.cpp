@@ -562,7 +562,7 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   d->inputs->setToolTip(tr("Sensor columns the models take as inputs"));
   d->fraction = new QDoubleSpinBox(this);
   d->fraction->setObjectName(QStringLiteral("thermalModelTrainFraction"));
-  d->fraction->setRange(0.1, 0.9);
+  d->fraction->setRange(0.01, 0.99);  // the study takes (0, 1); the page refuses what this cannot show
   d->fraction->setSingleStep(0.05);
   d->fraction->setDecimals(2);
   d->fraction->setValue(ThermalModelSettings{}.trainFraction);
