@@ -434,7 +434,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
 <context>
     <name>metrofit::DiagnosisPage</name>
     <message>
-        <location filename="../app/gui/diagnosispage.cpp" line="+64"/>
+        <location filename="../app/gui/diagnosispage.cpp" line="+70"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -454,22 +454,22 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+588"/>
+        <location line="+647"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-521"/>
+        <location line="-537"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
     <message>
-        <location line="-49"/>
+        <location line="-92"/>
         <source>mm/part</source>
         <translation>mm/Werkstück</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+93"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -479,7 +479,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ins &amp;Modell übernehmen</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+26"/>
         <source>The study whose declared model is diagnosed</source>
         <translation>Die Studie, deren deklariertes Modell diagnostiziert wird</translation>
     </message>
@@ -495,12 +495,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+5"/>
-        <location line="+311"/>
+        <location line="+332"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
     </message>
     <message>
-        <location line="-297"/>
+        <location line="-318"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Das deklarierte Modell, wie es vor dem Hinzufügen eines Effekts angepasst wurde</translation>
     </message>
@@ -566,13 +566,13 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+1"/>
-        <location line="+173"/>
-        <location line="+119"/>
+        <location line="+189"/>
+        <location line="+114"/>
         <source>Residual chec&amp;k</source>
         <translation>Residuen&amp;prüfung</translation>
     </message>
     <message>
-        <location line="-290"/>
+        <location line="-301"/>
         <source>The candidate effects tried, their residual plots and the error before / after</source>
         <translation>Die getesteten Kandidateneffekte, ihre Residuendiagramme und der Fehler vorher / nachher</translation>
     </message>
@@ -587,13 +587,20 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ber&amp;eich:</translation>
     </message>
     <message>
-        <location line="+47"/>
-        <location line="+141"/>
+        <location line="+52"/>
+        <location line="+154"/>
         <source>The diagnosis failed: %1</source>
         <translation>Die Diagnose ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-86"/>
+        <source>The %1 settings of the diagnosis are invalid; nothing runs until they are corrected (above, Undo, or the project file under studies.diagnosis.%2):
+%3</source>
+        <translation>Die %1-Einstellungen der Diagnose sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (oben, Rückgängig oder die Projektdatei unter studies.diagnosis.%2):
+%3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>No usable %1 data for the diagnosis:
 %2
 
@@ -604,7 +611,7 @@ Configure it in the project file under studies.diagnosis.%3 (see the documentati
 Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die Dokumentation der Diagnosestudie).</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Data: %1</source>
         <translation>Daten: %1</translation>
     </message>
@@ -634,22 +641,22 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Ins Modell übernommen: %1.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Not run yet: press Run (Ctrl+R).</source>
         <translation>Noch nicht ausgeführt: Ausführen drücken (Strg+R).</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+41"/>
         <source>Diagnosing …</source>
         <translation>Diagnose läuft …</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Diagnosing … step %1, current rmse %2</source>
         <translation>Diagnose läuft … Schritt %1, aktueller rmse %2</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>%1: a generic effect of the data row, the part or the dimension says nothing about the next part, so the study (%2) cannot include it; it is reported here and in the residual check, not applied</source>
         <translation>%1: Ein generischer Effekt der Datenzeile, des Teils oder des Maßes sagt nichts über das nächste Teil aus, daher kann die Studie (%2) ihn nicht aufnehmen; er wird hier und in der Residuenprüfung berichtet, aber nicht angewendet</translation>
     </message>
@@ -664,7 +671,102 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Übernimmt nur %1. %2.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+217"/>
+        <source>The dataset the %1 diagnosis runs on (studies.diagnosis.%2.dataset)</source>
+        <translation>Der Datensatz, auf dem die %1-Diagnose läuft (studies.diagnosis.%2.dataset)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Da&amp;ta:</source>
+        <translation>Da&amp;ten:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Choose the %1 diagnosis data</source>
+        <translation>Die Daten der %1-Diagnose wählen</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Train &amp;fraction:</source>
+        <translation>Trainings&amp;anteil:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The share of the rows (from the start) the model is fitted on; the rest is held out (studies.diagnosis.thermal.train_fraction)</source>
+        <translation>Der Anteil der Zeilen (vom Anfang an), an den das Modell angepasst wird; der Rest sind Testdaten (studies.diagnosis.thermal.train_fraction)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Change the diagnosis train fraction</source>
+        <translation>Den Trainingsanteil der Diagnose ändern</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Feed:</source>
+        <translation>&amp;Vorschub:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The feed of the circular test, for the servo lag&apos;s time constant (studies.diagnosis.kinematic.feed_mm_per_min)</source>
+        <translation>Der Vorschub des Kreisformtests, für die Zeitkonstante des Schleppfehlers (studies.diagnosis.kinematic.feed_mm_per_min)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Change the diagnosis feed</source>
+        <translation>Den Vorschub der Diagnose ändern</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The setup model whose setup data are diagnosed (studies.diagnosis.setup.model)</source>
+        <translation>Das Einrichtmodell, dessen Einrichtdaten diagnostiziert werden (studies.diagnosis.setup.model)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Model:</source>
+        <translation>&amp;Modell:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Choose the diagnosis setup model</source>
+        <translation>Das Einrichtmodell der Diagnose wählen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Tolerance ±:</source>
+        <translation>&amp;Toleranz ±:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The symmetric tolerance an effect must matter against (studies.diagnosis.matching.tolerance_mm)</source>
+        <translation>Die symmetrische Toleranz, gegen die ein Effekt Gewicht haben muss (studies.diagnosis.matching.tolerance_mm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Change the diagnosis tolerance</source>
+        <translation>Die Toleranz der Diagnose ändern</translation>
+    </message>
+    <message>
+        <location line="+105"/>
+        <source>The stored result (computed %1) is out of date: the settings changed since. Not run with these settings yet: press Run (Ctrl+R).</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Einstellungen haben sich seitdem geändert. Mit diesen Einstellungen noch nicht ausgeführt: Ausführen drücken (Strg+R).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) is out of date: the data file changed since. Run (Ctrl+R) on the data as it is now.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Datendatei hat sich seitdem geändert. Ausführen (Strg+R) auf den Daten in ihrem jetzigen Stand.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) cannot be checked: the data file cannot be read.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) kann nicht geprüft werden: die Datendatei ist nicht lesbar.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>From the saved project (computed %1 with these settings on this data): %2 Run (Ctrl+R) for the plots, the candidate table and the residual check.</source>
+        <translation>Aus dem gespeicherten Projekt (berechnet %1 mit diesen Einstellungen auf diesen Daten): %2 Ausführen (Strg+R) für die Diagramme, die Kandidatentabelle und die Residuenprüfung.</translation>
+    </message>
+    <message>
+        <location line="-863"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -684,12 +786,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>. Kein nicht deklarierter Effekt gefunden (%1 Kandidaten getestet).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>. Accepted: %1 (%2 candidates tried).</source>
         <translation>. Übernommen: %1 (%2 Kandidaten getestet).</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+446"/>
         <source>Cancelled: the rounds done so far.</source>
         <translation>Abgebrochen: die bisherigen Runden.</translation>
     </message>
@@ -816,7 +918,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+57"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+58"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>Komma ( , )</translation>
@@ -834,17 +936,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     <message>
         <location line="+2"/>
         <location line="+11"/>
-        <location line="+114"/>
+        <location line="+94"/>
         <source>detect</source>
         <translation>erkennen</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-98"/>
         <source>point ( . )</source>
         <translation>Punkt ( . )</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+12"/>
         <source>time in s, strictly increasing</source>
         <translation>Zeit in s, streng steigend</translation>
     </message>
@@ -877,6 +979,11 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <location line="+1"/>
         <source>ambient temperature in °C</source>
         <translation>Umgebungstemperatur in °C</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>spindle speed in 1/min</source>
+        <translation>Spindeldrehzahl in 1/min</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1003,12 +1110,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+8"/>
-        <location line="+224"/>
+        <location line="+229"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-211"/>
+        <location line="-216"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Zeilen vor den Spaltennamen, unabhängig vom Inhalt übersprungen (Vorspann eines Messgeräts)</translation>
     </message>
@@ -1149,12 +1256,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+3"/>
-        <location line="+433"/>
+        <location line="+456"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
     <message>
-        <location line="-377"/>
+        <location line="-399"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
     </message>
@@ -1164,12 +1271,18 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Zuerst das Projekt speichern: Die Kopie kommt in den Ordner des Projekts</translation>
     </message>
     <message>
-        <location line="+60"/>
-        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
-        <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Alle Dateien (*)</translation>
+        <location line="+61"/>
+        <location line="+3"/>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+1"/>
+        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.dfq)</source>
+        <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.dfq)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1: cannot read the file (%2)</source>
         <translation>%1: die Datei kann nicht gelesen werden (%2)</translation>
     </message>
@@ -1179,7 +1292,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1: die Datei ist größer als 256 MiB</translation>
     </message>
     <message>
-        <location line="+198"/>
+        <location line="+214"/>
         <source>as in the file</source>
         <translation>wie in der Datei</translation>
     </message>
@@ -1433,7 +1546,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+155"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+170"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -1453,7 +1566,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&amp;STEP-NC exportieren…</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+27"/>
         <source>Identify the actuator origin and orientation errors of the circular test (Levenberg-Marquardt, standard errors from the residuals) (F5)</source>
         <translation>Ursprungs- und Orientierungsfehler der Antriebe aus dem Kreisformtest identifizieren (Levenberg-Marquardt, Standardfehler aus den Residuen) (F5)</translation>
     </message>
@@ -1664,7 +1777,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Kreisform&amp;test:</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Compensate</source>
         <translation>Kompensieren</translation>
     </message>
@@ -1675,16 +1788,16 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+10"/>
+        <source>%1 (not a dataset id)</source>
+        <translation>%1 (keine Datensatz-ID)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>%1 (not in the project)</source>
         <translation>%1 (nicht im Projekt)</translation>
     </message>
     <message>
-        <location line="+63"/>
-        <source>The kinematics study&apos;s settings are invalid: %1</source>
-        <translation>Die Einstellungen der Kinematik-Studie sind ungültig: %1</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="+93"/>
         <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
         <translation>Dieses Projekt enthält keinen Kreisformtest. Fügen Sie einen Datensatz der Art „circular_test“ hinzu (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, ein Umlauf gegen und einer im Uhrzeigersinn), z. B. erzeugt mit metrofit-cli simulate circular.</translation>
     </message>
@@ -1696,7 +1809,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 %1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -1839,13 +1952,20 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Wählen Sie oben die Kreisformtests in den Ebenen XY, YZ und ZX (z. B. erzeugt mit metrofit-cli simulate circular --plane yz).</translation>
     </message>
     <message>
-        <location line="-225"/>
-        <location line="+109"/>
+        <location line="-226"/>
+        <location line="+110"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-154"/>
+        <source>The kinematics study&apos;s settings are invalid; nothing is run until they are corrected (Undo, or the project file):
+%1</source>
+        <translation>Die Einstellungen der Kinematik-Studie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (Rückgängig oder die Projektdatei):
+%1</translation>
+    </message>
+    <message>
+        <location line="+157"/>
         <source>measured</source>
         <translation>gemessen</translation>
     </message>
@@ -1956,7 +2076,37 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Identifikation nicht möglich:&lt;br&gt;%1</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+51"/>
+        <source>The stored result (computed %1) is out of date: the kinematics settings changed since. Compensate (Ctrl+K) to compute it with these settings.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Kinematik-Einstellungen haben sich seitdem geändert. Kompensieren (Strg+K), um es mit diesen Einstellungen zu berechnen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) is out of date: the circular test&apos;s file changed since. Compensate (Ctrl+K) to compute it on the test as it is now.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Datei des Kreisformtests hat sich seitdem geändert. Kompensieren (Strg+K), um es für den Test in seinem jetzigen Stand zu berechnen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) cannot be checked: the circular test&apos;s file cannot be read.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) kann nicht geprüft werden: die Datei des Kreisformtests ist nicht lesbar.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>From the saved project, computed %1 with these settings on this test: identified origin (%2, %3) µm, X axis angle a %4°, Y axis angle b %5°, squareness b − a %6°, RMS residual %7 µm. Compensation: max radial deviation %8 µm measured, %9 µm expected after (RMS %10 µm), largest correction %11 µm.</source>
+        <translation>Aus dem gespeicherten Projekt, berechnet %1 mit diesen Einstellungen auf diesem Test: identifizierter Ursprung (%2, %3) µm, Winkel der X-Achse a %4°, Winkel der Y-Achse b %5°, Rechtwinkligkeit b − a %6°, RMS-Residuum %7 µm. Kompensation: größte radiale Abweichung %8 µm gemessen, %9 µm danach erwartet (RMS %10 µm), größte Korrektur %11 µm.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Simulated machine after: %1 µm.</source>
+        <translation>Simulierte Maschine danach: %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compensate (Ctrl+K) to see the compensated path.</source>
+        <translation>Kompensieren (Strg+K), um die kompensierte Bahn zu sehen.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>measured (before)</source>
         <translation>gemessen (vorher)</translation>
     </message>
@@ -2319,7 +2469,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+60"/>
         <source>Autosave failed: %1</source>
         <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
     </message>
@@ -2375,12 +2525,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+4"/>
-        <location line="+158"/>
+        <location line="+176"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location line="-157"/>
+        <location line="-175"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
@@ -2462,7 +2612,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1[*] — Metrofit</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
@@ -2492,7 +2642,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Das Einrichtmodell kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+88"/>
         <source>The setup model (relation graph) has unsaved edits. Do you want to save them?</source>
         <translation>Das Einrichtmodell (Beziehungsgraph) hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
@@ -2502,7 +2652,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Das Projekt „%1“ und das Einrichtmodell (Beziehungsgraph) haben ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
@@ -2527,12 +2677,22 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1 als „%2“ importiert</translation>
     </message>
     <message>
-        <location line="-170"/>
+        <location line="-184"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Das Projekt „%1“ hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+4"/>
+        <source>The project &quot;%1&quot; has unsaved changes, and the results of the last run are not saved either. Do you want to save them?</source>
+        <translation>Das Projekt „%1“ hat ungespeicherte Änderungen, und auch die Ergebnisse der letzten Ausführung sind nicht gespeichert. Möchten Sie sie speichern?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The results of the last run are not saved in the project &quot;%1&quot; (they are lost when it is closed without saving). Do you want to save them?</source>
+        <translation>Die Ergebnisse der letzten Ausführung sind im Projekt „%1“ nicht gespeichert (sie gehen verloren, wenn es ohne Speichern geschlossen wird). Möchten Sie sie speichern?</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
@@ -2640,7 +2800,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+80"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+122"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -2971,17 +3131,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Ausrichtungsmethode ändern</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>Change the matching tolerance</source>
         <translation>Ausrichtungstoleranz ändern</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Change the matching scale</source>
         <translation>Skalierung der Ausrichtung ändern</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+21"/>
         <source>Change the matching locks</source>
         <translation>Sperren der Ausrichtung ändern</translation>
     </message>
@@ -2991,12 +3151,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Steuerung des Frames ändern</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-20"/>
         <source>Change the decimals of the frame</source>
         <translation>Nachkommastellen des Frames ändern</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+45"/>
         <location line="+303"/>
         <location line="+16"/>
         <source>Matching failed: %1</source>
@@ -3116,7 +3276,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-855"/>
+        <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
+        <translation>studies.matching.tolerance_mm: %1 mm kann auf der Seite nicht eingestellt werden (sie nimmt %2 bis %3 mm in Schritten von %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+849"/>
         <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
         <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (Rückgängig oder die Projektdatei): %1</translation>
     </message>
@@ -3565,12 +3730,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+155"/>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>das Projekt wurde noch nicht gespeichert; wählen Sie mit „Speichern unter“ einen Dateinamen</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+57"/>
         <source>the project has no dataset &apos;%1&apos;</source>
         <translation>das Projekt hat keinen Datensatz „%1“</translation>
     </message>
@@ -7142,7 +7307,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+100"/>
+        <location filename="../app/gui/setuppage.cpp" line="+141"/>
         <source>&amp;Save model</source>
         <translation>Modell &amp;speichern</translation>
     </message>
@@ -7192,7 +7357,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>exakt: das LP/MILP-Optimum (GLPK); die Metaheuristiken mit den Einstellungen der Veröffentlichung</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source> solutions</source>
         <translation> Lösungen</translation>
     </message>
@@ -7252,27 +7417,27 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Ausführen</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>Change the setup method</source>
         <translation>Methode der Einrichtung ändern</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>Change the setup budget</source>
         <translation>Budget der Einrichtung ändern</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+9"/>
         <source>Change the setup seed</source>
         <translation>Startwert der Einrichtung ändern</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+110"/>
         <source>The applied effects cannot be used: %1</source>
         <translation>Die übernommenen Effekte können nicht verwendet werden: %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+53"/>
         <source>This project has no setup model. Add a dataset of kind &quot;setup_model&quot; (the relation graph, JSON) and a &quot;cmm_report&quot; to the project file.</source>
         <translation>Dieses Projekt hat kein Einrichtmodell. Fügen Sie der Projektdatei einen Datensatz der Art „setup_model“ (der Beziehungsgraph, JSON) und einen „cmm_report“ hinzu.</translation>
     </message>
@@ -7298,11 +7463,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+9"/>
+        <location line="+482"/>
         <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Noch kein Ergebnis für dieses Modell: Methode wählen und Ausführen drücken (Strg+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="+10"/>
+        <location line="-472"/>
         <source>The edited model has %n problem(s), the first: %1</source>
         <translation>
             <numerusform>Das bearbeitete Modell hat %n Problem: %1</numerusform>
@@ -7310,7 +7476,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+26"/>
+        <source>studies.setup.budget: must be a whole number of solutions</source>
+        <translation>studies.setup.budget: muss eine ganze Zahl von Lösungen sein</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>studies.setup.budget: more solutions than the page can run (at most %1)</source>
+        <translation>studies.setup.budget: mehr Lösungen, als die Seite ausführen kann (höchstens %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>studies.setup.seed: larger than the page can use (at most %1)</source>
+        <translation>studies.setup.seed: größer, als die Seite verwenden kann (höchstens %1)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>Model “%1” (%2): %3 setup data (%4 work offsets, %5 tools, %6 machine points), %7 features, %8 dimensions, %9 arcs; axis %10, grid %11 mm, bounds [%12, %13] mm.</source>
         <translation>Modell „%1“ (%2): %3 Einrichtdaten (%4 Nullpunktverschiebungen, %5 Werkzeuge, %6 Maschinenpunkte), %7 Formelemente, %8 Maße, %9 Kanten; Achse %10, Raster %11 mm, Grenzen [%12, %13] mm.</translation>
     </message>
@@ -7350,12 +7531,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zum Messbericht %1 (auf dem die Diagnose lief); dieser Bericht verwendet das deklarierte Modell.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+7"/>
+        <source>The setup study&apos;s run settings are invalid, nothing is run until they are corrected (choose a value, Undo, or the project file): %1</source>
+        <translation>Die Ausführungseinstellungen der Einrichtstudie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (einen Wert wählen, Rückgängig oder die Projektdatei): %1</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>The setup study has no model or report to run on.</source>
         <translation>Die Einrichtstudie hat kein Modell oder keinen Bericht, auf dem sie laufen kann.</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+21"/>
+        <source>Not run: %1</source>
+        <translation>Nicht ausgeführt: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Exact optimum: %1 solver calls in %2 ms.</source>
         <translation>Exaktes Optimum: %1 Solver-Aufrufe in %2 ms.</translation>
     </message>
@@ -7365,7 +7556,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>%1 läuft…</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+64"/>
         <source>The run failed: %1</source>
         <translation>Der Lauf ist fehlgeschlagen: %1</translation>
     </message>
@@ -7385,7 +7576,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation> — abgebrochen.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+24"/>
         <source>The project has no setup model dataset to save to.</source>
         <translation>Das Projekt hat keinen Einrichtmodell-Datensatz zum Speichern.</translation>
     </message>
@@ -7406,6 +7597,31 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <location line="+19"/>
         <source>CRIPSO and PSO, seed 1, %1 solutions each, against the exact optimum.</source>
         <translation>CRIPSO und PSO, Startwert 1, je %1 Lösungen, im Vergleich zum exakten Optimum.</translation>
+    </message>
+    <message>
+        <location line="+106"/>
+        <source>The stored result (computed %1) is out of date: the run settings, the model or the applied effects changed since. Not run with these yet: press Run (Ctrl+R).</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Ausführungseinstellungen, das Modell oder die übernommenen Effekte haben sich seitdem geändert. Damit noch nicht ausgeführt: Ausführen drücken (Strg+R).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) is out of date: the CMM report changed since. Press Run (Ctrl+R) to correct the setup for the report as it is now.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: der KMG-Messbericht hat sich seitdem geändert. Ausführen (Strg+R) drücken, um die Einrichtung für den Bericht in seinem jetzigen Stand zu korrigieren.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) cannot be checked: the CMM report cannot be read.</source>
+        <translation>Das gespeicherte Ergebnis (berechnet %1) kann nicht geprüft werden: der KMG-Messbericht ist nicht lesbar.</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>From the saved project (computed %1 with these settings, this model and this report): %2: f1 %3 → %4 mm, |x| = f2 %5 mm, f %6; corrections (mm) %7; %8 of %9 parts in tolerance before, %10 after. Press Run (Ctrl+R) to see the tables and exports.</source>
+        <translation>Aus dem gespeicherten Projekt (berechnet %1 mit diesen Einstellungen, diesem Modell und diesem Bericht): %2: f1 %3 → %4 mm, |x| = f2 %5 mm, f %6; Korrekturen (mm) %7; %8 von %9 Teilen vorher in Toleranz, %10 nachher. Ausführen (Strg+R) drücken, um die Tabellen und Exporte zu sehen.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Nothing is run while the setup study&apos;s run settings are invalid: %1</source>
+        <translation>Nichts wird ausgeführt, solange die Ausführungseinstellungen der Einrichtstudie ungültig sind: %1</translation>
     </message>
 </context>
 <context>
@@ -8710,7 +8926,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+85"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+87"/>
         <source>T&amp;rend</source>
         <translation>&amp;Verlauf</translation>
     </message>
@@ -8756,6 +8972,16 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+62"/>
+        <source>studies.thermal.train_fraction: %1 cannot be set on the page (it takes 0.01 to 0.99 in steps of 0.01)</source>
+        <translation>studies.thermal.train_fraction: %1 kann auf der Seite nicht eingestellt werden (sie nimmt 0,01 bis 0,99 in Schritten von 0,01)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>studies.thermal.seed: %1 is larger than the page can use (at most %2)</source>
+        <translation>studies.thermal.seed: %1 ist größer, als die Seite verwenden kann (höchstens %2)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>The thermal study&apos;s settings are invalid, nothing is fitted until they are corrected (Undo, or the project file):
 %1</source>
         <translation>Die Einstellungen der Thermikstudie sind ungültig; nichts wird angepasst, bis sie korrigiert sind (Rückgängig oder die Projektdatei):
@@ -8777,7 +9003,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lizenz: %1.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+28"/>
         <source>Cannot show this thermal log:
 %1</source>
         <translation>Dieses Thermoprotokoll kann nicht angezeigt werden:
@@ -8819,7 +9045,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Einstellungen des thermischen Modells ändern</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+70"/>
         <source>The stored result (computed %1) is out of date: the model settings changed since. Not trained with these settings yet: Train (Ctrl+R).</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Modelleinstellungen haben sich seitdem geändert. Mit diesen Einstellungen noch nicht trainiert: Trainieren (Strg+R).</translation>
     </message>

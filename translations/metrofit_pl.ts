@@ -434,7 +434,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
 <context>
     <name>metrofit::DiagnosisPage</name>
     <message>
-        <location filename="../app/gui/diagnosispage.cpp" line="+64"/>
+        <location filename="../app/gui/diagnosispage.cpp" line="+70"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -454,22 +454,22 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+588"/>
+        <location line="+647"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-521"/>
+        <location line="-537"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
     <message>
-        <location line="-49"/>
+        <location line="-92"/>
         <source>mm/part</source>
         <translation>mm/przedmiot</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+93"/>
         <source>Cancel</source>
         <translation>Anuluj</translation>
     </message>
@@ -479,7 +479,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Zastosuj do &amp;modelu</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+26"/>
         <source>The study whose declared model is diagnosed</source>
         <translation>Studium, którego zadeklarowany model jest diagnozowany</translation>
     </message>
@@ -495,12 +495,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+5"/>
-        <location line="+311"/>
+        <location line="+332"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
     </message>
     <message>
-        <location line="-297"/>
+        <location line="-318"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Zadeklarowany model dopasowany przed dodaniem jakiegokolwiek efektu</translation>
     </message>
@@ -566,13 +566,13 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+1"/>
-        <location line="+173"/>
-        <location line="+119"/>
+        <location line="+189"/>
+        <location line="+114"/>
         <source>Residual chec&amp;k</source>
         <translation>Sprawdzenie re&amp;siduów</translation>
     </message>
     <message>
-        <location line="-290"/>
+        <location line="-301"/>
         <source>The candidate effects tried, their residual plots and the error before / after</source>
         <translation>Wypróbowane efekty kandydujące, ich wykresy residuów i błąd przed / po</translation>
     </message>
@@ -587,13 +587,20 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>&amp;Dziedzina:</translation>
     </message>
     <message>
-        <location line="+47"/>
-        <location line="+141"/>
+        <location line="+52"/>
+        <location line="+154"/>
         <source>The diagnosis failed: %1</source>
         <translation>Diagnoza nie powiodła się: %1</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-86"/>
+        <source>The %1 settings of the diagnosis are invalid; nothing runs until they are corrected (above, Undo, or the project file under studies.diagnosis.%2):
+%3</source>
+        <translation>Ustawienia diagnozy (%1) są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (powyżej, Cofnij lub plik projektu w studies.diagnosis.%2):
+%3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>No usable %1 data for the diagnosis:
 %2
 
@@ -604,7 +611,7 @@ Configure it in the project file under studies.diagnosis.%3 (see the documentati
 Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studium diagnozy).</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Data: %1</source>
         <translation>Dane: %1</translation>
     </message>
@@ -634,22 +641,22 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zastosowano do modelu: %1.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Not run yet: press Run (Ctrl+R).</source>
         <translation>Jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+41"/>
         <source>Diagnosing …</source>
         <translation>Diagnozowanie …</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Diagnosing … step %1, current rmse %2</source>
         <translation>Diagnozowanie … krok %1, bieżący rmse %2</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>%1: a generic effect of the data row, the part or the dimension says nothing about the next part, so the study (%2) cannot include it; it is reported here and in the residual check, not applied</source>
         <translation>%1: efekt ogólny wiersza danych, części lub wymiaru nic nie mówi o następnej części, więc badanie (%2) nie może go uwzględnić; jest raportowany tutaj i w sprawdzeniu residuum, ale nie zastosowany</translation>
     </message>
@@ -664,7 +671,102 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Stosuje tylko %1. %2.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+217"/>
+        <source>The dataset the %1 diagnosis runs on (studies.diagnosis.%2.dataset)</source>
+        <translation>Zbiór danych, na którym działa diagnoza (%1) (studies.diagnosis.%2.dataset)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Da&amp;ta:</source>
+        <translation>Da&amp;ne:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Choose the %1 diagnosis data</source>
+        <translation>Wybierz dane diagnozy (%1)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Train &amp;fraction:</source>
+        <translation>&amp;Udział uczący:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The share of the rows (from the start) the model is fitted on; the rest is held out (studies.diagnosis.thermal.train_fraction)</source>
+        <translation>Udział wierszy (od początku), do których dopasowywany jest model; reszta to dane testowe (studies.diagnosis.thermal.train_fraction)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Change the diagnosis train fraction</source>
+        <translation>Zmień udział uczący diagnozy</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Feed:</source>
+        <translation>&amp;Posuw:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The feed of the circular test, for the servo lag&apos;s time constant (studies.diagnosis.kinematic.feed_mm_per_min)</source>
+        <translation>Posuw testu kołowego, dla stałej czasowej uchybu nadążania (studies.diagnosis.kinematic.feed_mm_per_min)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Change the diagnosis feed</source>
+        <translation>Zmień posuw diagnozy</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The setup model whose setup data are diagnosed (studies.diagnosis.setup.model)</source>
+        <translation>Model ustawień, którego dane ustawcze są diagnozowane (studies.diagnosis.setup.model)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Model:</source>
+        <translation>&amp;Model:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Choose the diagnosis setup model</source>
+        <translation>Wybierz model ustawień diagnozy</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Tolerance ±:</source>
+        <translation>&amp;Tolerancja ±:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The symmetric tolerance an effect must matter against (studies.diagnosis.matching.tolerance_mm)</source>
+        <translation>Symetryczna tolerancja, względem której efekt musi mieć znaczenie (studies.diagnosis.matching.tolerance_mm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Change the diagnosis tolerance</source>
+        <translation>Zmień tolerancję diagnozy</translation>
+    </message>
+    <message>
+        <location line="+105"/>
+        <source>The stored result (computed %1) is out of date: the settings changed since. Not run with these settings yet: press Run (Ctrl+R).</source>
+        <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia zmieniły się od tego czasu. Jeszcze nie uruchomiono z tymi ustawieniami: naciśnij Uruchom (Ctrl+R).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) is out of date: the data file changed since. Run (Ctrl+R) on the data as it is now.</source>
+        <translation>Zapisany wynik (obliczony %1) jest nieaktualny: plik danych zmienił się od tego czasu. Uruchom (Ctrl+R) na danych w obecnej postaci.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) cannot be checked: the data file cannot be read.</source>
+        <translation>Nie można sprawdzić zapisanego wyniku (obliczonego %1): nie można odczytać pliku danych.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>From the saved project (computed %1 with these settings on this data): %2 Run (Ctrl+R) for the plots, the candidate table and the residual check.</source>
+        <translation>Z zapisanego projektu (obliczono %1 z tymi ustawieniami dla tych danych): %2 Uruchom (Ctrl+R), aby zobaczyć wykresy, tabelę kandydatów i sprawdzenie residuów.</translation>
+    </message>
+    <message>
+        <location line="-863"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -684,12 +786,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>. Nie znaleziono niezadeklarowanego efektu (wypróbowano kandydatów: %1).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>. Accepted: %1 (%2 candidates tried).</source>
         <translation>. Przyjęto: %1 (wypróbowano kandydatów: %2).</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+446"/>
         <source>Cancelled: the rounds done so far.</source>
         <translation>Anulowano: dotychczasowe rundy.</translation>
     </message>
@@ -816,7 +918,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+57"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+58"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>przecinek ( , )</translation>
@@ -834,17 +936,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <message>
         <location line="+2"/>
         <location line="+11"/>
-        <location line="+114"/>
+        <location line="+94"/>
         <source>detect</source>
         <translation>wykryj</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-98"/>
         <source>point ( . )</source>
         <translation>kropka ( . )</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+12"/>
         <source>time in s, strictly increasing</source>
         <translation>czas w s, ściśle rosnący</translation>
     </message>
@@ -877,6 +979,11 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <location line="+1"/>
         <source>ambient temperature in °C</source>
         <translation>temperatura otoczenia w °C</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>spindle speed in 1/min</source>
+        <translation>prędkość obrotowa wrzeciona w 1/min</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1003,12 +1110,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+8"/>
-        <location line="+224"/>
+        <location line="+229"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-211"/>
+        <location line="-216"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Wiersze przed nazwami kolumn, pomijane bez względu na treść (nagłówek przyrządu)</translation>
     </message>
@@ -1149,12 +1256,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+3"/>
-        <location line="+433"/>
+        <location line="+456"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
     <message>
-        <location line="-377"/>
+        <location line="-399"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
     </message>
@@ -1164,12 +1271,18 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Najpierw zapisz projekt: kopia trafia do folderu projektu</translation>
     </message>
     <message>
-        <location line="+60"/>
-        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
-        <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Wszystkie pliki (*)</translation>
+        <location line="+61"/>
+        <location line="+3"/>
+        <source>All files (*)</source>
+        <translation>Wszystkie pliki (*)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+1"/>
+        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.dfq)</source>
+        <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.dfq)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1: cannot read the file (%2)</source>
         <translation>%1: nie można odczytać pliku (%2)</translation>
     </message>
@@ -1179,7 +1292,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>%1: plik jest większy niż 256 MiB</translation>
     </message>
     <message>
-        <location line="+198"/>
+        <location line="+214"/>
         <source>as in the file</source>
         <translation>jak w pliku</translation>
     </message>
@@ -1434,7 +1547,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+155"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+170"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identyfikuj</translation>
     </message>
@@ -1454,7 +1567,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Eksportuj &amp;STEP-NC…</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+27"/>
         <source>Identify the actuator origin and orientation errors of the circular test (Levenberg-Marquardt, standard errors from the residuals) (F5)</source>
         <translation>Identyfikuj błędy początku i orientacji napędów z testu kołowego (Levenberg-Marquardt, błędy standardowe z residuów) (F5)</translation>
     </message>
@@ -1665,7 +1778,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Test kołow&amp;y:</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Compensate</source>
         <translation>Kompensuj</translation>
     </message>
@@ -1676,16 +1789,16 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+10"/>
+        <source>%1 (not a dataset id)</source>
+        <translation>%1 (to nie jest identyfikator zbioru danych)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>%1 (not in the project)</source>
         <translation>%1 (nie ma w projekcie)</translation>
     </message>
     <message>
-        <location line="+63"/>
-        <source>The kinematics study&apos;s settings are invalid: %1</source>
-        <translation>Ustawienia badania kinematyki są nieprawidłowe: %1</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="+93"/>
         <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
         <translation>Ten projekt nie zawiera testu kołowego. Dodaj zbiór danych rodzaju „circular_test” (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, jedna pętla przeciwnie do ruchu wskazówek zegara, potem jedna zgodnie), np. utworzony przez metrofit-cli simulate circular.</translation>
     </message>
@@ -1697,7 +1810,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 %1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>%1: G %2 µm, F %3 … %4 µm</source>
         <translation>%1: G %2 µm, F %3 … %4 µm</translation>
     </message>
@@ -1841,13 +1954,20 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: wybierz powyżej testy kołowe w płaszczyznach XY, YZ i ZX (utworzone np. przez metrofit-cli simulate circular --plane yz).</translation>
     </message>
     <message>
-        <location line="-225"/>
-        <location line="+109"/>
+        <location line="-226"/>
+        <location line="+110"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-154"/>
+        <source>The kinematics study&apos;s settings are invalid; nothing is run until they are corrected (Undo, or the project file):
+%1</source>
+        <translation>Ustawienia badania kinematyki są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (Cofnij lub plik projektu):
+%1</translation>
+    </message>
+    <message>
+        <location line="+157"/>
         <source>measured</source>
         <translation>zmierzony</translation>
     </message>
@@ -1959,7 +2079,37 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: identyfikacja niemożliwa:&lt;br&gt;%1</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+51"/>
+        <source>The stored result (computed %1) is out of date: the kinematics settings changed since. Compensate (Ctrl+K) to compute it with these settings.</source>
+        <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia kinematyki zmieniły się od tego czasu. Kompensuj (Ctrl+K), aby obliczyć go z tymi ustawieniami.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) is out of date: the circular test&apos;s file changed since. Compensate (Ctrl+K) to compute it on the test as it is now.</source>
+        <translation>Zapisany wynik (obliczony %1) jest nieaktualny: plik testu kołowego zmienił się od tego czasu. Kompensuj (Ctrl+K), aby obliczyć go dla testu w obecnej postaci.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) cannot be checked: the circular test&apos;s file cannot be read.</source>
+        <translation>Nie można sprawdzić zapisanego wyniku (obliczonego %1): nie można odczytać pliku testu kołowego.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>From the saved project, computed %1 with these settings on this test: identified origin (%2, %3) µm, X axis angle a %4°, Y axis angle b %5°, squareness b − a %6°, RMS residual %7 µm. Compensation: max radial deviation %8 µm measured, %9 µm expected after (RMS %10 µm), largest correction %11 µm.</source>
+        <translation>Z zapisanego projektu, obliczono %1 z tymi ustawieniami dla tego testu: zidentyfikowany początek (%2, %3) µm, kąt osi X a %4°, kąt osi Y b %5°, prostopadłość b − a %6°, residuum RMS %7 µm. Kompensacja: największe odchylenie promieniowe %8 µm zmierzone, %9 µm oczekiwane po (RMS %10 µm), największa korekta %11 µm.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Simulated machine after: %1 µm.</source>
+        <translation>Symulowana obrabiarka po: %1 µm.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compensate (Ctrl+K) to see the compensated path.</source>
+        <translation>Kompensuj (Ctrl+K), aby zobaczyć skompensowaną ścieżkę.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>measured (before)</source>
         <translation>zmierzony (przed)</translation>
     </message>
@@ -2322,7 +2472,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+60"/>
         <source>Autosave failed: %1</source>
         <translation>Automatyczny zapis nie powiódł się: %1</translation>
     </message>
@@ -2378,12 +2528,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+4"/>
-        <location line="+158"/>
+        <location line="+176"/>
         <source>&amp;Save</source>
         <translation>&amp;Zapisz</translation>
     </message>
     <message>
-        <location line="-157"/>
+        <location line="-175"/>
         <source>Save &amp;As…</source>
         <translation>Zapisz &amp;jako…</translation>
     </message>
@@ -2465,7 +2615,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>%1[*] — Metrofit</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>No recent files</source>
         <translation>Brak ostatnio używanych plików</translation>
     </message>
@@ -2495,7 +2645,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można zapisać modelu ustawczego</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+88"/>
         <source>The setup model (relation graph) has unsaved edits. Do you want to save them?</source>
         <translation>Model ustawczy (graf relacji) ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
@@ -2505,7 +2655,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Projekt „%1” i model ustawczy (graf relacji) mają niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Unsaved changes</source>
         <translation>Niezapisane zmiany</translation>
     </message>
@@ -2530,12 +2680,22 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zaimportowano %1 jako „%2”</translation>
     </message>
     <message>
-        <location line="-170"/>
+        <location line="-184"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Projekt „%1” ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+4"/>
+        <source>The project &quot;%1&quot; has unsaved changes, and the results of the last run are not saved either. Do you want to save them?</source>
+        <translation>Projekt „%1” ma niezapisane zmiany, a wyniki ostatniego uruchomienia również nie są zapisane. Czy chcesz je zapisać?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The results of the last run are not saved in the project &quot;%1&quot; (they are lost when it is closed without saving). Do you want to save them?</source>
+        <translation>Wyniki ostatniego uruchomienia nie są zapisane w projekcie „%1” (zostaną utracone, jeśli zostanie zamknięty bez zapisywania). Czy chcesz je zapisać?</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>&amp;Discard</source>
         <translation>&amp;Odrzuć</translation>
     </message>
@@ -2643,7 +2803,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+80"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+122"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -2974,17 +3134,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmiana metody dopasowania</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>Change the matching tolerance</source>
         <translation>Zmiana tolerancji dopasowania</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Change the matching scale</source>
         <translation>Zmiana skali dopasowania</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+21"/>
         <source>Change the matching locks</source>
         <translation>Zmiana blokad dopasowania</translation>
     </message>
@@ -2994,12 +3154,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmień sterowanie frame’u</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-20"/>
         <source>Change the decimals of the frame</source>
         <translation>Zmień miejsca po przecinku frame’u</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+45"/>
         <location line="+303"/>
         <location line="+16"/>
         <source>Matching failed: %1</source>
@@ -3119,7 +3279,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-855"/>
+        <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
+        <translation>studies.matching.tolerance_mm: nie można ustawić %1 mm na stronie (przyjmuje od %2 do %3 mm w krokach co %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+849"/>
         <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
         <translation>Ustawienia badania dopasowania są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (Cofnij lub plik projektu): %1</translation>
     </message>
@@ -3569,12 +3734,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Bez nazwy</translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+155"/>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>projekt nie został jeszcze zapisany; wybierz nazwę pliku poleceniem „Zapisz jako”</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+57"/>
         <source>the project has no dataset &apos;%1&apos;</source>
         <translation>projekt nie ma zbioru danych „%1”</translation>
     </message>
@@ -7160,7 +7325,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+100"/>
+        <location filename="../app/gui/setuppage.cpp" line="+141"/>
         <source>&amp;Save model</source>
         <translation>Zapi&amp;sz model</translation>
     </message>
@@ -7210,7 +7375,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>dokładna: optimum LP/MILP (GLPK); metaheurystyki z ustawieniami z publikacji</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source> solutions</source>
         <translation> rozwiązań</translation>
     </message>
@@ -7270,27 +7435,27 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Uruchom</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>Change the setup method</source>
         <translation>Zmiana metody ustawienia</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>Change the setup budget</source>
         <translation>Zmiana budżetu ustawienia</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+9"/>
         <source>Change the setup seed</source>
         <translation>Zmiana ziarna ustawienia</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+110"/>
         <source>The applied effects cannot be used: %1</source>
         <translation>Nie można użyć zastosowanych efektów: %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+53"/>
         <source>This project has no setup model. Add a dataset of kind &quot;setup_model&quot; (the relation graph, JSON) and a &quot;cmm_report&quot; to the project file.</source>
         <translation>Ten projekt nie ma modelu ustawczego. Dodaj do pliku projektu zbiór danych rodzaju „setup_model” (graf relacji, JSON) oraz „cmm_report”.</translation>
     </message>
@@ -7316,11 +7481,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+9"/>
+        <location line="+482"/>
         <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Brak jeszcze wyniku dla tego modelu: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="+10"/>
+        <location line="-472"/>
         <source>The edited model has %n problem(s), the first: %1</source>
         <translation>
             <numerusform>Edytowany model ma %n problem: %1</numerusform>
@@ -7329,7 +7495,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         </translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+26"/>
+        <source>studies.setup.budget: must be a whole number of solutions</source>
+        <translation>studies.setup.budget: musi być całkowitą liczbą rozwiązań</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>studies.setup.budget: more solutions than the page can run (at most %1)</source>
+        <translation>studies.setup.budget: więcej rozwiązań, niż strona może uruchomić (najwyżej %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>studies.setup.seed: larger than the page can use (at most %1)</source>
+        <translation>studies.setup.seed: większe, niż strona może użyć (najwyżej %1)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>Model “%1” (%2): %3 setup data (%4 work offsets, %5 tools, %6 machine points), %7 features, %8 dimensions, %9 arcs; axis %10, grid %11 mm, bounds [%12, %13] mm.</source>
         <translation>Model „%1” (%2): dane ustawcze: %3 (przesunięcia punktu zerowego: %4, narzędzia: %5, punkty maszyny: %6), elementy geometryczne: %7, wymiary: %8, łuki: %9; oś %10, siatka %11 mm, granice [%12, %13] mm.</translation>
     </message>
@@ -7369,12 +7550,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Efekty zastosowane na stronie Diagnoza należą do raportu %1 (tego, na którym przeprowadzono diagnozę); ten raport używa zadeklarowanego modelu.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+7"/>
+        <source>The setup study&apos;s run settings are invalid, nothing is run until they are corrected (choose a value, Undo, or the project file): %1</source>
+        <translation>Ustawienia uruchomienia badania ustawień są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (wybierz wartość, Cofnij lub plik projektu): %1</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>The setup study has no model or report to run on.</source>
         <translation>Studium ustawienia nie ma modelu ani raportu do obliczeń.</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+21"/>
+        <source>Not run: %1</source>
+        <translation>Nie uruchomiono: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Exact optimum: %1 solver calls in %2 ms.</source>
         <translation>Dokładne optimum: wywołania solvera: %1 w %2 ms.</translation>
     </message>
@@ -7384,7 +7575,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Uruchamianie %1…</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+64"/>
         <source>The run failed: %1</source>
         <translation>Przebieg nie powiódł się: %1</translation>
     </message>
@@ -7404,7 +7595,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation> — anulowano.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+24"/>
         <source>The project has no setup model dataset to save to.</source>
         <translation>Projekt nie ma zbioru danych modelu ustawczego, do którego można zapisać.</translation>
     </message>
@@ -7426,6 +7617,31 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <location line="+19"/>
         <source>CRIPSO and PSO, seed 1, %1 solutions each, against the exact optimum.</source>
         <translation>CRIPSO i PSO, ziarno 1, po %1 rozwiązań, w porównaniu z dokładnym optimum.</translation>
+    </message>
+    <message>
+        <location line="+106"/>
+        <source>The stored result (computed %1) is out of date: the run settings, the model or the applied effects changed since. Not run with these yet: press Run (Ctrl+R).</source>
+        <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia uruchomienia, model lub zastosowane efekty zmieniły się od tego czasu. Jeszcze nie uruchomiono z nimi: naciśnij Uruchom (Ctrl+R).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) is out of date: the CMM report changed since. Press Run (Ctrl+R) to correct the setup for the report as it is now.</source>
+        <translation>Zapisany wynik (obliczony %1) jest nieaktualny: raport WMP zmienił się od tego czasu. Naciśnij Uruchom (Ctrl+R), aby skorygować ustawienie dla raportu w obecnej postaci.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The stored result (computed %1) cannot be checked: the CMM report cannot be read.</source>
+        <translation>Nie można sprawdzić zapisanego wyniku (obliczonego %1): nie można odczytać raportu WMP.</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>From the saved project (computed %1 with these settings, this model and this report): %2: f1 %3 → %4 mm, |x| = f2 %5 mm, f %6; corrections (mm) %7; %8 of %9 parts in tolerance before, %10 after. Press Run (Ctrl+R) to see the tables and exports.</source>
+        <translation>Z zapisanego projektu (obliczono %1 z tymi ustawieniami, tym modelem i tym raportem): %2: f1 %3 → %4 mm, |x| = f2 %5 mm, f %6; korekty (mm) %7; %8 z %9 części w tolerancji przed, %10 po. Naciśnij Uruchom (Ctrl+R), aby zobaczyć tabele i eksporty.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Nothing is run while the setup study&apos;s run settings are invalid: %1</source>
+        <translation>Nic nie zostanie uruchomione, dopóki ustawienia uruchomienia badania ustawień są nieprawidłowe: %1</translation>
     </message>
 </context>
 <context>
@@ -8733,7 +8949,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+85"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+87"/>
         <source>T&amp;rend</source>
         <translation>&amp;Trend</translation>
     </message>
@@ -8779,6 +8995,16 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+62"/>
+        <source>studies.thermal.train_fraction: %1 cannot be set on the page (it takes 0.01 to 0.99 in steps of 0.01)</source>
+        <translation>studies.thermal.train_fraction: nie można ustawić %1 na stronie (przyjmuje od 0,01 do 0,99 w krokach co 0,01)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>studies.thermal.seed: %1 is larger than the page can use (at most %2)</source>
+        <translation>studies.thermal.seed: %1 jest większe, niż strona może użyć (najwyżej %2)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>The thermal study&apos;s settings are invalid, nothing is fitted until they are corrected (Undo, or the project file):
 %1</source>
         <translation>Ustawienia badania termicznego są nieprawidłowe; nic nie zostanie dopasowane, dopóki nie zostaną poprawione (Cofnij lub plik projektu):
@@ -8800,7 +9026,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Licencja: %1.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+28"/>
         <source>Cannot show this thermal log:
 %1</source>
         <translation>Nie można wyświetlić tego rejestru termicznego:
@@ -8842,7 +9068,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana ustawień modelu termicznego</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+70"/>
         <source>The stored result (computed %1) is out of date: the model settings changed since. Not trained with these settings yet: Train (Ctrl+R).</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia modeli zmieniły się od tego czasu. Jeszcze nie wytrenowano z tymi ustawieniami: Trenuj (Ctrl+R).</translation>
     </message>
