@@ -22,9 +22,9 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <algorithm>
-#include <optional>
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <set>
 
 #include "app/gui/notesedit.h"
