@@ -858,6 +858,11 @@ TEST_F(ImportDialogTest, ATitleLineAboveAGermanHeaderIsFoundAndTheRolesAreMapped
   ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
   const QString found = dialog.findChild<QLabel*>(QStringLiteral("importDetected"))->text();
   EXPECT_TRUE(found.contains(QStringLiteral("line 2"))) << found.toStdString();
+  // A picture to look at: the title line skipped, the roles mapped, the preview in the file's units.
+  dialog.show();
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+  QApplication::processEvents();
+  dialog.grab().save(QString::fromStdString((test::outDir() / "import_dialog_german_title.png").string()));
 
   // Forcing the title to be the header makes it another kind; back to the right line, the kind and the
   // roles are guessed again.
