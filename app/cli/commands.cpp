@@ -6,6 +6,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLocale>
 #include <clocale>
 #include <cstdio>
 #include <functional>
@@ -77,6 +78,10 @@ std::unique_ptr<QApplication> makeQtApp() {
   auto app = std::make_unique<QApplication>(argc, argv);
   // QApplication set the C locale from the environment; numbers stay '.'-decimal (issue 27).
   std::setlocale(LC_NUMERIC, "C");
+  // The CLI and the report it writes (also for the GUI's Export report) are in English: numbers Qt
+  // formats (chart legends, axis labels) follow the same C conventions whatever LANG says, so an
+  // English sentence never shows a German decimal comma ("exact optimum f1 = 0,0797 mm").
+  QLocale::setDefault(QLocale::c());
   return app;
 }
 

@@ -222,5 +222,29 @@ TEST(Cli, DemoReportReadsAsAReport) {
         << all.substr(std::min(all.size(), all.find(word) - std::min<std::size_t>(60, all.find(word))), 120);
 }
 
+// The report is English; on a German or Polish desktop (the GUI's Export report runs this command
+// with the user's environment) its chart legends must not switch to decimal commas inside English
+// sentences (seen: "exact optimum f1 = 0,0797 mm", "T1: lag -6,4 min").
+TEST(Cli, ReportNumbersDoNotFollowTheSystemLocale) {
+  if (std::system("command -v pdftotext > /dev/null 2>&1") != 0)
+    FAIL() << "pdftotext (poppler-utils) missing: packaging/install-deps.sh installs it";
+  test::TempDir tmp;
+  ASSERT_EQ(cli("demo --out-dir demo", tmp).code, 0);
+  // The test also runs under each locale of the matrix (LOCALES); LC_ALL makes the German case explicit.
+  for (const char* locale : {"de_DE.UTF-8"}) {
+    SCOPED_TRACE(locale);
+    ASSERT_EQ(::setenv("LC_ALL", locale, 1), 0);
+    const CliRun r = cli("report --project demo/demo.metrofit --out r.pdf", tmp);
+    ::unsetenv("LC_ALL");
+    ASSERT_EQ(r.code, 0) << r.err;
+    ASSERT_EQ(std::system(("cd '" + tmp.path().string() + "' && pdftotext r.pdf r.txt").c_str()), 0);
+    const std::string text = test::readText(tmp.file("r.txt"));
+    EXPECT_NE(text.find("exact optimum f1 = 0.0797 mm"), std::string::npos);
+    EXPECT_EQ(text.find("exact optimum f1 = 0,"), std::string::npos);
+    EXPECT_EQ(text.find(": lag -6,4 min"), std::string::npos);
+    EXPECT_NE(text.find(": lag -6.4 min"), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace metrofit
