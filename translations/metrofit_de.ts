@@ -1837,8 +1837,8 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <location line="+6"/>
         <source>%1 points, nominal circle R %2 mm about (%3, %4) mm; %n loop(s).</source>
         <translation>
-            <numerusform>%1 Punkte, Nennkreis R %2 mm um (%3, %4) mm; %n Umlauf.</numerusform>
-            <numerusform>%1 Punkte, Nennkreis R %2 mm um (%3, %4) mm; %n Umläufe.</numerusform>
+            <numerusform>%1 Punkte, Nennkreis R %2 mm um (%3; %4) mm; %n Umlauf.</numerusform>
+            <numerusform>%1 Punkte, Nennkreis R %2 mm um (%3; %4) mm; %n Umläufe.</numerusform>
         </translation>
     </message>
     <message>
@@ -2063,7 +2063,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     <message>
         <location line="+8"/>
         <source>&lt;b&gt;Three axes&lt;/b&gt; from circular tests in XY, YZ and ZX: origin (%1, %2, %3) µm ± %4 µm, RMS residual %5 µm, %6 points.</source>
-        <translation>&lt;b&gt;Drei Achsen&lt;/b&gt; aus Kreisformtests in XY, YZ und ZX: Ursprung (%1, %2, %3) µm ± %4 µm, RMS-Residuum %5 µm, %6 Punkte.</translation>
+        <translation>&lt;b&gt;Drei Achsen&lt;/b&gt; aus Kreisformtests in XY, YZ und ZX: Ursprung (%1; %2; %3) µm ± %4 µm, RMS-Residuum %5 µm, %6 Punkte.</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -2093,7 +2093,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     <message>
         <location line="+13"/>
         <source>From the saved project, computed %1 with these settings on this test: identified origin (%2, %3) µm, X axis angle a %4°, Y axis angle b %5°, squareness b − a %6°, RMS residual %7 µm. Compensation: max radial deviation %8 µm measured, %9 µm expected after (RMS %10 µm), largest correction %11 µm.</source>
-        <translation>Aus dem gespeicherten Projekt, berechnet %1 mit diesen Einstellungen auf diesem Test: identifizierter Ursprung (%2, %3) µm, Winkel der X-Achse a %4°, Winkel der Y-Achse b %5°, Rechtwinkligkeit b − a %6°, RMS-Residuum %7 µm. Kompensation: größte radiale Abweichung %8 µm gemessen, %9 µm danach erwartet (RMS %10 µm), größte Korrektur %11 µm.</translation>
+        <translation>Aus dem gespeicherten Projekt, berechnet %1 mit diesen Einstellungen auf diesem Test: identifizierter Ursprung (%2; %3) µm, Winkel der X-Achse a %4°, Winkel der Y-Achse b %5°, Rechtwinkligkeit b − a %6°, RMS-Residuum %7 µm. Kompensation: größte radiale Abweichung %8 µm gemessen, %9 µm danach erwartet (RMS %10 µm), größte Korrektur %11 µm.</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -4161,7 +4161,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="-302"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
-        <translation>%1 Punkte; Nennkreis R %2 mm um (%3, %4) mm; %5 Umläufe (gegen, dann mit dem Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (%8, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt bestimmt (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
+        <translation>%1 Punkte; Nennkreis R %2 mm um (%3; %4) mm; %5 Umläufe (gegen, dann mit dem Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (%8, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt bestimmt (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -4413,7 +4413,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+7"/>
         <source>The three-axis Cartesian model P = o + [i j k]·Pr (%1, Eq. 9 in three axes) fitted to the three tests together (%2 points, RMS residual %3 µm): origin (%4, %5, %6) µm. In every plane (u, v) the u actuator moves along (cos a, sin a), the v actuator along (−sin b, cos b); squareness b − a.</source>
-        <translation>Das kartesische Dreiachsmodell P = o + [i j k]·Pr (%1, Gl. 9 für drei Achsen), gemeinsam an die drei Tests angepasst (%2 Punkte, RMS-Residuum %3 µm): Ursprung (%4, %5, %6) µm. In jeder Ebene (u, v) bewegt sich der u-Antrieb entlang (cos a, sin a), der v-Antrieb entlang (−sin b, cos b); Rechtwinkligkeit b − a.</translation>
+        <translation>Das kartesische Dreiachsmodell P = o + [i j k]·Pr (%1, Gl. 9 für drei Achsen), gemeinsam an die drei Tests angepasst (%2 Punkte, RMS-Residuum %3 µm): Ursprung (%4; %5; %6) µm. In jeder Ebene (u, v) bewegt sich der u-Antrieb entlang (cos a, sin a), der v-Antrieb entlang (−sin b, cos b); Rechtwinkligkeit b − a.</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -4443,7 +4443,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+19"/>
         <source>Circular test %1: actuator origin offset (%2, %3) µm, squareness error %4°; largest radial deviation %5 µm.</source>
-        <translation>Kreisformtest %1: Nullpunktversatz der Antriebe (%2, %3) µm, Rechtwinkligkeitsfehler %4°; größte radiale Abweichung %5 µm.</translation>
+        <translation>Kreisformtest %1: Nullpunktversatz der Antriebe (%2; %3) µm, Rechtwinkligkeitsfehler %4°; größte radiale Abweichung %5 µm.</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -4503,7 +4503,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+7"/>
         <source>From the SPC offset angles: origin (%1, %2) µm, squareness %3°.</source>
-        <translation>Aus den SPC-Versatzwinkeln: Ursprung (%1, %2) µm, Rechtwinkligkeit %3°.</translation>
+        <translation>Aus den SPC-Versatzwinkeln: Ursprung (%1; %2) µm, Rechtwinkligkeit %3°.</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -4855,7 +4855,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+13"/>
         <source>The workpiece %1 sits rotated by (%2, %3, %4)° and shifted by (%5, %6, %7) mm; %8 of %9 probed points are out of ±%10 mm before matching, %11 after.</source>
-        <translation>Das Werkstück %1 liegt um (%2, %3, %4)° gedreht und um (%5, %6, %7) mm verschoben; %8 von %9 angetasteten Punkten liegen vor dem Einpassen außerhalb ±%10 mm, danach %11.</translation>
+        <translation>Das Werkstück %1 liegt um (%2; %3; %4)° gedreht und um (%5; %6; %7) mm verschoben; %8 von %9 angetasteten Punkten liegen vor dem Einpassen außerhalb ±%10 mm, danach %11.</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -5349,7 +5349,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+0"/>
         <source>axis %1, grid %2 mm, bounds [%3, %4] mm</source>
-        <translation>Achse %1, Raster %2 mm, Grenzen [%3, %4] mm</translation>
+        <translation>Achse %1, Raster %2 mm, Grenzen [%3; %4] mm</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -7493,7 +7493,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+22"/>
         <source>Model “%1” (%2): %3 setup data (%4 work offsets, %5 tools, %6 machine points), %7 features, %8 dimensions, %9 arcs; axis %10, grid %11 mm, bounds [%12, %13] mm.</source>
-        <translation>Modell „%1“ (%2): %3 Einrichtdaten (%4 Nullpunktverschiebungen, %5 Werkzeuge, %6 Maschinenpunkte), %7 Formelemente, %8 Maße, %9 Kanten; Achse %10, Raster %11 mm, Grenzen [%12, %13] mm.</translation>
+        <translation>Modell „%1“ (%2): %3 Einrichtdaten (%4 Nullpunktverschiebungen, %5 Werkzeuge, %6 Maschinenpunkte), %7 Formelemente, %8 Maße, %9 Kanten; Achse %10, Raster %11 mm, Grenzen [%12; %13] mm.</translation>
     </message>
     <message>
         <location line="+12"/>

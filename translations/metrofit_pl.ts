@@ -1838,9 +1838,9 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <location line="+6"/>
         <source>%1 points, nominal circle R %2 mm about (%3, %4) mm; %n loop(s).</source>
         <translation>
-            <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3, %4) mm; %n pętla.</numerusform>
-            <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3, %4) mm; %n pętle.</numerusform>
-            <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3, %4) mm; %n pętli.</numerusform>
+            <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3; %4) mm; %n pętla.</numerusform>
+            <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3; %4) mm; %n pętle.</numerusform>
+            <numerusform>Punkty: %1, okrąg nominalny R %2 mm wokół (%3; %4) mm; %n pętli.</numerusform>
         </translation>
     </message>
     <message>
@@ -2066,7 +2066,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <message>
         <location line="+8"/>
         <source>&lt;b&gt;Three axes&lt;/b&gt; from circular tests in XY, YZ and ZX: origin (%1, %2, %3) µm ± %4 µm, RMS residual %5 µm, %6 points.</source>
-        <translation>&lt;b&gt;Trzy osie&lt;/b&gt; z testów kołowych w XY, YZ i ZX: początek (%1, %2, %3) µm ± %4 µm, residuum RMS %5 µm, punkty: %6.</translation>
+        <translation>&lt;b&gt;Trzy osie&lt;/b&gt; z testów kołowych w XY, YZ i ZX: początek (%1; %2; %3) µm ± %4 µm, residuum RMS %5 µm, punkty: %6.</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -2096,7 +2096,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <message>
         <location line="+13"/>
         <source>From the saved project, computed %1 with these settings on this test: identified origin (%2, %3) µm, X axis angle a %4°, Y axis angle b %5°, squareness b − a %6°, RMS residual %7 µm. Compensation: max radial deviation %8 µm measured, %9 µm expected after (RMS %10 µm), largest correction %11 µm.</source>
-        <translation>Z zapisanego projektu, obliczono %1 z tymi ustawieniami dla tego testu: zidentyfikowany początek (%2, %3) µm, kąt osi X a %4°, kąt osi Y b %5°, prostopadłość b − a %6°, residuum RMS %7 µm. Kompensacja: największe odchylenie promieniowe %8 µm zmierzone, %9 µm oczekiwane po (RMS %10 µm), największa korekta %11 µm.</translation>
+        <translation>Z zapisanego projektu, obliczono %1 z tymi ustawieniami dla tego testu: zidentyfikowany początek (%2; %3) µm, kąt osi X a %4°, kąt osi Y b %5°, prostopadłość b − a %6°, residuum RMS %7 µm. Kompensacja: największe odchylenie promieniowe %8 µm zmierzone, %9 µm oczekiwane po (RMS %10 µm), największa korekta %11 µm.</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -4165,7 +4165,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="-302"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
-        <translation>%1 punktów; okrąg nominalny R %2 mm wokół (%3, %4) mm; %5 pętli (przeciwnie, potem zgodnie z ruchem wskazówek zegara). Błędy napędów maszyny kartezjańskiej (%8, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wyznaczono metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
+        <translation>%1 punktów; okrąg nominalny R %2 mm wokół (%3; %4) mm; %5 pętli (przeciwnie, potem zgodnie z ruchem wskazówek zegara). Błędy napędów maszyny kartezjańskiej (%8, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wyznaczono metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -4417,7 +4417,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+7"/>
         <source>The three-axis Cartesian model P = o + [i j k]·Pr (%1, Eq. 9 in three axes) fitted to the three tests together (%2 points, RMS residual %3 µm): origin (%4, %5, %6) µm. In every plane (u, v) the u actuator moves along (cos a, sin a), the v actuator along (−sin b, cos b); squareness b − a.</source>
-        <translation>Trzyosiowy model kartezjański P = o + [i j k]·Pr (%1, równ. 9 dla trzech osi) dopasowany łącznie do trzech testów (punkty: %2, residuum RMS %3 µm): początek (%4, %5, %6) µm. W każdej płaszczyźnie (u, v) napęd u porusza się wzdłuż (cos a, sin a), napęd v wzdłuż (−sin b, cos b); prostopadłość b − a.</translation>
+        <translation>Trzyosiowy model kartezjański P = o + [i j k]·Pr (%1, równ. 9 dla trzech osi) dopasowany łącznie do trzech testów (punkty: %2, residuum RMS %3 µm): początek (%4; %5; %6) µm. W każdej płaszczyźnie (u, v) napęd u porusza się wzdłuż (cos a, sin a), napęd v wzdłuż (−sin b, cos b); prostopadłość b − a.</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -4447,7 +4447,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+19"/>
         <source>Circular test %1: actuator origin offset (%2, %3) µm, squareness error %4°; largest radial deviation %5 µm.</source>
-        <translation>Test okrągłości %1: przesunięcie początku napędów (%2, %3) µm, błąd prostopadłości %4°; największe odchylenie promieniowe %5 µm.</translation>
+        <translation>Test okrągłości %1: przesunięcie początku napędów (%2; %3) µm, błąd prostopadłości %4°; największe odchylenie promieniowe %5 µm.</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -4507,7 +4507,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+7"/>
         <source>From the SPC offset angles: origin (%1, %2) µm, squareness %3°.</source>
-        <translation>Z kątów przesunięcia SPC: początek (%1, %2) µm, prostopadłość %3°.</translation>
+        <translation>Z kątów przesunięcia SPC: początek (%1; %2) µm, prostopadłość %3°.</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -4859,7 +4859,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+13"/>
         <source>The workpiece %1 sits rotated by (%2, %3, %4)° and shifted by (%5, %6, %7) mm; %8 of %9 probed points are out of ±%10 mm before matching, %11 after.</source>
-        <translation>Przedmiot %1 jest obrócony o (%2, %3, %4)° i przesunięty o (%5, %6, %7) mm; %8 z %9 zmierzonych punktów leży poza ±%10 mm przed dopasowaniem, %11 po nim.</translation>
+        <translation>Przedmiot %1 jest obrócony o (%2; %3; %4)° i przesunięty o (%5; %6; %7) mm; %8 z %9 zmierzonych punktów leży poza ±%10 mm przed dopasowaniem, %11 po nim.</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -5354,7 +5354,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+0"/>
         <source>axis %1, grid %2 mm, bounds [%3, %4] mm</source>
-        <translation>oś %1, siatka %2 mm, granice [%3, %4] mm</translation>
+        <translation>oś %1, siatka %2 mm, granice [%3; %4] mm</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -7512,7 +7512,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+22"/>
         <source>Model “%1” (%2): %3 setup data (%4 work offsets, %5 tools, %6 machine points), %7 features, %8 dimensions, %9 arcs; axis %10, grid %11 mm, bounds [%12, %13] mm.</source>
-        <translation>Model „%1” (%2): dane ustawcze: %3 (przesunięcia punktu zerowego: %4, narzędzia: %5, punkty maszyny: %6), elementy geometryczne: %7, wymiary: %8, łuki: %9; oś %10, siatka %11 mm, granice [%12, %13] mm.</translation>
+        <translation>Model „%1” (%2): dane ustawcze: %3 (przesunięcia punktu zerowego: %4, narzędzia: %5, punkty maszyny: %6), elementy geometryczne: %7, wymiary: %8, łuki: %9; oś %10, siatka %11 mm, granice [%12; %13] mm.</translation>
     </message>
     <message>
         <location line="+12"/>
