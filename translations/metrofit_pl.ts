@@ -3402,7 +3402,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+5"/>
         <source>Machine adjustment values for %1, posture of %2. %3</source>
-        <translation>Wartości korekty obrabiarki dla: %1, położenie z %2. %3</translation>
+        <translation>Korekty obrabiarki: %1, położenie z %2. %3</translation>
     </message>
     <message>
         <location line="+3"/>

@@ -532,8 +532,11 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   content_->setStretchFactor(0, 3);
   content_->setStretchFactor(1, 1);
   content_->setChildrenCollapsible(false);
-  content_->setSizes({560, 250});  // the 3D views get most of the height
-  tabs_->setMinimumHeight(150);
+  // The tabs get the room their tables and texts need at 1280 x 800 (the machine's six axes under
+  // its wrapped title, the five lines of a frame: clipping_test); the 3D views take the rest and
+  // every extra pixel of a larger window.
+  content_->setSizes({300, 300});
+  tabs_->setMinimumHeight(290);
   stack_->addWidget(content_);
   stack_->addWidget(message_);
 

@@ -310,7 +310,8 @@ ResidualPlotView::ResidualPlotView(QWidget* parent)
       charts_(new Charts) {
   charts_->view = new QChartView(this);
   charts_->view->setRenderHint(QPainter::Antialiasing);
-  charts_->view->setMinimumSize(280, 220);
+  // High enough for the residual axis title at 1280 x 800 (Qt Charts cuts it otherwise: clipping_test).
+  charts_->view->setMinimumSize(280, 240);
   stack_->addWidget(charts_->view);
   stack_->addWidget(vectors_);
   auto* layout = new QVBoxLayout(this);
@@ -414,9 +415,11 @@ void ResidualPlotView::setPlot(const diagnose::ResidualPlot& source, const QStri
   ay->applyNiceNumbers();
   ax->setTitleText(xLabel);
   ay->setTitleText(displayUnits(plot.yLabel));
-  if (plot.yLabel.size() > 22) {  // long labels ("apparent error of T23 (mm)") must fit the axis
+  // The plot is low at 1280 x 800: a bold title of more than a word ("Residuum (µm)") is cut by Qt
+  // Charts; long labels ("apparent error of T23 (mm)") get a smaller font still (clipping_test).
+  if (plot.yLabel.size() > 8) {
     QFont f = ay->titleFont();
-    f.setPointSizeF(f.pointSizeF() * 0.8);
+    f.setPointSizeF(f.pointSizeF() * (plot.yLabel.size() > 22 ? 0.8 : 0.9));
     f.setBold(false);
     ay->setTitleFont(f);
   }

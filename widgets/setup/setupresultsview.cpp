@@ -13,8 +13,10 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSplitter>
+#include <QStyle>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <exception>
 
 #include "core/io/dfq.h"
@@ -73,7 +75,7 @@ SetupResultsView::SetupResultsView(QWidget* parent)
   table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setStretchLastSection(true);
-  table_->setMinimumWidth(320);
+  fitTableWidth();
 
   auto* exports = new QHBoxLayout;
   exports->addWidget(new QLabel(tr("Export the corrections:"), this));
@@ -156,6 +158,21 @@ QString SetupResultsView::partsText() const {
   return parts_->text();
 }
 
+void SetupResultsView::fitTableWidth() {
+  constexpr int kMinimumWidth = 320;
+  int need =
+      2 * table_->frameWidth() + table_->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, table_);
+  constexpr int kCellMargins = 12;  // the cell's text margins and focus frame
+  for (int c = 0; c < table_->columnCount(); ++c) {
+    int column = table_->horizontalHeader()->sectionSizeHint(c);
+    for (int r = 0; r < table_->rowCount(); ++r)
+      if (const QTableWidgetItem* item = table_->item(r, c))
+        column = std::max(column, QFontMetrics(item->font()).horizontalAdvance(item->text()) + kCellMargins);
+    need += column;
+  }
+  table_->setMinimumWidth(std::max(kMinimumWidth, need));
+}
+
 void SetupResultsView::clear(const QString& message) {
   result_.reset();
   summary_->setText(message);
@@ -218,6 +235,7 @@ void SetupResultsView::setResult(const setup::Model& model, const setup::SetupIn
     c->setData(Qt::UserRole, x);
     table_->setItem(row, ColCorrection, c);
   }
+  fitTableWidth();
 
   std::vector<SetupMarginRow> rows;
   const std::vector<double> after = instance.deviationsAfter(outcome.x);

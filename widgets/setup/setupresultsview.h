@@ -67,6 +67,9 @@ class SetupResultsView : public QWidget {
   bool exportDfq(const QString& path, QString* error = nullptr) const;
 
  private:
+  /// The corrections table is never narrower than its columns need (header and cells, in any
+  /// language), so the splitter cannot hide the correction column (gui-run F3).
+  void fitTableWidth();
   void exportDialog(setup::ControllerFormat format);
   void tableDialog();
   void dfqDialog();

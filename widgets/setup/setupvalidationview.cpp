@@ -5,6 +5,7 @@
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -98,14 +99,17 @@ SetupValidationView::SetupValidationView(QWidget* parent) : QWidget(parent), d(s
   d->seed = new QSpinBox(this);
   d->seed->setRange(0, 1000000000);
   d->seed->setValue(1);
-  auto* methodRow = new QHBoxLayout;
+  // Two check boxes per row: four in one row do not fit the 380 px column (clipping_test).
+  auto* methodRow = new QGridLayout;
+  int methodIndex = 0;
   for (const std::string& m : setup::setupMetaheuristicNames()) {
     auto* box = new QCheckBox(setupMethodTitle(QString::fromStdString(m)), this);
     box->setChecked(m == "cripso");
     d->methods[m] = box;
-    methodRow->addWidget(box);
+    methodRow->addWidget(box, methodIndex / 2, methodIndex % 2);
+    ++methodIndex;
   }
-  methodRow->addStretch(1);
+  methodRow->setColumnStretch(2, 1);
   d->run = new QPushButton(tr("Run &validation"), this);
   d->cancel = new QPushButton(tr("Cancel"), this);
   d->cancel->setEnabled(false);

@@ -33,6 +33,8 @@
 
 namespace metrofit {
 namespace {
+/// The narrowest small multiple whose title, axis titles and ticks Qt Charts does not cut.
+constexpr int kSmallMultipleMinWidth = 215;
 
 /// One analysis, made on any thread (no widgets).
 struct Analysis {
@@ -107,15 +109,19 @@ struct ThermalHysteresisView::Impl {
       charts = 1;
     } else {
       const int n = static_cast<int>(series.inputNames.size());
-      const int columns = n <= 1 ? 1 : (n <= 4 ? 2 : 3);
+      // Two columns at most: beside the table, three columns of small multiples were 130 px wide at
+      // 1280 x 800 and Qt Charts cut their titles, axis titles and ticks ("t1_deg...", "2... 2...";
+      // gui-run F14, clipping_test). The grid scrolls vertically instead.
+      const int columns = n <= 1 ? 1 : 2;
       HysteresisChartOptions o;
       o.compactTitle = true;
       o.legend = false;
       o.maxPoints = 600;
       for (int i = 0; i < n; ++i) {
         o.legend = i == 0;  // the heating / cooling key once, on the first chart of the grid
-        layout->addWidget(chartView(makeHysteresisChart(log, series, analysis, i, o), grid, 230), i / columns,
-                          i % columns);
+        QChartView* view = chartView(makeHysteresisChart(log, series, analysis, i, o), grid, 230);
+        view->setMinimumWidth(kSmallMultipleMinWidth);
+        layout->addWidget(view, i / columns, i % columns);
       }
       charts = n;
     }
