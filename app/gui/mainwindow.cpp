@@ -386,8 +386,9 @@ void MainWindow::open() {
 
 void MainWindow::openDemo() {
   if (!maybeSave()) return;
-  const QString folder =
-      QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/demo");
+  // A demo saved with the user's edits is kept: then the demo goes into demo-2, demo-3, ...
+  const QString folder = demoFolderFor(
+      QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/demo"));
   QString path;
   try {
     path = extractDemoProject(folder);

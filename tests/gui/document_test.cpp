@@ -433,6 +433,29 @@ TEST(DemoProjectTest, ExtractsTheProjectAndItsData) {
   EXPECT_EQ(extractDemoProject(target), project);
 }
 
+// Help › Open demo project keeps a demo the user saved with edits (gui-run F15): a fresh or unchanged
+// copy is reused, an edited one gets a sibling folder.
+TEST(DemoProjectTest, AnEditedDemoIsNotOverwritten) {
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  const QString base = dir.filePath(QStringLiteral("demo"));
+  EXPECT_EQ(demoFolderFor(base), base);  // nothing there yet
+  const QString project = extractDemoProject(base);
+  EXPECT_EQ(demoFolderFor(base), base);  // the bundled demo, unchanged: reused
+  QFile file(project);
+  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+  QByteArray edited = file.readAll();
+  file.close();
+  edited.replace("Demo cell", "My cell");
+  writeText(project, edited);
+  EXPECT_EQ(demoFolderFor(base), base + QStringLiteral("-2"));
+  extractDemoProject(base + QStringLiteral("-2"));
+  EXPECT_EQ(demoFolderFor(base), base + QStringLiteral("-2"));  // the unchanged second copy
+  // The edited demo is still there.
+  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+  EXPECT_TRUE(file.readAll().contains("My cell"));
+}
+
 TEST(DemoProjectTest, UnwritableFolderThrowsFileError) {
   QTemporaryDir dir;
   ASSERT_TRUE(dir.isValid());

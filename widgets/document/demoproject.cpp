@@ -51,4 +51,26 @@ QString extractDemoProject(const QString& dir) {
   return project;
 }
 
+namespace {
+/// True when `dir` has no demo project file, or one equal to the bundled file.
+bool demoFolderUnchanged(const QString& dir) {
+  const QString name = QFileInfo(QString::fromLatin1(kDemoProjectResource)).fileName();
+  QFile copy(QDir(dir).filePath(name));
+  if (!copy.exists()) return true;
+  QFile bundled(QString::fromLatin1(kDemoProjectResource));
+  if (!copy.open(QIODevice::ReadOnly) || !bundled.open(QIODevice::ReadOnly)) return false;
+  return copy.readAll() == bundled.readAll();
+}
+}  // namespace
+
+QString demoFolderFor(const QString& base) {
+  constexpr int kMaxCopies = 1000;
+  if (demoFolderUnchanged(base)) return base;
+  for (int n = 2; n < kMaxCopies; ++n) {
+    const QString candidate = base + QStringLiteral("-%1").arg(n);
+    if (demoFolderUnchanged(candidate)) return candidate;
+  }
+  return base + QStringLiteral("-%1").arg(kMaxCopies);
+}
+
 }  // namespace metrofit

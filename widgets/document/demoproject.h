@@ -13,4 +13,10 @@ inline constexpr const char* kDemoProjectResource = ":/demo/demo.metrofit";
 /// metrofit::FileError naming the file when the resources are missing or a file cannot be written.
 QString extractDemoProject(const QString& dir);
 
+/// The folder Help › Open demo project extracts into: `base` when it holds no demo project or one
+/// that is still the bundled one byte for byte (so nothing of the user's is replaced), else the
+/// first of `base`-2, `base`-3, … that is free or holds an unchanged demo (gui-run F15: a saved,
+/// edited demo was silently overwritten).
+QString demoFolderFor(const QString& base);
+
 }  // namespace metrofit
