@@ -4,8 +4,11 @@
 #include <QColor>
 #include <QLocale>
 #include <QStyle>
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "core/project/dataset_content.h"
 #include "widgets/common/palette.h"
@@ -288,6 +291,34 @@ int DatasetTableModel::timeColumn() const {
     if ((u == "s" || u == "min" || u == "h") && numeric_[c]) return static_cast<int>(c);
   }
   return -1;
+}
+
+bool DatasetTableModel::rowContains(int row, const QString& text) const {
+  if (text.isEmpty()) return true;
+  if (!content_ || row < 0 || row >= rowCount()) return false;
+  if (isFeatureTable()) {
+    for (int c = 0; c < columnCount(); ++c)
+      if (data(index(row, c)).toString().contains(text, Qt::CaseInsensitive)) return true;
+    return false;
+  }
+  const auto lower = [](std::string s) {
+    for (char& ch : s) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    return s;
+  };
+  const std::string needle = lower(text.toStdString());
+  std::string other = needle;
+  for (char& ch : other) ch = ch == ',' ? '.' : ch == '.' ? ',' : ch;
+  const auto contains = [](const std::string& hay, const std::string& n) {
+    return std::search(hay.begin(), hay.end(), n.begin(), n.end(), [](char a, char b) {
+             return std::tolower(static_cast<unsigned char>(a)) == b;
+           }) != hay.end();
+  };
+  const CsvTable& t = content_->table;
+  for (std::size_t c = 0; c < t.columnCount(); ++c) {
+    const std::string& cell = t.cell(static_cast<std::size_t>(row), c);
+    if (contains(cell, needle) || (other != needle && contains(cell, other))) return true;
+  }
+  return false;
 }
 
 bool DatasetTableModel::outOfTolerance(int row) const {

@@ -50,6 +50,10 @@ class DatasetTableModel : public QAbstractTableModel {
   int timeColumn() const;
   /// Whether a row of a feature table is out of tolerance (false for other tables).
   bool outOfTolerance(int row) const;
+  /// Whether a cell of the row contains `text` (case-insensitive): the text shown for a feature
+  /// table; the file's own text for other tables (fast on 100 000 rows), a number also with the
+  /// other decimal mark, so "20,75" typed in a German UI finds "20.75" in the file.
+  bool rowContains(int row, const QString& text) const;
 
  private:
   enum class Field { Part, Feature, Characteristic, Unit, Nominal, Actual, Deviation, Lower, Upper, Status };

@@ -32,6 +32,29 @@
 
 namespace metrofit {
 
+namespace {
+
+/// Rows that contain the filter text in any cell (DatasetTableModel::rowContains).
+class DatasetFilterProxy : public QSortFilterProxyModel {
+ public:
+  using QSortFilterProxyModel::QSortFilterProxyModel;
+  void setText(const QString& text) {
+    text_ = text;
+    invalidateFilter();
+  }
+
+ protected:
+  bool filterAcceptsRow(int row, const QModelIndex& parent) const override {
+    const auto* model = static_cast<const DatasetTableModel*>(sourceModel());
+    return text_.isEmpty() || (!parent.isValid() && model->rowContains(row, text_));
+  }
+
+ private:
+  QString text_;
+};
+
+}  // namespace
+
 struct DatasetView::Chart {
   QChart* chart = nullptr;
   QLineSeries* series = nullptr;
@@ -42,7 +65,7 @@ struct DatasetView::Chart {
 DatasetView::DatasetView(QWidget* parent)
     : QWidget(parent),
       model_(new DatasetTableModel(this)),
-      proxy_(new QSortFilterProxyModel(this)),
+      proxy_(new DatasetFilterProxy(this)),
       summary_(new QLabel(this)),
       error_(new QLabel(this)),
       filter_(new QLineEdit(this)),
@@ -54,8 +77,6 @@ DatasetView::DatasetView(QWidget* parent)
   setObjectName(QStringLiteral("datasetView"));
   proxy_->setSourceModel(model_);
   proxy_->setSortRole(DatasetTableModel::SortRole);
-  proxy_->setFilterKeyColumn(-1);
-  proxy_->setFilterCaseSensitivity(Qt::CaseInsensitive);
 
   summary_->setObjectName(QStringLiteral("datasetSummary"));
   summary_->setWordWrap(true);
@@ -69,7 +90,7 @@ DatasetView::DatasetView(QWidget* parent)
   filter_->setPlaceholderText(tr("Filter rows (text in any column)"));
   filter_->setClearButtonEnabled(true);
   connect(filter_, &QLineEdit::textChanged, this, [this](const QString& text) {
-    proxy_->setFilterFixedString(text);
+    static_cast<DatasetFilterProxy*>(proxy_)->setText(text);
     updateSummary();
   });
   plotColumn_->setObjectName(QStringLiteral("datasetPlotColumn"));
