@@ -197,10 +197,14 @@ std::vector<FeatureTableRow> cmmReportFeatureRows(const CmmTextReport& report) {
   for (std::size_t k = 0; k < report.runs.size(); ++k) {
     const CmmRun& run = report.runs[k];
     std::string part;
-    if (report.runs.size() > 1)
-      part = run.number > 0
-                 ? (run.routine.empty() ? "" : run.routine + " ") + "run " + std::to_string(run.number)
-                 : "run " + std::to_string(k + 1);
+    // Run numbers repeat in a summary of several days (run # 1-4 each day): the k-th run in the
+    // file, with its printed number and date.
+    if (report.runs.size() > 1) {
+      part = "run " + std::to_string(k + 1);
+      std::string printed = run.number > 0 ? "#" + std::to_string(run.number) : std::string();
+      if (!run.dateTime.empty()) printed += (printed.empty() ? "" : ", ") + run.dateTime;
+      if (!printed.empty()) part += " (" + printed + ")";
+    }
     for (const CmmFeature& f : run.features) {
       const std::string feature = !f.label.empty() ? f.label
                                   : report.format == CmmReportFormat::PcDmis

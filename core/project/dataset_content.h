@@ -48,8 +48,8 @@ struct FeatureTableRow {
 bool outsideTolerance(double deviation, std::optional<double> lower, std::optional<double> upper,
                       double slack = 0.0);
 
-/// The feature rows of a CMM text report, in file order (part "" for a single run, else "<routine>
-/// run <n>" / "run <k>").
+/// The feature rows of a CMM text report, in file order (part "" for a single run, else "run <k>
+/// (#<run number>, <date>)" for the k-th run of the file: run numbers repeat from day to day).
 std::vector<FeatureTableRow> cmmReportFeatureRows(const CmmTextReport& report);
 /// The feature rows of a CMM report series CSV (columns as core/setup/report.h names them, mapped).
 std::vector<FeatureTableRow> cmmCsvFeatureRows(const CsvTable& table);
