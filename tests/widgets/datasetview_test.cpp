@@ -442,5 +442,27 @@ TEST_F(DatasetViewTest, RealCaiviacLogHasItsUnitsAndIsPlottedAgainstTime) {
   saveShot(view, "datasetview-caiviac-real.png");
 }
 
+// The real OGP summary of 13 runs (GPL-3.0, read in place): a Part column, numbers in Polish.
+TEST_F(DatasetViewTest, RealOgpSummaryHasAPartColumnAndLocaleNumbers) {
+  const std::filesystem::path real = test::realData("cmm-ogp-hps-svt/survey_data/L123_fixture_sho.txt");
+  if (!std::filesystem::exists(real)) GTEST_SKIP() << "real data not here";
+  QLocale::setDefault(QLocale(QLocale::Polish, QLocale::Poland));
+  DatasetView view;
+  ASSERT_TRUE(view.showDataset(QString::fromStdString(real.string()),
+                               datasetOf(dataset_kind::kCmmReport, real.string())))
+      << view.errorText().toStdString();
+  EXPECT_EQ(header(view, 0), QStringLiteral("Part"));
+  EXPECT_EQ(cell(view, 0, 0), QStringLiteral("run 1 (#4, Wed Oct 01 17:29:15 2014)"));
+  const int actual = columnOf(view, QStringLiteral("Actual"));
+  ASSERT_GE(actual, 0);
+  EXPECT_EQ(cell(view, 0, actual), QStringLiteral("23,608"));
+  view.filterEdit()->setText(QStringLiteral("run 13 "));
+  EXPECT_GT(view.proxy()->rowCount(), 0);
+  for (int r = 0; r < view.proxy()->rowCount(); ++r)
+    EXPECT_TRUE(cell(view, r, 0).startsWith(QStringLiteral("run 13 ")));
+  view.filterEdit()->clear();
+  saveShot(view, "datasetview-ogp-summary-pl.png");
+}
+
 }  // namespace
 }  // namespace metrofit
