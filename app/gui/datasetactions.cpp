@@ -51,7 +51,7 @@ class DatasetWindow : public QWidget {
     if (!d) return;
     shown_ = *d;
     setWindowTitle(DatasetActionsText::tr("%1 — data").arg(id_));
-    view_->showDataset(document_->datasetPath(*d), *d);
+    view_->showDatasetInBackground(document_->datasetPath(*d), *d);
   }
 
  private:

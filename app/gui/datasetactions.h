@@ -19,7 +19,8 @@ void addDatasetActions(QMenu* menu, ProjectDocument* document, const QString& id
 /// "Show data": the dataset's table and plot (widgets/data/datasetview.h) in a window of its own,
 /// non-modal and beside the main window (the pages are a stack with no room for a second view, and a
 /// dock would narrow the pages at 1280x800), one per dataset: asked again, the open window is read
-/// again and raised. It follows the document: a re-linked or re-mapped dataset is read again, a
+/// again and raised. The file is read off the GUI thread (a log of 100 000 rows takes a second). It
+/// follows the document: a re-linked or re-mapped dataset is read again, a
 /// removed one closes the window. Returns the window.
 QWidget* showDatasetData(ProjectDocument* document, const QString& id, QWidget* parent);
 

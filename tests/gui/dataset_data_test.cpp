@@ -118,6 +118,7 @@ TEST_F(DatasetDataTest, NavigatorDoubleClickOpensOneWindowPerDataset) {
   EXPECT_TRUE(windows[0]->windowTitle().startsWith(QStringLiteral("warmup")));
   auto* view = windows[0]->findChild<DatasetView*>();
   ASSERT_NE(view, nullptr);
+  QTRY_VERIFY(!view->isReading());  // read off the GUI thread
   EXPECT_TRUE(view->errorText().isEmpty()) << view->errorText().toStdString();
   ASSERT_EQ(view->model()->rowCount(), 3);
   EXPECT_EQ(view->model()->headerData(0, Qt::Horizontal).toString(), QStringLiteral("time_min [min]"));
@@ -136,6 +137,7 @@ TEST_F(DatasetDataTest, NavigatorDoubleClickOpensOneWindowPerDataset) {
   for (QWidget* w : windows)
     if (w->windowTitle().startsWith(QStringLiteral("bracket"))) report = w->findChild<DatasetView*>();
   ASSERT_NE(report, nullptr);
+  QTRY_VERIFY(!report->isReading());
   ASSERT_TRUE(report->model()->isFeatureTable());
   ASSERT_EQ(report->model()->rowCount(), 3);
   EXPECT_TRUE(report->model()->outOfTolerance(2));
@@ -163,6 +165,7 @@ TEST_F(DatasetDataTest, OverviewTableDoubleClickAndContextMenuShowData) {
   ASSERT_EQ(windows.size(), 1);
   auto* view = windows[0]->findChild<DatasetView*>();
   ASSERT_NE(view, nullptr);
+  QTRY_VERIFY(!view->isReading());
   EXPECT_TRUE(view->model()->isFeatureTable());
   windows[0]->close();
   QApplication::processEvents();
@@ -180,12 +183,14 @@ TEST_F(DatasetDataTest, OverviewTableDoubleClickAndContextMenuShowData) {
   ASSERT_EQ(windows.size(), 1);
   view = windows[0]->findChild<DatasetView*>();
   ASSERT_NE(view, nullptr);
+  QTRY_VERIFY(!view->isReading());
   EXPECT_EQ(view->model()->rowCount(), 3);
 
   // A file that has gone: one line naming it instead of the table.
   ASSERT_TRUE(QFile::remove(logPath_));
   QWidget* again = showDatasetData(&doc, QStringLiteral("warmup"), &table);
   ASSERT_EQ(again, windows[0]);
+  QTRY_VERIFY(!view->isReading());
   EXPECT_TRUE(view->errorText().startsWith(QStringLiteral("Cannot show warmup.csv: ")))
       << view->errorText().toStdString();
   EXPECT_FALSE(view->table()->isVisible());

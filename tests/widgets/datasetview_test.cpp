@@ -20,6 +20,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
+#include <QSignalSpy>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
 #include <QTableView>
@@ -462,6 +463,36 @@ TEST_F(DatasetViewTest, RealOgpSummaryHasAPartColumnAndLocaleNumbers) {
     EXPECT_TRUE(cell(view, r, 0).startsWith(QStringLiteral("run 13 ")));
   view.filterEdit()->clear();
   saveShot(view, "datasetview-ogp-summary-pl.png");
+}
+
+// Off the GUI thread: "Reading …" until the content is there; the last of two quick requests
+// wins; an unreadable file ends in the error line. datasetShown() tells each end.
+TEST_F(DatasetViewTest, BackgroundReadShowsTheLastRequestAndErrors) {
+  const std::string a = dir_.file("a.csv"), b = dir_.file("b.csv");
+  test::writeText(a, "time_min,T1_degC\n0,20\n");
+  test::writeText(b, "time_min,T1_degC\n0,20\n1,21\n2,22\n");
+  DatasetView view;
+  QSignalSpy shown(&view, &DatasetView::datasetShown);
+  view.showDatasetInBackground(QString::fromStdString(a), datasetOf(dataset_kind::kThermalLog, a));
+  EXPECT_TRUE(view.isReading());
+  EXPECT_TRUE(view.summaryText().startsWith(QStringLiteral("Reading a.csv")))
+      << view.summaryText().toStdString();
+  view.showDatasetInBackground(QString::fromStdString(b), datasetOf(dataset_kind::kThermalLog, b));
+  QTRY_VERIFY(!view.isReading());
+  ASSERT_EQ(shown.count(), 1);
+  EXPECT_TRUE(shown.front().front().toBool());
+  EXPECT_EQ(view.model()->rowCount(), 3);
+  EXPECT_EQ(view.plottedPoints().size(), 3u);
+
+  const std::string bad = dir_.file("bad.csv");
+  test::writeText(bad, "time_min,T1_degC\n0,20\n1\n");
+  view.showDatasetInBackground(QString::fromStdString(bad), datasetOf(dataset_kind::kThermalLog, bad));
+  QTRY_VERIFY(!view.isReading());
+  ASSERT_EQ(shown.count(), 2);
+  EXPECT_FALSE(shown.back().front().toBool());
+  EXPECT_TRUE(view.errorText().startsWith(QStringLiteral("Cannot show bad.csv: ")))
+      << view.errorText().toStdString();
+  EXPECT_EQ(view.model()->rowCount(), 0);
 }
 
 }  // namespace

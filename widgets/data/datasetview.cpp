@@ -23,8 +23,12 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <optional>
+#include <utility>
 
 #include "core/project/dataset_content.h"
+#include "core/project/project.h"
+#include "widgets/common/backgroundrun.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/common/palette.h"
 #include "widgets/common/tablecopy.h"
@@ -62,6 +66,13 @@ struct DatasetView::Chart {
   QValueAxis* y = nullptr;
 };
 
+struct DatasetView::Reading {
+  BackgroundRun<std::shared_ptr<const DatasetContent>> run;
+  QString file;  ///< of the read going on
+  /// A request made while a read was going on: done after it.
+  std::optional<std::pair<QString, DatasetRef>> next;
+};
+
 DatasetView::DatasetView(QWidget* parent)
     : QWidget(parent),
       model_(new DatasetTableModel(this)),
@@ -73,7 +84,8 @@ DatasetView::DatasetView(QWidget* parent)
       plotAxis_(new QComboBox(this)),
       splitter_(new QSplitter(Qt::Vertical, this)),
       table_(new QTableView(splitter_)),
-      chart_(std::make_unique<Chart>()) {
+      chart_(std::make_unique<Chart>()),
+      reading_(std::make_unique<Reading>()) {
   setObjectName(QStringLiteral("datasetView"));
   proxy_->setSourceModel(model_);
   proxy_->setSortRole(DatasetTableModel::SortRole);
@@ -161,6 +173,11 @@ DatasetView::DatasetView(QWidget* parent)
   controls->addWidget(againstLabel);
   controls->addWidget(plotAxis_);
 
+  connect(&reading_->run, &BackgroundRunBase::finished, this, [this] { readingEnded(true, {}); });
+  connect(&reading_->run, &BackgroundRunBase::cancelled, this, [this] { readingEnded(true, {}); });
+  connect(&reading_->run, &BackgroundRunBase::failed, this,
+          [this](const QString& message) { readingEnded(false, message); });
+
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(summary_);
   layout->addWidget(error_);
@@ -168,7 +185,40 @@ DatasetView::DatasetView(QWidget* parent)
   layout->addWidget(splitter_, 1);
 }
 
-DatasetView::~DatasetView() = default;
+DatasetView::~DatasetView() {
+  reading_->run.waitForWorker();
+}
+
+bool DatasetView::isReading() const {
+  return reading_->run.isRunning() || reading_->next.has_value();
+}
+
+void DatasetView::showDatasetInBackground(const QString& file, const DatasetRef& dataset) {
+  if (reading_->run.isRunning()) {
+    reading_->next = std::make_pair(file, dataset);
+    return;
+  }
+  reading_->file = file;
+  summary_->setText(tr("Reading %1…").arg(QFileInfo(file).fileName()));
+  summary_->show();
+  const std::string path = QFile::encodeName(file).toStdString();
+  reading_->run.start([path, dataset](RunObserver&) {
+    return std::make_shared<const DatasetContent>(readDatasetContentFile(path, dataset));
+  });
+}
+
+void DatasetView::readingEnded(bool ok, const QString& message) {
+  if (auto next = std::exchange(reading_->next, std::nullopt)) {
+    showDatasetInBackground(next->first, next->second);  // the last request wins
+    return;
+  }
+  if (ok) {
+    if (auto content = reading_->run.takeResult()) setContent(*content);
+  } else {
+    showError(reading_->file, message);
+  }
+  emit datasetShown(ok);
+}
 
 bool DatasetView::showDataset(const QString& file, const DatasetRef& dataset) {
   try {

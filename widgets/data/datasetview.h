@@ -37,6 +37,12 @@ class DatasetView : public QWidget {
   /// Reads `file` as `dataset` says (its kind, dialect and mapping) and shows it; an error line when
   /// it cannot be read. Returns false on an error.
   bool showDataset(const QString& file, const DatasetRef& dataset);
+  /// The same, read off the GUI thread (BackgroundRun, widgets/common/backgroundrun.h): the summary line
+  /// says "Reading <file>…" until the content (or the error line) is shown and datasetShown() is
+  /// emitted. A call while a read is going on is done after it (the last one wins).
+  void showDatasetInBackground(const QString& file, const DatasetRef& dataset);
+  /// True while a background read is going on.
+  bool isReading() const;
   /// Shows content already read.
   void setContent(std::shared_ptr<const DatasetContent> content);
   /// Shows the one-line error "Cannot show <file>: <message>" instead of the table.
@@ -61,9 +67,14 @@ class DatasetView : public QWidget {
   /// The points of the plotted series (x, y), in file order.
   std::vector<QPointF> plottedPoints() const;
 
+ signals:
+  /// A background read ended: the content is shown (true) or the error line (false).
+  void datasetShown(bool ok);
+
  private:
   void updatePlot();
   void updateSummary();
+  void readingEnded(bool ok, const QString& message);
 
   DatasetTableModel* model_;
   QSortFilterProxyModel* proxy_;
@@ -77,6 +88,8 @@ class DatasetView : public QWidget {
   QWidget* chartView_;
   struct Chart;
   std::unique_ptr<Chart> chart_;
+  struct Reading;
+  std::unique_ptr<Reading> reading_;
 };
 
 }  // namespace metrofit
