@@ -285,7 +285,7 @@ void DatasetView::setContent(std::shared_ptr<const DatasetContent> content) {
 }
 
 QString DatasetView::errorText() const {
-  return error_->isVisibleTo(this) || !error_->text().isEmpty() ? error_->text() : QString();
+  return error_->text();
 }
 
 QString DatasetView::summaryText() const {
