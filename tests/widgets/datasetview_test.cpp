@@ -495,5 +495,52 @@ TEST_F(DatasetViewTest, BackgroundReadShowsTheLastRequestAndErrors) {
   EXPECT_EQ(view.model()->rowCount(), 0);
 }
 
+// The demo's point set, circular test and SPC feature series (resources/demo/data): their columns
+// with the units of their role names, and a plot of a chosen column.
+TEST_F(DatasetViewTest, DemoPointSetCircularTestAndFeatureSeriesShowTheirColumnsWithUnits) {
+  const auto demo = [](const char* name) {
+    return (test::sourceDir() / "resources/demo/data" / name).string();
+  };
+  DatasetView view;
+  const std::string points = demo("probe_points_demo.csv");
+  ASSERT_TRUE(view.showDataset(QString::fromStdString(points), datasetOf(dataset_kind::kProbePoints, points)))
+      << view.errorText().toStdString();
+  ASSERT_EQ(view.model()->rowCount(), 35);
+  EXPECT_EQ(header(view, 0), QStringLiteral("id"));
+  EXPECT_EQ(header(view, 2), QStringLiteral("qx [mm]"));
+  EXPECT_EQ(header(view, 5), QStringLiteral("nx"));
+  EXPECT_EQ(header(view, 8), QStringLiteral("px [mm]"));
+  EXPECT_EQ(cell(view, 0, 0), QStringLiteral("P001"));
+  EXPECT_EQ(cell(view, 0, 8), QStringLiteral("20.083356"));
+  view.filterEdit()->setText(QStringLiteral("P00"));
+  EXPECT_EQ(view.proxy()->rowCount(), 9);  // P001 .. P009
+  view.filterEdit()->clear();
+
+  const std::string circle = demo("circular_demo.csv");
+  ASSERT_TRUE(
+      view.showDataset(QString::fromStdString(circle), datasetOf(dataset_kind::kCircularTest, circle)));
+  ASSERT_EQ(view.model()->rowCount(), 720);
+  EXPECT_EQ(header(view, 2), QStringLiteral("x_meas_mm [mm]"));
+  view.setPlot(3, 2);  // y_meas against x_meas: the measured circle
+  const std::vector<QPointF> xy = view.plottedPoints();
+  ASSERT_EQ(xy.size(), 720u);
+  EXPECT_DOUBLE_EQ(xy[0].x(), 50.00448141938281);
+  EXPECT_DOUBLE_EQ(xy[0].y(), 0.005194769616926916);
+  saveShot(view, "datasetview-circular-demo.png");
+
+  const std::string bores = demo("bores_demo.csv");
+  ASSERT_TRUE(
+      view.showDataset(QString::fromStdString(bores), datasetOf(dataset_kind::kFeatureSeries, bores)));
+  ASSERT_EQ(view.model()->rowCount(), 25);
+  EXPECT_EQ(header(view, 1), QStringLiteral("diameter_mm [mm]"));
+  EXPECT_EQ(view.plotColumnBox()->currentData().toInt(), 0);  // part: the first numeric column
+  view.setPlot(1);
+  ASSERT_EQ(view.plottedPoints().size(), 25u);
+  EXPECT_DOUBLE_EQ(view.plottedPoints()[0].y(), 99.998061388);
+  view.table()->horizontalHeader()->setSortIndicator(1, Qt::AscendingOrder);
+  EXPECT_LE(view.proxy()->index(0, 1).data(DatasetTableModel::SortRole).toDouble(),
+            view.proxy()->index(1, 1).data(DatasetTableModel::SortRole).toDouble());
+}
+
 }  // namespace
 }  // namespace metrofit

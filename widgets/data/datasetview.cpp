@@ -268,16 +268,15 @@ void DatasetView::setContent(std::shared_ptr<const DatasetContent> content) {
     const QString header = model_->headerData(c, Qt::Horizontal).toString();
     plotColumn_->addItem(header, c);
     if (model_->isFeatureTable() && model_->columnName(c) == tr("Deviation")) deviation = c;
-    if (c == model_->timeColumn()) {
-      plotAxis_->addItem(header, c);
-    } else if (first < 0) {
-      first = c;
-    }
+    // Any numeric column of a log can be the x axis (y_meas against x_meas draws a circular test).
+    if (!model_->isFeatureTable()) plotAxis_->addItem(header, c);
+    if (c != model_->timeColumn() && first < 0) first = c;
   }
-  // A report plots its deviations, a log its first column that is not the time, against the time.
+  // A report plots its deviations against the row, a log its first column that is not the time
+  // against the time (the row when it has none).
   const int shown = deviation >= 0 ? deviation : first;
   plotColumn_->setCurrentIndex(std::max(0, plotColumn_->findData(shown)));
-  plotAxis_->setCurrentIndex(plotAxis_->count() > 1 ? 1 : 0);
+  plotAxis_->setCurrentIndex(std::max(0, plotAxis_->findData(model_->timeColumn())));
 
   table_->horizontalHeader()->resizeSections(QHeaderView::ResizeToContents);
   updateSummary();

@@ -5,9 +5,9 @@
 //     a click on a header sorts (numbers as numbers), the filter line keeps the rows with a cell
 //     that contains its text (any column, case-insensitive), Ctrl+C copies the selection
 //     tab-separated with the header (widgets/common/tablecopy.h);
-//   * the plot (Qt Charts, in the .cpp only): the chosen numeric column against the row number or
-//     the time column, all rows in file order (not the filtered / sorted view), cells that are no
-//     number left out;
+//   * the plot (Qt Charts, in the .cpp only): the chosen numeric column against the row number, the
+//     time column (the default when there is one) or another numeric column, all rows in file order (not the
+//     filtered / sorted view), cells that are no number left out;
 //   * a file that cannot be read: one line naming the file and what is wrong, instead of the table.
 // Testable without a main window: app/gui opens it in a window of its own (datasetactions.h).
 #include <QString>
