@@ -4,12 +4,15 @@
 #include <QCoreApplication>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFont>
 #include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
+#include <QVBoxLayout>
 #include <exception>
 
 #include "core/project/project.h"
+#include "widgets/data/datasetview.h"
 #include "widgets/document/projectdocument.h"
 
 namespace metrofit {
@@ -20,9 +23,70 @@ struct DatasetActionsText {
   Q_DECLARE_TR_FUNCTIONS(metrofit::DatasetActions)
 };
 
+/// The window of one dataset's data: reads it again when the document changes the dataset, closes
+/// when the dataset is removed.
+class DatasetWindow : public QWidget {
+ public:
+  DatasetWindow(ProjectDocument* document, const QString& id, QWidget* parent)
+      : QWidget(parent, Qt::Window), document_(document), id_(id), view_(new DatasetView(this)) {
+    setObjectName(QStringLiteral("datasetWindow"));
+    setAttribute(Qt::WA_DeleteOnClose);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(view_);
+    resize(1000, 640);
+    connect(document_, &ProjectDocument::changed, this, [this] {
+      const DatasetRef* d = document_->project().dataset(id_.toStdString());
+      if (!d) {
+        close();
+      } else if (!(*d == shown_)) {
+        reload();
+      }
+    });
+  }
+  const QString& id() const { return id_; }
+  DatasetView* view() const { return view_; }
+  void reload() {
+    const DatasetRef* d = document_->project().dataset(id_.toStdString());
+    if (!d) return;
+    shown_ = *d;
+    setWindowTitle(DatasetActionsText::tr("%1 — data").arg(id_));
+    view_->showDatasetInBackground(document_->datasetPath(*d), *d);
+  }
+
+ private:
+  ProjectDocument* document_;
+  QString id_;
+  DatasetView* view_;
+  DatasetRef shown_;
+};
+
 }  // namespace
 
+QWidget* showDatasetData(ProjectDocument* document, const QString& id, QWidget* parent) {
+  if (!document || !document->project().dataset(id.toStdString())) return nullptr;
+  QWidget* owner = parent ? parent->window() : nullptr;
+  DatasetWindow* window = nullptr;
+  if (owner)
+    for (QWidget* child :
+         owner->findChildren<QWidget*>(QStringLiteral("datasetWindow"), Qt::FindDirectChildrenOnly))
+      if (auto* w = dynamic_cast<DatasetWindow*>(child); w && w->id() == id) window = w;
+  if (!window) window = new DatasetWindow(document, id, owner);
+  window->reload();
+  window->show();
+  window->raise();
+  window->activateWindow();
+  return window;
+}
+
 void addDatasetActions(QMenu* menu, ProjectDocument* document, const QString& id, QWidget* parent) {
+  QAction* show = menu->addAction(DatasetActionsText::tr("&Show data"), parent,
+                                  [document, id, parent] { showDatasetData(document, id, parent); });
+  show->setObjectName(QStringLiteral("showDatasetData"));
+  QFont bold = show->font();
+  bold.setBold(true);  // what a double click does
+  show->setFont(bold);
+  menu->addSeparator();
   QAction* rename = menu->addAction(DatasetActionsText::tr("&Rename dataset…"), parent,
                                     [document, id, parent] { renameDatasetAsking(document, id, parent); });
   rename->setObjectName(QStringLiteral("renameDataset"));

@@ -4,6 +4,7 @@
 // moved file), then changes the project through the document's undo stack (ProjectDocument::
 // removeDataset / renameDataset / relinkDataset); a refused change (a duplicate id, a file that cannot
 // be read as the dataset's kind) is a message box with core's one-line error and changes nothing.
+// "Show data" opens the dataset's table (showDatasetData).
 #include <QString>
 
 class QMenu;
@@ -12,8 +13,16 @@ class QWidget;
 namespace metrofit {
 class ProjectDocument;
 
-/// Adds "Rename…", "Re-link…" and "Remove" for the dataset `id` to `menu`.
+/// Adds "Show data", "Rename…", "Re-link…" and "Remove" for the dataset `id` to `menu`.
 void addDatasetActions(QMenu* menu, ProjectDocument* document, const QString& id, QWidget* parent);
+
+/// "Show data": the dataset's table and plot (widgets/data/datasetview.h) in a window of its own,
+/// non-modal and beside the main window (the pages are a stack with no room for a second view, and a
+/// dock would narrow the pages at 1280x800), one per dataset: asked again, the open window is read
+/// again and raised. The file is read off the GUI thread (a log of 100 000 rows takes a second). It
+/// follows the document: a re-linked or re-mapped dataset is read again, a
+/// removed one closes the window. Returns the window.
+QWidget* showDatasetData(ProjectDocument* document, const QString& id, QWidget* parent);
 
 /// Asks for confirmation (naming the study settings that name the dataset), then removes it.
 bool removeDatasetAsking(ProjectDocument* document, const QString& id, QWidget* parent);

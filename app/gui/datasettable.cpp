@@ -32,6 +32,10 @@ DatasetTable::DatasetTable(QWidget* parent) : QTableWidget(parent) {
 }
 
 void DatasetTable::enableEditing(ProjectDocument* document) {
+  connect(this, &QTableWidget::cellDoubleClicked, this, [this, document](int row) {
+    const QString id = datasetId(row);
+    if (!id.isEmpty()) showDatasetData(document, id, this);
+  });
   setContextMenuPolicy(Qt::CustomContextMenu);
   connect(this, &QWidget::customContextMenuRequested, this, [this, document](const QPoint& pos) {
     const QString id = datasetId(indexAt(pos).row());

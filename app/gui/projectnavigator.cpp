@@ -66,7 +66,13 @@ ProjectNavigator::ProjectNavigator(ProjectDocument* document, QWidget* parent)
                        current->data(0, DatasetRole).toString());
   });
   connect(document_, &ProjectDocument::changed, this, &ProjectNavigator::refresh);
-  // A dataset item's context menu: rename, re-link, remove (through the document's undo stack).
+  // A double click on a dataset shows its data (app/gui/datasetactions.h).
+  connect(this, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
+    const QString id = item ? item->data(0, DatasetRole).toString() : QString();
+    if (!id.isEmpty()) showDatasetData(document_, id, this);
+  });
+  // A dataset item's context menu: show data, rename, re-link, remove (through the document's undo
+  // stack).
   setContextMenuPolicy(Qt::CustomContextMenu);
   connect(this, &QWidget::customContextMenuRequested, this, [this](const QPoint& pos) {
     const QTreeWidgetItem* item = itemAt(pos);

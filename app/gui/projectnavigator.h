@@ -1,7 +1,8 @@
 #pragma once
 // The project navigator: the project as root, its studies below it and each study's datasets as
-// children. Selecting an item asks for its page (and dataset); a dataset item's context menu renames,
-// re-links and removes the dataset (app/gui/datasetactions.h).
+// children. Selecting an item asks for its page (and dataset); a double click on a dataset item shows
+// its data, its context menu shows the data, renames, re-links and removes the dataset
+// (app/gui/datasetactions.h).
 #include <QTreeWidget>
 #include <vector>
 

@@ -590,8 +590,8 @@ TEST_F(ImportDialogTest, ContextMenuRenamesAndRemovesAfterAsking) {
   QStringList names;
   for (QAction* a : menu.actions())
     if (!a->isSeparator()) names << a->objectName();
-  EXPECT_EQ(names, (QStringList{QStringLiteral("renameDataset"), QStringLiteral("relinkDataset"),
-                                QStringLiteral("removeDataset")}));
+  EXPECT_EQ(names, (QStringList{QStringLiteral("showDatasetData"), QStringLiteral("renameDataset"),
+                                QStringLiteral("relinkDataset"), QStringLiteral("removeDataset")}));
 
   // Rename: the new id typed into the question; the study follows.
   onNextModal<QInputDialog>(&parent, [](QInputDialog* d) {
