@@ -40,6 +40,7 @@
 #include "core/thermal/thermal_log.h"
 #include "widgets/common/backgroundrun.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/chartnavigation.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/thermal/thermalcharts.h"
 #include "widgets/thermal/thermalmodelcharts.h"
@@ -103,6 +104,7 @@ QChartView* newChartView(QWidget* parent, int minHeight) {
   view->setRenderHint(QPainter::Antialiasing);
   view->setMinimumHeight(minHeight);
   enableChartExport(view, QStringLiteral("thermal-models"));
+  enableChartNavigation(view);
   return view;
 }
 
