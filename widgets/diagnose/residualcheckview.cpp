@@ -393,6 +393,7 @@ ResidualCheckView::ResidualCheckView(QWidget* parent)
   tl->addWidget(tests_, 1);
 
   auto* split = new QSplitter(Qt::Horizontal, this);
+  split->setObjectName(QStringLiteral("residualCheckSplitter"));
   split->addWidget(charts_->view);
   split->addWidget(tables);
   split->setStretchFactor(0, 1);

@@ -722,6 +722,7 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   metricsBox->addWidget(d->metrics, 1);
 
   auto* splitter = new QSplitter(Qt::Vertical, this);
+  splitter->setObjectName(QStringLiteral("thermalModelsSplitter"));
   splitter->addWidget(d->comparisonChart);
   splitter->addWidget(d->residualChart);
   splitter->addWidget(bottom);
