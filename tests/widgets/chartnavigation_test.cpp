@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QChart>
 #include <QChartView>
+#include <QDir>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineSeries>
@@ -19,6 +20,7 @@
 #include <memory>
 
 #include "qtapp.h"
+#include "testsupport.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/common/chartnavigation.h"
 #include "widgets/thermal/thermaltrendview.h"
@@ -163,6 +165,9 @@ TEST_F(ChartNavigationTest, TheCursorLabelShowsTheNearestPointInTheUiLanguage) {
   EXPECT_TRUE(label->isVisible());
   EXPECT_EQ(chartCursorText(view_.get()).toStdString(), "spindle\ntime: 12,5 min\ndisplacement: 12,5 µm");
   EXPECT_TRUE(viewport()->rect().contains(label->geometry()));
+  // A picture to look at: the label beside the cursor, the ring on the point.
+  view_->grab().save(QDir(QString::fromStdString(test::outDir().string()))
+                         .filePath(QStringLiteral("chartnavigation-cursor-label.png")));
   // After a zoom, the point nearest to the cursor is still found in the zoomed range.
   wheel(at(40.0, 18.0), 360);
   mouse(QEvent::MouseMove, at(40.0, 18.0), Qt::NoButton, Qt::NoButton);
