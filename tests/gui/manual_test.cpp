@@ -54,6 +54,11 @@ TEST(Manual, TheWindowRendersTheMarkdownAndFollowsItsLinks) {
   EXPECT_TRUE(text.startsWith(QLatin1String("Metrofit documentation"))) << "the heading, not '# ...'";
   EXPECT_FALSE(text.contains(QLatin1String("| ---"))) << "the table is rendered";
   EXPECT_TRUE(text.contains(QLatin1String("file-formats.md")));
+  // A picture to look at: the index as a reader sees it.
+  window.resize(900, 600);
+  window.show();
+  window.grab().save(
+      QDir(QString::fromStdString(test::outDir().string())).filePath(QStringLiteral("manual-window.png")));
   EXPECT_FALSE(window.openPage(QStringLiteral("/nonexistent/README.md")));
 
   // A link to another document opens it in the window; Back returns.
