@@ -21,6 +21,8 @@ PACKAGES=(
   xvfb xauth libgl1-mesa-dri poppler-utils
   # packaging checks
   dpkg-dev file appstream desktop-file-utils man-db
+  # the project file type (update-mime-database) and XML checks of the packaging files
+  shared-mime-info libxml2-utils
 )
 
 missing=()

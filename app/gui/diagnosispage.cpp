@@ -261,6 +261,7 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
   plotLayout->addLayout(plotTop);
   plotLayout->addWidget(plot_, 1);
   auto* charts = new QSplitter(Qt::Horizontal, content_);
+  charts->setObjectName(QStringLiteral("diagnosisChartsSplitter"));
   charts->addWidget(plotBox);
   charts->addWidget(bars_);
   charts->setStretchFactor(0, 5);
@@ -294,6 +295,7 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
 
   content_->addWidget(charts);
   content_->addWidget(table_);
+  content_->setObjectName(QStringLiteral("diagnosisContentSplitter"));
   content_->setStretchFactor(0, 1);  // equal: the wrapped evidence rows are higher than one line
   content_->setStretchFactor(1, 1);
   content_->setChildrenCollapsible(false);

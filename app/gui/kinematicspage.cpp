@@ -233,6 +233,7 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   side->setMinimumWidth(340);
 
   auto* pathTab = new QSplitter(Qt::Horizontal, this);
+  pathTab->setObjectName(QStringLiteral("kinematicsPathSplitter"));
   pathTab->addWidget(path_);
   pathTab->addWidget(polar_);
   pathTab->addWidget(side);

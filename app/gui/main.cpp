@@ -124,6 +124,7 @@ int main(int argc, char* argv[]) {
   }
 
   metrofit::MainWindow window;
+  window.restoreLayout();  // size, docks, splitters and page of the last run
   window.show();
   if (!parser.positionalArguments().isEmpty()) {
     window.openProject(parser.positionalArguments().constFirst());  // offers its autosaved copy

@@ -14,6 +14,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
+#include <QSettings>
 #include <QStackedWidget>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -31,6 +32,7 @@
 #include "app/gui/diagnosispage.h"
 #include "app/gui/filechangedbar.h"
 #include "app/gui/kinematicspage.h"
+#include "app/gui/manual.h"
 #include "app/gui/matchingpage.h"
 #include "app/gui/overviewpage.h"
 #include "app/gui/preferencesdialog.h"
@@ -40,6 +42,7 @@
 #include "app/gui/setuppage.h"
 #include "app/gui/studyactions.h"
 #include "app/gui/thermalpage.h"
+#include "app/gui/windowlayout.h"
 #include "metrofit/version.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
@@ -219,6 +222,10 @@ void MainWindow::createMenus() {
   for (QAction* action : pageActions_) view->addAction(action);
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
+  QAction* manual = help->addAction(tr("&Manual"), QKeySequence(Qt::Key_F1), this, &MainWindow::showManual);
+  manual->setObjectName(QStringLiteral("helpManual"));
+  manual->setStatusTip(tr("Shows the documentation: file formats, results, references"));
+  help->addSeparator();
   help->addAction(demo);
   help->addSeparator();
   help->addAction(tr("&About Metrofit"), this, &MainWindow::about)->setMenuRole(QAction::AboutRole);
@@ -232,6 +239,18 @@ void MainWindow::showPage(Page page) {
   pageActions_[static_cast<std::size_t>(index)]->setChecked(true);
   const QString study = studyForPage(page);
   statusBar()->showMessage(study.isEmpty() ? tr("Project overview") : studyTitle(study), kStatusTimeoutMs);
+}
+
+void MainWindow::restoreLayout() {
+  QSettings settings;
+  const WindowLayout layout = WindowLayout::read(settings);
+  applyWindowLayout(layout, *this, pages_);  // a refused state leaves the defaults: nothing to tell
+  if (layout.page >= 0 && layout.page < kPageCount) showPage(static_cast<Page>(layout.page));
+}
+
+void MainWindow::saveLayout() const {
+  QSettings settings;
+  captureWindowLayout(*this, pages_, pages_->currentIndex()).write(settings);
 }
 
 void MainWindow::updateTitle() {
@@ -484,6 +503,31 @@ void MainWindow::about() {
                    .arg(EIGEN_MINOR_VERSION)));
 }
 
+void MainWindow::showManual() {
+  const QString appDir = QCoreApplication::applicationDirPath();
+  const QString path = findManual(appDir);
+  if (path.isEmpty()) {
+    QStringList searched;
+    for (const QString& candidate : manualCandidates(appDir)) searched << QDir::toNativeSeparators(candidate);
+    showError(
+        tr("Cannot show the manual"),
+        tr("The documentation is not installed; looked for:\n%1").arg(searched.join(QLatin1Char('\n'))));
+    return;
+  }
+  if (manualOpener_) {
+    if (!manualOpener_(path)) showError(tr("Cannot show the manual"), QDir::toNativeSeparators(path));
+    return;
+  }
+  if (manualWindow_ == nullptr) manualWindow_ = new ManualWindow(this);
+  if (!manualWindow_->openPage(path)) {
+    showError(tr("Cannot show the manual"), tr("Cannot read %1").arg(QDir::toNativeSeparators(path)));
+    return;
+  }
+  manualWindow_->show();
+  manualWindow_->raise();
+  manualWindow_->activateWindow();
+}
+
 void MainWindow::importFiles(const QStringList& files) {
   QStringList paths = files;
   if (paths.isEmpty()) {
@@ -562,6 +606,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   // A clean close (saved, unchanged or discarded) leaves no autosaved copy behind.
   autosave_->setIntervalMs(0);
   autosave_->removeWritten();
+  saveLayout();
   event->accept();
 }
 

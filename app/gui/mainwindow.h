@@ -17,6 +17,7 @@ class QUndoGroup;
 namespace metrofit {
 class Autosave;
 class FileChangedBar;
+class ManualWindow;
 class MatchingPage;
 class OverviewPage;
 class ProjectDocument;
@@ -30,6 +31,8 @@ class MainWindow : public QMainWindow {
   /// The answer to "save the unsaved changes?" (close, New, Open).
   enum class UnsavedChoice { Save, Discard, Cancel };
   using UnsavedDecider = std::function<UnsavedChoice()>;
+  /// Shows the manual's first page (app/gui/manual.h); false when it cannot.
+  using ManualOpener = std::function<bool(const QString& path)>;
 
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
@@ -43,6 +46,8 @@ class MainWindow : public QMainWindow {
   Autosave* autosave() const { return autosave_; }
   /// Replaces the unsaved-changes question (default: a message box); tests inject the answer.
   void setUnsavedChangesDecider(UnsavedDecider decider) { unsavedDecider_ = std::move(decider); }
+  /// Replaces the manual window of Help › Manual (F1); tests record the page instead.
+  void setManualOpener(ManualOpener opener) { manualOpener_ = std::move(opener); }
   /// The question asked before unsaved changes are lost: names the project's edits, the setup model's
   /// unsaved edits and results of a run that are not saved yet (ProjectDocument::hasUnsavedResults).
   QString unsavedChangesText() const;
@@ -57,6 +62,12 @@ class MainWindow : public QMainWindow {
   void recoverUntitled();
   /// Shows a page and selects it in the navigator.
   void showPage(Page page);
+  /// Restores the layout kept by saveLayout() (geometry, docks, splitters, last page) from the
+  /// settings; main() calls it before show(). A window that is never restored starts with the default
+  /// layout on the overview (as the tests expect).
+  void restoreLayout();
+  /// Keeps the layout in the settings (WindowLayout); done by an accepted close.
+  void saveLayout() const;
   /// File › Import data…: opens the import dialog for each file (a file dialog first when `files` is
   /// empty) and adds each accepted dataset through the undo stack, then shows the study page that
   /// reads its kind with the dataset selected. Dropped files come here too.
@@ -89,6 +100,8 @@ class MainWindow : public QMainWindow {
   void exportReport();
   void preferences();
   void about();
+  /// Help › Manual (F1): the installed documentation, in a build folder the source tree's.
+  void showManual();
   void reloadFromDisk();
 
   ProjectDocument* document_;
@@ -102,6 +115,8 @@ class MainWindow : public QMainWindow {
   ReportExporter* exporter_;
   Autosave* autosave_;
   UnsavedDecider unsavedDecider_;
+  ManualOpener manualOpener_;
+  ManualWindow* manualWindow_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QAction* exportAction_ = nullptr;
   /// One undo stack per document (the project, the setup model file); Edit › Undo / Redo act on the

@@ -407,6 +407,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
 
   // Before / after, side by side with one camera.
   auto* views = new QSplitter(Qt::Horizontal, content_);
+  views->setObjectName(QStringLiteral("matchingViewsSplitter"));
   beforeView_ = new PointSetView(views);
   afterView_ = new PointSetView(views);
   beforeView_->setObjectName(QStringLiteral("beforeView"));
@@ -446,6 +447,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   machineLayout->addLayout(machineRow);
   machineLayout->addWidget(machineTable_, 1);
   auto* resultsTab = new QSplitter(Qt::Horizontal, tabs_);
+  resultsTab->setObjectName(QStringLiteral("matchingResultsSplitter"));
   resultsTab->addWidget(methodsTable_);
   resultsTab->addWidget(machineBox);
   resultsTab->setStretchFactor(0, 3);
@@ -529,6 +531,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
 
   content_->addWidget(views);
   content_->addWidget(tabs_);
+  content_->setObjectName(QStringLiteral("matchingContentSplitter"));
   content_->setStretchFactor(0, 3);
   content_->setStretchFactor(1, 1);
   content_->setChildrenCollapsible(false);

@@ -96,9 +96,10 @@ QTreeWidgetItem* ProjectNavigator::itemForPage(Page page) const {
 
 void ProjectNavigator::selectPage(Page page) {
   QTreeWidgetItem* item = itemForPage(page);
-  // Keep a dataset child selected when it already belongs to the page.
+  // Keep a dataset child selected when it already belongs to the page. Only a dataset: the studies
+  // are children of the root (the overview's item) too, and the overview must not stay on one.
   QTreeWidgetItem* current = currentItem();
-  if (current && current->parent() == item) return;
+  if (current && current->parent() == item && !current->data(0, DatasetRole).toString().isEmpty()) return;
   const QSignalBlocker blocker(this);
   setCurrentItem(item);
 }

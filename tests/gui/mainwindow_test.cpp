@@ -35,6 +35,7 @@
 #include "app/gui/filechangedbar.h"
 #include "app/gui/kinematicspage.h"
 #include "app/gui/mainwindow.h"
+#include "app/gui/manual.h"
 #include "app/gui/matchingpage.h"
 #include "app/gui/overviewpage.h"
 #include "app/gui/projectnavigator.h"
@@ -46,6 +47,7 @@
 #include "core/setup/model.h"
 #include "core/study/setup_study.h"
 #include "qtapp.h"
+#include "widgets/common/chartnavigation.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/matching/pointsetview.h"
@@ -214,6 +216,74 @@ TEST_F(MainWindowTest, CtrlDigitsSelectPages) {
     EXPECT_EQ(window_.currentPage(), static_cast<Page>(i));
     EXPECT_EQ(window_.navigator()->currentItem(), window_.navigator()->itemForPage(static_cast<Page>(i)));
   }
+}
+
+// F19: going back to a page whose navigator item is the parent of the highlighted one (Ctrl+1 after
+// Ctrl+3: the overview is the root, the studies are its children) and File › New move the highlight.
+TEST_F(MainWindowTest, NavigatorHighlightFollowsCtrlDigitsBackwardsAndFileNew) {
+  ProjectNavigator* nav = window_.navigator();
+  for (int i = kPageCount - 1; i >= 0; --i) {
+    QAction* action =
+        actionWithShortcut(window_, QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_1 + i)));
+    ASSERT_NE(action, nullptr);
+    action->trigger();
+    EXPECT_EQ(window_.currentPage(), static_cast<Page>(i));
+    EXPECT_EQ(nav->currentItem(), nav->itemForPage(static_cast<Page>(i))) << "Ctrl+" << i + 1;
+  }
+  actionWithShortcut(window_, QKeySequence(Qt::CTRL | Qt::Key_3))->trigger();
+  actionWithShortcut(window_, QKeySequence(Qt::CTRL | Qt::Key_1))->trigger();
+  EXPECT_EQ(nav->currentItem(), nav->itemForPage(Page::Overview));
+
+  // A dataset item stays highlighted while its own page is shown again.
+  QTreeWidgetItem* thermal = nav->itemForPage(Page::Thermal);
+  ASSERT_GT(thermal->childCount(), 0);
+  nav->setCurrentItem(thermal->child(0));
+  window_.showPage(Page::Thermal);
+  EXPECT_EQ(nav->currentItem(), thermal->child(0));
+
+  actionWithShortcut(window_, QKeySequence(Qt::CTRL | Qt::Key_6))->trigger();
+  window_.setUnsavedChangesDecider([] { return MainWindow::UnsavedChoice::Discard; });
+  QAction* fileNew = actionWithShortcut(window_, QKeySequence::New);
+  ASSERT_NE(fileNew, nullptr);
+  fileNew->trigger();
+  EXPECT_EQ(window_.currentPage(), Page::Overview);
+  EXPECT_EQ(nav->currentItem(), nav->itemForPage(Page::Overview));
+}
+
+// Every Qt Charts view of the pages zooms, pans and reads values (widgets/common/chartnavigation.h).
+TEST_F(MainWindowTest, EveryChartOfThePagesZoomsAndShowsTheValueUnderTheCursor) {
+  int charts = 0;
+  for (int i = 0; i < kPageCount; ++i) window_.showPage(static_cast<Page>(i));
+  for (QWidget* w : window_.findChildren<QWidget*>()) {
+    if (!w->inherits("QChartView")) continue;
+    ++charts;
+    EXPECT_TRUE(hasChartNavigation(w)) << w->parentWidget()->metaObject()->className();
+  }
+  EXPECT_GE(charts, 8);
+}
+
+// Help › Manual (F1) hands the documentation's first page to the opener (a window by default; here
+// the test records it): from the build folder, the source tree's docs/README.md.
+TEST_F(MainWindowTest, HelpManualIsF1AndOpensTheDocumentation) {
+  QAction* manual = actionWithShortcut(window_, QKeySequence(Qt::Key_F1));
+  ASSERT_NE(manual, nullptr);
+  EXPECT_EQ(manual->objectName(), QStringLiteral("helpManual"));
+  const QList<QAction*> menus = window_.menuBar()->actions();
+  ASSERT_FALSE(menus.isEmpty());
+  EXPECT_EQ(menus.last()->text(), QStringLiteral("&Help"));
+  EXPECT_TRUE(menus.last()->menu()->actions().contains(manual));
+  QString opened;
+  window_.setManualOpener([&opened](const QString& path) {
+    opened = path;
+    return true;
+  });
+  manual->trigger();
+  ASSERT_FALSE(opened.isEmpty());
+  EXPECT_TRUE(QFileInfo(opened).isFile()) << opened.toStdString();
+  EXPECT_EQ(opened, findManual(QCoreApplication::applicationDirPath()));
+  QFile page(opened);
+  ASSERT_TRUE(page.open(QIODevice::ReadOnly));
+  EXPECT_TRUE(page.readLine().startsWith("# Metrofit documentation"));
 }
 
 TEST_F(MainWindowTest, EditingTheNameIsUndoable) {

@@ -13,26 +13,18 @@
 #include <vector>
 
 #include "metrofit/version.h"
+#include "run_command.h"
 #include "testsupport.h"
 
 namespace metrofit {
 namespace {
 
-/// Runs a shell command; returns its standard output (standard error is left alone).
 std::string run(const std::string& command, int* exitCode = nullptr) {
-  std::string out;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  if (exitCode) *exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
+  return test::runCommand(command, exitCode);
 }
 
 std::string quote(const std::filesystem::path& p) {
-  return "'" + p.string() + "'";
+  return test::shellQuote(p);
 }
 
 std::string cliHelp(const std::string& subcommand) {

@@ -1,6 +1,5 @@
 #include "widgets/common/chartexport.h"
 
-#include <QAbstractAxis>
 #include <QAction>
 #include <QChart>
 #include <QChartView>
@@ -21,15 +20,13 @@
 #include <QOpenGLWidget>
 #include <QPainter>
 #include <QPointer>
-#include <QRegularExpression>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QSvgGenerator>
 #include <QToolTip>
-#include <QXYSeries>
-#include <cmath>
-#include <limits>
+
+#include "widgets/common/chartnavigation.h"
 
 namespace metrofit {
 
@@ -45,23 +42,6 @@ constexpr int kStatusTimeoutMs = 5000;
 constexpr int kClickSlopPx = 4;
 constexpr double kTooltipReachPx = 8.0;
 
-/// "name (unit)" of an axis title split into its name and unit (no unit: the whole title).
-std::pair<QString, QString> splitAxisTitle(const QString& title) {
-  static const QRegularExpression withUnit(QStringLiteral("^(.*\\S)\\s*\\(([^()]+)\\)\\s*$"));
-  const QRegularExpressionMatch m = withUnit.match(title);
-  if (m.hasMatch()) return {m.captured(1), m.captured(2)};
-  return {title, QString()};
-}
-
-/// "x-name: value unit" for one coordinate of a point.
-QString coordinateText(const QAbstractAxis* axis, double value, const QString& fallbackName) {
-  const auto [name, unit] = splitAxisTitle(axis ? axis->titleText() : QString());
-  QString text =
-      (name.isEmpty() ? fallbackName : name) + QStringLiteral(": ") + QLocale().toString(value, 'g', 5);
-  if (!unit.isEmpty()) text += QLatin1Char(' ') + unit;
-  return text;
-}
-
 /// Numbers of a chart shown in a view: the user's locale (the report keeps its charts in C), and
 /// legend labels shortened to fit get their full text as a tooltip. Once per chart.
 void localizeChart(QChart* chart) {
@@ -70,41 +50,6 @@ void localizeChart(QChart* chart) {
   chart->setLocale(QLocale());
   chart->setLocalizeNumbers(true);
   chart->legend()->setShowToolTips(true);
-}
-
-/// The tooltip of the data point of `view`'s chart nearest to `pos` (viewport pixels), empty when
-/// no point is within kTooltipReachPx: the series name and both coordinates with their units.
-QString pointTooltip(QChartView* view, const QPoint& pos) {
-  QChart* chart = view->chart();
-  if (chart == nullptr) return {};
-  const QPointF at = chart->mapFromScene(view->mapToScene(pos));
-  if (!chart->plotArea().adjusted(-2, -2, 2, 2).contains(at)) return {};
-  double best = kTooltipReachPx;
-  QXYSeries* bestSeries = nullptr;
-  QPointF bestPoint;
-  for (QAbstractSeries* s : chart->series()) {
-    auto* xy = qobject_cast<QXYSeries*>(s);
-    if (xy == nullptr || !xy->isVisible()) continue;
-    for (const QPointF& p : xy->points()) {
-      const QPointF d = chart->mapToPosition(p, xy) - at;
-      const double dist = std::hypot(d.x(), d.y());
-      if (dist < best) {
-        best = dist;
-        bestSeries = xy;
-        bestPoint = p;
-      }
-    }
-  }
-  if (bestSeries == nullptr) return {};
-  const QList<QAbstractAxis*> axes = bestSeries->attachedAxes();
-  const QAbstractAxis* xAxis = nullptr;
-  const QAbstractAxis* yAxis = nullptr;
-  for (const QAbstractAxis* a : axes) (a->orientation() == Qt::Horizontal ? xAxis : yAxis) = a;
-  QStringList lines;
-  if (!bestSeries->name().isEmpty()) lines << bestSeries->name();
-  lines << coordinateText(xAxis, bestPoint.x(), QStringLiteral("x"))
-        << coordinateText(yAxis, bestPoint.y(), QStringLiteral("y"));
-  return lines.join(QLatin1Char('\n'));
 }
 
 /// Holds what enableChartExport() attached to a chart; a child QObject, so it dies with it.
@@ -124,9 +69,11 @@ class ChartExporter : public QObject {
       if (auto* view = qobject_cast<QChartView*>(chart_); view && watched == view->viewport())
         localizeChart(view->chart());
     } else if (event->type() == QEvent::ToolTip) {
-      if (auto* view = qobject_cast<QChartView*>(chart_); view && watched == view->viewport()) {
+      // A view with navigation shows the point in its cursor label instead.
+      if (auto* view = qobject_cast<QChartView*>(chart_);
+          view && watched == view->viewport() && !hasChartNavigation(view)) {
         auto* help = static_cast<QHelpEvent*>(event);
-        const QString text = pointTooltip(view, help->pos());
+        const QString text = chartNearestPointText(view, help->pos(), kTooltipReachPx);
         if (!text.isEmpty()) {
           QToolTip::showText(help->globalPos(), text, view->viewport());
           return true;
@@ -239,8 +186,7 @@ void enableChartExport(QWidget* chart, const QString& baseName, ChartImageProvid
 }
 
 QString chartPointTooltip(QWidget* chartView, const QPoint& pos) {
-  auto* view = qobject_cast<QChartView*>(chartView);
-  return view ? pointTooltip(view, pos) : QString();
+  return chartNearestPointText(chartView, pos, kTooltipReachPx);
 }
 
 bool hasChartExport(const QWidget* chart) {

@@ -25,6 +25,7 @@
 
 #include "core/common/axis_ticks.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/chartnavigation.h"
 #include "widgets/common/palette.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/diagnose/coretexts.h"
@@ -379,6 +380,7 @@ ResidualCheckView::ResidualCheckView(QWidget* parent)
   charts_->view->setRenderHint(QPainter::Antialiasing);
   charts_->view->setMinimumSize(300, 220);
   enableChartExport(charts_->view, QStringLiteral("diagnosis-residual-check"));
+  enableChartNavigation(charts_->view);
 
   auto* tables = new QWidget(this);
   auto* tl = new QVBoxLayout(tables);
@@ -391,6 +393,7 @@ ResidualCheckView::ResidualCheckView(QWidget* parent)
   tl->addWidget(tests_, 1);
 
   auto* split = new QSplitter(Qt::Horizontal, this);
+  split->setObjectName(QStringLiteral("residualCheckSplitter"));
   split->addWidget(charts_->view);
   split->addWidget(tables);
   split->setStretchFactor(0, 1);

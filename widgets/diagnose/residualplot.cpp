@@ -1,5 +1,6 @@
 #include "widgets/diagnose/residualplot.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/chartnavigation.h"
 #include "widgets/common/palette.h"
 #include "widgets/diagnose/coretexts.h"
 
@@ -318,6 +319,7 @@ ResidualPlotView::ResidualPlotView(QWidget* parent)
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(stack_);
   enableChartExport(this, QStringLiteral("diagnosis-residual"));
+  enableChartNavigation(charts_->view);  // after the export: "Reset zoom" joins its menu
   clear();
 }
 
@@ -443,6 +445,7 @@ ErrorBarsView::ErrorBarsView(QWidget* parent) : QWidget(parent), charts_(new Cha
   charts_->view = new QChartView(this);
   charts_->view->setRenderHint(QPainter::Antialiasing);
   charts_->view->setMinimumSize(300, 200);
+  enableChartNavigation(charts_->view);
   charts_->view->setToolTip(tr(
       "rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model "
       "(grey) and the model with the accepted effects (blue)"));

@@ -1,5 +1,6 @@
 #include "widgets/matching/matchingcurveview.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/chartnavigation.h"
 #include "widgets/common/palette.h"
 
 #include <QChart>
@@ -41,6 +42,7 @@ MatchingCurveView::MatchingCurveView(QWidget* parent) : QWidget(parent), d(std::
   d->chart->setMargins(QMargins(4, 4, 4, 4));
   d->view = new QChartView(d->chart, this);
   enableChartExport(d->view, QStringLiteral("matching-optimisation"));
+  enableChartNavigation(d->view);
   d->view->setRenderHint(QPainter::Antialiasing);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);

@@ -1,6 +1,7 @@
 #include "widgets/setup/setupconvergenceview.h"
 #include "core/setup/methods.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/chartnavigation.h"
 
 #include <QChart>
 #include <QChartView>
@@ -24,6 +25,7 @@ struct SetupConvergenceView::Impl {
 SetupConvergenceView::SetupConvergenceView(QWidget* parent) : QWidget(parent), d(std::make_unique<Impl>()) {
   d->chartView = new QChartView(this);
   enableChartExport(d->chartView, QStringLiteral("setup-convergence"));
+  enableChartNavigation(d->chartView);
   d->chartView->setObjectName(QStringLiteral("setupConvergenceChart"));
   d->chartView->setRenderHint(QPainter::Antialiasing);
   d->chartView->setMinimumSize(360, 240);

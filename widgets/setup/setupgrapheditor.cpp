@@ -159,6 +159,7 @@ SetupGraphEditor::SetupGraphEditor(SetupModelEditor* editor, QWidget* parent)
   leftLayout->addWidget(view_, 1);
   leftLayout->addWidget(problems_);
   auto* splitter = new QSplitter(Qt::Horizontal, this);
+  splitter->setObjectName(QStringLiteral("setupGraphSplitter"));
   splitter->addWidget(left);
   splitter->addWidget(table_);
   splitter->setStretchFactor(0, 3);

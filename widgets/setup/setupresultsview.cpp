@@ -134,6 +134,7 @@ SetupResultsView::SetupResultsView(QWidget* parent)
   scroll->setMinimumWidth(440);
 
   auto* splitter = new QSplitter(Qt::Horizontal, this);
+  splitter->setObjectName(QStringLiteral("setupResultsSplitter"));
   splitter->addWidget(left);
   splitter->addWidget(scroll);
   splitter->setStretchFactor(0, 1);

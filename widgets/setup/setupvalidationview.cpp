@@ -21,6 +21,7 @@
 #include "core/study/setup_validation.h"
 #include "widgets/common/backgroundrun.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/chartnavigation.h"
 #include "widgets/setup/setupcharts.h"
 
 namespace metrofit {
@@ -124,6 +125,7 @@ SetupValidationView::SetupValidationView(QWidget* parent) : QWidget(parent), d(s
   d->summary->setText(introText());
   d->chartView = new QChartView(this);
   enableChartExport(d->chartView, QStringLiteral("setup-validation"));
+  enableChartNavigation(d->chartView);
   d->chartView->setObjectName(QStringLiteral("setupValidationChart"));
   d->chartView->setRenderHint(QPainter::Antialiasing);
   d->chartView->setMinimumSize(360, 240);

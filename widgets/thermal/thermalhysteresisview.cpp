@@ -27,6 +27,7 @@
 #include "core/thermal/thermal_log.h"
 #include "widgets/common/backgroundrun.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/chartnavigation.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/thermal/thermalcharts.h"
 #include "widgets/thermal/thermalmodelcharts.h"
@@ -89,6 +90,7 @@ struct ThermalHysteresisView::Impl {
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumHeight(minHeight);
     enableChartExport(view, QStringLiteral("thermal-hysteresis"));
+    enableChartNavigation(view);
     return view;
   }
 

@@ -40,6 +40,7 @@
 #include "core/thermal/thermal_log.h"
 #include "widgets/common/backgroundrun.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/chartnavigation.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/thermal/thermalcharts.h"
 #include "widgets/thermal/thermalmodelcharts.h"
@@ -103,6 +104,7 @@ QChartView* newChartView(QWidget* parent, int minHeight) {
   view->setRenderHint(QPainter::Antialiasing);
   view->setMinimumHeight(minHeight);
   enableChartExport(view, QStringLiteral("thermal-models"));
+  enableChartNavigation(view);
   return view;
 }
 
@@ -720,6 +722,7 @@ ThermalModelView::ThermalModelView(QWidget* parent) : QWidget(parent), d(std::ma
   metricsBox->addWidget(d->metrics, 1);
 
   auto* splitter = new QSplitter(Qt::Vertical, this);
+  splitter->setObjectName(QStringLiteral("thermalModelsSplitter"));
   splitter->addWidget(d->comparisonChart);
   splitter->addWidget(d->residualChart);
   splitter->addWidget(bottom);

@@ -18,6 +18,7 @@
 
 #include "core/thermal/thermal_log.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/chartnavigation.h"
 #include "widgets/thermal/thermalcharts.h"
 
 namespace metrofit {
@@ -113,6 +114,7 @@ QIcon swatch(const QColor& color, Qt::PenStyle style) {
 ThermalTrendView::ThermalTrendView(QWidget* parent) : QWidget(parent), d(std::make_unique<Impl>()) {
   d->chartView = new QChartView(this);
   enableChartExport(d->chartView, QStringLiteral("thermal-trend"));
+  enableChartNavigation(d->chartView);
   d->chartView->setObjectName(QStringLiteral("thermalTrendChart"));
   d->chartView->setRenderHint(QPainter::Antialiasing);
   d->chartView->setMinimumSize(360, 240);
