@@ -1045,34 +1045,19 @@ QString MatchingPage::storedResultText() const {
   const StoredResult stored =
       storedResult(document_->project(), document_->projectPathForDatasets().toStdString(), study::kMatching,
                    *dataset, storedSettingsJson());
+  if (const std::optional<QString> state = storedStateText(
+          stored,
+          {tr("The stored result (computed %1) is out of date: the matching settings changed since. Not "
+              "matched with these settings yet: press Run (Ctrl+R)."),
+           tr("The stored result (computed %1) is out of date: the points file changed since. Press Run "
+              "(Ctrl+R) to match the points as they are now."),
+           tr("The stored result (computed %1) cannot be checked: the points file cannot be read.")}))
+    return *state;
   const QString when = storedTimeText(stored.computed);
-  switch (stored.state) {
-    case StoredResultState::None:
-      return {};
-    case StoredResultState::SettingsChanged:
-      return tr("The stored result (computed %1) is out of date: the matching settings changed since. Not "
-                "matched with these settings yet: press Run (Ctrl+R).")
-          .arg(when);
-    case StoredResultState::DataChanged:
-      return tr("The stored result (computed %1) is out of date: the points file changed since. Press Run "
-                "(Ctrl+R) to match the points as they are now.")
-          .arg(when);
-    case StoredResultState::DataMissing:
-      return tr("The stored result (computed %1) cannot be checked: the points file cannot be read.")
-          .arg(when);
-    case StoredResultState::Current:
-      break;
-  }
   const nlohmann::json& e = stored.entry;
-  const auto number = [&e](const char* key) {
-    const nlohmann::json v = e.value(key, nlohmann::json());
-    return v.is_number() ? v.get<double>() : 0.0;
-  };
+  const auto number = [&e](const char* key) { return storedFigure(e, key, 0.0); };
   const nlohmann::json oot = e.value("out_of_tolerance", nlohmann::json::object());
-  const auto count = [&oot](const char* key) {
-    const nlohmann::json v = oot.is_object() ? oot.value(key, nlohmann::json()) : nlohmann::json();
-    return v.is_number_integer() ? v.get<long long>() : 0LL;
-  };
+  const auto count = [&oot](const char* key) { return storedCount(oot, key); };
   const QLocale locale;
   return tr("From the saved project, computed %1 with these settings on these points: %2: %3 of %4 points "
             "out of ±%5 mm before, %6 after; RMSE %7 mm, max |d| %8 mm. Press Run (Ctrl+R) to see the "

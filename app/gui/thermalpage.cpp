@@ -392,23 +392,14 @@ QString ThermalPage::storedResultText() const {
   const StoredResult stored =
       storedResult(document_->project(), document_->projectPathForDatasets().toStdString(), study::kThermal,
                    *dataset, thermalSettingsJson(models_->settings()));
+  if (const std::optional<QString> state = storedStateText(
+          stored, {tr("The stored result (computed %1) is out of date: the model settings changed since. Not "
+                      "trained with these settings yet: Train (Ctrl+R)."),
+                   tr("The stored result (computed %1) is out of date: the data file changed since. Train "
+                      "(Ctrl+R) to fit the models on the data as it is now."),
+                   tr("The stored result (computed %1) cannot be checked: the data file cannot be read.")}))
+    return *state;
   const QString when = storedTimeText(stored.computed);
-  switch (stored.state) {
-    case StoredResultState::None:
-      return {};
-    case StoredResultState::SettingsChanged:
-      return tr("The stored result (computed %1) is out of date: the model settings changed since. Not "
-                "trained with these settings yet: Train (Ctrl+R).")
-          .arg(when);
-    case StoredResultState::DataChanged:
-      return tr("The stored result (computed %1) is out of date: the data file changed since. Train "
-                "(Ctrl+R) to fit the models on the data as it is now.")
-          .arg(when);
-    case StoredResultState::DataMissing:
-      return tr("The stored result (computed %1) cannot be checked: the data file cannot be read.").arg(when);
-    case StoredResultState::Current:
-      break;
-  }
   const nlohmann::json& e = stored.entry;
   const int ti = log_.indexOf(models_->settings().target);
   const QString unit =
