@@ -583,19 +583,27 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   layout->addWidget(notes);
 
   connect(combo_, &QComboBox::currentIndexChanged, this, &MatchingPage::showPoints);
+  // Every control is bound to studies.matching through the shared binding
+  // (app/gui/studysettingbinding.h: one undo step per edit, typing merged; undo / redo / load put the
+  // control back); the page's own reactions stay here.
+  const auto field = [this](const char* key) { return matchingSettingField(document_->project(), key); };
+  bindStudySetting(
+      document_, methodCombo_, QString::fromLatin1(study::kMatching), QStringLiteral("/method"),
+      [field] {
+        const auto s = field("method");
+        return s ? QString::fromLatin1(matching::toString(s->method)) : QString();
+      },
+      tr("Change the matching method"),
+      [](const QVariant& data) {
+        return QString::fromLatin1(matching::toString(static_cast<MatchMethod>(data.toInt())));
+      });
   connect(methodCombo_, &QComboBox::currentIndexChanged, this, [this] {
-    const auto method = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
     if (result_) {
-      result_->primary = method;
+      result_->primary = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
       applyResult();
     }
-    writeStudyValue(QStringLiteral("/method"), matching::toString(method), tr("Change the matching method"),
-                    false);
+    showStoredStatus();
   });
-  // The tolerance, the scale and the frame's decimals are bound to studies.matching through the shared
-  // binding (app/gui/studysettingbinding.h: one undo step per edit, typing merged; undo / redo / load
-  // put the control back); the page's own reactions stay here.
-  const auto field = [this](const char* key) { return matchingSettingField(document_->project(), key); };
   bindStudySetting(
       document_, toleranceSpin_, QString::fromLatin1(study::kMatching), QStringLiteral("/tolerance_mm"),
       [field]() -> std::optional<double> {
@@ -625,19 +633,37 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
     settingsChanged();
     if (!writingStudy_) showStoredStatus();
   });
+  bindStudySetting(
+      document_, QList<QCheckBox*>(locks_.begin(), locks_.end()), QString::fromLatin1(study::kMatching),
+      QStringLiteral("/locks"),
+      [this] {
+        const std::string list = currentOptions().locks.toString();
+        return list.empty() ? nlohmann::json() : nlohmann::json(list);
+      },
+      [field]() -> std::optional<QList<bool>> {
+        const auto s = field("locks");  // nullopt when refused: the boxes stay, the status names it
+        if (!s) return std::nullopt;
+        const matching::DofLocks locks = matching::DofLocks::parse(s->locks, "locks");  // checked
+        return QList<bool>(locks.locked.begin(), locks.locked.end());
+      },
+      tr("Change the matching locks"));
   for (QCheckBox* box : locks_) {
     connect(box, &QCheckBox::toggled, this, [this] {
       settingsChanged();
-      const std::string list = currentOptions().locks.toString();
-      writeStudyValue(QStringLiteral("/locks"), list.empty() ? nlohmann::json() : nlohmann::json(list),
-                      tr("Change the matching locks"), false);
+      showStoredStatus();
     });
   }
-  connect(frameControl_, &QComboBox::currentIndexChanged, this, [this] {
-    fillFrame();
-    writeStudyValue(QStringLiteral("/frame"), machine::toString(frameFormat()),
-                    tr("Change the control of the frame"), false);
-  });
+  bindStudySetting(
+      document_, frameControl_, QString::fromLatin1(study::kMatching), QStringLiteral("/frame"),
+      [field] {
+        const auto s = field("frame");
+        return s ? QString::fromLatin1(machine::toString(s->frame)) : QString();
+      },
+      tr("Change the control of the frame"),
+      [](const QVariant& data) {
+        return QString::fromLatin1(machine::toString(static_cast<machine::FrameFormat>(data.toInt())));
+      });
+  connect(frameControl_, &QComboBox::currentIndexChanged, this, [this] { fillFrame(); });
   connect(frameDecimals_, &QSpinBox::valueChanged, this, [this] { fillFrame(); });
   connect(saveFrame_, &QPushButton::clicked, this, &MatchingPage::saveFrameDialog);
   connect(runButton_, &QPushButton::clicked, this, &MatchingPage::startRun);
