@@ -149,12 +149,6 @@ QString summaryText(double baseline, double after, std::optional<double> heldout
   return text;
 }
 
-/// A number of a stored result (null: not finite, as core writes it).
-double storedNumber(const nlohmann::json& j, const char* key) {
-  const auto it = j.find(key);
-  return it != j.end() && it->is_number() ? it->get<double>() : std::nan("");
-}
-
 std::optional<double> storedOptional(const nlohmann::json& j, const char* key) {
   const auto it = j.find(key);
   if (it == j.end()) return std::nullopt;
@@ -967,23 +961,15 @@ QString DiagnosisPage::storedResultText() const {
   const StoredResult stored =
       storedResult(document_->project(), document_->projectPathForDatasets().toStdString(), study::kDiagnosis,
                    *dataset, settings);
+  if (const std::optional<QString> state = storedStateText(
+          stored,
+          {tr("The stored result (computed %1) is out of date: the settings changed since. Not run with "
+              "these settings yet: press Run (Ctrl+R)."),
+           tr("The stored result (computed %1) is out of date: the data file changed since. Run (Ctrl+R) "
+              "on the data as it is now."),
+           tr("The stored result (computed %1) cannot be checked: the data file cannot be read.")}))
+    return *state;
   const QString when = storedTimeText(stored.computed);
-  switch (stored.state) {
-    case StoredResultState::None:
-      return {};
-    case StoredResultState::SettingsChanged:
-      return tr("The stored result (computed %1) is out of date: the settings changed since. Not run with "
-                "these settings yet: press Run (Ctrl+R).")
-          .arg(when);
-    case StoredResultState::DataChanged:
-      return tr("The stored result (computed %1) is out of date: the data file changed since. Run (Ctrl+R) "
-                "on the data as it is now.")
-          .arg(when);
-    case StoredResultState::DataMissing:
-      return tr("The stored result (computed %1) cannot be checked: the data file cannot be read.").arg(when);
-    case StoredResultState::Current:
-      break;
-  }
   const nlohmann::json& e = stored.entry;
   const nlohmann::json baseline = e.value("baseline", nlohmann::json::object());
   const nlohmann::json after = e.value("final", nlohmann::json::object());
@@ -998,9 +984,9 @@ QString DiagnosisPage::storedResultText() const {
   const std::string units =
       e.value("units", nlohmann::json()).is_string() ? e["units"].get<std::string>() : "";
   const QString figures = summaryText(
-      storedNumber(baseline, "rmse"), storedNumber(after, "rmse"), storedOptional(baseline, "heldout_rmse"),
-      storedOptional(after, "heldout_rmse"), storedNumber(baseline, "max_abs"),
-      storedNumber(after, "max_abs"), accepted, tried, displayUnits(units));
+      storedFigure(baseline, "rmse"), storedFigure(after, "rmse"), storedOptional(baseline, "heldout_rmse"),
+      storedOptional(after, "heldout_rmse"), storedFigure(baseline, "max_abs"),
+      storedFigure(after, "max_abs"), accepted, tried, displayUnits(units));
   return tr("From the saved project (computed %1 with these settings on this data): %2 Run (Ctrl+R) for "
             "the plots, the candidate table and the residual check.")
       .arg(when, figures);

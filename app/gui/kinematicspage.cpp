@@ -815,29 +815,17 @@ QString KinematicsPage::storedResultText() const {
   } catch (const std::exception&) {
     return {};
   }
+  if (const std::optional<QString> state = storedStateText(
+          stored,
+          {tr("The stored result (computed %1) is out of date: the kinematics settings changed since. "
+              "Compensate (Ctrl+K) to compute it with these settings."),
+           tr("The stored result (computed %1) is out of date: the circular test's file changed since. "
+              "Compensate (Ctrl+K) to compute it on the test as it is now."),
+           tr("The stored result (computed %1) cannot be checked: the circular test's file cannot be "
+              "read.")}))
+    return *state;
   const QString when = storedTimeText(stored.computed);
-  switch (stored.state) {
-    case StoredResultState::None:
-      return {};
-    case StoredResultState::SettingsChanged:
-      return tr("The stored result (computed %1) is out of date: the kinematics settings changed since. "
-                "Compensate (Ctrl+K) to compute it with these settings.")
-          .arg(when);
-    case StoredResultState::DataChanged:
-      return tr("The stored result (computed %1) is out of date: the circular test's file changed since. "
-                "Compensate (Ctrl+K) to compute it on the test as it is now.")
-          .arg(when);
-    case StoredResultState::DataMissing:
-      return tr("The stored result (computed %1) cannot be checked: the circular test's file cannot be read.")
-          .arg(when);
-    case StoredResultState::Current:
-      break;
-  }
   const nlohmann::json& e = stored.entry;
-  const auto number = [](const nlohmann::json& block, const char* key) {
-    const nlohmann::json v = block.is_object() ? block.value(key, nlohmann::json()) : nlohmann::json();
-    return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
-  };
   const nlohmann::json identified = e.value("identified", nlohmann::json());
   const nlohmann::json comp = e.value("compensation", nlohmann::json());
   QString text =
@@ -845,14 +833,15 @@ QString KinematicsPage::storedResultText() const {
          "µm, X axis angle a %4°, Y axis angle b %5°, squareness b − a %6°, RMS residual %7 µm. "
          "Compensation: max radial deviation %8 µm measured, %9 µm expected after (RMS %10 µm), largest "
          "correction %11 µm.")
-          .arg(when, um(number(identified, "origin_x_mm")), um(number(identified, "origin_y_mm")),
-               deg(number(identified, "x_axis_angle_deg")), deg(number(identified, "y_axis_angle_deg")),
-               deg(number(identified, "squareness_deg")), um(number(identified, "rmse_mm")),
-               um(number(comp, "max_before_mm")), um(number(comp, "max_expected_mm")))
-          .arg(um(number(comp, "rms_expected_mm")), um(number(comp, "largest_correction_mm")));
+          .arg(when, um(storedFigure(identified, "origin_x_mm")), um(storedFigure(identified, "origin_y_mm")),
+               deg(storedFigure(identified, "x_axis_angle_deg")),
+               deg(storedFigure(identified, "y_axis_angle_deg")),
+               deg(storedFigure(identified, "squareness_deg")), um(storedFigure(identified, "rmse_mm")),
+               um(storedFigure(comp, "max_before_mm")), um(storedFigure(comp, "max_expected_mm")))
+          .arg(um(storedFigure(comp, "rms_expected_mm")), um(storedFigure(comp, "largest_correction_mm")));
   if (comp.is_object() && comp.contains("max_simulated_mm"))
-    text +=
-        QLatin1Char(' ') + tr("Simulated machine after: %1 µm.").arg(um(number(comp, "max_simulated_mm")));
+    text += QLatin1Char(' ') +
+            tr("Simulated machine after: %1 µm.").arg(um(storedFigure(comp, "max_simulated_mm")));
   return text + QLatin1Char(' ') + tr("Compensate (Ctrl+K) to see the compensated path.");
 }
 

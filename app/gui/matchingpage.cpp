@@ -589,19 +589,27 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   layout->addWidget(notes);
 
   connect(combo_, &QComboBox::currentIndexChanged, this, &MatchingPage::showPoints);
+  // Every control is bound to studies.matching through the shared binding
+  // (app/gui/studysettingbinding.h: one undo step per edit, typing merged; undo / redo / load put the
+  // control back); the page's own reactions stay here.
+  const auto field = [this](const char* key) { return matchingSettingField(document_->project(), key); };
+  bindStudySetting(
+      document_, methodCombo_, QString::fromLatin1(study::kMatching), QStringLiteral("/method"),
+      [field] {
+        const auto s = field("method");
+        return s ? QString::fromLatin1(matching::toString(s->method)) : QString();
+      },
+      tr("Change the matching method"),
+      [](const QVariant& data) {
+        return QString::fromLatin1(matching::toString(static_cast<MatchMethod>(data.toInt())));
+      });
   connect(methodCombo_, &QComboBox::currentIndexChanged, this, [this] {
-    const auto method = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
     if (result_) {
-      result_->primary = method;
+      result_->primary = static_cast<MatchMethod>(methodCombo_->currentData().toInt());
       applyResult();
     }
-    writeStudyValue(QStringLiteral("/method"), matching::toString(method), tr("Change the matching method"),
-                    false);
+    showStoredStatus();
   });
-  // The tolerance, the scale and the frame's decimals are bound to studies.matching through the shared
-  // binding (app/gui/studysettingbinding.h: one undo step per edit, typing merged; undo / redo / load
-  // put the control back); the page's own reactions stay here.
-  const auto field = [this](const char* key) { return matchingSettingField(document_->project(), key); };
   bindStudySetting(
       document_, toleranceSpin_, QString::fromLatin1(study::kMatching), QStringLiteral("/tolerance_mm"),
       [field]() -> std::optional<double> {
@@ -631,19 +639,37 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
     settingsChanged();
     if (!writingStudy_) showStoredStatus();
   });
+  bindStudySetting(
+      document_, QList<QCheckBox*>(locks_.begin(), locks_.end()), QString::fromLatin1(study::kMatching),
+      QStringLiteral("/locks"),
+      [this] {
+        const std::string list = currentOptions().locks.toString();
+        return list.empty() ? nlohmann::json() : nlohmann::json(list);
+      },
+      [field]() -> std::optional<QList<bool>> {
+        const auto s = field("locks");  // nullopt when refused: the boxes stay, the status names it
+        if (!s) return std::nullopt;
+        const matching::DofLocks locks = matching::DofLocks::parse(s->locks, "locks");  // checked
+        return QList<bool>(locks.locked.begin(), locks.locked.end());
+      },
+      tr("Change the matching locks"));
   for (QCheckBox* box : locks_) {
     connect(box, &QCheckBox::toggled, this, [this] {
       settingsChanged();
-      const std::string list = currentOptions().locks.toString();
-      writeStudyValue(QStringLiteral("/locks"), list.empty() ? nlohmann::json() : nlohmann::json(list),
-                      tr("Change the matching locks"), false);
+      showStoredStatus();
     });
   }
-  connect(frameControl_, &QComboBox::currentIndexChanged, this, [this] {
-    fillFrame();
-    writeStudyValue(QStringLiteral("/frame"), machine::toString(frameFormat()),
-                    tr("Change the control of the frame"), false);
-  });
+  bindStudySetting(
+      document_, frameControl_, QString::fromLatin1(study::kMatching), QStringLiteral("/frame"),
+      [field] {
+        const auto s = field("frame");
+        return s ? QString::fromLatin1(machine::toString(s->frame)) : QString();
+      },
+      tr("Change the control of the frame"),
+      [](const QVariant& data) {
+        return QString::fromLatin1(machine::toString(static_cast<machine::FrameFormat>(data.toInt())));
+      });
+  connect(frameControl_, &QComboBox::currentIndexChanged, this, [this] { fillFrame(); });
   connect(frameDecimals_, &QSpinBox::valueChanged, this, [this] { fillFrame(); });
   connect(saveFrame_, &QPushButton::clicked, this, &MatchingPage::saveFrameDialog);
   connect(runButton_, &QPushButton::clicked, this, &MatchingPage::startRun);
@@ -1051,34 +1077,19 @@ QString MatchingPage::storedResultText() const {
   const StoredResult stored =
       storedResult(document_->project(), document_->projectPathForDatasets().toStdString(), study::kMatching,
                    *dataset, storedSettingsJson());
+  if (const std::optional<QString> state = storedStateText(
+          stored,
+          {tr("The stored result (computed %1) is out of date: the matching settings changed since. Not "
+              "matched with these settings yet: press Run (Ctrl+R)."),
+           tr("The stored result (computed %1) is out of date: the points file changed since. Press Run "
+              "(Ctrl+R) to match the points as they are now."),
+           tr("The stored result (computed %1) cannot be checked: the points file cannot be read.")}))
+    return *state;
   const QString when = storedTimeText(stored.computed);
-  switch (stored.state) {
-    case StoredResultState::None:
-      return {};
-    case StoredResultState::SettingsChanged:
-      return tr("The stored result (computed %1) is out of date: the matching settings changed since. Not "
-                "matched with these settings yet: press Run (Ctrl+R).")
-          .arg(when);
-    case StoredResultState::DataChanged:
-      return tr("The stored result (computed %1) is out of date: the points file changed since. Press Run "
-                "(Ctrl+R) to match the points as they are now.")
-          .arg(when);
-    case StoredResultState::DataMissing:
-      return tr("The stored result (computed %1) cannot be checked: the points file cannot be read.")
-          .arg(when);
-    case StoredResultState::Current:
-      break;
-  }
   const nlohmann::json& e = stored.entry;
-  const auto number = [&e](const char* key) {
-    const nlohmann::json v = e.value(key, nlohmann::json());
-    return v.is_number() ? v.get<double>() : 0.0;
-  };
+  const auto number = [&e](const char* key) { return storedFigure(e, key, 0.0); };
   const nlohmann::json oot = e.value("out_of_tolerance", nlohmann::json::object());
-  const auto count = [&oot](const char* key) {
-    const nlohmann::json v = oot.is_object() ? oot.value(key, nlohmann::json()) : nlohmann::json();
-    return v.is_number_integer() ? v.get<long long>() : 0LL;
-  };
+  const auto count = [&oot](const char* key) { return storedCount(oot, key); };
   const QLocale locale;
   return tr("From the saved project, computed %1 with these settings on these points: %2: %3 of %4 points "
             "out of ±%5 mm before, %6 after; RMSE %7 mm, max |d| %8 mm. Press Run (Ctrl+R) to see the "

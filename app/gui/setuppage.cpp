@@ -953,29 +953,17 @@ QString SetupPage::storedResultText() const {
   const StoredResult stored =
       storedResult(document_->project(), document_->projectPathForDatasets().toStdString(), study::kSetup,
                    *report, storedSettingsJson());
+  if (const std::optional<QString> state = storedStateText(
+          stored,
+          {tr("The stored result (computed %1) is out of date: the run settings, the model or the applied "
+              "effects changed since. Not run with these yet: press Run (Ctrl+R)."),
+           tr("The stored result (computed %1) is out of date: the CMM report changed since. Press Run "
+              "(Ctrl+R) to correct the setup for the report as it is now."),
+           tr("The stored result (computed %1) cannot be checked: the CMM report cannot be read.")}))
+    return *state;
   const QString when = storedTimeText(stored.computed);
-  switch (stored.state) {
-    case StoredResultState::None:
-      return {};
-    case StoredResultState::SettingsChanged:
-      return tr("The stored result (computed %1) is out of date: the run settings, the model or the applied "
-                "effects changed since. Not run with these yet: press Run (Ctrl+R).")
-          .arg(when);
-    case StoredResultState::DataChanged:
-      return tr("The stored result (computed %1) is out of date: the CMM report changed since. Press Run "
-                "(Ctrl+R) to correct the setup for the report as it is now.")
-          .arg(when);
-    case StoredResultState::DataMissing:
-      return tr("The stored result (computed %1) cannot be checked: the CMM report cannot be read.")
-          .arg(when);
-    case StoredResultState::Current:
-      break;
-  }
   const nlohmann::json& e = stored.entry;
-  const auto number = [&e](const char* key) {
-    const nlohmann::json v = e.value(key, nlohmann::json());
-    return v.is_number() ? v.get<double>() : 0.0;
-  };
+  const auto number = [&e](const char* key) { return storedFigure(e, key, 0.0); };
   const QLocale locale;
   const auto mm = [&locale](double v) { return locale.toString(v, 'f', 4); };
   QStringList corrections;
@@ -989,10 +977,7 @@ QString SetupPage::storedResultText() const {
     }
   }
   const nlohmann::json parts = e.value("parts", nlohmann::json::object());
-  const auto count = [&parts](const char* key) {
-    const nlohmann::json v = parts.is_object() ? parts.value(key, nlohmann::json()) : nlohmann::json();
-    return v.is_number_integer() ? v.get<long long>() : 0LL;
-  };
+  const auto count = [&parts](const char* key) { return storedCount(parts, key); };
   const QString method = QString::fromStdString(e.value("method", std::string()));
   return tr("From the saved project (computed %1 with these settings, this model and this report): %2: f1 %3 "
             "→ "

@@ -5,6 +5,8 @@
 #include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QSpinBox>
+#include <QUndoStack>
+#include <QVariant>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -150,6 +152,89 @@ void bindStudyDatasetSetting(ProjectDocument* document, QComboBox* combo, const 
     combo->setCurrentIndex(index);
     *syncing = false;
   });
+}
+
+void bindStudySetting(ProjectDocument* document, QComboBox* combo, const QString& study, const QString& key,
+                      std::function<QString()> effective, const QString& undoText,
+                      std::function<QString(const QVariant&)> text) {
+  auto syncing = std::make_shared<bool>(false);
+  QObject::connect(combo, &QComboBox::currentIndexChanged, combo,
+                   [document, combo, study, key, effective, undoText, text, syncing] {
+                     if (*syncing || combo->currentIndex() < 0) return;
+                     const QString value = text(combo->currentData());
+                     if (value == effective()) return;
+                     document->endEditSequence();
+                     document->setStudyValue(study, key, value.toStdString(), undoText);
+                     document->endEditSequence();
+                   });
+  QObject::connect(document, &ProjectDocument::changed, combo, [combo, effective, text, syncing] {
+    const QString value = effective();
+    int index = -1;
+    for (int i = 0; i < combo->count() && index < 0; ++i)
+      if (text(combo->itemData(i)) == value) index = i;
+    if (index < 0 || index == combo->currentIndex()) return;
+    *syncing = true;
+    combo->setCurrentIndex(index);  // the page's own reactions to the change still run
+    *syncing = false;
+  });
+}
+
+void bindStudySetting(ProjectDocument* document, const QList<QCheckBox*>& boxes, const QString& study,
+                      const QString& key, std::function<nlohmann::json()> value,
+                      std::function<std::optional<QList<bool>>()> effective, const QString& undoText) {
+  auto syncing = std::make_shared<bool>(false);
+  const auto states = [boxes] {
+    QList<bool> on;
+    for (const QCheckBox* box : boxes) on << box->isChecked();
+    return on;
+  };
+  for (QCheckBox* box : boxes) {
+    QObject::connect(box, &QCheckBox::toggled, box,
+                     [document, study, key, value, effective, states, undoText, syncing] {
+                       if (*syncing) return;
+                       if (const std::optional<QList<bool>> v = effective(); v && *v == states()) return;
+                       document->endEditSequence();
+                       document->setStudyValue(study, key, value(), undoText);
+                       document->endEditSequence();
+                     });
+  }
+  if (boxes.isEmpty()) return;
+  QObject::connect(document, &ProjectDocument::changed, boxes.front(), [boxes, effective, states, syncing] {
+    const std::optional<QList<bool>> value = effective();
+    if (!value || value->size() != boxes.size() || *value == states()) return;
+    *syncing = true;
+    for (qsizetype k = 0; k < boxes.size(); ++k) boxes[k]->setChecked((*value)[k]);  // reactions still run
+    *syncing = false;
+  });
+}
+
+std::function<void()> bindStudySettings(ProjectDocument* document, QObject* view, const QString& study,
+                                        std::function<std::optional<std::vector<StudyEdit>>()> edits,
+                                        const QStringList& typingKeys, std::function<void()> show,
+                                        const QString& macroText) {
+  auto writing = std::make_shared<bool>(false);
+  if (show) {
+    QObject::connect(document, &ProjectDocument::changed, view, [show, writing] {
+      if (!*writing) show();
+    });
+  }
+  return [document, study, edits, typingKeys, macroText, writing] {
+    if (*writing) return;
+    const std::optional<std::vector<StudyEdit>> all = edits();
+    if (!all) return;
+    std::vector<StudyEdit> changed;
+    for (const StudyEdit& e : *all)
+      if (document->studyValue(study, e.key) != e.value) changed.push_back(e);
+    if (changed.empty()) return;
+    const bool typing = changed.size() == 1 && typingKeys.contains(changed.front().key);
+    *writing = true;
+    if (!typing) document->endEditSequence();
+    if (changed.size() > 1) document->undoStack()->beginMacro(macroText);
+    for (const StudyEdit& e : changed) document->setStudyValue(study, e.key, e.value, e.undoText);
+    if (changed.size() > 1) document->undoStack()->endMacro();
+    if (!typing) document->endEditSequence();
+    *writing = false;
+  };
 }
 
 }  // namespace metrofit

@@ -7,16 +7,23 @@
 // when it differs from that, so showing or reloading a project is never an edit. A value the study
 // refuses (the page names the field and runs nothing) is never shown as a default: the widget stays
 // as it is, and an edit of it writes its value (which corrects the study).
+#include <QList>
 #include <QString>
+#include <QStringList>
 #include <QtGlobal>
 #include <functional>
 #include <optional>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLineEdit;
+class QObject;
 class QSpinBox;
+class QVariant;
 
 namespace metrofit {
 
@@ -53,5 +60,42 @@ void bindStudySetting(ProjectDocument* document, QCheckBox* box, const QString& 
 void bindStudySetting(ProjectDocument* document, QLineEdit* edit, const QString& study, const QString& key,
                       std::function<std::optional<QString>()> effective, bool emptyRemoves,
                       const QString& undoText);
+
+/// A combo box whose items carry data that the study spells as a text through `text` (an enum as an
+/// int, written as its name). `effective` returns the study's text ("" when refused: the combo stays
+/// as it is and any choice writes its value).
+void bindStudySetting(ProjectDocument* document, QComboBox* combo, const QString& study, const QString& key,
+                      std::function<QString()> effective, const QString& undoText,
+                      std::function<QString(const QVariant&)> text);
+
+/// Check boxes that together give one value (matching's locks "rz,z"): `value` is the JSON the boxes
+/// give (null removes the key), `effective` the states the study's value gives the boxes, in their
+/// order (nullopt for a refused value: the boxes stay, and a click writes their value). A click is one
+/// undo step.
+void bindStudySetting(ProjectDocument* document, const QList<QCheckBox*>& boxes, const QString& study,
+                      const QString& key, std::function<nlohmann::json()> value,
+                      std::function<std::optional<QList<bool>>()> effective, const QString& undoText);
+
+/// One value of a study written together with others (bindStudySettings).
+struct StudyEdit {
+  QString key;
+  nlohmann::json value;  ///< null removes the key
+  QString undoText;
+};
+
+/// A view whose own controls edit several keys of a study at once (ThermalModelView: target, inputs,
+/// train fraction, seed) and that puts the study's values back itself. Returns the write, to call when
+/// the view says it was edited: `edits` gives the view's values key by key and any extra edit the
+/// values need in the same undo step (declaring the study's dataset); nullopt writes nothing. The
+/// edits whose value differs from the study's are written as one undo step (a macro named `macroText`
+/// when more than one); a single edit of one of `typingKeys` merges with the previous one (typing in
+/// a spin box) until endEditSequence. On every document change that the write did not make (undo,
+/// redo, load, another page) `show` puts the study's values into the view; an empty `show`: the page
+/// does that in its own reaction to the change (ThermalPage::refresh, which also re-reads the log when
+/// the datasets change).
+std::function<void()> bindStudySettings(ProjectDocument* document, QObject* view, const QString& study,
+                                        std::function<std::optional<std::vector<StudyEdit>>()> edits,
+                                        const QStringList& typingKeys, std::function<void()> show,
+                                        const QString& macroText);
 
 }  // namespace metrofit

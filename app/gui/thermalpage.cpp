@@ -12,7 +12,6 @@
 #include <QSignalBlocker>
 #include <QStackedWidget>
 #include <QTabWidget>
-#include <QUndoStack>
 #include <QVBoxLayout>
 #include <cmath>
 #include <exception>
@@ -21,6 +20,7 @@
 #include <utility>
 
 #include "app/gui/notesedit.h"
+#include "app/gui/studysettingbinding.h"
 #include "core/diagnose/applied_setup_matching.h"
 #include "core/diagnose/thermal_applied.h"
 #include "core/project/stored_results.h"
@@ -113,18 +113,35 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   connect(combo_, &QComboBox::currentIndexChanged, this, &ThermalPage::showLog);
   connect(document_, &ProjectDocument::changed, this, &ThermalPage::refresh);
   connect(tabs_, &QTabWidget::currentChanged, this, &ThermalPage::onTabChanged);
-  connect(models_, &ThermalModelView::settingsEdited, this, [this] {
-    if (logId_.isEmpty()) return;
-    settings_[logId_] = models_->settings();
-    writeStudySettings(settings_[logId_]);
-  });
+  // The view's controls (target, inputs, train fraction, seed) are bound to studies.thermal through the
+  // shared binding (app/gui/studysettingbinding.h), with the dataset they belong to in the same undo
+  // step; refresh() puts them back on undo / redo / load (syncSettingsFromStudy), as it also re-reads
+  // the log when the datasets change.
+  const QString thermal = QString::fromLatin1(study::kThermal);
+  writeSettings_ = bindStudySettings(
+      document_, models_, thermal,
+      [this, thermal]() -> std::optional<std::vector<StudyEdit>> {
+        if (logId_.isEmpty()) return std::nullopt;
+        const nlohmann::json dataset = document_->studyValue(thermal, QStringLiteral("/dataset"));
+        // The study has one dataset: settings of other logs stay in this session.
+        if (!dataset.is_null() && dataset != nlohmann::json(logId_.toStdString())) return std::nullopt;
+        const ThermalModelSettings& s = settings_[logId_];
+        std::vector<StudyEdit> edits;
+        if (dataset.is_null())
+          edits.push_back({QStringLiteral("/dataset"), logId_.toStdString(), tr("Choose the thermal log")});
+        edits.push_back({QStringLiteral("/target"), s.target, tr("Change the thermal target")});
+        edits.push_back({QStringLiteral("/inputs"), s.inputs, tr("Change the thermal inputs")});
+        edits.push_back(
+            {QStringLiteral("/train_fraction"), s.trainFraction, tr("Change the train fraction")});
+        edits.push_back({QStringLiteral("/seed"), s.seed, tr("Change the training seed")});
+        return edits;
+      },
+      {QStringLiteral("/train_fraction"), QStringLiteral("/seed")}, {},
+      tr("Change the thermal model settings"));
+  connect(models_, &ThermalModelView::settingsEdited, this, &ThermalPage::writeStudySettings);
   // Training the models on a log declares the thermal study on it (when the project has none yet), so
   // that the report of a project built from imported files has its thermal section (undoable).
-  connect(models_->trainButton(), &QPushButton::clicked, this, [this] {
-    if (logId_.isEmpty()) return;
-    settings_[logId_] = models_->settings();
-    writeStudySettings(settings_[logId_]);
-  });
+  connect(models_->trainButton(), &QPushButton::clicked, this, &ThermalPage::writeStudySettings);
   connect(models_, &ThermalModelView::trainingFinished, this, [this](bool completed) {
     if (completed) storeResult();
   });
@@ -302,35 +319,11 @@ void ThermalPage::updateInfo() {
                                .arg(elsewhere));
 }
 
-void ThermalPage::writeStudySettings(const ThermalModelSettings& s) {
-  const QString study = QString::fromLatin1(study::kThermal);
-  const nlohmann::json dataset = document_->studyValue(study, QStringLiteral("/dataset"));
-  // The study has one dataset: settings of other logs stay in this session.
-  if (!dataset.is_null() && dataset != nlohmann::json(logId_.toStdString())) return;
-  struct Edit {
-    QString key;
-    nlohmann::json value;
-    QString text;
-  };
-  std::vector<Edit> edits;
-  const auto add = [&](const QString& key, const nlohmann::json& value, const QString& text) {
-    if (document_->studyValue(study, key) != value) edits.push_back({key, value, text});
-  };
-  if (dataset.is_null()) add(QStringLiteral("/dataset"), logId_.toStdString(), tr("Choose the thermal log"));
-  add(QStringLiteral("/target"), s.target, tr("Change the thermal target"));
-  add(QStringLiteral("/inputs"), s.inputs, tr("Change the thermal inputs"));
-  add(QStringLiteral("/train_fraction"), s.trainFraction, tr("Change the train fraction"));
-  add(QStringLiteral("/seed"), s.seed, tr("Change the training seed"));
-  if (edits.empty()) return;
-  // Typing in the fraction or seed spin box merges into one undo step; other edits are one step each.
-  const bool typing = edits.size() == 1 && (edits.front().key == QLatin1String("/train_fraction") ||
-                                            edits.front().key == QLatin1String("/seed"));
-  writingStudy_ = true;
-  if (!typing) document_->endEditSequence();
-  if (edits.size() > 1) document_->undoStack()->beginMacro(tr("Change the thermal model settings"));
-  for (const Edit& e : edits) document_->setStudyValue(study, e.key, e.value, e.text);
-  if (edits.size() > 1) document_->undoStack()->endMacro();
-  if (!typing) document_->endEditSequence();
+void ThermalPage::writeStudySettings() {
+  if (logId_.isEmpty()) return;
+  settings_[logId_] = models_->settings();
+  writingStudy_ = true;  // refresh() leaves the controls and the modules as they are
+  writeSettings_();
   writingStudy_ = false;
 }
 
@@ -392,23 +385,14 @@ QString ThermalPage::storedResultText() const {
   const StoredResult stored =
       storedResult(document_->project(), document_->projectPathForDatasets().toStdString(), study::kThermal,
                    *dataset, thermalSettingsJson(models_->settings()));
+  if (const std::optional<QString> state = storedStateText(
+          stored, {tr("The stored result (computed %1) is out of date: the model settings changed since. Not "
+                      "trained with these settings yet: Train (Ctrl+R)."),
+                   tr("The stored result (computed %1) is out of date: the data file changed since. Train "
+                      "(Ctrl+R) to fit the models on the data as it is now."),
+                   tr("The stored result (computed %1) cannot be checked: the data file cannot be read.")}))
+    return *state;
   const QString when = storedTimeText(stored.computed);
-  switch (stored.state) {
-    case StoredResultState::None:
-      return {};
-    case StoredResultState::SettingsChanged:
-      return tr("The stored result (computed %1) is out of date: the model settings changed since. Not "
-                "trained with these settings yet: Train (Ctrl+R).")
-          .arg(when);
-    case StoredResultState::DataChanged:
-      return tr("The stored result (computed %1) is out of date: the data file changed since. Train "
-                "(Ctrl+R) to fit the models on the data as it is now.")
-          .arg(when);
-    case StoredResultState::DataMissing:
-      return tr("The stored result (computed %1) cannot be checked: the data file cannot be read.").arg(when);
-    case StoredResultState::Current:
-      break;
-  }
   const nlohmann::json& e = stored.entry;
   const int ti = log_.indexOf(models_->settings().target);
   const QString unit =

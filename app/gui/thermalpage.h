@@ -19,6 +19,7 @@
 // other logs say where they apply; Apply and its undo change the settings (Train again to update).
 #include <QHash>
 #include <QWidget>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -102,8 +103,10 @@ class ThermalPage : public QWidget {
   void updateHysteresis();
   /// Starts the modular case in a worker (or runs it now when `now`); no effect without the datasets.
   void updateModular(bool now);
-  /// Writes the model settings of the study's dataset to studies.thermal (undoable).
-  void writeStudySettings(const ThermalModelSettings& s);
+  /// Writes the view's model settings to studies.thermal through the shared binding (writeSettings_):
+  /// the settings of the study's dataset (and the dataset, when the study names none yet) in one undo
+  /// step; nothing for another log.
+  void writeStudySettings();
   /// Puts studies.thermal's settings into the controls after undo / redo (signals blocked).
   void syncSettingsFromStudy();
   /// The log's description plus, when effects applied on the diagnosis page belong to another log,
@@ -128,8 +131,9 @@ class ThermalPage : public QWidget {
   QString infoBase_;       ///< the log's description (info_ without the applied-effects line)
   QString hysteresisKey_;  ///< what the hysteresis view shows (dataset, target, inputs)
   QHash<QString, ThermalModelSettings> settings_;  ///< per dataset id, this session
-  bool settingsInvalid_ = false;  ///< the study's settings were refused (message_ names the field)
-  bool writingStudy_ = false;     ///< the page's own edit of the document
+  bool settingsInvalid_ = false;         ///< the study's settings were refused (message_ names the field)
+  bool writingStudy_ = false;            ///< the page's own edit of the document
+  std::function<void()> writeSettings_;  ///< bindStudySettings' write (app/gui/studysettingbinding.h)
 
   struct ModularRun {
     std::shared_ptr<ModularComparison> result;

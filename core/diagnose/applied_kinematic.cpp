@@ -10,7 +10,6 @@
 #include "core/diagnose/kinematic_diagnosis.h"
 #include "core/io/csv.h"
 #include "core/kinematics/path_variables.h"
-#include "core/project/project.h"
 
 namespace metrofit {
 namespace {
@@ -203,24 +202,6 @@ std::vector<Eigen::Vector2d> compensatePathWithEffects(const CartesianMachine2& 
     refs[k] = r;
   }
   return refs;
-}
-
-AxisEffects projectAxisEffects(const Project& project, const std::string& datasetId) {
-  const auto diag = project.studies.find(study::kDiagnosis);
-  if (diag == project.studies.end() || !diag->is_object()) return {};
-  const auto block = diag->find("kinematic");
-  if (block == diag->end() || !block->is_object()) return {};
-  const auto applied = block->find("applied");
-  if (applied == block->end() || applied->is_null()) return {};
-  if (block->value("dataset", nlohmann::json()) != nlohmann::json(datasetId)) return {};
-  double feed = diagnose::KinematicDiagnosisOptions{}.feedMmPerMin;  // the loop's default feed
-  if (const auto f = block->find("feed_mm_per_min"); f != block->end()) {
-    if (!f->is_number())
-      throw ValidationError(ErrorContext{{}, 0, 0, "studies.diagnosis.kinematic.feed_mm_per_min"},
-                            "must be a positive feed (mm/min)");
-    feed = f->get<double>();
-  }
-  return axisEffectsFromApplied(*applied, feed);
 }
 
 }  // namespace metrofit

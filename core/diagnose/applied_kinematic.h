@@ -44,7 +44,6 @@
 #include "core/kinematics/measured_path.h"
 
 namespace metrofit {
-class Project;
 
 /// Where the diagnosis page stores the applied kinematic effects (the field errors name).
 inline constexpr const char* kKinematicAppliedField = "studies.diagnosis.kinematic.applied";
@@ -101,12 +100,8 @@ std::vector<Eigen::Vector2d> compensatePathWithEffects(const CartesianMachine2& 
                                                        const AxisEffects& effects,
                                                        const std::vector<Eigen::Vector2d>& nominal);
 
-/// The applied kinematic effects of a project that apply to the circular test `datasetId`: the list
-/// studies.diagnosis.kinematic.applied when the test is the one the kinematic diagnosis ran on
-/// (studies.diagnosis.kinematic.dataset: the effects and their sizes were estimated on it, so the
-/// kinematics study includes them when it identifies and compensates that test), read with that
-/// diagnosis's feed (feed_mm_per_min, default 1000). No effects otherwise. ValidationError naming the
-/// field when an entry is bad (see above).
-AxisEffects projectAxisEffects(const Project& project, const std::string& datasetId);
+// The effects a project applies to a circular test (studies.diagnosis.kinematic: applied, dataset,
+// feed_mm_per_min) are read in core/study (kinematic_study.h projectAxisEffects) through the settings'
+// one owner, DiagnosisDomainSettings; this module only reads the list it is given.
 
 }  // namespace metrofit

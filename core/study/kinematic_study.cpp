@@ -229,6 +229,20 @@ KinematicStudyData loadKinematicStudy(const Project& project,
   return d;
 }
 
+AxisEffects projectAxisEffects(const Project& project, const std::string& datasetId,
+                               const std::string& source) {
+  const auto diag = project.studies.find(study::kDiagnosis);
+  if (diag == project.studies.end() || !diag->is_object()) return {};
+  const std::string domain = "kinematic";
+  const auto block = diag->find(domain);
+  // A block that applies nothing (the page's controls set before a run) matters only to the diagnosis,
+  // which reads and refuses it itself: a missing dataset there must not stop the kinematics study.
+  if (block == diag->end() || !DiagnosisDomainSettings::appliesEffects(*block)) return {};
+  const DiagnosisDomainSettings settings = DiagnosisDomainSettings::fromJson(*block, domain, source);
+  if (settings.dataset != datasetId) return {};
+  return axisEffectsFromApplied(settings.applied, settings.feedMmPerMin);
+}
+
 CompensationPreview compensateStudy(const KinematicStudyData& study) {
   return previewCompensation(study.measured, study.analysis, study.identification.errors,
                              study.settings.simulatedMachine, &study.applied);

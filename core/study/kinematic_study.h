@@ -133,6 +133,17 @@ std::optional<RadialStudyTest> radialStudyTest(const Project& project,
                                                const std::function<std::string(const DatasetRef&)>& resolve,
                                                const std::string& datasetId = {});
 
+/// The applied kinematic effects of a project that apply to the circular test `datasetId`: the list
+/// studies.diagnosis.kinematic.applied when the test is the one the kinematic diagnosis ran on
+/// (studies.diagnosis.kinematic.dataset: the effects and their sizes were estimated on it, so the
+/// kinematics study includes them when it identifies and compensates that test), read with that
+/// diagnosis's feed (feed_mm_per_min). The block is read through its one owner,
+/// DiagnosisDomainSettings (study_settings.h): its keys, defaults and checks. No effects when nothing
+/// is applied or another test is named. ValidationError naming `source` and the field when the block
+/// or an entry is bad (core/diagnose/applied_kinematic.h).
+AxisEffects projectAxisEffects(const Project& project, const std::string& datasetId,
+                               const std::string& source = {});
+
 /// Compensation preview of the study's circular test (the simulated machine when the settings give one).
 CompensationPreview compensateStudy(const KinematicStudyData& study);
 

@@ -627,6 +627,12 @@ DiagnosisDomainSettings DiagnosisDomainSettings::fromJson(const json& block, con
   return s;
 }
 
+bool DiagnosisDomainSettings::appliesEffects(const json& block) {
+  if (!block.is_object()) return false;
+  const auto a = block.find("applied");
+  return a != block.end() && !a->is_null();
+}
+
 json DiagnosisDomainSettings::toJson() const {
   const DiagnosisDomainSettings d;
   json j = json::object();

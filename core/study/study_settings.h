@@ -196,6 +196,9 @@ struct DiagnosisDomainSettings {
                                           const std::string& source = {});
   /// The domain's keys that differ from the defaults (the required ones when set).
   nlohmann::json toJson() const;
+  /// Whether a domain's block applies effects ("applied" present and not null), without reading the
+  /// rest: a study below the diagnosis reads the block (fromJson) only then.
+  static bool appliesEffects(const nlohmann::json& block);
   /// False with the field ("studies.diagnosis.matching.tolerance_mm") and what is wrong.
   bool isValid(std::string* field, std::string* why) const;
   bool operator==(const DiagnosisDomainSettings&) const = default;

@@ -31,8 +31,10 @@
 #define METROFIT_TEST_QT_XVFB
 #include "app/gui/machinedialog.h"
 #include "app/gui/matchingpage.h"
+#include "core/machine/controller_frame.h"
 #include "core/project/project.h"
 #include "core/sim/probe_sim.h"
+#include "core/study/study_settings.h"
 #include "qtapp.h"
 #include "testsupport.h"
 #include "widgets/document/projectdocument.h"
@@ -198,6 +200,35 @@ TEST_F(MatchingPageTest, SettingsEditsAreWrittenToTheStudyAndUndone) {
   EXPECT_EQ(document_.undoStack()->count(), 4) << "restoring the controls pushes nothing";
   document_.undoStack()->redo();
   EXPECT_DOUBLE_EQ(tolerance->value(), 0.025);
+}
+
+// The controller frame's control is bound like every other control (app/gui/studysettingbinding.h): a
+// choice writes studies.matching.frame (the name the study reads), undo puts the combo back, and choosing
+// the default again keeps the key (the study says which control it is for).
+TEST_F(MatchingPageTest, FrameControlIsWrittenToTheStudyAndUndone) {
+  auto* frame = page_->findChild<QComboBox*>(QStringLiteral("frameControl"));
+  ASSERT_TRUE(frame);
+  const nlohmann::json before = document_.project().studies["matching"];
+  const QString shown = frame->currentText();
+  int other = -1;
+  for (int i = 0; i < frame->count() && other < 0; ++i)
+    if (frame->itemText(i).contains(QLatin1String("Fanuc"), Qt::CaseInsensitive)) other = i;
+  ASSERT_GE(other, 0);
+  ASSERT_NE(other, frame->currentIndex());
+  frame->setCurrentIndex(other);
+  const auto format = static_cast<machine::FrameFormat>(frame->currentData().toInt());
+  EXPECT_EQ(document_.project().studies["matching"]["frame"], machine::toString(format));
+  EXPECT_EQ(document_.undoStack()->count(), 1);
+  const MatchingSettings read = MatchingSettings::fromJson(document_.project().studies["matching"]);
+  EXPECT_EQ(read.frame, format);
+
+  document_.undoStack()->undo();
+  EXPECT_EQ(document_.project().studies["matching"], before);
+  EXPECT_EQ(frame->currentText(), shown);
+  EXPECT_EQ(document_.undoStack()->count(), 1) << "restoring the control pushes nothing";
+  document_.undoStack()->redo();
+  EXPECT_EQ(frame->currentIndex(), other);
+  EXPECT_EQ(document_.project().studies["matching"]["frame"], machine::toString(format));
 }
 
 TEST_F(MatchingPageTest, WorkerRunReportsFinishesAndCanBeCancelled) {

@@ -15,7 +15,9 @@
 #include <QFile>
 #include <QLocale>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QTemporaryDir>
 
 #include <cmath>
@@ -25,6 +27,7 @@
 #include <string>
 
 #include "app/gui/diagnosispage.h"
+#include "app/gui/kinematicspage.h"
 #include "app/gui/mainwindow.h"
 #include "app/gui/matchingpage.h"
 #include "app/gui/setuppage.h"
@@ -32,10 +35,12 @@
 #include "core/io/file_io.h"
 #include "core/project/project.h"
 #include "core/sim/thermal_sim.h"
+#include "core/study/diagnosis_study.h"
 #include "core/study/thermal_comparison.h"
 #include "core/study/thermal_result.h"
 #include "core/thermal/model_verdict.h"
 #include "core/thermal/thermal_model.h"
+#include "demo_document_fixture.h"
 #include "qtapp.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
@@ -344,6 +349,87 @@ TEST(FileNewTest, LeavesEveryPageEmpty) {
   EXPECT_FALSE(diagnosis->result().has_value());
   EXPECT_EQ(window.thermalPage()->modelView()->comparison(), nullptr);
   EXPECT_TRUE(window.thermalPage()->currentDataset().isEmpty());
+}
+
+/// The report (72 dpi) of `project` written to `pdf`: its text with -layout (a table row stays on one
+/// line).
+QString demoReportLayoutText(const QString& project, const QString& pdf) {
+  ReportOptions o;
+  o.projectPath = project;
+  o.resolutionDpi = 72;
+  writeReport(loadProject(project.toStdString()), pdf, o);
+  QProcess p;
+  p.start(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+  EXPECT_TRUE(p.waitForFinished(60000));
+  return QString::fromUtf8(p.readAllStandardOutput());
+}
+
+/// The demo project extracted to a temporary folder and loaded (dir_, project_, document_).
+using ReportAndPagesTest = test::DemoDocumentTest;
+
+// The kinematics page and the report show the same identified errors for the demo project: every row of
+// the page's table (origin, axis angles, squareness, RMS residual) is found in the report's table with
+// the same value, to the digits either shows (both run core/study/kinematic_study.h on the same test).
+TEST_F(ReportAndPagesTest, KinematicsIdentifiedFiguresAreThePages) {
+  KinematicsPage page(&document_);
+  ASSERT_TRUE(page.errorMessage().isEmpty()) << page.errorMessage().toStdString();
+  ASSERT_NE(page.study(), nullptr);
+  const QTableWidget* table = page.errorTable();
+  ASSERT_GE(table->rowCount(), 6);
+  const QString text = demoReportLayoutText(project_, dir_.filePath(QStringLiteral("k.pdf")));
+  ASSERT_FALSE(text.isEmpty());
+  for (int row = 0; row < 6; ++row) {
+    const QString name = table->item(row, 0)->text();
+    const QString cell = table->item(row, 1)->text();
+    bool ok = false;
+    const double shown = QLocale().toDouble(cell, &ok);
+    ASSERT_TRUE(ok) << cell.toStdString();
+    // The report's row: the name, then the identified value (C locale).
+    const QRegularExpression re(QRegularExpression::escape(name) + QStringLiteral("\\s+(-?[0-9.]+)"));
+    const QRegularExpressionMatch m = re.match(text);
+    ASSERT_TRUE(m.hasMatch()) << "no row '" << name.toStdString() << "' in the report";
+    const double reported = m.captured(1).toDouble(&ok);
+    ASSERT_TRUE(ok) << m.captured(1).toStdString();
+    const int decimals = static_cast<int>(cell.size() - cell.lastIndexOf(QLocale().decimalPoint()) - 1);
+    EXPECT_NEAR(reported, shown, 0.51 * std::pow(10.0, -decimals) + 1e-12) << name.toStdString();
+  }
+}
+
+// The diagnosis page and the report accept the same effects for every domain the demo configures, and
+// reach the same final error (the report: "Accepted: <names>. Final model: rmse <v> <unit>").
+TEST_F(ReportAndPagesTest, DiagnosisAcceptedEffectsAreThePages) {
+  DiagnosisPage page(&document_);
+  QStringList pageAccepted;
+  std::vector<double> pageFinal;
+  for (DiagnosisDomain d : kDiagnosisDomains) {
+    if (!hasDiagnosisSettings(document_.project(), d)) continue;
+    page.setDomain(d);
+    ASSERT_TRUE(page.runNow()) << page.statusText().toStdString();
+    QStringList names;
+    for (const auto* c : page.result()->accepted()) names << QString::fromStdString(c->name);
+    pageAccepted << (names.isEmpty() ? QStringLiteral("-") : names.join(QStringLiteral(", ")));
+    pageFinal.push_back(page.result()->final.rmse);
+  }
+  ASSERT_EQ(pageAccepted.size(), 4);
+
+  QString text = demoReportLayoutText(project_, dir_.filePath(QStringLiteral("d.pdf")));
+  text.replace(QRegularExpression(QStringLiteral("\\s+")), QStringLiteral(" "));
+  // One sentence per domain, in the order of the pages' domains.
+  const QRegularExpression re(QStringLiteral(
+      "(?:Accepted: (.+?)\\. Final model: rmse (-?[0-9.e+-]+)|No candidate passed the evidence test: the "
+      "declared model is kept\\. rmse (-?[0-9.e+-]+))"));
+  QStringList reportAccepted;
+  std::vector<double> reportFinal;
+  for (auto it = re.globalMatch(text); it.hasNext();) {
+    const QRegularExpressionMatch m = it.next();
+    const bool none = m.captured(1).isEmpty();
+    reportAccepted << (none ? QStringLiteral("-") : m.captured(1));
+    reportFinal.push_back((none ? m.captured(3) : m.captured(2)).toDouble());
+  }
+  EXPECT_EQ(reportAccepted, pageAccepted) << text.toStdString();
+  ASSERT_EQ(reportFinal.size(), pageFinal.size());
+  for (std::size_t k = 0; k < pageFinal.size(); ++k)  // the report: four significant digits
+    EXPECT_NEAR(reportFinal[k], pageFinal[k], 6e-4 * std::abs(pageFinal[k]) + 1e-12) << k;
 }
 
 }  // namespace

@@ -229,5 +229,40 @@ TEST(KinematicsSettings, IsValidNamesTheFieldOfABadValue) {
   EXPECT_EQ(field, "studies.kinematics.spc.column");
 }
 
+// The applied effects the kinematics study includes are read through the diagnosis block's one owner
+// (DiagnosisDomainSettings): its feed and its checks, no second parser in core/diagnose.
+TEST(KinematicsSettings, AppliedEffectsAreReadThroughTheDiagnosisSettings) {
+  Project p = projectWith(json::object());
+  const json lag = json::parse(R"([{"name": "servo_lag", "parameters": {"tau_s": 0.002}}])");
+  p.studies["diagnosis"] = {
+      {"kinematic", {{"dataset", "circle"}, {"feed_mm_per_min", 2500.0}, {"applied", lag}}}};
+  AxisEffects fx = projectAxisEffects(p, "circle");
+  ASSERT_FALSE(fx.empty());
+  EXPECT_DOUBLE_EQ(fx.base.servoLagS, 0.002);
+  EXPECT_DOUBLE_EQ(fx.base.feedMmPerMin, 2500.0);
+  EXPECT_TRUE(projectAxisEffects(p, "bores").empty());  // estimated on another test
+
+  p.studies["diagnosis"]["kinematic"].erase("feed_mm_per_min");
+  fx = projectAxisEffects(p, "circle");
+  EXPECT_DOUBLE_EQ(fx.base.feedMmPerMin, DiagnosisDomainSettings{}.feedMmPerMin);
+
+  // A bad value is refused with the field the settings type names, never replaced by the default.
+  p.studies["diagnosis"]["kinematic"]["feed_mm_per_min"] = 0;
+  EXPECT_EQ(refusedField([&] { projectAxisEffects(p, "circle", "p.metrofit"); }),
+            "studies.diagnosis.kinematic.feed_mm_per_min");
+  p.studies["diagnosis"]["kinematic"]["feed_mm_per_min"] = "fast";
+  EXPECT_EQ(refusedField([&] { projectAxisEffects(p, "circle"); }),
+            "studies.diagnosis.kinematic.feed_mm_per_min");
+  p.studies["diagnosis"]["kinematic"]["feed_mm_per_min"] = 1500.0;
+  p.studies["diagnosis"]["kinematic"]["tolerance_mm"] = 0.01;  // a matching key
+  EXPECT_EQ(refusedField([&] { projectAxisEffects(p, "circle"); }),
+            "studies.diagnosis.kinematic.tolerance_mm");
+
+  // Nothing applied: the diagnosis's half-set controls do not concern the kinematics study.
+  p.studies["diagnosis"] = {{"kinematic", {{"feed_mm_per_min", 0}}}};
+  EXPECT_TRUE(projectAxisEffects(p, "circle").empty());
+  EXPECT_EQ(kinematicStoredSettings(p, "circle").at("applied"), "");
+}
+
 }  // namespace
 }  // namespace metrofit
