@@ -232,7 +232,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
 <context>
     <name>metrofit::ChartExport</name>
     <message>
-        <location filename="../widgets/common/chartexport.cpp" line="+190"/>
+        <location filename="../widgets/common/chartexport.cpp" line="+137"/>
         <source>Export chart as SVG</source>
         <translation>Diagramm als SVG exportieren</translation>
     </message>
@@ -292,7 +292,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Diagramm in die Zwischenablage kopiert</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+35"/>
         <source>the chart has no picture to export</source>
         <translation>das Diagramm enthält kein Bild zum Exportieren</translation>
     </message>
@@ -312,6 +312,19 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <location line="+10"/>
         <source>Exported from Metrofit</source>
         <translation>Aus Metrofit exportiert</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ChartNavigation</name>
+    <message>
+        <location filename="../widgets/common/chartnavigation.cpp" line="+146"/>
+        <source>&amp;Reset zoom (double click, Home)</source>
+        <translation>&amp;Zoom zurücksetzen (Doppelklick, Pos1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show the whole chart again</source>
+        <translation>Das ganze Diagramm wieder zeigen</translation>
     </message>
 </context>
 <context>
@@ -338,7 +351,17 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
 <context>
     <name>metrofit::DatasetActions</name>
     <message>
-        <location filename="../app/gui/datasetactions.cpp" line="+26"/>
+        <location filename="../app/gui/datasetactions.cpp" line="+53"/>
+        <source>%1 — data</source>
+        <translation>%1 — Daten</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>&amp;Show data</source>
+        <translation>Daten &amp;zeigen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>&amp;Rename dataset…</source>
         <translation>Datensatz &amp;umbenennen…</translation>
     </message>
@@ -426,9 +449,178 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Lizenz</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+48"/>
         <source>File not found: %1</source>
         <translation>Datei nicht gefunden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::DatasetTableModel</name>
+    <message>
+        <location filename="../widgets/data/datasettablemodel.cpp" line="+139"/>
+        <source>out of tolerance</source>
+        <translation>außer Toleranz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no tolerance</source>
+        <translation>keine Toleranz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>in tolerance</source>
+        <translation>in Toleranz</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Line %1 of the file</source>
+        <translation>Zeile %1 der Datei</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Deviation %1 %2 is outside the tolerance %3 … %4</source>
+        <translation>Abweichung %1 %2 liegt außerhalb der Toleranz %3 … %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The report marks this value out of tolerance</source>
+        <translation>Der Bericht markiert diesen Wert als außer Toleranz</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Part</source>
+        <translation>Teil</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Feature</source>
+        <translation>Merkmal</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Characteristic</source>
+        <translation>Kenngröße</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Nominal</source>
+        <translation>Nennwert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Actual</source>
+        <translation>Istwert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Deviation</source>
+        <translation>Abweichung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lower tol.</source>
+        <translation>Untere Tol.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Upper tol.</source>
+        <translation>Obere Tol.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>The file&apos;s column “%1”, read as %2</source>
+        <translation>Spalte „%1“ der Datei, gelesen als %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The file&apos;s column “%1”</source>
+        <translation>Spalte „%1“ der Datei</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Actual − nominal (plain sign; OGP prints locations with the sign of the nominal)</source>
+        <translation>Ist − Soll (einfaches Vorzeichen; OGP druckt Lagen mit dem Vorzeichen des Nennwerts)</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::DatasetView</name>
+    <message>
+        <location filename="../widgets/data/datasetview.cpp" line="+103"/>
+        <source>Filter rows (text in any column)</source>
+        <translation>Zeilen filtern (Text in einer beliebigen Spalte)</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>&amp;Filter:</source>
+        <translation>&amp;Filter:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Plot:</source>
+        <translation>&amp;Diagramm:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;against</source>
+        <translation>ge&amp;gen</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Reading %1…</source>
+        <translation>Lese %1 …</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Cannot show %1: %2</source>
+        <translation>%1 kann nicht angezeigt werden: %2</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>row number</source>
+        <translation>Zeilennummer</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Deviation</source>
+        <translation>Abweichung</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1, %2 rows</source>
+        <translation>%1, %2 Zeilen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n out of tolerance</source>
+        <translation>
+            <numerusform>%n außer Toleranz</numerusform>
+            <numerusform>%n außer Toleranz</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 shown</source>
+        <translation>%1 angezeigt</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>row</source>
+        <translation>Zeile</translation>
     </message>
 </context>
 <context>
@@ -454,22 +646,22 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+647"/>
+        <location line="+643"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-537"/>
+        <location line="-539"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-86"/>
         <source>mm/part</source>
         <translation>mm/Werkstück</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+87"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -495,12 +687,12 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
     <message>
         <location line="+5"/>
-        <location line="+332"/>
+        <location line="+334"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
     </message>
     <message>
-        <location line="-318"/>
+        <location line="-320"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Das deklarierte Modell, wie es vor dem Hinzufügen eines Effekts angepasst wurde</translation>
     </message>
@@ -515,7 +707,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>Residuendia&amp;gramm von:</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Round</source>
         <translation>Runde</translation>
     </message>
@@ -560,7 +752,7 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>&amp;Effects</source>
         <translation>&amp;Effekte</translation>
     </message>
@@ -746,27 +938,27 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die Toleranz der Diagnose ändern</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+102"/>
         <source>The stored result (computed %1) is out of date: the settings changed since. Not run with these settings yet: press Run (Ctrl+R).</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Einstellungen haben sich seitdem geändert. Mit diesen Einstellungen noch nicht ausgeführt: Ausführen drücken (Strg+R).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) is out of date: the data file changed since. Run (Ctrl+R) on the data as it is now.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Datendatei hat sich seitdem geändert. Ausführen (Strg+R) auf den Daten in ihrem jetzigen Stand.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) cannot be checked: the data file cannot be read.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) kann nicht geprüft werden: die Datendatei ist nicht lesbar.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>From the saved project (computed %1 with these settings on this data): %2 Run (Ctrl+R) for the plots, the candidate table and the residual check.</source>
         <translation>Aus dem gespeicherten Projekt (berechnet %1 mit diesen Einstellungen auf diesen Daten): %2 Ausführen (Strg+R) für die Diagramme, die Kandidatentabelle und die Residuenprüfung.</translation>
     </message>
     <message>
-        <location line="-863"/>
+        <location line="-851"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -791,7 +983,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>. Übernommen: %1 (%2 Kandidaten getestet).</translation>
     </message>
     <message>
-        <location line="+446"/>
+        <location line="+442"/>
         <source>Cancelled: the rounds done so far.</source>
         <translation>Abgebrochen: die bisherigen Runden.</translation>
     </message>
@@ -839,7 +1031,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::ErrorBarsView</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="+443"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="+449"/>
         <source>rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model (grey) and the model with the accepted effects (blue)</source>
         <translation>rmse und größter |Fehler| der angepassten Daten, rmse der Testdaten (Thermik): das deklarierte Modell (grau) und das Modell mit den übernommenen Effekten (blau)</translation>
     </message>
@@ -1587,12 +1779,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+2"/>
-        <location line="+58"/>
+        <location line="+59"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="-59"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -1632,7 +1824,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&lt;b&gt;Kompensation&lt;/b&gt; des Nennkreises</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>&amp;Path</source>
         <translation>Bah&amp;n</translation>
     </message>
@@ -2076,27 +2268,27 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Identifikation nicht möglich:&lt;br&gt;%1</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+48"/>
         <source>The stored result (computed %1) is out of date: the kinematics settings changed since. Compensate (Ctrl+K) to compute it with these settings.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Kinematik-Einstellungen haben sich seitdem geändert. Kompensieren (Strg+K), um es mit diesen Einstellungen zu berechnen.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) is out of date: the circular test&apos;s file changed since. Compensate (Ctrl+K) to compute it on the test as it is now.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Datei des Kreisformtests hat sich seitdem geändert. Kompensieren (Strg+K), um es für den Test in seinem jetzigen Stand zu berechnen.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) cannot be checked: the circular test&apos;s file cannot be read.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) kann nicht geprüft werden: die Datei des Kreisformtests ist nicht lesbar.</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
         <source>From the saved project, computed %1 with these settings on this test: identified origin (%2, %3) µm, X axis angle a %4°, Y axis angle b %5°, squareness b − a %6°, RMS residual %7 µm. Compensation: max radial deviation %8 µm measured, %9 µm expected after (RMS %10 µm), largest correction %11 µm.</source>
         <translation>Aus dem gespeicherten Projekt, berechnet %1 mit diesen Einstellungen auf diesem Test: identifizierter Ursprung (%2; %3) µm, Winkel der X-Achse a %4°, Winkel der Y-Achse b %5°, Rechtwinkligkeit b − a %6°, RMS-Residuum %7 µm. Kompensation: größte radiale Abweichung %8 µm gemessen, %9 µm danach erwartet (RMS %10 µm), größte Korrektur %11 µm.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Simulated machine after: %1 µm.</source>
         <translation>Simulierte Maschine danach: %1 µm.</translation>
     </message>
@@ -2459,7 +2651,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+55"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+58"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Metrofit-Projekte (*.metrofit)</translation>
     </message>
@@ -2525,12 +2717,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+4"/>
-        <location line="+176"/>
+        <location line="+192"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location line="-175"/>
+        <location line="-191"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
@@ -2592,7 +2784,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
+        <source>&amp;Manual</source>
+        <translation>&amp;Handbuch</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Shows the documentation: file formats, results, references</source>
+        <translation>Zeigt die Dokumentation: Dateiformate, Ergebnisse, Quellen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&amp;About Metrofit</source>
         <translation>Ü&amp;ber Metrofit</translation>
     </message>
@@ -2607,7 +2809,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Projektübersicht</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+16"/>
         <source>%1[*] — Metrofit</source>
         <translation>%1[*] — Metrofit</translation>
     </message>
@@ -2657,7 +2859,26 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+140"/>
+        <location line="+5"/>
+        <location line="+5"/>
+        <source>Cannot show the manual</source>
+        <translation>Das Handbuch kann nicht angezeigt werden</translation>
+    </message>
+    <message>
+        <location line="-9"/>
+        <source>The documentation is not installed; looked for:
+%1</source>
+        <translation>Die Dokumentation ist nicht installiert; gesucht in:
+%1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot read %1</source>
+        <translation>%1 kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
@@ -2677,7 +2898,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1 als „%2“ importiert</translation>
     </message>
     <message>
-        <location line="-184"/>
+        <location line="-210"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Das Projekt „%1“ hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
@@ -2712,7 +2933,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Cannot open the demo project</source>
         <translation>Das Demoprojekt kann nicht geöffnet werden</translation>
     </message>
@@ -2770,16 +2991,34 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
 </context>
 <context>
+    <name>metrofit::ManualWindow</name>
+    <message>
+        <location filename="../app/gui/manual.cpp" line="+39"/>
+        <source>Metrofit manual</source>
+        <translation>Metrofit-Handbuch</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&amp;Back</source>
+        <translation>&amp;Zurück</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Contents</source>
+        <translation>&amp;Inhalt</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::MatchingCurveView</name>
     <message>
-        <location filename="../widgets/matching/matchingcurveview.cpp" line="+92"/>
+        <location filename="../widgets/matching/matchingcurveview.cpp" line="+94"/>
         <source>generation</source>
         <translation>Generation</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>best objective, RMS of Eq. (8) (mm)</source>
-        <translation>beste Zielfunktion, RMS aus Gl. (8) (mm)</translation>
+        <location line="+4"/>
+        <source>best RMS (mm)</source>
+        <translation>beste RMS (mm)</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2885,7 +3124,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die laufende SADE- / GA-Simplex-Suche anhalten (Esc)</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
@@ -2926,12 +3165,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
     </message>
     <message>
         <location line="+0"/>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>RMSE (mm)</source>
         <translation>RMSE (mm)</translation>
     </message>
     <message>
-        <location line="-33"/>
+        <location line="-34"/>
         <source>max |d| (mm)</source>
         <translation>max |d| (mm)</translation>
     </message>
@@ -2971,7 +3210,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die Maschine, für die die Korrekturwerte gelten: Topologie, Geometrie, Verfahrbereich und Steuerung (Strg+Umschalt+M)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Round</source>
         <translation>Runde</translation>
     </message>
@@ -3101,7 +3340,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Steuerungs-&amp;Frame</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>&amp;Probe points:</source>
         <translation>&amp;Antastpunkte:</translation>
     </message>
@@ -3126,12 +3365,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>%1 auf 0 halten (ein beschränktes Optimum über die übrigen Parameter)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+30"/>
         <source>Change the matching method</source>
         <translation>Ausrichtungsmethode ändern</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>Change the matching tolerance</source>
         <translation>Ausrichtungstoleranz ändern</translation>
     </message>
@@ -3141,29 +3380,29 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Skalierung der Ausrichtung ändern</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>Change the matching locks</source>
         <translation>Sperren der Ausrichtung ändern</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>Change the control of the frame</source>
         <translation>Steuerung des Frames ändern</translation>
     </message>
     <message>
-        <location line="-20"/>
+        <location line="-35"/>
         <source>Change the decimals of the frame</source>
         <translation>Nachkommastellen des Frames ändern</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+63"/>
         <location line="+303"/>
         <location line="+16"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+471"/>
+        <location line="+456"/>
         <source>No posture yet: press Run (Ctrl+R).</source>
         <translation>Noch keine Lage: Ausführen drücken (Strg+R).</translation>
     </message>
@@ -3243,7 +3482,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Der Frame kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="-745"/>
+        <location line="-730"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Fügen Sie der Projektdatei einen Datensatz der Art „probe_points“ hinzu (Kennung, Fläche, Sollpunkt, Normale, Messpunkt).</translation>
     </message>
@@ -3276,12 +3515,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
     <message>
-        <location line="-855"/>
+        <location line="-887"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: %1 mm kann auf der Seite nicht eingestellt werden (sie nimmt %2 bis %3 mm in Schritten von %4 mm)</translation>
     </message>
     <message>
-        <location line="+849"/>
+        <location line="+881"/>
         <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
         <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (Rückgängig oder die Projektdatei): %1</translation>
     </message>
@@ -3296,22 +3535,22 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Die Antastpunkte %1 ausrichten</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+45"/>
         <source>The stored result (computed %1) is out of date: the matching settings changed since. Not matched with these settings yet: press Run (Ctrl+R).</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Ausrichtungseinstellungen haben sich seitdem geändert. Mit diesen Einstellungen noch nicht ausgerichtet: Ausführen drücken (Strg+R).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) is out of date: the points file changed since. Press Run (Ctrl+R) to match the points as they are now.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Punktedatei hat sich seitdem geändert. Ausführen (Strg+R) drücken, um die Punkte in ihrem jetzigen Stand auszurichten.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) cannot be checked: the points file cannot be read.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) kann nicht geprüft werden: die Punktedatei ist nicht lesbar.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+8"/>
         <source>From the saved project, computed %1 with these settings on these points: %2: %3 of %4 points out of ±%5 mm before, %6 after; RMSE %7 mm, max |d| %8 mm. Press Run (Ctrl+R) to see the views.</source>
         <translation>Aus dem gespeicherten Projekt, berechnet %1 mit diesen Einstellungen auf diesen Punkten: %2: %3 von %4 Punkten außerhalb ±%5 mm vorher, %6 nachher; RMSE %7 mm, max |d| %8 mm. Ausführen (Strg+R) drücken, um die Ansichten zu sehen.</translation>
     </message>
@@ -3496,7 +3735,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-578"/>
+        <location line="-563"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -3775,7 +4014,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+106"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+113"/>
         <location line="+39"/>
         <source>%1: project overview (Ctrl+1)</source>
         <translation>%1: Projektübersicht (Strg+1)</translation>
@@ -6469,7 +6708,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ResidualCheckView</name>
     <message>
-        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+121"/>
+        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+122"/>
         <source>Final residual against %1</source>
         <translation>Endgültiges Residuum über %1</translation>
     </message>
@@ -6481,12 +6720,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     <message>
         <location line="+5"/>
         <location line="+163"/>
-        <location line="+281"/>
+        <location line="+283"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-443"/>
+        <location line="-445"/>
         <source>residual (%1)</source>
         <translation>Residuum (%1)</translation>
     </message>
@@ -6502,18 +6741,18 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+288"/>
+        <location line="+290"/>
         <source>excluded outliers</source>
         <translation>ausgeschlossene Ausreißer</translation>
     </message>
     <message>
-        <location line="-247"/>
-        <location line="+141"/>
+        <location line="-249"/>
+        <location line="+143"/>
         <source>What the residual still depends on (strongest first):</source>
         <translation>Wovon das Residuum noch abhängt (stärkste zuerst):</translation>
     </message>
     <message>
-        <location line="-140"/>
+        <location line="-142"/>
         <source>Outliers excluded from the fit:</source>
         <translation>Von der Anpassung ausgeschlossene Ausreißer:</translation>
     </message>
@@ -6576,12 +6815,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+137"/>
+        <location line="+139"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-137"/>
+        <location line="-139"/>
         <source>Robust z</source>
         <translation>Robustes z</translation>
     </message>
@@ -6621,7 +6860,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Ljung-Box: serielle Korrelation des Residuums in dieser Reihenfolge (Chi-Quadrat); F-Test: das Residuum gegen die Variable in dieser Form (geschachtelte Modelle). Abgelehnt: nach dem Holm-Verfahren auf dem familienweisen Niveau</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+74"/>
         <source>Residual check: run the diagnosis (Ctrl+R).</source>
         <translation>Residuenprüfung: Diagnose starten (Strg+R).</translation>
     </message>
@@ -6706,7 +6945,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ResidualPlot</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="-278"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="-283"/>
         <source>before the effect</source>
         <translation>vor dem Effekt</translation>
     </message>
@@ -6734,7 +6973,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ResidualPlotView</name>
     <message>
-        <location line="+91"/>
+        <location line="+93"/>
         <source>Residual plot: run the diagnosis (Ctrl+R)</source>
         <translation>Residuendiagramm: Diagnose ausführen (Strg+R)</translation>
     </message>
@@ -6831,7 +7070,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupConvergenceView</name>
     <message>
-        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+30"/>
+        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+32"/>
         <source>Show f&amp;2 = |x|</source>
         <translation>f&amp;2 = |x|</translation>
     </message>
@@ -7025,7 +7264,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Obere Toleranzgrenze relativ zum Nennmaß, mm</translation>
     </message>
     <message numerus="yes">
-        <location line="+67"/>
+        <location line="+68"/>
         <source>… and %n more problem(s)</source>
         <translation>
             <numerusform>… und %n weiteres Problem</numerusform>
@@ -7463,12 +7702,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+482"/>
+        <location line="+467"/>
         <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Noch kein Ergebnis für dieses Modell: Methode wählen und Ausführen drücken (Strg+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="-472"/>
+        <location line="-457"/>
         <source>The edited model has %n problem(s), the first: %1</source>
         <translation>
             <numerusform>Das bearbeitete Modell hat %n Problem: %1</numerusform>
@@ -7599,22 +7838,22 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>CRIPSO und PSO, Startwert 1, je %1 Lösungen, im Vergleich zum exakten Optimum.</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+103"/>
         <source>The stored result (computed %1) is out of date: the run settings, the model or the applied effects changed since. Not run with these yet: press Run (Ctrl+R).</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Ausführungseinstellungen, das Modell oder die übernommenen Effekte haben sich seitdem geändert. Damit noch nicht ausgeführt: Ausführen drücken (Strg+R).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) is out of date: the CMM report changed since. Press Run (Ctrl+R) to correct the setup for the report as it is now.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: der KMG-Messbericht hat sich seitdem geändert. Ausführen (Strg+R) drücken, um die Einrichtung für den Bericht in seinem jetzigen Stand zu korrigieren.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) cannot be checked: the CMM report cannot be read.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) kann nicht geprüft werden: der KMG-Messbericht ist nicht lesbar.</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+20"/>
         <source>From the saved project (computed %1 with these settings, this model and this report): %2: f1 %3 → %4 mm, |x| = f2 %5 mm, f %6; corrections (mm) %7; %8 of %9 parts in tolerance before, %10 after. Press Run (Ctrl+R) to see the tables and exports.</source>
         <translation>Aus dem gespeicherten Projekt (berechnet %1 mit diesen Einstellungen, diesem Modell und diesem Bericht): %2: f1 %3 → %4 mm, |x| = f2 %5 mm, f %6; Korrekturen (mm) %7; %8 von %9 Teilen vorher in Toleranz, %10 nachher. Ausführen (Strg+R) drücken, um die Tabellen und Exporte zu sehen.</translation>
     </message>
@@ -7627,7 +7866,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupResultsView</name>
     <message>
-        <location filename="../widgets/setup/setupresultsview.cpp" line="+35"/>
+        <location filename="../widgets/setup/setupresultsview.cpp" line="+37"/>
         <source>machine point</source>
         <translation>Maschinenpunkt</translation>
     </message>
@@ -7728,17 +7967,17 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+12"/>
-        <location line="+235"/>
+        <location line="+252"/>
         <source>There is no measurement report to export</source>
         <translation>Es gibt keinen Messbericht zum Exportieren</translation>
     </message>
     <message>
-        <location line="-206"/>
+        <location line="-222"/>
         <source>No result yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Noch kein Ergebnis: Methode wählen und Ausführen drücken (Strg+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="+29"/>
+        <location line="+44"/>
         <source>%n LP / MILP solver call(s)</source>
         <translation>
             <numerusform>%n LP-/MILP-Solver-Aufruf</numerusform>
@@ -7789,7 +8028,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>(abgebrochen: bisher beste)</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>Parts of the report in tolerance: %1 of %2 before, %3 of %2 after the correction; parts rescued: %4.</source>
         <translation>Werkstücke des Berichts in Toleranz: %1 von %2 vor, %3 von %2 nach der Korrektur; gerettete Werkstücke: %4.</translation>
     </message>
@@ -7893,7 +8132,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SetupValidationView</name>
     <message>
-        <location filename="../widgets/setup/setupvalidationview.cpp" line="+76"/>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+78"/>
         <source>Simulated measurement sets N (the paper: 100)</source>
         <translation>Simulierte Messreihen N (Veröffentlichung: 100)</translation>
     </message>
@@ -7923,7 +8162,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Gewicht der zufälligen Fehler, Gl. 13: E = w2 (1 − 2r)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>Run &amp;validation</source>
         <translation>Validierung aus&amp;führen</translation>
     </message>
@@ -7933,12 +8172,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-49"/>
         <source>The paper&apos;s statistical validation: simulated measurement sets with setup-data and random errors (Eq. 12–13), each corrected by the exact method and by M trials of the chosen metaheuristics; the sets sorted by their budget before correction (Fig. 18).</source>
         <translation>Die statistische Validierung der Veröffentlichung: simulierte Messreihen mit Einrichtdaten- und Zufallsfehlern (Gl. 12–13), jeweils korrigiert mit der exakten Methode und mit M Versuchen der gewählten Metaheuristiken; die Reihen sortiert nach ihrem Budget vor der Korrektur (Abb. 18).</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+68"/>
         <source>Measurement sets N:</source>
         <translation>Messreihen N:</translation>
     </message>
@@ -8330,7 +8569,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+179"/>
+        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+187"/>
         <source>loop area in %1 × %2</source>
         <translation>Schleifenfläche in %1 × %2</translation>
     </message>
@@ -8519,7 +8758,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+76"/>
+        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+77"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -8544,7 +8783,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Übernommene Effekte %1: %2.</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+108"/>
         <source>Applied effects %1: Train (Ctrl+R) fits each model with and without them and keeps the lower held-out error.</source>
         <translation>Übernommene Effekte %1: Trainieren (Strg+R) passt jedes Modell mit und ohne sie an und behält den kleineren Fehler auf den Testdaten.</translation>
     </message>
@@ -8866,7 +9105,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Gütekennzahlen (Tabelle 4)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Comparison</source>
         <translation>Vergleich</translation>
     </message>
@@ -8887,7 +9126,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Training nach %1 PSO-Iterationen abgebrochen; die angezeigten Ergebnisse sind die vorherigen.</translation>
     </message>
     <message>
-        <location line="-336"/>
+        <location line="-337"/>
         <source>not fitted</source>
         <translation>nicht angepasst</translation>
     </message>
@@ -8897,7 +9136,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&lt;b&gt;Modularer Fall:&lt;/b&gt; GNNMCI(1,N), angepasst an den Z- und C-Tests, verringert den Fehler des kombinierten Tests um %1 (GMC(1,N) %2, MLP %3).</translation>
     </message>
     <message>
-        <location line="+355"/>
+        <location line="+356"/>
         <source>Settings changed: Train (Ctrl+R) to update the results.</source>
         <translation>Einstellungen geändert: Trainieren (Strg+R), um die Ergebnisse zu aktualisieren.</translation>
     </message>
@@ -8961,7 +9200,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>&amp;Thermoprotokoll:</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+59"/>
         <source>The module could not be identified again: %1</source>
         <translation>Das Modul konnte nicht erneut identifiziert werden: %1</translation>
     </message>
@@ -9015,7 +9254,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zum Thermoprotokoll %1 (auf dem die Diagnose lief); die Modelle dieses Protokolls enthalten sie nicht.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-185"/>
         <source>Choose the thermal log</source>
         <translation>Thermoprotokoll wählen</translation>
     </message>
@@ -9030,7 +9269,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Thermische Eingänge ändern</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Change the train fraction</source>
         <translation>Trainingsanteil ändern</translation>
     </message>
@@ -9040,27 +9279,27 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Startwert des Trainings ändern</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+4"/>
         <source>Change the thermal model settings</source>
         <translation>Einstellungen des thermischen Modells ändern</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+249"/>
         <source>The stored result (computed %1) is out of date: the model settings changed since. Not trained with these settings yet: Train (Ctrl+R).</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Modelleinstellungen haben sich seitdem geändert. Mit diesen Einstellungen noch nicht trainiert: Trainieren (Strg+R).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) is out of date: the data file changed since. Train (Ctrl+R) to fit the models on the data as it is now.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Datendatei hat sich seitdem geändert. Trainieren (Strg+R), um die Modelle an die Daten in ihrem jetzigen Stand anzupassen.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) cannot be checked: the data file cannot be read.</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) kann nicht geprüft werden: die Datendatei ist nicht lesbar.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>not fitted</source>
         <translation>nicht angepasst</translation>
     </message>
@@ -9158,7 +9397,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::ThermalTrendView</name>
     <message>
-        <location filename="../widgets/thermal/thermaltrendview.cpp" line="+123"/>
+        <location filename="../widgets/thermal/thermaltrendview.cpp" line="+125"/>
         <source>Channels shown in the chart: tick a group to show all of it</source>
         <translation>In der Grafik gezeigte Kanäle: eine angekreuzte Gruppe zeigt alle ihre Kanäle</translation>
     </message>

@@ -232,7 +232,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
 <context>
     <name>metrofit::ChartExport</name>
     <message>
-        <location filename="../widgets/common/chartexport.cpp" line="+190"/>
+        <location filename="../widgets/common/chartexport.cpp" line="+137"/>
         <source>Export chart as SVG</source>
         <translation>Eksport wykresu jako SVG</translation>
     </message>
@@ -292,7 +292,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Skopiowano wykres do schowka</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+35"/>
         <source>the chart has no picture to export</source>
         <translation>wykres nie zawiera obrazu do wyeksportowania</translation>
     </message>
@@ -312,6 +312,19 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <location line="+10"/>
         <source>Exported from Metrofit</source>
         <translation>Wyeksportowano z programu Metrofit</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ChartNavigation</name>
+    <message>
+        <location filename="../widgets/common/chartnavigation.cpp" line="+146"/>
+        <source>&amp;Reset zoom (double click, Home)</source>
+        <translation>&amp;Resetuj powiększenie (dwuklik, Home)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show the whole chart again</source>
+        <translation>Pokaż znów cały wykres</translation>
     </message>
 </context>
 <context>
@@ -338,7 +351,17 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
 <context>
     <name>metrofit::DatasetActions</name>
     <message>
-        <location filename="../app/gui/datasetactions.cpp" line="+26"/>
+        <location filename="../app/gui/datasetactions.cpp" line="+53"/>
+        <source>%1 — data</source>
+        <translation>%1 — dane</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>&amp;Show data</source>
+        <translation>&amp;Pokaż dane</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>&amp;Rename dataset…</source>
         <translation>&amp;Zmień nazwę zbioru danych…</translation>
     </message>
@@ -426,9 +449,179 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Licencja</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+48"/>
         <source>File not found: %1</source>
         <translation>Nie znaleziono pliku: %1</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::DatasetTableModel</name>
+    <message>
+        <location filename="../widgets/data/datasettablemodel.cpp" line="+139"/>
+        <source>out of tolerance</source>
+        <translation>poza tolerancją</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no tolerance</source>
+        <translation>brak tolerancji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>in tolerance</source>
+        <translation>w tolerancji</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Line %1 of the file</source>
+        <translation>Wiersz %1 pliku</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Deviation %1 %2 is outside the tolerance %3 … %4</source>
+        <translation>Odchyłka %1 %2 leży poza tolerancją %3 … %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The report marks this value out of tolerance</source>
+        <translation>Raport oznacza tę wartość jako poza tolerancją</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Part</source>
+        <translation>Część</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Feature</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Characteristic</source>
+        <translation>Charakterystyka</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Unit</source>
+        <translation>Jednostka</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Nominal</source>
+        <translation>Nominalna</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Actual</source>
+        <translation>Rzeczywista</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Deviation</source>
+        <translation>Odchyłka</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lower tol.</source>
+        <translation>Tol. dolna</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Upper tol.</source>
+        <translation>Tol. górna</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>The file&apos;s column “%1”, read as %2</source>
+        <translation>Kolumna pliku „%1”, czytana jako %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The file&apos;s column “%1”</source>
+        <translation>Kolumna pliku „%1”</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Actual − nominal (plain sign; OGP prints locations with the sign of the nominal)</source>
+        <translation>Rzeczywista − nominalna (zwykły znak; OGP drukuje położenia ze znakiem wartości nominalnej)</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::DatasetView</name>
+    <message>
+        <location filename="../widgets/data/datasetview.cpp" line="+103"/>
+        <source>Filter rows (text in any column)</source>
+        <translation>Filtruj wiersze (tekst w dowolnej kolumnie)</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>&amp;Filter:</source>
+        <translation>&amp;Filtr:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Plot:</source>
+        <translation>&amp;Wykres:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;against</source>
+        <translation>&amp;względem</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Reading %1…</source>
+        <translation>Wczytywanie %1…</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Cannot show %1: %2</source>
+        <translation>Nie można pokazać %1: %2</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>(none)</source>
+        <translation>(brak)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>row number</source>
+        <translation>numer wiersza</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Deviation</source>
+        <translation>Odchyłka</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1, %2 rows</source>
+        <translation>%1, wiersze: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n out of tolerance</source>
+        <translation>
+            <numerusform>%n poza tolerancją</numerusform>
+            <numerusform>%n poza tolerancją</numerusform>
+            <numerusform>%n poza tolerancją</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 shown</source>
+        <translation>pokazano: %1</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>row</source>
+        <translation>wiersz</translation>
     </message>
 </context>
 <context>
@@ -454,22 +647,22 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+647"/>
+        <location line="+643"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-537"/>
+        <location line="-539"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-86"/>
         <source>mm/part</source>
         <translation>mm/przedmiot</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+87"/>
         <source>Cancel</source>
         <translation>Anuluj</translation>
     </message>
@@ -495,12 +688,12 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
     <message>
         <location line="+5"/>
-        <location line="+332"/>
+        <location line="+334"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
     </message>
     <message>
-        <location line="-318"/>
+        <location line="-320"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Zadeklarowany model dopasowany przed dodaniem jakiegokolwiek efektu</translation>
     </message>
@@ -515,7 +708,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>Wykres &amp;residuów dla:</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Round</source>
         <translation>Runda</translation>
     </message>
@@ -560,7 +753,7 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
         <translation>&amp;Kopiuj</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>&amp;Effects</source>
         <translation>&amp;Efekty</translation>
     </message>
@@ -746,27 +939,27 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmień tolerancję diagnozy</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+102"/>
         <source>The stored result (computed %1) is out of date: the settings changed since. Not run with these settings yet: press Run (Ctrl+R).</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia zmieniły się od tego czasu. Jeszcze nie uruchomiono z tymi ustawieniami: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) is out of date: the data file changed since. Run (Ctrl+R) on the data as it is now.</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: plik danych zmienił się od tego czasu. Uruchom (Ctrl+R) na danych w obecnej postaci.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) cannot be checked: the data file cannot be read.</source>
         <translation>Nie można sprawdzić zapisanego wyniku (obliczonego %1): nie można odczytać pliku danych.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>From the saved project (computed %1 with these settings on this data): %2 Run (Ctrl+R) for the plots, the candidate table and the residual check.</source>
         <translation>Z zapisanego projektu (obliczono %1 z tymi ustawieniami dla tych danych): %2 Uruchom (Ctrl+R), aby zobaczyć wykresy, tabelę kandydatów i sprawdzenie residuów.</translation>
     </message>
     <message>
-        <location line="-863"/>
+        <location line="-851"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -791,7 +984,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>. Przyjęto: %1 (wypróbowano kandydatów: %2).</translation>
     </message>
     <message>
-        <location line="+446"/>
+        <location line="+442"/>
         <source>Cancelled: the rounds done so far.</source>
         <translation>Anulowano: dotychczasowe rundy.</translation>
     </message>
@@ -839,7 +1032,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::ErrorBarsView</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="+443"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="+449"/>
         <source>rmse and largest |error| of the fitted data, rmse of the held-out rows (thermal): the declared model (grey) and the model with the accepted effects (blue)</source>
         <translation>rmse i największy |błąd| danych dopasowania, rmse wierszy testowych (termika): zadeklarowany model (szary) i model z przyjętymi efektami (niebieski)</translation>
     </message>
@@ -1588,12 +1781,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+2"/>
-        <location line="+58"/>
+        <location line="+59"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="-59"/>
         <source>identified</source>
         <translation>wyznaczony</translation>
     </message>
@@ -1633,7 +1826,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&lt;b&gt;Kompensacja&lt;/b&gt; okręgu nominalnego</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>&amp;Path</source>
         <translation>&amp;Tor</translation>
     </message>
@@ -2079,27 +2272,27 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: identyfikacja niemożliwa:&lt;br&gt;%1</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+48"/>
         <source>The stored result (computed %1) is out of date: the kinematics settings changed since. Compensate (Ctrl+K) to compute it with these settings.</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia kinematyki zmieniły się od tego czasu. Kompensuj (Ctrl+K), aby obliczyć go z tymi ustawieniami.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) is out of date: the circular test&apos;s file changed since. Compensate (Ctrl+K) to compute it on the test as it is now.</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: plik testu kołowego zmienił się od tego czasu. Kompensuj (Ctrl+K), aby obliczyć go dla testu w obecnej postaci.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) cannot be checked: the circular test&apos;s file cannot be read.</source>
         <translation>Nie można sprawdzić zapisanego wyniku (obliczonego %1): nie można odczytać pliku testu kołowego.</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
         <source>From the saved project, computed %1 with these settings on this test: identified origin (%2, %3) µm, X axis angle a %4°, Y axis angle b %5°, squareness b − a %6°, RMS residual %7 µm. Compensation: max radial deviation %8 µm measured, %9 µm expected after (RMS %10 µm), largest correction %11 µm.</source>
         <translation>Z zapisanego projektu, obliczono %1 z tymi ustawieniami dla tego testu: zidentyfikowany początek (%2; %3) µm, kąt osi X a %4°, kąt osi Y b %5°, prostopadłość b − a %6°, residuum RMS %7 µm. Kompensacja: największe odchylenie promieniowe %8 µm zmierzone, %9 µm oczekiwane po (RMS %10 µm), największa korekta %11 µm.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Simulated machine after: %1 µm.</source>
         <translation>Symulowana obrabiarka po: %1 µm.</translation>
     </message>
@@ -2462,7 +2655,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+55"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+58"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Projekty Metrofit (*.metrofit)</translation>
     </message>
@@ -2528,12 +2721,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+4"/>
-        <location line="+176"/>
+        <location line="+192"/>
         <source>&amp;Save</source>
         <translation>&amp;Zapisz</translation>
     </message>
     <message>
-        <location line="-175"/>
+        <location line="-191"/>
         <source>Save &amp;As…</source>
         <translation>Zapisz &amp;jako…</translation>
     </message>
@@ -2595,7 +2788,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Pomo&amp;c</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
+        <source>&amp;Manual</source>
+        <translation>&amp;Podręcznik</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Shows the documentation: file formats, results, references</source>
+        <translation>Pokazuje dokumentację: formaty plików, wyniki, źródła</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&amp;About Metrofit</source>
         <translation>&amp;O programie Metrofit</translation>
     </message>
@@ -2610,7 +2813,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Przegląd projektu</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+16"/>
         <source>%1[*] — Metrofit</source>
         <translation>%1[*] — Metrofit</translation>
     </message>
@@ -2660,7 +2863,26 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Niezapisane zmiany</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+140"/>
+        <location line="+5"/>
+        <location line="+5"/>
+        <source>Cannot show the manual</source>
+        <translation>Nie można pokazać podręcznika</translation>
+    </message>
+    <message>
+        <location line="-9"/>
+        <source>The documentation is not installed; looked for:
+%1</source>
+        <translation>Dokumentacja nie jest zainstalowana; szukano w:
+%1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot read %1</source>
+        <translation>Nie można odczytać %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
@@ -2680,7 +2902,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zaimportowano %1 jako „%2”</translation>
     </message>
     <message>
-        <location line="-184"/>
+        <location line="-210"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Projekt „%1” ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
@@ -2715,7 +2937,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Otwórz projekt</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Cannot open the demo project</source>
         <translation>Nie można otworzyć projektu demonstracyjnego</translation>
     </message>
@@ -2773,16 +2995,34 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
 </context>
 <context>
+    <name>metrofit::ManualWindow</name>
+    <message>
+        <location filename="../app/gui/manual.cpp" line="+39"/>
+        <source>Metrofit manual</source>
+        <translation>Podręcznik Metrofit</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&amp;Back</source>
+        <translation>&amp;Wstecz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Contents</source>
+        <translation>&amp;Spis treści</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::MatchingCurveView</name>
     <message>
-        <location filename="../widgets/matching/matchingcurveview.cpp" line="+92"/>
+        <location filename="../widgets/matching/matchingcurveview.cpp" line="+94"/>
         <source>generation</source>
         <translation>generacja</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>best objective, RMS of Eq. (8) (mm)</source>
-        <translation>najlepsza funkcja celu, RMS z równ. (8) (mm)</translation>
+        <location line="+4"/>
+        <source>best RMS (mm)</source>
+        <translation>najlepsze RMS (mm)</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2888,7 +3128,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zatrzymaj trwające przeszukiwanie SADE / GA-simpleks (Esc)</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Method</source>
         <translation>Metoda</translation>
     </message>
@@ -2929,12 +3169,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     </message>
     <message>
         <location line="+0"/>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>RMSE (mm)</source>
         <translation>RMSE (mm)</translation>
     </message>
     <message>
-        <location line="-33"/>
+        <location line="-34"/>
         <source>max |d| (mm)</source>
         <translation>maks. |d| (mm)</translation>
     </message>
@@ -2974,7 +3214,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Obrabiarka, dla której są wartości korekty: topologia, geometria, zakres ruchu i sterowanie (Ctrl+Shift+M)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Round</source>
         <translation>Runda</translation>
     </message>
@@ -3104,7 +3344,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>&amp;Frame sterowania</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>&amp;Probe points:</source>
         <translation>&amp;Punkty sondowania:</translation>
     </message>
@@ -3129,12 +3369,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Utrzymaj %1 na 0 (optimum z ograniczeniem po pozostałych parametrach)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+30"/>
         <source>Change the matching method</source>
         <translation>Zmiana metody dopasowania</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>Change the matching tolerance</source>
         <translation>Zmiana tolerancji dopasowania</translation>
     </message>
@@ -3144,29 +3384,29 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmiana skali dopasowania</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>Change the matching locks</source>
         <translation>Zmiana blokad dopasowania</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>Change the control of the frame</source>
         <translation>Zmień sterowanie frame’u</translation>
     </message>
     <message>
-        <location line="-20"/>
+        <location line="-35"/>
         <source>Change the decimals of the frame</source>
         <translation>Zmień miejsca po przecinku frame’u</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+63"/>
         <location line="+303"/>
         <location line="+16"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
     </message>
     <message>
-        <location line="+471"/>
+        <location line="+456"/>
         <source>No posture yet: press Run (Ctrl+R).</source>
         <translation>Brak położenia: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
@@ -3246,7 +3486,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można zapisać frame’u</translation>
     </message>
     <message>
-        <location line="-745"/>
+        <location line="-730"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Ten projekt nie zawiera punktów sondowania. Dodaj do pliku projektu zbiór danych rodzaju „probe_points” (identyfikator, powierzchnia, punkt nominalny, normalna, punkt zmierzony).</translation>
     </message>
@@ -3279,12 +3519,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
     <message>
-        <location line="-855"/>
+        <location line="-887"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: nie można ustawić %1 mm na stronie (przyjmuje od %2 do %3 mm w krokach co %4 mm)</translation>
     </message>
     <message>
-        <location line="+849"/>
+        <location line="+881"/>
         <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
         <translation>Ustawienia badania dopasowania są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (Cofnij lub plik projektu): %1</translation>
     </message>
@@ -3299,22 +3539,22 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Dopasuj punkty sondowania %1</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+45"/>
         <source>The stored result (computed %1) is out of date: the matching settings changed since. Not matched with these settings yet: press Run (Ctrl+R).</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia dopasowania zmieniły się od tego czasu. Jeszcze nie dopasowano z tymi ustawieniami: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) is out of date: the points file changed since. Press Run (Ctrl+R) to match the points as they are now.</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: plik punktów zmienił się od tego czasu. Naciśnij Uruchom (Ctrl+R), aby dopasować punkty w obecnej postaci.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) cannot be checked: the points file cannot be read.</source>
         <translation>Nie można sprawdzić zapisanego wyniku (obliczonego %1): nie można odczytać pliku punktów.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+8"/>
         <source>From the saved project, computed %1 with these settings on these points: %2: %3 of %4 points out of ±%5 mm before, %6 after; RMSE %7 mm, max |d| %8 mm. Press Run (Ctrl+R) to see the views.</source>
         <translation>Z zapisanego projektu, obliczono %1 z tymi ustawieniami dla tych punktów: %2: %3 z %4 punktów poza ±%5 mm przed, %6 po; RMSE %7 mm, maks. |d| %8 mm. Naciśnij Uruchom (Ctrl+R), aby zobaczyć widoki.</translation>
     </message>
@@ -3500,7 +3740,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-578"/>
+        <location line="-563"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -3779,7 +4019,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+106"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+113"/>
         <location line="+39"/>
         <source>%1: project overview (Ctrl+1)</source>
         <translation>%1: przegląd projektu (Ctrl+1)</translation>
@@ -6483,7 +6723,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ResidualCheckView</name>
     <message>
-        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+121"/>
+        <location filename="../widgets/diagnose/residualcheckview.cpp" line="+122"/>
         <source>Final residual against %1</source>
         <translation>Końcowe residuum względem %1</translation>
     </message>
@@ -6495,12 +6735,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     <message>
         <location line="+5"/>
         <location line="+163"/>
-        <location line="+281"/>
+        <location line="+283"/>
         <source>residual</source>
         <translation>residuum</translation>
     </message>
     <message>
-        <location line="-443"/>
+        <location line="-445"/>
         <source>residual (%1)</source>
         <translation>residuum (%1)</translation>
     </message>
@@ -6516,18 +6756,18 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+288"/>
+        <location line="+290"/>
         <source>excluded outliers</source>
         <translation>wykluczone wartości odstające</translation>
     </message>
     <message>
-        <location line="-247"/>
-        <location line="+141"/>
+        <location line="-249"/>
+        <location line="+143"/>
         <source>What the residual still depends on (strongest first):</source>
         <translation>Od czego residuum wciąż zależy (najsilniejsze najpierw):</translation>
     </message>
     <message>
-        <location line="-140"/>
+        <location line="-142"/>
         <source>Outliers excluded from the fit:</source>
         <translation>Wartości odstające wykluczone z dopasowania:</translation>
     </message>
@@ -6590,12 +6830,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+137"/>
+        <location line="+139"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location line="-137"/>
+        <location line="-139"/>
         <source>Robust z</source>
         <translation>Odporne z</translation>
     </message>
@@ -6635,7 +6875,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Ljung-Box: korelacja szeregowa residuum w tej kolejności (chi-kwadrat); test F: residuum względem zmiennej w tej postaci (modele zagnieżdżone). Odrzucony: procedurą Holma na poziomie dla całej rodziny testów</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+74"/>
         <source>Residual check: run the diagnosis (Ctrl+R).</source>
         <translation>Sprawdzenie residuów: uruchom diagnozę (Ctrl+R).</translation>
     </message>
@@ -6722,7 +6962,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ResidualPlot</name>
     <message>
-        <location filename="../widgets/diagnose/residualplot.cpp" line="-278"/>
+        <location filename="../widgets/diagnose/residualplot.cpp" line="-283"/>
         <source>before the effect</source>
         <translation>przed efektem</translation>
     </message>
@@ -6750,7 +6990,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ResidualPlotView</name>
     <message>
-        <location line="+91"/>
+        <location line="+93"/>
         <source>Residual plot: run the diagnosis (Ctrl+R)</source>
         <translation>Wykres residuów: uruchom diagnozę (Ctrl+R)</translation>
     </message>
@@ -6847,7 +7087,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupConvergenceView</name>
     <message>
-        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+30"/>
+        <location filename="../widgets/setup/setupconvergenceview.cpp" line="+32"/>
         <source>Show f&amp;2 = |x|</source>
         <translation>f&amp;2 = |x|</translation>
     </message>
@@ -7041,7 +7281,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Górna granica tolerancji względem wartości nominalnej, mm</translation>
     </message>
     <message numerus="yes">
-        <location line="+67"/>
+        <location line="+68"/>
         <source>… and %n more problem(s)</source>
         <translation>
             <numerusform>… i jeszcze %n problem</numerusform>
@@ -7481,12 +7721,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+482"/>
+        <location line="+467"/>
         <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Brak jeszcze wyniku dla tego modelu: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="-472"/>
+        <location line="-457"/>
         <source>The edited model has %n problem(s), the first: %1</source>
         <translation>
             <numerusform>Edytowany model ma %n problem: %1</numerusform>
@@ -7619,22 +7859,22 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>CRIPSO i PSO, ziarno 1, po %1 rozwiązań, w porównaniu z dokładnym optimum.</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+103"/>
         <source>The stored result (computed %1) is out of date: the run settings, the model or the applied effects changed since. Not run with these yet: press Run (Ctrl+R).</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia uruchomienia, model lub zastosowane efekty zmieniły się od tego czasu. Jeszcze nie uruchomiono z nimi: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) is out of date: the CMM report changed since. Press Run (Ctrl+R) to correct the setup for the report as it is now.</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: raport WMP zmienił się od tego czasu. Naciśnij Uruchom (Ctrl+R), aby skorygować ustawienie dla raportu w obecnej postaci.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) cannot be checked: the CMM report cannot be read.</source>
         <translation>Nie można sprawdzić zapisanego wyniku (obliczonego %1): nie można odczytać raportu WMP.</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+20"/>
         <source>From the saved project (computed %1 with these settings, this model and this report): %2: f1 %3 → %4 mm, |x| = f2 %5 mm, f %6; corrections (mm) %7; %8 of %9 parts in tolerance before, %10 after. Press Run (Ctrl+R) to see the tables and exports.</source>
         <translation>Z zapisanego projektu (obliczono %1 z tymi ustawieniami, tym modelem i tym raportem): %2: f1 %3 → %4 mm, |x| = f2 %5 mm, f %6; korekty (mm) %7; %8 z %9 części w tolerancji przed, %10 po. Naciśnij Uruchom (Ctrl+R), aby zobaczyć tabele i eksporty.</translation>
     </message>
@@ -7647,7 +7887,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupResultsView</name>
     <message>
-        <location filename="../widgets/setup/setupresultsview.cpp" line="+35"/>
+        <location filename="../widgets/setup/setupresultsview.cpp" line="+37"/>
         <source>machine point</source>
         <translation>punkt maszyny</translation>
     </message>
@@ -7748,17 +7988,17 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+12"/>
-        <location line="+235"/>
+        <location line="+252"/>
         <source>There is no measurement report to export</source>
         <translation>Brak raportu pomiarowego do eksportu</translation>
     </message>
     <message>
-        <location line="-206"/>
+        <location line="-222"/>
         <source>No result yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Brak jeszcze wyniku: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="+29"/>
+        <location line="+44"/>
         <source>%n LP / MILP solver call(s)</source>
         <translation>
             <numerusform>%n wywołanie solvera LP / MILP</numerusform>
@@ -7811,7 +8051,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>(anulowano: najlepsze dotąd)</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>Parts of the report in tolerance: %1 of %2 before, %3 of %2 after the correction; parts rescued: %4.</source>
         <translation>Przedmioty z raportu w tolerancji: %1 z %2 przed, %3 z %2 po korekcji; uratowane przedmioty: %4.</translation>
     </message>
@@ -7915,7 +8155,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SetupValidationView</name>
     <message>
-        <location filename="../widgets/setup/setupvalidationview.cpp" line="+76"/>
+        <location filename="../widgets/setup/setupvalidationview.cpp" line="+78"/>
         <source>Simulated measurement sets N (the paper: 100)</source>
         <translation>Symulowane zestawy pomiarów N (publikacja: 100)</translation>
     </message>
@@ -7945,7 +8185,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Waga błędów losowych, równ. 13: E = w2 (1 − 2r)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>Run &amp;validation</source>
         <translation>Uruchom walidac&amp;ję</translation>
     </message>
@@ -7955,12 +8195,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Anuluj</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-49"/>
         <source>The paper&apos;s statistical validation: simulated measurement sets with setup-data and random errors (Eq. 12–13), each corrected by the exact method and by M trials of the chosen metaheuristics; the sets sorted by their budget before correction (Fig. 18).</source>
         <translation>Walidacja statystyczna z publikacji: symulowane zestawy pomiarów z błędami danych ustawczych i losowymi (równ. 12–13), każdy korygowany metodą dokładną i M próbami wybranych metaheurystyk; zestawy posortowane wg budżetu przed korekcją (rys. 18).</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+68"/>
         <source>Measurement sets N:</source>
         <translation>Zestawy pomiarów N:</translation>
     </message>
@@ -8353,7 +8593,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalHysteresisView</name>
     <message>
-        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+179"/>
+        <location filename="../widgets/thermal/thermalhysteresisview.cpp" line="+187"/>
         <source>loop area in %1 × %2</source>
         <translation>pole pętli w %1 × %2</translation>
     </message>
@@ -8542,7 +8782,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalModelView</name>
     <message>
-        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+76"/>
+        <location filename="../widgets/thermal/thermalmodelview.cpp" line="+77"/>
         <source>%1 → %2%3</source>
         <translation>%1 → %2%3</translation>
     </message>
@@ -8567,7 +8807,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zastosowane efekty %1: %2.</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+108"/>
         <source>Applied effects %1: Train (Ctrl+R) fits each model with and without them and keeps the lower held-out error.</source>
         <translation>Zastosowane efekty %1: Trenuj (Ctrl+R) dopasowuje każdy model z nimi i bez nich i zachowuje mniejszy błąd danych testowych.</translation>
     </message>
@@ -8889,7 +9129,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Wskaźniki jakości (tabela 4)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Comparison</source>
         <translation>Porównanie</translation>
     </message>
@@ -8910,7 +9150,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Trenowanie anulowano po %1 iteracjach PSO; pokazane wyniki są poprzednie.</translation>
     </message>
     <message>
-        <location line="-336"/>
+        <location line="-337"/>
         <source>not fitted</source>
         <translation>nie dopasowano</translation>
     </message>
@@ -8920,7 +9160,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>&lt;b&gt;Przypadek modułowy:&lt;/b&gt; GNNMCI(1,N) dopasowany na testach Z i C zmniejsza błąd testu łączonego o %1 (GMC(1,N) %2, MLP %3).</translation>
     </message>
     <message>
-        <location line="+355"/>
+        <location line="+356"/>
         <source>Settings changed: Train (Ctrl+R) to update the results.</source>
         <translation>Zmieniono ustawienia: Trenuj (Ctrl+R), aby zaktualizować wyniki.</translation>
     </message>
@@ -8984,7 +9224,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>&amp;Rejestr termiczny:</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+59"/>
         <source>The module could not be identified again: %1</source>
         <translation>Nie udało się ponownie zidentyfikować modułu: %1</translation>
     </message>
@@ -9038,7 +9278,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Efekty zastosowane na stronie Diagnoza należą do rejestru termicznego %1 (tego, na którym przeprowadzono diagnozę); modele tego rejestru ich nie uwzględniają.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-185"/>
         <source>Choose the thermal log</source>
         <translation>Wybór rejestru termicznego</translation>
     </message>
@@ -9053,7 +9293,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana wejść (termika)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Change the train fraction</source>
         <translation>Zmiana części treningowej</translation>
     </message>
@@ -9063,27 +9303,27 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Zmiana ziarna trenowania</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+4"/>
         <source>Change the thermal model settings</source>
         <translation>Zmiana ustawień modelu termicznego</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+249"/>
         <source>The stored result (computed %1) is out of date: the model settings changed since. Not trained with these settings yet: Train (Ctrl+R).</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia modeli zmieniły się od tego czasu. Jeszcze nie wytrenowano z tymi ustawieniami: Trenuj (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) is out of date: the data file changed since. Train (Ctrl+R) to fit the models on the data as it is now.</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: plik danych zmienił się od tego czasu. Trenuj (Ctrl+R), aby dopasować modele do danych w obecnej postaci.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>The stored result (computed %1) cannot be checked: the data file cannot be read.</source>
         <translation>Nie można sprawdzić zapisanego wyniku (obliczonego %1): nie można odczytać pliku danych.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>not fitted</source>
         <translation>niedopasowany</translation>
     </message>
@@ -9181,7 +9421,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::ThermalTrendView</name>
     <message>
-        <location filename="../widgets/thermal/thermaltrendview.cpp" line="+123"/>
+        <location filename="../widgets/thermal/thermaltrendview.cpp" line="+125"/>
         <source>Channels shown in the chart: tick a group to show all of it</source>
         <translation>Kanały pokazane na wykresie: zaznaczona grupa pokazuje wszystkie swoje kanały</translation>
     </message>

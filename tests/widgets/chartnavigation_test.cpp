@@ -23,6 +23,7 @@
 #include "testsupport.h"
 #include "widgets/common/chartexport.h"
 #include "widgets/common/chartnavigation.h"
+#include "widgets/data/datasetview.h"
 #include "widgets/thermal/thermaltrendview.h"
 
 namespace metrofit {
@@ -214,6 +215,13 @@ TEST_F(ChartNavigationTest, ARangeSetForNewDataIsTheNewWholeChart) {
 TEST(ChartNavigation, TheThermalTrendChartHasIt) {
   ThermalTrendView trend;
   const auto views = trend.findChildren<QChartView*>();
+  ASSERT_FALSE(views.isEmpty());
+  for (QChartView* v : views) EXPECT_TRUE(hasChartNavigation(v));
+}
+
+TEST(ChartNavigation, TheDatasetPlotHasIt) {
+  DatasetView view;
+  const auto views = view.findChildren<QChartView*>();
   ASSERT_FALSE(views.isEmpty());
   for (QChartView* v : views) EXPECT_TRUE(hasChartNavigation(v));
 }

@@ -30,6 +30,7 @@
 #include "core/project/project.h"
 #include "widgets/common/backgroundrun.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/chartnavigation.h"
 #include "widgets/common/palette.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/data/datasettablemodel.h"
@@ -151,6 +152,7 @@ DatasetView::DatasetView(QWidget* parent)
   chartView->setMinimumHeight(220);
   chartView_ = chartView;
   enableChartExport(chartView_, QStringLiteral("dataset-plot"));
+  enableChartNavigation(chartView_);
   splitter_->addWidget(table_);
   splitter_->addWidget(chartView_);
   splitter_->setStretchFactor(0, 3);
