@@ -43,7 +43,7 @@ std::string baseName(const std::string& path) {
 }
 
 /// Fills deviationMm / samples from rows; every dimension needs a row.
-void finish(Measurements& m, const Model& model, const std::string& source) {
+void finish(Measurements& m, const Model& model, const std::string& source, const std::string& note = {}) {
   const std::size_t n = model.dimensions.size();
   m.deviationMm.assign(n, 0.0);
   m.samples.assign(n, 0);
@@ -58,7 +58,7 @@ void finish(Measurements& m, const Model& model, const std::string& source) {
           "'" + d.id + "'" + (d.dmisLabel() != d.id ? " (label '" + d.dmisLabel() + "')" : std::string());
       throw ValidationError(ErrorContext{source, 0, 0, "dimension"},
                             "the report has no measurement of dimension " + name + " of the model" +
-                                (model.source.empty() ? std::string() : " (" + model.source + ")"));
+                                (model.source.empty() ? std::string() : " (" + model.source + ")") + note);
     }
     m.deviationMm[q] /= m.samples[q];
   }
@@ -307,8 +307,11 @@ bool isDiameterType(const std::string& type) {
 
 }  // namespace
 
-Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model,
-                                const DmisOptions& options) {
+namespace {
+
+/// dmisReportFromText; *bySerial tells whether PARTSN named the part (else FILNAM or the file name).
+Measurements dmisMeasurements(std::string_view text, const std::string& source, const Model& model,
+                              const DmisOptions& options, bool* bySerial) {
   const auto statements = dmisStatements(text, source);
   // Dimensions by upper-case DMIS label.
   std::map<std::string, std::size_t> byLabel;
@@ -317,6 +320,7 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
 
   double unit = 1.0;  // mm per file unit
   std::string part = baseName(source);
+  std::string serial;  // PARTSN/'serial': the workpiece's serial number, the best part name
   std::map<std::size_t, DmisTolerance> tol, ta;  // T(label), TA(label)
   std::map<std::size_t, DmisFeature> nominalF, actualF;
   std::map<std::pair<std::string, std::size_t>, long> firstLine;
@@ -337,11 +341,11 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
           unit = 304.8;
         else
           throw ParseError(ErrorContext{source, s.line, 0, "UNITS"}, "unknown length unit '" + u + "'");
-      } else if (s.major == "FILNAM" && !s.minor.empty()) {
+      } else if ((s.major == "FILNAM" || s.major == "PARTSN") && !s.minor.empty()) {
         std::string name = s.minor[0];
         if (name.size() >= 2 && name.front() == '\'' && name.back() == '\'')
           name = name.substr(1, name.size() - 2);
-        if (!name.empty()) part = name;
+        if (!name.empty()) (s.major == "PARTSN" ? serial : part) = name;
       }
       continue;
     }
@@ -426,6 +430,8 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
     }
   }
 
+  if (!serial.empty()) part = serial;
+  if (bySerial != nullptr) *bySerial = !serial.empty();
   Measurements m;
   m.sources.push_back(source);
   addPart(m, part);
@@ -515,8 +521,16 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
                           "feature actual without its nominal F(" + d.dmisLabel() +
                               ") and without a tolerance actual TA(" + d.dmisLabel() + ")");
   }
-  finish(m, model, source);
+  finish(m, model, source,
+         "; each DMIS file is one part (here '" + part + "') and must measure every dimension");
   return m;
+}
+
+}  // namespace
+
+Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model,
+                                const DmisOptions& options) {
+  return dmisMeasurements(text, source, model, options, nullptr);
 }
 
 Measurements readDmisReport(const std::string& path, const Model& model, const DmisOptions& options) {
@@ -667,18 +681,49 @@ Measurements mergeMeasurements(const std::vector<Measurements>& sets, const Mode
   return out;
 }
 
+namespace {
+
+/// A series of DMIS files, one part each: FILNAM usually names the inspection program, the same in
+/// every file of the series. The files without PARTSN that name the same part are named by their file
+/// instead (the base name, the path when base names repeat): part k = file k. The same file given
+/// twice keeps its name, and mergeMeasurements reports the part measured twice.
+void nameDmisSeriesParts(std::vector<Measurements>& sets, const std::vector<std::size_t>& unnamed) {
+  std::map<std::string, int> count, baseCount;
+  std::map<std::string, int> sourceCount;
+  for (std::size_t i : unnamed) {
+    ++count[sets[i].parts.front()];
+    ++baseCount[baseName(sets[i].sources.front())];
+    ++sourceCount[sets[i].sources.front()];
+  }
+  for (std::size_t i : unnamed) {
+    Measurements& m = sets[i];
+    const std::string& source = m.sources.front();
+    if (count[m.parts.front()] < 2 || sourceCount[source] > 1) continue;
+    const std::string part = baseCount[baseName(source)] > 1 ? source : baseName(source);
+    m.parts.assign(1, part);
+    for (auto& r : m.rows) r.part = part;
+  }
+}
+
+}  // namespace
+
 Measurements readMeasurements(const std::vector<std::string>& paths, const Model& model,
                               const CsvReadOptions& csv, const DmisOptions& dmis) {
   std::vector<Measurements> sets;
+  // DMIS files named by FILNAM or their file name (not by PARTSN), by index into sets.
+  std::vector<std::size_t> unnamedDmis;
   for (const auto& p : paths) {
     const std::string text = readFile(p, 256u << 20);
-    if (looksLikeDmis(text))
-      sets.push_back(dmisReportFromText(text, displayPath(p), model, dmis));
-    else if (looksLikeCmmTextReport(text))
+    bool bySerial = false;
+    if (looksLikeDmis(text)) {
+      sets.push_back(dmisMeasurements(text, displayPath(p), model, dmis, &bySerial));
+      if (!bySerial) unnamedDmis.push_back(sets.size() - 1);
+    } else if (looksLikeCmmTextReport(text))
       sets.push_back(cmmTextReportMeasurements(cmmTextReportFromText(text, displayPath(p)), model));
     else
       sets.push_back(cmmReportFromCsv(parseCsv(text, displayPath(p), csv), model));
   }
+  nameDmisSeriesParts(sets, unnamedDmis);
   return mergeMeasurements(sets, model);
 }
 

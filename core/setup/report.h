@@ -17,6 +17,7 @@
 //      other statement (DMISMN, MODE, SNSET, MEAS, GOTO, OUTPUT, ...) is skipped;
 //    * UNITS/MM|CM|INCH|FEET,...   the length unit of the following numbers (converted to mm);
 //    * FILNAM/'name'               names the part (default: the file name);
+//    * PARTSN/'serial'             the workpiece's serial number; names the part (before FILNAM);
 //    * F(label)=FEAT/type,[INNER|OUTER,]CART,x,y,z,...    nominal feature (type: POINT, PLANE,
 //      CIRCLE, SPHERE, CYLNDR, ...; any type whose first three numbers after CART are the position;
 //      CIRCLE and CYLNDR carry the diameter as the 7th number after CART, SPHERE as the 4th);
@@ -43,7 +44,13 @@
 //         such a word the deviation must not lie more than 10 tolerance widths outside the band
 //         (else a ValidationError naming TA(label) says which reading to try instead).
 //    Labels that name no dimension are skipped (DMIS files carry datums and other features); a
-//    dimension found in neither form is an error. POL coordinates are an error.
+//    dimension found in neither form is an error naming the file, the dimension and the part (each
+//    DMIS file is one part and measures every dimension). POL coordinates are an error.
+//    Several DMIS files, one per measured workpiece, are a series of parts like the CSV's: part k is
+//    file k, named by its PARTSN, else its FILNAM, else its file name; files without PARTSN whose
+//    FILNAM repeats (the program's name, the same in every file) are named by their file name (the
+//    path when base names repeat). The deviation of a dimension is the mean over the files, as over
+//    the parts of a CSV series (readMeasurements).
 //
 // 3. CMM text reports (core/io/cmm_text_report.h, docs/file-formats.md#cmm-text-reports): OGP step
 //    reports (.RTN printouts, plain or RTF), OGP summary reports (one part per run) and PC-DMIS

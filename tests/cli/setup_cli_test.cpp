@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/cli_runner.h"
+#include "core/common/numformat.h"
 #include "core/io/csv.h"
 #include "core/io/json_util.h"
 #include "testsupport.h"
@@ -391,6 +392,74 @@ TEST(SetupCli, ValidateRunsTheSeedsStatisticalValidation) {
   bad = cli("setup --model " + demo("paper_example.json"), tmp);
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("--data is required"), std::string::npos) << bad.err;
+}
+
+/// The demo's CSV series (3 parts x 28 dimensions of the paper example) copied to `series.csv` and
+/// written as one DMIS output file per part (part1.dmo ...), from the DMIS statement syntax: even rows
+/// as nominal / actual points (F / FA along Z), odd rows as T / TA = TOL/DISTB with the deviation.
+/// Every file has the same FILNAM, as an inspection program writes them. `skip` leaves that dimension
+/// out of part 2.
+void writePaperSeries(const test::TempDir& tmp, const std::string& skip = {}) {
+  const std::string csvPath = (test::sourceDir() / "resources/demo/setup/paper_example_report.csv").string();
+  test::writeText(tmp.file("series.csv"), test::readText(csvPath));
+  const CsvTable t = readCsvFile(csvPath);
+  std::map<std::string, std::string> files;
+  for (std::size_t r = 0; r < t.rowCount(); ++r) {
+    const std::string part = t.cell(r, t.requireColumn("part"));
+    const std::string dim = t.cell(r, t.requireColumn("dimension"));
+    const std::string nominal = t.cell(r, t.requireColumn("nominal_mm"));
+    const std::string measured = t.cell(r, t.requireColumn("measured_mm"));
+    std::string& f = files[part];
+    if (f.empty()) f = "DMISMN/'guide pins',05.3\nFILNAM/'GUIDE-PINS',05.3\nUNITS/MM,ANGDEC\n";
+    if (part == "2" && dim == skip) continue;
+    if (r % 2 == 0) {
+      f += "F(" + dim + ")=FEAT/POINT,CART,0,0," + nominal + ",0,0,1\n";
+      f += "FA(" + dim + ")=FEAT/POINT,CART,0,0," + measured + ",0,0,1\n";
+    } else {
+      f += "T(" + dim + ")=TOL/DISTB,NOMINL," + nominal + "," + t.cell(r, t.requireColumn("lower_tol_mm")) +
+           "," + t.cell(r, t.requireColumn("upper_tol_mm")) + "\n";
+      f += "TA(" + dim + ")=TOL/DISTB," + num::general(test::cnumber(measured) - test::cnumber(nominal), 17) +
+           "\n";
+    }
+  }
+  for (const auto& [part, text] : files) test::writeText(tmp.file("part" + part + ".dmo"), text + "ENDFIL\n");
+}
+
+TEST(SetupCli, DmisFilesOfOnePartEachAreASeriesLikeTheCsv) {
+  test::TempDir tmp;
+  writePaperSeries(tmp);
+  const std::string model = demo("paper_example.json");
+  const CliRun fromCsv = cli("setup --model " + model + " --data series.csv --out csv.json", tmp);
+  ASSERT_EQ(fromCsv.code, 0) << fromCsv.err;
+  const CliRun fromDmis = cli(
+      "setup --model " + model + " --data part1.dmo --data part2.dmo --data part3.dmo --out dmis.json", tmp);
+  ASSERT_EQ(fromDmis.code, 0) << fromDmis.err;
+  EXPECT_NE(fromDmis.err.find("28 dimensions of 3 parts"), std::string::npos) << fromDmis.err;
+  const nlohmann::json a = readJsonFile(tmp.file("csv.json")), b = readJsonFile(tmp.file("dmis.json"));
+  ASSERT_EQ(a["corrections_mm"].size(), b["corrections_mm"].size());
+  for (const auto& [id, v] : a["corrections_mm"].items())
+    EXPECT_NEAR(v.get<double>(), b["corrections_mm"][id].get<double>(), 1e-12) << id;
+  for (const char* key : {"f1_mm", "f2_mm", "f", "f1_before_mm"})
+    EXPECT_NEAR(a[key].get<double>(), b[key].get<double>(), 1e-12) << key;
+  ASSERT_EQ(a["dimensions"].size(), b["dimensions"].size());
+  EXPECT_EQ(a["dimensions"], b["dimensions"]);
+}
+
+TEST(SetupCli, DmisSeriesFileMissingADimensionExits2NamingFileAndDimension) {
+  test::TempDir tmp;
+  writePaperSeries(tmp, "P2.D1");
+  const CliRun r = cli("setup --model " + demo("paper_example.json") +
+                           " --data part1.dmo --data part2.dmo --data part3.dmo --out dmis.json",
+                       tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("part2.dmo: field 'dimension': the report has no measurement of dimension 'P2.D1'"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("each DMIS file is one part (here 'GUIDE-PINS') and must measure every dimension"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("dmis.json")));
 }
 
 }  // namespace

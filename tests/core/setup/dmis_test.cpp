@@ -4,7 +4,14 @@
 // OUTPUT, ENDFIL), not from Metrofit's own writer; expected deviations are worked out by hand below.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "core/common/error.h"
+#include "core/common/numformat.h"
+#include "core/io/csv.h"
+#include "core/io/file_io.h"
+#include "core/setup/exact.h"
+#include "core/setup/objective.h"
 #include "core/setup/report.h"
 #include "setup_fixtures.h"
 #include "testsupport.h"
@@ -156,6 +163,93 @@ TEST(Dmis, ToleranceActualFarOutsideTheBandNamesTheLabel) {
   EXPECT_NE(dmisError("DMISMN/'x',05.3\nTA(POS_D1)=TOL/CORTOL,ZAXIS,0.43\n" + d2)
                 .find("out.dmi:2: field 'TA(POS_D1)': the tolerance actual 0.43 read as a deviation"),
             std::string::npos);
+}
+
+/// The paper example's CSV series (3 parts x 28 dimensions) written as one DMIS output file per part:
+/// even dimensions as nominal and actual points (F / FA along Z), odd ones as a tolerance definition
+/// and its actual, the deviation (T / TA = TOL/DISTB). Every file has the same FILNAM (the program),
+/// as CMMs write them; `serials` adds PARTSN/'S<part>'. Returns the file paths in part order.
+std::vector<std::string> paperSeriesAsDmis(const metrofit::test::TempDir& tmp, const Model& model,
+                                           bool serials, const std::string& skipInPart2 = {}) {
+  const CsvTable t = readCsvFile(test::paperReportPath());
+  std::map<std::string, std::string> files;
+  std::vector<std::string> order;
+  for (std::size_t r = 0; r < t.rowCount(); ++r) {
+    const std::string part = t.cell(r, t.requireColumn("part"));
+    const std::string dim = t.cell(r, t.requireColumn("dimension"));
+    if (!files.count(part)) {
+      order.push_back(part);
+      files[part] = "DMISMN/'paper example inspection',05.3\nFILNAM/'PAPER-EXAMPLE',05.3\n" +
+                    (serials ? "PARTSN/'S" + part + "'\n" : std::string()) +
+                    "UNITS/MM,ANGDEC\nF(DATUM_A)=FEAT/PLANE,CART,0,0,0,0,0,1\n";
+    }
+    if (part == "2" && dim == skipInPart2) continue;
+    const double nominal = t.number(r, t.requireColumn("nominal_mm"));
+    const double measured = t.number(r, t.requireColumn("measured_mm"));
+    const int q = model.dimensionIndex(dim);
+    EXPECT_GE(q, 0) << dim;
+    if (q < 0) continue;
+    std::string& f = files[part];
+    if (q % 2 == 0) {
+      f += "F(" + dim + ")=FEAT/POINT,CART,10,20," + num::general(nominal, 17) + ",0,0,1\n";
+      f += "FA(" + dim + ")=FEAT/POINT,CART,10.002,19.999," + num::general(measured, 17) + ",0,0,1\n";
+    } else {
+      const Dimension& d = model.dimensions[static_cast<std::size_t>(q)];
+      f += "T(" + dim + ")=TOL/DISTB,NOMINL," + num::general(nominal, 17) + "," + num::general(d.lower, 17) +
+           "," + num::general(d.upper, 17) + "\n";
+      f += "TA(" + dim + ")=TOL/DISTB," + num::general(measured - nominal, 17) + "\n";
+    }
+  }
+  std::vector<std::string> paths;
+  for (const std::string& part : order) {
+    paths.push_back(tmp.file("part" + part + ".dmo"));
+    metrofit::test::writeText(paths.back(), files[part] + "ENDFIL\n");
+  }
+  return paths;
+}
+
+TEST(DmisSeries, OneFilePerPartEqualsTheCsvSeries) {
+  const Model model = readModel(test::paperModelPath());
+  metrofit::test::TempDir tmp;
+  const std::vector<std::string> paths = paperSeriesAsDmis(tmp, model, false);
+  const Measurements csv = readMeasurements({test::paperReportPath()}, model);
+  const Measurements dmis = readMeasurements(paths, model);
+  // The same FILNAM in every file: part k is file k.
+  EXPECT_EQ(dmis.parts, (std::vector<std::string>{"part1.dmo", "part2.dmo", "part3.dmo"}));
+  EXPECT_EQ(csv.parts.size(), 3u);
+  ASSERT_EQ(dmis.deviationMm.size(), csv.deviationMm.size());
+  for (std::size_t q = 0; q < csv.deviationMm.size(); ++q) {
+    EXPECT_TRUE(near(dmis.deviationMm[q], csv.deviationMm[q], 1e-12)) << model.dimensions[q].id;
+    EXPECT_EQ(dmis.samples[q], 3) << model.dimensions[q].id;
+  }
+  // The setup study gives the same corrections.
+  const ExactResult a = solveExact(SetupInstance(model, csv)), b = solveExact(SetupInstance(model, dmis));
+  ASSERT_EQ(a.x.size(), b.x.size());
+  for (std::size_t i = 0; i < a.x.size(); ++i) EXPECT_TRUE(near(a.x[i], b.x[i], 1e-12)) << i;
+  EXPECT_TRUE(near(a.score.f1, b.score.f1, 1e-12));
+  // PARTSN names the part.
+  metrofit::test::TempDir tmp2;
+  const Measurements serial = readMeasurements(paperSeriesAsDmis(tmp2, model, true), model);
+  EXPECT_EQ(serial.parts, (std::vector<std::string>{"S1", "S2", "S3"}));
+}
+
+TEST(DmisSeries, ADimensionMissingInOneFileNamesTheFileAndTheDimension) {
+  const Model model = readModel(test::paperModelPath());
+  metrofit::test::TempDir tmp;
+  const std::vector<std::string> paths = paperSeriesAsDmis(tmp, model, false, "P2.D1");
+  try {
+    (void)readMeasurements(paths, model);
+    FAIL() << "no error";
+  } catch (const ValidationError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_EQ(what, displayPath(paths[1]) +
+                        ": field 'dimension': the report has no measurement of dimension 'P2.D1' of the "
+                        "model (" +
+                        model.source +
+                        "); each DMIS file is one part (here 'PAPER-EXAMPLE') "
+                        "and must measure every dimension");
+  }
 }
 
 }  // namespace
