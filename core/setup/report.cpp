@@ -42,8 +42,9 @@ std::string baseName(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-/// Fills deviationMm / samples from rows; every dimension needs a row.
-void finish(Measurements& m, const Model& model, const std::string& source, const std::string& note = {}) {
+/// Fills deviationMm / samples from rows; every dimension needs a row unless `requireEvery` is false
+/// (one file of a DMIS series: the series as a whole must measure every dimension, readMeasurements).
+void finish(Measurements& m, const Model& model, const std::string& source, bool requireEvery = true) {
   const std::size_t n = model.dimensions.size();
   m.deviationMm.assign(n, 0.0);
   m.samples.assign(n, 0);
@@ -52,13 +53,14 @@ void finish(Measurements& m, const Model& model, const std::string& source, cons
     ++m.samples[r.dimension];
   }
   for (std::size_t q = 0; q < n; ++q) {
+    if (m.samples[q] == 0 && !requireEvery) continue;
     if (m.samples[q] == 0) {
       const Dimension& d = model.dimensions[q];
       const std::string name =
           "'" + d.id + "'" + (d.dmisLabel() != d.id ? " (label '" + d.dmisLabel() + "')" : std::string());
       throw ValidationError(ErrorContext{source, 0, 0, "dimension"},
                             "the report has no measurement of dimension " + name + " of the model" +
-                                (model.source.empty() ? std::string() : " (" + model.source + ")") + note);
+                                (model.source.empty() ? std::string() : " (" + model.source + ")"));
     }
     m.deviationMm[q] /= m.samples[q];
   }
@@ -310,8 +312,10 @@ bool isDiameterType(const std::string& type) {
 namespace {
 
 /// dmisReportFromText; *bySerial tells whether PARTSN named the part (else FILNAM or the file name).
+/// `requireEvery`: the file must measure every dimension of the model (a single file); one file of a
+/// series may measure any of them, but at least one.
 Measurements dmisMeasurements(std::string_view text, const std::string& source, const Model& model,
-                              const DmisOptions& options, bool* bySerial) {
+                              const DmisOptions& options, bool* bySerial, bool requireEvery) {
   const auto statements = dmisStatements(text, source);
   // Dimensions by upper-case DMIS label.
   std::map<std::string, std::size_t> byLabel;
@@ -521,8 +525,13 @@ Measurements dmisMeasurements(std::string_view text, const std::string& source, 
                           "feature actual without its nominal F(" + d.dmisLabel() +
                               ") and without a tolerance actual TA(" + d.dmisLabel() + ")");
   }
-  finish(m, model, source,
-         "; each DMIS file is one part (here '" + part + "') and must measure every dimension");
+  if (!requireEvery && m.rows.empty()) {
+    throw ValidationError(ErrorContext{source, 0, 0, "dimension"},
+                          "the file measures no dimension of the model" +
+                              (model.source.empty() ? std::string() : " (" + model.source + ")") +
+                              " (no F/FA or TA statement whose label is a dimension's label)");
+  }
+  finish(m, model, source, requireEvery);
   return m;
 }
 
@@ -530,7 +539,7 @@ Measurements dmisMeasurements(std::string_view text, const std::string& source, 
 
 Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model,
                                 const DmisOptions& options) {
-  return dmisMeasurements(text, source, model, options, nullptr);
+  return dmisMeasurements(text, source, model, options, nullptr, true);
 }
 
 Measurements readDmisReport(const std::string& path, const Model& model, const DmisOptions& options) {
@@ -712,11 +721,13 @@ Measurements readMeasurements(const std::vector<std::string>& paths, const Model
   std::vector<Measurements> sets;
   // DMIS files named by FILNAM or their file name (not by PARTSN), by index into sets.
   std::vector<std::size_t> unnamedDmis;
+  // One DMIS file alone must measure every dimension; in a series each file may measure any of them.
+  const bool series = paths.size() > 1;
   for (const auto& p : paths) {
     const std::string text = readFile(p, 256u << 20);
     bool bySerial = false;
     if (looksLikeDmis(text)) {
-      sets.push_back(dmisMeasurements(text, displayPath(p), model, dmis, &bySerial));
+      sets.push_back(dmisMeasurements(text, displayPath(p), model, dmis, &bySerial, !series));
       if (!bySerial) unnamedDmis.push_back(sets.size() - 1);
     } else if (looksLikeCmmTextReport(text))
       sets.push_back(cmmTextReportMeasurements(cmmTextReportFromText(text, displayPath(p)), model));
@@ -724,6 +735,25 @@ Measurements readMeasurements(const std::vector<std::string>& paths, const Model
       sets.push_back(cmmReportFromCsv(parseCsv(text, displayPath(p), csv), model));
   }
   nameDmisSeriesParts(sets, unnamedDmis);
+  // Coverage over the whole series, as in a CSV series: a dimension that no file measures is the
+  // error, naming the dimension and the files read (the other readers require every dimension of
+  // each file, so only a series of DMIS files can miss one here).
+  if (series) {
+    std::vector<bool> measured(model.dimensions.size(), false);
+    for (const auto& s : sets)
+      for (const auto& r : s.rows) measured[r.dimension] = true;
+    for (std::size_t q = 0; q < measured.size(); ++q) {
+      if (measured[q]) continue;
+      const Dimension& d = model.dimensions[q];
+      std::string files;
+      for (const auto& p : paths) files += (files.empty() ? "" : ", ") + displayPath(p);
+      throw ValidationError(
+          ErrorContext{{}, 0, 0, "dimension"},
+          "no file of the series measures dimension '" + d.id + "'" +
+              (d.dmisLabel() != d.id ? " (label '" + d.dmisLabel() + "')" : std::string()) + " of the model" +
+              (model.source.empty() ? std::string() : " (" + model.source + ")") + "; files read: " + files);
+    }
+  }
   return mergeMeasurements(sets, model);
 }
 
