@@ -42,8 +42,9 @@ std::string baseName(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-/// Fills deviationMm / samples from rows; every dimension needs a row.
-void finish(Measurements& m, const Model& model, const std::string& source) {
+/// Fills deviationMm / samples from rows; every dimension needs a row unless `requireEvery` is false
+/// (one file of a DMIS series: the series as a whole must measure every dimension, readMeasurements).
+void finish(Measurements& m, const Model& model, const std::string& source, bool requireEvery = true) {
   const std::size_t n = model.dimensions.size();
   m.deviationMm.assign(n, 0.0);
   m.samples.assign(n, 0);
@@ -52,6 +53,7 @@ void finish(Measurements& m, const Model& model, const std::string& source) {
     ++m.samples[r.dimension];
   }
   for (std::size_t q = 0; q < n; ++q) {
+    if (m.samples[q] == 0 && !requireEvery) continue;
     if (m.samples[q] == 0) {
       const Dimension& d = model.dimensions[q];
       const std::string name =
@@ -307,8 +309,13 @@ bool isDiameterType(const std::string& type) {
 
 }  // namespace
 
-Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model,
-                                const DmisOptions& options) {
+namespace {
+
+/// dmisReportFromText; *bySerial tells whether PARTSN named the part (else FILNAM or the file name).
+/// `requireEvery`: the file must measure every dimension of the model (a single file); one file of a
+/// series may measure any of them, but at least one.
+Measurements dmisMeasurements(std::string_view text, const std::string& source, const Model& model,
+                              const DmisOptions& options, bool* bySerial, bool requireEvery) {
   const auto statements = dmisStatements(text, source);
   // Dimensions by upper-case DMIS label.
   std::map<std::string, std::size_t> byLabel;
@@ -317,6 +324,7 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
 
   double unit = 1.0;  // mm per file unit
   std::string part = baseName(source);
+  std::string serial;  // PARTSN/'serial': the workpiece's serial number, the best part name
   std::map<std::size_t, DmisTolerance> tol, ta;  // T(label), TA(label)
   std::map<std::size_t, DmisFeature> nominalF, actualF;
   std::map<std::pair<std::string, std::size_t>, long> firstLine;
@@ -337,11 +345,11 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
           unit = 304.8;
         else
           throw ParseError(ErrorContext{source, s.line, 0, "UNITS"}, "unknown length unit '" + u + "'");
-      } else if (s.major == "FILNAM" && !s.minor.empty()) {
+      } else if ((s.major == "FILNAM" || s.major == "PARTSN") && !s.minor.empty()) {
         std::string name = s.minor[0];
         if (name.size() >= 2 && name.front() == '\'' && name.back() == '\'')
           name = name.substr(1, name.size() - 2);
-        if (!name.empty()) part = name;
+        if (!name.empty()) (s.major == "PARTSN" ? serial : part) = name;
       }
       continue;
     }
@@ -426,6 +434,8 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
     }
   }
 
+  if (!serial.empty()) part = serial;
+  if (bySerial != nullptr) *bySerial = !serial.empty();
   Measurements m;
   m.sources.push_back(source);
   addPart(m, part);
@@ -515,8 +525,21 @@ Measurements dmisReportFromText(std::string_view text, const std::string& source
                           "feature actual without its nominal F(" + d.dmisLabel() +
                               ") and without a tolerance actual TA(" + d.dmisLabel() + ")");
   }
-  finish(m, model, source);
+  if (!requireEvery && m.rows.empty()) {
+    throw ValidationError(ErrorContext{source, 0, 0, "dimension"},
+                          "the file measures no dimension of the model" +
+                              (model.source.empty() ? std::string() : " (" + model.source + ")") +
+                              " (no F/FA or TA statement whose label is a dimension's label)");
+  }
+  finish(m, model, source, requireEvery);
   return m;
+}
+
+}  // namespace
+
+Measurements dmisReportFromText(std::string_view text, const std::string& source, const Model& model,
+                                const DmisOptions& options) {
+  return dmisMeasurements(text, source, model, options, nullptr, true);
 }
 
 Measurements readDmisReport(const std::string& path, const Model& model, const DmisOptions& options) {
@@ -667,17 +690,69 @@ Measurements mergeMeasurements(const std::vector<Measurements>& sets, const Mode
   return out;
 }
 
+namespace {
+
+/// A series of DMIS files, one part each: FILNAM usually names the inspection program, the same in
+/// every file of the series. The files without PARTSN that name the same part are named by their file
+/// instead (the base name, the path when base names repeat): part k = file k. The same file given
+/// twice keeps its name, and mergeMeasurements reports the part measured twice.
+void nameDmisSeriesParts(std::vector<Measurements>& sets, const std::vector<std::size_t>& unnamed) {
+  std::map<std::string, int> count, baseCount;
+  std::map<std::string, int> sourceCount;
+  for (std::size_t i : unnamed) {
+    ++count[sets[i].parts.front()];
+    ++baseCount[baseName(sets[i].sources.front())];
+    ++sourceCount[sets[i].sources.front()];
+  }
+  for (std::size_t i : unnamed) {
+    Measurements& m = sets[i];
+    const std::string& source = m.sources.front();
+    if (count[m.parts.front()] < 2 || sourceCount[source] > 1) continue;
+    const std::string part = baseCount[baseName(source)] > 1 ? source : baseName(source);
+    m.parts.assign(1, part);
+    for (auto& r : m.rows) r.part = part;
+  }
+}
+
+}  // namespace
+
 Measurements readMeasurements(const std::vector<std::string>& paths, const Model& model,
                               const CsvReadOptions& csv, const DmisOptions& dmis) {
   std::vector<Measurements> sets;
+  // DMIS files named by FILNAM or their file name (not by PARTSN), by index into sets.
+  std::vector<std::size_t> unnamedDmis;
+  // One DMIS file alone must measure every dimension; in a series each file may measure any of them.
+  const bool series = paths.size() > 1;
   for (const auto& p : paths) {
     const std::string text = readFile(p, 256u << 20);
-    if (looksLikeDmis(text))
-      sets.push_back(dmisReportFromText(text, displayPath(p), model, dmis));
-    else if (looksLikeCmmTextReport(text))
+    bool bySerial = false;
+    if (looksLikeDmis(text)) {
+      sets.push_back(dmisMeasurements(text, displayPath(p), model, dmis, &bySerial, !series));
+      if (!bySerial) unnamedDmis.push_back(sets.size() - 1);
+    } else if (looksLikeCmmTextReport(text))
       sets.push_back(cmmTextReportMeasurements(cmmTextReportFromText(text, displayPath(p)), model));
     else
       sets.push_back(cmmReportFromCsv(parseCsv(text, displayPath(p), csv), model));
+  }
+  nameDmisSeriesParts(sets, unnamedDmis);
+  // Coverage over the whole series, as in a CSV series: a dimension that no file measures is the
+  // error, naming the dimension and the files read (the other readers require every dimension of
+  // each file, so only a series of DMIS files can miss one here).
+  if (series) {
+    std::vector<bool> measured(model.dimensions.size(), false);
+    for (const auto& s : sets)
+      for (const auto& r : s.rows) measured[r.dimension] = true;
+    for (std::size_t q = 0; q < measured.size(); ++q) {
+      if (measured[q]) continue;
+      const Dimension& d = model.dimensions[q];
+      std::string files;
+      for (const auto& p : paths) files += (files.empty() ? "" : ", ") + displayPath(p);
+      throw ValidationError(
+          ErrorContext{{}, 0, 0, "dimension"},
+          "no file of the series measures dimension '" + d.id + "'" +
+              (d.dmisLabel() != d.id ? " (label '" + d.dmisLabel() + "')" : std::string()) + " of the model" +
+              (model.source.empty() ? std::string() : " (" + model.source + ")") + "; files read: " + files);
+    }
   }
   return mergeMeasurements(sets, model);
 }

@@ -17,6 +17,7 @@
 //      other statement (DMISMN, MODE, SNSET, MEAS, GOTO, OUTPUT, ...) is skipped;
 //    * UNITS/MM|CM|INCH|FEET,...   the length unit of the following numbers (converted to mm);
 //    * FILNAM/'name'               names the part (default: the file name);
+//    * PARTSN/'serial'             the workpiece's serial number; names the part (before FILNAM);
 //    * F(label)=FEAT/type,[INNER|OUTER,]CART,x,y,z,...    nominal feature (type: POINT, PLANE,
 //      CIRCLE, SPHERE, CYLNDR, ...; any type whose first three numbers after CART are the position;
 //      CIRCLE and CYLNDR carry the diameter as the 7th number after CART, SPHERE as the 4th);
@@ -43,7 +44,18 @@
 //         such a word the deviation must not lie more than 10 tolerance widths outside the band
 //         (else a ValidationError naming TA(label) says which reading to try instead).
 //    Labels that name no dimension are skipped (DMIS files carry datums and other features); a
-//    dimension found in neither form is an error. POL coordinates are an error.
+//    dimension found in neither form is an error (dmisReportFromText, or a single file given to
+//    readMeasurements). POL coordinates are an error.
+//    Several DMIS files, one per measured workpiece, are a series of parts like the CSV's
+//    (readMeasurements): each file is a part, named by its PARTSN, else its FILNAM, else its file name;
+//    files without PARTSN whose FILNAM repeats (the program's name, the same in every file) are named
+//    by their file name (the path when base names repeat); files with the same PARTSN are one part, as
+//    the CSV's rows with the same part. Like a part of a CSV series, each file may measure any of the
+//    model's dimensions (on a multi-part fixture, only those of its workpiece), at least one; a
+//    dimension measured by no file of the series is an error naming the dimension and the files read,
+//    and a dimension measured twice within one file (or one part) is an error naming the file. The
+//    deviation of a dimension is the mean over the files that measure it, as over the rows of a CSV
+//    series, so the DMIS files and the CSV series with the same rows give the same result.
 //
 // 3. CMM text reports (core/io/cmm_text_report.h, docs/file-formats.md#cmm-text-reports): OGP step
 //    reports (.RTN printouts, plain or RTF), OGP summary reports (one part per run) and PC-DMIS

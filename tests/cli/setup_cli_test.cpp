@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/cli_runner.h"
+#include "core/common/numformat.h"
 #include "core/io/csv.h"
 #include "core/io/json_util.h"
 #include "testsupport.h"
@@ -391,6 +392,120 @@ TEST(SetupCli, ValidateRunsTheSeedsStatisticalValidation) {
   bad = cli("setup --model " + demo("paper_example.json"), tmp);
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("--data is required"), std::string::npos) << bad.err;
+}
+
+/// The demo's CSV series (3 parts x 28 dimensions of the paper example, fixture positions P1..P4)
+/// copied to `series.csv` and written as DMIS output files, from the DMIS statement syntax: even rows
+/// as nominal / actual points (F / FA along Z), odd rows as T / TA = TOL/DISTB with the deviation.
+/// Every file has the same FILNAM, as an inspection program writes them. `perPosition`: one file per
+/// fixture position per measured part (part<k>_P<j>.dmo, 12 files, each with only P<j>.D*, and
+/// PARTSN/'<k>'), else one per part (part<k>.dmo). Rows whose dimension is `skip` (and, when
+/// `skipPart` is set, whose part is `skipPart`) are left out. Returns the --data arguments.
+std::string writePaperSeries(const test::TempDir& tmp, bool perPosition, const std::string& skip = {},
+                             const std::string& skipPart = {}) {
+  const std::string csvPath = (test::sourceDir() / "resources/demo/setup/paper_example_report.csv").string();
+  test::writeText(tmp.file("series.csv"), test::readText(csvPath));
+  const CsvTable t = readCsvFile(csvPath);
+  std::map<std::string, std::string> files;
+  std::vector<std::string> order;
+  for (std::size_t r = 0; r < t.rowCount(); ++r) {
+    const std::string part = t.cell(r, t.requireColumn("part"));
+    const std::string dim = t.cell(r, t.requireColumn("dimension"));
+    const std::string nominal = t.cell(r, t.requireColumn("nominal_mm"));
+    const std::string measured = t.cell(r, t.requireColumn("measured_mm"));
+    const std::string name =
+        "part" + part + (perPosition ? "_" + dim.substr(0, dim.find('.')) : std::string()) + ".dmo";
+    std::string& f = files[name];
+    if (f.empty()) {
+      order.push_back(name);
+      f = "DMISMN/'guide pins',05.3\nFILNAM/'GUIDE-PINS',05.3\n" +
+          (perPosition ? "PARTSN/'" + part + "'\n" : std::string()) + "UNITS/MM,ANGDEC\n";
+    }
+    if (dim == skip && (skipPart.empty() || part == skipPart)) continue;
+    if (r % 2 == 0) {
+      f += "F(" + dim + ")=FEAT/POINT,CART,0,0," + nominal + ",0,0,1\n";
+      f += "FA(" + dim + ")=FEAT/POINT,CART,0,0," + measured + ",0,0,1\n";
+    } else {
+      f += "T(" + dim + ")=TOL/DISTB,NOMINL," + nominal + "," + t.cell(r, t.requireColumn("lower_tol_mm")) +
+           "," + t.cell(r, t.requireColumn("upper_tol_mm")) + "\n";
+      f += "TA(" + dim + ")=TOL/DISTB," + num::general(test::cnumber(measured) - test::cnumber(nominal), 17) +
+           "\n";
+    }
+  }
+  std::string args;
+  for (const auto& name : order) {
+    test::writeText(tmp.file(name), files[name] + "ENDFIL\n");
+    args += " --data " + name;
+  }
+  return args;
+}
+
+/// The setup result JSON files `a` and `b` in tmp give the same corrections, scores and dimensions.
+void expectSameResult(const test::TempDir& tmp, const char* a, const char* b) {
+  const nlohmann::json x = readJsonFile(tmp.file(a)), y = readJsonFile(tmp.file(b));
+  ASSERT_EQ(x["corrections_mm"].size(), y["corrections_mm"].size());
+  for (const auto& [id, v] : x["corrections_mm"].items())
+    EXPECT_NEAR(v.get<double>(), y["corrections_mm"][id].get<double>(), 1e-12) << id;
+  for (const char* key : {"f1_mm", "f2_mm", "f", "f1_before_mm"})
+    EXPECT_NEAR(x[key].get<double>(), y[key].get<double>(), 1e-12) << key;
+  ASSERT_EQ(x["dimensions"].size(), y["dimensions"].size());
+  EXPECT_EQ(x["dimensions"], y["dimensions"]);
+}
+
+TEST(SetupCli, DmisFilesOfOnePartEachAreASeriesLikeTheCsv) {
+  test::TempDir tmp;
+  const std::string data = writePaperSeries(tmp, false);
+  const std::string model = demo("paper_example.json");
+  const CliRun fromCsv = cli("setup --model " + model + " --data series.csv --out csv.json", tmp);
+  ASSERT_EQ(fromCsv.code, 0) << fromCsv.err;
+  const CliRun fromDmis = cli("setup --model " + model + data + " --out dmis.json", tmp);
+  ASSERT_EQ(fromDmis.code, 0) << fromDmis.err;
+  EXPECT_NE(fromDmis.err.find("28 dimensions of 3 parts"), std::string::npos) << fromDmis.err;
+  expectSameResult(tmp, "csv.json", "dmis.json");
+}
+
+TEST(SetupCli, DmisFilesOfOneFixturePositionEachAreASeriesLikeTheCsv) {
+  // 3 measured fixtures x 4 positions: 12 files, each with only its workpiece's 7 dimensions.
+  test::TempDir tmp;
+  const std::string data = writePaperSeries(tmp, true);
+  const std::string model = demo("paper_example.json");
+  const CliRun fromCsv = cli("setup --model " + model + " --data series.csv --out csv.json", tmp);
+  ASSERT_EQ(fromCsv.code, 0) << fromCsv.err;
+  const CliRun fromDmis = cli("setup --model " + model + data + " --out dmis.json", tmp);
+  ASSERT_EQ(fromDmis.code, 0) << fromDmis.err;
+  EXPECT_NE(fromDmis.err.find("28 dimensions of 3 parts"), std::string::npos) << fromDmis.err;
+  expectSameResult(tmp, "csv.json", "dmis.json");
+  EXPECT_EQ(readJsonFile(tmp.file("dmis.json"))["parts"], readJsonFile(tmp.file("csv.json"))["parts"]);
+}
+
+TEST(SetupCli, DmisSeriesFileMissingADimensionMeasuredByAnotherIsAccepted) {
+  // P2.D1 left out of part 2's file: the other parts measure it, as a CSV series without that row.
+  test::TempDir tmp;
+  const std::string data = writePaperSeries(tmp, true, "P2.D1", "2");
+  std::string csv, line;
+  std::istringstream in(test::readText(tmp.file("series.csv")));
+  while (std::getline(in, line))
+    if (line.rfind("2,", 0) != 0 || line.find(",P2.D1,") == std::string::npos) csv += line + "\n";
+  test::writeText(tmp.file("series.csv"), csv);
+  const std::string model = demo("paper_example.json");
+  const CliRun fromCsv = cli("setup --model " + model + " --data series.csv --out csv.json", tmp);
+  ASSERT_EQ(fromCsv.code, 0) << fromCsv.err;
+  const CliRun fromDmis = cli("setup --model " + model + data + " --out dmis.json", tmp);
+  ASSERT_EQ(fromDmis.code, 0) << fromDmis.err;
+  expectSameResult(tmp, "csv.json", "dmis.json");
+}
+
+TEST(SetupCli, DmisSeriesDimensionMeasuredByNoFileExits2NamingTheDimensionAndTheFiles) {
+  test::TempDir tmp;
+  const std::string data = writePaperSeries(tmp, true, "P2.D1");
+  const CliRun r = cli("setup --model " + demo("paper_example.json") + data + " --out dmis.json", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("no file of the series measures dimension 'P2.D1' of the model"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("files read: part1_P1.dmo, part1_P2.dmo"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("part3_P4.dmo"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("dmis.json")));
 }
 
 }  // namespace

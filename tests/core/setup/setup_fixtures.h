@@ -32,4 +32,9 @@ inline std::string paperModelPath() {
   return (metrofit::test::sourceDir() / "resources/demo/setup/paper_example.json").string();
 }
 
+/// The paper example's CMM report series (CSV): 3 parts x 28 dimensions.
+inline std::string paperReportPath() {
+  return (metrofit::test::sourceDir() / "resources/demo/setup/paper_example_report.csv").string();
+}
+
 }  // namespace metrofit::setup::test
