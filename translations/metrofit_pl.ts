@@ -3022,7 +3022,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
     <message>
         <location line="+4"/>
         <source>best RMS (mm)</source>
-        <translation>najlepsze RMS (mm)</translation>
+        <translation>RMS (mm)</translation>
     </message>
     <message>
         <location line="+6"/>
