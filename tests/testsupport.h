@@ -52,6 +52,36 @@ inline std::filesystem::path realData(const std::string& relative) {
   if (std::filesystem::exists(beside)) return beside / relative;
   return std::filesystem::path("/work/shared/data/real") / relative;
 }
+/// Where a test cannot run (real data or a checking program absent) it skips with the reason; but
+/// when the build was configured with the real data present (METROFIT_STRICT_SKIPS, set by
+/// tests/CMakeLists.txt; CI runs packaging/install-deps.sh first, so the programs are there too), the
+/// same condition is a failure: a wrong path or a missing package must not turn a check into a
+/// silent skip.
+inline bool strictSkips() {
+  return env("METROFIT_STRICT_SKIPS") == "1";
+}
+
+/// Skips (or, under METROFIT_STRICT_SKIPS, fails) the current test when `required` does not exist.
+#define METROFIT_REQUIRE_PATH(required)                                              \
+  do {                                                                               \
+    const std::filesystem::path metrofitRequired_ = (required);                      \
+    if (!std::filesystem::exists(metrofitRequired_)) {                               \
+      if (::metrofit::test::strictSkips())                                           \
+        FAIL() << "not found: " << metrofitRequired_                                 \
+               << " (the real data folder was there when the build was configured)"; \
+      GTEST_SKIP() << "real data not here: " << metrofitRequired_;                   \
+    }                                                                                \
+  } while (0)
+
+/// Skips (or, under METROFIT_STRICT_SKIPS, fails) the current test with `why`.
+#define METROFIT_SKIP_UNLESS(condition, why)                                                      \
+  do {                                                                                            \
+    if (!(condition)) {                                                                           \
+      if (::metrofit::test::strictSkips()) FAIL() << why << " (strict: METROFIT_STRICT_SKIPS=1)"; \
+      GTEST_SKIP() << why;                                                                        \
+    }                                                                                             \
+  } while (0)
+
 inline std::filesystem::path outDir() {
   std::filesystem::path p = env("METROFIT_TEST_OUT", "test-output");
   std::filesystem::create_directories(p);

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/common/error.h"
+#include "core/io/dmis.h"
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
@@ -86,83 +87,6 @@ DatasetContent featuresContent(std::vector<FeatureTableRow> rows, std::string fo
 
 // ---- DMIS ------------------------------------------------------------------------------------
 
-struct DmisStatement {
-  long line = 0;
-  std::string kind;  ///< F, FA, T, TA (upper case) or empty
-  std::string label;
-  std::string major;
-  std::vector<std::string> minor;
-};
-
-std::vector<DmisStatement> dmisStatementsOf(std::string_view text, const std::string& source) {
-  std::vector<DmisStatement> out;
-  std::string pending;
-  long pendingLine = 0, lineNo = 0;
-  std::size_t pos = 0;
-  while (pos < text.size()) {
-    const auto nl = text.find('\n', pos);
-    std::string_view raw = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
-    pos = nl == std::string_view::npos ? text.size() : nl + 1;
-    ++lineNo;
-    bool quote = false;
-    std::size_t cut = raw.size();
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      if (raw[i] == '\'') quote = !quote;
-      if (!quote && raw[i] == '$' && i + 1 < raw.size() && raw[i + 1] == '$') {
-        cut = i;
-        break;
-      }
-    }
-    std::string line = trimmed(raw.substr(0, cut));
-    if (pending.empty()) pendingLine = lineNo;
-    if (!line.empty() && line.back() == '@') {
-      line.pop_back();
-      pending += line;
-      continue;
-    }
-    const std::string stmt = trimmed(pending + line);
-    pending.clear();
-    if (stmt.empty()) continue;
-    DmisStatement s;
-    s.line = pendingLine;
-    std::string rhs = stmt;
-    const auto eq = stmt.find('='), slash0 = stmt.find('/');
-    if (eq != std::string::npos && (slash0 == std::string::npos || eq < slash0)) {
-      const std::string lhs = trimmed(std::string_view(stmt).substr(0, eq));
-      const auto open = lhs.find('('), close = lhs.rfind(')');
-      if (open == std::string::npos || close == std::string::npos || close < open)
-        throw ParseError(ErrorContext{source, s.line, 0, {}},
-                         "expected 'KIND(label)=...', found '" + lhs + "'");
-      s.kind = upperCase(trimmed(std::string_view(lhs).substr(0, open)));
-      s.label = trimmed(std::string_view(lhs).substr(open + 1, close - open - 1));
-      rhs = trimmed(std::string_view(stmt).substr(eq + 1));
-    }
-    const auto slash = rhs.find('/');
-    s.major = upperCase(trimmed(std::string_view(rhs).substr(0, slash)));
-    if (slash != std::string::npos) {
-      std::string item;
-      for (char ch : rhs.substr(slash + 1) + ",") {
-        if (ch == ',') {
-          s.minor.push_back(trimmed(item));
-          item.clear();
-        } else {
-          item += ch;
-        }
-      }
-    }
-    out.push_back(std::move(s));
-  }
-  return out;
-}
-
-double dmisNumberAt(const DmisStatement& s, std::size_t i, const std::string& source) {
-  double v = 0.0;
-  if (i >= s.minor.size() || !parseNumber(s.minor[i], &v))
-    throw ParseError(ErrorContext{source, s.line, 0, s.kind + "(" + s.label + ")"},
-                     i >= s.minor.size() ? "missing number" : "'" + s.minor[i] + "' is not a number");
-  return v;
-}
-
 /// Position (and diameter) of a FEAT statement: the numbers after CART.
 struct DmisFeat {
   double xyz[3] = {0, 0, 0};
@@ -178,10 +102,10 @@ std::optional<DmisFeat> dmisFeat(const DmisStatement& s, double scale, const std
   const auto at = static_cast<std::size_t>(cart - s.minor.begin()) + 1;
   DmisFeat f;
   f.line = s.line;
-  for (std::size_t k = 0; k < 3; ++k) f.xyz[k] = dmisNumberAt(s, at + k, source) * scale;
-  const std::string type = upperCase(s.minor.front());
-  const std::size_t d = type == "SPHERE" ? at + 3 : (type == "CIRCLE" || type == "CYLNDR") ? at + 6 : 0;
-  if (d != 0 && d < s.minor.size()) f.diameter = dmisNumberAt(s, d, source) * scale;
+  for (std::size_t k = 0; k < 3; ++k)
+    f.xyz[k] = dmisNumber(s, at + k, source, std::string(1, "xyz"[k]) + " coordinate") * scale;
+  if (const auto d = dmisDiameterIndex(upperCase(s.minor.front())); d && at + *d < s.minor.size())
+    f.diameter = dmisNumber(s, at + *d, source, "diameter") * scale;
   return f;
 }
 
@@ -251,7 +175,7 @@ std::vector<FeatureTableRow> cmmCsvFeatureRows(const CsvTable& t) {
 }
 
 std::vector<FeatureTableRow> dmisFeatureRows(std::string_view text, const std::string& source) {
-  const std::vector<DmisStatement> statements = dmisStatementsOf(text, source);
+  const std::vector<DmisStatement> statements = dmisStatements(text, source);
   std::vector<std::string> order;  // labels (upper case) in order of first appearance
   std::map<std::string, std::string> shown;
   std::map<std::string, DmisFeat> nominal, actual;
@@ -261,17 +185,7 @@ std::vector<FeatureTableRow> dmisFeatureRows(std::string_view text, const std::s
   for (const DmisStatement& s : statements) {
     if (s.kind.empty()) {
       if (s.major == "UNITS" && !s.minor.empty()) {
-        const std::string u = upperCase(s.minor.front());
-        if (u == "MM")
-          scale = 1.0;
-        else if (u == "CM")
-          scale = 10.0;
-        else if (u == "INCH")
-          scale = 25.4;
-        else if (u == "FEET")
-          scale = 304.8;
-        else
-          throw ParseError(ErrorContext{source, s.line, 0, "UNITS"}, "unknown length unit '" + u + "'");
+        scale = dmisUnitMm(s, source);
       }
       continue;
     }
@@ -335,15 +249,16 @@ std::vector<FeatureTableRow> dmisFeatureRows(std::string_view text, const std::s
     if (def) {
       std::size_t i = cortol ? 2 : 1;
       if (i < def->minor.size() && upperCase(def->minor[i]) == "NOMINL") {
-        row.nominal = dmisNumberAt(*def, i + 1, source) * sc;
+        row.nominal = dmisNumber(*def, i + 1, source, "nominal") * sc;
         i += 2;
       }
       if (i + 1 < def->minor.size())
-        setLimits(row, dmisNumberAt(*def, i, source) * sc, dmisNumberAt(*def, i + 1, source) * sc);
+        setLimits(row, dmisNumber(*def, i, source, "lower tolerance") * sc,
+                  dmisNumber(*def, i + 1, source, "upper tolerance") * sc);
     }
     if (act) {
       const std::size_t i = cortol ? 2 : 1;
-      const double value = dmisNumberAt(*act, i, source) * sc;
+      const double value = dmisNumber(*act, i, source, "value") * sc;
       // The value is the actual when it is nearer the nominal than zero, else the deviation
       // (core/setup/report.h: DmisTaMeaning::Auto).
       if (row.nominal && std::abs(value - *row.nominal) < std::abs(value)) {

@@ -11,6 +11,7 @@
 
 #include "core/common/error.h"
 #include "core/io/csv.h"
+#include "core/io/dmis.h"
 #include "core/io/file_io.h"
 
 namespace metrofit::setup {
@@ -72,98 +73,6 @@ void addPart(Measurements& m, const std::string& part) {
 
 // ---- DMIS -------------------------------------------------------------------------------------
 
-struct Statement {
-  long line = 0;
-  std::string lhsKind;             ///< "F", "FA", "T", "TA", ... (upper case) or empty without '='
-  std::string label;               ///< inside the parentheses
-  std::string major;               ///< major word (upper case), e.g. FEAT, TOL, UNITS
-  std::vector<std::string> minor;  ///< comma separated words after '/', trimmed
-};
-
-/// Splits the text into statements (continuations joined, comments removed).
-std::vector<Statement> dmisStatements(std::string_view text, const std::string& source) {
-  std::vector<Statement> out;
-  std::string pending;
-  long pendingLine = 0;
-  long lineNo = 0;
-  std::size_t pos = 0;
-  if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
-  while (pos < text.size()) {
-    const auto nl = text.find('\n', pos);
-    std::string_view raw = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
-    pos = nl == std::string_view::npos ? text.size() : nl + 1;
-    ++lineNo;
-    // DMIS is text: a control byte (NUL, ESC, ...) means a binary file, and echoing it would break the
-    // one-line message.
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      const auto u = static_cast<unsigned char>(raw[i]);
-      if ((u < 0x20 && u != '\t' && u != '\r') || u == 0x7f) {
-        throw ParseError(ErrorContext{source, lineNo, static_cast<long>(i + 1), {}},
-                         "binary data (control byte 0x" + std::string(1, "0123456789ABCDEF"[u >> 4]) +
-                             "0123456789ABCDEF"[u & 15] + "); this is not a DMIS text file");
-      }
-    }
-    // Remove a "$$" comment (outside quotes).
-    bool inQuote = false;
-    std::size_t cut = raw.size();
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      if (raw[i] == '\'') inQuote = !inQuote;
-      if (!inQuote && raw[i] == '$' && i + 1 < raw.size() && raw[i + 1] == '$') {
-        cut = i;
-        break;
-      }
-    }
-    std::string line = trim(raw.substr(0, cut));
-    if (pending.empty()) pendingLine = lineNo;
-    if (!line.empty() && line.back() == '@') {
-      line.pop_back();
-      pending += line;
-      continue;
-    }
-    pending += line;
-    const std::string stmt = trim(pending);
-    pending.clear();
-    if (stmt.empty()) continue;
-    Statement s;
-    s.line = pendingLine;
-    std::string rhs = stmt;
-    const auto eq = stmt.find('=');
-    const auto slash0 = stmt.find('/');
-    if (eq != std::string::npos && (slash0 == std::string::npos || eq < slash0)) {
-      const std::string lhs = trim(std::string_view(stmt).substr(0, eq));
-      const auto open = lhs.find('('), close = lhs.rfind(')');
-      if (open == std::string::npos || close == std::string::npos || close < open) {
-        throw ParseError(ErrorContext{source, s.line, 0, {}},
-                         "expected 'KIND(label)=...', found '" + lhs + "'");
-      }
-      s.lhsKind = upper(trim(std::string_view(lhs).substr(0, open)));
-      s.label = trim(std::string_view(lhs).substr(open + 1, close - open - 1));
-      rhs = trim(std::string_view(stmt).substr(eq + 1));
-    }
-    const auto slash = rhs.find('/');
-    s.major = upper(trim(std::string_view(rhs).substr(0, slash)));
-    if (slash != std::string::npos) {
-      std::stringstream ss(rhs.substr(slash + 1));
-      std::string item;
-      while (std::getline(ss, item, ',')) s.minor.push_back(trim(item));
-    }
-    out.push_back(std::move(s));
-  }
-  if (!trim(pending).empty())
-    throw ParseError(ErrorContext{source, pendingLine, 0, {}},
-                     "the last statement ends in '@' (continuation) but the file ends");
-  return out;
-}
-
-double dmisNumber(const Statement& s, std::size_t i, const std::string& source, const std::string& what) {
-  const std::string field = s.lhsKind + "(" + s.label + ")";
-  if (i >= s.minor.size()) throw ParseError(ErrorContext{source, s.line, 0, field}, "missing " + what);
-  double v = 0.0;
-  if (!parseNumber(s.minor[i], &v))
-    throw ParseError(ErrorContext{source, s.line, 0, field}, what + ": '" + s.minor[i] + "' is not a number");
-  return v;
-}
-
 int axisIndex(const std::string& axis) {
   return axis == "X" ? 0 : axis == "Y" ? 1 : 2;
 }
@@ -223,19 +132,7 @@ Measurements readCmmReport(const std::string& path, const Model& model, const Cs
 }
 
 bool looksLikeDmis(std::string_view text) {
-  std::size_t pos = 0;
-  if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
-  while (pos < text.size()) {
-    const auto nl = text.find('\n', pos);
-    const std::string line =
-        trim(text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos));
-    pos = nl == std::string_view::npos ? text.size() : nl + 1;
-    if (line.empty() || line.rfind("$$", 0) == 0) continue;
-    const std::string u = upper(line);
-    // Program files start with DMISMN (DMISMD for a module); CMM output files often with FILNAM.
-    return u.rfind("DMISMN", 0) == 0 || u.rfind("DMISMD", 0) == 0 || u.rfind("FILNAM", 0) == 0;
-  }
-  return false;
+  return looksLikeDmisText(text);
 }
 
 DmisTaMeaning parseDmisTaMeaning(const std::string& text, const std::string& option) {
@@ -282,7 +179,7 @@ struct DmisTolerance {
 };
 
 /// Position of the numbers after CART in FEAT/type,[INNER|OUTER,]CART,x,y,z,...; ParseError otherwise.
-std::size_t cartIndex(const Statement& s, const std::string& source, const std::string& field) {
+std::size_t cartIndex(const DmisStatement& s, const std::string& source, const std::string& field) {
   std::size_t k = 1;
   if (k < s.minor.size() && (upper(s.minor[k]) == "INNER" || upper(s.minor[k]) == "OUTER")) ++k;
   const std::string coords = k < s.minor.size() ? upper(s.minor[k]) : std::string();
@@ -294,13 +191,6 @@ std::size_t cartIndex(const Statement& s, const std::string& source, const std::
                      "expected CART after the feature type" + std::string(k == 2 ? " and INNER/OUTER" : "") +
                          ", found '" + (k < s.minor.size() ? s.minor[k] : std::string()) + "'");
   return k + 1;
-}
-
-/// Index of the diameter among the numbers after CART, by feature type (DMIS 5.3 FEAT syntax).
-std::optional<std::size_t> diameterIndex(const std::string& type) {
-  if (type == "CIRCLE" || type == "CYLNDR") return 6;  // x,y,z,i,j,k,diam
-  if (type == "SPHERE") return 3;                      // x,y,z,diam
-  return std::nullopt;
 }
 
 bool isDiameterType(const std::string& type) {
@@ -330,21 +220,11 @@ Measurements dmisMeasurements(std::string_view text, const std::string& source, 
   std::map<std::pair<std::string, std::size_t>, long> firstLine;
   const int ax = axisIndex(model.axis);
 
-  for (const Statement& s : statements) {
-    const std::string field = s.lhsKind.empty() ? s.major : s.lhsKind + "(" + s.label + ")";
-    if (s.lhsKind.empty()) {
+  for (const DmisStatement& s : statements) {
+    const std::string field = s.kind.empty() ? s.major : s.kind + "(" + s.label + ")";
+    if (s.kind.empty()) {
       if (s.major == "UNITS") {
-        const std::string u = s.minor.empty() ? std::string() : upper(s.minor[0]);
-        if (u == "MM")
-          unit = 1.0;
-        else if (u == "CM")
-          unit = 10.0;
-        else if (u == "INCH")
-          unit = 25.4;
-        else if (u == "FEET")
-          unit = 304.8;
-        else
-          throw ParseError(ErrorContext{source, s.line, 0, "UNITS"}, "unknown length unit '" + u + "'");
+        unit = dmisUnitMm(s, source);
       } else if ((s.major == "FILNAM" || s.major == "PARTSN") && !s.minor.empty()) {
         std::string name = s.minor[0];
         if (name.size() >= 2 && name.front() == '\'' && name.back() == '\'')
@@ -357,13 +237,13 @@ Measurements dmisMeasurements(std::string_view text, const std::string& source, 
     if (lab == byLabel.end()) continue;  // a datum or another feature: not a dimension of the model
     const std::size_t q = lab->second;
     const Dimension& d = model.dimensions[q];
-    const auto dupKey = std::make_pair(s.lhsKind, q);
+    const auto dupKey = std::make_pair(s.kind, q);
     if (const auto it = firstLine.find(dupKey); it != firstLine.end()) {
       throw ValidationError(ErrorContext{source, s.line, 0, field},
-                            "duplicate " + s.lhsKind + " statement for '" + s.label + "' (first on line " +
+                            "duplicate " + s.kind + " statement for '" + s.label + "' (first on line " +
                                 std::to_string(it->second) + ")");
     }
-    if (s.lhsKind == "F" || s.lhsKind == "FA") {
+    if (s.kind == "F" || s.kind == "FA") {
       if (s.major != "FEAT") continue;
       if (s.minor.size() < 2)
         throw ParseError(ErrorContext{source, s.line, 0, field}, "expected FEAT/type,CART,x,y,z,...");
@@ -372,11 +252,11 @@ Measurements dmisMeasurements(std::string_view text, const std::string& source, 
       f.line = s.line;
       for (std::size_t k = 0; k < 3; ++k)
         f.position[k] = unit * dmisNumber(s, c + k, source, std::string(1, "xyz"[k]) + " coordinate");
-      if (const auto di = diameterIndex(upper(s.minor[0])); di && c + *di < s.minor.size())
+      if (const auto di = dmisDiameterIndex(upper(s.minor[0])); di && c + *di < s.minor.size())
         f.diameter = unit * dmisNumber(s, c + *di, source, "diameter");
       firstLine.emplace(dupKey, s.line);
-      (s.lhsKind == "F" ? nominalF : actualF)[q] = f;
-    } else if (s.lhsKind == "T" || s.lhsKind == "TA") {
+      (s.kind == "F" ? nominalF : actualF)[q] = f;
+    } else if (s.kind == "T" || s.kind == "TA") {
       if (s.major != "TOL") continue;
       if (s.minor.empty()) throw ParseError(ErrorContext{source, s.line, 0, field}, "expected TOL/type,...");
       DmisTolerance t;
@@ -402,7 +282,7 @@ Measurements dmisMeasurements(std::string_view text, const std::string& source, 
         first = 2;
       }
       firstLine.emplace(dupKey, s.line);
-      if (s.lhsKind == "TA") {
+      if (s.kind == "TA") {
         t.value = unit * dmisNumber(s, first, source, "deviation");
         for (std::size_t k = first + 1; k < s.minor.size(); ++k) {
           const std::string w = upper(s.minor[k]);

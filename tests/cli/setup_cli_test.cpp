@@ -440,6 +440,17 @@ std::string writePaperSeries(const test::TempDir& tmp, bool perPosition, const s
   return args;
 }
 
+/// `setup` of the paper's model on series.csv (to csv.json) and on the DMIS files `dmisArgs`
+/// (" --data f1 --data f2 ...", to dmis.json), both in tmp.
+struct CsvAndDmisRuns {
+  CliRun csv, dmis;
+};
+CsvAndDmisRuns setupCsvAndDmis(const test::TempDir& tmp, const std::string& dmisArgs) {
+  const std::string model = demo("paper_example.json");
+  return {cli("setup --model " + model + " --data series.csv --out csv.json", tmp),
+          cli("setup --model " + model + dmisArgs + " --out dmis.json", tmp)};
+}
+
 /// The setup result JSON files `a` and `b` in tmp give the same corrections, scores and dimensions.
 void expectSameResult(const test::TempDir& tmp, const char* a, const char* b) {
   const nlohmann::json x = readJsonFile(tmp.file(a)), y = readJsonFile(tmp.file(b));
@@ -455,10 +466,8 @@ void expectSameResult(const test::TempDir& tmp, const char* a, const char* b) {
 TEST(SetupCli, DmisFilesOfOnePartEachAreASeriesLikeTheCsv) {
   test::TempDir tmp;
   const std::string data = writePaperSeries(tmp, false);
-  const std::string model = demo("paper_example.json");
-  const CliRun fromCsv = cli("setup --model " + model + " --data series.csv --out csv.json", tmp);
+  const auto [fromCsv, fromDmis] = setupCsvAndDmis(tmp, data);
   ASSERT_EQ(fromCsv.code, 0) << fromCsv.err;
-  const CliRun fromDmis = cli("setup --model " + model + data + " --out dmis.json", tmp);
   ASSERT_EQ(fromDmis.code, 0) << fromDmis.err;
   EXPECT_NE(fromDmis.err.find("28 dimensions of 3 parts"), std::string::npos) << fromDmis.err;
   expectSameResult(tmp, "csv.json", "dmis.json");
@@ -468,10 +477,8 @@ TEST(SetupCli, DmisFilesOfOneFixturePositionEachAreASeriesLikeTheCsv) {
   // 3 measured fixtures x 4 positions: 12 files, each with only its workpiece's 7 dimensions.
   test::TempDir tmp;
   const std::string data = writePaperSeries(tmp, true);
-  const std::string model = demo("paper_example.json");
-  const CliRun fromCsv = cli("setup --model " + model + " --data series.csv --out csv.json", tmp);
+  const auto [fromCsv, fromDmis] = setupCsvAndDmis(tmp, data);
   ASSERT_EQ(fromCsv.code, 0) << fromCsv.err;
-  const CliRun fromDmis = cli("setup --model " + model + data + " --out dmis.json", tmp);
   ASSERT_EQ(fromDmis.code, 0) << fromDmis.err;
   EXPECT_NE(fromDmis.err.find("28 dimensions of 3 parts"), std::string::npos) << fromDmis.err;
   expectSameResult(tmp, "csv.json", "dmis.json");
@@ -487,10 +494,8 @@ TEST(SetupCli, DmisSeriesFileMissingADimensionMeasuredByAnotherIsAccepted) {
   while (std::getline(in, line))
     if (line.rfind("2,", 0) != 0 || line.find(",P2.D1,") == std::string::npos) csv += line + "\n";
   test::writeText(tmp.file("series.csv"), csv);
-  const std::string model = demo("paper_example.json");
-  const CliRun fromCsv = cli("setup --model " + model + " --data series.csv --out csv.json", tmp);
+  const auto [fromCsv, fromDmis] = setupCsvAndDmis(tmp, data);
   ASSERT_EQ(fromCsv.code, 0) << fromCsv.err;
-  const CliRun fromDmis = cli("setup --model " + model + data + " --out dmis.json", tmp);
   ASSERT_EQ(fromDmis.code, 0) << fromDmis.err;
   expectSameResult(tmp, "csv.json", "dmis.json");
 }

@@ -63,6 +63,7 @@
 #include "app/gui/thermalpage.h"
 #include "qtapp.h"
 #include "testsupport.h"
+#include "ui_language.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/importer/importdialog.h"
@@ -323,13 +324,8 @@ class ClippingTest : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ClippingTest, NothingIsCutAtTheDefaultWindowSize) {
   const QString language = QString::fromLatin1(GetParam());
-  QTranslator translator;
-  if (language != QLatin1String("en")) {
-    ASSERT_TRUE(translator.load(QStringLiteral(METROFIT_QM_DIR "/metrofit_") + language));
-    QCoreApplication::installTranslator(&translator);
-  }
-  const QLocale previous;
-  QLocale::setDefault(QLocale(language));
+  const test::ScopedUiLanguage ui(language);
+  ASSERT_TRUE(ui.ok()) << ui.why();
   std::set<std::string> reported;
   std::vector<std::string> failures;
   {
@@ -442,8 +438,6 @@ TEST_P(ClippingTest, NothingIsCutAtTheDefaultWindowSize) {
     window.document()->undoStack()->setClean();
     window.setUnsavedChangesDecider([] { return MainWindow::UnsavedChoice::Discard; });
   }
-  QLocale::setDefault(previous);
-  QCoreApplication::removeTranslator(&translator);
   std::string all;
   for (const std::string& f : failures) all += f + "\n";
   EXPECT_TRUE(failures.empty()) << failures.size() << " cut texts:\n" << all;

@@ -442,7 +442,7 @@ TEST_F(ImportDialogTest, CmmTextReportsAreImportedWithoutOptions) {
             QStringLiteral("cmm-report"));
   const QString real = QString::fromStdString(
       test::realData("cmm-ogp-hps-svt/survey_data/meas1/L0_axial_top_module1_1.txt").string());
-  if (!QFileInfo::exists(real)) GTEST_SKIP() << "real data not here";
+  METROFIT_REQUIRE_PATH(real.toStdString());
   ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
   dialog.setFile(real);
   EXPECT_EQ(dialog.kind(), QStringLiteral("cmm-report"));
@@ -898,7 +898,7 @@ TEST_F(ImportDialogTest, ATitleLineAboveAGermanHeaderIsFoundAndTheRolesAreMapped
 
 TEST_F(ImportDialogTest, TheRealWenzelPointsWithoutExtensionAreProbePointsWithTheirIdsMapped) {
   const auto real = test::realData("cmm-wenzel-lens-points/SPH1_1");
-  if (!std::filesystem::exists(real)) GTEST_SKIP() << "no real data at " << real;
+  METROFIT_REQUIRE_PATH(real);
   ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
   dialog.setFile(QString::fromStdString(real.string()));
   EXPECT_EQ(dialog.kind(), QStringLiteral("probe-points"));

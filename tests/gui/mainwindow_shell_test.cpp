@@ -28,6 +28,7 @@
 #include "app/gui/projectnavigator.h"
 #include "qtapp.h"
 #include "testsupport.h"
+#include "ui_language.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
@@ -172,10 +173,8 @@ TEST(Layout, EveryPageFitsA1280x800ScreenInGermanAndPolish) {
   const QString project = extractDemoProject(dir.path());
   for (const QString& language : {QStringLiteral("de"), QStringLiteral("pl")}) {
     SCOPED_TRACE(language.toStdString());
-    QTranslator translator;
-    ASSERT_TRUE(translator.load(QStringLiteral(METROFIT_QM_DIR "/metrofit_") + language));
-    QCoreApplication::installTranslator(&translator);
-    QLocale::setDefault(QLocale(language));
+    const test::ScopedUiLanguage ui(language);
+    ASSERT_TRUE(ui.ok()) << ui.why();
     {
       MainWindow window;
       QString error;
@@ -196,8 +195,6 @@ TEST(Layout, EveryPageFitsA1280x800ScreenInGermanAndPolish) {
       EXPECT_LE(minimum.height(), 800);
       EXPECT_EQ(window.width(), 1280);
     }
-    QLocale::setDefault(QLocale::c());
-    QCoreApplication::removeTranslator(&translator);
   }
 }
 

@@ -47,6 +47,7 @@
 #include "core/setup/model.h"
 #include "core/study/setup_study.h"
 #include "qtapp.h"
+#include "ui_language.h"
 #include "widgets/common/chartnavigation.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
@@ -643,9 +644,8 @@ TEST(TranslationTest, WindowIsTranslated) {
   };
   for (const auto& [language, menus] : languages) {
     SCOPED_TRACE(language.toStdString());
-    QTranslator translator;
-    ASSERT_TRUE(translator.load(QStringLiteral(METROFIT_QM_DIR "/metrofit_") + language));
-    QCoreApplication::installTranslator(&translator);
+    const test::ScopedUiLanguage ui(language, test::ScopedUiLanguage::Locale::Keep);
+    ASSERT_TRUE(ui.ok()) << ui.why();
     {
       MainWindow window;
       EXPECT_EQ(menuTitles(window), menus);
@@ -655,7 +655,6 @@ TEST(TranslationTest, WindowIsTranslated) {
       EXPECT_NE(window.navigator()->itemForPage(Page::Setup)->text(0), QStringLiteral("Setup correction"));
       window.document()->undoStack()->setClean();
     }
-    QCoreApplication::removeTranslator(&translator);
   }
 }
 

@@ -40,6 +40,7 @@
 #include "file_helpers.h"
 #include "qtapp.h"
 #include "testsupport.h"
+#include "ui_language.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
@@ -136,13 +137,8 @@ class MatchingTablesTest : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(MatchingTablesTest, FitTheDefaultWindowWithoutScrollingSideways) {
   const QString language = QString::fromLatin1(GetParam());
-  QTranslator translator;
-  if (language != QLatin1String("en")) {
-    ASSERT_TRUE(translator.load(QStringLiteral(METROFIT_QM_DIR "/metrofit_") + language));
-    QCoreApplication::installTranslator(&translator);
-  }
-  const QLocale previous;
-  QLocale::setDefault(QLocale(language));
+  const test::ScopedUiLanguage ui(language);
+  ASSERT_TRUE(ui.ok()) << ui.why();
   {
     QTemporaryDir dir;
     const QString demo = extractDemoProject(dir.filePath(QStringLiteral("demo")));
@@ -166,19 +162,14 @@ TEST_P(MatchingTablesTest, FitTheDefaultWindowWithoutScrollingSideways) {
     expectFits(page->pointTable(), "points");
     window.document()->undoStack()->setClean();
   }
-  QLocale::setDefault(previous);
-  QCoreApplication::removeTranslator(&translator);
 }
 
 /// The kinematics page's tables: the label column takes what the numbers leave; a long (translated)
 /// label wraps onto a higher row instead of being cut short ("Winkel der X-…").
 TEST_P(MatchingTablesTest, KinematicsLabelsWrapInsteadOfBeingCut) {
   const QString language = QString::fromLatin1(GetParam());
-  QTranslator translator;
-  if (language != QLatin1String("en")) {
-    ASSERT_TRUE(translator.load(QStringLiteral(METROFIT_QM_DIR "/metrofit_") + language));
-    QCoreApplication::installTranslator(&translator);
-  }
+  const test::ScopedUiLanguage ui(language, test::ScopedUiLanguage::Locale::Keep);
+  ASSERT_TRUE(ui.ok()) << ui.why();
   {
     QTemporaryDir dir;
     MainWindow window;
@@ -227,7 +218,6 @@ TEST_P(MatchingTablesTest, KinematicsLabelsWrapInsteadOfBeingCut) {
     window.grab().save(QString::fromStdString(
         (test::outDir() / ("kinematics-actuators-" + language.toStdString() + ".png")).string()));
   }
-  QCoreApplication::removeTranslator(&translator);
 }
 
 INSTANTIATE_TEST_SUITE_P(Languages, MatchingTablesTest, ::testing::Values("de", "pl", "en"));

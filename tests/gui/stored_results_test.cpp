@@ -424,7 +424,10 @@ TEST_F(ReportAndPagesTest, DiagnosisAcceptedEffectsAreThePages) {
     const QRegularExpressionMatch m = it.next();
     const bool none = m.captured(1).isEmpty();
     reportAccepted << (none ? QStringLiteral("-") : m.captured(1));
-    reportFinal.push_back((none ? m.captured(3) : m.captured(2)).toDouble());
+    bool ok = false;
+    const QString figure = none ? m.captured(3) : m.captured(2);
+    reportFinal.push_back(figure.toDouble(&ok));
+    EXPECT_TRUE(ok) << "report figure '" << figure.toStdString() << "' is not a number";
   }
   EXPECT_EQ(reportAccepted, pageAccepted) << text.toStdString();
   ASSERT_EQ(reportFinal.size(), pageFinal.size());

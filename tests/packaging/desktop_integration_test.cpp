@@ -54,10 +54,10 @@ std::pair<std::uint32_t, std::uint32_t> pngSize(const std::filesystem::path& pat
   return {be32(16), be32(20)};
 }
 
-#define REQUIRE_PROGRAM(program, package)                              \
-  if (!test::haveProgram(program))                                     \
-  GTEST_SKIP() << program " is not installed (Debian package " package \
-                          ", installed by packaging/install-deps.sh): not checked"
+#define REQUIRE_PROGRAM(program, package)                                   \
+  METROFIT_SKIP_UNLESS(test::haveProgram(program),                          \
+                       program " is not installed (Debian package " package \
+                               ", installed by packaging/install-deps.sh): not checked")
 
 TEST(DesktopFile, PassesDesktopFileValidate) {
   REQUIRE_PROGRAM("desktop-file-validate", "desktop-file-utils");
@@ -170,7 +170,7 @@ TEST(DesktopIntegration, InstallRulesPutTheFilesWhereTheDesktopLooks) {
   const std::string xml = test::readText(metainfo.string());
   EXPECT_EQ(allMatches(xml, "<launchable type=\"desktop-id\">([^<]+)</launchable>"),
             std::vector<std::string>{desktop.filename().string()});
-  if (!test::haveProgram("appstreamcli")) GTEST_SKIP() << "appstreamcli (appstream) is not installed";
+  REQUIRE_PROGRAM("appstreamcli", "appstream");
   const std::string out = test::runCommand(
       "appstreamcli validate-tree --no-net " + test::shellQuote(prefix.path()) + " 2>&1", &code);
   EXPECT_EQ(code, 0) << out;

@@ -188,8 +188,8 @@ TEST(ManPages, CliHelpPointsToTheManualAndNamesTheExitCodes) {
 }
 
 TEST(ManPages, GroffPrintsNoWarnings) {
-  if (run("command -v man").empty())
-    GTEST_SKIP() << "man (man-db) is not installed: groff warnings not checked";
+  METROFIT_SKIP_UNLESS(!run("command -v man").empty(),
+                       "man (man-db) is not installed: groff warnings not checked");
   for (const char* name : {"metrofit", "metrofit-cli"}) {
     const auto path = test::sourceDir() / "packaging" / "man" / (std::string(name) + ".1");
     int code = -1;
@@ -237,6 +237,18 @@ TEST(Packaging, InstallsTheDocumentationIntoTheDocFolder) {
     EXPECT_EQ(test::readText((docDir / name).string()),
               test::readText((test::sourceDir() / "docs" / name).string()))
         << name;
+  }
+  // Help › Manual opens the installed README.md: every relative link of the installed documents leads
+  // to an installed file (a link into the source tree would be dead there).
+  static const std::regex link(R"(\]\(([^)#:]+)(#[^)]*)?\))");
+  for (const auto& entry : std::filesystem::directory_iterator(docDir)) {
+    if (entry.path().extension() != ".md") continue;
+    const std::string text = test::readText(entry.path().string());
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), link); it != std::sregex_iterator(); ++it) {
+      const std::string target = (*it)[1];
+      EXPECT_TRUE(std::filesystem::exists(docDir / target))
+          << entry.path().filename() << " links to " << target << ", which is not installed";
+    }
   }
   // The manual page and the help name that path.
   const std::string installed = "/usr/share/doc/metrofit/file-formats.md";

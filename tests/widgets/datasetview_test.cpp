@@ -34,6 +34,7 @@
 #include "core/project/dataset_content.h"
 #include "core/project/project.h"
 #include "qtapp.h"
+#include "samples/pcdmis_reports.h"
 #include "testsupport.h"
 #include "widgets/data/datasettablemodel.h"
 #include "widgets/data/datasetview.h"
@@ -41,25 +42,7 @@
 namespace metrofit {
 namespace {
 
-const char* kPcDmis =
-    "PART NAME  : BRACKET\n"
-    "REV NUMBER : A\n"
-    "SER NUMBER : 0042\n"
-    "STATS COUNT : 1\n"
-    "\n"
-    "DIM LOC1= LOCATION OF CIRCLE CIR1  UNITS=MM ,$\n"
-    "GRAPH=OFF  TEXT=OFF  MULT=10.00  OUTPUT=BOTH  HALF ANGLE=NO\n"
-    "AX    NOMINAL       +TOL       -TOL       MEAS        DEV     OUTTOL\n"
-    "X      25.000      0.050      0.050     25.012      0.012      0.000 ----#----\n"
-    "Y      40.000      0.050      0.050     39.996     -0.004      0.000 ----#----\n"
-    "D      18.500      0.030      0.050     18.520      0.020      0.000 -------#-\n"
-    "END OF DIMENSION LOC1\n"
-    "\n"
-    "DIM LOC2= LOCATION OF PLANE PLN1  UNITS=MM ,$\n"
-    "GRAPH=OFF  TEXT=OFF  MULT=10.00  OUTPUT=BOTH  HALF ANGLE=NO\n"
-    "AX    NOMINAL       +TOL       -TOL       MEAS        DEV     OUTTOL\n"
-    "Z      42.000      0.020      0.020     42.035      0.035      0.015 --------->\n"
-    "END OF DIMENSION LOC2\n";
+const char* const kPcDmis = ::metrofit::test::kPcDmisBracketReport;
 
 QString cell(const DatasetView& view, int row, int column) {
   return view.proxy()->index(row, column).data().toString();
@@ -331,7 +314,7 @@ TEST_F(DatasetViewTest, MissingFileIsOneLineNamingIt) {
 TEST_F(DatasetViewTest, RealOgpStepReportIsAFeatureTable) {
   const std::filesystem::path real =
       test::realData("cmm-ogp-hps-svt/survey_data/meas1/L0_axial_top_module1_1.txt");
-  if (!std::filesystem::exists(real)) GTEST_SKIP() << "real data not here";
+  METROFIT_REQUIRE_PATH(real);
   DatasetView view;
   ASSERT_TRUE(view.showDataset(QString::fromStdString(real.string()),
                                datasetOf(dataset_kind::kCmmReport, real.string())))
@@ -414,7 +397,7 @@ TEST_F(DatasetViewTest, HundredThousandRowLogIsShownSortedFilteredAndPlotted) {
 // 23 columns with their units from the role suffixes, plotted against time.
 TEST_F(DatasetViewTest, RealCaiviacLogHasItsUnitsAndIsPlottedAgainstTime) {
   const std::filesystem::path real = test::realData("thermal-spindle-caiviac/thermal_caiviac.csv");
-  if (!std::filesystem::exists(real)) GTEST_SKIP() << "real data not here";
+  METROFIT_REQUIRE_PATH(real);
   DatasetView view;
   ASSERT_TRUE(view.showDataset(QString::fromStdString(real.string()),
                                datasetOf(dataset_kind::kThermalLog, real.string())))
@@ -446,7 +429,7 @@ TEST_F(DatasetViewTest, RealCaiviacLogHasItsUnitsAndIsPlottedAgainstTime) {
 // The real OGP summary of 13 runs (GPL-3.0, read in place): a Part column, numbers in Polish.
 TEST_F(DatasetViewTest, RealOgpSummaryHasAPartColumnAndLocaleNumbers) {
   const std::filesystem::path real = test::realData("cmm-ogp-hps-svt/survey_data/L123_fixture_sho.txt");
-  if (!std::filesystem::exists(real)) GTEST_SKIP() << "real data not here";
+  METROFIT_REQUIRE_PATH(real);
   QLocale::setDefault(QLocale(QLocale::Polish, QLocale::Poland));
   DatasetView view;
   ASSERT_TRUE(view.showDataset(QString::fromStdString(real.string()),

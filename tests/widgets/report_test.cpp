@@ -419,7 +419,9 @@ TEST_F(ReportTest, TheModularSectionUsesTheModuleTestsOfTheThermalStudy) {
         QRegularExpression(
             QStringLiteral("modules, summed \\(distributed lag\\)\\s+(\\S+)\\s+(\\S+)\\s+(\\S+) %\\s+(\\S+)"))
             .match(text);
-    return m.hasMatch() ? m.captured(4).toDouble() : -1.0;
+    bool ok = false;
+    const double rmse = m.hasMatch() ? m.captured(4).toDouble(&ok) : -1.0;
+    return ok ? rmse : -1.0;  // -1: not found or not a number; the callers expect a positive rmse
   };
   for (const bool declared : {false, true}) {
     if (declared)

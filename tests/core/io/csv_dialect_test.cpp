@@ -109,7 +109,7 @@ TEST(CsvDialect, OptionSpellings) {
 // Real data: the Wenzel CMM export is tab separated (cmm-wenzel-lens-points/CIR4_1).
 TEST(CsvDialect, ReadsTheRealTabSeparatedWenzelExport) {
   const std::string file = test::realData("cmm-wenzel-lens-points/CIR4_1").string();
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "real data not here: " << file;
+  METROFIT_REQUIRE_PATH(file);
   const CsvTable t = readCsvFile(file);
   EXPECT_EQ(t.dialect().delimiter, '\t');
   ASSERT_EQ(t.columnCount(), 6u);
@@ -126,7 +126,7 @@ TEST(CsvDialect, ReadsTheRealTabSeparatedWenzelExport) {
 TEST(CsvDialect, GermanCopyOfARealLogReadsTheSameNumbers) {
   const std::string file =
       test::realData("thermal-spindle-sjtu/thermal_expansion_error_original.csv").string();
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "real data not here: " << file;
+  METROFIT_REQUIRE_PATH(file);
   std::istringstream in(test::readText(file));
   std::string line, head, german;
   for (int i = 0; i < 40 && std::getline(in, line); ++i) {

@@ -116,7 +116,7 @@ std::string germanNumber(double v) {
 
 TEST(ShopCsv, TheRealCaiviacLogSavedTheGermanWayReadsBackToTheSameNumbers) {
   const auto path = test::realData("thermal-spindle-caiviac/thermal_caiviac.csv");
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no real data at " << path;
+  METROFIT_REQUIRE_PATH(path);
   const ThermalLog original = readThermalLog(path.string());
   ASSERT_EQ(original.channels.size(), 22u);
   // The German spreadsheet: a title line, ';', decimal commas, time in minutes, names with units in

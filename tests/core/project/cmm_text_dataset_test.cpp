@@ -95,7 +95,7 @@ fs::path ogp(const std::string& rel) {
 TEST(CmmTextDataset, ReportsAreAddedAsTheirKindsWithoutOptions) {
   const fs::path summary = ogp("L123_fixture_sho.txt");
   const fs::path rtf = ogp("meas1/L1_axial_top_module3_1.txt");
-  if (!fs::exists(summary)) GTEST_SKIP() << "real data not here: " << summary;
+  METROFIT_REQUIRE_PATH(summary);
   const std::string projectPath = (test::outDir() / "cmm_text" / "P.metrofit").string();
   fs::create_directories(fs::path(projectPath).parent_path());
   Project project;

@@ -168,7 +168,7 @@ TEST(DatasetContent, MissingFileNamesIt) {
 
 TEST(DatasetContent, RealOgpSummaryHasOnePartPerRun) {
   const std::filesystem::path real = test::realData("cmm-ogp-hps-svt/survey_data/L123_fixture_sho.txt");
-  if (!std::filesystem::exists(real)) GTEST_SKIP() << "real data not here";
+  METROFIT_REQUIRE_PATH(real);
   const DatasetContent c =
       readDatasetContentFile(real.string(), datasetOf(dataset_kind::kCmmReport, real.string()));
   ASSERT_EQ(c.shape, DatasetContent::Shape::Features);

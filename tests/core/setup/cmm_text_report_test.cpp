@@ -32,6 +32,7 @@
 #include "core/setup/exact.h"
 #include "core/setup/objective.h"
 #include "core/setup/report.h"
+#include "samples/pcdmis_reports.h"
 #include "setup_fixtures.h"
 #include "testsupport.h"
 
@@ -45,8 +46,7 @@ fs::path ogpDir() {
   return metrofit::test::realData("cmm-ogp-hps-svt");
 }
 
-#define REQUIRE_OGP() \
-  if (!fs::exists(ogpDir() / "survey_data")) GTEST_SKIP() << "real data not here: " << ogpDir()
+#define REQUIRE_OGP() METROFIT_REQUIRE_PATH(ogpDir() / "survey_data")
 
 std::string errorOf(const std::string& text, const std::string& source = "r.txt") {
   try {
@@ -402,25 +402,7 @@ TEST(OgpReport, StepReportReachesTheSetupStudy) {
 // ---- PC-DMIS text report -----------------------------------------------------------------------
 
 // Written from the PC-DMIS documentation cited at the top (not from a Metrofit writer).
-const char* kPcDmis =
-    "PART NAME  : BRACKET\n"
-    "REV NUMBER : A\n"
-    "SER NUMBER : 0042\n"
-    "STATS COUNT : 1\n"
-    "\n"
-    "DIM LOC1= LOCATION OF CIRCLE CIR1  UNITS=MM ,$\n"
-    "GRAPH=OFF  TEXT=OFF  MULT=10.00  OUTPUT=BOTH  HALF ANGLE=NO\n"
-    "AX    NOMINAL       +TOL       -TOL       MEAS        DEV     OUTTOL\n"
-    "X      25.000      0.050      0.050     25.012      0.012      0.000 ----#----\n"
-    "Y      40.000      0.050      0.050     39.996     -0.004      0.000 ----#----\n"
-    "D      18.500      0.030      0.050     18.520      0.020      0.000 -------#-\n"
-    "END OF DIMENSION LOC1\n"
-    "\n"
-    "DIM LOC2= LOCATION OF PLANE PLN1  UNITS=MM ,$\n"
-    "GRAPH=OFF  TEXT=OFF  MULT=10.00  OUTPUT=BOTH  HALF ANGLE=NO\n"
-    "AX    NOMINAL       +TOL       -TOL       MEAS        DEV     OUTTOL\n"
-    "Z      42.000      0.020      0.020     42.035      0.035      0.015 --------->\n"
-    "END OF DIMENSION LOC2\n";
+const char* const kPcDmis = ::metrofit::test::kPcDmisBracketReport;
 
 TEST(PcDmisReport, DevColumnIsMeasMinusNominal) {
   EXPECT_EQ(detectCmmTextReport(kPcDmis), CmmReportFormat::PcDmis);
