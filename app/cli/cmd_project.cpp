@@ -1,8 +1,8 @@
 // metrofit-cli project: own data in a project (docs/file-formats.md#own-data-in-a-project).
 //   project new P.metrofit [--name TEXT]
-//   project add P.metrofit KIND FILE [--id ID] [--map ROLE=COLUMN ...] [--delimiter D] [--decimal D]
-//               [--header-lines N] [--comment PREFIX] [--skip-bad-rows] [--ta-meaning M] [--ta-sign S]
-//               [--embed]
+//   project add P.metrofit KIND|auto FILE [--id ID] [--map ROLE=COLUMN ...] [--no-guess] [--delimiter D]
+//               [--decimal D] [--header-lines N] [--comment PREFIX] [--skip-bad-rows] [--ta-meaning M]
+//               [--ta-sign S] [--embed]
 //   project list P.metrofit [--out FILE]
 // The logic is core/project/datasets.h; this file only parses the command line.
 #include <CLI/CLI.hpp>
@@ -33,6 +33,7 @@ struct ProjectArgs {
   std::string comment;
   bool skipBadRows = false;
   bool embed = false;
+  bool noGuess = false;
 };
 
 int runNew(const ProjectArgs& a) {
@@ -64,7 +65,16 @@ int runAdd(const ProjectArgs& a) {
   r.csv.skipBadRows = a.skipBadRows;
   r.dmis = dmisOptions();
   r.embed = a.embed;
+  r.guessRoles = !a.noGuess;
   const DatasetRef ref = addDataset(p, a.project, r);
+  if (a.kind == kGuessKind)
+    std::fprintf(stderr, "project add: '%s' read as %s\n", a.file.c_str(), ref.kind.c_str());
+  if (r.guessRoles && r.csv.columnMap.empty())
+    for (const auto& [role, column] : ref.csv.columnMap)
+      std::fprintf(
+          stderr,
+          "project add: column '%s' read as %s (guessed; --map to choose, --no-guess to keep names)\n",
+          column.c_str(), role.c_str());
   saveProject(p, a.project);
   const DatasetSummary s = summarizeDataset(a.project, ref);
   std::string skipped;
@@ -101,11 +111,13 @@ void registerProjectCommands(CLI::App& app) {
   auto a = std::make_shared<ProjectArgs>();
   auto* add = pr->add_subcommand("add", "Add a dataset (a file referenced relative to the project)");
   existingFile(add->add_option("project", a->project, "Project file (.metrofit)")->required());
+  std::vector<std::string> kinds = datasetKindNames();
+  kinds.push_back(kGuessKind);
   add->add_option("kind", a->kind,
                   "thermal-log|probe-points|circular-test|cmm-report|setup-model|"
-                  "feature-series|dmis|hole-table")
+                  "feature-series|dmis|hole-table, or auto: the kind the file's name and content say")
       ->required()
-      ->check(CLI::IsMember(datasetKindNames()));
+      ->check(CLI::IsMember(kinds));
   existingFile(add->add_option("file", a->file, "Data file (- for standard input, copied into the project)")
                    ->required());
   add->add_option("--id", a->id, "Dataset id (default: the file name without extension)");
@@ -123,6 +135,9 @@ void registerProjectCommands(CLI::App& app) {
                 "CSV: leave out rows that cannot be read (stored in the project, counted when read); "
                 "default: the first such row is an error");
   addDmisOptions(add);
+  add->add_flag("--no-guess", a->noGuess,
+                "CSV without --map: keep the file's column names (default: read the columns whose names say "
+                "a role as that role, e.g. 'Zeit [min]' as time_min, 'Soll X [µm]' as qx in mm)");
   add->add_flag("--embed", a->embed,
                 "Copy the file into the project's folder as data/<id>.<ext> (never overwriting) instead of "
                 "referencing it");

@@ -1,4 +1,5 @@
 #include "core/io/csv.h"
+#include "core/io/units.h"
 
 #include <algorithm>
 #include <cctype>
@@ -687,6 +688,17 @@ void CsvTable::mapColumns(const std::vector<std::pair<std::string, std::string>>
                                   "' to it would hide that column (map or rename it too)");
       }
     }
+    const std::string fromUnit = columnNameUnit(column), toUnit = roleUnit(role);
+    if (!fromUnit.empty() && !toUnit.empty() && fromUnit != toUnit) {
+      const std::optional<double> factor = unitFactor(fromUnit, toUnit);
+      if (!factor) {
+        throw ValidationError(ErrorContext{source_, 0, 0, role},
+                              "column '" + column + "' is in " + fromUnit + ", which cannot be read as " +
+                                  toUnit + " (map a column in " + toUnit + " or a unit convertible to it)");
+      }
+      if (scale_.empty()) scale_.assign(header_.size(), 1.0);
+      scale_[static_cast<std::size_t>(from)] = *factor;
+    }
     renamed[static_cast<std::size_t>(from)] = role;
     mapped[static_cast<std::size_t>(from)] = true;
   }
@@ -745,6 +757,11 @@ CsvTable CsvTable::fromCells(std::string source, std::vector<std::string> header
 }
 
 double CsvTable::number(std::size_t row, std::size_t col) const {
+  const double v = numberAsWritten(row, col);
+  return col < scale_.size() ? v * scale_[col] : v;
+}
+
+double CsvTable::numberAsWritten(std::size_t row, std::size_t col) const {
   double v = 0.0;
   const std::string& s = rows_[row][col];
   if (dialect_.decimal == ',') {

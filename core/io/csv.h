@@ -111,7 +111,13 @@ class CsvTable {
   /// Renames the file's column `column` to `role` for every (role, column) pair. ValidationError
   /// naming the file and the role when `column` is not in the header, or when `role` already names
   /// another column of the file (that column would be hidden), or two roles name one column.
+  /// Units (core/io/units.h): when the column names a unit in a trailing bracket ("Soll [µm]",
+  /// "Zeit [s]") and the role has another unit of the same quantity ("nominal_mm", "time_min"), the
+  /// column's numbers are read in the role's unit (number() converts); a unit of another quantity
+  /// ("T1 [°C]" as "nominal_mm") is a ValidationError naming both.
   void mapColumns(const std::vector<std::pair<std::string, std::string>>& columnMap);
+  /// The factor number() applies to column `col` (1 unless mapColumns converts its unit).
+  double unitScale(std::size_t col) const { return col < scale_.size() ? scale_[col] : 1.0; }
 
   /// Column index by exact name, or -1.
   int columnIndex(std::string_view name) const;
@@ -125,6 +131,7 @@ class CsvTable {
   long lineOf(std::size_t row) const { return lines_[row]; }
   /// Strict finite number in the file's decimal form, or ParseError
   /// "file:line:col: field 'name': 'abc' is not a number".
+  /// In the unit of the role the column is mapped to (unitScale).
   double number(std::size_t row, std::size_t col) const;
   std::vector<double> numericColumn(std::size_t col) const;
   std::vector<double> numericColumn(std::string_view name) const {
@@ -140,7 +147,9 @@ class CsvTable {
   /// CsvReadOptions::skipBadRows: moves the rows with a non-number in a numeric column to skipped_.
   void dropUnreadableRows(const std::vector<std::size_t>& rowNumbers);
   bool isNumber(std::size_t row, std::size_t col) const;
+  double numberAsWritten(std::size_t row, std::size_t col) const;
   std::string source_;
+  std::vector<double> scale_;  ///< per column; empty: all 1
   CsvDialect dialect_{',', '.'};
   std::vector<std::string> comments_;
   std::vector<std::string> header_;

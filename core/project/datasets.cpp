@@ -12,6 +12,7 @@
 #include "core/kinematics/measured_path.h"
 #include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
+#include "core/project/import_guess.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
 #include "core/thermal/thermal_log.h"
@@ -205,7 +206,12 @@ void embedDataset(const std::string& projectPath, const std::string& file, Datas
 
 DatasetRef addDataset(Project& project, const std::string& projectPath, const AddDatasetRequest& request) {
   DatasetRef ref;
-  ref.kind = datasetKindFromName(request.kind);
+  std::string kindName = request.kind;
+  if (kindName == kGuessKind) {
+    const std::string text = readFile(request.file, 256u << 20);
+    kindName = guessDatasetKind(request.file, std::string_view(text).substr(0, 256 * 1024), request.csv);
+  }
+  ref.kind = datasetKindFromName(kindName);
   ref.csv = request.csv;
   ref.description = request.description;
   ref.dmis = request.dmis;
@@ -243,6 +249,19 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
     return ValidationError(ErrorContext{displayPath(request.file), 0, 0, "--ta-meaning"},
                            "is not a DMIS file; --ta-meaning and --ta-sign apply to DMIS output only");
   };
+  if (request.guessRoles && datasetKindIsCsv(ref.kind) && ref.csv.columnMap.empty()) {
+    CsvReadOptions o = ref.csv;
+    o.skipBadRows = true;  // only the header is needed here; inspect() below judges the rows
+    std::vector<std::string> header;
+    try {
+      header = parseCsv(readFile(request.file, 256u << 20), displayPath(request.file), o).header();
+    } catch (const Error&) {
+      // Unreadable as CSV: inspect() below says why, naming the file and line.
+    }
+    std::string kindSpelling = ref.kind;
+    std::replace(kindSpelling.begin(), kindSpelling.end(), '_', '-');
+    ref.csv.columnMap = suggestColumnRoles(kindSpelling, header);
+  }
   const bool dmisReading = !(ref.dmis == setup::DmisOptions{});
   if (dmisReading && ref.kind != dataset_kind::kDmis && ref.kind != dataset_kind::kCmmReport) throw notDmis();
   const DatasetSummary s = inspect(request.file, displayPath(request.file), ref.kind, ref.csv);

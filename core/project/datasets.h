@@ -66,7 +66,14 @@ struct AddDatasetRequest {
   setup::DmisOptions dmis = {};  ///< DMIS files only (a DMIS dataset or a cmm-report that is a DMIS file)
   /// Copy the file into the project's folder as data/<id>.<ext> (embedDataset) instead of referencing it.
   bool embed = false;
+  /// A CSV dataset without a column mapping (csv.columnMap empty) takes the roles suggestColumnRoles
+  /// (core/project/import_guess.h) finds in its header ("Zeit [min]" -> time_min, "Soll X [µm]" -> qx,
+  /// read in mm), as the import dialog does; the applied mapping is the dataset's csv.columnMap.
+  bool guessRoles = false;
 };
+
+/// The kind `project add` takes to mean "guess it from the file" (guessDatasetKind).
+inline constexpr const char* kGuessKind = "auto";
 
 /// Where an embedded copy of `file` goes, relative to the project's folder: "data/<id>.<ext>" with
 /// the file's own extension (lower case), or the kind's usual one when the file has none.
@@ -76,7 +83,8 @@ std::string embeddedDatasetPath(const std::string& id, const std::string& file, 
 /// embedded file is never overwritten); FileError when it cannot be written.
 void embedDataset(const std::string& projectPath, const std::string& file, DatasetRef& dataset);
 
-/// Adds a dataset to `project` (saved at `projectPath`): the file is referenced relative to the
+/// Adds a dataset to `project` (saved at `projectPath`); request.kind kGuessKind: the kind the file's
+/// name and content say (guessDatasetKind, read with request.csv). The file is referenced relative to the
 /// project's folder (absolute when it is on another root), or, for "-" (standard input), copied into
 /// the project's folder as "<id>.<ext>" (an --id is then required). The file is read and checked as
 /// its kind says before anything is changed. ValidationError for a duplicate id, CSV options on a

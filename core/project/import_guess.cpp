@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/io/cmm_text_report.h"
+#include "core/io/units.h"
 #include "core/matching/hole_table.h"
 #include "core/setup/report.h"
 
@@ -111,9 +112,9 @@ char axisOf(const ColumnName& c) {
   }
   return axis;
 }
-/// Unit allowed for a role in mm: none or mm.
+/// Unit allowed for a role in mm: none, or a length (read in mm: CsvTable::mapColumns converts).
 bool mmOrNone(const ColumnName& c) {
-  return c.unit.empty() || c.unit == "mm";
+  return c.unit.empty() || unitFactor(c.unit, "mm").has_value();
 }
 
 std::vector<std::string> rolesOf(const std::string& kind) {
@@ -144,7 +145,7 @@ std::string roleFor(const std::string& kind, const std::string& column, bool raw
     return {};
   }
   if (kind == "cmm-report") {
-    if (isTime(c)) return c.unit == "min" ? "time_min" : "";
+    if (isTime(c)) return unitFactor(c.unit, "min") ? "time_min" : "";
     if (isLowerTol(c) && mmOrNone(c)) return "lower_tol_mm";
     if (isUpperTol(c) && mmOrNone(c)) return "upper_tol_mm";
     if (isNominal(c) && mmOrNone(c)) return "nominal_mm";
@@ -176,10 +177,11 @@ std::string roleFor(const std::string& kind, const std::string& column, bool raw
     return {};
   }
   if (kind == "circular-test") {
-    if (hasWord(c, {"angle", "winkel", "kat"}) && (c.unit.empty() || c.unit == "deg")) return "angle_deg";
+    if (hasWord(c, {"angle", "winkel", "kat"}) && (c.unit.empty() || unitFactor(c.unit, "deg")))
+      return "angle_deg";
     if (hasWord(c, {"deviation", "dev", "abweichung", "abw", "odchylka", "odchylenie"}) &&
-        (c.unit == "um" || c.unit == "mm"))
-      return "deviation_" + c.unit;
+        unitFactor(c.unit, "um"))
+      return c.unit == "mm" ? "deviation_mm" : "deviation_um";
     if (hasWord(c, {"radius", "promien"}) && mmOrNone(c)) return "radius_mm";
     if (onlyWords(c, {"direction", "richtung", "kierunek", "drehrichtung"})) return "direction";
     if (onlyWords(c, {"run", "lauf", "przebieg"})) return "run";
@@ -211,7 +213,7 @@ ColumnName splitColumnName(const std::string& name) {
     const char open = base.back() == ']' ? '[' : '(';
     const auto at = base.rfind(open);
     if (at != std::string::npos) {
-      c.unit = normalUnit(base.substr(at + 1, base.size() - at - 2));
+      c.unit = normalUnitName(base.substr(at + 1, base.size() - at - 2));
       base.erase(at);
     }
   }

@@ -17,8 +17,10 @@
 //   surface     surface, fläche, powierzchnia
 //   raw points  x, y, z alone                          -> px, py, pz (measured points without nominals)
 //   circle test angle, winkel, kąt -> angle_deg; deviation, abweichung, odchyłka -> deviation_um/_mm
-// A role is only suggested when the column's unit (if it names one) is the role's own unit, so no value
-// is read in a unit it was not written in. Other columns keep their names (a thermal log's sensors are
+// A role is only suggested when the column's unit (if it names one) is a unit of the role's quantity:
+// the column is then read converted to the role's unit ("Soll X [µm]" as qx in mm, "Zeit [s]" as
+// time_min: CsvTable::mapColumns, core/io/units.h), so no value is read in a unit it was not written
+// in, and a column in °C is never a length. Other columns keep their names (a thermal log's sensors are
 // read by their names, with the unit from the bracket: core/thermal/thermal_log.h).
 #include <string>
 #include <string_view>

@@ -237,7 +237,7 @@ TEST(ProjectCli, RealHoleTableAndTheDemoProject) {
 // options, recognised by their content; a garbled copy fails with one line naming file and line.
 TEST(ProjectCli, RealOgpReportsAreAddedWithoutOptions) {
   const std::string dir = test::realData("cmm-ogp-hps-svt/survey_data").string() + "/";
-  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "real data not here: " << dir;
+  METROFIT_REQUIRE_PATH(dir);
   test::TempDir tmp;
   ASSERT_EQ(cli("project new P.metrofit", tmp).code, 0);
   CliRun r =
@@ -360,6 +360,52 @@ TEST(ProjectCli, AddTakesHeaderCommentSkipDmisAndEmbedOptions) {
     EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
   }
   EXPECT_EQ(readJson(tmp, "p/P.metrofit")["datasets"].size(), 4u);
+}
+
+}  // namespace
+}  // namespace metrofit
+
+namespace metrofit {
+namespace {
+
+// `project add P auto FILE`: the kind from the file, and (without --map) the roles its column names
+// say, read in the roles' units; --no-guess keeps the file's names (issue 28 item 1).
+TEST(ProjectCli, AddGuessesTheKindAndTheRolesWithTheirUnits) {
+  test::TempDir tmp;
+  ASSERT_EQ(cli("project new P.metrofit", tmp).code, 0);
+  // Probe points as a shop's CMM exports them: German names, coordinates in metres, decimal commas.
+  test::writeText(tmp.file("punkte.csv"),
+                  "Punkt;Soll X [m];Soll Y [m];Soll Z [m];I;J;K;Ist X [m];Ist Y [m];Ist Z [m]\n"
+                  "1;0,1;0;0;1;0;0;0,10002;0;0\n"
+                  "2;0;0,1;0;0;1;0;0;0,09999;0\n"
+                  "3;0;0;0,1;0;0;1;0;0;0,10001\n"
+                  "4;0,1;0,1;0;0;0;1;0,1;0,1;0,00003\n");
+  CliRun r = cli("project add P.metrofit auto punkte.csv", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("read as probe_points"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("column 'Soll X [m]' read as qx"), std::string::npos) << r.err;
+  nlohmann::json project = readJson(tmp, "P.metrofit");
+  ASSERT_EQ(project["datasets"].size(), 1u);
+  EXPECT_EQ(project["datasets"][0]["kind"], "probe_points");
+  EXPECT_EQ(project["datasets"][0]["map"]["qx"], "Soll X [m]");
+  EXPECT_EQ(project["datasets"][0]["map"]["pz"], "Ist Z [m]");
+  EXPECT_EQ(project["datasets"][0]["map"]["nz"], "K");
+  EXPECT_EQ(project["datasets"][0]["map"]["id"], "Punkt");
+
+  // The same file added with --no-guess keeps its names (and cannot be probe points without a map).
+  r = cli("project add P.metrofit probe-points punkte.csv --id raw --no-guess", tmp);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  // An explicit --map is taken as given: nothing guessed beside it.
+  r =
+      cli("project add P.metrofit probe-points punkte.csv --id mapped --map id=Punkt --map 'qx=Soll X [m]' "
+          "--map 'qy=Soll Y [m]' --map 'qz=Soll Z [m]' --map nx=I --map ny=J --map nz=K "
+          "--map 'px=Ist X [m]' --map 'py=Ist Y [m]' --map 'pz=Ist Z [m]'",
+          tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  project = readJson(tmp, "P.metrofit");
+  EXPECT_EQ(project["datasets"][1]["map"], project["datasets"][0]["map"]);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/io/file_io.h"
+#include "core/matching/probe_points.h"
 #include "testsupport.h"
 
 namespace metrofit {
@@ -80,9 +81,55 @@ TEST(ImportGuess, AGermanCmmReportMapsSollIstAndTolerances) {
                                                              {"lower_tol_mm", "Untere Toleranz [mm]"},
                                                              {"upper_tol_mm", "Obere Toleranz [mm]"},
                                                              {"time_min", "Zeit [min]"}}));
-  // Nominal / Aktuell, and a value in µm is not read as mm.
+  // Nominal / Aktuell; each role once (the µm column after "Aktuell" is left as it is).
   EXPECT_EQ(suggestColumnRoles("cmm-report", {"Nominal", "Aktuell", "Ist [\xC2\xB5m]"}),
             (Roles{{"nominal_mm", "Nominal"}, {"measured_mm", "Aktuell"}}));
+}
+
+// Values in another unit of the role's quantity are suggested and read converted (core/io/units.h);
+// a temperature is never a length, a time without a unit is not guessed.
+TEST(ImportGuess, ColumnsInOtherUnitsAreReadInTheRolesUnit) {
+  const std::vector<std::string> header{"Teil",
+                                        "Merkmal",
+                                        "Soll [\xC2\xB5m]",
+                                        "Ist [\xC2\xB5m]",
+                                        "Untere Toleranz [\xC2\xB5m]",
+                                        "Obere Toleranz [\xC2\xB5m]",
+                                        "Zeit [h]",
+                                        "Temperatur [\xC2\xB0"
+                                        "C]"};
+  const Roles roles = suggestColumnRoles("cmm-report", header);
+  EXPECT_EQ(roles, (Roles{{"part", "Teil"},
+                          {"dimension", "Merkmal"},
+                          {"nominal_mm", header[2]},
+                          {"measured_mm", header[3]},
+                          {"lower_tol_mm", header[4]},
+                          {"upper_tol_mm", header[5]},
+                          {"time_min", "Zeit [h]"}}));
+  CsvReadOptions o;
+  o.columnMap = roles;
+  const std::string csv =
+      "Teil;Merkmal;Soll [\xC2\xB5m];Ist [\xC2\xB5m];Untere Toleranz [\xC2\xB5m];"
+      "Obere Toleranz [\xC2\xB5m];Zeit [h];Temperatur [\xC2\xB0"
+      "C]\n"
+      "1;D1;10000;10012;-20;20;0,5;21,5\n";
+  const CsvTable t = parseCsv(csv, "bericht.csv", o);
+  const auto at = [&](const char* role) { return t.number(0, t.requireColumn(role)); };
+  EXPECT_DOUBLE_EQ(at("nominal_mm"), 10.0);
+  EXPECT_DOUBLE_EQ(at("measured_mm"), 10.012);
+  EXPECT_DOUBLE_EQ(at("lower_tol_mm"), -0.02);
+  EXPECT_DOUBLE_EQ(at("upper_tol_mm"), 0.02);
+  EXPECT_DOUBLE_EQ(at("time_min"), 30.0);
+  // Probe points in metres; a circular test's deviation in nm is read in µm, in mm as mm.
+  EXPECT_EQ(suggestColumnRoles("probe-points", {"Punkt", "Soll X [m]", "Ist X [m]"}),
+            (Roles{{"id", "Punkt"}, {"qx", "Soll X [m]"}, {"px", "Ist X [m]"}}));
+  EXPECT_EQ(suggestColumnRoles("circular-test", {"Winkel [rad]", "Abweichung [nm]"}),
+            (Roles{{"angle_deg", "Winkel [rad]"}, {"deviation_um", "Abweichung [nm]"}}));
+  EXPECT_EQ(suggestColumnRoles("circular-test", {"Abweichung [mm]"}),
+            (Roles{{"deviation_mm", "Abweichung [mm]"}}));
+  EXPECT_TRUE(suggestColumnRoles("probe-points", {"Soll X [\xC2\xB0"
+                                                  "C]"})
+                  .empty());
 }
 
 TEST(ImportGuess, ProbePointsWithSollIstCoordinatesAndUpperCaseNames) {
@@ -104,7 +151,7 @@ TEST(ImportGuess, ProbePointsWithSollIstCoordinatesAndUpperCaseNames) {
 
 TEST(ImportGuess, TheRealWenzelPointsWithoutAnExtensionAreMeasuredProbePoints) {
   const auto path = test::realData("cmm-wenzel-lens-points/SPH1_1");
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no real data at " << path;
+  METROFIT_REQUIRE_PATH(path);
   const std::string text = readFile(path.string());
   EXPECT_EQ(guessDatasetKind(path.string(), text), "probe-points");
   const std::vector<std::string> header{"ID", "x", "y", "z", "Residues", "\xC3\xB8"};
@@ -121,6 +168,29 @@ TEST(ImportGuess, CircularTestsAndFilesThatAreNoneOfThese) {
   EXPECT_EQ(guessDatasetKind("model.json", "{}"), "setup-model");
   // Columns that already are the roles need no mapping.
   EXPECT_TRUE(suggestColumnRoles("thermal-log", {"time_min", "T1", "disp_z_um"}).empty());
+}
+
+// Probe points in metres, with the suggested mapping, are points in mm for posture matching.
+TEST(ImportGuess, ProbePointsInMetresAreReadInMillimetres) {
+  test::TempDir tmp;
+  const std::string file = tmp.file("punkte.csv");
+  test::writeText(file,
+                  "Punkt;Soll X [m];Soll Y [m];Soll Z [m];I;J;K;Ist X [m];Ist Y [m];Ist Z [m]\n"
+                  "1;0,1;0;0;1;0;0;0,10002;0;0\n"
+                  "2;0;0,1;0;0;1;0;0;0,09999;0\n"
+                  "3;0;0;0,1;0;0;1;0;0;0,10001\n");
+  CsvReadOptions o;
+  o.columnMap = suggestColumnRoles("probe-points", {"Punkt", "Soll X [m]", "Soll Y [m]", "Soll Z [m]", "I",
+                                                    "J", "K", "Ist X [m]", "Ist Y [m]", "Ist Z [m]"});
+  ASSERT_EQ(o.columnMap.size(), 10u);
+  const ProbePointSet set = readProbePoints(file, 3, o);
+  ASSERT_EQ(set.points.size(), 3u);
+  EXPECT_EQ(set.points[0].id, "1");
+  EXPECT_NEAR(set.points[0].nominal.x(), 100.0, 1e-12);
+  EXPECT_NEAR(set.points[0].measured.x(), 100.02, 1e-12);
+  EXPECT_NEAR(set.points[1].measured.y(), 99.99, 1e-12);
+  EXPECT_NEAR(set.points[2].measured.z(), 100.01, 1e-12);
+  EXPECT_NEAR(set.points[2].normal.z(), 1.0, 0.0) << "a normal has no unit";
 }
 
 }  // namespace
