@@ -1,6 +1,7 @@
 // metrofit-cli match: posture matching and 5-axis machine adjustment (docs/file-formats.md#match-result).
 //
-//   match --data P.csv|HOLES.txt [--tolerance T] [--method sade|ga-simplex|closed-form|minimax]
+//   match --data P.csv|HOLES.txt [--tolerance T] [--method sade|ga-simplex|closed-form|minimax] [--per-point
+//   F]
 //   [--allow-scale]
 //         [--machine xfyzba|ac-table|bc-table|head-table] [--machine-def M.json] [--lock rx,ry,...]
 //         [--reference ID,ID,ID] [--seed N] [--out F] [--remeasure [--remeasure-noise MM]]
@@ -51,7 +52,7 @@ namespace {
 /// matching study without these keys uses, so the CLI, the page and the report agree.
 struct MatchArgs {
   std::string data, method = matching::toString(MatchingSettings{}.method), machine = "xfyzba", machineDef,
-                    lock, reference, out, frame, frameOut;
+                    lock, reference, out, frame, frameOut, perPoint;
   int frameDecimals = MatchingSettings{}.frameDecimals;
   std::uint64_t seed = MatchingSettings{}.seed;
   double tolerance = MatchingSettings{}.toleranceMm, remeasureNoise = 0.006;
@@ -157,6 +158,7 @@ int runMatch(const MatchArgs& a, bool machineGiven) {
     lj["noise_mm"] = a.remeasureNoise;
     j["remeasure"] = std::move(lj);
   }
+  if (!a.perPoint.empty()) writeFileAtomic(a.perPoint, perPointCsv(r.after, set));
   writeResult(a.out, dumpJson(j));
 
   const auto names = machine::rotaryAxisNames(def.topology);
@@ -213,6 +215,10 @@ void registerMatchCommand(CLI::App& app) {
                   "Also write the posture as a controller frame: heidenhain|siemens|fanuc")
       ->check(CLI::IsMember(machine::frameFormatNames()));
   sub->add_option("--frame-out", a->frameOut, "File for --frame (written atomically)");
+  sub->add_option(
+      "--per-point", a->perPoint,
+      "Also write each point's deviation after the fit as CSV: id,surface,d_mm (along the nominal "
+      "normal),dx_mm,dy_mm,dz_mm (written atomically)");
   sub->add_option("--frame-decimals", a->frameDecimals, "Decimals of the --frame values (mm and deg)")
       ->check(CLI::Range(0, 12))
       ->capture_default_str();

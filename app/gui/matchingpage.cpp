@@ -1,5 +1,6 @@
 #include "app/gui/matchingpage.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
@@ -41,6 +42,7 @@
 #include "app/gui/studysettingbinding.h"
 #include "core/common/error.h"
 #include "core/io/file_io.h"
+#include "core/matching/evaluation.h"
 #include "core/matching/hole_table.h"
 #include "core/project/stored_results.h"
 #include "core/study/study_settings.h"
@@ -473,6 +475,16 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   table_ =
       makeTable(tabs_, {tr("Point"), tr("Surface"), tr("Deviation before (mm)"), tr("Deviation after (mm)")});
   new ColumnFitter(table_, {1}, false);
+  {
+    // The per-point deviations after the fit as CSV (as `match --per-point` writes them).
+    auto* exportPoints = new QAction(tr("&Export deviations after matching (CSV)…"), table_);
+    exportPoints->setObjectName(QStringLiteral("exportPerPoint"));
+    exportPoints->setToolTip(
+        tr("Each point's signed deviation along its normal and its deviation vector "
+           "after the fit: id, surface, d_mm, dx_mm, dy_mm, dz_mm"));
+    connect(exportPoints, &QAction::triggered, this, &MatchingPage::savePerPointDialog);
+    table_->addAction(exportPoints);
+  }
 
   // The posture as a controller frame: the group of settings left, the blocks right.
   frameTab_ = new QWidget(tabs_);
@@ -1535,6 +1547,32 @@ bool MatchingPage::saveFrame(const QString& path, QString* error) const {
     return false;
   }
   return true;
+}
+
+bool MatchingPage::savePerPointDeviations(const QString& path, QString* error) const {
+  if (!result_ || !set_) {
+    if (error) *error = tr("There are no deviations after matching yet: run the matching first.");
+    return false;
+  }
+  try {
+    writeFileAtomic(path.toStdString(), matching::perPointCsv(result_->primaryRun().after, *set_));
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
+  return true;
+}
+
+void MatchingPage::savePerPointDialog() {
+  const QString dir =
+      document_->fileName().isEmpty() ? QString() : QFileInfo(document_->fileName()).absolutePath();
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export the deviations after matching"), QDir(dir).filePath(QStringLiteral("deviations.csv")),
+      tr("CSV files (*.csv)") + QStringLiteral(";;") + tr("All files (*)"));
+  if (path.isEmpty()) return;
+  QString error;
+  if (!savePerPointDeviations(path, &error))
+    QMessageBox::critical(this, tr("Cannot export the deviations"), error);
 }
 
 void MatchingPage::saveFrameDialog() {

@@ -101,6 +101,9 @@ class MatchingPage : public QWidget {
   /// --frame F --frame-out path --frame-decimals N --data <dataset file>` does. False with the message
   /// in *error (no result, or core's message).
   bool saveFrame(const QString& path, QString* error = nullptr) const;
+  /// Writes each point's deviation after the fit as CSV (matching::perPointCsv, as `match --per-point`);
+  /// false with a readable *error before a run or when the file cannot be written.
+  bool savePerPointDeviations(const QString& path, QString* error = nullptr) const;
 
   /// Settings (also through the controls).
   void setMethod(matching::MatchMethod method);
@@ -158,6 +161,7 @@ class MatchingPage : public QWidget {
   void fillPointTable();
   void fillFrame();
   void saveFrameDialog();
+  void savePerPointDialog();
   void reevaluate();
   void setRunning(bool running);
 

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "core/common/error.h"
+#include "core/io/csv.h"
 
 namespace metrofit::matching {
 namespace {
@@ -46,6 +47,7 @@ ToleranceEvaluation evaluateTolerance(const ProbePointSet& set, const Pose& pose
   const std::size_t n = set.points.size();
   ev.deviations.resize(n);
   ev.distances.resize(n);
+  ev.residuals.resize(n);
   Accumulator all;
   std::vector<Accumulator> perSurface;
   std::unordered_map<std::string, std::size_t> surfaceIndex;
@@ -54,7 +56,8 @@ ToleranceEvaluation evaluateTolerance(const ProbePointSet& set, const Pose& pose
     const ProbePoint& p = set.points[i];
     const Eigen::Vector3d qt = pose.apply(p.nominal);
     const Eigen::Vector3d nt = pose.rotation * p.normal;
-    ev.distances[i] = (p.measured - qt).norm();
+    ev.residuals[i] = p.measured - qt;
+    ev.distances[i] = ev.residuals[i].norm();
     ev.deviations[i] = set.deviation(i, qt, nt);
     all.add(ev.distances[i], ev.deviations[i], tol);
     auto [it, fresh] = surfaceIndex.emplace(p.surface, perSurface.size());
@@ -71,6 +74,17 @@ ToleranceEvaluation evaluateTolerance(const ProbePointSet& set, const Pose& pose
   ev.overall = all.stats();
   for (std::size_t k = 0; k < perSurface.size(); ++k) ev.surfaces[k].stats = perSurface[k].stats();
   return ev;
+}
+
+std::string perPointCsv(const ToleranceEvaluation& ev, const ProbePointSet& set) {
+  CsvWriter w;
+  w.row({"id", "surface", "d_mm", "dx_mm", "dy_mm", "dz_mm"});
+  for (std::size_t i = 0; i < set.points.size() && i < ev.residuals.size(); ++i) {
+    const Eigen::Vector3d& r = ev.residuals[i];
+    w.row({set.points[i].id, set.points[i].surface, CsvWriter::formatNumber(ev.deviations[i]),
+           CsvWriter::formatNumber(r.x()), CsvWriter::formatNumber(r.y()), CsvWriter::formatNumber(r.z())});
+  }
+  return w.text();
 }
 
 double maxAbsDeviation(const ProbePointSet& set, const Pose& pose) {

@@ -39,12 +39,20 @@ struct ToleranceEvaluation {
   std::vector<SurfaceStats> surfaces;  ///< in order of first appearance
   std::vector<double> deviations;      ///< d_i per point (signed where the set has normals)
   std::vector<double> distances;       ///< e_i per point
-  std::size_t worstPoint = 0;          ///< index of the largest |d_i|
+  /// p_i - (s R q_i + t) per point (mm, in the measured frame): the per-point deviation vector that
+  /// `match` writes as per_point dx/dy/dz (docs/file-formats.md#match-result).
+  std::vector<Eigen::Vector3d> residuals;
+  std::size_t worstPoint = 0;  ///< index of the largest |d_i|
 };
 
 /// Evaluates `set` under `pose` against a symmetric tolerance (mm, >= 0). ValidationError naming the
 /// file for an empty set; OptionsError for a negative or non-finite tolerance.
 ToleranceEvaluation evaluateTolerance(const ProbePointSet& set, const Pose& pose, double toleranceMm);
+
+/// The per-point deviations of an evaluation as CSV (`match --per-point FILE`, CloudCompare-style):
+/// `id,surface,d_mm,dx_mm,dy_mm,dz_mm` in input order, d_i signed along the nominal normal where the set
+/// has normals (else the distance e_i), '.' decimals whatever the locale.
+std::string perPointCsv(const ToleranceEvaluation& evaluation, const ProbePointSet& set);
 
 /// max_i |d_i| under `pose` (the minimax objective), without the per-surface bookkeeping.
 double maxAbsDeviation(const ProbePointSet& set, const Pose& pose);

@@ -198,6 +198,18 @@ nlohmann::json toJson(const MatchResult& r, const ProbePointSet& set) {
   j["locked"] = std::move(locked);
   j["before"] = evaluationJson(r.before);
   j["after"] = evaluationJson(r.after);
+  // Per point after the fit (CloudCompare-style signed deviations): d along the nominal normal (the
+  // evaluation's d_i) and the deviation vector p_i - (s R q_i + t).
+  nlohmann::json perPoint = nlohmann::json::array();
+  for (std::size_t i = 0; i < set.points.size() && i < r.after.residuals.size(); ++i) {
+    const Eigen::Vector3d& e = r.after.residuals[i];
+    perPoint.push_back({{"id", set.points[i].id},
+                        {"d_mm", r.after.deviations[i]},
+                        {"dx_mm", e.x()},
+                        {"dy_mm", e.y()},
+                        {"dz_mm", e.z()}});
+  }
+  j["per_point"] = std::move(perPoint);
   j["evaluations"] = r.run.evaluations;
   j["iterations"] = r.run.iterations;
   j["termination"] = toString(r.run.termination);

@@ -9,8 +9,10 @@
 #include <string>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "cli/cli_runner.h"
+#include "core/io/csv.h"
 #include "core/io/json_util.h"
 #include "testsupport.h"
 
@@ -60,6 +62,47 @@ TEST_F(MatchCli, ClosedFormWritesTheContractJson) {
   for (const char* k : {"SX_mm", "SY_mm", "SZ_mm", "SA_deg", "SB_deg", "frame_rotation_deg", "definition"})
     EXPECT_TRUE(m.contains(k)) << k;
   EXPECT_EQ(j.at("after").at("surfaces").size(), 4u);
+}
+
+// per_point (CONTRACT, issue 28 item 4) recomputed here from the file's q, n, p and the result's
+// posture with the convention docs/file-formats.md#match-result states (p = R q + t, R = Rz Ry Rx of
+// rotation_deg = [rx, ry, rz]), and the --per-point CSV holds the same numbers.
+TEST_F(MatchCli, PerPointDeviationsFollowThePostureAndGoToCsv) {
+  const nlohmann::json j =
+      runJson("match --data p.csv --method closed-form --tolerance 0.035 --per-point pp.csv", tmp);
+  const auto& rot = j.at("rotation_deg");
+  const double deg = 3.14159265358979323846 / 180.0;
+  const Eigen::Matrix3d R = (Eigen::AngleAxisd(rot[2].get<double>() * deg, Eigen::Vector3d::UnitZ()) *
+                             Eigen::AngleAxisd(rot[1].get<double>() * deg, Eigen::Vector3d::UnitY()) *
+                             Eigen::AngleAxisd(rot[0].get<double>() * deg, Eigen::Vector3d::UnitX()))
+                                .toRotationMatrix();
+  const auto& tj = j.at("translation_mm");
+  const Eigen::Vector3d t(tj[0].get<double>(), tj[1].get<double>(), tj[2].get<double>());
+  const CsvTable points = readCsvFile(tmp.file("p.csv"));
+  const auto& perPoint = j.at("per_point");
+  ASSERT_EQ(perPoint.size(), points.rowCount());
+  const CsvTable csv = readCsvFile(tmp.file("pp.csv"));
+  ASSERT_EQ(csv.rowCount(), points.rowCount());
+  double sumSquares = 0.0;
+  for (std::size_t i = 0; i < points.rowCount(); ++i) {
+    const auto col = [&](const char* name) { return points.number(i, points.requireColumn(name)); };
+    const Eigen::Vector3d q(col("qx"), col("qy"), col("qz")), n(col("nx"), col("ny"), col("nz")),
+        p(col("px"), col("py"), col("pz"));
+    const Eigen::Vector3d e = p - (R * q + t);
+    const nlohmann::json& pp = perPoint[i];
+    EXPECT_EQ(pp.at("id"), points.cell(i, points.requireColumn("id")));
+    EXPECT_NEAR(pp.at("dx_mm").get<double>(), e.x(), 1e-9) << i;
+    EXPECT_NEAR(pp.at("dy_mm").get<double>(), e.y(), 1e-9) << i;
+    EXPECT_NEAR(pp.at("dz_mm").get<double>(), e.z(), 1e-9) << i;
+    EXPECT_NEAR(pp.at("d_mm").get<double>(), e.dot(R * n), 1e-9) << i;
+    sumSquares += e.squaredNorm();
+    // The CSV: the same numbers ('.' decimals under every locale of the matrix).
+    EXPECT_EQ(csv.cell(i, csv.requireColumn("id")), pp.at("id").get<std::string>());
+    for (const char* key : {"d_mm", "dx_mm", "dy_mm", "dz_mm"})
+      EXPECT_DOUBLE_EQ(csv.number(i, csv.requireColumn(key)), pp.at(key).get<double>()) << key << " " << i;
+  }
+  EXPECT_NEAR(std::sqrt(sumSquares / static_cast<double>(points.rowCount())), j.at("rmse_mm").get<double>(),
+              1e-12);
 }
 
 TEST_F(MatchCli, SadeIsReproducibleBySeedAndHasATrace) {

@@ -12,6 +12,7 @@
 //    file read here) and to the page's figures.
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
@@ -21,6 +22,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -40,6 +42,7 @@
 #include "app/gui/setuppage.h"
 #include "cli/cli_runner.h"
 #include "cli/dfq_fields.h"
+#include "core/io/csv.h"
 #include "core/project/project.h"
 #include "core/sim/probe_sim.h"
 #include "core/study/kinematic_study.h"
@@ -114,6 +117,35 @@ TEST_F(FramePageTest, NoResultNoFrame) {
   EXPECT_FALSE(page_->saveFrame(dir_.filePath(QStringLiteral("x.h")), &error));
   EXPECT_FALSE(error.isEmpty());
   EXPECT_FALSE(QFile::exists(dir_.filePath(QStringLiteral("x.h"))));
+}
+
+// The points table's "Export deviations after matching (CSV)…" writes the bytes `match --per-point`
+// writes for the same data and method (issue 28 item 4).
+TEST_F(FramePageTest, PerPointDeviationsAreTheCliFile) {
+  QString error;
+  EXPECT_FALSE(page_->savePerPointDeviations(dir_.filePath(QStringLiteral("pp.csv")), &error));
+  EXPECT_FALSE(error.isEmpty());
+  EXPECT_FALSE(QFile::exists(dir_.filePath(QStringLiteral("pp.csv"))));
+  ASSERT_TRUE(page_->runNow()) << page_->errorMessage().toStdString();
+  ASSERT_EQ(page_->result()->primary, matching::MatchMethod::ClosedForm);
+  EXPECT_NE(page_->pointTable()->findChild<QAction*>(QStringLiteral("exportPerPoint")), nullptr);
+  const QString saved = dir_.filePath(QStringLiteral("pp.csv"));
+  ASSERT_TRUE(page_->savePerPointDeviations(saved, &error)) << error.toStdString();
+  test::TempDir tmp;
+  const test::CliRun cli =
+      test::cli("match --data " + quoted(dataFile()) + " --method closed-form --per-point pp.csv", tmp);
+  ASSERT_EQ(cli.code, 0) << cli.err;
+  EXPECT_EQ(test::readText(saved.toStdString()), test::readText(tmp.file("pp.csv")));
+  // Its d_mm column is the table's "after" column (4 decimals there).
+  const CsvTable t = readCsvFile(saved.toStdString());
+  ASSERT_EQ(static_cast<int>(t.rowCount()), page_->pointTable()->rowCount());
+  for (int row = 0; row < page_->pointTable()->rowCount(); ++row) {
+    bool ok = false;
+    const double shown = QLocale().toDouble(page_->pointTable()->item(row, 3)->text(), &ok);
+    ASSERT_TRUE(ok) << page_->pointTable()->item(row, 3)->text().toStdString();
+    EXPECT_NEAR(shown, t.number(static_cast<std::size_t>(row), t.requireColumn("d_mm")), 0.5e-4 + 1e-12)
+        << row;
+  }
 }
 
 TEST_F(FramePageTest, FrameIsTheCliFileForEveryControl) {

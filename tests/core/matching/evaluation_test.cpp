@@ -67,6 +67,32 @@ TEST(Evaluation, UnderAPostureTheNormalTurnsWithThePart) {
   EXPECT_GT(before.overall.maxAbsMm, 1.0);
 }
 
+// Per point (match's per_point and --per-point CSV): under a posture written by hand — 90 deg about z,
+// then t = (1, 2, 3) — q = (1, 0, 0) with normal (1, 0, 0) lies at (1, 3, 3) with normal (0, 1, 0); a
+// measured point (1, 3.5, 3.25) deviates by (0, 0.5, 0.25), d = 0.5 along the turned normal.
+TEST(Evaluation, PerPointDeviationVectorsAndTheirCsv) {
+  Pose pose;
+  pose.rotation << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  pose.translation = {1, 2, 3};
+  ProbePointSet set;
+  set.source = "hand";
+  set.hasNormals = true;
+  set.points.push_back({"P1", "top", {1, 0, 0}, {1, 0, 0}, {1, 3.5, 3.25}});
+  set.points.push_back({"P2", "top", {0, 1, 0}, {0, 1, 0}, {0.25, 2, 3}});  // at (0, 2, 3), normal (-1, 0, 0)
+  const ToleranceEvaluation ev = evaluateTolerance(set, pose, 0.1);
+  ASSERT_EQ(ev.residuals.size(), 2u);
+  EXPECT_NEAR(ev.residuals[0].x(), 0.0, 1e-15);
+  EXPECT_NEAR(ev.residuals[0].y(), 0.5, 1e-15);
+  EXPECT_NEAR(ev.residuals[0].z(), 0.25, 1e-15);
+  EXPECT_NEAR(ev.deviations[0], 0.5, 1e-15);
+  EXPECT_NEAR(ev.residuals[1].x(), 0.25, 1e-15);
+  EXPECT_NEAR(ev.deviations[1], -0.25, 1e-15) << "outside the material along -x is negative here";
+  EXPECT_EQ(perPointCsv(ev, set),
+            "id,surface,d_mm,dx_mm,dy_mm,dz_mm\n"
+            "P1,top,0.5,0,0.5,0.25\n"
+            "P2,top,-0.25,0.25,0,0\n");
+}
+
 TEST(Evaluation, BadToleranceOrEmptySet) {
   ProbePointSet empty;
   empty.source = "e.csv";
