@@ -318,11 +318,13 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     <name>metrofit::ChartNavigation</name>
     <message>
         <location filename="../widgets/common/chartnavigation.cpp" line="+146"/>
+        <location filename="../widgets/common/plotnavigation.cpp" line="+50"/>
         <source>&amp;Reset zoom (double click, Home)</source>
         <translation>&amp;Zoom zurücksetzen (Doppelklick, Pos1)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location filename="../widgets/common/plotnavigation.cpp" line="+2"/>
         <source>Show the whole chart again</source>
         <translation>Das ganze Diagramm wieder zeigen</translation>
     </message>
@@ -330,7 +332,26 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
 <context>
     <name>metrofit::CircularPathView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+32"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+60"/>
+        <source>point %1 (%2)
+x: %3 mm, y: %4 mm
+radial deviation: %5 µm</source>
+        <translation>Punkt %1 (%2)
+x: %3 mm; y: %4 mm
+radiale Abweichung: %5 µm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CCW</source>
+        <translation>GUZ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>UZ</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The XY path in mm: the nominal circle true to scale; the measured path, the compensated references and the expected result as deviations from the nominal point, magnified by the factor shown.</source>
         <translation>Die XY-Bahn in mm: der Nennkreis maßstabsgetreu; die gemessene Bahn, die kompensierten Sollwerte und das erwartete Ergebnis als Abweichungen vom Nennpunkt, vergrößert um den angegebenen Faktor.</translation>
     </message>
@@ -338,7 +359,21 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
 <context>
     <name>metrofit::ControlChartView</name>
     <message>
-        <location line="+54"/>
+        <location line="+86"/>
+        <source>subgroup %1
+mean: %2%3</source>
+        <translation>Untergruppe %1
+Mittelwert: %2%3</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>subgroup %1
+range: %2%3</source>
+        <translation>Untergruppe %1
+Spannweite: %2%3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (kinematic-compensation paper, Eq. 18–19); red points are out of control.</source>
         <translation>Mittelwerte der Untergruppen mit Mittellinie (CL) und den Eingriffsgrenzen UCL/LCL = Mittelwert ± A2 · R̄ (Artikel zur kinematischen Kompensation, Gl. 18–19); rote Punkte liegen außerhalb der Grenzen.</translation>
     </message>
@@ -1102,7 +1137,14 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::HistogramView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+30"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+40"/>
+        <source>%1 to %2%3
+count: %4</source>
+        <translation>%1 bis %2%3
+Anzahl: %4</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Distribution of the values with the specification limits LSL/USL, the nominal and the mean.</source>
         <translation>Verteilung der Werte mit den Toleranzgrenzen LSL/USL, dem Nennwert und dem Mittelwert.</translation>
     </message>
@@ -3039,7 +3081,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+122"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+124"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -3285,7 +3327,17 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Abweichung nachher (mm)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+4"/>
+        <source>&amp;Export deviations after matching (CSV)…</source>
+        <translation>Abweichungen nach dem Einpassen &amp;exportieren (CSV)…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Each point&apos;s signed deviation along its normal and its deviation vector after the fit: id, surface, d_mm, dx_mm, dy_mm, dz_mm</source>
+        <translation>Die vorzeichenbehaftete Abweichung jedes Punkts entlang seiner Normalen und sein Abweichungsvektor nach dem Einpassen: id, surface, d_mm, dx_mm, dy_mm, dz_mm</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>The control the frame is written for: HEIDENHAIN datum shift and PLANE SPATIAL, SINUMERIK TRANS and AROT, FANUC G68.2</source>
         <translation>Die Steuerung, für die der Frame geschrieben wird: HEIDENHAIN Nullpunktverschiebung und PLANE SPATIAL, SINUMERIK TRANS und AROT, FANUC G68.2</translation>
     </message>
@@ -3452,7 +3504,27 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Es gibt noch keine Lage zum Schreiben: zuerst die Ausrichtung ausführen.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+21"/>
+        <source>There are no deviations after matching yet: run the matching first.</source>
+        <translation>Es gibt noch keine Abweichungen nach dem Einpassen: zuerst das Einpassen ausführen.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Export the deviations after matching</source>
+        <translation>Abweichungen nach dem Einpassen exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot export the deviations</source>
+        <translation>Die Abweichungen können nicht exportiert werden</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>HEIDENHAIN programs (*.h)</source>
         <translation>HEIDENHAIN-Programme (*.h)</translation>
     </message>
@@ -3472,7 +3544,8 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Steuerungs-Frame speichern</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-18"/>
+        <location line="+19"/>
         <source>All files (*)</source>
         <translation>Alle Dateien (*)</translation>
     </message>
@@ -3482,7 +3555,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Der Frame kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="-730"/>
+        <location line="-756"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Fügen Sie der Projektdatei einen Datensatz der Art „probe_points“ hinzu (Kennung, Fläche, Sollpunkt, Normale, Messpunkt).</translation>
     </message>
@@ -3515,12 +3588,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
     <message>
-        <location line="-887"/>
+        <location line="-897"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: %1 mm kann auf der Seite nicht eingestellt werden (sie nimmt %2 bis %3 mm in Schritten von %4 mm)</translation>
     </message>
     <message>
-        <location line="+881"/>
+        <location line="+891"/>
         <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
         <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (Rückgängig oder die Projektdatei): %1</translation>
     </message>
@@ -3888,7 +3961,31 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PolarDeviationView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-60"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-106"/>
+        <source>%1
+angle: %2°
+deviation: %3 µm</source>
+        <translation>%1
+Winkel: %2°
+Abweichung: %3 µm</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CCW</source>
+        <translation>GUZ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>UZ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>expected after compensation</source>
+        <translation>erwartet nach Kompensation</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Radial deviation of the measured path from the nominal circle, magnified (ballbar plot): plotted radius = R + k × deviation. Blue: CCW loop, orange: CW loop; the rings are labelled in µm.</source>
         <translation>Radiale Abweichung der gemessenen Bahn vom Nennkreis, vergrößert (Ballbar-Diagramm): dargestellter Radius = R + k × Abweichung. Blau: Umlauf gegen den Uhrzeigersinn, orange: im Uhrzeigersinn; die Ringe sind in µm beschriftet.</translation>
     </message>
@@ -8278,7 +8375,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::SpcView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+90"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+126"/>
         <source>index</source>
         <translation>Kenngröße</translation>
     </message>

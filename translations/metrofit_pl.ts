@@ -318,11 +318,13 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     <name>metrofit::ChartNavigation</name>
     <message>
         <location filename="../widgets/common/chartnavigation.cpp" line="+146"/>
+        <location filename="../widgets/common/plotnavigation.cpp" line="+50"/>
         <source>&amp;Reset zoom (double click, Home)</source>
         <translation>&amp;Resetuj powiększenie (dwuklik, Home)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location filename="../widgets/common/plotnavigation.cpp" line="+2"/>
         <source>Show the whole chart again</source>
         <translation>Pokaż znów cały wykres</translation>
     </message>
@@ -330,7 +332,26 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
 <context>
     <name>metrofit::CircularPathView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+32"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+60"/>
+        <source>point %1 (%2)
+x: %3 mm, y: %4 mm
+radial deviation: %5 µm</source>
+        <translation>punkt %1 (%2)
+x: %3 mm; y: %4 mm
+odchyłka promieniowa: %5 µm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CCW</source>
+        <translation>CCW</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>CW</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The XY path in mm: the nominal circle true to scale; the measured path, the compensated references and the expected result as deviations from the nominal point, magnified by the factor shown.</source>
         <translation>Tor XY w mm: okrąg nominalny w skali; zmierzony tor, skompensowane wartości zadane i oczekiwany wynik jako odchyłki od punktu nominalnego, powiększone o podany współczynnik.</translation>
     </message>
@@ -338,7 +359,21 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
 <context>
     <name>metrofit::ControlChartView</name>
     <message>
-        <location line="+54"/>
+        <location line="+86"/>
+        <source>subgroup %1
+mean: %2%3</source>
+        <translation>podgrupa %1
+średnia: %2%3</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>subgroup %1
+range: %2%3</source>
+        <translation>podgrupa %1
+rozstęp: %2%3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (kinematic-compensation paper, Eq. 18–19); red points are out of control.</source>
         <translation>Średnie podgrup z linią centralną (CL) i granicami kontrolnymi UCL/LCL = średnia ± A2 · R̄ (artykuł o kompensacji kinematycznej, równ. 18–19); czerwone punkty są poza kontrolą.</translation>
     </message>
@@ -1103,7 +1138,14 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::HistogramView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+30"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+40"/>
+        <source>%1 to %2%3
+count: %4</source>
+        <translation>od %1 do %2%3
+liczba: %4</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Distribution of the values with the specification limits LSL/USL, the nominal and the mean.</source>
         <translation>Rozkład wartości z granicami specyfikacji LSL/USL, wartością nominalną i średnią.</translation>
     </message>
@@ -3043,7 +3085,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+122"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+124"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -3289,7 +3331,17 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Odchyłka po (mm)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+4"/>
+        <source>&amp;Export deviations after matching (CSV)…</source>
+        <translation>&amp;Eksportuj odchyłki po dopasowaniu (CSV)…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Each point&apos;s signed deviation along its normal and its deviation vector after the fit: id, surface, d_mm, dx_mm, dy_mm, dz_mm</source>
+        <translation>Odchyłka każdego punktu ze znakiem wzdłuż normalnej i jego wektor odchyłki po dopasowaniu: id, surface, d_mm, dx_mm, dy_mm, dz_mm</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>The control the frame is written for: HEIDENHAIN datum shift and PLANE SPATIAL, SINUMERIK TRANS and AROT, FANUC G68.2</source>
         <translation>Sterowanie, dla którego zapisywany jest frame: HEIDENHAIN przesunięcie punktu zerowego i PLANE SPATIAL, SINUMERIK TRANS i AROT, FANUC G68.2</translation>
     </message>
@@ -3456,7 +3508,27 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie ma jeszcze położenia do zapisania: najpierw uruchom dopasowanie.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+21"/>
+        <source>There are no deviations after matching yet: run the matching first.</source>
+        <translation>Nie ma jeszcze odchyłek po dopasowaniu: najpierw uruchom dopasowanie.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Export the deviations after matching</source>
+        <translation>Eksportuj odchyłki po dopasowaniu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV files (*.csv)</source>
+        <translation>Pliki CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot export the deviations</source>
+        <translation>Nie można wyeksportować odchyłek</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>HEIDENHAIN programs (*.h)</source>
         <translation>Programy HEIDENHAIN (*.h)</translation>
     </message>
@@ -3476,7 +3548,8 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zapisz frame sterowania</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-18"/>
+        <location line="+19"/>
         <source>All files (*)</source>
         <translation>Wszystkie pliki (*)</translation>
     </message>
@@ -3486,7 +3559,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Nie można zapisać frame’u</translation>
     </message>
     <message>
-        <location line="-730"/>
+        <location line="-756"/>
         <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
         <translation>Ten projekt nie zawiera punktów sondowania. Dodaj do pliku projektu zbiór danych rodzaju „probe_points” (identyfikator, powierzchnia, punkt nominalny, normalna, punkt zmierzony).</translation>
     </message>
@@ -3519,12 +3592,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
     <message>
-        <location line="-887"/>
+        <location line="-897"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: nie można ustawić %1 mm na stronie (przyjmuje od %2 do %3 mm w krokach co %4 mm)</translation>
     </message>
     <message>
-        <location line="+881"/>
+        <location line="+891"/>
         <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
         <translation>Ustawienia badania dopasowania są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (Cofnij lub plik projektu): %1</translation>
     </message>
@@ -3893,7 +3966,31 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PolarDeviationView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-60"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-106"/>
+        <source>%1
+angle: %2°
+deviation: %3 µm</source>
+        <translation>%1
+kąt: %2°
+odchyłka: %3 µm</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CCW</source>
+        <translation>CCW</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CW</source>
+        <translation>CW</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>expected after compensation</source>
+        <translation>oczekiwane po kompensacji</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Radial deviation of the measured path from the nominal circle, magnified (ballbar plot): plotted radius = R + k × deviation. Blue: CCW loop, orange: CW loop; the rings are labelled in µm.</source>
         <translation>Odchyłka promieniowa zmierzonego toru od okręgu nominalnego, powiększona (wykres ballbar): promień na wykresie = R + k × odchyłka. Niebieski: pętla przeciwnie do ruchu wskazówek zegara, pomarańczowy: zgodnie; okręgi opisano w µm.</translation>
     </message>
@@ -8302,7 +8399,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::SpcView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+90"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+126"/>
         <source>index</source>
         <translation>wskaźnik</translation>
     </message>

@@ -10,6 +10,7 @@
 #include <QImage>
 #include <QPainter>
 #include <QTableWidget>
+#include <QTest>
 
 #include <cmath>
 #include <numbers>
@@ -22,6 +23,7 @@
 #include "core/study/circular_analysis.h"
 #include "qtapp.h"
 #include "testsupport.h"
+#include "widgets/common/plotnavigation.h"
 #include "widgets/kinematics/kinematicplots.h"
 #include "widgets/kinematics/kinematicsviews.h"
 
@@ -387,6 +389,92 @@ TEST(PlotData, CircularTestBuildersCarryTheStudyAsTheFormulasSay) {
   int counted = 0;
   for (int n : h.bins.counts) counted += n;
   EXPECT_EQ(counted, 10);
+}
+
+// Zoom, pan and the cursor read-out of the QPainter plots (widgets/common/plotnavigation.h, issue 28
+// item 5): the wheel magnifies around the cursor (the point under it stays), the pixels follow, the
+// read-out names the point under the cursor with its values, a double click shows the whole plot.
+TEST(PlotNavigation, PolarPlotZoomsAroundTheCursorAndReadsThePointUnderIt) {
+  QLocale::setDefault(QLocale::c());
+  PolarDeviationView view;
+  view.resize(520, 600);
+  PolarPlotData d = bumpAt90();
+  d.magnification = 1000.0;
+  d.ringStepMm = 0.005;
+  view.setData(d);
+  ASSERT_TRUE(hasPlotNavigation(&view));
+  const QPointF tip = view.mapToWidget(90.0, 0.010);
+  // Unzoomed: at the bump's tip the read-out names its angle and deviation.
+  QString text = plotReadoutAt(&view, tip);
+  EXPECT_TRUE(text.contains(QStringLiteral("angle: 90")) && text.contains(QStringLiteral("deviation: 10 ")))
+      << text.toStdString();
+  EXPECT_TRUE(plotReadoutAt(&view, QPointF(3, 3)).isEmpty()) << "no point near the corner";
+
+  // Four wheel notches at the tip: magnified by 1.25^4, the tip stays under the cursor.
+  QWheelEvent wheel(tip, view.mapToGlobal(tip), QPoint(), QPoint(0, 4 * 120), Qt::NoButton, Qt::NoModifier,
+                    Qt::NoScrollPhase, false);
+  QCoreApplication::sendEvent(&view, &wheel);
+  ASSERT_TRUE(isPlotZoomed(&view));
+  const QTransform t = plotViewTransform(&view);
+  EXPECT_NEAR(t.m11(), std::pow(1.25, 4), 1e-12);
+  EXPECT_NEAR(t.map(tip).x(), tip.x(), 1e-9);
+  EXPECT_NEAR(t.map(tip).y(), tip.y(), 1e-9);
+  const QImage zoomed = view.grab().toImage();
+  save(zoomed, "kinematics-polar-zoomed.png");
+  EXPECT_TRUE(colourNear(zoomed, tip, kinematic_colour::counterClockwise()));
+  // The loop at 0 deg, 20 px right of the centre line at unzoomed scale, is drawn where the
+  // transform puts it (checked in the pixels).
+  const QPointF at0 = t.map(view.mapToWidget(45.0, 0.0));
+  if (QRectF(view.rect()).contains(at0))
+    EXPECT_TRUE(colourNear(zoomed, at0, kinematic_colour::counterClockwise(), 2));
+  // Still the same point under the cursor after the zoom.
+  EXPECT_EQ(plotReadoutAt(&view, tip), text);
+  // A drag pans: the plot moves with the mouse.
+  QTest::mousePress(&view, Qt::LeftButton, Qt::NoModifier, QPoint(200, 200));
+  QTest::mouseMove(&view, QPoint(230, 210));
+  QTest::mouseRelease(&view, Qt::LeftButton, Qt::NoModifier, QPoint(230, 210));
+  const QTransform panned = plotViewTransform(&view);
+  EXPECT_NEAR(panned.dx() - t.dx(), 30.0, 1e-9);
+  EXPECT_NEAR(panned.dy() - t.dy(), 10.0, 1e-9);
+  // A double click shows the whole plot again.
+  QTest::mouseDClick(&view, Qt::LeftButton, Qt::NoModifier, QPoint(100, 100));
+  EXPECT_FALSE(isPlotZoomed(&view));
+  EXPECT_TRUE(plotViewTransform(&view).isIdentity());
+  EXPECT_FALSE(resetPlotZoom(&view)) << "nothing to reset";
+}
+
+TEST(PlotNavigation, ControlChartAndHistogramReadTheirValues) {
+  QLocale::setDefault(QLocale::c());
+  const XbarRChart chart = xbarRChart(series(), 5);
+  ControlChartView mean(ControlChartKind::Mean);
+  mean.resize(640, 280);
+  mean.setChart(chart, QStringLiteral("mm"));
+  const QPointF third = mean.layout().map(3.0, chart.means[2]);
+  EXPECT_EQ(plotReadoutAt(&mean, third),
+            QStringLiteral("subgroup 3\nmean: %1 mm").arg(QLocale::c().toString(chart.means[2], 'g', 5)));
+  ControlChartView range(ControlChartKind::Range);
+  range.resize(640, 280);
+  range.setChart(chart, QStringLiteral("mm"));
+  EXPECT_TRUE(plotReadoutAt(&range, range.layout().map(5.0, chart.ranges[4]))
+                  .startsWith(QStringLiteral("subgroup 5\nrange: ")));
+  // Zoomed 3 x around the third point, the read-out there is the same.
+  zoomPlot(&mean, third, 3.0);
+  EXPECT_TRUE(plotReadoutAt(&mean, third).startsWith(QStringLiteral("subgroup 3\n")));
+
+  HistogramView histogram;
+  histogram.resize(640, 280);
+  HistogramData h;
+  h.values = {1.0, 1.05, 1.5, 1.7, 2.0};
+  h.bins = histogramBins(h.values, 5);  // width 0.2 from 1.0: counts 2, 0, 1, 1, 1
+  h.unit = QStringLiteral("mm");
+  histogram.setData(h);
+  const HistogramLayout L = histogram.layout();
+  const double y = L.plotArea().center().y();
+  EXPECT_EQ(plotReadoutAt(&histogram, QPointF(L.map(1.1, 0).x(), y)),
+            QStringLiteral("1 to 1.2 mm\ncount: 2"));
+  EXPECT_EQ(plotReadoutAt(&histogram, QPointF(L.map(1.7, 0).x(), y)),
+            QStringLiteral("1.6 to 1.8 mm\ncount: 1"));
+  EXPECT_TRUE(plotReadoutAt(&histogram, QPointF(2, 2)).isEmpty());
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "widgets/kinematics/kinematicsviews.h"
 #include "widgets/common/chartexport.h"
+#include "widgets/common/plotnavigation.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/diagnose/coretexts.h"
 
@@ -19,6 +20,18 @@ namespace {
 
 void fillWhite(QPainter& p, const QWidget* w) {
   p.fillRect(w->rect(), Qt::white);
+  p.setTransform(plotViewTransform(w));  // zoom and pan (plotnavigation.h)
+}
+
+/// How near (screen pixels) the cursor must be to a point for the read-out to name it.
+constexpr double kReachPx = 12.0;
+
+QString number(double v) {
+  return QLocale().toString(v, 'g', 5);
+}
+
+double distance(const QPointF& a, const QPointF& b) {
+  return std::hypot(a.x() - b.x(), a.y() - b.y());
 }
 
 }  // namespace
@@ -27,6 +40,28 @@ void fillWhite(QPainter& p, const QWidget* w) {
 
 CircularPathView::CircularPathView(QWidget* parent) : QWidget(parent) {
   enableChartExport(this, QStringLiteral("kinematics-path"));
+  // The read-out: the measured point nearest to the cursor, its position and radial deviation.
+  enablePlotNavigation(this, [this](const QPointF& at, double scale) -> QString {
+    if (data_.radiusMm <= 0.0 || data_.measured.size() != data_.nominal.size()) return {};
+    const PathPlotLayout l = layout();
+    double best = kReachPx / scale;
+    std::size_t hit = data_.measured.size();
+    for (std::size_t k = 0; k < data_.measured.size(); ++k) {
+      const double d = distance(l.mapMagnified(data_.nominal[k], data_.measured[k]), at);
+      if (d <= best) {
+        best = d;
+        hit = k;
+      }
+    }
+    if (hit == data_.measured.size()) return {};
+    const Eigen::Vector2d& p = data_.measured[hit];
+    const bool ccw = data_.counterClockwise.empty() || data_.counterClockwise[hit];
+    const double radialUm = ((p - data_.centreMm).norm() - data_.radiusMm) * 1000.0;
+    return tr("point %1 (%2)\nx: %3 mm, y: %4 mm\nradial deviation: %5 \u00b5m")
+        .arg(hit + 1)
+        .arg(ccw ? tr("CCW") : tr("CW"))
+        .arg(number(p.x()), number(p.y()), number(radialUm));
+  });
   setMinimumSize(260, 260);
   setToolTip(
       tr("The XY path in mm: the nominal circle true to scale; the measured path, the compensated "
@@ -53,6 +88,24 @@ void CircularPathView::paintEvent(QPaintEvent*) {
 
 PolarDeviationView::PolarDeviationView(QWidget* parent) : QWidget(parent) {
   enableChartExport(this, QStringLiteral("kinematics-polar"));
+  // The read-out: the measured (or expected) point nearest to the cursor, its angle and deviation.
+  enablePlotNavigation(this, [this](const QPointF& at, double scale) -> QString {
+    if (data_.radiusMm <= 0.0) return {};
+    const PolarPlotLayout l = layout();
+    double best = kReachPx / scale;
+    QString text;
+    const auto consider = [&](const RadialPoint& r, const QString& what) {
+      const double d = distance(l.map(r.angleDeg, r.deviationMm), at);
+      if (d > best) return;
+      best = d;
+      text = tr("%1\nangle: %2\u00b0\ndeviation: %3 \u00b5m")
+                 .arg(what, number(r.angleDeg), number(r.deviationMm * 1000.0));
+    };
+    for (const CircularLoop& loop : data_.loops)
+      for (const RadialPoint& r : loop.points) consider(r, loop.counterClockwise ? tr("CCW") : tr("CW"));
+    for (const RadialPoint& r : data_.compensated) consider(r, tr("expected after compensation"));
+    return text;
+  });
   setMinimumSize(260, 260);
   setToolTip(
       tr("Radial deviation of the measured path from the nominal circle, magnified (ballbar plot): "
@@ -81,6 +134,26 @@ void PolarDeviationView::paintEvent(QPaintEvent*) {
 ControlChartView::ControlChartView(ControlChartKind kind, QWidget* parent) : QWidget(parent), kind_(kind) {
   enableChartExport(
       this, kind == ControlChartKind::Mean ? QStringLiteral("xbar-chart") : QStringLiteral("r-chart"));
+  // The read-out: the subgroup nearest to the cursor (by its point) and its value.
+  enablePlotNavigation(this, [this](const QPointF& at, double scale) -> QString {
+    if (!chart_) return {};
+    const ControlChartLayout l = layout();
+    const std::vector<double>& values = kind_ == ControlChartKind::Mean ? chart_->means : chart_->ranges;
+    double best = kReachPx / scale;
+    std::size_t hit = values.size();
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      const double d = distance(l.map(static_cast<double>(k + 1), values[k]), at);
+      if (d <= best) {
+        best = d;
+        hit = k;
+      }
+    }
+    if (hit == values.size()) return {};
+    const QString unit = unit_.isEmpty() ? QString() : QLatin1Char(' ') + unit_;
+    return (kind_ == ControlChartKind::Mean ? tr("subgroup %1\nmean: %2%3") : tr("subgroup %1\nrange: %2%3"))
+        .arg(hit + 1)
+        .arg(number(values[hit]), unit);
+  });
   setMinimumSize(300, 160);
   setToolTip(kind == ControlChartKind::Mean
                  ? tr("Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ "
@@ -113,6 +186,22 @@ void ControlChartView::paintEvent(QPaintEvent*) {
 
 HistogramView::HistogramView(QWidget* parent) : QWidget(parent) {
   enableChartExport(this, QStringLiteral("histogram"));
+  // The read-out: the bin under the cursor, its bounds and count.
+  enablePlotNavigation(this, [this](const QPointF& at, double) -> QString {
+    if (data_.values.empty() || data_.bins.counts.empty()) return {};
+    const HistogramLayout l = layout();
+    if (!l.plotArea().contains(at)) return {};
+    const double x0 = l.map(l.xMin(), 0).x(), x1 = l.map(l.xMax(), 0).x();
+    if (x1 <= x0) return {};
+    const double value = l.xMin() + (at.x() - x0) / (x1 - x0) * (l.xMax() - l.xMin());
+    const double bin = std::floor((value - data_.bins.first) / data_.bins.width);
+    if (bin < 0 || bin >= static_cast<double>(data_.bins.counts.size())) return {};
+    const auto i = static_cast<std::size_t>(bin);
+    const QString unit = data_.unit.isEmpty() ? QString() : QLatin1Char(' ') + data_.unit;
+    return tr("%1 to %2%3\ncount: %4")
+        .arg(number(data_.bins.edge(i)), number(data_.bins.edge(i + 1)), unit)
+        .arg(data_.bins.counts[i]);
+  });
   setMinimumSize(300, 160);
   setToolTip(
       tr("Distribution of the values with the specification limits LSL/USL, the nominal and the mean."));
