@@ -548,8 +548,12 @@ ElementFitResult fitElement(const PointSet& set, const ElementFitOptions& o, Obs
       ls.summary = solveLs(ls.model, ls.x, idx, o.maxIterations, obs);
       if (same) break;
     }
-    // The final least-squares fit on the kept points (the J and residuals of the assessment).
-    ls.summary = solveLs(ls.model, ls.x, idx, o.maxIterations, obs);
+    // The final least-squares fit on the kept points (the J and residuals of the assessment). A
+    // circle's plane is a frame, not a parameter: it is made again from the kept points.
+    if (kind == ElementKind::Circle && !obs.cancelled())
+      ls = fitFromStarts(set, kind, fixedR, idx, o.maxIterations, obs);
+    else
+      ls.summary = solveLs(ls.model, ls.x, idx, o.maxIterations, obs);
     std::vector<bool> in(n, false);
     for (std::size_t i : idx) in[i] = true;
     for (std::size_t i = 0; i < n; ++i)
@@ -576,6 +580,7 @@ ElementFitResult fitElement(const PointSet& set, const ElementFitOptions& o, Obs
       res.run.message = mz.message;
     }
   } else {
+    res.run.termination = optim::toTermination(ls.summary.termination);
     res.run.message = ls.summary.message;
   }
   if (obs.cancelled()) {

@@ -47,7 +47,8 @@
 // below 1 nm is excluded). Excluded points still get a residual from the final element.
 //
 // Standard errors: Cov = s^2 (J^T J)^-1 at the least-squares solution, s^2 = sum d^2 / (m - k),
-// propagated to the reported centre, axis, radius and half angle by differences. Condition: the noise
+// propagated to the reported centre, axis, radius and half angle by differences (a circle's are those
+// of its in-plane fit, given its plane). Condition: the noise
 // amplification A = sqrt(m) / sigma_min(J_s), J_s the Jacobian with rotations scaled by the RMS
 // radius of the points (so every parameter is in mm): a parameter combination moves A / sqrt(m) times
 // the point noise. Measured on evenly spread sphere points (element_fit_test): a full sphere gives

@@ -258,6 +258,24 @@ TEST(ElementFit, RobustExcludesStrayPointsByTheMadRule) {
   EXPECT_TRUE(e.excluded.empty());
 }
 
+TEST(ElementFit, RobustCircleTakesItsPlaneFromTheKeptPoints) {
+  Eigen::Vector3d e1, e2;
+  basis(kAxis, e1, e2);
+  Rng rng(12);
+  std::vector<Eigen::Vector3d> p;
+  for (int k = 0; k < 24; ++k) {
+    const double ph = 2.0 * kPi * k / 24.0;
+    p.push_back(kCentre + (25.0 + 0.001 * rng.normal()) * (std::cos(ph) * e1 + std::sin(ph) * e2) +
+                0.001 * rng.normal() * kAxis);
+  }
+  p[5] += 3.0 * kAxis;  // a stray point well off the circle's plane and radius
+  p[5] += 1.0 * (p[5] - kCentre).normalized();
+  const ElementFitResult r = fit(pts(p), ElementKind::Circle, FitCriterion::LeastSquares, 0.0, true);
+  EXPECT_EQ(r.excluded, std::vector<std::size_t>{5});
+  EXPECT_LT(axisError(r.element.axis, kAxis), 2e-4);
+  EXPECT_LT((r.element.centre - kCentre).norm(), 0.002);
+}
+
 // ---- minimum zone ----------------------------------------------------------------------------
 
 /// Minimum width of a slab holding the points: the optimum is a facet-vertex or an edge-edge contact
