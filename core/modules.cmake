@@ -1,12 +1,13 @@
 # The core modules in dependency order and what each may use (its direct dependencies; what they
 # use comes with them). Read by core/CMakeLists.txt and by tests/core/layering_check.cmake.
-set(METROFIT_CORE_MODULES common io optim spc machine setup thermal kinematics matching project sim
-    diagnose study)
+set(METROFIT_CORE_MODULES common io optim spc machine geometry setup thermal kinematics matching project
+    sim diagnose study)
 set(METROFIT_CORE_DEPS_common "")
 set(METROFIT_CORE_DEPS_io common)
 set(METROFIT_CORE_DEPS_optim common)
 set(METROFIT_CORE_DEPS_spc common)
 set(METROFIT_CORE_DEPS_machine io)
+set(METROFIT_CORE_DEPS_geometry io optim)
 set(METROFIT_CORE_DEPS_setup io optim)
 set(METROFIT_CORE_DEPS_thermal io optim)
 set(METROFIT_CORE_DEPS_kinematics io optim spc)
@@ -20,4 +21,5 @@ set(METROFIT_CORE_DEPS_study diagnose sim)
 set(METROFIT_CORE_PRIVATE_common metrofit_glpk)
 set(METROFIT_CORE_PRIVATE_setup metrofit_glpk)
 set(METROFIT_CORE_PRIVATE_matching metrofit_glpk)
+set(METROFIT_CORE_PRIVATE_geometry metrofit_glpk)
 set(METROFIT_CORE_PRIVATE_diagnose Boost::headers)

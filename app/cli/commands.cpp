@@ -302,6 +302,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
   registerThermalCommands(app);
   registerDiagnoseCommands(app);
   registerProjectCommands(app);
+  registerFitElementCommand(app);
   {
     auto* sim = app.add_subcommand("simulate", "Make test data with the built-in simulator");
     sim->require_subcommand(1);

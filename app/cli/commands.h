@@ -95,5 +95,7 @@ void registerThermalCommands(CLI::App& app);
 void registerDiagnoseCommands(CLI::App& app);
 /// `project new|add|list` (in cmd_project.cpp).
 void registerProjectCommands(CLI::App& app);
+/// `fit-element` (in cmd_fit.cpp).
+void registerFitElementCommand(CLI::App& app);
 
 }  // namespace metrofit::cli

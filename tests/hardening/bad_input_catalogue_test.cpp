@@ -135,6 +135,7 @@ TEST(BadInputCatalogue, CoversTheIssueList) {
                            "diagnose kinematic",
                            "diagnose setup",
                            "diagnose matching",
+                           "fit-element",
                            "--machine-def",
                            "p.dmo",
                            "holes.txt"}) {
