@@ -58,6 +58,8 @@ bool LeastSquaresOptions::isValid(std::string* why) const {
   if (!nonNegative(gradientTolerance))
     return no("gradientTolerance must be finite and >= 0, got " + num(gradientTolerance));
   if (!nonNegative(targetCost)) return no("targetCost must be finite and >= 0, got " + num(targetCost));
+  if (!(degeneracyTolerance >= 0.0 && degeneracyTolerance < 1.0))
+    return no("degeneracyTolerance must be in [0, 1), got " + num(degeneracyTolerance));
   return true;
 }
 
@@ -79,6 +81,8 @@ const char* toString(LeastSquaresTermination t) {
       return "cancelled";
     case LeastSquaresTermination::Failed:
       return "failed";
+    case LeastSquaresTermination::Degenerate:
+      return "degenerate";
   }
   return "?";
 }
@@ -90,6 +94,7 @@ Termination toTermination(LeastSquaresTermination t) {
     case LeastSquaresTermination::Cancelled:
       return Termination::Cancelled;
     case LeastSquaresTermination::Failed:
+    case LeastSquaresTermination::Degenerate:
       return Termination::Failed;
     default:
       return Termination::Converged;
@@ -319,6 +324,18 @@ LeastSquaresSummary solveLeastSquares(const Residual& f, Eigen::VectorXd& x, con
   }
   out.residuals = r;
   if (jacobianFailure(r, J).empty()) out.jacobian = J;
+  if (out.converged && o.degeneracyTolerance > 0.0 && out.jacobian.size() > 0) {
+    const Eigen::VectorXd s = x.cwiseAbs().unaryExpr([](double v) { return v > 0.0 ? v : 1.0; });
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> rel(out.jacobian * s.asDiagonal());
+    rel.setThreshold(o.degeneracyTolerance);
+    if (rel.rank() < n) {
+      finish(T::Degenerate,
+             "stopped where the parameters are not determined (the Jacobian of relative changes "
+             "has rank " +
+                 std::to_string(rel.rank()) + " of " + std::to_string(n) + "): not a solution, " +
+                 out.message);
+    }
+  }
   return out;
 }
 
