@@ -429,19 +429,30 @@ inline double lre(double estimate, double certified, int digits) {
 }
 
 /// Standard deviations of the estimates, sqrt(diag(s^2 (J^T J)^-1)) with s^2 = RSS / (m - n), from a
-/// column-pivoting QR of J (no normal equations); NaN where J is rank deficient.
+/// column-pivoting QR of J with equilibrated columns (no normal equations; the scaling keeps the rank
+/// decision about dependence, not units: Filip's x^10 column is 1e9 times its first); NaN where J is
+/// rank deficient.
 inline Eigen::VectorXd standardDeviations(const Eigen::MatrixXd& J, double rss) {
   const Eigen::Index m = J.rows(), n = J.cols();
   Eigen::VectorXd sd = Eigen::VectorXd::Constant(n, std::nan(""));
   if (m <= n) return sd;
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J);
+  Eigen::VectorXd scale(n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const double norm = J.col(k).norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) return sd;
+    scale(k) = 1.0 / norm;
+  }
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J * scale.asDiagonal());
   if (qr.rank() < n) return sd;
   const Eigen::MatrixXd R = qr.matrixR().topLeftCorner(n, n).triangularView<Eigen::Upper>();
   const Eigen::MatrixXd Rinv =
-      R.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(n, n));  // (J P)^T (J P) = R^T R
+      R.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(n, n));  // (J D P)^T (J D P) = R^T R
   const Eigen::VectorXd rowNorms = Rinv.rowwise().squaredNorm();                // diag(R^-1 R^-T)
   const double s2 = rss / static_cast<double>(m - n);
-  for (Eigen::Index k = 0; k < n; ++k) sd(qr.colsPermutation().indices()(k)) = std::sqrt(s2 * rowNorms(k));
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Eigen::Index j = qr.colsPermutation().indices()(k);
+    sd(j) = scale(j) * std::sqrt(s2 * rowNorms(k));
+  }
   return sd;
 }
 
