@@ -425,7 +425,7 @@ inline double lre(double estimate, double certified, int digits) {
   const double err =
       certified == 0.0 ? std::abs(estimate) : std::abs(estimate - certified) / std::abs(certified);
   if (err == 0.0) return digits;
-  return std::clamp(-std::log10(err), 0.0, static_cast<double>(digits));
+  return std::clamp(-std::log10(err), 0.0, static_cast<double>(digits)) + 0.0;  // never -0
 }
 
 /// Standard deviations of the estimates, sqrt(diag(s^2 (J^T J)^-1)) with s^2 = RSS / (m - n), from a

@@ -23,6 +23,10 @@ std::string num(double v) {
   return buf;
 }
 
+/// A rejected trial whose model predicts a decrease below this share of the cost ends the run: the
+/// cost (a sum of m squares) is not known better than a few units of rounding.
+constexpr double kRoundingDecrease = 4.0 * std::numeric_limits<double>::epsilon();
+
 /// 1/2 |r|^2, +inf when not finite.
 double halfSquaredNorm(const Eigen::VectorXd& r) {
   const double c = 0.5 * r.squaredNorm();
@@ -249,9 +253,9 @@ LeastSquaresSummary solveLeastSquares(const Residual& f, Eigen::VectorXd& x, con
         }
         trialCost = halfSquaredNorm(rt);
       }
+      const double predicted = cost - 0.5 * (r + jd).squaredNorm();
       if (trialCost < cost) {
         const double decrease = cost - trialCost;
-        const double predicted = cost - 0.5 * (r + jd).squaredNorm();
         x = xt;
         std::swap(r, rt);
         cost = trialCost;
@@ -289,6 +293,10 @@ LeastSquaresSummary solveLeastSquares(const Residual& f, Eigen::VectorXd& x, con
         }
         if (smallStep) {
           finish(T::StepTolerance, "no further decrease (step below tolerance)");
+          ended = true;
+        } else if (predicted <= kRoundingDecrease * cost) {
+          // Larger damping only shortens the step: the cost cannot change beyond its rounding.
+          finish(T::DampingLimit, "no further decrease (the predicted decrease is at the rounding level)");
           ended = true;
         } else if (lambda > o.maxDamping) {
           finish(T::DampingLimit, "no further decrease (at the rounding level)");

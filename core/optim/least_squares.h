@@ -28,11 +28,12 @@
 // Stopping (checked in this order; see LeastSquaresTermination):
 //   start: C(x0) not finite -> Failed; C(x0) <= targetCost -> TargetCost (no iteration).
 //   each iteration, after J: |J^T r|_2 <= gradientTolerance -> GradientTolerance (no observer call).
-//   after the trials:  no trial lowered C before lambda > maxDamping -> DampingLimit (the minimum at
-//     the rounding level); C <= targetCost or C == 0 -> TargetCost; |J delta| <= modelStepTolerance or
-//     |delta| <= stepTolerance (|x| + stepTolerance) -> StepTolerance; the cost decreased by at most
-//     costTolerance C_{k-w} over the last w = costWindow iterations -> CostTolerance (w = 1: the
-//     per-step relative decrease test).
+//   after the trials:  no trial lowered C before lambda > maxDamping, or a rejected trial's predicted
+//     decrease C - 1/2|r + J delta|^2 is below 4 eps C (a larger lambda only shortens the step) ->
+//     DampingLimit (the minimum at the rounding level); C <= targetCost or C == 0 -> TargetCost; |J delta| <=
+//     modelStepTolerance or |delta| <= stepTolerance (|x| + stepTolerance) -> StepTolerance; the cost
+//     decreased by at most costTolerance C_{k-w} over the last w = costWindow iterations -> CostTolerance (w
+//     = 1: the per-step relative decrease test).
 //   then the observer; when it says Stop the run is Cancelled (even if it also converged).
 //   after maxIterations iterations: MaxIterations.
 // A rejected trial whose step is below the step tolerances also ends the run (StepTolerance): the
