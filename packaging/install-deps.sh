@@ -16,7 +16,7 @@ PACKAGES=(
   # maths, data, exact solver
   libeigen3-dev libboost-dev nlohmann-json3-dev libglpk-dev glpk-utils libcli11-dev
   # tests and benchmark peers
-  googletest libgtest-dev libgmock-dev libpagmo-dev libboost-serialization-dev libtbb-dev
+  googletest libgtest-dev libgmock-dev libpagmo-dev libboost-serialization-dev libtbb-dev libceres-dev
   # headless GUI tests and PDF checks
   xvfb xauth libgl1-mesa-dri poppler-utils
   # packaging checks

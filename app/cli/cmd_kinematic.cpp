@@ -5,6 +5,10 @@
 //   circular   --data C.csv [--out R.json]
 //       the ISO 230-4 results (G, H, F per direction) of a circular test in either form: x/y or the
 //       radial-only form a ballbar exports (angle_deg, deviation_um | deviation_mm, ...)
+//   positioning --data F [--compensation fanuc|siemens|heidenhain|csv --out-table T] [--axis X] [--out
+//   R.json]
+//       the ISO 230-2:2014 results of a bidirectional positioning test (core/kinematics/iso230_2.h) and
+//       the pitch-error compensation table (minus the mean bidirectional deviation) in a control's form
 //   identify3  --xy C1.csv --yz C2.csv --zx C3.csv [--out E3.json]
 //       the three-axis actuator errors from circular tests in three planes (identification3.h)
 //   compensate3 --errors3 E3.json --path N.csv [--out F.csv]
@@ -38,6 +42,7 @@
 #include <ctime>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -55,6 +60,7 @@
 #include "core/kinematics/export.h"
 #include "core/kinematics/identification.h"
 #include "core/kinematics/identification3.h"
+#include "core/kinematics/iso230_2.h"
 #include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
 #include "core/kinematics/spc_actuator.h"
@@ -136,6 +142,39 @@ int runCircular(const IdentifyArgs& a) {
   writeResult(a.out, dumpJson(j));
   std::fprintf(stderr, "kinematic circular: %zu points (%s form): %s\n", trace.size(),
                trace.radialOnly ? "radial" : "x/y", isoSummary(iso).c_str());
+  return 0;
+}
+
+struct PositioningArgs {
+  std::string data, out, compensation, outTable, axis = "X";
+};
+
+int runPositioning(const PositioningArgs& a) {
+  if (a.compensation.empty() != a.outTable.empty()) {
+    throw OptionsError(ErrorContext{{}, 0, 0, a.compensation.empty() ? "--compensation" : "--out-table"},
+                       "--compensation and --out-table go together");
+  }
+  PitchTableOptions table;
+  if (a.axis.size() != 1) {
+    throw OptionsError(ErrorContext{{}, 0, 0, "--axis"}, "'" + a.axis + "' is not one axis letter");
+  }
+  table.axis = a.axis[0];
+  requireValid(table, "--axis");
+  std::optional<PitchTableFormat> format;
+  if (!a.compensation.empty()) format = parsePitchTableFormat(a.compensation);
+  const PositioningTest test = readPositioningTest(a.data, csvOptions());
+  const PositioningResult r = evaluateIso230_2(test);
+  std::string tableText;
+  if (format) tableText = pitchCompensationTable(r, *format, table);
+  const std::string json = dumpJson(iso230_2ToJson(r));
+  if (format) writeFileAtomic(a.outTable, tableText);
+  writeResult(a.out, json);
+  std::fprintf(
+      stderr,
+      "kinematic positioning: %zu targets, %zu approaches: A %s um, R %s um, E %s um, M %s um, B %s um%s\n",
+      r.targets.size(), test.samples.size(), g(r.A * 1000.0, "%.4g").c_str(), g(r.R * 1000.0, "%.4g").c_str(),
+      g(r.E * 1000.0, "%.4g").c_str(), g(r.M * 1000.0, "%.4g").c_str(), g(r.B * 1000.0, "%.4g").c_str(),
+      format ? (", compensation table (" + a.compensation + ") " + a.outTable).c_str() : "");
   return 0;
 }
 
@@ -554,6 +593,27 @@ void registerKinematicCommands(CLI::App& app) {
   addCsvOptions(circular);
   addOut(circular, ci->out);
   circular->callback([ci] { selectRunner([ci]() -> int { return runCircular(*ci); }); });
+
+  auto pa = std::make_shared<PositioningArgs>();
+  auto* pos = kin->add_subcommand("positioning",
+                                  "ISO 230-2 accuracy and repeatability of positioning of a linear axis, and "
+                                  "its pitch-error compensation "
+                                  "table");
+  existingFile(
+      pos->add_option("--data", pa->data,
+                      "Positioning test (CSV target_mm,direction,cycle,deviation_mm|measured_mm, or the "
+                      "KEY=value form with TGT_DATA[i], REF_DATA_FWD[i,j], REF_DATA_BWD[i,j])")
+          ->required());
+  pos->add_option("--compensation", pa->compensation,
+                  "Also write the pitch-error compensation table (minus the mean bidirectional deviation) in "
+                  "this form: fanuc, siemens, heidenhain, csv")
+      ->check(CLI::IsMember({"fanuc", "siemens", "heidenhain", "csv"}));
+  pos->add_option("--out-table", pa->outTable, "The compensation table file (atomic)");
+  pos->add_option("--axis", pa->axis, "Axis letter of the table (X, Y, Z, U, V, W, A, B, C)")
+      ->capture_default_str();
+  addCsvOptions(pos);
+  addOut(pos, pa->out);
+  pos->callback([pa] { selectRunner([pa]() -> int { return runPositioning(*pa); }); });
 
   auto c = std::make_shared<Identify3Args>();
   auto* id3 = kin->add_subcommand(

@@ -23,6 +23,10 @@ std::string num(double v) {
   return buf;
 }
 
+/// A rejected trial whose model predicts a decrease below this share of the cost ends the run: the
+/// cost (a sum of m squares) is not known better than a few units of rounding.
+constexpr double kRoundingDecrease = 4.0 * std::numeric_limits<double>::epsilon();
+
 /// 1/2 |r|^2, +inf when not finite.
 double halfSquaredNorm(const Eigen::VectorXd& r) {
   const double c = 0.5 * r.squaredNorm();
@@ -58,6 +62,8 @@ bool LeastSquaresOptions::isValid(std::string* why) const {
   if (!nonNegative(gradientTolerance))
     return no("gradientTolerance must be finite and >= 0, got " + num(gradientTolerance));
   if (!nonNegative(targetCost)) return no("targetCost must be finite and >= 0, got " + num(targetCost));
+  if (!(degeneracyTolerance >= 0.0 && degeneracyTolerance < 1.0))
+    return no("degeneracyTolerance must be in [0, 1), got " + num(degeneracyTolerance));
   return true;
 }
 
@@ -79,6 +85,8 @@ const char* toString(LeastSquaresTermination t) {
       return "cancelled";
     case LeastSquaresTermination::Failed:
       return "failed";
+    case LeastSquaresTermination::Degenerate:
+      return "degenerate";
   }
   return "?";
 }
@@ -90,6 +98,7 @@ Termination toTermination(LeastSquaresTermination t) {
     case LeastSquaresTermination::Cancelled:
       return Termination::Cancelled;
     case LeastSquaresTermination::Failed:
+    case LeastSquaresTermination::Degenerate:
       return Termination::Failed;
     default:
       return Termination::Converged;
@@ -244,9 +253,9 @@ LeastSquaresSummary solveLeastSquares(const Residual& f, Eigen::VectorXd& x, con
         }
         trialCost = halfSquaredNorm(rt);
       }
+      const double predicted = cost - 0.5 * (r + jd).squaredNorm();
       if (trialCost < cost) {
         const double decrease = cost - trialCost;
-        const double predicted = cost - 0.5 * (r + jd).squaredNorm();
         x = xt;
         std::swap(r, rt);
         cost = trialCost;
@@ -285,6 +294,10 @@ LeastSquaresSummary solveLeastSquares(const Residual& f, Eigen::VectorXd& x, con
         if (smallStep) {
           finish(T::StepTolerance, "no further decrease (step below tolerance)");
           ended = true;
+        } else if (predicted <= kRoundingDecrease * cost) {
+          // Larger damping only shortens the step: the cost cannot change beyond its rounding.
+          finish(T::DampingLimit, "no further decrease (the predicted decrease is at the rounding level)");
+          ended = true;
         } else if (lambda > o.maxDamping) {
           finish(T::DampingLimit, "no further decrease (at the rounding level)");
           ended = true;
@@ -319,6 +332,18 @@ LeastSquaresSummary solveLeastSquares(const Residual& f, Eigen::VectorXd& x, con
   }
   out.residuals = r;
   if (jacobianFailure(r, J).empty()) out.jacobian = J;
+  if (out.converged && o.degeneracyTolerance > 0.0 && out.jacobian.size() > 0) {
+    const Eigen::VectorXd s = x.cwiseAbs().unaryExpr([](double v) { return v > 0.0 ? v : 1.0; });
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> rel(out.jacobian * s.asDiagonal());
+    rel.setThreshold(o.degeneracyTolerance);
+    if (rel.rank() < n) {
+      finish(T::Degenerate,
+             "stopped where the parameters are not determined (the Jacobian of relative changes "
+             "has rank " +
+                 std::to_string(rel.rank()) + " of " + std::to_string(n) + "): not a solution, " +
+                 out.message);
+    }
+  }
   return out;
 }
 

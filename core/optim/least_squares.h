@@ -28,15 +28,26 @@
 // Stopping (checked in this order; see LeastSquaresTermination):
 //   start: C(x0) not finite -> Failed; C(x0) <= targetCost -> TargetCost (no iteration).
 //   each iteration, after J: |J^T r|_2 <= gradientTolerance -> GradientTolerance (no observer call).
-//   after the trials:  no trial lowered C before lambda > maxDamping -> DampingLimit (the minimum at
-//     the rounding level); C <= targetCost or C == 0 -> TargetCost; |J delta| <= modelStepTolerance or
-//     |delta| <= stepTolerance (|x| + stepTolerance) -> StepTolerance; the cost decreased by at most
-//     costTolerance C_{k-w} over the last w = costWindow iterations -> CostTolerance (w = 1: the
-//     per-step relative decrease test).
+//   after the trials:  no trial lowered C before lambda > maxDamping, or a rejected trial's predicted
+//     decrease C - 1/2|r + J delta|^2 is below 4 eps C (a larger lambda only shortens the step) ->
+//     DampingLimit (the minimum at the rounding level); C <= targetCost or C == 0 -> TargetCost; |J delta| <=
+//     modelStepTolerance or |delta| <= stepTolerance (|x| + stepTolerance) -> StepTolerance; the cost
+//     decreased by at most costTolerance C_{k-w} over the last w = costWindow iterations -> CostTolerance (w
+//     = 1: the per-step relative decrease test).
 //   then the observer; when it says Stop the run is Cancelled (even if it also converged).
 //   after maxIterations iterations: MaxIterations.
 // A rejected trial whose step is below the step tolerances also ends the run (StepTolerance): the
 // cost cannot be lowered by steps that do not change the model.
+//
+// Degenerate end (degeneracyTolerance > 0): a run that met one of the convergence tests above is
+// reported as Degenerate (not converged) when the parameters are not determined at the point it
+// stopped: the Jacobian of relative parameter changes, J diag(s) with s_j = |x_j| (1 where x_j = 0),
+// has a numerical rank below n (column-pivoting QR, pivots below degeneracyTolerance times the largest
+// count as zero). This is the "stationary point at infinity" a far start can run into (NIST StRD
+// BoxBOD from start 1: b2 -> 115, where d r / d b2 ~ e^-115 and the fit is a constant): the cost no
+// longer changes, every convergence test is met, and the answer is still wrong. Off by default: a
+// neural network's or an over-parametrised model's Jacobian is routinely rank deficient at a
+// perfectly usable fit.
 //
 // Non-finite values: a trial with a non-finite cost or step is rejected like an uphill one; a
 // non-finite start cost or Jacobian is Failed with a message. x only ever takes finite accepted
@@ -79,6 +90,9 @@ struct LeastSquaresOptions {
   double modelStepTolerance = 0.0;  ///< |J delta| (the change of the modelled residuals), >= 0 (0: off)
   double gradientTolerance = 0.0;   ///< |J^T r|_2, >= 0 (0: off)
   double targetCost = 0.0;          ///< stop once C <= targetCost, >= 0 (0: only an exact fit)
+  /// Converged runs whose relative-change Jacobian has numerical rank < n are Degenerate, [0, 1)
+  /// (0: off; see the header comment).
+  double degeneracyTolerance = 0.0;
 
   bool isValid(std::string* why) const;
 };
@@ -92,6 +106,7 @@ enum class LeastSquaresTermination {
   MaxIterations,      ///< maxIterations iterations done
   Cancelled,          ///< the observer said Stop
   Failed,             ///< non-finite start cost or Jacobian, or residuals of size 0 / changing size
+  Degenerate,         ///< a convergence test was met where the parameters are not determined
 };
 
 const char* toString(LeastSquaresTermination t);
@@ -111,7 +126,7 @@ struct LeastSquaresSummary {
 };
 
 /// Metrofit's Termination for a least-squares termination: the five converged ones -> Converged,
-/// MaxIterations, Cancelled, Failed.
+/// MaxIterations, Cancelled, Failed; Degenerate -> Failed.
 Termination toTermination(LeastSquaresTermination t);
 
 /// Minimises 1/2 |f(x)|^2 from x (overwritten with the solution; unchanged when the start fails).

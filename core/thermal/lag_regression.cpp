@@ -1,5 +1,7 @@
 #include "core/thermal/lag_regression.h"
 
+#include "core/thermal/linear_least_squares.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -69,9 +71,13 @@ Design design(const std::vector<LagTerm>& terms, const std::vector<LagData>& log
   return out;
 }
 
-/// Least squares with equilibrated columns (rank decisions about dependence, not scale); dependent
-/// columns get 0.
 Eigen::VectorXd solve(const Eigen::MatrixXd& x, const Eigen::VectorXd& y) {
+  return linearLeastSquares(x, y);
+}
+
+}  // namespace
+
+Eigen::VectorXd linearLeastSquares(const Eigen::MatrixXd& x, const Eigen::VectorXd& y) {
   if (x.rows() < x.cols()) throw std::invalid_argument("LagRegression: fewer rows than coefficients");
   Eigen::VectorXd scale(x.cols());
   for (Eigen::Index c = 0; c < x.cols(); ++c) {
@@ -82,8 +88,6 @@ Eigen::VectorXd solve(const Eigen::MatrixXd& x, const Eigen::VectorXd& y) {
   qr.setThreshold(1e-10);
   return scale.asDiagonal() * qr.solve(y);
 }
-
-}  // namespace
 
 LagRegression fitLagTerms(const std::vector<LagTerm>& terms, const std::vector<LagData>& logs) {
   const Design d = design(terms, logs);

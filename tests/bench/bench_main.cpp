@@ -15,6 +15,8 @@
 // --kinematic-chain [--seeds N] (default 20): the kinematic-compensation paper's chain from SPC edges to
 // compensation and the three-plane identification on simulated machines with known errors, against the
 // circular-test identification and three separate 2-axis fits (bench_kinematic_chain.h).
+// --nist: the 27 NIST StRD nonlinear problems (../shared/data/real/nist-strd-nls) from both starts, our
+// Levenberg-Marquardt beside Ceres Solver: LRE and time per problem and start (bench_nist.h).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -22,6 +24,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,6 +36,9 @@
 #include "bench_kinematic.h"
 #include "bench_kinematic_chain.h"
 #include "bench_matching.h"
+#ifdef METROFIT_HAVE_CERES
+#include "bench_nist.h"
+#endif
 #include "bench_open_world.h"
 #include "bench_optim.h"
 #include "bench_setup.h"
@@ -124,6 +130,7 @@ int main(int argc, char** argv) {
   bool thermal = false, realThermal = false;    // --thermal, --real-thermal (bench_thermal.cpp)
   bool kinematic = false;                       // --kinematic (bench_kinematic.cpp)
   bool kinematicChain = false;                  // --kinematic-chain (bench_kinematic_chain.cpp)
+  bool nist = false;                            // --nist (bench_nist.cpp)
   bool diagnose = false, realDiagnose = false;  // --diagnose, --real-diagnose (bench_diagnose.cpp)
   bool open = false;                            // --diagnose --open (bench_open_world.cpp)
   metrofit::bench::OpenBenchOptions openOptions;
@@ -150,6 +157,8 @@ int main(int argc, char** argv) {
       kinematic = true;
     else if (a == "--kinematic-chain")
       kinematicChain = true;
+    else if (a == "--nist")
+      nist = true;
     else if (a == "--matching")
       matching = true;
     else if (a == "--real-matching")
@@ -218,7 +227,8 @@ int main(int argc, char** argv) {
       std::printf(
           "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick] [--only PROBLEMS] [--methods "
           "METHODS]] [--matching] [--real-matching] "
-          "[--thermal] [--real-thermal] [--kinematic] [--kinematic-chain [--seeds N]] [--setup] [--diagnose "
+          "[--thermal] [--real-thermal] [--kinematic] [--kinematic-chain [--seeds N]] [--nist] [--setup] "
+          "[--diagnose "
           "[--quick]] [--diagnose --open "
           "[--seeds N] [--quick] [--domains LIST]] [--real-diagnose] [--diagnose-scale [ROWS,...]] "
           "[--repeat N] "
@@ -231,7 +241,7 @@ int main(int argc, char** argv) {
     }
   }
   if (!io && !rng && !optimizers && !matching && !realMatching && !thermal && !realThermal && !kinematic &&
-      !kinematicChain && !diagnose && !realDiagnose && !setupBench && scaleRows.empty())
+      !kinematicChain && !nist && !diagnose && !realDiagnose && !setupBench && scaleRows.empty())
     io = rng = optimizers = true;
   if (explicitSeeds > 0) openOptions.seeds = explicitSeeds;
   if (!openCase.empty()) {
@@ -260,6 +270,13 @@ int main(int argc, char** argv) {
       if (explicitSeeds > 0) o.seeds = explicitSeeds;
       o.repeat = repeat;
       result["kinematic_chain"] = metrofit::bench::benchKinematicChain(o);
+    }
+    if (nist) {
+#ifdef METROFIT_HAVE_CERES
+      result["nist"] = metrofit::bench::benchNist(sourceDir + "/../shared/data/real/nist-strd-nls", repeat);
+#else
+      throw std::runtime_error("--nist needs Ceres Solver, which this build did not find (libceres-dev)");
+#endif
     }
     // --matching: the matching targets (bench_matching.cpp); --real-matching: the SDSS plug plates in
     // ../shared/data/real/cmm-plugplate-sdss (not in the repository: no licence) against their own fits.

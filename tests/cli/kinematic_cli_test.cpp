@@ -21,6 +21,7 @@
 #include "core/io/json_util.h"
 #include "core/kinematics/cartesian_model.h"
 #include "core/kinematics/identification.h"
+#include "core/kinematics/iso230_2.h"
 #include "core/kinematics/measured_path.h"
 #include "core/kinematics/part21.h"
 #include "core/sim/circular_sim.h"
@@ -725,6 +726,86 @@ TEST(KinematicCli, OptionDefaultsAreTheStudysDefaults) {
   const std::string coverage = "--coverage FLOAT:POSITIVE=" + shown(KinematicsSettings::Spc{}.coverage);
   EXPECT_NE(spc.out.find(coverage), std::string::npos) << spc.out;
   EXPECT_NE(spc.out.find("--subgroup INT REQUIRED"), std::string::npos) << "the contract: --subgroup N";
+}
+
+// ---- kinematic positioning (ISO 230-2) ----
+
+/// metrofit-cli run in `tmp` under LC_ALL=locale; the exit code.
+int cliUnderLocale(const std::string& locale, const std::string& args, const test::TempDir& tmp) {
+  const std::string cmd = "cd '" + tmp.path().string() + "' && LC_ALL=" + locale + " '" +
+                          (test::binDir() / "metrofit-cli").string() + "' " + args + " >/dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(KinematicCli, PositioningOfTheRealEssAxis) {
+  const auto ess = test::realData("axis-positioning-ess/example_data_ISO230_2.dat");
+  if (!std::filesystem::exists(ess)) GTEST_SKIP() << "no " << ess;
+  test::TempDir tmp;
+  const CliRun r = cli("kinematic positioning --data '" + ess.string() + "' --out r.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("kinematic positioning: 5 targets, 50 approaches: A ", 0), 0u) << r.err;
+  const nlohmann::json j = readJsonFile(tmp.file("r.json"));
+  const PositioningResult core = evaluateIso230_2(readPositioningTest(ess.string()));
+  EXPECT_DOUBLE_EQ(j["A_mm"].get<double>(), core.A);
+  EXPECT_DOUBLE_EQ(j["R_mm"].get<double>(), core.R);
+  ASSERT_EQ(j["targets"].size(), 5u);
+  EXPECT_DOUBLE_EQ(j["targets"][0]["target_mm"].get<double>(), 15.0);
+  EXPECT_EQ(j.size(), 13u);
+}
+
+TEST(KinematicCli, PositioningTablesAreByteIdenticalUnderEveryLocale) {
+  test::TempDir tmp;
+  std::string csv = "target_mm,direction,cycle,measured_mm\n";
+  const double dev[] = {0.0021, -0.0042, 0.0063, 0.0013, -0.0007};
+  for (int c = 1; c <= 3; ++c)
+    for (int i = 0; i < 5; ++i)
+      for (const char* d : {"+", "-"})
+        csv += std::to_string(100 * i) + "," + d + "," + std::to_string(c) + "," +
+               CsvWriter::formatNumber(100 * i + dev[i] + 0.0001 * c + (d[0] == '+' ? 0.002 : 0.0)) + "\n";
+  test::writeText(tmp.file("p.csv"), csv);
+  for (const char* form : {"fanuc", "siemens", "heidenhain", "csv"}) {
+    std::string first;
+    for (const char* loc : {"C.UTF-8", "de_DE.UTF-8", "pl_PL.UTF-8"}) {
+      ASSERT_EQ(cliUnderLocale(loc,
+                               std::string("kinematic positioning --data p.csv --compensation ") + form +
+                                   " --out-table t.txt --out r.json",
+                               tmp),
+                0)
+          << form << " " << loc;
+      const std::string table = test::readText(tmp.file("t.txt")) + test::readText(tmp.file("r.json"));
+      if (first.empty())
+        first = table;
+      else
+        EXPECT_EQ(table, first) << form << " under " << loc;
+    }
+    EXPECT_FALSE(first.empty());
+  }
+  // The CSV table is minus the mean bidirectional deviation (0.001 mm of backlash each side).
+  ASSERT_EQ(cliUnderLocale("de_DE.UTF-8",
+                           "kinematic positioning --data p.csv --compensation csv --out-table t.csv", tmp),
+            0);
+  const CsvTable t = parseCsv(test::readText(tmp.file("t.csv")), "t.csv");
+  ASSERT_EQ(t.rowCount(), 5u);
+  EXPECT_NEAR(t.number(1, 1), -(-0.0042 + 0.0002 + 0.001), 1e-6);
+}
+
+TEST(KinematicCli, PositioningBadInput) {
+  test::TempDir tmp;
+  test::writeText(tmp.file("d.csv"), "target_mm,direction,cycle,deviation_mm\n0,+,1,0.001\n0,up,2,0.002\n");
+  expectBadInput("kinematic positioning --data d.csv --out r.json",
+                 "d.csv:3:2: field 'direction': 'up' is not a direction (+ or -)", tmp);
+  test::writeText(tmp.file("k.dat"), "UNIT=mm\nTGT_DATA[1]=1O\n");
+  expectBadInput("kinematic positioning --data k.dat --out r.json",
+                 "k.dat:2: field 'TGT_DATA[1]': '1O' is not a number", tmp);
+  test::writeText(tmp.file("ok.csv"),
+                  "target_mm,direction,cycle,deviation_mm\n0,+,1,0\n0,+,2,0\n0,-,1,0\n0,-,2,0\n");
+  expectBadInput("kinematic positioning --data ok.csv --compensation siemens --out r.json",
+                 "field '--out-table': --compensation and --out-table go together", tmp);
+  expectBadInput(
+      "kinematic positioning --data ok.csv --compensation fanuc --out-table t.txt",
+      "ok.csv: field 'target_mm': a compensation table needs at least 2 targets (an interval), got 1", tmp);
 }
 
 }  // namespace

@@ -125,6 +125,7 @@ TEST(BadInputCatalogue, CoversTheIssueList) {
                            "match",
                            "kinematic identify",
                            "kinematic compensate",
+                           "kinematic positioning",
                            "spc",
                            "thermal fit",
                            "thermal predict",
