@@ -66,6 +66,10 @@ struct AddDatasetRequest {
   setup::DmisOptions dmis = {};  ///< DMIS files only (a DMIS dataset or a cmm-report that is a DMIS file)
   /// Copy the file into the project's folder as data/<id>.<ext> (embedDataset) instead of referencing it.
   bool embed = false;
+  /// Further DMIS output files of the same series, one per workpiece (`file` is the first): the dataset
+  /// then lists them all in "paths" (core/project/project.h). Each must be a DMIS file; a series is
+  /// referenced where it is, not embedded and not read from standard input.
+  std::vector<std::string> moreFiles;
 };
 
 /// Where an embedded copy of `file` goes, relative to the project's folder: "data/<id>.<ext>" with
