@@ -70,12 +70,13 @@ struct DatasetRef {
   std::string id;    ///< unique within the project
   std::string kind;  ///< one of dataset_kind
   std::string path;  ///< relative to the project folder, or absolute (a series: its first file)
-  /// A series of DMIS files ("paths"): every file, paths[0] == path; empty for a single file.
-  std::vector<std::string> paths;
   std::string description;
   std::string licence;           ///< e.g. "MIT (CAIVIAC), see LICENSE-MIT.txt" for real data
   CsvReadOptions csv;            ///< how a CSV dataset is read: dialect (0 = detect) and column mapping
   setup::DmisOptions dmis = {};  ///< how a DMIS file's TA(label) values are read
+  /// A series of DMIS files ("paths"): every file, paths[0] == path; empty for a single file. Last, so
+  /// that positional initialisers of the fields before it stay valid.
+  std::vector<std::string> paths = {};
   bool operator==(const DatasetRef&) const = default;
 };
 

@@ -350,23 +350,5 @@ TEST_F(SetupReportModelTest, DmisSeriesIsOneDatasetAndOneSetupSeries) {
   runAndCompare("DMIS series, reopened");
 }
 
-TEST(ProjectPaths, SeriesKeyIsCheckedAndOptional) {
-  nlohmann::json j = {{"format", "metrofit-project"},
-                      {"version", 1},
-                      {"name", "p"},
-                      {"datasets", {{{"id", "r"}, {"kind", "dmis"}, {"path", "a.dmo"}}}}};
-  EXPECT_TRUE(Project::fromJson(j, "p.metrofit").datasets[0].paths.empty()) << "no key: one file as before";
-  EXPECT_FALSE(Project::fromJson(j, "p.metrofit").toJson()["datasets"][0].contains("paths"));
-  j["datasets"][0]["paths"] = {"a.dmo", "b.dmo"};
-  const Project p = Project::fromJson(j, "p.metrofit");
-  EXPECT_EQ(p.datasets[0].paths, (std::vector<std::string>{"a.dmo", "b.dmo"}));
-  EXPECT_EQ(p.toJson()["datasets"][0]["paths"], j["datasets"][0]["paths"]);
-  j["datasets"][0]["paths"] = {"b.dmo", "a.dmo"};
-  EXPECT_THROW((void)Project::fromJson(j, "p.metrofit"), ValidationError);
-  j["datasets"][0]["paths"] = {"a.dmo", "b.dmo"};
-  j["datasets"][0]["kind"] = "thermal_log";
-  EXPECT_THROW((void)Project::fromJson(j, "p.metrofit"), ValidationError);
-}
-
 }  // namespace
 }  // namespace metrofit

@@ -115,7 +115,9 @@ ReportModelDialog::ReportModelDialog(const ReportFeatures& report, const QString
     for (const auto& s : base_.setup)
       connect_->addItem(QString::fromStdString(s.id), QString::fromStdString(s.id));
   }
-  connect_->addItem(tr("(none: draw the arcs yourself)"), QString());
+  // A new model must be valid to be written (every dimension reached from a setup datum); an existing
+  // one may be left unconnected while it is edited.
+  if (!creates_) connect_->addItem(tr("(none: draw the arcs yourself)"), QString());
   connect_->setToolTip(
       tr("Each new feature gets an arc (+1) from this setup datum, so the model can run at "
          "once; change the arcs in the Graph tab"));

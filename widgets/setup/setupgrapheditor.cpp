@@ -13,6 +13,7 @@
 #include <QLocale>
 #include <QMenu>
 #include <QMessageBox>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QStyledItemDelegate>
@@ -272,6 +273,12 @@ void SetupGraphEditor::fillTable() {
   const bool mapped =
       std::any_of(dims.begin(), dims.end(), [](const setup::Dimension& d) { return !d.label.empty(); });
   table_->setColumnHidden(ColReport, reportFeatures_.isEmpty() && !mapped);
+  // With the mapping column the table asks for the room its columns need (up to a third of a 1280 px
+  // page), so that the labels are read without scrolling sideways.
+  table_->resizeColumnsToContents();
+  const int needed = table_->horizontalHeader()->length() + 2 * table_->frameWidth() +
+                     table_->verticalScrollBar()->sizeHint().width() + 2;
+  table_->setMinimumWidth(std::clamp(needed, 280, 440));
   filling_ = false;
 }
 
