@@ -1344,12 +1344,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+229"/>
+        <location line="+234"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-216"/>
+        <location line="-221"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Zeilen vor den Spaltennamen, unabhängig vom Inhalt übersprungen (Vorspann eines Messgeräts)</translation>
     </message>
@@ -1490,12 +1490,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+456"/>
+        <location line="+478"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
     <message>
-        <location line="-399"/>
+        <location line="-416"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
     </message>
@@ -1525,8 +1525,21 @@ Anzahl: %4</translation>
         <source>%1: the file is larger than 256 MiB</source>
         <translation>%1: die Datei ist größer als 256 MiB</translation>
     </message>
+    <message numerus="yes">
+        <location line="+134"/>
+        <source>Read the %n selected files as one DMIS &amp;series (one dataset, one file per workpiece)</source>
+        <translation>
+                <numerusform>Die %n ausgewählte Datei als eine DMIS-&amp;Serie lesen (ein Datensatz, eine Datei je Werkstück)</numerusform>
+                <numerusform>Die %n ausgewählten Dateien als eine DMIS-&amp;Serie lesen (ein Datensatz, eine Datei je Werkstück)</numerusform>
+            </translation>
+    </message>
     <message>
-        <location line="+214"/>
+        <location line="+2"/>
+        <source>Also: %1</source>
+        <translation>Außerdem: %1</translation>
+    </message>
+    <message>
+        <location line="+95"/>
         <source>as in the file</source>
         <translation>wie in der Datei</translation>
     </message>
@@ -1596,7 +1609,7 @@ Anzahl: %4</translation>
         <translation>Trennzeichen %1 · Dezimalzeichen %2 · Kopfzeile in Zeile %3 (%4 Spalten) · Kommentarzeilen: %5 · Datenzeilen: %6</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+35"/>
         <source>%1: already exists; an embedded copy never overwrites a file (choose another id)</source>
         <translation>%1: existiert bereits; eine eingebettete Kopie überschreibt nie eine Datei (andere Kennung wählen)</translation>
     </message>
@@ -1604,6 +1617,14 @@ Anzahl: %4</translation>
         <location line="+3"/>
         <source>Ready to import as %1 “%2”.</source>
         <translation>Bereit zum Import als %1 „%2“.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>The %n file(s) are one DMIS series: one workpiece per file.</source>
+        <translation>
+                <numerusform>Die %n Datei ist eine DMIS-Serie: ein Werkstück je Datei.</numerusform>
+                <numerusform>Die %n Dateien sind eine DMIS-Serie: ein Werkstück je Datei.</numerusform>
+            </translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
@@ -2693,7 +2714,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+58"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+60"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Metrofit-Projekte (*.metrofit)</translation>
     </message>
@@ -2703,7 +2724,7 @@ Anzahl: %4</translation>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+64"/>
         <source>Autosave failed: %1</source>
         <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
     </message>
@@ -2930,7 +2951,7 @@ Anzahl: %4</translation>
         <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+19"/>
         <source>Cannot import the data</source>
         <translation>Die Daten können nicht importiert werden</translation>
     </message>
@@ -2940,7 +2961,7 @@ Anzahl: %4</translation>
         <translation>%1 als „%2“ importiert</translation>
     </message>
     <message>
-        <location line="-210"/>
+        <location line="-220"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Das Projekt „%1“ hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
@@ -4066,12 +4087,12 @@ Abweichung: %3 µm</translation>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+160"/>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>das Projekt wurde noch nicht gespeichert; wählen Sie mit „Speichern unter“ einen Dateinamen</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+64"/>
         <source>the project has no dataset &apos;%1&apos;</source>
         <translation>das Projekt hat keinen Datensatz „%1“</translation>
     </message>
@@ -4103,7 +4124,7 @@ Abweichung: %3 µm</translation>
         <translation>Datensatz %1 in %2 umbenennen</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Re-link dataset %1</source>
         <translation>Datensatz %1 neu verknüpfen</translation>
     </message>
@@ -4111,7 +4132,17 @@ Abweichung: %3 µm</translation>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+113"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+90"/>
+        <source>Add report features to setup model…</source>
+        <translation>Merkmale des Berichts zum Einrichtmodell hinzufügen…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Create setup model from report…</source>
+        <translation>Einrichtmodell aus dem Bericht erstellen…</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <location line="+39"/>
         <source>%1: project overview (Ctrl+1)</source>
         <translation>%1: Projektübersicht (Strg+1)</translation>
@@ -5048,7 +5079,7 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+207"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+210"/>
         <source>method</source>
         <translation>Methode</translation>
     </message>
@@ -5267,8 +5298,8 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../widgets/report/setupsection.cpp" line="-93"/>
-        <location line="+40"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-96"/>
+        <location line="+43"/>
         <location filename="../widgets/report/summarysection.cpp" line="+123"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-284"/>
         <source>file</source>
@@ -5607,7 +5638,7 @@ Abweichung: %3 µm</translation>
         <translation>Das Projekt verweist auf keine Datensätze.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/report.cpp" line="+123"/>
+        <location filename="../widgets/report/report.cpp" line="+124"/>
         <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
@@ -5623,7 +5654,7 @@ Abweichung: %3 µm</translation>
         <translation>Seite %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/setupsection.cpp" line="-187"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-190"/>
         <source>machine point</source>
         <translation>Maschinenpunkt</translation>
     </message>
@@ -5693,7 +5724,7 @@ Abweichung: %3 µm</translation>
         <translation>Das Projekt hat keinen KMG-Messbericht für dieses Modell: nichts zu korrigieren.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>Report data “%1”</source>
         <translation>Berichtsdaten „%1“</translation>
     </message>
@@ -6439,6 +6470,152 @@ Abweichung: %3 µm</translation>
         <location line="+5"/>
         <source>metrofit-cli failed with exit code %1.</source>
         <translation>metrofit-cli ist mit dem Exit-Code %1 fehlgeschlagen.</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ReportModelDialog</name>
+    <message>
+        <location filename="../widgets/setup/reportmodeldialog.cpp" line="+40"/>
+        <source>Create setup model from report %1</source>
+        <translation>Einrichtmodell aus dem Bericht %1 erstellen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Add report features to setup model</source>
+        <translation>Merkmale des Berichts zum Einrichtmodell hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The %1 “%2” measures these characteristics. The checked ones become the dimensions of a new setup model, each under a feature node; draw the real relation graph in the Graph tab afterwards.</source>
+        <translation>Der %1 „%2“ misst diese Merkmale. Die angehakten werden die Maße eines neuen Einrichtmodells, jedes unter einem Formelement-Knoten; den tatsächlichen Beziehungsgraphen zeichnen Sie danach im Reiter Graph.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The %1 “%2” measures these characteristics. The checked ones are added to the setup model “%3” as dimensions; those it reads already are marked.</source>
+        <translation>Der %1 „%2“ misst diese Merkmale. Die angehakten werden dem Einrichtmodell „%3“ als Maße hinzugefügt; die es bereits liest, sind markiert.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Feature</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Characteristic</source>
+        <translation>Merkmal</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Nominal</source>
+        <translation>Nennwert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Lower tol.</source>
+        <translation>Untere Tol.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Upper tol.</source>
+        <translation>Obere Tol.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>State</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>in the model (%1)</source>
+        <translation>im Modell (%1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>cannot be used: %1</source>
+        <translation>nicht verwendbar: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no tolerance printed: takes ± the value below</source>
+        <translation>keine Toleranz gedruckt: erhält ± den Wert unten</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Check &amp;all</source>
+        <translation>&amp;Alle anhaken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Check &amp;none</source>
+        <translation>&amp;Keine anhaken</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The machine axis the corrections act along</source>
+        <translation>Die Maschinenachse, entlang der die Korrekturen wirken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Model &amp;name:</source>
+        <translation>Modell&amp;name:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A&amp;xis:</source>
+        <translation>A&amp;chse:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>(none: draw the arcs yourself)</source>
+        <translation>(keine: Kanten selbst zeichnen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each new feature gets an arc (+1) from this setup datum, so the model can run at once; change the arcs in the Graph tab</source>
+        <translation>Jedes neue Formelement erhält eine Kante (+1) von diesem Einrichtdatum, damit das Modell sofort rechnen kann; die Kanten ändern Sie im Reiter Graph</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Connect new features to:</source>
+        <translation>Neue Elemente &amp;verbinden mit:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>± limits for values the report prints no tolerance for (0: such values cannot be added)</source>
+        <translation>±-Grenzen für Werte, für die der Bericht keine Toleranz druckt (0: solche Werte können nicht hinzugefügt werden)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Tolerance where the report gives none: ±</source>
+        <translation>&amp;Toleranz, wo der Bericht keine angibt: ±</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Create model</source>
+        <translation>Modell erstellen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Add to model</source>
+        <translation>Zum Modell hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+65"/>
+        <source>Check the characteristics to add.</source>
+        <translation>Haken Sie die hinzuzufügenden Merkmale an.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+26"/>
+        <source>%n dimension(s) to add; the model will have %1 features and %2 dimensions.</source>
+        <translation>
+                <numerusform>%n Maß hinzuzufügen; das Modell wird %1 Formelemente und %2 Maße haben.</numerusform>
+                <numerusform>%n Maße hinzuzufügen; das Modell wird %1 Formelemente und %2 Maße haben.</numerusform>
+            </translation>
     </message>
 </context>
 <context>
@@ -7195,7 +7372,7 @@ Abweichung: %3 µm</translation>
 <context>
     <name>metrofit::SetupGraphEditor</name>
     <message>
-        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+74"/>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+100"/>
         <source>Add node…</source>
         <translation>Knoten hinzufügen…</translation>
     </message>
@@ -7351,7 +7528,20 @@ Abweichung: %3 µm</translation>
 (mm)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
+        <source>Report
+feature</source>
+        <translation>Berichts-
+merkmal</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+141"/>
+        <source>What the CMM report calls the dimension (feature:value, a DMIS label); empty: its id</source>
+        <translation>Wie der KMG-Bericht das Maß nennt (Element:Wert, ein DMIS-Label); leer: seine ID</translation>
+    </message>
+    <message>
+        <location line="-139"/>
         <source>Lower tolerance limit relative to the nominal, mm</source>
         <translation>Untere Toleranzgrenze relativ zum Nennmaß, mm</translation>
     </message>
@@ -7377,7 +7567,20 @@ Abweichung: %3 µm</translation>
         </translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+29"/>
+        <source>The study&apos;s report has no feature “%1”</source>
+        <translation>Der Bericht der Studie hat kein Merkmal „%1“</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+40"/>
+        <source>What the %1 calls the dimension (%n feature(s) offered); empty: its id</source>
+        <translation>
+                <numerusform>Wie der %1 das Maß nennt (%n Merkmal angeboten); leer: seine ID</numerusform>
+                <numerusform>Wie der %1 das Maß nennt (%n Merkmale angeboten); leer: seine ID</numerusform>
+            </translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <location line="+20"/>
         <source>Add node</source>
         <translation>Knoten hinzufügen</translation>
@@ -7639,11 +7842,21 @@ Abweichung: %3 µm</translation>
         <source>Edit tolerance of %1</source>
         <translation>Toleranz von %1 bearbeiten</translation>
     </message>
+    <message>
+        <location line="+11"/>
+        <source>Clear the report feature of %1</source>
+        <translation>Berichtsmerkmal von %1 entfernen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Map %1 to the report feature %2</source>
+        <translation>%1 dem Berichtsmerkmal %2 zuordnen</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+141"/>
+        <location filename="../app/gui/setuppage.cpp" line="+151"/>
         <source>&amp;Save model</source>
         <translation>Modell &amp;speichern</translation>
     </message>
@@ -7768,17 +7981,92 @@ Abweichung: %3 µm</translation>
         <translation>Startwert der Einrichtung ändern</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+2"/>
+        <source>From &amp;report…</source>
+        <translation>Aus dem &amp;Bericht…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Create the setup model from a CMM report of the project, or add the report&apos;s features the model lacks</source>
+        <translation>Das Einrichtmodell aus einem KMG-Bericht des Projekts erstellen oder die Merkmale des Berichts hinzufügen, die dem Modell fehlen</translation>
+    </message>
+    <message>
+        <location line="+112"/>
         <source>The applied effects cannot be used: %1</source>
         <translation>Die übernommenen Effekte können nicht verwendet werden: %1</translation>
     </message>
     <message>
-        <location line="+53"/>
-        <source>This project has no setup model. Add a dataset of kind &quot;setup_model&quot; (the relation graph, JSON) and a &quot;cmm_report&quot; to the project file.</source>
-        <translation>Dieses Projekt hat kein Einrichtmodell. Fügen Sie der Projektdatei einen Datensatz der Art „setup_model“ (der Beziehungsgraph, JSON) und einen „cmm_report“ hinzu.</translation>
+        <location line="+54"/>
+        <source>This project has no setup model and no CMM report. Import a CMM report (File › Import), then create the model from it with “From report…”.</source>
+        <translation>Dieses Projekt hat kein Einrichtmodell und keinen KMG-Bericht. Importieren Sie einen KMG-Bericht (Datei › Importieren) und erstellen Sie daraus das Modell mit „Aus dem Bericht…“.</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+2"/>
+        <source>This project has no setup model yet. Create it from the CMM report “%1” with “From report…” (or the report&apos;s context menu in the project navigator).</source>
+        <translation>Dieses Projekt hat noch kein Einrichtmodell. Erstellen Sie es aus dem KMG-Bericht „%1“ mit „Aus dem Bericht…“ (oder über das Kontextmenü des Berichts im Projektnavigator).</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>The project has no CMM report: import one first (File › Import).</source>
+        <translation>Das Projekt hat keinen KMG-Bericht: importieren Sie zuerst einen (Datei › Importieren).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>“%1” is not a CMM report or DMIS dataset of the project.</source>
+        <translation>„%1“ ist kein KMG-Bericht- oder DMIS-Datensatz des Projekts.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>“%1” is not a dataset of the project.</source>
+        <translation>„%1“ ist kein Datensatz des Projekts.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>The project has no setup model to add features to.</source>
+        <translation>Das Projekt hat kein Einrichtmodell, dem Merkmale hinzugefügt werden könnten.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Save or revert the edits of the setup model before you add the features of another report.</source>
+        <translation>Speichern oder verwerfen Sie die Änderungen am Einrichtmodell, bevor Sie die Merkmale eines anderen Berichts hinzufügen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Use the report %1 for the setup study</source>
+        <translation>Den Bericht %1 für die Einricht-Studie verwenden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add report features to the setup model</source>
+        <translation>Merkmale des Berichts zum Einrichtmodell hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The model reads every checked characteristic already.</source>
+        <translation>Das Modell liest jedes angehakte Merkmal bereits.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Cannot create the folder %1 for the setup model.</source>
+        <translation>Der Ordner %1 für das Einrichtmodell kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Setup model made from the CMM report %1</source>
+        <translation>Einrichtmodell, erstellt aus dem KMG-Bericht %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Create setup model %1 from report %2</source>
+        <translation>Einrichtmodell %1 aus dem Bericht %2 erstellen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cannot read the CMM report</source>
+        <translation>Der KMG-Bericht kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>This project has no CMM report for the setup study (a dataset of kind &quot;cmm_report&quot;).</source>
         <translation>Dieses Projekt hat keinen KMG-Messbericht für die Einrichtstudie (ein Datensatz der Art „cmm_report“).</translation>
     </message>
@@ -7798,13 +8086,13 @@ Abweichung: %3 µm</translation>
         <translation>Automatisch gesicherte Modelländerungen wiederherstellen</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+467"/>
+        <location line="+16"/>
+        <location line="+468"/>
         <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Noch kein Ergebnis für dieses Modell: Methode wählen und Ausführen drücken (Strg+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="-457"/>
+        <location line="-458"/>
         <source>The edited model has %n problem(s), the first: %1</source>
         <translation>
             <numerusform>Das bearbeitete Modell hat %n Problem: %1</numerusform>
@@ -7872,7 +8160,7 @@ Abweichung: %3 µm</translation>
         <translation>Die Ausführungseinstellungen der Einrichtstudie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (einen Wert wählen, Rückgängig oder die Projektdatei): %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>The setup study has no model or report to run on.</source>
         <translation>Die Einrichtstudie hat kein Modell oder keinen Bericht, auf dem sie laufen kann.</translation>
     </message>

@@ -1345,12 +1345,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+229"/>
+        <location line="+234"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-216"/>
+        <location line="-221"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Wiersze przed nazwami kolumn, pomijane bez względu na treść (nagłówek przyrządu)</translation>
     </message>
@@ -1491,12 +1491,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+456"/>
+        <location line="+478"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
     <message>
-        <location line="-399"/>
+        <location line="-416"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
     </message>
@@ -1526,8 +1526,22 @@ liczba: %4</translation>
         <source>%1: the file is larger than 256 MiB</source>
         <translation>%1: plik jest większy niż 256 MiB</translation>
     </message>
+    <message numerus="yes">
+        <location line="+134"/>
+        <source>Read the %n selected files as one DMIS &amp;series (one dataset, one file per workpiece)</source>
+        <translation>
+                <numerusform>Wczytaj %n wybrany plik jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
+                <numerusform>Wczytaj %n wybrane pliki jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
+                <numerusform>Wczytaj %n wybranych plików jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
+            </translation>
+    </message>
     <message>
-        <location line="+214"/>
+        <location line="+2"/>
+        <source>Also: %1</source>
+        <translation>Także: %1</translation>
+    </message>
+    <message>
+        <location line="+95"/>
         <source>as in the file</source>
         <translation>jak w pliku</translation>
     </message>
@@ -1597,7 +1611,7 @@ liczba: %4</translation>
         <translation>separator %1 · znak dziesiętny %2 · nagłówek w wierszu %3 (%4 kolumn) · wiersze komentarza: %5 · wiersze danych: %6</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+35"/>
         <source>%1: already exists; an embedded copy never overwrites a file (choose another id)</source>
         <translation>%1: już istnieje; osadzona kopia nigdy nie nadpisuje pliku (wybierz inny identyfikator)</translation>
     </message>
@@ -1605,6 +1619,15 @@ liczba: %4</translation>
         <location line="+3"/>
         <source>Ready to import as %1 “%2”.</source>
         <translation>Gotowe do importu jako %1 „%2”.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>The %n file(s) are one DMIS series: one workpiece per file.</source>
+        <translation>
+                <numerusform>%n plik to jedna seria DMIS: jeden przedmiot na plik.</numerusform>
+                <numerusform>%n pliki to jedna seria DMIS: jeden przedmiot na plik.</numerusform>
+                <numerusform>%n plików to jedna seria DMIS: jeden przedmiot na plik.</numerusform>
+            </translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
@@ -2697,7 +2720,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::MainWindow</name>
     <message>
-        <location filename="../app/gui/mainwindow.cpp" line="+58"/>
+        <location filename="../app/gui/mainwindow.cpp" line="+60"/>
         <source>Metrofit projects (*.metrofit)</source>
         <translation>Projekty Metrofit (*.metrofit)</translation>
     </message>
@@ -2707,7 +2730,7 @@ liczba: %4</translation>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+64"/>
         <source>Autosave failed: %1</source>
         <translation>Automatyczny zapis nie powiódł się: %1</translation>
     </message>
@@ -2934,7 +2957,7 @@ liczba: %4</translation>
         <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Wszystkie pliki (*)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+19"/>
         <source>Cannot import the data</source>
         <translation>Nie można zaimportować danych</translation>
     </message>
@@ -2944,7 +2967,7 @@ liczba: %4</translation>
         <translation>Zaimportowano %1 jako „%2”</translation>
     </message>
     <message>
-        <location line="-210"/>
+        <location line="-220"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Projekt „%1” ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>
@@ -4071,12 +4094,12 @@ odchyłka: %3 µm</translation>
         <translation>Bez nazwy</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+160"/>
         <source>the project has not been saved yet; choose a file name with Save As</source>
         <translation>projekt nie został jeszcze zapisany; wybierz nazwę pliku poleceniem „Zapisz jako”</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+64"/>
         <source>the project has no dataset &apos;%1&apos;</source>
         <translation>projekt nie ma zbioru danych „%1”</translation>
     </message>
@@ -4108,7 +4131,7 @@ odchyłka: %3 µm</translation>
         <translation>Zmiana nazwy zbioru danych %1 na %2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Re-link dataset %1</source>
         <translation>Ponowne połączenie zbioru danych %1</translation>
     </message>
@@ -4116,7 +4139,17 @@ odchyłka: %3 µm</translation>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+113"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+90"/>
+        <source>Add report features to setup model…</source>
+        <translation>Dodaj elementy raportu do modelu ustawienia…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Create setup model from report…</source>
+        <translation>Utwórz model ustawienia z raportu…</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <location line="+39"/>
         <source>%1: project overview (Ctrl+1)</source>
         <translation>%1: przegląd projektu (Ctrl+1)</translation>
@@ -5053,7 +5086,7 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../widgets/report/setupsection.cpp" line="+207"/>
+        <location filename="../widgets/report/setupsection.cpp" line="+210"/>
         <source>method</source>
         <translation>metoda</translation>
     </message>
@@ -5272,8 +5305,8 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../widgets/report/setupsection.cpp" line="-93"/>
-        <location line="+40"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-96"/>
+        <location line="+43"/>
         <location filename="../widgets/report/summarysection.cpp" line="+123"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-284"/>
         <source>file</source>
@@ -5613,7 +5646,7 @@ odchyłka: %3 µm</translation>
         <translation>Projekt nie odwołuje się do żadnych zbiorów danych.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/report.cpp" line="+123"/>
+        <location filename="../widgets/report/report.cpp" line="+124"/>
         <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
@@ -5629,7 +5662,7 @@ odchyłka: %3 µm</translation>
         <translation>strona %1</translation>
     </message>
     <message>
-        <location filename="../widgets/report/setupsection.cpp" line="-187"/>
+        <location filename="../widgets/report/setupsection.cpp" line="-190"/>
         <source>machine point</source>
         <translation>punkt maszyny</translation>
     </message>
@@ -5699,7 +5732,7 @@ odchyłka: %3 µm</translation>
         <translation>Projekt nie ma raportu WMP dla tego modelu: nie ma czego korygować.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>Report data “%1”</source>
         <translation>Dane raportu „%1”</translation>
     </message>
@@ -6450,6 +6483,153 @@ odchyłka: %3 µm</translation>
         <location line="+5"/>
         <source>metrofit-cli failed with exit code %1.</source>
         <translation>metrofit-cli zakończył się błędem (kod wyjścia %1).</translation>
+    </message>
+</context>
+<context>
+    <name>metrofit::ReportModelDialog</name>
+    <message>
+        <location filename="../widgets/setup/reportmodeldialog.cpp" line="+40"/>
+        <source>Create setup model from report %1</source>
+        <translation>Utwórz model ustawienia z raportu %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Add report features to setup model</source>
+        <translation>Dodaj elementy raportu do modelu ustawienia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The %1 “%2” measures these characteristics. The checked ones become the dimensions of a new setup model, each under a feature node; draw the real relation graph in the Graph tab afterwards.</source>
+        <translation>%1 „%2” mierzy te charakterystyki. Zaznaczone stają się wymiarami nowego modelu ustawienia, każdy pod węzłem elementu; właściwy graf relacji narysuj potem w zakładce Graf.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The %1 “%2” measures these characteristics. The checked ones are added to the setup model “%3” as dimensions; those it reads already are marked.</source>
+        <translation>%1 „%2” mierzy te charakterystyki. Zaznaczone zostaną dodane do modelu ustawienia „%3” jako wymiary; te, które już odczytuje, są oznaczone.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Feature</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Characteristic</source>
+        <translation>Charakterystyka</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Nominal</source>
+        <translation>Nominał</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Lower tol.</source>
+        <translation>Tol. dolna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Upper tol.</source>
+        <translation>Tol. górna</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>State</source>
+        <translation>Stan</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>in the model (%1)</source>
+        <translation>w modelu (%1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>cannot be used: %1</source>
+        <translation>nie do użycia: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no tolerance printed: takes ± the value below</source>
+        <translation>brak tolerancji w raporcie: przyjmuje ± wartość poniżej</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Check &amp;all</source>
+        <translation>Zaznacz &amp;wszystkie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Check &amp;none</source>
+        <translation>&amp;Odznacz wszystkie</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The machine axis the corrections act along</source>
+        <translation>Oś maszyny, wzdłuż której działają korekcje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Model &amp;name:</source>
+        <translation>&amp;Nazwa modelu:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A&amp;xis:</source>
+        <translation>O&amp;ś:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>(none: draw the arcs yourself)</source>
+        <translation>(brak: łuki narysuj sam)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each new feature gets an arc (+1) from this setup datum, so the model can run at once; change the arcs in the Graph tab</source>
+        <translation>Każdy nowy element dostaje łuk (+1) od tej danej ustawienia, więc model można od razu obliczyć; łuki zmienisz w zakładce Graf</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Connect new features to:</source>
+        <translation>&amp;Połącz nowe elementy z:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>± limits for values the report prints no tolerance for (0: such values cannot be added)</source>
+        <translation>Granice ± dla wartości, dla których raport nie podaje tolerancji (0: takich wartości nie można dodać)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Tolerance where the report gives none: ±</source>
+        <translation>&amp;Tolerancja, gdy raport jej nie podaje: ±</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Create model</source>
+        <translation>Utwórz model</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Add to model</source>
+        <translation>Dodaj do modelu</translation>
+    </message>
+    <message>
+        <location line="+65"/>
+        <source>Check the characteristics to add.</source>
+        <translation>Zaznacz charakterystyki do dodania.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+26"/>
+        <source>%n dimension(s) to add; the model will have %1 features and %2 dimensions.</source>
+        <translation>
+                <numerusform>%n wymiar do dodania; model będzie miał %1 elementów i %2 wymiarów.</numerusform>
+                <numerusform>%n wymiary do dodania; model będzie miał %1 elementów i %2 wymiarów.</numerusform>
+                <numerusform>%n wymiarów do dodania; model będzie miał %1 elementów i %2 wymiarów.</numerusform>
+            </translation>
     </message>
 </context>
 <context>
@@ -7212,7 +7392,7 @@ odchyłka: %3 µm</translation>
 <context>
     <name>metrofit::SetupGraphEditor</name>
     <message>
-        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+74"/>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+100"/>
         <source>Add node…</source>
         <translation>Dodaj węzeł…</translation>
     </message>
@@ -7368,7 +7548,20 @@ odchyłka: %3 µm</translation>
 (mm)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
+        <source>Report
+feature</source>
+        <translation>Element
+raportu</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+141"/>
+        <source>What the CMM report calls the dimension (feature:value, a DMIS label); empty: its id</source>
+        <translation>Jak raport CMM nazywa wymiar (element:wartość, etykieta DMIS); puste: jego identyfikator</translation>
+    </message>
+    <message>
+        <location line="-139"/>
         <source>Lower tolerance limit relative to the nominal, mm</source>
         <translation>Dolna granica tolerancji względem wartości nominalnej, mm</translation>
     </message>
@@ -7396,7 +7589,21 @@ odchyłka: %3 µm</translation>
         </translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+29"/>
+        <source>The study&apos;s report has no feature “%1”</source>
+        <translation>Raport badania nie ma elementu „%1”</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+40"/>
+        <source>What the %1 calls the dimension (%n feature(s) offered); empty: its id</source>
+        <translation>
+                <numerusform>Jak %1 nazywa wymiar (%n element do wyboru); puste: jego identyfikator</numerusform>
+                <numerusform>Jak %1 nazywa wymiar (%n elementy do wyboru); puste: jego identyfikator</numerusform>
+                <numerusform>Jak %1 nazywa wymiar (%n elementów do wyboru); puste: jego identyfikator</numerusform>
+            </translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <location line="+20"/>
         <source>Add node</source>
         <translation>Dodaj węzeł</translation>
@@ -7658,11 +7865,21 @@ odchyłka: %3 µm</translation>
         <source>Edit tolerance of %1</source>
         <translation>Edycja tolerancji %1</translation>
     </message>
+    <message>
+        <location line="+11"/>
+        <source>Clear the report feature of %1</source>
+        <translation>Usuń element raportu wymiaru %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Map %1 to the report feature %2</source>
+        <translation>Przypisz %1 do elementu raportu %2</translation>
+    </message>
 </context>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+141"/>
+        <location filename="../app/gui/setuppage.cpp" line="+151"/>
         <source>&amp;Save model</source>
         <translation>Zapi&amp;sz model</translation>
     </message>
@@ -7787,17 +8004,92 @@ odchyłka: %3 µm</translation>
         <translation>Zmiana ziarna ustawienia</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+2"/>
+        <source>From &amp;report…</source>
+        <translation>Z &amp;raportu…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Create the setup model from a CMM report of the project, or add the report&apos;s features the model lacks</source>
+        <translation>Utwórz model ustawienia z raportu CMM projektu albo dodaj elementy raportu, których brakuje w modelu</translation>
+    </message>
+    <message>
+        <location line="+112"/>
         <source>The applied effects cannot be used: %1</source>
         <translation>Nie można użyć zastosowanych efektów: %1</translation>
     </message>
     <message>
-        <location line="+53"/>
-        <source>This project has no setup model. Add a dataset of kind &quot;setup_model&quot; (the relation graph, JSON) and a &quot;cmm_report&quot; to the project file.</source>
-        <translation>Ten projekt nie ma modelu ustawczego. Dodaj do pliku projektu zbiór danych rodzaju „setup_model” (graf relacji, JSON) oraz „cmm_report”.</translation>
+        <location line="+54"/>
+        <source>This project has no setup model and no CMM report. Import a CMM report (File › Import), then create the model from it with “From report…”.</source>
+        <translation>Ten projekt nie ma modelu ustawienia ani raportu CMM. Zaimportuj raport CMM (Plik › Importuj), a potem utwórz z niego model przyciskiem „Z raportu…”.</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+2"/>
+        <source>This project has no setup model yet. Create it from the CMM report “%1” with “From report…” (or the report&apos;s context menu in the project navigator).</source>
+        <translation>Ten projekt nie ma jeszcze modelu ustawienia. Utwórz go z raportu CMM „%1” przyciskiem „Z raportu…” (albo z menu kontekstowego raportu w nawigatorze projektu).</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>The project has no CMM report: import one first (File › Import).</source>
+        <translation>Projekt nie ma raportu CMM: najpierw go zaimportuj (Plik › Importuj).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>“%1” is not a CMM report or DMIS dataset of the project.</source>
+        <translation>„%1” nie jest zbiorem danych projektu typu raport CMM ani DMIS.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>“%1” is not a dataset of the project.</source>
+        <translation>„%1” nie jest zbiorem danych projektu.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>The project has no setup model to add features to.</source>
+        <translation>Projekt nie ma modelu ustawienia, do którego można dodać elementy.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Save or revert the edits of the setup model before you add the features of another report.</source>
+        <translation>Zapisz lub cofnij zmiany modelu ustawienia, zanim dodasz elementy innego raportu.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Use the report %1 for the setup study</source>
+        <translation>Użyj raportu %1 w badaniu ustawienia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add report features to the setup model</source>
+        <translation>Dodaj elementy raportu do modelu ustawienia</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The model reads every checked characteristic already.</source>
+        <translation>Model odczytuje już każdą zaznaczoną charakterystykę.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Cannot create the folder %1 for the setup model.</source>
+        <translation>Nie można utworzyć folderu %1 na model ustawienia.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Setup model made from the CMM report %1</source>
+        <translation>Model ustawienia utworzony z raportu CMM %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Create setup model %1 from report %2</source>
+        <translation>Utwórz model ustawienia %1 z raportu %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cannot read the CMM report</source>
+        <translation>Nie można odczytać raportu CMM</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>This project has no CMM report for the setup study (a dataset of kind &quot;cmm_report&quot;).</source>
         <translation>Ten projekt nie ma raportu WMP dla studium ustawienia (zbiór danych rodzaju „cmm_report”).</translation>
     </message>
@@ -7817,13 +8109,13 @@ odchyłka: %3 µm</translation>
         <translation>Przywróć automatycznie zapisane zmiany modelu</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+467"/>
+        <location line="+16"/>
+        <location line="+468"/>
         <source>No result for this model yet: choose a method and press Run (Ctrl+R).</source>
         <translation>Brak jeszcze wyniku dla tego modelu: wybierz metodę i naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message numerus="yes">
-        <location line="-457"/>
+        <location line="-458"/>
         <source>The edited model has %n problem(s), the first: %1</source>
         <translation>
             <numerusform>Edytowany model ma %n problem: %1</numerusform>
@@ -7892,7 +8184,7 @@ odchyłka: %3 µm</translation>
         <translation>Ustawienia uruchomienia badania ustawień są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (wybierz wartość, Cofnij lub plik projektu): %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>The setup study has no model or report to run on.</source>
         <translation>Studium ustawienia nie ma modelu ani raportu do obliczeń.</translation>
     </message>

@@ -8,6 +8,7 @@
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenuBar>
@@ -43,6 +44,7 @@
 #include "app/gui/studyactions.h"
 #include "app/gui/thermalpage.h"
 #include "app/gui/windowlayout.h"
+#include "core/setup/report.h"
 #include "metrofit/version.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
@@ -114,6 +116,10 @@ MainWindow::MainWindow(QWidget* parent)
     if (page == Page::Thermal && !dataset.isEmpty()) thermal_->selectDataset(dataset);
     if (page == Page::Matching && !dataset.isEmpty()) matching_->selectDataset(dataset);
     showPage(page);
+  });
+  connect(navigator_, &ProjectNavigator::setupModelFromReportRequested, this, [this](const QString& dataset) {
+    showPage(Page::Setup);
+    if (auto* setupPage = qobject_cast<SetupPage*>(page(Page::Setup))) setupPage->openReportDialog(dataset);
   });
   connect(document_, &ProjectDocument::changed, this, &MainWindow::updateTitle);
   connect(document_, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
@@ -537,10 +543,20 @@ void MainWindow::importFiles(const QStringList& files) {
         this, tr("Import data"), start,
         tr("Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)"));
   }
+  // Several DMIS files, one per workpiece: offered as one series (one dataset), else one dialog each.
+  bool allDmis = paths.size() > 1;
   for (const QString& path : paths) {
+    QFile file(path);
+    if (!allDmis || !file.open(QIODevice::ReadOnly) || !setup::looksLikeDmis(file.read(4096).toStdString()))
+      allDmis = false;
+  }
+  for (int k = 0; k < paths.size(); ++k) {
+    const QString& path = paths[k];
     ImportDialog dialog(document_->project(), document_->projectPathForDatasets(), this);
     dialog.setFile(path);
+    if (allDmis && k == 0) dialog.setSeriesFiles(paths.mid(1));
     if (dialog.exec() != QDialog::Accepted) continue;
+    if (dialog.readsSeries()) k = static_cast<int>(paths.size());  // the other files are in the series
     try {
       document_->addDataset(dialog.dataset());
     } catch (const std::exception& e) {

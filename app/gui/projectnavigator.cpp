@@ -1,5 +1,6 @@
 #include "app/gui/projectnavigator.h"
 
+#include <QAction>
 #include <QFontMetrics>
 #include <QHeaderView>
 #include <QMenu>
@@ -80,6 +81,16 @@ ProjectNavigator::ProjectNavigator(ProjectDocument* document, QWidget* parent)
     if (id.isEmpty()) return;
     QMenu menu(this);
     addDatasetActions(&menu, document_, id, this);
+    if (const DatasetRef* dataset = document_->project().dataset(id.toStdString());
+        dataset && (dataset->kind == dataset_kind::kCmmReport || dataset->kind == dataset_kind::kDmis)) {
+      // From the report to the setup study: a new model, or the features the study's model lacks.
+      const bool hasModel = document_->project().firstOfKind(dataset_kind::kSetupModel) != nullptr;
+      menu.addSeparator();
+      QAction* fromReport = menu.addAction(
+          hasModel ? tr("Add report features to setup model…") : tr("Create setup model from report…"), this,
+          [this, id] { emit setupModelFromReportRequested(id); });
+      fromReport->setObjectName(QStringLiteral("setupModelFromReport"));
+    }
     menu.exec(viewport()->mapToGlobal(pos));
   });
   rebuild();

@@ -27,6 +27,9 @@ class ProjectNavigator : public QTreeWidget {
  signals:
   /// An item was selected: its page and, for a dataset item, the dataset id (else empty).
   void pageActivated(metrofit::Page page, const QString& datasetId);
+  /// "Create setup model from report…" / "Add report features to setup model…" was chosen in the
+  /// context menu of the CMM report (or DMIS) dataset `datasetId`.
+  void setupModelFromReportRequested(const QString& datasetId);
 
  protected:
   void resizeEvent(QResizeEvent* event) override;

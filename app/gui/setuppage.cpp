@@ -27,6 +27,7 @@
 #include "app/gui/studysettingbinding.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
+#include "core/project/report_model.h"
 #include "core/project/stored_results.h"
 #include "core/setup/exact.h"
 #include "core/setup/export.h"
@@ -38,6 +39,7 @@
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/storedresulttext.h"
 #include "widgets/document/studyinfo.h"
+#include "widgets/setup/reportmodeldialog.h"
 #include "widgets/setup/setupcharts.h"
 #include "widgets/setup/setupconvergenceview.h"
 #include "widgets/setup/setupgrapheditor.h"
@@ -99,6 +101,13 @@ std::string fnv1a64(const std::string& text) {
 }
 
 /// The convergence points the worker collects for the chart while a run goes on.
+/// The dimensions' ids and report labels: a change means the report must be read again.
+std::string mappingKey(const setup::Model& model) {
+  std::string key = model.axis;
+  for (const setup::Dimension& d : model.dimensions) key += '\n' + d.id + '\t' + d.label;
+  return key;
+}
+
 struct LiveTrace {
   std::mutex mutex;
   std::vector<SetupTracePoint> pending;
@@ -128,6 +137,7 @@ struct SetupPage::Impl {
   int chartRun = -1;
   QTimer flush;
   QPointer<AutosaveExtras> extras;
+  std::optional<ReportFeatures> reportFeatures;  ///< of the study's report (readReportFeatures)
 };
 
 SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
@@ -293,9 +303,16 @@ SetupPage::SetupPage(ProjectDocument* document, QWidget* parent)
       },
       true, tr("Change the setup seed"));
 
+  fromReport_ = new QPushButton(tr("From &report…"), this);
+  fromReport_->setObjectName(QStringLiteral("setupFromReport"));
+  fromReport_->setToolTip(
+      tr("Create the setup model from a CMM report of the project, or add the report's "
+         "features the model lacks"));
+  connect(fromReport_, &QPushButton::clicked, this, [this] { openReportDialog(); });
   auto* top = new QHBoxLayout;
   top->addWidget(title);
   top->addStretch(1);
+  top->addWidget(fromReport_);
   auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kSetup), this);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);
@@ -454,8 +471,12 @@ void SetupPage::reload() {
   setup::Model model;
   if (d->files.modelPath.empty()) {
     d->dataError =
-        tr("This project has no setup model. Add a dataset of kind \"setup_model\" (the relation "
-           "graph, JSON) and a \"cmm_report\" to the project file.");
+        d->files.reportPath.empty()
+            ? tr("This project has no setup model and no CMM report. Import a CMM report (File › Import), "
+                 "then create the model from it with “From report…”.")
+            : tr("This project has no setup model yet. Create it from the CMM report “%1” with “From "
+                 "report…” (or the report's context menu in the project navigator).")
+                  .arg(QString::fromStdString(d->files.reportId));
   } else {
     try {
       model = setup::readModel(d->files.modelPath);
@@ -470,6 +491,142 @@ void SetupPage::reload() {
   results_->setMeasurements(d->measModel, d->rawMeasurements ? &*d->rawMeasurements : nullptr,
                             QString::fromStdString(d->files.modelPath));
   convergence_->clearRuns();
+  readReportFeatures();
+  updateControls();
+}
+
+void SetupPage::readReportFeatures() {
+  d->reportFeatures.reset();
+  QStringList labels;
+  QString format;
+  if (const DatasetRef* report = document_->project().dataset(d->files.reportId)) {
+    try {
+      d->reportFeatures = datasetReportFeatures(document_->projectPathForDatasets().toStdString(), *report);
+      format = QString::fromStdString(d->reportFeatures->format);
+      for (const ReportCharacteristic& c : d->reportFeatures->characteristics)
+        if (c.usable && !c.label.empty()) labels << QString::fromStdString(c.label);
+    } catch (const std::exception&) {
+      // The report's own error is on the info line (readReport).
+    }
+  }
+  graph_->setReportFeatures(labels, format);
+}
+
+QStringList SetupPage::reportDatasets() const {
+  QStringList out;
+  for (const DatasetRef& dataset : document_->project().datasets)
+    if (dataset.kind == dataset_kind::kCmmReport || dataset.kind == dataset_kind::kDmis)
+      out << QString::fromStdString(dataset.id);
+  return out;
+}
+
+ReportModelDialog* SetupPage::makeReportDialog(const QString& reportId, QString* error) {
+  const QString id = reportId.isEmpty() ? QString::fromStdString(d->files.reportId) : reportId;
+  const DatasetRef* report = document_->project().dataset(id.toStdString());
+  if (!report || (report->kind != dataset_kind::kCmmReport && report->kind != dataset_kind::kDmis)) {
+    if (error)
+      *error = id.isEmpty() ? tr("The project has no CMM report: import one first (File › Import).")
+                            : tr("“%1” is not a CMM report or DMIS dataset of the project.").arg(id);
+    return nullptr;
+  }
+  ReportFeatures features;
+  try {
+    features = datasetReportFeatures(document_->projectPathForDatasets().toStdString(), *report);
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromStdString(e.what());
+    return nullptr;
+  }
+  const bool creates = d->files.modelPath.empty();
+  return new ReportModelDialog(features, id, creates ? nullptr : &editor_->model(), this);
+}
+
+bool SetupPage::applyReportDialog(const ReportModelDialog& dialog, const QString& reportId, QString* error) {
+  auto fail = [&](const QString& message) {
+    if (error) *error = message;
+    return false;
+  };
+  const QString id = reportId.isEmpty() ? QString::fromStdString(d->files.reportId) : reportId;
+  if (!document_->project().dataset(id.toStdString()))
+    return fail(tr("“%1” is not a dataset of the project.").arg(id));
+  QString why;
+  const std::optional<setup::Model> model = dialog.resultModel(&why);
+  if (!model) return fail(why);
+  if (isRunning()) {
+    cancelRun();
+    waitForRun();
+  }
+  if (!dialog.creates()) {
+    if (d->files.modelPath.empty()) return fail(tr("The project has no setup model to add features to."));
+    if (id.toStdString() != d->files.reportId) {
+      // Another report: the study reads it from now on (a project edit that reloads the page).
+      if (editor_->isModified())
+        return fail(
+            tr("Save or revert the edits of the setup model before you add the features of another "
+               "report."));
+      document_->setStudyValue(QString::fromLatin1(study::kSetup), QStringLiteral("/dataset"),
+                               id.toStdString(), tr("Use the report %1 for the setup study").arg(id));
+    }
+    if (!editor_->replaceModel(*model, tr("Add report features to the setup model")))
+      return fail(tr("The model reads every checked characteristic already."));
+    return true;
+  }
+  // A new model: written beside the project as data/<id>.json, then one undo step of the project adds the
+  // dataset and makes it (and the report) the study's.
+  std::string modelId = id.toStdString() + "-model";
+  for (int n = 2; document_->project().dataset(modelId) != nullptr; ++n)
+    modelId = id.toStdString() + "-model-" + std::to_string(n);
+  const QDir folder = QFileInfo(document_->projectPathForDatasets()).absoluteDir();
+  QString relative = QStringLiteral("data/%1.json").arg(QString::fromStdString(modelId));
+  for (int n = 2; QFileInfo::exists(folder.absoluteFilePath(relative)); ++n)
+    relative = QStringLiteral("data/%1-%2.json").arg(QString::fromStdString(modelId)).arg(n);
+  const QString file = folder.absoluteFilePath(relative);
+  try {
+    if (!QDir().mkpath(QFileInfo(file).absolutePath()))
+      return fail(tr("Cannot create the folder %1 for the setup model.").arg(QFileInfo(file).absolutePath()));
+    setup::Model saved = *model;
+    saved.source = file.toStdString();
+    setup::validateModel(saved);
+    writeFileAtomic(file.toStdString(), dumpJson(setup::modelToJson(saved)));
+  } catch (const std::exception& e) {
+    return fail(QString::fromStdString(e.what()));
+  }
+  DatasetRef dataset;
+  dataset.id = modelId;
+  dataset.kind = dataset_kind::kSetupModel;
+  dataset.path = relative.toStdString();
+  dataset.description = tr("Setup model made from the CMM report %1").arg(id).toStdString();
+  std::vector<DatasetRef> datasets = document_->project().datasets;
+  datasets.push_back(dataset);
+  nlohmann::json studies = document_->project().studies;
+  if (!studies.contains(study::kSetup) || !studies[study::kSetup].is_object())
+    studies[study::kSetup] = nlohmann::json::object();
+  studies[study::kSetup]["model"] = modelId;
+  studies[study::kSetup]["dataset"] = id.toStdString();
+  document_->endEditSequence();
+  document_->undoStack()->push(new ChangeDatasets(
+      document_, std::move(datasets), std::move(studies),
+      tr("Create setup model %1 from report %2").arg(QString::fromStdString(modelId), id)));
+  return true;
+}
+
+void SetupPage::openReportDialog(const QString& reportId) {
+  QString error;
+  QString id = reportId;
+  if (id.isEmpty()) {
+    const QStringList reports = reportDatasets();
+    if (reports.size() > 1 && !reports.contains(QString::fromStdString(d->files.reportId)))
+      id = reports.front();
+  }
+  std::unique_ptr<ReportModelDialog> dialog(makeReportDialog(id, &error));
+  if (!dialog) {
+    QMessageBox::critical(this, tr("Cannot read the CMM report"), error);
+    return;
+  }
+  if (dialog->exec() != QDialog::Accepted) return;
+  if (!applyReportDialog(*dialog, id, &error))
+    QMessageBox::critical(this, dialog->windowTitle(), error);
+  else
+    tabs_->setCurrentIndex(0);
 }
 
 void SetupPage::readReport(const setup::Model& model) {
@@ -485,7 +642,7 @@ void SetupPage::readReport(const setup::Model& model) {
   }
   try {
     d->rawMeasurements =
-        setup::readMeasurements({d->files.reportPath}, model, d->files.reportCsv, d->files.reportDmis);
+        setup::readMeasurements(d->files.reportPaths, model, d->files.reportCsv, d->files.reportDmis);
     applyEffects();
   } catch (const std::exception& e) {
     d->dataError = QString::fromStdString(e.what());
@@ -526,6 +683,13 @@ void SetupPage::restoreUnsavedModel(const nlohmann::json& unsaved) {
 }
 
 void SetupPage::onModelEdited() {
+  // A changed report mapping (dimension ids, labels, axis) is read against the report at once, so that the
+  // mapping can be tried before the model is saved; tolerance edits keep the report as read against the
+  // model file.
+  if (editor_->isValid() && !d->files.reportPath.empty() && !d->files.modelPath.empty() &&
+      mappingKey(editor_->model()) != mappingKey(d->measModel)) {
+    readReport(editor_->model());
+  }
   // The runs, the exact optimum and the result belong to the previous model.
   d->instance.reset();
   d->exact.reset();
@@ -658,6 +822,7 @@ void SetupPage::updateControls() {
   graph_->setEnabled(!running);
   progress_->setVisible(running);
   saveModel_->setEnabled(!running && editor_->isModified());
+  if (fromReport_) fromReport_->setEnabled(!running && !reportDatasets().isEmpty());
   revertModel_->setEnabled(!running && editor_->isModified());
 }
 
@@ -825,7 +990,7 @@ bool SetupPage::saveModel(QString* error) {
   if (!d->files.reportPath.empty()) {
     try {
       setup::Measurements m =
-          setup::readMeasurements({d->files.reportPath}, saved, d->files.reportCsv, d->files.reportDmis);
+          setup::readMeasurements(d->files.reportPaths, saved, d->files.reportCsv, d->files.reportDmis);
       d->rawMeasurements = std::move(m);
       d->measModel = saved;
       d->dataError.clear();

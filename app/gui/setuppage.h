@@ -12,6 +12,13 @@
 //  * Validation: the paper's statistical validation (Fig. 18).
 // The runs use the EDITED model (tolerance edits can be tried before saving); the measured
 // deviations come from the report read against the model file, matched by dimension id.
+// From a CMM report (issue 28 item 3): "Create setup model from report…" / "Add report features to setup
+// model…" (the page's "From report…" button, the report's context menu in the navigator) list the report's
+// characteristics (ReportModelDialog); the checked ones become a new model (written as data/<id>.json
+// beside the project, added as a setup_model dataset and made the study's model and report: one undo step
+// of the project) or are added to the edited model (one undo step of the graph editor). The graph
+// editor's "Report feature" column offers the study's report's features as each dimension's label; a
+// changed mapping is read against the report at once (before the model is saved).
 // Effects added with the diagnosis page's Apply (studies.diagnosis.setup.applied: tool wear, datum
 // drift) are part of the study's model: the deviations are then those predicted for the next part
 // (core/study/setup_study.h applyStudyEffects); the info line says so, and undoing Apply brings
@@ -39,7 +46,9 @@ class SetupGraphEditor;
 class SetupModelEditor;
 class SetupResultsView;
 class SetupValidationView;
+class ReportModelDialog;
 struct SetupRunOutcome;
+struct ReportFeatures;
 
 class SetupPage : public QWidget {
   Q_OBJECT
@@ -96,6 +105,19 @@ class SetupPage : public QWidget {
   /// Waits until the running run has finished and its result is shown (tests).
   void waitForRun();
 
+  /// The report datasets (cmm_report, dmis) the page can build a model from.
+  QStringList reportDatasets() const;
+  /// The dialog for the report dataset `reportId` (the study's report when empty): "Create setup model
+  /// from report…" when the study has no model, else "Add report features…" for the edited model. nullptr
+  /// with the message in *error when the report cannot be read. Not shown: the caller exec()s it (or a
+  /// test drives it) and passes it to applyReportDialog.
+  ReportModelDialog* makeReportDialog(const QString& reportId, QString* error = nullptr);
+  /// Applies an accepted dialog for `reportId` (see the header comment); false with the message in *error.
+  bool applyReportDialog(const ReportModelDialog& dialog, const QString& reportId, QString* error = nullptr);
+  /// makeReportDialog, exec, applyReportDialog, with message boxes for errors.
+  void openReportDialog(const QString& reportId = {});
+  QPushButton* fromReportButton() const { return fromReport_; }
+
   /// Writes the edited model to its dataset file (atomically); false with the message in *error.
   bool saveModel(QString* error = nullptr);
   /// Reloads the model and the report from the files (drops the edits and their undo history).
@@ -133,6 +155,8 @@ class SetupPage : public QWidget {
   bool ensureExact();
   /// Reads the report against `model` (d->rawMeasurements, d->measurements; d->dataError on failure).
   void readReport(const setup::Model& model);
+  /// The study's report's characteristics for the graph editor's "Report feature" column.
+  void readReportFeatures();
   /// Autosave recovery: the edited model of the side file ({"dataset", "model"}) as one undo step.
   void restoreUnsavedModel(const nlohmann::json& unsaved);
 
@@ -145,6 +169,7 @@ class SetupPage : public QWidget {
   SetupGraphEditor* graph_;
   QPushButton* saveModel_;
   QPushButton* revertModel_;
+  QPushButton* fromReport_ = nullptr;
   QComboBox* method_;
   QSpinBox* budget_;
   QSpinBox* seed_;

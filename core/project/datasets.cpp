@@ -155,6 +155,17 @@ bool datasetKindIsCsv(const std::string& kind) {
 DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset) {
   const std::string path = resolveDatasetPath(projectPath, dataset);
   DatasetSummary s = inspect(path, path, dataset.kind, dataset.csv);
+  if (!dataset.paths.empty()) {
+    // A DMIS series: every file is a DMIS output file; the rows of all of them.
+    const std::vector<std::string> files = resolveDatasetPaths(projectPath, dataset);
+    for (std::size_t k = 0; k < files.size(); ++k) {
+      const DatasetSummary one = k == 0 ? s : inspect(files[k], files[k], dataset.kind, dataset.csv);
+      if (!one.dmis)
+        throw ValidationError(ErrorContext{files[k], 0, 0, "paths[" + std::to_string(k) + "]"},
+                              "a series of files must be DMIS output files (one per workpiece)");
+      if (k > 0) s.rows += one.rows;
+    }
+  }
   s.id = dataset.id;
   s.path = dataset.path;
   return s;
@@ -267,6 +278,35 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
   const DatasetSummary s = inspect(request.file, displayPath(request.file), ref.kind, ref.csv);
   if (dmisReading && !s.dmis) throw notDmis();
   const fs::path folder = fs::absolute(fs::path(parentFolder(projectPath))).lexically_normal();
+  const auto relativePath = [&folder](const std::string& given) {
+    const fs::path file = fs::absolute(fs::path(given)).lexically_normal();
+    const fs::path rel = file.lexically_relative(folder);
+    return rel.empty() ? file.string() : rel.string();
+  };
+  if (!request.moreFiles.empty()) {
+    // A DMIS series: every file a DMIS output file of the kind, referenced where it is.
+    if (request.embed || fromStdin)
+      throw ValidationError(ErrorContext{{}, 0, 0, "FILE"},
+                            "a series of DMIS files is referenced where it is, not embedded or read from "
+                            "standard input");
+    if (ref.kind != dataset_kind::kCmmReport && ref.kind != dataset_kind::kDmis)
+      throw ValidationError(ErrorContext{{}, 0, 0, "KIND"},
+                            "several files make one dataset only as a DMIS series (cmm-report or dmis)");
+    if (!s.dmis)
+      throw ValidationError(ErrorContext{displayPath(request.file), 0, 0, {}},
+                            "is not a DMIS file; only DMIS output files make a series");
+    ref.path = relativePath(request.file);
+    ref.paths.push_back(ref.path);
+    for (const std::string& more : request.moreFiles) {
+      const DatasetSummary m = inspect(more, displayPath(more), ref.kind, ref.csv);
+      if (!m.dmis)
+        throw ValidationError(ErrorContext{displayPath(more), 0, 0, {}},
+                              "is not a DMIS file; only DMIS output files make a series");
+      ref.paths.push_back(relativePath(more));
+    }
+    project.datasets.push_back(ref);
+    return ref;
+  }
   if (request.embed) {
     embedDataset(projectPath, request.file, ref);
   } else if (fromStdin) {

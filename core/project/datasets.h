@@ -70,6 +70,10 @@ struct AddDatasetRequest {
   /// (core/project/import_guess.h) finds in its header ("Zeit [min]" -> time_min, "Soll X [µm]" -> qx,
   /// read in mm), as the import dialog does; the applied mapping is the dataset's csv.columnMap.
   bool guessRoles = false;
+  /// Further DMIS output files of the same series, one per workpiece (`file` is the first): the dataset
+  /// then lists them all in "paths" (core/project/project.h). Each must be a DMIS file; a series is
+  /// referenced where it is, not embedded and not read from standard input.
+  std::vector<std::string> moreFiles;
 };
 
 /// The kind `project add` takes to mean "guess it from the file" (guessDatasetKind).

@@ -33,6 +33,7 @@ nlohmann::json Project::toJson() const {
   j["datasets"] = nlohmann::json::array();
   for (const auto& d : datasets) {
     nlohmann::json o{{"id", d.id}, {"kind", d.kind}, {"path", d.path}};
+    if (d.paths.size() > 1) o["paths"] = d.paths;
     if (!d.description.empty()) o["description"] = d.description;
     if (!d.licence.empty()) o["licence"] = d.licence;
     if (d.csv.dialect.delimiter) o["delimiter"] = csvDelimiterName(d.csv.dialect.delimiter);
@@ -89,6 +90,22 @@ Project Project::fromJson(const nlohmann::json& j, const std::string& source) {
       ref.kind = d.string("kind");
       ref.path = d.string("path");
       if (ref.path.empty()) d.fail("must not be empty", "path");
+      if (d.has("paths")) {
+        const JsonReader paths = d.array("paths");
+        if (paths.size() == 0) d.fail("must list the files of the series", "paths");
+        if (ref.kind != dataset_kind::kCmmReport && ref.kind != dataset_kind::kDmis)
+          d.fail("a series of files is a DMIS series: only for kinds cmm_report and dmis", "paths");
+        for (std::size_t k = 0; k < paths.size(); ++k) {
+          const nlohmann::json& p = paths.json()[k];
+          if (!p.is_string() || p.get<std::string>().empty())
+            d.fail("must be a file name (a non-empty string)", "paths[" + std::to_string(k) + "]");
+          ref.paths.push_back(p.get<std::string>());
+        }
+        if (ref.paths.front() != ref.path)
+          d.fail("the first file of the series must be the dataset's \"path\" ('" + ref.path + "')",
+                 "paths[0]");
+        if (ref.paths.size() == 1) ref.paths.clear();
+      }
       ref.description = d.string("description", "");
       ref.licence = d.string("licence", "");
       try {
@@ -192,6 +209,17 @@ void saveProject(const Project& project, const std::string& path) {
 
 std::string resolveDatasetPath(const std::string& projectPath, const DatasetRef& dataset) {
   return joinPath(parentFolder(projectPath), dataset.path);
+}
+
+std::vector<std::string> datasetFiles(const DatasetRef& dataset) {
+  return dataset.paths.empty() ? std::vector<std::string>{dataset.path} : dataset.paths;
+}
+
+std::vector<std::string> resolveDatasetPaths(const std::string& projectPath, const DatasetRef& dataset) {
+  std::vector<std::string> out;
+  for (const std::string& file : datasetFiles(dataset))
+    out.push_back(joinPath(parentFolder(projectPath), file));
+  return out;
 }
 
 }  // namespace metrofit

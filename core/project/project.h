@@ -20,6 +20,11 @@
 // before the column-name row), "comment" (the comment prefix, default "#"), "skip_bad_rows" (true:
 // unreadable rows are left out and counted) and, for a DMIS file, "dmis": {"ta_meaning":
 // "auto|deviation|actual", "ta_sign": "plain|nominal"} (core/setup/dmis_options.h).
+// A DMIS series (several DMIS output files, one per measured workpiece, read as one setup series;
+// core/setup/report.h) is one dataset of kind "cmm_report" or "dmis" with the optional key "paths": every
+// file of the series in order, each relative to the project's folder like "path"; "path" is then the first
+// of them, so a reader that knows only "path" still finds a file of the series. Without "paths" (every
+// project written before it) the dataset is the one file of "path".
 // core/project/datasets.h adds and lists datasets.
 // Study objects are owned by the method that uses them; unknown keys are preserved on save.
 #include <string>
@@ -64,11 +69,14 @@ inline constexpr const char* kAll[] = {kSetup, kMatching, kKinematics, kThermal,
 struct DatasetRef {
   std::string id;    ///< unique within the project
   std::string kind;  ///< one of dataset_kind
-  std::string path;  ///< relative to the project folder, or absolute
+  std::string path;  ///< relative to the project folder, or absolute (a series: its first file)
   std::string description;
   std::string licence;           ///< e.g. "MIT (CAIVIAC), see LICENSE-MIT.txt" for real data
   CsvReadOptions csv;            ///< how a CSV dataset is read: dialect (0 = detect) and column mapping
   setup::DmisOptions dmis = {};  ///< how a DMIS file's TA(label) values are read
+  /// A series of DMIS files ("paths"): every file, paths[0] == path; empty for a single file. Last, so
+  /// that positional initialisers of the fields before it stay valid.
+  std::vector<std::string> paths = {};
   bool operator==(const DatasetRef&) const = default;
 };
 
@@ -112,7 +120,11 @@ void setMatchingMachine(Project& project, const machine::MachineDefinition& defi
 Project loadProject(const std::string& path);
 /// Writes the project atomically (temporary file in the same folder, fsync, rename).
 void saveProject(const Project& project, const std::string& path);
-/// Resolves a dataset path against the folder of the project file.
+/// Resolves a dataset path against the folder of the project file (a series: its first file).
 std::string resolveDatasetPath(const std::string& projectPath, const DatasetRef& dataset);
+/// The dataset's files as stored: `paths` for a series, else {path}.
+std::vector<std::string> datasetFiles(const DatasetRef& dataset);
+/// Every file of the dataset resolved against the folder of the project file.
+std::vector<std::string> resolveDatasetPaths(const std::string& projectPath, const DatasetRef& dataset);
 
 }  // namespace metrofit

@@ -20,7 +20,7 @@ std::string readingOptions(const DatasetRef& dataset) {
   Project p;
   p.datasets.push_back(dataset);
   nlohmann::json j = p.toJson()["datasets"][0];
-  for (const char* key : {"id", "path", "description", "licence"}) j.erase(key);
+  for (const char* key : {"id", "path", "paths", "description", "licence"}) j.erase(key);
   return j.dump();
 }
 
@@ -28,7 +28,8 @@ std::string readingOptions(const DatasetRef& dataset) {
 
 std::string datasetDataHash(const std::string& projectPath, const DatasetRef& dataset) {
   std::uint64_t h = 1469598103934665603ull;
-  mix(h, readFile(resolveDatasetPath(projectPath, dataset)));
+  // A DMIS series: every file, in order (a single file hashes as before).
+  for (const std::string& file : resolveDatasetPaths(projectPath, dataset)) mix(h, readFile(file));
   mix(h, readingOptions(dataset));
   static constexpr char kHex[] = "0123456789abcdef";
   std::string out = "fnv1a64:";

@@ -94,6 +94,7 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
   out.datasetId = block.dataset;
   const DatasetRef& dataset = datasetOf(project, out.datasetId, source, prefix + "dataset");
   out.datasetPath = resolveDatasetPath(projectPath, dataset);
+  out.datasetPaths = resolveDatasetPaths(projectPath, dataset);
   out.csv = dataset.csv;
   out.dmis = dataset.dmis;
   out.target = block.target;
@@ -128,7 +129,9 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer)
     }
     case DiagnosisDomain::Setup: {
       const setup::Model model = setup::readModel(s.modelPath);
-      const setup::Measurements m = setup::readMeasurements({s.datasetPath}, model, s.csv, s.dmis);
+      const setup::Measurements m = setup::readMeasurements(
+          s.datasetPaths.empty() ? std::vector<std::string>{s.datasetPath} : s.datasetPaths, model, s.csv,
+          s.dmis);
       return diagnose::diagnoseSetup(model, m, {}, observer);
     }
     case DiagnosisDomain::Matching: {

@@ -39,7 +39,8 @@ const char* diagnosisDomainKey(DiagnosisDomain domain);
 struct DiagnosisSettings {
   DiagnosisDomain domain = DiagnosisDomain::Thermal;
   std::string datasetId;
-  std::string datasetPath;  ///< resolved against the project file's folder
+  std::string datasetPath;                ///< resolved against the project file's folder
+  std::vector<std::string> datasetPaths;  ///< every file (a DMIS series: several; core/project/project.h)
   CsvReadOptions csv;       ///< the dataset's dialect and column mapping (core/project/datasets.h)
   setup::DmisOptions dmis;  ///< how the dataset's DMIS TA(label) values are read (its "dmis" key)
   std::string target;       ///< thermal

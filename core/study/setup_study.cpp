@@ -46,6 +46,7 @@ SetupStudyFiles setupStudyFiles(const Project& project, const std::string& proje
           studyDataset(project, study, "dataset", dataset_kind::kCmmReport, dataset_kind::kDmis)) {
     files.reportId = r->id;
     files.reportPath = resolveDatasetPath(projectPath, *r);
+    files.reportPaths = resolveDatasetPaths(projectPath, *r);
     files.reportCsv = r->csv;
     files.reportDmis = r->dmis;
   }

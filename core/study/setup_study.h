@@ -25,13 +25,14 @@ class Project;
 
 /// Paths and ids of the study's datasets.
 struct SetupStudyFiles {
-  std::string modelId, reportId;      ///< dataset ids (empty when the project has none)
-  std::string modelPath, reportPath;  ///< resolved paths (empty when the project has none)
-  CsvReadOptions reportCsv;           ///< how the report is read (a CSV report's dialect and mapping)
-  setup::DmisOptions reportDmis;      ///< how a DMIS report's TA(label) values are read (its "dmis" key)
-  std::string method = "exact";       ///< studies.setup.method, when set
-  long budget = setup::kPaperBudget;  ///< studies.setup.budget, when set
-  std::uint64_t seed = 1;             ///< studies.setup.seed, when set
+  std::string modelId, reportId;         ///< dataset ids (empty when the project has none)
+  std::string modelPath, reportPath;     ///< resolved paths (empty when the project has none)
+  std::vector<std::string> reportPaths;  ///< every file of the report (a DMIS series: one per workpiece)
+  CsvReadOptions reportCsv;              ///< how the report is read (a CSV report's dialect and mapping)
+  setup::DmisOptions reportDmis;         ///< how a DMIS report's TA(label) values are read (its "dmis" key)
+  std::string method = "exact";          ///< studies.setup.method, when set
+  long budget = setup::kPaperBudget;     ///< studies.setup.budget, when set
+  std::uint64_t seed = 1;                ///< studies.setup.seed, when set
 };
 
 /// The study's datasets (see above); `projectPath` resolves relative dataset paths.

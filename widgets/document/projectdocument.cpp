@@ -351,6 +351,11 @@ void ProjectDocument::applyProject(const Project& project) {
 DatasetRef ProjectDocument::resolvedDataset(const DatasetRef& dataset) const {
   DatasetRef d = dataset;
   d.path = toStd(datasetPath(dataset));
+  for (std::string& file : d.paths) {
+    DatasetRef one = dataset;
+    one.path = file;
+    file = toStd(datasetPath(one));
+  }
   return d;
 }
 
@@ -402,7 +407,14 @@ void ProjectDocument::saveAs(const QString& path) {
   // so that they still name the same files.
   Project toSave = project_;
   const QDir newFolder = QFileInfo(absolute).absoluteDir();
+  const QDir oldFolder = QFileInfo(projectPathForDatasets()).absoluteDir();
   for (DatasetRef& d : toSave.datasets) {
+    // Every file of a DMIS series too ("paths"; the first is "path").
+    for (std::string& file : d.paths) {
+      if (QDir::isAbsolutePath(fromStd(file))) continue;
+      file = toStd(QDir::fromNativeSeparators(
+          newFolder.relativeFilePath(QDir::cleanPath(oldFolder.absoluteFilePath(fromStd(file))))));
+    }
     const QString current = fromStd(d.path);
     if (QDir::isAbsolutePath(current)) continue;
     d.path = toStd(QDir::fromNativeSeparators(newFolder.relativeFilePath(datasetPath(d))));
@@ -509,6 +521,7 @@ void ProjectDocument::relinkDataset(const QString& id, const QString& file) {
   const QString relative = folder.relativeFilePath(absolute);
   // Another root (Windows drive) cannot be reached relatively: keep the absolute path.
   moved.path = toStd(QDir::fromNativeSeparators(QDir::isAbsolutePath(relative) ? absolute : relative));
+  moved.paths.clear();  // a DMIS series re-linked to one file is that file
   (void)summarizeDataset(fileNameToStd(projectPathForDatasets()), moved);  // throws; nothing changed yet
   if (moved == project_.datasets[index]) return;
   std::vector<DatasetRef> datasets = project_.datasets;

@@ -279,6 +279,11 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   layout->addWidget(dialect);
   layout->addWidget(dmisBox_);
   layout->addWidget(splitter, 1);
+  series_ = new QCheckBox(this);
+  series_->setObjectName(QStringLiteral("importSeries"));
+  series_->setChecked(true);
+  series_->setVisible(false);
+  layout->addWidget(series_);
   layout->addWidget(embed_);
   layout->addWidget(problemLabel_);
   layout->addWidget(buttons_);
@@ -309,7 +314,7 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   connect(comment_, &QLineEdit::textChanged, this, [this] {
     if (!updating_) reguessKind();
   });
-  for (QCheckBox* box : {skipBadRows_, embed_})
+  for (QCheckBox* box : {skipBadRows_, embed_, series_})
     connect(box, &QCheckBox::toggled, this, [this] {
       if (!updating_) revalidate();
     });
@@ -529,6 +534,23 @@ setup::DmisOptions ImportDialog::dmisOptions() const {
   o.taMeaning = setup::parseDmisTaMeaning(taMeaning_->currentData().toString().toStdString());
   o.signFollowsNominal = taSign_->currentData().toString() == QLatin1String("nominal");
   return o;
+}
+
+void ImportDialog::setSeriesFiles(const QStringList& more) {
+  seriesFiles_ = more;
+  series_->setText(tr("Read the %n selected files as one DMIS &series (one dataset, one file per workpiece)",
+                      nullptr, static_cast<int>(more.size() + 1)));
+  series_->setToolTip(tr("Also: %1").arg(more.join(QStringLiteral(", "))));
+  series_->setVisible(!more.isEmpty());
+  revalidate();
+}
+
+void ImportDialog::setReadsSeries(bool series) {
+  series_->setChecked(series);
+}
+
+bool ImportDialog::readsSeries() const {
+  return !seriesFiles_.isEmpty() && series_->isChecked();
 }
 
 void ImportDialog::setEmbed(bool embed) {
@@ -793,6 +815,9 @@ void ImportDialog::revalidate() {
       request.id = id_->text().trimmed().toStdString();
       request.csv = csvOptions();
       request.dmis = dmisOptions();
+      if (readsSeries())
+        for (const QString& more : seriesFiles_)
+          request.moreFiles.push_back(QFile::encodeName(more).toStdString());
       dataset_ = addDataset(scratch, QFile::encodeName(projectPath_).toStdString(), request);
     } catch (const std::exception& e) {
       problem_ = QString::fromStdString(e.what());
@@ -808,6 +833,9 @@ void ImportDialog::revalidate() {
   }
   QString ready = tr("Ready to import as %1 “%2”.")
                       .arg(datasetKindTitle(projectKind(kind())), QString::fromStdString(dataset_.id));
+  if (readsSeries())
+    ready += QLatin1Char(' ') + tr("The %n file(s) are one DMIS series: one workpiece per file.", nullptr,
+                                   static_cast<int>(dataset_.paths.size()));
   if (skipped > 0) ready += QLatin1Char(' ') + tr("%n unreadable row(s) will be left out.", nullptr, skipped);
   if (embed())
     ready += QLatin1Char(' ') + tr("The file is copied to %1.")

@@ -17,7 +17,10 @@
 //     under it, every row that cannot be read (line, row, column, why),
 //   * the first problem as one line naming file, line and field (core's InputError), in which case
 //     the Import button stays disabled (unreadable rows do not block when they are skipped),
-//   * "copy into the project" (embed: data/<id>.<ext>, never overwriting), default: link the file.
+//   * "copy into the project" (embed: data/<id>.<ext>, never overwriting), default: link the file,
+//   * with several DMIS files selected (setSeriesFiles), "Read the N files as one DMIS series": one
+//     dataset listing every file ("paths", core/project/project.h), one file per workpiece, as the setup
+//     study reads a series (checked by default).
 // The dialog does not change the project: after accept() the caller adds dataset() through the
 // document's undo stack (ProjectDocument::addDataset). An embedded file is copied on accept().
 #include <QDialog>
@@ -88,6 +91,12 @@ class ImportDialog : public QDialog {
   void setEmbed(bool embed);
   bool embed() const;
 
+  /// Further DMIS files selected with the file: offered as one series with it (see the header comment).
+  void setSeriesFiles(const QStringList& more);
+  /// Read the file and setSeriesFiles() as one series (the check box; false when there are none).
+  void setReadsSeries(bool series);
+  bool readsSeries() const;
+
   /// True when the file can be read as the chosen kind (the Import button is enabled).
   bool canImport() const { return problem_.isEmpty(); }
   /// The problem that keeps the file from being imported (one line), empty when there is none.
@@ -136,6 +145,8 @@ class ImportDialog : public QDialog {
   QComboBox* taMeaning_;
   QComboBox* taSign_;
   QCheckBox* embed_;
+  QCheckBox* series_ = nullptr;
+  QStringList seriesFiles_;
   QListWidget* rowProblems_;
   QLabel* detected_;
   QTableWidget* mapping_;

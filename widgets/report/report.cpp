@@ -89,6 +89,7 @@ std::vector<ReportDataset> readDatasets(const Project& project, const QString& p
     d.ref = ref;
     const std::string path = resolveDatasetPath(projectPath.toStdString(), ref);
     d.path = QString::fromStdString(path);
+    d.paths = resolveDatasetPaths(projectPath.toStdString(), ref);
     if (ref.kind == dataset_kind::kThermalLog) {
       d.thermal = readThermalLog(path, 3, ref.csv);
       d.rows = static_cast<long>(d.thermal->rows());

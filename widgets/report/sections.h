@@ -32,6 +32,7 @@ struct Diagnosis;
 struct ReportDataset {
   DatasetRef ref;
   QString path;                         ///< resolved against the project folder
+  std::vector<std::string> paths;       ///< every file resolved (a DMIS series: one per workpiece)
   long rows = -1;                       ///< data rows or points; -1 when the kind has no rows (setup model)
   std::vector<std::string> columns;     ///< column names (CSV kinds), for the settings check
   std::optional<ThermalLog> thermal;    ///< for thermal_log datasets

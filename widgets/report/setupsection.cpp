@@ -132,8 +132,11 @@ void writeSetupSection(ReportPainter& out, const ReportContext& context) {
     out.paragraph(ReportText::tr("The project has no CMM report for this model: nothing to correct."));
     return;
   }
-  setup::Measurements measurements = setup::readMeasurements({reportSet->path.toStdString()}, model,
-                                                             reportSet->ref.csv, reportSet->ref.dmis);
+  // A DMIS series: every file of it.
+  const std::vector<std::string> reportFiles =
+      reportSet->paths.empty() ? std::vector<std::string>{reportSet->path.toStdString()} : reportSet->paths;
+  setup::Measurements measurements =
+      setup::readMeasurements(reportFiles, model, reportSet->ref.csv, reportSet->ref.dmis);
   // The effects added with the diagnosis page's Apply: the deviations become the next part's prediction.
   diagnose::SetupPrediction prediction, declared;
   const std::vector<diagnose::AppliedSetupEffect> applied =

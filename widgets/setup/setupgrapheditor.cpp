@@ -13,13 +13,16 @@
 #include <QLocale>
 #include <QMenu>
 #include <QMessageBox>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QSplitter>
+#include <QStyledItemDelegate>
 #include <QTableWidget>
 #include <QToolBar>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "widgets/common/tablecopy.h"
@@ -29,7 +32,32 @@
 namespace metrofit {
 
 namespace {
-enum Column { ColId, ColNominal, ColLower, ColUpper, ColumnCount };
+enum Column { ColId, ColNominal, ColLower, ColUpper, ColReport, ColumnCount };
+
+/// The "Report feature" cell: an editable combo box of the report's labels (typing another is allowed:
+/// a label the report lacks is named by the Setup page's message when it reads the report).
+class ReportFeatureDelegate : public QStyledItemDelegate {
+ public:
+  ReportFeatureDelegate(const QStringList* labels, QObject* parent)
+      : QStyledItemDelegate(parent), labels_(labels) {}
+  QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex&) const override {
+    auto* combo = new QComboBox(parent);
+    combo->setEditable(true);
+    combo->addItem(QString());
+    combo->addItems(*labels_);
+    combo->setInsertPolicy(QComboBox::NoInsert);
+    return combo;
+  }
+  void setEditorData(QWidget* editor, const QModelIndex& index) const override {
+    static_cast<QComboBox*>(editor)->setCurrentText(index.data(Qt::EditRole).toString());
+  }
+  void setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const override {
+    model->setData(index, static_cast<QComboBox*>(editor)->currentText().trimmed(), Qt::EditRole);
+  }
+
+ private:
+  const QStringList* labels_;
+};
 
 /// A number typed in the user's locale or with a decimal point.
 std::optional<double> parseNumber(const QString& text) {
@@ -132,7 +160,10 @@ SetupGraphEditor::SetupGraphEditor(SetupModelEditor* editor, QWidget* parent)
   table_->setObjectName(QStringLiteral("setupDimensionTable"));
   table_->setColumnCount(ColumnCount);
   table_->setHorizontalHeaderLabels(
-      {tr("Dimension"), tr("Nominal\n(mm)"), tr("Lower\n(mm)"), tr("Upper\n(mm)")});
+      {tr("Dimension"), tr("Nominal\n(mm)"), tr("Lower\n(mm)"), tr("Upper\n(mm)"), tr("Report\nfeature")});
+  table_->horizontalHeaderItem(ColReport)->setToolTip(
+      tr("What the CMM report calls the dimension (feature:value, a DMIS label); empty: its id"));
+  table_->setItemDelegateForColumn(ColReport, new ReportFeatureDelegate(&reportFeatures_, this));
   table_->horizontalHeaderItem(ColLower)->setToolTip(tr("Lower tolerance limit relative to the nominal, mm"));
   table_->horizontalHeaderItem(ColUpper)->setToolTip(tr("Upper tolerance limit relative to the nominal, mm"));
   table_->verticalHeader()->hide();
@@ -229,7 +260,25 @@ void SetupGraphEditor::fillTable() {
       if (!(dims[q].lower < dims[q].upper) && c != ColNominal) item->setForeground(QColor(0xb0, 0x18, 0x18));
       table_->setItem(row, c, item);
     }
+    auto* report = new QTableWidgetItem(QString::fromStdString(dims[q].label));
+    if (!dims[q].label.empty() && !reportFeatures_.isEmpty() &&
+        !reportFeatures_.contains(QString::fromStdString(dims[q].label), Qt::CaseInsensitive)) {
+      report->setForeground(QColor(0xb0, 0x18, 0x18));
+      report->setToolTip(tr("The study's report has no feature “%1”").arg(report->text()));
+    }
+    table_->setItem(row, ColReport, report);
   }
+  // The column is the mapping to a report that names features (a CMM text report, DMIS); a CSV report
+  // series names the dimensions by id, so without offered features and labels it stays hidden.
+  const bool mapped =
+      std::any_of(dims.begin(), dims.end(), [](const setup::Dimension& d) { return !d.label.empty(); });
+  table_->setColumnHidden(ColReport, reportFeatures_.isEmpty() && !mapped);
+  // With the mapping column the table asks for the room its columns need (up to a third of a 1280 px
+  // page), so that the labels are read without scrolling sideways.
+  table_->resizeColumnsToContents();
+  const int needed = table_->horizontalHeader()->length() + 2 * table_->frameWidth() +
+                     table_->verticalScrollBar()->sizeHint().width() + 2;
+  table_->setMinimumWidth(std::clamp(needed, 280, 440));
   filling_ = false;
 }
 
@@ -238,6 +287,10 @@ void SetupGraphEditor::onCellChanged(QTableWidgetItem* item) {
   const int row = item->row();
   const auto& dims = editor_->model().dimensions;
   if (row < 0 || row >= static_cast<int>(dims.size())) return;
+  if (item->column() == ColReport) {
+    if (!editor_->setLabel(row, item->text())) fillTable();
+    return;
+  }
   const setup::Dimension& d = dims[static_cast<std::size_t>(row)];
   std::optional<double> nominal = d.nominal;
   double lower = d.lower, upper = d.upper;
@@ -255,6 +308,21 @@ void SetupGraphEditor::onCellChanged(QTableWidgetItem* item) {
     upper = *value;
   }
   if (!editor_->setTolerance(row, nominal, lower, upper)) fillTable();
+}
+
+void SetupGraphEditor::setReportFeatures(const QStringList& labels, const QString& format) {
+  reportFeatures_ = labels;
+  table_->horizontalHeaderItem(ColReport)->setToolTip(
+      format.isEmpty()
+          ? tr("What the CMM report calls the dimension (feature:value, a DMIS label); empty: its id")
+          : tr("What the %1 calls the dimension (%n feature(s) offered); empty: its id", nullptr,
+               static_cast<int>(labels.size()))
+                .arg(format));
+  fillTable();
+}
+
+int SetupGraphEditor::reportColumn() {
+  return ColReport;
 }
 
 bool SetupGraphEditor::removeSelection() {

@@ -2,11 +2,14 @@
 // The relation-graph editor: a toolbar (add / edit / remove nodes and arcs, undo / redo, zoom,
 // fit, columns or rows, export SVG / PNG), the graph (SetupGraphView) and a side table of the
 // dimensions whose nominal and tolerance limits are editable (each cell edit is one undo step),
-// with the model's problems listed under the graph. It edits a SetupModelEditor: a model value
-// with its own undo stack, so it works (and is tested) without a main window.
+// with the model's problems listed under the graph. The table's last column, "Report feature", is each
+// dimension's report mapping (its label: what the CMM report calls it, core/setup/report.h), chosen
+// from the study's report (setReportFeatures) or typed; each change is one undo step. It edits a
+// SetupModelEditor: a model value with its own undo stack, so it works (and is tested) without a main window.
 //
 // Keys while the editor has focus: Ctrl+Z / Ctrl+Shift+Z (its own undo stack), Delete (remove
 // the selection), Ctrl+= / Ctrl+- (zoom), Ctrl+0 (fit).
+#include <QStringList>
 #include <QWidget>
 
 class QAction;
@@ -31,6 +34,13 @@ class SetupGraphEditor : public QWidget {
   QToolBar* toolBar() const { return toolbar_; }
   /// The problems list shown under the graph (empty text when the model is valid).
   QString problemsText() const;
+
+  /// What the study's CMM report measures, as dimension labels ("oriball:Diameter", "LOC1:D", DMIS
+  /// labels), offered in the "Report feature" column; `format` names the report ("OGP step report").
+  void setReportFeatures(const QStringList& labels, const QString& format = {});
+  const QStringList& reportFeatures() const { return reportFeatures_; }
+  /// The column of the dimension table holding the report mapping.
+  static int reportColumn();
 
   /// Removes the selected node or arc (false when nothing is selected).
   bool removeSelection();
@@ -60,6 +70,7 @@ class SetupGraphEditor : public QWidget {
   QAction* remove_ = nullptr;
   QAction* edit_ = nullptr;
   bool filling_ = false;
+  QStringList reportFeatures_;
 };
 
 }  // namespace metrofit

@@ -332,4 +332,17 @@ bool SetupModelEditor::setTolerance(int index, std::optional<double> nominal, do
   return true;
 }
 
+bool SetupModelEditor::setLabel(int index, const QString& label) {
+  if (index < 0 || index >= static_cast<int>(model_.dimensions.size())) return false;
+  setup::Model m = model_;
+  setup::Dimension& d = m.dimensions[static_cast<std::size_t>(index)];
+  const std::string wanted = str(label.trimmed());
+  if (d.label == wanted) return false;
+  d.label = wanted;
+  push(m, wanted.empty() ? EditorText::tr("Clear the report feature of %1").arg(QString::fromStdString(d.id))
+                         : EditorText::tr("Map %1 to the report feature %2")
+                               .arg(QString::fromStdString(d.id), label.trimmed()));
+  return true;
+}
+
 }  // namespace metrofit

@@ -74,6 +74,9 @@ class SetupModelEditor : public QObject {
   bool setArcWeight(int index, int weight);
   /// Tolerance of dimension `index`: nominal (nullopt = none), lower and upper limits (mm).
   bool setTolerance(int index, std::optional<double> nominal, double lower, double upper);
+  /// The report mapping of dimension `index`: its label, what it is called in the CMM report
+  /// ("oriball:Diameter", "LOC1:D", a DMIS label; core/setup/report.h); "" = the dimension's id.
+  bool setLabel(int index, const QString& label);
   /// Index of the arc from -> to, or -1.
   int arcIndex(const QString& from, const QString& to) const;
 
