@@ -1529,9 +1529,9 @@ Anzahl: %4</translation>
         <location line="+134"/>
         <source>Read the %n selected files as one DMIS &amp;series (one dataset, one file per workpiece)</source>
         <translation>
-                <numerusform>Die %n ausgewählte Datei als eine DMIS-&amp;Serie lesen (ein Datensatz, eine Datei je Werkstück)</numerusform>
-                <numerusform>Die %n ausgewählten Dateien als eine DMIS-&amp;Serie lesen (ein Datensatz, eine Datei je Werkstück)</numerusform>
-            </translation>
+            <numerusform>Die %n ausgewählte Datei als eine DMIS-&amp;Serie lesen (ein Datensatz, eine Datei je Werkstück)</numerusform>
+            <numerusform>Die %n ausgewählten Dateien als eine DMIS-&amp;Serie lesen (ein Datensatz, eine Datei je Werkstück)</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1609,7 +1609,7 @@ Anzahl: %4</translation>
         <translation>Trennzeichen %1 · Dezimalzeichen %2 · Kopfzeile in Zeile %3 (%4 Spalten) · Kommentarzeilen: %5 · Datenzeilen: %6</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>%1: already exists; an embedded copy never overwrites a file (choose another id)</source>
         <translation>%1: existiert bereits; eine eingebettete Kopie überschreibt nie eine Datei (andere Kennung wählen)</translation>
     </message>
@@ -1622,9 +1622,9 @@ Anzahl: %4</translation>
         <location line="+3"/>
         <source>The %n file(s) are one DMIS series: one workpiece per file.</source>
         <translation>
-                <numerusform>Die %n Datei ist eine DMIS-Serie: ein Werkstück je Datei.</numerusform>
-                <numerusform>Die %n Dateien sind eine DMIS-Serie: ein Werkstück je Datei.</numerusform>
-            </translation>
+            <numerusform>Die %n Datei ist eine DMIS-Serie: ein Werkstück je Datei.</numerusform>
+            <numerusform>Die %n Dateien sind eine DMIS-Serie: ein Werkstück je Datei.</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
@@ -6485,7 +6485,7 @@ Abweichung: %3 µm</translation>
         <translation>Merkmale des Berichts zum Einrichtmodell hinzufügen</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>The %1 “%2” measures these characteristics. The checked ones become the dimensions of a new setup model, each under a feature node; draw the real relation graph in the Graph tab afterwards.</source>
         <translation>Der %1 „%2“ misst diese Merkmale. Die angehakten werden die Maße eines neuen Einrichtmodells, jedes unter einem Formelement-Knoten; den tatsächlichen Beziehungsgraphen zeichnen Sie danach im Reiter Graph.</translation>
     </message>
@@ -6515,7 +6515,7 @@ Abweichung: %3 µm</translation>
         <translation>Untere Tol.</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Upper tol.</source>
         <translation>Obere Tol.</translation>
     </message>
@@ -6525,7 +6525,7 @@ Abweichung: %3 µm</translation>
         <translation>Status</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>in the model (%1)</source>
         <translation>im Modell (%1)</translation>
     </message>
@@ -6565,12 +6565,12 @@ Abweichung: %3 µm</translation>
         <translation>A&amp;chse:</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>(none: draw the arcs yourself)</source>
         <translation>(keine: Kanten selbst zeichnen)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Each new feature gets an arc (+1) from this setup datum, so the model can run at once; change the arcs in the Graph tab</source>
         <translation>Jedes neue Formelement erhält eine Kante (+1) von diesem Einrichtdatum, damit das Modell sofort rechnen kann; die Kanten ändern Sie im Reiter Graph</translation>
     </message>
@@ -6613,9 +6613,9 @@ Abweichung: %3 µm</translation>
         <location line="+26"/>
         <source>%n dimension(s) to add; the model will have %1 features and %2 dimensions.</source>
         <translation>
-                <numerusform>%n Maß hinzuzufügen; das Modell wird %1 Formelemente und %2 Maße haben.</numerusform>
-                <numerusform>%n Maße hinzuzufügen; das Modell wird %1 Formelemente und %2 Maße haben.</numerusform>
-            </translation>
+            <numerusform>%n Maß hinzuzufügen; das Modell wird %1 Formelemente und %2 Maße haben.</numerusform>
+            <numerusform>%n Maße hinzuzufügen; das Modell wird %1 Formelemente und %2 Maße haben.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -7372,7 +7372,7 @@ Abweichung: %3 µm</translation>
 <context>
     <name>metrofit::SetupGraphEditor</name>
     <message>
-        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+100"/>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+102"/>
         <source>Add node…</source>
         <translation>Knoten hinzufügen…</translation>
     </message>
@@ -7536,12 +7536,12 @@ merkmal</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+141"/>
+        <location line="+152"/>
         <source>What the CMM report calls the dimension (feature:value, a DMIS label); empty: its id</source>
         <translation>Wie der KMG-Bericht das Maß nennt (Element:Wert, ein DMIS-Label); leer: seine ID</translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-150"/>
         <source>Lower tolerance limit relative to the nominal, mm</source>
         <translation>Untere Toleranzgrenze relativ zum Nennmaß, mm</translation>
     </message>
@@ -7572,12 +7572,12 @@ merkmal</translation>
         <translation>Der Bericht der Studie hat kein Merkmal „%1“</translation>
     </message>
     <message numerus="yes">
-        <location line="+40"/>
+        <location line="+51"/>
         <source>What the %1 calls the dimension (%n feature(s) offered); empty: its id</source>
         <translation>
-                <numerusform>Wie der %1 das Maß nennt (%n Merkmal angeboten); leer: seine ID</numerusform>
-                <numerusform>Wie der %1 das Maß nennt (%n Merkmale angeboten); leer: seine ID</numerusform>
-            </translation>
+            <numerusform>Wie der %1 das Maß nennt (%n Merkmal angeboten); leer: seine ID</numerusform>
+            <numerusform>Wie der %1 das Maß nennt (%n Merkmale angeboten); leer: seine ID</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+54"/>
@@ -7986,7 +7986,7 @@ merkmal</translation>
         <translation>Aus dem &amp;Bericht…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Create the setup model from a CMM report of the project, or add the report&apos;s features the model lacks</source>
         <translation>Das Einrichtmodell aus einem KMG-Bericht des Projekts erstellen oder die Merkmale des Berichts hinzufügen, die dem Modell fehlen</translation>
     </message>
@@ -8006,7 +8006,7 @@ merkmal</translation>
         <translation>Dieses Projekt hat noch kein Einrichtmodell. Erstellen Sie es aus dem KMG-Bericht „%1“ mit „Aus dem Bericht…“ (oder über das Kontextmenü des Berichts im Projektnavigator).</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+51"/>
         <source>The project has no CMM report: import one first (File › Import).</source>
         <translation>Das Projekt hat keinen KMG-Bericht: importieren Sie zuerst einen (Datei › Importieren).</translation>
     </message>
@@ -8026,7 +8026,7 @@ merkmal</translation>
         <translation>Das Projekt hat kein Einrichtmodell, dem Merkmale hinzugefügt werden könnten.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Save or revert the edits of the setup model before you add the features of another report.</source>
         <translation>Speichern oder verwerfen Sie die Änderungen am Einrichtmodell, bevor Sie die Merkmale eines anderen Berichts hinzufügen.</translation>
     </message>
@@ -8056,7 +8056,7 @@ merkmal</translation>
         <translation>Einrichtmodell, erstellt aus dem KMG-Bericht %1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Create setup model %1 from report %2</source>
         <translation>Einrichtmodell %1 aus dem Bericht %2 erstellen</translation>
     </message>

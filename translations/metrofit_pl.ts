@@ -1530,10 +1530,10 @@ liczba: %4</translation>
         <location line="+134"/>
         <source>Read the %n selected files as one DMIS &amp;series (one dataset, one file per workpiece)</source>
         <translation>
-                <numerusform>Wczytaj %n wybrany plik jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
-                <numerusform>Wczytaj %n wybrane pliki jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
-                <numerusform>Wczytaj %n wybranych plików jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
-            </translation>
+            <numerusform>Wczytaj %n wybrany plik jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
+            <numerusform>Wczytaj %n wybrane pliki jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
+            <numerusform>Wczytaj %n wybranych plików jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1611,7 +1611,7 @@ liczba: %4</translation>
         <translation>separator %1 · znak dziesiętny %2 · nagłówek w wierszu %3 (%4 kolumn) · wiersze komentarza: %5 · wiersze danych: %6</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>%1: already exists; an embedded copy never overwrites a file (choose another id)</source>
         <translation>%1: już istnieje; osadzona kopia nigdy nie nadpisuje pliku (wybierz inny identyfikator)</translation>
     </message>
@@ -1624,10 +1624,10 @@ liczba: %4</translation>
         <location line="+3"/>
         <source>The %n file(s) are one DMIS series: one workpiece per file.</source>
         <translation>
-                <numerusform>%n plik to jedna seria DMIS: jeden przedmiot na plik.</numerusform>
-                <numerusform>%n pliki to jedna seria DMIS: jeden przedmiot na plik.</numerusform>
-                <numerusform>%n plików to jedna seria DMIS: jeden przedmiot na plik.</numerusform>
-            </translation>
+            <numerusform>%n plik to jedna seria DMIS: jeden przedmiot na plik.</numerusform>
+            <numerusform>%n pliki to jedna seria DMIS: jeden przedmiot na plik.</numerusform>
+            <numerusform>%n plików to jedna seria DMIS: jeden przedmiot na plik.</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
@@ -6498,7 +6498,7 @@ odchyłka: %3 µm</translation>
         <translation>Dodaj elementy raportu do modelu ustawienia</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>The %1 “%2” measures these characteristics. The checked ones become the dimensions of a new setup model, each under a feature node; draw the real relation graph in the Graph tab afterwards.</source>
         <translation>%1 „%2” mierzy te charakterystyki. Zaznaczone stają się wymiarami nowego modelu ustawienia, każdy pod węzłem elementu; właściwy graf relacji narysuj potem w zakładce Graf.</translation>
     </message>
@@ -6528,7 +6528,7 @@ odchyłka: %3 µm</translation>
         <translation>Tol. dolna</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Upper tol.</source>
         <translation>Tol. górna</translation>
     </message>
@@ -6538,7 +6538,7 @@ odchyłka: %3 µm</translation>
         <translation>Stan</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>in the model (%1)</source>
         <translation>w modelu (%1)</translation>
     </message>
@@ -6578,12 +6578,12 @@ odchyłka: %3 µm</translation>
         <translation>O&amp;ś:</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>(none: draw the arcs yourself)</source>
         <translation>(brak: łuki narysuj sam)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Each new feature gets an arc (+1) from this setup datum, so the model can run at once; change the arcs in the Graph tab</source>
         <translation>Każdy nowy element dostaje łuk (+1) od tej danej ustawienia, więc model można od razu obliczyć; łuki zmienisz w zakładce Graf</translation>
     </message>
@@ -6626,10 +6626,10 @@ odchyłka: %3 µm</translation>
         <location line="+26"/>
         <source>%n dimension(s) to add; the model will have %1 features and %2 dimensions.</source>
         <translation>
-                <numerusform>%n wymiar do dodania; model będzie miał %1 elementów i %2 wymiarów.</numerusform>
-                <numerusform>%n wymiary do dodania; model będzie miał %1 elementów i %2 wymiarów.</numerusform>
-                <numerusform>%n wymiarów do dodania; model będzie miał %1 elementów i %2 wymiarów.</numerusform>
-            </translation>
+            <numerusform>%n wymiar do dodania; model będzie miał %1 elementów i %2 wymiarów.</numerusform>
+            <numerusform>%n wymiary do dodania; model będzie miał %1 elementów i %2 wymiarów.</numerusform>
+            <numerusform>%n wymiarów do dodania; model będzie miał %1 elementów i %2 wymiarów.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -7392,7 +7392,7 @@ odchyłka: %3 µm</translation>
 <context>
     <name>metrofit::SetupGraphEditor</name>
     <message>
-        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+100"/>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+102"/>
         <source>Add node…</source>
         <translation>Dodaj węzeł…</translation>
     </message>
@@ -7556,12 +7556,12 @@ raportu</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+141"/>
+        <location line="+152"/>
         <source>What the CMM report calls the dimension (feature:value, a DMIS label); empty: its id</source>
         <translation>Jak raport CMM nazywa wymiar (element:wartość, etykieta DMIS); puste: jego identyfikator</translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-150"/>
         <source>Lower tolerance limit relative to the nominal, mm</source>
         <translation>Dolna granica tolerancji względem wartości nominalnej, mm</translation>
     </message>
@@ -7594,13 +7594,13 @@ raportu</translation>
         <translation>Raport badania nie ma elementu „%1”</translation>
     </message>
     <message numerus="yes">
-        <location line="+40"/>
+        <location line="+51"/>
         <source>What the %1 calls the dimension (%n feature(s) offered); empty: its id</source>
         <translation>
-                <numerusform>Jak %1 nazywa wymiar (%n element do wyboru); puste: jego identyfikator</numerusform>
-                <numerusform>Jak %1 nazywa wymiar (%n elementy do wyboru); puste: jego identyfikator</numerusform>
-                <numerusform>Jak %1 nazywa wymiar (%n elementów do wyboru); puste: jego identyfikator</numerusform>
-            </translation>
+            <numerusform>Jak %1 nazywa wymiar (%n element do wyboru); puste: jego identyfikator</numerusform>
+            <numerusform>Jak %1 nazywa wymiar (%n elementy do wyboru); puste: jego identyfikator</numerusform>
+            <numerusform>Jak %1 nazywa wymiar (%n elementów do wyboru); puste: jego identyfikator</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+54"/>
@@ -8009,7 +8009,7 @@ raportu</translation>
         <translation>Z &amp;raportu…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Create the setup model from a CMM report of the project, or add the report&apos;s features the model lacks</source>
         <translation>Utwórz model ustawienia z raportu CMM projektu albo dodaj elementy raportu, których brakuje w modelu</translation>
     </message>
@@ -8029,7 +8029,7 @@ raportu</translation>
         <translation>Ten projekt nie ma jeszcze modelu ustawienia. Utwórz go z raportu CMM „%1” przyciskiem „Z raportu…” (albo z menu kontekstowego raportu w nawigatorze projektu).</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+51"/>
         <source>The project has no CMM report: import one first (File › Import).</source>
         <translation>Projekt nie ma raportu CMM: najpierw go zaimportuj (Plik › Importuj).</translation>
     </message>
@@ -8049,7 +8049,7 @@ raportu</translation>
         <translation>Projekt nie ma modelu ustawienia, do którego można dodać elementy.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Save or revert the edits of the setup model before you add the features of another report.</source>
         <translation>Zapisz lub cofnij zmiany modelu ustawienia, zanim dodasz elementy innego raportu.</translation>
     </message>
@@ -8079,7 +8079,7 @@ raportu</translation>
         <translation>Model ustawienia utworzony z raportu CMM %1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Create setup model %1 from report %2</source>
         <translation>Utwórz model ustawienia %1 z raportu %2</translation>
     </message>

@@ -112,10 +112,11 @@ nlohmann::json resultJson(const geometry::ElementFitResult& r, const Points& p, 
   j["standard_errors"] = se;
   j["standard_errors_of"] = "least squares";
   if (a.robust) {
-    j["robust"] = {
-        {"rule", "least trimmed squares start, then |d - median| > k * 1.4826 * MAD excluded, iterated"},
-        {"k", a.robustK},
-        {"threshold_mm", r.robustThresholdMm}};
+    j["robust"] = {{"rule",
+                    "least trimmed squares start, then |d - median| > max(k * 1.4826 * MAD, 0.001 mm) "
+                    "excluded, iterated"},
+                   {"k", a.robustK},
+                   {"threshold_mm", r.robustThresholdMm}};
   }
   if (r.certificate) {
     const geometry::MinimaxCertificate& c = *r.certificate;

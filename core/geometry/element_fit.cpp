@@ -538,7 +538,7 @@ ElementFitResult fitElement(const PointSet& set, const ElementFitOptions& o, Obs
       const double med = median(kept);
       for (double& v : kept) v = std::abs(v - med);
       const double mad = median(kept);
-      res.robustThresholdMm = std::max(o.robustK * 1.4826 * mad, 1e-6);
+      res.robustThresholdMm = std::max(o.robustK * 1.4826 * mad, std::max(o.robustFloorMm, 1e-6));
       Index next;
       for (std::size_t i = 0; i < n; ++i)
         if (std::abs(r[i] - med) <= res.robustThresholdMm) next.push_back(i);

@@ -44,7 +44,8 @@
 // changing; then, iterated until the set stops changing (at most robustMaxRounds), a point is
 // excluded when |d_i - median| > k * 1.4826 * MAD (k = robustK, default 3.5, the modified z-score
 // limit of Iglewicz and Hoaglin; MAD and median over the points kept in the previous round; nothing
-// below 1 nm is excluded). Excluded points still get a residual from the final element.
+// within robustFloorMm, 1 um, of the element is excluded). Excluded points still get a residual from
+// the final element.
 //
 // Standard errors: Cov = s^2 (J^T J)^-1 at the least-squares solution, s^2 = sum d^2 / (m - k),
 // propagated to the reported centre, axis, radius and half angle by differences (a circle's are those
@@ -92,7 +93,10 @@ struct ElementFitOptions {
   FitCriterion criterion = FitCriterion::LeastSquares;
   double fixedRadiusMm = 0.0;  ///< > 0: the radius is fixed (sphere, circle, cylinder only)
   bool robust = false;
-  double robustK = 3.5;            ///< > 0
+  double robustK = 3.5;  ///< > 0
+  /// The exclusion threshold is never below this (mm): a point within 1 µm of the element (a CMM's
+  /// print resolution) is not a stray, however small the MAD of nearly exact data is.
+  double robustFloorMm = 0.001;
   int robustMaxRounds = 20;        ///< >= 1
   long maxIterations = 200;        ///< Levenberg-Marquardt iterations per fit, >= 1
   int minimaxMaxIterations = 200;  ///< LP iterations, >= 1

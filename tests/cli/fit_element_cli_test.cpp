@@ -54,10 +54,12 @@ TEST(FitElementCli, SphereHasTheContractKeys) {
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["element"], "sphere");
   EXPECT_EQ(j["criterion"], "ls");
-  EXPECT_NEAR(j["centre_mm"][0].get<double>(), 10.0, 1e-3);
-  EXPECT_NEAR(j["centre_mm"][1].get<double>(), -5.0, 1e-3);
-  EXPECT_NEAR(j["centre_mm"][2].get<double>(), 3.0, 1e-3);
-  EXPECT_NEAR(j["radius_mm"].get<double>(), 20.0, 1e-3);
+  // The radii carry +-1 um of deterministic form error on a 120 deg cap (noise amplification about
+  // 2): the centre is known to a few um, not better.
+  EXPECT_NEAR(j["centre_mm"][0].get<double>(), 10.0, 3e-3);
+  EXPECT_NEAR(j["centre_mm"][1].get<double>(), -5.0, 3e-3);
+  EXPECT_NEAR(j["centre_mm"][2].get<double>(), 3.0, 3e-3);
+  EXPECT_NEAR(j["radius_mm"].get<double>(), 20.0, 3e-3);
   EXPECT_TRUE(j["axis"].is_null());
   EXPECT_EQ(j["residuals_mm"].size(), 37u);
   EXPECT_TRUE(j["excluded"].empty());
@@ -156,7 +158,7 @@ TEST(FitElementCli, BadInputExits2WithOneLine) {
   writeText(tmp.file("few.csv"), "x_mm,y_mm,z_mm\n1,0,0\n0,1,0\n");
   writeText(tmp.file("text.csv"), "x_mm,y_mm,z_mm\n1,0,0\n0,1,0\nx,1,0\n0,0,1\n");
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"fit-element --data two.csv --element plane", "two.csv: missing column 'z_mm'"},
+      {"fit-element --data two.csv --element plane", "two.csv: field 'z_mm': missing column"},
       {"fit-element --data few.csv --element circle", "few.csv: a circle needs at least 3 points, got 2"},
       {"fit-element --data text.csv --element plane", "text.csv:4:1: field 'x_mm'"},
       {"fit-element --data few.csv --element torus", "--element"},

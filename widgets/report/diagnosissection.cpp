@@ -93,7 +93,10 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
     s = diagnosisSettings(*context.project, std::string(), domain);
     // Paths as the report resolved them (against the project file's folder).
     for (const ReportDataset& rd : context.datasets) {
-      if (rd.ref.id == s.datasetId) s.datasetPath = rd.path.toStdString();
+      if (rd.ref.id == s.datasetId) {
+        s.datasetPath = rd.path.toStdString();
+        s.datasetPaths = rd.paths;  // a DMIS series: every file; empty: the one file above
+      }
       if (!s.modelId.empty() && rd.ref.id == s.modelId) s.modelPath = rd.path.toStdString();
     }
     d = memoDiagnosis(context, s);
