@@ -73,8 +73,7 @@ TEST(FitElementCli, SphereHasTheContractKeys) {
 
 TEST(FitElementCli, WenzelFilesGiveTheCmmResiduals) {
   const auto dir = realData("cmm-wenzel-lens-points");
-  if (!std::filesystem::exists(dir / "CIR4_1"))
-    GTEST_SKIP() << "real data not found: " << dir << " (../shared/data/real/cmm-wenzel-lens-points)";
+  METROFIT_REQUIRE_PATH(dir / "CIR4_1");
   for (const auto& [file, element] : std::vector<std::pair<std::string, std::string>>{
            {"CIR4_1", "circle"}, {"SPH1_1", "sphere"}, {"SPH2_2", "sphere"}, {"CIR5_3", "circle"}}) {
     TempDir tmp;

@@ -740,7 +740,7 @@ int cliUnderLocale(const std::string& locale, const std::string& args, const tes
 
 TEST(KinematicCli, PositioningOfTheRealEssAxis) {
   const auto ess = test::realData("axis-positioning-ess/example_data_ISO230_2.dat");
-  if (!std::filesystem::exists(ess)) GTEST_SKIP() << "no " << ess;
+  METROFIT_REQUIRE_PATH(ess);
   test::TempDir tmp;
   const CliRun r = cli("kinematic positioning --data '" + ess.string() + "' --out r.json", tmp);
   ASSERT_EQ(r.code, 0) << r.err;

@@ -32,6 +32,7 @@
 #include "core/setup/report.h"
 #include "core/study/setup_study.h"
 #include "qtapp.h"
+#include "samples/pcdmis_reports.h"
 #include "testsupport.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/importer/importdialog.h"
@@ -45,26 +46,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Written from the PC-DMIS documentation (see tests/core/setup/cmm_text_report_test.cpp for the sources).
-const char* kPcDmis =
-    "PART NAME  : BRACKET\n"
-    "REV NUMBER : A\n"
-    "SER NUMBER : 0042\n"
-    "STATS COUNT : 1\n"
-    "\n"
-    "DIM LOC1= LOCATION OF CIRCLE CIR1  UNITS=MM ,$\n"
-    "GRAPH=OFF  TEXT=OFF  MULT=10.00  OUTPUT=BOTH  HALF ANGLE=NO\n"
-    "AX    NOMINAL       +TOL       -TOL       MEAS        DEV     OUTTOL\n"
-    "X      25.000      0.050      0.050     25.012      0.012      0.000 ----#----\n"
-    "Y      40.000      0.050      0.050     39.996     -0.004      0.000 ----#----\n"
-    "D      18.500      0.030      0.050     18.520      0.020      0.000 -------#-\n"
-    "END OF DIMENSION LOC1\n"
-    "\n"
-    "DIM LOC2= LOCATION OF PLANE PLN1  UNITS=MM ,$\n"
-    "GRAPH=OFF  TEXT=OFF  MULT=10.00  OUTPUT=BOTH  HALF ANGLE=NO\n"
-    "AX    NOMINAL       +TOL       -TOL       MEAS        DEV     OUTTOL\n"
-    "Z      42.000      0.020      0.020     42.035      0.035      0.015 --------->\n"
-    "END OF DIMENSION LOC2\n";
+// The shared PC-DMIS sample (tests/samples/pcdmis_reports.h), written from the format's documentation.
+const char* const kPcDmis = ::metrofit::test::kPcDmisBracketReport;
 
 /// A DMIS output file of one workpiece (the subset of core/setup/report.h): POS_D1 as nominal and actual
 /// plane, D2 by its tolerance definition and actual.
@@ -175,7 +158,7 @@ class SetupReportModelTest : public ::testing::Test {
 
 TEST_F(SetupReportModelTest, OgpReportToModelMappingRunSaveReopen) {
   const fs::path ogp = test::realData("cmm-ogp-hps-svt/survey_data/meas1/L0_axial_top_module1_1.txt");
-  if (!fs::exists(ogp)) GTEST_SKIP() << "real data not here: " << ogp;
+  METROFIT_REQUIRE_PATH(ogp);
   const QString reportId = importReport(QString::fromStdString(ogp.string()));
   makePage();
   EXPECT_TRUE(page_->errorMessage().contains(QStringLiteral("no setup model yet")))

@@ -53,8 +53,7 @@ WenzelFile readWenzel(const std::filesystem::path& path) {
 
 TEST(RealElementFit, WenzelResidualsAgreeWithTheCmmTo1um) {
   const auto dir = realData("cmm-wenzel-lens-points");
-  if (!std::filesystem::exists(dir / "SPH1_1"))
-    GTEST_SKIP() << "real data not found: " << dir << " (../shared/data/real/cmm-wenzel-lens-points)";
+  METROFIT_REQUIRE_PATH(dir / "SPH1_1");
   double worst = 0.0;
   int files = 0, points = 0;
   for (const std::string stem : {"SPH1", "SPH2", "CIR4", "CIR5"}) {
@@ -144,8 +143,7 @@ Eigen::Vector3d referenceFixedRadius(const std::vector<Eigen::Vector3d>& p, Eige
 
 TEST(RealElementFit, NistSphereCapsFixedRadiusCentreAgreesWithAReferenceFit) {
   const auto dir = realData("cmm-sphere-scans-nist");
-  if (!std::filesystem::exists(dir / "SPH101.xyz"))
-    GTEST_SKIP() << "real data not found: " << dir << " (../shared/data/real/cmm-sphere-scans-nist)";
+  METROFIT_REQUIRE_PATH(dir / "SPH101.xyz");
   for (const std::string name : {"SPH101.xyz", "SPH102.xyz"}) {
     const std::vector<Eigen::Vector3d> p = readXyzMetres(dir / name);
     ASSERT_GT(p.size(), 1000u);

@@ -118,7 +118,7 @@ Raw readRaw(const std::string& path) {
 
 TEST(Iso230_2, RealEssAxisAgainstTheStandardWrittenAgain) {
   const auto path = test::realData("axis-positioning-ess/example_data_ISO230_2.dat");
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
+  METROFIT_REQUIRE_PATH(path);
   const Raw raw = readRaw(path.string());
   ASSERT_EQ(raw.target.size(), 5u);
   ASSERT_EQ(raw.fwd.size(), 25u);

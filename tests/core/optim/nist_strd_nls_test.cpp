@@ -28,7 +28,7 @@ std::filesystem::path nlsFile(const std::string& name) {
 }
 
 TEST(NistStrdNls, ReaderReadsEveryFile) {
-  if (!std::filesystem::exists(realData("nist-strd-nls"))) GTEST_SKIP() << "no " << realData("nist-strd-nls");
+  METROFIT_REQUIRE_PATH(realData("nist-strd-nls"));
   for (const std::string& name : nist::problemNames()) {
     const nist::Problem p = nist::readProblem(nlsFile(name).string());
     EXPECT_EQ(p.start1.size(), p.parameters()) << name;
@@ -49,7 +49,7 @@ TEST(NistStrdNls, ReaderReadsEveryFile) {
 // The analytic derivatives of every model against central differences at both starts and at the
 // certified values: a typo in a hand-written derivative would otherwise pass as "did not converge".
 TEST(NistStrdNls, AnalyticDerivativesMatchDifferences) {
-  if (!std::filesystem::exists(realData("nist-strd-nls"))) GTEST_SKIP() << "no " << realData("nist-strd-nls");
+  METROFIT_REQUIRE_PATH(realData("nist-strd-nls"));
   for (const std::string& name : nist::problemNames()) {
     const nist::Problem p = nist::readProblem(nlsFile(name).string());
     const nist::Model f = nist::model(name);
@@ -83,7 +83,7 @@ double achievableLre(const nist::Problem& p) {
 }
 
 TEST(NistStrdNls, RoszmanFileErratumIsCorrectedAndTheFitAgreesWithNist) {
-  if (!std::filesystem::exists(nlsFile("Roszman1"))) GTEST_SKIP() << "no " << nlsFile("Roszman1");
+  METROFIT_REQUIRE_PATH(nlsFile("Roszman1"));
   nist::Problem p = nist::readProblem(nlsFile("Roszman1").string());
   EXPECT_DOUBLE_EQ(p.certified[0], 1.20196866396);  // as the stored file prints it
   EXPECT_FALSE(nist::applyErrata(p).empty());
@@ -93,7 +93,7 @@ TEST(NistStrdNls, RoszmanFileErratumIsCorrectedAndTheFitAgreesWithNist) {
 }
 
 TEST(NistStrdNls, LanczosOneRssIsAtTheRoundingLevel) {
-  if (!std::filesystem::exists(nlsFile("Lanczos1"))) GTEST_SKIP();
+  METROFIT_REQUIRE_PATH(nlsFile("Lanczos1"));
   EXPECT_LT(achievableLre(nist::readProblem(nlsFile("Lanczos1").string())), 3.0);
   EXPECT_GT(achievableLre(nist::readProblem(nlsFile("Lanczos2").string())), 6.0);
 }
@@ -102,7 +102,7 @@ class NistStrdNlsProblem : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(NistStrdNlsProblem, CertifiedDigitsOrCleanFailure) {
   const std::string name = GetParam();
-  if (!std::filesystem::exists(nlsFile(name))) GTEST_SKIP() << "no " << nlsFile(name);
+  METROFIT_REQUIRE_PATH(nlsFile(name));
   nist::Problem p = nist::readProblem(nlsFile(name).string());
   nist::applyErrata(p);
   const double floor = std::min(6.0, achievableLre(p));

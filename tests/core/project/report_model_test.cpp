@@ -39,7 +39,7 @@ std::string dmisPart(const std::string& serial, const std::string& z, const std:
 
 TEST(ReportModel, OgpStepReportCharacteristicsBecomeAModelTheReaderReads) {
   const fs::path ogp = test::realData("cmm-ogp-hps-svt/survey_data/meas1/L0_axial_top_module1_1.txt");
-  if (!fs::exists(ogp)) GTEST_SKIP() << "real data not here: " << ogp;
+  METROFIT_REQUIRE_PATH(ogp);
   const ReportFeatures f = readReportFeatures(ogp.string());
   EXPECT_EQ(f.format, "OGP step report");
   EXPECT_FALSE(f.byId);

@@ -85,7 +85,7 @@ void readData(const std::string& path, Eigen::VectorXd& y, Eigen::VectorXd& x) {
 }
 
 TEST(NistStrdLls, ThermalRegressionSolveMeetsTheCertifiedValues) {
-  if (!std::filesystem::exists(realData("nist-strd-lls"))) GTEST_SKIP() << "no " << realData("nist-strd-lls");
+  METROFIT_REQUIRE_PATH(realData("nist-strd-lls"));
   for (const Lls& c : certified()) {
     SCOPED_TRACE(c.name);
     Eigen::VectorXd y, x;
