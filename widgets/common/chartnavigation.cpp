@@ -1,5 +1,7 @@
 #include "widgets/common/chartnavigation.h"
 
+#include "widgets/common/cursorlabel.h"
+
 #include <QAbstractAxis>
 #include <QAction>
 #include <QChart>
@@ -126,18 +128,9 @@ class ChartNavigator : public QObject {
   explicit ChartNavigator(QChartView* view)
       : QObject(view),
         view_(view),
-        label_(new QLabel(view->viewport())),
+        label_(makeCursorLabel(view->viewport(), QStringLiteral("chartCursorLabel"))),
         band_(new QRubberBand(QRubberBand::Rectangle, view->viewport())) {
     setObjectName(QString::fromLatin1(kNavigatorName));
-    label_->setObjectName(QStringLiteral("chartCursorLabel"));
-    label_->setTextFormat(Qt::PlainText);
-    label_->setAttribute(Qt::WA_TransparentForMouseEvents);
-    label_->setFrameShape(QFrame::Box);
-    label_->setMargin(3);
-    label_->setAutoFillBackground(true);
-    label_->setBackgroundRole(QPalette::ToolTipBase);
-    label_->setForegroundRole(QPalette::ToolTipText);
-    label_->hide();
     band_->hide();
     view->viewport()->setMouseTracking(true);
     view->viewport()->installEventFilter(this);

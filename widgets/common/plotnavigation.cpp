@@ -1,5 +1,7 @@
 #include "widgets/common/plotnavigation.h"
 
+#include "widgets/common/cursorlabel.h"
+
 #include <QAbstractScrollArea>
 #include <QAction>
 #include <QCoreApplication>
@@ -30,17 +32,11 @@ constexpr int kLabelOffsetPx = 14;
 class PlotNavigator : public QObject {
  public:
   PlotNavigator(QWidget* plot, PlotReadout readout)
-      : QObject(plot), plot_(plot), readout_(std::move(readout)), label_(new QLabel(plot)) {
+      : QObject(plot),
+        plot_(plot),
+        readout_(std::move(readout)),
+        label_(makeCursorLabel(plot, QStringLiteral("plotCursorLabel"))) {
     setObjectName(QString::fromLatin1(kNavigatorName));
-    label_->setObjectName(QStringLiteral("plotCursorLabel"));
-    label_->setTextFormat(Qt::PlainText);
-    label_->setAttribute(Qt::WA_TransparentForMouseEvents);
-    label_->setFrameShape(QFrame::Box);
-    label_->setMargin(3);
-    label_->setAutoFillBackground(true);
-    label_->setBackgroundRole(QPalette::ToolTipBase);
-    label_->setForegroundRole(QPalette::ToolTipText);
-    label_->hide();
     plot->setMouseTracking(true);
     plot->installEventFilter(this);
     if (plot->focusPolicy() == Qt::NoFocus) plot->setFocusPolicy(Qt::ClickFocus);
