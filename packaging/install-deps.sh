@@ -15,6 +15,8 @@ PACKAGES=(
   libvtk9-dev
   # maths, data, exact solver
   libeigen3-dev libboost-dev nlohmann-json3-dev libglpk-dev glpk-utils libcli11-dev
+  # k-d tree (point-to-surface search), XML (QIF, MTConnect)
+  libnanoflann-dev libpugixml-dev
   # tests and benchmark peers
   googletest libgtest-dev libgmock-dev libpagmo-dev libboost-serialization-dev libtbb-dev libceres-dev
   # headless GUI tests and PDF checks
