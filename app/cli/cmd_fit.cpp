@@ -14,6 +14,7 @@
 #include "core/common/error.h"
 #include "core/common/numformat.h"
 #include "core/geometry/element_fit.h"
+#include "core/geometry/point_table.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
@@ -45,27 +46,23 @@ struct Points {
 Points readPoints(const FitArgs& a) {
   const CsvTable t = readCsvFile(a.data, csvOptions());
   const std::string source = displayPath(a.data);
-  std::string sx = "x_mm", sy = "y_mm", sz = "z_mm";
+  // The columns (x_mm.., px.. or x,y,z) and their reading: one owner, core/geometry/point_table.h.
+  const geometry::PointTableColumns columns = geometry::pointTableColumns(t);
   double factor = 1.0;
-  if (t.columnIndex("x_mm") < 0 && t.columnIndex("x") >= 0) {
-    sx = "x";
-    sy = "y";
-    sz = "z";
+  if (columns.bare) {
     factor = unitFactor(a.unit.empty() ? "mm" : a.unit);
   } else if (!a.unit.empty() && a.unit != "mm") {
     unitFactor(a.unit);  // a bad spelling is named first
-    throw OptionsError(ErrorContext{{}, 0, 0, "--unit"},
-                       "applies to columns x,y,z; " + source + " has x_mm,y_mm,z_mm (already in mm)");
+    throw OptionsError(ErrorContext{{}, 0, 0, "--unit"}, "applies to columns x,y,z; " + source + " has " +
+                                                             columns.x + "," + columns.y + "," + columns.z +
+                                                             " (already in mm)");
   }
-  const std::size_t cx = t.requireColumn(sx), cy = t.requireColumn(sy), cz = t.requireColumn(sz);
-  const int cid = t.columnIndex("id");
   Points p;
+  p.set = geometry::pointsFromTable(t, factor);
   p.set.source = source;
-  p.hasIds = cid >= 0;
-  for (std::size_t r = 0; r < t.rowCount(); ++r) {
-    p.set.points.emplace_back(factor * t.number(r, cx), factor * t.number(r, cy), factor * t.number(r, cz));
-    p.names.push_back(cid >= 0 ? t.cell(r, static_cast<std::size_t>(cid)) : std::to_string(r + 1));
-  }
+  p.hasIds = !p.set.ids.empty();
+  for (std::size_t r = 0; r < p.set.points.size(); ++r)
+    p.names.push_back(p.hasIds ? p.set.ids[r] : std::to_string(r + 1));
   return p;
 }
 

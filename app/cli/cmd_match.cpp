@@ -6,6 +6,9 @@
 //         [--machine xfyzba|ac-table|bc-table|head-table] [--machine-def M.json] [--lock rx,ry,...]
 //         [--reference ID,ID,ID] [--seed N] [--out F] [--remeasure [--remeasure-noise MM]]
 //         [--frame heidenhain|siemens|fanuc --frame-out F [--frame-decimals N]]
+//         [--nominal-element E [--nominal-radius R] [--nominal-criterion C] [--nominal-robust] [--inner]]
+//         [--nominal-reference F2 [--pair id|order]]   (--data of measured points only;
+//         core/project/nominals.h)
 //
 // --frame writes the posture as a controller frame (core/machine/controller_frame.h: HEIDENHAIN
 // datum shift + PLANE SPATIAL, SINUMERIK TRANS + AROT, FANUC G68.2 Euler angles) to --frame-out and
@@ -42,6 +45,7 @@
 #include "core/matching/matching.h"
 #include "core/matching/probe_points.h"
 #include "core/matching/remeasure.h"
+#include "core/project/nominals.h"
 #include "core/project/project.h"
 #include "core/study/study_settings.h"
 
@@ -53,6 +57,9 @@ namespace {
 struct MatchArgs {
   std::string data, method = matching::toString(MatchingSettings{}.method), machine = "xfyzba", machineDef,
                     lock, reference, out, frame, frameOut, perPoint;
+  /// Nominals for a file of measured points only (core/project/nominals.h).
+  NominalSource nominals;
+  std::string nominalReferenceFile;
   int frameDecimals = MatchingSettings{}.frameDecimals;
   std::uint64_t seed = MatchingSettings{}.seed;
   double tolerance = MatchingSettings{}.toleranceMm, remeasureNoise = 0.006;
@@ -100,7 +107,25 @@ int runMatch(const MatchArgs& a, bool machineGiven) {
     throw OptionsError(ErrorContext{{}, 0, 0, "--frame"}, "needs --frame-out FILE");
   if (a.frame.empty() && !a.frameOut.empty())
     throw OptionsError(ErrorContext{{}, 0, 0, "--frame-out"}, "needs --frame heidenhain|siemens|fanuc");
-  const ProbePointSet set = readProbePointsAnyFormat(a.data, 1, csvOptions());
+  const ProbePointSet set = [&] {
+    if (a.nominals.element.empty() && a.nominalReferenceFile.empty()) {
+      if (!(a.nominals == NominalSource{}))
+        throw OptionsError(
+            ErrorContext{{}, 0, 0, "--nominal-element"},
+            "is needed with --nominal-radius, --nominal-criterion, --nominal-robust, --inner or "
+            "--pair (or --nominal-reference)");
+      return readProbePointsAnyFormat(a.data, 1, csvOptions());
+    }
+    // Measured points only: the nominals from an element fitted to them or from a second measurement.
+    NominalSource n = a.nominals;
+    n.from = a.nominalReferenceFile.empty() ? "element" : "reference";
+    std::optional<geometry::PointSet> reference;
+    if (!a.nominalReferenceFile.empty()) {
+      n.reference = a.nominalReferenceFile;
+      reference = readMeasuredPoints(a.nominalReferenceFile, csvOptions());
+    }
+    return nominalsFor(readMeasuredPoints(a.data, csvOptions()), n, reference ? &*reference : nullptr).set;
+  }();
   MatchOptions o;
   o.method = parseMatchMethod(a.method, "--method");
   o.toleranceMm = a.tolerance;
@@ -222,6 +247,26 @@ void registerMatchCommand(CLI::App& app) {
   sub->add_option("--frame-decimals", a->frameDecimals, "Decimals of the --frame values (mm and deg)")
       ->check(CLI::Range(0, 12))
       ->capture_default_str();
+  sub->add_option(
+      "--nominal-element", a->nominals.element,
+      "--data holds measured points only (id,x,y,z): their nominals are their feet on this element "
+      "fitted to them (plane|line|circle|sphere|cylinder|cone); with --nominal-reference the "
+      "element whose normals the reference points take");
+  sub->add_option("--nominal-radius", a->nominals.radiusMm,
+                  "The element's fixed radius in mm (sphere, circle, "
+                  "cylinder)");
+  sub->add_option("--nominal-criterion", a->nominals.criterion,
+                  "How the element is fitted: ls | minimax [ls]")
+      ->check(CLI::IsMember({"ls", "minimax"}));
+  sub->add_flag("--nominal-robust", a->nominals.robust, "Leave stray points out of the element's fit");
+  sub->add_flag("--inner", a->nominals.inner,
+                "The element is a bore or hole (the material is outside it): normals point inwards");
+  existingFile(
+      sub->add_option("--nominal-reference", a->nominalReferenceFile,
+                      "--data holds measured points only: their nominals are the same points of this "
+                      "second measurement of the part (id,x,y,z)"));
+  sub->add_option("--pair", a->nominals.pair, "How points meet their reference points: id | order [id]")
+      ->check(CLI::IsMember({"id", "order"}));
   addSeed(sub, a->seed);
   addCsvOptions(sub);
   addOut(sub, a->out);

@@ -2,7 +2,9 @@
 //   project new P.metrofit [--name TEXT]
 //   project add P.metrofit KIND|auto FILE [--id ID] [--map ROLE=COLUMN ...] [--no-guess] [--delimiter D]
 //               [--decimal D] [--header-lines N] [--comment PREFIX] [--skip-bad-rows] [--ta-meaning M]
-//               [--ta-sign S] [--embed]
+//               [--ta-sign S] [--embed] [FILE2 ...: a DMIS series, one file per workpiece]
+//               [--nominal-element E [--nominal-radius R] [--nominal-criterion ls|minimax]
+//                [--nominal-robust] [--inner]] [--nominal-reference ID [--pair id|order]]
 //   project list P.metrofit [--out FILE]
 // The logic is core/project/datasets.h; this file only parses the command line.
 #include <CLI/CLI.hpp>
@@ -25,7 +27,7 @@ struct ProjectArgs {
   std::string project;
   std::string name;
   std::string kind;
-  std::string file;
+  std::vector<std::string> files;
   std::string id;
   std::vector<std::string> map;
   std::string out;
@@ -34,6 +36,8 @@ struct ProjectArgs {
   bool skipBadRows = false;
   bool embed = false;
   bool noGuess = false;
+  NominalSource nominals;
+  std::string nominalElement, nominalReference;
 };
 
 int runNew(const ProjectArgs& a) {
@@ -50,7 +54,23 @@ int runAdd(const ProjectArgs& a) {
   Project p = loadProject(a.project);
   AddDatasetRequest r;
   r.kind = a.kind;
-  r.file = a.file;
+  r.file = a.files.front();
+  r.moreFiles.assign(a.files.begin() + 1, a.files.end());
+  // Nominals for measured points (core/project/nominals.h): a reference measurement, or an element.
+  r.nominals = a.nominals;
+  if (!a.nominalReference.empty()) {
+    r.nominals.from = "reference";
+    r.nominals.reference = a.nominalReference;
+    r.nominals.element = a.nominalElement;
+  } else if (!a.nominalElement.empty()) {
+    r.nominals.from = "element";
+    r.nominals.element = a.nominalElement;
+  } else if (!(a.nominals == NominalSource{})) {
+    throw OptionsError(
+        ErrorContext{{}, 0, 0, "--nominal-element"},
+        "is needed with --nominal-radius, --nominal-criterion, --nominal-robust, --inner or --pair "
+        "(or --nominal-reference)");
+  }
   r.id = a.id;
   r.csv = csvOptions();
   for (const auto& m : a.map) r.csv.columnMap.push_back(parseColumnMapping(m));
@@ -68,7 +88,7 @@ int runAdd(const ProjectArgs& a) {
   r.guessRoles = !a.noGuess;
   const DatasetRef ref = addDataset(p, a.project, r);
   if (a.kind == kGuessKind)
-    std::fprintf(stderr, "project add: '%s' read as %s\n", a.file.c_str(), ref.kind.c_str());
+    std::fprintf(stderr, "project add: '%s' read as %s\n", r.file.c_str(), ref.kind.c_str());
   if (r.guessRoles && r.csv.columnMap.empty())
     for (const auto& [role, column] : ref.csv.columnMap)
       std::fprintf(
@@ -118,8 +138,12 @@ void registerProjectCommands(CLI::App& app) {
                   "feature-series|dmis|hole-table, or auto: the kind the file's name and content say")
       ->required()
       ->check(CLI::IsMember(kinds));
-  existingFile(add->add_option("file", a->file, "Data file (- for standard input, copied into the project)")
-                   ->required());
+  existingFile(
+      add->add_option("file", a->files,
+                      "Data file (- for standard input, copied into the project); several DMIS output "
+                      "files (one per workpiece) make one DMIS series")
+          ->required()
+          ->expected(1, -1));
   add->add_option("--id", a->id, "Dataset id (default: the file name without extension)");
   add->add_option("--map", a->map,
                   "ROLE=COLUMN: read the file's COLUMN as ROLE (e.g. time_min=Zeit); repeatable")
@@ -141,6 +165,25 @@ void registerProjectCommands(CLI::App& app) {
   add->add_flag("--embed", a->embed,
                 "Copy the file into the project's folder as data/<id>.<ext> (never overwriting) instead of "
                 "referencing it");
+  add->add_option(
+      "--nominal-element", a->nominalElement,
+      "Probe points of measured points only: the nominals are their feet on this element fitted to "
+      "them (plane|line|circle|sphere|cylinder|cone); with --nominal-reference the element whose "
+      "normals the reference points take");
+  add->add_option("--nominal-radius", a->nominals.radiusMm,
+                  "The element's fixed radius in mm (sphere, circle, "
+                  "cylinder)");
+  add->add_option("--nominal-criterion", a->nominals.criterion,
+                  "How the element is fitted: ls | minimax [ls]")
+      ->check(CLI::IsMember({"ls", "minimax"}));
+  add->add_flag("--nominal-robust", a->nominals.robust, "Leave stray points out of the element's fit");
+  add->add_flag("--inner", a->nominals.inner,
+                "The element is a bore or hole (the material is outside it): normals point inwards");
+  add->add_option("--nominal-reference", a->nominalReference,
+                  "Probe points of measured points only: the nominals are the same points of a second "
+                  "measurement, the probe-point dataset ID of the project");
+  add->add_option("--pair", a->nominals.pair, "How points meet their reference points: id | order [id]")
+      ->check(CLI::IsMember({"id", "order"}));
   add->callback([a] { selectRunner([a]() -> int { return runAdd(*a); }); });
 
   auto l = std::make_shared<ProjectArgs>();

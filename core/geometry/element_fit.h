@@ -169,10 +169,28 @@ struct ElementFitResult {
   RunInfo run;
 };
 
+/// The foot of a point on an element and the element's unit normal there: p = point + d * normal with
+/// d = elementResidual(element, p). The normal points the way the residual grows: along a plane's axis,
+/// away from a sphere's centre, radially away from a cylinder's or cone's axis (a cone's normal is
+/// orthogonal to its surface line), radially in a circle's plane (its foot keeps p's height above that
+/// plane: it lies on the cylinder through the circle). A line has no normal (hasNormal false; the foot
+/// is on the axis and d = |p - point|). Where the direction is undefined (p at a sphere's centre or on
+/// an axis) the normal is a fixed unit vector perpendicular to the axis (a sphere: +x).
+struct ElementFoot {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  bool hasNormal = true;
+};
+ElementFoot footOnElement(const FittedElement& element, const Eigen::Vector3d& p);
+
 /// Points to fit; `source` names the file in error messages.
 struct PointSet {
   std::string source;
   std::vector<Eigen::Vector3d> points;
+  /// The points' ids (the file's `id` column), empty when it has none.
+  std::vector<std::string> ids = {};
+  /// The physical line of the file each point comes from (0 when unknown), for error messages.
+  std::vector<long> lines = {};
 };
 
 /// Fits the element. ValidationError (naming set.source) for too few, non-finite or degenerate points,

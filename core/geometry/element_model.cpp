@@ -42,6 +42,47 @@ double elementResidual(const FittedElement& e, const Eigen::Vector3d& p) {
   return 0.0;
 }
 
+ElementFoot footOnElement(const FittedElement& e, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d w = p - e.centre;
+  // A unit vector perpendicular to the axis, for a point on the axis.
+  const auto anyPerpendicular = [&e] {
+    const Eigen::Vector3d a = e.axis.cwiseAbs().minCoeff() == std::abs(e.axis.x()) ? Eigen::Vector3d::UnitX()
+                                                                                   : Eigen::Vector3d::UnitY();
+    return Eigen::Vector3d(a - a.dot(e.axis) * e.axis).normalized();
+  };
+  const auto radial = [&](const Eigen::Vector3d& v) {
+    const Eigen::Vector3d r = v - v.dot(e.axis) * e.axis;
+    // On the axis (to rounding: the radial part of a point on it is ~1e-16 of its distance) the
+    // direction is undefined.
+    return r.norm() > 1e-12 * (1.0 + v.norm()) ? Eigen::Vector3d(r / r.norm()) : anyPerpendicular();
+  };
+  ElementFoot f;
+  switch (e.kind) {
+    case ElementKind::Plane:
+      f.normal = e.axis;
+      break;
+    case ElementKind::Line:
+      f.hasNormal = false;
+      f.point = e.centre + w.dot(e.axis) * e.axis;
+      return f;
+    case ElementKind::Circle:
+    case ElementKind::Cylinder:
+      f.normal = radial(w);
+      break;
+    case ElementKind::Sphere:
+      f.normal = w.norm() > 1e-12 * (1.0 + e.centre.norm()) ? Eigen::Vector3d(w / w.norm())
+                                                            : Eigen::Vector3d::UnitX();
+      break;
+    case ElementKind::Cone: {
+      const double a = e.halfAngleRad;
+      f.normal = std::cos(a) * radial(w) - std::sin(a) * e.axis;
+      break;
+    }
+  }
+  f.point = p - elementResidual(e, p) * f.normal;
+  return f;
+}
+
 namespace detail {
 
 ElementModel::ElementModel(ElementKind kind, double fixedRadius, const std::vector<Eigen::Vector3d>& points,

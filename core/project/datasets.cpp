@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/common/error.h"
+#include "core/geometry/point_table.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/file_io.h"
 #include "core/kinematics/iso230_4.h"
@@ -13,6 +14,7 @@
 #include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
 #include "core/project/import_guess.h"
+#include "core/project/nominals.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
 #include "core/thermal/thermal_log.h"
@@ -57,8 +59,10 @@ long dmisMeasuredCount(const std::string& text) {
 }
 
 /// Reads `file` (shown as `shown` in messages) as `kind` says.
+/// `measuredOnly`: a probe-point file of measured points only (its nominals come from elsewhere,
+/// core/project/nominals.h).
 DatasetSummary inspect(const std::string& file, const std::string& shown, const std::string& kind,
-                       const CsvReadOptions& csv) {
+                       const CsvReadOptions& csv, bool measuredOnly = false) {
   DatasetSummary s;
   s.kind = kind;
   if (kind == dataset_kind::kSetupModel) {
@@ -106,6 +110,8 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
   s.skipped = table.skippedRows();
   if (kind == dataset_kind::kThermalLog) {
     (void)thermalLogFromCsv(table, 3, csv.sampleIntervalMin);
+  } else if (kind == dataset_kind::kProbePoints && measuredOnly) {
+    (void)geometry::pointsFromTable(table);
   } else if (kind == dataset_kind::kProbePoints) {
     (void)probePointsFromCsv(table, 1);
   } else if (kind == dataset_kind::kCircularTest) {
@@ -154,7 +160,7 @@ bool datasetKindIsCsv(const std::string& kind) {
 
 DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset) {
   const std::string path = resolveDatasetPath(projectPath, dataset);
-  DatasetSummary s = inspect(path, path, dataset.kind, dataset.csv);
+  DatasetSummary s = inspect(path, path, dataset.kind, dataset.csv, !dataset.nominals.empty());
   if (!dataset.paths.empty()) {
     // A DMIS series: every file is a DMIS output file; the rows of all of them.
     const std::vector<std::string> files = resolveDatasetPaths(projectPath, dataset);
@@ -275,7 +281,17 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
   }
   const bool dmisReading = !(ref.dmis == setup::DmisOptions{});
   if (dmisReading && ref.kind != dataset_kind::kDmis && ref.kind != dataset_kind::kCmmReport) throw notDmis();
-  const DatasetSummary s = inspect(request.file, displayPath(request.file), ref.kind, ref.csv);
+  if (!request.nominals.empty()) {
+    if (ref.kind != dataset_kind::kProbePoints)
+      throw ValidationError(
+          ErrorContext{{}, 0, 0, "KIND"},
+          "only probe points take their nominals from an element or a reference measurement");
+    checkNominalSource(request.nominals);
+    ref.nominals = request.nominals;
+    (void)nominalReference(project, ref);  // the reference is another probe-point dataset of the project
+  }
+  const DatasetSummary s =
+      inspect(request.file, displayPath(request.file), ref.kind, ref.csv, !ref.nominals.empty());
   if (dmisReading && !s.dmis) throw notDmis();
   const fs::path folder = fs::absolute(fs::path(parentFolder(projectPath))).lexically_normal();
   const auto relativePath = [&folder](const std::string& given) {
@@ -298,6 +314,10 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
     ref.path = relativePath(request.file);
     ref.paths.push_back(ref.path);
     for (const std::string& more : request.moreFiles) {
+      // Not DMIS: say so first (read as the kind's CSV it would fail on something else).
+      if (!setup::looksLikeDmis(readFile(more, 256u << 20)))
+        throw ValidationError(ErrorContext{displayPath(more), 0, 0, {}},
+                              "is not a DMIS file; only DMIS output files make a series");
       const DatasetSummary m = inspect(more, displayPath(more), ref.kind, ref.csv);
       if (!m.dmis)
         throw ValidationError(ErrorContext{displayPath(more), 0, 0, {}},
@@ -318,6 +338,8 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
     const fs::path rel = file.lexically_relative(folder);
     ref.path = rel.empty() ? file.string() : rel.string();
   }
+  // Nominals made from an element or a reference: they must come out (the fit runs, the ids pair).
+  if (!ref.nominals.empty()) (void)readProjectProbePoints(project, projectPath, ref);
   project.datasets.push_back(ref);
   return ref;
 }

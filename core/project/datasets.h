@@ -74,6 +74,9 @@ struct AddDatasetRequest {
   /// then lists them all in "paths" (core/project/project.h). Each must be a DMIS file; a series is
   /// referenced where it is, not embedded and not read from standard input.
   std::vector<std::string> moreFiles;
+  /// A probe-point file of measured points only: where its nominals come from (core/project/nominals.h);
+  /// checked (the element fits, the reference pairs) before the dataset is added.
+  NominalSource nominals = {};
 };
 
 /// The kind `project add` takes to mean "guess it from the file" (guessDatasetKind).

@@ -7,8 +7,51 @@
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/machine/machine.h"
+#include "core/project/nominals.h"
 
 namespace metrofit {
+namespace {
+
+nlohmann::json nominalSourceToJson(const NominalSource& n) {
+  nlohmann::json o{{"from", n.from}};
+  if (!n.element.empty()) o["element"] = n.element;
+  if (!n.criterion.empty() && n.criterion != "ls") o["criterion"] = n.criterion;
+  if (n.radiusMm > 0.0) o["radius_mm"] = n.radiusMm;
+  if (n.robust) o["robust"] = true;
+  if (n.inner) o["inner"] = true;
+  if (!n.reference.empty()) o["reference"] = n.reference;
+  if (n.from == "reference") o["pair"] = n.pair;
+  return o;
+}
+
+NominalSource nominalSourceFromJson(const JsonReader& r, const std::string& inDataset) {
+  for (const auto& [key, value] : r.json().items()) {
+    static const std::set<std::string> known{"from",   "element", "criterion", "radius_mm",
+                                             "robust", "inner",   "reference", "pair"};
+    if (!known.count(key))
+      r.fail(inDataset +
+                 "unknown key (nominals takes from, element, criterion, radius_mm, robust, inner, "
+                 "reference, pair)",
+             key);
+  }
+  NominalSource n;
+  n.from = r.string("from");
+  n.element = r.string("element", "");
+  n.criterion = r.string("criterion", "");
+  n.radiusMm = r.number("radius_mm", 0.0);
+  n.robust = r.boolean("robust", false);
+  n.inner = r.boolean("inner", false);
+  n.reference = r.string("reference", "");
+  n.pair = r.string("pair", "id");
+  try {
+    checkNominalSource(n);
+  } catch (const Error& e) {
+    r.fail(inDataset + e.detail(), e.context().field);
+  }
+  return n;
+}
+
+}  // namespace
 
 const DatasetRef* Project::dataset(const std::string& id) const {
   for (const auto& d : datasets) {
@@ -49,6 +92,7 @@ nlohmann::json Project::toJson() const {
       if (d.dmis.signFollowsNominal) dmis["ta_sign"] = "nominal";
       o["dmis"] = std::move(dmis);
     }
+    if (!d.nominals.empty()) o["nominals"] = nominalSourceToJson(d.nominals);
     if (!d.csv.columnMap.empty()) {
       nlohmann::json map = nlohmann::json::object();
       for (const auto& [role, column] : d.csv.columnMap) map[role] = column;
@@ -150,6 +194,11 @@ Project Project::fromJson(const nlohmann::json& j, const std::string& source) {
         } catch (const OptionsError& e) {
           dmis.fail(inDataset + e.detail(), e.context().field);
         }
+      }
+      if (d.has("nominals")) {
+        if (ref.kind != dataset_kind::kProbePoints)
+          d.fail(inDataset + "only a probe-point dataset takes its nominals from elsewhere", "nominals");
+        ref.nominals = nominalSourceFromJson(d.object("nominals"), inDataset);
       }
       if (d.has("map")) {
         const JsonReader map = d.object("map");

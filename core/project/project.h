@@ -25,6 +25,15 @@
 // file of the series in order, each relative to the project's folder like "path"; "path" is then the first
 // of them, so a reader that knows only "path" still finds a file of the series. Without "paths" (every
 // project written before it) the dataset is the one file of "path".
+// A probe-point dataset whose file has measured points only (raw CMM points: id,x,y,z) takes its
+// nominals from "nominals" (core/project/nominals.h):
+//   {"from": "element", "element": "sphere", "criterion": "ls"|"minimax", "radius_mm": 12.7 (optional:
+//    a fixed radius), "robust": false, "inner": false}   nominal = the foot on the element fitted to the
+//    points, normal = the element's normal there (reversed with "inner": true, a bore or a hole);
+//   {"from": "reference", "reference": "DATASET_ID", "pair": "id"|"order", "element": "" | "sphere" ...,
+//    "inner": false}   nominal = the same point of a second measurement of the part (another probe-point
+//    dataset's measured points), paired by id or by order; normals from the element fitted to the
+//    reference points ("element"), or none (position-only points) when "element" is absent.
 // core/project/datasets.h adds and lists datasets.
 // Study objects are owned by the method that uses them; unknown keys are preserved on save.
 #include <string>
@@ -66,6 +75,22 @@ inline constexpr const char* kDiagnosis = "diagnosis";
 inline constexpr const char* kAll[] = {kSetup, kMatching, kKinematics, kThermal, kDiagnosis};
 }  // namespace study
 
+/// Where a probe-point dataset's nominals come from (the "nominals" key above); `from` empty: the file's
+/// own nominal columns.
+struct NominalSource {
+  std::string from;  ///< "", "element" or "reference"
+  std::string
+      element;  ///< element kind (core/geometry/element_fit.h spelling), or "" (reference: no normals)
+  std::string criterion;    ///< "ls" (or "" = ls) or "minimax"
+  double radiusMm = 0.0;    ///< > 0: the element's radius is fixed (sphere, circle, cylinder)
+  bool robust = false;      ///< stray points left out of the fit (they keep their foot on the element)
+  bool inner = false;       ///< the material is outside the element (a bore): normals point inwards
+  std::string reference;    ///< "reference": the dataset id of the second measurement
+  std::string pair = "id";  ///< "reference": "id" or "order"
+  bool empty() const { return from.empty(); }
+  bool operator==(const NominalSource&) const = default;
+};
+
 struct DatasetRef {
   std::string id;    ///< unique within the project
   std::string kind;  ///< one of dataset_kind
@@ -77,6 +102,8 @@ struct DatasetRef {
   /// A series of DMIS files ("paths"): every file, paths[0] == path; empty for a single file. Last, so
   /// that positional initialisers of the fields before it stay valid.
   std::vector<std::string> paths = {};
+  /// A probe-point dataset of measured points only: where its nominals come from (see above).
+  NominalSource nominals = {};
   bool operator==(const DatasetRef&) const = default;
 };
 

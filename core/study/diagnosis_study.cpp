@@ -13,6 +13,7 @@
 #include "core/io/csv.h"
 #include "core/kinematics/measured_path.h"
 #include "core/matching/hole_table.h"
+#include "core/project/nominals.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
 #include "core/study/study_settings.h"
@@ -53,6 +54,11 @@ std::string diagnosisSettingsKey(const DiagnosisSettings& s) {
   const nlohmann::json key = {
       {"d", diagnosisDomainKey(s.domain)},
       {"p", s.datasetPath},
+      {"nom",
+       {s.nominals.from, s.nominals.element, s.nominals.criterion, s.nominals.radiusMm, s.nominals.robust,
+        s.nominals.inner, s.nominals.reference, s.nominals.pair, s.referencePath, s.referenceCsv.columnMap,
+        static_cast<int>(s.referenceCsv.dialect.delimiter), static_cast<int>(s.referenceCsv.dialect.decimal),
+        s.referenceCsv.headerLines}},
       {"csv",
        {static_cast<int>(s.csv.dialect.delimiter), static_cast<int>(s.csv.dialect.decimal), s.csv.columnMap,
         s.csv.headerLines, s.csv.commentPrefix, s.csv.skipBadRows}},
@@ -97,6 +103,11 @@ DiagnosisSettings diagnosisSettings(const Project& project, const std::string& p
   out.datasetPaths = resolveDatasetPaths(projectPath, dataset);
   out.csv = dataset.csv;
   out.dmis = dataset.dmis;
+  out.nominals = dataset.nominals;
+  if (const DatasetRef* reference = nominalReference(project, dataset)) {
+    out.referencePath = resolveDatasetPath(projectPath, *reference);
+    out.referenceCsv = reference->csv;
+  }
   out.target = block.target;
   out.inputs = block.inputs;
   out.trainFraction = block.trainFraction;
@@ -135,7 +146,19 @@ diagnose::Diagnosis runDiagnosis(const DiagnosisSettings& s, Observer* observer)
       return diagnose::diagnoseSetup(model, m, {}, observer);
     }
     case DiagnosisDomain::Matching: {
-      const ProbePointSet set = readProbePointsAnyFormat(s.datasetPath, 3, s.csv);
+      DatasetRef points;
+      points.id = s.datasetId;
+      points.kind = dataset_kind::kProbePoints;
+      points.path = s.datasetPath;
+      points.csv = s.csv;
+      points.nominals = s.nominals;
+      DatasetRef reference;
+      reference.id = s.nominals.reference;
+      reference.kind = dataset_kind::kProbePoints;
+      reference.path = s.referencePath;
+      reference.csv = s.referenceCsv;
+      const ProbePointSet set =
+          readProbePointDataset(points, s.referencePath.empty() ? nullptr : &reference, 3);
       diagnose::MatchingDiagnosisOptions o;
       o.toleranceMm = s.toleranceMm;
       return diagnose::diagnoseMatching(set, o, observer);

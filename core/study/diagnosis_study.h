@@ -43,7 +43,12 @@ struct DiagnosisSettings {
   std::vector<std::string> datasetPaths;  ///< every file (a DMIS series: several; core/project/project.h)
   CsvReadOptions csv;       ///< the dataset's dialect and column mapping (core/project/datasets.h)
   setup::DmisOptions dmis;  ///< how the dataset's DMIS TA(label) values are read (its "dmis" key)
-  std::string target;       ///< thermal
+  /// matching: where the measured points' nominals come from (core/project/nominals.h), and the
+  /// reference measurement's file (resolved) and reading when they come from one.
+  NominalSource nominals;
+  std::string referencePath;
+  CsvReadOptions referenceCsv;
+  std::string target;  ///< thermal
   std::vector<std::string> inputs;
   double trainFraction = DiagnosisDomainSettings{}.trainFraction;
   std::string modelId;  ///< setup

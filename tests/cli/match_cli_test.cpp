@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 
 #include <Eigen/Core>
@@ -337,6 +340,79 @@ TEST_F(MatchCli, SimulatedSPieceIsThePapersCase) {
   EXPECT_EQ(j.at("out_of_tolerance").at("after"), 0);
   EXPECT_NEAR(j.at("before").at("mean_over_tolerance_mm").get<double>(), 1.88, 0.05);
   EXPECT_EQ(cli("simulate probe --shape cube", tmp).code, 2);
+}
+
+/// The Wenzel file's `Residues` column (the CMM's own residuals of its sphere fit), split by the test.
+std::map<std::string, double> wenzelResidues(const std::filesystem::path& file) {
+  std::map<std::string, double> out;
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    s.imbue(std::locale::classic());
+    std::string id;
+    double x, y, z, res;
+    if (s >> id >> x >> y >> z >> res) out[id] = res;
+  }
+  return out;
+}
+
+TEST(MatchCliNominals, RawPointsTakeTheirNominalsFromAFittedSphere) {
+  const auto file = test::realData("cmm-wenzel-lens-points/SPH1_1");
+  METROFIT_REQUIRE_PATH(file);
+  test::TempDir tmp;
+  const CliRun r =
+      cli("match --data " + file.string() + " --nominal-element sphere --per-point pp.csv --out m.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = readJsonFile(tmp.file("m.json"));
+  EXPECT_EQ(j["points"], 18);
+  EXPECT_EQ(j["normals"], true);
+  // After the fit, each point's deviation along the sphere's normal is the CMM's residual to its print
+  // resolution (1 um): the nominals are the feet on the least-squares sphere, as the CMM's are.
+  const std::map<std::string, double> cmm = wenzelResidues(file);
+  ASSERT_EQ(j["per_point"].size(), cmm.size());
+  for (const auto& p : j["per_point"]) {
+    const std::string id = p["id"].get<std::string>();
+    ASSERT_TRUE(cmm.count(id)) << id;
+    EXPECT_NEAR(p["d_mm"].get<double>(), cmm.at(id), 1.0e-3 + 1e-9) << id;
+  }
+  const CsvTable csv = readCsvFile(tmp.file("pp.csv"));
+  EXPECT_EQ(csv.rowCount(), cmm.size());
+  EXPECT_EQ(csv.cell(0, csv.requireColumn("surface")), "sphere");
+}
+
+TEST(MatchCliNominals, RawPointsTakeTheirNominalsFromASecondMeasurement) {
+  const auto first = test::realData("cmm-wenzel-lens-points/SPH1_1");
+  const auto second = test::realData("cmm-wenzel-lens-points/SPH1_2");
+  METROFIT_REQUIRE_PATH(first);
+  METROFIT_REQUIRE_PATH(second);
+  test::TempDir tmp;
+  CliRun r = cli("match --data " + second.string() + " --nominal-reference " + first.string() +
+                     " --nominal-element sphere --out m.json",
+                 tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = readJsonFile(tmp.file("m.json"));
+  EXPECT_EQ(j["points"], 18);
+  EXPECT_EQ(j["normals"], true);
+  // The same program measured the lens twice: after matching, the repeat agrees to tens of um.
+  EXPECT_LT(j["max_abs_mm"].get<double>(), 0.1) << j.dump();
+  // Without an element the points are position-only.
+  r = cli("match --data " + second.string() + " --nominal-reference " + first.string() + " --out p.json",
+          tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(readJsonFile(tmp.file("p.json"))["normals"], false);
+  // Options that need an element, and pairs that do not exist, exit 2 with one line.
+  r = cli("match --data " + second.string() + " --nominal-radius 5 --out x.json", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("--nominal-element"), std::string::npos) << r.err;
+  test::writeText(tmp.file("other.csv"), "id,x,y,z\nA,0,0,0\nB,1,0,0\nC,0,1,0\n");
+  r = cli("match --data other.csv --nominal-reference " + first.string() + " --out x.json", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("3 point(s) have no point of the same id"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("x.json")));
 }
 
 }  // namespace

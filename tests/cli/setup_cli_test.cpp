@@ -513,5 +513,36 @@ TEST(SetupCli, DmisSeriesDimensionMeasuredByNoFileExits2NamingTheDimensionAndThe
   EXPECT_FALSE(std::filesystem::exists(tmp.file("dmis.json")));
 }
 
+TEST(SetupCli, ProjectAddTakesADmisSeriesOfSeveralFiles) {
+  test::TempDir tmp;
+  const std::string data = writePaperSeries(tmp, false);  // " --data f1 --data f2 ..."
+  std::vector<std::string> files;
+  for (std::size_t at = data.find("--data "); at != std::string::npos; at = data.find("--data ", at + 1)) {
+    const std::size_t from = at + 7, to = data.find(' ', from);
+    files.push_back(data.substr(from, to == std::string::npos ? std::string::npos : to - from));
+  }
+  ASSERT_EQ(files.size(), 3u);
+  ASSERT_EQ(cli("project new P.metrofit", tmp).code, 0);
+  CliRun r = cli(
+      "project add P.metrofit cmm-report " + files[0] + " " + files[1] + " " + files[2] + " --id parts", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json p = readJsonFile(tmp.file("P.metrofit"));
+  ASSERT_EQ(p["datasets"].size(), 1u);
+  EXPECT_EQ(p["datasets"][0]["path"], files[0]);
+  EXPECT_EQ(p["datasets"][0]["paths"], nlohmann::json(files));
+  // The rows of the series are those of its files together: 28 measured dimensions in each of the 3
+  // files (one part each).
+  r = cli("project list P.metrofit --out list.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(readJsonFile(tmp.file("list.json"))[0]["rows"], 3 * 28);
+  // Only DMIS output files make a series.
+  test::writeText(tmp.file("series.txt"), "part,time_min\n1,0\n");
+  r = cli("project add P.metrofit cmm-report " + files[0] + " series.txt --id mixed", tmp);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("series.txt"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("only DMIS output files make a series"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace metrofit
