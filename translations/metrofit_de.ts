@@ -317,8 +317,8 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
 <context>
     <name>metrofit::ChartNavigation</name>
     <message>
-        <location filename="../widgets/common/chartnavigation.cpp" line="+146"/>
-        <location filename="../widgets/common/plotnavigation.cpp" line="+50"/>
+        <location filename="../widgets/common/chartnavigation.cpp" line="+139"/>
+        <location filename="../widgets/common/plotnavigation.cpp" line="+46"/>
         <source>&amp;Reset zoom (double click, Home)</source>
         <translation>&amp;Zoom zurücksetzen (Doppelklick, Pos1)</translation>
     </message>
@@ -1152,7 +1152,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+58"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+61"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>Komma ( , )</translation>
@@ -1170,12 +1170,12 @@ Anzahl: %4</translation>
     <message>
         <location line="+2"/>
         <location line="+11"/>
-        <location line="+94"/>
+        <location line="+150"/>
         <source>detect</source>
         <translation>erkennen</translation>
     </message>
     <message>
-        <location line="-98"/>
+        <location line="-154"/>
         <source>point ( . )</source>
         <translation>Punkt ( . )</translation>
     </message>
@@ -1328,7 +1328,86 @@ Anzahl: %4</translation>
         <translation>Temperatur in °C (eine Eingangsgröße)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+6"/>
+        <source>plane</source>
+        <translation>Ebene</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line</source>
+        <translation>Gerade</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>circle</source>
+        <translation>Kreis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sphere</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cylinder</source>
+        <translation>Zylinder</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cone</source>
+        <translation>Kegel</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>Nominals: the %n point(s) of “%1”.</source>
+        <translation>
+            <numerusform>Sollpunkte: der %n Punkt von „%1“.</numerusform>
+            <numerusform>Sollpunkte: die %n Punkte von „%1“.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>radius %1 mm, </source>
+        <translation>Radius %1 mm, </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 fitted to %n point(s): %2form %3 mm, rmse %4 mm.</source>
+        <translation>
+            <numerusform>%1 (an %n Punkt angepasst): %2Form %3 mm, RMSE %4 mm.</numerusform>
+            <numerusform>%1 (an %n Punkte angepasst): %2Form %3 mm, RMSE %4 mm.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n stray point(s) left out of the fit.</source>
+        <translation>
+            <numerusform>%n Ausreißer aus der Anpassung ausgelassen.</numerusform>
+            <numerusform>%n Ausreißer aus der Anpassung ausgelassen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> The points cover a cap of half angle %1°.</source>
+        <translation> Die Punkte decken eine Kugelkappe mit dem halben Öffnungswinkel %1° ab.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> The points cover an arc of %1°.</source>
+        <translation> Die Punkte decken einen Bogen von %1° ab.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Badly conditioned: the noise of the points is amplified %1 times in the element.</source>
+        <translation>Schlecht konditioniert: das Rauschen der Punkte wird im Element %1-fach verstärkt.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Weakly conditioned: the noise of the points is amplified %1 times in the element.</source>
+        <translation>Schwach konditioniert: das Rauschen der Punkte wird im Element %1-fach verstärkt.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Skip &amp;unreadable rows</source>
         <translation>Nicht &amp;lesbare Zeilen überspringen</translation>
     </message>
@@ -1344,12 +1423,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+234"/>
+        <location line="+236"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-221"/>
+        <location line="-223"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Zeilen vor den Spaltennamen, unabhängig vom Inhalt übersprungen (Vorspann eines Messgeräts)</translation>
     </message>
@@ -1490,12 +1569,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+478"/>
+        <location line="+482"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
     <message>
-        <location line="-416"/>
+        <location line="-418"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
     </message>
@@ -1574,7 +1653,7 @@ Anzahl: %4</translation>
         <translation>DMIS-Ausgabe; gelesen mit dem Einrichtmodell „%1“: %2</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>Choose a file to import.</source>
         <translation>Wählen Sie eine Datei zum Importieren.</translation>
     </message>
@@ -1609,7 +1688,7 @@ Anzahl: %4</translation>
         <translation>Trennzeichen %1 · Dezimalzeichen %2 · Kopfzeile in Zeile %3 (%4 Spalten) · Kommentarzeilen: %5 · Datenzeilen: %6</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+48"/>
         <source>%1: already exists; an embedded copy never overwrites a file (choose another id)</source>
         <translation>%1: existiert bereits; eine eingebettete Kopie überschreibt nie eine Datei (andere Kennung wählen)</translation>
     </message>
@@ -1635,9 +1714,104 @@ Anzahl: %4</translation>
         </translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>The file is copied to %1.</source>
         <translation>Die Datei wird nach %1 kopiert.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Nominals of the measured points</source>
+        <translation>Sollpunkte der Messpunkte</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a fitted element</source>
+        <translation>einem angepassten Element</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a second measurement of the part</source>
+        <translation>einer zweiten Messung des Teils</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no normals (positions only)</source>
+        <translation>keine Normalen (nur Positionen)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>free (fitted)</source>
+        <translation>frei (angepasst)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A calibrated or drawing radius the element keeps; free: fitted</source>
+        <translation>Ein kalibrierter oder Zeichnungsradius, den das Element behält; frei: angepasst</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>least squares</source>
+        <translation>kleinste Quadrate</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>minimum zone</source>
+        <translation>Minimumzone</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Bore or hole (material outside)</source>
+        <translation>&amp;Bohrung (Material außen)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The normals point out of the material: into a bore, out of a shaft or ball</source>
+        <translation>Die Normalen zeigen aus dem Material: in eine Bohrung hinein, aus einer Welle oder Kugel heraus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Leave stray points out of the fit</source>
+        <translation>Ausreißer aus der Anpassung auslassen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>by id</source>
+        <translation>nach ID</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>by order</source>
+        <translation>nach Reihenfolge</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Import the first measurement of the part first</source>
+        <translation>Zuerst die erste Messung des Teils importieren</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Measurement:</source>
+        <translation>&amp;Messung:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;From:</source>
+        <translation>&amp;Aus:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Radius:</source>
+        <translation>&amp;Radius:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Element:</source>
+        <translation>&amp;Element:</translation>
     </message>
 </context>
 <context>
@@ -3102,7 +3276,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+124"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+125"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -3469,7 +3643,7 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+63"/>
-        <location line="+303"/>
+        <location line="+309"/>
         <location line="+16"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
@@ -3576,19 +3750,14 @@ Anzahl: %4</translation>
         <translation>Der Frame kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="-756"/>
-        <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
-        <translation>Dieses Projekt hat keine Antastpunkte. Fügen Sie der Projektdatei einen Datensatz der Art „probe_points“ hinzu (Kennung, Fläche, Sollpunkt, Normale, Messpunkt).</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="-744"/>
         <source>The effects applied to the matching model are invalid:
 %1</source>
         <translation>Die ins Ausrichtungsmodell übernommenen Effekte sind ungültig:
 %1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>%1 points on %2 surfaces, %3%4.</source>
         <translation>%1 Punkte auf %2 Flächen, %3%4.</translation>
     </message>
@@ -3603,18 +3772,23 @@ Anzahl: %4</translation>
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zu den Antastpunkten %1 (auf denen die Diagnose lief); diese Punkte verwenden das deklarierte Modell.</translation>
     </message>
     <message>
-        <location line="-96"/>
-        <location line="+198"/>
+        <location line="-102"/>
+        <location line="+204"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
     <message>
-        <location line="-897"/>
+        <location line="-903"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: %1 mm kann auf der Seite nicht eingestellt werden (sie nimmt %2 bis %3 mm in Schritten von %4 mm)</translation>
     </message>
     <message>
-        <location line="+891"/>
+        <location line="+750"/>
+        <source>This project has no probe points. Import them with File › Import data… (Ctrl+I): probe points with their nominals, a hole table or a CMM report, or raw measured points whose nominals come from a fitted element or a second measurement.</source>
+        <translation>Dieses Projekt hat keine Antastpunkte. Importieren Sie sie mit Datei › Daten importieren… (Strg+I): Antastpunkte mit ihren Sollpunkten, eine Bohrungstabelle oder ein KMG-Protokoll, oder rohe Messpunkte, deren Sollpunkte aus einem angepassten Element oder einer zweiten Messung kommen.</translation>
+    </message>
+    <message>
+        <location line="+147"/>
         <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
         <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (Rückgängig oder die Projektdatei): %1</translation>
     </message>
@@ -3849,8 +4023,8 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lizenz: %1.</translation>
     </message>
     <message>
-        <location line="-85"/>
-        <location line="+102"/>
+        <location line="-91"/>
+        <location line="+108"/>
         <location line="+54"/>
         <source>Not matched yet: press Run (Ctrl+R).</source>
         <translation>Noch nicht ausgerichtet: Ausführen drücken (Strg+R).</translation>
@@ -4202,7 +4376,7 @@ Abweichung: %3 µm</translation>
         <translation>, zurückgehalten %1 %2</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -5638,7 +5812,7 @@ Abweichung: %3 µm</translation>
         <translation>Das Projekt verweist auf keine Datensätze.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/report.cpp" line="+124"/>
+        <location filename="../widgets/report/report.cpp" line="+126"/>
         <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
@@ -6530,7 +6704,17 @@ Abweichung: %3 µm</translation>
         <translation>im Modell (%1)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
+        <source>the report prints no nominal for it</source>
+        <translation>das Protokoll druckt keinen Sollwert dafür</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>an angle (deg), not a length a setup correction moves</source>
+        <translation>ein Winkel (°), keine Länge, die eine Einrichtdatenkorrektur verschiebt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>cannot be used: %1</source>
         <translation>nicht verwendbar: %1</translation>
     </message>

@@ -317,8 +317,8 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
 <context>
     <name>metrofit::ChartNavigation</name>
     <message>
-        <location filename="../widgets/common/chartnavigation.cpp" line="+146"/>
-        <location filename="../widgets/common/plotnavigation.cpp" line="+50"/>
+        <location filename="../widgets/common/chartnavigation.cpp" line="+139"/>
+        <location filename="../widgets/common/plotnavigation.cpp" line="+46"/>
         <source>&amp;Reset zoom (double click, Home)</source>
         <translation>&amp;Resetuj powiększenie (dwuklik, Home)</translation>
     </message>
@@ -1153,7 +1153,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+58"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+61"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>przecinek ( , )</translation>
@@ -1171,12 +1171,12 @@ liczba: %4</translation>
     <message>
         <location line="+2"/>
         <location line="+11"/>
-        <location line="+94"/>
+        <location line="+150"/>
         <source>detect</source>
         <translation>wykryj</translation>
     </message>
     <message>
-        <location line="-98"/>
+        <location line="-154"/>
         <source>point ( . )</source>
         <translation>kropka ( . )</translation>
     </message>
@@ -1329,7 +1329,89 @@ liczba: %4</translation>
         <translation>temperatura w °C (wielkość wejściowa)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+6"/>
+        <source>plane</source>
+        <translation>płaszczyzna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line</source>
+        <translation>prosta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>circle</source>
+        <translation>okrąg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sphere</source>
+        <translation>sfera</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cylinder</source>
+        <translation>walec</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cone</source>
+        <translation>stożek</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>Nominals: the %n point(s) of “%1”.</source>
+        <translation>
+            <numerusform>Punkty nominalne: %n punkt z „%1”.</numerusform>
+            <numerusform>Punkty nominalne: %n punkty z „%1”.</numerusform>
+            <numerusform>Punkty nominalne: %n punktów z „%1”.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>radius %1 mm, </source>
+        <translation>promień %1 mm, </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 fitted to %n point(s): %2form %3 mm, rmse %4 mm.</source>
+        <translation>
+            <numerusform>%1 (dopasowanie do %n punktu): %2kształt %3 mm, RMSE %4 mm.</numerusform>
+            <numerusform>%1 (dopasowanie do %n punktów): %2kształt %3 mm, RMSE %4 mm.</numerusform>
+            <numerusform>%1 (dopasowanie do %n punktów): %2kształt %3 mm, RMSE %4 mm.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n stray point(s) left out of the fit.</source>
+        <translation>
+            <numerusform>%n odstający punkt pominięty w dopasowaniu.</numerusform>
+            <numerusform>%n odstające punkty pominięte w dopasowaniu.</numerusform>
+            <numerusform>%n odstających punktów pominiętych w dopasowaniu.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> The points cover a cap of half angle %1°.</source>
+        <translation> Punkty pokrywają czaszę o kącie połówkowym %1°.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> The points cover an arc of %1°.</source>
+        <translation> Punkty pokrywają łuk %1°.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Badly conditioned: the noise of the points is amplified %1 times in the element.</source>
+        <translation>Źle uwarunkowane: szum punktów jest wzmocniony %1 razy w elemencie.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Weakly conditioned: the noise of the points is amplified %1 times in the element.</source>
+        <translation>Słabo uwarunkowane: szum punktów jest wzmocniony %1 razy w elemencie.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Skip &amp;unreadable rows</source>
         <translation>Pomiń &amp;nieczytelne wiersze</translation>
     </message>
@@ -1345,12 +1427,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+234"/>
+        <location line="+236"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-221"/>
+        <location line="-223"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Wiersze przed nazwami kolumn, pomijane bez względu na treść (nagłówek przyrządu)</translation>
     </message>
@@ -1491,12 +1573,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+478"/>
+        <location line="+482"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
     <message>
-        <location line="-416"/>
+        <location line="-418"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
     </message>
@@ -1576,7 +1658,7 @@ liczba: %4</translation>
         <translation>Wynik DMIS; odczyt względem modelu ustawczego „%1”: %2</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>Choose a file to import.</source>
         <translation>Wybierz plik do importu.</translation>
     </message>
@@ -1611,7 +1693,7 @@ liczba: %4</translation>
         <translation>separator %1 · znak dziesiętny %2 · nagłówek w wierszu %3 (%4 kolumn) · wiersze komentarza: %5 · wiersze danych: %6</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+48"/>
         <source>%1: already exists; an embedded copy never overwrites a file (choose another id)</source>
         <translation>%1: już istnieje; osadzona kopia nigdy nie nadpisuje pliku (wybierz inny identyfikator)</translation>
     </message>
@@ -1639,9 +1721,104 @@ liczba: %4</translation>
         </translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>The file is copied to %1.</source>
         <translation>Plik zostanie skopiowany do %1.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Nominals of the measured points</source>
+        <translation>Punkty nominalne zmierzonych punktów</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a fitted element</source>
+        <translation>dopasowanego elementu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a second measurement of the part</source>
+        <translation>drugiego pomiaru części</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no normals (positions only)</source>
+        <translation>bez normalnych (tylko położenia)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>free (fitted)</source>
+        <translation>swobodny (dopasowany)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A calibrated or drawing radius the element keeps; free: fitted</source>
+        <translation>Promień wzorcowy lub z rysunku, który element zachowuje; swobodny: dopasowany</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>least squares</source>
+        <translation>najmniejsze kwadraty</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>minimum zone</source>
+        <translation>strefa minimalna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Bore or hole (material outside)</source>
+        <translation>&amp;Otwór (materiał na zewnątrz)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The normals point out of the material: into a bore, out of a shaft or ball</source>
+        <translation>Normalne wskazują na zewnątrz materiału: do wnętrza otworu, na zewnątrz wałka lub kuli</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Leave stray points out of the fit</source>
+        <translation>Pomiń punkty odstające w dopasowaniu</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>by id</source>
+        <translation>według id</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>by order</source>
+        <translation>według kolejności</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Import the first measurement of the part first</source>
+        <translation>Najpierw zaimportuj pierwszy pomiar części</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Measurement:</source>
+        <translation>&amp;Pomiar:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;From:</source>
+        <translation>&amp;Z:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Radius:</source>
+        <translation>&amp;Promień:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Element:</source>
+        <translation>&amp;Element:</translation>
     </message>
 </context>
 <context>
@@ -3108,7 +3285,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+124"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+125"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -3475,7 +3652,7 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+63"/>
-        <location line="+303"/>
+        <location line="+309"/>
         <location line="+16"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
@@ -3582,19 +3759,14 @@ liczba: %4</translation>
         <translation>Nie można zapisać frame’u</translation>
     </message>
     <message>
-        <location line="-756"/>
-        <source>This project has no probe points. Add a dataset of kind &quot;probe_points&quot; to the project file (id, surface, nominal point, normal, measured point).</source>
-        <translation>Ten projekt nie zawiera punktów sondowania. Dodaj do pliku projektu zbiór danych rodzaju „probe_points” (identyfikator, powierzchnia, punkt nominalny, normalna, punkt zmierzony).</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="-744"/>
         <source>The effects applied to the matching model are invalid:
 %1</source>
         <translation>Efekty zastosowane do modelu dopasowania są nieprawidłowe:
 %1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>%1 points on %2 surfaces, %3%4.</source>
         <translation>Punkty: %1, powierzchnie: %2, %3%4.</translation>
     </message>
@@ -3609,18 +3781,23 @@ liczba: %4</translation>
         <translation>Efekty zastosowane na stronie Diagnoza należą do punktów sondowania %1 (tych, na których przeprowadzono diagnozę); te punkty używają zadeklarowanego modelu.</translation>
     </message>
     <message>
-        <location line="-96"/>
-        <location line="+198"/>
+        <location line="-102"/>
+        <location line="+204"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
     <message>
-        <location line="-897"/>
+        <location line="-903"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: nie można ustawić %1 mm na stronie (przyjmuje od %2 do %3 mm w krokach co %4 mm)</translation>
     </message>
     <message>
-        <location line="+891"/>
+        <location line="+750"/>
+        <source>This project has no probe points. Import them with File › Import data… (Ctrl+I): probe points with their nominals, a hole table or a CMM report, or raw measured points whose nominals come from a fitted element or a second measurement.</source>
+        <translation>Ten projekt nie ma punktów pomiarowych. Zaimportuj je przez Plik › Importuj dane… (Ctrl+I): punkty z ich wartościami nominalnymi, tabelę otworów lub raport CMM albo surowe punkty pomiarowe, których punkty nominalne pochodzą z dopasowanego elementu lub z drugiego pomiaru.</translation>
+    </message>
+    <message>
+        <location line="+147"/>
         <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
         <translation>Ustawienia badania dopasowania są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (Cofnij lub plik projektu): %1</translation>
     </message>
@@ -3856,8 +4033,8 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Licencja: %1.</translation>
     </message>
     <message>
-        <location line="-85"/>
-        <location line="+102"/>
+        <location line="-91"/>
+        <location line="+108"/>
         <location line="+54"/>
         <source>Not matched yet: press Run (Ctrl+R).</source>
         <translation>Jeszcze nie dopasowano: naciśnij Uruchom (Ctrl+R).</translation>
@@ -4209,7 +4386,7 @@ odchyłka: %3 µm</translation>
         <translation>, odłożone %1 %2</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -5646,7 +5823,7 @@ odchyłka: %3 µm</translation>
         <translation>Projekt nie odwołuje się do żadnych zbiorów danych.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/report.cpp" line="+124"/>
+        <location filename="../widgets/report/report.cpp" line="+126"/>
         <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
@@ -6543,7 +6720,17 @@ odchyłka: %3 µm</translation>
         <translation>w modelu (%1)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
+        <source>the report prints no nominal for it</source>
+        <translation>raport nie podaje dla niej wartości nominalnej</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>an angle (deg), not a length a setup correction moves</source>
+        <translation>kąt (°), a nie długość, którą przesuwa korekcja danych ustawczych</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>cannot be used: %1</source>
         <translation>nie do użycia: %1</translation>
     </message>

@@ -44,6 +44,7 @@
 #include "core/io/file_io.h"
 #include "core/matching/evaluation.h"
 #include "core/matching/hole_table.h"
+#include "core/project/nominals.h"
 #include "core/project/stored_results.h"
 #include "core/study/study_settings.h"
 #include "widgets/common/tablecopy.h"
@@ -834,8 +835,9 @@ void MatchingPage::showPoints(int comboIndex) {
   if (comboIndex < 0 || comboIndex >= static_cast<int>(sets_.size())) {
     info_->clear();
     message_->setText(
-        tr("This project has no probe points. Add a dataset of kind \"probe_points\" to the "
-           "project file (id, surface, nominal point, normal, measured point)."));
+        tr("This project has no probe points. Import them with File › Import data… (Ctrl+I): probe "
+           "points with their nominals, a hole table or a CMM report, or raw measured points whose "
+           "nominals come from a fitted element or a second measurement."));
     stack_->setCurrentWidget(message_);
     runButton_->setEnabled(false);
     return;
@@ -858,7 +860,12 @@ void MatchingPage::showPoints(int comboIndex) {
   }
   try {
     datasetFile_ = document_->datasetPath(dataset);
-    rawSet_ = readProbePointsAnyFormat(datasetFile_.toStdString(), 3, dataset.csv);
+    // With its nominals from an element or a second measurement where the dataset says so
+    // (core/project/nominals.h): the reference resolved the way the document resolves paths.
+    std::optional<DatasetRef> reference;
+    if (const DatasetRef* r = nominalReference(document_->project(), dataset))
+      reference = document_->resolvedDataset(*r);
+    rawSet_ = readProbePointDataset(dataset, reference ? &*reference : nullptr, 3);
     set_ = matching::studyModelSet(*rawSet_, settings_.options, projectFile_.toStdString());
     const ProbePointSet& points = *set_;
     std::set<std::string> surfaces;

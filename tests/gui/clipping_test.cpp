@@ -17,6 +17,8 @@
 // is kept in the test's output folder (test::outDir()).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <QAbstractButton>
 #include <QAbstractItemView>
 #include <QAbstractSpinBox>
@@ -61,12 +63,14 @@
 #include "app/gui/mainwindow.h"
 #include "app/gui/pageid.h"
 #include "app/gui/thermalpage.h"
+#include "core/project/report_model.h"
 #include "qtapp.h"
 #include "testsupport.h"
 #include "ui_language.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/importer/importdialog.h"
+#include "widgets/setup/reportmodeldialog.h"
 
 namespace metrofit {
 namespace {
@@ -434,6 +438,50 @@ TEST_P(ClippingTest, NothingIsCutAtTheDefaultWindowSize) {
         failures.push_back(language.toStdString() + " import dialog: " + f);
       import.grab().save(QString::fromStdString(
           (test::outDir() / ("clipping-" + language.toStdString() + "-import-dialog.png")).string()));
+    }
+    // Raw measured points in German spreadsheet conventions: the nominals box (issue 28 item 4).
+    {
+      const QString raw = dir.filePath(QStringLiteral("Kugel Punkte.csv"));
+      QFile f(raw);
+      ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+      f.write("Punkt;X [mm];Y [mm];Z [mm]\n");
+      for (int k = 0; k < 12; ++k) {
+        const double ph = 0.5236 * k, th = 0.4 + 0.3 * (k % 2);
+        f.write(QStringLiteral("K%1;%2;%3;%4\n")
+                    .arg(k + 1)
+                    .arg(20.0 * std::sin(th) * std::cos(ph), 0, 'f', 4)
+                    .arg(20.0 * std::sin(th) * std::sin(ph), 0, 'f', 4)
+                    .arg(20.0 * std::cos(th), 0, 'f', 4)
+                    .replace(QLatin1Char('.'), QLatin1Char(','))
+                    .toUtf8());
+      }
+      f.close();
+      ImportDialog import(window.document()->project(), window.document()->projectPathForDatasets(), &window);
+      import.setFile(raw);
+      import.show();
+      QTest::qWait(300);
+      EXPECT_TRUE(import.needsNominals()) << language.toStdString();
+      ClipCheck check;
+      check.check(&import);
+      for (const std::string& f : check.failures)
+        failures.push_back(language.toStdString() + " import dialog (raw points): " + f);
+      import.grab().save(QString::fromStdString(
+          (test::outDir() / ("clipping-" + language.toStdString() + "-import-raw-points.png")).string()));
+    }
+    // A setup model from a real OGP report (issue 28 item 3).
+    {
+      const auto ogp = test::realData("cmm-ogp-hps-svt/survey_data/meas1/L0_axial_top_module1_1.txt");
+      METROFIT_REQUIRE_PATH(ogp);
+      const ReportFeatures features = readReportFeatures(ogp.string());
+      ReportModelDialog model(features, QStringLiteral("L0_axial_top_module1_1"), nullptr, &window);
+      model.show();
+      QTest::qWait(200);
+      ClipCheck check;
+      check.check(&model);
+      for (const std::string& f : check.failures)
+        failures.push_back(language.toStdString() + " setup model from a report: " + f);
+      model.grab().save(QString::fromStdString(
+          (test::outDir() / ("clipping-" + language.toStdString() + "-report-model-dialog.png")).string()));
     }
     window.document()->undoStack()->setClean();
     window.setUnsavedChangesDecider([] { return MainWindow::UnsavedChoice::Discard; });

@@ -36,16 +36,21 @@
 #include <QUndoStack>
 #include <QUrl>
 #include <cmath>
+#include <filesystem>
 #include <functional>
+#include <map>
 
 #include "app/gui/datasetactions.h"
 #include "app/gui/mainwindow.h"
+#include "app/gui/matchingpage.h"
 #include "app/gui/projectnavigator.h"
 #include "app/gui/thermalpage.h"
 #include "core/common/error.h"
+#include "core/io/csv.h"
 #include "core/io/json_util.h"
 #include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
+#include "core/project/nominals.h"
 #include "core/project/project.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
@@ -905,6 +910,108 @@ TEST_F(ImportDialogTest, TheRealWenzelPointsWithoutExtensionAreProbePointsWithTh
   EXPECT_EQ(dialog.role(QStringLiteral("ID")), QStringLiteral("id"));
   EXPECT_EQ(dialog.role(QStringLiteral("x")), QStringLiteral("px"));
   EXPECT_EQ(dialog.role(QStringLiteral("z")), QStringLiteral("pz"));
+}
+
+/// The Wenzel file's `Residues` column (the CMM's residuals of its own sphere fit), read by the test.
+std::map<QString, double> wenzelResidues(const std::filesystem::path& file) {
+  QFile f(QString::fromStdString(file.string()));
+  EXPECT_TRUE(f.open(QIODevice::ReadOnly));
+  std::map<QString, double> out;
+  const QList<QByteArray> lines = f.readAll().split('\n');
+  for (int i = 1; i < lines.size(); ++i) {
+    const QList<QByteArray> cells = lines[i].split('\t');
+    if (cells.size() >= 5) out[QString::fromUtf8(cells[0])] = cells[4].toDouble();
+  }
+  return out;
+}
+
+// Issue 28 item 4, the journey: raw CMM points without nominals (the Wenzel lens sphere) are imported,
+// their nominals come from a sphere fitted to them, the Matching page runs on them and its per-point
+// deviations are the CMM's own residuals; a second measurement of the lens takes the first as nominal.
+TEST_F(ImportDialogTest, RawPointsTakeTheirNominalsFromAFittedSphereOrTheFirstMeasurement) {
+  const auto first = test::realData("cmm-wenzel-lens-points/SPH1_1");
+  const auto second = test::realData("cmm-wenzel-lens-points/SPH1_2");
+  METROFIT_REQUIRE_PATH(first);
+  METROFIT_REQUIRE_PATH(second);
+  {
+    ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+    dialog.setFile(QString::fromStdString(first.string()));
+    ASSERT_EQ(dialog.kind(), QStringLiteral("probe-points"));
+    ASSERT_TRUE(dialog.needsNominals());
+    auto* box = dialog.findChild<QWidget*>(QStringLiteral("importNominals"));
+    ASSERT_NE(box, nullptr);
+    EXPECT_FALSE(box->isHidden());
+    // Without another probe-point dataset, a second measurement cannot be chosen.
+    auto* from = dialog.findChild<QComboBox*>(QStringLiteral("importNominalFrom"));
+    ASSERT_NE(from, nullptr);
+    EXPECT_FALSE(from->model()->flags(from->model()->index(1, 0)).testFlag(Qt::ItemIsEnabled));
+    NominalSource n;
+    n.from = "element";
+    n.element = "sphere";
+    dialog.setNominals(n);
+    dialog.setDatasetId(QStringLiteral("lens1"));
+    ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+    EXPECT_TRUE(dialog.nominalsSummary().contains(QStringLiteral("sphere fitted to 18 point(s)")))
+        << dialog.nominalsSummary().toStdString();
+    EXPECT_TRUE(dialog.findChild<QLabel*>(QStringLiteral("importProblem"))
+                    ->text()
+                    .contains(QStringLiteral("sphere fitted to 18 point(s)")));
+    importButton(dialog)->click();
+    ASSERT_EQ(dialog.result(), QDialog::Accepted);
+    EXPECT_EQ(dialog.dataset().nominals, n);
+    doc_.addDataset(dialog.dataset());
+  }
+  MatchingPage page(&doc_);
+  page.selectDataset(QStringLiteral("lens1"));
+  ASSERT_TRUE(page.errorMessage().isEmpty()) << page.errorMessage().toStdString();
+  // A sphere's normals all pass through its centre: no rotation about it is determined, and the page
+  // says so (the minimax method checks it) instead of returning an arbitrary rotation.
+  EXPECT_FALSE(page.runNow());
+  EXPECT_TRUE(page.statusText().contains(QStringLiteral("undetermined"))) << page.statusText().toStdString();
+  for (int dof = 0; dof < 3; ++dof) page.setLocked(dof, true);  // rx, ry, rz, as the message says
+  ASSERT_TRUE(page.runNow()) << page.statusText().toStdString();
+  ASSERT_TRUE(page.result().has_value());
+  const QString csv = dir_.filePath(QStringLiteral("lens1_deviations.csv"));
+  QString error;
+  ASSERT_TRUE(page.savePerPointDeviations(csv, &error)) << error.toStdString();
+  const CsvTable table = readCsvFile(csv.toStdString());
+  const std::map<QString, double> cmm = wenzelResidues(first);
+  ASSERT_EQ(table.rowCount(), cmm.size());
+  for (std::size_t r = 0; r < table.rowCount(); ++r) {
+    const QString id = QString::fromStdString(table.cell(r, table.requireColumn("id")));
+    ASSERT_TRUE(cmm.count(id)) << id.toStdString();
+    EXPECT_NEAR(table.number(r, table.requireColumn("d_mm")), cmm.at(id), 1.0e-3 + 1e-9) << id.toStdString();
+  }
+
+  // The second measurement of the lens, its nominals the first's points with the sphere's normals.
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(QString::fromStdString(second.string()));
+  ASSERT_TRUE(dialog.needsNominals());
+  NominalSource n;
+  n.from = "reference";
+  n.reference = "lens1";
+  n.element = "sphere";
+  dialog.setNominals(n);
+  dialog.setDatasetId(QStringLiteral("lens2"));
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.nominals(), n);
+  EXPECT_TRUE(dialog.nominalsSummary().contains(QStringLiteral("the 18 point(s) of “lens1”")))
+      << dialog.nominalsSummary().toStdString();
+  importButton(dialog)->click();
+  doc_.addDataset(dialog.dataset());
+  page.selectDataset(QStringLiteral("lens2"));
+  ASSERT_TRUE(page.errorMessage().isEmpty()) << page.errorMessage().toStdString();
+  EXPECT_TRUE(page.infoText().contains(QStringLiteral("with normals"))) << page.infoText().toStdString();
+  ASSERT_TRUE(page.runNow());
+  // The project file keeps the recipes: saved, reopened, the same points.
+  doc_.save();
+  const Project reopened = loadProject(doc_.fileName().toStdString());
+  ASSERT_NE(reopened.dataset("lens2"), nullptr);
+  EXPECT_EQ(reopened.dataset("lens2")->nominals, n);
+  const ProbePointSet again =
+      readProjectProbePoints(reopened, doc_.fileName().toStdString(), *reopened.dataset("lens2"));
+  EXPECT_EQ(again.points.size(), 18u);
+  EXPECT_TRUE(again.hasNormals);
 }
 
 }  // namespace

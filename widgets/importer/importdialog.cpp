@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -14,6 +15,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QLocale>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
@@ -31,6 +33,7 @@
 #include "core/matching/hole_table.h"
 #include "core/project/datasets.h"
 #include "core/project/import_guess.h"
+#include "core/project/nominals.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
 #include "core/study/setup_study.h"
@@ -128,6 +131,62 @@ QString roleDescription(const QString& role) {
     return ImportDialog::tr("temperature in °C (an input)");
   const auto it = text.find(role);
   return it == text.end() ? QString() : ImportDialog::tr(it.value());
+}
+
+QString elementTitle(const QString& element) {
+  if (element == QLatin1String("plane")) return ImportDialog::tr("plane");
+  if (element == QLatin1String("line")) return ImportDialog::tr("line");
+  if (element == QLatin1String("circle")) return ImportDialog::tr("circle");
+  if (element == QLatin1String("sphere")) return ImportDialog::tr("sphere");
+  if (element == QLatin1String("cylinder")) return ImportDialog::tr("cylinder");
+  if (element == QLatin1String("cone")) return ImportDialog::tr("cone");
+  return element;
+}
+
+/// "sphere fitted to 18 points: radius 487.310 mm, form 0.0040 mm, rmse 0.0010 mm." (+ the condition
+/// when the fit is not well conditioned), after the reference's name for a second measurement.
+QString nominalsText(const NominalsOutcome& out, const NominalSource& n) {
+  const QLocale l;
+  QString text;
+  if (n.from == "reference")
+    text = ImportDialog::tr("Nominals: the %n point(s) of “%1”.", nullptr,
+                            static_cast<int>(out.set.points.size()))
+               .arg(QString::fromStdString(n.reference));
+  if (out.fit) {
+    const geometry::ElementFitResult& f = *out.fit;
+    QString size;
+    if (f.element.radiusMm > 0.0)
+      size = ImportDialog::tr("radius %1 mm, ").arg(l.toString(f.element.radiusMm, 'f', 3));
+    const int fitted = static_cast<int>(f.residualsMm.size() - f.excluded.size());
+    text += (text.isEmpty() ? QString() : QStringLiteral(" ")) +
+            ImportDialog::tr("%1 fitted to %n point(s): %2form %3 mm, rmse %4 mm.", nullptr, fitted)
+                .arg(elementTitle(QString::fromStdString(n.element)), size, l.toString(f.formMm, 'f', 4),
+                     l.toString(f.rmseMm, 'f', 4));
+    if (!f.excluded.empty())
+      text += QLatin1Char(' ') + ImportDialog::tr("%n stray point(s) left out of the fit.", nullptr,
+                                                  static_cast<int>(f.excluded.size()));
+    // The condition in the UI language (core's text, element_fit.h, is English): how much the point noise
+    // is amplified in the element's parameters, and how much of the element the points cover.
+    QString coverage;
+    if (f.element.kind == geometry::ElementKind::Sphere)
+      coverage = ImportDialog::tr(" The points cover a cap of half angle %1°.")
+                     .arg(l.toString(f.coverageDeg, 'f', 1));
+    else if (f.element.kind != geometry::ElementKind::Plane && f.element.kind != geometry::ElementKind::Line)
+      coverage = ImportDialog::tr(" The points cover an arc of %1°.").arg(l.toString(f.coverageDeg, 'f', 1));
+    if (f.noiseAmplification > geometry::kBadConditionAmplification)
+      text +=
+          QLatin1Char(' ') +
+          ImportDialog::tr("Badly conditioned: the noise of the points is amplified %1 times in the element.")
+              .arg(l.toString(f.noiseAmplification, 'f', 0)) +
+          coverage;
+    else if (!f.wellConditioned)
+      text += QLatin1Char(' ') +
+              ImportDialog::tr(
+                  "Weakly conditioned: the noise of the points is amplified %1 times in the element.")
+                  .arg(l.toString(f.noiseAmplification, 'f', 1)) +
+              coverage;
+  }
+  return text;
 }
 
 }  // namespace
@@ -278,6 +337,8 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   layout->addLayout(form);
   layout->addWidget(dialect);
   layout->addWidget(dmisBox_);
+  buildNominalsBox();
+  layout->addWidget(nominalsBox_);
   layout->addWidget(splitter, 1);
   series_ = new QCheckBox(this);
   series_->setObjectName(QStringLiteral("importSeries"));
@@ -727,6 +788,7 @@ void ImportDialog::revalidate() {
   if (updating_) return;
   updating_ = true;
   problem_.clear();
+  nominalsSummary_.clear();
   const std::string cliKind = kind().toStdString();
   // A CMM text report is read by its own reader whatever CSV kind it is imported as.
   const bool csv =
@@ -739,6 +801,7 @@ void ImportDialog::revalidate() {
   mapping_->setEnabled(csv);
   rowProblems_->clear();
   dmisBox_->setVisible(!file_.isEmpty() && readError_.isEmpty() && isDmisFile());
+  nominalsBox_->setVisible(needsNominals());
   auto* problemsTitle = findChild<QLabel*>(QStringLiteral("importRowProblemsTitle"));
   problemsTitle->setText(tr("Rows that cannot be read:"));
   int skipped = 0;
@@ -815,10 +878,22 @@ void ImportDialog::revalidate() {
       request.id = id_->text().trimmed().toStdString();
       request.csv = csvOptions();
       request.dmis = dmisOptions();
+      if (needsNominals()) request.nominals = nominals();
       if (readsSeries())
         for (const QString& more : seriesFiles_)
           request.moreFiles.push_back(QFile::encodeName(more).toStdString());
       dataset_ = addDataset(scratch, QFile::encodeName(projectPath_).toStdString(), request);
+      if (!dataset_.nominals.empty()) {
+        // What the nominals came out as: the element's size and form (the same computation the
+        // readers make, core/project/nominals.h).
+        std::optional<geometry::PointSet> reference;
+        if (const DatasetRef* r = nominalReference(scratch, dataset_))
+          reference = readMeasuredPoints(
+              resolveDatasetPath(QFile::encodeName(projectPath_).toStdString(), *r), r->csv);
+        const NominalsOutcome out = nominalsFor(readMeasuredPoints(request.file, dataset_.csv),
+                                                dataset_.nominals, reference ? &*reference : nullptr);
+        nominalsSummary_ = nominalsText(out, dataset_.nominals);
+      }
     } catch (const std::exception& e) {
       problem_ = QString::fromStdString(e.what());
     }
@@ -837,6 +912,7 @@ void ImportDialog::revalidate() {
     ready += QLatin1Char(' ') + tr("The %n file(s) are one DMIS series: one workpiece per file.", nullptr,
                                    static_cast<int>(dataset_.paths.size()));
   if (skipped > 0) ready += QLatin1Char(' ') + tr("%n unreadable row(s) will be left out.", nullptr, skipped);
+  if (problem_.isEmpty() && !nominalsSummary_.isEmpty()) ready += QLatin1Char(' ') + nominalsSummary_;
   if (embed())
     ready += QLatin1Char(' ') + tr("The file is copied to %1.")
                                     .arg(QString::fromStdString(embeddedDatasetPath(
@@ -848,6 +924,162 @@ void ImportDialog::revalidate() {
   problemLabel_->setStyleSheet(problem_.isEmpty() ? QString() : QStringLiteral("color: #b00020;"));
   buttons_->button(QDialogButtonBox::Ok)->setEnabled(problem_.isEmpty());
   updating_ = false;
+}
+
+void ImportDialog::buildNominalsBox() {
+  nominalsBox_ = new QGroupBox(tr("Nominals of the measured points"), this);
+  nominalsBox_->setObjectName(QStringLiteral("importNominals"));
+  nominalFrom_ = new QComboBox(nominalsBox_);
+  nominalFrom_->setObjectName(QStringLiteral("importNominalFrom"));
+  nominalFrom_->addItem(tr("a fitted element"), QStringLiteral("element"));
+  nominalFrom_->addItem(tr("a second measurement of the part"), QStringLiteral("reference"));
+  nominalElement_ = new QComboBox(nominalsBox_);
+  nominalElement_->setObjectName(QStringLiteral("importNominalElement"));
+  nominalElement_->addItem(tr("no normals (positions only)"), QString());
+  for (const char* e : {"plane", "line", "circle", "sphere", "cylinder", "cone"})
+    nominalElement_->addItem(elementTitle(QString::fromLatin1(e)), QString::fromLatin1(e));
+  nominalElement_->setCurrentIndex(nominalElement_->findData(QStringLiteral("sphere")));
+  nominalRadius_ = new QDoubleSpinBox(nominalsBox_);
+  nominalRadius_->setObjectName(QStringLiteral("importNominalRadius"));
+  nominalRadius_->setRange(0.0, 1.0e6);
+  nominalRadius_->setDecimals(4);
+  nominalRadius_->setSuffix(tr(" mm"));
+  nominalRadius_->setSpecialValueText(tr("free (fitted)"));
+  nominalRadius_->setToolTip(tr("A calibrated or drawing radius the element keeps; free: fitted"));
+  nominalCriterion_ = new QComboBox(nominalsBox_);
+  nominalCriterion_->setObjectName(QStringLiteral("importNominalCriterion"));
+  nominalCriterion_->addItem(tr("least squares"), QStringLiteral("ls"));
+  nominalCriterion_->addItem(tr("minimum zone"), QStringLiteral("minimax"));
+  nominalInner_ = new QCheckBox(tr("&Bore or hole (material outside)"), nominalsBox_);
+  nominalInner_->setObjectName(QStringLiteral("importNominalInner"));
+  nominalInner_->setToolTip(tr("The normals point out of the material: into a bore, out of a shaft or ball"));
+  nominalRobust_ = new QCheckBox(tr("Leave stray points out of the fit"), nominalsBox_);
+  nominalRobust_->setObjectName(QStringLiteral("importNominalRobust"));
+  nominalReference_ = new QComboBox(nominalsBox_);
+  nominalReference_->setObjectName(QStringLiteral("importNominalReference"));
+  for (const DatasetRef& d : project_.datasets)
+    if (d.kind == dataset_kind::kProbePoints)
+      nominalReference_->addItem(QString::fromStdString(d.id), QString::fromStdString(d.id));
+  nominalPair_ = new QComboBox(nominalsBox_);
+  nominalPair_->setObjectName(QStringLiteral("importNominalPair"));
+  nominalPair_->addItem(tr("by id"), QStringLiteral("id"));
+  nominalPair_->addItem(tr("by order"), QStringLiteral("order"));
+  if (nominalReference_->count() == 0) {
+    // Without another probe-point dataset there is no second measurement to choose.
+    nominalFrom_->setItemData(1, 0, Qt::UserRole - 1);
+    nominalFrom_->setItemData(1, tr("Import the first measurement of the part first"), Qt::ToolTipRole);
+  }
+  auto* form = new QFormLayout(nominalsBox_);
+  auto* fromRow = new QHBoxLayout;
+  fromRow->addWidget(nominalFrom_);
+  auto* referenceLabel = new QLabel(tr("&Measurement:"), nominalsBox_);
+  referenceLabel->setObjectName(QStringLiteral("importNominalReferenceLabel"));
+  referenceLabel->setBuddy(nominalReference_);
+  fromRow->addWidget(referenceLabel);
+  fromRow->addWidget(nominalReference_);
+  fromRow->addWidget(nominalPair_);
+  fromRow->addStretch(1);
+  auto* fromLabel = new QLabel(tr("&From:"), nominalsBox_);
+  fromLabel->setBuddy(nominalFrom_);
+  form->addRow(fromLabel, fromRow);
+  auto* elementRow = new QHBoxLayout;
+  elementRow->addWidget(nominalElement_);
+  auto* radiusLabel = new QLabel(tr("&Radius:"), nominalsBox_);
+  radiusLabel->setBuddy(nominalRadius_);
+  elementRow->addWidget(radiusLabel);
+  elementRow->addWidget(nominalRadius_);
+  elementRow->addWidget(nominalCriterion_);
+  elementRow->addWidget(nominalInner_);
+  elementRow->addWidget(nominalRobust_);
+  elementRow->addStretch(1);
+  auto* elementLabel = new QLabel(tr("&Element:"), nominalsBox_);
+  elementLabel->setBuddy(nominalElement_);
+  form->addRow(elementLabel, elementRow);
+  nominalsBox_->setVisible(false);
+  updateNominalControls();
+  const auto changed = [this] {
+    updateNominalControls();
+    revalidate();
+  };
+  for (QComboBox* c : {nominalFrom_, nominalElement_, nominalCriterion_, nominalReference_, nominalPair_})
+    connect(c, &QComboBox::currentIndexChanged, this, changed);
+  connect(nominalRadius_, &QDoubleSpinBox::valueChanged, this, changed);
+  for (QCheckBox* c : {nominalInner_, nominalRobust_}) connect(c, &QCheckBox::toggled, this, changed);
+}
+
+void ImportDialog::updateNominalControls() {
+  const bool reference = nominalFrom_->currentData().toString() == QLatin1String("reference");
+  // "no normals" only for a second measurement: an element's own nominals need an element.
+  nominalElement_->setItemData(0, reference ? QVariant() : QVariant(0), Qt::UserRole - 1);
+  if (!reference && nominalElement_->currentData().toString().isEmpty()) {
+    const QSignalBlocker block(nominalElement_);
+    nominalElement_->setCurrentIndex(nominalElement_->findData(QStringLiteral("sphere")));
+  }
+  const QString element = nominalElement_->currentData().toString();
+  const bool fitted = !element.isEmpty();
+  nominalReference_->setVisible(reference);
+  nominalPair_->setVisible(reference);
+  if (auto* l = findChild<QLabel*>(QStringLiteral("importNominalReferenceLabel"))) l->setVisible(reference);
+  geometry::ElementKind kind{};
+  const bool radius =
+      fitted && geometry::parseElementKind(element.toStdString(), &kind) && geometry::takesFixedRadius(kind);
+  nominalRadius_->setEnabled(radius);
+  nominalCriterion_->setEnabled(fitted);
+  nominalInner_->setEnabled(fitted);
+  nominalRobust_->setEnabled(fitted);
+}
+
+bool ImportDialog::needsNominals() const {
+  if (kind() != QLatin1String("probe-points") || file_.isEmpty() || !readError_.isEmpty() ||
+      header_.empty() || looksLikeCmmTextReport(text_) || looksLikeHoleTable(text_))
+    return false;
+  // The names the readers see: a column's role, or its own name.
+  QStringList names;
+  for (const std::string& h : header_) {
+    const QString column = QString::fromStdString(h);
+    const QString role = roles_.value(column);
+    names << (role.isEmpty() ? column : role);
+  }
+  const bool points = names.contains(QStringLiteral("px")) || names.contains(QStringLiteral("x_mm")) ||
+                      names.contains(QStringLiteral("x"));
+  return points && !names.contains(QStringLiteral("qx"));
+}
+
+void ImportDialog::setNominals(const NominalSource& n) {
+  {
+    const QSignalBlocker b1(nominalFrom_), b2(nominalElement_), b3(nominalRadius_), b4(nominalCriterion_),
+        b5(nominalInner_), b6(nominalRobust_), b7(nominalReference_), b8(nominalPair_);
+    nominalFrom_->setCurrentIndex(std::max(0, nominalFrom_->findData(QString::fromStdString(n.from))));
+    updateNominalControls();
+    nominalElement_->setCurrentIndex(
+        std::max(0, nominalElement_->findData(QString::fromStdString(n.element))));
+    nominalRadius_->setValue(n.radiusMm);
+    nominalCriterion_->setCurrentIndex(n.criterion == "minimax" ? 1 : 0);
+    nominalInner_->setChecked(n.inner);
+    nominalRobust_->setChecked(n.robust);
+    const int r = nominalReference_->findData(QString::fromStdString(n.reference));
+    if (r >= 0) nominalReference_->setCurrentIndex(r);
+    nominalPair_->setCurrentIndex(n.pair == "order" ? 1 : 0);
+  }
+  updateNominalControls();
+  revalidate();
+}
+
+NominalSource ImportDialog::nominals() const {
+  NominalSource n;
+  n.from = nominalFrom_->currentData().toString().toStdString();
+  n.element = nominalElement_->currentData().toString().toStdString();
+  const bool fitted = !n.element.empty();
+  if (fitted && nominalRadius_->isEnabled()) n.radiusMm = nominalRadius_->value();
+  if (fitted && nominalCriterion_->currentData().toString() == QLatin1String("minimax"))
+    n.criterion = "minimax";
+  n.inner = fitted && nominalInner_->isChecked();
+  n.robust = fitted && nominalRobust_->isChecked();
+  if (n.from == "reference") {
+    n.reference = nominalReference_->currentData().toString().toStdString();
+    n.pair = nominalPair_->currentData().toString().toStdString();
+  }
+  return n;
 }
 
 }  // namespace metrofit

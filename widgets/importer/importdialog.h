@@ -21,6 +21,11 @@
 //   * with several DMIS files selected (setSeriesFiles), "Read the N files as one DMIS series": one
 //     dataset listing every file ("paths", core/project/project.h), one file per workpiece, as the setup
 //     study reads a series (checked by default).
+//   * for probe points whose file holds measured points only (raw CMM points: no nominal columns), where
+//     their nominals come from (core/project/nominals.h): an element fitted to them (with a fixed radius,
+//     least squares or minimum zone, stray points left out, a bore's inward normals), or a second
+//     measurement of the part (another probe-point dataset of the project, paired by id or by order,
+//     normals from an element fitted to it or none); the fit's size and form are shown,
 // The dialog does not change the project: after accept() the caller adds dataset() through the
 // document's undo stack (ProjectDocument::addDataset). An embedded file is copied on accept().
 #include <QDialog>
@@ -35,6 +40,7 @@
 class QCheckBox;
 class QComboBox;
 class QDialogButtonBox;
+class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
 class QLineEdit;
@@ -97,6 +103,15 @@ class ImportDialog : public QDialog {
   void setReadsSeries(bool series);
   bool readsSeries() const;
 
+  /// True when the file is read as probe points of measured points only (the nominals box is shown).
+  bool needsNominals() const;
+  /// Where the nominals of measured points only come from (used when needsNominals()).
+  void setNominals(const NominalSource& nominals);
+  NominalSource nominals() const;
+  /// What the nominals came out as ("sphere fitted to 18 points: radius 487.31 mm, form 0.004 mm"),
+  /// empty when there are none.
+  QString nominalsSummary() const { return nominalsSummary_; }
+
   /// True when the file can be read as the chosen kind (the Import button is enabled).
   bool canImport() const { return problem_.isEmpty(); }
   /// The problem that keeps the file from being imported (one line), empty when there is none.
@@ -120,6 +135,9 @@ class ImportDialog : public QDialog {
   void fillPreview(const CsvTable& table);
   void previewDmis();
   void importNow();
+  void buildNominalsBox();
+  /// Shows the element / reference controls that apply to the chosen source.
+  void updateNominalControls();
 
   Project project_;
   QString projectPath_;
@@ -146,6 +164,16 @@ class ImportDialog : public QDialog {
   QComboBox* taSign_;
   QCheckBox* embed_;
   QCheckBox* series_ = nullptr;
+  QGroupBox* nominalsBox_ = nullptr;
+  QComboBox* nominalFrom_ = nullptr;
+  QComboBox* nominalElement_ = nullptr;
+  QDoubleSpinBox* nominalRadius_ = nullptr;
+  QComboBox* nominalCriterion_ = nullptr;
+  QCheckBox* nominalInner_ = nullptr;
+  QCheckBox* nominalRobust_ = nullptr;
+  QComboBox* nominalReference_ = nullptr;
+  QComboBox* nominalPair_ = nullptr;
+  QString nominalsSummary_;
   QStringList seriesFiles_;
   QListWidget* rowProblems_;
   QLabel* detected_;

@@ -98,6 +98,8 @@ void writeDomain(ReportPainter& out, const ReportContext& context, DiagnosisDoma
         s.datasetPaths = rd.paths;  // a DMIS series: every file; empty: the one file above
       }
       if (!s.modelId.empty() && rd.ref.id == s.modelId) s.modelPath = rd.path.toStdString();
+      if (!s.nominals.reference.empty() && rd.ref.id == s.nominals.reference)
+        s.referencePath = rd.path.toStdString();
     }
     d = memoDiagnosis(context, s);
   } catch (const std::exception& e) {

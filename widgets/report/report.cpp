@@ -17,6 +17,7 @@
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
 #include "core/project/datasets.h"
+#include "core/project/nominals.h"
 #include "core/project/project.h"
 #include "core/study/study_check.h"
 #include "metrofit/version.h"
@@ -96,7 +97,8 @@ std::vector<ReportDataset> readDatasets(const Project& project, const QString& p
       d.columns.push_back(d.thermal->timeColumn);
       for (const ThermalChannel& c : d.thermal->channels) d.columns.push_back(c.name);
     } else if (ref.kind == dataset_kind::kProbePoints) {
-      d.probes = readProbePointsAnyFormat(path, 3, ref.csv);
+      // With its nominals from an element or a reference measurement where it says so.
+      d.probes = readProjectProbePoints(project, projectPath.toStdString(), ref, 3);
       d.rows = static_cast<long>(d.probes->points.size());
     } else if (ref.kind == dataset_kind::kSetupModel) {
       readFile(path);  // a JSON model: no rows, but it must be readable

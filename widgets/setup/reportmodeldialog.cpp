@@ -86,7 +86,13 @@ ReportModelDialog::ReportModelDialog(const ReportFeatures& report, const QString
                   .arg(QString::fromStdString(
                       base_.dimensions[static_cast<std::size_t>(modelDimensionFor(base_, report_, c))].id));
     } else if (!c.usable) {
-      state = tr("cannot be used: %1").arg(QString::fromStdString(c.why));
+      // core/project/report_model.cpp's two reasons, in the UI language.
+      QString why = QString::fromStdString(c.why);
+      if (c.why == "the report prints no nominal for it")
+        why = tr("the report prints no nominal for it");
+      else if (c.why == "an angle (deg), not a length a setup correction moves")
+        why = tr("an angle (deg), not a length a setup correction moves");
+      state = tr("cannot be used: %1").arg(why);
     } else if (!c.lower) {
       state = tr("no tolerance printed: takes ± the value below");
     }
