@@ -10,7 +10,9 @@
 #include <QMessageBox>
 #include <QVBoxLayout>
 #include <exception>
+#include <optional>
 
+#include "core/project/nominals.h"
 #include "core/project/project.h"
 #include "widgets/data/datasetview.h"
 #include "widgets/document/projectdocument.h"
@@ -51,7 +53,15 @@ class DatasetWindow : public QWidget {
     if (!d) return;
     shown_ = *d;
     setWindowTitle(DatasetActionsText::tr("%1 — data").arg(id_));
-    view_->showDatasetInBackground(document_->datasetPath(*d), *d);
+    // Measured points whose nominals are another dataset's points: that one resolved too.
+    std::optional<DatasetRef> reference;
+    try {
+      if (const DatasetRef* r = nominalReference(document_->project(), *d))
+        reference = document_->resolvedDataset(*r);
+    } catch (const std::exception&) {
+      // A reference that is not there: the view's read names it.
+    }
+    view_->showDatasetInBackground(document_->datasetPath(*d), *d, reference);
   }
 
  private:

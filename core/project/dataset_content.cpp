@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "core/common/error.h"
 #include "core/io/dmis.h"
@@ -11,6 +12,7 @@
 #include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
 #include "core/project/import_guess.h"
+#include "core/project/nominals.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
 
@@ -311,12 +313,48 @@ std::string columnDisplayUnit(const std::string& name) {
   return {};
 }
 
-DatasetContent readDatasetContent(const std::string& projectPath, const DatasetRef& dataset) {
-  return readDatasetContentFile(resolveDatasetPath(projectPath, dataset), dataset);
+DatasetContent readDatasetContent(const std::string& projectPath, const DatasetRef& dataset,
+                                  const Project* project) {
+  std::optional<DatasetRef> reference;
+  if (project) {
+    if (const DatasetRef* r = nominalReference(*project, dataset)) {
+      reference = *r;
+      reference->path = resolveDatasetPath(projectPath, *r);
+    }
+  }
+  return readDatasetContentFile(resolveDatasetPath(projectPath, dataset), dataset,
+                                reference ? &*reference : nullptr);
 }
 
-DatasetContent readDatasetContentFile(const std::string& file, const DatasetRef& dataset) {
+DatasetContent readDatasetContentFile(const std::string& file, const DatasetRef& dataset,
+                                      const DatasetRef* reference) {
   const std::string& kind = dataset.kind;
+  if (kind == dataset_kind::kProbePoints && !dataset.nominals.empty()) {
+    // Measured points whose nominals come from an element or a second measurement: the points as the
+    // studies read them, with each point's deviation before any matching (along the normal, or the
+    // distance for position-only points).
+    DatasetRef d = dataset;
+    d.path = file;
+    const ProbePointSet set = readProbePointDataset(d, reference, 1);
+    CsvTable points = parseCsv(probePointsToCsv(set), file);
+    std::vector<std::string> header = points.header();
+    header.push_back("d_mm");
+    std::vector<std::vector<std::string>> cells;
+    std::vector<long> lines;
+    for (std::size_t r = 0; r < points.rowCount(); ++r) {
+      std::vector<std::string> row;
+      for (std::size_t c = 0; c < points.columnCount(); ++c) row.push_back(points.cell(r, c));
+      const ProbePoint& p = set.points[r];
+      row.push_back(CsvWriter::formatNumber(std::round(set.deviation(r, p.nominal, p.normal) * 1e7) / 1e7));
+      cells.push_back(std::move(row));
+      lines.push_back(0);
+    }
+    const NominalSource& n = dataset.nominals;
+    const std::string format = n.from == "element" ? "measured points, nominals on the fitted " + n.element
+                                                   : "measured points, nominals from '" + n.reference + "'";
+    return columnsContent(CsvTable::fromCells(file, std::move(header), std::move(cells), std::move(lines)),
+                          format, file);
+  }
   if (kind == dataset_kind::kSetupModel) {
     const setup::Model model = setup::readModel(file);
     std::vector<std::vector<std::string>> cells;

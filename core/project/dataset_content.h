@@ -79,9 +79,15 @@ struct DatasetContent {
   std::vector<FeatureTableRow> features;
 };
 
-/// Reads a dataset of the project saved at `projectPath` for display (see the header comment).
-DatasetContent readDatasetContent(const std::string& projectPath, const DatasetRef& dataset);
-/// The same for a file already resolved (`file`), read as `dataset` says.
-DatasetContent readDatasetContentFile(const std::string& file, const DatasetRef& dataset);
+/// Reads a dataset of the project saved at `projectPath` for display (see the header comment). Probe
+/// points whose nominals come from elsewhere (core/project/nominals.h) are shown as the studies read
+/// them, with each point's deviation before matching (`d_mm`); a second measurement's reference is
+/// looked up in `project`.
+DatasetContent readDatasetContent(const std::string& projectPath, const DatasetRef& dataset,
+                                  const Project* project = nullptr);
+/// The same for a file already resolved (`file`), read as `dataset` says; `reference`: the resolved
+/// dataset of a second measurement the nominals come from (nullptr when there is none).
+DatasetContent readDatasetContentFile(const std::string& file, const DatasetRef& dataset,
+                                      const DatasetRef* reference = nullptr);
 
 }  // namespace metrofit

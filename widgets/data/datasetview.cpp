@@ -71,7 +71,12 @@ struct DatasetView::Reading {
   BackgroundRun<std::shared_ptr<const DatasetContent>> run;
   QString file;  ///< of the read going on
   /// A request made while a read was going on: done after it.
-  std::optional<std::pair<QString, DatasetRef>> next;
+  struct Request {
+    QString file;
+    DatasetRef dataset;
+    std::optional<DatasetRef> reference;
+  };
+  std::optional<Request> next;
 };
 
 DatasetView::DatasetView(QWidget* parent)
@@ -195,23 +200,25 @@ bool DatasetView::isReading() const {
   return reading_->run.isRunning() || reading_->next.has_value();
 }
 
-void DatasetView::showDatasetInBackground(const QString& file, const DatasetRef& dataset) {
+void DatasetView::showDatasetInBackground(const QString& file, const DatasetRef& dataset,
+                                          const std::optional<DatasetRef>& reference) {
   if (reading_->run.isRunning()) {
-    reading_->next = std::make_pair(file, dataset);
+    reading_->next = Reading::Request{file, dataset, reference};
     return;
   }
   reading_->file = file;
   summary_->setText(tr("Reading %1…").arg(QFileInfo(file).fileName()));
   summary_->show();
   const std::string path = QFile::encodeName(file).toStdString();
-  reading_->run.start([path, dataset](RunObserver&) {
-    return std::make_shared<const DatasetContent>(readDatasetContentFile(path, dataset));
+  reading_->run.start([path, dataset, reference](RunObserver&) {
+    return std::make_shared<const DatasetContent>(
+        readDatasetContentFile(path, dataset, reference ? &*reference : nullptr));
   });
 }
 
 void DatasetView::readingEnded(bool ok, const QString& message) {
   if (auto next = std::exchange(reading_->next, std::nullopt)) {
-    showDatasetInBackground(next->first, next->second);  // the last request wins
+    showDatasetInBackground(next->file, next->dataset, next->reference);  // the last request wins
     return;
   }
   if (ok) {
@@ -222,10 +229,11 @@ void DatasetView::readingEnded(bool ok, const QString& message) {
   emit datasetShown(ok);
 }
 
-bool DatasetView::showDataset(const QString& file, const DatasetRef& dataset) {
+bool DatasetView::showDataset(const QString& file, const DatasetRef& dataset,
+                              const std::optional<DatasetRef>& reference) {
   try {
-    setContent(std::make_shared<const DatasetContent>(
-        readDatasetContentFile(QFile::encodeName(file).toStdString(), dataset)));
+    setContent(std::make_shared<const DatasetContent>(readDatasetContentFile(
+        QFile::encodeName(file).toStdString(), dataset, reference ? &*reference : nullptr)));
     return true;
   } catch (const std::exception& e) {
     showError(file, QString::fromStdString(e.what()));

@@ -13,7 +13,10 @@
 #include <QString>
 #include <QWidget>
 #include <memory>
+#include <optional>
 #include <vector>
+
+#include "core/project/project.h"
 
 class QComboBox;
 class QLabel;
@@ -25,7 +28,6 @@ class QTableView;
 
 namespace metrofit {
 struct DatasetContent;
-struct DatasetRef;
 class DatasetTableModel;
 
 class DatasetView : public QWidget {
@@ -36,11 +38,15 @@ class DatasetView : public QWidget {
 
   /// Reads `file` as `dataset` says (its kind, dialect and mapping) and shows it; an error line when
   /// it cannot be read. Returns false on an error.
-  bool showDataset(const QString& file, const DatasetRef& dataset);
+  /// `reference`: probe points whose nominals are a second measurement's points (core/project/nominals.h),
+  /// that dataset with its path resolved.
+  bool showDataset(const QString& file, const DatasetRef& dataset,
+                   const std::optional<DatasetRef>& reference = std::nullopt);
   /// The same, read off the GUI thread (BackgroundRun, widgets/common/backgroundrun.h): the summary line
   /// says "Reading <file>…" until the content (or the error line) is shown and datasetShown() is
   /// emitted. A call while a read is going on is done after it (the last one wins).
-  void showDatasetInBackground(const QString& file, const DatasetRef& dataset);
+  void showDatasetInBackground(const QString& file, const DatasetRef& dataset,
+                               const std::optional<DatasetRef>& reference = std::nullopt);
   /// True while a background read is going on.
   bool isReading() const;
   /// Shows content already read.

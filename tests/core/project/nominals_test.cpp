@@ -13,6 +13,7 @@
 
 #include "core/common/error.h"
 #include "core/io/json_util.h"
+#include "core/project/dataset_content.h"
 #include "core/project/datasets.h"
 #include "testsupport.h"
 
@@ -338,6 +339,23 @@ TEST(Nominals, ProjectAddTakesRawPointsWithAnElementOrAReference) {
   saveProject(p, projectPath);
   EXPECT_EQ(loadProject(projectPath), p);
   EXPECT_EQ(summarizeDataset(projectPath, ds).rows, 10);
+
+  // The data view shows the points as the studies read them, with each deviation before matching.
+  const DatasetContent content = readDatasetContent(projectPath, ds, &p);
+  EXPECT_EQ(content.format, "measured points, nominals from 'first'");
+  const CsvTable& t = content.table;
+  ASSERT_EQ(t.rowCount(), 10u);
+  const std::size_t d = t.requireColumn("d_mm"), qx = t.requireColumn("qx"), px = t.requireColumn("px");
+  EXPECT_EQ(t.cell(0, t.requireColumn("id")), "K10");
+  for (std::size_t r = 0; r < t.rowCount(); ++r) {
+    // Position-only points: the distance, here the 3 um shift along x (to the file's 6 decimals).
+    EXPECT_NEAR(t.number(r, d), 0.003, 2e-6);
+    EXPECT_NEAR(t.number(r, px) - t.number(r, qx), 0.003, 2e-6);
+  }
+  EXPECT_EQ(content.units[d], "mm");
+  const DatasetContent sphere = readDatasetContent(projectPath, first, &p);
+  EXPECT_EQ(sphere.format, "measured points, nominals on the fitted sphere");
+  EXPECT_GE(sphere.table.columnIndex("nz"), 0);
 }
 
 }  // namespace
