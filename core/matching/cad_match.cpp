@@ -161,7 +161,8 @@ CadMatchResult matchToCad(const ProbePointSet& measured, const geometry::MeshSea
   res.before = projectToCad(measured, cad, Pose{});
   const std::string label = o.method == MatchMethod::Minimax ? "minimax fit to the CAD surface"
                                                              : "least-squares fit to the CAD surface";
-  requireDeterminable(res.before, mr.locks, o.allowScale, FitKind::Minimax, label);
+  requireDeterminable(res.before, mr.locks, o.allowScale,
+                      o.method == MatchMethod::Minimax ? FitKind::Minimax : FitKind::PointToPlane, label);
   mr.before = evaluateTolerance(res.before, Pose{}, o.toleranceMm);
 
   Pose pose = paramsWithLocks(Pose{}, mr.locks).pose();
