@@ -1,8 +1,11 @@
 #include "core/geometry/mesh_search.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include <nanoflann.hpp>
@@ -26,8 +29,79 @@ struct SampleCloud {
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SampleCloud>,
                                                  SampleCloud, 3, std::size_t>;
 
+/// Pseudonormals of the edges and vertices of every triangle (see the header): vertices welded by
+/// identical coordinates, an edge's the sum of the normals of the triangles that share it, a vertex's
+/// the sum of its triangles' normals weighted by their angles at it (Baerentzen and Aanaes 2005).
+struct Pseudonormals {
+  std::vector<std::array<Eigen::Vector3d, 3>> edge;    ///< AB, BC, CA
+  std::vector<std::array<Eigen::Vector3d, 3>> vertex;  ///< A, B, C
+};
+
+Pseudonormals pseudonormals(const TriangleMesh& mesh) {
+  const std::size_t n = mesh.triangles.size();
+  std::map<std::array<double, 3>, std::size_t> ids;
+  std::vector<std::array<std::size_t, 3>> tv(n);
+  for (std::size_t t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d& v = mesh.triangles[t].v[static_cast<std::size_t>(k)];
+      tv[t][static_cast<std::size_t>(k)] =
+          ids.emplace(std::array<double, 3>{v.x(), v.y(), v.z()}, ids.size()).first->second;
+    }
+  std::vector<Eigen::Vector3d> vsum(ids.size(), Eigen::Vector3d::Zero());
+  std::map<std::pair<std::size_t, std::size_t>, Eigen::Vector3d> esum;
+  auto key = [](std::size_t a, std::size_t b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); };
+  for (std::size_t t = 0; t < n; ++t) {
+    const Triangle& tri = mesh.triangles[t];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Eigen::Vector3d e1 = tri.v[(k + 1) % 3] - tri.v[k], e2 = tri.v[(k + 2) % 3] - tri.v[k];
+      const double c = std::clamp(e1.dot(e2) / (e1.norm() * e2.norm()), -1.0, 1.0);
+      vsum[tv[t][k]] += std::acos(c) * tri.normal;
+      auto [it, fresh] = esum.emplace(key(tv[t][k], tv[t][(k + 1) % 3]), Eigen::Vector3d::Zero());
+      it->second += tri.normal;
+    }
+  }
+  auto unit = [](const Eigen::Vector3d& v, const Eigen::Vector3d& fallback) {
+    const double l = v.norm();
+    return l > 0.0 ? Eigen::Vector3d(v / l) : fallback;
+  };
+  Pseudonormals p;
+  p.edge.resize(n);
+  p.vertex.resize(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    const Eigen::Vector3d& nt = mesh.triangles[t].normal;
+    for (std::size_t k = 0; k < 3; ++k) {
+      p.vertex[t][k] = unit(vsum[tv[t][k]], nt);
+      p.edge[t][k] = unit(esum[key(tv[t][k], tv[t][(k + 1) % 3])], nt);
+    }
+  }
+  return p;
+}
+
+/// The normal that decides the sign at the closest point's feature.
+const Eigen::Vector3d& signNormal(const TriangleMesh& mesh, const Pseudonormals& pn, std::size_t t,
+                                  TriangleFeature f) {
+  switch (f) {
+    case TriangleFeature::Face:
+      return mesh.triangles[t].normal;
+    case TriangleFeature::EdgeAB:
+      return pn.edge[t][0];
+    case TriangleFeature::EdgeBC:
+      return pn.edge[t][1];
+    case TriangleFeature::EdgeCA:
+      return pn.edge[t][2];
+    case TriangleFeature::VertexA:
+      return pn.vertex[t][0];
+    case TriangleFeature::VertexB:
+      return pn.vertex[t][1];
+    case TriangleFeature::VertexC:
+      return pn.vertex[t][2];
+  }
+  return mesh.triangles[t].normal;
+}
+
 /// Fills the answer for triangle `t` at its closest point.
-MeshPoint answer(const TriangleMesh& mesh, std::size_t t, const TrianglePoint& tp, const Eigen::Vector3d& x) {
+MeshPoint answer(const TriangleMesh& mesh, const Pseudonormals& pn, std::size_t t, const TrianglePoint& tp,
+                 const Eigen::Vector3d& x) {
   MeshPoint m;
   m.point = tp.point;
   m.triangle = t;
@@ -35,7 +109,7 @@ MeshPoint answer(const TriangleMesh& mesh, std::size_t t, const TrianglePoint& t
   const Eigen::Vector3d r = x - tp.point;
   m.distance = r.norm();
   m.normal = mesh.triangles[t].normal;
-  const double sign = r.dot(m.normal) >= 0.0 ? 1.0 : -1.0;
+  const double sign = r.dot(signNormal(mesh, pn, t, tp.feature)) >= 0.0 ? 1.0 : -1.0;
   m.signedDistance = sign * m.distance;
   m.direction = (tp.feature == TriangleFeature::Face || m.distance == 0.0)
                     ? m.normal
@@ -47,6 +121,7 @@ MeshPoint answer(const TriangleMesh& mesh, std::size_t t, const TrianglePoint& t
 
 struct MeshSearch::Impl {
   TriangleMesh mesh;
+  Pseudonormals pn;
   SampleCloud cloud;
   std::vector<std::size_t> sampleTriangle;
   std::vector<double> sampleRadius;
@@ -90,6 +165,7 @@ MeshSearch::MeshSearch(TriangleMesh mesh) : impl_(std::make_unique<Impl>()) {
     throw ValidationError(ErrorContext{mesh.source, 0, 0, {}}, "the mesh has no triangles");
   Impl& m = *impl_;
   m.mesh = std::move(mesh);
+  m.pn = pseudonormals(m.mesh);
   const std::size_t n = m.mesh.triangles.size();
   std::vector<double> radius(n);
   for (std::size_t t = 0; t < n; ++t) {
@@ -156,28 +232,27 @@ MeshPoint MeshSearch::closest(const Eigen::Vector3d& x) const {
   Impl::Closest result(*impl_, x);
   const double q[3] = {x.x(), x.y(), x.z()};
   impl_->tree->findNeighbors(result, q, nanoflann::SearchParams());
-  MeshPoint m = answer(impl_->mesh, result.bestTriangle, result.bestPoint, x);
+  MeshPoint m = answer(impl_->mesh, impl_->pn, result.bestTriangle, result.bestPoint, x);
   m.trianglesTested = result.tested;
   return m;
 }
 
-MeshPoint closestPointBruteForce(const TriangleMesh& mesh, const Eigen::Vector3d& x) {
-  if (mesh.triangles.empty())
-    throw ValidationError(ErrorContext{mesh.source, 0, 0, {}}, "the mesh has no triangles");
+MeshPoint MeshSearch::closestByBruteForce(const Eigen::Vector3d& x) const {
+  const TriangleMesh& mesh = impl_->mesh;
   double best = std::numeric_limits<double>::infinity();
   std::size_t bestT = 0;
   TrianglePoint bestP;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& v = mesh.triangles[t].v;
     const TrianglePoint tp = closestPointOnTriangle(x, v[0], v[1], v[2]);
-    const double d = (x - tp.point).squaredNorm();
+    const double d = (x - tp.point).norm();
     if (d < best) {
       best = d;
       bestT = t;
       bestP = tp;
     }
   }
-  MeshPoint m = answer(mesh, bestT, bestP, x);
+  MeshPoint m = answer(mesh, impl_->pn, bestT, bestP, x);
   m.trianglesTested = mesh.triangles.size();
   return m;
 }

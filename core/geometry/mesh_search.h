@@ -19,13 +19,17 @@
 // sub-triangle's own bound |x - s| - h already reaches best. Hence the result is the closest triangle
 // (ties between triangles that share the closest point, e.g. at an edge, are broken arbitrarily).
 //
-// Signed distance: +|x - y| when x lies on the side the closest triangle's outward normal points to
-// ((x - y) . n >= 0), -|x - y| else. `direction` is the unit vector along which that distance is
-// measured, out of the material: the triangle normal when y is inside the face (then x - y is
-// parallel to it) or x is on the surface, else sign * (x - y) / |x - y| (y on an edge or a vertex). It
-// is the gradient of the signed distance, which point-to-plane matching needs (cad_match.h). At a
-// vertex the sign from one adjacent triangle's normal can be wrong for sharp concave/convex mixes (no
-// angle-weighted pseudo-normal is used); at edges and in faces it is right.
+// Signed distance: +|x - y| when x lies outside, (x - y) . N >= 0, -|x - y| else, with N the
+// pseudonormal of the feature y lies in (J. A. Baerentzen and H. Aanaes, "Signed distance computation
+// using the angle weighted pseudonormal", IEEE TVCG 11(3), 2005): the triangle's normal in a face, the
+// sum of the normals of the two triangles sharing an edge, the angle-weighted sum of the normals of the
+// triangles around a vertex (vertices welded where their coordinates are identical, as STL repeats
+// them). For a closed, consistently oriented mesh this sign is right everywhere, also at sharp edges
+// and vertices where one triangle's normal would give the wrong side. `direction` is the unit vector
+// along which the distance is measured, out of the material: the triangle normal when y is inside the
+// face (then x - y is parallel to it) or x is on the surface, else sign * (x - y) / |x - y| (y on an
+// edge or a vertex). It is the gradient of the signed distance, which point-to-plane matching needs
+// (cad_match.h).
 #include <cstddef>
 #include <memory>
 
@@ -56,6 +60,8 @@ class MeshSearch {
 
   /// The closest point of the mesh to x (exact; see the header). x must be finite.
   MeshPoint closest(const Eigen::Vector3d& x) const;
+  /// The same answer by testing every triangle (for benchmarks and checks).
+  MeshPoint closestByBruteForce(const Eigen::Vector3d& x) const;
 
   const TriangleMesh& mesh() const;
   std::size_t sampleCount() const;
@@ -65,8 +71,5 @@ class MeshSearch {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-/// The same answer by testing every triangle (for benchmarks and small meshes).
-MeshPoint closestPointBruteForce(const TriangleMesh& mesh, const Eigen::Vector3d& x);
 
 }  // namespace metrofit::geometry

@@ -1,7 +1,7 @@
 // metrofit-bench --cad (bench_cad.h). Protocol: a UV sphere of radius 20 mm tessellated into n
 // triangles (every vertex on the sphere) for n from about 2k to 130k; 2000 query points within +-2 mm
 // of the sphere (seed 1). The k-d tree (MeshSearch, built once; the build time is reported
-// separately) and closestPointBruteForce answer every query; the answers must agree (the tree is
+// separately) and MeshSearch::closestByBruteForce answer every query; the answers must agree (the tree is
 // exact; the largest difference is reported), the figure is the median time per query and the ratio brute
 // force / tree. Then matchToCad of 1000 points on the largest mesh (posture 0.5 deg, 0.3 mm; rotations
 // locked, the sphere fixes only the translation).
@@ -90,7 +90,7 @@ nlohmann::json benchCad(int repeat) {
     const int bruteRepeat = std::max(1, std::min(repeat, mesh.triangles.size() > 20000 ? 1 : repeat));
     const double bruteS = medianSeconds(bruteRepeat, [&] {
       for (std::size_t k = 0; k < queries.size(); ++k)
-        brute[k] = geometry::closestPointBruteForce(mesh, queries[k]).distance;
+        brute[k] = search.closestByBruteForce(queries[k]).distance;
     });
     double worst = 0.0;
     for (std::size_t k = 0; k < queries.size(); ++k) worst = std::max(worst, std::abs(tree[k] - brute[k]));

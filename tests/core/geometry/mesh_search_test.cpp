@@ -123,7 +123,7 @@ TEST(MeshSearch, KdTreeEqualsBruteForce) {
     EXPECT_NEAR(m.direction.norm(), 1.0, 1e-12);
     tested += static_cast<double>(m.trianglesTested);
     // The library's own brute force agrees too.
-    EXPECT_EQ(closestPointBruteForce(mesh, x).distance, brute);
+    EXPECT_EQ(search.closestByBruteForce(x).distance, brute);
   }
   // The tree tests a small share of the triangles.
   EXPECT_LT(tested / n, 0.1 * static_cast<double>(mesh.triangles.size()));
@@ -192,6 +192,37 @@ TEST(MeshSearch, PlaneIsExact) {
   EXPECT_NEAR(m.distance, 5.0, 1e-12);
   EXPECT_NEAR(m.signedDistance, 5.0, 1e-12);
   EXPECT_LE((m.direction - Eigen::Vector3d(0.6, 0, 0.8)).norm(), 1e-12);
+}
+
+TEST(MeshSearch, SignAtSharpEdgesAndVertices) {
+  // A flat tetrahedron: dihedral angles far below 90 deg at its rim, so near an edge or a vertex one
+  // adjacent triangle's normal can point away from the point's side. Inside / outside is decided here
+  // from the four face planes of the convex solid.
+  const Eigen::Vector3d P[4] = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {2, 2, 1}};
+  const Eigen::Vector3d g = (P[0] + P[1] + P[2] + P[3]) / 4.0;
+  std::vector<test::Facet> f;
+  for (const auto& idx : {std::array<int, 3>{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}}) {
+    test::Facet t{P[idx[0]], P[idx[1]], P[idx[2]]};
+    f.push_back(test::oriented(t, (t.a + t.b + t.c) / 3.0 - g));
+  }
+  const MeshSearch search(meshOf(f));
+  Rng rng(13);
+  int checked = 0, oneNormalWrong = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const Eigen::Vector3d x(rng.uniform(-2, 12), rng.uniform(-2, 12), rng.uniform(-1.5, 2.5));
+    bool inside = true;
+    for (const test::Facet& t : f) inside = inside && t.normal().dot(x - t.a) < 0.0;
+    const MeshPoint m = search.closest(x);
+    if (m.distance < 1e-9) continue;
+    ++checked;
+    ASSERT_EQ(m.signedDistance < 0.0, inside) << x.transpose() << " feature " << static_cast<int>(m.feature);
+    // The sign from the closest triangle's own normal alone would be wrong here:
+    oneNormalWrong += ((x - m.point).dot(m.normal) < 0.0) != inside;
+    // The direction points from the surface towards x (outside) or away from it (inside).
+    EXPECT_NEAR(m.direction.dot(x - m.point), m.signedDistance, 1e-9);
+  }
+  EXPECT_GT(checked, 19000);
+  EXPECT_GT(oneNormalWrong, 10);  // the case is real
 }
 
 TEST(MeshSearch, EmptyMeshIsRefused) {
