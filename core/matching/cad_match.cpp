@@ -153,6 +153,7 @@ CadMatchResult matchToCad(const ProbePointSet& measured, const geometry::MeshSea
   CadMatchResult res;
   res.cadSource = cad.mesh().source;
   res.triangles = cad.mesh().triangles.size();
+  res.windingDisagreements = cad.mesh().windingDisagreements;
   MatchResult& mr = res.match;
   mr.method = o.method;
   mr.allowScale = o.allowScale;
@@ -226,6 +227,7 @@ nlohmann::json toJson(const CadMatchResult& r) {
   j["cad"] = {{"file", r.cadSource},
               {"triangles", r.triangles},
               {"max_distance_mm", r.maxDistanceMm},
+              {"winding_disagreements", r.windingDisagreements},
               {"fit", r.match.method == MatchMethod::Minimax
                           ? "minimax point-to-plane, iterated closest points"
                           : "least-squares point-to-plane, iterated closest points"}};

@@ -61,6 +61,7 @@ struct CadMatchResult {
   std::vector<geometry::MeshPoint> closestAfter;  ///< the mesh answers behind `after`
   std::string cadSource;
   std::size_t triangles = 0;
+  std::size_t windingDisagreements = 0;  ///< geometry::TriangleMesh::windingDisagreements
   double maxDistanceMm = 0.0;  ///< largest |p_i - P(q_i)| after the fit (the point-to-surface distance)
 };
 
@@ -76,7 +77,7 @@ ProbePointSet projectToCad(const ProbePointSet& measured, const geometry::MeshSe
 
 /// The match JSON (matching.h toJson of the result and `after`: method, rotation_deg, translation_mm,
 /// rmse_mm, max_abs_mm, out_of_tolerance, per_point, trace, ...) plus "cad": {file, triangles,
-/// max_distance_mm, iterations, convergence_mm, winding_disagreements}.
+/// max_distance_mm, fit, winding_disagreements (facets whose stored normal contradicts their winding)}.
 nlohmann::json toJson(const CadMatchResult& result);
 
 /// Measured points only (`match --cad`): columns `id,px,py,pz` or `id,x_mm,y_mm,z_mm` (an optional

@@ -306,6 +306,7 @@ TEST(CadMatch, JsonHasTheMatchKeysPerPointAndCad) {
   EXPECT_EQ(j["cad"]["file"], "part.stl");
   EXPECT_EQ(j["cad"]["triangles"], part.facets.size());
   EXPECT_EQ(j["cad"]["max_distance_mm"].get<double>(), r.maxDistanceMm);
+  EXPECT_EQ(j["cad"]["winding_disagreements"], 0);
   ASSERT_EQ(j["per_point"].size(), points.points.size());
   const auto& p0 = j["per_point"][0];
   EXPECT_EQ(p0["id"], "P1");
