@@ -129,6 +129,31 @@ TEST(MeshSearch, KdTreeEqualsBruteForce) {
   EXPECT_LT(tested / n, 0.1 * static_cast<double>(mesh.triangles.size()));
 }
 
+TEST(MeshSearch, KdTreeEqualsBruteForceOnARandomSoup) {
+  // 400 triangles of sizes from 0.01 to 60 mm in random places and orientations (slivers included):
+  // the cover radius is doubled until the samples fit, and the search must stay exact.
+  Rng rng(21);
+  TriangleMesh mesh;
+  mesh.source = "soup";
+  while (mesh.triangles.size() < 400) {
+    const double size = std::pow(10.0, rng.uniform(-2.0, 1.8));
+    const Eigen::Vector3d c(rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-50, 50));
+    Triangle t;
+    for (auto& v : t.v) v = c + size * Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal());
+    const Eigen::Vector3d n = (t.v[1] - t.v[0]).cross(t.v[2] - t.v[0]);
+    if (n.norm() < 1e-9 * size * size) continue;
+    t.normal = n.normalized();
+    mesh.triangles.push_back(t);
+  }
+  const MeshSearch search(mesh);
+  for (int k = 0; k < 3000; ++k) {
+    const Eigen::Vector3d x(rng.uniform(-80, 80), rng.uniform(-80, 80), rng.uniform(-80, 80));
+    std::size_t bt = 0;
+    const double brute = bruteForceDistance(mesh, x, &bt);
+    ASSERT_EQ(search.closest(x).distance, brute) << "point " << k << ", brute force triangle " << bt;
+  }
+}
+
 TEST(MeshSearch, SphereWithinChordError) {
   const double R = 10.0;
   const auto f = test::sphereFacets({1, 2, 3}, R, 144, 72);
