@@ -215,11 +215,12 @@ TriangleMesh parseStl(std::string_view bytes, const std::string& source) {
                 std::to_string(expected) + " bytes, the file has " + std::to_string(bytes.size())
           : "too short for a binary STL (" + std::to_string(bytes.size()) + " bytes, the header alone is 84)";
   if (startsWithSolid(bytes)) {
-    // Text, unless it holds bytes no ASCII STL has (a binary file with "solid" in its header).
+    // Text, unless it holds control bytes no ASCII STL has (a binary file with "solid" in its header:
+    // its triangle count and coordinates bring NULs). Bytes >= 128 are allowed (a UTF-8 solid name).
     bool text = true;
     for (const char ch : bytes.substr(0, std::min<std::size_t>(bytes.size(), 512))) {
       const auto u = static_cast<unsigned char>(ch);
-      if (u == 0 || u >= 128 || (u < 32 && !std::isspace(u))) {
+      if (u == 0 || (u < 32 && !std::isspace(u)) || u == 127) {
         text = false;
         break;
       }

@@ -81,6 +81,16 @@ TEST(Stl, KeywordsInAnyCaseAndSeveralSolids) {
   EXPECT_EQ(m.triangles[2].v[0].z(), 5.0);
 }
 
+TEST(Stl, Utf8SolidNameAndCrLf) {
+  std::string a = test::asciiStl(twoFacets(),
+                                 "Teil \xC3\x98"
+                                 "20 Flansch");  // "Teil Ø20 Flansch"
+  std::string crlf;
+  for (char c : a) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const TriangleMesh m = parseStl(crlf, "flansch.stl");
+  expectSameFacets(m, twoFacets(), 0.0);
+}
+
 TEST(Stl, StoredNormalDecidesTheOutsideWindingOtherwise) {
   // A facet wound clockwise seen from +z (winding normal -z) whose stored normal says +z.
   const std::string flipped =
