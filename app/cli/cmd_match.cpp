@@ -9,6 +9,14 @@
 //         [--nominal-element E [--nominal-radius R] [--nominal-criterion C] [--nominal-robust] [--inner]]
 //         [--nominal-reference F2 [--pair id|order]]   (--data of measured points only;
 //         core/project/nominals.h)
+//   match --cad PART.stl --data POINTS.csv [--method closed-form|minimax] [--lock ...] [--tolerance T]
+//         [--allow-scale] [--per-point F] [--machine ...] [--frame ...] [--out F]
+//
+// --cad matches measured points only (POINTS.csv: id,px,py,pz or id,x_mm,y_mm,z_mm) to the surface of
+// an STL part (core/matching/cad_match.h: closest points on the mesh, point-to-plane least squares or
+// minimax with the DOF locks, repeated until the posture stops changing); the JSON adds "cad": {file,
+// triangles, max_distance_mm, fit}. The method defaults to closed-form (least squares); sade and
+// ga-simplex need nominal point pairs and are refused, as are --reference and --remeasure.
 //
 // --frame writes the posture as a controller frame (core/machine/controller_frame.h: HEIDENHAIN
 // datum shift + PLANE SPATIAL, SINUMERIK TRANS + AROT, FANUC G68.2 Euler angles) to --frame-out and
@@ -37,10 +45,13 @@
 #include "app/cli/commands.h"
 #include "core/common/error.h"
 #include "core/common/numformat.h"
+#include "core/geometry/mesh_search.h"
+#include "core/geometry/stl.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
 #include "core/machine/controller_frame.h"
 #include "core/machine/machine.h"
+#include "core/matching/cad_match.h"
 #include "core/matching/hole_table.h"
 #include "core/matching/matching.h"
 #include "core/matching/probe_points.h"
@@ -56,7 +67,7 @@ namespace {
 /// matching study without these keys uses, so the CLI, the page and the report agree.
 struct MatchArgs {
   std::string data, method = matching::toString(MatchingSettings{}.method), machine = "xfyzba", machineDef,
-                    lock, reference, out, frame, frameOut, perPoint;
+                    lock, reference, out, frame, frameOut, perPoint, cad;
   /// Nominals for a file of measured points only (core/project/nominals.h).
   NominalSource nominals;
   std::string nominalReferenceFile;
@@ -101,12 +112,92 @@ machine::MachineDefinition machineFor(const MatchArgs& a, bool machineGiven) {
   return def;
 }
 
-int runMatch(const MatchArgs& a, bool machineGiven) {
+/// --frame: writes the posture as a controller frame and adds "frame" to the JSON.
+void writeFrame(const MatchArgs& a, const matching::Pose& pose, nlohmann::json& j) {
+  const machine::FrameFormat ff = machine::parseFrameFormat(a.frame, "--frame");
+  machine::FrameOptions fo;
+  fo.decimals = a.frameDecimals;
+  fo.title = a.data;
+  // The TNC lists a program under its file name: BEGIN PGM takes the name of --frame-out, made valid.
+  fo.programName = machine::frameProgramName(a.frameOut);
+  writeFileAtomic(a.frameOut, machine::writeControllerFrame(pose.rotation, pose.translation, ff, fo));
+  const auto angles = ff == machine::FrameFormat::Fanuc ? machine::eulerZxzAnglesDeg(pose.rotation)
+                                                        : machine::spatialAnglesDeg(pose.rotation);
+  j["frame"] = {{"format", a.frame},
+                {"file", a.frameOut},
+                {"angles_deg", {angles[0], angles[1], angles[2]}},
+                {"angles", ff == machine::FrameFormat::Fanuc        ? "I,J,K: Rz(I) Rx(J) Rz(K)"
+                           : ff == machine::FrameFormat::Heidenhain ? "SPA,SPB,SPC: Rz(SPC) Ry(SPB) Rx(SPA)"
+                                                                    : "X,Y,Z: Rz(Z) Ry(Y) Rx(X)"}};
+}
+
+/// match --cad: measured points against an STL part (core/matching/cad_match.h).
+int runCadMatch(const MatchArgs& a, bool machineGiven, bool methodGiven) {
+  using namespace matching;
+  if (!a.reference.empty())
+    throw OptionsError(ErrorContext{{}, 0, 0, "--reference"},
+                       "does not apply with --cad (there is no rough matching of point pairs)");
+  if (a.remeasure) throw OptionsError(ErrorContext{{}, 0, 0, "--remeasure"}, "is not available with --cad");
+  CadMatchOptions o;
+  o.method = methodGiven ? parseMatchMethod(a.method, "--method") : MatchMethod::ClosedForm;
+  o.toleranceMm = a.tolerance;
+  o.allowScale = a.allowScale;
+  o.locks = DofLocks::parse(a.lock, "--lock");
+  {
+    std::string why;
+    if (!o.isValid(&why)) throw OptionsError(ErrorContext{{}, 0, 0, "--method"}, why);
+  }
+  const ProbePointSet points = readMeasuredPoints(a.data, csvOptions());
+  const geometry::MeshSearch cad(geometry::readStl(a.cad));
+  const machine::MachineDefinition def = machineFor(a, machineGiven);
+
+  const CadMatchResult r = [&] {
+    TerminalProgress progress([](const IterationSummary& s) {
+      return "match --cad: iteration " + std::to_string(s.iteration) + ", " + fmt(s.best) + " mm";
+    });
+    return matchToCad(points, cad, o, progress.observer());
+  }();
+
+  const machine::Adjustment adj =
+      machine::adjustmentFor(def, r.match.pose.rotation, r.match.pose.translation);
+  nlohmann::json j = toJson(r);
+  nlohmann::json m = machine::adjustmentToJson(adj);
+  m["definition"] = def.toJson();
+  j["machine"] = std::move(m);
+  j["data"] = a.data;
+  if (!a.frame.empty()) writeFrame(a, r.match.pose, j);
+  if (!a.perPoint.empty()) writeFileAtomic(a.perPoint, perPointCsv(r.match.after, r.after));
+  writeResult(a.out, dumpJson(j));
+
+  const auto names = machine::rotaryAxisNames(def.topology);
+  std::string line = "match: " + std::string(toString(o.method)) + " to " + r.cadSource + " (" +
+                     std::to_string(r.triangles) + " triangles) on " + std::to_string(points.points.size()) +
+                     " points of " + a.data + ": rmse " + fmt(r.match.after.overall.rmseMm) +
+                     " mm, max |dev| " + fmt(r.match.after.overall.maxAbsMm) + " mm, out of tolerance " +
+                     std::to_string(r.match.before.overall.outOfTolerance) + " -> " +
+                     std::to_string(r.match.after.overall.outOfTolerance) + " (+-" + fmt(o.toleranceMm) +
+                     " mm); " + r.match.run.message + "; " + machine::topologyName(def.topology) + " S" +
+                     names[0] + " " + fmt(adj.rotaryDeg[0]) + " deg, S" + names[1] + " " +
+                     fmt(adj.rotaryDeg[1]) + " deg";
+  if (!adj.withinTravel) line += " (OUTSIDE TRAVEL: " + adj.travelMessage + ")";
+  if (!a.frame.empty()) line += "; " + a.frame + " frame -> " + a.frameOut;
+  std::fprintf(stderr, "%s\n", line.c_str());
+  return 0;
+}
+
+int runMatch(const MatchArgs& a, bool machineGiven, bool methodGiven) {
   using namespace matching;
   if (!a.frame.empty() && a.frameOut.empty())
     throw OptionsError(ErrorContext{{}, 0, 0, "--frame"}, "needs --frame-out FILE");
   if (a.frame.empty() && !a.frameOut.empty())
     throw OptionsError(ErrorContext{{}, 0, 0, "--frame-out"}, "needs --frame heidenhain|siemens|fanuc");
+  if (!a.cad.empty()) {
+    if (!a.nominals.element.empty() || !a.nominalReferenceFile.empty())
+      throw OptionsError(
+          ErrorContext{{}, 0, 0, "--cad"},
+          "the CAD part is the nominal: --nominal-element and --nominal-reference do not apply");
+    return runCadMatch(a, machineGiven, methodGiven);
+  }
   const ProbePointSet set = [&] {
     if (a.nominals.element.empty() && a.nominalReferenceFile.empty()) {
       if (!(a.nominals == NominalSource{}))
@@ -156,23 +247,7 @@ int runMatch(const MatchArgs& a, bool machineGiven) {
   m["definition"] = def.toJson();
   j["machine"] = std::move(m);
   j["data"] = a.data;
-  if (!a.frame.empty()) {
-    const machine::FrameFormat ff = machine::parseFrameFormat(a.frame, "--frame");
-    machine::FrameOptions fo;
-    fo.decimals = a.frameDecimals;
-    fo.title = a.data;
-    // The TNC lists a program under its file name: BEGIN PGM takes the name of --frame-out, made valid.
-    fo.programName = machine::frameProgramName(a.frameOut);
-    writeFileAtomic(a.frameOut, machine::writeControllerFrame(r.pose.rotation, r.pose.translation, ff, fo));
-    const auto angles = ff == machine::FrameFormat::Fanuc ? machine::eulerZxzAnglesDeg(r.pose.rotation)
-                                                          : machine::spatialAnglesDeg(r.pose.rotation);
-    j["frame"] = {{"format", a.frame},
-                  {"file", a.frameOut},
-                  {"angles_deg", {angles[0], angles[1], angles[2]}},
-                  {"angles", ff == machine::FrameFormat::Fanuc        ? "I,J,K: Rz(I) Rx(J) Rz(K)"
-                             : ff == machine::FrameFormat::Heidenhain ? "SPA,SPB,SPC: Rz(SPC) Ry(SPB) Rx(SPA)"
-                                                                      : "X,Y,Z: Rz(Z) Ry(Y) Rx(X)"}};
-  }
+  if (!a.frame.empty()) writeFrame(a, r.pose, j);
   std::optional<RemeasureResult> loop;
   if (a.remeasure) {
     RemeasureOptions ro;
@@ -211,16 +286,20 @@ void registerMatchCommand(CLI::App& app) {
   auto a = std::make_shared<MatchArgs>();
   auto* sub = app.add_subcommand("match", "Workpiece posture matching and 5-axis machine adjustment");
   existingFile(
-      sub->add_option(
-             "--data", a->data,
-             "Probe points: CSV (id,surface,qx,qy,qz,nx,ny,nz,px,py,pz) or a PC-DMIS hole-table report")
+      sub->add_option("--data", a->data,
+                      "Probe points: CSV (id,surface,qx,qy,qz,nx,ny,nz,px,py,pz) or a PC-DMIS hole-table "
+                      "report; with --cad measured points only (id,px,py,pz or id,x_mm,y_mm,z_mm)")
           ->required());
+  existingFile(sub->add_option(
+      "--cad", a->cad,
+      "CAD nominal: an STL part (ASCII or binary, mm); the measured points are matched to its surface"));
   sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")
       ->check(positiveNumber())
       ->capture_default_str();
-  sub->add_option("--method", a->method, "sade|ga-simplex|closed-form|minimax")
-      ->check(CLI::IsMember({"sade", "ga-simplex", "closed-form", "minimax"}))
-      ->capture_default_str();
+  auto* methodOpt = sub->add_option("--method", a->method,
+                                    "sade|ga-simplex|closed-form|minimax (with --cad: closed-form|minimax)")
+                        ->check(CLI::IsMember({"sade", "ga-simplex", "closed-form", "minimax"}))
+                        ->capture_default_str();
   sub->add_flag("--allow-scale", a->allowScale, "Fit an isotropic scale too");
   auto* machineOpt =
       sub->add_option("--machine", a->machine, "Machine topology: xfyzba|ac-table|bc-table|head-table")
@@ -270,9 +349,9 @@ void registerMatchCommand(CLI::App& app) {
   addSeed(sub, a->seed);
   addCsvOptions(sub);
   addOut(sub, a->out);
-  sub->callback([a, machineOpt] {
-    const bool machineGiven = machineOpt->count() > 0;
-    selectRunner([a, machineGiven]() -> int { return runMatch(*a, machineGiven); });
+  sub->callback([a, machineOpt, methodOpt] {
+    const bool machineGiven = machineOpt->count() > 0, methodGiven = methodOpt->count() > 0;
+    selectRunner([a, machineGiven, methodGiven]() -> int { return runMatch(*a, machineGiven, methodGiven); });
   });
 }
 

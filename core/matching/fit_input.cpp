@@ -51,11 +51,15 @@ void requireDeterminable(const ProbePointSet& set, const DofLocks& locks, bool a
   const std::size_t k = names.size();
   const std::size_t n = set.points.size();
   const bool rotationFree = !locks.locked[0] || !locks.locked[1] || !locks.locked[2];
-  const bool alongNormals = kind == FitKind::Minimax && set.hasNormals;
+  const bool alongNormals = (kind == FitKind::Minimax || kind == FitKind::PointToPlane) && set.hasNormals;
 
   std::size_t minPoints = 1;
   std::string why;
-  if (alongNormals) {
+  if (alongNormals && kind == FitKind::PointToPlane) {
+    minPoints = k;
+    why = "one deviation per point along its normal, " + std::to_string(k) + " free parameters (" +
+          joined(names) + ")";
+  } else if (alongNormals) {
     minPoints = k + 1;
     why = "one deviation per point along its normal, " + std::to_string(k) + " free parameters (" +
           joined(names) + ") and one for the largest deviation";

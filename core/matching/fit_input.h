@@ -24,6 +24,7 @@ namespace metrofit::matching {
 enum class FitKind {
   LeastSquares,  ///< sum of squared residual distances (closed form, rough + SADE / GA-simplex)
   Minimax,       ///< largest |deviation| (along the normal where the set has normals)
+  PointToPlane,  ///< sum of squared deviations along the normals (cad_match.h)
 };
 
 /// Locks implied by the data: planar sets lock rx, ry and z at 0.

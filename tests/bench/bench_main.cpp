@@ -15,6 +15,7 @@
 // --kinematic-chain [--seeds N] (default 20): the kinematic-compensation paper's chain from SPC edges to
 // compensation and the three-plane identification on simulated machines with known errors, against the
 // circular-test identification and three separate 2-axis fits (bench_kinematic_chain.h).
+// --cad: closest point on a triangle mesh, the k-d tree beside brute force, and one CAD match (bench_cad.h).
 // --nist: the 27 NIST StRD nonlinear problems (../shared/data/real/nist-strd-nls) from both starts, our
 // Levenberg-Marquardt beside Ceres Solver: LRE and time per problem and start (bench_nist.h).
 #include <algorithm>
@@ -30,6 +31,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench_cad.h"
 #include "bench_diagnose.h"
 #include "bench_diagnose_scale.h"
 #include "bench_diagnose_sm.h"
@@ -131,6 +133,7 @@ int main(int argc, char** argv) {
   bool kinematic = false;                       // --kinematic (bench_kinematic.cpp)
   bool kinematicChain = false;                  // --kinematic-chain (bench_kinematic_chain.cpp)
   bool nist = false;                            // --nist (bench_nist.cpp)
+  bool cad = false;                             // --cad (bench_cad.cpp)
   bool diagnose = false, realDiagnose = false;  // --diagnose, --real-diagnose (bench_diagnose.cpp)
   bool open = false;                            // --diagnose --open (bench_open_world.cpp)
   metrofit::bench::OpenBenchOptions openOptions;
@@ -159,6 +162,8 @@ int main(int argc, char** argv) {
       kinematicChain = true;
     else if (a == "--nist")
       nist = true;
+    else if (a == "--cad")
+      cad = true;
     else if (a == "--matching")
       matching = true;
     else if (a == "--real-matching")
@@ -226,7 +231,7 @@ int main(int argc, char** argv) {
     else if (a == "--help" || a == "-h") {
       std::printf(
           "usage: metrofit-bench [--io] [--rng] [--optimizers [--quick] [--only PROBLEMS] [--methods "
-          "METHODS]] [--matching] [--real-matching] "
+          "METHODS]] [--matching] [--real-matching] [--cad] "
           "[--thermal] [--real-thermal] [--kinematic] [--kinematic-chain [--seeds N]] [--nist] [--setup] "
           "[--diagnose "
           "[--quick]] [--diagnose --open "
@@ -241,7 +246,7 @@ int main(int argc, char** argv) {
     }
   }
   if (!io && !rng && !optimizers && !matching && !realMatching && !thermal && !realThermal && !kinematic &&
-      !kinematicChain && !nist && !diagnose && !realDiagnose && !setupBench && scaleRows.empty())
+      !kinematicChain && !nist && !cad && !diagnose && !realDiagnose && !setupBench && scaleRows.empty())
     io = rng = optimizers = true;
   if (explicitSeeds > 0) openOptions.seeds = explicitSeeds;
   if (!openCase.empty()) {
@@ -281,6 +286,7 @@ int main(int argc, char** argv) {
     // --matching: the matching targets (bench_matching.cpp); --real-matching: the SDSS plug plates in
     // ../shared/data/real/cmm-plugplate-sdss (not in the repository: no licence) against their own fits.
     if (matching) result["matching"] = metrofit::bench::benchMatching({});
+    if (cad) result["cad"] = metrofit::bench::benchCad(repeat);
     if (realMatching)
       result["real_matching"] =
           metrofit::bench::benchRealMatching(sourceDir + "/../shared/data/real/cmm-plugplate-sdss");

@@ -9,7 +9,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -227,7 +229,39 @@ inline std::string oneMegabyteLine() {
   return "0," + std::string(1 << 20, '7') + ",20,20,0\n";
 }
 
+/// An STL part for `match --cad`: the square [0, 10]^2 at z = 0 as two facets, ASCII (the first vertex
+/// lines are "vertex 0 0 0", "vertex 10 0 0", "vertex 0 10 0" on lines 4-6) and binary (184 bytes).
+inline const std::string kStlAscii =
+    "solid plate\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 10 0 0\nvertex 0 10 0\nendloop\n"
+    "endfacet\nfacet normal 0 0 1\nouter loop\nvertex 10 0 0\nvertex 10 10 0\nvertex 0 10 0\nendloop\n"
+    "endfacet\nendsolid plate\n";
+inline std::string stlBinary() {
+  std::string s = "binary plate";
+  s.resize(80, ' ');
+  auto u32 = [&](std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) s += static_cast<char>((v >> (8 * k)) & 0xFF);
+  };
+  auto f32 = [&](float f) {
+    std::uint32_t u = 0;
+    std::memcpy(&u, &f, 4);
+    u32(u);
+  };
+  u32(2);
+  const float facets[2][12] = {{0, 0, 1, 0, 0, 0, 10, 0, 0, 0, 10, 0},
+                               {0, 0, 1, 10, 0, 0, 10, 10, 0, 0, 10, 0}};
+  for (const auto& f : facets) {
+    for (float v : f) f32(v);
+    s += std::string(2, '\0');
+  }
+  return s;
+}
+inline const std::string kStlBinary = stlBinary();
+/// Measured points for `match --cad` (all near the plate).
+inline const std::string kMeasured =
+    "id,px,py,pz\nA,1,1,0.01\nB,9,1,0.02\nC,1,9,0\nD,9,9,-0.01\nE,5,5,0.01\nF,3,7,0\nG,7,3,0.01\n";
+
 inline std::vector<Case> cases() {
+  const std::string matchCad = "match --cad part.stl --data m.csv --out out.json";
   const std::string fit = "thermal fit --data log.csv --target disp_z_um --inputs T1,T2 --out out.json";
   const std::string match = "match --data pts.csv --out out.json";
   const std::string setup = "setup --model m.json --data r.csv --out out.json";
@@ -1412,6 +1446,70 @@ inline std::vector<Case> cases() {
        {{"c.csv", circle()}},
        {"kinematic: a subcommand is required", "identify, compensate"},
        {}},
+      // ---- match --cad: STL part and measured points ---------------------------------------------------
+      {"ST01",
+       "STL part",
+       "empty file",
+       matchCad,
+       {{"part.stl", ""}, {"m.csv", kMeasured}},
+       {"part.stl", "empty"},
+       json},
+      {"ST02",
+       "STL part",
+       "binary file truncated (one byte short)",
+       matchCad,
+       {{"part.stl", kStlBinary.substr(0, kStlBinary.size() - 1)}, {"m.csv", kMeasured}},
+       {"part.stl", "needs 184 bytes, the file has 183"},
+       json},
+      {"ST03",
+       "STL part",
+       "ASCII: a vertex coordinate with a decimal comma",
+       matchCad,
+       {{"part.stl", replaced(kStlAscii, "vertex 10 0 0", "vertex 10 0,5 0")}, {"m.csv", kMeasured}},
+       {"part.stl:5", "'0,5' is not a number"},
+       json},
+      {"ST04",
+       "STL part",
+       "ASCII: a triangle of zero area (collinear vertices)",
+       matchCad,
+       {{"part.stl", replaced(kStlAscii, "vertex 0 10 0", "vertex 20 0 0")}, {"m.csv", kMeasured}},
+       {"part.stl:2", "triangle 1", "zero area"},
+       json},
+      {"ST05",
+       "STL part",
+       "ASCII: NaN in a vertex",
+       matchCad,
+       {{"part.stl", replaced(kStlAscii, "vertex 0 10 0", "vertex 0 nan 0")}, {"m.csv", kMeasured}},
+       {"part.stl:6", "not a finite number"},
+       json},
+      {"ST06",
+       "STL part",
+       "ASCII: a missing keyword",
+       matchCad,
+       {{"part.stl", replaced(kStlAscii, "endloop", "")}, {"m.csv", kMeasured}},
+       {"part.stl:8", "expected 'endloop'"},
+       json},
+      {"ST07",
+       "measured points",
+       "no coordinate columns",
+       matchCad,
+       {{"part.stl", kStlAscii}, {"m.csv", "id,a,b,c\nA,1,2,3\n"}},
+       {"m.csv:1", "px,py,pz or x_mm,y_mm,z_mm"},
+       json},
+      {"ST08",
+       "measured points",
+       "a plane part leaves x, y and rz free (no --lock)",
+       matchCad,
+       {{"part.stl", kStlAscii}, {"m.csv", kMeasured}},
+       {"m.csv", "undetermined", "lock"},
+       json},
+      {"ST09",
+       "command line",
+       "match --cad with a point-pair method",
+       matchCad + " --method sade",
+       {{"part.stl", kStlAscii}, {"m.csv", kMeasured}},
+       {"--method", "not sade"},
+       json},
   };
   return c;
 }
