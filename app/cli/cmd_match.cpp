@@ -46,6 +46,7 @@
 #include "core/common/error.h"
 #include "core/common/numformat.h"
 #include "core/geometry/mesh_search.h"
+#include "core/geometry/point_table.h"
 #include "core/geometry/stl.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
@@ -213,9 +214,10 @@ int runMatch(const MatchArgs& a, bool machineGiven, bool methodGiven) {
     std::optional<geometry::PointSet> reference;
     if (!a.nominalReferenceFile.empty()) {
       n.reference = a.nominalReferenceFile;
-      reference = readMeasuredPoints(a.nominalReferenceFile, csvOptions());
+      reference = geometry::readPointTable(a.nominalReferenceFile, csvOptions());
     }
-    return nominalsFor(readMeasuredPoints(a.data, csvOptions()), n, reference ? &*reference : nullptr).set;
+    return nominalsFor(geometry::readPointTable(a.data, csvOptions()), n, reference ? &*reference : nullptr)
+        .set;
   }();
   MatchOptions o;
   o.method = parseMatchMethod(a.method, "--method");

@@ -2,7 +2,7 @@
 
 #include <cctype>
 #include <cmath>
-#include <set>
+#include <unordered_map>
 
 #include "core/common/error.h"
 #include "core/io/csv.h"
@@ -10,12 +10,13 @@
 namespace metrofit::geometry {
 
 PointTableColumns pointTableColumns(const CsvTable& t) {
-  for (const auto& [x, y, z, bare] : {std::tuple{"x_mm", "y_mm", "z_mm", false},
-                                      std::tuple{"px", "py", "pz", false}, std::tuple{"x", "y", "z", true}}) {
-    if (t.columnIndex(x) >= 0) return {x, y, z, bare};
+  for (const auto& [x, y, z, bare] :
+       {std::tuple{"px", "py", "pz", false}, std::tuple{"x_mm", "y_mm", "z_mm", false},
+        std::tuple{"x", "y", "z", true}}) {
+    if (t.columnIndex(x) >= 0 || t.columnIndex(y) >= 0 || t.columnIndex(z) >= 0) return {x, y, z, bare};
   }
-  throw InputError(ErrorContext{t.source(), 0, 0, "x_mm"},
-                   "has no point columns: expected x_mm,y_mm,z_mm, px,py,pz or x,y,z");
+  throw ValidationError(ErrorContext{t.source(), t.headerLineNumber(), 0, {}},
+                        "measured points need the columns px,py,pz, x_mm,y_mm,z_mm or x,y,z");
 }
 
 PointSet pointsFromTable(const CsvTable& t, double bareFactorMm) {
@@ -31,28 +32,30 @@ PointSet pointsFromTable(const CsvTable& t, double bareFactorMm) {
   }
   PointSet set;
   set.source = t.source();
-  std::set<std::string> seen;
+  std::unordered_map<std::string, std::size_t> seen;
   for (std::size_t r = 0; r < t.rowCount(); ++r) {
     const Eigen::Vector3d p(f * t.number(r, cx), f * t.number(r, cy), f * t.number(r, cz));
     for (int k = 0; k < 3; ++k) {
-      if (!std::isfinite(p(k)))
-        throw ValidationError(ErrorContext{t.source(), t.lineOf(r), 0,
-                                           k == 0   ? c.x
-                                           : k == 1 ? c.y
-                                                    : c.z},
-                              "is not a finite number");
+      if (!std::isfinite(p(k))) t.failAt(r, k == 0 ? cx : k == 1 ? cy : cz, "is not a finite number");
     }
     set.points.push_back(p);
     set.lines.push_back(t.lineOf(r));
     if (cid >= 0) {
-      const std::string& id = t.cell(r, static_cast<std::size_t>(cid));
-      if (!seen.insert(id).second)
-        throw ValidationError(ErrorContext{t.source(), t.lineOf(r), 0, "id"},
-                              "repeats the point id '" + id + "'");
+      const auto c = static_cast<std::size_t>(cid);
+      const std::string& id = t.cell(r, c);
+      if (id.empty()) t.failAt(r, c, "empty point id");
+      if (auto [it, fresh] = seen.emplace(id, r); !fresh)
+        t.failAt(
+            r, c,
+            "duplicate point id '" + id + "' (first on line " + std::to_string(t.lineOf(it->second)) + ")");
       set.ids.push_back(id);
     }
   }
   return set;
+}
+
+PointSet readPointTable(const std::string& path, const CsvReadOptions& csv, double bareFactorMm) {
+  return pointsFromTable(readCsvFile(path, csv), bareFactorMm);
 }
 
 }  // namespace metrofit::geometry

@@ -8,9 +8,7 @@
 // naming the file and line for a non-finite coordinate or a duplicate id, InputError for missing columns.
 #include "core/geometry/element_fit.h"
 
-namespace metrofit {
-class CsvTable;
-}
+#include "core/io/csv.h"
 
 namespace metrofit::geometry {
 
@@ -23,5 +21,7 @@ struct PointTableColumns {
 /// there).
 PointTableColumns pointTableColumns(const CsvTable& table);
 PointSet pointsFromTable(const CsvTable& table, double bareFactorMm = 1.0);
+/// pointsFromTable of the CSV file `path` read with `csv`.
+PointSet readPointTable(const std::string& path, const CsvReadOptions& csv = {}, double bareFactorMm = 1.0);
 
 }  // namespace metrofit::geometry

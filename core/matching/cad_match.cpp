@@ -1,5 +1,7 @@
 #include "core/matching/cad_match.h"
 
+#include "core/geometry/point_table.h"
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -235,38 +237,18 @@ nlohmann::json toJson(const CadMatchResult& r) {
 }
 
 ProbePointSet measuredPointsFromCsv(const CsvTable& t) {
+  // The columns and their checks: one owner (core/geometry/point_table.h).
+  const geometry::PointSet points = geometry::pointsFromTable(t);
   ProbePointSet set;
   set.source = t.source();
   set.hasNormals = false;
   set.planar = false;
-  const bool probeNames = t.columnIndex("px") >= 0 || t.columnIndex("py") >= 0 || t.columnIndex("pz") >= 0;
-  const bool mmNames = t.columnIndex("x_mm") >= 0 || t.columnIndex("y_mm") >= 0 || t.columnIndex("z_mm") >= 0;
-  if (!probeNames && !mmNames) {
-    throw ValidationError(ErrorContext{t.source(), t.headerLineNumber(), 0, {}},
-                          "measured points need the columns px,py,pz or x_mm,y_mm,z_mm");
-  }
-  const std::size_t cx = t.requireColumn(probeNames ? "px" : "x_mm");
-  const std::size_t cy = t.requireColumn(probeNames ? "py" : "y_mm");
-  const std::size_t cz = t.requireColumn(probeNames ? "pz" : "z_mm");
-  const int id = t.columnIndex("id");
   const int surface = t.columnIndex("surface");
-  std::unordered_map<std::string, std::size_t> seen;
-  for (std::size_t r = 0; r < t.rowCount(); ++r) {
+  for (std::size_t r = 0; r < points.points.size(); ++r) {
     ProbePoint p;
-    if (id >= 0) {
-      const auto c = static_cast<std::size_t>(id);
-      p.id = t.cell(r, c);
-      if (p.id.empty()) t.failAt(r, c, "empty point id");
-      if (auto [it, fresh] = seen.emplace(p.id, r); !fresh) {
-        t.failAt(
-            r, c,
-            "duplicate point id '" + p.id + "' (first on line " + std::to_string(t.lineOf(it->second)) + ")");
-      }
-    } else {
-      p.id = std::to_string(r + 1);
-    }
+    p.id = points.ids.empty() ? std::to_string(r + 1) : points.ids[r];
     if (surface >= 0) p.surface = t.cell(r, static_cast<std::size_t>(surface));
-    p.measured = {t.number(r, cx), t.number(r, cy), t.number(r, cz)};
+    p.measured = points.points[r];
     set.points.push_back(std::move(p));
   }
   if (set.points.empty()) throw ValidationError(ErrorContext{t.source(), 0, 0, {}}, "has no measured points");

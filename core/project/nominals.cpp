@@ -133,20 +133,16 @@ NominalsOutcome nominalsFor(const geometry::PointSet& measured, const NominalSou
   return out;
 }
 
-geometry::PointSet readMeasuredPoints(const std::string& path, const CsvReadOptions& csv) {
-  return geometry::pointsFromTable(readCsvFile(path, csv));
-}
-
 ProbePointSet readProbePointDataset(const DatasetRef& dataset, const DatasetRef* reference,
                                     std::size_t minPoints) {
   if (dataset.nominals.empty()) return readProbePointsAnyFormat(dataset.path, minPoints, dataset.csv);
-  const geometry::PointSet measured = readMeasuredPoints(dataset.path, dataset.csv);
+  const geometry::PointSet measured = geometry::readPointTable(dataset.path, dataset.csv);
   std::optional<geometry::PointSet> ref;
   if (dataset.nominals.from == "reference") {
     if (!reference)
       throw ValidationError(ErrorContext{dataset.path, 0, 0, "nominals.reference"},
                             "dataset '" + dataset.nominals.reference + "' is not in the project");
-    ref = readMeasuredPoints(reference->path, reference->csv);
+    ref = geometry::readPointTable(reference->path, reference->csv);
   }
   ProbePointSet set = nominalsFor(measured, dataset.nominals, ref ? &*ref : nullptr).set;
   if (set.points.size() < minPoints)

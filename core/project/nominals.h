@@ -43,10 +43,6 @@ struct NominalsOutcome {
 NominalsOutcome nominalsFor(const geometry::PointSet& measured, const NominalSource& n,
                             const geometry::PointSet* reference, Observer* observer = nullptr);
 
-/// The measured points of a probe-point file (CSV with the dataset's dialect and mapping) as a point set:
-/// px,py,pz (the file's measured points, or raw x,y,z mapped to them), x_mm,y_mm,z_mm or x,y,z in mm.
-geometry::PointSet readMeasuredPoints(const std::string& path, const CsvReadOptions& csv);
-
 /// Reads a probe-point dataset the way the project says: the file's own nominals, or (with `nominals`)
 /// its measured points with nominals made by nominalsFor. `dataset.path` and `reference->path` are
 /// readable as they are (resolved); `reference` is the dataset nominals.reference names (nullptr when

@@ -1494,7 +1494,7 @@ inline std::vector<Case> cases() {
        "no coordinate columns",
        matchCad,
        {{"part.stl", kStlAscii}, {"m.csv", "id,a,b,c\nA,1,2,3\n"}},
-       {"m.csv:1", "px,py,pz or x_mm,y_mm,z_mm"},
+       {"m.csv:1", "px,py,pz, x_mm,y_mm,z_mm or x,y,z"},
        json},
       {"ST08",
        "measured points",

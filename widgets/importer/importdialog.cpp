@@ -28,6 +28,7 @@
 #include <utility>
 
 #include "core/common/error.h"
+#include "core/geometry/point_table.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
@@ -888,9 +889,9 @@ void ImportDialog::revalidate() {
         // readers make, core/project/nominals.h).
         std::optional<geometry::PointSet> reference;
         if (const DatasetRef* r = nominalReference(scratch, dataset_))
-          reference = readMeasuredPoints(
+          reference = geometry::readPointTable(
               resolveDatasetPath(QFile::encodeName(projectPath_).toStdString(), *r), r->csv);
-        const NominalsOutcome out = nominalsFor(readMeasuredPoints(request.file, dataset_.csv),
+        const NominalsOutcome out = nominalsFor(geometry::readPointTable(request.file, dataset_.csv),
                                                 dataset_.nominals, reference ? &*reference : nullptr);
         nominalsSummary_ = nominalsText(out, dataset_.nominals);
       }

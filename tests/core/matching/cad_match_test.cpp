@@ -343,7 +343,8 @@ TEST(CadMatch, MeasuredPointsCsv) {
     measuredPointsFromCsv(parseCsv("id,a,b,c\n1,2,3,4\n", "c.csv"));
     ADD_FAILURE() << "no error";
   } catch (const ValidationError& e) {
-    EXPECT_EQ(std::string(e.what()), "c.csv:1: measured points need the columns px,py,pz or x_mm,y_mm,z_mm");
+    EXPECT_EQ(std::string(e.what()),
+              "c.csv:1: measured points need the columns px,py,pz, x_mm,y_mm,z_mm or x,y,z");
   }
   EXPECT_THROW(measuredPointsFromCsv(parseCsv("id,px,py,pz\nA,1,2,3\nA,4,5,6\n", "d.csv")), InputError);
   EXPECT_THROW(measuredPointsFromCsv(parseCsv("id,px,py,pz\nA,1,x,3\n", "e.csv")), InputError);

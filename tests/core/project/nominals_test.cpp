@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/geometry/point_table.h"
 #include "core/io/json_util.h"
 #include "core/project/dataset_content.h"
 #include "core/project/datasets.h"
@@ -58,7 +59,7 @@ TEST(Nominals, FromAFittedSphereTheDeviationsAreTheCmmResiduals) {
     const auto file = test::realData(std::string("cmm-wenzel-lens-points/") + name);
     METROFIT_REQUIRE_PATH(file);
     const std::vector<WenzelRow> rows = wenzel(file);
-    const geometry::PointSet measured = readMeasuredPoints(file.string(), {});
+    const geometry::PointSet measured = geometry::readPointTable(file.string(), {});
     ASSERT_EQ(measured.points.size(), rows.size());
     ASSERT_EQ(measured.ids.size(), rows.size()) << "the `ID` column names the points";
     NominalSource n;
