@@ -4,7 +4,7 @@
 //               [--decimal D] [--header-lines N] [--comment PREFIX] [--skip-bad-rows] [--ta-meaning M]
 //               [--ta-sign S] [--embed] [FILE2 ...: a DMIS series, one file per workpiece]
 //               [--nominal-element E [--nominal-radius R] [--nominal-criterion ls|minimax]
-//                [--nominal-robust] [--inner]] [--nominal-reference ID [--pair id|order]]
+//                [--nominal-robust] [--inner]] [--nominal-reference ID [--pair id|order]] [--nominal-cad ID]
 //   project list P.metrofit [--out FILE]
 // The logic is core/project/datasets.h; this file only parses the command line.
 #include <CLI/CLI.hpp>
@@ -37,7 +37,7 @@ struct ProjectArgs {
   bool embed = false;
   bool noGuess = false;
   NominalSource nominals;
-  std::string nominalElement, nominalReference;
+  std::string nominalElement, nominalReference, nominalCad;
 };
 
 int runNew(const ProjectArgs& a) {
@@ -58,7 +58,14 @@ int runAdd(const ProjectArgs& a) {
   r.moreFiles.assign(a.files.begin() + 1, a.files.end());
   // Nominals for measured points (core/project/nominals.h): a reference measurement, or an element.
   r.nominals = a.nominals;
-  if (!a.nominalReference.empty()) {
+  if (!a.nominalCad.empty()) {
+    r.nominals.from = "cad";
+    r.nominals.cad = a.nominalCad;
+    if (!a.nominalElement.empty() || !a.nominalReference.empty())
+      throw OptionsError(
+          ErrorContext{{}, 0, 0, "--nominal-cad"},
+          "the CAD part is the nominal: --nominal-element and --nominal-reference do not apply");
+  } else if (!a.nominalReference.empty()) {
     r.nominals.from = "reference";
     r.nominals.reference = a.nominalReference;
     r.nominals.element = a.nominalElement;
@@ -133,9 +140,10 @@ void registerProjectCommands(CLI::App& app) {
   existingFile(add->add_option("project", a->project, "Project file (.metrofit)")->required());
   std::vector<std::string> kinds = datasetKindNames();
   kinds.push_back(kGuessKind);
-  add->add_option("kind", a->kind,
-                  "thermal-log|probe-points|circular-test|cmm-report|setup-model|"
-                  "feature-series|dmis|hole-table, or auto: the kind the file's name and content say")
+  add->add_option(
+         "kind", a->kind,
+         "thermal-log|probe-points|circular-test|cmm-report|setup-model|"
+         "feature-series|dmis|hole-table|cad-model, or auto: the kind the file's name and content say")
       ->required()
       ->check(CLI::IsMember(kinds));
   existingFile(
@@ -182,6 +190,10 @@ void registerProjectCommands(CLI::App& app) {
   add->add_option("--nominal-reference", a->nominalReference,
                   "Probe points of measured points only: the nominals are the same points of a second "
                   "measurement, the probe-point dataset ID of the project");
+  add->add_option(
+      "--nominal-cad", a->nominalCad,
+      "Probe points of measured points only: the nominals are their closest points on this CAD part "
+      "(the cad-model dataset ID of the project); the matching re-projects them at each posture");
   add->add_option("--pair", a->nominals.pair, "How points meet their reference points: id | order [id]")
       ->check(CLI::IsMember({"id", "order"}));
   add->callback([a] { selectRunner([a]() -> int { return runAdd(*a); }); });

@@ -1,15 +1,17 @@
 #include "core/matching/cad_match.h"
 
-#include "core/geometry/point_table.h"
-
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <unordered_map>
 
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
 #include "core/common/numformat.h"
+#include "core/geometry/point_table.h"
 #include "core/io/csv.h"
 #include "core/matching/fit_input.h"
 #include "core/optim/least_squares.h"
@@ -257,6 +259,63 @@ ProbePointSet measuredPointsFromCsv(const CsvTable& t) {
 
 ProbePointSet readMeasuredPoints(const std::string& path, const CsvReadOptions& csv) {
   return measuredPointsFromCsv(readCsvFile(path, csv));
+}
+
+std::vector<double> triangleDeviations(const geometry::TriangleMesh& mesh, const ProbePointSet& closest,
+                                       const std::vector<double>& deviations, double radiusMm) {
+  const std::size_t n = std::min(closest.points.size(), deviations.size());
+  std::vector<double> out(mesh.triangles.size(), std::numeric_limits<double>::quiet_NaN());
+  if (n == 0 || mesh.triangles.empty()) return out;
+  const double size = (mesh.boxMax() - mesh.boxMin()).norm();
+  if (!(radiusMm > 0.0)) {
+    // 1.5 x the median nearest-neighbour distance of the points (n is a probing program's points:
+    // tens to thousands, so the quadratic search is cheap).
+    std::vector<double> nearest;
+    for (std::size_t i = 0; i < n; ++i) {
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < n; ++j)
+        if (j != i) best = std::min(best, (closest.points[i].nominal - closest.points[j].nominal).norm());
+      if (std::isfinite(best)) nearest.push_back(best);
+    }
+    double median = size;
+    if (!nearest.empty()) {
+      std::nth_element(nearest.begin(), nearest.begin() + static_cast<long>(nearest.size() / 2),
+                       nearest.end());
+      median = nearest[nearest.size() / 2];
+    }
+    radiusMm = std::max(1.5 * median, 1e-3 * size);
+  }
+  if (!(radiusMm > 0.0)) radiusMm = 1.0;
+  // A grid of cells of the radius: a centroid's nearest point within the radius is in its cell or a
+  // neighbouring one.
+  const Eigen::Vector3d origin = mesh.boxMin();
+  const auto cellOf = [&](const Eigen::Vector3d& x) {
+    return std::array<long, 3>{static_cast<long>(std::floor((x.x() - origin.x()) / radiusMm)),
+                               static_cast<long>(std::floor((x.y() - origin.y()) / radiusMm)),
+                               static_cast<long>(std::floor((x.z() - origin.z()) / radiusMm))};
+  };
+  std::map<std::array<long, 3>, std::vector<std::size_t>> grid;
+  for (std::size_t i = 0; i < n; ++i) grid[cellOf(closest.points[i].nominal)].push_back(i);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const geometry::Triangle& tri = mesh.triangles[t];
+    const Eigen::Vector3d c = (tri.v[0] + tri.v[1] + tri.v[2]) / 3.0;
+    const std::array<long, 3> k = cellOf(c);
+    double best = radiusMm;
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy)
+        for (long dz = -1; dz <= 1; ++dz) {
+          const auto it = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
+          if (it == grid.end()) continue;
+          for (std::size_t i : it->second) {
+            const double d = (closest.points[i].nominal - c).norm();
+            if (d <= best) {
+              best = d;
+              out[t] = deviations[i];
+            }
+          }
+        }
+  }
+  return out;
 }
 
 }  // namespace metrofit::matching

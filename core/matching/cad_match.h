@@ -75,6 +75,15 @@ CadMatchResult matchToCad(const ProbePointSet& measured, const geometry::MeshSea
 ProbePointSet projectToCad(const ProbePointSet& measured, const geometry::MeshSearch& cad, const Pose& pose,
                            std::vector<geometry::MeshPoint>* answers = nullptr);
 
+/// The deviation each triangle of the part shows in a view coloured by deviation ("the part coloured
+/// by deviation", issue 30): that of the measured point whose closest point on the part (`closest`,
+/// in the part's frame) lies nearest to the triangle's centroid, when it is within `radiusMm` of it;
+/// NaN (not measured there) otherwise. radiusMm <= 0: 1.5 times the median distance between
+/// neighbouring closest points (at least 1e-3 of the part's size). Linear in the triangles (a grid of
+/// cells of the radius).
+std::vector<double> triangleDeviations(const geometry::TriangleMesh& mesh, const ProbePointSet& closest,
+                                       const std::vector<double>& deviations, double radiusMm = 0.0);
+
 /// The match JSON (matching.h toJson of the result and `after`: method, rotation_deg, translation_mm,
 /// rmse_mm, max_abs_mm, out_of_tolerance, per_point, trace, ...) plus "cad": {file, triangles,
 /// max_distance_mm, fit, winding_disagreements (facets whose stored normal contradicts their winding)}.

@@ -7,6 +7,7 @@
 
 #include "core/common/error.h"
 #include "core/geometry/point_table.h"
+#include "core/geometry/stl.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/file_io.h"
 #include "core/kinematics/iso230_4.h"
@@ -32,7 +33,8 @@ const std::map<std::string, std::string>& kinds() {
                                                     {"setup-model", dataset_kind::kSetupModel},
                                                     {"feature-series", dataset_kind::kFeatureSeries},
                                                     {"dmis", dataset_kind::kDmis},
-                                                    {"hole-table", dataset_kind::kHoleTable}};
+                                                    {"hole-table", dataset_kind::kHoleTable},
+                                                    {"cad-model", dataset_kind::kCadModel}};
   return k;
 }
 
@@ -68,6 +70,11 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
   if (kind == dataset_kind::kSetupModel) {
     const setup::Model model = setup::readModel(file);
     s.rows = static_cast<long>(model.dimensions.size());
+    return s;
+  }
+  if (kind == dataset_kind::kCadModel) {
+    // An STL part: its triangles (the reader names the file and line or triangle of a problem).
+    s.rows = static_cast<long>(geometry::readStl(file).triangles.size());
     return s;
   }
   const std::string text = readFile(file, 256u << 20);
@@ -133,14 +140,16 @@ std::string extensionFor(const std::string& kind) {
   if (kind == dataset_kind::kSetupModel) return ".json";
   if (kind == dataset_kind::kDmis) return ".dmi";
   if (kind == dataset_kind::kHoleTable) return ".txt";
+  if (kind == dataset_kind::kCadModel) return ".stl";
   return ".csv";
 }
 
 }  // namespace
 
 const std::vector<std::string>& datasetKindNames() {
-  static const std::vector<std::string> names{"thermal-log", "probe-points",   "circular-test", "cmm-report",
-                                              "setup-model", "feature-series", "dmis",          "hole-table"};
+  static const std::vector<std::string> names{"thermal-log", "probe-points", "circular-test",
+                                              "cmm-report",  "setup-model",  "feature-series",
+                                              "dmis",        "hole-table",   "cad-model"};
   return names;
 }
 
@@ -155,7 +164,8 @@ std::string datasetKindFromName(const std::string& name, const std::string& fiel
 }
 
 bool datasetKindIsCsv(const std::string& kind) {
-  return kind != dataset_kind::kSetupModel && kind != dataset_kind::kDmis && kind != dataset_kind::kHoleTable;
+  return kind != dataset_kind::kSetupModel && kind != dataset_kind::kDmis &&
+         kind != dataset_kind::kHoleTable && kind != dataset_kind::kCadModel;
 }
 
 DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset) {
@@ -285,10 +295,10 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
     if (ref.kind != dataset_kind::kProbePoints)
       throw ValidationError(
           ErrorContext{{}, 0, 0, "KIND"},
-          "only probe points take their nominals from an element or a reference measurement");
+          "only probe points take their nominals from an element, a reference measurement or a CAD part");
     checkNominalSource(request.nominals);
     ref.nominals = request.nominals;
-    (void)nominalReference(project, ref);  // the reference is another probe-point dataset of the project
+    (void)nominalReference(project, ref);  // another probe-point dataset, or a CAD part, of the project
   }
   const DatasetSummary s =
       inspect(request.file, displayPath(request.file), ref.kind, ref.csv, !ref.nominals.empty());

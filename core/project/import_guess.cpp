@@ -275,7 +275,14 @@ std::string guessDatasetKind(const std::string& fileName, std::string_view text,
   if (dot != std::string::npos && (slash == std::string::npos || dot > slash))
     suffix = fold(fileName.substr(dot + 1));
   if (suffix == "json") return "setup-model";
+  if (suffix == "stl") return "cad-model";
   const std::string head(text.substr(0, 64 * 1024));
+  // An ASCII STL ("solid" ... "facet normal"); a binary one without the extension is not guessed.
+  {
+    std::string start = head.substr(0, 512);
+    for (char& c : start) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (start.rfind("solid", 0) == 0 && start.find("facet") != std::string::npos) return "cad-model";
+  }
   if (suffix == "dmi" || suffix == "dms" || suffix == "dmis" || setup::looksLikeDmis(head)) return "dmis";
   if (looksLikeCmmTextReport(head)) return "cmm-report";
   if (looksLikeHoleTable(head)) return "hole-table";

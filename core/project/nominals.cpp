@@ -5,7 +5,9 @@
 
 #include "core/common/error.h"
 #include "core/geometry/point_table.h"
+#include "core/geometry/stl.h"
 #include "core/io/file_io.h"
+#include "core/matching/cad_match.h"
 #include "core/matching/hole_table.h"
 
 namespace metrofit {
@@ -38,8 +40,18 @@ void checkNominalSource(const NominalSource& n) {
       bad("from", "is missing: say where the nominals come from (element or reference)");
     return;
   }
-  if (n.from != "element" && n.from != "reference")
-    bad("from", "must be 'element' or 'reference', got '" + n.from + "'");
+  if (n.from != "element" && n.from != "reference" && n.from != "cad")
+    bad("from", "must be 'element', 'reference' or 'cad', got '" + n.from + "'");
+  if (n.from == "cad") {
+    if (n.cad.empty()) bad("cad", "is missing: the dataset of the CAD part");
+    NominalSource only;
+    only.from = n.from;
+    only.cad = n.cad;
+    only.pair = n.pair;
+    if (!(n == only)) bad("from", "nominals from a CAD part take no element, fit or reference options");
+    return;
+  }
+  if (!n.cad.empty()) bad("cad", "is only for nominals from a CAD part");
   geometry::ElementKind kind{};
   if (!n.element.empty() && !geometry::parseElementKind(n.element, &kind))
     bad("element", "must be plane, line, circle, sphere, cylinder or cone, got '" + n.element + "'");
@@ -138,6 +150,19 @@ ProbePointSet readProbePointDataset(const DatasetRef& dataset, const DatasetRef*
   if (dataset.nominals.empty()) return readProbePointsAnyFormat(dataset.path, minPoints, dataset.csv);
   const geometry::PointSet measured = geometry::readPointTable(dataset.path, dataset.csv);
   std::optional<geometry::PointSet> ref;
+  if (dataset.nominals.from == "cad") {
+    if (!reference)
+      throw ValidationError(ErrorContext{dataset.path, 0, 0, "nominals.cad"},
+                            "dataset '" + dataset.nominals.cad + "' is not in the project");
+    // The closest points of the part at the identity posture (the points are measured in the part's
+    // coordinate system); the matching study re-projects them at each posture (cad_match.h).
+    ProbePointSet set = matching::projectToCad(cadMeasuredPoints(measured), *readCadModel(*reference), {});
+    if (set.points.size() < minPoints)
+      throw ValidationError(ErrorContext{set.source, 0, 0, {}}, "has " + std::to_string(set.points.size()) +
+                                                                    " points, at least " +
+                                                                    std::to_string(minPoints) + " needed");
+    return set;
+  }
   if (dataset.nominals.from == "reference") {
     if (!reference)
       throw ValidationError(ErrorContext{dataset.path, 0, 0, "nominals.reference"},
@@ -152,7 +177,32 @@ ProbePointSet readProbePointDataset(const DatasetRef& dataset, const DatasetRef*
   return set;
 }
 
+ProbePointSet cadMeasuredPoints(const geometry::PointSet& measured) {
+  ProbePointSet set;
+  set.source = measured.source;
+  for (std::size_t i = 0; i < measured.points.size(); ++i) {
+    ProbePoint p;
+    p.id = measured.ids.empty() ? std::to_string(i + 1) : measured.ids[i];
+    p.surface = "cad";
+    p.measured = measured.points[i];
+    set.points.push_back(std::move(p));
+  }
+  return set;
+}
+
+std::shared_ptr<const geometry::MeshSearch> readCadModel(const DatasetRef& cad) {
+  return std::make_shared<const geometry::MeshSearch>(geometry::readStl(cad.path));
+}
+
 const DatasetRef* nominalReference(const Project& project, const DatasetRef& dataset) {
+  if (dataset.nominals.from == "cad") {
+    const DatasetRef* c = project.dataset(dataset.nominals.cad);
+    if (!c || c->kind != dataset_kind::kCadModel)
+      throw ValidationError(ErrorContext{{}, 0, 0, "nominals.cad"},
+                            "dataset '" + dataset.id + "': '" + dataset.nominals.cad +
+                                "' is not a CAD part (cad_model dataset) of the project");
+    return c;
+  }
   if (dataset.nominals.from != "reference") return nullptr;
   const DatasetRef* r = project.dataset(dataset.nominals.reference);
   if (!r || r->kind != dataset_kind::kProbePoints || r->id == dataset.id)

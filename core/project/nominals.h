@@ -13,11 +13,13 @@
 // The recipe is the dataset's "nominals" key (core/project/project.h NominalSource); every reader of a
 // probe-point dataset (the Matching page, the diagnosis, the report, `project list`) goes through
 // readProbePointDataset, so they all see the same points.
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "core/common/run.h"
 #include "core/geometry/element_fit.h"
+#include "core/geometry/mesh_search.h"
 #include "core/matching/probe_points.h"
 #include "core/project/project.h"
 
@@ -43,10 +45,16 @@ struct NominalsOutcome {
 NominalsOutcome nominalsFor(const geometry::PointSet& measured, const NominalSource& n,
                             const geometry::PointSet* reference, Observer* observer = nullptr);
 
+/// Measured points as the CAD matching takes them (core/matching/cad_match.h): ids (1, 2, ... without an
+/// id column), surface "cad", no nominals.
+ProbePointSet cadMeasuredPoints(const geometry::PointSet& measured);
+/// The CAD part of a cad_model dataset (path resolved), ready for closest-point queries.
+std::shared_ptr<const geometry::MeshSearch> readCadModel(const DatasetRef& cad);
+
 /// Reads a probe-point dataset the way the project says: the file's own nominals, or (with `nominals`)
 /// its measured points with nominals made by nominalsFor. `dataset.path` and `reference->path` are
-/// readable as they are (resolved); `reference` is the dataset nominals.reference names (nullptr when
-/// the recipe needs none). ValidationError when a needed reference is missing.
+/// readable as they are (resolved); `reference` is the dataset nominals.reference or nominals.cad names
+/// (nullptr when the recipe needs none). ValidationError when a needed reference is missing.
 ProbePointSet readProbePointDataset(const DatasetRef& dataset, const DatasetRef* reference,
                                     std::size_t minPoints = 3);
 /// The same for a dataset of `project` saved at `projectPath` (paths relative to its folder); the
@@ -54,8 +62,8 @@ ProbePointSet readProbePointDataset(const DatasetRef& dataset, const DatasetRef*
 /// or not a probe-point dataset).
 ProbePointSet readProjectProbePoints(const Project& project, const std::string& projectPath,
                                      const DatasetRef& dataset, std::size_t minPoints = 3);
-/// The reference dataset of `dataset`'s recipe in `project` (nullptr when the recipe names none);
-/// ValidationError as above.
+/// The dataset `dataset`'s recipe names in `project`: the second measurement ("reference") or the CAD
+/// part ("cad"); nullptr when the recipe names none. ValidationError as above.
 const DatasetRef* nominalReference(const Project& project, const DatasetRef& dataset);
 
 }  // namespace metrofit

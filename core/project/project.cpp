@@ -20,18 +20,19 @@ nlohmann::json nominalSourceToJson(const NominalSource& n) {
   if (n.robust) o["robust"] = true;
   if (n.inner) o["inner"] = true;
   if (!n.reference.empty()) o["reference"] = n.reference;
+  if (!n.cad.empty()) o["cad"] = n.cad;
   if (n.from == "reference") o["pair"] = n.pair;
   return o;
 }
 
 NominalSource nominalSourceFromJson(const JsonReader& r, const std::string& inDataset) {
   for (const auto& [key, value] : r.json().items()) {
-    static const std::set<std::string> known{"from",   "element", "criterion", "radius_mm",
-                                             "robust", "inner",   "reference", "pair"};
+    static const std::set<std::string> known{"from",  "element",   "criterion", "radius_mm", "robust",
+                                             "inner", "reference", "pair",      "cad"};
     if (!known.count(key))
       r.fail(inDataset +
                  "unknown key (nominals takes from, element, criterion, radius_mm, robust, inner, "
-                 "reference, pair)",
+                 "reference, pair, cad)",
              key);
   }
   NominalSource n;
@@ -43,6 +44,7 @@ NominalSource nominalSourceFromJson(const JsonReader& r, const std::string& inDa
   n.inner = r.boolean("inner", false);
   n.reference = r.string("reference", "");
   n.pair = r.string("pair", "id");
+  n.cad = r.string("cad", "");
   try {
     checkNominalSource(n);
   } catch (const Error& e) {

@@ -33,7 +33,10 @@
 //   {"from": "reference", "reference": "DATASET_ID", "pair": "id"|"order", "element": "" | "sphere" ...,
 //    "inner": false}   nominal = the same point of a second measurement of the part (another probe-point
 //    dataset's measured points), paired by id or by order; normals from the element fitted to the
-//    reference points ("element"), or none (position-only points) when "element" is absent.
+//    reference points ("element"), or none (position-only points) when "element" is absent;
+//   {"from": "cad", "cad": "DATASET_ID"}   nominal = the closest point of the CAD part (a cad_model
+//    dataset), normal = its outward surface normal there; the matching study re-projects the points
+//    onto the part at each posture (core/matching/cad_match.h) until the posture stops changing.
 // core/project/datasets.h adds and lists datasets.
 // Study objects are owned by the method that uses them; unknown keys are preserved on save.
 #include <string>
@@ -63,6 +66,8 @@ inline constexpr const char* kFeatureSeries = "feature_series";
 inline constexpr const char* kDmis = "dmis";
 /// A PC-DMIS hole-table report (core/matching/hole_table.h).
 inline constexpr const char* kHoleTable = "hole_table";
+/// A CAD part as a triangle mesh (STL, core/geometry/stl.h): the nominal of measured points.
+inline constexpr const char* kCadModel = "cad_model";
 }  // namespace dataset_kind
 
 /// The studies of a project, in navigator order.
@@ -78,7 +83,7 @@ inline constexpr const char* kAll[] = {kSetup, kMatching, kKinematics, kThermal,
 /// Where a probe-point dataset's nominals come from (the "nominals" key above); `from` empty: the file's
 /// own nominal columns.
 struct NominalSource {
-  std::string from;  ///< "", "element" or "reference"
+  std::string from;  ///< "", "element", "reference" or "cad"
   std::string
       element;  ///< element kind (core/geometry/element_fit.h spelling), or "" (reference: no normals)
   std::string criterion;    ///< "ls" (or "" = ls) or "minimax"
@@ -87,6 +92,7 @@ struct NominalSource {
   bool inner = false;       ///< the material is outside the element (a bore): normals point inwards
   std::string reference;    ///< "reference": the dataset id of the second measurement
   std::string pair = "id";  ///< "reference": "id" or "order"
+  std::string cad;          ///< "cad": the dataset id of the CAD part (kind cad_model)
   bool empty() const { return from.empty(); }
   bool operator==(const NominalSource&) const = default;
 };

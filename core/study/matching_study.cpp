@@ -6,6 +6,7 @@
 
 #include "core/common/axis_ticks.h"
 #include "core/common/error.h"
+#include "core/matching/cad_match.h"
 #include "core/project/project.h"
 #include "core/study/study_settings.h"
 
@@ -28,8 +29,67 @@ ProbePointSet studyModelSet(const ProbePointSet& set, const MatchingStudyOptions
   return diagnose::applyMatchingEffects(set, options.applied, source);
 }
 
+namespace {
+
+/// runMatchingStudy with a CAD part (MatchingStudyOptions::cad): closed form and minimax through
+/// matchToCad, which re-projects the measured points onto the part at each posture.
+MatchingStudyResult runCadStudy(const ProbePointSet& input, const MatchingStudyOptions& o,
+                                Observer* observer) {
+  const auto local = [](MatchMethod m) { return m == MatchMethod::ClosedForm || m == MatchMethod::Minimax; };
+  if (!local(o.primary))
+    throw ValidationError(
+        ErrorContext{input.source, 0, 0, "studies.matching.method"},
+        std::string("nominals from a CAD part are matched by closed-form (least squares) or ") + "minimax; " +
+            toString(o.primary) + " needs fixed point pairs");
+  if (!o.applied.empty())
+    throw ValidationError(
+        ErrorContext{input.source, 0, 0, "studies.diagnosis.matching.applied"},
+        "effects added to the model (" + o.applied.describe() + ") do not apply to nominals from a CAD part");
+  MatchingStudyResult res;
+  res.primary = o.primary;
+  res.machine = o.machine;
+  std::vector<MatchMethod> methods;
+  for (MatchMethod m : o.methods)
+    if (local(m)) methods.push_back(m);
+  if (std::find(methods.begin(), methods.end(), o.primary) == methods.end()) methods.push_back(o.primary);
+  const ProbePointSet* primaryAfter = nullptr;
+  for (MatchMethod m : methods) {
+    CadMatchOptions co;
+    co.method = m;
+    co.toleranceMm = o.toleranceMm;
+    co.allowScale = o.allowScale;
+    co.locks = o.locks;
+    const auto t0 = std::chrono::steady_clock::now();
+    CadMatchResult r = matchToCad(input, *o.cad, co, observer);
+    res.seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    res.runs.push_back(std::move(r.match));
+    res.cadAfter.push_back(std::move(r.after));
+    if (res.runs.back().run.termination == Termination::Cancelled) break;
+  }
+  for (std::size_t k = 0; k < res.runs.size(); ++k)
+    if (res.runs[k].method == o.primary) primaryAfter = &res.cadAfter[k];
+  const MatchResult* primary = res.of(o.primary);
+  if (primary == nullptr) return res;  // stopped before the primary method ran
+  res.adjustment = machine::adjustmentFor(o.machine, primary->pose.rotation, primary->pose.translation);
+  if (o.remeasure && primary->run.termination != Termination::Cancelled && primaryAfter) {
+    // The cell holds the part where the probe found it, its nominals the part's closest points.
+    RemeasureOptions ro;
+    ro.match.method = o.primary;
+    ro.match.toleranceMm = o.toleranceMm;
+    ro.match.locks = o.locks;
+    ro.match.seed = o.seed;
+    ro.machine = o.machine;
+    res.remeasure =
+        remeasureLoop(simulateCell(partAsMeasured(*primaryAfter), o.remeasureNoiseMm, o.seed), ro, observer);
+  }
+  return res;
+}
+
+}  // namespace
+
 MatchingStudyResult runMatchingStudy(const ProbePointSet& input, const MatchingStudyOptions& o,
                                      Observer* observer) {
+  if (o.cad) return runCadStudy(input, o, observer);
   const ProbePointSet set = studyModelSet(input, o);
   MatchingStudyResult res;
   res.primary = o.primary;

@@ -21,11 +21,13 @@
 // probe repeats the nominal points with `remeasureNoiseMm` noise. The loop therefore fails (form_error)
 // when the data's form error is larger than the tolerance; see remeasure.h.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/diagnose/applied_setup_matching.h"
+#include "core/geometry/mesh_search.h"
 #include "core/machine/controller_frame.h"
 #include "core/machine/machine.h"
 #include "core/matching/matching.h"
@@ -51,6 +53,12 @@ struct MatchingStudyOptions {
   double remeasureNoiseMm = 0.006;
   /// Effects added to the model (studies.diagnosis.matching.applied); empty = the declared rigid model.
   diagnose::AppliedMatchingEffects applied;
+  /// The CAD part the points' nominals come from (a dataset's nominals {"from": "cad"},
+  /// core/project/nominals.h); null for nominal point pairs. With it the closed-form and minimax runs
+  /// re-project the measured points onto the part at each posture (core/matching/cad_match.h) and the
+  /// other methods (which need fixed point pairs) are not run; a primary method other than those two
+  /// is refused.
+  std::shared_ptr<const geometry::MeshSearch> cad;
 };
 
 /// The point set the study matches: `set` with the applied effects on its nominal points (a copy of
@@ -65,6 +73,9 @@ struct MatchingStudyResult {
   machine::MachineDefinition machine;
   machine::Adjustment adjustment;  ///< for the primary run's posture
   std::optional<RemeasureResult> remeasure;
+  /// With a CAD part (options.cad): each run's closest points of the part at its final posture, in the
+  /// order of `runs` (the nominals its `after` evaluation is of).
+  std::vector<ProbePointSet> cadAfter;
 
   /// The run of a method, or nullptr when it was not run.
   const MatchResult* of(MatchMethod method) const;

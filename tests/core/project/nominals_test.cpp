@@ -219,8 +219,17 @@ TEST(Nominals, UnpairedPointsAndBadRecipesAreNamed) {
   EXPECT_NE(check(e).find("must be 'ls' or 'minimax'"), std::string::npos);
   e.criterion = "minimax";
   EXPECT_EQ(check(e), "no error");
+  e.from = "scan";
+  EXPECT_NE(check(e).find("must be 'element', 'reference' or 'cad'"), std::string::npos);
+  // A CAD part is the whole nominal: no element or fit options with it.
   e.from = "cad";
-  EXPECT_NE(check(e).find("must be 'element' or 'reference'"), std::string::npos);
+  e.cad = "part";
+  EXPECT_NE(check(e).find("take no element, fit or reference options"), std::string::npos);
+  NominalSource c;
+  c.from = "cad";
+  EXPECT_NE(check(c).find("nominals.cad"), std::string::npos);
+  c.cad = "part";
+  EXPECT_EQ(check(c), "no error");
   NominalSource r;
   r.from = "reference";
   EXPECT_NE(check(r).find("nominals.reference"), std::string::npos);
