@@ -93,6 +93,11 @@
         <source>Hole table</source>
         <translation>Bohrungstabelle</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>CAD part (STL)</source>
+        <translation>CAD-Teil (STL)</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -386,12 +391,12 @@ Spannweite: %2%3</translation>
 <context>
     <name>metrofit::DatasetActions</name>
     <message>
-        <location filename="../app/gui/datasetactions.cpp" line="+53"/>
+        <location filename="../app/gui/datasetactions.cpp" line="+55"/>
         <source>%1 — data</source>
         <translation>%1 — Daten</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+38"/>
         <source>&amp;Show data</source>
         <translation>Daten &amp;zeigen</translation>
     </message>
@@ -590,7 +595,7 @@ Spannweite: %2%3</translation>
 <context>
     <name>metrofit::DatasetView</name>
     <message>
-        <location filename="../widgets/data/datasetview.cpp" line="+103"/>
+        <location filename="../widgets/data/datasetview.cpp" line="+108"/>
         <source>Filter rows (text in any column)</source>
         <translation>Zeilen filtern (Text in einer beliebigen Spalte)</translation>
     </message>
@@ -610,12 +615,12 @@ Spannweite: %2%3</translation>
         <translation>ge&amp;gen</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>Reading %1…</source>
         <translation>Lese %1 …</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>Cannot show %1: %2</source>
         <translation>%1 kann nicht angezeigt werden: %2</translation>
     </message>
@@ -1152,7 +1157,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+61"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+62"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>Komma ( , )</translation>
@@ -1688,7 +1693,12 @@ Anzahl: %4</translation>
         <translation>Trennzeichen %1 · Dezimalzeichen %2 · Kopfzeile in Zeile %3 (%4 Spalten) · Kommentarzeilen: %5 · Datenzeilen: %6</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+30"/>
+        <source>Nominals: the closest points of the CAD part “%1”; the matching moves the points onto it at each posture (closed form or minimum zone).</source>
+        <translation>Sollpunkte: die nächsten Punkte des CAD-Teils „%1“; das Einpassen projiziert die Punkte bei jeder Lage neu darauf (geschlossene Lösung oder Minimumzone).</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>%1: already exists; an embedded copy never overwrites a file (choose another id)</source>
         <translation>%1: existiert bereits; eine eingebettete Kopie überschreibt nie eine Datei (andere Kennung wählen)</translation>
     </message>
@@ -1732,6 +1742,11 @@ Anzahl: %4</translation>
         <location line="+1"/>
         <source>a second measurement of the part</source>
         <translation>einer zweiten Messung des Teils</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a CAD part</source>
+        <translation>einem CAD-Teil</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1779,7 +1794,12 @@ Anzahl: %4</translation>
         <translation>Ausreißer aus der Anpassung auslassen</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+14"/>
+        <source>Import the part&apos;s STL file first</source>
+        <translation>Zuerst die STL-Datei des Teils importieren</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>by id</source>
         <translation>nach ID</translation>
     </message>
@@ -1799,7 +1819,7 @@ Anzahl: %4</translation>
         <translation>&amp;Messung:</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>&amp;From:</source>
         <translation>&amp;Aus:</translation>
     </message>
@@ -3276,7 +3296,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+125"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+126"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -3643,13 +3663,13 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+63"/>
-        <location line="+309"/>
+        <location line="+313"/>
         <location line="+16"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+456"/>
+        <location line="+485"/>
         <source>No posture yet: press Run (Ctrl+R).</source>
         <translation>Noch keine Lage: Ausführen drücken (Strg+R).</translation>
     </message>
@@ -3750,14 +3770,14 @@ Anzahl: %4</translation>
         <translation>Der Frame kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="-744"/>
+        <location line="-776"/>
         <source>The effects applied to the matching model are invalid:
 %1</source>
         <translation>Die ins Ausrichtungsmodell übernommenen Effekte sind ungültig:
 %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>%1 points on %2 surfaces, %3%4.</source>
         <translation>%1 Punkte auf %2 Flächen, %3%4.</translation>
     </message>
@@ -3772,23 +3792,23 @@ Anzahl: %4</translation>
         <translation>Die auf der Seite „Diagnose“ übernommenen Effekte gehören zu den Antastpunkten %1 (auf denen die Diagnose lief); diese Punkte verwenden das deklarierte Modell.</translation>
     </message>
     <message>
-        <location line="-102"/>
-        <location line="+204"/>
+        <location line="-105"/>
+        <location line="+208"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
     <message>
-        <location line="-903"/>
+        <location line="-907"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: %1 mm kann auf der Seite nicht eingestellt werden (sie nimmt %2 bis %3 mm in Schritten von %4 mm)</translation>
     </message>
     <message>
-        <location line="+750"/>
+        <location line="+751"/>
         <source>This project has no probe points. Import them with File › Import data… (Ctrl+I): probe points with their nominals, a hole table or a CMM report, or raw measured points whose nominals come from a fitted element or a second measurement.</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Importieren Sie sie mit Datei › Daten importieren… (Strg+I): Antastpunkte mit ihren Sollpunkten, eine Bohrungstabelle oder ein KMG-Protokoll, oder rohe Messpunkte, deren Sollpunkte aus einem angepassten Element oder einer zweiten Messung kommen.</translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+150"/>
         <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
         <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (Rückgängig oder die Projektdatei): %1</translation>
     </message>
@@ -3838,21 +3858,21 @@ Anzahl: %4</translation>
         <translation> Abgebrochen: die bisher beste gefundene Lage.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+59"/>
         <source>BEFORE matching
 %1 of %2 out of ±%3 mm, max |d| %4 mm</source>
         <translation>VOR der Ausrichtung
 %1 von %2 außerhalb ±%3 mm, max |d| %4 mm</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>AFTER matching
 not run yet: press Run (Ctrl+R)</source>
         <translation>NACH der Ausrichtung
 noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+22"/>
         <source>AFTER matching (%1)
 %2 of %3 out of ±%4 mm, max |d| %5 mm</source>
         <translation>NACH der Ausrichtung (%1)
@@ -4003,7 +4023,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-563"/>
+        <location line="-593"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -4023,14 +4043,14 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Lizenz: %1.</translation>
     </message>
     <message>
-        <location line="-91"/>
-        <location line="+108"/>
-        <location line="+54"/>
+        <location line="-94"/>
+        <location line="+111"/>
+        <location line="+55"/>
         <source>Not matched yet: press Run (Ctrl+R).</source>
         <translation>Noch nicht ausgerichtet: Ausführen drücken (Strg+R).</translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-45"/>
         <source>Cannot show these probe points:
 %1</source>
         <translation>Diese Antastpunkte können nicht angezeigt werden:
@@ -4126,14 +4146,14 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/matching/pointsetview.cpp" line="+314"/>
+        <location filename="../widgets/matching/pointsetview.cpp" line="+362"/>
         <source>deviation
 (mm)</source>
         <translation>Abw.
 (mm)</translation>
     </message>
     <message>
-        <location line="+225"/>
+        <location line="+231"/>
         <source>grey: nominal points; coloured: measured, deviation vectors x%1</source>
         <translation>grau: Nennpunkte; farbig: gemessen, Abweichungsvektoren x%1</translation>
     </message>
@@ -4144,6 +4164,11 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>the part: coloured as the nearest probed point, light grey where none is near</source>
+        <translation>das Teil: gefärbt wie der nächste Antastpunkt, hellgrau, wo keiner nahe ist</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>green: within ±%1 mm; large: out of tolerance</source>
         <translation>grün: innerhalb ±%1 mm; groß: außerhalb der Toleranz</translation>
     </message>
@@ -4797,7 +4822,7 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+355"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+365"/>
         <location filename="../widgets/report/summarysection.cpp" line="+150"/>
         <source>value</source>
         <translation>Wert</translation>
@@ -5097,7 +5122,7 @@ Abweichung: %3 µm</translation>
         <translation>Wiederholen Sie den Kreisformtest und prüfen Sie seine Datei.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-311"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="-320"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (Originalparameter)</translation>
     </message>
@@ -5117,7 +5142,7 @@ Abweichung: %3 µm</translation>
         <translation>Minimax</translation>
     </message>
     <message>
-        <location line="+174"/>
+        <location line="+183"/>
         <source>Probe points “%1”, tolerance ±%2 mm</source>
         <translation>Antastpunkte „%1“, Toleranz ±%2 mm</translation>
     </message>

@@ -93,6 +93,11 @@
         <source>Hole table</source>
         <translation>Tabela otworów</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>CAD part (STL)</source>
+        <translation>Część CAD (STL)</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -386,12 +391,12 @@ rozstęp: %2%3</translation>
 <context>
     <name>metrofit::DatasetActions</name>
     <message>
-        <location filename="../app/gui/datasetactions.cpp" line="+53"/>
+        <location filename="../app/gui/datasetactions.cpp" line="+55"/>
         <source>%1 — data</source>
         <translation>%1 — dane</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+38"/>
         <source>&amp;Show data</source>
         <translation>&amp;Pokaż dane</translation>
     </message>
@@ -590,7 +595,7 @@ rozstęp: %2%3</translation>
 <context>
     <name>metrofit::DatasetView</name>
     <message>
-        <location filename="../widgets/data/datasetview.cpp" line="+103"/>
+        <location filename="../widgets/data/datasetview.cpp" line="+108"/>
         <source>Filter rows (text in any column)</source>
         <translation>Filtruj wiersze (tekst w dowolnej kolumnie)</translation>
     </message>
@@ -610,12 +615,12 @@ rozstęp: %2%3</translation>
         <translation>&amp;względem</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>Reading %1…</source>
         <translation>Wczytywanie %1…</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>Cannot show %1: %2</source>
         <translation>Nie można pokazać %1: %2</translation>
     </message>
@@ -1153,7 +1158,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+61"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+62"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>przecinek ( , )</translation>
@@ -1693,7 +1698,12 @@ liczba: %4</translation>
         <translation>separator %1 · znak dziesiętny %2 · nagłówek w wierszu %3 (%4 kolumn) · wiersze komentarza: %5 · wiersze danych: %6</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+30"/>
+        <source>Nominals: the closest points of the CAD part “%1”; the matching moves the points onto it at each posture (closed form or minimum zone).</source>
+        <translation>Punkty nominalne: najbliższe punkty części CAD „%1”; dopasowanie rzutuje punkty na nią przy każdym położeniu (rozwiązanie zamknięte lub strefa minimalna).</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>%1: already exists; an embedded copy never overwrites a file (choose another id)</source>
         <translation>%1: już istnieje; osadzona kopia nigdy nie nadpisuje pliku (wybierz inny identyfikator)</translation>
     </message>
@@ -1741,6 +1751,11 @@ liczba: %4</translation>
         <translation>drugiego pomiaru części</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>a CAD part</source>
+        <translation>części CAD</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>no normals (positions only)</source>
         <translation>bez normalnych (tylko położenia)</translation>
@@ -1786,7 +1801,12 @@ liczba: %4</translation>
         <translation>Pomiń punkty odstające w dopasowaniu</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+14"/>
+        <source>Import the part&apos;s STL file first</source>
+        <translation>Najpierw zaimportuj plik STL części</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>by id</source>
         <translation>według id</translation>
     </message>
@@ -1806,7 +1826,7 @@ liczba: %4</translation>
         <translation>&amp;Pomiar:</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>&amp;From:</source>
         <translation>&amp;Z:</translation>
     </message>
@@ -3285,7 +3305,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+125"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+126"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -3652,13 +3672,13 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+63"/>
-        <location line="+309"/>
+        <location line="+313"/>
         <location line="+16"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
     </message>
     <message>
-        <location line="+456"/>
+        <location line="+485"/>
         <source>No posture yet: press Run (Ctrl+R).</source>
         <translation>Brak położenia: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
@@ -3759,14 +3779,14 @@ liczba: %4</translation>
         <translation>Nie można zapisać frame’u</translation>
     </message>
     <message>
-        <location line="-744"/>
+        <location line="-776"/>
         <source>The effects applied to the matching model are invalid:
 %1</source>
         <translation>Efekty zastosowane do modelu dopasowania są nieprawidłowe:
 %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>%1 points on %2 surfaces, %3%4.</source>
         <translation>Punkty: %1, powierzchnie: %2, %3%4.</translation>
     </message>
@@ -3781,23 +3801,23 @@ liczba: %4</translation>
         <translation>Efekty zastosowane na stronie Diagnoza należą do punktów sondowania %1 (tych, na których przeprowadzono diagnozę); te punkty używają zadeklarowanego modelu.</translation>
     </message>
     <message>
-        <location line="-102"/>
-        <location line="+204"/>
+        <location line="-105"/>
+        <location line="+208"/>
         <source>Settings changed: press Run (Ctrl+R) to match again.</source>
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
     <message>
-        <location line="-903"/>
+        <location line="-907"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: nie można ustawić %1 mm na stronie (przyjmuje od %2 do %3 mm w krokach co %4 mm)</translation>
     </message>
     <message>
-        <location line="+750"/>
+        <location line="+751"/>
         <source>This project has no probe points. Import them with File › Import data… (Ctrl+I): probe points with their nominals, a hole table or a CMM report, or raw measured points whose nominals come from a fitted element or a second measurement.</source>
         <translation>Ten projekt nie ma punktów pomiarowych. Zaimportuj je przez Plik › Importuj dane… (Ctrl+I): punkty z ich wartościami nominalnymi, tabelę otworów lub raport CMM albo surowe punkty pomiarowe, których punkty nominalne pochodzą z dopasowanego elementu lub z drugiego pomiaru.</translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+150"/>
         <source>The matching study&apos;s settings are invalid, nothing is run until they are corrected (Undo, or the project file): %1</source>
         <translation>Ustawienia badania dopasowania są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (Cofnij lub plik projektu): %1</translation>
     </message>
@@ -3847,21 +3867,21 @@ liczba: %4</translation>
         <translation> Anulowano: najlepsze dotąd znalezione położenie.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+59"/>
         <source>BEFORE matching
 %1 of %2 out of ±%3 mm, max |d| %4 mm</source>
         <translation>PRZED dopasowaniem
 %1 z %2 poza ±%3 mm, maks. |d| %4 mm</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>AFTER matching
 not run yet: press Run (Ctrl+R)</source>
         <translation>PO dopasowaniu
 jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+22"/>
         <source>AFTER matching (%1)
 %2 of %3 out of ±%4 mm, max |d| %5 mm</source>
         <translation>PO dopasowaniu (%1)
@@ -4013,7 +4033,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-563"/>
+        <location line="-593"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -4033,14 +4053,14 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Licencja: %1.</translation>
     </message>
     <message>
-        <location line="-91"/>
-        <location line="+108"/>
-        <location line="+54"/>
+        <location line="-94"/>
+        <location line="+111"/>
+        <location line="+55"/>
         <source>Not matched yet: press Run (Ctrl+R).</source>
         <translation>Jeszcze nie dopasowano: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-45"/>
         <source>Cannot show these probe points:
 %1</source>
         <translation>Nie można wyświetlić tych punktów sondowania:
@@ -4136,14 +4156,14 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PointSetView</name>
     <message>
-        <location filename="../widgets/matching/pointsetview.cpp" line="+314"/>
+        <location filename="../widgets/matching/pointsetview.cpp" line="+362"/>
         <source>deviation
 (mm)</source>
         <translation>odchyłka
 (mm)</translation>
     </message>
     <message>
-        <location line="+225"/>
+        <location line="+231"/>
         <source>grey: nominal points; coloured: measured, deviation vectors x%1</source>
         <translation>szare: nominalne; kolorowe: zmierzone, wektory odchyłek x%1</translation>
     </message>
@@ -4154,6 +4174,11 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>the part: coloured as the nearest probed point, light grey where none is near</source>
+        <translation>część: kolor najbliższego punktu pomiarowego, jasnoszara tam, gdzie żadnego nie ma w pobliżu</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>green: within ±%1 mm; large: out of tolerance</source>
         <translation>zielone: w granicach ±%1 mm; duże: poza tolerancją</translation>
     </message>
@@ -4807,7 +4832,7 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+355"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+365"/>
         <location filename="../widgets/report/summarysection.cpp" line="+150"/>
         <source>value</source>
         <translation>wartość</translation>
@@ -5107,7 +5132,7 @@ odchyłka: %3 µm</translation>
         <translation>Powtórz test okrągłości i sprawdź jego plik.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-311"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="-320"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (parametry z publikacji)</translation>
     </message>
@@ -5127,7 +5152,7 @@ odchyłka: %3 µm</translation>
         <translation>minimaks</translation>
     </message>
     <message>
-        <location line="+174"/>
+        <location line="+183"/>
         <source>Probe points “%1”, tolerance ±%2 mm</source>
         <translation>Punkty sondowania „%1”, tolerancja ±%2 mm</translation>
     </message>

@@ -42,6 +42,7 @@
 #include "app/gui/studysettingbinding.h"
 #include "core/common/error.h"
 #include "core/io/file_io.h"
+#include "core/matching/cad_match.h"
 #include "core/matching/evaluation.h"
 #include "core/matching/hole_table.h"
 #include "core/project/nominals.h"
@@ -830,6 +831,7 @@ void MatchingPage::showPoints(int comboIndex) {
   result_.reset();
   set_.reset();
   rawSet_.reset();
+  cad_.reset();
   appliedText_.clear();
   appliedKey_ = appliedKeyOf(document_->project());
   if (comboIndex < 0 || comboIndex >= static_cast<int>(sets_.size())) {
@@ -866,6 +868,8 @@ void MatchingPage::showPoints(int comboIndex) {
     if (const DatasetRef* r = nominalReference(document_->project(), dataset))
       reference = document_->resolvedDataset(*r);
     rawSet_ = readProbePointDataset(dataset, reference ? &*reference : nullptr, 3);
+    // A CAD part: the study re-projects the points onto it at each posture (core/matching/cad_match.h).
+    if (dataset.nominals.from == "cad" && reference) cad_ = readCadModel(*reference);
     set_ = matching::studyModelSet(*rawSet_, settings_.options, projectFile_.toStdString());
     const ProbePointSet& points = *set_;
     std::set<std::string> surfaces;
@@ -930,6 +934,7 @@ matching::MatchingStudyOptions MatchingPage::currentOptions() const {
       list += std::string(list.empty() ? "" : ",") + kDofNames[k];
   }
   o.locks = matching::DofLocks::parse(list, "lock");
+  o.cad = cad_;
   return o;
 }
 
@@ -1204,24 +1209,53 @@ void MatchingPage::updateViews() {
     v->setExaggeration(factor);
   }
   beforeView_->setPoints(set);
+  // A CAD nominal: the part itself, coloured by the deviation measured on it (before: where it is;
+  // after: moved by the posture), under the points.
+  const auto partTriangles = [this](const matching::Pose& pose) {
+    std::vector<std::array<std::array<double, 3>, 3>> out;
+    out.reserve(cad_->mesh().triangles.size());
+    for (const geometry::Triangle& t : cad_->mesh().triangles) {
+      std::array<std::array<double, 3>, 3> moved{};
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d v = pose.apply(t.v[static_cast<std::size_t>(k)]);
+        moved[static_cast<std::size_t>(k)] = {v.x(), v.y(), v.z()};
+      }
+      out.push_back(moved);
+    }
+    return out;
+  };
+  if (cad_)
+    beforeView_->setSurface(partTriangles({}), matching::triangleDeviations(cad_->mesh(), set, before));
+  else
+    beforeView_->clearSurface();
   beforeView_->setTitle(tr("BEFORE matching\n%1 of %2 out of ±%3 mm, max |d| %4 mm")
                             .arg(outBefore)
                             .arg(set.points.size())
                             .arg(locale.toString(tol, 'f', 3), locale.toString(maxBefore, 'f', 3)));
   if (!result_) {
+    afterView_->clearSurface();
     afterView_->setPoints(ProbePointSet{});
     afterView_->setTitle(tr("AFTER matching\nnot run yet: press Run (Ctrl+R)"));
     return;
   }
   const matching::MatchResult& r = result_->primaryRun();
+  // With a CAD part the nominals after matching are the part's closest points at the final posture.
+  const ProbePointSet* afterSet = &set;
+  for (std::size_t k = 0; k < result_->cadAfter.size() && k < result_->runs.size(); ++k)
+    if (result_->runs[k].method == r.method) afterSet = &result_->cadAfter[k];
   std::vector<std::array<double, 3>> transformed;
-  transformed.reserve(set.points.size());
-  for (const ProbePoint& p : set.points) {
+  transformed.reserve(afterSet->points.size());
+  for (const ProbePoint& p : afterSet->points) {
     const Eigen::Vector3d q = r.pose.apply(p.nominal);
     transformed.push_back({q.x(), q.y(), q.z()});
   }
-  afterView_->setPoints(set);
+  afterView_->setPoints(*afterSet);
   afterView_->setAfter(transformed, r.after.deviations);
+  if (cad_)
+    afterView_->setSurface(partTriangles(r.pose),
+                           matching::triangleDeviations(cad_->mesh(), *afterSet, r.after.deviations));
+  else
+    afterView_->clearSurface();
   afterView_->setTitle(
       tr("AFTER matching (%1)\n%2 of %3 out of ±%4 mm, max |d| %5 mm")
           .arg(methodShort(r.method))

@@ -206,7 +206,9 @@ class MatchingPage : public QWidget {
 
   std::optional<ProbePointSet> set_;     ///< the study's model: rawSet_ with the applied effects
   std::optional<ProbePointSet> rawSet_;  ///< as read
-  std::string appliedKey_;               ///< studies.diagnosis.matching.applied as text
+  /// The CAD part the shown points' nominals come from ({"from": "cad"}), null otherwise.
+  std::shared_ptr<const geometry::MeshSearch> cad_;
+  std::string appliedKey_;  ///< studies.diagnosis.matching.applied as text
   QString appliedText_;
   matching::MatchingStudySettings settings_;
   bool writingStudy_ = false;  ///< the page's own edit of the document

@@ -102,6 +102,8 @@ QString datasetKindTitle(const QString& kind) {
     return QCoreApplication::translate("StudyInfo", "DMIS output");
   if (kind == QLatin1String(dataset_kind::kHoleTable))
     return QCoreApplication::translate("StudyInfo", "Hole table");
+  if (kind == QLatin1String(dataset_kind::kCadModel))
+    return QCoreApplication::translate("StudyInfo", "CAD part (STL)");
   return kind;
 }
 

@@ -884,7 +884,12 @@ void ImportDialog::revalidate() {
         for (const QString& more : seriesFiles_)
           request.moreFiles.push_back(QFile::encodeName(more).toStdString());
       dataset_ = addDataset(scratch, QFile::encodeName(projectPath_).toStdString(), request);
-      if (!dataset_.nominals.empty()) {
+      if (dataset_.nominals.from == "cad") {
+        // addDataset read the points onto the part already; say which part.
+        nominalsSummary_ = tr("Nominals: the closest points of the CAD part “%1”; the matching moves the "
+                              "points onto it at each posture (closed form or minimum zone).")
+                               .arg(QString::fromStdString(dataset_.nominals.cad));
+      } else if (!dataset_.nominals.empty()) {
         // What the nominals came out as: the element's size and form (the same computation the
         // readers make, core/project/nominals.h).
         std::optional<geometry::PointSet> reference;
@@ -934,6 +939,7 @@ void ImportDialog::buildNominalsBox() {
   nominalFrom_->setObjectName(QStringLiteral("importNominalFrom"));
   nominalFrom_->addItem(tr("a fitted element"), QStringLiteral("element"));
   nominalFrom_->addItem(tr("a second measurement of the part"), QStringLiteral("reference"));
+  nominalFrom_->addItem(tr("a CAD part"), QStringLiteral("cad"));
   nominalElement_ = new QComboBox(nominalsBox_);
   nominalElement_->setObjectName(QStringLiteral("importNominalElement"));
   nominalElement_->addItem(tr("no normals (positions only)"), QString());
@@ -961,6 +967,15 @@ void ImportDialog::buildNominalsBox() {
   for (const DatasetRef& d : project_.datasets)
     if (d.kind == dataset_kind::kProbePoints)
       nominalReference_->addItem(QString::fromStdString(d.id), QString::fromStdString(d.id));
+  nominalCad_ = new QComboBox(nominalsBox_);
+  nominalCad_->setObjectName(QStringLiteral("importNominalCad"));
+  for (const DatasetRef& d : project_.datasets)
+    if (d.kind == dataset_kind::kCadModel)
+      nominalCad_->addItem(QString::fromStdString(d.id), QString::fromStdString(d.id));
+  if (nominalCad_->count() == 0) {
+    nominalFrom_->setItemData(2, 0, Qt::UserRole - 1);
+    nominalFrom_->setItemData(2, tr("Import the part's STL file first"), Qt::ToolTipRole);
+  }
   nominalPair_ = new QComboBox(nominalsBox_);
   nominalPair_->setObjectName(QStringLiteral("importNominalPair"));
   nominalPair_->addItem(tr("by id"), QStringLiteral("id"));
@@ -979,6 +994,7 @@ void ImportDialog::buildNominalsBox() {
   fromRow->addWidget(referenceLabel);
   fromRow->addWidget(nominalReference_);
   fromRow->addWidget(nominalPair_);
+  fromRow->addWidget(nominalCad_);
   fromRow->addStretch(1);
   auto* fromLabel = new QLabel(tr("&From:"), nominalsBox_);
   fromLabel->setBuddy(nominalFrom_);
@@ -1002,7 +1018,8 @@ void ImportDialog::buildNominalsBox() {
     updateNominalControls();
     revalidate();
   };
-  for (QComboBox* c : {nominalFrom_, nominalElement_, nominalCriterion_, nominalReference_, nominalPair_})
+  for (QComboBox* c :
+       {nominalFrom_, nominalElement_, nominalCriterion_, nominalReference_, nominalPair_, nominalCad_})
     connect(c, &QComboBox::currentIndexChanged, this, changed);
   connect(nominalRadius_, &QDoubleSpinBox::valueChanged, this, changed);
   for (QCheckBox* c : {nominalInner_, nominalRobust_}) connect(c, &QCheckBox::toggled, this, changed);
@@ -1010,6 +1027,9 @@ void ImportDialog::buildNominalsBox() {
 
 void ImportDialog::updateNominalControls() {
   const bool reference = nominalFrom_->currentData().toString() == QLatin1String("reference");
+  const bool cad = nominalFrom_->currentData().toString() == QLatin1String("cad");
+  nominalCad_->setVisible(cad);
+  nominalElement_->setEnabled(!cad);
   // "no normals" only for a second measurement: an element's own nominals need an element.
   nominalElement_->setItemData(0, reference ? QVariant() : QVariant(0), Qt::UserRole - 1);
   if (!reference && nominalElement_->currentData().toString().isEmpty()) {
@@ -1017,7 +1037,7 @@ void ImportDialog::updateNominalControls() {
     nominalElement_->setCurrentIndex(nominalElement_->findData(QStringLiteral("sphere")));
   }
   const QString element = nominalElement_->currentData().toString();
-  const bool fitted = !element.isEmpty();
+  const bool fitted = !element.isEmpty() && !cad;
   nominalReference_->setVisible(reference);
   nominalPair_->setVisible(reference);
   if (auto* l = findChild<QLabel*>(QStringLiteral("importNominalReferenceLabel"))) l->setVisible(reference);
@@ -1061,6 +1081,8 @@ void ImportDialog::setNominals(const NominalSource& n) {
     const int r = nominalReference_->findData(QString::fromStdString(n.reference));
     if (r >= 0) nominalReference_->setCurrentIndex(r);
     nominalPair_->setCurrentIndex(n.pair == "order" ? 1 : 0);
+    const int c = nominalCad_->findData(QString::fromStdString(n.cad));
+    if (c >= 0) nominalCad_->setCurrentIndex(c);
   }
   updateNominalControls();
   revalidate();
@@ -1069,6 +1091,10 @@ void ImportDialog::setNominals(const NominalSource& n) {
 NominalSource ImportDialog::nominals() const {
   NominalSource n;
   n.from = nominalFrom_->currentData().toString().toStdString();
+  if (n.from == "cad") {
+    n.cad = nominalCad_->currentData().toString().toStdString();
+    return n;
+  }
   n.element = nominalElement_->currentData().toString().toStdString();
   const bool fitted = !n.element.empty();
   if (fitted && nominalRadius_->isEnabled()) n.radiusMm = nominalRadius_->value();

@@ -25,7 +25,8 @@
 //     their nominals come from (core/project/nominals.h): an element fitted to them (with a fixed radius,
 //     least squares or minimum zone, stray points left out, a bore's inward normals), or a second
 //     measurement of the part (another probe-point dataset of the project, paired by id or by order,
-//     normals from an element fitted to it or none); the fit's size and form are shown,
+//     normals from an element fitted to it or none), or a CAD part of the project (a cad-model dataset:
+//     the closest points of the part); the fit's size and form are shown,
 // The dialog does not change the project: after accept() the caller adds dataset() through the
 // document's undo stack (ProjectDocument::addDataset). An embedded file is copied on accept().
 #include <QDialog>
@@ -173,6 +174,7 @@ class ImportDialog : public QDialog {
   QCheckBox* nominalRobust_ = nullptr;
   QComboBox* nominalReference_ = nullptr;
   QComboBox* nominalPair_ = nullptr;
+  QComboBox* nominalCad_ = nullptr;
   QString nominalsSummary_;
   QStringList seriesFiles_;
   QListWidget* rowProblems_;

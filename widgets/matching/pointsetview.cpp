@@ -41,6 +41,7 @@
 #include <vtkCamera.h>
 #include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
@@ -237,6 +238,50 @@ struct MarkerLayer {
 constexpr double kBeforeLineColour[3] = {0.40, 0.40, 0.40};
 constexpr double kAfterLineColour[3] = {0.10, 0.10, 0.10};
 
+/// The CAD part (setSurface): its triangles, each coloured by the deviation measured there (cell
+/// scalars through the view's colour map), light grey where nothing was measured (NaN), half
+/// transparent so that the points behind it stay visible.
+struct SurfaceLayer {
+  vtkNew<vtkPolyDataMapper> mapper;
+  vtkNew<vtkActor> actor;
+
+  void init(vtkRenderer* renderer, vtkColorTransferFunction* colours) {
+    actor->SetMapper(mapper);
+    mapper->SetLookupTable(colours);
+    mapper->UseLookupTableScalarRangeOn();
+    mapper->SetScalarModeToUseCellData();
+    mapper->SetColorModeToMapScalars();
+    mapper->ScalarVisibilityOn();
+    vtkProperty* p = actor->GetProperty();
+    p->SetOpacity(0.55);
+    p->SetAmbient(0.45);
+    p->SetDiffuse(0.55);
+    p->SetSpecular(0.0);
+    actor->VisibilityOff();
+    renderer->AddActor(actor);
+  }
+
+  void set(const std::vector<std::array<Vec3, 3>>& triangles, const std::vector<double>& deviations) {
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> cells;
+    vtkNew<vtkDoubleArray> scalars;
+    scalars->SetName("deviation");
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      vtkIdType ids[3];
+      for (int k = 0; k < 3; ++k) ids[k] = points->InsertNextPoint(triangles[t][k].data());
+      cells->InsertNextCell(3, ids);
+      scalars->InsertNextValue(t < deviations.size() ? deviations[t] : std::nan(""));
+    }
+    vtkNew<vtkPolyData> poly;
+    poly->SetPoints(points);
+    poly->SetPolys(cells);
+    poly->GetCellData()->SetScalars(scalars);
+    mapper->SetInputData(poly);
+    actor->SetVisibility(!triangles.empty());
+  }
+  void hide() { actor->VisibilityOff(); }
+};
+
 /// One drawn set: spheres at the tips coloured by deviation (the out-of-tolerance ones larger) and
 /// the lines q -> tip.
 struct TipLayer {
@@ -277,6 +322,7 @@ struct PointSetScene {
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkRenderer> barRenderer;
   vtkNew<vtkColorTransferFunction> colours;
+  SurfaceLayer surface;
   MarkerLayer nominal;
   TipLayer before;
   TipLayer after;
@@ -301,6 +347,8 @@ struct PointSetScene {
     barRenderer->SetViewport(kSceneWidth, 0.0, 1.0, 1.0);
     barRenderer->InteractiveOff();
     colours->SetColorSpaceToDiverging();
+    colours->SetNanColor(0.86, 0.86, 0.86);  // the part where nothing was measured
+    surface.init(renderer, colours);
     nominal.init(renderer, kNominalPointSize, nullptr, nullptr);
     before.init(renderer, colours, kBeforeLineColour);
     after.init(renderer, colours, kAfterLineColour);
@@ -479,6 +527,8 @@ struct PointSetView::Impl {
   std::vector<Vec3> normal;
   std::vector<Vec3> measured;
   std::vector<double> deviations;
+  std::vector<std::array<Vec3, 3>> surface;
+  std::vector<double> surfaceDeviations;
   bool hasAfter = false;
   std::vector<Vec3> afterNominal;
   std::vector<double> afterDeviations;
@@ -508,6 +558,10 @@ struct PointSetView::Impl {
     if (!scene) {
       return;
     }
+    if (surface.empty())
+      scene->surface.hide();
+    else
+      scene->surface.set(surface, surfaceDeviations);
     if (showBefore) {
       std::vector<Vec3> tips(nominal.size());
       for (std::size_t i = 0; i < nominal.size(); ++i) {
@@ -542,6 +596,10 @@ struct PointSetView::Impl {
       text +=
           QLatin1Char('\n') + PointSetView::tr("after matching: solid; before (nominal and measured): faded");
     }
+    if (!surface.empty())
+      text += QLatin1Char('\n') + PointSetView::tr(
+                                      "the part: coloured as the nearest probed point, light grey where "
+                                      "none is near");
     if (tolerance > 0.0) {
       text += QLatin1Char('\n') + PointSetView::tr("green: within ±%1 mm; large: out of tolerance")
                                       .arg(locale.toString(tolerance, 'g', 4));
@@ -627,6 +685,27 @@ void PointSetView::setAfter(const std::vector<std::array<double, 3>>& transforme
   d->afterDeviations = deviationsAfter;
   d->hasAfter = true;
   d->rebuild();
+}
+
+void PointSetView::setSurface(const std::vector<std::array<std::array<double, 3>, 3>>& triangles,
+                              const std::vector<double>& triangleDeviations) {
+  d->surface.resize(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      d->surface[t][k] = Vec3(triangles[t][k][0], triangles[t][k][1], triangles[t][k][2]);
+  d->surfaceDeviations = triangleDeviations;
+  d->rebuild();
+  resetCamera();
+}
+
+void PointSetView::clearSurface() {
+  d->surface.clear();
+  d->surfaceDeviations.clear();
+  d->rebuild();
+}
+
+std::size_t PointSetView::surfaceTriangles() const {
+  return d->surface.size();
 }
 
 void PointSetView::clearAfter() {

@@ -13,6 +13,7 @@
 // never touches OpenGL, so offscreen GUI tests of windows containing it do not crash.
 #include <QWidget>
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <vector>
 
@@ -48,6 +49,12 @@ class PointSetView : public QWidget {
                 const std::vector<double>& deviationsAfter);
   void clearAfter();
   bool hasAfter() const;
+  /// A part surface drawn with the points (a CAD nominal): triangles in the scene's coordinates, each
+  /// coloured by its deviation (mm; NaN: not measured there, light grey), half transparent.
+  void setSurface(const std::vector<std::array<std::array<double, 3>, 3>>& triangles,
+                  const std::vector<double>& triangleDeviations);
+  void clearSurface();
+  std::size_t surfaceTriangles() const;
   void setDisplay(Display display);
   Display display() const;
   /// Deviation exaggeration for the drawn displacement vectors (default 100x).

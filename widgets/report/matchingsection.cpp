@@ -22,6 +22,7 @@
 
 #include "core/common/axis_ticks.h"
 #include "core/machine/controller_frame.h"
+#include "core/project/nominals.h"
 #include "core/study/matching_study.h"
 #include "widgets/common/palette.h"
 #include "widgets/report/reportpainter.h"
@@ -214,7 +215,16 @@ QString countText(std::size_t n, std::size_t of) {
 
 void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDataset& dataset,
                 const matching::MatchingStudySettings& settings) {
-  const matching::MatchingStudyOptions& o = settings.options;
+  matching::MatchingStudyOptions o = settings.options;
+  // Nominals from a CAD part: the study re-projects the points onto it (core/matching/cad_match.h).
+  if (dataset.ref.nominals.from == "cad") {
+    for (const ReportDataset& rd : context.datasets) {
+      if (rd.ref.id != dataset.ref.nominals.cad) continue;
+      DatasetRef part = rd.ref;
+      part.path = rd.path.toStdString();
+      o.cad = readCadModel(part);
+    }
+  }
   // The study's model: the probe points with the effects added by the diagnosis page's Apply.
   const ProbePointSet set = matching::studyModelSet(*dataset.probes, o);
   const matching::MatchingStudyResult res = matching::runMatchingStudy(*dataset.probes, o);

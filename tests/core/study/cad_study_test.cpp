@@ -16,34 +16,11 @@
 #include "core/project/datasets.h"
 #include "core/project/nominals.h"
 #include "core/study/matching_study.h"
+#include "samples/box_stl.h"
 #include "testsupport.h"
 
 namespace metrofit {
 namespace {
-
-/// An axis-parallel box [0,a]x[0,b]x[0,c] as ASCII STL, 12 triangles, outward normals.
-std::string boxStl(double a, double b, double c) {
-  const Eigen::Vector3d v[8] = {{0, 0, 0}, {a, 0, 0}, {a, b, 0}, {0, b, 0},
-                                {0, 0, c}, {a, 0, c}, {a, b, c}, {0, b, c}};
-  // Faces as corner quadruples in counter-clockwise order seen from outside.
-  const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                           {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
-  std::string s = "solid box\n";
-  char line[200];
-  for (const auto& f : faces) {
-    for (const auto& tri : {std::array<int, 3>{f[0], f[1], f[2]}, std::array<int, 3>{f[0], f[2], f[3]}}) {
-      const Eigen::Vector3d n = (v[tri[1]] - v[tri[0]]).cross(v[tri[2]] - v[tri[0]]).normalized();
-      std::snprintf(line, sizeof line, " facet normal %.9g %.9g %.9g\n  outer loop\n", n.x(), n.y(), n.z());
-      s += line;
-      for (int k : tri) {
-        std::snprintf(line, sizeof line, "   vertex %.9g %.9g %.9g\n", v[k].x(), v[k].y(), v[k].z());
-        s += line;
-      }
-      s += "  endloop\n endfacet\n";
-    }
-  }
-  return s + "endsolid box\n";
-}
 
 /// Points on the faces of the box 100 x 60 x 40 (3 per face, off the edges), moved by `pose`.
 ProbePointSet boxPoints(const matching::Pose& pose) {
@@ -76,8 +53,9 @@ matching::Pose knownPose() {
 }
 
 TEST(CadStudy, ClosedFormAndMinimaxRecoverAKnownPostureOfTheBox) {
-  const geometry::MeshSearch mesh(geometry::parseStl(boxStl(100, 60, 40), "box.stl"));
-  auto cad = std::make_shared<const geometry::MeshSearch>(geometry::parseStl(boxStl(100, 60, 40), "box.stl"));
+  const geometry::MeshSearch mesh(geometry::parseStl(test::boxStl(100, 60, 40), "box.stl"));
+  auto cad =
+      std::make_shared<const geometry::MeshSearch>(geometry::parseStl(test::boxStl(100, 60, 40), "box.stl"));
   const matching::Pose truth = knownPose();
   matching::MatchingStudyOptions o;
   o.cad = cad;
@@ -100,7 +78,8 @@ TEST(CadStudy, ClosedFormAndMinimaxRecoverAKnownPostureOfTheBox) {
 }
 
 TEST(CadStudy, MethodsThatNeedPointPairsAndAppliedEffectsAreRefused) {
-  auto cad = std::make_shared<const geometry::MeshSearch>(geometry::parseStl(boxStl(100, 60, 40), "box.stl"));
+  auto cad =
+      std::make_shared<const geometry::MeshSearch>(geometry::parseStl(test::boxStl(100, 60, 40), "box.stl"));
   matching::MatchingStudyOptions o;
   o.cad = cad;
   o.remeasure = false;
@@ -116,7 +95,7 @@ TEST(CadStudy, MethodsThatNeedPointPairsAndAppliedEffectsAreRefused) {
 }
 
 TEST(CadStudy, TrianglesAreColouredByTheNearestProbedPoint) {
-  const geometry::TriangleMesh box = geometry::parseStl(boxStl(100, 60, 40), "box.stl");
+  const geometry::TriangleMesh box = geometry::parseStl(test::boxStl(100, 60, 40), "box.stl");
   // Two points on the bottom face with deviations +0.01 and -0.02, near the centroids of its two
   // triangles; the other faces are not probed.
   ProbePointSet closest;
@@ -146,7 +125,7 @@ TEST(CadStudy, TrianglesAreColouredByTheNearestProbedPoint) {
 
 TEST(CadStudy, AProjectReadsProbePointsWithNominalsFromItsCadPart) {
   test::TempDir tmp;
-  test::writeText(tmp.file("box.stl"), boxStl(100, 60, 40));
+  test::writeText(tmp.file("box.stl"), test::boxStl(100, 60, 40));
   std::string csv = "id,x,y,z\n";
   for (const ProbePoint& p : boxPoints(knownPose()).points) {
     char line[160];
@@ -178,7 +157,7 @@ TEST(CadStudy, AProjectReadsProbePointsWithNominalsFromItsCadPart) {
   ASSERT_EQ(set.points.size(), 18u);
   ASSERT_TRUE(set.hasNormals);
   // At the identity posture: each nominal is the closest point of the box to the measured point.
-  const geometry::MeshSearch mesh(geometry::parseStl(boxStl(100, 60, 40), "box.stl"));
+  const geometry::MeshSearch mesh(geometry::parseStl(test::boxStl(100, 60, 40), "box.stl"));
   for (const ProbePoint& p : set.points)
     EXPECT_LT((p.nominal - mesh.closest(p.measured).point).norm(), 1e-12) << p.id;
 }
