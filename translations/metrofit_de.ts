@@ -4822,7 +4822,7 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+365"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+428"/>
         <location filename="../widgets/report/summarysection.cpp" line="+150"/>
         <source>value</source>
         <translation>Wert</translation>
@@ -5122,7 +5122,7 @@ Abweichung: %3 µm</translation>
         <translation>Wiederholen Sie den Kreisformtest und prüfen Sie seine Datei.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-320"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="-381"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (Originalparameter)</translation>
     </message>
@@ -5142,12 +5142,17 @@ Abweichung: %3 µm</translation>
         <translation>Minimax</translation>
     </message>
     <message>
-        <location line="+183"/>
+        <location line="+215"/>
         <source>Probe points “%1”, tolerance ±%2 mm</source>
         <translation>Antastpunkte „%1“, Toleranz ±%2 mm</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
+        <source>Closed form and minimax were run on the %1 points, each re-projected onto the CAD part at every posture until the posture stopped changing. The posture after matching is that of %2; the machine adjustment values are for the study&apos;s %3 machine. Deviation: along the part&apos;s normal at the closest point.</source>
+        <translation>Geschlossene Lösung und Minimax wurden auf die %1 Punkte angewandt, jeder bei jeder Lage neu auf das CAD-Teil projiziert, bis sich die Lage nicht mehr änderte. Die Lage nach dem Einpassen ist die von %2; die Maschinenstellwerte gelten für die %3-Maschine der Studie. Abweichung: entlang der Teilenormalen im nächsten Punkt.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Every method was run on the %1 points (%2). The posture after matching is that of %3; the machine adjustment values are for the study&apos;s %4 machine. Deviation: %5. Rough matching, SADE, GA-simplex and the machine adjustment as in %6.</source>
         <translation>Jedes Verfahren lief auf den %1 Punkten (%2). Die Lage nach dem Einpassen ist die von %3; die Maschinenkorrekturwerte gelten für die Maschine %4 der Studie. Abweichung: %5. Grobeinpassung, SADE, GA-Simplex und Maschinenkorrektur wie in %6.</translation>
     </message>
@@ -5177,7 +5182,7 @@ Abweichung: %3 µm</translation>
         <translation>Enthält übernommene Effekte: %1 (Diagnose, Übernehmen). Die Nennpunkte wurden vor der Ausrichtung durch sie verformt; die Abweichungen und Maschineneinstellungen unten gelten daher für das Modell mit diesen Effekten.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+44"/>
         <source>Before matching</source>
         <translation>Vor der Ausrichtung</translation>
     </message>
@@ -5208,7 +5213,12 @@ Abweichung: %3 µm</translation>
         <translation>Schrägansicht wie im Programm</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
+        <source>The nominal is the CAD part “%1” (%2 triangles): the points were matched to its surface, re-projected at each posture. The part is coloured as the nearest probed point, light grey where none is near.</source>
+        <translation>Der Sollwert ist das CAD-Teil „%1“ (%2 Dreiecke): die Punkte wurden an seine Oberfläche angepasst, bei jeder Lage neu projiziert. Das Teil ist wie der nächste Antastpunkt gefärbt, hellgrau, wo keiner nahe ist.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>before: deviation (mm), green = within ±%1</source>
         <translation>vorher: Abweichung (mm), grün = innerhalb ±%1</translation>
     </message>

@@ -4832,7 +4832,7 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+365"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+428"/>
         <location filename="../widgets/report/summarysection.cpp" line="+150"/>
         <source>value</source>
         <translation>wartość</translation>
@@ -5132,7 +5132,7 @@ odchyłka: %3 µm</translation>
         <translation>Powtórz test okrągłości i sprawdź jego plik.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-320"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="-381"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (parametry z publikacji)</translation>
     </message>
@@ -5152,12 +5152,17 @@ odchyłka: %3 µm</translation>
         <translation>minimaks</translation>
     </message>
     <message>
-        <location line="+183"/>
+        <location line="+215"/>
         <source>Probe points “%1”, tolerance ±%2 mm</source>
         <translation>Punkty sondowania „%1”, tolerancja ±%2 mm</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
+        <source>Closed form and minimax were run on the %1 points, each re-projected onto the CAD part at every posture until the posture stopped changing. The posture after matching is that of %2; the machine adjustment values are for the study&apos;s %3 machine. Deviation: along the part&apos;s normal at the closest point.</source>
+        <translation>Rozwiązanie zamknięte i minimax uruchomiono na %1 punktach, każdy rzutowany na część CAD przy każdym położeniu, aż położenie przestało się zmieniać. Położenie po dopasowaniu pochodzi z %2; wartości nastaw maszyny dotyczą maszyny %3 studium. Odchyłka: wzdłuż normalnej części w najbliższym punkcie.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Every method was run on the %1 points (%2). The posture after matching is that of %3; the machine adjustment values are for the study&apos;s %4 machine. Deviation: %5. Rough matching, SADE, GA-simplex and the machine adjustment as in %6.</source>
         <translation>Każdą metodę uruchomiono na %1 punktach (%2). Położenie po dopasowaniu to położenie z %3; wartości korekty maszyny dotyczą maszyny %4 badania. Odchylenie: %5. Dopasowanie zgrubne, SADE, GA-simplex i korekta maszyny jak w %6.</translation>
     </message>
@@ -5187,7 +5192,7 @@ odchyłka: %3 µm</translation>
         <translation>Zawiera zastosowane efekty: %1 (diagnoza, Zastosuj). Punkty nominalne zostały przez nie odkształcone przed dopasowaniem, więc poniższe odchyłki i nastawienia maszyny dotyczą modelu z tymi efektami.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+44"/>
         <source>Before matching</source>
         <translation>Przed dopasowaniem</translation>
     </message>
@@ -5218,7 +5223,12 @@ odchyłka: %3 µm</translation>
         <translation>Widok ukośny jak w programie</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
+        <source>The nominal is the CAD part “%1” (%2 triangles): the points were matched to its surface, re-projected at each posture. The part is coloured as the nearest probed point, light grey where none is near.</source>
+        <translation>Wartością nominalną jest część CAD „%1” (%2 trójkątów): punkty dopasowano do jej powierzchni, rzutując je przy każdym położeniu. Część ma kolor najbliższego punktu pomiarowego, jasnoszara tam, gdzie żadnego nie ma w pobliżu.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>before: deviation (mm), green = within ±%1</source>
         <translation>przed: odchyłka (mm), zielony = w granicach ±%1</translation>
     </message>

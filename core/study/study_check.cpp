@@ -3,17 +3,16 @@
 #include <algorithm>
 
 #include "core/common/error.h"
+#include "core/project/datasets.h"
 
 namespace metrofit {
 const std::vector<std::string>& knownDatasetKinds() {
-  static const std::vector<std::string> kinds = {dataset_kind::kThermalLog,
-                                                 dataset_kind::kProbePoints,
-                                                 dataset_kind::kCircularTest,
-                                                 dataset_kind::kCmmReport,
-                                                 dataset_kind::kSetupModel,
-                                                 dataset_kind::kFeatureSeries,
-                                                 "dmis",
-                                                 "hole_table"};
+  // The project file's spelling of the kinds core/project/datasets.h reads: one list.
+  static const std::vector<std::string> kinds = [] {
+    std::vector<std::string> out;
+    for (const std::string& name : datasetKindNames()) out.push_back(datasetKindFromName(name));
+    return out;
+  }();
   return kinds;
 }
 

@@ -27,6 +27,7 @@
 #include "core/project/project.h"
 #include "metrofit/version.h"
 #include "qtapp.h"
+#include "samples/box_stl.h"
 #include "widgets/report/report.h"
 
 namespace metrofit {
@@ -563,6 +564,59 @@ TEST_F(ReportTest, OnlyDeclaredStudiesHaveSections) {
   EXPECT_TRUE(text.contains(QStringLiteral("Thermal log “thermal_run”")));
   EXPECT_FALSE(text.contains(QStringLiteral("Thermal log “second_run”")));
   EXPECT_TRUE(text.contains(QStringLiteral("second_run")));  // in the appendix
+}
+
+// A probe-point dataset whose nominals are a CAD part (a box written as STL): the report's matching
+// section runs the study on the part, says so, and draws the part coloured under the points; the page
+// with the views has the part's light grey and coloured faces (rendered with pdftoppm, kept for a look).
+TEST_F(ReportTest, ACadNominalIsMatchedAndTheColouredPartIsDrawn) {
+  writeText(dir_.filePath(QStringLiteral("data/box.stl")), test::boxStl(100, 60, 40));
+  QString csv = QStringLiteral("id,x,y,z\n");
+  int k = 0;
+  // The bottom, front and left faces probed, 20 um high on the bottom; top, back and right not probed.
+  for (double x : {20.0, 50.0, 80.0})
+    for (double y : {15.0, 45.0})
+      csv += QStringLiteral("B%1,%2,%3,0.02\n").arg(++k).arg(x + 0.1).arg(y - 0.05);
+  for (double x : {20.0, 60.0, 90.0})
+    csv += QStringLiteral("F%1,%2,-0.05,%3\n").arg(++k).arg(x + 0.1).arg(20.0);
+  for (double y : {10.0, 30.0, 50.0})
+    csv += QStringLiteral("L%1,0.1,%2,%3\n").arg(++k).arg(y - 0.05).arg(15.0 + y / 5);
+  writeText(dir_.filePath(QStringLiteral("data/box_points.csv")), csv.toStdString());
+  Project p = project_;
+  p.datasets.push_back({"box", dataset_kind::kCadModel, "data/box.stl", "The part.", "", {}});
+  DatasetRef points{"box_points", dataset_kind::kProbePoints, "data/box_points.csv", "", "", {}};
+  points.nominals.from = "cad";
+  points.nominals.cad = "box";
+  p.datasets.push_back(points);
+  p.studies["matching"] = {{"dataset", "box_points"}, {"tolerance_mm", 0.05}, {"method", "closed-form"}};
+  const QString pdf = dir_.filePath(QStringLiteral("cad.pdf"));
+  writeReport(p, pdf, options());
+  const ProcessResult text = run(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+  ASSERT_EQ(text.exitCode, 0);
+  const QString t = text.out.simplified();
+  EXPECT_TRUE(t.contains(QStringLiteral("The nominal is the CAD part “box” (12 triangles)")))
+      << t.toStdString();
+  // Find the page with the views and look at it.
+  const QString prefix = QDir(outputDir()).filePath(QStringLiteral("report_cad"));
+  ASSERT_EQ(run(QStringLiteral("pdftoppm"),
+                {QStringLiteral("-r"), QStringLiteral("60"), QStringLiteral("-png"), pdf, prefix})
+                .exitCode,
+            0);
+  int bestGrey = 0;
+  for (const QFileInfo& f : QDir(outputDir()).entryInfoList({QStringLiteral("report_cad*.png")})) {
+    const QImage img = QImage(f.filePath()).convertToFormat(QImage::Format_RGB32);
+    int grey = 0;
+    for (int y = 0; y < img.height(); ++y)
+      for (int x = 0; x < img.width(); ++x) {
+        const QColor c = img.pixelColor(x, y);
+        // The unprobed faces: light grey (0xdc at 55 % on white: about 0xe8), not text black or white.
+        if (std::abs(c.red() - c.green()) < 4 && std::abs(c.green() - c.blue()) < 4 && c.red() > 225 &&
+            c.red() < 240)
+          ++grey;
+      }
+    bestGrey = std::max(bestGrey, grey);
+  }
+  EXPECT_GT(bestGrey, 500) << "no page shows the part's unprobed faces";
 }
 
 }  // namespace

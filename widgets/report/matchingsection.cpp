@@ -15,6 +15,7 @@
 #include <QPainterPath>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -22,6 +23,7 @@
 
 #include "core/common/axis_ticks.h"
 #include "core/machine/controller_frame.h"
+#include "core/matching/cad_match.h"
 #include "core/project/nominals.h"
 #include "core/study/matching_study.h"
 #include "widgets/common/palette.h"
@@ -98,7 +100,20 @@ struct ViewState {
   std::vector<Eigen::Vector3d> base;  ///< nominal (before) or transformed nominal (after)
   std::vector<Eigen::Vector3d> tip;   ///< base + k * displacement
   std::vector<double> deviation;
+  /// A CAD nominal's part (moved by the view's posture) and each triangle's deviation (NaN: not probed
+  /// near it; matching::triangleDeviations), drawn under the points.
+  std::vector<std::array<Eigen::Vector3d, 3>> triangles;
+  std::vector<double> triangleDeviation;
 };
+
+/// The part of a CAD nominal for a view: its triangles moved by `pose`, coloured by the deviations of
+/// the points `closest` (the part's closest points the deviations are of).
+void addPart(ViewState& s, const geometry::TriangleMesh& mesh, const matching::Pose& pose,
+             const ProbePointSet& closest, const std::vector<double>& deviations) {
+  for (const geometry::Triangle& t : mesh.triangles)
+    s.triangles.push_back({pose.apply(t.v[0]), pose.apply(t.v[1]), pose.apply(t.v[2])});
+  s.triangleDeviation = matching::triangleDeviations(mesh, closest, deviations);
+}
 
 ViewState viewState(const ProbePointSet& set, const matching::Pose& pose, const std::vector<double>& dev,
                     double factor) {
@@ -144,6 +159,25 @@ void drawView(ReportPainter& out, const QRectF& panel, const ViewProjection& pro
     return QPointF(offset.x() + k * q.x(), offset.y() - k * q.y());
   };
   p.setClipRect(panel);
+  // The part (a CAD nominal), far triangles first, light where it was not probed, under the points.
+  if (!s.triangles.empty()) {
+    std::vector<std::size_t> tri(s.triangles.size());
+    std::iota(tri.begin(), tri.end(), std::size_t{0});
+    const auto depthOf = [&](std::size_t t) {
+      return (s.triangles[t][0] + s.triangles[t][1] + s.triangles[t][2]).dot(proj.depth);
+    };
+    std::stable_sort(tri.begin(), tri.end(),
+                     [&](std::size_t a, std::size_t b) { return depthOf(a) > depthOf(b); });
+    p.setPen(QPen(QColor(0x9a, 0x9a, 0x9a), out.mm(0.08)));
+    for (std::size_t t : tri) {
+      const double d = t < s.triangleDeviation.size() ? s.triangleDeviation[t] : std::nan("");
+      QColor fill = std::isnan(d) ? QColor(0xdc, 0xdc, 0xdc) : scale.colour(d);
+      fill.setAlphaF(0.55);
+      p.setBrush(fill);
+      const QPointF poly[3] = {map(s.triangles[t][0]), map(s.triangles[t][1]), map(s.triangles[t][2])};
+      p.drawPolygon(poly, 3);
+    }
+  }
   // Far points first.
   std::vector<std::size_t> order(s.base.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -234,18 +268,28 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
   out.subheading(ReportText::tr("Probe points “%1”, tolerance ±%2 mm")
                      .arg(QString::fromStdString(dataset.ref.id), num(tol, 3)),
                  out.mm(60.0));
-  out.paragraph(
-      ReportText::tr(
-          "Every method was run on the %1 points (%2). The posture after matching is that of %3; the "
-          "machine adjustment values are for the study's %4 machine. Deviation: %5. Rough matching, "
-          "SADE, GA-simplex and the machine adjustment as in %6.")
-          .arg(set.points.size())
-          .arg(set.hasNormals ? ReportText::tr("with normals") : ReportText::tr("positions only"))
-          .arg(methodName(res.primary))
-          .arg(QString::fromLatin1(machine::topologyName(o.machine.topology)))
-          .arg(set.hasNormals ? ReportText::tr("along the nominal normal")
-                              : ReportText::tr("distance |p − (sRq + t)|"))
-          .arg(citation(1)));
+  if (o.cad)
+    out.paragraph(
+        ReportText::tr("Closed form and minimax were run on the %1 points, each re-projected onto the "
+                       "CAD part at every posture until the posture stopped changing. The posture "
+                       "after matching is that of %2; the machine adjustment values are for the "
+                       "study's %3 machine. Deviation: along the part's normal at the closest point.")
+            .arg(set.points.size())
+            .arg(methodName(res.primary))
+            .arg(QString::fromLatin1(machine::topologyName(o.machine.topology))));
+  else
+    out.paragraph(
+        ReportText::tr(
+            "Every method was run on the %1 points (%2). The posture after matching is that of %3; the "
+            "machine adjustment values are for the study's %4 machine. Deviation: %5. Rough matching, "
+            "SADE, GA-simplex and the machine adjustment as in %6.")
+            .arg(set.points.size())
+            .arg(set.hasNormals ? ReportText::tr("with normals") : ReportText::tr("positions only"))
+            .arg(methodName(res.primary))
+            .arg(QString::fromLatin1(machine::topologyName(o.machine.topology)))
+            .arg(set.hasNormals ? ReportText::tr("along the nominal normal")
+                                : ReportText::tr("distance |p − (sRq + t)|"))
+            .arg(citation(1)));
   if (!o.applied.empty())
     out.paragraph(ReportText::tr("Includes applied effects: %1 (diagnosis, Apply). The nominal points were "
                                  "deformed by them before matching, so the deviations and the machine "
@@ -259,11 +303,19 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
   for (double d : primary.after.deviations) maxAfter = std::max(maxAfter, std::abs(d));
   const double factor = matching::deviationMagnification(set, maxBefore);  // as on the page
   const ViewProjection proj(set.planar);
-  const ViewState before = viewState(set, matching::Pose{}, primary.before.deviations, factor);
-  const ViewState after = viewState(set, primary.pose, primary.after.deviations, factor);
+  ViewState before = viewState(set, matching::Pose{}, primary.before.deviations, factor);
+  // With a CAD part: the after state's nominals are the part's closest points at the posture.
+  const ProbePointSet* afterSet = &set;
+  for (std::size_t k = 0; k < res.cadAfter.size() && k < res.runs.size(); ++k)
+    if (res.runs[k].method == res.primary) afterSet = &res.cadAfter[k];
+  ViewState after = viewState(*afterSet, primary.pose, primary.after.deviations, factor);
+  if (o.cad) {
+    addPart(before, o.cad->mesh(), matching::Pose{}, set, primary.before.deviations);
+    addPart(after, o.cad->mesh(), primary.pose, *afterSet, primary.after.deviations);
+  }
   QRectF bounds;
   bool first = true;
-  for (const ViewState* s : {&before, &after})
+  for (const ViewState* s : {&before, &after}) {
     for (const auto* v : {&s->base, &s->tip})
       for (const Eigen::Vector3d& x : *v) {
         const QPointF q = proj.map(x);
@@ -271,6 +323,9 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
         bounds = bounds.united(QRectF(q, QSizeF(1e-9, 1e-9)));
         first = false;
       }
+    for (const auto& t : s->triangles)
+      for (const Eigen::Vector3d& x : t) bounds = bounds.united(QRectF(proj.map(x), QSizeF(1e-9, 1e-9)));
+  }
   bounds = bounds.adjusted(-0.03 * bounds.width(), -0.03 * bounds.height(), 0.03 * bounds.width(),
                            0.03 * bounds.height());
   BandScale beforeScale{ticks::niceCeil(std::max(maxBefore, 2.0 * tol)), tol};
@@ -297,6 +352,14 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
           .arg(set.planar ? ReportText::tr("Top view") : ReportText::tr("Oblique view as in the program"))
           .arg(factor, 0, 'g', 4),
       ReportPainter::Font::Small);
+  if (o.cad)
+    out.paragraph(
+        ReportText::tr("The nominal is the CAD part “%1” (%2 triangles): the points were matched to "
+                       "its surface, re-projected at each posture. The part is coloured as the "
+                       "nearest probed point, light grey where none is near.")
+            .arg(QString::fromStdString(dataset.ref.nominals.cad))
+            .arg(o.cad->mesh().triangles.size()),
+        ReportPainter::Font::Small);
   {
     const QRectF bars = out.reserve(out.mm(16.0));
     drawBandBar(out, QRectF(bars.left(), bars.top(), bars.width() / 2, bars.height()), beforeScale,
