@@ -451,17 +451,23 @@ Spannweite: %2%3</translation>
         <translation>Der Datensatz kann nicht umbenannt werden</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+18"/>
+        <source>Re-link the %1 files of the series “%2”</source>
+        <translation>Die %1 Dateien der Serie „%2“ neu verknüpfen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Re-link dataset “%1”</source>
         <translation>Datensatz „%1“ neu verknüpfen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-3"/>
+        <location line="+4"/>
         <source>All files (*)</source>
         <translation>Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Cannot re-link the dataset</source>
         <translation>Der Datensatz kann nicht neu verknüpft werden</translation>
     </message>
@@ -4323,7 +4329,7 @@ Abweichung: %3 µm</translation>
         <translation>Datensatz %1 in %2 umbenennen</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+30"/>
         <source>Re-link dataset %1</source>
         <translation>Datensatz %1 neu verknüpfen</translation>
     </message>

@@ -451,17 +451,23 @@ rozstęp: %2%3</translation>
         <translation>Nie można zmienić nazwy zbioru danych</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+18"/>
+        <source>Re-link the %1 files of the series “%2”</source>
+        <translation>Połącz ponownie %1 plików serii „%2”</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Re-link dataset “%1”</source>
         <translation>Połącz ponownie zbiór danych „%1”</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-3"/>
+        <location line="+4"/>
         <source>All files (*)</source>
         <translation>Wszystkie pliki (*)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Cannot re-link the dataset</source>
         <translation>Nie można ponownie połączyć zbioru danych</translation>
     </message>
@@ -4333,7 +4339,7 @@ odchyłka: %3 µm</translation>
         <translation>Zmiana nazwy zbioru danych %1 na %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+30"/>
         <source>Re-link dataset %1</source>
         <translation>Ponowne połączenie zbioru danych %1</translation>
     </message>

@@ -153,12 +153,22 @@ bool relinkDatasetAsking(ProjectDocument* document, const QString& id, QWidget* 
   const QString current = document->datasetPath(*dataset);
   QString start = QFileInfo(current).path();
   if (!QFileInfo(start).isDir()) start = QFileInfo(document->projectPathForDatasets()).path();
-  const QString file =
-      QFileDialog::getOpenFileName(parent, DatasetActionsText::tr("Re-link dataset “%1”").arg(id), start,
-                                   DatasetActionsText::tr("All files (*)"));
-  if (file.isEmpty()) return false;
+  // A DMIS series: its files are chosen again together (one per workpiece); else one file.
+  QStringList files;
+  if (dataset->paths.size() > 1) {
+    files = QFileDialog::getOpenFileNames(
+        parent,
+        DatasetActionsText::tr("Re-link the %1 files of the series “%2”").arg(dataset->paths.size()).arg(id),
+        start, DatasetActionsText::tr("All files (*)"));
+  } else {
+    const QString file =
+        QFileDialog::getOpenFileName(parent, DatasetActionsText::tr("Re-link dataset “%1”").arg(id), start,
+                                     DatasetActionsText::tr("All files (*)"));
+    if (!file.isEmpty()) files << file;
+  }
+  if (files.isEmpty()) return false;
   try {
-    document->relinkDataset(id, file);
+    document->relinkDataset(id, files);
   } catch (const std::exception& e) {
     QMessageBox::critical(parent, DatasetActionsText::tr("Cannot re-link the dataset"),
                           QString::fromStdString(e.what()));

@@ -14,6 +14,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFile>
 #include <QPushButton>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -355,6 +356,32 @@ TEST_F(SetupReportModelTest, DmisSeriesIsOneDatasetAndOneSetupSeries) {
   EXPECT_TRUE(page_->storedResultText().startsWith(QStringLiteral("From the saved project")))
       << page_->storedResultText().toStdString();
   runAndCompare("DMIS series, reopened");
+
+  // The files moved: re-linked together they stay a series (one undo step); a file that is not DMIS
+  // output is refused by name and nothing changes.
+  QTemporaryDir movedFiles;
+  ASSERT_TRUE(movedFiles.isValid());
+  const QString a2 = QDir(movedFiles.path()).filePath(QStringLiteral("w1.dmo"));
+  const QString b2 = QDir(movedFiles.path()).filePath(QStringLiteral("w2.dmo"));
+  ASSERT_TRUE(QFile::copy(a, a2));
+  ASSERT_TRUE(QFile::copy(b, b2));
+  const QString notDmis = QDir(movedFiles.path()).filePath(QStringLiteral("notes.txt"));
+  test::writeText(notDmis.toStdString(), "part,time_min\n1,0\n");
+  const DatasetRef before = *document_->project().dataset(reportId.toStdString());
+  try {
+    document_->relinkDataset(reportId, QStringList{a2, notDmis});
+    ADD_FAILURE() << "a series with a file that is not DMIS output was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("notes.txt"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(*document_->project().dataset(reportId.toStdString()), before);
+  document_->relinkDataset(reportId, QStringList{a2, b2});
+  const DatasetRef* relinked = document_->project().dataset(reportId.toStdString());
+  ASSERT_EQ(relinked->paths.size(), 2u);
+  EXPECT_EQ(relinked->path, relinked->paths[0]);
+  EXPECT_NE(relinked->paths[1].find("w2.dmo"), std::string::npos) << relinked->paths[1];
+  document_->undoStack()->undo();
+  EXPECT_EQ(*document_->project().dataset(reportId.toStdString()), before);
 }
 
 }  // namespace

@@ -514,14 +514,26 @@ void ProjectDocument::renameDataset(const QString& id, const QString& newId) {
 }
 
 void ProjectDocument::relinkDataset(const QString& id, const QString& file) {
+  relinkDataset(id, QStringList{file});
+}
+
+void ProjectDocument::relinkDataset(const QString& id, const QStringList& files) {
+  if (files.isEmpty()) return;
   const std::size_t index = datasetIndex(id);
   DatasetRef moved = project_.datasets[index];
-  const QString absolute = QFileInfo(file).absoluteFilePath();
   const QDir folder = QFileInfo(projectPathForDatasets()).absoluteDir();
-  const QString relative = folder.relativeFilePath(absolute);
-  // Another root (Windows drive) cannot be reached relatively: keep the absolute path.
-  moved.path = toStd(QDir::fromNativeSeparators(QDir::isAbsolutePath(relative) ? absolute : relative));
-  moved.paths.clear();  // a DMIS series re-linked to one file is that file
+  const auto stored = [&folder](const QString& file) {
+    const QString absolute = QFileInfo(file).absoluteFilePath();
+    const QString relative = folder.relativeFilePath(absolute);
+    // Another root (Windows drive) cannot be reached relatively: keep the absolute path.
+    return toStd(QDir::fromNativeSeparators(QDir::isAbsolutePath(relative) ? absolute : relative));
+  };
+  moved.path = stored(files.front());
+  // Several files: a DMIS series, one file per workpiece, in the order given (summarizeDataset checks
+  // that each is DMIS output); one file: that file (a series re-linked to one file is that file).
+  moved.paths.clear();
+  if (files.size() > 1)
+    for (const QString& f : files) moved.paths.push_back(stored(f));
   (void)summarizeDataset(fileNameToStd(projectPathForDatasets()), moved);  // throws; nothing changed yet
   if (moved == project_.datasets[index]) return;
   std::vector<DatasetRef> datasets = project_.datasets;

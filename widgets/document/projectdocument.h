@@ -229,6 +229,8 @@ class ProjectDocument : public QObject {
   /// dialect and mapping first (core's summarizeDataset; InputError naming file, line and field when it
   /// cannot be read, and nothing changes), then stored relative to the project's folder. One undo step.
   void relinkDataset(const QString& id, const QString& file);
+  /// The same with several files: a DMIS series (cmm_report or dmis), one file per workpiece, in order.
+  void relinkDataset(const QString& id, const QStringList& files);
 
  signals:
   /// The project content changed (load, new, undo, redo, any edit).
