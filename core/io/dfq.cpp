@@ -552,11 +552,13 @@ std::size_t chooseCharacteristic(const std::vector<std::pair<std::string, std::s
     }
     return !found.empty();
   };
-  if (pick(0, false) || pick(1, false) || pick(1, true)) {
+  const bool byNumber = pick(0, false);
+  if (byNumber || pick(1, false) || pick(1, true)) {
     if (found.size() == 1) return found.front();
     throw ValidationError(ErrorContext{source, 0, 0, field},
                           "'" + want + "' is ambiguous: it names " + std::to_string(found.size()) +
-                              " characteristics: " + all(found) + "; choose one by its number");
+                              " characteristics: " + all(found) +
+                              (byNumber ? "; choose one by its description" : "; choose one by its number"));
   }
   throw ValidationError(ErrorContext{source, 0, 0, field},
                         "no characteristic '" + want + "' (by number or name); the file has: " + all(every));

@@ -6,10 +6,12 @@
 #include <map>
 
 #include "core/common/error.h"
+#include "core/io/calypso.h"
 #include "core/io/dmis.h"
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
+#include "core/project/datasets.h"
 #include "core/project/import_guess.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
@@ -131,7 +133,7 @@ std::vector<FeatureTableRow> cmmReportFeatureRows(const CmmTextReport& report) {
     }
     for (const CmmFeature& f : run.features) {
       const std::string feature = !f.label.empty() ? f.label
-                                  : report.format == CmmReportFormat::PcDmis
+                                  : report.format == CmmReportFormat::PcDmis || isCharacteristicTable(report.format)
                                       ? f.featureName
                                       : "Step " + std::to_string(f.step);
       for (const CmmValue& v : f.values) {
@@ -334,6 +336,12 @@ DatasetContent readDatasetContentFile(const std::string& file, const DatasetRef&
     return columnsContent(std::move(t), "setup model", file);
   }
   const std::string text = readFile(file, 256u << 20);
+  if (kind == dataset_kind::kDfq || kind == dataset_kind::kCalypso ||
+      (kind == dataset_kind::kProbePoints && looksLikeCalypsoFeatures(text))) {
+    if (const auto report = characteristicTableReport(text, file, kind))
+      return featuresContent(cmmReportFeatureRows(*report), toString(report->format), file);
+    return columnsContent(calypsoFeaturesProbeTable(text, file), "Calypso features", file);
+  }
   if (kind == dataset_kind::kDmis || (kind == dataset_kind::kCmmReport && setup::looksLikeDmis(text))) {
     if (!setup::looksLikeDmis(text))
       throw ParseError(ErrorContext{file, 1, 0, {}}, "not a DMIS file (its first statement is not DMISMN)");

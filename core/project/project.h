@@ -54,6 +54,11 @@ inline constexpr const char* kFeatureSeries = "feature_series";
 inline constexpr const char* kDmis = "dmis";
 /// A PC-DMIS hole-table report (core/matching/hole_table.h).
 inline constexpr const char* kHoleTable = "hole_table";
+/// A Q-DAS DFQ (AQDEF) file: characteristics with their measured values (core/io/dfq.h).
+inline constexpr const char* kDfq = "dfq";
+/// A Zeiss Calypso table file: characteristics (_chr) or features as probe points (_fet)
+/// (core/io/calypso.h).
+inline constexpr const char* kCalypso = "calypso";
 }  // namespace dataset_kind
 
 /// The studies of a project, in navigator order.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "core/common/error.h"
@@ -445,7 +446,8 @@ std::string collapse(std::string_view s) {
 bool featureNamed(const CmmFeature& f, const std::string& name, CmmReportFormat format) {
   const std::string u = upper(name);
   if (!f.label.empty() && upper(f.label) == u) return true;
-  if (format == CmmReportFormat::PcDmis) return !f.featureName.empty() && upper(f.featureName) == u;
+  if (format == CmmReportFormat::PcDmis || isCharacteristicTable(format))
+    return !f.featureName.empty() && upper(f.featureName) == u;
   return collapse(name) == "STEP" + std::to_string(f.step);
 }
 
@@ -478,6 +480,8 @@ std::string valueNames(const CmmFeature& f) {
 
 std::string featureTitle(const CmmFeature& f, CmmReportFormat format) {
   if (format == CmmReportFormat::PcDmis) return "dimension '" + f.label + "'";
+  if (isCharacteristicTable(format))
+    return "characteristic " + f.featureName + (f.label != f.featureName ? " '" + f.label + "'" : std::string());
   return "step " + std::to_string(f.step) + (f.label.empty() ? std::string() : " '" + f.label + "'");
 }
 
@@ -489,7 +493,14 @@ Measurements cmmTextReportMeasurements(const CmmTextReport& report, const Model&
   const std::string base = baseName(report.source);
   for (std::size_t k = 0; k < report.runs.size(); ++k) {
     const CmmRun& run = report.runs[k];
-    const std::string part = report.runs.size() == 1 ? base : base + " run " + std::to_string(k + 1);
+    // DFQ and Calypso name the measured workpiece (K0014, partnb): the part, when every run has its own.
+    std::set<std::string> serials;
+    for (const CmmRun& r : report.runs)
+      if (!r.serial.empty()) serials.insert(r.serial);
+    const bool bySerial = serials.size() == report.runs.size();
+    const std::string part = bySerial                  ? run.serial
+                             : report.runs.size() == 1 ? base
+                                                       : base + " run " + std::to_string(k + 1);
     addPart(m, part);
     for (std::size_t q = 0; q < model.dimensions.size(); ++q) {
       const Dimension& d = model.dimensions[q];
@@ -502,8 +513,9 @@ Measurements cmmTextReportMeasurements(const CmmTextReport& report, const Model&
                                 "the label '" + featureName + "' of dimension '" + d.id + "' names " +
                                     featureTitle(*found, report.format) + " (line " +
                                     std::to_string(found->line) + ") and " + featureTitle(f, report.format) +
-                                    (report.format == CmmReportFormat::PcDmis
-                                         ? std::string()
+                                    (report.format == CmmReportFormat::PcDmis ? std::string()
+                                     : isCharacteristicTable(report.format)
+                                         ? "; name one by its number '" + f.featureName + "'"
                                          : "; name one as 'Step " + std::to_string(f.step) + "'"));
         }
         found = &f;

@@ -13,7 +13,9 @@ const std::vector<std::string>& knownDatasetKinds() {
                                                  dataset_kind::kSetupModel,
                                                  dataset_kind::kFeatureSeries,
                                                  "dmis",
-                                                 "hole_table"};
+                                                 "hole_table",
+                                                 dataset_kind::kDfq,
+                                                 dataset_kind::kCalypso};
   return kinds;
 }
 
