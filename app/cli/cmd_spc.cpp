@@ -76,7 +76,7 @@ SpcOptions spcOptions(const SpcArgs& a) {
 
 /// One characteristic of a DFQ file or a Calypso _chr table, as an SPC series.
 struct CharacteristicSeries {
-  std::string title;  ///< "number (description)"
+  std::string title;   ///< "number (description)"
   std::string column;  ///< a column name for the DFQ export: the number
   std::vector<double> values;
   std::optional<double> nominal, lower, upper;  ///< absolute
@@ -135,7 +135,8 @@ int runSpc(const SpcArgs& a) {
     throw ValidationError(ErrorContext{source, 0, 0, "--characteristic"},
                           "is for DFQ files and Calypso _chr tables; a CSV file takes --column");
   if (!characteristics && a.column.empty())
-    throw ValidationError(ErrorContext{source, 0, 0, "--column"}, "is required: the column of the feature to chart");
+    throw ValidationError(ErrorContext{source, 0, 0, "--column"},
+                          "is required: the column of the feature to chart");
   CsvTable table;
   std::vector<double> values;
   std::string name = a.column, what = "column";
@@ -164,14 +165,15 @@ int runSpc(const SpcArgs& a) {
     values = table.numericColumn(a.column);
     what = "column '" + a.column + "'";
   }
-  const SpcResult r = analyseSpc(values, o, ErrorContext{source, 0, 0, characteristics ? "--characteristic" : a.column});
+  const SpcResult r =
+      analyseSpc(values, o, ErrorContext{source, 0, 0, characteristics ? "--characteristic" : a.column});
   if (!a.dfq.empty()) {
     writeFileAtomic(a.dfq, writeDfq(seriesDfqPart(table, name, values, o.nominal, o.lsl, o.usl, a.data,
                                                   a.dfqPart, source)));
   }
   writeResult(a.out, dumpJson(spcResultToJson(r)));
-  std::string line = "spc: " + what + ", " + std::to_string(r.chart.subgroups()) +
-                     " subgroups of " + std::to_string(o.subgroupSize);
+  std::string line = "spc: " + what + ", " + std::to_string(r.chart.subgroups()) + " subgroups of " +
+                     std::to_string(o.subgroupSize);
   if (r.valuesIgnored) line += " (" + std::to_string(r.valuesIgnored) + " trailing values left out)";
   line += r.chart.inControl() ? ", in control" : ", OUT OF CONTROL";
   line += ", sigma " + g(r.capability.sigmaWithin);
@@ -189,14 +191,16 @@ void registerSpcCommand(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "spc", "X-bar/R control chart limits, Cp/Cpk and the SPC-gated compensation decision");
   existingFile(
-      sub->add_option("--data", a->data,
-                      "Measurements (CSV, rows in production order; a CMM text report; a Q-DAS DFQ file or a Zeiss "
-                      "Calypso _chr table, read by content)")
+      sub->add_option(
+             "--data", a->data,
+             "Measurements (CSV, rows in production order; a CMM text report; a Q-DAS DFQ file or a Zeiss "
+             "Calypso _chr table, read by content)")
           ->required());
   sub->add_option("--column", a->column, "Column of the feature to chart (CSV files and CMM text reports)");
-  sub->add_option("--characteristic", a->characteristic,
-                  "DFQ file or Calypso _chr table: the characteristic to chart, by number (DFQ K2001, Calypso id) "
-                  "or name (DFQ K2002 description)");
+  sub->add_option(
+      "--characteristic", a->characteristic,
+      "DFQ file or Calypso _chr table: the characteristic to chart, by number (DFQ K2001, Calypso id) "
+      "or name (DFQ K2002 description)");
   addCsvOptions(sub);
   sub->add_option("--subgroup", a->subgroup, "Subgroup size n (2..25): consecutive rows form a subgroup")
       ->required();

@@ -44,7 +44,8 @@ std::vector<std::string> splitCells(std::string_view line, char sep) {
   std::size_t start = 0;
   for (;;) {
     const auto at = line.find(sep, start);
-    out.emplace_back(trimmed(line.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start)));
+    out.emplace_back(
+        trimmed(line.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start)));
     if (at == std::string_view::npos) break;
     start = at + 1;
   }
@@ -57,7 +58,8 @@ std::vector<std::string> headerNames(std::string_view text, char* sep = nullptr)
   std::size_t pos = 0;
   while (pos < text.size()) {
     const auto nl = text.find('\n', pos);
-    const std::string_view line = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
+    const std::string_view line =
+        text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
     pos = nl == std::string_view::npos ? text.size() : nl + 1;
     if (trimmed(line).empty()) continue;
     const char s = line.find('\t') != std::string_view::npos ? '\t' : ';';
@@ -135,7 +137,8 @@ std::optional<double> number(const Table& t, std::size_t row, int col, bool requ
   if (digits) {
     const auto dot = p.find('.');
     const auto e = p.find_first_of("eE");
-    *digits = dot == std::string::npos ? 0 : static_cast<int>((e == std::string::npos ? p.size() : e) - dot - 1);
+    *digits =
+        dot == std::string::npos ? 0 : static_cast<int>((e == std::string::npos ? p.size() : e) - dot - 1);
   }
   return v;
 }
@@ -196,7 +199,8 @@ CalypsoCharacteristics calypsoCharacteristicsFromText(std::string_view text, con
     c.id = cell(t, r, cId);
     c.type = cell(t, r, cType);
     c.idSymbol = cell(t, r, cSymbol);
-    if (c.id.empty()) throw ParseError(ErrorContext{source, c.line, cId + 1, "id"}, "the characteristic has no id");
+    if (c.id.empty())
+      throw ParseError(ErrorContext{source, c.line, cId + 1, "id"}, "the characteristic has no id");
     int digits = 0;
     c.actual = *number(t, r, cActual, true, &digits);
     c.rounding = 0.5 * std::pow(10.0, -digits);
@@ -213,8 +217,8 @@ CalypsoCharacteristics calypsoCharacteristicsFromText(std::string_view text, con
       const double slack = c.rounding + 0.5 * std::pow(10.0, -devDigits) + 1e-9;
       if (std::abs(*c.deviation - (c.actual - *c.nominal)) > slack + 1e-12 * std::abs(c.actual))
         throw ValidationError(ErrorContext{source, c.line, cDev + 1, "deviation"},
-                              "deviation " + fmt(*c.deviation) + " of '" + c.id + "' is not actual - nominal = " +
-                                  fmt(c.actual - *c.nominal));
+                              "deviation " + fmt(*c.deviation) + " of '" + c.id +
+                                  "' is not actual - nominal = " + fmt(c.actual - *c.nominal));
     }
     if (std::find(out.parts.begin(), out.parts.end(), c.part) == out.parts.end()) out.parts.push_back(c.part);
     out.rows.push_back(std::move(c));
@@ -242,8 +246,10 @@ CalypsoCharacteristics readCalypsoCharacteristics(const std::string& path) {
   namespace fs = std::filesystem;
   const std::string name = fs::path(path).filename().string();
   const std::string suffix = "_chr.txt";
-  if (path != "-" && name.size() > suffix.size() && lower(name.substr(name.size() - suffix.size())) == suffix) {
-    const fs::path hdr = fs::path(path).parent_path() / (name.substr(0, name.size() - suffix.size()) + "_hdr.txt");
+  if (path != "-" && name.size() > suffix.size() &&
+      lower(name.substr(name.size() - suffix.size())) == suffix) {
+    const fs::path hdr =
+        fs::path(path).parent_path() / (name.substr(0, name.size() - suffix.size()) + "_hdr.txt");
     std::error_code ec;
     if (fs::is_regular_file(hdr, ec)) {
       const std::string text = readFile(hdr.string(), 16u << 20);
@@ -279,7 +285,8 @@ CsvTable calypsoFeaturesProbeTable(std::string_view text, const std::string& sou
   std::vector<std::array<double, 3>> n(rows.size());
   if (normals) {
     for (std::size_t k = 0; k < rows.size() && normals; ++k) {
-      const auto a = number(t, rows[k], nx, false), b = number(t, rows[k], ny, false), c = number(t, rows[k], nz, false);
+      const auto a = number(t, rows[k], nx, false), b = number(t, rows[k], ny, false),
+                 c = number(t, rows[k], nz, false);
       if (!a || !b || !c) {
         normals = false;
         break;

@@ -30,7 +30,7 @@ struct CalypsoCharacteristic {
   std::optional<double> nominal;
   std::optional<double> upperTol, lowerTol;  ///< relative to the nominal
   std::optional<double> deviation;           ///< as written (checked against actual - nominal)
-  double rounding = 0.0;  ///< half a unit of the last written digit of the actual
+  double rounding = 0.0;                     ///< half a unit of the last written digit of the actual
   long line = 0;
 };
 

@@ -920,7 +920,8 @@ CmmTextReport cmmTextReportFromText(std::string_view text, const std::string& so
     throw ParseError(ErrorContext{source, 1, 0, {}},
                      "not an OGP step or summary report nor a PC-DMIS text report");
   if (*format == CmmReportFormat::Dfq) return dfqCmmReport(dfqFromText(text, source));
-  if (*format == CmmReportFormat::Calypso) return calypsoCmmReport(calypsoCharacteristicsFromText(text, source));
+  if (*format == CmmReportFormat::Calypso)
+    return calypsoCmmReport(calypsoCharacteristicsFromText(text, source));
   std::string plain;
   bool rtf = false;
   std::string_view body = text;
@@ -1036,8 +1037,8 @@ CsvTable cmmReportFeatureTable(const CmmTextReport& report) {
   for (const CmmRun& run : report.runs) {
     for (const CmmFeature& f : run.features) {
       const std::string key = report.format == CmmReportFormat::PcDmis ? f.label
-                              : isCharacteristicTable(report.format) ? f.featureName
-                                                                     : "step" + std::to_string(f.step);
+                              : isCharacteristicTable(report.format)   ? f.featureName
+                                                                       : "step" + std::to_string(f.step);
       for (const CmmValue& v : f.values) {
         const std::string col = key + "." + columnName(v.name);
         if (index.emplace(col, header.size()).second) header.push_back(col);
@@ -1054,8 +1055,8 @@ CsvTable cmmReportFeatureTable(const CmmTextReport& report) {
     row[1] = run.dateTime;
     for (const CmmFeature& f : run.features) {
       const std::string key = report.format == CmmReportFormat::PcDmis ? f.label
-                              : isCharacteristicTable(report.format) ? f.featureName
-                                                                     : "step" + std::to_string(f.step);
+                              : isCharacteristicTable(report.format)   ? f.featureName
+                                                                       : "step" + std::to_string(f.step);
       for (const CmmValue& v : f.values) {
         const std::string col = key + "." + columnName(v.name);
         std::string& cell = row[index.at(col)];

@@ -197,6 +197,7 @@ struct Reader {
   // Per characteristic: the keys it gave itself.
   std::map<int, std::set<std::string>> ownKeys;
   std::map<int, DfqReadCharacteristic> chars;
+  std::map<int, long> lowerLimitLine;  // the line of K2110/i (for the limits check)
   std::map<int, DfqReadPart> parts;
   // The value set read last: (characteristic index, position in its values).
   std::vector<std::pair<int, std::size_t>> lastSet;
@@ -255,6 +256,7 @@ struct Reader {
       c.nominal = number(value, field);
     } else if (key == "K2110") {
       c.lowerLimit = number(value, field);
+      lowerLimitLine[c.index] = line;
     } else if (key == "K2111") {
       c.upperLimit = number(value, field);
     } else if (key == "K2022") {
@@ -271,7 +273,8 @@ struct Reader {
   }
 
   /// Sets a value field (K0002, K0004, K0014) of one value.
-  void setValueField(DfqReadValue& v, const std::string& key, std::string_view value, const std::string& field) {
+  void setValueField(DfqReadValue& v, const std::string& key, std::string_view value,
+                     const std::string& field) {
     if (key == "K0002") {
       v.attribute = integer(value, field);
       if (v.attribute < 0) parseFail(field, "an attribute is 0 or more");
@@ -355,8 +358,8 @@ struct Reader {
           return;
         }
         DfqReadCharacteristic& c = characteristic(i, field);
-        if (c.values.empty()) parseFail(field, "comes before the characteristic's first value (K0001/" +
-                                                   std::to_string(i) + ")");
+        if (c.values.empty())
+          parseFail(field, "comes before the characteristic's first value (K0001/" + std::to_string(i) + ")");
         setValueField(c.values.back(), key, value, field);
       }
     }
@@ -366,7 +369,8 @@ struct Reader {
     const auto groups = splitAt(text, kCharSep8, kCharSepU);
     const int n = count.value_or(chars.empty() ? 0 : chars.rbegin()->first);
     if (n == 0)
-      parseFail({}, "a value line before K0100 or any characteristic; the file does not start like a DFQ file");
+      parseFail({},
+                "a value line before K0100 or any characteristic; the file does not start like a DFQ file");
     if (static_cast<int>(groups.size()) > n)
       parseFail({}, "the value line has " + std::to_string(groups.size()) + " characteristics, the file " +
                         std::to_string(n) + " (K0100)");
@@ -390,7 +394,8 @@ struct Reader {
 
   void finish() {
     if (!count && chars.empty())
-      throw ParseError(ErrorContext{source, 0, 0, "K2001"}, "has no characteristic (no K0100 and no K2xxx field)");
+      throw ParseError(ErrorContext{source, 0, 0, "K2001"},
+                       "has no characteristic (no K0100 and no K2xxx field)");
     const int n = count.value_or(chars.rbegin()->first);
     for (int i = 1; i <= n; ++i) {
       DfqReadCharacteristic& c = chars.try_emplace(i).first->second;
@@ -402,7 +407,9 @@ struct Reader {
       }
       if (c.number.empty()) c.number = std::to_string(i);
       if (c.lowerLimit && c.upperLimit && !(*c.lowerLimit < *c.upperLimit)) {
-        throw ValidationError(ErrorContext{source, c.line, 0, "K2110/" + std::to_string(i)},
+        const auto at = lowerLimitLine.find(i);
+        throw ValidationError(ErrorContext{source, at != lowerLimitLine.end() ? at->second : c.line, 0,
+                                           "K2110/" + std::to_string(i)},
                               "lower limit " + metrofit::number(*c.lowerLimit) +
                                   " is not below the upper limit (K2111) " + metrofit::number(*c.upperLimit));
       }
@@ -413,7 +420,8 @@ struct Reader {
       file.characteristics.push_back(std::move(c));
     }
     for (auto& [i, p] : parts) {
-      if (p.number.empty() && allParts.count("K1001")) p.number = std::string(trimmed(allParts["K1001"].first));
+      if (p.number.empty() && allParts.count("K1001"))
+        p.number = std::string(trimmed(allParts["K1001"].first));
       if (p.description.empty() && allParts.count("K1002"))
         p.description = std::string(trimmed(allParts["K1002"].first));
       file.parts.push_back(p);
@@ -445,7 +453,8 @@ bool looksLikeDfq(std::string_view text) {
   std::size_t pos = 0;
   while (pos < text.size()) {
     const auto nl = text.find('\n', pos);
-    const std::string_view t = trimmed(text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos));
+    const std::string_view t =
+        trimmed(text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos));
     if (!t.empty()) return isFieldLine(t);
     if (nl == std::string_view::npos) break;
     pos = nl + 1;
@@ -455,7 +464,8 @@ bool looksLikeDfq(std::string_view text) {
 
 DfqFile dfqFromText(std::string_view raw, const std::string& source) {
   if (raw.substr(0, 2) == "\xFF\xFE" || raw.substr(0, 2) == "\xFE\xFF")
-    throw ParseError(ErrorContext{source, 1, 0, {}}, "is UTF-16; save the DFQ file as UTF-8 or ANSI (Windows-1252)");
+    throw ParseError(ErrorContext{source, 1, 0, {}},
+                     "is UTF-16; save the DFQ file as UTF-8 or ANSI (Windows-1252)");
   if (raw.find('\0') != std::string_view::npos)
     throw ParseError(ErrorContext{source, 1, 0, {}}, "is a binary file (NUL bytes), not a DFQ text file");
   Reader r;
@@ -518,7 +528,8 @@ std::vector<DfqPart> dfqParts(const DfqFile& file) {
 }
 
 std::size_t chooseCharacteristic(const std::vector<std::pair<std::string, std::string>>& list,
-                                 const std::string& choice, const std::string& source, const std::string& field) {
+                                 const std::string& choice, const std::string& source,
+                                 const std::string& field) {
   const auto title = [&list](std::size_t k) {
     const auto& [n, d] = list[k];
     return "'" + n + "'" + (d.empty() || d == n ? std::string() : " (" + d + ")");
@@ -530,7 +541,8 @@ std::size_t chooseCharacteristic(const std::vector<std::pair<std::string, std::s
   };
   std::vector<std::size_t> every(list.size());
   for (std::size_t k = 0; k < list.size(); ++k) every[k] = k;
-  if (list.empty()) throw ValidationError(ErrorContext{source, 0, 0, field}, "the file has no characteristic");
+  if (list.empty())
+    throw ValidationError(ErrorContext{source, 0, 0, field}, "the file has no characteristic");
   const std::string want(trimmed(choice));
   if (want.empty()) {
     if (list.size() == 1) return 0;

@@ -66,7 +66,6 @@ DfqPart seriesDfqPart(const CsvTable& table, const std::string& column, const st
                       std::optional<double> upperLimit, const std::string& dataPath,
                       const std::string& partNumber = {}, const std::string& source = {});
 
-
 // ---- Reading (the AQDEF K-field and value-line forms) -----------------------------------------------
 //
 // dfqFromText reads a Q-DAS DFQ file (description and values in one file, AQDEF V12 "ASCII transfer
@@ -121,10 +120,10 @@ struct DfqReadValue {
 };
 
 struct DfqReadCharacteristic {
-  int index = 0;  ///< i of K2xxx/i
-  int part = 1;   ///< index of its part (K1xxx/part)
-  std::string number;  ///< K2001 as written (the index when the file gives none)
-  std::string description;                                ///< K2002
+  int index = 0;            ///< i of K2xxx/i
+  int part = 1;             ///< index of its part (K1xxx/part)
+  std::string number;       ///< K2001 as written (the index when the file gives none)
+  std::string description;  ///< K2002
   std::optional<double> nominal, lowerLimit, upperLimit;  ///< K2101, K2110, K2111 (absolute)
   std::optional<int> decimals;                            ///< K2022
   std::string unit;                                       ///< K2142

@@ -132,10 +132,11 @@ std::vector<FeatureTableRow> cmmReportFeatureRows(const CmmTextReport& report) {
       if (!printed.empty()) part += " (" + printed + ")";
     }
     for (const CmmFeature& f : run.features) {
-      const std::string feature = !f.label.empty() ? f.label
-                                  : report.format == CmmReportFormat::PcDmis || isCharacteristicTable(report.format)
-                                      ? f.featureName
-                                      : "Step " + std::to_string(f.step);
+      const std::string feature =
+          !f.label.empty() ? f.label
+          : report.format == CmmReportFormat::PcDmis || isCharacteristicTable(report.format)
+              ? f.featureName
+              : "Step " + std::to_string(f.step);
       for (const CmmValue& v : f.values) {
         FeatureTableRow row;
         row.part = part;

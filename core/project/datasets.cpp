@@ -169,11 +169,13 @@ std::optional<CmmTextReport> characteristicTableReport(std::string_view text, co
                        "not a Q-DAS DFQ file (its first line is not a K field such as 'K0100 3')");
     return dfqCmmReport(dfqFromText(text, shown));
   }
-  if (looksLikeCalypsoCharacteristics(text)) return calypsoCmmReport(calypsoCharacteristicsFromText(text, shown));
+  if (looksLikeCalypsoCharacteristics(text))
+    return calypsoCmmReport(calypsoCharacteristicsFromText(text, shown));
   if (looksLikeCalypsoFeatures(text)) return std::nullopt;
-  throw ParseError(ErrorContext{shown, 1, 0, {}},
-                   "not a Zeiss Calypso table: its first line names neither a _chr table's columns (id, actual, "
-                   "nominal, planid or partnb) nor a _fet table's (x, y, z, x_nom, y_nom, z_nom)");
+  throw ParseError(
+      ErrorContext{shown, 1, 0, {}},
+      "not a Zeiss Calypso table: its first line names neither a _chr table's columns (id, actual, "
+      "nominal, planid or partnb) nor a _fet table's (x, y, z, x_nom, y_nom, z_nom)");
 }
 
 const std::vector<std::string>& datasetKindNames() {
@@ -194,8 +196,8 @@ std::string datasetKindFromName(const std::string& name, const std::string& fiel
 }
 
 bool datasetKindIsCsv(const std::string& kind) {
-  return kind != dataset_kind::kSetupModel && kind != dataset_kind::kDmis && kind != dataset_kind::kHoleTable &&
-         kind != dataset_kind::kDfq && kind != dataset_kind::kCalypso;
+  return kind != dataset_kind::kSetupModel && kind != dataset_kind::kDmis &&
+         kind != dataset_kind::kHoleTable && kind != dataset_kind::kDfq && kind != dataset_kind::kCalypso;
 }
 
 DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset) {
@@ -236,7 +238,8 @@ CsvTable readDatasetTable(const std::string& projectPath, const DatasetRef& data
   // DFQ and Calypso _chr: the feature table (one row per measured part); Calypso _fet: the probe points.
   if (dataset.kind == dataset_kind::kDfq || dataset.kind == dataset_kind::kCalypso) {
     const std::string text = readFile(path, 256u << 20);
-    if (const auto report = characteristicTableReport(text, path, dataset.kind)) return cmmReportFeatureTable(*report);
+    if (const auto report = characteristicTableReport(text, path, dataset.kind))
+      return cmmReportFeatureTable(*report);
     return calypsoFeaturesProbeTable(text, path);
   }
   return readCsvFile(path, dataset.csv);

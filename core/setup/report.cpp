@@ -481,7 +481,8 @@ std::string valueNames(const CmmFeature& f) {
 std::string featureTitle(const CmmFeature& f, CmmReportFormat format) {
   if (format == CmmReportFormat::PcDmis) return "dimension '" + f.label + "'";
   if (isCharacteristicTable(format))
-    return "characteristic " + f.featureName + (f.label != f.featureName ? " '" + f.label + "'" : std::string());
+    return "characteristic " + f.featureName +
+           (f.label != f.featureName ? " '" + f.label + "'" : std::string());
   return "step " + std::to_string(f.step) + (f.label.empty() ? std::string() : " '" + f.label + "'");
 }
 

@@ -48,9 +48,9 @@ SetupStudyFiles setupStudyFiles(const Project& project, const std::string& proje
     files.modelId = m->id;
     files.modelPath = resolveDatasetPath(projectPath, *m);
   }
-  if (const DatasetRef* r =
-          studyDataset(project, study, "dataset",
-                       {dataset_kind::kCmmReport, dataset_kind::kDmis, dataset_kind::kDfq, dataset_kind::kCalypso})) {
+  if (const DatasetRef* r = studyDataset(
+          project, study, "dataset",
+          {dataset_kind::kCmmReport, dataset_kind::kDmis, dataset_kind::kDfq, dataset_kind::kCalypso})) {
     files.reportId = r->id;
     files.reportPath = resolveDatasetPath(projectPath, *r);
     files.reportPaths = resolveDatasetPaths(projectPath, *r);

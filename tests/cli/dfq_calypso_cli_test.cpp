@@ -27,17 +27,23 @@ nlohmann::json json(const test::TempDir& tmp, const std::string& name) {
 
 // Two characteristics; 12 measured parts; the 5th value of characteristic 1 removed (attribute 255); a
 // description with a decimal comma; 8-bit (Windows-1252: ä = E4); value lines with 0x0F / 0x14.
-const double kBore[12] = {12.503, 12.498, 12.501, 12.505, 99.0, 12.497, 12.502, 12.500, 12.499, 12.504, 12.496, 12.501};
-const double kLength[12] = {40.02, 40.01, 39.99, 40.00, 40.03, 39.98, 40.01, 40.02, 40.00, 39.99, 40.01, 40.00};
+const double kBore[12] = {12.503, 12.498, 12.501, 12.505, 99.0,   12.497,
+                          12.502, 12.500, 12.499, 12.504, 12.496, 12.501};
+const double kLength[12] = {40.02, 40.01, 39.99, 40.00, 40.03, 39.98,
+                            40.01, 40.02, 40.00, 39.99, 40.01, 40.00};
 
 std::string dfq() {
-  std::string t = "K0100 2\r\nK1001/1 4711\r\nK1002/1 Welle\r\nK2142/0 mm\r\n"
-                  "K2001/1 1\r\nK2002/1 Durchmesser 12,5\r\nK2101/1 12.5\r\nK2110/1 12.49\r\nK2111/1 12.51\r\n"
-                  "K2001/2 2\r\nK2002/2 L\xE4nge\r\nK2101/2 40\r\nK2110/2 39.95\r\nK2111/2 40.05\r\n";
+  std::string t =
+      "K0100 2\r\nK1001/1 4711\r\nK1002/1 Welle\r\nK2142/0 mm\r\n"
+      "K2001/1 1\r\nK2002/1 Durchmesser 12,5\r\nK2101/1 12.5\r\nK2110/1 12.49\r\nK2111/1 12.51\r\n"
+      "K2001/2 2\r\nK2002/2 L\xE4nge\r\nK2101/2 40\r\nK2110/2 39.95\r\nK2111/2 40.05\r\n";
   for (int i = 0; i < 12; ++i) {
     char line[160];
-    std::snprintf(line, sizeof line, "%.3f\x0F%d\x0F" "01.03.2024/08:%02d:00\x14%.2f\x0F" "0\r\n", kBore[i],
-                  i == 4 ? 255 : 0, i, kLength[i]);
+    std::snprintf(line, sizeof line,
+                  "%.3f\x0F%d\x0F"
+                  "01.03.2024/08:%02d:00\x14%.2f\x0F"
+                  "0\r\n",
+                  kBore[i], i == 4 ? 255 : 0, i, kLength[i]);
     t += line;
   }
   return t;
@@ -58,7 +64,9 @@ TEST(DfqCli, SpcByNumberAndByNameEqualsTheCsvOfTheValidValues) {
   r = cli("spc --data w.dfq --characteristic 'durchmesser 12,5' --subgroup 2 --out b.json", tmp);
   ASSERT_EQ(r.code, 0) << r.err;
   // The nominal and limits come from K2101 / K2110 / K2111.
-  r = cli("spc --data w.csv --column bore_mm --subgroup 2 --nominal 12.5 --lsl 12.49 --usl 12.51 --out c.json", tmp);
+  r = cli(
+      "spc --data w.csv --column bore_mm --subgroup 2 --nominal 12.5 --lsl 12.49 --usl 12.51 --out c.json",
+      tmp);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(json(tmp, "a.json"), json(tmp, "c.json"));
   EXPECT_EQ(json(tmp, "b.json"), json(tmp, "c.json"));
@@ -103,8 +111,10 @@ std::string demo(const std::string& name) {
 
 TEST(DfqCli, SetupReadsTheDfqOfItsOwnReportAsTheSameSeries) {
   test::TempDir tmp;
-  const std::string report = "'" + (test::sourceDir() / "resources/demo/setup/paper_example_report.csv").string() + "'";
-  CliRun r = cli("setup --model " + demo("paper_example.json") + " --data " + report + " --dfq f.dfq --out a.json", tmp);
+  const std::string report =
+      "'" + (test::sourceDir() / "resources/demo/setup/paper_example_report.csv").string() + "'";
+  CliRun r = cli(
+      "setup --model " + demo("paper_example.json") + " --data " + report + " --dfq f.dfq --out a.json", tmp);
   ASSERT_EQ(r.code, 0) << r.err;
   r = cli("setup --model " + demo("paper_example.json") + " --data f.dfq --out b.json", tmp);
   ASSERT_EQ(r.code, 0) << r.err;
@@ -154,9 +164,10 @@ TEST(CalypsoCli, SetupReadsTheChrTableAsTheCsvSeries) {
   EXPECT_EQ(lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("off_chr.txt:5"), std::string::npos) << r.err;
   // spc on a characteristic of the table (four parts): by its id.
-  test::writeText(tmp.file("vier_chr.txt"), kChr +
-                                               "Flansch\t3\tAbstand_E1\tDistance\t\t40,0300\t40,0000\t0,0500\t-0,0500\t0,0300\r\n"
-                                               "Flansch\t4\tAbstand_E1\tDistance\t\t40,0260\t40,0000\t0,0500\t-0,0500\t0,0260\r\n");
+  test::writeText(tmp.file("vier_chr.txt"),
+                  kChr +
+                      "Flansch\t3\tAbstand_E1\tDistance\t\t40,0300\t40,0000\t0,0500\t-0,0500\t0,0300\r\n"
+                      "Flansch\t4\tAbstand_E1\tDistance\t\t40,0260\t40,0000\t0,0500\t-0,0500\t0,0260\r\n");
   r = cli("spc --data vier_chr.txt --characteristic Abstand_E1 --subgroup 2 --out s.json", tmp);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(json(tmp, "s.json")["lsl"], 39.95);
@@ -165,14 +176,15 @@ TEST(CalypsoCli, SetupReadsTheChrTableAsTheCsvSeries) {
 TEST(CalypsoCli, FeaturesFileIsMatchedLikeTheProbePointCsv) {
   test::TempDir tmp;
   // Six points on three faces of a block, measured 0.01 mm off along x and rotated slightly.
-  test::writeText(tmp.file("block_fet.txt"),
-                  "planid\tpartnb\tid\ttype\tx\ty\tz\tx_nom\ty_nom\tz_nom\tnx\tny\tnz\r\n"
-                  "Block\t1\tP1\tPoint\t10,0100\t2,0010\t3,0000\t10,0000\t2,0000\t3,0000\t1,0000\t0,0000\t0,0000\r\n"
-                  "Block\t1\tP2\tPoint\t10,0100\t8,0010\t6,0000\t10,0000\t8,0000\t6,0000\t1,0000\t0,0000\t0,0000\r\n"
-                  "Block\t1\tP3\tPoint\t4,0100\t10,0000\t3,0000\t4,0000\t10,0000\t3,0000\t0,0000\t1,0000\t0,0000\r\n"
-                  "Block\t1\tP4\tPoint\t7,0100\t10,0000\t7,0000\t7,0000\t10,0000\t7,0000\t0,0000\t1,0000\t0,0000\r\n"
-                  "Block\t1\tP5\tPoint\t3,0100\t3,0020\t10,0000\t3,0000\t3,0000\t10,0000\t0,0000\t0,0000\t1,0000\r\n"
-                  "Block\t1\tP6\tPoint\t8,0100\t6,0000\t10,0000\t8,0000\t6,0000\t10,0000\t0,0000\t0,0000\t1,0000\r\n");
+  test::writeText(
+      tmp.file("block_fet.txt"),
+      "planid\tpartnb\tid\ttype\tx\ty\tz\tx_nom\ty_nom\tz_nom\tnx\tny\tnz\r\n"
+      "Block\t1\tP1\tPoint\t10,0100\t2,0010\t3,0000\t10,0000\t2,0000\t3,0000\t1,0000\t0,0000\t0,0000\r\n"
+      "Block\t1\tP2\tPoint\t10,0100\t8,0010\t6,0000\t10,0000\t8,0000\t6,0000\t1,0000\t0,0000\t0,0000\r\n"
+      "Block\t1\tP3\tPoint\t4,0100\t10,0000\t3,0000\t4,0000\t10,0000\t3,0000\t0,0000\t1,0000\t0,0000\r\n"
+      "Block\t1\tP4\tPoint\t7,0100\t10,0000\t7,0000\t7,0000\t10,0000\t7,0000\t0,0000\t1,0000\t0,0000\r\n"
+      "Block\t1\tP5\tPoint\t3,0100\t3,0020\t10,0000\t3,0000\t3,0000\t10,0000\t0,0000\t0,0000\t1,0000\r\n"
+      "Block\t1\tP6\tPoint\t8,0100\t6,0000\t10,0000\t8,0000\t6,0000\t10,0000\t0,0000\t0,0000\t1,0000\r\n");
   test::writeText(tmp.file("p.csv"),
                   "id,surface,qx,qy,qz,nx,ny,nz,px,py,pz\n"
                   "P1,Point,10,2,3,1,0,0,10.01,2.001,3\nP2,Point,10,8,6,1,0,0,10.01,8.001,6\n"

@@ -83,14 +83,17 @@ std::string errorOf(const std::string& text) {
 
 TEST(Calypso, ErrorsNameFileLineAndColumn) {
   const std::string head = "planid\tpartnb\tid\tactual\tnominal\tdeviation\n";
-  EXPECT_EQ(errorOf(head + "P\t1\tD1\t12,5x\t12\t0\n"), "b_chr.txt:2:4: field 'actual': '12,5x' is not a number");
+  EXPECT_EQ(errorOf(head + "P\t1\tD1\t12,5x\t12\t0\n"),
+            "b_chr.txt:2:4: field 'actual': '12,5x' is not a number");
   EXPECT_EQ(errorOf(head + "P\t1\tD1\t12,5\t12\t0,3\n"),
             "b_chr.txt:2:6: field 'deviation': deviation 0.3 of 'D1' is not actual - nominal = 0.5");
-  EXPECT_EQ(errorOf(head + "P\t1\tD1\t1,2.5\t12\t0\n"), "b_chr.txt:2:4: field 'actual': '1,2.5' is not a number");
+  EXPECT_EQ(errorOf(head + "P\t1\tD1\t1,2.5\t12\t0\n"),
+            "b_chr.txt:2:4: field 'actual': '1,2.5' is not a number");
   EXPECT_EQ(errorOf(head + "P\t1\tD1\t\t12\t0\n"), "b_chr.txt:2:4: field 'actual': a number is missing");
   EXPECT_EQ(errorOf(head + "P\t1\tD1\t1\t1\t0\t9\t9\n"), "b_chr.txt:2:7: the row has 8 cells, the header 6");
-  EXPECT_EQ(errorOf("planid\tpartnb\tid\tnominal\n"), "b_chr.txt:1: field 'actual': missing column 'actual' "
-                                                      "(the file has: planid, partnb, id, nominal)");
+  EXPECT_EQ(errorOf("planid\tpartnb\tid\tnominal\n"),
+            "b_chr.txt:1: field 'actual': missing column 'actual' "
+            "(the file has: planid, partnb, id, nominal)");
 }
 
 const std::string kFet =

@@ -106,27 +106,28 @@ TEST(DfqRead, FieldsWithAllFieldsAndAttributes) {
 // (part 2's fields after part 1's characteristics), 0x0F between a value's fields and 0x14 between
 // characteristics, an empty value (not measured) and a removed one, numbers repeated across the parts.
 std::string valueLineFile(const std::string& field, const std::string& next) {
-  return crlf("K0100 4\n"
-              "K1001/1 P-100\n"
-              "K1002/1 Geh\xE4use\n"
-              "K2001/1 10\n"
-              "K2002/1 Bohrung \xD8 8,5\n"
-              "K2101/1 8.5\n"
-              "K2110/1 8.49\n"
-              "K2111/1 8.51\n"
-              "K2001/2 11\n"
-              "K2002/2 Tiefe\n"
-              "K2101/2 12\n"
-              "K1001/2 P-200\n"
-              "K1002/2 Deckel\n"
-              "K2001/3 10\n"
-              "K2002/3 Bohrung \xD8 6\n"
-              "K2101/3 6\n"
-              "K2001/4 12\n"
-              "K2002/4 Ebenheit\n"
-              "K2111/4 0.02\n") +
-         "8.502" + field + "0" + field + "14.03.2024/08:15:30" + next + "12.01" + field + "0" + next + "6.001" +
-         field + "0" + next + "0.011" + field + "0\r\n" +                                           //
+  return crlf(
+             "K0100 4\n"
+             "K1001/1 P-100\n"
+             "K1002/1 Geh\xE4use\n"
+             "K2001/1 10\n"
+             "K2002/1 Bohrung \xD8 8,5\n"
+             "K2101/1 8.5\n"
+             "K2110/1 8.49\n"
+             "K2111/1 8.51\n"
+             "K2001/2 11\n"
+             "K2002/2 Tiefe\n"
+             "K2101/2 12\n"
+             "K1001/2 P-200\n"
+             "K1002/2 Deckel\n"
+             "K2001/3 10\n"
+             "K2002/3 Bohrung \xD8 6\n"
+             "K2101/3 6\n"
+             "K2001/4 12\n"
+             "K2002/4 Ebenheit\n"
+             "K2111/4 0.02\n") +
+         "8.502" + field + "0" + field + "14.03.2024/08:15:30" + next + "12.01" + field + "0" + next +
+         "6.001" + field + "0" + next + "0.011" + field + "0\r\n" +                                  //
          "8.498" + field + "0" + field + "14.03.2024/08:17:02" + field + "0" + field + "7" + next +  //
          field + next + "6.003" + field + "255" + next + "0.013\r\n" + "K0014/0 SN-2\r\n";
 }
@@ -237,7 +238,11 @@ TEST(DfqRead, ErrorsNameFileLineAndField) {
   EXPECT_NE(errorOf("K0100 1\nK0001/1 nan\n").find("bad.dfq:2"), std::string::npos);
   EXPECT_NE(errorOf("K0100 1\nK0001/1 1,2,5\n").find("is not a number"), std::string::npos);
   EXPECT_NE(errorOf("K0100 1\nK2101/1 1.5.2\n").find("bad.dfq:2: field 'K2101/1'"), std::string::npos);
-  EXPECT_NE(errorOf("K0100 2\n1\x0F" "0\x14" "2\x14" "3\n").find("bad.dfq:2: the value line has 3"),
+  EXPECT_NE(errorOf("K0100 2\n1\x0F"
+                    "0\x14"
+                    "2\x14"
+                    "3\n")
+                .find("bad.dfq:2: the value line has 3"),
             std::string::npos);
   EXPECT_NE(errorOf("K0100 1\nK2110/1 2\nK2111/1 1\n").find("bad.dfq:2: field 'K2110/1': lower limit 2"),
             std::string::npos);
@@ -269,8 +274,9 @@ TEST(DfqRead, CharacteristicChoice) {
     return std::string("(no error)");
   };
   // "10" is the number of a characteristic of each part.
-  EXPECT_EQ(error("10"), "p.dfq: field '--characteristic': '10' is ambiguous: it names 2 characteristics: '10' "
-                         "(Bohrung \xC3\x98 8,5), '10' (Bohrung \xC3\x98 6); choose one by its description");
+  EXPECT_EQ(error("10"),
+            "p.dfq: field '--characteristic': '10' is ambiguous: it names 2 characteristics: '10' "
+            "(Bohrung \xC3\x98 8,5), '10' (Bohrung \xC3\x98 6); choose one by its description");
   EXPECT_NE(error("99").find("no characteristic '99'"), std::string::npos);
   EXPECT_NE(error("99").find("'12' (Ebenheit)"), std::string::npos);
   EXPECT_NE(error("").find("is required: the file has 4 characteristics"), std::string::npos);
@@ -296,6 +302,53 @@ TEST(DfqRead, AsACmmReport) {
   EXPECT_TRUE(test::near(*bore.values[0].lower, -0.01, 1e-12));
   EXPECT_TRUE(test::near(*bore.values[0].upper, 0.01, 1e-12));
   EXPECT_EQ(bore.values[0].actual, 8.502);
+}
+
+}  // namespace
+}  // namespace metrofit
+
+namespace metrofit {
+namespace {
+
+// A short stand-in for the fuzz targets (fuzz/fuzz_dfq.cpp, fuzz/fuzz_calypso.cpp; built only with
+// -DMETROFIT_FUZZ=ON): seeded byte mutations of good files give a value or a typed input error, nothing
+// else (no other exception, no crash).
+TEST(DfqRead, MutatedFilesGiveValuesOrInputErrors) {
+  const std::string seeds[] = {valueLineFile("\x0F", "\x14"), kFields};
+  std::uint32_t state = 12345;
+  const auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return state >> 8;
+  };
+  const char bytes[] = {'\x0F', '\x14', '/',  ' ',    'K',    '0', '9', ',',
+                        '.',    '\n',   '\r', '\xC2', '\xB6', '-', 'e'};
+  int errors = 0;
+  for (int round = 0; round < 4000; ++round) {
+    std::string text = seeds[round % 2];
+    for (int k = 0, n = 1 + static_cast<int>(next() % 4); k < n; ++k) {
+      const std::size_t at = next() % text.size();
+      switch (next() % 3) {
+        case 0:
+          text[at] = bytes[next() % sizeof bytes];
+          break;
+        case 1:
+          text.erase(at, 1 + next() % 8);
+          break;
+        default:
+          text.insert(at, 1, bytes[next() % sizeof bytes]);
+          break;
+      }
+      if (text.empty()) text = "K";
+    }
+    try {
+      const DfqFile f = dfqFromText(text, "m.dfq");
+      (void)cmmReportFeatureTable(dfqCmmReport(f));
+      (void)dfqParts(f);
+    } catch (const InputError&) {
+      ++errors;
+    }
+  }
+  EXPECT_GT(errors, 100);
 }
 
 }  // namespace
