@@ -188,7 +188,8 @@ void registerMatchCommand(CLI::App& app) {
   existingFile(
       sub->add_option(
              "--data", a->data,
-             "Probe points: CSV (id,surface,qx,qy,qz,nx,ny,nz,px,py,pz) or a PC-DMIS hole-table report")
+             "Probe points: CSV (id,surface,qx,qy,qz,nx,ny,nz,px,py,pz), a PC-DMIS hole-table report or a "
+             "Zeiss Calypso _fet table")
           ->required());
   sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")
       ->check(positiveNumber())

@@ -113,9 +113,10 @@ void registerProjectCommands(CLI::App& app) {
   existingFile(add->add_option("project", a->project, "Project file (.metrofit)")->required());
   std::vector<std::string> kinds = datasetKindNames();
   kinds.push_back(kGuessKind);
-  add->add_option("kind", a->kind,
-                  "thermal-log|probe-points|circular-test|cmm-report|setup-model|"
-                  "feature-series|dmis|hole-table, or auto: the kind the file's name and content say")
+  add->add_option(
+         "kind", a->kind,
+         "thermal-log|probe-points|circular-test|cmm-report|setup-model|"
+         "feature-series|dmis|hole-table|dfq|calypso, or auto: the kind the file's name and content say")
       ->required()
       ->check(CLI::IsMember(kinds));
   existingFile(add->add_option("file", a->file, "Data file (- for standard input, copied into the project)")

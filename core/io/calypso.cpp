@@ -216,9 +216,10 @@ CalypsoCharacteristics calypsoCharacteristicsFromText(std::string_view text, con
     if (c.deviation && c.nominal) {
       const double slack = c.rounding + 0.5 * std::pow(10.0, -devDigits) + 1e-9;
       if (std::abs(*c.deviation - (c.actual - *c.nominal)) > slack + 1e-12 * std::abs(c.actual))
-        throw ValidationError(ErrorContext{source, c.line, cDev + 1, "deviation"},
-                              "deviation " + fmt(*c.deviation) + " of '" + c.id +
-                                  "' is not actual - nominal = " + fmt(c.actual - *c.nominal));
+        throw ValidationError(
+            ErrorContext{source, c.line, cDev + 1, "deviation"},
+            "deviation " + fmt(*c.deviation) + " of '" + c.id +
+                "' is not actual - nominal = " + fmt(std::round((c.actual - *c.nominal) * 1e9) / 1e9));
     }
     if (std::find(out.parts.begin(), out.parts.end(), c.part) == out.parts.end()) out.parts.push_back(c.part);
     out.rows.push_back(std::move(c));

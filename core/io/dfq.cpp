@@ -532,7 +532,9 @@ std::size_t chooseCharacteristic(const std::vector<std::pair<std::string, std::s
                                  const std::string& field) {
   const auto title = [&list](std::size_t k) {
     const auto& [n, d] = list[k];
-    return "'" + n + "'" + (d.empty() || d == n ? std::string() : " (" + d + ")");
+    // Without a description of its own, its place in the file tells equal numbers apart.
+    return "'" + n + "'" +
+           (d.empty() || d == n ? " (no. " + std::to_string(k + 1) + " in the file)" : " (" + d + ")");
   };
   const auto all = [&](const std::vector<std::size_t>& which) {
     std::string out;
