@@ -125,7 +125,13 @@ std::vector<FeatureTableRow> cmmReportFeatureRows(const CmmTextReport& report) {
     std::string part;
     // Run numbers repeat in a summary of several days (run # 1-4 each day): the k-th run in the
     // file, with its printed number and date.
-    if (report.runs.size() > 1) {
+    if (isCharacteristicTable(report.format)) {
+      // DFQ / Calypso: the measured workpiece (K0014, partnb), else the part number and the value set.
+      part = !run.serial.empty()   ? run.serial
+             : run.routine.empty() ? "part " + std::to_string(run.number)
+                                   : run.routine + " #" + std::to_string(run.number);
+      if (!run.dateTime.empty()) part += " (" + run.dateTime + ")";
+    } else if (report.runs.size() > 1) {
       part = "run " + std::to_string(k + 1);
       std::string printed = run.number > 0 ? "#" + std::to_string(run.number) : std::string();
       if (!run.dateTime.empty()) printed += (printed.empty() ? "" : ", ") + run.dateTime;
