@@ -1,0 +1,68 @@
+// A Q-DAS DFQ file as the setup's CMM report series (core/setup/report.h 3., core/io/cmm_text_report.h
+// 4.): the file is written here from the AQDEF field list; the expected deviations are the values minus
+// the nominal, worked out by hand.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/common/error.h"
+#include "core/io/cmm_text_report.h"
+#include "core/setup/report.h"
+#include "setup_fixtures.h"
+#include "testsupport.h"
+
+namespace metrofit::setup {
+namespace {
+
+using metrofit::test::near;
+
+// D1 (label POS_D1: K2001 number), D2 (label "Bohrung 18,5": the K2002 description, with a decimal
+// comma). Three workpieces named by K0014; the second D2 value removed (attribute 255).
+const std::string kDfq =
+    "K0100 2\r\nK1001/1 4711\r\nK2022/0 3\r\n"
+    "K2001/1 POS_D1\r\nK2002/1 Position\r\nK2101/1 42\r\nK2110/1 41.98\r\nK2111/1 42.02\r\n"
+    "K2001/2 7\r\nK2002/2 Bohrung 18,5\r\nK2101/2 18.5\r\nK2110/2 18.45\r\nK2111/2 18.53\r\n"
+    "K0001/1 42.004\r\nK0001/2 18.51\r\nK0014/0 SN-1\r\n"
+    "K0001/1 42.008\r\nK0001/2 18.60\r\nK0002/2 255\r\nK0014/0 SN-2\r\n"
+    "K0001/1 42.000\r\nK0001/2 18.52\r\nK0014/0 SN-3\r\n";
+
+Model model(const std::string& d2Label) {
+  nlohmann::json j = test::smallModelJson();
+  j["dimensions"][1]["label"] = d2Label;
+  return modelFromJson(j, "m.json");
+}
+
+TEST(CharacteristicReport, DfqDimensionsByNumberOrDescriptionRemovedValuesLeftOut) {
+  const CmmTextReport r = cmmTextReportFromText(kDfq, "s.dfq");
+  for (const std::string label : {"Bohrung 18,5", "7", "bohrung 18,5"}) {
+    const Measurements m = cmmTextReportMeasurements(r, model(label));
+    EXPECT_EQ(m.parts, (std::vector<std::string>{"SN-1", "SN-2", "SN-3"})) << label;
+    EXPECT_EQ(m.samples, (std::vector<int>{3, 2})) << label;
+    EXPECT_TRUE(near(m.deviationMm[0], (0.004 + 0.008 + 0.000) / 3, 1e-12)) << label;
+    EXPECT_TRUE(near(m.deviationMm[1], (0.01 + 0.02) / 2, 1e-12)) << label;  // 18.60 removed
+  }
+}
+
+TEST(CharacteristicReport, LimitsThatDisagreeWithTheModelAreNamedWithTheirLine) {
+  std::string text = kDfq;
+  text.replace(text.find("K2111/2 18.53"), 13, "K2111/2 18.54");
+  try {
+    (void)cmmTextReportMeasurements(cmmTextReportFromText(text, "s.dfq"), model("7"));
+    FAIL() << "no error";
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.dfq:15"), std::string::npos) << e.what();  // the value's line
+    EXPECT_NE(std::string(e.what()).find("differs from the model's limits"), std::string::npos) << e.what();
+  }
+  // Two characteristics with one description: the label must use the number.
+  text = kDfq;
+  text.replace(text.find("K2002/1 Position"), 16, "K2002/1 Bohrung 18,5");
+  try {
+    (void)cmmTextReportMeasurements(cmmTextReportFromText(text, "s.dfq"), model("Bohrung 18,5"));
+    FAIL() << "no error";
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("name one by its number '7'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace metrofit::setup
