@@ -57,6 +57,49 @@ std::optional<std::string> qdasDateTime(const std::string& iso) {
   return std::string(buf);
 }
 
+std::optional<double> qdasMinutes(const std::string& text) {
+  // DD.MM.YYYY, then '/' or blanks, then HH:MM[:SS]; digits parsed by hand (locale free).
+  std::string_view t(text);
+  while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+  while (!t.empty() && (t.back() == ' ' || t.back() == '\t' || t.back() == '\r')) t.remove_suffix(1);
+  std::size_t pos = 0;
+  const auto digits = [&](std::size_t most, int* out) {
+    std::size_t n = 0;
+    int v = 0;
+    while (pos < t.size() && n < most && std::isdigit(static_cast<unsigned char>(t[pos]))) {
+      v = v * 10 + (t[pos] - '0');
+      ++pos;
+      ++n;
+    }
+    *out = v;
+    return n > 0;
+  };
+  const auto expect = [&](char c) {
+    if (pos < t.size() && t[pos] == c) {
+      ++pos;
+      return true;
+    }
+    return false;
+  };
+  int d = 0, mo = 0, y = 0, h = 0, mi = 0, sec = 0;
+  if (!digits(2, &d) || !expect('.') || !digits(2, &mo) || !expect('.') || !digits(4, &y))
+    return std::nullopt;
+  if (!expect('/') && !expect(' ')) return std::nullopt;
+  while (pos < t.size() && t[pos] == ' ') ++pos;
+  if (!digits(2, &h) || !expect(':') || !digits(2, &mi)) return std::nullopt;
+  if (expect(':') && !digits(2, &sec)) return std::nullopt;
+  if (pos != t.size() || mo < 1 || mo > 12 || d < 1 || d > 31 || h > 23 || mi > 59 || sec > 60 || y < 1900)
+    return std::nullopt;
+  // Days from the civil date (H. Hinnant's days_from_civil).
+  const int yy = mo <= 2 ? y - 1 : y;
+  const int era = yy / 400;
+  const int yoe = yy - era * 400;
+  const int doy = (153 * (mo + (mo > 2 ? -3 : 9)) + 2) / 5 + d - 1;
+  const int doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+  const long days = static_cast<long>(era) * 146097 + doe - 719468;
+  return static_cast<double>(days) * 1440.0 + h * 60.0 + mi + sec / 60.0;
+}
+
 std::string writeDfq(const DfqPart& part) {
   const auto& cs = part.characteristics;
   if (cs.empty()) fail("a DFQ file needs at least one characteristic");

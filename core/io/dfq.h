@@ -52,6 +52,11 @@ std::string writeDfq(const DfqPart& part);
 /// it, "DD.MM.YYYY/HH:MM:SS"; nullopt when `iso` is not such a date-time.
 std::optional<std::string> qdasDateTime(const std::string& iso);
 
+/// A date-time as Q-DAS (K0004, "DD.MM.YYYY/HH:MM:SS") or Calypso's _hdr ("DD.MM.YYYY HH:MM:SS") write
+/// it, seconds optional, as minutes since 1970-01-01 00:00 (the time zone as written); nullopt for
+/// anything else.
+std::optional<double> qdasMinutes(const std::string& dateTime);
+
 /// The unit of a column from its name's suffix ("diameter_mm" -> "mm"; one of mm, um, deg, s, min, h,
 /// ppm), ASCII; empty when the name has none.
 std::string dfqColumnUnit(const std::string& column);

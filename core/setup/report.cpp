@@ -12,6 +12,7 @@
 
 #include "core/common/error.h"
 #include "core/io/csv.h"
+#include "core/io/dfq.h"
 #include "core/io/dmis.h"
 #include "core/io/file_io.h"
 
@@ -492,6 +493,23 @@ Measurements cmmTextReportMeasurements(const CmmTextReport& report, const Model&
   Measurements m;
   m.sources.push_back(report.source);
   const std::string base = baseName(report.source);
+  // DFQ and Calypso date each measured part (K0004; the _hdr's date and time): time_min from the first
+  // one, when every run has a date-time that reads (else 0, as for the other reports).
+  std::vector<double> times;
+  if (isCharacteristicTable(report.format)) {
+    for (const CmmRun& r : report.runs) {
+      const auto t = qdasMinutes(r.dateTime);
+      if (!t) {
+        times.clear();
+        break;
+      }
+      times.push_back(*t);
+    }
+    if (!times.empty()) {
+      const double t0 = *std::min_element(times.begin(), times.end());
+      for (double& t : times) t -= t0;
+    }
+  }
   for (std::size_t k = 0; k < report.runs.size(); ++k) {
     const CmmRun& run = report.runs[k];
     // DFQ and Calypso name the measured workpiece (K0014, partnb): the part, when every run has its own.
@@ -552,7 +570,7 @@ Measurements cmmTextReportMeasurements(const CmmTextReport& report, const Model&
                               "nominal " + fmt(*v->nominal) + " differs from the model's nominal " +
                                   fmt(*d.nominal) + " of '" + d.id + "'");
       }
-      m.rows.push_back({part, 0.0, q, plainDeviation(*v), report.source, v->line});
+      m.rows.push_back({part, times.empty() ? 0.0 : times[k], q, plainDeviation(*v), report.source, v->line});
     }
   }
   finish(m, model, report.source);

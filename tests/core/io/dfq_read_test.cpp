@@ -211,6 +211,16 @@ TEST(DfqRead, WriterOutputReadsBackIdentically) {
   EXPECT_EQ(writeDfq(back[0]), text);
 }
 
+TEST(DfqRead, DateTimesAsMinutes) {
+  // 2024 is a leap year: 29 February to 1 March is one day; 1970-01-02 00:00 is 1440 minutes.
+  EXPECT_EQ(*qdasMinutes("01.03.2024/08:15:30") - *qdasMinutes("29.02.2024/08:15:30"), 1440.0);
+  EXPECT_EQ(*qdasMinutes("02.01.1970/00:00:00"), 1440.0);
+  EXPECT_EQ(*qdasMinutes("14.03.2024 08:21") - *qdasMinutes("14.03.2024/08:15:30"), 5.5);  // Calypso _hdr
+  EXPECT_FALSE(qdasMinutes("2024-03-14T08:21:00").has_value());
+  EXPECT_FALSE(qdasMinutes("14.13.2024/08:21:00").has_value());
+  EXPECT_FALSE(qdasMinutes("").has_value());
+}
+
 TEST(DfqRead, DecimalCommaOnlyInNumbers) {
   const DfqFile f = dfqFromText("K0100 1\nK2001 A\nK2002 Ma\xC3\x9F 3,5\nK2101 3,5\nK0001 3,512\n", "c.dfq");
   EXPECT_EQ(*f.characteristics[0].nominal, 3.5);

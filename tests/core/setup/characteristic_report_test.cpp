@@ -43,6 +43,21 @@ TEST(CharacteristicReport, DfqDimensionsByNumberOrDescriptionRemovedValuesLeftOu
   }
 }
 
+TEST(CharacteristicReport, DfqDatesGiveTimeMinFromTheFirstPart) {
+  std::string text = kDfq;
+  for (const auto& [serial, time] : {std::pair<std::string, std::string>{"SN-1", "14.03.2024/08:00:00"},
+                                     {"SN-2", "14.03.2024/08:12:30"},
+                                     {"SN-3", "14.03.2024/09:00:00"}}) {
+    const std::string field = "K0014/0 " + serial + "\r\n";
+    text.insert(text.find(field) + field.size(), "K0004/0 " + time + "\r\n");
+  }
+  const Measurements m = cmmTextReportMeasurements(cmmTextReportFromText(text, "s.dfq"), model("7"));
+  ASSERT_EQ(m.rows.size(), 5u);
+  EXPECT_EQ(m.rows[0].timeMin, 0.0);
+  EXPECT_EQ(m.rows[2].timeMin, 12.5);  // SN-2, D1 (its D2 removed)
+  EXPECT_EQ(m.rows[3].timeMin, 60.0);
+}
+
 TEST(CharacteristicReport, LimitsThatDisagreeWithTheModelAreNamedWithTheirLine) {
   std::string text = kDfq;
   text.replace(text.find("K2111/2 18.53"), 13, "K2111/2 18.54");
