@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/io/calypso.h"
 #include "core/io/csv.h"
 #include "core/io/dfq.h"
 #include "core/io/dmis.h"
@@ -640,6 +641,9 @@ Measurements readMeasurements(const std::vector<std::string>& paths, const Model
     if (looksLikeDmis(text)) {
       sets.push_back(dmisMeasurements(text, displayPath(p), model, dmis, &bySerial, !series));
       if (!bySerial) unnamedDmis.push_back(sets.size() - 1);
+    } else if (p != "-" && looksLikeCalypsoCharacteristics(text) && !looksLikeDfq(text)) {
+      // A Calypso _chr file read by its path: with the dates of the _hdr file beside it.
+      sets.push_back(cmmTextReportMeasurements(readCmmTextReport(p), model));
     } else if (looksLikeCmmTextReport(text))
       sets.push_back(cmmTextReportMeasurements(cmmTextReportFromText(text, displayPath(p)), model));
     else

@@ -58,6 +58,26 @@ TEST(CharacteristicReport, DfqDatesGiveTimeMinFromTheFirstPart) {
   EXPECT_EQ(m.rows[3].timeMin, 60.0);
 }
 
+TEST(CharacteristicReport, CalypsoChrWithTheHeaderFileBesideIt) {
+  metrofit::test::TempDir tmp;
+  metrofit::test::writeText(tmp.file("plan_chr.txt"),
+                            "planid\tpartnb\tid\tactual\tnominal\tuppertol\tlowertol\r\n"
+                            "plan\t11\tPOS_D1\t42,0040\t42,0000\t0,0200\t-0,0200\r\n"
+                            "plan\t11\tD2\t18,5100\t18,5000\t0,0300\t-0,0500\r\n"
+                            "plan\t12\tPOS_D1\t42,0080\t42,0000\t0,0200\t-0,0200\r\n"
+                            "plan\t12\tD2\t18,5300\t18,5000\t0,0300\t-0,0500\r\n");
+  metrofit::test::writeText(tmp.file("plan_hdr.txt"),
+                            "planid\tpartnb\tdate\ttime\r\nplan\t11\t14.03.2024\t08:00:00\r\n"
+                            "plan\t12\t14.03.2024\t08:45:00\r\n");
+  const Measurements m = readMeasurements({tmp.file("plan_chr.txt")}, model("D2"));
+  EXPECT_EQ(m.parts, (std::vector<std::string>{"11", "12"}));
+  ASSERT_EQ(m.rows.size(), 4u);
+  EXPECT_EQ(m.rows[0].timeMin, 0.0);
+  EXPECT_EQ(m.rows[3].timeMin, 45.0);
+  EXPECT_TRUE(near(m.deviationMm[0], 0.006, 1e-12));
+  EXPECT_TRUE(near(m.deviationMm[1], 0.02, 1e-12));
+}
+
 TEST(CharacteristicReport, LimitsThatDisagreeWithTheModelAreNamedWithTheirLine) {
   std::string text = kDfq;
   text.replace(text.find("K2111/2 18.53"), 13, "K2111/2 18.54");
