@@ -54,7 +54,7 @@
         <translation>Schließt den Kreis: passt jedes deklarierte Modell an, untersucht das verbleibende Residuum, führt es auf einen Effekt zurück, der im Modell fehlt (thermische Verzögerung, eine nicht deklarierte Eingangsgröße, Drift, Umkehrspiel, Maßstab, zyklischer Fehler, Werkzeugverschleiß, Flächenversatz und mehr), nimmt den Effekt nur bei starker Bestätigung außerhalb der Stichprobe auf und zeigt den Fehler vorher und nachher.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>Thermal log</source>
         <translation>Thermoprotokoll</translation>
     </message>
@@ -92,6 +92,16 @@
         <location line="+2"/>
         <source>Hole table</source>
         <translation>Bohrungstabelle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Q-DAS DFQ file</source>
+        <translation>Q-DAS-DFQ-Datei</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Zeiss Calypso table</source>
+        <translation>Zeiss-Calypso-Tabelle</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -54,7 +54,7 @@
         <translation>Zamyka pętlę: dopasowuje każdy zadeklarowany model, analizuje pozostawioną przez niego resztę, wiąże ją z efektem, którego modelowi brakuje (opóźnienie termiczne, niezadeklarowane wejście, dryft, luz zwrotny, skala, błąd cykliczny, zużycie narzędzia, przesunięcie powierzchni i inne), dodaje efekt tylko przy silnym potwierdzeniu poza próbą uczącą i podaje błąd przed i po.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>Thermal log</source>
         <translation>Rejestr termiczny</translation>
     </message>
@@ -92,6 +92,16 @@
         <location line="+2"/>
         <source>Hole table</source>
         <translation>Tabela otworów</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Q-DAS DFQ file</source>
+        <translation>Plik Q-DAS DFQ</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Zeiss Calypso table</source>
+        <translation>Tabela Zeiss Calypso</translation>
     </message>
     <message>
         <location line="+2"/>

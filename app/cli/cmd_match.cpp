@@ -289,8 +289,9 @@ void registerMatchCommand(CLI::App& app) {
   auto* sub = app.add_subcommand("match", "Workpiece posture matching and 5-axis machine adjustment");
   existingFile(
       sub->add_option("--data", a->data,
-                      "Probe points: CSV (id,surface,qx,qy,qz,nx,ny,nz,px,py,pz) or a PC-DMIS hole-table "
-                      "report; with --cad measured points only (id,px,py,pz or id,x_mm,y_mm,z_mm)")
+                      "Probe points: CSV (id,surface,qx,qy,qz,nx,ny,nz,px,py,pz), a PC-DMIS hole-table "
+                      "report or a Zeiss Calypso _fet table; with --cad measured points only (id,px,py,pz "
+                      "or id,x_mm,y_mm,z_mm)")
           ->required());
   existingFile(sub->add_option(
       "--cad", a->cad,

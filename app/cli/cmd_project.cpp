@@ -143,7 +143,8 @@ void registerProjectCommands(CLI::App& app) {
   add->add_option(
          "kind", a->kind,
          "thermal-log|probe-points|circular-test|cmm-report|setup-model|"
-         "feature-series|dmis|hole-table|cad-model, or auto: the kind the file's name and content say")
+         "feature-series|dmis|hole-table|dfq|calypso|cad-model, or auto: the kind the file's name and "
+         "content say")
       ->required()
       ->check(CLI::IsMember(kinds));
   existingFile(

@@ -428,7 +428,9 @@ void registerSetupCommand(CLI::App& app) {
   // --model and --data are required unless `setup validate` runs (checked in the callback).
   existingFile(sub->add_option("--model", a->model, "Setup model (relation graph, JSON), required"));
   existingFile(
-      sub->add_option("--data", a->data, "Measurement report(s): CMM series CSV or DMIS output, required")
+      sub->add_option("--data", a->data,
+                      "Measurement report(s): CMM series CSV, DMIS output, a CMM text report, a Q-DAS "
+                      "DFQ file or a Zeiss Calypso _chr table, required")
           ->take_all());
   addCsvOptions(sub);
   addDmisOptions(sub);

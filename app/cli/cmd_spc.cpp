@@ -4,6 +4,11 @@
 //       [--dfq F.dfq [--dfq-part P]]: also the series as a Q-DAS DFQ file (core/io/dfq.h): one
 //       characteristic (the column) with its nominal, limits, unit (the column name's suffix) and values,
 //       the times from a `timestamp` column when the file has one
+//   spc --data F.dfq|F_chr.txt --characteristic N|NAME ...: a Q-DAS DFQ file or a Zeiss Calypso _chr table
+//       (recognised by content): the series of one characteristic, N its number (DFQ K2001; Calypso id),
+//       NAME its description (DFQ K2002; Calypso id); values in measured-part order, DFQ values that are
+//       not valid (attribute >= 255, core/io/dfq.h) left out; the nominal and limits from the file unless
+//       --nominal / --lsl --usl are given
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -15,6 +20,7 @@
 #include "app/cli/commands.h"
 #include "core/common/error.h"
 #include "core/common/numformat.h"
+#include "core/io/calypso.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
 #include "core/io/dfq.h"
@@ -28,7 +34,7 @@ namespace {
 
 /// The defaults are the project study's SPC series (studies.kinematics.spc, KinematicsSettings::Spc).
 struct SpcArgs {
-  std::string data, column, out, dfq, dfqPart;
+  std::string data, column, characteristic, out, dfq, dfqPart;
   int subgroup = KinematicsSettings::Spc{}.subgroup;
   double lsl = 0.0, usl = 0.0, nominal = 0.0, coverage = KinematicsSettings::Spc{}.coverage;
   CLI::Option *lslOpt = nullptr, *uslOpt = nullptr, *nominalOpt = nullptr;
@@ -68,18 +74,106 @@ SpcOptions spcOptions(const SpcArgs& a) {
   return o;
 }
 
+/// One characteristic of a DFQ file or a Calypso _chr table, as an SPC series.
+struct CharacteristicSeries {
+  std::string title;   ///< "number (description)"
+  std::string column;  ///< a column name for the DFQ export: the number
+  std::vector<double> values;
+  std::optional<double> nominal, lower, upper;  ///< absolute
+};
+
+/// The series `choice` names in a DFQ file or a Calypso _chr table (`text`), or nullopt for another file.
+std::optional<CharacteristicSeries> characteristicSeries(std::string_view text, const std::string& source,
+                                                         const std::string& choice) {
+  CharacteristicSeries s;
+  if (looksLikeDfq(text)) {
+    const DfqFile f = dfqFromText(text, source);
+    std::vector<std::pair<std::string, std::string>> list;
+    for (const DfqReadCharacteristic& c : f.characteristics) list.emplace_back(c.number, c.description);
+    const DfqReadCharacteristic& c = f.characteristics[chooseCharacteristic(list, choice, source)];
+    s.title = c.title();
+    s.column = c.number;
+    for (const DfqReadValue& v : c.values)
+      if (v.valid()) s.values.push_back(*v.value);
+    s.nominal = c.nominal;
+    s.lower = c.lowerLimit;
+    s.upper = c.upperLimit;
+    return s;
+  }
+  if (looksLikeCalypsoCharacteristics(text)) {
+    const CalypsoCharacteristics t = calypsoCharacteristicsFromText(text, source);
+    std::vector<std::pair<std::string, std::string>> list;
+    for (const CalypsoCharacteristic& c : t.rows) {
+      bool seen = false;
+      for (const auto& [id, name] : list) seen = seen || id == c.id;
+      if (!seen) list.emplace_back(c.id, c.id);
+    }
+    const std::string id = list[chooseCharacteristic(list, choice, source)].first;
+    s.title = id;
+    s.column = id;
+    for (const CalypsoCharacteristic& c : t.rows) {
+      if (c.id != id) continue;
+      s.values.push_back(c.actual);
+      if (!s.nominal) s.nominal = c.nominal;
+      if (c.nominal && c.lowerTol && !s.lower) s.lower = *c.nominal + *c.lowerTol;
+      if (c.nominal && c.upperTol && !s.upper) s.upper = *c.nominal + *c.upperTol;
+    }
+    return s;
+  }
+  return std::nullopt;
+}
+
 int runSpc(const SpcArgs& a) {
-  const SpcOptions o = spcOptions(a);
-  const CsvTable table = readFeatureTable(a.data, csvOptions());
-  const std::vector<double> values = table.numericColumn(a.column);
-  const SpcResult r = analyseSpc(values, o, ErrorContext{displayPath(a.data), 0, 0, a.column});
+  SpcOptions o = spcOptions(a);
+  const std::string text = readFile(a.data, 256u << 20);
+  const std::string source = displayPath(a.data);
+  const bool characteristics = looksLikeDfq(text) || looksLikeCalypsoCharacteristics(text);
+  if (characteristics && !a.column.empty())
+    throw ValidationError(ErrorContext{source, 0, 0, "--column"},
+                          "is for CSV files; a DFQ file or Calypso table takes --characteristic N|NAME");
+  if (!characteristics && !a.characteristic.empty())
+    throw ValidationError(ErrorContext{source, 0, 0, "--characteristic"},
+                          "is for DFQ files and Calypso _chr tables; a CSV file takes --column");
+  if (!characteristics && a.column.empty())
+    throw ValidationError(ErrorContext{source, 0, 0, "--column"},
+                          "is required: the column of the feature to chart");
+  CsvTable table;
+  std::vector<double> values;
+  std::string name = a.column, what = "column";
+  if (characteristics) {
+    const CharacteristicSeries c = *characteristicSeries(text, source, a.characteristic);
+    values = c.values;
+    name = c.column;
+    what = "characteristic '" + c.title + "'";
+    // The file's nominal and limits unless the command line gives them.
+    if (!o.nominal) o.nominal = c.nominal;
+    if (!o.lsl && !o.usl && c.lower && c.upper) {
+      o.lsl = c.lower;
+      o.usl = c.upper;
+    }
+    std::vector<std::vector<std::string>> rows;
+    std::vector<long> lines;
+    for (double v : values) {
+      rows.push_back({CsvWriter::formatNumber(v)});
+      lines.push_back(0);
+    }
+    table = CsvTable::fromCells(source, {name}, std::move(rows), std::move(lines));
+  } else {
+    // A CMM text report (one row per run) or a CSV file; the file is read once, so "-" works.
+    table = looksLikeCmmTextReport(text) ? cmmReportFeatureTable(cmmTextReportFromText(text, source))
+                                         : parseCsv(text, source, csvOptions());
+    values = table.numericColumn(a.column);
+    what = "column '" + a.column + "'";
+  }
+  const SpcResult r =
+      analyseSpc(values, o, ErrorContext{source, 0, 0, characteristics ? "--characteristic" : a.column});
   if (!a.dfq.empty()) {
-    writeFileAtomic(a.dfq, writeDfq(seriesDfqPart(table, a.column, values, o.nominal, o.lsl, o.usl, a.data,
-                                                  a.dfqPart, displayPath(a.data))));
+    writeFileAtomic(a.dfq, writeDfq(seriesDfqPart(table, name, values, o.nominal, o.lsl, o.usl, a.data,
+                                                  a.dfqPart, source)));
   }
   writeResult(a.out, dumpJson(spcResultToJson(r)));
-  std::string line = "spc: column '" + a.column + "', " + std::to_string(r.chart.subgroups()) +
-                     " subgroups of " + std::to_string(o.subgroupSize);
+  std::string line = "spc: " + what + ", " + std::to_string(r.chart.subgroups()) + " subgroups of " +
+                     std::to_string(o.subgroupSize);
   if (r.valuesIgnored) line += " (" + std::to_string(r.valuesIgnored) + " trailing values left out)";
   line += r.chart.inControl() ? ", in control" : ", OUT OF CONTROL";
   line += ", sigma " + g(r.capability.sigmaWithin);
@@ -97,8 +191,16 @@ void registerSpcCommand(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "spc", "X-bar/R control chart limits, Cp/Cpk and the SPC-gated compensation decision");
   existingFile(
-      sub->add_option("--data", a->data, "Measurements (CSV), rows in production order")->required());
-  sub->add_option("--column", a->column, "Column of the feature to chart")->required();
+      sub->add_option(
+             "--data", a->data,
+             "Measurements (CSV, rows in production order; a CMM text report; a Q-DAS DFQ file or a Zeiss "
+             "Calypso _chr table, read by content)")
+          ->required());
+  sub->add_option("--column", a->column, "Column of the feature to chart (CSV files and CMM text reports)");
+  sub->add_option(
+      "--characteristic", a->characteristic,
+      "DFQ file or Calypso _chr table: the characteristic to chart, by number (DFQ K2001, Calypso id) "
+      "or name (DFQ K2002 description)");
   addCsvOptions(sub);
   sub->add_option("--subgroup", a->subgroup, "Subgroup size n (2..25): consecutive rows form a subgroup")
       ->required();

@@ -7,6 +7,8 @@
 
 #include "core/common/error.h"
 #include "core/common/numformat.h"
+#include "core/io/calypso.h"
+#include "core/io/dfq.h"
 #include "core/io/file_io.h"
 
 namespace metrofit {
@@ -717,6 +719,10 @@ const char* toString(CmmReportFormat format) {
       return "OGP summary report";
     case CmmReportFormat::PcDmis:
       return "PC-DMIS text report";
+    case CmmReportFormat::Dfq:
+      return "Q-DAS DFQ file";
+    case CmmReportFormat::Calypso:
+      return "Calypso table";
   }
   return "?";
 }
@@ -872,6 +878,8 @@ std::string rtfToText(std::string_view rtf, const std::string& source) {
 }
 
 std::optional<CmmReportFormat> detectCmmTextReport(std::string_view text) {
+  if (looksLikeDfq(text)) return CmmReportFormat::Dfq;
+  if (looksLikeCalypsoCharacteristics(text)) return CmmReportFormat::Calypso;
   std::size_t pos = startsWith(text, "\xEF\xBB\xBF") ? 3 : 0;
   std::string head;
   if (startsWith(text.substr(pos), "{\\rtf")) {
@@ -911,6 +919,9 @@ CmmTextReport cmmTextReportFromText(std::string_view text, const std::string& so
   if (!format)
     throw ParseError(ErrorContext{source, 1, 0, {}},
                      "not an OGP step or summary report nor a PC-DMIS text report");
+  if (*format == CmmReportFormat::Dfq) return dfqCmmReport(dfqFromText(text, source));
+  if (*format == CmmReportFormat::Calypso)
+    return calypsoCmmReport(calypsoCharacteristicsFromText(text, source));
   std::string plain;
   bool rtf = false;
   std::string_view body = text;
@@ -929,7 +940,92 @@ CmmTextReport cmmTextReportFromText(std::string_view text, const std::string& so
 }
 
 CmmTextReport readCmmTextReport(const std::string& path) {
-  return cmmTextReportFromText(readFile(path, 256u << 20), displayPath(path));
+  const std::string text = readFile(path, 256u << 20);
+  // A Calypso _chr file read by its path also takes the dates of the _hdr file beside it.
+  if (!looksLikeDfq(text) && looksLikeCalypsoCharacteristics(text))
+    return calypsoCmmReport(readCalypsoCharacteristics(path));
+  return cmmTextReportFromText(text, displayPath(path));
+}
+
+CmmTextReport dfqCmmReport(const DfqFile& file) {
+  CmmTextReport r;
+  r.format = CmmReportFormat::Dfq;
+  r.source = file.source;
+  for (const DfqReadPart& p : file.parts) {
+    std::size_t sets = 0;
+    for (const DfqReadCharacteristic& c : file.characteristics)
+      if (c.part == p.index) sets = std::max(sets, c.values.size());
+    for (std::size_t k = 0; k < sets; ++k) {
+      CmmRun run;
+      run.routine = p.number;
+      run.number = static_cast<int>(k + 1);
+      for (const DfqReadCharacteristic& c : file.characteristics) {
+        if (c.part != p.index || k >= c.values.size()) continue;
+        const DfqReadValue& v = c.values[k];
+        if (run.line == 0) run.line = v.line;
+        if (run.dateTime.empty()) run.dateTime = v.time;
+        if (run.serial.empty()) run.serial = v.partId;
+        if (!v.valid()) continue;
+        CmmFeature f;
+        f.step = c.index;
+        f.label = c.description.empty() ? c.number : c.description;
+        f.featureName = c.number;
+        f.type = "characteristic";
+        f.line = c.line != 0 ? c.line : v.line;
+        CmmValue value;
+        value.name = "actual";
+        value.nominal = c.nominal;
+        value.actual = *v.value;
+        if (c.nominal && c.lowerLimit) value.lower = *c.lowerLimit - *c.nominal;
+        if (c.nominal && c.upperLimit) value.upper = *c.upperLimit - *c.nominal;
+        value.rounding = c.decimals ? 0.5 * std::pow(10.0, -*c.decimals) : 0.0;
+        value.angle = c.unit == "°" || c.unit == "deg" || c.unit == "Grad";
+        value.line = v.line;
+        f.values.push_back(std::move(value));
+        run.features.push_back(std::move(f));
+      }
+      if (!run.features.empty()) r.runs.push_back(std::move(run));
+    }
+  }
+  return r;
+}
+
+CmmTextReport calypsoCmmReport(const CalypsoCharacteristics& table) {
+  CmmTextReport r;
+  r.format = CmmReportFormat::Calypso;
+  r.source = table.source;
+  for (std::size_t k = 0; k < table.parts.size(); ++k) {
+    CmmRun run;
+    run.serial = table.parts[k];
+    run.dateTime = k < table.dates.size() ? table.dates[k] : std::string();
+    run.number = static_cast<int>(k + 1);
+    for (const CalypsoCharacteristic& c : table.rows) {
+      if (c.part != table.parts[k]) continue;
+      if (run.line == 0) {
+        run.line = c.line;
+        run.routine = c.planId;
+      }
+      CmmFeature f;
+      f.step = static_cast<int>(run.features.size() + 1);
+      f.label = c.id;
+      f.featureName = c.id;
+      f.type = c.type;
+      f.line = c.line;
+      CmmValue v;
+      v.name = "actual";
+      v.nominal = c.nominal;
+      v.actual = c.actual;
+      v.lower = c.lowerTol;
+      v.upper = c.upperTol;
+      v.printedDeviation = c.deviation;
+      v.rounding = c.rounding;
+      v.line = c.line;
+      f.values.push_back(std::move(v));
+      run.features.push_back(std::move(f));
+    }
+    r.runs.push_back(std::move(run));
+  }
+  return r;
 }
 
 CsvTable cmmReportFeatureTable(const CmmTextReport& report) {
@@ -940,8 +1036,9 @@ CsvTable cmmReportFeatureTable(const CmmTextReport& report) {
   // Column keys in order of first appearance.
   for (const CmmRun& run : report.runs) {
     for (const CmmFeature& f : run.features) {
-      const std::string key =
-          report.format == CmmReportFormat::PcDmis ? f.label : "step" + std::to_string(f.step);
+      const std::string key = report.format == CmmReportFormat::PcDmis ? f.label
+                              : isCharacteristicTable(report.format)   ? f.featureName
+                                                                       : "step" + std::to_string(f.step);
       for (const CmmValue& v : f.values) {
         const std::string col = key + "." + columnName(v.name);
         if (index.emplace(col, header.size()).second) header.push_back(col);
@@ -957,8 +1054,9 @@ CsvTable cmmReportFeatureTable(const CmmTextReport& report) {
     row[0] = std::to_string(r + 1);
     row[1] = run.dateTime;
     for (const CmmFeature& f : run.features) {
-      const std::string key =
-          report.format == CmmReportFormat::PcDmis ? f.label : "step" + std::to_string(f.step);
+      const std::string key = report.format == CmmReportFormat::PcDmis ? f.label
+                              : isCharacteristicTable(report.format)   ? f.featureName
+                                                                       : "step" + std::to_string(f.step);
       for (const CmmValue& v : f.values) {
         const std::string col = key + "." + columnName(v.name);
         std::string& cell = row[index.at(col)];

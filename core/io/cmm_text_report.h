@@ -34,6 +34,16 @@
 //    +TOL is the upper limit, -TOL the lower limit below the nominal (lower = -(-TOL)); DEV must
 //    equal MEAS - NOMINAL within the rounding of the printed digits. "PART NAME :" names the part.
 //
+// 4. Q-DAS DFQ files (core/io/dfq.h) and Zeiss Calypso characteristic tables (*_chr.txt,
+//    core/io/calypso.h) are read into the same structure: one run per measured part (DFQ: per part
+//    number K1001 and value set, with the part ident K0014 as `serial`; Calypso: per partnb), one
+//    feature per characteristic (step = DFQ characteristic index / Calypso row within the part, label =
+//    K2002 description (the number when it has none) / Calypso id, featureName = K2001 number / Calypso
+//    id) with one value "actual": the nominal, the limits relative to it (DFQ K2110 - K2101, K2111 -
+//    K2101; Calypso lowertol, uppertol), the written deviation (Calypso) and the rounding of the written
+//    digits (DFQ K2022; Calypso the actual's decimals). DFQ values that are not valid (attribute 255 or
+//    more, or not measured) are left out; a value set without a valid value makes no run.
+//
 // Every error is a ParseError / ValidationError naming the file and the physical line (and the
 // column of a bad number): an RTF document that is not closed (a truncated file), a step that ends
 // without its "Points:" / "Features:" line, a value row with a missing or non-numeric value, a
@@ -47,8 +57,8 @@
 
 namespace metrofit {
 
-enum class CmmReportFormat { OgpSteps, OgpSummary, PcDmis };
-/// "OGP step report", "OGP summary report", "PC-DMIS text report".
+enum class CmmReportFormat { OgpSteps, OgpSummary, PcDmis, Dfq, Calypso };
+/// "OGP step report", "OGP summary report", "PC-DMIS text report", "Q-DAS DFQ file", "Calypso table".
 const char* toString(CmmReportFormat format);
 
 struct CmmValue {
@@ -82,6 +92,7 @@ struct CmmRun {
   std::string routine;   ///< OGP routine (the .RTN), PC-DMIS PART NAME
   int number = 0;        ///< OGP "Run #" (summary), else 0
   std::string dateTime;  ///< as printed, may be empty
+  std::string serial;    ///< the measured workpiece: DFQ K0014 part ident, Calypso partnb; may be empty
   std::vector<CmmFeature> features;
   long line = 0;
 };
@@ -109,6 +120,17 @@ std::string rtfToText(std::string_view rtf, const std::string& source);
 std::optional<CmmReportFormat> detectCmmTextReport(std::string_view text);
 inline bool looksLikeCmmTextReport(std::string_view text) {
   return detectCmmTextReport(text).has_value();
+}
+
+struct DfqFile;
+struct CalypsoCharacteristics;
+/// A DFQ file / a Calypso _chr table as a report (4. above).
+CmmTextReport dfqCmmReport(const DfqFile& file);
+CmmTextReport calypsoCmmReport(const CalypsoCharacteristics& table);
+/// True for the formats whose features are characteristics named by number and description (DFQ,
+/// Calypso), not steps or dimensions.
+inline bool isCharacteristicTable(CmmReportFormat format) {
+  return format == CmmReportFormat::Dfq || format == CmmReportFormat::Calypso;
 }
 
 /// Parses a report in the detected format; ParseError when the text is none of them.

@@ -13,6 +13,7 @@
 
 #include "core/common/error.h"
 #include "core/common/numformat.h"
+#include "core/io/calypso.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
 
@@ -293,6 +294,8 @@ ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minP
                                        const CsvReadOptions& csv) {
   const std::string text = readFile(path);
   if (looksLikeHoleTable(text)) return holeTableFromText(text, displayPath(path), minPoints).points;
+  if (looksLikeCalypsoFeatures(text))
+    return probePointsFromCsv(calypsoFeaturesProbeTable(text, displayPath(path)), minPoints);
   if (looksLikeCmmTextReport(text))
     return probePointsFromCmmReport(cmmTextReportFromText(text, displayPath(path)), minPoints);
   return probePointsFromCsv(parseCsv(text, displayPath(path), csv), minPoints);

@@ -7,10 +7,12 @@
 #include <optional>
 
 #include "core/common/error.h"
+#include "core/io/calypso.h"
 #include "core/io/dmis.h"
 #include "core/io/file_io.h"
 #include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
+#include "core/project/datasets.h"
 #include "core/project/import_guess.h"
 #include "core/project/nominals.h"
 #include "core/setup/model.h"
@@ -125,17 +127,24 @@ std::vector<FeatureTableRow> cmmReportFeatureRows(const CmmTextReport& report) {
     std::string part;
     // Run numbers repeat in a summary of several days (run # 1-4 each day): the k-th run in the
     // file, with its printed number and date.
-    if (report.runs.size() > 1) {
+    if (isCharacteristicTable(report.format)) {
+      // DFQ / Calypso: the measured workpiece (K0014, partnb), else the part number and the value set.
+      part = !run.serial.empty()   ? run.serial
+             : run.routine.empty() ? "part " + std::to_string(run.number)
+                                   : run.routine + " #" + std::to_string(run.number);
+      if (!run.dateTime.empty()) part += " (" + run.dateTime + ")";
+    } else if (report.runs.size() > 1) {
       part = "run " + std::to_string(k + 1);
       std::string printed = run.number > 0 ? "#" + std::to_string(run.number) : std::string();
       if (!run.dateTime.empty()) printed += (printed.empty() ? "" : ", ") + run.dateTime;
       if (!printed.empty()) part += " (" + printed + ")";
     }
     for (const CmmFeature& f : run.features) {
-      const std::string feature = !f.label.empty() ? f.label
-                                  : report.format == CmmReportFormat::PcDmis
-                                      ? f.featureName
-                                      : "Step " + std::to_string(f.step);
+      const std::string feature =
+          !f.label.empty() ? f.label
+          : report.format == CmmReportFormat::PcDmis || isCharacteristicTable(report.format)
+              ? f.featureName
+              : "Step " + std::to_string(f.step);
       for (const CmmValue& v : f.values) {
         FeatureTableRow row;
         row.part = part;
@@ -372,6 +381,12 @@ DatasetContent readDatasetContentFile(const std::string& file, const DatasetRef&
     return columnsContent(std::move(t), "setup model", file);
   }
   const std::string text = readFile(file, 256u << 20);
+  if (kind == dataset_kind::kDfq || kind == dataset_kind::kCalypso ||
+      (kind == dataset_kind::kProbePoints && looksLikeCalypsoFeatures(text))) {
+    if (const auto report = characteristicTableReport(text, file, kind))
+      return featuresContent(cmmReportFeatureRows(*report), toString(report->format), file);
+    return columnsContent(calypsoFeaturesProbeTable(text, file), "Calypso features", file);
+  }
   if (kind == dataset_kind::kDmis || (kind == dataset_kind::kCmmReport && setup::looksLikeDmis(text))) {
     if (!setup::looksLikeDmis(text))
       throw ParseError(ErrorContext{file, 1, 0, {}}, "not a DMIS file (its first statement is not DMISMN)");

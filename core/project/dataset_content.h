@@ -49,7 +49,9 @@ bool outsideTolerance(double deviation, std::optional<double> lower, std::option
                       double slack = 0.0);
 
 /// The feature rows of a CMM text report, in file order (part "" for a single run, else "run <k>
-/// (#<run number>, <date>)" for the k-th run of the file: run numbers repeat from day to day).
+/// (#<run number>, <date>)" for the k-th run of the file: run numbers repeat from day to day). DFQ and
+/// Calypso tables: the workpiece's serial (K0014, partnb), else "<part number> #<value set>", with the
+/// date in parentheses when the file gives one.
 std::vector<FeatureTableRow> cmmReportFeatureRows(const CmmTextReport& report);
 /// The feature rows of a CMM report series CSV (columns as core/setup/report.h names them, mapped).
 std::vector<FeatureTableRow> cmmCsvFeatureRows(const CsvTable& table);

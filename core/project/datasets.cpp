@@ -4,11 +4,14 @@
 #include <cctype>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "core/common/error.h"
 #include "core/geometry/point_table.h"
 #include "core/geometry/stl.h"
+#include "core/io/calypso.h"
 #include "core/io/cmm_text_report.h"
+#include "core/io/dfq.h"
 #include "core/io/file_io.h"
 #include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
@@ -34,6 +37,8 @@ const std::map<std::string, std::string>& kinds() {
                                                     {"feature-series", dataset_kind::kFeatureSeries},
                                                     {"dmis", dataset_kind::kDmis},
                                                     {"hole-table", dataset_kind::kHoleTable},
+                                                    {"dfq", dataset_kind::kDfq},
+                                                    {"calypso", dataset_kind::kCalypso},
                                                     {"cad-model", dataset_kind::kCadModel}};
   return k;
 }
@@ -78,6 +83,28 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
     return s;
   }
   const std::string text = readFile(file, 256u << 20);
+  if (kind == dataset_kind::kDfq || kind == dataset_kind::kCalypso ||
+      (kind == dataset_kind::kProbePoints && looksLikeCalypsoFeatures(text))) {
+    if (const auto table = characteristicTableReport(text, shown, kind)) {
+      const CmmTextReport& report = *table;
+      s.rows = static_cast<long>(report.format == CmmReportFormat::Dfq ? report.runs.size() : 0);
+      std::set<std::string> seen;
+      for (const CmmRun& run : report.runs) {
+        for (const CmmFeature& f : run.features) {
+          if (report.format == CmmReportFormat::Calypso) ++s.rows;
+          const std::string title =
+              f.label == f.featureName ? f.featureName : f.featureName + " (" + f.label + ")";
+          if (seen.insert(title).second) s.columns.push_back(title);
+        }
+      }
+    } else {
+      const CsvTable points = calypsoFeaturesProbeTable(text, shown);
+      (void)probePointsFromCsv(points, 1);
+      s.rows = static_cast<long>(points.rowCount());
+      s.columns = points.header();
+    }
+    return s;
+  }
   if (kind == dataset_kind::kDmis || (kind == dataset_kind::kCmmReport && setup::looksLikeDmis(text))) {
     if (!setup::looksLikeDmis(text))
       throw ParseError(ErrorContext{shown, 1, 0, {}}, "not a DMIS file (its first statement is not DMISMN)");
@@ -138,6 +165,8 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
 
 std::string extensionFor(const std::string& kind) {
   if (kind == dataset_kind::kSetupModel) return ".json";
+  if (kind == dataset_kind::kDfq) return ".dfq";
+  if (kind == dataset_kind::kCalypso) return ".txt";
   if (kind == dataset_kind::kDmis) return ".dmi";
   if (kind == dataset_kind::kHoleTable) return ".txt";
   if (kind == dataset_kind::kCadModel) return ".stl";
@@ -146,10 +175,27 @@ std::string extensionFor(const std::string& kind) {
 
 }  // namespace
 
+std::optional<CmmTextReport> characteristicTableReport(std::string_view text, const std::string& shown,
+                                                       const std::string& kind) {
+  if (kind == dataset_kind::kDfq) {
+    if (!looksLikeDfq(text))
+      throw ParseError(ErrorContext{shown, 1, 0, {}},
+                       "not a Q-DAS DFQ file (its first line is not a K field such as 'K0100 3')");
+    return dfqCmmReport(dfqFromText(text, shown));
+  }
+  if (looksLikeCalypsoCharacteristics(text))
+    return calypsoCmmReport(calypsoCharacteristicsFromText(text, shown));
+  if (looksLikeCalypsoFeatures(text)) return std::nullopt;
+  throw ParseError(
+      ErrorContext{shown, 1, 0, {}},
+      "not a Zeiss Calypso table: its first line names neither a _chr table's columns (id, actual, "
+      "nominal, planid or partnb) nor a _fet table's (x, y, z, x_nom, y_nom, z_nom)");
+}
+
 const std::vector<std::string>& datasetKindNames() {
-  static const std::vector<std::string> names{"thermal-log", "probe-points", "circular-test",
-                                              "cmm-report",  "setup-model",  "feature-series",
-                                              "dmis",        "hole-table",   "cad-model"};
+  static const std::vector<std::string> names{"thermal-log", "probe-points",   "circular-test", "cmm-report",
+                                              "setup-model", "feature-series", "dmis",          "hole-table",
+                                              "dfq",         "calypso",        "cad-model"};
   return names;
 }
 
@@ -165,7 +211,8 @@ std::string datasetKindFromName(const std::string& name, const std::string& fiel
 
 bool datasetKindIsCsv(const std::string& kind) {
   return kind != dataset_kind::kSetupModel && kind != dataset_kind::kDmis &&
-         kind != dataset_kind::kHoleTable && kind != dataset_kind::kCadModel;
+         kind != dataset_kind::kHoleTable && kind != dataset_kind::kDfq && kind != dataset_kind::kCalypso &&
+         kind != dataset_kind::kCadModel;
 }
 
 DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset) {
@@ -203,6 +250,13 @@ CsvTable readDatasetTable(const std::string& projectPath, const DatasetRef& data
   const std::string path = resolveDatasetPath(projectPath, dataset);
   // A feature series may be a CMM text report (one row per run); every other kind is CSV here.
   if (dataset.kind == dataset_kind::kFeatureSeries) return readFeatureTable(path, dataset.csv);
+  // DFQ and Calypso _chr: the feature table (one row per measured part); Calypso _fet: the probe points.
+  if (dataset.kind == dataset_kind::kDfq || dataset.kind == dataset_kind::kCalypso) {
+    const std::string text = readFile(path, 256u << 20);
+    if (const auto report = characteristicTableReport(text, path, dataset.kind))
+      return cmmReportFeatureTable(*report);
+    return calypsoFeaturesProbeTable(text, path);
+  }
   return readCsvFile(path, dataset.csv);
 }
 

@@ -17,13 +17,23 @@
 //                  (one row per run, cmmReportFeatureTable)
 //   dmis           DMIS output file (no CSV options)
 //   hole-table     PC-DMIS hole-table report (no CSV options)
+//   dfq            Q-DAS DFQ / AQDEF file (core/io/dfq.h; no CSV options): characteristics with their
+//                  values per measured part; a setup report series, a feature series per characteristic
+//                  (SPC); rows: the measured parts, columns: the characteristics ("number (description)")
+//   calypso        Zeiss Calypso table file (core/io/calypso.h; no CSV options), told apart by content: a
+//                  _chr table (characteristics per measured part: a setup report series or a feature
+//                  series; rows: its rows, columns: the characteristic ids) or a _fet table (features as
+//                  probe points; rows: the points)
 // A dataset is checked when it is added: the file is read as its kind says, so a wrong delimiter or
 // a missing mapped column is an error then (InputError naming file, line and field), not later.
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
 #include "core/project/project.h"
 
@@ -54,7 +64,14 @@ DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef
 /// unreadable rows also has "skipped_rows" (their count).
 nlohmann::json datasetListJson(const Project& project, const std::string& projectPath);
 
-/// The CSV table of a CSV dataset, read with the dataset's dialect and mapping.
+/// A dfq or calypso dataset's text (kind: dataset_kind::kDfq or kCalypso) as a report of characteristics
+/// (dfqCmmReport / calypsoCmmReport); nullopt for a Calypso _fet table (probe points:
+/// calypsoFeaturesProbeTable). ParseError naming `shown` when the text is not of the kind.
+std::optional<CmmTextReport> characteristicTableReport(std::string_view text, const std::string& shown,
+                                                       const std::string& kind);
+
+/// The CSV table of a CSV dataset, read with the dataset's dialect and mapping; for a dfq or calypso
+/// dataset the feature table of its characteristics (cmmReportFeatureTable) or a _fet's probe points.
 CsvTable readDatasetTable(const std::string& projectPath, const DatasetRef& dataset);
 
 struct AddDatasetRequest {

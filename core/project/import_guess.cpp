@@ -5,7 +5,9 @@
 #include <initializer_list>
 #include <set>
 
+#include "core/io/calypso.h"
 #include "core/io/cmm_text_report.h"
+#include "core/io/dfq.h"
 #include "core/io/units.h"
 #include "core/matching/hole_table.h"
 #include "core/setup/report.h"
@@ -284,6 +286,9 @@ std::string guessDatasetKind(const std::string& fileName, std::string_view text,
     if (start.rfind("solid", 0) == 0 && start.find("facet") != std::string::npos) return "cad-model";
   }
   if (suffix == "dmi" || suffix == "dms" || suffix == "dmis" || setup::looksLikeDmis(head)) return "dmis";
+  // Q-DAS DFQ (K fields) and Zeiss Calypso tables (_chr / _fet column names), by content.
+  if (looksLikeDfq(head)) return "dfq";
+  if (looksLikeCalypso(head)) return "calypso";
   if (looksLikeCmmTextReport(head)) return "cmm-report";
   if (looksLikeHoleTable(head)) return "hole-table";
   const std::vector<std::string> header = headerOf(head, fileName, options);

@@ -68,6 +68,11 @@ inline constexpr const char* kDmis = "dmis";
 inline constexpr const char* kHoleTable = "hole_table";
 /// A CAD part as a triangle mesh (STL, core/geometry/stl.h): the nominal of measured points.
 inline constexpr const char* kCadModel = "cad_model";
+/// A Q-DAS DFQ (AQDEF) file: characteristics with their measured values (core/io/dfq.h).
+inline constexpr const char* kDfq = "dfq";
+/// A Zeiss Calypso table file: characteristics (_chr) or features as probe points (_fet)
+/// (core/io/calypso.h).
+inline constexpr const char* kCalypso = "calypso";
 }  // namespace dataset_kind
 
 /// The studies of a project, in navigator order.

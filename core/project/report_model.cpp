@@ -39,6 +39,8 @@ void textReportCharacteristics(const CmmTextReport& report, ReportFeatures& out)
       std::string feature;
       if (report.format == CmmReportFormat::PcDmis) {
         feature = !f.label.empty() ? f.label : f.featureName;
+      } else if (isCharacteristicTable(report.format)) {
+        feature = !f.label.empty() && labelCount[upper(f.label)] == 1 ? f.label : f.featureName;
       } else {
         feature =
             !f.label.empty() && labelCount[upper(f.label)] == 1 ? f.label : "Step " + std::to_string(f.step);

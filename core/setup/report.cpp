@@ -7,10 +7,13 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/io/calypso.h"
 #include "core/io/csv.h"
+#include "core/io/dfq.h"
 #include "core/io/dmis.h"
 #include "core/io/file_io.h"
 
@@ -445,7 +448,8 @@ std::string collapse(std::string_view s) {
 bool featureNamed(const CmmFeature& f, const std::string& name, CmmReportFormat format) {
   const std::string u = upper(name);
   if (!f.label.empty() && upper(f.label) == u) return true;
-  if (format == CmmReportFormat::PcDmis) return !f.featureName.empty() && upper(f.featureName) == u;
+  if (format == CmmReportFormat::PcDmis || isCharacteristicTable(format))
+    return !f.featureName.empty() && upper(f.featureName) == u;
   return collapse(name) == "STEP" + std::to_string(f.step);
 }
 
@@ -478,6 +482,9 @@ std::string valueNames(const CmmFeature& f) {
 
 std::string featureTitle(const CmmFeature& f, CmmReportFormat format) {
   if (format == CmmReportFormat::PcDmis) return "dimension '" + f.label + "'";
+  if (isCharacteristicTable(format))
+    return "characteristic " + f.featureName +
+           (f.label != f.featureName ? " '" + f.label + "'" : std::string());
   return "step " + std::to_string(f.step) + (f.label.empty() ? std::string() : " '" + f.label + "'");
 }
 
@@ -487,9 +494,33 @@ Measurements cmmTextReportMeasurements(const CmmTextReport& report, const Model&
   Measurements m;
   m.sources.push_back(report.source);
   const std::string base = baseName(report.source);
+  // DFQ and Calypso date each measured part (K0004; the _hdr's date and time): time_min from the first
+  // one, when every run has a date-time that reads (else 0, as for the other reports).
+  std::vector<double> times;
+  if (isCharacteristicTable(report.format)) {
+    for (const CmmRun& r : report.runs) {
+      const auto t = qdasMinutes(r.dateTime);
+      if (!t) {
+        times.clear();
+        break;
+      }
+      times.push_back(*t);
+    }
+    if (!times.empty()) {
+      const double t0 = *std::min_element(times.begin(), times.end());
+      for (double& t : times) t -= t0;
+    }
+  }
   for (std::size_t k = 0; k < report.runs.size(); ++k) {
     const CmmRun& run = report.runs[k];
-    const std::string part = report.runs.size() == 1 ? base : base + " run " + std::to_string(k + 1);
+    // DFQ and Calypso name the measured workpiece (K0014, partnb): the part, when every run has its own.
+    std::set<std::string> serials;
+    for (const CmmRun& r : report.runs)
+      if (!r.serial.empty()) serials.insert(r.serial);
+    const bool bySerial = serials.size() == report.runs.size();
+    const std::string part = bySerial                  ? run.serial
+                             : report.runs.size() == 1 ? base
+                                                       : base + " run " + std::to_string(k + 1);
     addPart(m, part);
     for (std::size_t q = 0; q < model.dimensions.size(); ++q) {
       const Dimension& d = model.dimensions[q];
@@ -502,8 +533,9 @@ Measurements cmmTextReportMeasurements(const CmmTextReport& report, const Model&
                                 "the label '" + featureName + "' of dimension '" + d.id + "' names " +
                                     featureTitle(*found, report.format) + " (line " +
                                     std::to_string(found->line) + ") and " + featureTitle(f, report.format) +
-                                    (report.format == CmmReportFormat::PcDmis
-                                         ? std::string()
+                                    (report.format == CmmReportFormat::PcDmis ? std::string()
+                                     : isCharacteristicTable(report.format)
+                                         ? "; name one by its number '" + f.featureName + "'"
                                          : "; name one as 'Step " + std::to_string(f.step) + "'"));
         }
         found = &f;
@@ -539,7 +571,7 @@ Measurements cmmTextReportMeasurements(const CmmTextReport& report, const Model&
                               "nominal " + fmt(*v->nominal) + " differs from the model's nominal " +
                                   fmt(*d.nominal) + " of '" + d.id + "'");
       }
-      m.rows.push_back({part, 0.0, q, plainDeviation(*v), report.source, v->line});
+      m.rows.push_back({part, times.empty() ? 0.0 : times[k], q, plainDeviation(*v), report.source, v->line});
     }
   }
   finish(m, model, report.source);
@@ -609,6 +641,9 @@ Measurements readMeasurements(const std::vector<std::string>& paths, const Model
     if (looksLikeDmis(text)) {
       sets.push_back(dmisMeasurements(text, displayPath(p), model, dmis, &bySerial, !series));
       if (!bySerial) unnamedDmis.push_back(sets.size() - 1);
+    } else if (p != "-" && looksLikeCalypsoCharacteristics(text) && !looksLikeDfq(text)) {
+      // A Calypso _chr file read by its path: with the dates of the _hdr file beside it.
+      sets.push_back(cmmTextReportMeasurements(readCmmTextReport(p), model));
     } else if (looksLikeCmmTextReport(text))
       sets.push_back(cmmTextReportMeasurements(cmmTextReportFromText(text, displayPath(p)), model));
     else

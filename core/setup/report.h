@@ -72,6 +72,11 @@
 //    rounding. A label that names two features of one run, a missing value or a value without a
 //    nominal is a ValidationError naming the line. Parts: the file's base name for a single-run
 //    report, "<base> run <k>" for the k-th run of an OGP summary.
+//    Q-DAS DFQ files and Zeiss Calypso _chr tables are read the same way (cmm_text_report.h 4.): a label
+//    names a characteristic by its description (DFQ K2002, Calypso id) or its number (DFQ K2001); DFQ
+//    values that are not valid (attribute 255 or more) are left out; parts are the workpieces' serials
+//    (K0014, partnb) when every run has its own, and time_min counts from the first run's date-time
+//    (K0004; the _hdr's date and time) when every run has one (else 0).
 //
 // Errors are ParseError / ValidationError naming file, line and field.
 #include <string>

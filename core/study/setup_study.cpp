@@ -1,6 +1,7 @@
 #include "core/study/setup_study.h"
 
 #include <chrono>
+#include <initializer_list>
 #include <map>
 #include <unordered_map>
 
@@ -13,12 +14,16 @@ namespace metrofit {
 
 namespace {
 
-/// The study's string setting `key` naming a dataset, when it names one of `kind` or `alternative`;
-/// else the first dataset of `kind`, else of `alternative` (a DMIS output file is a CMM report too).
+/// The study's string setting `key` naming a dataset, when it names one of `kinds`; else the first dataset
+/// of the first of `kinds` the project has (a DMIS output file, a DFQ file and a Calypso _chr table are
+/// CMM reports too).
 const DatasetRef* studyDataset(const Project& project, const nlohmann::json* study, const char* key,
-                               const char* kind, const char* alternative = nullptr) {
+                               std::initializer_list<const char*> kinds) {
   const auto fits = [&](const DatasetRef* d) {
-    return d != nullptr && (d->kind == kind || (alternative != nullptr && d->kind == alternative));
+    if (d == nullptr) return false;
+    for (const char* k : kinds)
+      if (d->kind == k) return true;
+    return false;
   };
   if (study != nullptr) {
     const auto it = study->find(key);
@@ -27,8 +32,9 @@ const DatasetRef* studyDataset(const Project& project, const nlohmann::json* stu
       if (fits(d)) return d;
     }
   }
-  if (const DatasetRef* d = project.firstOfKind(kind)) return d;
-  return alternative != nullptr ? project.firstOfKind(alternative) : nullptr;
+  for (const char* k : kinds)
+    if (const DatasetRef* d = project.firstOfKind(k)) return d;
+  return nullptr;
 }
 
 }  // namespace
@@ -38,12 +44,13 @@ SetupStudyFiles setupStudyFiles(const Project& project, const std::string& proje
   const nlohmann::json* study = nullptr;
   if (const auto it = project.studies.find(study::kSetup); it != project.studies.end() && it->is_object())
     study = &*it;
-  if (const DatasetRef* m = studyDataset(project, study, "model", dataset_kind::kSetupModel)) {
+  if (const DatasetRef* m = studyDataset(project, study, "model", {dataset_kind::kSetupModel})) {
     files.modelId = m->id;
     files.modelPath = resolveDatasetPath(projectPath, *m);
   }
-  if (const DatasetRef* r =
-          studyDataset(project, study, "dataset", dataset_kind::kCmmReport, dataset_kind::kDmis)) {
+  if (const DatasetRef* r = studyDataset(
+          project, study, "dataset",
+          {dataset_kind::kCmmReport, dataset_kind::kDmis, dataset_kind::kDfq, dataset_kind::kCalypso})) {
     files.reportId = r->id;
     files.reportPath = resolveDatasetPath(projectPath, *r);
     files.reportPaths = resolveDatasetPaths(projectPath, *r);

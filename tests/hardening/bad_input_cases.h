@@ -162,6 +162,23 @@ inline const std::string kOgpSummary =
     "Step 1 - Ball A\n"
     "Y Location     -00050.000 -00049.998        -00000.002\n";
 
+/// A DFQ file written from the AQDEF field list: two characteristics, three measured parts.
+inline const std::string kDfq =
+    "K0100 2\r\nK2001/1 1\r\nK2110/1 12.49\r\nK2111/1 12.51\r\nK2101/1 12.5\r\nK2001/2 2\r\n"
+    "K0001/1 12.501\r\nK0001/2 0.01\r\nK0001/1 12.498\r\nK0001/2 0.02\r\nK0001/1 12.502\r\n"
+    "K0001/2 0.015\r\nK0001/1 12.5\r\nK0001/2 0.012\r\n";
+/// A Calypso _chr table for kModel's D1 (label POS_D1) and D2.
+inline const std::string kChr =
+    "planid\tpartnb\tid\tactual\tnominal\tdeviation\tuppertol\tlowertol\r\n"
+    "P\t1\tPOS_D1\t42,0120\t42,0000\t0,0120\t0,0200\t-0,0200\r\n"
+    "P\t1\tD2\t18,5100\t18,5000\t0,0100\t0,0300\t-0,0500\r\n";
+/// A Calypso _fet table of three points.
+inline const std::string kFet =
+    "planid\tpartnb\tid\tx\ty\tz\tx_nom\ty_nom\tz_nom\r\n"
+    "B\t1\tP1\t10,0100\t0\t0\t10\t0\t0\r\n"
+    "B\t1\tP2\t0\t10,0100\t0\t0\t10\t0\r\n"
+    "B\t1\tP3\t0\t0\t10,0100\t0\t0\t10\r\n";
+
 inline std::string circle() {
   // 16 points CCW then 16 CW on a 50 mm circle with a small, smooth deviation.
   std::string s = "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n";
@@ -1091,6 +1108,88 @@ inline std::vector<Case> cases() {
        "spc --data b.csv --column diameter_mm --subgroup 5 --coverage -2 --out out.json",
        {{"b.csv", kBores}},
        {"--coverage"},
+       json},
+      // ---- Q-DAS DFQ (AQDEF) --------------------------------------------------------------------
+      {"DQ01",
+       "DFQ file",
+       "a value that is not a number",
+       "spc --data w.dfq --characteristic 1 --subgroup 2 --out out.json",
+       {{"w.dfq", replaced(kDfq, "K0001/1 12.498", "K0001/1 12.49B")}},
+       {"w.dfq:9", "field 'K0001/1'", "not a number"},
+       json},
+      {"DQ02",
+       "DFQ file",
+       "a field index above K0100",
+       "spc --data w.dfq --characteristic 1 --subgroup 2 --out out.json",
+       {{"w.dfq", replaced(kDfq, "K2101/1 12.5", "K2101/3 12.5")}},
+       {"w.dfq:5", "field 'K2101/3'", "beyond K0100"},
+       json},
+      {"DQ03",
+       "DFQ file",
+       "a value line with more characteristics than K0100",
+       "spc --data w.dfq --characteristic 1 --subgroup 2 --out out.json",
+       {{"w.dfq", kDfq + "12.5\x0F"
+                         "0\x14"
+                         "0.01\x14"
+                         "7\r\n"}},
+       {"w.dfq:15", "value line has 3 characteristics"},
+       json},
+      {"DQ04",
+       "DFQ file",
+       "lower limit not below the upper limit",
+       "spc --data w.dfq --characteristic 1 --subgroup 2 --out out.json",
+       {{"w.dfq", replaced(kDfq, "K2110/1 12.49", "K2110/1 12.52")}},
+       {"w.dfq:3", "field 'K2110/1'", "not below the upper limit"},
+       json},
+      {"DQ05",
+       "DFQ file",
+       "--characteristic names two characteristics",
+       "spc --data w.dfq --characteristic 1 --subgroup 2 --out out.json",
+       {{"w.dfq", replaced(kDfq, "K2001/2 2", "K2001/2 1")}},
+       {"w.dfq", "field '--characteristic'", "ambiguous"},
+       json},
+      {"DQ06",
+       "DFQ file",
+       "--characteristic names none",
+       "spc --data w.dfq --characteristic 3 --subgroup 2 --out out.json",
+       {{"w.dfq", kDfq}},
+       {"w.dfq", "field '--characteristic'", "no characteristic '3'"},
+       json},
+      {"DQ07",
+       "DFQ file",
+       "binary content after a DFQ start",
+       "spc --data w.dfq --subgroup 2 --out out.json",
+       {{"w.dfq", "K0100 1\r\n" + binary()}},
+       {"w.dfq", "binary"},
+       json},
+      // ---- Zeiss Calypso tables -----------------------------------------------------------------
+      {"CY01",
+       "Calypso _chr table",
+       "text in the actual",
+       "setup --model m.json --data t_chr.txt --out out.json",
+       {{"m.json", kModel}, {"t_chr.txt", replaced(kChr, "42,0120", "42,01x0")}},
+       {"t_chr.txt:2:4", "field 'actual'", "not a number"},
+       json},
+      {"CY02",
+       "Calypso _chr table",
+       "a deviation that is not actual - nominal",
+       "setup --model m.json --data t_chr.txt --out out.json",
+       {{"m.json", kModel}, {"t_chr.txt", replaced(kChr, "0,0120", "0,0420")}},
+       {"t_chr.txt:2:6", "field 'deviation'"},
+       json},
+      {"CY03",
+       "Calypso _fet table",
+       "several measured parts given to match",
+       "match --data t_fet.txt --out out.json",
+       {{"t_fet.txt", kFet + "B\t2\tP9\t1\t1\t1\t1\t1\t1\r\n"}},
+       {"t_fet.txt:5:2", "field 'partnb'", "several measured parts"},
+       json},
+      {"CY04",
+       "Calypso _fet table",
+       "a missing coordinate",
+       "match --data t_fet.txt --out out.json",
+       {{"t_fet.txt", replaced(kFet, "10,0100", "")}},
+       {"t_fet.txt:2:4", "field 'x'", "a number is missing"},
        json},
       // ---- fit-element points (CSV) ---------------------------------------------------------------
       {"FE01",

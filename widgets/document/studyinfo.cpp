@@ -70,8 +70,10 @@ QString studySummary(const QString& s) {
 
 QStringList studyDatasetKinds(const QString& s) {
   if (s == QLatin1String(study::kSetup))
-    return {dataset_kind::kSetupModel, dataset_kind::kCmmReport, dataset_kind::kDmis};
-  if (s == QLatin1String(study::kMatching)) return {dataset_kind::kProbePoints, dataset_kind::kHoleTable};
+    return {dataset_kind::kSetupModel, dataset_kind::kCmmReport, dataset_kind::kDmis, dataset_kind::kDfq,
+            dataset_kind::kCalypso};
+  if (s == QLatin1String(study::kMatching))
+    return {dataset_kind::kProbePoints, dataset_kind::kHoleTable, dataset_kind::kCadModel};
   if (s == QLatin1String(study::kKinematics))
     return {dataset_kind::kCircularTest, dataset_kind::kFeatureSeries};
   if (s == QLatin1String(study::kThermal)) return {dataset_kind::kThermalLog};
@@ -102,6 +104,10 @@ QString datasetKindTitle(const QString& kind) {
     return QCoreApplication::translate("StudyInfo", "DMIS output");
   if (kind == QLatin1String(dataset_kind::kHoleTable))
     return QCoreApplication::translate("StudyInfo", "Hole table");
+  if (kind == QLatin1String(dataset_kind::kDfq))
+    return QCoreApplication::translate("StudyInfo", "Q-DAS DFQ file");
+  if (kind == QLatin1String(dataset_kind::kCalypso))
+    return QCoreApplication::translate("StudyInfo", "Zeiss Calypso table");
   if (kind == QLatin1String(dataset_kind::kCadModel))
     return QCoreApplication::translate("StudyInfo", "CAD part (STL)");
   return kind;

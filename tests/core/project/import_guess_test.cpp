@@ -193,5 +193,21 @@ TEST(ImportGuess, ProbePointsInMetresAreReadInMillimetres) {
   EXPECT_NEAR(set.points[2].normal.z(), 1.0, 0.0) << "a normal has no unit";
 }
 
+TEST(ImportGuess, DfqAndCalypsoFilesByContentWhateverTheirNames) {
+  // AQDEF K fields (here as a ".txt"), and Calypso tables by their column names (under other names).
+  EXPECT_EQ(guessDatasetKind("messung.txt", "K0100 1\r\nK2001/1 1\r\nK0001/1 12.5\r\n"), "dfq");
+  EXPECT_EQ(guessDatasetKind("export.csv", "\xEF\xBB\xBFK0100 2\r\n"), "dfq");
+  EXPECT_EQ(guessDatasetKind("werte.txt",
+                             "planid\tpartnb\tid\ttype\tidsymbol\tactual\tnominal\tuppertol\tlowertol\n"
+                             "P\t1\tD1\tDiameter\t\t12,5\t12,5\t0,1\t-0,1\n"),
+            "calypso");
+  EXPECT_EQ(guessDatasetKind("punkte.txt",
+                             "planid\tpartnb\tid\tx\ty\tz\tx_nom\ty_nom\tz_nom\n"
+                             "P\t1\tP1\t1\t2\t3\t1\t2\t3\n"),
+            "calypso");
+  // A CSV with an "id" and "actual" column but neither planid nor partnb is no Calypso table.
+  EXPECT_NE(guessDatasetKind("r.csv", "id,actual,nominal\nD1,1,1\n"), "calypso");
+}
+
 }  // namespace
 }  // namespace metrofit
