@@ -31,6 +31,25 @@ ProbePointSet studyModelSet(const ProbePointSet& set, const MatchingStudyOptions
 
 namespace {
 
+/// After the runs: the machine adjustment of the primary run's posture and the remeasure loop on a cell
+/// holding the part as measured (`cellSet`: the nominals the primary run matched). Nothing when the
+/// primary method did not run (the study was stopped before it).
+void finishStudy(MatchingStudyResult& res, const MatchingStudyOptions& o, const ProbePointSet& cellSet,
+                 Observer* observer) {
+  const MatchResult* primary = res.of(o.primary);
+  if (primary == nullptr) return;
+  res.adjustment = machine::adjustmentFor(o.machine, primary->pose.rotation, primary->pose.translation);
+  if (!o.remeasure || primary->run.termination == Termination::Cancelled) return;
+  RemeasureOptions ro;
+  ro.match.method = o.primary;
+  ro.match.toleranceMm = o.toleranceMm;
+  ro.match.locks = o.locks;
+  ro.match.seed = o.seed;
+  ro.machine = o.machine;
+  res.remeasure =
+      remeasureLoop(simulateCell(partAsMeasured(cellSet), o.remeasureNoiseMm, o.seed), ro, observer);
+}
+
 /// runMatchingStudy with a CAD part (MatchingStudyOptions::cad): closed form and minimax through
 /// matchToCad, which re-projects the measured points onto the part at each posture.
 MatchingStudyResult runCadStudy(const ProbePointSet& input, const MatchingStudyOptions& o,
@@ -68,20 +87,8 @@ MatchingStudyResult runCadStudy(const ProbePointSet& input, const MatchingStudyO
   }
   for (std::size_t k = 0; k < res.runs.size(); ++k)
     if (res.runs[k].method == o.primary) primaryAfter = &res.cadAfter[k];
-  const MatchResult* primary = res.of(o.primary);
-  if (primary == nullptr) return res;  // stopped before the primary method ran
-  res.adjustment = machine::adjustmentFor(o.machine, primary->pose.rotation, primary->pose.translation);
-  if (o.remeasure && primary->run.termination != Termination::Cancelled && primaryAfter) {
-    // The cell holds the part where the probe found it, its nominals the part's closest points.
-    RemeasureOptions ro;
-    ro.match.method = o.primary;
-    ro.match.toleranceMm = o.toleranceMm;
-    ro.match.locks = o.locks;
-    ro.match.seed = o.seed;
-    ro.machine = o.machine;
-    res.remeasure =
-        remeasureLoop(simulateCell(partAsMeasured(*primaryAfter), o.remeasureNoiseMm, o.seed), ro, observer);
-  }
+  // The cell holds the part where the probe found it, its nominals the part's closest points.
+  if (primaryAfter) finishStudy(res, o, *primaryAfter, observer);
   return res;
 }
 
@@ -108,19 +115,7 @@ MatchingStudyResult runMatchingStudy(const ProbePointSet& input, const MatchingS
     res.seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     if (res.runs.back().run.termination == Termination::Cancelled) break;
   }
-  const MatchResult* primary = res.of(o.primary);
-  if (primary == nullptr) return res;  // stopped before the primary method ran
-  res.adjustment = machine::adjustmentFor(o.machine, primary->pose.rotation, primary->pose.translation);
-  if (o.remeasure && primary->run.termination != Termination::Cancelled) {
-    RemeasureOptions ro;
-    ro.match.method = o.primary;
-    ro.match.toleranceMm = o.toleranceMm;
-    ro.match.locks = o.locks;
-    ro.match.seed = o.seed;
-    ro.machine = o.machine;
-    res.remeasure =
-        remeasureLoop(simulateCell(partAsMeasured(set), o.remeasureNoiseMm, o.seed), ro, observer);
-  }
+  finishStudy(res, o, set, observer);
   return res;
 }
 

@@ -155,5 +155,37 @@ TEST(ReportModel, PathsKeyIsOptionalAndChecked) {
   EXPECT_THROW((void)Project::fromJson(j, "p.metrofit"), ValidationError);
 }
 
+// A Q-DAS DFQ file (issue 29), written here from the AQDEF field list, as the report a setup model is
+// made from (issue 28 item 3): its characteristics with nominal and limits become dimensions the setup
+// reader reads, with the deviations of the valid values (the removed one, attribute 255, left out).
+TEST(ReportModel, DfqCharacteristicsBecomeAModelTheReaderReads) {
+  test::TempDir tmp;
+  const std::string file = tmp.file("w.dfq");
+  test::writeText(file,
+                  "K0100 2\r\n"
+                  "K1001/1 4711-A\r\n"
+                  "K2001/1 1\r\nK2002/1 Durchmesser 12,5\r\nK2101/1 12.5\r\nK2110/1 12.48\r\nK2111/1 12.52\r\n"
+                  "K2001/2 2\r\nK2002/2 Laenge\r\nK2101/2 40\r\nK2110/2 39.9\r\nK2111/2 40.1\r\n"
+                  "K0001/1 12.506\r\nK0001/2 40.02\r\nK0014/0 SN-1\r\n"
+                  "K0001/1 12.504\r\nK0001/2 40.90\r\nK0002/2 255\r\nK0014/0 SN-2\r\n");
+  const ReportFeatures f = readReportFeatures(file);
+  ASSERT_EQ(f.characteristics.size(), 2u) << f.format;
+  for (const ReportCharacteristic& c : f.characteristics) EXPECT_TRUE(c.usable) << c.label << ": " << c.why;
+  ASSERT_TRUE(f.characteristics[0].nominal.has_value());
+  EXPECT_DOUBLE_EQ(*f.characteristics[0].nominal, 12.5);
+  ASSERT_TRUE(f.characteristics[0].lower.has_value());
+  EXPECT_NEAR(*f.characteristics[0].lower, -0.02, 1e-12);
+  EXPECT_NEAR(*f.characteristics[0].upper, 0.02, 1e-12);
+  ReportModelOptions options;
+  options.connectTo = "W1";
+  const setup::Model m = addReportCharacteristics(newReportModel("shaft"), f, {0, 1}, options);
+  setup::validateModel(m);
+  ASSERT_EQ(m.dimensions.size(), 2u);
+  const setup::Measurements meas = setup::readMeasurements({file}, m);
+  // The mean deviation of the valid values: (0.006 + 0.004) / 2; and 0.02 (the 40.90 was removed).
+  EXPECT_NEAR(meas.deviationMm[0], 0.005, 1e-9);
+  EXPECT_NEAR(meas.deviationMm[1], 0.02, 1e-9);
+}
+
 }  // namespace
 }  // namespace metrofit
