@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -463,6 +464,31 @@ TEST(Qif, InchConvertedToMm) {
   EXPECT_NEAR(*f.characteristics[0].target, 12.7, 1e-12);
   EXPECT_NEAR(*f.characteristics[0].lowerLimit(f.features), -0.254, 1e-12);
   EXPECT_NEAR(*f.characteristics[0].upperLimit(f.features), 0.254, 1e-12);
+}
+
+TEST(Qif, PrefixedNamespaceAndByteOrderMark) {
+  // The same document with every element in a "q:" prefix bound to the QIF 3 namespace, after a BOM.
+  std::string text = document(kInch);
+  std::string prefixed = "\xEF\xBB\xBF";
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    prefixed += text[i];
+    if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/') {
+      prefixed += '/';
+      ++i;
+      prefixed += "q:";
+    } else if (text[i] == '<' && i + 1 < text.size() &&
+               std::isalpha(static_cast<unsigned char>(text[i + 1]))) {
+      prefixed += "q:";
+    }
+  }
+  const auto ns = prefixed.find("xmlns=");
+  ASSERT_NE(ns, std::string::npos);
+  prefixed.replace(ns, 6, "xmlns:q=");
+  ASSERT_TRUE(looksLikeQif(prefixed));
+  const QifFile f = qifFromText(prefixed, "q.qif");
+  ASSERT_EQ(f.parts.size(), 1u);
+  EXPECT_EQ(f.features[0].name, "H1");
+  EXPECT_NEAR(*f.parts[0].characteristics[0].value, 12.7508, 1e-12);
 }
 
 TEST(Qif, MalformedDocumentsGiveOneLineErrors) {
