@@ -19,6 +19,7 @@ set(METROFIT_CORE_DEPS_study diagnose sim)
 
 # Third-party libraries used privately (in .cpp files only).
 set(METROFIT_CORE_PRIVATE_common metrofit_glpk)
+set(METROFIT_CORE_PRIVATE_io pugixml::pugixml)
 set(METROFIT_CORE_PRIVATE_setup metrofit_glpk)
 set(METROFIT_CORE_PRIVATE_matching metrofit_glpk)
 set(METROFIT_CORE_PRIVATE_geometry metrofit_glpk nanoflann::nanoflann)

@@ -723,6 +723,8 @@ const char* toString(CmmReportFormat format) {
       return "Q-DAS DFQ file";
     case CmmReportFormat::Calypso:
       return "Calypso table";
+    case CmmReportFormat::Qif:
+      return "QIF results file";
   }
   return "?";
 }

@@ -57,8 +57,9 @@
 
 namespace metrofit {
 
-enum class CmmReportFormat { OgpSteps, OgpSummary, PcDmis, Dfq, Calypso };
-/// "OGP step report", "OGP summary report", "PC-DMIS text report", "Q-DAS DFQ file", "Calypso table".
+enum class CmmReportFormat { OgpSteps, OgpSummary, PcDmis, Dfq, Calypso, Qif };
+/// "OGP step report", "OGP summary report", "PC-DMIS text report", "Q-DAS DFQ file", "Calypso table",
+/// "QIF results file".
 const char* toString(CmmReportFormat format);
 
 struct CmmValue {
@@ -124,13 +125,25 @@ inline bool looksLikeCmmTextReport(std::string_view text) {
 
 struct DfqFile;
 struct CalypsoCharacteristics;
-/// A DFQ file / a Calypso _chr table as a report (4. above).
+struct QifFile;
+/// A DFQ file / a Calypso _chr table as a report (4. above); a QIF Results file likewise (below).
 CmmTextReport dfqCmmReport(const DfqFile& file);
 CmmTextReport calypsoCmmReport(const CalypsoCharacteristics& table);
+/// A QIF 3 Results file (core/io/qif.h) as a report, implemented in qif.cpp: one run per
+/// MeasurementResults (serial = the ActualComponent's SerialNumber, number = its 1-based order), one
+/// feature per characteristic measurement with a Value (step = the characteristic's 1-based order,
+/// label = its Name, type = its type ("Diameter", "Position"), featureType = the measured feature's type)
+/// with one value "actual": the nominal and the limits relative to it of QifCharacteristic
+/// (nominalValue, lowerLimit, upperLimit). featureName, the column key, is the Name, with "#<item id>"
+/// when several characteristics share the Name and "@FEAT1+FEAT2" (the measured FeatureNames) when one
+/// characteristic is measured on several sets of features (a pattern). A repeated measurement of the same
+/// key in one part (point profiles: the deviation, then 0) is left out: the first one counts.
+CmmTextReport qifCmmReport(const QifFile& file);
 /// True for the formats whose features are characteristics named by number and description (DFQ,
-/// Calypso), not steps or dimensions.
+/// Calypso, QIF), not steps or dimensions.
 inline bool isCharacteristicTable(CmmReportFormat format) {
-  return format == CmmReportFormat::Dfq || format == CmmReportFormat::Calypso;
+  return format == CmmReportFormat::Dfq || format == CmmReportFormat::Calypso ||
+         format == CmmReportFormat::Qif;
 }
 
 /// Parses a report in the detected format; ParseError when the text is none of them.
