@@ -161,13 +161,14 @@ TEST(ReportModel, PathsKeyIsOptionalAndChecked) {
 TEST(ReportModel, DfqCharacteristicsBecomeAModelTheReaderReads) {
   test::TempDir tmp;
   const std::string file = tmp.file("w.dfq");
-  test::writeText(file,
-                  "K0100 2\r\n"
-                  "K1001/1 4711-A\r\n"
-                  "K2001/1 1\r\nK2002/1 Durchmesser 12,5\r\nK2101/1 12.5\r\nK2110/1 12.48\r\nK2111/1 12.52\r\n"
-                  "K2001/2 2\r\nK2002/2 Laenge\r\nK2101/2 40\r\nK2110/2 39.9\r\nK2111/2 40.1\r\n"
-                  "K0001/1 12.506\r\nK0001/2 40.02\r\nK0014/0 SN-1\r\n"
-                  "K0001/1 12.504\r\nK0001/2 40.90\r\nK0002/2 255\r\nK0014/0 SN-2\r\n");
+  test::writeText(
+      file,
+      "K0100 2\r\n"
+      "K1001/1 4711-A\r\n"
+      "K2001/1 1\r\nK2002/1 Durchmesser 12,5\r\nK2101/1 12.5\r\nK2110/1 12.48\r\nK2111/1 12.52\r\n"
+      "K2001/2 2\r\nK2002/2 Laenge\r\nK2101/2 40\r\nK2110/2 39.9\r\nK2111/2 40.1\r\n"
+      "K0001/1 12.506\r\nK0001/2 40.02\r\nK0014/0 SN-1\r\n"
+      "K0001/1 12.504\r\nK0001/2 40.90\r\nK0002/2 255\r\nK0014/0 SN-2\r\n");
   const ReportFeatures f = readReportFeatures(file);
   ASSERT_EQ(f.characteristics.size(), 2u) << f.format;
   for (const ReportCharacteristic& c : f.characteristics) EXPECT_TRUE(c.usable) << c.label << ": " << c.why;
