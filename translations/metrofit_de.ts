@@ -1590,12 +1590,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+482"/>
+        <location line="+495"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
     <message>
-        <location line="-418"/>
+        <location line="-431"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
     </message>
@@ -1654,7 +1654,7 @@ Anzahl: %4</translation>
         <translation>DMIS-Ausgabe: Fügen Sie dem Projekt ein Einrichtmodell hinzu, um die mit diesen Einstellungen gelesenen Abweichungen in der Vorschau zu sehen.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+19"/>
         <source>Dimension</source>
         <translation>Maß</translation>
     </message>
@@ -1664,12 +1664,17 @@ Anzahl: %4</translation>
         <translation>Abweichung (mm)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>DMIS output read against the setup model “%1”.</source>
         <translation>DMIS-Ausgabe, gelesen mit dem Einrichtmodell „%1“.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
+        <source>DMIS series of %1 files read against the setup model “%2”: the mean deviation over the workpieces.</source>
+        <translation>DMIS-Serie aus %1 Dateien, gelesen gegen das Einrichtmodell „%2“: die mittlere Abweichung über die Werkstücke.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>DMIS output; read against the setup model “%1”: %2</source>
         <translation>DMIS-Ausgabe; gelesen mit dem Einrichtmodell „%1“: %2</translation>
     </message>

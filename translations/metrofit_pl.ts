@@ -1594,12 +1594,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+482"/>
+        <location line="+495"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
     <message>
-        <location line="-418"/>
+        <location line="-431"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
     </message>
@@ -1659,7 +1659,7 @@ liczba: %4</translation>
         <translation>Wynik DMIS: dodaj do projektu model ustawczy, aby zobaczyć podgląd odchyłek odczytanych z tymi ustawieniami.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+19"/>
         <source>Dimension</source>
         <translation>Wymiar</translation>
     </message>
@@ -1669,12 +1669,17 @@ liczba: %4</translation>
         <translation>Odchyłka (mm)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>DMIS output read against the setup model “%1”.</source>
         <translation>Wynik DMIS odczytany względem modelu ustawczego „%1”.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
+        <source>DMIS series of %1 files read against the setup model “%2”: the mean deviation over the workpieces.</source>
+        <translation>Seria DMIS z %1 plików odczytana względem modelu ustawienia „%2”: średnia odchyłka po przedmiotach.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>DMIS output; read against the setup model “%1”: %2</source>
         <translation>Wynik DMIS; odczyt względem modelu ustawczego „%1”: %2</translation>
     </message>

@@ -17,6 +17,7 @@
 #include <QFile>
 #include <QPushButton>
 #include <QTabWidget>
+#include <QLabel>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -338,6 +339,24 @@ TEST_F(SetupReportModelTest, DmisSeriesIsOneDatasetAndOneSetupSeries) {
   EXPECT_EQ(m.parts, (std::vector<std::string>{"S1", "S2"}));
   EXPECT_NEAR(page_->instance()->deviation(0), (0.013 + 0.007) / 2, 1e-9);
   EXPECT_NEAR(page_->instance()->deviation(1), (-0.021 + 0.004) / 2, 1e-9);
+  // With the model in the project, the import dialog previews the whole series as the study reads it:
+  // the means over the two workpieces, not the first file's values.
+  {
+    ImportDialog again(document_->project(), document_->projectPathForDatasets());
+    again.setFile(a);
+    again.setKind(QStringLiteral("cmm-report"));
+    again.setSeriesFiles({b});
+    auto* detected = again.findChild<QLabel*>(QStringLiteral("importDetected"));
+    ASSERT_NE(detected, nullptr);
+    EXPECT_TRUE(detected->text().contains(QStringLiteral("DMIS series of 2 files")))
+        << detected->text().toStdString();
+    auto* preview = again.findChild<QTableWidget*>(QStringLiteral("importPreview"));
+    ASSERT_NE(preview, nullptr);
+    ASSERT_EQ(preview->rowCount(), 2);
+    EXPECT_NEAR(preview->item(0, 1)->text().toDouble(), (0.013 + 0.007) / 2, 1e-9);
+    again.setReadsSeries(false);  // the first file alone
+    EXPECT_NEAR(preview->item(0, 1)->text().toDouble(), 0.013, 1e-9);
+  }
 
   // Saved to another folder and reopened: "paths" follow, and the series is read again.
   QTemporaryDir other;

@@ -762,8 +762,16 @@ void ImportDialog::previewDmis() {
   }
   try {
     const setup::Model model = setup::readModel(files.modelPath);
+    // A series: every file, as the setup study reads it (the means over the workpieces); else the file.
+    std::vector<std::string> series;
+    if (readsSeries()) {
+      series.push_back(QFile::encodeName(file_).toStdString());
+      for (const QString& more : seriesFiles_) series.push_back(QFile::encodeName(more).toStdString());
+    }
     const setup::Measurements m =
-        setup::dmisReportFromText(text_, displayPath(file_.toStdString()), model, dmisOptions());
+        series.empty()
+            ? setup::dmisReportFromText(text_, displayPath(file_.toStdString()), model, dmisOptions())
+            : setup::readMeasurements(series, model, {}, dmisOptions());
     preview_->clear();
     preview_->setColumnCount(2);
     preview_->setRowCount(static_cast<int>(model.dimensions.size()));
@@ -777,7 +785,12 @@ void ImportDialog::previewDmis() {
     }
     preview_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     detected_->setText(
-        tr("DMIS output read against the setup model “%1”.").arg(QString::fromStdString(files.modelId)));
+        series.empty()
+            ? tr("DMIS output read against the setup model “%1”.").arg(QString::fromStdString(files.modelId))
+            : tr("DMIS series of %1 files read against the setup model “%2”: the mean deviation over the "
+                 "workpieces.")
+                  .arg(series.size())
+                  .arg(QString::fromStdString(files.modelId)));
   } catch (const std::exception& e) {
     // Not a reason to refuse the file (it may belong to another model): said, not blocking.
     detected_->setText(tr("DMIS output; read against the setup model “%1”: %2")
