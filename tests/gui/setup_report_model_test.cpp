@@ -15,9 +15,9 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
+#include <QLabel>
 #include <QPushButton>
 #include <QTabWidget>
-#include <QLabel>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
