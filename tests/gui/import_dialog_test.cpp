@@ -62,6 +62,7 @@
 #include "core/thermal/thermal_log.h"
 #include "core/thermal/thermal_model.h"
 #include "qtapp.h"
+#include "table_cells.h"
 #include "testsupport.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/importer/importdialog.h"
@@ -719,8 +720,8 @@ TEST_F(ImportDialogTest, DmisTaMeaningIsChosenInTheDialogAndUsedByTheSetupStudy)
   dialog.setTaMeaning(QStringLiteral("actual"));
   ASSERT_EQ(preview->rowCount(), 2) << found->text().toStdString();
   EXPECT_EQ(preview->item(1, 0)->text(), QStringLiteral("D2"));
-  EXPECT_NEAR(preview->item(1, 1)->text().toDouble(), 0.02, 1e-9);
-  EXPECT_NEAR(preview->item(0, 1)->text().toDouble(), 0.008, 1e-9);
+  EXPECT_NEAR(test::cellNumber(preview, 1, 1), 0.02, 1e-9);
+  EXPECT_NEAR(test::cellNumber(preview, 0, 1), 0.008, 1e-9);
   ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
   EXPECT_EQ(dialog.dataset().dmis.taMeaning, setup::DmisTaMeaning::Actual);
   EXPECT_FALSE(dialog.dataset().dmis.signFollowsNominal);
@@ -920,7 +921,11 @@ std::map<QString, double> wenzelResidues(const std::filesystem::path& file) {
   const QList<QByteArray> lines = f.readAll().split('\n');
   for (int i = 1; i < lines.size(); ++i) {
     const QList<QByteArray> cells = lines[i].split('\t');
-    if (cells.size() >= 5) out[QString::fromUtf8(cells[0])] = cells[4].toDouble();
+    if (cells.size() < 5) continue;
+    bool ok = false;
+    const double residue = cells[4].trimmed().toDouble(&ok);
+    EXPECT_TRUE(ok) << "line " << i + 1 << ": '" << cells[4].toStdString() << "' is not a number";
+    if (ok) out[QString::fromUtf8(cells[0])] = residue;
   }
   return out;
 }

@@ -35,6 +35,7 @@
 #include "core/study/setup_study.h"
 #include "qtapp.h"
 #include "samples/pcdmis_reports.h"
+#include "table_cells.h"
 #include "testsupport.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/importer/importdialog.h"
@@ -353,9 +354,9 @@ TEST_F(SetupReportModelTest, DmisSeriesIsOneDatasetAndOneSetupSeries) {
     auto* preview = again.findChild<QTableWidget*>(QStringLiteral("importPreview"));
     ASSERT_NE(preview, nullptr);
     ASSERT_EQ(preview->rowCount(), 2);
-    EXPECT_NEAR(preview->item(0, 1)->text().toDouble(), (0.013 + 0.007) / 2, 1e-9);
+    EXPECT_NEAR(test::cellNumber(preview, 0, 1), (0.013 + 0.007) / 2, 1e-9);
     again.setReadsSeries(false);  // the first file alone
-    EXPECT_NEAR(preview->item(0, 1)->text().toDouble(), 0.013, 1e-9);
+    EXPECT_NEAR(test::cellNumber(preview, 0, 1), 0.013, 1e-9);
   }
 
   // Saved to another folder and reopened: "paths" follow, and the series is read again.
