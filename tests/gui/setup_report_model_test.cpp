@@ -27,6 +27,7 @@
 
 #include "app/gui/setuppage.h"
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/project/project.h"
 #include "core/project/report_model.h"
 #include "core/setup/model.h"
@@ -62,11 +63,11 @@ std::string dmisPart(const std::string& serial, double z, double d2) {
          "UNITS/MM,ANGDEG\n"
          "F(POS_D1)=FEAT/PLANE,CART,10,20,42.000,0,0,1\n"
          "FA(POS_D1)=FEAT/PLANE,CART,10,20," +
-         std::to_string(z) +
+         num::general(z, 17) +
          ",0,0,1\n"
          "T(D2)=TOL/DISTB,NOMINL,18.5,-0.05,0.03,ZAXIS\n"
          "TA(D2)=TOL/DISTB," +
-         std::to_string(d2) + "\nENDFIL\n";
+         num::general(d2, 17) + "\nENDFIL\n";
 }
 
 nlohmann::json json(const setup::Model& m) {
