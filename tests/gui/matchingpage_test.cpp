@@ -31,6 +31,7 @@
 #define METROFIT_TEST_QT_XVFB
 #include "app/gui/machinedialog.h"
 #include "app/gui/matchingpage.h"
+#include "core/common/numformat.h"
 #include "core/machine/controller_frame.h"
 #include "core/project/project.h"
 #include "core/sim/probe_sim.h"
@@ -469,8 +470,8 @@ TEST(MatchingPageCad, TheBoxIsMatchedAndDrawnColouredByDeviation) {
     for (double y : {10.0, 30.0, 50.0}) {
       for (double z : {0.0, 40.0}) {
         const Eigen::Vector3d p = rotation * Eigen::Vector3d(x, y, z + (z > 0 ? 0.030 : 0.0)) + shift;
-        csv += "P" + std::to_string(++k) + "," + std::to_string(p.x()) + "," + std::to_string(p.y()) + "," +
-               std::to_string(p.z()) + "\n";
+        csv += "P" + std::to_string(++k) + "," + num::general(p.x(), 17) + "," + num::general(p.y(), 17) +
+               "," + num::general(p.z(), 17) + "\n";
       }
     }
   for (const Eigen::Vector3d& q :
@@ -478,8 +479,8 @@ TEST(MatchingPageCad, TheBoxIsMatchedAndDrawnColouredByDeviation) {
         Eigen::Vector3d(100, 20, 15), Eigen::Vector3d(100, 45, 30), Eigen::Vector3d(0, 30, 20),
         Eigen::Vector3d(0, 50, 10), Eigen::Vector3d(70, 60, 30)}) {
     const Eigen::Vector3d p = rotation * q + shift;
-    csv += "P" + std::to_string(++k) + "," + std::to_string(p.x()) + "," + std::to_string(p.y()) + "," +
-           std::to_string(p.z()) + "\n";
+    csv += "P" + std::to_string(++k) + "," + num::general(p.x(), 17) + "," + num::general(p.y(), 17) + "," +
+           num::general(p.z(), 17) + "\n";
   }
   test::writeText(dir.filePath(QStringLiteral("points.csv")).toStdString(), csv);
   Project p;

@@ -1,10 +1,12 @@
 #pragma once
 // An axis-parallel box as ASCII STL, written from the format's definition (facet normal, outer loop,
-// three vertices, counter-clockwise seen from outside), shared by the CAD-nominal tests of core and GUI.
+// three vertices, counter-clockwise seen from outside; numbers with '.' whatever the locale), shared by the
+// CAD-nominal tests of core and GUI.
 #include <Eigen/Geometry>
 #include <array>
-#include <cstdio>
 #include <string>
+
+#include "core/common/numformat.h"
 
 namespace metrofit::test {
 
@@ -16,15 +18,14 @@ inline std::string boxStl(double a, double b, double c) {
   const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
                            {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
   std::string s = "solid box\n";
-  char line[200];
   for (const auto& f : faces) {
     for (const auto& tri : {std::array<int, 3>{f[0], f[1], f[2]}, std::array<int, 3>{f[0], f[2], f[3]}}) {
       const Eigen::Vector3d n = (v[tri[1]] - v[tri[0]]).cross(v[tri[2]] - v[tri[0]]).normalized();
-      std::snprintf(line, sizeof line, " facet normal %.9g %.9g %.9g\n  outer loop\n", n.x(), n.y(), n.z());
-      s += line;
+      s += " facet normal " + num::general(n.x(), 17) + " " + num::general(n.y(), 17) + " " +
+           num::general(n.z(), 17) + "\n  outer loop\n";
       for (int k : tri) {
-        std::snprintf(line, sizeof line, "   vertex %.9g %.9g %.9g\n", v[k].x(), v[k].y(), v[k].z());
-        s += line;
+        s += "   vertex " + num::general(v[k].x(), 17) + " " + num::general(v[k].y(), 17) + " " +
+             num::general(v[k].z(), 17) + "\n";
       }
       s += "  endloop\n endfacet\n";
     }
