@@ -108,6 +108,11 @@
         <source>CAD part (STL)</source>
         <translation>CAD-Teil (STL)</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>QIF results</source>
+        <translation>QIF-Ergebnisse</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1173,7 +1178,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+62"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+63"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>Komma ( , )</translation>
@@ -1444,12 +1449,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+236"/>
+        <location line="+246"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-233"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Zeilen vor den Spaltennamen, unabhängig vom Inhalt übersprungen (Vorspann eines Messgeräts)</translation>
     </message>
@@ -1504,7 +1509,7 @@ Anzahl: %4</translation>
         <translation>Du&amp;rchsuchen…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>&amp;File:</source>
         <translation>&amp;Datei:</translation>
     </message>
@@ -1519,7 +1524,17 @@ Anzahl: %4</translation>
         <translation>&amp;Kennung:</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>The measured part (MeasurementResults) of the QIF file whose features become the probe points</source>
+        <translation>Das gemessene Teil (MeasurementResults) der QIF-Datei, dessen Merkmale die Antastpunkte werden</translation>
+    </message>
+    <message>
         <location line="+2"/>
+        <source>Measured &amp;part:</source>
+        <translation>Gemessenes &amp;Teil:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>How the file is read</source>
         <translation>Wie die Datei gelesen wird</translation>
     </message>
@@ -1590,12 +1605,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+495"/>
+        <location line="+528"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
     <message>
-        <location line="-431"/>
+        <location line="-464"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
     </message>
@@ -1612,11 +1627,11 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.dfq)</source>
-        <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.dfq)</translation>
+        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.QIF *.dfq *.DFQ *.stl *.STL)</source>
+        <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.QIF *.dfq *.DFQ *.stl *.STL)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1: cannot read the file (%2)</source>
         <translation>%1: die Datei kann nicht gelesen werden (%2)</translation>
     </message>
@@ -1626,7 +1641,7 @@ Anzahl: %4</translation>
         <translation>%1: die Datei ist größer als 256 MiB</translation>
     </message>
     <message numerus="yes">
-        <location line="+134"/>
+        <location line="+163"/>
         <source>Read the %n selected files as one DMIS &amp;series (one dataset, one file per workpiece)</source>
         <translation>
             <numerusform>Die %n ausgewählte Datei als eine DMIS-&amp;Serie lesen (ein Datensatz, eine Datei je Werkstück)</numerusform>
@@ -1679,7 +1694,7 @@ Anzahl: %4</translation>
         <translation>DMIS-Ausgabe; gelesen mit dem Einrichtmodell „%1“: %2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>Choose a file to import.</source>
         <translation>Wählen Sie eine Datei zum Importieren.</translation>
     </message>
@@ -1714,7 +1729,7 @@ Anzahl: %4</translation>
         <translation>Trennzeichen %1 · Dezimalzeichen %2 · Kopfzeile in Zeile %3 (%4 Spalten) · Kommentarzeilen: %5 · Datenzeilen: %6</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>Nominals: the closest points of the CAD part “%1”; the matching moves the points onto it at each posture (closed form or minimum zone).</source>
         <translation>Sollpunkte: die nächsten Punkte des CAD-Teils „%1“; das Einpassen projiziert die Punkte bei jeder Lage neu darauf (geschlossene Lösung oder Minimumzone).</translation>
     </message>
@@ -4352,7 +4367,7 @@ Abweichung: %3 µm</translation>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+90"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+91"/>
         <source>Add report features to setup model…</source>
         <translation>Merkmale des Berichts zum Einrichtmodell hinzufügen…</translation>
     </message>
@@ -4844,7 +4859,7 @@ Abweichung: %3 µm</translation>
     <message>
         <location line="+0"/>
         <location filename="../widgets/report/matchingsection.cpp" line="+428"/>
-        <location filename="../widgets/report/summarysection.cpp" line="+150"/>
+        <location filename="../widgets/report/summarysection.cpp" line="+156"/>
         <source>value</source>
         <translation>Wert</translation>
     </message>
@@ -5644,7 +5659,7 @@ Abweichung: %3 µm</translation>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../widgets/report/summarysection.cpp" line="-222"/>
+        <location filename="../widgets/report/summarysection.cpp" line="-228"/>
         <source>thermal log</source>
         <translation>Thermo-Protokoll</translation>
     </message>
@@ -5672,6 +5687,36 @@ Abweichung: %3 µm</translation>
         <location line="+1"/>
         <source>feature series</source>
         <translation>Merkmalsreihe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DMIS output</source>
+        <translation>DMIS-Ausgabe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Q-DAS DFQ file</source>
+        <translation>Q-DAS-DFQ-Datei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zeiss Calypso table</source>
+        <translation>Zeiss-Calypso-Tabelle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>QIF results</source>
+        <translation>QIF-Ergebnisse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAD part</source>
+        <translation>CAD-Teil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hole table</source>
+        <translation>Bohrungstabelle</translation>
     </message>
     <message>
         <location line="+14"/>
@@ -8096,7 +8141,7 @@ merkmal</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+151"/>
+        <location filename="../app/gui/setuppage.cpp" line="+152"/>
         <source>&amp;Save model</source>
         <translation>Modell &amp;speichern</translation>
     </message>
@@ -8252,11 +8297,11 @@ merkmal</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>“%1” is not a CMM report or DMIS dataset of the project.</source>
-        <translation>„%1“ ist kein KMG-Bericht- oder DMIS-Datensatz des Projekts.</translation>
+        <source>“%1” is not a CMM report (OGP, PC-DMIS, DMIS, DFQ, Calypso, QIF) of the project.</source>
+        <translation>„%1“ ist kein KMG-Protokoll (OGP, PC-DMIS, DMIS, DFQ, Calypso, QIF) des Projekts.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>“%1” is not a dataset of the project.</source>
         <translation>„%1“ ist kein Datensatz des Projekts.</translation>
     </message>

@@ -108,6 +108,11 @@
         <source>CAD part (STL)</source>
         <translation>Część CAD (STL)</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>QIF results</source>
+        <translation>Wyniki QIF</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1174,7 +1179,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+62"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+63"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>przecinek ( , )</translation>
@@ -1448,12 +1453,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+236"/>
+        <location line="+246"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-233"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Wiersze przed nazwami kolumn, pomijane bez względu na treść (nagłówek przyrządu)</translation>
     </message>
@@ -1508,7 +1513,7 @@ liczba: %4</translation>
         <translation>Prze&amp;glądaj…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>&amp;File:</source>
         <translation>&amp;Plik:</translation>
     </message>
@@ -1523,7 +1528,17 @@ liczba: %4</translation>
         <translation>I&amp;dentyfikator:</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>The measured part (MeasurementResults) of the QIF file whose features become the probe points</source>
+        <translation>Zmierzona część (MeasurementResults) pliku QIF, której elementy stają się punktami pomiarowymi</translation>
+    </message>
+    <message>
         <location line="+2"/>
+        <source>Measured &amp;part:</source>
+        <translation>Zmierzona &amp;część:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>How the file is read</source>
         <translation>Jak plik jest odczytywany</translation>
     </message>
@@ -1594,12 +1609,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+495"/>
+        <location line="+528"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
     <message>
-        <location line="-431"/>
+        <location line="-464"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
     </message>
@@ -1616,11 +1631,11 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.dfq)</source>
-        <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.dfq)</translation>
+        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.QIF *.dfq *.DFQ *.stl *.STL)</source>
+        <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.QIF *.dfq *.DFQ *.stl *.STL)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1: cannot read the file (%2)</source>
         <translation>%1: nie można odczytać pliku (%2)</translation>
     </message>
@@ -1630,7 +1645,7 @@ liczba: %4</translation>
         <translation>%1: plik jest większy niż 256 MiB</translation>
     </message>
     <message numerus="yes">
-        <location line="+134"/>
+        <location line="+163"/>
         <source>Read the %n selected files as one DMIS &amp;series (one dataset, one file per workpiece)</source>
         <translation>
             <numerusform>Wczytaj %n wybrany plik jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
@@ -1684,7 +1699,7 @@ liczba: %4</translation>
         <translation>Wynik DMIS; odczyt względem modelu ustawczego „%1”: %2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>Choose a file to import.</source>
         <translation>Wybierz plik do importu.</translation>
     </message>
@@ -1719,7 +1734,7 @@ liczba: %4</translation>
         <translation>separator %1 · znak dziesiętny %2 · nagłówek w wierszu %3 (%4 kolumn) · wiersze komentarza: %5 · wiersze danych: %6</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>Nominals: the closest points of the CAD part “%1”; the matching moves the points onto it at each posture (closed form or minimum zone).</source>
         <translation>Punkty nominalne: najbliższe punkty części CAD „%1”; dopasowanie rzutuje punkty na nią przy każdym położeniu (rozwiązanie zamknięte lub strefa minimalna).</translation>
     </message>
@@ -4362,7 +4377,7 @@ odchyłka: %3 µm</translation>
 <context>
     <name>metrofit::ProjectNavigator</name>
     <message>
-        <location filename="../app/gui/projectnavigator.cpp" line="+90"/>
+        <location filename="../app/gui/projectnavigator.cpp" line="+91"/>
         <source>Add report features to setup model…</source>
         <translation>Dodaj elementy raportu do modelu ustawienia…</translation>
     </message>
@@ -4854,7 +4869,7 @@ odchyłka: %3 µm</translation>
     <message>
         <location line="+0"/>
         <location filename="../widgets/report/matchingsection.cpp" line="+428"/>
-        <location filename="../widgets/report/summarysection.cpp" line="+150"/>
+        <location filename="../widgets/report/summarysection.cpp" line="+156"/>
         <source>value</source>
         <translation>wartość</translation>
     </message>
@@ -5654,7 +5669,7 @@ odchyłka: %3 µm</translation>
         <translation>rodzaj</translation>
     </message>
     <message>
-        <location filename="../widgets/report/summarysection.cpp" line="-222"/>
+        <location filename="../widgets/report/summarysection.cpp" line="-228"/>
         <source>thermal log</source>
         <translation>zapis termiczny</translation>
     </message>
@@ -5682,6 +5697,36 @@ odchyłka: %3 µm</translation>
         <location line="+1"/>
         <source>feature series</source>
         <translation>seria cech</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DMIS output</source>
+        <translation>wynik DMIS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Q-DAS DFQ file</source>
+        <translation>plik Q-DAS DFQ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zeiss Calypso table</source>
+        <translation>tabela Zeiss Calypso</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>QIF results</source>
+        <translation>Wyniki QIF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAD part</source>
+        <translation>część CAD</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hole table</source>
+        <translation>tabela otworów</translation>
     </message>
     <message>
         <location line="+14"/>
@@ -8122,7 +8167,7 @@ raportu</translation>
 <context>
     <name>metrofit::SetupPage</name>
     <message>
-        <location filename="../app/gui/setuppage.cpp" line="+151"/>
+        <location filename="../app/gui/setuppage.cpp" line="+152"/>
         <source>&amp;Save model</source>
         <translation>Zapi&amp;sz model</translation>
     </message>
@@ -8278,11 +8323,11 @@ raportu</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>“%1” is not a CMM report or DMIS dataset of the project.</source>
-        <translation>„%1” nie jest zbiorem danych projektu typu raport CMM ani DMIS.</translation>
+        <source>“%1” is not a CMM report (OGP, PC-DMIS, DMIS, DFQ, Calypso, QIF) of the project.</source>
+        <translation>„%1” nie jest raportem CMM (OGP, PC-DMIS, DMIS, DFQ, Calypso, QIF) projektu.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>“%1” is not a dataset of the project.</source>
         <translation>„%1” nie jest zbiorem danych projektu.</translation>
     </message>

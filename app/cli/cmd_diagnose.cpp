@@ -46,6 +46,7 @@ struct MethodArgs {
   double tolerance = DiagnosisDomainSettings{}.toleranceMm;
   double trainFraction = DiagnosisDomainSettings{}.trainFraction;
   double feed = DiagnosisDomainSettings{}.feedMmPerMin;
+  int part = 0;  ///< matching: a QIF file of several measured parts, the part (1-based)
   bool allowScale = false;
 };
 
@@ -150,7 +151,7 @@ int runSetup(const MethodArgs& a) {
 
 /// Matching (core/diagnose/matching_diagnosis.h): probe CSV or PC-DMIS hole table.
 int runMatching(const MethodArgs& a) {
-  const ProbePointSet set = readProbePointsAnyFormat(a.data, 3, csvOptions());
+  const ProbePointSet set = readProbePointsAnyFormat(a.data, 3, csvOptions(), a.part);
   diagnose::MatchingDiagnosisOptions o;
   o.toleranceMm = a.tolerance;
   diagnose::Diagnosis d;
@@ -200,6 +201,8 @@ void registerDiagnoseCommands(CLI::App& app) {
     }
     if (std::string(domain) == "matching") {
       sub->add_option("--tolerance", a->tolerance, "Symmetric tolerance, mm")->check(positiveNumber());
+      sub->add_option("--part", a->part, "A QIF file of several measured parts: the part, by its number")
+          ->check(CLI::Range(1, 1000000));
     }
     addSeed(sub, a->seed);
     if (std::string(domain) == "thermal") {

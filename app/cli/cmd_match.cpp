@@ -73,6 +73,7 @@ struct MatchArgs {
   NominalSource nominals;
   std::string nominalReferenceFile;
   int frameDecimals = MatchingSettings{}.frameDecimals;
+  int part = 0;  ///< a QIF file of several measured parts: the part (1-based)
   std::uint64_t seed = MatchingSettings{}.seed;
   double tolerance = MatchingSettings{}.toleranceMm, remeasureNoise = 0.006;
   bool allowScale = MatchingSettings{}.allowScale, remeasure = false;
@@ -206,7 +207,7 @@ int runMatch(const MatchArgs& a, bool machineGiven, bool methodGiven) {
             ErrorContext{{}, 0, 0, "--nominal-element"},
             "is needed with --nominal-radius, --nominal-criterion, --nominal-robust, --inner or "
             "--pair (or --nominal-reference)");
-      return readProbePointsAnyFormat(a.data, 1, csvOptions());
+      return readProbePointsAnyFormat(a.data, 1, csvOptions(), a.part);
     }
     // Measured points only: the nominals from an element fitted to them or from a second measurement.
     NominalSource n = a.nominals;
@@ -290,9 +291,13 @@ void registerMatchCommand(CLI::App& app) {
   existingFile(
       sub->add_option("--data", a->data,
                       "Probe points: CSV (id,surface,qx,qy,qz,nx,ny,nz,px,py,pz), a PC-DMIS hole-table "
-                      "report or a Zeiss Calypso _fet table; with --cad measured points only (id,px,py,pz "
-                      "or id,x_mm,y_mm,z_mm)")
+                      "report, a Zeiss Calypso _fet table or a QIF 3 Results file; with --cad measured "
+                      "points only (id,px,py,pz or id,x_mm,y_mm,z_mm)")
           ->required());
+  sub->add_option("--part", a->part,
+                  "A QIF file of several measured parts: the part to match, by its number (1 = the first "
+                  "MeasurementResults)")
+      ->check(CLI::Range(1, 1000000));
   existingFile(sub->add_option(
       "--cad", a->cad,
       "CAD nominal: an STL part (ASCII or binary, mm); the measured points are matched to its surface"));

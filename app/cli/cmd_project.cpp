@@ -5,6 +5,7 @@
 //               [--ta-sign S] [--embed] [FILE2 ...: a DMIS series, one file per workpiece]
 //               [--nominal-element E [--nominal-radius R] [--nominal-criterion ls|minimax]
 //                [--nominal-robust] [--inner]] [--nominal-reference ID [--pair id|order]] [--nominal-cad ID]
+//               [--part N: a QIF file of several measured parts added as probe points]
 //   project list P.metrofit [--out FILE]
 // The logic is core/project/datasets.h; this file only parses the command line.
 #include <CLI/CLI.hpp>
@@ -36,6 +37,7 @@ struct ProjectArgs {
   bool skipBadRows = false;
   bool embed = false;
   bool noGuess = false;
+  int part = 0;
   NominalSource nominals;
   std::string nominalElement, nominalReference, nominalCad;
 };
@@ -56,6 +58,7 @@ int runAdd(const ProjectArgs& a) {
   r.kind = a.kind;
   r.file = a.files.front();
   r.moreFiles.assign(a.files.begin() + 1, a.files.end());
+  r.part = a.part;
   // Nominals for measured points (core/project/nominals.h): a reference measurement, or an element.
   r.nominals = a.nominals;
   if (!a.nominalCad.empty()) {
@@ -143,7 +146,7 @@ void registerProjectCommands(CLI::App& app) {
   add->add_option(
          "kind", a->kind,
          "thermal-log|probe-points|circular-test|cmm-report|setup-model|"
-         "feature-series|dmis|hole-table|dfq|calypso|cad-model, or auto: the kind the file's name and "
+         "feature-series|dmis|hole-table|dfq|calypso|cad-model|qif, or auto: the kind the file's name and "
          "content say")
       ->required()
       ->check(CLI::IsMember(kinds));
@@ -195,6 +198,10 @@ void registerProjectCommands(CLI::App& app) {
       "--nominal-cad", a->nominalCad,
       "Probe points of measured points only: the nominals are their closest points on this CAD part "
       "(the cad-model dataset ID of the project); the matching re-projects them at each posture");
+  add->add_option("--part", a->part,
+                  "A QIF file of several measured parts added as probe points: the part, by its number "
+                  "(1 = the first MeasurementResults)")
+      ->check(CLI::Range(1, 1000000));
   add->add_option("--pair", a->nominals.pair, "How points meet their reference points: id | order [id]")
       ->check(CLI::IsMember({"id", "order"}));
   add->callback([a] { selectRunner([a]() -> int { return runAdd(*a); }); });

@@ -8,13 +8,15 @@
 //       (recognised by content): the series of one characteristic, N its number (DFQ K2001; Calypso id),
 //       NAME its description (DFQ K2002; Calypso id); values in measured-part order, DFQ values that are
 //       not valid (attribute >= 255, core/io/dfq.h) left out; the nominal and limits from the file unless
-//       --nominal / --lsl --usl are given
+//       --nominal / --lsl --usl are given; a QIF 3 Results file likewise, one value per measured part, N the
+//       characteristic's Name (qifCmmReport's key), NAME its type (Diameter, Position) when unique
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "app/cli/commands.h"
@@ -26,6 +28,7 @@
 #include "core/io/dfq.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
+#include "core/io/qif.h"
 #include "core/spc/spc.h"
 #include "core/study/study_settings.h"
 
@@ -120,6 +123,32 @@ std::optional<CharacteristicSeries> characteristicSeries(std::string_view text, 
     }
     return s;
   }
+  if (looksLikeQif(text)) {
+    // A QIF Results file: one value per measured part (MeasurementResults), the characteristic by its
+    // key (the Name, made unique as qifCmmReport says) or its type ("Diameter") when that is unique.
+    const CmmTextReport report = qifCmmReport(qifFromText(text, source));
+    std::vector<std::pair<std::string, std::string>> list;
+    std::set<std::string> seen;
+    for (const CmmRun& run : report.runs)
+      for (const CmmFeature& f : run.features)
+        if (seen.insert(f.featureName).second) list.emplace_back(f.featureName, f.type);
+    if (list.empty())
+      throw ValidationError(ErrorContext{source, 0, 0, "--characteristic"},
+                            "the file has no measured characteristic with a value");
+    const std::string key = list[chooseCharacteristic(list, choice, source)].first;
+    s.title = key;
+    s.column = key;
+    for (const CmmRun& run : report.runs)
+      for (const CmmFeature& f : run.features) {
+        if (f.featureName != key || f.values.empty()) continue;
+        const CmmValue& v = f.values.front();
+        s.values.push_back(v.actual);
+        if (!s.nominal) s.nominal = v.nominal;
+        if (v.nominal && v.lower && !s.lower) s.lower = *v.nominal + *v.lower;
+        if (v.nominal && v.upper && !s.upper) s.upper = *v.nominal + *v.upper;
+      }
+    return s;
+  }
   return std::nullopt;
 }
 
@@ -127,13 +156,14 @@ int runSpc(const SpcArgs& a) {
   SpcOptions o = spcOptions(a);
   const std::string text = readFile(a.data, 256u << 20);
   const std::string source = displayPath(a.data);
-  const bool characteristics = looksLikeDfq(text) || looksLikeCalypsoCharacteristics(text);
+  const bool characteristics =
+      looksLikeDfq(text) || looksLikeCalypsoCharacteristics(text) || looksLikeQif(text);
   if (characteristics && !a.column.empty())
     throw ValidationError(ErrorContext{source, 0, 0, "--column"},
-                          "is for CSV files; a DFQ file or Calypso table takes --characteristic N|NAME");
+                          "is for CSV files; a DFQ, QIF or Calypso file takes --characteristic N|NAME");
   if (!characteristics && !a.characteristic.empty())
     throw ValidationError(ErrorContext{source, 0, 0, "--characteristic"},
-                          "is for DFQ files and Calypso _chr tables; a CSV file takes --column");
+                          "is for DFQ and QIF files and Calypso _chr tables; a CSV file takes --column");
   if (!characteristics && a.column.empty())
     throw ValidationError(ErrorContext{source, 0, 0, "--column"},
                           "is required: the column of the feature to chart");
@@ -193,14 +223,14 @@ void registerSpcCommand(CLI::App& app) {
   existingFile(
       sub->add_option(
              "--data", a->data,
-             "Measurements (CSV, rows in production order; a CMM text report; a Q-DAS DFQ file or a Zeiss "
-             "Calypso _chr table, read by content)")
+             "Measurements (CSV, rows in production order; a CMM text report; a Q-DAS DFQ file, a QIF 3 "
+             "Results file or a Zeiss Calypso _chr table, read by content)")
           ->required());
   sub->add_option("--column", a->column, "Column of the feature to chart (CSV files and CMM text reports)");
   sub->add_option(
       "--characteristic", a->characteristic,
-      "DFQ file or Calypso _chr table: the characteristic to chart, by number (DFQ K2001, Calypso id) "
-      "or name (DFQ K2002 description)");
+      "DFQ, QIF file or Calypso _chr table: the characteristic to chart, by number (DFQ K2001, Calypso "
+      "id, QIF Name) or name (DFQ K2002 description, QIF characteristic type when unique)");
   addCsvOptions(sub);
   sub->add_option("--subgroup", a->subgroup, "Subgroup size n (2..25): consecutive rows form a subgroup")
       ->required();

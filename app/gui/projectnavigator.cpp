@@ -13,6 +13,7 @@
 #include <functional>
 
 #include "app/gui/datasetactions.h"
+#include "core/project/datasets.h"
 
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/studyinfo.h"
@@ -82,7 +83,7 @@ ProjectNavigator::ProjectNavigator(ProjectDocument* document, QWidget* parent)
     QMenu menu(this);
     addDatasetActions(&menu, document_, id, this);
     if (const DatasetRef* dataset = document_->project().dataset(id.toStdString());
-        dataset && (dataset->kind == dataset_kind::kCmmReport || dataset->kind == dataset_kind::kDmis)) {
+        dataset && datasetKindServes(dataset_kind::kCmmReport, dataset->kind)) {
       // From the report to the setup study: a new model, or the features the study's model lacks.
       const bool hasModel = document_->project().firstOfKind(dataset_kind::kSetupModel) != nullptr;
       menu.addSeparator();

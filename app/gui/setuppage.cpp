@@ -27,6 +27,7 @@
 #include "app/gui/studysettingbinding.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
+#include "core/project/datasets.h"
 #include "core/project/report_model.h"
 #include "core/project/stored_results.h"
 #include "core/setup/exact.h"
@@ -515,18 +516,19 @@ void SetupPage::readReportFeatures() {
 QStringList SetupPage::reportDatasets() const {
   QStringList out;
   for (const DatasetRef& dataset : document_->project().datasets)
-    if (dataset.kind == dataset_kind::kCmmReport || dataset.kind == dataset_kind::kDmis)
-      out << QString::fromStdString(dataset.id);
+    if (datasetKindServes(dataset_kind::kCmmReport, dataset.kind)) out << QString::fromStdString(dataset.id);
   return out;
 }
 
 ReportModelDialog* SetupPage::makeReportDialog(const QString& reportId, QString* error) {
   const QString id = reportId.isEmpty() ? QString::fromStdString(d->files.reportId) : reportId;
   const DatasetRef* report = document_->project().dataset(id.toStdString());
-  if (!report || (report->kind != dataset_kind::kCmmReport && report->kind != dataset_kind::kDmis)) {
+  if (!report || !datasetKindServes(dataset_kind::kCmmReport, report->kind)) {
     if (error)
-      *error = id.isEmpty() ? tr("The project has no CMM report: import one first (File › Import).")
-                            : tr("“%1” is not a CMM report or DMIS dataset of the project.").arg(id);
+      *error = id.isEmpty()
+                   ? tr("The project has no CMM report: import one first (File › Import).")
+                   : tr("“%1” is not a CMM report (OGP, PC-DMIS, DMIS, DFQ, Calypso, QIF) of the project.")
+                         .arg(id);
     return nullptr;
   }
   ReportFeatures features;

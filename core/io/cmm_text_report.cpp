@@ -10,6 +10,7 @@
 #include "core/io/calypso.h"
 #include "core/io/dfq.h"
 #include "core/io/file_io.h"
+#include "core/io/qif.h"
 
 namespace metrofit {
 namespace {
@@ -880,6 +881,7 @@ std::string rtfToText(std::string_view rtf, const std::string& source) {
 }
 
 std::optional<CmmReportFormat> detectCmmTextReport(std::string_view text) {
+  if (looksLikeQif(text)) return CmmReportFormat::Qif;
   if (looksLikeDfq(text)) return CmmReportFormat::Dfq;
   if (looksLikeCalypsoCharacteristics(text)) return CmmReportFormat::Calypso;
   std::size_t pos = startsWith(text, "\xEF\xBB\xBF") ? 3 : 0;
@@ -921,6 +923,7 @@ CmmTextReport cmmTextReportFromText(std::string_view text, const std::string& so
   if (!format)
     throw ParseError(ErrorContext{source, 1, 0, {}},
                      "not an OGP step or summary report nor a PC-DMIS text report");
+  if (*format == CmmReportFormat::Qif) return qifCmmReport(qifFromText(text, source));
   if (*format == CmmReportFormat::Dfq) return dfqCmmReport(dfqFromText(text, source));
   if (*format == CmmReportFormat::Calypso)
     return calypsoCmmReport(calypsoCharacteristicsFromText(text, source));

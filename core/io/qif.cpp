@@ -350,6 +350,8 @@ QifFile qifFromText(std::string_view text, const std::string& source) {
     f.type = typeOf(item, "FeatureItem");
     f.name = std::string(trimmed(child(item, "FeatureName").child_value()));
     f.line = r.line(item);
+    // DeterminationMode/Set: a feature given (a reference), not measured; its "measurement" repeats it.
+    f.set = static_cast<bool>(child(child(item, "DeterminationMode"), "Set"));
     f.nominalId = r.ref(item, "FeatureNominalId");
     const pugi::xml_node nom =
         lookUp(r, featureNoms, f.nominalId, item, "FeatureNominalId", "FeatureNominal");

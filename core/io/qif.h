@@ -51,6 +51,7 @@ struct QifFeature {
   std::optional<double> diameter;            ///< nominal Diameter of the definition (mm)
   std::string internalExternal;              ///< INTERNAL, EXTERNAL, NOT_APPLICABLE or empty
   long line = 0;                             ///< the line of the FeatureItem
+  bool set = false;  ///< DeterminationMode Set: given (a reference feature), not measured
   /// A Point, EdgePoint or Plane: its direction is a surface normal. Circles, cylinders and the other
   /// types carry an axis (or nothing) instead.
   bool hasSurfaceNormal() const;

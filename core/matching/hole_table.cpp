@@ -16,6 +16,8 @@
 #include "core/io/calypso.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
+#include "core/io/qif.h"
+#include "core/matching/qif_points.h"
 
 namespace metrofit {
 namespace {
@@ -291,8 +293,19 @@ ProbePointSet probePointsFromCmmReport(const CmmTextReport& report, std::size_t 
 }
 
 ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minPoints,
-                                       const CsvReadOptions& csv) {
+                                       const CsvReadOptions& csv, int part) {
   const std::string text = readFile(path);
+  if (looksLikeQif(text)) {
+    const QifFile file = qifFromText(text, displayPath(path));
+    ProbePointSet set = qifProbePoints(file, qifPartIndex(file, part));
+    if (set.points.size() < minPoints)
+      throw ValidationError(ErrorContext{set.source, 0, 0, {}},
+                            "part " + std::to_string(qifPartIndex(file, part) + 1) + " has " +
+                                std::to_string(set.points.size()) +
+                                " measured features with a location, at least " + std::to_string(minPoints) +
+                                " needed");
+    return set;
+  }
   if (looksLikeHoleTable(text)) return holeTableFromText(text, displayPath(path), minPoints).points;
   if (looksLikeCalypsoFeatures(text))
     return probePointsFromCsv(calypsoFeaturesProbeTable(text, displayPath(path)), minPoints);

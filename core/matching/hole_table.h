@@ -58,11 +58,12 @@ HoleTable readHoleTable(const std::string& path, std::size_t minPoints = 3);
 ProbePointSet probePointsFromCmmReport(const CmmTextReport& report, std::size_t minPoints = 3);
 
 /// Probe points from a file in any accepted form, detected by content: a PC-DMIS hole table
-/// (looksLikeHoleTable), a Zeiss Calypso _fet table (core/io/calypso.h: calypsoFeaturesProbeTable), a CMM
-/// text report (looksLikeCmmTextReport: probePointsFromCmmReport) or the CSV of
+/// (looksLikeHoleTable), a Zeiss Calypso _fet table (core/io/calypso.h: calypsoFeaturesProbeTable), a QIF 3
+/// Results file (core/matching/qif_points.h: every measured feature of part `part`, 1-based, 0 for a file
+/// of one part), a CMM text report (looksLikeCmmTextReport: probePointsFromCmmReport) or the CSV of
 /// docs/file-formats.md#contact-probed-points in the dialect `csv` (probePointsFromCsv). The file is read
 /// once, so "-" (standard input) works.
 ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minPoints = 3,
-                                       const CsvReadOptions& csv = {});
+                                       const CsvReadOptions& csv = {}, int part = 0);
 
 }  // namespace metrofit

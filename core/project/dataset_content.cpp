@@ -10,8 +10,10 @@
 #include "core/io/calypso.h"
 #include "core/io/dmis.h"
 #include "core/io/file_io.h"
+#include "core/io/qif.h"
 #include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
+#include "core/matching/qif_points.h"
 #include "core/project/datasets.h"
 #include "core/project/import_guess.h"
 #include "core/project/nominals.h"
@@ -381,7 +383,13 @@ DatasetContent readDatasetContentFile(const std::string& file, const DatasetRef&
     return columnsContent(std::move(t), "setup model", file);
   }
   const std::string text = readFile(file, 256u << 20);
-  if (kind == dataset_kind::kDfq || kind == dataset_kind::kCalypso ||
+  if (kind == dataset_kind::kProbePoints && looksLikeQif(text)) {
+    // One measured part of a QIF file as probe points: nominal and actual locations (and normals).
+    const QifFile qif = qifFromText(text, file);
+    const ProbePointSet set = qifProbePoints(qif, qifPartIndex(qif, dataset.part, "part"));
+    return columnsContent(parseCsv(probePointsToCsv(set), file), "QIF features", file);
+  }
+  if (kind == dataset_kind::kDfq || kind == dataset_kind::kCalypso || kind == dataset_kind::kQif ||
       (kind == dataset_kind::kProbePoints && looksLikeCalypsoFeatures(text))) {
     if (const auto report = characteristicTableReport(text, file, kind))
       return featuresContent(cmmReportFeatureRows(*report), toString(report->format), file);

@@ -13,10 +13,12 @@
 #include "core/io/cmm_text_report.h"
 #include "core/io/dfq.h"
 #include "core/io/file_io.h"
+#include "core/io/qif.h"
 #include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
 #include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
+#include "core/matching/qif_points.h"
 #include "core/project/import_guess.h"
 #include "core/project/nominals.h"
 #include "core/setup/model.h"
@@ -39,7 +41,8 @@ const std::map<std::string, std::string>& kinds() {
                                                     {"hole-table", dataset_kind::kHoleTable},
                                                     {"dfq", dataset_kind::kDfq},
                                                     {"calypso", dataset_kind::kCalypso},
-                                                    {"cad-model", dataset_kind::kCadModel}};
+                                                    {"cad-model", dataset_kind::kCadModel},
+                                                    {"qif", dataset_kind::kQif}};
   return k;
 }
 
@@ -68,8 +71,9 @@ long dmisMeasuredCount(const std::string& text) {
 /// Reads `file` (shown as `shown` in messages) as `kind` says.
 /// `measuredOnly`: a probe-point file of measured points only (its nominals come from elsewhere,
 /// core/project/nominals.h).
+/// `part`: a QIF file read as probe points, the measured part (1-based; 0: the file's only one).
 DatasetSummary inspect(const std::string& file, const std::string& shown, const std::string& kind,
-                       const CsvReadOptions& csv, bool measuredOnly = false) {
+                       const CsvReadOptions& csv, bool measuredOnly = false, int part = 0) {
   DatasetSummary s;
   s.kind = kind;
   if (kind == dataset_kind::kSetupModel) {
@@ -83,6 +87,28 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
     return s;
   }
   const std::string text = readFile(file, 256u << 20);
+  if (part > 0 && !looksLikeQif(text))
+    throw ValidationError(ErrorContext{shown, 0, 0, "part"},
+                          "applies to a QIF file added as probe points (one measured part of it)");
+  if (kind == dataset_kind::kQif || (kind == dataset_kind::kProbePoints && looksLikeQif(text))) {
+    if (kind == dataset_kind::kProbePoints) {
+      const QifFile qif = qifFromText(text, shown);
+      const ProbePointSet set = qifProbePoints(qif, qifPartIndex(qif, part, "part"));
+      s.rows = static_cast<long>(set.points.size());
+      s.columns = {"id", "surface", "qx", "qy", "qz"};
+      if (set.hasNormals) s.columns.insert(s.columns.end(), {"nx", "ny", "nz"});
+      s.columns.insert(s.columns.end(), {"px", "py", "pz"});
+      return s;
+    }
+    // The parts (one row each) and the characteristics measured on them.
+    const CmmTextReport report = *characteristicTableReport(text, shown, kind);
+    s.rows = static_cast<long>(report.runs.size());
+    std::set<std::string> seen;
+    for (const CmmRun& run : report.runs)
+      for (const CmmFeature& f : run.features)
+        if (seen.insert(f.featureName).second) s.columns.push_back(f.featureName);
+    return s;
+  }
   if (kind == dataset_kind::kDfq || kind == dataset_kind::kCalypso ||
       (kind == dataset_kind::kProbePoints && looksLikeCalypsoFeatures(text))) {
     if (const auto table = characteristicTableReport(text, shown, kind)) {
@@ -170,6 +196,7 @@ std::string extensionFor(const std::string& kind) {
   if (kind == dataset_kind::kDmis) return ".dmi";
   if (kind == dataset_kind::kHoleTable) return ".txt";
   if (kind == dataset_kind::kCadModel) return ".stl";
+  if (kind == dataset_kind::kQif) return ".qif";
   return ".csv";
 }
 
@@ -177,6 +204,12 @@ std::string extensionFor(const std::string& kind) {
 
 std::optional<CmmTextReport> characteristicTableReport(std::string_view text, const std::string& shown,
                                                        const std::string& kind) {
+  if (kind == dataset_kind::kQif) {
+    if (!looksLikeQif(text))
+      throw ParseError(ErrorContext{shown, 1, 0, {}},
+                       "not a QIF 3 document (its root element is not QIFDocument)");
+    return qifCmmReport(qifFromText(text, shown));
+  }
   if (kind == dataset_kind::kDfq) {
     if (!looksLikeDfq(text))
       throw ParseError(ErrorContext{shown, 1, 0, {}},
@@ -195,8 +228,20 @@ std::optional<CmmTextReport> characteristicTableReport(std::string_view text, co
 const std::vector<std::string>& datasetKindNames() {
   static const std::vector<std::string> names{"thermal-log", "probe-points",   "circular-test", "cmm-report",
                                               "setup-model", "feature-series", "dmis",          "hole-table",
-                                              "dfq",         "calypso",        "cad-model"};
+                                              "dfq",         "calypso",        "cad-model",     "qif"};
   return names;
+}
+
+std::vector<std::string> datasetKindsServing(const std::string& wanted) {
+  if (wanted == dataset_kind::kCmmReport)
+    return {dataset_kind::kCmmReport, dataset_kind::kDmis, dataset_kind::kDfq, dataset_kind::kCalypso,
+            dataset_kind::kQif};
+  return {wanted};
+}
+
+bool datasetKindServes(const std::string& wanted, const std::string& kind) {
+  const std::vector<std::string> kinds = datasetKindsServing(wanted);
+  return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
 }
 
 std::string datasetKindFromName(const std::string& name, const std::string& field) {
@@ -212,12 +257,12 @@ std::string datasetKindFromName(const std::string& name, const std::string& fiel
 bool datasetKindIsCsv(const std::string& kind) {
   return kind != dataset_kind::kSetupModel && kind != dataset_kind::kDmis &&
          kind != dataset_kind::kHoleTable && kind != dataset_kind::kDfq && kind != dataset_kind::kCalypso &&
-         kind != dataset_kind::kCadModel;
+         kind != dataset_kind::kCadModel && kind != dataset_kind::kQif;
 }
 
 DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset) {
   const std::string path = resolveDatasetPath(projectPath, dataset);
-  DatasetSummary s = inspect(path, path, dataset.kind, dataset.csv, !dataset.nominals.empty());
+  DatasetSummary s = inspect(path, path, dataset.kind, dataset.csv, !dataset.nominals.empty(), dataset.part);
   if (!dataset.paths.empty()) {
     // A DMIS series: every file is a DMIS output file; the rows of all of them.
     const std::vector<std::string> files = resolveDatasetPaths(projectPath, dataset);
@@ -251,7 +296,8 @@ CsvTable readDatasetTable(const std::string& projectPath, const DatasetRef& data
   // A feature series may be a CMM text report (one row per run); every other kind is CSV here.
   if (dataset.kind == dataset_kind::kFeatureSeries) return readFeatureTable(path, dataset.csv);
   // DFQ and Calypso _chr: the feature table (one row per measured part); Calypso _fet: the probe points.
-  if (dataset.kind == dataset_kind::kDfq || dataset.kind == dataset_kind::kCalypso) {
+  if (dataset.kind == dataset_kind::kDfq || dataset.kind == dataset_kind::kCalypso ||
+      dataset.kind == dataset_kind::kQif) {
     const std::string text = readFile(path, 256u << 20);
     if (const auto report = characteristicTableReport(text, path, dataset.kind))
       return cmmReportFeatureTable(*report);
@@ -354,8 +400,14 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
     ref.nominals = request.nominals;
     (void)nominalReference(project, ref);  // another probe-point dataset, or a CAD part, of the project
   }
+  if (request.part > 0) {
+    if (ref.kind != dataset_kind::kProbePoints)
+      throw ValidationError(ErrorContext{displayPath(request.file), 0, 0, "--part"},
+                            "applies to a QIF file added as probe points (one measured part of it)");
+    ref.part = request.part;
+  }
   const DatasetSummary s =
-      inspect(request.file, displayPath(request.file), ref.kind, ref.csv, !ref.nominals.empty());
+      inspect(request.file, displayPath(request.file), ref.kind, ref.csv, !ref.nominals.empty(), ref.part);
   if (dmisReading && !s.dmis) throw notDmis();
   const fs::path folder = fs::absolute(fs::path(parentFolder(projectPath))).lexically_normal();
   const auto relativePath = [&folder](const std::string& given) {

@@ -58,6 +58,14 @@ struct DatasetSummary {
   std::vector<CsvRowProblem> skipped;  ///< rows left out (CsvReadOptions::skipBadRows)
 };
 
+/// The kinds (project spelling) a study setting that asks for a `wanted` dataset may name: `wanted`
+/// itself, and for a CMM report (dataset_kind::kCmmReport) every report of measured dimensions: DMIS
+/// output, a Q-DAS DFQ file, a Calypso _chr table, a QIF Results file. One list for the studies, the
+/// settings check and the GUI.
+std::vector<std::string> datasetKindsServing(const std::string& wanted);
+/// True when a dataset of `kind` serves where a `wanted` one is asked for (datasetKindsServing).
+bool datasetKindServes(const std::string& wanted, const std::string& kind);
+
 /// Reads a dataset as its kind says, with its dialect and mapping; InputError when it cannot be read.
 DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset);
 /// `project list`: [{"id", "kind", "path", "rows", "columns"}] in project order; a dataset that skips
@@ -94,6 +102,8 @@ struct AddDatasetRequest {
   /// A probe-point file of measured points only: where its nominals come from (core/project/nominals.h);
   /// checked (the element fits, the reference pairs) before the dataset is added.
   NominalSource nominals = {};
+  /// A QIF file of several measured parts added as probe points: the part (1-based; DatasetRef::part).
+  int part = 0;
 };
 
 /// The kind `project add` takes to mean "guess it from the file" (guessDatasetKind).

@@ -147,7 +147,8 @@ NominalsOutcome nominalsFor(const geometry::PointSet& measured, const NominalSou
 
 ProbePointSet readProbePointDataset(const DatasetRef& dataset, const DatasetRef* reference,
                                     std::size_t minPoints) {
-  if (dataset.nominals.empty()) return readProbePointsAnyFormat(dataset.path, minPoints, dataset.csv);
+  if (dataset.nominals.empty())
+    return readProbePointsAnyFormat(dataset.path, minPoints, dataset.csv, dataset.part);
   const geometry::PointSet measured = geometry::readPointTable(dataset.path, dataset.csv);
   std::optional<geometry::PointSet> ref;
   if (dataset.nominals.from == "cad") {

@@ -95,6 +95,7 @@ nlohmann::json Project::toJson() const {
       o["dmis"] = std::move(dmis);
     }
     if (!d.nominals.empty()) o["nominals"] = nominalSourceToJson(d.nominals);
+    if (d.part > 0) o["part"] = d.part;
     if (!d.csv.columnMap.empty()) {
       nlohmann::json map = nlohmann::json::object();
       for (const auto& [role, column] : d.csv.columnMap) map[role] = column;
@@ -201,6 +202,11 @@ Project Project::fromJson(const nlohmann::json& j, const std::string& source) {
         if (ref.kind != dataset_kind::kProbePoints)
           d.fail(inDataset + "only a probe-point dataset takes its nominals from elsewhere", "nominals");
         ref.nominals = nominalSourceFromJson(d.object("nominals"), inDataset);
+      }
+      if (d.has("part")) {
+        const long n = d.integer("part");
+        if (n < 1 || n > 1000000) d.fail(inDataset + "must be a measured part's number, from 1", "part");
+        ref.part = static_cast<int>(n);
       }
       if (d.has("map")) {
         const JsonReader map = d.object("map");

@@ -73,6 +73,9 @@ inline constexpr const char* kDfq = "dfq";
 /// A Zeiss Calypso table file: characteristics (_chr) or features as probe points (_fet)
 /// (core/io/calypso.h).
 inline constexpr const char* kCalypso = "calypso";
+/// A QIF 3 Results file (core/io/qif.h): measured parts with their characteristics (a CMM report series)
+/// and features (probe points: nominal and actual locations, normals).
+inline constexpr const char* kQif = "qif";
 }  // namespace dataset_kind
 
 /// The studies of a project, in navigator order.
@@ -115,6 +118,9 @@ struct DatasetRef {
   std::vector<std::string> paths = {};
   /// A probe-point dataset of measured points only: where its nominals come from (see above).
   NominalSource nominals = {};
+  /// A file of several measured parts (QIF) read as probe points: the part to read, 1-based ("part");
+  /// 0: the file must hold one part.
+  int part = 0;
   bool operator==(const DatasetRef&) const = default;
 };
 

@@ -1,11 +1,12 @@
 #include "core/study/setup_study.h"
 
+#include <algorithm>
 #include <chrono>
-#include <initializer_list>
 #include <map>
 #include <unordered_map>
 
 #include "core/common/error.h"
+#include "core/project/datasets.h"
 #include "core/project/project.h"
 #include "core/setup/exact.h"
 #include "core/setup/methods.h"
@@ -15,15 +16,12 @@ namespace metrofit {
 namespace {
 
 /// The study's string setting `key` naming a dataset, when it names one of `kinds`; else the first dataset
-/// of the first of `kinds` the project has (a DMIS output file, a DFQ file and a Calypso _chr table are
-/// CMM reports too).
+/// of the first of `kinds` the project has (datasetKindsServing: a DMIS output file, a DFQ file, a Calypso
+/// _chr table and a QIF file are CMM reports too).
 const DatasetRef* studyDataset(const Project& project, const nlohmann::json* study, const char* key,
-                               std::initializer_list<const char*> kinds) {
+                               const std::vector<std::string>& kinds) {
   const auto fits = [&](const DatasetRef* d) {
-    if (d == nullptr) return false;
-    for (const char* k : kinds)
-      if (d->kind == k) return true;
-    return false;
+    return d != nullptr && std::find(kinds.begin(), kinds.end(), d->kind) != kinds.end();
   };
   if (study != nullptr) {
     const auto it = study->find(key);
@@ -32,7 +30,7 @@ const DatasetRef* studyDataset(const Project& project, const nlohmann::json* stu
       if (fits(d)) return d;
     }
   }
-  for (const char* k : kinds)
+  for (const std::string& k : kinds)
     if (const DatasetRef* d = project.firstOfKind(k)) return d;
   return nullptr;
 }
@@ -48,9 +46,8 @@ SetupStudyFiles setupStudyFiles(const Project& project, const std::string& proje
     files.modelId = m->id;
     files.modelPath = resolveDatasetPath(projectPath, *m);
   }
-  if (const DatasetRef* r = studyDataset(
-          project, study, "dataset",
-          {dataset_kind::kCmmReport, dataset_kind::kDmis, dataset_kind::kDfq, dataset_kind::kCalypso})) {
+  if (const DatasetRef* r =
+          studyDataset(project, study, "dataset", datasetKindsServing(dataset_kind::kCmmReport))) {
     files.reportId = r->id;
     files.reportPath = resolveDatasetPath(projectPath, *r);
     files.reportPaths = resolveDatasetPaths(projectPath, *r);

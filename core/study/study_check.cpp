@@ -40,9 +40,15 @@ std::vector<StudyIssue> checkStudies(const Project& project) {
     const DatasetRef* d = project.dataset(id);
     if (d == nullptr) {
       issues.push_back({field, "names the dataset '" + id + "', which the project does not have"});
-    } else if (!kind.empty() && d->kind != kind) {
-      issues.push_back(
-          {field, "names '" + id + "', a " + d->kind + " dataset; it must be a " + kind + " dataset"});
+    } else if (!kind.empty()) {
+      const std::vector<std::string> serving = datasetKindsServing(kind);
+      if (std::find(serving.begin(), serving.end(), d->kind) == serving.end()) {
+        std::string also;
+        for (std::size_t k = 1; k < serving.size(); ++k) also += (k > 1 ? ", " : " (or ") + serving[k];
+        if (!also.empty()) also += ")";
+        issues.push_back({field, "names '" + id + "', a " + d->kind + " dataset; it must be a " + kind +
+                                     also + " dataset"});
+      }
     }
   };
   const auto& types = studyTypes();

@@ -405,5 +405,55 @@ TEST_F(SetupReportModelTest, DmisSeriesIsOneDatasetAndOneSetupSeries) {
   EXPECT_EQ(*document_->project().dataset(reportId.toStdString()), before);
 }
 
+// A QIF 3 Results file of six measured parts (the public sample, README facts in
+// ../shared/data/real/cmm-qif-samples): the import dialog recognises it, the setup page makes a model of
+// its characteristics and runs the exact optimum on the six parts as core does; read as probe points, the
+// dialog offers its parts.
+TEST_F(SetupReportModelTest, QifResultsToModelRunsLikeCoreAndOffersItsParts) {
+  const QString file =
+      QString::fromStdString(test::realData("cmm-qif-samples/SheetMetal_QIF_Results_6_samples.QIF").string());
+  METROFIT_REQUIRE_PATH(file.toStdString());
+  ImportDialog dialog(document_->project(), document_->projectPathForDatasets());
+  dialog.setFile(file);
+  EXPECT_EQ(dialog.kind(), QStringLiteral("qif"));
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.qifParts().size(), 6);
+  EXPECT_EQ(dialog.qifPart(), 0) << "a qif dataset is every part";
+  const DatasetRef qif = dialog.dataset();
+  EXPECT_EQ(qif.kind, dataset_kind::kQif);
+  // As probe points: one part, chosen in the dialog (1 unless chosen), named by number and serial.
+  dialog.setKind(QStringLiteral("probe-points"));
+  ASSERT_EQ(dialog.qifParts().size(), 6);
+  EXPECT_TRUE(dialog.qifParts()[5].startsWith(QStringLiteral("6 · SN5802806")))
+      << dialog.qifParts()[5].toStdString();
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.dataset().part, 1);
+  dialog.setQifPart(6);
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(dialog.dataset().part, 6);
+  grab(&dialog, "setup_report_qif_import.png");
+
+  document_->addDataset(qif);
+  makePage();
+  EXPECT_TRUE(page_->reportDatasets().contains(QString::fromStdString(qif.id)));
+  QString error;
+  DialogHolder report(page_->makeReportDialog(QString::fromStdString(qif.id), &error));
+  ASSERT_TRUE(report) << error.toStdString();
+  const ReportFeatures features =
+      datasetReportFeatures(document_->projectPathForDatasets().toStdString(), qif);
+  EXPECT_EQ(features.format, "QIF results file");
+  const int position = rowOf(features, "W1RXXMRA19P:actual");
+  ASSERT_GE(position, 0);
+  // README: a position zone of diameter 1.25 -> nominal 0, limits 0 and 1.25.
+  EXPECT_EQ(*features.characteristics[position].nominal, 0.0);
+  EXPECT_EQ(*features.characteristics[position].lower, 0.0);
+  EXPECT_EQ(*features.characteristics[position].upper, 1.25);
+  report->checkAll(true);
+  ASSERT_TRUE(page_->applyReportDialog(*report, QString::fromStdString(qif.id), &error))
+      << error.toStdString();
+  EXPECT_EQ(page_->modelEditor()->model().dimensions.size(), report->checkedRows().size());
+  runAndCompare("QIF");
+}
+
 }  // namespace
 }  // namespace metrofit

@@ -179,6 +179,48 @@ inline const std::string kFet =
     "B\t1\tP2\t0\t10,0100\t0\t0\t10\t0\r\n"
     "B\t1\tP3\t0\t0\t10,0100\t0\t0\t10\r\n";
 
+/// A QIF 3 Results file written from the schema's element names: three probed points on three faces,
+/// measured on two parts (lines 18-20 and 23-25).
+inline const std::string kQif =
+    "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+    "<QIFDocument xmlns=\"http://qifstandards.org/xsd/qif3\" versionQIF=\"3.0.0\">\n"
+    "<FileUnits><PrimaryUnits><LinearUnit><SIUnitName>millimeter</SIUnitName><UnitName>mm</UnitName>"
+    "</LinearUnit></PrimaryUnits></FileUnits>\n"
+    "<Features>\n"
+    "<FeatureNominals n=\"3\">\n"
+    "<PointFeatureNominal id=\"1\"><Location>10 0 0</Location><Normal>1 0 0</Normal></PointFeatureNominal>\n"
+    "<PointFeatureNominal id=\"2\"><Location>0 10 0</Location><Normal>0 1 0</Normal></PointFeatureNominal>\n"
+    "<PointFeatureNominal id=\"3\"><Location>0 0 10</Location><Normal>0 0 1</Normal></PointFeatureNominal>\n"
+    "</FeatureNominals>\n"
+    "<FeatureItems n=\"3\">\n"
+    "<PointFeatureItem id=\"4\"><FeatureNominalId>1</FeatureNominalId><FeatureName>P1</FeatureName>"
+    "</PointFeatureItem>\n"
+    "<PointFeatureItem id=\"5\"><FeatureNominalId>2</FeatureNominalId><FeatureName>P2</FeatureName>"
+    "</PointFeatureItem>\n"
+    "<PointFeatureItem id=\"6\"><FeatureNominalId>3</FeatureNominalId><FeatureName>P3</FeatureName>"
+    "</PointFeatureItem>\n"
+    "</FeatureItems>\n"
+    "</Features>\n"
+    "<Results><MeasurementResultsSet>\n"
+    "<MeasurementResults id=\"7\"><MeasuredFeatures>\n"
+    "<PointFeatureMeasurement id=\"8\"><FeatureItemId>4</FeatureItemId><Location>10.01 0 0</Location>"
+    "</PointFeatureMeasurement>\n"
+    "<PointFeatureMeasurement id=\"9\"><FeatureItemId>5</FeatureItemId><Location>0 10.01 0</Location>"
+    "</PointFeatureMeasurement>\n"
+    "<PointFeatureMeasurement id=\"10\"><FeatureItemId>6</FeatureItemId><Location>0 0 10.01</Location>"
+    "</PointFeatureMeasurement>\n"
+    "</MeasuredFeatures></MeasurementResults>\n"
+    "<MeasurementResults id=\"11\"><MeasuredFeatures>\n"
+    "<PointFeatureMeasurement id=\"12\"><FeatureItemId>4</FeatureItemId><Location>10.02 0 0</Location>"
+    "</PointFeatureMeasurement>\n"
+    "<PointFeatureMeasurement id=\"13\"><FeatureItemId>5</FeatureItemId><Location>0 10.02 0</Location>"
+    "</PointFeatureMeasurement>\n"
+    "<PointFeatureMeasurement id=\"14\"><FeatureItemId>6</FeatureItemId><Location>0 0 10.02</Location>"
+    "</PointFeatureMeasurement>\n"
+    "</MeasuredFeatures></MeasurementResults>\n"
+    "</MeasurementResultsSet></Results>\n"
+    "</QIFDocument>\n";
+
 inline std::string circle() {
   // 16 points CCW then 16 CW on a 50 mm circle with a small, smooth deviation.
   std::string s = "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n";
@@ -1190,6 +1232,42 @@ inline std::vector<Case> cases() {
        "match --data t_fet.txt --out out.json",
        {{"t_fet.txt", replaced(kFet, "10,0100", "")}},
        {"t_fet.txt:2:4", "field 'x'", "a number is missing"},
+       json},
+      // ---- QIF 3 Results files --------------------------------------------------------------------
+      {"QF01",
+       "QIF results file",
+       "several measured parts given to match without --part",
+       "match --data w.qif --out out.json",
+       {{"w.qif", kQif}},
+       {"w.qif", "field '--part'", "2 measured parts"},
+       json},
+      {"QF02",
+       "QIF results file",
+       "--part beyond the file's parts",
+       "match --data w.qif --part 3 --out out.json",
+       {{"w.qif", kQif}},
+       {"w.qif", "field '--part'", "part 3 asked for"},
+       json},
+      {"QF03",
+       "QIF results file",
+       "a measurement of a feature item the file does not have",
+       "match --data w.qif --part 1 --out out.json",
+       {{"w.qif", replaced(kQif, "<FeatureItemId>5</FeatureItemId>", "<FeatureItemId>55</FeatureItemId>")}},
+       {"w.qif:19", "55"},
+       json},
+      {"QF04",
+       "QIF results file",
+       "a coordinate that is not a number",
+       "match --data w.qif --part 1 --out out.json",
+       {{"w.qif", replaced(kQif, "10.01 0 0", "10.O1 0 0")}},
+       {"w.qif:18", "10.O1"},
+       json},
+      {"QF05",
+       "QIF results file",
+       "a truncated file",
+       "match --data w.qif --part 1 --out out.json",
+       {{"w.qif", kQif.substr(0, kQif.find("<MeasurementResults id=\"11\">") + 20)}},
+       {"w.qif:22"},
        json},
       // ---- fit-element points (CSV) ---------------------------------------------------------------
       {"FE01",

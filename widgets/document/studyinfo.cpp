@@ -70,8 +70,8 @@ QString studySummary(const QString& s) {
 
 QStringList studyDatasetKinds(const QString& s) {
   if (s == QLatin1String(study::kSetup))
-    return {dataset_kind::kSetupModel, dataset_kind::kCmmReport, dataset_kind::kDmis, dataset_kind::kDfq,
-            dataset_kind::kCalypso};
+    return {dataset_kind::kSetupModel, dataset_kind::kCmmReport, dataset_kind::kDmis,
+            dataset_kind::kDfq,        dataset_kind::kCalypso,   dataset_kind::kQif};
   if (s == QLatin1String(study::kMatching))
     return {dataset_kind::kProbePoints, dataset_kind::kHoleTable, dataset_kind::kCadModel};
   if (s == QLatin1String(study::kKinematics))
@@ -110,6 +110,8 @@ QString datasetKindTitle(const QString& kind) {
     return QCoreApplication::translate("StudyInfo", "Zeiss Calypso table");
   if (kind == QLatin1String(dataset_kind::kCadModel))
     return QCoreApplication::translate("StudyInfo", "CAD part (STL)");
+  if (kind == QLatin1String(dataset_kind::kQif))
+    return QCoreApplication::translate("StudyInfo", "QIF results");
   return kind;
 }
 

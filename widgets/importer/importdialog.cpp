@@ -31,6 +31,7 @@
 #include "core/geometry/point_table.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/file_io.h"
+#include "core/io/qif.h"
 #include "core/matching/hole_table.h"
 #include "core/project/datasets.h"
 #include "core/project/import_guess.h"
@@ -271,11 +272,21 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   fileRow->addWidget(fileEdit_, 1);
   fileRow->addWidget(browse);
   auto* form = new QFormLayout;
+  form_ = form;
   auto* fileLabel = new QLabel(tr("&File:"), this);
   fileLabel->setBuddy(browse);
   form->addRow(fileLabel, fileRow);
   form->addRow(tr("&Kind:"), kind_);
   form->addRow(tr("&Id:"), id_);
+  // A QIF file holds one or several measured parts; probe points are those of one part.
+  qifPart_ = new QComboBox(this);
+  qifPart_->setObjectName(QStringLiteral("importQifPart"));
+  qifPart_->setToolTip(
+      tr("The measured part (MeasurementResults) of the QIF file whose features become "
+         "the probe points"));
+  form->addRow(tr("Measured &part:"), qifPart_);
+  form->setRowVisible(qifPart_, false);
+  connect(qifPart_, &QComboBox::currentIndexChanged, this, [this] { revalidate(); });
 
   auto* dialect = new QGroupBox(tr("How the file is read"), this);
   auto* dialectForm = new QFormLayout(dialect);
@@ -450,11 +461,12 @@ void ImportDialog::browse() {
   // All files first: CMM exports and data loggers often write files without an extension (a Wenzel
   // point file "SPH1_1"), which the data-file filter would hide.
   QString selected = tr("All files (*)");
-  const QString path = QFileDialog::getOpenFileName(
-      this, tr("Import data"), start,
-      tr("All files (*)") + QStringLiteral(";;") +
-          tr("Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.dfq)"),
-      &selected);
+  const QString path =
+      QFileDialog::getOpenFileName(this, tr("Import data"), start,
+                                   tr("All files (*)") + QStringLiteral(";;") +
+                                       tr("Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml "
+                                          "*.qif *.QIF *.dfq *.DFQ *.stl *.STL)"),
+                                   &selected);
   if (!path.isEmpty()) setFile(path);
 }
 
@@ -488,11 +500,43 @@ void ImportDialog::setFile(const QString& path) {
     id_->clear();
     id_->setPlaceholderText(QFileInfo(file_).completeBaseName());
   }
+  // The measured parts of a QIF file (a file that does not read leaves the list empty: the dataset
+  // check below then names its problem).
+  qifParts_.clear();
+  if (looksLikeQif(text_)) {
+    try {
+      const QifFile qif = qifFromText(text_, displayPath(file_.toStdString()));
+      for (std::size_t k = 0; k < qif.parts.size(); ++k) {
+        QStringList label{QString::number(k + 1)};
+        if (!qif.parts[k].serial.empty()) label << QString::fromStdString(qif.parts[k].serial);
+        if (!qif.parts[k].status.empty()) label << QString::fromStdString(qif.parts[k].status);
+        qifParts_ << label.join(QStringLiteral(" · "));
+      }
+    } catch (const std::exception&) {
+      qifParts_.clear();
+    }
+  }
+  {
+    const QSignalBlocker block(qifPart_);
+    qifPart_->clear();
+    qifPart_->addItems(qifParts_);
+  }
   roles_.clear();
   header_.clear();
   revalidate();
   guessRoles();
   revalidate();
+}
+
+int ImportDialog::qifPart() const {
+  // Only probe points are one part; a qif (or cmm-report) dataset reads every part.
+  const bool choosesPart =
+      qifParts_.size() > 1 && projectKind(kind()) == QLatin1String(dataset_kind::kProbePoints);
+  return choosesPart ? qifPart_->currentIndex() + 1 : 0;
+}
+
+void ImportDialog::setQifPart(int part) {
+  if (part >= 1 && part <= qifPart_->count()) qifPart_->setCurrentIndex(part - 1);
 }
 
 QString ImportDialog::file() const {
@@ -816,6 +860,7 @@ void ImportDialog::revalidate() {
   rowProblems_->clear();
   dmisBox_->setVisible(!file_.isEmpty() && readError_.isEmpty() && isDmisFile());
   nominalsBox_->setVisible(needsNominals());
+  form_->setRowVisible(qifPart_, qifPart() > 0);
   auto* problemsTitle = findChild<QLabel*>(QStringLiteral("importRowProblemsTitle"));
   problemsTitle->setText(tr("Rows that cannot be read:"));
   int skipped = 0;
@@ -893,6 +938,7 @@ void ImportDialog::revalidate() {
       request.csv = csvOptions();
       request.dmis = dmisOptions();
       if (needsNominals()) request.nominals = nominals();
+      request.part = qifPart();
       if (readsSeries())
         for (const QString& more : seriesFiles_)
           request.moreFiles.push_back(QFile::encodeName(more).toStdString());

@@ -42,6 +42,7 @@ class QCheckBox;
 class QComboBox;
 class QDialogButtonBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QGroupBox;
 class QLabel;
 class QLineEdit;
@@ -113,6 +114,12 @@ class ImportDialog : public QDialog {
   /// empty when there are none.
   QString nominalsSummary() const { return nominalsSummary_; }
 
+  /// A QIF file of several measured parts read as probe points: the parts ("1 · SN5802801 · PASS"), the
+  /// chosen one (1-based) and the choice. Empty / 0 for every other file.
+  QStringList qifParts() const { return qifParts_; }
+  int qifPart() const;
+  void setQifPart(int part);
+
   /// True when the file can be read as the chosen kind (the Import button is enabled).
   bool canImport() const { return problem_.isEmpty(); }
   /// The problem that keeps the file from being imported (one line), empty when there is none.
@@ -175,6 +182,9 @@ class ImportDialog : public QDialog {
   QComboBox* nominalReference_ = nullptr;
   QComboBox* nominalPair_ = nullptr;
   QComboBox* nominalCad_ = nullptr;
+  QComboBox* qifPart_ = nullptr;  ///< "Measured part" of a QIF file read as probe points
+  QStringList qifParts_;
+  QFormLayout* form_ = nullptr;
   QString nominalsSummary_;
   QStringList seriesFiles_;
   QListWidget* rowProblems_;

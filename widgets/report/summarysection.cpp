@@ -53,6 +53,12 @@ QString kindName(const std::string& kind) {
   if (kind == dataset_kind::kCmmReport) return ReportText::tr("CMM report");
   if (kind == dataset_kind::kSetupModel) return ReportText::tr("setup model");
   if (kind == dataset_kind::kFeatureSeries) return ReportText::tr("feature series");
+  if (kind == dataset_kind::kDmis) return ReportText::tr("DMIS output");
+  if (kind == dataset_kind::kDfq) return ReportText::tr("Q-DAS DFQ file");
+  if (kind == dataset_kind::kCalypso) return ReportText::tr("Zeiss Calypso table");
+  if (kind == dataset_kind::kQif) return ReportText::tr("QIF results");
+  if (kind == dataset_kind::kCadModel) return ReportText::tr("CAD part");
+  if (kind == dataset_kind::kHoleTable) return ReportText::tr("hole table");
   return QString::fromStdString(kind);
 }
 

@@ -356,7 +356,11 @@ TEST(Qif, ProbePoints) {
   const QifFile f = readQifFile(path);
   const ProbePointSet all = qifProbePoints(f, 0);
   EXPECT_FALSE(all.hasNormals);  // holes among them: position-only
-  ASSERT_EQ(all.points.size(), 6u);
+  // Five measured features; REFCIRC1 (DeterminationMode Set, "a non-measureable reference circle") is
+  // given, not measured, and is no probe point.
+  ASSERT_EQ(all.points.size(), 5u);
+  EXPECT_TRUE(std::none_of(all.points.begin(), all.points.end(),
+                           [](const ProbePoint& p) { return p.id == "REFCIRC1"; }));
   const ProbePointSet surface = qifProbePoints(f, 0, QifPoints::Surface);
   ASSERT_TRUE(surface.hasNormals);
   ASSERT_EQ(surface.points.size(), 3u);
@@ -365,7 +369,7 @@ TEST(Qif, ProbePoints) {
   EXPECT_NEAR(surface.deviations()[2], -0.886195693015347, 1e-9);
   const ProbePointSet holes = qifProbePoints(f, 0, QifPoints::Holes);
   EXPECT_FALSE(holes.hasNormals);
-  ASSERT_EQ(holes.points.size(), 3u);
+  ASSERT_EQ(holes.points.size(), 2u);
   EXPECT_EQ(holes.points[0].id, "HOLE1");
   expectVector(holes.points[0].nominal, 2433.974609375, 800.617431640625, 890.049621582031);
   expectVector(holes.points[0].measured, 2434.01, 801.52505599193, 889.98);
