@@ -1,6 +1,9 @@
 // metrofit-cli spc: X-bar/R chart limits, capability indices and the SPC-gated
 // compensation decision of a measured feature.
-//   spc --data F.csv --column C --subgroup N [--lsl L --usl U] [--nominal X] [--coverage K] [--out J.json]
+//   spc --data F.csv --column C --subgroup N [--base K] [--lsl L --usl U] [--nominal X] [--coverage K]
+//       [--out J.json]: N = 1 charts individuals and moving range; --base K takes the limits from the first K
+//       subgroups (phase I) and judges the later ones against them (phase II); the result lists the Nelson
+//       rules broken (core/spc/nelson.h)
 //       [--dfq F.dfq [--dfq-part P]]: also the series as a Q-DAS DFQ file (core/io/dfq.h): one
 //       characteristic (the column) with its nominal, limits, unit (the column name's suffix) and values,
 //       the times from a `timestamp` column when the file has one
@@ -39,8 +42,9 @@ namespace {
 struct SpcArgs {
   std::string data, column, characteristic, out, dfq, dfqPart;
   int subgroup = KinematicsSettings::Spc{}.subgroup;
+  int base = 0;  ///< --base K, 0 when not given
   double lsl = 0.0, usl = 0.0, nominal = 0.0, coverage = KinematicsSettings::Spc{}.coverage;
-  CLI::Option *lslOpt = nullptr, *uslOpt = nullptr, *nominalOpt = nullptr;
+  CLI::Option *lslOpt = nullptr, *uslOpt = nullptr, *nominalOpt = nullptr, *baseOpt = nullptr;
 };
 
 std::string g(double v, const char* format = "%.4g") {
@@ -50,10 +54,16 @@ std::string g(double v, const char* format = "%.4g") {
 }
 
 SpcOptions spcOptions(const SpcArgs& a) {
-  if (a.subgroup < kMinSubgroupSize || a.subgroup > kMaxSubgroupSize) {
-    throw ValidationError(
-        ErrorContext{{}, 0, 0, "--subgroup"},
-        "must be between 2 and 25 (the range of the A2/D3/D4 table), got " + std::to_string(a.subgroup));
+  if (a.subgroup < 1 || a.subgroup > kMaxSubgroupSize) {
+    throw ValidationError(ErrorContext{{}, 0, 0, "--subgroup"},
+                          "must be between 1 (individuals and moving range) and 25 (the range of the "
+                          "A2/D3/D4 table), got " +
+                              std::to_string(a.subgroup));
+  }
+  if (a.baseOpt->count() > 0 && a.base < 2) {
+    throw ValidationError(ErrorContext{{}, 0, 0, "--base"},
+                          "must be at least 2 subgroups (the limits need ranges to be set from), got " +
+                              std::to_string(a.base));
   }
   const bool hasL = a.lslOpt->count() > 0, hasU = a.uslOpt->count() > 0;
   if (hasL != hasU) {
@@ -72,6 +82,7 @@ SpcOptions spcOptions(const SpcArgs& a) {
   }
   if (a.nominalOpt->count() > 0) o.nominal = a.nominal;
   o.coverageFactor = a.coverage;
+  if (a.baseOpt->count() > 0) o.baseSubgroups = static_cast<std::size_t>(a.base);
   std::string why;
   if (!o.isValid(&why)) throw OptionsError(ErrorContext{{}, 0, 0, "spc options"}, why);
   return o;
@@ -195,6 +206,14 @@ int runSpc(const SpcArgs& a) {
     values = table.numericColumn(a.column);
     what = "column '" + a.column + "'";
   }
+  const std::size_t complete = values.size() / static_cast<std::size_t>(o.subgroupSize);
+  if (o.baseSubgroups > complete) {
+    throw ValidationError(
+        ErrorContext{source, 0, 0, "--base"},
+        "is " + std::to_string(o.baseSubgroups) + " subgroups but " + what + " has " +
+            std::to_string(complete) +
+            (o.subgroupSize == 1 ? " values" : " complete subgroups of " + std::to_string(o.subgroupSize)));
+  }
   const SpcResult r =
       analyseSpc(values, o, ErrorContext{source, 0, 0, characteristics ? "--characteristic" : a.column});
   if (!a.dfq.empty()) {
@@ -202,10 +221,20 @@ int runSpc(const SpcArgs& a) {
                                                   a.dfqPart, source)));
   }
   writeResult(a.out, dumpJson(spcResultToJson(r)));
-  std::string line = "spc: " + what + ", " + std::to_string(r.chart.subgroups()) + " subgroups of " +
-                     std::to_string(o.subgroupSize);
+  std::string line = "spc: " + what + ", " +
+                     (o.subgroupSize == 1 ? std::to_string(r.chart.subgroups()) + " individual values (X-MR)"
+                                          : std::to_string(r.chart.subgroups()) + " subgroups of " +
+                                                std::to_string(o.subgroupSize));
   if (r.valuesIgnored) line += " (" + std::to_string(r.valuesIgnored) + " trailing values left out)";
+  if (r.chart.baseSubgroups < r.chart.subgroups())
+    line += ", limits from the first " + std::to_string(r.chart.baseSubgroups);
   line += r.chart.inControl() ? ", in control" : ", OUT OF CONTROL";
+  if (!r.rules.empty()) {
+    line += " (rules broken:";
+    for (const RuleBreak& b : r.rules)
+      line += std::string(" ") + ruleChartName(b.chart) + " " + ruleName(b.rule) + ";";
+    line.back() = ')';
+  }
   line += ", sigma " + g(r.capability.sigmaWithin);
   if (r.capability.cp)
     line += ", Cp " + g(*r.capability.cp, "%.3g") + ", Cpk " + g(*r.capability.cpk, "%.3g");
@@ -219,7 +248,8 @@ int runSpc(const SpcArgs& a) {
 void registerSpcCommand(CLI::App& app) {
   auto a = std::make_shared<SpcArgs>();
   auto* sub = app.add_subcommand(
-      "spc", "X-bar/R control chart limits, Cp/Cpk and the SPC-gated compensation decision");
+      "spc",
+      "X-bar/R (or X-MR) control chart limits, Nelson rules, Cp/Cpk and the SPC-gated compensation decision");
   existingFile(
       sub->add_option(
              "--data", a->data,
@@ -232,8 +262,14 @@ void registerSpcCommand(CLI::App& app) {
       "DFQ, QIF file or Calypso _chr table: the characteristic to chart, by number (DFQ K2001, Calypso "
       "id, QIF Name) or name (DFQ K2002 description, QIF characteristic type when unique)");
   addCsvOptions(sub);
-  sub->add_option("--subgroup", a->subgroup, "Subgroup size n (2..25): consecutive rows form a subgroup")
+  sub->add_option(
+         "--subgroup", a->subgroup,
+         "Subgroup size n (1..25): consecutive rows form a subgroup; 1: individuals and moving range")
       ->required();
+  a->baseOpt = sub->add_option(
+      "--base", a->base,
+      "Control limits from the first K subgroups (phase I, K >= 2); the later ones are judged against them "
+      "(phase II). Default: every subgroup");
   a->lslOpt = sub->add_option("--lsl", a->lsl, "Lower specification limit");
   a->uslOpt = sub->add_option("--usl", a->usl, "Upper specification limit");
   a->nominalOpt =

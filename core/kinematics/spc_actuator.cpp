@@ -117,8 +117,15 @@ AxisFeatureSeries axisFeatureFromCsv(const CsvTable& t, const std::string& posit
 }
 
 bool SpcActuatorOptions::isValid(std::string* why) const {
-  // The same checks (subgroup size within the A2/D3/D4 table, positive coverage factor) as the SPC
-  // options the residual chart is built with.
+  // The residual chart is an X-bar/R chart: subgroups of 2..25 (the SPC options also take 1, for
+  // individuals). The other checks (positive coverage factor) are the SPC options' own.
+  if (subgroupSize < kMinSubgroupSize || subgroupSize > kMaxSubgroupSize) {
+    if (why) {
+      *why = "subgroup size must be between 2 and 25 (the range of the A2/D3/D4 table), got " +
+             std::to_string(subgroupSize);
+    }
+    return false;
+  }
   SpcOptions spc;
   spc.subgroupSize = subgroupSize;
   spc.coverageFactor = coverageFactor;

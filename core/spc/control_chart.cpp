@@ -55,6 +55,7 @@ ControlChartConstants computeConstants(int n) {
   c.A2 = 3.0 / (d2 * std::sqrt(static_cast<double>(n)));
   c.D3 = std::max(0.0, 1.0 - 3.0 * c.d3 / d2);
   c.D4 = 1.0 + 3.0 * c.d3 / d2;
+  c.E2 = 3.0 / d2;
   return c;
 }
 
@@ -75,17 +76,51 @@ const ControlChartConstants& controlChartConstants(int n) {
   return c;
 }
 
+const char* chartTypeName(ChartType type) {
+  return type == ChartType::IndividualsMR ? "x-mr" : "xbar-r";
+}
+
 XbarRChart xbarRChart(const std::vector<double>& values, int n, const ErrorContext& where) {
-  const ControlChartConstants& c = controlChartConstants(n);
+  controlChartConstants(n);  // OptionsError outside [2, 25]
+  return controlChart(values, n, 0, where);
+}
+
+XbarRChart controlChart(const std::vector<double>& values, int n, std::size_t base,
+                        const ErrorContext& where) {
+  if (n < 1 || n > kMaxSubgroupSize) {
+    throw OptionsError(ErrorContext{{}, 0, 0, "subgroup size"},
+                       "must be between 1 (individuals and moving range) and 25 (the range of the A2/D3/D4 "
+                       "table), got " +
+                           std::to_string(n));
+  }
+  const bool individuals = n == 1;
+  const ControlChartConstants& c = controlChartConstants(individuals ? 2 : n);
   const std::size_t k = values.size() / static_cast<std::size_t>(n);
   if (k < 2) {
+    if (individuals) {
+      throw ValidationError(where, "has " + std::to_string(values.size()) + " value" +
+                                       (values.size() == 1 ? "" : "s") +
+                                       ": at least 2 are needed for a moving range");
+    }
     throw ValidationError(where, "has " + std::to_string(values.size()) + " value" +
                                      (values.size() == 1 ? "" : "s") + ": at least 2 subgroups of " +
                                      std::to_string(n) + " (" + std::to_string(2 * n) +
                                      " values) are needed");
   }
+  if (base == 1) {
+    throw ValidationError(where,
+                          "a base of 1 subgroup has no range to set control limits from: give 2 or more");
+  }
+  if (base > k) {
+    throw ValidationError(
+        where, "has " + std::to_string(k) +
+                   (individuals ? " values" : " complete subgroups of " + std::to_string(n)) +
+                   ", fewer than the base of " + std::to_string(base) + " to set control limits from");
+  }
   XbarRChart chart;
   chart.subgroupSize = n;
+  chart.type = individuals ? ChartType::IndividualsMR : ChartType::XbarR;
+  chart.baseSubgroups = base == 0 ? k : base;
   chart.means.reserve(k);
   chart.ranges.reserve(k);
   for (std::size_t g = 0; g < k; ++g) {
@@ -99,28 +134,42 @@ XbarRChart xbarRChart(const std::vector<double>& values, int n, const ErrorConte
       }
       sum += *it;
     }
-    const auto [lo, hi] = std::minmax_element(first, last);
     chart.means.push_back(sum / n);
-    chart.ranges.push_back(*hi - *lo);
+    if (individuals) {
+      if (g > 0) chart.ranges.push_back(std::abs(*first - *(first - 1)));
+    } else {
+      const auto [lo, hi] = std::minmax_element(first, last);
+      chart.ranges.push_back(*hi - *lo);
+    }
   }
-  const double kd = static_cast<double>(k);
-  for (std::size_t g = 0; g < k; ++g) {
-    chart.grandMean += chart.means[g] / kd;
-    chart.meanRange += chart.ranges[g] / kd;
-  }
+  // Centre lines from the base: K subgroup means and their K ranges (K - 1 moving ranges).
+  const std::size_t kb = chart.baseSubgroups;
+  const std::size_t rb = individuals ? kb - 1 : kb;
+  for (std::size_t g = 0; g < kb; ++g) chart.grandMean += chart.means[g] / static_cast<double>(kb);
+  for (std::size_t j = 0; j < rb; ++j) chart.meanRange += chart.ranges[j] / static_cast<double>(rb);
+  // The mean of every subgroup, summed the same way (bit for bit grandMean when the base is all).
+  for (std::size_t g = 0; g < k; ++g) chart.meanOfAll += chart.means[g] / static_cast<double>(k);
   if (!(chart.meanRange > 0.0)) {
+    const std::string of = kb == k ? "" : " of the first " + std::to_string(kb);
     throw ValidationError(
-        where,
-        "every subgroup has a range of 0: no within-subgroup variation to set control limits "
-        "from (is the measurement resolution too coarse?)");
+        where, individuals ? "every moving range" + of +
+                                 " is 0: no variation between consecutive values to set control limits from "
+                                 "(is the measurement resolution too coarse?)"
+                           : "every subgroup" + of +
+                                 " has a range of 0: no within-subgroup variation to set control limits "
+                                 "from (is the measurement resolution too coarse?)");
   }
-  chart.xbarUcl = chart.grandMean + c.A2 * chart.meanRange;  // Eq. 18
-  chart.xbarLcl = chart.grandMean - c.A2 * chart.meanRange;  // Eq. 19
+  const double factor = individuals ? c.E2 : c.A2;
+  chart.xbarUcl = chart.grandMean + factor * chart.meanRange;  // Eq. 18
+  chart.xbarLcl = chart.grandMean - factor * chart.meanRange;  // Eq. 19
   chart.rUcl = c.D4 * chart.meanRange;
   chart.rLcl = c.D3 * chart.meanRange;
   for (std::size_t g = 0; g < k; ++g) {
     if (chart.means[g] > chart.xbarUcl || chart.means[g] < chart.xbarLcl) chart.xbarOutOfControl.push_back(g);
-    if (chart.ranges[g] > chart.rUcl || chart.ranges[g] < chart.rLcl) chart.rOutOfControl.push_back(g);
+  }
+  for (std::size_t j = 0; j < chart.ranges.size(); ++j) {
+    if (chart.ranges[j] > chart.rUcl || chart.ranges[j] < chart.rLcl)
+      chart.rOutOfControl.push_back(chart.rangeSubgroup(j));
   }
   return chart;
 }

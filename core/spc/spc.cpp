@@ -40,10 +40,13 @@ bool SpcOptions::isValid(std::string* why) const {
     if (why) *why = w;
     return false;
   };
-  if (subgroupSize < kMinSubgroupSize || subgroupSize > kMaxSubgroupSize) {
-    return no("subgroup size must be between 2 and 25 (the range of the A2/D3/D4 table), got " +
-              std::to_string(subgroupSize));
+  if (subgroupSize < 1 || subgroupSize > kMaxSubgroupSize) {
+    return no(
+        "subgroup size must be between 1 (individuals and moving range) and 25 (the range of the A2/D3/D4 "
+        "table), got " +
+        std::to_string(subgroupSize));
   }
+  if (baseSubgroups == 1) return no("the base of the control limits must be 2 or more subgroups, got 1");
   if (lsl.has_value() != usl.has_value())
     return no("give both specification limits (LSL and USL) or neither");
   if (lsl && (!std::isfinite(*lsl) || !std::isfinite(*usl))) return no("specification limits must be finite");
@@ -89,16 +92,16 @@ LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y, cons
 }
 
 Capability capability(const XbarRChart& chart, const std::vector<double>& used, const SpcOptions& o) {
-  const ControlChartConstants& c = controlChartConstants(chart.subgroupSize);
+  const ControlChartConstants& c = controlChartConstants(chart.rangeSpan());
   Capability cap;
   cap.sigmaWithin = chart.meanRange / c.d2;
   double ss = 0.0;
-  for (const double v : used) ss += (v - chart.grandMean) * (v - chart.grandMean);
+  for (const double v : used) ss += (v - chart.meanOfAll) * (v - chart.meanOfAll);
   cap.sigmaOverall = used.size() > 1 ? std::sqrt(ss / static_cast<double>(used.size() - 1)) : 0.0;
   cap.naturalTolerance =
       (chart.xbarUcl - chart.xbarLcl) * std::sqrt(static_cast<double>(chart.subgroupSize));  // Eq. 17
   if (o.lsl && o.usl) {
-    const double lsl = *o.lsl, usl = *o.usl, m = chart.grandMean;
+    const double lsl = *o.lsl, usl = *o.usl, m = chart.meanOfAll;
     cap.cp = (usl - lsl) / (6.0 * cap.sigmaWithin);  // Eq. 16
     cap.cpk = std::min(usl - m, m - lsl) / (3.0 * cap.sigmaWithin);
     if (cap.sigmaOverall > 0.0) {
@@ -113,8 +116,8 @@ SystematicError systematicError(const XbarRChart& chart, double sigmaWithin, std
                                 double nominal, double coverageFactor) {
   SystematicError s;
   s.nominal = nominal;
-  s.mean = chart.grandMean;
-  s.error = nominal - chart.grandMean;  // Eq. 20
+  s.mean = chart.meanOfAll;
+  s.error = nominal - chart.meanOfAll;  // Eq. 20
   s.standardError = sigmaWithin / std::sqrt(static_cast<double>(valuesUsed));
   s.halfWidth = coverageFactor * s.standardError;
   s.significant = std::abs(s.error) > s.halfWidth;
@@ -175,8 +178,8 @@ SpcResult analyseSpc(const std::vector<double>& values, const SpcOptions& o, con
   requireValid(o, "SPC options");
   SpcResult r;
   r.options = o;
-  r.constants = controlChartConstants(o.subgroupSize);
-  r.chart = xbarRChart(values, o.subgroupSize, where);
+  r.chart = controlChart(values, o.subgroupSize, o.baseSubgroups, where);
+  r.constants = controlChartConstants(r.chart.rangeSpan());
   r.valuesUsed = r.chart.subgroups() * static_cast<std::size_t>(o.subgroupSize);
   r.valuesIgnored = values.size() - r.valuesUsed;
   const std::vector<double> used(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(r.valuesUsed));
@@ -189,6 +192,7 @@ SpcResult analyseSpc(const std::vector<double>& values, const SpcOptions& o, con
   for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<double>(i + 1);
   r.trend = fitLine(index, used, where);
   r.decision = gateCompensation(r.chart, r.systematic, o);
+  r.rules = nelsonRules(r.chart);
   return r;
 }
 
@@ -199,11 +203,14 @@ nlohmann::json spcResultToJson(const SpcResult& r) {
   j["subgroups"] = r.chart.subgroups();
   j["values_used"] = r.valuesUsed;
   j["values_ignored"] = r.valuesIgnored;
+  j["chart_type"] = chartTypeName(r.chart.type);
+  j["base_subgroups"] = r.chart.baseSubgroups;
   j["constants"] = {{"A2", r.constants.A2},
                     {"D3", r.constants.D3},
                     {"D4", r.constants.D4},
                     {"d2", r.constants.d2},
                     {"d3", r.constants.d3}};
+  if (r.chart.type == ChartType::IndividualsMR) j["constants"]["E2"] = r.constants.E2;
   j["xbar_chart"] = {{"center", r.chart.grandMean},
                      {"ucl", r.chart.xbarUcl},
                      {"lcl", r.chart.xbarLcl},
@@ -213,9 +220,16 @@ nlohmann::json spcResultToJson(const SpcResult& r) {
                   {"ucl", r.chart.rUcl},
                   {"lcl", r.chart.rLcl},
                   {"points", r.chart.ranges},
-                  {"out_of_control", indices1(r.chart.rOutOfControl)}};
+                  {"out_of_control", indices1(r.chart.rOutOfControl)},
+                  {"first_subgroup", r.chart.rangeSubgroup(0) + 1}};
+  j["rules"] = json::array();
+  for (const RuleBreak& b : r.rules) {
+    j["rules"].push_back({{"chart", ruleChartName(b.chart)},
+                          {"rule", ruleName(b.rule)},
+                          {"subgroups", indices1(b.subgroups)}});
+  }
   j["in_control"] = r.chart.inControl();
-  j["mean"] = r.chart.grandMean;
+  j["mean"] = r.chart.meanOfAll;
   j["sigma_within"] = r.capability.sigmaWithin;
   j["sigma_overall"] = r.capability.sigmaOverall;
   j["natural_tolerance"] = r.capability.naturalTolerance;

@@ -27,6 +27,17 @@
 //   |E| within its interval         -> no (random scatter, not a systematic error)
 //   |E| below the smallest step     -> no (the machine cannot apply it)
 //   otherwise                       -> yes, correction = E (add it to the reference)
+//
+// With individuals (n = 1, control_chart.h) sigma_within = MRbar / d2(2) and Eq. 17 holds with n = 1.
+//
+// Phase I / phase II (SpcOptions::baseSubgroups = K): the chart's limits, its centre lines and
+// sigma_within come from the first K subgroups (what the limits stand for), the mean in Cpk, Ppk and
+// E and sigma_overall from every used value (the process as measured). With K = all subgroups (the
+// default) the two means are the same number, bit for bit.
+//
+// Nelson rules (nelson.h): which subgroups break each of the eight tests on the X-bar (X) and on
+// the R (MR) chart; listed in the result, they do not change `in_control` or the gate above, which
+// look at the control limits only (rule 1).
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -37,11 +48,13 @@
 #include "core/common/error.h"
 #include "core/common/text.h"
 #include "core/spc/control_chart.h"
+#include "core/spc/nelson.h"
 
 namespace metrofit {
 
 struct SpcOptions {
-  int subgroupSize = 5;
+  int subgroupSize = 5;            ///< n: 2..25 for X-bar/R, 1 for individuals and moving range
+  std::size_t baseSubgroups = 0;   ///< K >= 2: limits from the first K subgroups (phase I); 0 = all
   std::optional<double> lsl, usl;  ///< specification limits (both or neither)
   std::optional<double> nominal;   ///< desired value V of Eq. 20
   double coverageFactor = 2.0;     ///< k of the interval of the mean
@@ -91,6 +104,7 @@ struct SpcResult {
   std::optional<SystematicError> systematic;
   LineFit trend;  ///< of the used values against the sample number 1..N
   CompensationDecision decision;
+  std::vector<RuleBreak> rules;  ///< Nelson rules broken (nelson.h)
 };
 
 /// Least-squares line through (x_i, y_i); ValidationError at `where` with fewer than 2 points,
@@ -111,9 +125,12 @@ CompensationDecision gateCompensation(const XbarRChart& chart,
 SpcResult analyseSpc(const std::vector<double>& values, const SpcOptions& options,
                      const ErrorContext& where = {});
 
-/// JSON of the analysis: subgroup_size, subgroups, values_used, values_ignored, constants
-/// {A2, D3, D4, d2, d3}, xbar_chart {center, ucl, lcl, points, out_of_control},
-/// r_chart {...}, in_control, sigma_within, sigma_overall, natural_tolerance, and when given
+/// JSON of the analysis: subgroup_size, subgroups, values_used, values_ignored, chart_type ("xbar-r" or
+/// "x-mr"), base_subgroups (K), constants {A2, D3, D4, d2, d3, and E2 for x-mr: the constants of the
+/// range's span}, xbar_chart {center, ucl, lcl, points, out_of_control}, r_chart {the same, and
+/// first_subgroup: the 1-based subgroup of its first point, 2 for moving ranges}, rules [{chart
+/// "xbar"|"r", rule "nelson1".."nelson8", subgroups [1-based]}] (always present, empty when no rule is
+/// broken), in_control, mean, sigma_within, sigma_overall, natural_tolerance, and when given
 /// lsl, usl, cp, cpk, pp, ppk; nominal, systematic_error {value, standard_error, half_width,
 /// coverage_factor, significant}; trend {slope, intercept, r2, slope_std_err, angle_deg};
 /// compensation {apply, correction, reason}.

@@ -329,12 +329,16 @@ TEST(KinematicCli, SpcBadInputExits2WithOneLine) {
   for (int i = 0; i < 12; ++i)
     csv += std::to_string(i + 1) + "," + std::to_string(10.0 + 0.01 * (i % 3)) + "\n";
   test::writeText(tmp.file("f.csv"), csv);
-  expectBadInput("spc --data f.csv --column d_mm --subgroup 1",
-                 "field '--subgroup': must be between 2 and 25 (the range of the A2/D3/D4 table), got 1",
-                 tmp);
-  expectBadInput("spc --data f.csv --column d_mm --subgroup 26 --out s.json",
-                 "field '--subgroup': must be between 2 and 25 (the range of the A2/D3/D4 table), got 26",
-                 tmp);
+  expectBadInput(
+      "spc --data f.csv --column d_mm --subgroup 0",
+      "field '--subgroup': must be between 1 (individuals and moving range) and 25 (the range of the "
+      "A2/D3/D4 table), got 0",
+      tmp);
+  expectBadInput(
+      "spc --data f.csv --column d_mm --subgroup 26 --out s.json",
+      "field '--subgroup': must be between 1 (individuals and moving range) and 25 (the range of the "
+      "A2/D3/D4 table), got 26",
+      tmp);
   expectBadInput("spc --data f.csv --column d_mm --subgroup 5 --lsl 10.5 --usl 10.5",
                  "field '--lsl': lower specification limit 10.5 is not below --usl 10.5", tmp);
   expectBadInput("spc --data f.csv --column d_mm --subgroup 5 --lsl 9",
@@ -806,6 +810,105 @@ TEST(KinematicCli, PositioningBadInput) {
   expectBadInput(
       "kinematic positioning --data ok.csv --compensation fanuc --out-table t.txt",
       "ok.csv: field 'target_mm': a compensation table needs at least 2 targets (an interval), got 1", tmp);
+}
+
+// ---- spc --base K (phase I / phase II), --subgroup 1 (individuals and moving range), Nelson rules ----
+
+/// A one-column CSV `name` of `values` (with '.' decimals whatever the locale).
+void writeSeries(const test::TempDir& tmp, const std::string& file, const std::string& name,
+                 const std::vector<double>& values) {
+  std::string csv = "part," + name + "\n";
+  for (std::size_t i = 0; i < values.size(); ++i)
+    csv += std::to_string(i + 1) + "," + CsvWriter::formatNumber(values[i]) + "\n";
+  test::writeText(tmp.file(file), csv);
+}
+
+// The series of tests/core/spc/spc_test.cpp, where the limits and the rules are worked out by hand:
+// six subgroups of 4, the first four the base (xbarbar 10.00625, Rbar 0.325, UCL 10.243175), the sixth
+// shifted to a mean of 10.4; and ten individuals, the first eight the base (mean 10.1875, MRbar 1.2 / 7),
+// the ninth 11.0.
+const std::vector<double> kPhaseSeries = {10.0, 10.2, 9.9,  10.1, 10.1, 9.9,  10.0, 10.2,
+                                          9.8,  10.0, 10.1, 9.9,  10.0, 9.8,  10.2, 9.9,
+                                          10.1, 10.0, 9.9,  10.0, 10.4, 10.3, 10.5, 10.4};
+const std::vector<double> kIndividualSeries = {10.0, 10.2, 10.1, 10.4, 10.2, 10.3, 10.1, 10.2, 11.0, 10.2};
+
+TEST(KinematicCli, SpcBaseIndividualsAndNelsonRules) {
+  test::TempDir tmp;
+  writeSeries(tmp, "p.csv", "d_mm", kPhaseSeries);
+  writeSeries(tmp, "i.csv", "x_mm", kIndividualSeries);
+  const std::string phases = "spc --data p.csv --column d_mm --subgroup 4 --base 4 --lsl 9.5 --usl 10.8";
+  CliRun r = cli(phases + " --out p.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(
+      r.err.rfind("spc: column 'd_mm', 6 subgroups of 4, limits from the first 4, OUT OF CONTROL (rules "
+                  "broken: xbar nelson1), sigma ",
+                  0),
+      0u)
+      << r.err;
+  nlohmann::json j = readJsonFile(tmp.file("p.json"));
+  EXPECT_EQ(j["chart_type"], "xbar-r");
+  EXPECT_EQ(j["base_subgroups"], 4);
+  EXPECT_EQ(j["subgroups"], 6);
+  EXPECT_NEAR(j["xbar_chart"]["center"].get<double>(), 10.00625, 1e-12);
+  EXPECT_NEAR(j["r_chart"]["center"].get<double>(), 0.325, 1e-12);
+  EXPECT_NEAR(j["xbar_chart"]["ucl"].get<double>(), 10.00625 + 0.729 * 0.325, 2e-4);
+  EXPECT_EQ(j["rules"], nlohmann::json::parse(R"([{"chart": "xbar", "rule": "nelson1", "subgroups": [6]}])"));
+  EXPECT_FALSE(j["in_control"].get<bool>());
+  EXPECT_TRUE(j.contains("pp"));
+  EXPECT_TRUE(j.contains("ppk"));
+  // Without --base the limits are those of all six subgroups and the key says so.
+  r = cli("spc --data p.csv --column d_mm --subgroup 4", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(parseJson(r.out, "stdout")["base_subgroups"], 6);
+  EXPECT_NEAR(parseJson(r.out, "stdout")["xbar_chart"]["center"].get<double>(), 60.425 / 6.0, 1e-12);
+
+  r = cli("spc --data i.csv --column x_mm --subgroup 1 --base 8 --out i.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(
+      r.err.rfind("spc: column 'x_mm', 10 individual values (X-MR), limits from the first 8, OUT OF CONTROL "
+                  "(rules broken: xbar nelson1; r nelson1; r nelson5), sigma ",
+                  0),
+      0u)
+      << r.err;
+  j = readJsonFile(tmp.file("i.json"));
+  EXPECT_EQ(j["chart_type"], "x-mr");
+  EXPECT_EQ(j["subgroup_size"], 1);
+  EXPECT_EQ(j["r_chart"]["first_subgroup"], 2);
+  EXPECT_NEAR(j["r_chart"]["center"].get<double>(), 1.2 / 7.0, 1e-12);
+  EXPECT_NEAR(j["r_chart"]["ucl"].get<double>(), 3.267 * 1.2 / 7.0, 1e-4);
+  EXPECT_NEAR(j["xbar_chart"]["ucl"].get<double>(), 10.1875 + 2.66 * 1.2 / 7.0, 3e-4);
+  EXPECT_EQ(j["rules"], nlohmann::json::parse(R"([
+      {"chart": "xbar", "rule": "nelson1", "subgroups": [9]},
+      {"chart": "r", "rule": "nelson1", "subgroups": [9, 10]},
+      {"chart": "r", "rule": "nelson5", "subgroups": [10]}])"));
+
+  // The same inputs give the same bytes under every locale of the matrix ('.' decimals).
+  for (const std::string& args :
+       {phases + " --out q.json",
+        std::string("spc --data i.csv --column x_mm --subgroup 1 --base 8 --out q.json")}) {
+    std::string first;
+    for (const char* loc : {"C.UTF-8", "de_DE.UTF-8", "pl_PL.UTF-8"}) {
+      ASSERT_EQ(cliUnderLocale(loc, args, tmp), 0) << args << " under " << loc;
+      const std::string text = test::readText(tmp.file("q.json"));
+      if (first.empty())
+        first = text;
+      else
+        EXPECT_EQ(text, first) << args << " under " << loc;
+    }
+    EXPECT_NE(first.find("\"center\": 10."), std::string::npos) << first.substr(0, 400);
+  }
+
+  // --base outside 2 .. the number of subgroups: exit 2, one line naming --base.
+  expectBadInput(
+      "spc --data p.csv --column d_mm --subgroup 4 --base 1",
+      "field '--base': must be at least 2 subgroups (the limits need ranges to be set from), got 1", tmp);
+  expectBadInput("spc --data p.csv --column d_mm --subgroup 4 --base 7 --out x.json",
+                 "p.csv: field '--base': is 7 subgroups but column 'd_mm' has 6 complete subgroups of 4",
+                 tmp);
+  expectBadInput("spc --data i.csv --column x_mm --subgroup 1 --base 11 --out x.json",
+                 "i.csv: field '--base': is 11 subgroups but column 'x_mm' has 10 values", tmp);
 }
 
 }  // namespace

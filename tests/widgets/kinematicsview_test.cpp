@@ -70,6 +70,28 @@ double rowFraction(const QImage& img, double y, double x0, double x1, const QCol
   return total ? static_cast<double>(hits) / total : 0.0;
 }
 
+/// Fraction of the pixels of column x between y0 and y1 that have colour c (also x +- 1).
+double columnFraction(const QImage& img, double x, double y0, double y1, const QColor& c) {
+  int hits = 0, total = 0;
+  for (int y = static_cast<int>(y0); y <= static_cast<int>(y1); ++y) {
+    ++total;
+    bool hit = false;
+    for (int dx = -1; dx <= 1; ++dx)
+      hit = hit || close(img.pixelColor(static_cast<int>(std::lround(x)) + dx, y), c);
+    if (hit) ++hits;
+  }
+  return total ? static_cast<double>(hits) / total : 0.0;
+}
+
+/// Pixels of colour c within `half` of p.
+int pixelsNear(const QImage& img, QPointF p, const QColor& c, int half) {
+  int n = 0;
+  for (int y = static_cast<int>(p.y()) - half; y <= static_cast<int>(p.y()) + half; ++y)
+    for (int x = static_cast<int>(p.x()) - half; x <= static_cast<int>(p.x()) + half; ++x)
+      n += img.valid(x, y) && close(img.pixelColor(x, y), c);
+  return n;
+}
+
 void save(const QImage& img, const char* name) {
   img.save(QDir(QString::fromStdString(test::outDir().string())).filePath(QString::fromLatin1(name)));
 }
@@ -227,6 +249,68 @@ TEST(ControlChart, LimitsAreDrawnAtTheCoresValues) {
   }
   // R chart with n = 5: D3 = 0, so the LCL is 0 on the axis.
   EXPECT_DOUBLE_EQ(chart.rLcl, 0.0);
+}
+
+// Phase I / phase II and the Nelson rules on the chart (the series of tests/core/spc/spc_test.cpp):
+// six subgroups of 4, limits from the first four, subgroup 6 shifted beyond the UCL (Nelson 1).
+TEST(ControlChart, NelsonRulesAndThePhaseBoundaryAreMarked) {
+  QLocale::setDefault(QLocale::c());
+  const std::vector<double> phases = {10.0, 10.2, 9.9,  10.1, 10.1, 9.9,  10.0, 10.2, 9.8,  10.0, 10.1, 9.9,
+                                      10.0, 9.8,  10.2, 9.9,  10.1, 10.0, 9.9,  10.0, 10.4, 10.3, 10.5, 10.4};
+  SpcOptions o;
+  o.subgroupSize = 4;
+  o.baseSubgroups = 4;
+  const SpcResult r = analyseSpc(phases, o);
+  ASSERT_EQ(r.rules.size(), 1u);
+  ControlChartView plain(ControlChartKind::Mean), marked(ControlChartKind::Mean);
+  for (ControlChartView* v : {&plain, &marked}) v->resize(640, 280);
+  plain.setChart(r.chart, QStringLiteral("mm"));
+  marked.setChart(r.chart, QStringLiteral("mm"), r.rules);
+  const ControlChartLayout L = marked.layout();
+  const QImage img = marked.grab().toImage();
+  save(img, "kinematics-xbar-phase2.png");
+  // The read-out of subgroup 6 names the rule; subgroup 5 breaks none.
+  EXPECT_EQ(plotReadoutAt(&marked, L.map(6.0, r.chart.means[5])),
+            QStringLiteral("subgroup 6\nmean: 10.4 mm\nNelson 1: one point beyond the control limits"));
+  EXPECT_EQ(plotReadoutAt(&marked, L.map(5.0, r.chart.means[4])), QStringLiteral("subgroup 5\nmean: 10 mm"));
+  // A dashed line between subgroups 4 and 5 over the plot's height, none between 3 and 4.
+  const double top = L.plotArea().top() + 20, bottom = L.plotArea().bottom() - 2;
+  EXPECT_GT(columnFraction(img, L.map(4.5, 0).x(), top, bottom, phaseBoundaryColour()), 0.3);
+  EXPECT_LT(columnFraction(img, L.map(3.5, 0).x(), top, bottom, phaseBoundaryColour()), 0.05);
+  // The rule's point is ringed in red: more red around it than without the rules.
+  const QPointF six = L.map(6.0, r.chart.means[5]);
+  const QImage without = plain.grab().toImage();
+  EXPECT_GT(pixelsNear(img, six, kinematic_colour::limit(), 12),
+            pixelsNear(without, six, kinematic_colour::limit(), 12) + 8);
+  EXPECT_EQ(nelsonRulesSummary(r), QStringLiteral("X-bar 1 at 6 (limits from subgroups 1–4)"));
+  EXPECT_EQ(ruleBreaksAt(r.rules, ControlChartKind::Range, 5), QStringList());
+}
+
+// Individuals: the moving-range chart starts at subgroup 2 and names its rules there.
+TEST(ControlChart, MovingRangesAreDrawnAtTheirLaterSubgroup) {
+  QLocale::setDefault(QLocale::c());
+  SpcOptions o;
+  o.subgroupSize = 1;
+  o.baseSubgroups = 8;
+  const SpcResult r = analyseSpc({10.0, 10.2, 10.1, 10.4, 10.2, 10.3, 10.1, 10.2, 11.0, 10.2}, o);
+  ControlChartView range(ControlChartKind::Range);
+  range.resize(640, 280);
+  range.setChart(r.chart, QStringLiteral("mm"), r.rules);
+  const ControlChartLayout L = range.layout();
+  save(range.grab().toImage(), "kinematics-mr.png");
+  EXPECT_TRUE(
+      plotReadoutAt(&range, L.map(2.0, r.chart.ranges[0])).startsWith(QStringLiteral("subgroup 2\nrange: ")));
+  EXPECT_EQ(plotReadoutAt(&range, L.map(10.0, r.chart.ranges[8])),
+            QStringLiteral("subgroup 10\nrange: 0.8 mm\nNelson 1: one point beyond the control limits\n"
+                           "Nelson 5: two of three beyond 2 σ on the same side"));
+  EXPECT_EQ(nelsonRulesSummary(r),
+            QStringLiteral("X 1 at 9; MR 1 at 9, 10; MR 5 at 10 (limits from subgroups 1–8)"));
+  // Three subgroups of 5 with no rule broken (tests/core/spc/spc_test.cpp, kData).
+  SpcOptions five;
+  five.subgroupSize = 5;
+  EXPECT_EQ(nelsonRulesSummary(analyseSpc(
+                {10.0, 10.2, 9.9, 10.1, 9.8, 10.1, 10.3, 10.0, 10.2, 9.9, 9.9, 10.1, 9.8, 10.0, 9.7}, five)),
+            QStringLiteral("none broken"));
 }
 
 TEST(Histogram, BinsCoverMinToMaxWithEqualWidths) {

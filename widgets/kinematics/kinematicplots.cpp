@@ -553,6 +553,66 @@ void chartLines(const XbarRChart& c, ControlChartKind kind, double* cl, double* 
 
 }  // namespace
 
+/// The 1-based subgroup (the x of the chart) of point i of the chart of `kind`.
+static double subgroupOf(const XbarRChart& c, ControlChartKind kind, std::size_t i) {
+  return static_cast<double>((kind == ControlChartKind::Mean ? i : c.rangeSubgroup(i)) + 1);
+}
+
+QString nelsonRuleText(int rule) {
+  switch (rule) {
+    case 1:
+      return PlotText::tr("one point beyond the control limits");
+    case 2:
+      return PlotText::tr("nine in a row on one side of the centre line");
+    case 3:
+      return PlotText::tr("six in a row steadily increasing or decreasing");
+    case 4:
+      return PlotText::tr("fourteen in a row alternating up and down");
+    case 5:
+      return PlotText::tr("two of three beyond 2 σ on the same side");
+    case 6:
+      return PlotText::tr("four of five beyond 1 σ on the same side");
+    case 7:
+      return PlotText::tr("fifteen in a row within 1 σ");
+    case 8:
+      return PlotText::tr("eight in a row beyond 1 σ on either side");
+    default:
+      return {};
+  }
+}
+
+QStringList ruleBreaksAt(const std::vector<RuleBreak>& rules, ControlChartKind kind, std::size_t subgroup) {
+  const RuleChart chart = kind == ControlChartKind::Mean ? RuleChart::Mean : RuleChart::Range;
+  QStringList out;
+  for (const RuleBreak& b : rules) {
+    if (b.chart != chart) continue;
+    if (std::find(b.subgroups.begin(), b.subgroups.end(), subgroup) == b.subgroups.end()) continue;
+    out << PlotText::tr("Nelson %1: %2").arg(b.rule).arg(nelsonRuleText(b.rule));
+  }
+  return out;
+}
+
+QColor phaseBoundaryColour() {
+  return {90, 90, 160};
+}
+
+QString nelsonRulesSummary(const SpcResult& r) {
+  QStringList parts;
+  const bool individuals = r.chart.type == ChartType::IndividualsMR;
+  for (const RuleBreak& b : r.rules) {
+    QStringList at;
+    for (const std::size_t g : b.subgroups) at << QString::number(g + 1);
+    const QString chart = b.chart == RuleChart::Mean
+                              ? (individuals ? PlotText::tr("X") : PlotText::tr("X-bar"))
+                              : (individuals ? PlotText::tr("MR") : PlotText::tr("R"));
+    parts << PlotText::tr("%1 %2 at %3").arg(chart).arg(b.rule).arg(at.join(QStringLiteral(", ")));
+  }
+  QString text = parts.isEmpty() ? PlotText::tr("none broken") : parts.join(QStringLiteral("; "));
+  if (r.chart.baseSubgroups < r.chart.subgroups())
+    text += PlotText::tr(" (limits from subgroups 1–%1)").arg(r.chart.baseSubgroups);
+  return text;
+}
+
 ControlChartLayout::ControlChartLayout(const QRectF& area, const XbarRChart& chart, ControlChartKind kind,
                                        const PlotStyle& s) {
   const auto& v = chartValues(chart, kind);
@@ -571,7 +631,7 @@ ControlChartLayout::ControlChartLayout(const QRectF& area, const XbarRChart& cha
   if (kind == ControlChartKind::Range && lo - pad < 0.0) y0_ = 0.0;
   y1_ = hi + pad;
   x0_ = 0.5;
-  x1_ = static_cast<double>(std::max<std::size_t>(1, v.size())) + 0.5;
+  x1_ = static_cast<double>(std::max<std::size_t>(1, chart.subgroups())) + 0.5;  // moving ranges: from 2
   const double titleH = s.fontPx * 1.9;  // the right margin holds the labels of CL and the limits
   plot_ = QRectF(area.left() + s.fontPx * 8.5, area.top() + titleH, area.width() - s.fontPx * 16.0,
                  area.height() - titleH - s.fontPx * 3.4);
@@ -583,7 +643,7 @@ QPointF ControlChartLayout::map(double subgroup, double value) const {
 }
 
 void paintControlChart(QPainter& p, const QRectF& area, const XbarRChart& chart, ControlChartKind kind,
-                       const QString& unit, const PlotStyle& s) {
+                       const QString& unit, const PlotStyle& s, const std::vector<RuleBreak>& rules) {
   const ControlChartLayout L(area, chart, kind, s);
   const auto& v = chartValues(chart, kind);
   double cl = 0, ucl = 0, lcl = 0;
@@ -591,17 +651,24 @@ void paintControlChart(QPainter& p, const QRectF& area, const XbarRChart& chart,
   p.save();
   p.setRenderHint(QPainter::Antialiasing, true);
   const bool mean = kind == ControlChartKind::Mean;
-  drawTitle(p, QRectF(area.left(), area.top(), area.width(), s.fontPx * 1.9),
-            mean ? PlotText::tr("X-bar chart (subgroups of %1)").arg(chart.subgroupSize)
-                 : PlotText::tr("R chart (subgroups of %1)").arg(chart.subgroupSize),
-            s);
+  const bool individuals = chart.type == ChartType::IndividualsMR;
+  const double count = static_cast<double>(chart.subgroups());
+  QString title = individuals ? (mean ? PlotText::tr("X chart (individual values)")
+                                      : PlotText::tr("MR chart (moving range of 2)"))
+                              : (mean ? PlotText::tr("X-bar chart (subgroups of %1)").arg(chart.subgroupSize)
+                                      : PlotText::tr("R chart (subgroups of %1)").arg(chart.subgroupSize));
+  if (chart.baseSubgroups < chart.subgroups())
+    title += PlotText::tr(", limits from subgroups 1–%1").arg(chart.baseSubgroups);
+  drawTitle(p, QRectF(area.left(), area.top(), area.width(), s.fontPx * 1.9), title, s);
   const double yStep = ticks::niceStep(L.yMax() - L.yMin(), 5);
-  const double xStep = std::max(1.0, ticks::niceStep(static_cast<double>(v.size()), 8));
+  const double xStep = std::max(1.0, ticks::niceStep(count, 8));
   const QString u = unit.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(unit);
+  const QString yTitle = individuals
+                             ? (mean ? PlotText::tr("value") : PlotText::tr("moving range"))
+                             : (mean ? PlotText::tr("subgroup mean") : PlotText::tr("subgroup range"));
   drawAxes(
-      p, L.plotArea(), 1.0, static_cast<double>(v.size()), xStep, L.yMin(), L.yMax(), yStep,
-      PlotText::tr("subgroup"), (mean ? PlotText::tr("subgroup mean") : PlotText::tr("subgroup range")) + u,
-      s, [&](double x) { return L.map(x, 0).x(); }, [&](double y) { return L.yOf(y); }, true);
+      p, L.plotArea(), 1.0, count, xStep, L.yMin(), L.yMax(), yStep, PlotText::tr("subgroup"), yTitle + u, s,
+      [&](double x) { return L.map(x, 0).x(); }, [&](double y) { return L.yOf(y); }, true);
 
   // Centre line and limits, labelled with their values.
   const int decimals = decimalsFor(yStep) + 1;
@@ -628,17 +695,37 @@ void paintControlChart(QPainter& p, const QRectF& area, const XbarRChart& chart,
         Qt::AlignLeft | Qt::AlignVCenter,
         QStringLiteral("%1 %2").arg(line.name, s.locale.toString(line.value, 'f', decimals)));
   }
-  // The points, out-of-control ones in red.
+  // Phase I / phase II: a dashed line between subgroup K and K + 1, labelled on both sides.
+  if (chart.baseSubgroups < chart.subgroups()) {
+    const double x = L.map(static_cast<double>(chart.baseSubgroups) + 0.5, 0.0).x();
+    p.setPen(pen(phaseBoundaryColour(), s.lineWidth, Qt::DashLine));
+    p.drawLine(QPointF(x, L.plotArea().top()), QPointF(x, L.plotArea().bottom()));
+    p.setPen(phaseBoundaryColour());
+    const double w = s.fontPx * 6.0;
+    p.drawText(QRectF(x - w - s.fontPx * 0.3, L.plotArea().top(), w, fm.height()),
+               Qt::AlignRight | Qt::AlignTop, PlotText::tr("phase I"));
+    p.drawText(QRectF(x + s.fontPx * 0.3, L.plotArea().top(), w, fm.height()), Qt::AlignLeft | Qt::AlignTop,
+               PlotText::tr("phase II"));
+  }
+  // The points, out-of-control ones (beyond the limits or breaking a Nelson rule) in red; those
+  // breaking a rule also ringed.
   const auto& out = mean ? chart.xbarOutOfControl : chart.rOutOfControl;
   QPolygonF poly;
-  for (std::size_t i = 0; i < v.size(); ++i) poly << L.map(static_cast<double>(i + 1), v[i]);
+  for (std::size_t i = 0; i < v.size(); ++i) poly << L.map(subgroupOf(chart, kind, i), v[i]);
   p.setPen(pen(QColor(60, 60, 60), s.lineWidth * 0.8));
   p.drawPolyline(poly);
   for (std::size_t i = 0; i < v.size(); ++i) {
-    const bool bad = std::find(out.begin(), out.end(), i) != out.end();
+    const std::size_t subgroup = mean ? i : chart.rangeSubgroup(i);
+    const bool beyond = std::find(out.begin(), out.end(), subgroup) != out.end();
+    const bool rule = !ruleBreaksAt(rules, kind, subgroup).isEmpty();
     p.setPen(Qt::NoPen);
-    p.setBrush(bad ? kinematic_colour::limit() : kinematic_colour::counterClockwise());
+    p.setBrush(beyond || rule ? kinematic_colour::limit() : kinematic_colour::counterClockwise());
     p.drawEllipse(poly[static_cast<qsizetype>(i)], s.pointRadius, s.pointRadius);
+    if (rule) {
+      p.setPen(pen(kinematic_colour::limit(), s.lineWidth));
+      p.setBrush(Qt::NoBrush);
+      p.drawEllipse(poly[static_cast<qsizetype>(i)], s.pointRadius * 2.2, s.pointRadius * 2.2);
+    }
   }
   p.restore();
 }

@@ -22,6 +22,7 @@
 #include <QPointF>
 #include <QRectF>
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 #include <vector>
@@ -29,6 +30,7 @@
 #include <Eigen/Core>
 
 #include "core/spc/control_chart.h"
+#include "core/spc/nelson.h"
 #include "core/study/circular_analysis.h"
 
 namespace metrofit {
@@ -182,9 +184,25 @@ class ControlChartLayout {
   double x0_ = 0.5, x1_ = 1.5, y0_ = 0, y1_ = 1;
 };
 
-/// `unit` is appended to the axis title ("diameter_mm" -> "mean (mm)").
+/// `unit` is appended to the axis title ("diameter_mm" -> "mean (mm)"). Points beyond the limits or
+/// breaking one of `rules` (core/spc/nelson.h) are red, those breaking a rule also ringed; with a phase
+/// I base shorter than the series (XbarRChart::baseSubgroups) a dashed line after subgroup K marks
+/// where phase II begins. Moving ranges are drawn at their later subgroup (from 2).
 void paintControlChart(QPainter& painter, const QRectF& area, const XbarRChart& chart, ControlChartKind kind,
-                       const QString& unit, const PlotStyle& style = {});
+                       const QString& unit, const PlotStyle& style = {},
+                       const std::vector<RuleBreak>& rules = {});
+
+/// What Nelson rule `rule` (1..8) looks for, in the user's language ("nine in a row on one side of the
+/// centre line").
+QString nelsonRuleText(int rule);
+/// One line per rule broken at the 0-based `subgroup` on the chart of `kind`: "Nelson 2: nine in a row
+/// on one side of the centre line". Empty when none is.
+QStringList ruleBreaksAt(const std::vector<RuleBreak>& rules, ControlChartKind kind, std::size_t subgroup);
+/// The Nelson rules broken in `result`, "X-bar 2 at 9, 10; R 1 at 4" (subgroups 1-based; X and MR for
+/// individuals), or "none broken"; with the phase I base when it is shorter than the series.
+QString nelsonRulesSummary(const SpcResult& result);
+/// The colour of the phase I / phase II boundary.
+QColor phaseBoundaryColour();
 
 struct HistogramBins {
   double first = 0.0;  ///< left edge of the first bin

@@ -141,8 +141,10 @@ ControlChartView::ControlChartView(ControlChartKind kind, QWidget* parent) : QWi
     const std::vector<double>& values = kind_ == ControlChartKind::Mean ? chart_->means : chart_->ranges;
     double best = kReachPx / scale;
     std::size_t hit = values.size();
+    const bool mean = kind_ == ControlChartKind::Mean;
+    const auto subgroupOf = [&](std::size_t k) { return mean ? k : chart_->rangeSubgroup(k); };
     for (std::size_t k = 0; k < values.size(); ++k) {
-      const double d = distance(l.map(static_cast<double>(k + 1), values[k]), at);
+      const double d = distance(l.map(static_cast<double>(subgroupOf(k) + 1), values[k]), at);
       if (d <= best) {
         best = d;
         hit = k;
@@ -150,25 +152,32 @@ ControlChartView::ControlChartView(ControlChartKind kind, QWidget* parent) : QWi
     }
     if (hit == values.size()) return {};
     const QString unit = unit_.isEmpty() ? QString() : QLatin1Char(' ') + unit_;
-    return (kind_ == ControlChartKind::Mean ? tr("subgroup %1\nmean: %2%3") : tr("subgroup %1\nrange: %2%3"))
-        .arg(hit + 1)
-        .arg(number(values[hit]), unit);
+    const std::size_t subgroup = subgroupOf(hit);
+    QString text = (mean ? tr("subgroup %1\nmean: %2%3") : tr("subgroup %1\nrange: %2%3"))
+                       .arg(subgroup + 1)
+                       .arg(number(values[hit]), unit);
+    for (const QString& rule : ruleBreaksAt(rules_, kind_, subgroup)) text += QLatin1Char('\n') + rule;
+    return text;
   });
   setMinimumSize(300, 160);
   setToolTip(kind == ControlChartKind::Mean
                  ? tr("Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ "
-                      "(kinematic-compensation paper, Eq. 18–19); red points are out of control.")
+                      "(kinematic-compensation paper, Eq. 18–19); red points are out of control, ringed ones "
+                      "break a Nelson rule (the read-out names it).")
                  : tr("Subgroup ranges with the centre line R̄ and the limits D4 · R̄ and D3 · R̄."));
 }
 
-void ControlChartView::setChart(const XbarRChart& chart, const QString& unit) {
+void ControlChartView::setChart(const XbarRChart& chart, const QString& unit,
+                                const std::vector<RuleBreak>& rules) {
   chart_ = chart;
+  rules_ = rules;
   unit_ = unit;
   update();
 }
 
 void ControlChartView::clear() {
   chart_.reset();
+  rules_.clear();
   update();
 }
 
@@ -179,7 +188,7 @@ ControlChartLayout ControlChartView::layout() const {
 void ControlChartView::paintEvent(QPaintEvent*) {
   QPainter p(this);
   fillWhite(p, this);
-  if (chart_) paintControlChart(p, QRectF(rect()), *chart_, kind_, unit_, screenPlotStyle());
+  if (chart_) paintControlChart(p, QRectF(rect()), *chart_, kind_, unit_, screenPlotStyle(), rules_);
 }
 
 // ---- histogram -------------------------------------------------------------------------------------
@@ -280,8 +289,8 @@ void SpcView::setMessage(const QString& text) {
 
 void SpcView::setResult(const SpcResult& r, const std::vector<double>& values, const QString& name,
                         const QString& unit) {
-  mean_->setChart(r.chart, unit);
-  range_->setChart(r.chart, unit);
+  mean_->setChart(r.chart, unit, r.rules);
+  range_->setChart(r.chart, unit, r.rules);
   HistogramData h = spcHistogramData(r, values, unit, QString());
   h.title = tr("Histogram of %1 (%2 values)").arg(name).arg(h.values.size());
   histogram_->setData(h);
@@ -298,6 +307,7 @@ void SpcView::setResult(const SpcResult& r, const std::vector<double>& values, c
                                                      : tr("no: %1 X-bar, %2 R points beyond limits")
                                                            .arg(r.chart.xbarOutOfControl.size())
                                                            .arg(r.chart.rOutOfControl.size())});
+  rows.append({tr("Nelson rules"), nelsonRulesSummary(r)});
   rows.append(
       {tr("A2 / D3 / D4"), QStringLiteral("%1 / %2 / %3")
                                .arg(num(r.constants.A2, 4), num(r.constants.D3, 4), num(r.constants.D4, 4))});

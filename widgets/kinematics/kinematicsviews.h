@@ -55,12 +55,13 @@ class PolarDeviationView : public QWidget {
   PolarPlotData data_;
 };
 
-/// X-bar or R chart of an XbarRChart.
+/// X-bar or R chart of an XbarRChart (X or MR for individuals), with the Nelson rules broken marked
+/// and named in the read-out.
 class ControlChartView : public QWidget {
   Q_OBJECT
  public:
   ControlChartView(ControlChartKind kind, QWidget* parent = nullptr);
-  void setChart(const XbarRChart& chart, const QString& unit);
+  void setChart(const XbarRChart& chart, const QString& unit, const std::vector<RuleBreak>& rules = {});
   void clear();
   bool hasChart() const { return chart_.has_value(); }
   ControlChartLayout layout() const;
@@ -73,6 +74,7 @@ class ControlChartView : public QWidget {
  private:
   ControlChartKind kind_;
   std::optional<XbarRChart> chart_;
+  std::vector<RuleBreak> rules_;
   QString unit_;
 };
 

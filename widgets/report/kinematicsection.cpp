@@ -190,7 +190,7 @@ void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
   for (const ControlChartKind kind : {ControlChartKind::Mean, ControlChartKind::Range}) {
     const QRectF box = out.reserve(out.mm(48.0));
     out.drawScaled(box, 700.0, [&](QPainter& p, const QRectF& rr) {
-      paintControlChart(p, rr, r.chart, kind, unit, style);
+      paintControlChart(p, rr, r.chart, kind, unit, style, r.rules);
     });
   }
   HistogramData h = spcHistogramData(r, k.values, unit, QString());
@@ -221,6 +221,7 @@ void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
                                                                   u});
   t.rows.push_back(
       {ReportText::tr("in control"), r.chart.inControl() ? ReportText::tr("yes") : ReportText::tr("no")});
+  t.rows.push_back({ReportText::tr("Nelson rules (subgroups)"), nelsonRulesSummary(r)});
   t.rows.push_back(
       {ReportText::tr("σ within (R̄ / d2)"), QString::number(r.capability.sigmaWithin, 'g', 4) + u});
   if (r.capability.cp) {

@@ -183,7 +183,8 @@ TEST(SpcActuator, BadSeriesNameTheFile) {
 }
 
 // The options of the SPC route are validated as the SPC chart's options are (one check): the same
-// verdicts and messages at and beyond the limits of the A2/D3/D4 table and for the coverage factor.
+// verdicts and messages for the coverage factor within the A2/D3/D4 table; the residual chart is an
+// X-bar/R chart, so subgroups of 1 (individuals, which the SPC options take) are refused.
 TEST(SpcActuator, OptionsValidatedAsTheSpcChartOptions) {
   for (const int size : {0, 1, 2, 5, 25, 26}) {
     for (const double k : {-1.0, 0.0, 2.0, std::numeric_limits<double>::infinity()}) {
@@ -195,11 +196,20 @@ TEST(SpcActuator, OptionsValidatedAsTheSpcChartOptions) {
       s.coverageFactor = k;
       std::string whyA, whyS;
       const bool okA = a.isValid(&whyA);
-      EXPECT_EQ(okA, s.isValid(&whyS)) << size << " " << k;
-      EXPECT_EQ(whyA, whyS);
+      const bool okS = s.isValid(&whyS);
       EXPECT_EQ(okA, size >= 2 && size <= 25 && k == 2.0) << size << " " << k;
+      EXPECT_EQ(okS, size >= 1 && size <= 25 && k == 2.0) << size << " " << k;
+      if (size >= 2 && size <= 25) {
+        EXPECT_EQ(okA, okS) << size << " " << k;
+        EXPECT_EQ(whyA, whyS);
+      }
     }
   }
+  SpcActuatorOptions one;
+  one.subgroupSize = 1;
+  std::string whyOne;
+  EXPECT_FALSE(one.isValid(&whyOne));
+  EXPECT_EQ(whyOne, "subgroup size must be between 2 and 25 (the range of the A2/D3/D4 table), got 1");
   SpcActuatorOptions o;
   o.subgroupSize = 26;
   std::string why;

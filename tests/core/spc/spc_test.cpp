@@ -1,10 +1,14 @@
 // SPC (IEEE Access, kinematic compensation algorithm, Section IV.A): chart constants against the published
 // table, X-bar/R limits, Cp/Cpk/Pp/Ppk, natural tolerance (Eq. 17), systematic error (Eq. 20), regression
-// line and offset angle (Fig. 10), the SPC gate, and bad input.
+// line and offset angle (Fig. 10), the SPC gate, and bad input; the published limits of Montgomery's
+// piston rings (Example 6.1), phase I / phase II limits, individuals and moving range, and the rules
+// in the JSON (the rules themselves: nelson_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -305,6 +309,278 @@ TEST(Spc, JsonCarriesLimitsAndIndices) {
        {"natural_tolerance", "sigma_within", "sigma_overall", "trend", "pp", "ppk", "nominal"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
+}
+
+// Montgomery, Introduction to Statistical Quality Control (Wiley; 6th and 7th editions), Example 6.1 and
+// Table 6.3: inside diameters (mm) of forged automobile-engine piston rings, 25 preliminary samples of
+// 5. The book prints the subgroup means and ranges, sum xbar_i = 1850.028 (of the means rounded to 3
+// decimals), sum R_i = 0.581, and
+//   xbarbar = 74.001, Rbar = 0.023, UCL = 74.014, LCL = 73.988 (A2 = 0.577), UCL_R = 0.049 (D4 = 2.114),
+//   LCL_R = 0, and every sample in control on both charts.
+// The book rounds xbarbar and Rbar to 3 decimals before it computes the limits (74.001 + 0.577 x 0.023
+// = 74.01427); from the unrounded 74.001176 and 0.02324 the upper limit is 74.01458, which is 74.015
+// to 3 decimals. So the limits are checked to one unit of the book's last digit, and to 1e-5 against
+// the same formula with the unrounded centre lines and the table's A2.
+const double kPistonRings[25][5] = {
+    {74.030, 74.002, 74.019, 73.992, 74.008}, {73.995, 73.992, 74.001, 74.011, 74.004},
+    {73.988, 74.024, 74.021, 74.005, 74.002}, {74.002, 73.996, 73.993, 74.015, 74.009},
+    {73.992, 74.007, 74.015, 73.989, 74.014}, {74.009, 73.994, 73.997, 73.985, 73.993},
+    {73.995, 74.006, 73.994, 74.000, 74.005}, {73.985, 74.003, 73.993, 74.015, 73.988},
+    {74.008, 73.995, 74.009, 74.005, 74.004}, {73.998, 74.000, 73.990, 74.007, 73.995},
+    {73.994, 73.998, 73.994, 73.995, 73.990}, {74.004, 74.000, 74.007, 74.000, 73.996},
+    {73.983, 74.002, 73.998, 73.997, 74.012}, {74.006, 73.967, 73.994, 74.000, 73.984},
+    {74.012, 74.014, 73.998, 73.999, 74.007}, {74.000, 73.984, 74.005, 73.998, 73.996},
+    {73.994, 74.012, 73.986, 74.005, 74.007}, {74.006, 74.010, 74.018, 74.003, 74.000},
+    {73.984, 74.002, 74.003, 74.005, 73.997}, {74.000, 74.010, 74.013, 74.020, 74.003},
+    {73.982, 74.001, 74.015, 74.005, 73.996}, {74.004, 73.999, 73.990, 74.006, 74.009},
+    {74.010, 73.989, 73.990, 74.009, 74.014}, {74.015, 74.008, 73.993, 74.000, 74.010},
+    {73.982, 73.984, 73.995, 74.017, 74.013},
+};
+// Table 6.3's printed subgroup means and ranges.
+const double kPistonMeans[25] = {74.010, 74.001, 74.008, 74.003, 74.003, 73.996, 74.000, 73.997, 74.004,
+                                 73.998, 73.994, 74.001, 73.998, 73.990, 74.006, 73.997, 74.001, 74.007,
+                                 73.998, 74.009, 74.000, 74.002, 74.002, 74.005, 73.998};
+const double kPistonRanges[25] = {0.038, 0.019, 0.036, 0.022, 0.026, 0.024, 0.012, 0.030, 0.014,
+                                  0.017, 0.008, 0.011, 0.029, 0.039, 0.016, 0.021, 0.026, 0.018,
+                                  0.021, 0.020, 0.033, 0.019, 0.025, 0.022, 0.035};
+
+TEST(Spc, MontgomeryPistonRingsGiveThePublishedLimits) {
+  std::vector<double> values;
+  for (const auto& sample : kPistonRings) values.insert(values.end(), sample, sample + 5);
+  const SpcResult r = analyseSpc(values, SpcOptions{});  // n = 5, every subgroup is the base
+  const XbarRChart& c = r.chart;
+  ASSERT_EQ(c.subgroups(), 25u);
+  double sumRounded = 0.0, sumR = 0.0;
+  for (std::size_t i = 0; i < 25; ++i) {
+    EXPECT_NEAR(c.means[i], kPistonMeans[i], 0.0005 + 1e-12) << "sample " << i + 1;
+    EXPECT_NEAR(c.ranges[i], kPistonRanges[i], 1e-9) << "sample " << i + 1;
+    sumRounded += std::round(c.means[i] * 1000.0) / 1000.0;
+    sumR += c.ranges[i];
+  }
+  EXPECT_NEAR(sumRounded, 1850.028, 1e-9);
+  EXPECT_NEAR(sumR, 0.581, 1e-9);
+  // The published centre lines, to their 3 decimals.
+  EXPECT_NEAR(c.grandMean, 74.001, 0.0005);
+  EXPECT_NEAR(c.meanRange, 0.023, 0.0005);
+  EXPECT_NEAR(c.meanRange, 0.581 / 25.0, 1e-12);
+  // The published limits, to one unit of their last digit (the book rounds the centre lines first).
+  EXPECT_NEAR(c.xbarUcl, 74.014, 0.001);
+  EXPECT_NEAR(c.xbarLcl, 73.988, 0.0005);
+  EXPECT_NEAR(c.rUcl, 0.049, 0.0005);
+  EXPECT_EQ(c.rLcl, 0.0);
+  // The book's arithmetic on its rounded centre lines gives its printed limits.
+  EXPECT_NEAR(74.001 + 0.577 * 0.023, 74.014, 0.0005);
+  EXPECT_NEAR(74.001 - 0.577 * 0.023, 73.988, 0.0005);
+  EXPECT_NEAR(2.114 * 0.023, 0.049, 0.0005);
+  // The same formulas on the unrounded centre lines with the table's A2 and D4 (3 decimals: they
+  // differ from the exact constants by up to 0.0005, times Rbar 1.2e-5).
+  const double xbb = 1850.0294 / 25.0, rbar = 0.02324;
+  EXPECT_NEAR(c.grandMean, xbb, 1e-9);
+  EXPECT_NEAR(c.xbarUcl, xbb + 0.577 * rbar, 1.2e-5);
+  EXPECT_NEAR(c.xbarLcl, xbb - 0.577 * rbar, 1.2e-5);
+  EXPECT_NEAR(c.rUcl, 2.114 * rbar, 1.2e-5);
+  // "All the points are inside the limits": in control, and no Nelson rule either.
+  EXPECT_TRUE(c.inControl());
+  EXPECT_TRUE(r.rules.empty());
+  EXPECT_EQ(c.baseSubgroups, 25u);
+  EXPECT_EQ(c.type, ChartType::XbarR);
+}
+
+// Phase I / phase II: subgroups of 4 (table: A2 = 0.729, D3 = 0, D4 = 2.282). The first four
+// subgroups are the base:
+//   means 10.05, 10.05, 9.95, 9.975 -> xbarbar = 40.025 / 4 = 10.00625
+//   ranges 0.3, 0.3, 0.3, 0.4       -> Rbar = 1.3 / 4 = 0.325
+//   UCL = 10.00625 + 0.729 x 0.325 = 10.243175, LCL = 9.769325, UCL_R = 2.282 x 0.325 = 0.74165
+// Subgroup 5 (mean 10.0, range 0.2) is inside; subgroup 6 has shifted (mean 10.4, range 0.2): beyond
+// the UCL, so Nelson rule 1 at subgroup 6 on the X-bar chart and nothing else.
+const std::vector<double> kPhases = {10.0, 10.2, 9.9,  10.1, 10.1, 9.9,  10.0, 10.2, 9.8,  10.0, 10.1, 9.9,
+                                     10.0, 9.8,  10.2, 9.9,  10.1, 10.0, 9.9,  10.0, 10.4, 10.3, 10.5, 10.4};
+
+TEST(Spc, PhaseTwoIsJudgedAgainstTheLimitsOfTheBase) {
+  SpcOptions o;
+  o.subgroupSize = 4;
+  o.baseSubgroups = 4;
+  const SpcResult r = analyseSpc(kPhases, o);
+  const XbarRChart& c = r.chart;
+  ASSERT_EQ(c.subgroups(), 6u);
+  EXPECT_EQ(c.baseSubgroups, 4u);
+  EXPECT_NEAR(c.grandMean, 10.00625, 1e-12);
+  EXPECT_NEAR(c.meanRange, 0.325, 1e-12);
+  // The table's constants have 3 decimals: 0.0005 x 0.325 is the most they can differ by.
+  EXPECT_NEAR(c.xbarUcl, 10.243175, 2e-4);
+  EXPECT_NEAR(c.xbarLcl, 9.769325, 2e-4);
+  EXPECT_NEAR(c.rUcl, 0.74165, 2e-4);
+  EXPECT_EQ(c.rLcl, 0.0);
+  EXPECT_EQ(c.xbarOutOfControl, std::vector<std::size_t>{5});
+  EXPECT_TRUE(c.rOutOfControl.empty());
+  ASSERT_EQ(r.rules.size(), 1u);
+  EXPECT_EQ(r.rules[0].chart, RuleChart::Mean);
+  EXPECT_EQ(r.rules[0].rule, 1);
+  EXPECT_EQ(r.rules[0].subgroups, std::vector<std::size_t>{5});
+  // The mean of every value (60.425 / 6) is what Cpk, Ppk and the systematic error use.
+  EXPECT_NEAR(c.meanOfAll, 60.425 / 6.0, 1e-12);
+  const nlohmann::json j = spcResultToJson(r);
+  EXPECT_EQ(j["base_subgroups"], 4);
+  EXPECT_EQ(j["chart_type"], "xbar-r");
+  EXPECT_EQ(j["rules"], nlohmann::json::parse(R"([{"chart": "xbar", "rule": "nelson1", "subgroups": [6]}])"));
+  EXPECT_EQ(j["xbar_chart"]["out_of_control"], nlohmann::json::parse("[6]"));
+  EXPECT_NEAR(j["mean"].get<double>(), 60.425 / 6.0, 1e-12);
+  EXPECT_NEAR(j["xbar_chart"]["center"].get<double>(), 10.00625, 1e-12);
+
+  // With every subgroup as the base the limits are those of all six (xbarbar 10.0708, Rbar 0.28333).
+  o.baseSubgroups = 0;
+  const SpcResult all = analyseSpc(kPhases, o);
+  EXPECT_NEAR(all.chart.grandMean, 60.425 / 6.0, 1e-12);
+  EXPECT_NEAR(all.chart.meanRange, 1.7 / 6.0, 1e-12);
+  EXPECT_EQ(all.chart.baseSubgroups, 6u);
+  // ... and a base of all six subgroups is the default, to the byte.
+  o.baseSubgroups = 6;
+  EXPECT_EQ(spcResultToJson(analyseSpc(kPhases, o)).dump(), spcResultToJson(all).dump());
+}
+
+TEST(Spc, BaseMustBeTwoToTheNumberOfSubgroups) {
+  SpcOptions o;
+  o.subgroupSize = 4;
+  o.baseSubgroups = 1;
+  std::string why;
+  EXPECT_FALSE(o.isValid(&why));
+  EXPECT_EQ(why, "the base of the control limits must be 2 or more subgroups, got 1");
+  EXPECT_THROW(analyseSpc(kPhases, o), OptionsError);
+  o.baseSubgroups = 7;
+  try {
+    analyseSpc(kPhases, o, ErrorContext{"p.csv", 0, 0, "d_mm"});
+    FAIL();
+  } catch (const ValidationError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "p.csv: field 'd_mm': has 6 complete subgroups of 4, fewer than the base of 7 to set control "
+              "limits from");
+  }
+  // A base without variation, although later subgroups vary.
+  std::vector<double> flat(8, 10.0);
+  flat.insert(flat.end(), {10.0, 10.1, 10.2, 10.3});
+  o.baseSubgroups = 2;
+  try {
+    analyseSpc(flat, o);
+    FAIL();
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("every subgroup of the first 2 has a range of 0"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Individuals and moving range: x = 10.0, 10.2, 10.1, 10.4, 10.2, 10.3, 10.1, 10.2 (the base, K = 8),
+// then 11.0 and 10.2.
+//   mean of the base = 81.5 / 8 = 10.1875
+//   moving ranges 0.2, 0.1, 0.3, 0.2, 0.1, 0.2, 0.1 (subgroups 2..8) -> MRbar = 1.2 / 7 = 0.171429
+//   X chart     UCL/LCL = 10.1875 +- 2.66 x 0.171429 = 10.6435 / 9.7315 (published E2 = 2.66; exactly
+//               3 / d2(2) = 3 sqrt(pi) / 2 = 2.65868: 10.643274 / 9.731726)
+//   MR chart    UCL = 3.267 x 0.171429 = 0.56006 (exactly D4(2) = 1 + 1.5 sqrt(2 pi - 4) = 3.26653:
+//               0.559977), LCL = 0; sigma_within = MRbar / d2(2) = 0.171429 / 1.128379 = 0.151924
+// Phase II: 11.0 (subgroup 9) is beyond the X chart's UCL (rule 1 on xbar at 9); its moving ranges
+// 0.8 (subgroups 9 and 10) are beyond the MR chart's UCL (rule 1 on r at 9, 10), and two of three
+// beyond the MR chart's 2 sigma above, 0.171429 + 2 (0.559977 - 0.171429) / 3 = 0.43046 (rule 5 on r
+// at 10). Nothing else: the X chart's runs on one side are at most 3 long, and the MR chart's 1-sigma
+// excursions below (0.1 < 0.171429 - 0.171429 / 3 = 0.114286) are never four of five.
+const std::vector<double> kIndividuals = {10.0, 10.2, 10.1, 10.4, 10.2, 10.3, 10.1, 10.2, 11.0, 10.2};
+
+TEST(Spc, IndividualsAndMovingRange) {
+  SpcOptions o;
+  o.subgroupSize = 1;
+  o.baseSubgroups = 8;
+  ASSERT_TRUE(o.isValid(nullptr));
+  const SpcResult r = analyseSpc(kIndividuals, o);
+  const XbarRChart& c = r.chart;
+  EXPECT_EQ(c.type, ChartType::IndividualsMR);
+  ASSERT_EQ(c.subgroups(), 10u);
+  ASSERT_EQ(c.ranges.size(), 9u);
+  EXPECT_NEAR(c.ranges[0], 0.2, 1e-12);  // MR of subgroup 2
+  EXPECT_NEAR(c.grandMean, 10.1875, 1e-12);
+  const double mrbar = 1.2 / 7.0;
+  EXPECT_NEAR(c.meanRange, mrbar, 1e-12);
+  // Published constants (3 significant digits) ...
+  EXPECT_NEAR(c.xbarUcl, 10.1875 + 2.66 * mrbar, 3e-4);
+  EXPECT_NEAR(c.xbarLcl, 10.1875 - 2.66 * mrbar, 3e-4);
+  EXPECT_NEAR(c.rUcl, 3.267 * mrbar, 1e-4);
+  // ... and their closed forms for a range of two: d2 = 2 / sqrt(pi), D4 = 1 + 1.5 sqrt(2 pi - 4).
+  const double d2 = 2.0 / std::sqrt(std::numbers::pi);
+  EXPECT_NEAR(c.xbarUcl, 10.1875 + 3.0 / d2 * mrbar, 1e-6);
+  EXPECT_NEAR(c.xbarLcl, 10.1875 - 3.0 / d2 * mrbar, 1e-6);
+  EXPECT_NEAR(c.rUcl, (1.0 + 1.5 * std::sqrt(2.0 * std::numbers::pi - 4.0)) * mrbar, 1e-6);
+  EXPECT_EQ(c.rLcl, 0.0);
+  EXPECT_NEAR(r.capability.sigmaWithin, mrbar / d2, 1e-6);
+  EXPECT_EQ(r.constants.n, 2);  // the constants of the moving range's span
+  EXPECT_NEAR(r.constants.E2, 3.0 / d2, 1e-6);
+  EXPECT_EQ(r.valuesUsed, 10u);
+  EXPECT_EQ(r.valuesIgnored, 0u);
+  EXPECT_EQ(c.xbarOutOfControl, std::vector<std::size_t>{8});
+  EXPECT_EQ(c.rOutOfControl, (std::vector<std::size_t>{8, 9}));
+
+  const nlohmann::json j = spcResultToJson(r);
+  EXPECT_EQ(j["chart_type"], "x-mr");
+  EXPECT_EQ(j["subgroup_size"], 1);
+  EXPECT_EQ(j["base_subgroups"], 8);
+  EXPECT_EQ(j["r_chart"]["first_subgroup"], 2);
+  EXPECT_EQ(j["r_chart"]["points"].size(), 9u);
+  EXPECT_EQ(j["xbar_chart"]["points"].size(), 10u);
+  EXPECT_NEAR(j["constants"]["E2"].get<double>(), 2.66, 0.0015);  // printed 3 / 1.128; exactly 2.65868
+  EXPECT_EQ(j["rules"], nlohmann::json::parse(R"([
+      {"chart": "xbar", "rule": "nelson1", "subgroups": [9]},
+      {"chart": "r", "rule": "nelson1", "subgroups": [9, 10]},
+      {"chart": "r", "rule": "nelson5", "subgroups": [10]}])"));
+  EXPECT_EQ(j["r_chart"]["out_of_control"], nlohmann::json::parse("[9, 10]"));
+
+  // Too few values, and no variation between consecutive values.
+  o.baseSubgroups = 0;
+  try {
+    analyseSpc({5.0}, o, ErrorContext{"i.csv", 0, 0, "x"});
+    FAIL();
+  } catch (const ValidationError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "i.csv: field 'x': has 1 value: at least 2 are needed for a moving range");
+  }
+  try {
+    analyseSpc({5.0, 5.0, 5.0}, o);
+    FAIL();
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("every moving range is 0"), std::string::npos) << e.what();
+  }
+  // n = 0 stays invalid.
+  o.subgroupSize = 0;
+  EXPECT_FALSE(o.isValid(nullptr));
+}
+
+TEST(Spc, JsonListsRulesAlwaysAndKeepsItsKeys) {
+  const nlohmann::json j = spcResultToJson(analyseSpc(kData, withSpec()));
+  ASSERT_TRUE(j.contains("rules"));
+  EXPECT_TRUE(j["rules"].is_array());
+  EXPECT_TRUE(j["rules"].empty());
+  EXPECT_EQ(j["chart_type"], "xbar-r");
+  EXPECT_EQ(j["base_subgroups"], 3);
+  EXPECT_EQ(j["r_chart"]["first_subgroup"], 1);
+  EXPECT_FALSE(j["constants"].contains("E2"));
+  for (const char* key : {"subgroup_size",
+                          "subgroups",
+                          "values_used",
+                          "values_ignored",
+                          "constants",
+                          "xbar_chart",
+                          "r_chart",
+                          "in_control",
+                          "mean",
+                          "sigma_within",
+                          "sigma_overall",
+                          "natural_tolerance",
+                          "lsl",
+                          "usl",
+                          "cp",
+                          "cpk",
+                          "pp",
+                          "ppk",
+                          "trend",
+                          "compensation"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_NEAR(j["mean"].get<double>(), 10.0, 1e-12);
 }
 
 }  // namespace
