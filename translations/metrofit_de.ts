@@ -6514,8 +6514,13 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>model fitted on %1 (Thermal page; metrofit-cli thermal fit saves it)</source>
-        <translation>an %1 angepasstes Modell (Seite Thermik; metrofit-cli thermal fit speichert es)</translation>
+        <source>model fitted on %1; a grey model has no form a control runs: fit linear, lag or dlag to export it</source>
+        <translation>an %1 angepasstes Modell; ein Grey-Modell hat keine Form, die eine Steuerung ausführt: für den Export linear, lag oder dlag anpassen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>model fitted on %1; export it for the control on the Thermal page (Export compensation) or with metrofit-cli thermal export --format %2</source>
+        <translation>an %1 angepasstes Modell; für die Steuerung exportieren auf der Seite Thermik (Kompensation exportieren) oder mit metrofit-cli thermal export --format %2</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -9834,6 +9839,51 @@ merkmal</translation>
 </context>
 <context>
     <name>metrofit::ThermalPage</name>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Export compensation…</source>
+        <translation>Kompensation exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Write a trained model in a form the machine control runs: an IEC 61131-3 function block, SINUMERIK or Heidenhain data, ISG axis parameters or a table (metrofit-cli thermal export)</source>
+        <translation>Ein trainiertes Modell in einer Form schreiben, die die Maschinensteuerung ausführt: ein IEC-61131-3-Funktionsbaustein, SINUMERIK- oder Heidenhain-Daten, ISG-Achsparameter oder eine Tabelle (metrofit-cli thermal export)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Export compensation</source>
+        <translation>Kompensation exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Train the models first (Models tab): the export writes a trained model.</source>
+        <translation>Zuerst die Modelle trainieren (Reiter Modelle): der Export schreibt ein trainiertes Modell.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>%1 (held-out RMSE %2)</source>
+        <translation>%1 (RMSE der Testdaten %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>No trained model can be exported (a model that takes the applied effects&apos; columns cannot: the control does not have them).</source>
+        <translation>Kein trainiertes Modell kann exportiert werden (ein Modell mit den Spalten der übernommenen Effekte nicht: die Steuerung hat sie nicht).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Model:</source>
+        <translation>Modell:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Form (st: IEC 61131-3 function block; siemens, heidenhain, isg: the control&apos;s temperature compensation; csv: a table):</source>
+        <translation>Form (st: IEC-61131-3-Funktionsbaustein; siemens, heidenhain, isg: die Temperaturkompensation der Steuerung; csv: eine Tabelle):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Cannot export the compensation: %1</source>
+        <translation>Die Kompensation kann nicht exportiert werden: %1</translation>
+    </message>
     <message>
         <location filename="../app/gui/thermalpage.cpp" line="+87"/>
         <source>T&amp;rend</source>

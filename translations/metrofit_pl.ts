@@ -6530,8 +6530,13 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>model fitted on %1 (Thermal page; metrofit-cli thermal fit saves it)</source>
-        <translation>model dopasowany na %1 (strona Termika; metrofit-cli thermal fit go zapisuje)</translation>
+        <source>model fitted on %1; a grey model has no form a control runs: fit linear, lag or dlag to export it</source>
+        <translation>model dopasowany na %1; model szary nie ma postaci, którą wykonuje sterowanie: do eksportu dopasuj linear, lag lub dlag</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>model fitted on %1; export it for the control on the Thermal page (Export compensation) or with metrofit-cli thermal export --format %2</source>
+        <translation>model dopasowany na %1; eksport dla sterowania na stronie Termika (Eksportuj kompensację) lub poleceniem metrofit-cli thermal export --format %2</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -9865,6 +9870,51 @@ raportu</translation>
 </context>
 <context>
     <name>metrofit::ThermalPage</name>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Export compensation…</source>
+        <translation>Eksportuj kompensację…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Write a trained model in a form the machine control runs: an IEC 61131-3 function block, SINUMERIK or Heidenhain data, ISG axis parameters or a table (metrofit-cli thermal export)</source>
+        <translation>Zapisz wytrenowany model w postaci, którą wykonuje sterowanie maszyny: blok funkcyjny IEC 61131-3, dane SINUMERIK lub Heidenhain, parametry osi ISG albo tabela (metrofit-cli thermal export)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Export compensation</source>
+        <translation>Eksport kompensacji</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Train the models first (Models tab): the export writes a trained model.</source>
+        <translation>Najpierw wytrenuj modele (karta Modele): eksport zapisuje wytrenowany model.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>%1 (held-out RMSE %2)</source>
+        <translation>%1 (RMSE wierszy testowych %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>No trained model can be exported (a model that takes the applied effects&apos; columns cannot: the control does not have them).</source>
+        <translation>Żadnego wytrenowanego modelu nie można wyeksportować (modelu z kolumnami przyjętych efektów nie: sterowanie ich nie ma).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Model:</source>
+        <translation>Model:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Form (st: IEC 61131-3 function block; siemens, heidenhain, isg: the control&apos;s temperature compensation; csv: a table):</source>
+        <translation>Postać (st: blok funkcyjny IEC 61131-3; siemens, heidenhain, isg: kompensacja temperaturowa sterowania; csv: tabela):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <source>Cannot export the compensation: %1</source>
+        <translation>Nie można wyeksportować kompensacji: %1</translation>
+    </message>
     <message>
         <location filename="../app/gui/thermalpage.cpp" line="+87"/>
         <source>T&amp;rend</source>

@@ -1,5 +1,5 @@
-// metrofit-cli thermal fit|predict|hysteresis|modular|simulate (docs/file-formats.md#thermal-fit-result;
-// Abdulshahed 2016, grey neural network thermal model).
+// metrofit-cli thermal fit|predict|export|hysteresis|modular|simulate
+// (docs/file-formats.md#thermal-fit-result; Abdulshahed 2016, grey neural network thermal model).
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -13,10 +13,12 @@
 
 #include "app/cli/commands.h"
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/csv.h"
 #include "core/io/json_util.h"
 #include "core/sim/thermal_modular_sim.h"
 #include "core/study/study_settings.h"
+#include "core/thermal/control_export.h"
 #include "core/thermal/hysteresis.h"
 #include "core/thermal/thermal_log.h"
 #include "core/thermal/thermal_model.h"
@@ -37,6 +39,13 @@ struct FitArgs {
 
 struct PredictArgs {
   std::string modelFile, data, out;
+};
+
+struct ExportArgs {
+  std::string model, format, out, axis = "Z";
+  double periodS = 0.0;
+  double limitUm = thermal::ControlExportOptions{}.limitUm;
+  std::vector<std::string> grid;  ///< INPUT=FROM:TO:STEP
 };
 
 struct HysteresisArgs {
@@ -224,6 +233,41 @@ int runPredict(const PredictArgs& a) {
         "; against " + model.target + ": RMSE " + num(m.rmse) + unit + ", band " + num(m.residualBand) + unit;
   }
   summary(line);
+  return 0;
+}
+
+/// --grid INPUT=FROM:TO:STEP (the input or table column name may itself contain '=' and ':' only before
+/// the last '=').
+thermal::ControlGridAxis parseGrid(const std::string& spec) {
+  const auto fail = [&](const std::string& why) -> thermal::ControlGridAxis {
+    throw OptionsError(ErrorContext{{}, 0, 0, "--grid"},
+                       "expected INPUT=FROM:TO:STEP (e.g. t5_degC=0:10:1), " + why);
+  };
+  const std::size_t eq = spec.rfind('=');
+  if (eq == std::string::npos || eq == 0) return fail("got '" + spec + "'");
+  const std::string range = spec.substr(eq + 1);
+  const std::size_t c1 = range.find(':'), c2 = range.rfind(':');
+  if (c1 == std::string::npos || c2 == c1) return fail("got '" + spec + "'");
+  const auto from = num::parseDouble(range.substr(0, c1)),
+             to = num::parseDouble(range.substr(c1 + 1, c2 - c1 - 1)),
+             step = num::parseDouble(range.substr(c2 + 1));
+  if (!from || !to || !step) return fail("'" + range + "' are not three numbers");
+  return {spec.substr(0, eq), *from, *to, *step};
+}
+
+int runExport(const ExportArgs& a) {
+  const thermal::ThermalModel model = thermal::thermalModelFromJson(readJsonFile(a.model), a.model);
+  thermal::ControlExportOptions o;
+  o.source = a.model;
+  o.axis = a.axis.empty() ? 'Z' : a.axis[0];
+  o.samplePeriodS = a.periodS;
+  o.limitUm = a.limitUm;
+  for (const auto& g : a.grid) o.grid.push_back(parseGrid(g));
+  const thermal::ControlFormat format = thermal::controlFormat(a.format);
+  const std::string text = thermal::exportControl(model, format, o);
+  writeResult(a.out, text);
+  summary("thermal export: " + std::string(toString(model.kind)) + " model of " + model.target + " (" +
+          a.model + ") as " + toString(format) + (a.out.empty() ? "" : " to " + a.out));
   return 0;
 }
 
@@ -453,6 +497,35 @@ void registerThermalCommands(CLI::App& app) {
   addThermalLogOptions(pred);
   pred->add_option("--out", p->out, "Result file (CSV; written atomically). Default: stdout");
   pred->callback([p] { selectRunner([p]() -> int { return runPredict(*p); }); });
+
+  auto e = std::make_shared<ExportArgs>();
+  auto* exp = th->add_subcommand(
+      "export",
+      "A saved model in a form a machine control runs (ST function block, Siemens, Heidenhain, ISG, "
+      "table)");
+  existingFile(
+      exp->add_option("--model", e->model, "Model written by 'thermal fit --save-model'")->required());
+  exp->add_option("--format", e->format,
+                  "st (IEC 61131-3 function block), siemens (TEMP_COMP setting data), heidenhain (TEMPCOMP "
+                  "formula), isg (ISG / Beckhoff axis parameters) or csv (table on a grid)")
+      ->check(CLI::IsMember({"st", "siemens", "heidenhain", "isg", "csv"}))
+      ->required();
+  exp->add_option("--axis", e->axis, "The compensated axis (siemens, heidenhain, isg)")
+      ->check(CLI::IsMember({"X", "Y", "Z", "A", "B", "C", "U", "V", "W"}))
+      ->capture_default_str();
+  exp->add_option("--period-s", e->periodS,
+                  "PLC filter period in seconds for the vendor forms' filter coefficients; default: the "
+                  "model's log step")
+      ->check(positiveNumber());
+  exp->add_option("--limit-um", e->limitUm, "st: the compensation output is limited to +-this (um)")
+      ->check(positiveNumber())
+      ->capture_default_str();
+  exp->add_option(
+      "--grid", e->grid,
+      "csv: INPUT=FROM:TO:STEP, the grid of one input or table column (repeat); default 0..10 in " +
+          std::to_string(thermal::kDefaultGridPoints) + " points (mlp: its training range)");
+  exp->add_option("--out", e->out, "File to write (written atomically). Default: stdout");
+  exp->callback([e] { selectRunner([e]() -> int { return runExport(*e); }); });
 
   auto h = std::make_shared<HysteresisArgs>();
   auto* hys = th->add_subcommand(

@@ -8,6 +8,7 @@
 #include <QInputDialog>
 #include <QLabel>
 #include <QLocale>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QStackedWidget>
@@ -23,8 +24,10 @@
 #include "app/gui/studysettingbinding.h"
 #include "core/diagnose/applied_setup_matching.h"
 #include "core/diagnose/thermal_applied.h"
+#include "core/io/file_io.h"
 #include "core/project/stored_results.h"
 #include "core/study/thermal_result.h"
+#include "core/thermal/control_export.h"
 #include "core/thermal/thermal_log.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/storedresulttext.h"
@@ -36,6 +39,26 @@
 
 namespace metrofit {
 namespace {
+
+/// A file suffix for each control form.
+QString exportSuffix(thermal::ControlFormat f) {
+  switch (f) {
+    case thermal::ControlFormat::St:
+      return QStringLiteral("st");
+    case thermal::ControlFormat::Siemens:
+      return QStringLiteral("ini");
+    case thermal::ControlFormat::Csv:
+      return QStringLiteral("csv");
+    default:
+      return QStringLiteral("txt");
+  }
+}
+
+/// Model i of the comparison can go to a control: fitted, and on the declared inputs (not on the applied
+/// effects' columns, which Metrofit computes and a control does not have).
+bool exportable(const ThermalComparison& c, std::size_t i) {
+  return c.fitted(i) && !c.usesApplied[i];
+}
 
 enum Tab { kTrendTab = 0, kHysteresisTab = 1, kModelsTab = 2 };
 
@@ -101,6 +124,12 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   top->addWidget(comboLabel);
   top->addWidget(combo_);
   top->addStretch(1);
+  auto* exportButton = new QPushButton(tr("Export compensation…"), this);
+  exportButton->setObjectName(QStringLiteral("thermalExportCompensation"));
+  exportButton->setToolTip(
+      tr("Write a trained model in a form the machine control runs: an IEC 61131-3 function block, SINUMERIK "
+         "or Heidenhain data, ISG axis parameters or a table (metrofit-cli thermal export)"));
+  top->addWidget(exportButton);
 
   auto* notes = new NotesEdit(document_, QString::fromLatin1(study::kThermal), this);
 
@@ -110,6 +139,68 @@ ThermalPage::ThermalPage(ProjectDocument* document, QWidget* parent)
   layout->addWidget(stack_, 1);
   layout->addWidget(notes);
 
+  connect(exportButton, &QPushButton::clicked, this, [this] {
+    const ThermalComparison* c = models_->comparison();
+    if (c == nullptr) {
+      QMessageBox::information(this, tr("Export compensation"),
+                               tr("Train the models first (Models tab): the export writes a trained model."));
+      return;
+    }
+    QStringList labels;
+    std::vector<std::size_t> index;
+    int best = -1;
+    for (std::size_t i = 0; i < kThermalModelCount; ++i) {
+      if (!exportable(*c, i)) continue;
+      const QString kind = QString::fromLatin1(thermal::toString(kThermalModelOrder[i]));
+      labels << tr("%1 (held-out RMSE %2)").arg(kind, QLocale().toString(c->models[i].heldout.rmse, 'g', 4));
+      if (best < 0 ||
+          c->models[i].heldout.rmse < c->models[index[static_cast<std::size_t>(best)]].heldout.rmse)
+        best = static_cast<int>(index.size());
+      index.push_back(i);
+    }
+    if (index.empty()) {
+      QMessageBox::warning(
+          this, tr("Export compensation"),
+          tr("No trained model can be exported (a model that takes the applied effects' columns cannot: "
+             "the control does not have them)."));
+      return;
+    }
+    bool ok = false;
+    const QString chosen = QInputDialog::getItem(this, tr("Export compensation"), tr("Model:"), labels,
+                                                 std::max(0, best), false, &ok);
+    if (!ok) return;
+    const std::size_t i = index[static_cast<std::size_t>(std::max<qsizetype>(0, labels.indexOf(chosen)))];
+    const thermal::ThermalModel& model = c->models[i].training.model;
+    QStringList forms;
+    for (thermal::ControlFormat f : thermal::kAllControlFormats)
+      if (thermal::controlExportRefusal(model, f).empty()) forms << QString::fromLatin1(thermal::toString(f));
+    if (forms.isEmpty()) {
+      QMessageBox::warning(
+          this, tr("Export compensation"),
+          QString::fromStdString(thermal::controlExportRefusal(model, thermal::ControlFormat::St)));
+      return;
+    }
+    const QString form = QInputDialog::getItem(
+        this, tr("Export compensation"),
+        tr("Form (st: IEC 61131-3 function block; siemens, heidenhain, isg: the control's temperature "
+           "compensation; csv: a table):"),
+        forms, 0, false, &ok);
+    if (!ok) return;
+    const thermal::ControlFormat format = thermal::controlFormat(form.toStdString());
+    const QString suggested = QFileInfo(document_->fileName()).absolutePath() + QLatin1Char('/') + logId_ +
+                              QLatin1Char('_') + QString::fromLatin1(thermal::toString(model.kind)) +
+                              QLatin1Char('.') + exportSuffix(format);
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export compensation"), suggested);
+    if (path.isEmpty()) return;
+    try {
+      thermal::ControlExportOptions o;
+      o.source = logId_.toStdString();
+      writeFileAtomic(path.toStdString(), thermal::exportControl(model, format, o));
+    } catch (const std::exception& e) {
+      QMessageBox::warning(this, tr("Export compensation"),
+                           tr("Cannot export the compensation: %1").arg(QString::fromStdString(e.what())));
+    }
+  });
   connect(combo_, &QComboBox::currentIndexChanged, this, &ThermalPage::showLog);
   connect(document_, &ProjectDocument::changed, this, &ThermalPage::refresh);
   connect(tabs_, &QTabWidget::currentChanged, this, &ThermalPage::onTabChanged);

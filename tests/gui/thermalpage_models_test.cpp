@@ -11,6 +11,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QInputDialog>
 #include <QLabel>
 #include <QProgressBar>
@@ -36,6 +37,7 @@
 #include "core/project/project.h"
 #include "core/sim/thermal_sim.h"
 #include "core/study/thermal_comparison.h"
+#include "core/thermal/control_export.h"
 #include "core/thermal/thermal_model.h"
 #include "qtapp.h"
 #include "testsupport.h"
@@ -570,6 +572,53 @@ TEST_F(ThermalPageModelsTest, IdentifyOneModuleAgainKeepsTheOtherAndIsUndoable) 
   EXPECT_EQ(page.modularComparison()->modules.tests,
             (std::vector<std::string>{kModularZId, "c_after_bearings"}));
   EXPECT_LT(page.modularComparison()->modules.evaluation->test.rmse, 0.15);
+}
+
+// Export compensation…: the trained models a control can run are offered (the best first), then the forms
+// the chosen one can take; the file written is thermal::exportControl's text of that model.
+TEST_F(ThermalPageModelsTest, ExportCompensationWritesTheChosenModelInTheChosenForm) {
+  makeProject(480.0);
+  ThermalPage page(&document_);
+  page.showView(QStringLiteral("models"));
+  const ThermalComparison* c = page.modelView()->comparison();
+  ASSERT_NE(c, nullptr) << page.modelView()->statusText().toStdString();
+  auto* button = page.findChild<QPushButton*>(QStringLiteral("thermalExportCompensation"));
+  ASSERT_NE(button, nullptr);
+  const QString path = QString::fromStdString(tmp_.file("lag.st"));
+  QStringList models, forms;
+  int step = 0;
+  QTimer driver;
+  driver.setInterval(10);
+  QObject::connect(&driver, &QTimer::timeout, [&] {
+    QWidget* w = QApplication::activeModalWidget();
+    if (auto* d = qobject_cast<QInputDialog*>(w); d && d->isVisible()) {
+      if (step == 0) {
+        models = d->comboBoxItems();
+        for (const QString& m : models)
+          if (m.startsWith(QStringLiteral("lag "))) d->setTextValue(m);
+      } else {
+        forms = d->comboBoxItems();
+        d->setTextValue(QStringLiteral("st"));
+      }
+      ++step;
+      d->accept();
+    } else if (auto* f = qobject_cast<QFileDialog*>(w); f && f->isVisible()) {
+      f->selectFile(path);
+      static_cast<QDialog*>(f)->accept();  // QFileDialog::accept is protected; the dialog checks the name
+      ++step;
+    }
+  });
+  driver.start();
+  button->click();
+  driver.stop();
+  EXPECT_EQ(step, 3);
+  EXPECT_EQ(models.size(), 6) << models.join(QStringLiteral(", ")).toStdString();  // every model fitted
+  EXPECT_EQ(forms, (QStringList{"st", "siemens", "heidenhain", "isg", "csv"}));
+  thermal::ControlExportOptions o;
+  o.source = "gen";
+  const thermal::ThermalModel& lag = c->models[4].training.model;
+  ASSERT_EQ(lag.kind, thermal::ThermalModelKind::Lag);
+  EXPECT_EQ(test::readText(path.toStdString()), thermal::exportControl(lag, thermal::ControlFormat::St, o));
 }
 
 }  // namespace

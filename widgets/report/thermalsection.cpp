@@ -30,6 +30,7 @@
 #include "core/study/thermal_comparison.h"
 #include "core/study/thermal_result.h"
 #include "core/study/trend_analysis.h"
+#include "core/thermal/control_export.h"
 #include "core/thermal/hysteresis.h"
 #include "core/thermal/model_verdict.h"
 #include "widgets/report/reportpainter.h"
@@ -699,10 +700,24 @@ void concludeThermal(ReportPainter& out, const ReportContext& context, const Rep
     if (!rejectedText.isEmpty()) f.found += QLatin1Char(' ') + rejectedText;
     f.after = ReportText::tr("RMS %1%2 (band ±%3%2) left with %4")
                   .arg(metric(ev.heldout.rmse, dec), u, metric(ev.heldout.residualBand, dec), name);
-    f.changes.push_back(
-        {ReportText::tr("thermal compensation of %1").arg(target), name,
-         ReportText::tr("model fitted on %1 (Thermal page; metrofit-cli thermal fit saves it)")
-             .arg(QString::fromStdString(dataset.ref.id))});
+    // How the compensation reaches the control: the forms the model can take (core/thermal/control_export.h).
+    const thermal::ThermalModel& chosen = ev.training.model;
+    QStringList forms;
+    for (thermal::ControlFormat form : thermal::kAllControlFormats)
+      if (thermal::controlExportRefusal(chosen, form).empty())
+        forms << QString::fromLatin1(thermal::toString(form));
+    const QString how =
+        forms.isEmpty()
+            ? ReportText::tr(
+                  "model fitted on %1; a grey model has no form a control runs: fit linear, lag or "
+                  "dlag to export it")
+                  .arg(QString::fromStdString(dataset.ref.id))
+            : ReportText::tr(
+                  "model fitted on %1; export it for the control on the Thermal page (Export compensation) "
+                  "or "
+                  "with metrofit-cli thermal export --format %2")
+                  .arg(QString::fromStdString(dataset.ref.id), forms.join(QLatin1Char('|')));
+    f.changes.push_back({ReportText::tr("thermal compensation of %1").arg(target), name, how});
     f.conclusion = ReportText::tr(
                        "%1 predicts %2 on rows it was not fitted on to RMS %3%4, from RMS %5%4 "
                        "without compensation.")
