@@ -250,6 +250,99 @@ Möchten Sie die automatisch gesicherten Änderungen wiederherstellen? Sie werde
     </message>
 </context>
 <context>
+    <name>metrofit::BallbarText</name>
+    <message>
+        <location filename="../widgets/kinematics/ballbartext.cpp" line="+30"/>
+        <source>Backlash %1</source>
+        <translation>Umkehrspiel %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reversal spikes %1</source>
+        <translation>Umkehrspitzen %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lateral play %1</source>
+        <translation>Seitliches Spiel %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Straightness %1</source>
+        <translation>Geradheit %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cyclic error %1</source>
+        <translation>Zyklischer Fehler %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Servo mismatch</source>
+        <translation>Servo-Fehlanpassung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scale mismatch</source>
+        <translation>Maßstabsabweichung X/Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Squareness</source>
+        <translation>Rechtwinkligkeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unexplained (RMS)</source>
+        <translation>Nicht erklärt (RMS)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Lost motion of the %1 axis at its reversals: the axis lags half of it behind its direction of motion</source>
+        <translation>Lose der %1-Achse an ihren Umkehrpunkten: die Achse bleibt um die Hälfte davon hinter ihrer Bewegungsrichtung zurück</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Peak of a short lag of the %1 axis after each reversal, decaying over about 2° of the path; positive: outwards</source>
+        <translation>Spitzenwert eines kurzen Nachlaufs der %1-Achse nach jeder Umkehr, abklingend über etwa 2° der Bahn; positiv: nach außen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Sideways step of the %1 carriage when its axis reverses</source>
+        <translation>Seitlicher Versatz des %1-Schlittens, wenn seine Achse umkehrt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Bow of the %1 axis across the test diameter (its middle relative to its ends)</source>
+        <translation>Durchbiegung der %1-Achse über den Testdurchmesser (ihre Mitte gegenüber ihren Enden)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Amplitude of the periodic error of the %1 axis with the screw pitch</source>
+        <translation>Amplitude des periodischen Fehlers der %1-Achse mit der Spindelsteigung</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Difference of the X and Y following errors at the test&apos;s feed; positive: X lags more</source>
+        <translation>Unterschied der Schleppfehler von X und Y beim Vorschub des Tests; positiv: X läuft stärker nach</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(Scale of X − scale of Y) × radius; positive: X travels further than Y</source>
+        <translation>(Maßstab von X − Maßstab von Y) × Radius; positiv: X fährt weiter als Y</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Squareness error (b − a) × radius: the shear over the test radius</source>
+        <translation>Rechtwinkligkeitsfehler (b − a) × Radius: die Scherung über den Testradius</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>RMS of what the causes leave: noise and errors not in the list</source>
+        <translation>RMS dessen, was die Ursachen übrig lassen: Rauschen und Fehler, die nicht in der Liste stehen</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::ChartExport</name>
     <message>
         <location filename="../widgets/common/chartexport.cpp" line="+137"/>
@@ -2031,7 +2124,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+170"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+171"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -2117,7 +2210,12 @@ Anzahl: %4</translation>
         <translation>&lt;b&gt;Kompensation&lt;/b&gt; des Nennkreises</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+139"/>
+        <source>cause</source>
+        <translation>Ursache</translation>
+    </message>
+    <message>
+        <location line="-121"/>
         <source>&amp;Path</source>
         <translation>Bah&amp;n</translation>
     </message>
@@ -2257,6 +2355,31 @@ Anzahl: %4</translation>
         <translation>&amp;Antriebe</translation>
     </message>
     <message>
+        <location line="+10"/>
+        <source>The radial deviation of both runs fitted to the signature of each cause, after the centre and radius of each run (as metrofit-cli kinematic identify writes it under &quot;causes&quot;). Share: the part of the radial deviation&apos;s variance the cause explains. Grey: within the noise (at most three standard errors).</source>
+        <translation>Die radiale Abweichung beider Läufe, angepasst an die Signatur jeder Ursache, nach Mittelpunkt und Radius jedes Laufs (wie metrofit-cli kinematic identify sie unter &quot;causes&quot; schreibt). Anteil: der Teil der Varianz der radialen Abweichung, den die Ursache erklärt. Grau: im Rauschen (höchstens drei Standardfehler).</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>value (µm)</source>
+        <translation>Wert (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>± std. error (µm)</source>
+        <translation>± Standardfehler (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>share (%)</source>
+        <translation>Anteil (%)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Ballbar</source>
+        <translation>&amp;Ballbar</translation>
+    </message>
+    <message>
         <location line="+15"/>
         <source>C&amp;ircular test:</source>
         <translation>Kreisform&amp;test:</translation>
@@ -2338,56 +2461,56 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+94"/>
+        <location line="+136"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-134"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+92"/>
+        <location line="+134"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-90"/>
+        <location line="-132"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Wo das Werkzeug beim Sollwert 0 steht (Oyr aus Gl. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+90"/>
+        <location line="+132"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-88"/>
+        <location line="-130"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Der X-Antrieb bewegt sich entlang (cos a, sin a); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+88"/>
+        <location line="+130"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-86"/>
+        <location line="-128"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Der Y-Antrieb bewegt sich entlang (-sin b, cos b); gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+86"/>
+        <location line="+128"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-126"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Der Winkel zwischen den Achsen beträgt 90° + (b − a)</translation>
     </message>
@@ -2427,7 +2550,27 @@ Anzahl: %4</translation>
         <translation>Bahn (XY)</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+29"/>
+        <source>&lt;b&gt;Ballbar breakdown&lt;/b&gt;: not available (%1)</source>
+        <translation>&lt;b&gt;Ballbar-Aufschlüsselung&lt;/b&gt;: nicht verfügbar (%1)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&lt;b&gt;Ballbar breakdown&lt;/b&gt; (ranked by share)</source>
+        <translation>&lt;b&gt;Ballbar-Aufschlüsselung&lt;/b&gt; (nach Anteil geordnet)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;b&gt;Ballbar breakdown&lt;/b&gt; (ranked by share; one direction: no reversal causes)</source>
+        <translation>&lt;b&gt;Ballbar-Aufschlüsselung&lt;/b&gt; (nach Anteil geordnet; eine Richtung: keine Umkehrursachen)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Within the noise: |%1 µm| is at most three standard errors (%2 µm)</source>
+        <translation>Im Rauschen: |%1 µm| ist höchstens drei Standardfehler (%2 µm)</translation>
+    </message>
+    <message>
+        <location line="+74"/>
         <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: choose the edges machined along X and along Y above (feature series, CSV position_mm,deviation_mm in mm, e.g. made by metrofit-cli simulate edge).</source>
         <translation>&lt;b&gt;Von SPC zur Kompensation&lt;/b&gt;: Wählen Sie oben die entlang X und entlang Y bearbeiteten Kanten (Merkmalsreihen, CSV position_mm,deviation_mm in mm, z. B. erzeugt mit metrofit-cli simulate edge).</translation>
     </message>
@@ -2437,7 +2580,7 @@ Anzahl: %4</translation>
         <translation>&lt;b&gt;Drei Achsen&lt;/b&gt;: Wählen Sie oben die Kreisformtests in den Ebenen XY, YZ und ZX (z. B. erzeugt mit metrofit-cli simulate circular --plane yz).</translation>
     </message>
     <message>
-        <location line="-226"/>
+        <location line="-268"/>
         <location line="+110"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
@@ -2455,7 +2598,7 @@ Anzahl: %4</translation>
         <translation>gemessen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Write the feature series with its limits as a Q-DAS DFQ file (the K-field file SPC packages import)</source>
         <translation>Die Merkmalsreihe mit ihren Grenzen als Q-DAS-DFQ-Datei schreiben (die K-Feld-Datei, die SPC-Programme importieren)</translation>
     </message>
@@ -2477,7 +2620,7 @@ Anzahl: %4</translation>
         <translation>Die Kinematikstudie nennt keine SPC-Reihe. Setzen Sie &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} in der Kinematikstudie des Projekts.</translation>
     </message>
     <message numerus="yes">
-        <location line="+13"/>
+        <location line="+54"/>
         <source>compensation applied: %n of 4 line parameters beyond ± k standard errors (k = %1), residuals in control</source>
         <translation>
             <numerusform>Kompensation angewendet: %n von 4 Geradenparametern außerhalb ± k Standardfehler (k = %1), Residuen beherrscht</numerusform>
@@ -2661,7 +2804,7 @@ Anzahl: %4</translation>
         <translation>Zuerst die entlang X und Y bearbeiteten Kanten wählen</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+58"/>
         <source>Export compensated path as G-code</source>
         <translation>Kompensierte Bahn als G-Code exportieren</translation>
     </message>
@@ -4521,14 +4664,16 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+223"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+119"/>
+        <location line="+137"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-404"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+0"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-137"/>
+        <location line="+137"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
@@ -4644,13 +4789,13 @@ Abweichung: %3 µm</translation>
         <translation>Für jede Studie wird das deklarierte Modell angepasst und sein Residuum berechnet; Kandidateneffekte, die dem Modell fehlen, werden einzeln getestet und jeweils mit ihren Parametern und deren Standardfehlern geschätzt. Ein Effekt wird nur bei ausreichender Evidenz übernommen (Verbesserung auf den Testdaten bei Thermik, sonst ein Informationskriterium mit konservativer Schwelle) und wenn er den Fehler praktisch relevant verringert; das Modell wird mit ihm neu angepasst und die Suche wiederholt, bis nichts mehr gefunden wird.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-181"/>
-        <location line="+233"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-213"/>
+        <location line="+265"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-233"/>
+        <location line="-265"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -4666,36 +4811,36 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+236"/>
+        <location line="+268"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-234"/>
-        <location line="+236"/>
+        <location line="-266"/>
+        <location line="+268"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-234"/>
-        <location line="+235"/>
+        <location line="-266"/>
+        <location line="+267"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+235"/>
+        <location line="-265"/>
+        <location line="+267"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+235"/>
+        <location line="-265"/>
+        <location line="+267"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-233"/>
+        <location line="-265"/>
         <source>RMS residual (µm)</source>
         <translation>RMS-Residuum (µm)</translation>
     </message>
@@ -4755,13 +4900,63 @@ Abweichung: %3 µm</translation>
         <translation>Umkehrspanne H: nicht verfügbar (der Test hat nur eine Richtung).</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>Ballbar breakdown</source>
+        <translation>Ballbar-Aufschlüsselung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not available: %1.</source>
+        <translation>Nicht verfügbar: %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The radial deviation of %1 fitted by least squares to the signature of each cause, after the centre and radius of each run; ranked by share, the part of the radial deviation&apos;s variance the cause explains. A cause is above the noise when its value exceeds three standard errors.</source>
+        <translation>Die radiale Abweichung %1, nach der Methode der kleinsten Quadrate an die Signatur jeder Ursache angepasst, nach Mittelpunkt und Radius jedes Laufs; geordnet nach Anteil, dem Teil der Varianz der radialen Abweichung, den die Ursache erklärt. Eine Ursache liegt über dem Rauschen, wenn ihr Wert drei Standardfehler übersteigt.</translation>
+    </message>
+    <message>
         <location line="+4"/>
-        <location line="+310"/>
+        <source>both runs (CCW and CW)</source>
+        <translation>beider Läufe (CCW und CW)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the one run (without the reversal causes, which need both directions)</source>
+        <translation>des einen Laufs (ohne die Umkehrursachen, die beide Richtungen brauchen)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>cause</source>
+        <translation>Ursache</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>value (µm)</source>
+        <translation>Wert (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>± std. error (µm)</source>
+        <translation>± Standardfehler (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>share (%)</source>
+        <translation>Anteil (%)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>above the noise</source>
+        <translation>über dem Rauschen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location line="+311"/>
         <source>Circular test “%1”</source>
         <translation>Kreisformtest „%1“</translation>
     </message>
     <message>
-        <location line="-302"/>
+        <location line="-303"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 Punkte; Nennkreis R %2 mm um (%3; %4) mm; %5 Umläufe (gegen, dann mit dem Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (%8, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt bestimmt (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
     </message>
@@ -4782,7 +4977,7 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+285"/>
+        <location line="+286"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>

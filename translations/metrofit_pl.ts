@@ -250,6 +250,99 @@ Czy chcesz przywrócić automatycznie zapisane zmiany? Zostaną otwarte jako nie
     </message>
 </context>
 <context>
+    <name>metrofit::BallbarText</name>
+    <message>
+        <location filename="../widgets/kinematics/ballbartext.cpp" line="+30"/>
+        <source>Backlash %1</source>
+        <translation>Luz zwrotny %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reversal spikes %1</source>
+        <translation>Piki przy nawrocie %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lateral play %1</source>
+        <translation>Luz poprzeczny %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Straightness %1</source>
+        <translation>Prostoliniowość %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cyclic error %1</source>
+        <translation>Błąd cykliczny %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Servo mismatch</source>
+        <translation>Niedopasowanie serwonapędów</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scale mismatch</source>
+        <translation>Niedopasowanie skali X/Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Squareness</source>
+        <translation>Prostopadłość</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unexplained (RMS)</source>
+        <translation>Niewyjaśnione (RMS)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Lost motion of the %1 axis at its reversals: the axis lags half of it behind its direction of motion</source>
+        <translation>Martwy ruch osi %1 w punktach nawrotu: oś pozostaje o jego połowę w tyle za kierunkiem ruchu</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Peak of a short lag of the %1 axis after each reversal, decaying over about 2° of the path; positive: outwards</source>
+        <translation>Szczyt krótkiego opóźnienia osi %1 po każdym nawrocie, zanikającego na około 2° ścieżki; dodatni: na zewnątrz</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Sideways step of the %1 carriage when its axis reverses</source>
+        <translation>Boczny uskok sań %1 przy nawrocie ich osi</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Bow of the %1 axis across the test diameter (its middle relative to its ends)</source>
+        <translation>Ugięcie osi %1 na średnicy testu (jej środek względem jej końców)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Amplitude of the periodic error of the %1 axis with the screw pitch</source>
+        <translation>Amplituda błędu okresowego osi %1 o okresie skoku śruby</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Difference of the X and Y following errors at the test&apos;s feed; positive: X lags more</source>
+        <translation>Różnica uchybów nadążania X i Y przy posuwie testu; dodatnia: X opóźnia się bardziej</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(Scale of X − scale of Y) × radius; positive: X travels further than Y</source>
+        <translation>(skala X − skala Y) × promień; dodatnie: X przesuwa się dalej niż Y</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Squareness error (b − a) × radius: the shear over the test radius</source>
+        <translation>Błąd prostopadłości (b − a) × promień: ścinanie na promieniu testu</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>RMS of what the causes leave: noise and errors not in the list</source>
+        <translation>RMS tego, co pozostawiają przyczyny: szum i błędy spoza listy</translation>
+    </message>
+</context>
+<context>
     <name>metrofit::ChartExport</name>
     <message>
         <location filename="../widgets/common/chartexport.cpp" line="+137"/>
@@ -2038,7 +2131,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+170"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+171"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identyfikuj</translation>
     </message>
@@ -2124,7 +2217,12 @@ liczba: %4</translation>
         <translation>&lt;b&gt;Kompensacja&lt;/b&gt; okręgu nominalnego</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+139"/>
+        <source>cause</source>
+        <translation>przyczyna</translation>
+    </message>
+    <message>
+        <location line="-121"/>
         <source>&amp;Path</source>
         <translation>&amp;Tor</translation>
     </message>
@@ -2264,6 +2362,31 @@ liczba: %4</translation>
         <translation>&amp;Napędy</translation>
     </message>
     <message>
+        <location line="+10"/>
+        <source>The radial deviation of both runs fitted to the signature of each cause, after the centre and radius of each run (as metrofit-cli kinematic identify writes it under &quot;causes&quot;). Share: the part of the radial deviation&apos;s variance the cause explains. Grey: within the noise (at most three standard errors).</source>
+        <translation>Odchylenie promieniowe obu przebiegów dopasowane do sygnatury każdej przyczyny, po środku i promieniu każdego przebiegu (tak jak metrofit-cli kinematic identify zapisuje je w &quot;causes&quot;). Udział: część wariancji odchylenia promieniowego, którą wyjaśnia przyczyna. Szare: w granicach szumu (najwyżej trzy błędy standardowe).</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>value (µm)</source>
+        <translation>wartość (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>± std. error (µm)</source>
+        <translation>± błąd standardowy (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>share (%)</source>
+        <translation>udział (%)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Ballbar</source>
+        <translation>&amp;Ballbar</translation>
+    </message>
+    <message>
         <location line="+15"/>
         <source>C&amp;ircular test:</source>
         <translation>Test kołow&amp;y:</translation>
@@ -2346,56 +2469,56 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+94"/>
+        <location line="+136"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-134"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), x</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), x</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+92"/>
+        <location line="+134"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-90"/>
+        <location line="-132"/>
         <source>Where the tool is at command 0 (Oyr of Eq. 9), y</source>
         <translation>Gdzie znajduje się narzędzie przy wartości zadanej 0 (Oyr z równ. 9), y</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+90"/>
+        <location line="+132"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-88"/>
+        <location line="-130"/>
         <source>The X actuator moves along (cos a, sin a); counter-clockwise positive</source>
         <translation>Napęd X porusza się wzdłuż (cos a, sin a); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+88"/>
+        <location line="+130"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-86"/>
+        <location line="-128"/>
         <source>The Y actuator moves along (-sin b, cos b); counter-clockwise positive</source>
         <translation>Napęd Y porusza się wzdłuż (-sin b, cos b); dodatnio przeciwnie do ruchu wskazówek zegara</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+86"/>
+        <location line="+128"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-126"/>
         <source>The angle between the axes is 90° + (b − a)</source>
         <translation>Kąt między osiami wynosi 90° + (b − a)</translation>
     </message>
@@ -2435,7 +2558,27 @@ liczba: %4</translation>
         <translation>Tor (XY)</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+29"/>
+        <source>&lt;b&gt;Ballbar breakdown&lt;/b&gt;: not available (%1)</source>
+        <translation>&lt;b&gt;Rozkład ballbar&lt;/b&gt;: niedostępny (%1)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&lt;b&gt;Ballbar breakdown&lt;/b&gt; (ranked by share)</source>
+        <translation>&lt;b&gt;Rozkład ballbar&lt;/b&gt; (według udziału)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;b&gt;Ballbar breakdown&lt;/b&gt; (ranked by share; one direction: no reversal causes)</source>
+        <translation>&lt;b&gt;Rozkład ballbar&lt;/b&gt; (według udziału; jeden kierunek: bez przyczyn nawrotnych)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Within the noise: |%1 µm| is at most three standard errors (%2 µm)</source>
+        <translation>W granicach szumu: |%1 µm| to najwyżej trzy błędy standardowe (%2 µm)</translation>
+    </message>
+    <message>
+        <location line="+74"/>
         <source>&lt;b&gt;From SPC to compensation&lt;/b&gt;: choose the edges machined along X and along Y above (feature series, CSV position_mm,deviation_mm in mm, e.g. made by metrofit-cli simulate edge).</source>
         <translation>&lt;b&gt;Od SPC do kompensacji&lt;/b&gt;: wybierz powyżej krawędzie obrobione wzdłuż X i wzdłuż Y (serie cech, CSV position_mm,deviation_mm w mm, np. utworzone przez metrofit-cli simulate edge).</translation>
     </message>
@@ -2445,7 +2588,7 @@ liczba: %4</translation>
         <translation>&lt;b&gt;Trzy osie&lt;/b&gt;: wybierz powyżej testy kołowe w płaszczyznach XY, YZ i ZX (utworzone np. przez metrofit-cli simulate circular --plane yz).</translation>
     </message>
     <message>
-        <location line="-226"/>
+        <location line="-268"/>
         <location line="+110"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
@@ -2463,7 +2606,7 @@ liczba: %4</translation>
         <translation>zmierzony</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Write the feature series with its limits as a Q-DAS DFQ file (the K-field file SPC packages import)</source>
         <translation>Zapisz serię cechy wraz z granicami jako plik Q-DAS DFQ (plik pól K importowany przez programy SPC)</translation>
     </message>
@@ -2485,7 +2628,7 @@ liczba: %4</translation>
         <translation>Studium kinematyki nie wskazuje serii SPC. Ustaw &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} w studium kinematyki projektu.</translation>
     </message>
     <message numerus="yes">
-        <location line="+13"/>
+        <location line="+54"/>
         <source>compensation applied: %n of 4 line parameters beyond ± k standard errors (k = %1), residuals in control</source>
         <translation>
             <numerusform>kompensacja zastosowana: %n z 4 parametrów prostej poza ± k błędów standardowych (k = %1), residua pod kontrolą</numerusform>
@@ -2670,7 +2813,7 @@ liczba: %4</translation>
         <translation>Najpierw wybierz krawędzie obrobione wzdłuż X i Y</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+58"/>
         <source>Export compensated path as G-code</source>
         <translation>Eksport skompensowanego toru jako G-code</translation>
     </message>
@@ -4531,14 +4674,16 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+223"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="+119"/>
+        <location line="+137"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-404"/>
         <source>yes</source>
         <translation>tak</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="+0"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-137"/>
+        <location line="+137"/>
         <source>no</source>
         <translation>nie</translation>
     </message>
@@ -4654,13 +4799,13 @@ odchyłka: %3 µm</translation>
         <translation>Dla każdego studium dopasowywany jest zadeklarowany model i obliczane jego residuum; brakujące w modelu efekty kandydujące są sprawdzane kolejno, każdy estymowany wraz z parametrami i ich błędami standardowymi. Efekt jest przyjmowany tylko na podstawie dowodów (poprawa na danych testowych dla termiki, w pozostałych przypadkach kryterium informacyjne z ostrożnym progiem) i gdy zmniejsza błąd o praktycznie istotną wartość; model jest ponownie dopasowywany z tym efektem, a wyszukiwanie powtarzane, dopóki nic więcej nie zostanie znalezione.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-181"/>
-        <location line="+233"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-213"/>
+        <location line="+265"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-233"/>
+        <location line="-265"/>
         <source>identified</source>
         <translation>zidentyfikowany</translation>
     </message>
@@ -4676,36 +4821,36 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+236"/>
+        <location line="+268"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-234"/>
-        <location line="+236"/>
+        <location line="-266"/>
+        <location line="+268"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-234"/>
-        <location line="+235"/>
+        <location line="-266"/>
+        <location line="+267"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+235"/>
+        <location line="-265"/>
+        <location line="+267"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+235"/>
+        <location line="-265"/>
+        <location line="+267"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-233"/>
+        <location line="-265"/>
         <source>RMS residual (µm)</source>
         <translation>residuum RMS (µm)</translation>
     </message>
@@ -4765,13 +4910,63 @@ odchyłka: %3 µm</translation>
         <translation>Histereza kołowa H: niedostępna (test ma tylko jeden kierunek).</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>Ballbar breakdown</source>
+        <translation>Rozkład ballbar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not available: %1.</source>
+        <translation>Niedostępny: %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The radial deviation of %1 fitted by least squares to the signature of each cause, after the centre and radius of each run; ranked by share, the part of the radial deviation&apos;s variance the cause explains. A cause is above the noise when its value exceeds three standard errors.</source>
+        <translation>Odchylenie promieniowe %1 dopasowane metodą najmniejszych kwadratów do sygnatury każdej przyczyny, po środku i promieniu każdego przebiegu; uporządkowane według udziału, czyli części wariancji odchylenia promieniowego, którą wyjaśnia przyczyna. Przyczyna jest ponad szumem, gdy jej wartość przekracza trzy błędy standardowe.</translation>
+    </message>
+    <message>
         <location line="+4"/>
-        <location line="+310"/>
+        <source>both runs (CCW and CW)</source>
+        <translation>obu przebiegów (CCW i CW)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the one run (without the reversal causes, which need both directions)</source>
+        <translation>jedynego przebiegu (bez przyczyn nawrotnych, które wymagają obu kierunków)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>cause</source>
+        <translation>przyczyna</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>value (µm)</source>
+        <translation>wartość (µm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>± std. error (µm)</source>
+        <translation>± błąd standardowy (µm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>share (%)</source>
+        <translation>udział (%)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>above the noise</source>
+        <translation>ponad szumem</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location line="+311"/>
         <source>Circular test “%1”</source>
         <translation>Test kołowy „%1”</translation>
     </message>
     <message>
-        <location line="-302"/>
+        <location line="-303"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 punktów; okrąg nominalny R %2 mm wokół (%3; %4) mm; %5 pętli (przeciwnie, potem zgodnie z ruchem wskazówek zegara). Błędy napędów maszyny kartezjańskiej (%8, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wyznaczono metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
     </message>
@@ -4792,7 +4987,7 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+285"/>
+        <location line="+286"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>

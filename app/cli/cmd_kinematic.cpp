@@ -2,6 +2,8 @@
 // kinematic simulators.
 //   identify   --data C.csv [--out E.json]
 //       the JSON also has "iso230_4": the ISO 230-4 results of the test (core/kinematics/iso230_4.h)
+//       and "causes": the ballbar breakdown (core/kinematics/ballbar.h; null when the commands are not
+//       one full circle); [--screw-pitch P] adds the cyclic errors of that pitch
 //   circular   --data C.csv [--out R.json]
 //       the ISO 230-4 results (G, H, F per direction) of a circular test in either form: x/y or the
 //       radial-only form a ballbar exports (angle_deg, deviation_um | deviation_mm, ...)
@@ -56,6 +58,7 @@
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
 #include "core/io/json_util.h"
+#include "core/kinematics/ballbar.h"
 #include "core/kinematics/cartesian_model.h"
 #include "core/kinematics/export.h"
 #include "core/kinematics/identification.h"
@@ -73,6 +76,7 @@ namespace {
 
 struct IdentifyArgs {
   std::string data, out;
+  double screwPitchMm = BallbarOptions{}.screwPitchMm;
 };
 
 struct CompensateArgs {
@@ -103,16 +107,33 @@ int runIdentify(const IdentifyArgs& a) {
   }
   nlohmann::json j = identifyResultToJson(r);
   j["iso230_4"] = iso230ResultToJson(evaluateIso230_4(circularTraceOf(path)));
+  // The ballbar breakdown of a circular test; any other path (or one the breakdown cannot use) gets
+  // null and the reason in the summary, so identify still works on every path it worked on before.
+  BallbarOptions ballbar;
+  ballbar.screwPitchMm = a.screwPitchMm;
+  std::string causes;
+  j["causes"] = nullptr;
+  try {
+    const BallbarBreakdown b = ballbarBreakdown(path, ballbar);
+    j["causes"] = ballbarCausesToJson(b);
+    if (!b.causes.empty()) {
+      const BallbarCause& top = b.causes.front();
+      causes = ", top cause " + top.name + " " + g(top.valueUm, "%.3g") + " um (" +
+               g(top.share * 100.0, "%.3g") + " %)";
+    }
+  } catch (const ValidationError& e) {
+    causes = ", " + e.detail();  // "no ballbar breakdown: <why>"
+  }
   writeResult(a.out, dumpJson(j));
   const ActuatorErrors2& e = r.errors;
   std::fprintf(
       stderr,
       "kinematic identify: %zu points, origin (%s, %s) mm, a = %s deg, b = %s deg, squareness %s deg "
-      "(+-%s), rmse %s mm, %ld iteration%s (%s)\n",
+      "(+-%s), rmse %s mm, %ld iteration%s (%s)%s\n",
       r.points, g(e.originMm.x()).c_str(), g(e.originMm.y()).c_str(), g(e.xAxisAngleDeg).c_str(),
       g(e.yAxisAngleDeg).c_str(), g(e.squarenessDeg()).c_str(), g(r.squarenessStdErrDeg, "%.2g").c_str(),
       g(r.rmseMm, "%.3g").c_str(), r.run.iterations, r.run.iterations == 1 ? "" : "s",
-      toString(r.run.termination));
+      toString(r.run.termination), causes.c_str());
   return 0;
 }
 
@@ -562,6 +583,10 @@ void registerKinematicCommands(CLI::App& app) {
       kin->add_subcommand("identify", "Identify actuator errors from a measured path or circular test");
   existingFile(id->add_option("--data", a->data, "Measured path (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm)")
                    ->required());
+  id->add_option("--screw-pitch", a->screwPitchMm,
+                 "Screw pitch (mm): the ballbar breakdown also fits the cyclic error of each axis with this "
+                 "period. Default: no cyclic error")
+      ->check(positiveNumber());
   addCsvOptions(id);
   addOut(id, a->out);
   id->callback([a] { selectRunner([a]() -> int { return runIdentify(*a); }); });

@@ -42,6 +42,7 @@
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/storedresulttext.h"
 #include "widgets/document/studyinfo.h"
+#include "widgets/kinematics/ballbartext.h"
 #include "widgets/kinematics/kinematicsviews.h"
 
 namespace metrofit {
@@ -346,6 +347,29 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
                             pickers_[2].combo, pickers_[3].combo, pickers_[4].combo, threeAxisTable_};
   for (std::size_t i = 0; i + 1 < std::size(order); ++i) QWidget::setTabOrder(order[i], order[i + 1]);
   tabs_->addTab(actuators, tr("&Actuators"));
+
+  // The ballbar breakdown of the test (core/kinematics/ballbar.h), ranked by share.
+  auto* causes = new QWidget(this);
+  auto* causesLayout = new QVBoxLayout(causes);
+  ballbarLabel_ = new QLabel(causes);
+  ballbarLabel_->setObjectName(QStringLiteral("ballbarLabel"));
+  ballbarLabel_->setWordWrap(true);
+  ballbarLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto* causesNote = new QLabel(
+      tr("The radial deviation of both runs fitted to the signature of each cause, after the centre and "
+         "radius of each run (as metrofit-cli kinematic identify writes it under \"causes\"). Share: the "
+         "part "
+         "of the radial deviation's variance the cause explains. Grey: within the noise (at most three "
+         "standard errors)."),
+      causes);
+  causesNote->setWordWrap(true);
+  causesNote->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  ballbarTable_ = makeTable(causes, {tr("cause"), tr("value (µm)"), tr("± std. error (µm)"), tr("share (%)")},
+                            QStringLiteral("ballbarTable"));
+  causesLayout->addWidget(ballbarLabel_);
+  causesLayout->addWidget(causesNote);
+  causesLayout->addWidget(ballbarTable_, 1);
+  tabs_->addTab(causes, tr("&Ballbar"));
   stack_->addWidget(tabs_);
   stack_->addWidget(message_);
   radialPage_ = new QWidget(this);
@@ -655,6 +679,7 @@ void KinematicsPage::showStudy() {
 
   compensationTable_->setRowCount(1);
   setRow(compensationTable_, 0, {tr("measured"), um(s.analysis.maxAbsDeviationMm)});
+  showBallbar();
 
   spcDfqButton_->setEnabled(s.spc.has_value());
   spcDfqButton_->setToolTip(
@@ -673,6 +698,47 @@ void KinematicsPage::showStudy() {
   }
   showActuators();
   stack_->setCurrentWidget(tabs_);
+}
+
+void KinematicsPage::showBallbar() {
+  const CircularAnalysis& a = study_->analysis;
+  if (!a.ballbar) {
+    ballbarLabel_->setText(tr("<b>Ballbar breakdown</b>: not available (%1)")
+                               .arg(QString::fromStdString(a.ballbarUnavailable).toHtmlEscaped()));
+    ballbarTable_->setRowCount(0);
+    ballbarTable_->setVisible(false);
+    return;
+  }
+  const BallbarBreakdown& b = *a.ballbar;
+  ballbarLabel_->setText(b.bothDirections ? tr("<b>Ballbar breakdown</b> (ranked by share)")
+                                          : tr("<b>Ballbar breakdown</b> (ranked by share; one direction: "
+                                               "no reversal causes)"));
+  ballbarTable_->setVisible(true);
+  const int n = static_cast<int>(b.causes.size());
+  ballbarTable_->setRowCount(n + 1);
+  const QLocale locale;
+  const QColor grey = palette().color(QPalette::Disabled, QPalette::Text);
+  for (int i = 0; i < n; ++i) {
+    const BallbarCause& c = b.causes[static_cast<std::size_t>(i)];
+    QString tip = ballbarCauseTip(c.name);
+    if (!c.significant) {
+      tip += QLatin1Char('\n') +
+             tr("Within the noise: |%1 µm| is at most three standard errors (%2 µm)")
+                 .arg(locale.toString(c.valueUm, 'f', 3), locale.toString(c.stdErrorUm, 'f', 3));
+    }
+    setRow(ballbarTable_, i,
+           {ballbarCauseName(c.name), locale.toString(c.valueUm, 'f', 3),
+            locale.toString(c.stdErrorUm, 'f', 3), locale.toString(c.share * 100.0, 'f', 1)},
+           tip);
+    if (!c.significant) {
+      for (int col = 0; col < 4; ++col) ballbarTable_->item(i, col)->setForeground(grey);
+    }
+  }
+  setRow(ballbarTable_, n,
+         {ballbarCauseName("unexplained"), locale.toString(b.residualRmsUm, 'f', 3), QString(),
+          locale.toString(b.unexplainedShare * 100.0, 'f', 1)},
+         ballbarCauseTip("unexplained"));
+  fitRowsToLabels(ballbarTable_);
 }
 
 void KinematicsPage::showActuators() {
@@ -902,6 +968,8 @@ void KinematicsPage::showView(const QString& view) {
     tabs_->setCurrentIndex(1);
   } else if (view == QLatin1String("actuators")) {
     tabs_->setCurrentIndex(2);
+  } else if (view == QLatin1String("ballbar")) {
+    tabs_->setCurrentIndex(3);
   } else {
     tabs_->setCurrentIndex(0);
     if (study_ && !compensation_) compensate();

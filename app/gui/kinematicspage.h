@@ -2,8 +2,9 @@
 // The kinematics & SPC study page (IEEE Access, kinematic compensation algorithm): the circular test of the
 // study, identified on load (Levenberg-Marquardt of core/kinematics, milliseconds) with the errors and their
 // standard errors; Compensate makes the compensated references for the nominal circle and shows what they
-// give; Export writes them as G-code or STEP-NC. Two views: "path" (path view, polar deviation plot,
-// tables), "spc" (X-bar / R charts, histogram, indices of the study's feature series) and
+// give; Export writes them as G-code or STEP-NC. Views: "path" (path view, polar deviation plot,
+// tables), "spc" (X-bar / R charts, histogram, indices of the study's feature series), "ballbar" (the
+// ballbar breakdown of the test into named causes, core/kinematics/ballbar.h) and
 // "actuators": the paper's chain from the SPC regression offset angles to actuator errors and their
 // compensation (studies.kinematics.from_spc), and the three-axis errors from circular tests in XY,
 // YZ and ZX (studies.kinematics.planes). The actuators view chooses those datasets (the edges among the
@@ -43,7 +44,8 @@ class KinematicsPage : public QWidget {
   explicit KinematicsPage(ProjectDocument* document, QWidget* parent = nullptr);
   ~KinematicsPage() override;
 
-  /// "path", "spc" or "actuators": switches to that view with results on it (compensates when not done yet).
+  /// "path", "spc", "actuators" or "ballbar": switches to that view with results on it (compensates when not
+  /// done yet).
   Q_INVOKABLE void showView(const QString& view);
 
   /// Identifies the circular test shown (again). False with errorMessage() when it cannot.
@@ -78,6 +80,11 @@ class KinematicsPage : public QWidget {
   QTabWidget* tabs() const { return tabs_; }
   QTableWidget* errorTable() const { return errors_; }
   QTableWidget* compensationTable() const { return compensationTable_; }
+  /// The Ballbar tab: the breakdown of the test (core/kinematics/ballbar.h), ranked by share: cause, value
+  /// (µm), ± std. error (µm), share (%); the last row "Unexplained (RMS)"; causes within the noise greyed.
+  /// Hidden with the reason in ballbarLabel() when the test has none.
+  QTableWidget* ballbarTable() const { return ballbarTable_; }
+  QLabel* ballbarLabel() const { return ballbarLabel_; }
   /// "Includes applied effects: ..." when the model includes effects applied on the diagnosis page.
   QLabel* appliedLabel() const { return applied_; }
   CircularPathView* pathView() const { return path_; }
@@ -114,6 +121,7 @@ class KinematicsPage : public QWidget {
   void showStudy();
   void showCompensation();
   void showActuators();
+  void showBallbar();
   void onExportGcode();
   void onExportStepNc();
   void onExportSpcDfq();
@@ -151,6 +159,8 @@ class KinematicsPage : public QWidget {
   PolarDeviationView* radialPolar_ = nullptr;
   QTableWidget* errors_;
   QTableWidget* compensationTable_;
+  QTableWidget* ballbarTable_ = nullptr;
+  QLabel* ballbarLabel_ = nullptr;
   SpcView* spc_;
   QTableWidget* fromSpcTable_ = nullptr;
   QTableWidget* threeAxisTable_ = nullptr;

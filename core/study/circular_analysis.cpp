@@ -34,7 +34,13 @@ CircularAnalysis analyseCircularTest(const MeasuredPath& path) {
   // The checks `metrofit-cli kinematic identify` makes first, so that a path it cannot take (too few
   // points, not finite, identical or collinear points) gets the CLI's message, not one of our own.
   checkIdentifiable(path);
-  return analyseCircularTrace(circularTraceOf(path));
+  CircularAnalysis a = analyseCircularTrace(circularTraceOf(path));
+  try {
+    a.ballbar = ballbarBreakdown(path);
+  } catch (const ValidationError& e) {
+    a.ballbarUnavailable = e.detail();
+  }
+  return a;
 }
 
 CircularAnalysis analyseCircularTrace(const CircularTrace& t) {

@@ -9,6 +9,8 @@
 // form, docs/file-formats.md#circular-test) is already about its nominal circle: centre (0, 0), radius
 // its radius_mm column (0 when it has none; the radial deviations do not need it).
 // ISO 230-4 results (G, H, F per direction): core/kinematics/iso230_4.h, on every test.
+// Ballbar breakdown into named causes (core/kinematics/ballbar.h, default options as `metrofit-cli
+// kinematic identify` without --screw-pitch): x/y tests whose commands are one full circle.
 // Radial deviation of a point p: |p - centre| - radius (mm), at the angle of p about the centre.
 // Loops: a point belongs to a CCW loop when the command turns counter-clockwise about the centre
 // from it to the next point (the last point takes its predecessor's direction); consecutive points
@@ -32,11 +34,13 @@
 // tangent) is the nominal path's.
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "core/diagnose/applied_kinematic.h"
+#include "core/kinematics/ballbar.h"
 #include "core/kinematics/cartesian_model.h"
 #include "core/kinematics/identification.h"
 #include "core/kinematics/iso230_4.h"
@@ -63,6 +67,9 @@ struct CircularAnalysis {
   double minDeviationMm = 0.0, maxDeviationMm = 0.0;
   bool radialOnly = false;  ///< a radial-only test: no x/y, no identification
   Iso230Result iso;         ///< ISO 230-4 results
+  /// The ballbar breakdown (analyseCircularTest only); absent with the reason in ballbarUnavailable.
+  std::optional<BallbarBreakdown> ballbar;
+  std::string ballbarUnavailable;
 };
 
 /// The InputError of checkIdentifiable (core/kinematics/identification.h: the checks of `metrofit-cli

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -170,6 +171,87 @@ TEST(KinematicCli, CircularWritesTheIso230ResultsOfBothForms) {
   test::writeText(tmp.file("bad.csv"), "angle_deg,deviation_um,direction\n0,1,ccw\n1,2,up\n2,3,ccw\n");
   expectBadInput("kinematic circular --data bad.csv",
                  "bad.csv:3:3: field 'direction': 'up' is not a direction (ccw or cw)", tmp);
+}
+
+TEST(KinematicCli, IdentifyBreaksTheDemoTestDownIntoBallbarCauses) {
+  // The diagnosis demo test (README: backlash X 8 um, Y 5 um on the default machine, R = 100 mm): the
+  // breakdown (core/kinematics/ballbar.h) ranks the two backlashes and the squareness first, the squareness
+  // value being identify's squareness_deg as the shear over the radius; each entry has exactly the
+  // contract's keys and the shares with "unexplained" add up to 1.
+  test::TempDir tmp;
+  const std::string demo =
+      "'" + (test::sourceDir() / "resources/demo/data/diagnose_circular.csv").string() + "'";
+  const CliRun r = cli("kinematic identify --data " + demo + " --out e.json", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(", top cause backlash_x 8."), std::string::npos) << r.err;
+  const std::string text = test::readText(tmp.file("e.json"));
+  const nlohmann::json j = parseJson(text, "e.json");
+  const nlohmann::json& causes = j.at("causes");
+  ASSERT_TRUE(causes.is_array());
+  ASSERT_EQ(causes.size(), 12u);  // 11 causes (no --screw-pitch: no cyclic error) and unexplained
+  EXPECT_EQ(causes[0]["name"], "backlash_x");
+  EXPECT_NEAR(causes[0]["value_um"].get<double>(), 8.0, 0.5);
+  EXPECT_EQ(causes[1]["name"], "backlash_y");
+  EXPECT_NEAR(causes[1]["value_um"].get<double>(), 5.0, 0.5);
+  EXPECT_EQ(causes[2]["name"], "squareness");
+  EXPECT_NEAR(causes[2]["value_um"].get<double>(),
+              j["squareness_deg"].get<double>() * std::numbers::pi / 180.0 * 100.0 * 1000.0, 0.05);
+  EXPECT_EQ(causes.back()["name"], "unexplained");
+  double sum = 0.0;
+  for (std::size_t i = 0; i < causes.size(); ++i) {
+    const nlohmann::json& c = causes[i];
+    EXPECT_EQ(c.size(), 3u) << c;
+    EXPECT_TRUE(c["name"].is_string() && c["value_um"].is_number() && c["share"].is_number()) << c;
+    EXPECT_GE(c["share"].get<double>(), 0.0) << c;
+    if (i > 0 && i + 1 < causes.size()) {
+      EXPECT_LE(c["share"].get<double>(), causes[i - 1]["share"].get<double>());
+    }
+    sum += c["share"].get<double>();
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+  // Byte for byte the same file whatever the process locale.
+  for (const char* locale : {"C.UTF-8", "de_DE.UTF-8", "pl_PL.UTF-8"}) {
+    const std::string cmd = "cd '" + tmp.path().string() + "' && LC_ALL=" + locale + " '" +
+                            (test::binDir() / "metrofit-cli").string() + "' kinematic identify --data " +
+                            demo + " --out l.json 2>/dev/null";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << locale;
+    EXPECT_EQ(test::readText(tmp.file("l.json")), text) << locale;
+  }
+  // --screw-pitch adds the cyclic errors of that pitch (none in the demo: below the other causes).
+  const CliRun p = cli("kinematic identify --data " + demo + " --screw-pitch 10", tmp);
+  ASSERT_EQ(p.code, 0) << p.err;
+  const nlohmann::json jp = parseJson(p.out, "stdout");
+  std::set<std::string> names;
+  for (const auto& c : jp.at("causes")) names.insert(c.at("name").get<std::string>());
+  EXPECT_TRUE(names.count("cyclic_error_x") && names.count("cyclic_error_y"));
+  EXPECT_EQ(jp.at("causes")[0]["name"], "backlash_x");
+  expectBadInput(
+      "kinematic identify --data " + demo + " --screw-pitch 0",
+      "--screw-pitch: must be a positive number, got '0' (see metrofit-cli kinematic identify --help)", tmp);
+}
+
+TEST(KinematicCli, IdentifyOfAPathThatIsNoCircleHasNoCauses) {
+  // A grid of commands identifies the actuator errors as before; the ballbar breakdown needs a circle.
+  test::TempDir tmp;
+  std::vector<Eigen::Vector2d> commands;
+  for (int i = 0; i < 6; ++i) {
+    for (int k = 0; k < 6; ++k) commands.emplace_back(20.0 * i, 20.0 * (i % 2 ? 5 - k : k));
+  }
+  MeasuredPath path;
+  path.command = commands;
+  path.measured = simulateMachine(demoMachine().errors, commands, 0.0005, 3);
+  test::writeText(tmp.file("grid.csv"), measuredPathToCsv(path));
+  const CliRun r = cli("kinematic identify --data grid.csv", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(", no ballbar breakdown: the commanded points are not on one circle ("),
+            std::string::npos)
+      << r.err;
+  const nlohmann::json j = parseJson(r.out, "stdout");
+  ASSERT_TRUE(j.contains("causes"));
+  EXPECT_TRUE(j["causes"].is_null());
+  EXPECT_NEAR(j["squareness_deg"].get<double>(), -0.007, 1e-3);
 }
 
 TEST(KinematicCli, CompensateWritesReferencesGcodeAndStepNc) {

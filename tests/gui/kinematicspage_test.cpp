@@ -1,8 +1,8 @@
 // The kinematics & SPC page on the bundled demo (offscreen): the identified errors equal what
 // `metrofit-cli kinematic identify` writes for the same file (within 1e-9) and the table shows
-// them; compensation brings the largest radial deviation below 2 um; both views show results;
-// G-code and STEP-NC exports are written atomically and read back; a missing dataset is a message.
-// Grabs of both views are saved into $METROFIT_TEST_OUT for a look.
+// them, as the ballbar table shows its "causes"; compensation brings the largest radial deviation below 2 um;
+// both views show results; G-code and STEP-NC exports are written atomically and read back; a missing dataset
+// is a message. Grabs of both views are saved into $METROFIT_TEST_OUT for a look.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,6 +40,7 @@
 #include "testsupport.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
+#include "widgets/kinematics/ballbartext.h"
 #include "widgets/kinematics/kinematicsviews.h"
 #include "widgets/report/report.h"
 
@@ -123,6 +124,23 @@ TEST_F(KinematicsPageTest, IdentifiedErrorsEqualTheClis) {
   EXPECT_TRUE(info.contains(
       QStringLiteral("H %1 µm").arg(QLocale().toString(*iso.circularHysteresisMm * 1000.0, 'f', 2))))
       << info.toStdString();
+  // The ballbar breakdown: the table shows the CLI's "causes" in its order (ranked by share), in um and %,
+  // the squareness first on the demo (the circle's only error), equal to squareness_deg x R.
+  const nlohmann::json& causes = j["causes"];
+  QTableWidget* bt = page.ballbarTable();
+  ASSERT_TRUE(causes.is_array());
+  ASSERT_EQ(bt->rowCount(), static_cast<int>(causes.size()));
+  for (int i = 0; i < bt->rowCount(); ++i) {
+    const nlohmann::json& c = causes[static_cast<std::size_t>(i)];
+    EXPECT_EQ(bt->item(i, 0)->text(), ballbarCauseName(c["name"].get<std::string>())) << i;
+    EXPECT_EQ(bt->item(i, 1)->text(), QLocale().toString(c["value_um"].get<double>(), 'f', 3)) << i;
+    EXPECT_EQ(bt->item(i, 3)->text(), QLocale().toString(c["share"].get<double>() * 100.0, 'f', 1)) << i;
+  }
+  EXPECT_EQ(bt->item(0, 0)->text(), QStringLiteral("Squareness"));
+  EXPECT_EQ(bt->item(bt->rowCount() - 1, 0)->text(), QStringLiteral("Unexplained (RMS)"));
+  EXPECT_NEAR(causes[0]["value_um"].get<double>(),
+              r.errors.squarenessDeg() * M_PI / 180.0 * page.study()->analysis.radiusMm * 1000.0, 0.01);
+  EXPECT_TRUE(page.ballbarLabel()->text().contains(QStringLiteral("Ballbar breakdown")));
   // A squareness error g = b - a turns the circle of radius R into an ellipse: r = R - g R sin(2 theta) / 2
   // to first order, so G = R |g|; the demo's noise (0.5 um per coordinate, 360 points per loop) widens
   // the range by up to about 3 sigma on each side.
@@ -686,6 +704,13 @@ TEST_F(KinematicsActuatorsTest, ReportStatesTheChainAndTheThreeAxes) {
   EXPECT_TRUE(text.contains(QStringLiteral("Circular hysteresis H"))) << text.toStdString();
   EXPECT_TRUE(text.contains(
       QStringLiteral("): %1 µm.").arg(*s.analysis.iso.circularHysteresisMm * 1000.0, 0, 'f', 2)))
+      << text.toStdString();
+  // The ballbar breakdown, its first cause with its value.
+  ASSERT_TRUE(s.analysis.ballbar) << s.analysis.ballbarUnavailable;
+  EXPECT_TRUE(text.contains(QStringLiteral("Ballbar breakdown"))) << text.toStdString();
+  const BallbarCause& first = s.analysis.ballbar->causes.front();
+  EXPECT_TRUE(text.contains(ballbarCauseName(first.name) + QStringLiteral(" ") +
+                            QString::number(first.valueUm, 'f', 3)))
       << text.toStdString();
 }
 

@@ -1,10 +1,10 @@
 // Report section "Kinematic compensation and SPC" (IEEE Access, kinematic compensation algorithm): per
 // circular test the identified actuator errors with their standard errors, the path and the ballbar-style
 // polar plot (the same drawings as the GUI, kinematicplots.h), the compensation of the nominal circle
-// (largest radial deviation before and after), the SPC charts and indices of the study's feature series, the
-// paper's chain from the SPC regression offset angles to actuator errors and their compensation
-// (studies.kinematics.from_spc) and the three-axis errors from circular tests in XY, YZ and ZX
-// (studies.kinematics.planes).
+// (largest radial deviation before and after), the ballbar breakdown into named causes, the SPC charts and
+// indices of the study's feature series, the paper's chain from the SPC regression offset angles to actuator
+// errors and their compensation (studies.kinematics.from_spc) and the three-axis errors from circular tests
+// in XY, YZ and ZX (studies.kinematics.planes).
 #include <QCoreApplication>
 #include <QPainter>
 
@@ -16,6 +16,7 @@
 
 #include "core/common/error.h"
 #include "core/study/kinematic_study.h"
+#include "widgets/kinematics/ballbartext.h"
 #include "widgets/kinematics/kinematicplots.h"
 #include "widgets/report/reportpainter.h"
 #include "widgets/report/sections.h"
@@ -91,6 +92,37 @@ void writeIso230(ReportPainter& out, const Iso230Result& iso) {
           : ReportText::tr("Circular hysteresis H: not available (the test has one direction only)."));
 }
 
+/// The ballbar breakdown of the test into named causes (core/kinematics/ballbar.h), ranked by share.
+void writeBallbar(ReportPainter& out, const CircularAnalysis& a) {
+  out.subheading(ReportText::tr("Ballbar breakdown"), out.mm(30.0));
+  if (!a.ballbar) {
+    out.paragraph(ReportText::tr("Not available: %1.").arg(QString::fromStdString(a.ballbarUnavailable)));
+    return;
+  }
+  const BallbarBreakdown& b = *a.ballbar;
+  out.paragraph(
+      ReportText::tr("The radial deviation of %1 fitted by least squares to the signature of each cause, "
+                     "after the centre and radius of each run; ranked by share, the part of the radial "
+                     "deviation's variance the cause explains. A cause is above the noise when its value "
+                     "exceeds three standard errors.")
+          .arg(b.bothDirections ? ReportText::tr("both runs (CCW and CW)")
+                                : ReportText::tr("the one run (without the reversal causes, which need both "
+                                                 "directions)")));
+  ReportTable t;
+  t.header = {ReportText::tr("cause"), ReportText::tr("value (µm)"), ReportText::tr("± std. error (µm)"),
+              ReportText::tr("share (%)"), ReportText::tr("above the noise")};
+  t.widths = {2.0, 1.0, 1.2, 1.0, 1.2};
+  t.alignment = {Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignLeft};
+  for (const BallbarCause& c : b.causes) {
+    t.rows.push_back({ballbarCauseName(c.name), QString::number(c.valueUm, 'f', 3),
+                      QString::number(c.stdErrorUm, 'f', 3), QString::number(c.share * 100.0, 'f', 1),
+                      c.significant ? ReportText::tr("yes") : ReportText::tr("no")});
+  }
+  t.rows.push_back({ballbarCauseName("unexplained"), QString::number(b.residualRmsUm, 'f', 3), QString(),
+                    QString::number(b.unexplainedShare * 100.0, 'f', 1), QString()});
+  out.table(t);
+}
+
 CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyData& s) {
   out.subheading(ReportText::tr("Circular test “%1”").arg(QString::fromStdString(s.dataset.id)),
                  out.mm(60.0));
@@ -141,6 +173,7 @@ CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyDa
   out.drawScaled(left, 400.0, [&](QPainter& p, const QRectF& r) { paintPathPlot(p, r, pd, style); });
   out.drawScaled(right, 400.0, [&](QPainter& p, const QRectF& r) { paintPolarPlot(p, r, polar, style); });
   writeIso230(out, s.analysis.iso);
+  writeBallbar(out, s.analysis);
 
   out.subheading(ReportText::tr("Compensation"), out.mm(30.0));
   out.paragraph(

@@ -46,6 +46,20 @@ TEST(CircularAnalysis, SquarenessEllipseGivesGFromTheSingularValues) {
   EXPECT_GT(g, 0.015);  // 80 mm x 0.015 deg: about 21 um, far above the tolerances
   ASSERT_EQ(a.loops.size(), 2u);
   EXPECT_FALSE(a.radialOnly);
+  // The ballbar breakdown (core/kinematics/ballbar.h): the squareness b - a as the shear over the radius.
+  ASSERT_TRUE(a.ballbar) << a.ballbarUnavailable;
+  ASSERT_FALSE(a.ballbar->causes.empty());
+  EXPECT_EQ(a.ballbar->causes.front().name, "squareness");
+  EXPECT_NEAR(a.ballbar->causes.front().valueUm, -0.015 * std::numbers::pi / 180.0 * o.radiusMm * 1000.0,
+              0.01);
+  // Half of the test (the CCW loop alone, 180 of its points): a gap in the circle, no breakdown and why.
+  MeasuredPath half = path;
+  half.command.resize(180);
+  half.measured.resize(180);
+  const CircularAnalysis h = analyseCircularTest(half);
+  EXPECT_FALSE(h.ballbar);
+  EXPECT_NE(h.ballbarUnavailable.find("no ballbar breakdown: the CCW run leaves a gap"), std::string::npos)
+      << h.ballbarUnavailable;
 }
 
 TEST(CircularAnalysis, RadialRunsStartNewLoopsAndAreNotIdentifiable) {
