@@ -472,7 +472,7 @@ radiale Abweichung: %5 µm</translation>
 <context>
     <name>metrofit::ControlChartView</name>
     <message>
-        <location line="+86"/>
+        <location line="+89"/>
         <source>subgroup %1
 mean: %2%3</source>
         <translation>Untergruppe %1
@@ -486,12 +486,12 @@ range: %2%3</source>
 Spannweite: %2%3</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (kinematic-compensation paper, Eq. 18–19); red points are out of control.</source>
-        <translation>Mittelwerte der Untergruppen mit Mittellinie (CL) und den Eingriffsgrenzen UCL/LCL = Mittelwert ± A2 · R̄ (Artikel zur kinematischen Kompensation, Gl. 18–19); rote Punkte liegen außerhalb der Grenzen.</translation>
+        <location line="+8"/>
+        <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (kinematic-compensation paper, Eq. 18–19); red points are out of control, ringed ones break a Nelson rule (the read-out names it).</source>
+        <translation>Stichprobenmittelwerte mit Mittellinie und Eingriffsgrenzen OEG/UEG = Mittelwert ± A2 · R̄ (Kinematik-Kompensationsartikel, Gl. 18–19); rote Punkte liegen außerhalb der Grenzen, umringte verletzen eine Nelson-Regel (die Anzeige nennt sie).</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Subgroup ranges with the centre line R̄ and the limits D4 · R̄ and D3 · R̄.</source>
         <translation>Spannweiten der Untergruppen mit der Mittellinie R̄ und den Grenzen D4 · R̄ und D3 · R̄.</translation>
     </message>
@@ -1256,7 +1256,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
 <context>
     <name>metrofit::HistogramView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+40"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+43"/>
         <source>%1 to %2%3
 count: %4</source>
         <translation>%1 bis %2%3
@@ -1698,12 +1698,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+528"/>
+        <location line="+529"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
     <message>
-        <location line="-464"/>
+        <location line="-465"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
     </message>
@@ -1734,7 +1734,7 @@ Anzahl: %4</translation>
         <translation>%1: die Datei ist größer als 256 MiB</translation>
     </message>
     <message numerus="yes">
-        <location line="+163"/>
+        <location line="+166"/>
         <source>Read the %n selected files as one DMIS &amp;series (one dataset, one file per workpiece)</source>
         <translation>
             <numerusform>Die %n ausgewählte Datei als eine DMIS-&amp;Serie lesen (ein Datensatz, eine Datei je Werkstück)</numerusform>
@@ -1787,7 +1787,7 @@ Anzahl: %4</translation>
         <translation>DMIS-Ausgabe; gelesen mit dem Einrichtmodell „%1“: %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+28"/>
         <source>Choose a file to import.</source>
         <translation>Wählen Sie eine Datei zum Importieren.</translation>
     </message>
@@ -2041,7 +2041,97 @@ Anzahl: %4</translation>
         <translation>Abweichungen vom Nennpunkt × %1</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+35"/>
+        <source>one point beyond the control limits</source>
+        <translation>ein Punkt außerhalb der Eingriffsgrenzen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>nine in a row on one side of the centre line</source>
+        <translation>neun in Folge auf einer Seite der Mittellinie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>six in a row steadily increasing or decreasing</source>
+        <translation>sechs in Folge stetig steigend oder fallend</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fourteen in a row alternating up and down</source>
+        <translation>vierzehn in Folge abwechselnd auf und ab</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>two of three beyond 2 σ on the same side</source>
+        <translation>zwei von drei jenseits 2 σ auf derselben Seite</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>four of five beyond 1 σ on the same side</source>
+        <translation>vier von fünf jenseits 1 σ auf derselben Seite</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fifteen in a row within 1 σ</source>
+        <translation>fünfzehn in Folge innerhalb 1 σ</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>eight in a row beyond 1 σ on either side</source>
+        <translation>acht in Folge jenseits 1 σ auf beiden Seiten</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Nelson %1: %2</source>
+        <translation>Nelson %1: %2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>X-bar</source>
+        <translation>X-quer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MR</source>
+        <translation>MR</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 at %3</source>
+        <translation>%1 %2 bei %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none broken</source>
+        <translation>keine verletzt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> (limits from subgroups 1–%1)</source>
+        <translation> (Grenzen aus den Stichproben 1–%1)</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>X chart (individual values)</source>
+        <translation>X-Karte (Einzelwerte)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MR chart (moving range of 2)</source>
+        <translation>MR-Karte (gleitende Spannweite aus 2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>X-bar chart (subgroups of %1)</source>
         <translation>x̄-Karte (Untergruppen zu %1)</translation>
     </message>
@@ -2051,12 +2141,22 @@ Anzahl: %4</translation>
         <translation>R-Karte (Untergruppen zu %1)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+2"/>
+        <source>, limits from subgroups 1–%1</source>
+        <translation>, Grenzen aus den Stichproben 1–%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>moving range</source>
+        <translation>gleitende Spannweite</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>subgroup</source>
         <translation>Untergruppe</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-2"/>
         <source>subgroup mean</source>
         <translation>Mittelwert</translation>
     </message>
@@ -2066,7 +2166,7 @@ Anzahl: %4</translation>
         <translation>Spannweite</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>UCL</source>
         <comment>upper control limit</comment>
         <translation>UCL</translation>
@@ -2084,12 +2184,23 @@ Anzahl: %4</translation>
         <translation>LCL</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+19"/>
+        <source>phase I</source>
+        <translation>Phase I</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>phase II</source>
+        <translation>Phase II</translation>
+    </message>
+    <message>
+        <location line="+79"/>
         <source>Histogram</source>
         <translation>Histogramm</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-120"/>
+        <location line="+127"/>
         <source>value</source>
         <translation>Wert</translation>
     </message>
@@ -4360,7 +4471,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
 <context>
     <name>metrofit::PolarDeviationView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-106"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-115"/>
         <source>%1
 angle: %2°
 deviation: %3 µm</source>
@@ -4535,7 +4646,7 @@ Abweichung: %3 µm</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+728"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+743"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -4666,7 +4777,7 @@ Abweichung: %3 µm</translation>
         <location line="+14"/>
         <location filename="../widgets/report/kinematicsection.cpp" line="+119"/>
         <location line="+137"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-404"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-418"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -4790,12 +4901,12 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location filename="../widgets/report/kinematicsection.cpp" line="-213"/>
-        <location line="+265"/>
+        <location line="+266"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-265"/>
+        <location line="-266"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -4811,36 +4922,36 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+268"/>
+        <location line="+269"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-266"/>
-        <location line="+268"/>
+        <location line="-267"/>
+        <location line="+269"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-266"/>
-        <location line="+267"/>
+        <location line="-267"/>
+        <location line="+268"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-265"/>
-        <location line="+267"/>
+        <location line="-266"/>
+        <location line="+268"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-265"/>
-        <location line="+267"/>
+        <location line="-266"/>
+        <location line="+268"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-265"/>
+        <location line="-266"/>
         <source>RMS residual (µm)</source>
         <translation>RMS-Residuum (µm)</translation>
     </message>
@@ -4951,12 +5062,12 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location line="+311"/>
+        <location line="+312"/>
         <source>Circular test “%1”</source>
         <translation>Kreisformtest „%1“</translation>
     </message>
     <message>
-        <location line="-303"/>
+        <location line="-304"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 Punkte; Nennkreis R %2 mm um (%3; %4) mm; %5 Umläufe (gegen, dann mit dem Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (%8, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt bestimmt (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
     </message>
@@ -4977,12 +5088,12 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+286"/>
+        <location line="+287"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="-270"/>
+        <location line="-271"/>
         <source>Compensation</source>
         <translation>Kompensation</translation>
     </message>
@@ -5080,12 +5191,17 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+150"/>
+        <location line="+151"/>
         <source>in control</source>
         <translation>beherrscht</translation>
     </message>
     <message>
-        <location line="-148"/>
+        <location line="-150"/>
+        <source>Nelson rules (subgroups)</source>
+        <translation>Nelson-Regeln (Stichproben)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>σ within (R̄ / d2)</source>
         <translation>σ innerhalb (R̄ / d2)</translation>
     </message>
@@ -6703,22 +6819,22 @@ Abweichung: %3 µm</translation>
         <translation>RMS %1%2 (Band ±%3%2) verbleibt mit %4</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+19"/>
         <source>thermal compensation of %1</source>
         <translation>thermische Kompensation von %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-9"/>
         <source>model fitted on %1; a grey model has no form a control runs: fit linear, lag or dlag to export it</source>
         <translation>an %1 angepasstes Modell; ein Grey-Modell hat keine Form, die eine Steuerung ausführt: für den Export linear, lag oder dlag anpassen</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+4"/>
         <source>model fitted on %1; export it for the control on the Thermal page (Export compensation) or with metrofit-cli thermal export --format %2</source>
         <translation>an %1 angepasstes Modell; für die Steuerung exportieren auf der Seite Thermik (Kompensation exportieren) oder mit metrofit-cli thermal export --format %2</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>%1 predicts %2 on rows it was not fitted on to RMS %3%4, from RMS %5%4 without compensation.</source>
         <translation>%1 sagt %2 auf nicht angepassten Zeilen auf RMS %3%4 genau voraus, gegenüber RMS %5%4 ohne Kompensation.</translation>
     </message>
@@ -6738,7 +6854,7 @@ Abweichung: %3 µm</translation>
         <translation>Kompensieren Sie nicht mit diesen Modellen. Zeichnen Sie einen längeren Test mit Aufheizen und Abkühlen auf, setzen Sie Sensoren nahe den Wärmequellen und suchen Sie mit dem geschlossenen Regelkreis (Diagnose) die Verzögerung oder Eingänge, die dem Modell fehlen.</translation>
     </message>
     <message>
-        <location line="-325"/>
+        <location line="-339"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Diagramme der ersten %1 von %2 Sensoren; die Tabelle listet alle.</translation>
     </message>
@@ -9148,7 +9264,7 @@ merkmal</translation>
 <context>
     <name>metrofit::SpcView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+126"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+135"/>
         <source>index</source>
         <translation>Kenngröße</translation>
     </message>
@@ -9203,7 +9319,12 @@ merkmal</translation>
         <translation>nein: %1 x̄-, %2 R-Punkte außerhalb der Grenzen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>Nelson rules</source>
+        <translation>Nelson-Regeln</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>A2 / D3 / D4</source>
         <translation>A2 / D3 / D4</translation>
     </message>
@@ -10035,52 +10156,58 @@ merkmal</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+127"/>
         <source>Export compensation…</source>
         <translation>Kompensation exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+3"/>
         <source>Write a trained model in a form the machine control runs: an IEC 61131-3 function block, SINUMERIK or Heidenhain data, ISG axis parameters or a table (metrofit-cli thermal export)</source>
         <translation>Ein trainiertes Modell in einer Form schreiben, die die Maschinensteuerung ausführt: ein IEC-61131-3-Funktionsbaustein, SINUMERIK- oder Heidenhain-Daten, ISG-Achsparameter oder eine Tabelle (metrofit-cli thermal export)</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+15"/>
+        <location line="+18"/>
+        <location line="+6"/>
+        <location line="+10"/>
+        <location line="+5"/>
+        <location line="+9"/>
+        <location line="+7"/>
         <source>Export compensation</source>
         <translation>Kompensation exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="-54"/>
         <source>Train the models first (Models tab): the export writes a trained model.</source>
         <translation>Zuerst die Modelle trainieren (Reiter Modelle): der Export schreibt ein trainiertes Modell.</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+9"/>
         <source>%1 (held-out RMSE %2)</source>
         <translation>%1 (RMSE der Testdaten %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+9"/>
         <source>No trained model can be exported (a model that takes the applied effects&apos; columns cannot: the control does not have them).</source>
         <translation>Kein trainiertes Modell kann exportiert werden (ein Modell mit den Spalten der übernommenen Effekte nicht: die Steuerung hat sie nicht).</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+5"/>
         <source>Model:</source>
         <translation>Modell:</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+16"/>
         <source>Form (st: IEC 61131-3 function block; siemens, heidenhain, isg: the control&apos;s temperature compensation; csv: a table):</source>
         <translation>Form (st: IEC-61131-3-Funktionsbaustein; siemens, heidenhain, isg: die Temperaturkompensation der Steuerung; csv: eine Tabelle):</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+16"/>
         <source>Cannot export the compensation: %1</source>
         <translation>Die Kompensation kann nicht exportiert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+87"/>
+        <location line="-91"/>
         <source>T&amp;rend</source>
         <translation>&amp;Verlauf</translation>
     </message>
@@ -10115,7 +10242,7 @@ merkmal</translation>
         <translation>&amp;Thermoprotokoll:</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+127"/>
         <source>The module could not be identified again: %1</source>
         <translation>Das Modul konnte nicht erneut identifiziert werden: %1</translation>
     </message>

@@ -472,7 +472,7 @@ odchyłka promieniowa: %5 µm</translation>
 <context>
     <name>metrofit::ControlChartView</name>
     <message>
-        <location line="+86"/>
+        <location line="+89"/>
         <source>subgroup %1
 mean: %2%3</source>
         <translation>podgrupa %1
@@ -486,12 +486,12 @@ range: %2%3</source>
 rozstęp: %2%3</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (kinematic-compensation paper, Eq. 18–19); red points are out of control.</source>
-        <translation>Średnie podgrup z linią centralną (CL) i granicami kontrolnymi UCL/LCL = średnia ± A2 · R̄ (artykuł o kompensacji kinematycznej, równ. 18–19); czerwone punkty są poza kontrolą.</translation>
+        <location line="+8"/>
+        <source>Subgroup means with the centre line and the control limits UCL/LCL = mean ± A2 · R̄ (kinematic-compensation paper, Eq. 18–19); red points are out of control, ringed ones break a Nelson rule (the read-out names it).</source>
+        <translation>Średnie podgrup z linią centralną i granicami kontrolnymi GGK/DGK = średnia ± A2 · R̄ (artykuł o kompensacji kinematycznej, wz. 18–19); czerwone punkty są poza granicami, obwiedzione łamią regułę Nelsona (odczyt ją nazywa).</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Subgroup ranges with the centre line R̄ and the limits D4 · R̄ and D3 · R̄.</source>
         <translation>Rozstępy podgrup z linią centralną R̄ i granicami D4 · R̄ oraz D3 · R̄.</translation>
     </message>
@@ -1257,7 +1257,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
 <context>
     <name>metrofit::HistogramView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+40"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+43"/>
         <source>%1 to %2%3
 count: %4</source>
         <translation>od %1 do %2%3
@@ -1702,12 +1702,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+528"/>
+        <location line="+529"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
     <message>
-        <location line="-464"/>
+        <location line="-465"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
     </message>
@@ -1738,7 +1738,7 @@ liczba: %4</translation>
         <translation>%1: plik jest większy niż 256 MiB</translation>
     </message>
     <message numerus="yes">
-        <location line="+163"/>
+        <location line="+166"/>
         <source>Read the %n selected files as one DMIS &amp;series (one dataset, one file per workpiece)</source>
         <translation>
             <numerusform>Wczytaj %n wybrany plik jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
@@ -1792,7 +1792,7 @@ liczba: %4</translation>
         <translation>Wynik DMIS; odczyt względem modelu ustawczego „%1”: %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+28"/>
         <source>Choose a file to import.</source>
         <translation>Wybierz plik do importu.</translation>
     </message>
@@ -2048,7 +2048,97 @@ liczba: %4</translation>
         <translation>odchyłki od nominału × %1</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+35"/>
+        <source>one point beyond the control limits</source>
+        <translation>jeden punkt poza granicami kontrolnymi</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>nine in a row on one side of the centre line</source>
+        <translation>dziewięć kolejnych po jednej stronie linii centralnej</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>six in a row steadily increasing or decreasing</source>
+        <translation>sześć kolejnych stale rosnących lub malejących</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fourteen in a row alternating up and down</source>
+        <translation>czternaście kolejnych naprzemiennie w górę i w dół</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>two of three beyond 2 σ on the same side</source>
+        <translation>dwa z trzech poza 2 σ po tej samej stronie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>four of five beyond 1 σ on the same side</source>
+        <translation>cztery z pięciu poza 1 σ po tej samej stronie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fifteen in a row within 1 σ</source>
+        <translation>piętnaście kolejnych w granicach 1 σ</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>eight in a row beyond 1 σ on either side</source>
+        <translation>osiem kolejnych poza 1 σ po obu stronach</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Nelson %1: %2</source>
+        <translation>Nelson %1: %2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>X-bar</source>
+        <translation>X-średnie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MR</source>
+        <translation>MR</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 at %3</source>
+        <translation>%1 %2 przy %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none broken</source>
+        <translation>żadna nie złamana</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> (limits from subgroups 1–%1)</source>
+        <translation> (granice z podgrup 1–%1)</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>X chart (individual values)</source>
+        <translation>karta X (wartości indywidualne)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MR chart (moving range of 2)</source>
+        <translation>karta MR (ruchomy rozstęp z 2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>X-bar chart (subgroups of %1)</source>
         <translation>Karta X-średnie (podgrupy po %1)</translation>
     </message>
@@ -2058,12 +2148,22 @@ liczba: %4</translation>
         <translation>Karta R (podgrupy po %1)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+2"/>
+        <source>, limits from subgroups 1–%1</source>
+        <translation>, granice z podgrup 1–%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>moving range</source>
+        <translation>ruchomy rozstęp</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>subgroup</source>
         <translation>podgrupa</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-2"/>
         <source>subgroup mean</source>
         <translation>średnia</translation>
     </message>
@@ -2073,7 +2173,7 @@ liczba: %4</translation>
         <translation>rozstęp</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>UCL</source>
         <comment>upper control limit</comment>
         <translation>UCL</translation>
@@ -2091,12 +2191,23 @@ liczba: %4</translation>
         <translation>LCL</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+19"/>
+        <source>phase I</source>
+        <translation>faza I</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>phase II</source>
+        <translation>faza II</translation>
+    </message>
+    <message>
+        <location line="+79"/>
         <source>Histogram</source>
         <translation>Histogram</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-120"/>
+        <location line="+127"/>
         <source>value</source>
         <translation>wartość</translation>
     </message>
@@ -4370,7 +4481,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
 <context>
     <name>metrofit::PolarDeviationView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-106"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="-115"/>
         <source>%1
 angle: %2°
 deviation: %3 µm</source>
@@ -4545,7 +4656,7 @@ odchyłka: %3 µm</translation>
     <name>metrofit::Report</name>
     <message>
         <location filename="../widgets/report/diagnosissection.cpp" line="+42"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="+728"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="+743"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -4676,7 +4787,7 @@ odchyłka: %3 µm</translation>
         <location line="+14"/>
         <location filename="../widgets/report/kinematicsection.cpp" line="+119"/>
         <location line="+137"/>
-        <location filename="../widgets/report/thermalsection.cpp" line="-404"/>
+        <location filename="../widgets/report/thermalsection.cpp" line="-418"/>
         <source>yes</source>
         <translation>tak</translation>
     </message>
@@ -4800,12 +4911,12 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location filename="../widgets/report/kinematicsection.cpp" line="-213"/>
-        <location line="+265"/>
+        <location line="+266"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-265"/>
+        <location line="-266"/>
         <source>identified</source>
         <translation>zidentyfikowany</translation>
     </message>
@@ -4821,36 +4932,36 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+268"/>
+        <location line="+269"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-266"/>
-        <location line="+268"/>
+        <location line="-267"/>
+        <location line="+269"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-266"/>
-        <location line="+267"/>
+        <location line="-267"/>
+        <location line="+268"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-265"/>
-        <location line="+267"/>
+        <location line="-266"/>
+        <location line="+268"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-265"/>
-        <location line="+267"/>
+        <location line="-266"/>
+        <location line="+268"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-265"/>
+        <location line="-266"/>
         <source>RMS residual (µm)</source>
         <translation>residuum RMS (µm)</translation>
     </message>
@@ -4961,12 +5072,12 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location line="+311"/>
+        <location line="+312"/>
         <source>Circular test “%1”</source>
         <translation>Test kołowy „%1”</translation>
     </message>
     <message>
-        <location line="-303"/>
+        <location line="-304"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 punktów; okrąg nominalny R %2 mm wokół (%3; %4) mm; %5 pętli (przeciwnie, potem zgodnie z ruchem wskazówek zegara). Błędy napędów maszyny kartezjańskiej (%8, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wyznaczono metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
     </message>
@@ -4987,12 +5098,12 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+286"/>
+        <location line="+287"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="-270"/>
+        <location line="-271"/>
         <source>Compensation</source>
         <translation>Kompensacja</translation>
     </message>
@@ -5090,12 +5201,17 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+150"/>
+        <location line="+151"/>
         <source>in control</source>
         <translation>pod kontrolą</translation>
     </message>
     <message>
-        <location line="-148"/>
+        <location line="-150"/>
+        <source>Nelson rules (subgroups)</source>
+        <translation>Reguły Nelsona (podgrupy)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>σ within (R̄ / d2)</source>
         <translation>σ wewnątrz (R̄ / d2)</translation>
     </message>
@@ -6719,22 +6835,22 @@ odchyłka: %3 µm</translation>
         <translation>RMS %1%2 (pasmo ±%3%2) pozostaje z %4</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+19"/>
         <source>thermal compensation of %1</source>
         <translation>kompensacja termiczna %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-9"/>
         <source>model fitted on %1; a grey model has no form a control runs: fit linear, lag or dlag to export it</source>
         <translation>model dopasowany na %1; model szary nie ma postaci, którą wykonuje sterowanie: do eksportu dopasuj linear, lag lub dlag</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+4"/>
         <source>model fitted on %1; export it for the control on the Thermal page (Export compensation) or with metrofit-cli thermal export --format %2</source>
         <translation>model dopasowany na %1; eksport dla sterowania na stronie Termika (Eksportuj kompensację) lub poleceniem metrofit-cli thermal export --format %2</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>%1 predicts %2 on rows it was not fitted on to RMS %3%4, from RMS %5%4 without compensation.</source>
         <translation>%1 przewiduje %2 na wierszach, na których nie był dopasowany, z RMS %3%4 wobec RMS %5%4 bez kompensacji.</translation>
     </message>
@@ -6754,7 +6870,7 @@ odchyłka: %3 µm</translation>
         <translation>Nie kompensuj tymi modelami. Zarejestruj dłuższy test obejmujący nagrzewanie i chłodzenie, dodaj czujniki blisko źródeł ciepła i użyj zamkniętej pętli (diagnozy), aby znaleźć opóźnienie lub wejścia, których brakuje modelowi.</translation>
     </message>
     <message>
-        <location line="-325"/>
+        <location line="-339"/>
         <source>Charts of the first %1 of %2 sensors; the table lists all.</source>
         <translation>Wykresy pierwszych %1 z %2 czujników; tabela zawiera wszystkie.</translation>
     </message>
@@ -9179,7 +9295,7 @@ raportu</translation>
 <context>
     <name>metrofit::SpcView</name>
     <message>
-        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+126"/>
+        <location filename="../widgets/kinematics/kinematicsviews.cpp" line="+135"/>
         <source>index</source>
         <translation>wskaźnik</translation>
     </message>
@@ -9234,7 +9350,12 @@ raportu</translation>
         <translation>nie: punkty poza granicami: %1 X-średnie, %2 R</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>Nelson rules</source>
+        <translation>Reguły Nelsona</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>A2 / D3 / D4</source>
         <translation>A2 / D3 / D4</translation>
     </message>
@@ -10066,52 +10187,58 @@ raportu</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+127"/>
         <source>Export compensation…</source>
         <translation>Eksportuj kompensację…</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+3"/>
         <source>Write a trained model in a form the machine control runs: an IEC 61131-3 function block, SINUMERIK or Heidenhain data, ISG axis parameters or a table (metrofit-cli thermal export)</source>
         <translation>Zapisz wytrenowany model w postaci, którą wykonuje sterowanie maszyny: blok funkcyjny IEC 61131-3, dane SINUMERIK lub Heidenhain, parametry osi ISG albo tabela (metrofit-cli thermal export)</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+15"/>
+        <location line="+18"/>
+        <location line="+6"/>
+        <location line="+10"/>
+        <location line="+5"/>
+        <location line="+9"/>
+        <location line="+7"/>
         <source>Export compensation</source>
         <translation>Eksport kompensacji</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="-54"/>
         <source>Train the models first (Models tab): the export writes a trained model.</source>
         <translation>Najpierw wytrenuj modele (karta Modele): eksport zapisuje wytrenowany model.</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+9"/>
         <source>%1 (held-out RMSE %2)</source>
         <translation>%1 (RMSE wierszy testowych %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+9"/>
         <source>No trained model can be exported (a model that takes the applied effects&apos; columns cannot: the control does not have them).</source>
         <translation>Żadnego wytrenowanego modelu nie można wyeksportować (modelu z kolumnami przyjętych efektów nie: sterowanie ich nie ma).</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+5"/>
         <source>Model:</source>
         <translation>Model:</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+16"/>
         <source>Form (st: IEC 61131-3 function block; siemens, heidenhain, isg: the control&apos;s temperature compensation; csv: a table):</source>
         <translation>Postać (st: blok funkcyjny IEC 61131-3; siemens, heidenhain, isg: kompensacja temperaturowa sterowania; csv: tabela):</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+0"/>
+        <location line="+16"/>
         <source>Cannot export the compensation: %1</source>
         <translation>Nie można wyeksportować kompensacji: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+87"/>
+        <location line="-91"/>
         <source>T&amp;rend</source>
         <translation>&amp;Trend</translation>
     </message>
@@ -10146,7 +10273,7 @@ raportu</translation>
         <translation>&amp;Rejestr termiczny:</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+127"/>
         <source>The module could not be identified again: %1</source>
         <translation>Nie udało się ponownie zidentyfikować modułu: %1</translation>
     </message>
