@@ -11,6 +11,7 @@
 #include "core/common/error.h"
 #include "core/common/numformat.h"
 #include "core/io/file_io.h"
+#include "core/io/xml_text.h"
 
 namespace metrofit {
 
@@ -28,61 +29,7 @@ std::string upper(std::string_view s) {
   return out;
 }
 
-std::string_view localName(const pugi::xml_node& n) {
-  std::string_view name = n.name();
-  if (const auto colon = name.find(':'); colon != std::string_view::npos) name.remove_prefix(colon + 1);
-  return name;
-}
-
-/// The local name of the first element of an XML text, or "" when the text does not start as XML.
-std::string rootName(std::string_view text) {
-  const std::string_view head = text.substr(0, 4096);
-  std::size_t pos = 0;
-  while ((pos = head.find('<', pos)) != std::string_view::npos) {
-    const std::string_view rest = head.substr(pos + 1);
-    if (rest.empty()) return {};
-    if (rest.front() == '?' || rest.front() == '!') {
-      ++pos;
-      continue;
-    }
-    std::size_t end = 0;
-    while (end < rest.size() && !std::isspace(static_cast<unsigned char>(rest[end])) && rest[end] != '>' &&
-           rest[end] != '/')
-      ++end;
-    std::string_view name = rest.substr(0, end);
-    if (const auto colon = name.find(':'); colon != std::string_view::npos) name.remove_prefix(colon + 1);
-    return std::string(name);
-  }
-  return {};
-}
-
-/// Line number (1-based) of a byte offset.
-class Lines {
- public:
-  explicit Lines(std::string_view text) {
-    starts_.push_back(0);
-    for (std::size_t i = 0; i < text.size(); ++i)
-      if (text[i] == '\n') starts_.push_back(i + 1);
-  }
-  long of(std::ptrdiff_t offset) const {
-    if (offset < 0) return 0;
-    return static_cast<long>(
-        std::upper_bound(starts_.begin(), starts_.end(), static_cast<std::size_t>(offset)) - starts_.begin());
-  }
-
- private:
-  std::vector<std::size_t> starts_;
-};
-
-pugi::xml_document parseXml(std::string_view text, const std::string& source, const Lines& lines) {
-  pugi::xml_document doc;
-  const pugi::xml_parse_result parsed =
-      doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
-  if (!parsed)
-    throw ParseError(ErrorContext{source, lines.of(parsed.offset), 0, {}},
-                     std::string("not well-formed XML: ") + parsed.description());
-  return doc;
-}
+using xml::localName;
 
 /// Days from 1970-01-01 of a proleptic Gregorian date (H. Hinnant's days_from_civil).
 long long daysFromCivil(long long y, unsigned m, unsigned d) {
@@ -117,11 +64,11 @@ const MtcDataItem* MtcDevices::find(std::string_view key) const {
 }
 
 bool looksLikeMtconnectDevices(std::string_view text) {
-  return rootName(text) == "MTConnectDevices";
+  return xml::rootName(text) == "MTConnectDevices";
 }
 
 bool looksLikeMtconnectStreams(std::string_view text) {
-  return rootName(text) == "MTConnectStreams";
+  return xml::rootName(text) == "MTConnectStreams";
 }
 
 bool looksLikeShdr(std::string_view text) {
@@ -184,8 +131,9 @@ std::optional<double> parseIsoTimestamp(std::string_view t) {
 }
 
 MtcDevices mtconnectDevicesFromText(std::string_view text, const std::string& source) {
-  const Lines lines(text);
-  const pugi::xml_document doc = parseXml(text, source, lines);
+  const xml::LineIndex lines(text);
+  pugi::xml_document doc;
+  xml::parse(doc, text, source, lines);
   const pugi::xml_node root = doc.document_element();
   if (localName(root) != "MTConnectDevices")
     throw ParseError(
@@ -338,8 +286,9 @@ MtcLog shdrFromText(std::string_view text, const std::string& source, const MtcD
 }
 
 MtcLog mtconnectStreamsFromText(std::string_view text, const std::string& source) {
-  const Lines lines(text);
-  const pugi::xml_document doc = parseXml(text, source, lines);
+  const xml::LineIndex lines(text);
+  pugi::xml_document doc;
+  xml::parse(doc, text, source, lines);
   const pugi::xml_node root = doc.document_element();
   if (localName(root) != "MTConnectStreams")
     throw ParseError(
@@ -350,7 +299,7 @@ MtcLog mtconnectStreamsFromText(std::string_view text, const std::string& source
   log.streams = true;
   struct Walker : pugi::xml_tree_walker {
     MtcLog* log;
-    const Lines* lines;
+    const xml::LineIndex* lines;
     const std::string* source;
     bool for_each(pugi::xml_node& n) override {
       if (n.type() != pugi::node_element) return true;

@@ -13,17 +13,14 @@
 #include "core/io/cmm_text_report.h"
 #include "core/io/csv.h"
 #include "core/io/file_io.h"
+#include "core/io/xml_text.h"
 
 namespace metrofit {
 namespace {
 
 constexpr std::string_view kQifNamespace = "http://qifstandards.org/xsd/qif3";
 
-std::string_view localName(const pugi::xml_node& n) {
-  std::string_view s = n.name();
-  const auto colon = s.find(':');
-  return colon == std::string_view::npos ? s : s.substr(colon + 1);
-}
+using xml::localName;
 
 bool endsWith(std::string_view s, std::string_view suffix) {
   return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
@@ -51,21 +48,12 @@ std::vector<pugi::xml_node> elements(const pugi::xml_node& n) {
 /// The reading state: the text (for line numbers) and the source name.
 class Reader {
  public:
-  Reader(std::string_view text, std::string source) : source_(std::move(source)) {
-    lineStarts_.push_back(0);
-    for (std::size_t i = 0; i < text.size(); ++i)
-      if (text[i] == '\n') lineStarts_.push_back(i + 1);
-  }
+  Reader(std::string_view text, std::string source) : source_(std::move(source)), lines_(text) {}
 
   const std::string& source() const { return source_; }
 
-  long lineOfOffset(std::ptrdiff_t offset) const {
-    if (offset < 0) return 0;
-    const auto it =
-        std::upper_bound(lineStarts_.begin(), lineStarts_.end(), static_cast<std::size_t>(offset));
-    return static_cast<long>(it - lineStarts_.begin());
-  }
-  long line(const pugi::xml_node& n) const { return lineOfOffset(n.offset_debug()); }
+  const xml::LineIndex& lines() const { return lines_; }
+  long line(const pugi::xml_node& n) const { return lines_.of(n); }
 
   [[noreturn]] void parseError(const pugi::xml_node& n, const std::string& what) const {
     throw ParseError(ErrorContext{source_, line(n), 0, {}}, what);
@@ -147,7 +135,7 @@ class Reader {
 
  private:
   std::string source_;
-  std::vector<std::size_t> lineStarts_;
+  xml::LineIndex lines_;
 };
 
 /// id -> node of the elements in a list, refusing duplicate ids.
@@ -285,41 +273,13 @@ const QifFeatureMeasurement* QifFile::measurement(std::size_t part, std::size_t 
 }
 
 bool looksLikeQif(std::string_view text) {
-  const std::string_view head = text.substr(0, 4096);
-  std::size_t pos = 0;
-  // The first element that is not a declaration, a comment or a processing instruction.
-  while ((pos = head.find('<', pos)) != std::string_view::npos) {
-    const std::string_view rest = head.substr(pos + 1);
-    if (rest.empty()) return false;
-    if (rest.front() == '?' || rest.front() == '!') {
-      ++pos;
-      continue;
-    }
-    std::size_t end = 0;
-    while (end < rest.size() && !std::isspace(static_cast<unsigned char>(rest[end])) && rest[end] != '>' &&
-           rest[end] != '/')
-      ++end;
-    std::string_view name = rest.substr(0, end);
-    if (const auto colon = name.find(':'); colon != std::string_view::npos) name = name.substr(colon + 1);
-    return name == "QIFDocument";
-  }
-  return false;
+  return xml::rootName(text) == "QIFDocument";
 }
 
 QifFile qifFromText(std::string_view text, const std::string& source) {
   const Reader r(text, source);
   pugi::xml_document doc;
-  const pugi::xml_parse_result parsed =
-      doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
-  if (!parsed) {
-    // pugixml reports an unclosed element at the end of the text: the file was cut off.
-    const bool cut = parsed.status == pugi::status_end_element_mismatch &&
-                     static_cast<std::size_t>(parsed.offset) + 1 >= text.size();
-    throw ParseError(ErrorContext{source, r.lineOfOffset(parsed.offset), 0, {}},
-                     std::string("not well-formed XML: ") +
-                         (cut ? "the text ends before its elements are closed (a truncated file?)"
-                              : parsed.description()));
-  }
+  xml::parse(doc, text, source, r.lines());
   const pugi::xml_node root = doc.document_element();
   if (!root) throw ParseError(ErrorContext{source, 0, 0, {}}, "no XML root element");
   {

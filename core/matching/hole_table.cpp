@@ -297,13 +297,13 @@ ProbePointSet readProbePointsAnyFormat(const std::string& path, std::size_t minP
   const std::string text = readFile(path);
   if (looksLikeQif(text)) {
     const QifFile file = qifFromText(text, displayPath(path));
-    ProbePointSet set = qifProbePoints(file, qifPartIndex(file, part));
+    const std::size_t index = qifPartIndex(file, part);
+    ProbePointSet set = qifProbePoints(file, index);
     if (set.points.size() < minPoints)
-      throw ValidationError(ErrorContext{set.source, 0, 0, {}},
-                            "part " + std::to_string(qifPartIndex(file, part) + 1) + " has " +
-                                std::to_string(set.points.size()) +
-                                " measured features with a location, at least " + std::to_string(minPoints) +
-                                " needed");
+      throw ValidationError(
+          ErrorContext{set.source, 0, 0, {}},
+          "part " + std::to_string(index + 1) + " has " + std::to_string(set.points.size()) +
+              " measured features with a location, at least " + std::to_string(minPoints) + " needed");
     return set;
   }
   if (looksLikeHoleTable(text)) return holeTableFromText(text, displayPath(path), minPoints).points;
