@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -122,6 +124,8 @@ TEST(ControlExport, StBlockReproducesLinearLagAndDlagOnTheRealHeldOutHalf) {
     const BlockRun fb = runBlock(st, m, heldout);
     const std::vector<double> model = predictChange(m, heldout);
     EXPECT_LT(maxAbsDiff(fb.error, model), 0.01);
+    std::printf("[ measured ] %s: ST block vs the model on the held-out half: max |diff| %.2g um\n",
+                toString(kind), maxAbsDiff(fb.error, model));
     for (std::size_t k = 0; k < fb.comp.size(); ++k)
       ASSERT_EQ(fb.comp[k], -fb.error[k]) << k;  // within +-100
     // The whole log from its first row: the prediction fitAndEvaluate reports for the held-out rows.
