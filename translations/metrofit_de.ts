@@ -780,7 +780,7 @@ Spannweite: %2%3</translation>
 <context>
     <name>metrofit::DiagnosisPage</name>
     <message>
-        <location filename="../app/gui/diagnosispage.cpp" line="+70"/>
+        <location filename="../app/gui/diagnosispage.cpp" line="+75"/>
         <source>Thermal</source>
         <translation>Thermik</translation>
     </message>
@@ -800,12 +800,12 @@ Spannweite: %2%3</translation>
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+643"/>
+        <location line="+648"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-539"/>
+        <location line="-544"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
@@ -825,7 +825,7 @@ Spannweite: %2%3</translation>
         <translation>Ins &amp;Modell übernehmen</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>The study whose declared model is diagnosed</source>
         <translation>Die Studie, deren deklariertes Modell diagnostiziert wird</translation>
     </message>
@@ -841,12 +841,12 @@ Spannweite: %2%3</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+334"/>
+        <location line="+336"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
     </message>
     <message>
-        <location line="-320"/>
+        <location line="-322"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Das deklarierte Modell, wie es vor dem Hinzufügen eines Effekts angepasst wurde</translation>
     </message>
@@ -912,13 +912,13 @@ Spannweite: %2%3</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+189"/>
+        <location line="+191"/>
         <location line="+114"/>
         <source>Residual chec&amp;k</source>
         <translation>Residuen&amp;prüfung</translation>
     </message>
     <message>
-        <location line="-301"/>
+        <location line="-303"/>
         <source>The candidate effects tried, their residual plots and the error before / after</source>
         <translation>Die getesteten Kandidateneffekte, ihre Residuendiagramme und der Fehler vorher / nachher</translation>
     </message>
@@ -934,30 +934,12 @@ Spannweite: %2%3</translation>
     </message>
     <message>
         <location line="+52"/>
-        <location line="+154"/>
+        <location line="+156"/>
         <source>The diagnosis failed: %1</source>
         <translation>Die Diagnose ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="-86"/>
-        <source>The %1 settings of the diagnosis are invalid; nothing runs until they are corrected (above, Undo, or the project file under studies.diagnosis.%2):
-%3</source>
-        <translation>Die %1-Einstellungen der Diagnose sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (oben, Rückgängig oder die Projektdatei unter studies.diagnosis.%2):
-%3</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>No usable %1 data for the diagnosis:
-%2
-
-Configure it in the project file under studies.diagnosis.%3 (see the documentation of the diagnosis study).</source>
-        <translation>Keine verwendbaren %1-Daten für die Diagnose:
-%2
-
-Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die Dokumentation der Diagnosestudie).</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="-75"/>
         <source>Data: %1</source>
         <translation>Daten: %1</translation>
     </message>
@@ -1027,12 +1009,12 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Da&amp;ten:</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+11"/>
         <source>Choose the %1 diagnosis data</source>
         <translation>Die Daten der %1-Diagnose wählen</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Train &amp;fraction:</source>
         <translation>Trainings&amp;anteil:</translation>
     </message>
@@ -1047,7 +1029,32 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Den Trainingsanteil der Diagnose ändern</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
+        <source>The log&apos;s column the declared model predicts, whose residual is diagnosed (studies.diagnosis.thermal.target)</source>
+        <translation>Die Spalte des Protokolls, die das deklarierte Modell vorhersagt und deren Rest diagnostiziert wird (studies.diagnosis.thermal.target)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Tar&amp;get:</source>
+        <translation>&amp;Zielgröße:</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Change the diagnosis target</source>
+        <translation>Zielgröße der Diagnose ändern</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The declared model&apos;s inputs: the loop looks for what the residual of a model of these inputs still depends on (studies.diagnosis.thermal.inputs)</source>
+        <translation>Die Eingänge des deklarierten Modells: die Schleife sucht, wovon der Rest eines Modells dieser Eingänge noch abhängt (studies.diagnosis.thermal.inputs)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Inputs:</source>
+        <translation>&amp;Eingänge:</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>&amp;Feed:</source>
         <translation>&amp;Vorschub:</translation>
     </message>
@@ -1091,8 +1098,28 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <source>Change the diagnosis tolerance</source>
         <translation>Die Toleranz der Diagnose ändern</translation>
     </message>
+    <message numerus="yes">
+        <location line="+126"/>
+        <source>%n column(s)</source>
+        <translation>
+            <numerusform>%n Spalte</numerusform>
+            <numerusform>%n Spalten</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+102"/>
+        <location line="+9"/>
+        <source>Change the diagnosis inputs</source>
+        <translation>Eingänge der Diagnose ändern</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+33"/>
+        <location line="+2"/>
+        <source>Choose the thermal diagnosis data</source>
+        <translation>Daten der Thermik-Diagnose wählen</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>The stored result (computed %1) is out of date: the settings changed since. Not run with these settings yet: press Run (Ctrl+R).</source>
         <translation>Das gespeicherte Ergebnis (berechnet %1) ist veraltet: die Einstellungen haben sich seitdem geändert. Mit diesen Einstellungen noch nicht ausgeführt: Ausführen drücken (Strg+R).</translation>
     </message>
@@ -1112,7 +1139,7 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>Aus dem gespeicherten Projekt (berechnet %1 mit diesen Einstellungen auf diesen Daten): %2 Ausführen (Strg+R) für die Diagramme, die Kandidatentabelle und die Residuenprüfung.</translation>
     </message>
     <message>
-        <location line="-851"/>
+        <location line="-1029"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -1137,7 +1164,24 @@ Konfigurieren Sie sie in der Projektdatei unter studies.diagnosis.%3 (siehe die 
         <translation>. Übernommen: %1 (%2 Kandidaten getestet).</translation>
     </message>
     <message>
-        <location line="+442"/>
+        <location line="+285"/>
+        <source>Diagnosis, %1: the settings are invalid; nothing runs until they are corrected (above, Undo, or the project file under studies.diagnosis.%2):
+%3</source>
+        <translation>Diagnose, %1: die Einstellungen sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (oben, Rückgängig oder die Projektdatei unter studies.diagnosis.%2):
+%3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Diagnosis, %1: choose the data to diagnose above (Data).</source>
+        <translation>Diagnose, %1: wählen Sie oben die zu diagnostizierenden Daten (Daten).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diagnosis, %1: the project has no data for it yet. Import it with File › Import data (Ctrl+I).</source>
+        <translation>Diagnose, %1: das Projekt hat noch keine Daten dafür. Importieren Sie sie mit Datei › Daten importieren (Strg+I).</translation>
+    </message>
+    <message>
+        <location line="+156"/>
         <source>Cancelled: the rounds done so far.</source>
         <translation>Abgebrochen: die bisherigen Runden.</translation>
     </message>
@@ -1538,16 +1582,16 @@ Anzahl: %4</translation>
     <message>
         <location line="+3"/>
         <source>Cop&amp;y the file into the project (data folder)</source>
-        <translation>Datei in das Projekt kop&amp;ieren (Ordner data)</translation>
+        <translation>Datei in das Pro&amp;jekt kopieren (Ordner data)</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+246"/>
+        <location line="+245"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-233"/>
+        <location line="-232"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Zeilen vor den Spaltennamen, unabhängig vom Inhalt übersprungen (Vorspann eines Messgeräts)</translation>
     </message>
@@ -1698,12 +1742,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+529"/>
+        <location line="+535"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
     <message>
-        <location line="-465"/>
+        <location line="-471"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
     </message>
@@ -1714,7 +1758,7 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+61"/>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>All files (*)</source>
         <translation>Alle Dateien (*)</translation>
     </message>
@@ -1724,7 +1768,7 @@ Anzahl: %4</translation>
         <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.QIF *.dfq *.DFQ *.stl *.STL)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+10"/>
         <source>%1: cannot read the file (%2)</source>
         <translation>%1: die Datei kann nicht gelesen werden (%2)</translation>
     </message>
@@ -1747,7 +1791,7 @@ Anzahl: %4</translation>
         <translation>Außerdem: %1</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+100"/>
         <source>as in the file</source>
         <translation>wie in der Datei</translation>
     </message>
@@ -3430,11 +3474,6 @@ Anzahl: %4</translation>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
-        <translation>Datendateien (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <location line="+19"/>
         <source>Cannot import the data</source>
         <translation>Die Daten können nicht importiert werden</translation>
@@ -3445,7 +3484,7 @@ Anzahl: %4</translation>
         <translation>%1 als „%2“ importiert</translation>
     </message>
     <message>
-        <location line="-220"/>
+        <location line="-219"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Das Projekt „%1“ hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>

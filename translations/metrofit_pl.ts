@@ -781,7 +781,7 @@ rozstęp: %2%3</translation>
 <context>
     <name>metrofit::DiagnosisPage</name>
     <message>
-        <location filename="../app/gui/diagnosispage.cpp" line="+70"/>
+        <location filename="../app/gui/diagnosispage.cpp" line="+75"/>
         <source>Thermal</source>
         <translation>Termika</translation>
     </message>
@@ -801,12 +801,12 @@ rozstęp: %2%3</translation>
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+643"/>
+        <location line="+648"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-539"/>
+        <location line="-544"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
@@ -826,7 +826,7 @@ rozstęp: %2%3</translation>
         <translation>Zastosuj do &amp;modelu</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>The study whose declared model is diagnosed</source>
         <translation>Studium, którego zadeklarowany model jest diagnozowany</translation>
     </message>
@@ -842,12 +842,12 @@ rozstęp: %2%3</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+334"/>
+        <location line="+336"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
     </message>
     <message>
-        <location line="-320"/>
+        <location line="-322"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Zadeklarowany model dopasowany przed dodaniem jakiegokolwiek efektu</translation>
     </message>
@@ -913,13 +913,13 @@ rozstęp: %2%3</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+189"/>
+        <location line="+191"/>
         <location line="+114"/>
         <source>Residual chec&amp;k</source>
         <translation>Sprawdzenie re&amp;siduów</translation>
     </message>
     <message>
-        <location line="-301"/>
+        <location line="-303"/>
         <source>The candidate effects tried, their residual plots and the error before / after</source>
         <translation>Wypróbowane efekty kandydujące, ich wykresy residuów i błąd przed / po</translation>
     </message>
@@ -935,30 +935,12 @@ rozstęp: %2%3</translation>
     </message>
     <message>
         <location line="+52"/>
-        <location line="+154"/>
+        <location line="+156"/>
         <source>The diagnosis failed: %1</source>
         <translation>Diagnoza nie powiodła się: %1</translation>
     </message>
     <message>
-        <location line="-86"/>
-        <source>The %1 settings of the diagnosis are invalid; nothing runs until they are corrected (above, Undo, or the project file under studies.diagnosis.%2):
-%3</source>
-        <translation>Ustawienia diagnozy (%1) są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (powyżej, Cofnij lub plik projektu w studies.diagnosis.%2):
-%3</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>No usable %1 data for the diagnosis:
-%2
-
-Configure it in the project file under studies.diagnosis.%3 (see the documentation of the diagnosis study).</source>
-        <translation>Brak użytecznych danych (%1) do diagnozy:
-%2
-
-Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studium diagnozy).</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="-75"/>
         <source>Data: %1</source>
         <translation>Dane: %1</translation>
     </message>
@@ -1028,12 +1010,12 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Da&amp;ne:</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+11"/>
         <source>Choose the %1 diagnosis data</source>
         <translation>Wybierz dane diagnozy (%1)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Train &amp;fraction:</source>
         <translation>&amp;Udział uczący:</translation>
     </message>
@@ -1048,7 +1030,32 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Zmień udział uczący diagnozy</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
+        <source>The log&apos;s column the declared model predicts, whose residual is diagnosed (studies.diagnosis.thermal.target)</source>
+        <translation>Kolumna dziennika przewidywana przez zadeklarowany model, której reszta jest diagnozowana (studies.diagnosis.thermal.target)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Tar&amp;get:</source>
+        <translation>&amp;Cel:</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Change the diagnosis target</source>
+        <translation>Zmień cel diagnozy</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The declared model&apos;s inputs: the loop looks for what the residual of a model of these inputs still depends on (studies.diagnosis.thermal.inputs)</source>
+        <translation>Wejścia zadeklarowanego modelu: pętla szuka, od czego jeszcze zależy reszta modelu tych wejść (studies.diagnosis.thermal.inputs)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Inputs:</source>
+        <translation>&amp;Wejścia:</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>&amp;Feed:</source>
         <translation>&amp;Posuw:</translation>
     </message>
@@ -1092,8 +1099,29 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <source>Change the diagnosis tolerance</source>
         <translation>Zmień tolerancję diagnozy</translation>
     </message>
+    <message numerus="yes">
+        <location line="+126"/>
+        <source>%n column(s)</source>
+        <translation>
+            <numerusform>%n kolumna</numerusform>
+            <numerusform>%n kolumny</numerusform>
+            <numerusform>%n kolumn</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+102"/>
+        <location line="+9"/>
+        <source>Change the diagnosis inputs</source>
+        <translation>Zmień wejścia diagnozy</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+33"/>
+        <location line="+2"/>
+        <source>Choose the thermal diagnosis data</source>
+        <translation>Wybierz dane diagnozy termicznej</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>The stored result (computed %1) is out of date: the settings changed since. Not run with these settings yet: press Run (Ctrl+R).</source>
         <translation>Zapisany wynik (obliczony %1) jest nieaktualny: ustawienia zmieniły się od tego czasu. Jeszcze nie uruchomiono z tymi ustawieniami: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
@@ -1113,7 +1141,7 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>Z zapisanego projektu (obliczono %1 z tymi ustawieniami dla tych danych): %2 Uruchom (Ctrl+R), aby zobaczyć wykresy, tabelę kandydatów i sprawdzenie residuów.</translation>
     </message>
     <message>
-        <location line="-851"/>
+        <location line="-1029"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -1138,7 +1166,24 @@ Skonfiguruj je w pliku projektu w studies.diagnosis.%3 (patrz dokumentacja studi
         <translation>. Przyjęto: %1 (wypróbowano kandydatów: %2).</translation>
     </message>
     <message>
-        <location line="+442"/>
+        <location line="+285"/>
+        <source>Diagnosis, %1: the settings are invalid; nothing runs until they are corrected (above, Undo, or the project file under studies.diagnosis.%2):
+%3</source>
+        <translation>Diagnoza, %1: ustawienia są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (powyżej, Cofnij lub plik projektu w studies.diagnosis.%2):
+%3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Diagnosis, %1: choose the data to diagnose above (Data).</source>
+        <translation>Diagnoza, %1: wybierz powyżej dane do diagnozy (Dane).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diagnosis, %1: the project has no data for it yet. Import it with File › Import data (Ctrl+I).</source>
+        <translation>Diagnoza, %1: projekt nie ma jeszcze danych do niej. Zaimportuj je przez Plik › Importuj dane (Ctrl+I).</translation>
+    </message>
+    <message>
+        <location line="+156"/>
         <source>Cancelled: the rounds done so far.</source>
         <translation>Anulowano: dotychczasowe rundy.</translation>
     </message>
@@ -1546,12 +1591,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+246"/>
+        <location line="+245"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-233"/>
+        <location line="-232"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Wiersze przed nazwami kolumn, pomijane bez względu na treść (nagłówek przyrządu)</translation>
     </message>
@@ -1702,12 +1747,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+529"/>
+        <location line="+535"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
     <message>
-        <location line="-465"/>
+        <location line="-471"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
     </message>
@@ -1718,7 +1763,7 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+61"/>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>All files (*)</source>
         <translation>Wszystkie pliki (*)</translation>
     </message>
@@ -1728,7 +1773,7 @@ liczba: %4</translation>
         <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml *.qif *.QIF *.dfq *.DFQ *.stl *.STL)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+10"/>
         <source>%1: cannot read the file (%2)</source>
         <translation>%1: nie można odczytać pliku (%2)</translation>
     </message>
@@ -1752,7 +1797,7 @@ liczba: %4</translation>
         <translation>Także: %1</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+100"/>
         <source>as in the file</source>
         <translation>jak w pliku</translation>
     </message>
@@ -3439,11 +3484,6 @@ liczba: %4</translation>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)</source>
-        <translation>Pliki danych (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;Wszystkie pliki (*)</translation>
-    </message>
-    <message>
         <location line="+19"/>
         <source>Cannot import the data</source>
         <translation>Nie można zaimportować danych</translation>
@@ -3454,7 +3494,7 @@ liczba: %4</translation>
         <translation>Zaimportowano %1 jako „%2”</translation>
     </message>
     <message>
-        <location line="-220"/>
+        <location line="-219"/>
         <source>The project &quot;%1&quot; has unsaved changes. Do you want to save them?</source>
         <translation>Projekt „%1” ma niezapisane zmiany. Czy chcesz je zapisać?</translation>
     </message>

@@ -6,11 +6,13 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QKeySequence>
 #include <QLabel>
 #include <QLocale>
+#include <QMenu>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -18,6 +20,7 @@
 #include <QStackedWidget>
 #include <QTabWidget>
 #include <QTableWidget>
+#include <QToolButton>
 #include <QUndoCommand>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -31,6 +34,8 @@
 #include "app/gui/studysettingbinding.h"
 #include "core/project/stored_results.h"
 #include "core/study/study_settings.h"
+#include "core/study/thermal_comparison.h"
+#include "core/thermal/thermal_log.h"
 #include "widgets/diagnose/coretexts.h"
 #include "widgets/diagnose/residualchecktext.h"
 #include "widgets/diagnose/residualcheckview.h"
@@ -195,6 +200,9 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
       feed_(new QDoubleSpinBox(this)),
       setupModel_(new QComboBox(this)),
       tolerance_(new QDoubleSpinBox(this)),
+      thermalTarget_(new QComboBox(this)),
+      thermalInputs_(new QToolButton(this)),
+      thermalInputsMenu_(new QMenu(thermalInputs_)),
       run_(new BackgroundRun<diagnose::Diagnosis>(this)) {
   auto* title = new QLabel(studyTitle(QString::fromLatin1(study::kDiagnosis)), this);
   QFont titleFont = title->font();
@@ -425,13 +433,15 @@ void DiagnosisPage::refresh() {
     if (hasDiagnosisSettings(document_->project(), d)) {
       // Refused, not replaced: nothing runs with settings the study does not hold.
       settingsError_ = QString::fromUtf8(e.what());
-      showMessage(tr("The %1 settings of the diagnosis are invalid; nothing runs until they are corrected "
+      showMessage(tr("Diagnosis, %1: the settings are invalid; nothing runs until they are corrected "
                      "(above, Undo, or the project file under studies.diagnosis.%2):\n%3")
-                      .arg(domainTitle(d).toLower(), key, settingsError_));
+                      .arg(domainTitle(d), key, settingsError_));
+    } else if (datasetCombos_[domainIndex(d)]->count() > 0) {
+      showMessage(tr("Diagnosis, %1: choose the data to diagnose above (Data).").arg(domainTitle(d)));
     } else {
-      showMessage(tr("No usable %1 data for the diagnosis:\n%2\n\nConfigure it in the project file under "
-                     "studies.diagnosis.%3 (see the documentation of the diagnosis study).")
-                      .arg(domainTitle(d).toLower(), QString::fromUtf8(e.what()), key));
+      showMessage(tr("Diagnosis, %1: the project has no data for it yet. Import it with File › Import data "
+                     "(Ctrl+I).")
+                      .arg(domainTitle(d)));
     }
     return;
   }
@@ -795,8 +805,15 @@ void DiagnosisPage::buildControls() {
     label->setBuddy(combo);
     row->addWidget(label);
     row->addWidget(combo);
-    bindStudySetting(document_, combo, study, QStringLiteral("/%1/dataset").arg(QLatin1String(key)),
-                     text(key, "dataset"), tr("Choose the %1 diagnosis data").arg(domainTitle(d).toLower()));
+    if (d == DiagnosisDomain::Thermal) {
+      // The data with the target and inputs the loop needs, in one undo step (chooseThermalData).
+      connect(combo, &QComboBox::currentIndexChanged, this,
+              [this, combo](int index) { chooseThermalData(combo->itemData(index).toString()); });
+    } else {
+      bindStudySetting(document_, combo, study, QStringLiteral("/%1/dataset").arg(QLatin1String(key)),
+                       text(key, "dataset"),
+                       tr("Choose the %1 diagnosis data").arg(domainTitle(d).toLower()));
+    }
     const auto addBox = [&](QDoubleSpinBox* box, const QString& caption, const QString& tip) {
       box->setToolTip(tip);
       box->setParent(page);
@@ -819,6 +836,40 @@ void DiagnosisPage::buildControls() {
         bindStudySetting(document_, trainFraction_, study, QStringLiteral("/thermal/train_fraction"),
                          number("thermal", "train_fraction", defaults.trainFraction),
                          tr("Change the diagnosis train fraction"));
+        {
+          thermalTarget_->setObjectName(QStringLiteral("diagnosisTarget"));
+          thermalTarget_->setParent(page);
+          thermalTarget_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+          thermalTarget_->setToolTip(
+              tr("The log's column the declared model predicts, whose residual is "
+                 "diagnosed (studies.diagnosis.thermal.target)"));
+          auto* l = new QLabel(tr("Tar&get:"), page);
+          l->setBuddy(thermalTarget_);
+          row->addSpacing(12);
+          row->addWidget(l);
+          row->addWidget(thermalTarget_);
+          connect(thermalTarget_, &QComboBox::currentIndexChanged, this, [this](int index) {
+            const QString name = thermalTarget_->itemData(index).toString();
+            if (name.isEmpty()) return;
+            document_->setStudyValue(QString::fromLatin1(study::kDiagnosis),
+                                     QStringLiteral("/thermal/target"), name.toStdString(),
+                                     tr("Change the diagnosis target"));
+          });
+          thermalInputs_->setObjectName(QStringLiteral("diagnosisInputs"));
+          thermalInputs_->setParent(page);
+          thermalInputs_->setPopupMode(QToolButton::InstantPopup);
+          thermalInputs_->setMenu(thermalInputsMenu_);
+          thermalInputs_->setToolButtonStyle(Qt::ToolButtonTextOnly);
+          thermalInputs_->setToolTip(
+              tr("The declared model's inputs: the loop looks for what the residual "
+                 "of a model of these inputs still depends on "
+                 "(studies.diagnosis.thermal.inputs)"));
+          auto* il = new QLabel(tr("&Inputs:"), page);
+          il->setBuddy(thermalInputs_);
+          row->addSpacing(12);
+          row->addWidget(il);
+          row->addWidget(thermalInputs_);
+        }
         break;
       case DiagnosisDomain::Kinematic:
         feed_->setObjectName(QStringLiteral("diagnosisFeed"));
@@ -895,6 +946,7 @@ void DiagnosisPage::fillControls() {
          QStringLiteral("/%1/dataset").arg(QString::fromStdString(key)));
   }
   fill(setupModel_, fieldKind("setup", "model"), QStringLiteral("/setup/model"));
+  fillThermalColumns();
   // The numbers: what the study holds (clamped to the box), else the default.
   const auto show = [&](QDoubleSpinBox* box, const char* key, double fallback) {
     const nlohmann::json v = document_->studyValue(study, QString::fromLatin1(key));
@@ -909,6 +961,137 @@ void DiagnosisPage::fillControls() {
   show(trainFraction_, "/thermal/train_fraction", defaults.trainFraction);
   show(feed_, "/kinematic/feed_mm_per_min", defaults.feedMmPerMin);
   show(tolerance_, "/matching/tolerance_mm", defaults.toleranceMm);
+}
+
+std::vector<std::string> DiagnosisPage::thermalColumns(const std::string& datasetId) {
+  const DatasetRef* dataset = document_->project().dataset(datasetId);
+  if (!dataset) return {};
+  const std::string projectPath = document_->projectPathForDatasets().toStdString();
+  std::string path;
+  try {
+    path = resolveDatasetPath(projectPath, *dataset);
+  } catch (const std::exception&) {
+    return {};
+  }
+  const QFileInfo info(QString::fromStdString(path));
+  nlohmann::json key = {path,
+                        info.lastModified().toMSecsSinceEpoch(),
+                        info.size(),
+                        nlohmann::json(dataset->csv.columnMap),
+                        dataset->csv.headerLines,
+                        static_cast<int>(dataset->csv.dialect.delimiter),
+                        static_cast<int>(dataset->csv.dialect.decimal),
+                        dataset->csv.commentPrefix};
+  if (key.dump() == columnsKey_) return columnsCache_;
+  columnsKey_ = key.dump();
+  columnsCache_.clear();
+  try {
+    for (const ThermalChannel& c : readThermalLog(path, 3, dataset->csv).channels)
+      columnsCache_.push_back(c.name);
+  } catch (const std::exception&) {
+    // Unreadable: no columns to offer; the page names the error when it reads the settings.
+  }
+  return columnsCache_;
+}
+
+void DiagnosisPage::fillThermalColumns() {
+  const QString study = QString::fromLatin1(study::kDiagnosis);
+  const nlohmann::json dataset = document_->studyValue(study, QStringLiteral("/thermal/dataset"));
+  const std::vector<std::string> columns =
+      dataset.is_string() ? thermalColumns(dataset.get<std::string>()) : std::vector<std::string>{};
+  const nlohmann::json target = document_->studyValue(study, QStringLiteral("/thermal/target"));
+  const nlohmann::json inputs = document_->studyValue(study, QStringLiteral("/thermal/inputs"));
+  {
+    const QSignalBlocker blocker(thermalTarget_);
+    thermalTarget_->clear();
+    for (const std::string& c : columns)
+      thermalTarget_->addItem(QString::fromStdString(c), QString::fromStdString(c));
+    thermalTarget_->setCurrentIndex(
+        target.is_string() ? thermalTarget_->findData(QString::fromStdString(target.get<std::string>()))
+                           : -1);
+    thermalTarget_->setEnabled(!columns.empty());
+  }
+  std::set<std::string> chosen;
+  if (inputs.is_array())
+    for (const auto& i : inputs)
+      if (i.is_string()) chosen.insert(i.get<std::string>());
+  // The actions are kept while the columns stay (a click's own write refreshes the page: the action it
+  // came from must not be deleted inside its signal); only their check marks follow the study.
+  QStringList names;
+  for (const std::string& c : columns) names << QString::fromStdString(c);
+  QStringList shown;
+  for (QAction* a : thermalInputsMenu_->actions()) shown << a->data().toString();
+  if (shown != names) {
+    for (QAction* a : thermalInputsMenu_->actions()) {
+      thermalInputsMenu_->removeAction(a);
+      a->deleteLater();
+    }
+    for (const QString& c : names) {
+      QAction* a = thermalInputsMenu_->addAction(c);
+      a->setData(c);
+      a->setCheckable(true);
+      connect(a, &QAction::triggered, this, &DiagnosisPage::writeThermalInputs);
+    }
+  }
+  for (QAction* a : thermalInputsMenu_->actions()) {
+    const QSignalBlocker blocker(a);
+    a->setChecked(chosen.count(a->data().toString().toStdString()) > 0);
+  }
+  thermalInputs_->setEnabled(!columns.empty());
+  thermalInputs_->setText(tr("%n column(s)", nullptr, static_cast<int>(chosen.size())));
+}
+
+void DiagnosisPage::writeThermalInputs() {
+  std::vector<std::string> inputs;
+  for (QAction* a : thermalInputsMenu_->actions())
+    if (a->isChecked()) inputs.push_back(a->data().toString().toStdString());
+  document_->setStudyValue(QString::fromLatin1(study::kDiagnosis), QStringLiteral("/thermal/inputs"),
+                           inputs.empty() ? nlohmann::json() : nlohmann::json(inputs),
+                           tr("Change the diagnosis inputs"));
+}
+
+void DiagnosisPage::chooseThermalData(const QString& datasetId) {
+  const QString study = QString::fromLatin1(study::kDiagnosis);
+  const std::string id = datasetId.toStdString();
+  if (id.empty()) return;
+  std::vector<StudyEdit> edits;
+  edits.push_back({QStringLiteral("/thermal/dataset"), id, tr("Choose the thermal diagnosis data")});
+  const DatasetRef* dataset = document_->project().dataset(id);
+  if (dataset) {
+    try {
+      const ThermalLog log = readThermalLog(
+          resolveDatasetPath(document_->projectPathForDatasets().toStdString(), *dataset), 3, dataset->csv);
+      // Kept when the study's target and inputs are columns of this log.
+      const nlohmann::json target = document_->studyValue(study, QStringLiteral("/thermal/target"));
+      const nlohmann::json inputs = document_->studyValue(study, QStringLiteral("/thermal/inputs"));
+      bool keep = target.is_string() && log.indexOf(target.get<std::string>()) >= 0 && inputs.is_array() &&
+                  !inputs.empty();
+      if (keep)
+        for (const auto& i : inputs) keep = keep && i.is_string() && log.indexOf(i.get<std::string>()) >= 0;
+      if (!keep) {
+        const nlohmann::json thermal = document_->studyValue(QString::fromLatin1(study::kThermal), QString());
+        ThermalModelSettings s;
+        try {
+          s = defaultThermalModelSettings(log, thermal, id);  // the thermal study's, on the same log
+        } catch (const std::exception&) {
+          s = defaultThermalModelSettings(log, nlohmann::json(), id);  // it is refused there: the defaults
+        }
+        if (!s.target.empty()) edits.push_back({QStringLiteral("/thermal/target"), s.target, QString()});
+        if (!s.inputs.empty()) edits.push_back({QStringLiteral("/thermal/inputs"), s.inputs, QString()});
+      }
+    } catch (const std::exception&) {
+      // An unreadable log: the dataset alone; the page names the error.
+    }
+  }
+  std::vector<StudyEdit> changed;
+  for (const StudyEdit& e : edits)
+    if (document_->studyValue(study, e.key) != e.value) changed.push_back(e);
+  if (changed.empty()) return;
+  QUndoStack* stack = document_->undoStack();
+  if (changed.size() > 1) stack->beginMacro(tr("Choose the thermal diagnosis data"));
+  for (const StudyEdit& e : changed)
+    document_->setStudyValue(study, e.key, e.value, tr("Choose the thermal diagnosis data"));
+  if (changed.size() > 1) stack->endMacro();
 }
 
 nlohmann::json DiagnosisPage::storedSettings() const {

@@ -35,6 +35,8 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QMenu;
+class QToolButton;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -81,6 +83,14 @@ class DiagnosisPage : public QWidget {
   QDoubleSpinBox* feedBox() const { return feed_; }
   QComboBox* setupModelCombo() const { return setupModel_; }
   QDoubleSpinBox* toleranceBox() const { return tolerance_; }
+  /// Thermal's target (the log's columns; items carry the name) and declared inputs (a menu of
+  /// checkable actions, one per column, their data the name).
+  QComboBox* thermalTargetCombo() const { return thermalTarget_; }
+  QToolButton* thermalInputsButton() const { return thermalInputs_; }
+  /// Chooses the thermal diagnosis data as the Data box does (one undo step): the dataset, and a target
+  /// and inputs the log has (kept when the study's are columns of it, else the thermal study's when it
+  /// is on the same log, else the defaults of core/study/thermal_comparison.h).
+  void chooseThermalData(const QString& datasetId);
   /// Why the current domain's settings are refused ("" when they are usable or not configured).
   QString settingsError() const { return settingsError_; }
 
@@ -114,6 +124,12 @@ class DiagnosisPage : public QWidget {
   void updateApplyButton();
   void buildControls();
   void fillControls();
+  /// Target and inputs of the thermal controls from the study and the chosen log's columns.
+  void fillThermalColumns();
+  /// Writes the checked inputs of the menu to the study (one undo step).
+  void writeThermalInputs();
+  /// The channel names of a thermal_log dataset (read once per file state; empty when unreadable).
+  std::vector<std::string> thermalColumns(const std::string& datasetId);
   /// The settings a result is stored with (see the header comment); null when the settings are unusable.
   nlohmann::json storedSettings() const;
   void storeResult(const std::string& datasetId, const nlohmann::json& settings);
@@ -144,6 +160,11 @@ class DiagnosisPage : public QWidget {
   QDoubleSpinBox* feed_;
   QComboBox* setupModel_;
   QDoubleSpinBox* tolerance_;
+  QComboBox* thermalTarget_;
+  QToolButton* thermalInputs_;
+  QMenu* thermalInputsMenu_;
+  std::string columnsKey_;                 ///< the file state thermalColumns_ were read from
+  std::vector<std::string> columnsCache_;  ///< its channel names
   QString settingsError_;
   nlohmann::json runSettings_;  ///< the stored settings of the run in the worker
   std::string runDatasetId_;

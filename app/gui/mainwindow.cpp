@@ -539,9 +539,8 @@ void MainWindow::importFiles(const QStringList& files) {
   if (paths.isEmpty()) {
     const QString start =
         document_->fileName().isEmpty() ? QDir::homePath() : QFileInfo(document_->fileName()).path();
-    paths = QFileDialog::getOpenFileNames(
-        this, tr("Import data"), start,
-        tr("Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis);;All files (*)"));
+    // All files first (ImportDialog::fileFilter): files without an extension are shown.
+    paths = QFileDialog::getOpenFileNames(this, tr("Import data"), start, ImportDialog::fileFilter());
   }
   // Several DMIS files, one per workpiece: offered as one series (one dataset), else one dialog each.
   bool allDmis = paths.size() > 1;

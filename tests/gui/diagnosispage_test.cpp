@@ -5,11 +5,13 @@
 // missing or invalid settings show a message naming the field instead of crashing.
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QImage>
+#include <QMenu>
 #include <QPainter>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -17,9 +19,11 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
 #include <QUndoStack>
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "app/gui/diagnosispage.h"
 #include "core/project/project.h"
@@ -225,7 +229,10 @@ TEST_F(DiagnosisPageTest, NoDiagnosisStudyAndBadKeysShowMessages) {
   DiagnosisPage page(&document_);
   for (DiagnosisDomain d : kDiagnosisDomains) {
     page.setDomain(d);
-    EXPECT_TRUE(page.message().contains(QStringLiteral("studies.diagnosis"))) << page.message().toStdString();
+    // The way on, on the page: choose the data (the demo has data of every domain), no project file.
+    EXPECT_TRUE(page.message().contains(QStringLiteral("choose the data to diagnose above")))
+        << page.message().toStdString();
+    EXPECT_FALSE(page.message().contains(QStringLiteral("project file"))) << page.message().toStdString();
   }
   page.showView(QStringLiteral("diagnosis"));
   EXPECT_FALSE(page.result().has_value());
@@ -322,6 +329,72 @@ TEST_F(DiagnosisPageTest, ControlsWriteTheStudyAndFollowUndo) {
     ASSERT_NE(d, nullptr);
     EXPECT_EQ(d->kind, "probe_points");
   }
+}
+
+// Found in the de_DE walk (2026-11-30): a project made in the GUI from an imported log had no way to its
+// thermal diagnosis but the project file (target and inputs had no control). Choosing the data on the
+// page declares the dataset, a target and inputs the log has (one undo step); the target and each input
+// are changed on the page; the loop then runs.
+TEST_F(DiagnosisPageTest, ThermalDiagnosisIsReachedFromThePageWithoutTheProjectFile) {
+  Project p = document_.project();
+  p.studies.erase("diagnosis");
+  p.studies.erase("thermal");
+  const QString path = dir_.filePath(QStringLiteral("imported.metrofit"));
+  saveProject(p, path.toStdString());
+  document_.load(path);
+  DiagnosisPage page(&document_);
+  page.setDomain(DiagnosisDomain::Thermal);
+  EXPECT_TRUE(page.message().contains(QStringLiteral("choose the data"))) << page.message().toStdString();
+  EXPECT_FALSE(page.thermalTargetCombo()->isEnabled());
+  const auto block = [&] {
+    return document_.studyValue(QStringLiteral("diagnosis"), QStringLiteral("/thermal"));
+  };
+
+  QComboBox* data = page.datasetCombo(DiagnosisDomain::Thermal);
+  const int undoBefore = document_.undoStack()->index();
+  data->setCurrentIndex(data->findData(QStringLiteral("diagnose_thermal")));
+  EXPECT_EQ(document_.undoStack()->index(), undoBefore + 1);  // one step
+  EXPECT_EQ(block()["dataset"], "diagnose_thermal");
+  // The log's one displacement column (read by the test from the file's header: disp_z_um) is the target;
+  // the inputs are columns of the log, not the target.
+  EXPECT_EQ(block()["target"], "disp_z_um");
+  ASSERT_TRUE(block()["inputs"].is_array());
+  ASSERT_FALSE(block()["inputs"].empty());
+  const std::set<std::string> header = {"spindle_rpm", "T1", "T2", "T3", "T4", "T_amb", "disp_z_um"};
+  for (const auto& in : nlohmann::json(block()["inputs"])) {
+    EXPECT_TRUE(header.count(in.get<std::string>())) << in;
+    EXPECT_NE(in, "disp_z_um");
+  }
+  EXPECT_TRUE(page.message().isEmpty()) << page.message().toStdString();
+  EXPECT_EQ(page.thermalTargetCombo()->currentData().toString(), QStringLiteral("disp_z_um"));
+  EXPECT_EQ(page.thermalTargetCombo()->count(), 7);
+
+  // The inputs menu: one checkable action per column, the study's inputs checked; a click is one step.
+  QMenu* menu = page.thermalInputsButton()->menu();
+  ASSERT_NE(menu, nullptr);
+  ASSERT_EQ(menu->actions().size(), 7);
+  QAction* ambient = nullptr;
+  for (QAction* a : menu->actions())
+    if (a->data().toString() == QLatin1String("T_amb")) ambient = a;
+  ASSERT_NE(ambient, nullptr);
+  const bool wasChecked = ambient->isChecked();
+  ambient->trigger();  // toggles, then triggered()
+  bool inInputs = false;
+  for (const auto& in : nlohmann::json(block()["inputs"])) inInputs = inInputs || in == "T_amb";
+  EXPECT_EQ(inInputs, !wasChecked);
+  document_.undoStack()->undo();
+  inInputs = false;
+  for (const auto& in : nlohmann::json(block()["inputs"])) inInputs = inInputs || in == "T_amb";
+  EXPECT_EQ(inInputs, wasChecked);
+
+  ASSERT_TRUE(page.runNow()) << page.statusText().toStdString() << page.message().toStdString();
+  ASSERT_TRUE(page.result().has_value());
+  EXPECT_GT(page.candidateTable()->rowCount(), 0);
+
+  // Undo of the choice removes dataset, target and inputs together.
+  document_.undoStack()->setIndex(undoBefore);
+  EXPECT_TRUE(block().is_null() || !block().contains("dataset")) << block();
+  EXPECT_FALSE(block().is_object() && block().contains("target")) << block();
 }
 
 TEST_F(DiagnosisPageTest, ShowViewRunsAConfiguredDomain) {

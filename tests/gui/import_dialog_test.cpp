@@ -20,6 +20,7 @@
 #include <QDir>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QEventLoop>
 #include <QFile>
 #include <QFileInfo>
 #include <QInputDialog>
@@ -911,6 +912,42 @@ TEST_F(ImportDialogTest, TheRealWenzelPointsWithoutExtensionAreProbePointsWithTh
   EXPECT_EQ(dialog.role(QStringLiteral("ID")), QStringLiteral("id"));
   EXPECT_EQ(dialog.role(QStringLiteral("x")), QStringLiteral("px"));
   EXPECT_EQ(dialog.role(QStringLiteral("z")), QStringLiteral("pz"));
+}
+
+// Found in the de_DE walk (2026-11-30): a role combo box was left in the top-left cell over the first
+// column's name ("ID" hidden under "as in ..."). Every combo box of the mapping table is the role editor of
+// one row, shown in the role column, and nothing covers the file's column names.
+TEST_F(ImportDialogTest, MappingTableShowsEveryColumnNameAndOneRoleEditorPerRow) {
+  const auto real = test::realData("cmm-wenzel-lens-points/SPH1_1");
+  METROFIT_REQUIRE_PATH(real);
+  int visibleCombos = -1;
+  // As the main window opens it: from an event handler of the running loop, the dialog's exec() a loop
+  // inside it (a widget deleted later is gone only when the outer loop runs again).
+  QEventLoop outer;
+  QTimer::singleShot(0, &outer, [&] {
+    ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+    dialog.setFile(QString::fromStdString(real.string()));
+    QTimer::singleShot(300, &dialog, [&] {
+      auto* mapping = dialog.findChild<QTableWidget*>(QStringLiteral("importMapping"));
+      ASSERT_NE(mapping, nullptr);
+      EXPECT_EQ(mapping->rowCount(), 6);
+      visibleCombos = 0;
+      for (QComboBox* combo : mapping->findChildren<QComboBox*>()) {
+        if (!combo->isVisible()) continue;
+        ++visibleCombos;
+        const QPoint centre = mapping->viewport()->mapFromGlobal(combo->mapToGlobal(combo->rect().center()));
+        const QModelIndex at = mapping->indexAt(centre);
+        EXPECT_EQ(at.column(), 2) << "a combo box '" << combo->objectName().toStdString()
+                                  << "' lies over row " << at.row() << ", column " << at.column();
+        if (at.isValid()) EXPECT_EQ(mapping->cellWidget(at.row(), at.column()), combo);
+      }
+      dialog.reject();
+    });
+    dialog.exec();
+    outer.quit();
+  });
+  outer.exec();
+  EXPECT_EQ(visibleCombos, 6);
 }
 
 /// The Wenzel file's `Residues` column (the CMM's residuals of its own sphere fit), read by the test.

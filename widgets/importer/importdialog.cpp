@@ -461,13 +461,14 @@ void ImportDialog::browse() {
   // All files first: CMM exports and data loggers often write files without an extension (a Wenzel
   // point file "SPH1_1"), which the data-file filter would hide.
   QString selected = tr("All files (*)");
-  const QString path =
-      QFileDialog::getOpenFileName(this, tr("Import data"), start,
-                                   tr("All files (*)") + QStringLiteral(";;") +
-                                       tr("Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml "
-                                          "*.qif *.QIF *.dfq *.DFQ *.stl *.STL)"),
-                                   &selected);
+  const QString path = QFileDialog::getOpenFileName(this, tr("Import data"), start, fileFilter(), &selected);
   if (!path.isEmpty()) setFile(path);
+}
+
+QString ImportDialog::fileFilter() {
+  return tr("All files (*)") + QStringLiteral(";;") +
+         tr("Data files (*.csv *.txt *.tsv *.json *.dmi *.dms *.dmis *.xml "
+            "*.qif *.QIF *.dfq *.DFQ *.stl *.STL)");
 }
 
 void ImportDialog::setFile(const QString& path) {
@@ -727,6 +728,11 @@ void ImportDialog::guessRoles() {
 void ImportDialog::rebuildMapping(const std::vector<std::string>& header) {
   header_ = header;
   const QSignalBlocker blocker(mapping_);
+  // The role editors being replaced are hidden now: the view deletes them later, and when the dialog
+  // runs as a nested loop (exec() from the main window) "later" is after it closes, so they would stay
+  // on screen where the first layout put them (over the column names).
+  for (int r = 0; r < mapping_->rowCount(); ++r)
+    if (QWidget* old = mapping_->cellWidget(r, MapRole)) old->hide();
   mapping_->setRowCount(static_cast<int>(header.size()));
   const QStringList roles = rolesForKind(kind());
   for (int r = 0; r < static_cast<int>(header.size()); ++r) {

@@ -129,6 +129,10 @@ class ImportDialog : public QDialog {
 
   /// The kind a file most likely is, from its extension and its first bytes (command-line spelling).
   static QString guessKind(const QString& path, const QByteArray& head);
+  /// The open-file dialogs' filter of data files, "All files" first (CMM exports and data loggers write
+  /// files without an extension, a Wenzel point file "SPH1_1"): one list for File › Import data and
+  /// the dialog's Browse.
+  static QString fileFilter();
   /// Roles the readers of a kind look for (command-line spelling of the kind).
   static QStringList rolesForKind(const QString& kind);
 
