@@ -12,7 +12,7 @@ set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 runs=${1:-1000000}
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
-targets=${FUZZ_TARGETS:-"csv project setup_model thermal_log probe_points dmis hole_table cmm_text_report stl dfq calypso qif"}
+targets=${FUZZ_TARGETS:-"csv project setup_model thermal_log probe_points dmis hole_table cmm_text_report stl dfq calypso qif shdr"}
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMETROFIT_FUZZ=ON -DMETROFIT_BUILD_GUI=OFF \

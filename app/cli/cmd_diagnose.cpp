@@ -33,6 +33,7 @@
 #include "core/setup/report.h"
 #include "core/study/diagnosis_study.h"
 #include "core/study/study_settings.h"
+#include "core/thermal/thermal_data.h"
 #include "core/thermal/thermal_log.h"
 
 namespace metrofit::cli {
@@ -64,8 +65,12 @@ std::function<std::string(const IterationSummary&)> candidateLine(std::string wh
 /// Writes the JSON of docs/file-formats.md#diagnose-result (atomically to `out`, or stdout) and prints the
 /// one-line summary: "diagnose <domain> on <data>: rmse a -> b <unit>[, held-out h0 -> h1]; accepted: x
 /// (params); N tried; residual white: ... | not white: still depends on ...[; k outliers excluded]".
-int finishDiagnosis(const diagnose::Diagnosis& d, const std::string& data, const std::string& out) {
-  writeResult(out, dumpJson(diagnose::toJson(d)));
+/// `extra`: keys added to the JSON (an MTConnect log's resampling and rows left out for gaps).
+int finishDiagnosis(const diagnose::Diagnosis& d, const std::string& data, const std::string& out,
+                    const nlohmann::json& extra = nlohmann::json::object()) {
+  nlohmann::json j = diagnose::toJson(d);
+  for (const auto& [key, value] : extra.items()) j[key] = value;
+  writeResult(out, dumpJson(j));
   const std::string u = d.units.empty() ? "" : " " + d.units;
   std::string line = "diagnose " + d.domain + " on " + data + ": rmse " + num(d.baseline.rmse) + " -> " +
                      num(d.final.rmse) + u;
@@ -122,7 +127,18 @@ int runThermal(const MethodArgs& a) {
     TerminalProgress progress(candidateLine("diagnose thermal"));
     d = diagnose::diagnoseThermal(log, o, progress.observer());
   }
-  return finishDiagnosis(d, a.data, a.out);
+  nlohmann::json extra = nlohmann::json::object();
+  if (log.gaps) {
+    // An MTConnect log (docs/file-formats.md#mtconnect-logs): diagnosed on its rows without a gap in the
+    // target or an input.
+    std::vector<std::string> used = o.inputs;
+    used.push_back(o.target);
+    std::size_t leftOut = 0;
+    (void)thermal::thermalLogWithoutGaps(log, used, &leftOut);
+    extra["resampling"] = log.resampling;
+    extra["rows_with_gaps_left_out"] = leftOut;
+  }
+  return finishDiagnosis(d, a.data, a.out, extra);
 }
 
 int runKinematic(const MethodArgs& a) {

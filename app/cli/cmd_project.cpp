@@ -146,8 +146,8 @@ void registerProjectCommands(CLI::App& app) {
   add->add_option(
          "kind", a->kind,
          "thermal-log|probe-points|circular-test|cmm-report|setup-model|"
-         "feature-series|dmis|hole-table|dfq|calypso|cad-model|qif, or auto: the kind the file's name and "
-         "content say")
+         "feature-series|dmis|hole-table|dfq|calypso|cad-model|qif|mtconnect, or auto: the kind the file's "
+         "name and content say")
       ->required()
       ->check(CLI::IsMember(kinds));
   existingFile(

@@ -128,6 +128,19 @@ std::string unitOf(const ThermalLog& log, const std::string& column) {
   return u.empty() ? "" : " " + u;
 }
 
+/// An MTConnect log (ThermalLog::gaps): how it was resampled and how many rows a gap in a used column left
+/// out (docs/file-formats.md#mtconnect-logs). Nothing for a CSV log.
+void addGapKeys(nlohmann::json& j, const ThermalLog& log, const thermal::ThermalSeries& series) {
+  if (!log.gaps) return;
+  j["resampling"] = log.resampling;
+  j["rows_with_gaps_left_out"] = series.rowsWithGapsLeftOut;
+}
+
+std::string gapNote(const ThermalLog& log, const thermal::ThermalSeries& series) {
+  if (!log.gaps || series.rowsWithGapsLeftOut == 0) return "";
+  return "; " + std::to_string(series.rowsWithGapsLeftOut) + " rows with gaps left out";
+}
+
 /// A note for the summary line when least squares gave an unstable grey model.
 std::string unstableNote(const thermal::ThermalModel& m) {
   if (!thermal::isGrey(m.kind) || m.grey.b1 > 0.0) return "";
@@ -194,6 +207,7 @@ int runFit(const FitArgs& a, bool fractionGiven) {
     j["training"]["method"] = toString(o.gnnmci.training);
     j["trace"] = traceJson(t.run);
   }
+  addGapKeys(j, log, series);
   if (!a.saveModel.empty()) writeResult(a.saveModel, dumpJson(thermal::thermalModelToJson(t.model)));
   writeResult(a.out, dumpJson(j));
   const std::string unit = unitOf(log, a.target);
@@ -211,7 +225,8 @@ int runFit(const FitArgs& a, bool fractionGiven) {
           std::to_string(ev.fitRows) + " fit / " + std::to_string(ev.heldoutRows) +
           " held-out rows: fit RMSE " + num(ev.fit.rmse) + unit + ", held-out RMSE " + num(ev.heldout.rmse) +
           unit + ", R " + num(ev.heldout.r, 3) + ", E " + num(ev.heldout.e, 3) + ", band " +
-          num(ev.heldout.residualBand) + unit + " (" + num(secs, 2) + " s)" + unstableNote(t.model) + failed);
+          num(ev.heldout.residualBand) + unit + " (" + num(secs, 2) + " s)" + unstableNote(t.model) + failed +
+          gapNote(log, series));
   return 0;
 }
 
@@ -225,7 +240,8 @@ int runPredict(const PredictArgs& a) {
   for (double v : c.predicted) peak = std::max(peak, std::abs(v));
   const std::string unit = series.hasTarget() ? unitOf(log, model.target) : "";
   std::string line = "thermal predict: " + std::string(toString(model.kind)) + " model on " + a.data + ", " +
-                     std::to_string(series.rows()) + " rows, predicted error up to " + num(peak) + unit;
+                     std::to_string(series.rows()) + " rows, predicted error up to " + num(peak) + unit +
+                     gapNote(log, series);
   if (series.hasTarget()) {
     const auto y = thermal::change(series.target);
     const thermal::ThermalMetrics m = thermal::thermalMetrics(y, c.predicted);
@@ -277,7 +293,9 @@ int runHysteresis(const HysteresisArgs& a) {
   thermal::HysteresisOptions o;
   o.smoothingMin = a.smoothingMin;
   const thermal::HysteresisAnalysis h = thermal::analyseHysteresis(series, o);
-  writeResult(a.out, dumpJson(thermal::hysteresisToJson(h)));
+  nlohmann::json hj = thermal::hysteresisToJson(h);
+  addGapKeys(hj, log, series);
+  writeResult(a.out, dumpJson(hj));
   std::string line = "thermal hysteresis: " + std::to_string(h.heatingRows) + " heating / " +
                      std::to_string(h.coolingRows) + " cooling rows;";
   for (const auto& s : h.sensors)
@@ -418,6 +436,7 @@ int runModular(const ModularArgs& a) {
   addModularFigures(j, m);
   j["parameters"] = thermal::thermalModelParameters(m.training.model);
   j["training"] = trainingJson(m.training);
+  addGapKeys(j, testLog, test);
   if (!a.saveModel.empty()) writeResult(a.saveModel, dumpJson(thermal::thermalModelToJson(m.training.model)));
   writeResult(a.out, dumpJson(j));
   const std::string unit = unitOf(testLog, a.target);
@@ -457,7 +476,9 @@ void registerThermalCommands(CLI::App& app) {
   auto f = std::make_shared<FitArgs>();
   auto* fit =
       th->add_subcommand("fit", "Fit a thermal error model on the first part of a log, test on the rest");
-  existingFile(fit->add_option("--data", f->data, "Thermal log (CSV)")->required());
+  existingFile(
+      fit->add_option("--data", f->data, "Thermal log (CSV, or an MTConnect SHDR log or Streams document)")
+          ->required());
   addColumns(fit, f->target, f->inputs);
   fit->add_option(
          "--model", f->model,

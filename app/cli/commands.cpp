@@ -192,7 +192,8 @@ void addCsvOptions(CLI::App* sub) {
 void addSampleIntervalOption(CLI::App* sub) {
   sub->add_option("--sample-interval", g_sampleInterval,
                   "Thermal log without a time column: the rows are this far apart, a number with its unit "
-                  "s, min or h (e.g. 15s, 1min); the first row is at time 0");
+                  "s, min or h (e.g. 15s, 1min); the first row is at time 0. An MTConnect log: the grid it "
+                  "is resampled to (zero-order hold; default 1s)");
 }
 
 void addThermalLogOptions(CLI::App* sub) {

@@ -20,6 +20,7 @@
 #include "app/gui/mainwindow.h"
 #include "app/gui/matchingpage.h"
 #include "app/gui/thermalpage.h"
+#include "core/project/datasets.h"
 #include "core/project/project.h"
 #include "widgets/document/demoproject.h"
 #include "widgets/document/projectdocument.h"
@@ -127,7 +128,7 @@ int runScreenshots(const QString& outDir, QTextStream& err) {
   const QString firstLog = thermal->currentDataset();
   for (const DatasetRef& d : window.document()->project().datasets) {
     const QString id = QString::fromStdString(d.id);
-    if (d.kind != dataset_kind::kThermalLog || id == firstLog) continue;
+    if (!datasetKindServes(dataset_kind::kThermalLog, d.kind) || id == firstLog) continue;
     views.push_back({QStringLiteral("thermal-trend-") + id, [id, pageView](MainWindow& w) {
                        pageView(Page::Thermal, QStringLiteral("trend"))(w);
                        w.thermalPage()->selectDataset(id);

@@ -25,6 +25,7 @@
 #include "core/diagnose/applied_setup_matching.h"
 #include "core/diagnose/thermal_applied.h"
 #include "core/io/file_io.h"
+#include "core/project/datasets.h"
 #include "core/project/stored_results.h"
 #include "core/study/thermal_result.h"
 #include "core/thermal/control_export.h"
@@ -286,7 +287,7 @@ void ThermalPage::selectDataset(const QString& id) {
 void ThermalPage::refresh() {
   std::vector<DatasetRef> logs;
   for (const DatasetRef& d : document_->project().datasets) {
-    if (d.kind == dataset_kind::kThermalLog) logs.push_back(document_->resolvedDataset(d));
+    if (datasetKindServes(dataset_kind::kThermalLog, d.kind)) logs.push_back(document_->resolvedDataset(d));
   }
   // Name or notes edits must not re-read the data; nor must a Save As (the same files under paths
   // relative to another folder): the trained models stay. File › New and Open drop everything.
@@ -553,7 +554,8 @@ void ThermalPage::updateModular(bool now) {
   // The modules on the tests the study names for them (studies.thermal.modules): every thermal log.
   std::map<std::string, std::pair<std::string, CsvReadOptions>> sources;
   for (const DatasetRef& d : document_->project().datasets)
-    if (d.kind == dataset_kind::kThermalLog) sources[d.id] = {document_->datasetPath(d).toStdString(), d.csv};
+    if (datasetKindServes(dataset_kind::kThermalLog, d.kind))
+      sources[d.id] = {document_->datasetPath(d).toStdString(), d.csv};
   const nlohmann::json study = document_->studyValue(QString::fromLatin1(study::kThermal), QString());
   // A read error or a failed fit arrives as failed(message) and is shown in the info line.
   moduleRunActive_ = false;
@@ -659,7 +661,8 @@ bool ThermalPage::startModulesRun(const nlohmann::json& thermalStudy, const QStr
     return false;
   std::map<std::string, std::pair<std::string, CsvReadOptions>> sources;
   for (const DatasetRef& d : document_->project().datasets)
-    if (d.kind == dataset_kind::kThermalLog) sources[d.id] = {document_->datasetPath(d).toStdString(), d.csv};
+    if (datasetKindServes(dataset_kind::kThermalLog, d.kind))
+      sources[d.id] = {document_->datasetPath(d).toStdString(), d.csv};
   const std::shared_ptr<const ModularComparison> base = modularResult_;
   const std::shared_ptr<ThermalLog> testLog = modularTestLog_;
   moduleRunActive_ = true;
@@ -708,7 +711,7 @@ bool ThermalPage::identifyModuleAgain(int module, const QString& datasetId, bool
       static_cast<std::size_t>(module) >= modularResult_->modules.names.size())
     return false;
   const DatasetRef* d = document_->project().dataset(datasetId.toStdString());
-  if (d == nullptr || d->kind != dataset_kind::kThermalLog) return false;
+  if (d == nullptr || !datasetKindServes(dataset_kind::kThermalLog, d->kind)) return false;
   const std::string name = modularResult_->modules.names[static_cast<std::size_t>(module)];
   nlohmann::json study = document_->studyValue(QString::fromLatin1(study::kThermal), QString());
   if (!study.is_object()) study = nlohmann::json::object();
@@ -740,7 +743,7 @@ void ThermalPage::askIdentifyModuleAgain(int module) {
   const QString name = QString::fromStdString(mm.names[static_cast<std::size_t>(module)]);
   QStringList ids;
   for (const DatasetRef& d : document_->project().datasets)
-    if (d.kind == dataset_kind::kThermalLog && d.id != kModularCombinedId)
+    if (datasetKindServes(dataset_kind::kThermalLog, d.kind) && d.id != kModularCombinedId)
       ids << QString::fromStdString(d.id);
   if (ids.isEmpty()) return;
   const QString current = static_cast<std::size_t>(module) < mm.tests.size()

@@ -1278,6 +1278,13 @@ bool ThermalDiagnosisOptions::isValid(std::string* why) const {
 }
 
 Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& o, Observer* observer) {
+  if (log.gaps) {
+    // An MTConnect log: the rows with a value in the target and every declared input, and the channels
+    // with a value in all of them (thermal_data.h), so no gap reaches a fit or a test.
+    std::vector<std::string> used = o.inputs;
+    used.push_back(o.target);
+    return diagnoseThermal(thermal::thermalLogWithoutGaps(log, used), o, observer);
+  }
   validate(log, o);
   Problem pb(log, o);
   Diagnosis d;

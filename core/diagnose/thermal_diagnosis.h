@@ -154,7 +154,8 @@ struct ThermalDiagnosisOptions {
 /// the fit and held-out parts, or an input is constant on the fit rows; OptionsError for invalid
 /// options. The observer sees one step per candidate tried (best = the current model's validation
 /// rmse, component "cv_rmse"); when it stops the loop, the diagnosis so far is returned with the
-/// note "cancelled".
+/// note "cancelled". A log with gaps (an MTConnect log) is diagnosed on its rows with a value in the
+/// target and every input, with the channels complete there (thermal::thermalLogWithoutGaps).
 Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& options,
                           Observer* observer = nullptr);
 

@@ -198,6 +198,16 @@ std::optional<std::string> devicesFileBeside(const std::string& logPath) {
   return std::nullopt;
 }
 
+namespace {
+/// True when fields[from], ..., fields[from + n - 1] are blank: what follows UNAVAILABLE in an unavailable
+/// condition (`key|UNAVAILABLE||||`); a sample pair `key|UNAVAILABLE|key2|v2|...` has keys and values there.
+bool emptyFields(const std::vector<std::string_view>& fields, std::size_t from, std::size_t n) {
+  for (std::size_t i = from; i < from + n && i < fields.size(); ++i)
+    if (!trimmed(fields[i]).empty()) return false;
+  return true;
+}
+}  // namespace
+
 MtcLog shdrFromText(std::string_view text, const std::string& source, const MtcDevices* devices) {
   MtcLog log;
   log.source = source;
@@ -262,7 +272,8 @@ MtcLog shdrFromText(std::string_view text, const std::string& source, const MtcD
       std::size_t take = 1;
       if (item ? (item->category == "CONDITION" || upper(item->type) == "ALARM")
                : (rest >= 5 && isConditionLevel(fields[k + 1])) ||
-                     (rest == 5 && upper(trimmed(fields[k + 1])) == "UNAVAILABLE")) {
+                     (rest == 5 && upper(trimmed(fields[k + 1])) == "UNAVAILABLE" &&
+                      emptyFields(fields, k + 2, 4))) {
         o.condition = true;
         take = std::min<std::size_t>(5, rest);
       } else if (item && upper(item->type) == "MESSAGE") {

@@ -13,7 +13,9 @@
 //   * command: value                          agent commands (skipped)
 // A key is a DataItem's id, name or Source. Which form a line has is decided by the declared data item
 // where a Devices document is given; without one, a pair whose value is a condition level (NORMAL,
-// WARNING, FAULT) followed by four more fields is a condition. Timestamps are ISO 8601 UTC
+// WARNING, FAULT) followed by four more fields is a condition, and so is UNAVAILABLE followed by four empty
+// fields (`key|UNAVAILABLE||||`; `key|UNAVAILABLE|key2|value2|...` is an unavailable sample among pairs).
+// Timestamps are ISO 8601 UTC
 // (`2022-08-08T13:51:34.7167146Z`, any number of fractional digits; an offset +hh:mm is applied); they
 // need not be in time order (logs of several adapter sessions overlap): observations are ordered by time,
 // equal times in file order.

@@ -10,6 +10,7 @@
 #include "core/io/calypso.h"
 #include "core/io/dmis.h"
 #include "core/io/file_io.h"
+#include "core/io/mtconnect.h"
 #include "core/io/qif.h"
 #include "core/matching/hole_table.h"
 #include "core/matching/probe_points.h"
@@ -19,6 +20,7 @@
 #include "core/project/nominals.h"
 #include "core/setup/model.h"
 #include "core/setup/report.h"
+#include "core/thermal/thermal_log.h"
 
 namespace metrofit {
 namespace {
@@ -383,6 +385,14 @@ DatasetContent readDatasetContentFile(const std::string& file, const DatasetRef&
     return columnsContent(std::move(t), "setup model", file);
   }
   const std::string text = readFile(file, 256u << 20);
+  if (kind == dataset_kind::kMtconnect ||
+      (kind == dataset_kind::kThermalLog && looksLikeMtconnectLog(text))) {
+    // An MTConnect log: the table it is read as, resampled to the dataset's grid (thermal_log.h).
+    const MtcSampleTable t =
+        readMtconnectSampleTable(file, mtconnectIntervalS(dataset.csv.sampleIntervalMin));
+    return columnsContent(t.table, looksLikeMtconnectStreams(text) ? "MTConnect Streams" : "MTConnect SHDR",
+                          file);
+  }
   if (kind == dataset_kind::kProbePoints && looksLikeQif(text)) {
     // One measured part of a QIF file as probe points: nominal and actual locations (and normals).
     const QifFile qif = qifFromText(text, file);

@@ -13,6 +13,7 @@
 #include "core/io/cmm_text_report.h"
 #include "core/io/dfq.h"
 #include "core/io/file_io.h"
+#include "core/io/mtconnect.h"
 #include "core/io/qif.h"
 #include "core/kinematics/iso230_4.h"
 #include "core/kinematics/measured_path.h"
@@ -42,7 +43,8 @@ const std::map<std::string, std::string>& kinds() {
                                                     {"dfq", dataset_kind::kDfq},
                                                     {"calypso", dataset_kind::kCalypso},
                                                     {"cad-model", dataset_kind::kCadModel},
-                                                    {"qif", dataset_kind::kQif}};
+                                                    {"qif", dataset_kind::kQif},
+                                                    {"mtconnect", dataset_kind::kMtconnect}};
   return k;
 }
 
@@ -87,6 +89,15 @@ DatasetSummary inspect(const std::string& file, const std::string& shown, const 
     return s;
   }
   const std::string text = readFile(file, 256u << 20);
+  if (kind == dataset_kind::kMtconnect ||
+      (kind == dataset_kind::kThermalLog && looksLikeMtconnectLog(text))) {
+    // The resampled table a thermal study reads (time_min and one column per numeric sample).
+    const ThermalLog log = readThermalLog(file, 3, csv);
+    s.rows = static_cast<long>(log.rows());
+    s.columns.push_back(log.timeColumn);
+    for (const ThermalChannel& c : log.channels) s.columns.push_back(c.name);
+    return s;
+  }
   if (part > 0 && !looksLikeQif(text))
     throw ValidationError(ErrorContext{shown, 0, 0, "part"},
                           "applies to a QIF file added as probe points (one measured part of it)");
@@ -197,6 +208,7 @@ std::string extensionFor(const std::string& kind) {
   if (kind == dataset_kind::kHoleTable) return ".txt";
   if (kind == dataset_kind::kCadModel) return ".stl";
   if (kind == dataset_kind::kQif) return ".qif";
+  if (kind == dataset_kind::kMtconnect) return ".txt";
   return ".csv";
 }
 
@@ -226,9 +238,9 @@ std::optional<CmmTextReport> characteristicTableReport(std::string_view text, co
 }
 
 const std::vector<std::string>& datasetKindNames() {
-  static const std::vector<std::string> names{"thermal-log", "probe-points",   "circular-test", "cmm-report",
-                                              "setup-model", "feature-series", "dmis",          "hole-table",
-                                              "dfq",         "calypso",        "cad-model",     "qif"};
+  static const std::vector<std::string> names{
+      "thermal-log", "probe-points", "circular-test", "cmm-report", "setup-model", "feature-series", "dmis",
+      "hole-table",  "dfq",          "calypso",       "cad-model",  "qif",         "mtconnect"};
   return names;
 }
 
@@ -236,6 +248,7 @@ std::vector<std::string> datasetKindsServing(const std::string& wanted) {
   if (wanted == dataset_kind::kCmmReport)
     return {dataset_kind::kCmmReport, dataset_kind::kDmis, dataset_kind::kDfq, dataset_kind::kCalypso,
             dataset_kind::kQif};
+  if (wanted == dataset_kind::kThermalLog) return {dataset_kind::kThermalLog, dataset_kind::kMtconnect};
   return {wanted};
 }
 
@@ -257,7 +270,7 @@ std::string datasetKindFromName(const std::string& name, const std::string& fiel
 bool datasetKindIsCsv(const std::string& kind) {
   return kind != dataset_kind::kSetupModel && kind != dataset_kind::kDmis &&
          kind != dataset_kind::kHoleTable && kind != dataset_kind::kDfq && kind != dataset_kind::kCalypso &&
-         kind != dataset_kind::kCadModel && kind != dataset_kind::kQif;
+         kind != dataset_kind::kCadModel && kind != dataset_kind::kQif && kind != dataset_kind::kMtconnect;
 }
 
 DatasetSummary summarizeDataset(const std::string& projectPath, const DatasetRef& dataset) {
@@ -303,6 +316,9 @@ CsvTable readDatasetTable(const std::string& projectPath, const DatasetRef& data
       return cmmReportFeatureTable(*report);
     return calypsoFeaturesProbeTable(text, path);
   }
+  // An MTConnect log: its resampled table (what a thermal study reads).
+  if (dataset.kind == dataset_kind::kMtconnect)
+    return readMtconnectSampleTable(path, mtconnectIntervalS(dataset.csv.sampleIntervalMin)).table;
   return readCsvFile(path, dataset.csv);
 }
 
@@ -351,7 +367,7 @@ DatasetRef addDataset(Project& project, const std::string& projectPath, const Ad
             " dataset is not a CSV file; --delimiter, --decimal, --map, --header-lines, --comment and "
             "--skip-bad-rows do not apply");
   }
-  if (ref.kind != dataset_kind::kThermalLog && request.csv.sampleIntervalMin > 0.0) {
+  if (!datasetKindServes(dataset_kind::kThermalLog, ref.kind) && request.csv.sampleIntervalMin > 0.0) {
     throw ValidationError(ErrorContext{{}, 0, 0, "--sample-interval"},
                           "applies to thermal logs only, not to a " + ref.kind + " dataset");
   }

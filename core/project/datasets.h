@@ -60,8 +60,9 @@ struct DatasetSummary {
 
 /// The kinds (project spelling) a study setting that asks for a `wanted` dataset may name: `wanted`
 /// itself, and for a CMM report (dataset_kind::kCmmReport) every report of measured dimensions: DMIS
-/// output, a Q-DAS DFQ file, a Calypso _chr table, a QIF Results file. One list for the studies, the
-/// settings check and the GUI.
+/// output, a Q-DAS DFQ file, a Calypso _chr table, a QIF Results file; for a thermal log
+/// (dataset_kind::kThermalLog) an MTConnect log (read as its resampled table). One list for the studies,
+/// the settings check and the GUI.
 std::vector<std::string> datasetKindsServing(const std::string& wanted);
 /// True when a dataset of `kind` serves where a `wanted` one is asked for (datasetKindsServing).
 bool datasetKindServes(const std::string& wanted, const std::string& kind);

@@ -8,6 +8,7 @@
 #include "core/io/calypso.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/dfq.h"
+#include "core/io/mtconnect.h"
 #include "core/io/qif.h"
 #include "core/io/units.h"
 #include "core/matching/hole_table.h"
@@ -288,7 +289,8 @@ std::string guessDatasetKind(const std::string& fileName, std::string_view text,
   }
   if (suffix == "dmi" || suffix == "dms" || suffix == "dmis" || setup::looksLikeDmis(head)) return "dmis";
   // Q-DAS DFQ (K fields) and Zeiss Calypso tables (_chr / _fet column names), by content.
-  if (looksLikeQif(head)) return "qif";  // XML whose root is QIFDocument
+  if (looksLikeQif(head)) return "qif";                 // XML whose root is QIFDocument
+  if (looksLikeMtconnectLog(head)) return "mtconnect";  // SHDR lines or an MTConnectStreams document
   if (looksLikeDfq(head)) return "dfq";
   if (looksLikeCalypso(head)) return "calypso";
   if (looksLikeCmmTextReport(head)) return "cmm-report";

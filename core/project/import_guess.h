@@ -33,7 +33,8 @@ namespace metrofit {
 
 /// The kind (command-line spelling, datasetKindNames()) a file most likely is, from its name's
 /// extension and its content read with `options` (header detection included): a JSON setup model, DMIS
-/// output, a QIF 3 document ("qif"), a Q-DAS DFQ file ("dfq"), a Zeiss Calypso _chr or _fet table
+/// output, a QIF 3 document ("qif"), an MTConnect SHDR log or Streams document ("mtconnect"), a Q-DAS DFQ
+/// file ("dfq"), a Zeiss Calypso _chr or _fet table
 /// ("calypso"), a CMM text report
 /// (OGP, PC-DMIS), a hole table, an STL part (.stl, or ASCII STL content), or a CSV kind by its column
 /// names and their

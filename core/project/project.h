@@ -76,6 +76,9 @@ inline constexpr const char* kCalypso = "calypso";
 /// A QIF 3 Results file (core/io/qif.h): measured parts with their characteristics (a CMM report series)
 /// and features (probe points: nominal and actual locations, normals).
 inline constexpr const char* kQif = "qif";
+/// An MTConnect log (core/io/mtconnect.h): an SHDR adapter log or a Streams document, read as a thermal
+/// log resampled to a grid (its interval: DatasetRef::csv.sampleIntervalMin; 0: one second).
+inline constexpr const char* kMtconnect = "mtconnect";
 }  // namespace dataset_kind
 
 /// The studies of a project, in navigator order.

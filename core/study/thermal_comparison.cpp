@@ -33,7 +33,7 @@ double rangeOf(const std::vector<double>& v) {
 std::vector<std::string> defaultInputs(const ThermalLog& log) {
   std::vector<std::string> inputs;
   for (const ThermalChannel& c : log.channels) {
-    if (channelKind(c) == ChannelKind::Strain) inputs.push_back(c.name);
+    if (channelKind(c) == ChannelKind::Strain && !hasGaps(c)) inputs.push_back(c.name);
   }
   if (!inputs.empty()) {
     if (log.indexOf("T2") >= 0) inputs.push_back("T2");
@@ -41,7 +41,8 @@ std::vector<std::string> defaultInputs(const ThermalLog& log) {
   }
   constexpr std::size_t kMaxTemperatures = 8;
   for (const ThermalChannel& c : log.channels) {
-    if (channelKind(c) == ChannelKind::Temperature && !isAmbient(c.name) &&
+    // A channel with a gap (an MTConnect log) is not a default: the user chooses it knowingly.
+    if (channelKind(c) == ChannelKind::Temperature && !isAmbient(c.name) && !hasGaps(c) &&
         inputs.size() < kMaxTemperatures && rangeOf(c.values) > 0.0) {
       inputs.push_back(c.name);
     }

@@ -273,7 +273,7 @@ std::vector<double> meanTemperature(const ThermalLog& log) {
   std::vector<const ThermalChannel*> machine;
   std::vector<const ThermalChannel*> ambient;
   for (const ThermalChannel& c : log.channels) {
-    if (channelKind(c) == ChannelKind::Temperature && c.values.size() == log.rows()) {
+    if (channelKind(c) == ChannelKind::Temperature && c.values.size() == log.rows() && !hasGaps(c)) {
       (isAmbient(c) ? ambient : machine).push_back(&c);
     }
   }
@@ -300,7 +300,7 @@ PhaseDetection detectThermalPhases(const ThermalLog& log, const PhaseOptions& op
   }
   PhaseDetection result;
   for (const ThermalChannel& c : log.channels) {
-    if (channelKind(c) == ChannelKind::Speed && c.values.size() == log.rows()) {
+    if (channelKind(c) == ChannelKind::Speed && c.values.size() == log.rows() && !hasGaps(c)) {
       result.phases = phasesFromSpeed(log.timeMin, c.values, options);
       if (!result.phases.empty()) {
         result.source = PhaseSource::Speed;

@@ -4,7 +4,9 @@
 //  * the target and every input must be columns of the log (the error lists the columns it has),
 //  * inputs must be distinct and must not be the target,
 //  * every value must be finite (the CSV reader already names file, line and column for text; logs
-//    built in code are checked here and name the row),
+//    built in code are checked here and name the row); in a log with gaps (ThermalLog::gaps, an
+//    MTConnect log) a row with a gap (NaN) in the target or an input is left out instead and counted
+//    (ThermalSeries::rowsWithGapsLeftOut); gaps in the columns not used leave every row in,
 //  * at least 2 rows.
 // Model-specific checks (constant inputs on the fitting rows, too few rows for the model) are in
 // thermal_model.h, where the fitting rows are known.
@@ -29,6 +31,8 @@ struct ThermalSeries {
   std::vector<double> target;  ///< empty when the log has no target column (prediction only)
   std::vector<std::string> inputNames;
   std::vector<std::vector<double>> inputs;  ///< [input][row]
+  /// Rows of the log left out for a gap (NaN) in the target or an input (a log with gaps only).
+  std::size_t rowsWithGapsLeftOut = 0;
 
   std::size_t rows() const { return timeMin.size(); }
   bool hasTarget() const { return !target.empty(); }
@@ -40,6 +44,13 @@ struct ThermalSeries {
 /// `requireTarget` false a log without the target column is accepted (compensation of new data).
 ThermalSeries selectThermalSeries(const ThermalLog& log, const std::string& target,
                                   const std::vector<std::string>& inputs, bool requireTarget = true);
+
+/// The rows of a log with gaps (ThermalLog::gaps) that have a value in every column of `used` (columns
+/// the log lacks are ignored), and only the channels without a gap left in those rows: what a
+/// computation that looks at every channel (the diagnosis) may read. `leftOut` (may be null) receives
+/// the number of rows left out. A log without gaps is returned as it is.
+ThermalLog thermalLogWithoutGaps(const ThermalLog& log, const std::vector<std::string>& used,
+                                 std::size_t* leftOut = nullptr);
 
 /// x(k) - x(0) for every k.
 std::vector<double> change(const std::vector<double>& x);

@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "core/common/error.h"
+#include "core/common/numformat.h"
 #include "core/io/csv.h"
+#include "core/io/file_io.h"
+#include "core/io/mtconnect.h"
 
 namespace metrofit {
 namespace {
@@ -95,6 +100,10 @@ ChannelKind channelKind(const ThermalChannel& c) {
   if (n.starts_with("t") || n.find("temp") != std::string::npos) return ChannelKind::Temperature;
   if (n.find("rpm") != std::string::npos || n.find("speed") != std::string::npos) return ChannelKind::Speed;
   return ChannelKind::Other;
+}
+
+bool hasGaps(const ThermalChannel& c) {
+  return std::any_of(c.values.begin(), c.values.end(), [](double v) { return std::isnan(v); });
 }
 
 int ThermalLog::indexOf(const std::string& name) const {
@@ -204,8 +213,39 @@ ThermalLog thermalLogFromCsv(const CsvTable& table, std::size_t minRows, double 
   return log;
 }
 
+ThermalLog thermalLogFromMtconnect(const MtcSampleTable& t, std::size_t minRows) {
+  const CsvTable& table = t.table;
+  ThermalLog log;
+  log.source = table.source();
+  log.timeColumn = "time_min";
+  log.gaps = true;
+  log.resampling = "zero-order hold, " + t.rule;
+  table.requireRows(minRows);
+  const std::size_t n = table.rowCount();
+  log.timeMin.resize(n);
+  // The grid itself, not its printed minutes (exactly r * interval).
+  for (std::size_t r = 0; r < n; ++r) log.timeMin[r] = static_cast<double>(r) * t.intervalS / 60.0;
+  for (std::size_t c = 1; c < table.columnCount(); ++c) {
+    ThermalChannel ch;
+    ch.name = table.header()[c];
+    ch.unit = unitOf(ch.name);
+    ch.values.resize(n);
+    for (std::size_t r = 0; r < n; ++r) {
+      const std::string& cell = table.cell(r, c);
+      const auto v = cell.empty() ? std::nullopt : num::parseDouble(cell);
+      ch.values[r] = v && std::isfinite(*v) ? *v : std::numeric_limits<double>::quiet_NaN();
+    }
+    log.channels.push_back(std::move(ch));
+  }
+  return log;
+}
+
 ThermalLog readThermalLog(const std::string& path, std::size_t minRows, const CsvReadOptions& csv) {
-  return thermalLogFromCsv(readCsvFile(path, csv), minRows, csv.sampleIntervalMin);
+  const std::string text = readFile(path);
+  if (looksLikeMtconnectLog(text))
+    return thermalLogFromMtconnect(readMtconnectSampleTable(path, mtconnectIntervalS(csv.sampleIntervalMin)),
+                                   minRows);
+  return thermalLogFromCsv(parseCsv(text, displayPath(path), csv), minRows, csv.sampleIntervalMin);
 }
 
 std::string thermalLogToCsv(const ThermalLog& log) {
@@ -218,7 +258,8 @@ std::string thermalLogToCsv(const ThermalLog& log) {
   for (std::size_t r = 0; r < log.rows(); ++r) {
     row[0] = CsvWriter::formatNumber(std::round(log.timeMin[r] * toCol * 1e6) / 1e6);
     for (std::size_t c = 0; c < log.channels.size(); ++c) {
-      row[c + 1] = CsvWriter::formatNumber(std::round(log.channels[c].values[r] * 1e6) / 1e6);
+      const double v = log.channels[c].values[r];
+      row[c + 1] = std::isfinite(v) ? CsvWriter::formatNumber(std::round(v * 1e6) / 1e6) : std::string();
     }
     w.row(row);
   }

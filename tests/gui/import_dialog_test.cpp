@@ -18,6 +18,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QEventLoop>
@@ -433,6 +434,47 @@ TEST_F(ImportDialogTest, FilesThatAreNotCsvAreImportedWithoutDialectOrMapping) {
   dialog.setKind(QStringLiteral("thermal-log"));
   EXPECT_FALSE(dialog.canImport());
   EXPECT_FALSE(importButton(dialog)->isEnabled());
+}
+
+// An MTConnect SHDR log (the real OKUMA log of ../shared/data/real/mtconnect-samples, with its Devices.xml
+// beside it) is guessed as kind mtconnect, previewed as its resampled table (time_min and one column per
+// numeric sample, not the raw lines), resampled to the interval of the spin box (seconds), which the
+// dataset keeps (minutes).
+TEST_F(ImportDialogTest, AnMtconnectLogIsPreviewedAsItsResampledTable) {
+  const QString file = QString::fromStdString(test::realData("mtconnect-samples/okuma.txt").string());
+  METROFIT_REQUIRE_PATH(file.toStdString());
+  ImportDialog dialog(doc_.project(), doc_.projectPathForDatasets());
+  dialog.setFile(file);
+  EXPECT_EQ(dialog.kind(), QStringLiteral("mtconnect"));
+  EXPECT_TRUE(dialog.isMtconnectLog());
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  auto* interval = dialog.findChild<QDoubleSpinBox*>(QStringLiteral("importSampleInterval"));
+  ASSERT_NE(interval, nullptr);
+  EXPECT_FALSE(interval->isHidden());
+  EXPECT_EQ(interval->value(), 1.0);
+  EXPECT_FALSE(dialog.findChild<QComboBox*>(QStringLiteral("importDelimiter"))->isEnabled());
+  auto* preview = dialog.findChild<QTableWidget*>(QStringLiteral("importPreview"));
+  ASSERT_GT(preview->columnCount(), 3);
+  EXPECT_EQ(preview->horizontalHeaderItem(0)->text(), QStringLiteral("time_min"));
+  QStringList headers;
+  for (int c = 0; c < preview->columnCount(); ++c) headers << preview->horizontalHeaderItem(c)->text();
+  for (const char* key : {"S1speed", "X1actm", "Z1actm"})
+    EXPECT_TRUE(headers.contains(QLatin1String(key))) << key;
+  EXPECT_FALSE(headers.contains(QStringLiteral("system")));
+  EXPECT_EQ(preview->item(1, 0)->text().toDouble(), 1.0 / 60.0);  // 1 s: the second row at 1/60 min
+  EXPECT_EQ(dialog.dataset().kind, dataset_kind::kMtconnect);
+  EXPECT_EQ(dialog.dataset().csv.sampleIntervalMin, 0.0);  // the default grid is not stored
+  // A 30 s grid: the preview's second row at 0.5 min, the dataset keeps it in minutes.
+  dialog.setSampleIntervalS(30.0);
+  ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
+  EXPECT_EQ(preview->item(1, 0)->text().toDouble(), 0.5);
+  EXPECT_DOUBLE_EQ(dialog.dataset().csv.sampleIntervalMin, 0.5);
+  EXPECT_NE(dialog.findChild<QLabel*>(QStringLiteral("importDetected"))->text().indexOf(QStringLiteral("30")),
+            -1);
+  // A CSV thermal log: no interval box.
+  dialog.setFile(logPath_);
+  EXPECT_FALSE(dialog.isMtconnectLog());
+  EXPECT_TRUE(interval->isHidden());
 }
 
 // CMM text reports are recognised by content and imported without dialect or mapping: a real OGP

@@ -221,6 +221,17 @@ inline const std::string kQif =
     "</MeasurementResultsSet></Results>\n"
     "</QIFDocument>\n";
 
+/// An SHDR adapter log (MTConnect): a temperature, a displacement and a condition, every 10 s.
+inline const std::string kShdr =
+    "* shdrVersion: 2.0\n"
+    "2024-03-01T08:00:00.0000000Z|T1|20.0|disp|0.0\n"
+    "2024-03-01T08:00:00.0000000Z|system|NORMAL||||\n"
+    "2024-03-01T08:00:10.0000000Z|T1|20.5|disp|0.3\n"
+    "2024-03-01T08:00:20.0000000Z|T1|21.1|disp|0.5\n"
+    "2024-03-01T08:00:30.0000000Z|T1|21.4|disp|0.8\n"
+    "2024-03-01T08:00:40.0000000Z|T1|22.0|disp|1.1\n"
+    "2024-03-01T08:00:50.0000000Z|T1|22.3|disp|1.2\n";
+
 inline std::string circle() {
   // 16 points CCW then 16 CW on a 50 mm circle with a small, smooth deviation.
   std::string s = "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm\n";
@@ -1298,6 +1309,48 @@ inline std::vector<Case> cases() {
        {{"w.qif", kQif.substr(0, kQif.find("<MeasurementResults id=\"11\">") + 20)}},
        {"w.qif:22"},
        json},
+      // ---- MTConnect logs (SHDR, Streams) ---------------------------------------------------------
+      {"MT01",
+       "MTConnect SHDR log",
+       "a timestamp that is not one",
+       "thermal fit --data s.txt --target disp --inputs T1 --model linear --sample-interval 10s --out "
+       "out.json",
+       {{"s.txt", replaced(kShdr, "2024-03-01T08:00:30.0000000Z", "2024-03-01T08:0O:30.0000000Z")}},
+       {"s.txt:6:1", "field 'timestamp'", "not an ISO 8601 time"},
+       json},
+      {"MT02",
+       "MTConnect SHDR log",
+       "a log without any numeric sample (only a condition and an event)",
+       "thermal fit --data s.txt --target disp --inputs T1 --model linear --out out.json",
+       {{"s.txt", "2024-03-01T08:00:00Z|system|NORMAL||||\n2024-03-01T08:00:10Z|mode|AUTOMATIC\n"}},
+       {"s.txt", "no sample with numbers"},
+       json},
+      {"MT03",
+       "MTConnect SHDR log",
+       "an asset block that is not closed",
+       "thermal fit --data s.txt --target disp --inputs T1 --model linear --out out.json",
+       {{"s.txt",
+         kShdr + "2024-03-01T08:01:00Z|@ASSET@|T.1|CuttingTool|--multiline--ABCD\n<CuttingTool/>\n"}},
+       {"s.txt:9", "not closed", "--multiline--ABCD"},
+       json},
+      {"MT04",
+       "MTConnect Streams document",
+       "XML that is not well formed (a truncated document)",
+       "thermal fit --data s.xml --target c1 --inputs c2 --model linear --out out.json",
+       {{"s.xml",
+         "<?xml version=\"1.0\"?>\n<MTConnectStreams xmlns=\"urn:mtconnect.org:MTConnectStreams:1.8\">\n"
+         "<Streams><DeviceStream name=\"d\" uuid=\"1\"><ComponentStream component=\"Rotary\">\n"
+         "<Samples><RotaryVelocity dataItemId=\"c1\" timestamp=\"2024-03-01T08:00:00Z\">15</RotaryVelocity>\n"
+         "<RotaryVelocity dataItemId=\"c1\" timestamp=\"2024-03-01T08:00:10Z\">16\n"}},
+       {"s.xml:"},
+       json},
+      {"MT05",
+       "MTConnect SHDR log",
+       "a project add of an MTConnect log with a CSV option",
+       "project add P.metrofit mtconnect s.txt --delimiter ';'",
+       {{"P.metrofit", "{\"format\": \"metrofit-project\", \"version\": 1}"}, {"s.txt", kShdr}},
+       {"field 'KIND'", "not a CSV file"},
+       {}},
       // ---- fit-element points (CSV) ---------------------------------------------------------------
       {"FE01",
        "element points CSV",

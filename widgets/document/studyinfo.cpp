@@ -76,11 +76,11 @@ QStringList studyDatasetKinds(const QString& s) {
     return {dataset_kind::kProbePoints, dataset_kind::kHoleTable, dataset_kind::kCadModel};
   if (s == QLatin1String(study::kKinematics))
     return {dataset_kind::kCircularTest, dataset_kind::kFeatureSeries};
-  if (s == QLatin1String(study::kThermal)) return {dataset_kind::kThermalLog};
+  if (s == QLatin1String(study::kThermal)) return {dataset_kind::kThermalLog, dataset_kind::kMtconnect};
   if (s == QLatin1String(study::kDiagnosis)) {
     return {dataset_kind::kThermalLog, dataset_kind::kCircularTest, dataset_kind::kSetupModel,
             dataset_kind::kCmmReport,  dataset_kind::kProbePoints,  dataset_kind::kDmis,
-            dataset_kind::kHoleTable};
+            dataset_kind::kHoleTable,  dataset_kind::kMtconnect};
   }
   return {};
 }
@@ -112,6 +112,8 @@ QString datasetKindTitle(const QString& kind) {
     return QCoreApplication::translate("StudyInfo", "CAD part (STL)");
   if (kind == QLatin1String(dataset_kind::kQif))
     return QCoreApplication::translate("StudyInfo", "QIF results");
+  if (kind == QLatin1String(dataset_kind::kMtconnect))
+    return QCoreApplication::translate("StudyInfo", "MTConnect log");
   return kind;
 }
 

@@ -31,6 +31,7 @@
 #include "core/geometry/point_table.h"
 #include "core/io/cmm_text_report.h"
 #include "core/io/file_io.h"
+#include "core/io/mtconnect.h"
 #include "core/io/qif.h"
 #include "core/matching/hole_table.h"
 #include "core/project/datasets.h"
@@ -39,6 +40,7 @@
 #include "core/setup/model.h"
 #include "core/setup/report.h"
 #include "core/study/setup_study.h"
+#include "core/thermal/thermal_log.h"
 #include "widgets/document/studyinfo.h"
 
 namespace metrofit {
@@ -287,6 +289,19 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   form->addRow(tr("Measured &part:"), qifPart_);
   form->setRowVisible(qifPart_, false);
   connect(qifPart_, &QComboBox::currentIndexChanged, this, [this] { revalidate(); });
+  // An MTConnect log is resampled to a grid (zero-order hold); its step is the dataset's sample interval.
+  sampleInterval_ = new QDoubleSpinBox(this);
+  sampleInterval_->setObjectName(QStringLiteral("importSampleInterval"));
+  sampleInterval_->setDecimals(3);
+  sampleInterval_->setRange(0.001, 86400.0);
+  sampleInterval_->setValue(kMtconnectDefaultIntervalS);
+  sampleInterval_->setSuffix(QStringLiteral(" s"));
+  sampleInterval_->setToolTip(
+      tr("The MTConnect log is resampled every this many seconds: each cell holds the last value at or "
+         "before its time (empty while UNAVAILABLE)"));
+  form->addRow(tr("Sample &interval:"), sampleInterval_);
+  form->setRowVisible(sampleInterval_, false);
+  connect(sampleInterval_, &QDoubleSpinBox::valueChanged, this, [this] { revalidate(); });
 
   auto* dialect = new QGroupBox(tr("How the file is read"), this);
   auto* dialectForm = new QFormLayout(dialect);
@@ -583,8 +598,29 @@ QString ImportDialog::role(const QString& column) const {
   return roles_.value(column);
 }
 
+bool ImportDialog::isMtconnectLog() const {
+  const QString k = projectKind(kind());
+  return (k == QLatin1String(dataset_kind::kMtconnect) || k == QLatin1String(dataset_kind::kThermalLog)) &&
+         looksLikeMtconnectLog(std::string_view(text_).substr(0, 64 * 1024));
+}
+
+void ImportDialog::setSampleIntervalS(double seconds) {
+  sampleInterval_->setValue(seconds);
+}
+
+double ImportDialog::sampleIntervalS() const {
+  return sampleInterval_->value();
+}
+
 CsvReadOptions ImportDialog::csvOptions() const {
   CsvReadOptions o;
+  if (isMtconnectLog()) {
+    // The grid in minutes, as the project stores a thermal log's interval (thermal_log.h); the default
+    // grid is not stored.
+    if (sampleInterval_->value() != kMtconnectDefaultIntervalS)
+      o.sampleIntervalMin = sampleInterval_->value() / 60.0;
+    return o;
+  }
   if (!datasetKindIsCsv(projectKind(kind()).toStdString()) || looksLikeCmmTextReport(text_) || isDmisFile())
     return o;
   o.dialect.delimiter = static_cast<char>(delimiter_->currentData().toInt());
@@ -848,6 +884,24 @@ void ImportDialog::previewDmis() {
   }
 }
 
+void ImportDialog::previewMtconnect() {
+  try {
+    const MtcSampleTable t =
+        readMtconnectSampleTable(QFile::encodeName(file_).toStdString(), sampleInterval_->value());
+    fillPreview(t.table);
+    detected_->setText(tr("MTConnect log resampled every %1 s (zero-order hold: the last value at or before "
+                          "each time): %2 rows, %3 sample columns; %4 data items are not columns (events, "
+                          "conditions, no numbers).")
+                           .arg(QLocale().toString(t.intervalS, 'g', 6))
+                           .arg(t.table.rowCount())
+                           .arg(t.table.columnCount() - 1)
+                           .arg(t.skipped.size()));
+  } catch (const std::exception& e) {
+    // The dataset check below names the problem (file and line); the raw lines stay in the preview.
+    detected_->setText(QString::fromStdString(e.what()));
+  }
+}
+
 void ImportDialog::revalidate() {
   if (updating_) return;
   updating_ = true;
@@ -855,8 +909,8 @@ void ImportDialog::revalidate() {
   nominalsSummary_.clear();
   const std::string cliKind = kind().toStdString();
   // A CMM text report is read by its own reader whatever CSV kind it is imported as.
-  const bool csv =
-      datasetKindIsCsv(projectKind(kind()).toStdString()) && !looksLikeCmmTextReport(text_) && !isDmisFile();
+  const bool csv = datasetKindIsCsv(projectKind(kind()).toStdString()) && !looksLikeCmmTextReport(text_) &&
+                   !isDmisFile() && !isMtconnectLog();
   delimiter_->setEnabled(csv);
   decimal_->setEnabled(csv);
   headerLines_->setEnabled(csv);
@@ -867,6 +921,7 @@ void ImportDialog::revalidate() {
   dmisBox_->setVisible(!file_.isEmpty() && readError_.isEmpty() && isDmisFile());
   nominalsBox_->setVisible(needsNominals());
   form_->setRowVisible(qifPart_, qifPart() > 0);
+  form_->setRowVisible(sampleInterval_, !file_.isEmpty() && readError_.isEmpty() && isMtconnectLog());
   auto* problemsTitle = findChild<QLabel*>(QStringLiteral("importRowProblemsTitle"));
   problemsTitle->setText(tr("Rows that cannot be read:"));
   int skipped = 0;
@@ -885,6 +940,7 @@ void ImportDialog::revalidate() {
     if (!header_.empty()) rebuildMapping({});
     showRawPreview();
     if (isDmisFile()) previewDmis();
+    if (isMtconnectLog()) previewMtconnect();
   } else {
     const std::string shown = displayPath(file_.toStdString());
     CsvReadOptions dialectOnly;

@@ -21,6 +21,9 @@
 //   * with several DMIS files selected (setSeriesFiles), "Read the N files as one DMIS series": one
 //     dataset listing every file ("paths", core/project/project.h), one file per workpiece, as the setup
 //     study reads a series (checked by default).
+//   * for an MTConnect log (SHDR or Streams, kind mtconnect) the grid it is resampled to (seconds; the
+//     dataset's sample interval) and, as the preview, its resampled table (time_min and one column per
+//     numeric sample; an empty cell: no value), not its raw lines,
 //   * for probe points whose file holds measured points only (raw CMM points: no nominal columns), where
 //     their nominals come from (core/project/nominals.h): an element fitted to them (with a fixed radius,
 //     least squares or minimum zone, stray points left out, a bore's inward normals), or a second
@@ -120,6 +123,13 @@ class ImportDialog : public QDialog {
   int qifPart() const;
   void setQifPart(int part);
 
+  /// True when the file is an MTConnect log read as one (kind mtconnect, or a thermal log by content):
+  /// the sample-interval box is shown and the preview is the resampled table.
+  bool isMtconnectLog() const;
+  /// The grid of an MTConnect log in seconds (> 0; stored as the dataset's sample interval).
+  void setSampleIntervalS(double seconds);
+  double sampleIntervalS() const;
+
   /// True when the file can be read as the chosen kind (the Import button is enabled).
   bool canImport() const { return problem_.isEmpty(); }
   /// The problem that keeps the file from being imported (one line), empty when there is none.
@@ -146,6 +156,8 @@ class ImportDialog : public QDialog {
   void showRawPreview();
   void fillPreview(const CsvTable& table);
   void previewDmis();
+  /// The resampled table of an MTConnect log as the preview; its summary in the detection line.
+  void previewMtconnect();
   void importNow();
   void buildNominalsBox();
   /// Shows the element / reference controls that apply to the chosen source.
@@ -186,7 +198,8 @@ class ImportDialog : public QDialog {
   QComboBox* nominalReference_ = nullptr;
   QComboBox* nominalPair_ = nullptr;
   QComboBox* nominalCad_ = nullptr;
-  QComboBox* qifPart_ = nullptr;  ///< "Measured part" of a QIF file read as probe points
+  QComboBox* qifPart_ = nullptr;              ///< "Measured part" of a QIF file read as probe points
+  QDoubleSpinBox* sampleInterval_ = nullptr;  ///< an MTConnect log's grid, seconds
   QStringList qifParts_;
   QFormLayout* form_ = nullptr;
   QString nominalsSummary_;

@@ -91,7 +91,7 @@ std::vector<ReportDataset> readDatasets(const Project& project, const QString& p
     const std::string path = resolveDatasetPath(projectPath.toStdString(), ref);
     d.path = QString::fromStdString(path);
     d.paths = resolveDatasetPaths(projectPath.toStdString(), ref);
-    if (ref.kind == dataset_kind::kThermalLog) {
+    if (datasetKindServes(dataset_kind::kThermalLog, ref.kind)) {
       d.thermal = readThermalLog(path, 3, ref.csv);
       d.rows = static_cast<long>(d.thermal->rows());
       d.columns.push_back(d.thermal->timeColumn);
@@ -161,7 +161,7 @@ Layout render(QIODevice& device, const ReportContext& context,
 std::vector<const ReportDataset*> ReportContext::ofKind(const char* kind) const {
   std::vector<const ReportDataset*> out;
   for (const ReportDataset& d : datasets) {
-    if (d.ref.kind == kind) {
+    if (datasetKindServes(kind, d.ref.kind)) {
       out.push_back(&d);
     }
   }

@@ -57,6 +57,7 @@ QString kindName(const std::string& kind) {
   if (kind == dataset_kind::kDfq) return ReportText::tr("Q-DAS DFQ file");
   if (kind == dataset_kind::kCalypso) return ReportText::tr("Zeiss Calypso table");
   if (kind == dataset_kind::kQif) return ReportText::tr("QIF results");
+  if (kind == dataset_kind::kMtconnect) return ReportText::tr("MTConnect log");
   if (kind == dataset_kind::kCadModel) return ReportText::tr("CAD part");
   if (kind == dataset_kind::kHoleTable) return ReportText::tr("hole table");
   return QString::fromStdString(kind);
