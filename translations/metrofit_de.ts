@@ -113,6 +113,11 @@
         <source>QIF results</source>
         <translation>QIF-Ergebnisse</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>MTConnect log</source>
+        <translation>MTConnect-Protokoll</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1315,7 +1320,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+63"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+65"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>Komma ( , )</translation>
@@ -1586,12 +1591,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+245"/>
+        <location line="+258"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-245"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Zeilen vor den Spaltennamen, unabhängig vom Inhalt übersprungen (Vorspann eines Messgeräts)</translation>
     </message>
@@ -1671,6 +1676,16 @@ Anzahl: %4</translation>
         <translation>Gemessenes &amp;Teil:</translation>
     </message>
     <message>
+        <location line="+11"/>
+        <source>The MTConnect log is resampled every this many seconds: each cell holds the last value at or before its time (empty while UNAVAILABLE)</source>
+        <translation>Das MTConnect-Protokoll wird in diesem Abstand (Sekunden) neu abgetastet: jede Zelle enthält den letzten Wert zu oder vor ihrer Zeit (leer, solange UNAVAILABLE)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Sample &amp;interval:</source>
+        <translation>Abtastinter&amp;vall:</translation>
+    </message>
+    <message>
         <location line="+4"/>
         <source>How the file is read</source>
         <translation>Wie die Datei gelesen wird</translation>
@@ -1742,12 +1757,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+535"/>
+        <location line="+575"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
     <message>
-        <location line="-471"/>
+        <location line="-511"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
     </message>
@@ -1778,7 +1793,7 @@ Anzahl: %4</translation>
         <translation>%1: die Datei ist größer als 256 MiB</translation>
     </message>
     <message numerus="yes">
-        <location line="+166"/>
+        <location line="+187"/>
         <source>Read the %n selected files as one DMIS &amp;series (one dataset, one file per workpiece)</source>
         <translation>
             <numerusform>Die %n ausgewählte Datei als eine DMIS-&amp;Serie lesen (ein Datensatz, eine Datei je Werkstück)</numerusform>
@@ -1831,7 +1846,12 @@ Anzahl: %4</translation>
         <translation>DMIS-Ausgabe; gelesen mit dem Einrichtmodell „%1“: %2</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+10"/>
+        <source>MTConnect log resampled every %1 s (zero-order hold: the last value at or before each time): %2 rows, %3 sample columns; %4 data items are not columns (events, conditions, no numbers).</source>
+        <translation>MTConnect-Protokoll, alle %1 s neu abgetastet (Halteglied nullter Ordnung: der letzte Wert zu oder vor jeder Zeit): %2 Zeilen, %3 Messwertspalten; %4 Datenelemente sind keine Spalten (Ereignisse, Zustände, keine Zahlen).</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>Choose a file to import.</source>
         <translation>Wählen Sie eine Datei zum Importieren.</translation>
     </message>
@@ -1841,7 +1861,7 @@ Anzahl: %4</translation>
         <translation>Keine CSV-Datei: gelesen als %1 (ohne Trennzeichen, Dezimalzeichen und Spaltenzuordnung).</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>detect (%1)</source>
         <translation>erkennen (%1)</translation>
     </message>
@@ -5204,7 +5224,7 @@ Abweichung: %3 µm</translation>
     <message>
         <location line="+0"/>
         <location filename="../widgets/report/matchingsection.cpp" line="+428"/>
-        <location filename="../widgets/report/summarysection.cpp" line="+156"/>
+        <location filename="../widgets/report/summarysection.cpp" line="+157"/>
         <source>value</source>
         <translation>Wert</translation>
     </message>
@@ -6009,7 +6029,7 @@ Abweichung: %3 µm</translation>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../widgets/report/summarysection.cpp" line="-228"/>
+        <location filename="../widgets/report/summarysection.cpp" line="-229"/>
         <source>thermal log</source>
         <translation>Thermo-Protokoll</translation>
     </message>
@@ -6057,6 +6077,11 @@ Abweichung: %3 µm</translation>
         <location line="+1"/>
         <source>QIF results</source>
         <translation>QIF-Ergebnisse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MTConnect log</source>
+        <translation>MTConnect-Protokoll</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -10195,7 +10220,7 @@ merkmal</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+127"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+128"/>
         <source>Export compensation…</source>
         <translation>Kompensation exportieren…</translation>
     </message>
@@ -10400,7 +10425,7 @@ merkmal</translation>
         <translation>Aus dem gespeicherten Projekt, berechnet %1 mit diesen Einstellungen auf diesen Daten: %2. RMSE zurückgehalten: %3. Trainieren (Strg+R), um die Diagramme zu sehen.</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+82"/>
         <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) not fitted: %6</source>
         <translation>Gemeinsam an %1 und %2 angepasst, Vorhersage für %3 (Zielgröße %4; Eingänge %5; Startwert 1): GNNMCI(1,N) nicht angepasst: %6</translation>
     </message>
@@ -10430,7 +10455,7 @@ merkmal</translation>
         <translation>Modul %1 an %2 erneut identifizieren</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Identifying…</source>
         <translation>Identifikation läuft…</translation>
     </message>
@@ -10470,7 +10495,7 @@ merkmal</translation>
         <translation>Modulmodelle speichern in</translation>
     </message>
     <message>
-        <location line="-160"/>
+        <location line="-161"/>
         <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) reduces the combined test&apos;s error by %6 %.</source>
         <translation>Gemeinsam an %1 und %2 angepasst, Vorhersage für %3 (Zielgröße %4; Eingänge %5; Startwert 1): GNNMCI(1,N) verringert den Fehler des kombinierten Tests um %6 %.</translation>
     </message>

@@ -113,6 +113,11 @@
         <source>QIF results</source>
         <translation>Wyniki QIF</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>MTConnect log</source>
+        <translation>Dziennik MTConnect</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1317,7 +1322,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+63"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+65"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>przecinek ( , )</translation>
@@ -1591,12 +1596,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+245"/>
+        <location line="+258"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-245"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Wiersze przed nazwami kolumn, pomijane bez względu na treść (nagłówek przyrządu)</translation>
     </message>
@@ -1676,6 +1681,16 @@ liczba: %4</translation>
         <translation>Zmierzona &amp;część:</translation>
     </message>
     <message>
+        <location line="+11"/>
+        <source>The MTConnect log is resampled every this many seconds: each cell holds the last value at or before its time (empty while UNAVAILABLE)</source>
+        <translation>Dziennik MTConnect jest próbkowany co tyle sekund: każda komórka zawiera ostatnią wartość w chwili lub przed chwilą jej czasu (pusta, dopóki UNAVAILABLE)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Sample &amp;interval:</source>
+        <translation>Interwał &amp;próbkowania:</translation>
+    </message>
+    <message>
         <location line="+4"/>
         <source>How the file is read</source>
         <translation>Jak plik jest odczytywany</translation>
@@ -1747,12 +1762,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+535"/>
+        <location line="+575"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
     <message>
-        <location line="-471"/>
+        <location line="-511"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
     </message>
@@ -1783,7 +1798,7 @@ liczba: %4</translation>
         <translation>%1: plik jest większy niż 256 MiB</translation>
     </message>
     <message numerus="yes">
-        <location line="+166"/>
+        <location line="+187"/>
         <source>Read the %n selected files as one DMIS &amp;series (one dataset, one file per workpiece)</source>
         <translation>
             <numerusform>Wczytaj %n wybrany plik jako jedną &amp;serię DMIS (jeden zbiór danych, jeden plik na przedmiot)</numerusform>
@@ -1837,7 +1852,12 @@ liczba: %4</translation>
         <translation>Wynik DMIS; odczyt względem modelu ustawczego „%1”: %2</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+10"/>
+        <source>MTConnect log resampled every %1 s (zero-order hold: the last value at or before each time): %2 rows, %3 sample columns; %4 data items are not columns (events, conditions, no numbers).</source>
+        <translation>Dziennik MTConnect próbkowany co %1 s (ekstrapolator zerowego rzędu: ostatnia wartość w chwili lub przed każdą chwilą): %2 wierszy, %3 kolumn próbek; %4 elementów danych nie jest kolumnami (zdarzenia, stany, brak liczb).</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>Choose a file to import.</source>
         <translation>Wybierz plik do importu.</translation>
     </message>
@@ -1847,7 +1867,7 @@ liczba: %4</translation>
         <translation>To nie jest plik CSV: czytany jako %1 (bez separatora, znaku dziesiętnego i przyporządkowania kolumn).</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>detect (%1)</source>
         <translation>wykryj (%1)</translation>
     </message>
@@ -5215,7 +5235,7 @@ odchyłka: %3 µm</translation>
     <message>
         <location line="+0"/>
         <location filename="../widgets/report/matchingsection.cpp" line="+428"/>
-        <location filename="../widgets/report/summarysection.cpp" line="+156"/>
+        <location filename="../widgets/report/summarysection.cpp" line="+157"/>
         <source>value</source>
         <translation>wartość</translation>
     </message>
@@ -6020,7 +6040,7 @@ odchyłka: %3 µm</translation>
         <translation>rodzaj</translation>
     </message>
     <message>
-        <location filename="../widgets/report/summarysection.cpp" line="-228"/>
+        <location filename="../widgets/report/summarysection.cpp" line="-229"/>
         <source>thermal log</source>
         <translation>zapis termiczny</translation>
     </message>
@@ -6068,6 +6088,11 @@ odchyłka: %3 µm</translation>
         <location line="+1"/>
         <source>QIF results</source>
         <translation>Wyniki QIF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MTConnect log</source>
+        <translation>Dziennik MTConnect</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -10227,7 +10252,7 @@ raportu</translation>
 <context>
     <name>metrofit::ThermalPage</name>
     <message>
-        <location filename="../app/gui/thermalpage.cpp" line="+127"/>
+        <location filename="../app/gui/thermalpage.cpp" line="+128"/>
         <source>Export compensation…</source>
         <translation>Eksportuj kompensację…</translation>
     </message>
@@ -10432,7 +10457,7 @@ raportu</translation>
         <translation>Z zapisanego projektu, obliczono %1 z tymi ustawieniami dla tych danych: %2. RMSE na odłożonych: %3. Trenuj (Ctrl+R), aby zobaczyć wykresy.</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+82"/>
         <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) not fitted: %6</source>
         <translation>Dopasowane łącznie na %1 i %2, predykcja %3 (cel %4; wejścia %5; ziarno 1): GNNMCI(1,N) nie dopasowano: %6</translation>
     </message>
@@ -10462,7 +10487,7 @@ raportu</translation>
         <translation>Zidentyfikuj moduł %1 ponownie na %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Identifying…</source>
         <translation>Identyfikacja…</translation>
     </message>
@@ -10502,7 +10527,7 @@ raportu</translation>
         <translation>Zapisz modele modułów w</translation>
     </message>
     <message>
-        <location line="-160"/>
+        <location line="-161"/>
         <source>Fitted on %1 and %2 together, predicting %3 (target %4; inputs %5; seed 1): GNNMCI(1,N) reduces the combined test&apos;s error by %6 %.</source>
         <translation>Dopasowano łącznie na %1 i %2, prognoza dla %3 (wielkość docelowa %4; wejścia %5; ziarno 1): GNNMCI(1,N) zmniejsza błąd testu łączonego o %6 %.</translation>
     </message>
