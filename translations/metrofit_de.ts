@@ -2299,7 +2299,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+171"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+178"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -2340,12 +2340,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+59"/>
+        <location line="+126"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-126"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -2385,17 +2385,87 @@ Anzahl: %4</translation>
         <translation>&lt;b&gt;Kompensation&lt;/b&gt; des Nennkreises</translation>
     </message>
     <message>
-        <location line="+139"/>
+        <location line="+206"/>
         <source>cause</source>
         <translation>Ursache</translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-188"/>
         <source>&amp;Path</source>
         <translation>Bah&amp;n</translation>
     </message>
     <message>
+        <location line="+20"/>
+        <source>Se&amp;ries:</source>
+        <translation>&amp;Reihe:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The measured series charted (a feature series or a CMM report, one value per part; studies.kinematics.spc.dataset)</source>
+        <translation>Die dargestellte Messreihe (eine Merkmalsreihe oder ein KMG-Protokoll, ein Wert je Teil; studies.kinematics.spc.dataset)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>C&amp;haracteristic:</source>
+        <translation>&amp;Merkmal:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The column of the series charted (studies.kinematics.spc.column)</source>
+        <translation>Die dargestellte Spalte der Reihe (studies.kinematics.spc.column)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>S&amp;ubgroup:</source>
+        <translation>&amp;Untergruppe:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Consecutive parts per subgroup of the X-bar/R chart (studies.kinematics.spc.subgroup)</source>
+        <translation>Aufeinanderfolgende Teile je Untergruppe der X-quer/R-Karte (studies.kinematics.spc.subgroup)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;LSL:</source>
+        <translation>UG&amp;W:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lower specification limit, in the series&apos; unit (studies.kinematics.spc.lsl)</source>
+        <translation>Unterer Grenzwert (Spezifikation), in der Einheit der Reihe (studies.kinematics.spc.lsl)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Upper specification limit, in the series&apos; unit (studies.kinematics.spc.usl)</source>
+        <translation>Oberer Grenzwert (Spezifikation), in der Einheit der Reihe (studies.kinematics.spc.usl)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Nominal:</source>
+        <translation>&amp;Nennwert:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The desired value, in the series&apos; unit (studies.kinematics.spc.nominal)</source>
+        <translation>Der Sollwert, in der Einheit der Reihe (studies.kinematics.spc.nominal)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Choose the SPC characteristic</source>
+        <translation>SPC-Merkmal wählen</translation>
+    </message>
+    <message>
         <location line="+9"/>
+        <source>Change the SPC subgroup size</source>
+        <translation>SPC-Untergruppengröße ändern</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Export Q-DAS &amp;DFQ…</source>
         <translation>Q-DAS-&amp;DFQ exportieren…</translation>
     </message>
@@ -2566,11 +2636,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+26"/>
+        <location line="+105"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-95"/>
         <source>%1 (not a dataset id)</source>
         <translation>%1 (keine Datensatz-ID)</translation>
     </message>
@@ -2580,7 +2651,45 @@ Anzahl: %4</translation>
         <translation>%1 (nicht im Projekt)</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+142"/>
+        <source>Remove the SPC series</source>
+        <translation>SPC-Reihe entfernen</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>“%1” has no column of numbers to chart.</source>
+        <translation>„%1“ hat keine Zahlenspalte zum Darstellen.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+2"/>
+        <location line="+2"/>
+        <source>Choose the SPC series</source>
+        <translation>SPC-Reihe wählen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Not a number: %1</source>
+        <translation>Keine Zahl: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Give both specification limits (LSL and USL), or neither; nothing is written until then.</source>
+        <translation>Geben Sie beide Grenzwerte (UGW und OGW) an oder keinen; bis dahin wird nichts geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The lower specification limit must be below the upper one.</source>
+        <translation>Der untere Grenzwert muss unter dem oberen liegen.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+2"/>
+        <source>Change the SPC limits</source>
+        <translation>SPC-Grenzwerte ändern</translation>
+    </message>
+    <message>
+        <location line="+77"/>
         <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
         <translation>Dieses Projekt enthält keinen Kreisformtest. Fügen Sie einen Datensatz der Art „circular_test“ hinzu (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, ein Umlauf gegen und einer im Uhrzeigersinn), z. B. erzeugt mit metrofit-cli simulate circular.</translation>
     </message>
@@ -2725,7 +2834,12 @@ Anzahl: %4</translation>
         <translation>Bahn (XY)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+19"/>
+        <source>No SPC series is chosen: choose the measured series and its characteristic above (a feature series or a CMM report, imported with File › Import data, Ctrl+I).</source>
+        <translation>Keine SPC-Reihe gewählt: wählen Sie oben die Messreihe und ihr Merkmal (eine Merkmalsreihe oder ein KMG-Protokoll, importiert mit Datei › Daten importieren, Strg+I).</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>&lt;b&gt;Ballbar breakdown&lt;/b&gt;: not available (%1)</source>
         <translation>&lt;b&gt;Ballbar-Aufschlüsselung&lt;/b&gt;: nicht verfügbar (%1)</translation>
     </message>
@@ -2761,7 +2875,12 @@ Anzahl: %4</translation>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="-154"/>
+        <location line="-664"/>
+        <source>USL:</source>
+        <translation>OGW:</translation>
+    </message>
+    <message>
+        <location line="+510"/>
         <source>The kinematics study&apos;s settings are invalid; nothing is run until they are corrected (Undo, or the project file):
 %1</source>
         <translation>Die Einstellungen der Kinematik-Studie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (Rückgängig oder die Projektdatei):
@@ -2789,13 +2908,8 @@ Anzahl: %4</translation>
         <translation>Die SPC-Reihe kann nicht dargestellt werden:
 %1</translation>
     </message>
-    <message>
-        <location line="+3"/>
-        <source>The kinematics study names no SPC series. Set &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} in the project&apos;s kinematics study.</source>
-        <translation>Die Kinematikstudie nennt keine SPC-Reihe. Setzen Sie &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} in der Kinematikstudie des Projekts.</translation>
-    </message>
     <message numerus="yes">
-        <location line="+54"/>
+        <location line="+57"/>
         <source>compensation applied: %n of 4 line parameters beyond ± k standard errors (k = %1), residuals in control</source>
         <translation>
             <numerusform>Kompensation angewendet: %n von 4 Geradenparametern außerhalb ± k Standardfehler (k = %1), Residuen beherrscht</numerusform>

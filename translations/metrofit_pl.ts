@@ -2307,7 +2307,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+171"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+178"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identyfikuj</translation>
     </message>
@@ -2348,12 +2348,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+59"/>
+        <location line="+126"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-126"/>
         <source>identified</source>
         <translation>wyznaczony</translation>
     </message>
@@ -2393,17 +2393,87 @@ liczba: %4</translation>
         <translation>&lt;b&gt;Kompensacja&lt;/b&gt; okręgu nominalnego</translation>
     </message>
     <message>
-        <location line="+139"/>
+        <location line="+206"/>
         <source>cause</source>
         <translation>przyczyna</translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-188"/>
         <source>&amp;Path</source>
         <translation>&amp;Tor</translation>
     </message>
     <message>
+        <location line="+20"/>
+        <source>Se&amp;ries:</source>
+        <translation>Se&amp;ria:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The measured series charted (a feature series or a CMM report, one value per part; studies.kinematics.spc.dataset)</source>
+        <translation>Przedstawiona seria pomiarowa (seria cech lub raport CMM, jedna wartość na część; studies.kinematics.spc.dataset)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>C&amp;haracteristic:</source>
+        <translation>&amp;Cecha:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The column of the series charted (studies.kinematics.spc.column)</source>
+        <translation>Przedstawiona kolumna serii (studies.kinematics.spc.column)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>S&amp;ubgroup:</source>
+        <translation>Po&amp;dgrupa:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Consecutive parts per subgroup of the X-bar/R chart (studies.kinematics.spc.subgroup)</source>
+        <translation>Kolejne części w podgrupie karty X-średnie/R (studies.kinematics.spc.subgroup)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>none</source>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;LSL:</source>
+        <translation>D&amp;GT:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lower specification limit, in the series&apos; unit (studies.kinematics.spc.lsl)</source>
+        <translation>Dolna granica tolerancji, w jednostce serii (studies.kinematics.spc.lsl)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Upper specification limit, in the series&apos; unit (studies.kinematics.spc.usl)</source>
+        <translation>Górna granica tolerancji, w jednostce serii (studies.kinematics.spc.usl)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Nominal:</source>
+        <translation>&amp;Nominał:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The desired value, in the series&apos; unit (studies.kinematics.spc.nominal)</source>
+        <translation>Wartość zadana, w jednostce serii (studies.kinematics.spc.nominal)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Choose the SPC characteristic</source>
+        <translation>Wybierz cechę SPC</translation>
+    </message>
+    <message>
         <location line="+9"/>
+        <source>Change the SPC subgroup size</source>
+        <translation>Zmień wielkość podgrupy SPC</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Export Q-DAS &amp;DFQ…</source>
         <translation>Eksportuj Q-DAS &amp;DFQ…</translation>
     </message>
@@ -2574,11 +2644,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+26"/>
+        <location line="+105"/>
         <source>(none)</source>
         <translation>(brak)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-95"/>
         <source>%1 (not a dataset id)</source>
         <translation>%1 (to nie jest identyfikator zbioru danych)</translation>
     </message>
@@ -2588,7 +2659,45 @@ liczba: %4</translation>
         <translation>%1 (nie ma w projekcie)</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+142"/>
+        <source>Remove the SPC series</source>
+        <translation>Usuń serię SPC</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>“%1” has no column of numbers to chart.</source>
+        <translation>„%1” nie ma kolumny liczb do przedstawienia.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+2"/>
+        <location line="+2"/>
+        <source>Choose the SPC series</source>
+        <translation>Wybierz serię SPC</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Not a number: %1</source>
+        <translation>To nie jest liczba: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Give both specification limits (LSL and USL), or neither; nothing is written until then.</source>
+        <translation>Podaj obie granice tolerancji (DGT i GGT) albo żadnej; do tego czasu nic nie zostanie zapisane.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The lower specification limit must be below the upper one.</source>
+        <translation>Dolna granica tolerancji musi być poniżej górnej.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+2"/>
+        <source>Change the SPC limits</source>
+        <translation>Zmień granice SPC</translation>
+    </message>
+    <message>
+        <location line="+77"/>
         <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
         <translation>Ten projekt nie zawiera testu kołowego. Dodaj zbiór danych rodzaju „circular_test” (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, jedna pętla przeciwnie do ruchu wskazówek zegara, potem jedna zgodnie), np. utworzony przez metrofit-cli simulate circular.</translation>
     </message>
@@ -2734,7 +2843,12 @@ liczba: %4</translation>
         <translation>Tor (XY)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+19"/>
+        <source>No SPC series is chosen: choose the measured series and its characteristic above (a feature series or a CMM report, imported with File › Import data, Ctrl+I).</source>
+        <translation>Nie wybrano serii SPC: wybierz powyżej serię pomiarową i jej cechę (seria cech lub raport CMM, zaimportowane przez Plik › Importuj dane, Ctrl+I).</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>&lt;b&gt;Ballbar breakdown&lt;/b&gt;: not available (%1)</source>
         <translation>&lt;b&gt;Rozkład ballbar&lt;/b&gt;: niedostępny (%1)</translation>
     </message>
@@ -2770,7 +2884,12 @@ liczba: %4</translation>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="-154"/>
+        <location line="-664"/>
+        <source>USL:</source>
+        <translation>GGT:</translation>
+    </message>
+    <message>
+        <location line="+510"/>
         <source>The kinematics study&apos;s settings are invalid; nothing is run until they are corrected (Undo, or the project file):
 %1</source>
         <translation>Ustawienia badania kinematyki są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (Cofnij lub plik projektu):
@@ -2798,13 +2917,8 @@ liczba: %4</translation>
         <translation>Nie można wykreślić serii SPC:
 %1</translation>
     </message>
-    <message>
-        <location line="+3"/>
-        <source>The kinematics study names no SPC series. Set &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} in the project&apos;s kinematics study.</source>
-        <translation>Studium kinematyki nie wskazuje serii SPC. Ustaw &quot;spc&quot;: {&quot;dataset&quot;, &quot;column&quot;, &quot;subgroup&quot;, &quot;lsl&quot;, &quot;usl&quot;, &quot;nominal&quot;} w studium kinematyki projektu.</translation>
-    </message>
     <message numerus="yes">
-        <location line="+54"/>
+        <location line="+57"/>
         <source>compensation applied: %n of 4 line parameters beyond ± k standard errors (k = %1), residuals in control</source>
         <translation>
             <numerusform>kompensacja zastosowana: %n z 4 parametrów prostej poza ± k błędów standardowych (k = %1), residua pod kontrolą</numerusform>

@@ -9,21 +9,27 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStyle>
 #include <QTabWidget>
 #include <QTableWidget>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
+#include <initializer_list>
 #include <iterator>
 #include <limits>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -36,6 +42,7 @@
 #include "core/io/file_io.h"
 #include "core/kinematics/export.h"
 #include "core/kinematics/iso230_4.h"
+#include "core/project/datasets.h"
 #include "core/project/stored_results.h"
 #include "widgets/common/tablecopy.h"
 #include "widgets/diagnose/coretexts.h"
@@ -248,6 +255,73 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
   {
     auto* spcLayout = new QVBoxLayout(spcTab_);
     spcLayout->setContentsMargins(0, 0, 0, 0);
+    // The series and its limits, chosen here (studies.kinematics.spc; no project file needed).
+    auto* settingsRow = new QHBoxLayout;
+    settingsRow->setContentsMargins(4, 4, 4, 0);
+    const auto addLabelled = [&](const QString& caption, QWidget* w, const QString& tip) {
+      w->setToolTip(tip);
+      auto* l = new QLabel(caption, spcTab_);
+      l->setBuddy(w);
+      if (settingsRow->count() > 0) settingsRow->addSpacing(10);
+      settingsRow->addWidget(l);
+      settingsRow->addWidget(w);
+    };
+    spcSeries_ = new QComboBox(spcTab_);
+    spcSeries_->setObjectName(QStringLiteral("spcSeries"));
+    spcSeries_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    spcSeries_->setMinimumContentsLength(12);
+    addLabelled(tr("Se&ries:"), spcSeries_,
+                tr("The measured series charted (a feature series or a CMM report, one value per part; "
+                   "studies.kinematics.spc.dataset)"));
+    spcColumn_ = new QComboBox(spcTab_);
+    spcColumn_->setObjectName(QStringLiteral("spcColumn"));
+    spcColumn_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    spcColumn_->setMinimumContentsLength(14);
+    addLabelled(tr("C&haracteristic:"), spcColumn_,
+                tr("The column of the series charted (studies.kinematics.spc.column)"));
+    spcSubgroup_ = new QSpinBox(spcTab_);
+    spcSubgroup_->setObjectName(QStringLiteral("spcSubgroup"));
+    spcSubgroup_->setRange(2, 25);
+    addLabelled(tr("S&ubgroup:"), spcSubgroup_,
+                tr("Consecutive parts per subgroup of the X-bar/R chart (studies.kinematics.spc.subgroup)"));
+    const auto limitEdit = [&](const char* name, const QString& caption, const QString& tip) {
+      auto* e = new QLineEdit(spcTab_);
+      e->setObjectName(QString::fromLatin1(name));
+      e->setPlaceholderText(tr("none"));
+      e->setMaximumWidth(fontMetrics().horizontalAdvance(QStringLiteral("-0000.00000")) + 16);
+      addLabelled(caption, e, tip);
+      connect(e, &QLineEdit::editingFinished, this, &KinematicsPage::writeSpcLimits);
+      return e;
+    };
+    spcLsl_ = limitEdit("spcLsl", tr("&LSL:"),
+                        tr("Lower specification limit, in the series' unit (studies.kinematics.spc.lsl)"));
+    spcUsl_ = limitEdit("spcUsl", tr("USL:"),
+                        tr("Upper specification limit, in the series' unit (studies.kinematics.spc.usl)"));
+    spcNominal_ = limitEdit("spcNominal", tr("&Nominal:"),
+                            tr("The desired value, in the series' unit (studies.kinematics.spc.nominal)"));
+    settingsRow->addStretch(1);
+    spcLayout->addLayout(settingsRow);
+    spcHint_ = new QLabel(spcTab_);
+    spcHint_->setObjectName(QStringLiteral("spcHint"));
+    spcHint_->setWordWrap(true);
+    spcHint_->setVisible(false);
+    spcLayout->addWidget(spcHint_);
+    connect(spcSeries_, &QComboBox::currentIndexChanged, this,
+            [this](int index) { chooseSpcSeries(spcSeries_->itemData(index).toString()); });
+    connect(spcColumn_, &QComboBox::currentIndexChanged, this, [this](int index) {
+      const QString column = spcColumn_->itemData(index).toString();
+      if (column.isEmpty()) return;
+      document_->setStudyValue(QString::fromLatin1(study::kKinematics), QStringLiteral("/spc/column"),
+                               column.toStdString(), tr("Choose the SPC characteristic"));
+    });
+    bindStudySetting(
+        document_, spcSubgroup_, QString::fromLatin1(study::kKinematics), QStringLiteral("/spc/subgroup"),
+        [this]() -> qint64 {
+          const nlohmann::json v =
+              document_->studyValue(QString::fromLatin1(study::kKinematics), QStringLiteral("/spc/subgroup"));
+          return v.is_number_integer() ? v.get<qint64>() : KinematicsSettings::Spc{}.subgroup;
+        },
+        false, tr("Change the SPC subgroup size"));
     spcLayout->addWidget(spc_, 1);
     auto* row = new QHBoxLayout;
     row->setContentsMargins(4, 0, 4, 4);
@@ -469,8 +543,218 @@ void KinematicsPage::syncPickers() {
   }
 }
 
+namespace {
+
+/// A number typed in the UI's format or the C one ("0,02" and "0.02" under German); nullopt for a text
+/// that is neither, empty for none.
+std::optional<double> typedNumber(const QString& text, bool* ok) {
+  *ok = true;
+  const QString t = text.trimmed();
+  if (t.isEmpty()) return std::nullopt;
+  // Group separators refused: "1.000" must not read as 1000 under German, nor "0,5" as 5 in C.
+  QLocale ui;
+  ui.setNumberOptions(QLocale::RejectGroupSeparator);
+  QLocale c = QLocale::c();
+  c.setNumberOptions(QLocale::RejectGroupSeparator);
+  bool good = false;
+  double v = ui.toDouble(t, &good);
+  if (!good) v = c.toDouble(t, &good);
+  if (!good || !std::isfinite(v)) {
+    *ok = false;
+    return std::nullopt;
+  }
+  return v;
+}
+
+QString shownNumber(const nlohmann::json& v) {
+  return v.is_number() ? QLocale().toString(v.get<double>(), 'g', 12) : QString();
+}
+
+}  // namespace
+
+QStringList KinematicsPage::spcColumns(const std::string& datasetId) {
+  const DatasetRef* dataset = document_->project().dataset(datasetId);
+  if (!dataset) return {};
+  const std::string path = document_->datasetPath(*dataset).toStdString();
+  const QFileInfo info(QString::fromStdString(path));
+  const nlohmann::json key = {path,
+                              info.lastModified().toMSecsSinceEpoch(),
+                              info.size(),
+                              nlohmann::json(dataset->csv.columnMap),
+                              dataset->csv.headerLines,
+                              static_cast<int>(dataset->csv.dialect.delimiter),
+                              static_cast<int>(dataset->csv.dialect.decimal),
+                              dataset->csv.commentPrefix};
+  if (key.dump() == spcColumnsKey_) return spcColumnsCache_;
+  spcColumnsKey_ = key.dump();
+  spcColumnsCache_.clear();
+  try {
+    const CsvTable table = readFeatureTable(path, dataset->csv);
+    for (const std::string& column : table.header()) {
+      if (column == "run" || column == "date") continue;
+      try {
+        (void)table.numericColumn(column);
+        spcColumnsCache_ << QString::fromStdString(column);
+      } catch (const std::exception&) {
+        // Not numbers in every row: not a characteristic to chart.
+      }
+    }
+  } catch (const std::exception&) {
+    // Unreadable: nothing to offer; the SPC view says why when the study reads it.
+  }
+  return spcColumnsCache_;
+}
+
+void KinematicsPage::syncSpcControls() {
+  const QString study = QString::fromLatin1(study::kKinematics);
+  const nlohmann::json block = document_->studyValue(study, QStringLiteral("/spc"));
+  const QString current = block.is_object() && block.contains("dataset") && block["dataset"].is_string()
+                              ? QString::fromStdString(block["dataset"].get<std::string>())
+                              : QString();
+  {
+    const QSignalBlocker blocker(spcSeries_);
+    spcSeries_->clear();
+    spcSeries_->addItem(tr("(none)"), QString());
+    std::vector<std::string> kinds = datasetKindsServing(dataset_kind::kCmmReport);
+    kinds.push_back(dataset_kind::kFeatureSeries);
+    for (const DatasetRef& d : document_->project().datasets) {
+      if (std::find(kinds.begin(), kinds.end(), d.kind) == kinds.end()) continue;
+      spcSeries_->addItem(QString::fromStdString(d.id), QString::fromStdString(d.id));
+    }
+    if (!current.isEmpty() && spcSeries_->findData(current) < 0) spcSeries_->addItem(current, current);
+    spcSeries_->setCurrentIndex(std::max(0, spcSeries_->findData(current)));
+  }
+  const bool chosen = !current.isEmpty();
+  {
+    const QSignalBlocker blocker(spcColumn_);
+    spcColumn_->clear();
+    const QStringList columns = chosen ? spcColumns(current.toStdString()) : QStringList();
+    for (const QString& c : columns) spcColumn_->addItem(c, c);
+    const QString column = block.is_object() && block.contains("column") && block["column"].is_string()
+                               ? QString::fromStdString(block["column"].get<std::string>())
+                               : QString();
+    if (!column.isEmpty() && spcColumn_->findData(column) < 0) spcColumn_->addItem(column, column);
+    spcColumn_->setCurrentIndex(spcColumn_->findData(column));
+  }
+  // Subgroup and limits edit a block that names its series: without one they would make the study
+  // unreadable (dataset and column are required), so they wait for the series.
+  for (QWidget* w : std::initializer_list<QWidget*>{spcColumn_, spcSubgroup_, spcLsl_, spcUsl_, spcNominal_})
+    w->setEnabled(chosen);
+  const auto show = [](QLineEdit* e, const nlohmann::json& v) {
+    if (e->hasFocus()) return;  // typing is not disturbed; editingFinished writes it
+    const QSignalBlocker blocker(e);
+    e->setText(shownNumber(v));
+  };
+  const auto value = [&](const char* key) {
+    return block.is_object() && block.contains(key) ? block[key] : nlohmann::json();
+  };
+  // Limits being typed (one given, the hint shown) stay as typed until both are there.
+  if (!spcHint_->isVisibleTo(spcTab_)) {
+    show(spcLsl_, value("lsl"));
+    show(spcUsl_, value("usl"));
+  }
+  show(spcNominal_, value("nominal"));
+}
+
+QString KinematicsPage::spcLimitsHint() const {
+  return spcHint_->isHidden() ? QString() : spcHint_->text();
+}
+
+void KinematicsPage::chooseSpcSeries(const QString& id) {
+  const QString study = QString::fromLatin1(study::kKinematics);
+  const nlohmann::json block = document_->studyValue(study, QStringLiteral("/spc"));
+  if (id.isEmpty()) {
+    document_->setStudyValue(study, QStringLiteral("/spc"), nlohmann::json(), tr("Remove the SPC series"));
+    return;
+  }
+  const QStringList columns = spcColumns(id.toStdString());
+  QString column = block.is_object() && block.contains("column") && block["column"].is_string()
+                       ? QString::fromStdString(block["column"].get<std::string>())
+                       : QString();
+  if (!columns.contains(column)) {
+    // The first deviation column of a report (".dev"), else the first numeric column.
+    column.clear();
+    for (const QString& c : columns)
+      if (c.endsWith(QLatin1String(".dev"))) {
+        column = c;
+        break;
+      }
+    if (column.isEmpty() && !columns.isEmpty()) column = columns.front();
+    // Not a counter (part, sample number: consecutive integers) when the series has another column.
+    if (column.isEmpty() || column.endsWith(QLatin1String(".dev"))) {
+    } else if (const DatasetRef* d = document_->project().dataset(id.toStdString())) {
+      try {
+        const CsvTable table = readFeatureTable(document_->datasetPath(*d).toStdString(), d->csv);
+        const auto counter = [&](const QString& c) {
+          const std::vector<double> v = table.numericColumn(c.toStdString());
+          for (std::size_t i = 1; i < v.size(); ++i)
+            if (v[i] - v[i - 1] != 1.0 || v[i] != std::floor(v[i])) return false;
+          return v.size() > 1;
+        };
+        for (const QString& c : columns)
+          if (!counter(c)) {
+            column = c;
+            break;
+          }
+      } catch (const std::exception&) {
+        // Read above (spcColumns); a file changed in between keeps the first column.
+      }
+    }
+  }
+  if (column.isEmpty()) {
+    spcHint_->setText(tr("“%1” has no column of numbers to chart.").arg(id));
+    spcHint_->setVisible(true);
+    syncSpcControls();
+    return;
+  }
+  spcHint_->clear();
+  spcHint_->setVisible(false);
+  QUndoStack* stack = document_->undoStack();
+  stack->beginMacro(tr("Choose the SPC series"));
+  document_->setStudyValue(study, QStringLiteral("/spc/dataset"), id.toStdString(),
+                           tr("Choose the SPC series"));
+  document_->setStudyValue(study, QStringLiteral("/spc/column"), column.toStdString(),
+                           tr("Choose the SPC series"));
+  stack->endMacro();
+}
+
+void KinematicsPage::writeSpcLimits() {
+  const QString study = QString::fromLatin1(study::kKinematics);
+  if (!document_->studyValue(study, QStringLiteral("/spc/dataset")).is_string()) return;
+  bool okL = true, okU = true, okN = true;
+  const std::optional<double> lsl = typedNumber(spcLsl_->text(), &okL);
+  const std::optional<double> usl = typedNumber(spcUsl_->text(), &okU);
+  const std::optional<double> nominal = typedNumber(spcNominal_->text(), &okN);
+  QString hint;
+  if (!okL || !okU || !okN)
+    hint = tr("Not a number: %1").arg(!okL ? spcLsl_->text() : !okU ? spcUsl_->text() : spcNominal_->text());
+  else if (lsl.has_value() != usl.has_value())
+    hint = tr("Give both specification limits (LSL and USL), or neither; nothing is written until then.");
+  else if (lsl && !(*lsl < *usl))
+    hint = tr("The lower specification limit must be below the upper one.");
+  spcHint_->setText(hint);
+  spcHint_->setVisible(!hint.isEmpty());
+  std::vector<std::pair<QString, nlohmann::json>> edits;
+  if (hint.isEmpty()) {
+    edits.push_back({QStringLiteral("/spc/lsl"), lsl ? nlohmann::json(*lsl) : nlohmann::json()});
+    edits.push_back({QStringLiteral("/spc/usl"), usl ? nlohmann::json(*usl) : nlohmann::json()});
+  }
+  if (okN)
+    edits.push_back({QStringLiteral("/spc/nominal"), nominal ? nlohmann::json(*nominal) : nlohmann::json()});
+  std::vector<std::pair<QString, nlohmann::json>> changed;
+  for (const auto& e : edits)
+    if (document_->studyValue(study, e.first) != e.second) changed.push_back(e);
+  if (changed.empty()) return;
+  QUndoStack* stack = document_->undoStack();
+  if (changed.size() > 1) stack->beginMacro(tr("Change the SPC limits"));
+  for (const auto& e : changed)
+    document_->setStudyValue(study, e.first, e.second, tr("Change the SPC limits"));
+  if (changed.size() > 1) stack->endMacro();
+}
+
 void KinematicsPage::refresh() {
   syncPickers();
+  syncSpcControls();
   std::vector<DatasetRef> sets = circularTestDatasets(document_->project());
   // Resolved paths: a Save As to another folder (which rewrites relative paths) keeps the results.
   for (DatasetRef& d : sets) d = document_->resolvedDataset(d);
@@ -693,8 +977,8 @@ void KinematicsPage::showStudy() {
     spc_->setMessage(tr("Cannot chart the SPC series:\n%1").arg(QString::fromStdString(s.spcError)));
   } else {
     spc_->setMessage(
-        tr("The kinematics study names no SPC series. Set \"spc\": {\"dataset\", \"column\", \"subgroup\", "
-           "\"lsl\", \"usl\", \"nominal\"} in the project's kinematics study."));
+        tr("No SPC series is chosen: choose the measured series and its characteristic above "
+           "(a feature series or a CMM report, imported with File › Import data, Ctrl+I)."));
   }
   showActuators();
   stack_->setCurrentWidget(tabs_);

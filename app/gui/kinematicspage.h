@@ -26,6 +26,8 @@
 
 class QComboBox;
 class QLabel;
+class QLineEdit;
+class QSpinBox;
 class QPushButton;
 class QStackedWidget;
 class QTabWidget;
@@ -60,6 +62,18 @@ class KinematicsPage : public QWidget {
   /// when the study has no SPC series or core refuses.
   bool exportSpcDfq(const QString& path, QString* error = nullptr);
   QPushButton* spcDfqButton() const { return spcDfqButton_; }
+  /// The SPC tab's settings of studies.kinematics.spc, each an undoable edit: the series (feature series
+  /// or CMM report datasets; items carry the id, "" for none), its characteristic (the numeric columns of
+  /// the series' feature table), the subgroup size, the specification limits and the nominal (empty:
+  /// none; the limits are written together when both are numbers, in the UI's or C number format).
+  QComboBox* spcSeriesCombo() const { return spcSeries_; }
+  QComboBox* spcColumnCombo() const { return spcColumn_; }
+  QSpinBox* spcSubgroupBox() const { return spcSubgroup_; }
+  QLineEdit* spcLslEdit() const { return spcLsl_; }
+  QLineEdit* spcUslEdit() const { return spcUsl_; }
+  QLineEdit* spcNominalEdit() const { return spcNominal_; }
+  /// Why the limits typed are not written ("" when they are).
+  QString spcLimitsHint() const;
   /// Writes the from-SPC edges' deviations as a Q-DAS DFQ file (atomically), the file `metrofit-cli
   /// kinematic from-spc --dfq` writes for the same edges. False with `error` when the chain has no result.
   bool exportEdgesDfq(const QString& path, QString* error = nullptr);
@@ -134,6 +148,14 @@ class KinematicsPage : public QWidget {
   void showStoredResult();
   /// Refuses to run with settings that cannot be read: the message names the field.
   void showSettingsError();
+  /// The SPC settings row from the study (signals blocked).
+  void syncSpcControls();
+  /// Chooses the SPC series (one undo step with a characteristic of it; "" removes the block).
+  void chooseSpcSeries(const QString& id);
+  /// Writes the limits and the nominal typed (one undo step; nothing while only one limit is given).
+  void writeSpcLimits();
+  /// The numeric columns of a dataset's feature table (read once per file state).
+  QStringList spcColumns(const std::string& datasetId);
 
   /// A dataset chooser of the actuators view and the study setting it edits.
   struct Picker {
@@ -174,6 +196,15 @@ class KinematicsPage : public QWidget {
   QPushButton* edgesDfqButton_ = nullptr;
   std::array<Picker, 5> pickers_;  ///< edge X, edge Y, planes XY, YZ, ZX
   QWidget* spcTab_ = nullptr;
+  QComboBox* spcSeries_ = nullptr;
+  QComboBox* spcColumn_ = nullptr;
+  QSpinBox* spcSubgroup_ = nullptr;
+  QLineEdit* spcLsl_ = nullptr;
+  QLineEdit* spcUsl_ = nullptr;
+  QLineEdit* spcNominal_ = nullptr;
+  QLabel* spcHint_ = nullptr;
+  std::string spcColumnsKey_;  ///< the file state spcColumnsCache_ was read from
+  QStringList spcColumnsCache_;
   std::optional<KinematicStudyData> study_;
   std::optional<CompensationPreview> compensation_;
   QString error_;

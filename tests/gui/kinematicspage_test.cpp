@@ -16,9 +16,11 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
+#include <QLineEdit>
 #include <QLocale>
 #include <QPushButton>
 #include <QScrollBar>
+#include <QSpinBox>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -299,6 +301,98 @@ TEST_F(KinematicsPageTest, RadialOnlyTestSaysWhyItCannotBeIdentifiedAndShowsItsI
   EXPECT_TRUE(report.contains(QStringLiteral("ISO 230-4 results")));
   EXPECT_TRUE(report.contains(QStringLiteral("largest circular deviation G 4.0 µm"))) << report.toStdString();
   EXPECT_TRUE(report.contains(QStringLiteral("Circular hysteresis H 1.5 µm")));
+}
+
+// Found in the de_DE walk (2026-11-30): the SPC tab of a project made in the GUI said to set "spc" in the
+// project file. The series, its characteristic, the subgroup and the limits are chosen on the tab, each an
+// undoable edit; a limit alone is not written (the study would refuse it), both are; the chart shows the
+// values of the file, read here by the test.
+TEST_F(KinematicsPageTest, SpcSeriesAndLimitsAreChosenOnTheTabWithoutTheProjectFile) {
+  Project p = doc_.project();
+  p.studies["kinematics"].erase("spc");
+  saveProject(p, projectPath_.toStdString());
+  doc_.load(projectPath_);
+  KinematicsPage page(&doc_);
+  ASSERT_NE(page.study(), nullptr) << page.errorMessage().toStdString();
+  EXPECT_FALSE(page.study()->spc.has_value());
+  EXPECT_TRUE(page.spcView()->messageLabel()->text().contains(QStringLiteral("choose the measured series")))
+      << page.spcView()->messageLabel()->text().toStdString();
+  EXPECT_FALSE(page.spcLslEdit()->isEnabled());
+  const auto spc = [&] { return doc_.studyValue(QStringLiteral("kinematics"), QStringLiteral("/spc")); };
+
+  const int before = doc_.undoStack()->index();
+  QComboBox* series = page.spcSeriesCombo();
+  ASSERT_GE(series->findData(QStringLiteral("bores_demo")), 0);
+  series->setCurrentIndex(series->findData(QStringLiteral("bores_demo")));
+  EXPECT_EQ(doc_.undoStack()->index(), before + 1);
+  // The part counter is not the characteristic: the diameter is.
+  EXPECT_EQ(spc()["dataset"], "bores_demo");
+  EXPECT_EQ(spc()["column"], "diameter_mm");
+  ASSERT_NE(page.study(), nullptr);
+  ASSERT_TRUE(page.study()->spc.has_value()) << page.study()->spcError;
+  // The file's diameters, read by the test.
+  std::vector<double> diameters;
+  {
+    std::ifstream in(
+        QDir(QFileInfo(projectPath_).path()).filePath(QStringLiteral("data/bores_demo.csv")).toStdString());
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#' || line.rfind("part,", 0) == 0) continue;
+      const std::size_t a = line.find(',');
+      diameters.push_back(std::stod(line.substr(a + 1, line.find(',', a + 1) - a - 1)));
+    }
+  }
+  ASSERT_EQ(diameters.size(), 25u);
+  ASSERT_EQ(page.study()->spc->values.size(), diameters.size());
+  for (std::size_t i = 0; i < diameters.size(); ++i)
+    EXPECT_NEAR(page.study()->spc->values[i], diameters[i], 1e-9) << i;
+  // The characteristic list holds the numeric columns.
+  EXPECT_GE(page.spcColumnCombo()->findData(QStringLiteral("centre_x_mm")), 0);
+
+  // A limit alone: not written, the hint says why; with both: one step, the study's Cp follows.
+  page.spcLslEdit()->setText(QStringLiteral("99.98"));
+  emit page.spcLslEdit()->editingFinished();
+  EXPECT_FALSE(spc().contains("lsl"));
+  EXPECT_TRUE(page.spcLimitsHint().contains(QStringLiteral("both"))) << page.spcLimitsHint().toStdString();
+  page.spcUslEdit()->setText(QStringLiteral("100.02"));
+  emit page.spcUslEdit()->editingFinished();
+  EXPECT_EQ(spc()["lsl"], 99.98);
+  EXPECT_EQ(spc()["usl"], 100.02);
+  EXPECT_TRUE(page.spcLimitsHint().isEmpty());
+  ASSERT_TRUE(page.study()->spc->result.capability.cp.has_value());
+  EXPECT_GT(*page.study()->spc->result.capability.cp, 0.0);
+  // In a German UI the decimal comma is read ("100,0" is 100, not 1000), and the point as well.
+  const QLocale previous;
+  QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+  page.spcNominalEdit()->setText(QStringLiteral("100,0"));
+  emit page.spcNominalEdit()->editingFinished();
+  EXPECT_EQ(spc()["nominal"], 100.0);
+  page.spcNominalEdit()->setText(QStringLiteral("100.001"));
+  emit page.spcNominalEdit()->editingFinished();
+  EXPECT_EQ(spc()["nominal"], 100.001);
+  QLocale::setDefault(previous);
+  // The limits were shown in the German form meanwhile ("99,98"); the UI language does not change in a
+  // session, so the test puts the C form back.
+  page.spcLslEdit()->setText(QStringLiteral("99.98"));
+  page.spcUslEdit()->setText(QStringLiteral("100.02"));
+  // Under C a comma is no decimal mark: refused with the text named, nothing written.
+  page.spcNominalEdit()->setText(QStringLiteral("100,0"));
+  emit page.spcNominalEdit()->editingFinished();
+  EXPECT_EQ(spc()["nominal"], 100.001);
+  EXPECT_TRUE(page.spcLimitsHint().contains(QStringLiteral("100,0"))) << page.spcLimitsHint().toStdString();
+  page.spcNominalEdit()->setText(QStringLiteral("100"));
+  emit page.spcNominalEdit()->editingFinished();
+  EXPECT_EQ(spc()["nominal"], 100.0);
+  page.spcSubgroupBox()->setValue(4);
+  doc_.endEditSequence();
+  EXPECT_EQ(spc()["subgroup"], 4);
+  EXPECT_EQ(page.study()->settings.spc->options.subgroupSize, 4);
+
+  // Undo back to the start removes the block; the tab says to choose a series again.
+  doc_.undoStack()->setIndex(before);
+  EXPECT_TRUE(spc().is_null()) << spc();
+  EXPECT_FALSE(page.study()->spc.has_value());
+  EXPECT_EQ(page.spcSeriesCombo()->currentData().toString(), QString());
 }
 
 TEST(KinematicsPageEmpty, ProjectWithoutCircularTestShowsAMessage) {
