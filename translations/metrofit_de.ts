@@ -2689,12 +2689,22 @@ Anzahl: %4</translation>
         <translation>SPC-Grenzwerte ändern</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+78"/>
         <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
         <translation>Dieses Projekt enthält keinen Kreisformtest. Fügen Sie einen Datensatz der Art „circular_test“ hinzu (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, ein Umlauf gegen und einer im Uhrzeigersinn), z. B. erzeugt mit metrofit-cli simulate circular.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+7"/>
+        <source>No circular test in this project: only the SPC tab is available. %1</source>
+        <translation>Kein Kreisformtest in diesem Projekt: nur der Reiter SPC ist verfügbar. %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Import a circular test (Ctrl+I) for the path, actuators and ballbar tabs.</source>
+        <translation>Importieren Sie einen Kreisformtest (Strg+I) für die Reiter Bahn, Antriebe und Ballbar.</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>Cannot identify this circular test:
 %1</source>
         <translation>Dieser Kreisformtest kann nicht identifiziert werden:
@@ -2834,7 +2844,8 @@ Anzahl: %4</translation>
         <translation>Bahn (XY)</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="-136"/>
+        <location line="+155"/>
         <source>No SPC series is chosen: choose the measured series and its characteristic above (a feature series or a CMM report, imported with File › Import data, Ctrl+I).</source>
         <translation>Keine SPC-Reihe gewählt: wählen Sie oben die Messreihe und ihr Merkmal (eine Merkmalsreihe oder ein KMG-Protokoll, importiert mit Datei › Daten importieren, Strg+I).</translation>
     </message>
@@ -2875,7 +2886,7 @@ Anzahl: %4</translation>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="-664"/>
+        <location line="-701"/>
         <source>USL:</source>
         <translation>OGW:</translation>
     </message>
@@ -2887,7 +2898,7 @@ Anzahl: %4</translation>
 %1</translation>
     </message>
     <message>
-        <location line="+157"/>
+        <location line="+194"/>
         <source>measured</source>
         <translation>gemessen</translation>
     </message>
@@ -2902,7 +2913,8 @@ Anzahl: %4</translation>
         <translation>Die Kinematikstudie nennt keine SPC-Reihe zum Exportieren</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-150"/>
+        <location line="+155"/>
         <source>Cannot chart the SPC series:
 %1</source>
         <translation>Die SPC-Reihe kann nicht dargestellt werden:

@@ -2697,12 +2697,22 @@ liczba: %4</translation>
         <translation>Zmień granice SPC</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+78"/>
         <source>This project has no circular test. Add a dataset of kind &quot;circular_test&quot; (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by metrofit-cli simulate circular.</source>
         <translation>Ten projekt nie zawiera testu kołowego. Dodaj zbiór danych rodzaju „circular_test” (CSV x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, jedna pętla przeciwnie do ruchu wskazówek zegara, potem jedna zgodnie), np. utworzony przez metrofit-cli simulate circular.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+7"/>
+        <source>No circular test in this project: only the SPC tab is available. %1</source>
+        <translation>Brak testu okrągłości w tym projekcie: dostępna jest tylko karta SPC. %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Import a circular test (Ctrl+I) for the path, actuators and ballbar tabs.</source>
+        <translation>Zaimportuj test okrągłości (Ctrl+I), aby użyć kart Tor, Napędy i Ballbar.</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>Cannot identify this circular test:
 %1</source>
         <translation>Nie można zidentyfikować tego testu kołowego:
@@ -2843,7 +2853,8 @@ liczba: %4</translation>
         <translation>Tor (XY)</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="-136"/>
+        <location line="+155"/>
         <source>No SPC series is chosen: choose the measured series and its characteristic above (a feature series or a CMM report, imported with File › Import data, Ctrl+I).</source>
         <translation>Nie wybrano serii SPC: wybierz powyżej serię pomiarową i jej cechę (seria cech lub raport CMM, zaimportowane przez Plik › Importuj dane, Ctrl+I).</translation>
     </message>
@@ -2884,7 +2895,7 @@ liczba: %4</translation>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="-664"/>
+        <location line="-701"/>
         <source>USL:</source>
         <translation>GGT:</translation>
     </message>
@@ -2896,7 +2907,7 @@ liczba: %4</translation>
 %1</translation>
     </message>
     <message>
-        <location line="+157"/>
+        <location line="+194"/>
         <source>measured</source>
         <translation>zmierzony</translation>
     </message>
@@ -2911,7 +2922,8 @@ liczba: %4</translation>
         <translation>Badanie kinematyki nie wskazuje serii SPC do eksportu</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-150"/>
+        <location line="+155"/>
         <source>Cannot chart the SPC series:
 %1</source>
         <translation>Nie można wykreślić serii SPC:

@@ -269,14 +269,14 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
     spcSeries_ = new QComboBox(spcTab_);
     spcSeries_->setObjectName(QStringLiteral("spcSeries"));
     spcSeries_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    spcSeries_->setMinimumContentsLength(12);
+    spcSeries_->setMinimumContentsLength(6);
     addLabelled(tr("Se&ries:"), spcSeries_,
                 tr("The measured series charted (a feature series or a CMM report, one value per part; "
                    "studies.kinematics.spc.dataset)"));
     spcColumn_ = new QComboBox(spcTab_);
     spcColumn_->setObjectName(QStringLiteral("spcColumn"));
     spcColumn_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    spcColumn_->setMinimumContentsLength(14);
+    spcColumn_->setMinimumContentsLength(8);
     addLabelled(tr("C&haracteristic:"), spcColumn_,
                 tr("The column of the series charted (studies.kinematics.spc.column)"));
     spcSubgroup_ = new QSpinBox(spcTab_);
@@ -323,14 +323,11 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
         },
         false, tr("Change the SPC subgroup size"));
     spcLayout->addWidget(spc_, 1);
-    auto* row = new QHBoxLayout;
-    row->setContentsMargins(4, 0, 4, 4);
-    row->addStretch(1);
+    // The export sits at the end of the settings row: the tab is no taller than before (1280x800).
     spcDfqButton_ = new QPushButton(tr("Export Q-DAS &DFQ…"), spcTab_);
     spcDfqButton_->setObjectName(QStringLiteral("spcDfq"));
     spcDfqButton_->setEnabled(false);
-    row->addWidget(spcDfqButton_);
-    spcLayout->addLayout(row);
+    settingsRow->addWidget(spcDfqButton_);
     connect(spcDfqButton_, &QPushButton::clicked, this, &KinematicsPage::onExportSpcDfq);
   }
   tabs_->addTab(spcTab_, tr("S&PC"));
@@ -821,6 +818,7 @@ bool KinematicsPage::identify() {
     showSettingsError();
     return false;
   }
+  for (int i = 0; i < tabs_->count(); ++i) tabs_->setTabEnabled(i, true);
   const QString id = currentDataset();
   if (id.isEmpty()) {
     info_->clear();
@@ -828,6 +826,42 @@ bool KinematicsPage::identify() {
         tr("This project has no circular test. Add a dataset of kind \"circular_test\" (CSV "
            "x_cmd_mm,y_cmd_mm,x_meas_mm,y_meas_mm, one loop CCW then one CW), e.g. made by "
            "metrofit-cli simulate circular.");
+    // A shop's part series is charted without a circular test: the SPC tab alone, when the project has
+    // a series to chart.
+    if (spcSeries_->count() > 1) {
+      info_->setText(
+          tr("No circular test in this project: only the SPC tab is available. %1")
+              .arg(tr("Import a circular test (Ctrl+I) for the path, actuators and ballbar tabs.")));
+      for (int i = 0; i < tabs_->count(); ++i) tabs_->setTabEnabled(i, tabs_->widget(i) == spcTab_);
+      tabs_->setCurrentWidget(spcTab_);
+      stack_->setCurrentWidget(tabs_);
+      spcDfqButton_->setEnabled(false);
+      std::string spcError;
+      std::optional<KinematicSpcSeries> series;
+      try {
+        const KinematicStudySettings settings = kinematicStudySettings(document_->project());
+        if (settings.spc) {
+          const ProjectDocument* doc = document_;
+          series = chartKinematicSpc(
+              document_->project(), *settings.spc,
+              [doc](const DatasetRef& d) { return doc->datasetPath(d).toStdString(); }, &spcError);
+        }
+      } catch (const std::exception& e) {
+        spcError = e.what();
+      }
+      if (series) {
+        spc_->setResult(series->result, series->values, QString::fromStdString(series->column),
+                        QString::fromStdString(series->unit));
+      } else if (!spcError.empty()) {
+        spc_->setMessage(tr("Cannot chart the SPC series:\n%1").arg(QString::fromStdString(spcError)));
+      } else {
+        spc_->setMessage(
+            tr("No SPC series is chosen: choose the measured series and its characteristic above "
+               "(a feature series or a CMM report, imported with File › Import data, Ctrl+I)."));
+      }
+      updateButtons();
+      return false;
+    }
     message_->setText(error_);
     stack_->setCurrentWidget(message_);
     updateButtons();

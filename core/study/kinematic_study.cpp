@@ -109,6 +109,30 @@ std::optional<RadialStudyTest> radialStudyTest(const Project& project,
   return t;
 }
 
+std::optional<KinematicSpcSeries> chartKinematicSpc(
+    const Project& project, const KinematicSpcSettings& k,
+    const std::function<std::string(const DatasetRef&)>& resolve, std::string* error) {
+  try {
+    const DatasetRef* sref = project.dataset(k.dataset);
+    if (sref == nullptr) {
+      throw ValidationError(
+          ErrorContext{{}, 0, 0, std::string("studies.") + study::kKinematics + ".spc.dataset"},
+          "names the dataset '" + k.dataset + "', which the project does not have");
+    }
+    KinematicSpcSeries series;
+    series.dataset = *sref;
+    series.column = k.column;
+    series.unit = columnUnit(k.column);
+    const std::string file = resolve(*sref);
+    series.values = readFeatureTable(file, sref->csv).numericColumn(k.column);
+    series.result = analyseSpc(series.values, k.options, ErrorContext{file, 0, 0, k.column});
+    return series;
+  } catch (const std::exception& e) {
+    if (error) *error = e.what();
+    return std::nullopt;
+  }
+}
+
 KinematicStudyData loadKinematicStudy(const Project& project,
                                       const std::function<std::string(const DatasetRef&)>& resolve,
                                       const std::string& datasetId) {
@@ -131,27 +155,7 @@ KinematicStudyData loadKinematicStudy(const Project& project,
   if (d.identification.run.termination == Termination::Failed) {
     throw std::runtime_error("identification failed on " + d.path + ": " + d.identification.run.message);
   }
-  if (d.settings.spc) {
-    const KinematicSpcSettings& k = *d.settings.spc;
-    try {
-      const DatasetRef* sref = project.dataset(k.dataset);
-      if (sref == nullptr) {
-        throw ValidationError(
-            ErrorContext{{}, 0, 0, std::string("studies.") + study::kKinematics + ".spc.dataset"},
-            "names the dataset '" + k.dataset + "', which the project does not have");
-      }
-      KinematicSpcSeries series;
-      series.dataset = *sref;
-      series.column = k.column;
-      series.unit = columnUnit(k.column);
-      const std::string file = resolve(*sref);
-      series.values = readFeatureTable(file, sref->csv).numericColumn(k.column);
-      series.result = analyseSpc(series.values, k.options, ErrorContext{file, 0, 0, k.column});
-      d.spc = std::move(series);
-    } catch (const std::exception& e) {
-      d.spcError = e.what();
-    }
-  }
+  if (d.settings.spc) d.spc = chartKinematicSpc(project, *d.settings.spc, resolve, &d.spcError);
   if (d.settings.fromSpc &&
       (!d.settings.fromSpc->xDataset.empty() || !d.settings.fromSpc->yDataset.empty())) {
     const KinematicFromSpcSettings& k = *d.settings.fromSpc;

@@ -109,6 +109,12 @@ struct KinematicStudyData {
   std::string threeAxisError;
 };
 
+/// The SPC series of the study's "spc" settings read and analysed (no circular test needed: a shop's
+/// part series is charted on its own); nullopt with `error` set when it cannot be charted.
+std::optional<KinematicSpcSeries> chartKinematicSpc(
+    const Project& project, const KinematicSpcSettings& spc,
+    const std::function<std::string(const DatasetRef&)>& resolve, std::string* error = nullptr);
+
 /// The circular_test datasets of the project, in project order.
 std::vector<DatasetRef> circularTestDatasets(const Project& project);
 

@@ -21,6 +21,7 @@
 #include <QPushButton>
 #include <QScrollBar>
 #include <QSpinBox>
+#include <QStackedLayout>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -308,6 +309,9 @@ TEST_F(KinematicsPageTest, RadialOnlyTestSaysWhyItCannotBeIdentifiedAndShowsItsI
 // undoable edit; a limit alone is not written (the study would refuse it), both are; the chart shows the
 // values of the file, read here by the test.
 TEST_F(KinematicsPageTest, SpcSeriesAndLimitsAreChosenOnTheTabWithoutTheProjectFile) {
+  // The number entry is checked in C and German below, whatever the locale the test runs under.
+  const QLocale outer;
+  QLocale::setDefault(QLocale::c());
   Project p = doc_.project();
   p.studies["kinematics"].erase("spc");
   saveProject(p, projectPath_.toStdString());
@@ -339,7 +343,11 @@ TEST_F(KinematicsPageTest, SpcSeriesAndLimitsAreChosenOnTheTabWithoutTheProjectF
     while (std::getline(in, line)) {
       if (line.empty() || line[0] == '#' || line.rfind("part,", 0) == 0) continue;
       const std::size_t a = line.find(',');
-      diameters.push_back(std::stod(line.substr(a + 1, line.find(',', a + 1) - a - 1)));
+      // QByteArray::toDouble: the C format whatever the process locale (std::stod follows LC_NUMERIC).
+      bool ok = false;
+      diameters.push_back(
+          QByteArray::fromStdString(line.substr(a + 1, line.find(',', a + 1) - a - 1)).toDouble(&ok));
+      EXPECT_TRUE(ok) << line;
     }
   }
   ASSERT_EQ(diameters.size(), 25u);
@@ -362,7 +370,6 @@ TEST_F(KinematicsPageTest, SpcSeriesAndLimitsAreChosenOnTheTabWithoutTheProjectF
   ASSERT_TRUE(page.study()->spc->result.capability.cp.has_value());
   EXPECT_GT(*page.study()->spc->result.capability.cp, 0.0);
   // In a German UI the decimal comma is read ("100,0" is 100, not 1000), and the point as well.
-  const QLocale previous;
   QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
   page.spcNominalEdit()->setText(QStringLiteral("100,0"));
   emit page.spcNominalEdit()->editingFinished();
@@ -370,7 +377,7 @@ TEST_F(KinematicsPageTest, SpcSeriesAndLimitsAreChosenOnTheTabWithoutTheProjectF
   page.spcNominalEdit()->setText(QStringLiteral("100.001"));
   emit page.spcNominalEdit()->editingFinished();
   EXPECT_EQ(spc()["nominal"], 100.001);
-  QLocale::setDefault(previous);
+  QLocale::setDefault(QLocale::c());
   // The limits were shown in the German form meanwhile ("99,98"); the UI language does not change in a
   // session, so the test puts the C form back.
   page.spcLslEdit()->setText(QStringLiteral("99.98"));
@@ -393,6 +400,39 @@ TEST_F(KinematicsPageTest, SpcSeriesAndLimitsAreChosenOnTheTabWithoutTheProjectF
   EXPECT_TRUE(spc().is_null()) << spc();
   EXPECT_FALSE(page.study()->spc.has_value());
   EXPECT_EQ(page.spcSeriesCombo()->currentData().toString(), QString());
+  QLocale::setDefault(outer);
+}
+
+// A shop's part series without any circular test (the walk's SPC journey): the page shows the SPC tab alone,
+// the other tabs disabled and the reason above them, and charts the series chosen there.
+TEST_F(KinematicsPageTest, SpcWithoutACircularTestShowsTheSpcTabAlone) {
+  Project p = doc_.project();
+  std::erase_if(p.datasets, [](const DatasetRef& d) { return d.kind == "circular_test"; });
+  p.studies["kinematics"].erase("dataset");
+  p.studies["kinematics"].erase("simulated_machine");
+  p.studies["kinematics"].erase("spc");
+  p.studies["diagnosis"].erase("kinematic");
+  saveProject(p, projectPath_.toStdString());
+  doc_.load(projectPath_);
+  KinematicsPage page(&doc_);
+  EXPECT_EQ(page.study(), nullptr);
+  EXPECT_TRUE(page.errorMessage().contains(QStringLiteral("circular_test")));
+  ASSERT_EQ(page.currentView(), page.tabs());
+  QWidget* spcTab = page.tabs()->currentWidget();
+  ASSERT_EQ(page.tabs()->tabText(page.tabs()->currentIndex()), QStringLiteral("S&PC"));
+  for (int i = 0; i < page.tabs()->count(); ++i)
+    EXPECT_EQ(page.tabs()->isTabEnabled(i), page.tabs()->widget(i) == spcTab) << i;
+  EXPECT_TRUE(page.infoLabel()->text().contains(QStringLiteral("only the SPC tab")))
+      << page.infoLabel()->text().toStdString();
+  auto* stack = static_cast<QStackedLayout*>(page.spcView()->layout());
+  EXPECT_EQ(stack->currentWidget(), page.spcView()->messageLabel());
+
+  QComboBox* series = page.spcSeriesCombo();
+  series->setCurrentIndex(series->findData(QStringLiteral("bores_demo")));
+  EXPECT_NE(stack->currentWidget(), page.spcView()->messageLabel())
+      << page.spcView()->messageLabel()->text().toStdString();
+  EXPECT_GT(page.spcView()->indexTable()->rowCount(), 0);
+  EXPECT_FALSE(page.compensateButton()->isEnabled());
 }
 
 TEST(KinematicsPageEmpty, ProjectWithoutCircularTestShowsAMessage) {
