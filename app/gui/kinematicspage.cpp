@@ -45,6 +45,7 @@
 #include "core/project/datasets.h"
 #include "core/project/stored_results.h"
 #include "widgets/common/tablecopy.h"
+#include "widgets/common/usernumber.h"
 #include "widgets/diagnose/coretexts.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/document/storedresulttext.h"
@@ -542,24 +543,13 @@ void KinematicsPage::syncPickers() {
 
 namespace {
 
-/// A number typed in the UI's format or the C one ("0,02" and "0.02" under German); nullopt for a text
-/// that is neither, empty for none.
+/// A limit typed in a field (widgets/common/usernumber.h); empty for none, `ok` false for a text that is
+/// no number.
 std::optional<double> typedNumber(const QString& text, bool* ok) {
   *ok = true;
-  const QString t = text.trimmed();
-  if (t.isEmpty()) return std::nullopt;
-  // Group separators refused: "1.000" must not read as 1000 under German, nor "0,5" as 5 in C.
-  QLocale ui;
-  ui.setNumberOptions(QLocale::RejectGroupSeparator);
-  QLocale c = QLocale::c();
-  c.setNumberOptions(QLocale::RejectGroupSeparator);
-  bool good = false;
-  double v = ui.toDouble(t, &good);
-  if (!good) v = c.toDouble(t, &good);
-  if (!good || !std::isfinite(v)) {
-    *ok = false;
-    return std::nullopt;
-  }
+  if (text.trimmed().isEmpty()) return std::nullopt;
+  const std::optional<double> v = parseUserNumber(text);
+  *ok = v.has_value();
   return v;
 }
 
@@ -585,13 +575,19 @@ QStringList KinematicsPage::spcColumns(const std::string& datasetId) {
   if (key.dump() == spcColumnsKey_) return spcColumnsCache_;
   spcColumnsKey_ = key.dump();
   spcColumnsCache_.clear();
+  spcCounterColumns_.clear();
   try {
     const CsvTable table = readFeatureTable(path, dataset->csv);
     for (const std::string& column : table.header()) {
       if (column == "run" || column == "date") continue;
       try {
-        (void)table.numericColumn(column);
+        const std::vector<double> v = table.numericColumn(column);
         spcColumnsCache_ << QString::fromStdString(column);
+        // A counter (part, sample number): consecutive integers.
+        bool counter = v.size() > 1;
+        for (std::size_t i = 1; counter && i < v.size(); ++i)
+          counter = v[i] - v[i - 1] == 1.0 && v[i] == std::floor(v[i]);
+        if (counter) spcCounterColumns_ << QString::fromStdString(column);
       } catch (const std::exception&) {
         // Not numbers in every row: not a characteristic to chart.
       }
@@ -677,26 +673,13 @@ void KinematicsPage::chooseSpcSeries(const QString& id) {
         break;
       }
     if (column.isEmpty() && !columns.isEmpty()) column = columns.front();
-    // Not a counter (part, sample number: consecutive integers) when the series has another column.
-    if (column.isEmpty() || column.endsWith(QLatin1String(".dev"))) {
-    } else if (const DatasetRef* d = document_->project().dataset(id.toStdString())) {
-      try {
-        const CsvTable table = readFeatureTable(document_->datasetPath(*d).toStdString(), d->csv);
-        const auto counter = [&](const QString& c) {
-          const std::vector<double> v = table.numericColumn(c.toStdString());
-          for (std::size_t i = 1; i < v.size(); ++i)
-            if (v[i] - v[i - 1] != 1.0 || v[i] != std::floor(v[i])) return false;
-          return v.size() > 1;
-        };
-        for (const QString& c : columns)
-          if (!counter(c)) {
-            column = c;
-            break;
-          }
-      } catch (const std::exception&) {
-        // Read above (spcColumns); a file changed in between keeps the first column.
-      }
-    }
+    // Not a counter (spcColumns marks them) when the series has another column.
+    if (!column.isEmpty() && !column.endsWith(QLatin1String(".dev")))
+      for (const QString& c : columns)
+        if (!spcCounterColumns_.contains(c)) {
+          column = c;
+          break;
+        }
   }
   if (column.isEmpty()) {
     spcHint_->setText(tr("“%1” has no column of numbers to chart.").arg(id));

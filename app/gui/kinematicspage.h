@@ -205,6 +205,7 @@ class KinematicsPage : public QWidget {
   QLabel* spcHint_ = nullptr;
   std::string spcColumnsKey_;  ///< the file state spcColumnsCache_ was read from
   QStringList spcColumnsCache_;
+  QStringList spcCounterColumns_;  ///< those of spcColumnsCache_ that count parts (consecutive integers)
   std::optional<KinematicStudyData> study_;
   std::optional<CompensationPreview> compensation_;
   QString error_;

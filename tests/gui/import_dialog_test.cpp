@@ -461,13 +461,17 @@ TEST_F(ImportDialogTest, AnMtconnectLogIsPreviewedAsItsResampledTable) {
   for (const char* key : {"S1speed", "X1actm", "Z1actm"})
     EXPECT_TRUE(headers.contains(QLatin1String(key))) << key;
   EXPECT_FALSE(headers.contains(QStringLiteral("system")));
-  EXPECT_EQ(preview->item(1, 0)->text().toDouble(), 1.0 / 60.0);  // 1 s: the second row at 1/60 min
+  bool ok = false;
+  EXPECT_NEAR(preview->item(1, 0)->text().toDouble(&ok), 1.0 / 60.0,
+              1e-12);  // 1 s: the second row at 1/60 min
+  EXPECT_TRUE(ok) << preview->item(1, 0)->text().toStdString();
   EXPECT_EQ(dialog.dataset().kind, dataset_kind::kMtconnect);
   EXPECT_EQ(dialog.dataset().csv.sampleIntervalMin, 0.0);  // the default grid is not stored
   // A 30 s grid: the preview's second row at 0.5 min, the dataset keeps it in minutes.
   dialog.setSampleIntervalS(30.0);
   ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
-  EXPECT_EQ(preview->item(1, 0)->text().toDouble(), 0.5);
+  EXPECT_NEAR(preview->item(1, 0)->text().toDouble(&ok), 0.5, 1e-12);
+  EXPECT_TRUE(ok) << preview->item(1, 0)->text().toStdString();
   EXPECT_DOUBLE_EQ(dialog.dataset().csv.sampleIntervalMin, 0.5);
   EXPECT_NE(dialog.findChild<QLabel*>(QStringLiteral("importDetected"))->text().indexOf(QStringLiteral("30")),
             -1);

@@ -1,5 +1,7 @@
 #include "widgets/setup/setupgrapheditor.h"
 
+#include "widgets/common/usernumber.h"
+
 #include <QAction>
 #include <QComboBox>
 #include <QDialog>
@@ -58,16 +60,6 @@ class ReportFeatureDelegate : public QStyledItemDelegate {
  private:
   const QStringList* labels_;
 };
-
-/// A number typed in the user's locale or with a decimal point.
-std::optional<double> parseNumber(const QString& text) {
-  bool ok = false;
-  const QString t = text.trimmed();
-  double v = QLocale().toDouble(t, &ok);
-  if (!ok) v = QLocale::c().toDouble(t, &ok);
-  if (!ok || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
 
 QString formatMm(double v) {
   return QLocale().toString(v, 'f', 3);
@@ -294,7 +286,7 @@ void SetupGraphEditor::onCellChanged(QTableWidgetItem* item) {
   const setup::Dimension& d = dims[static_cast<std::size_t>(row)];
   std::optional<double> nominal = d.nominal;
   double lower = d.lower, upper = d.upper;
-  const std::optional<double> value = parseNumber(item->text());
+  const std::optional<double> value = parseUserNumber(item->text());
   if (item->column() == ColNominal && item->text().trimmed().isEmpty()) {
     nominal.reset();
   } else if (!value) {
