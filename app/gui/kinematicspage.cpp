@@ -329,6 +329,10 @@ KinematicsPage::KinematicsPage(ProjectDocument* document, QWidget* parent)
     spcDfqButton_->setObjectName(QStringLiteral("spcDfq"));
     spcDfqButton_->setEnabled(false);
     settingsRow->addWidget(spcDfqButton_);
+    // The boxes ask for little room (1280x800 in German and Polish) and take what is left, so that
+    // dataset and column names are not cut where the window has room.
+    settingsRow->setStretchFactor(spcSeries_, 1);
+    settingsRow->setStretchFactor(spcColumn_, 1);
     connect(spcDfqButton_, &QPushButton::clicked, this, &KinematicsPage::onExportSpcDfq);
   }
   tabs_->addTab(spcTab_, tr("S&PC"));
@@ -641,6 +645,15 @@ void KinematicsPage::syncSpcControls() {
   const auto value = [&](const char* key) {
     return block.is_object() && block.contains(key) ? block[key] : nlohmann::json();
   };
+  {
+    // The study's subgroup (the binding writes edits; showing the study's value is the page's).
+    const nlohmann::json sub = value("subgroup");
+    const int shown = sub.is_number_integer() ? sub.get<int>() : KinematicsSettings::Spc{}.subgroup;
+    if (!spcSubgroup_->hasFocus() && shown >= spcSubgroup_->minimum() && shown <= spcSubgroup_->maximum()) {
+      const QSignalBlocker blocker(spcSubgroup_);
+      spcSubgroup_->setValue(shown);
+    }
+  }
   // Limits being typed (one given, the hint shown) stay as typed until both are there.
   if (!spcHint_->isVisibleTo(spcTab_)) {
     show(spcLsl_, value("lsl"));

@@ -53,6 +53,7 @@
 #include "core/project/project.h"
 #include "core/sim/circular_sim.h"
 #include "core/study/kinematic_study.h"
+#include "core/study/study_settings.h"
 
 namespace metrofit {
 namespace {
@@ -332,6 +333,8 @@ TEST_F(KinematicsPageTest, SpcSeriesAndLimitsAreChosenOnTheTabWithoutTheProjectF
   // The part counter is not the characteristic: the diameter is.
   EXPECT_EQ(spc()["dataset"], "bores_demo");
   EXPECT_EQ(spc()["column"], "diameter_mm");
+  // The subgroup box shows what the study uses (the default 5 here; the screenshot showed 2 once).
+  EXPECT_EQ(page.spcSubgroupBox()->value(), KinematicsSettings::Spc{}.subgroup);
   ASSERT_NE(page.study(), nullptr);
   ASSERT_TRUE(page.study()->spc.has_value()) << page.study()->spcError;
   // The file's diameters, read by the test.
