@@ -138,6 +138,7 @@ Trial judge(const Result& r) {
     }
     t.outliers += rc.outliers.size();
     for (const auto& o : rc.outliers) reportedRows.insert(o.row.value_or(static_cast<long>(o.unit) + 1));
+    for (const auto& b : rc.blocks) reportedRows.insert(b.rows.begin(), b.rows.end());
     const OpenWorldTruth& w = r.truth;
     for (const auto& o : rc.outliers) {
       if (!w.outlierUnit) break;
