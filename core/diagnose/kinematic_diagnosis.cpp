@@ -467,6 +467,20 @@ LoopRun runKinematic(const MeasuredPath& path, const std::vector<std::size_t>& o
           {"backlash", "scale", "cyclic", "servo_lag"},
           {state_.backlash, state_.scale, state_.cyclic[0] && state_.cyclic[1], state_.servo}, excluded);
     }
+    // The variables of the named effects (loop.h, "a generic effect of the same variable explains
+    // clearly more"): backlash acts at the reversals (reversal, direction), scale along x and y,
+    // cyclic along its axis (x or y, its parameter), servo lag by the direction of travel.
+    std::vector<std::string> namedVariables(const Candidate& c) const override {
+      if (c.name == "backlash") return {"reversal", "direction"};
+      if (c.name == "scale") return {"x", "y"};
+      if (c.name == "servo_lag") return {"direction"};
+      if (c.name == "cyclic")
+        for (const Parameter& p : c.parameters)
+          if (p.name == "axis")
+            if (const auto* a = std::get_if<std::string>(&p.value)) return {*a};
+      return {};
+    }
+    double clearMargin() const override { return o_.bicMargin; }
     ResidualCheck roundCheck() override {
       // A generic effect is the part of f(v) the current model cannot absorb: its basis is projected
       // off the model's Jacobian at the solution (a linear part in x or y is a squareness or scale the

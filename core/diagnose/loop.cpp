@@ -1,5 +1,6 @@
 #include "core/diagnose/loop.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -58,6 +59,7 @@ LoopRun runLoop(LoopDomain& domain, const LoopStyle& style, const std::set<std::
       if (std::optional<long> own = domain.choose(trials)) {
         if (*own >= 0) best = static_cast<std::size_t>(*own);
       } else {
+        dropNamesAGenericBeats(domain, trials);
         std::optional<std::size_t> named, generic;
         for (std::size_t i = 0; i < trials.size(); ++i) {
           if (!trials[i].passes || !trials[i].estimable) continue;
@@ -136,6 +138,30 @@ LoopRun runLoop(LoopDomain& domain, const LoopStyle& style, const std::set<std::
   out.stopped = progress.stopped();
   out.diagnosis = std::move(d);
   return out;
+}
+
+std::size_t dropNamesAGenericBeats(const LoopDomain& domain, std::vector<LoopTrial>& trials) {
+  const double margin = domain.clearMargin();
+  std::size_t dropped = 0;
+  for (LoopTrial& named : trials) {
+    if (named.candidate.generic || !named.passes || !named.estimable) continue;
+    const std::vector<std::string> vars = domain.namedVariables(named.candidate);
+    const LoopTrial* beats = nullptr;
+    for (const LoopTrial& g : trials) {
+      if (!g.candidate.generic || !g.estimable) continue;
+      if (std::find(vars.begin(), vars.end(), g.candidate.generic->against) == vars.end()) continue;
+      if (!(g.candidate.score < named.candidate.score - margin)) continue;
+      if (!beats || g.candidate.score < beats->candidate.score) beats = &g;
+    }
+    if (!beats) continue;
+    named.passes = false;
+    named.candidate.addEvidence({Phrase(
+        "; not taken: the generic %1 of the same variable explains clearly more (score %2 against %3)",
+        {PhraseArg::name(beats->candidate.name), PhraseArg::number(beats->candidate.score, 4),
+         PhraseArg::number(named.candidate.score, 4)})});
+    ++dropped;
+  }
+  return dropped;
 }
 
 std::vector<std::string> openNamedEffects(const std::vector<std::string>& names,

@@ -5,7 +5,25 @@
 //   and the generic effects `unexplained:<against>` of the current residual's strongest structures
 //   (residual_check.h genericCandidates, with the search penalty 2 ln(tests)); the domain fits the
 //   current model plus each candidate and decides whether it passes its test; the best passing one
-//   is accepted (a named effect that passes is preferred to a generic one); until none passes.
+//   is accepted (a named effect that passes is preferred to a generic one, unless a generic effect
+//   of the same variable explains clearly more, below); until none passes.
+//
+// A name is not the nearest name for a shape no entry models. A named effect is not accepted in a
+// round where a generic effect `unexplained:<v>` of one of its variables v (LoopDomain::
+// namedVariables: e.g. kinematic cyclic on x: x; setup tool_wear:T and drift:T: datum:T; matching
+// surface_offset:s: surface:s) explains clearly more:
+//   score(generic) < score(named) - margin         (LoopDomain::clearMargin)
+// The scores are the domains' criteria relative to the current model, dBIC = n ln(RSS1 / RSS0) +
+// k ln n (+ the generic's search penalty 2 ln(tests)), so the generic's extra parameters and its
+// search are paid for; the margin is the domain's own acceptance threshold (kinematic --bic-margin
+// 10, setup and matching bicThreshold). In words: the data prefer the generic model to the named one
+// by at least the evidence an effect needs to be accepted at all. The named effect is then marked
+// "not taken" in this round (it may pass in a later one, when the generic effect has taken the
+// shape); the generic effect competes as usual (it passes too: its dBIC is below the named one's,
+// which passed) and, if it does not pass its gain test, the round takes neither and the final
+// residual check reports the structure. Thermal applies the same rule in its own choose() with its
+// criterion: a generic effect that validates better by the acceptance margin, (1 - minHeldoutGain)
+// times the name's validation rmse.
 //
 // What differs between the domains is behind LoopDomain: how a model is fitted (linear least
 // squares for setup, Gauss-Newton for matching and kinematic, blocked forward validation for
@@ -41,6 +59,12 @@ class LoopDomain {
  public:
   virtual ~LoopDomain() = default;
 
+  /// The variables of a named effect, in the `against` vocabulary of the residual check (the rule
+  /// "a generic effect of the same variable explains clearly more", header comment). Empty: none.
+  virtual std::vector<std::string> namedVariables(const Candidate& /*named*/) const { return {}; }
+  /// The margin of that rule in score units (the domain's acceptance threshold).
+  virtual double clearMargin() const { return 0.0; }
+
   /// The named candidates still open in this round (not accepted yet, not in `excluded`; the set
   /// may hold kEveryNamedEffect: none). In the order they are listed.
   virtual std::vector<std::string> namedCandidates(const std::set<std::string>& excluded) = 0;
@@ -59,7 +83,9 @@ class LoopDomain {
   virtual std::optional<LoopTrial> tryGeneric(const GenericForm& g, double penalty, int round,
                                               std::size_t slot) = 0;
   /// The domain's choice among the trials (indices = slots), when it has its own rules; nullopt:
-  /// the loop's rule (best score among the passing ones, a passing named effect first). May edit
+  /// the loop's rule (a passing named effect that a generic effect of the same variable explains
+  /// clearly more is not taken; then the best score among the passing ones, a passing named effect
+  /// first). May edit
   /// the trials' evidence and `passes`. Return {-1}: nothing is chosen.
   virtual std::optional<long> choose(std::vector<LoopTrial>& /*trials*/) { return std::nullopt; }
   /// After the loop's rule chose `best`: an earlier trial the domain prefers (setup: tool wear over
@@ -120,6 +146,12 @@ struct LoopStyle {
 std::vector<std::string> openNamedEffects(const std::vector<std::string>& names,
                                           const std::vector<bool>& accepted,
                                           const std::set<std::string>& excluded);
+
+/// The rule of the header comment on the trials of a round: every passing named trial that an
+/// estimable generic trial of one of its variables explains clearly more gets passes = false and the
+/// evidence "; not taken: the generic <g> of the same variable explains clearly more (score <s_g>
+/// against <s_n>)". Returns the number of names not taken.
+std::size_t dropNamesAGenericBeats(const LoopDomain& domain, std::vector<LoopTrial>& trials);
 
 /// One run of the loop (for keepNamedOnlyWhenNeeded, diagnosis.h). `d` carries the domain, units,
 /// baseline and notes set by the caller; the loop adds the effects and the domain finishes it.

@@ -671,6 +671,17 @@ LoopRun runMatching(const ProbePointSet& set, const std::vector<std::size_t>& or
       for (const auto& d : defs_) names.push_back(d.name);
       return openNamedEffects(names, used_, excluded);
     }
+    // The variables of the named effects (loop.h, "a generic effect of the same variable explains
+    // clearly more"): a surface's offset is a function of that surface (surface:<s>, the surface
+    // category); scale and distortion are functions of the position (x, y, z; distortion also of the
+    // polar angle).
+    std::vector<std::string> namedVariables(const Candidate& c) const override {
+      if (c.name.starts_with("surface_offset:")) return {"surface:" + c.name.substr(15), "surface"};
+      if (c.name == "scale") return {"x", "y", "z"};
+      if (c.name == "distortion") return {"x", "y", "angle"};
+      return {};
+    }
+    double clearMargin() const override { return acceptance_.bicThreshold; }
     ResidualCheck roundCheck() override {
       return checkResidual(matchingCheckInput(pb_, current_, vars_, orig_));
     }

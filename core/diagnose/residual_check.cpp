@@ -235,6 +235,7 @@ bool ResidualCheckOptions::isValid(std::string* why) const {
   if (!(maxOutlierFraction >= 0.0 && maxOutlierFraction <= 0.5))
     return no("maxOutlierFraction must be in [0, 0.5]");
   if (!(winsorZ >= 0.0) || !std::isfinite(winsorZ)) return no("winsorZ must be finite and >= 0");
+  if (!(blockZ >= 0.0) || !std::isfinite(blockZ)) return no("blockZ must be finite and >= 0");
   return true;
 }
 
@@ -509,6 +510,83 @@ std::vector<GenericForm> candidateForms(const ResidualVariable& v, const Residua
   return out;
 }
 
+namespace {
+/// P(a run of R or more | m exceedances among N) <= (N - R + 1) prod_{j<R} (m - j) / (N - j).
+double runBound(std::size_t N, std::size_t m, std::size_t R) {
+  if (R < 2 || R > m || R > N) return 1.0;
+  double b = static_cast<double>(N - R + 1);
+  for (std::size_t j = 0; j < R && b > 0.0; ++j) b *= static_cast<double>(m - j) / static_cast<double>(N - j);
+  return std::min(1.0, b);
+}
+}  // namespace
+
+ResidualTest blockTest(const ResidualCheckInput& in, const std::vector<double>& order,
+                       const std::string& name, double blockZ, double listBelow,
+                       std::vector<ResidualBlock>* blocks) {
+  ResidualTest t;
+  t.name = "block";
+  t.against = name;
+  const auto n = static_cast<std::size_t>(in.residual.size());
+  if (n < 8 || order.size() != n) return t;
+  std::vector<double> r(in.residual.data(), in.residual.data() + n);
+  const double med = median(r);
+  std::vector<double> dev(n);
+  for (std::size_t i = 0; i < n; ++i) dev[i] = std::abs(r[i] - med);
+  const double sd = 1.4826 * median(dev);
+  if (!(sd > 0.0)) return t;
+  std::vector<std::size_t> idx(n);
+  std::iota(idx.begin(), idx.end(), 0);
+  std::stable_sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return order[a] < order[b]; });
+  const int C = std::max(1, in.components);
+  const double correction = 2.0 * C;
+  double best = 1.0;
+  for (int c = 0; c < C; ++c) {
+    std::vector<std::size_t> seq;  // the coordinate's observations in the order
+    for (std::size_t i : idx)
+      if (static_cast<int>(i % static_cast<std::size_t>(C)) == c) seq.push_back(i);
+    const std::size_t N = seq.size();
+    for (const double sign : {1.0, -1.0}) {
+      std::size_t m = 0;
+      for (std::size_t i : seq) m += sign * (r[i] - med) / sd > blockZ;
+      // Every run of exceedances: its start and length.
+      std::vector<std::pair<std::size_t, std::size_t>> runs;
+      for (std::size_t k = 0; k < N;) {
+        if (!(sign * (r[seq[k]] - med) / sd > blockZ)) {
+          ++k;
+          continue;
+        }
+        std::size_t e = k;
+        while (e < N && sign * (r[seq[e]] - med) / sd > blockZ) ++e;
+        runs.emplace_back(k, e - k);
+        k = e;
+      }
+      for (const auto& [start, len] : runs) {
+        const double p = std::min(1.0, correction * runBound(N, m, len));
+        if (len >= 2 && p < best) {
+          best = p;
+          t.statistic = static_cast<double>(len);
+          t.dof = static_cast<int>(m);
+        }
+        if (!blocks || len < 2 || !(p <= listBelow)) continue;
+        ResidualBlock b;
+        b.order = name;
+        b.component = c;
+        b.p = p;
+        for (std::size_t k = start; k < start + len; ++k) {
+          const std::size_t i = seq[k];
+          const std::size_t u = in.unitOf.empty() ? i : in.unitOf[i];
+          b.units.push_back(u);
+          b.rows.push_back(u < in.unitRow.size() ? in.unitRow[u] : static_cast<long>(u) + 1);
+          b.meanZ += (r[i] - med) / sd / static_cast<double>(len);
+        }
+        blocks->push_back(std::move(b));
+      }
+    }
+  }
+  t.p = best;
+  return t;
+}
+
 std::vector<Outlier> findOutliers(const ResidualCheckInput& in, const ResidualCheckOptions& o,
                                   double* threshold) {
   std::vector<Outlier> out;
@@ -589,12 +667,19 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
     std::size_t testIndex;
   };
   std::vector<Found> found;
+  std::vector<std::pair<std::size_t, std::vector<ResidualBlock>>> blockRuns;  // test index, its runs
   for (std::size_t vi = 0; vi < in.variables.size(); ++vi) {
     const ResidualVariable& v = in.variables[vi];
     if (v.values.size() != static_cast<std::size_t>(n)) continue;
     if (v.naturalOrder &&
-        std::all_of(v.values.begin(), v.values.end(), [](double x) { return std::isfinite(x); }))
+        std::all_of(v.values.begin(), v.values.end(), [](double x) { return std::isfinite(x); })) {
       c.tests.push_back(ljungBox(r, v.values, o.maxLag, v.name));
+      if (o.blockZ > 0.0) {
+        std::vector<ResidualBlock> runs;
+        c.tests.push_back(blockTest(in, v.values, v.name, o.blockZ, 1.0, &runs));
+        blockRuns.emplace_back(c.tests.size() - 1, std::move(runs));
+      }
+    }
     std::vector<GenericForm> forms = candidateForms(v, o);
     for (GenericForm& f : forms) f.components = std::max(1, in.components);
     // Steps: the best change point of the search, Bonferroni-corrected for the positions tried.
@@ -663,6 +748,26 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
   }
   c.white = std::none_of(c.tests.begin(), c.tests.end(), [](const ResidualTest& t) { return t.rejected; });
 
+  // Blocks: the runs of a rejected block test with a corrected bound at most level / tests, each
+  // once (the same observations may form a block in two orders, e.g. row and time).
+  for (auto& [ti, runs] : blockRuns) {
+    if (!c.tests[ti].rejected) continue;
+    for (ResidualBlock& b : runs) {
+      if (!(b.p <= o.level / static_cast<double>(std::max<std::size_t>(1, m)))) continue;
+      std::vector<std::size_t> key = b.units;
+      std::sort(key.begin(), key.end());
+      const bool seen = std::any_of(c.blocks.begin(), c.blocks.end(), [&](const ResidualBlock& x) {
+        std::vector<std::size_t> k2 = x.units;
+        std::sort(k2.begin(), k2.end());
+        return k2 == key && x.component == b.component;
+      });
+      if (!seen) c.blocks.push_back(std::move(b));
+    }
+  }
+  std::stable_sort(c.blocks.begin(), c.blocks.end(), [](const ResidualBlock& a, const ResidualBlock& b) {
+    return a.units.size() > b.units.size() || (a.units.size() == b.units.size() && a.p < b.p);
+  });
+
   // Structure: per variable, its strongest rejected form.
   std::map<std::size_t, const Found*> perVariable;
   for (const Found& f : found) {
@@ -701,10 +806,23 @@ ResidualCheck checkResidual(const ResidualCheckInput& in, const ResidualCheckOpt
       c.summaryParts.push_back(
           Phrase(" and %1 more", {A::integer(static_cast<long long>(c.structure.size() - 3))}));
   } else {
-    const auto lb =
-        std::find_if(c.tests.begin(), c.tests.end(), [](const ResidualTest& t) { return t.rejected; });
-    c.summaryParts = {Phrase("not white: serially correlated in %1 order (Ljung-Box p = %2)",
-                             {A::name(lb->against), A::number(lb->p, 2)})};
+    const auto lb = std::find_if(c.tests.begin(), c.tests.end(),
+                                 [](const ResidualTest& t) { return t.rejected && t.name == "ljung_box"; });
+    if (lb != c.tests.end())
+      c.summaryParts = {Phrase("not white: serially correlated in %1 order (Ljung-Box p = %2)",
+                               {A::name(lb->against), A::number(lb->p, 2)})};
+    else
+      c.summaryParts = {Phrase("not white")};
+  }
+  if (!c.blocks.empty()) {
+    const ResidualBlock& b = c.blocks.front();
+    c.summaryParts.push_back(
+        Phrase("; %1 consecutive observations in %2 order off the rest (rows %3 to %4, mean robust z %5)",
+               {A::integer(static_cast<long long>(b.units.size())), A::name(b.order),
+                A::integer(b.rows.front()), A::integer(b.rows.back()), A::number(b.meanZ, 3)}));
+    if (c.blocks.size() > 1)
+      c.summaryParts.push_back(
+          Phrase(" and %1 more blocks", {A::integer(static_cast<long long>(c.blocks.size() - 1))}));
   }
   c.summary = english(c.summaryParts);
 
@@ -805,7 +923,9 @@ std::vector<GenericForm> genericCandidates(const ResidualCheck& check, const std
 }
 
 double genericSearchPenalty(const ResidualCheck& check) {
-  return 2.0 * std::log(std::max<double>(2.0, static_cast<double>(check.tests.size())));
+  const auto searched = std::count_if(check.tests.begin(), check.tests.end(),
+                                      [](const ResidualTest& t) { return t.name != "block"; });
+  return 2.0 * std::log(std::max<double>(2.0, static_cast<double>(searched)));
 }
 
 const ResidualVariable* findVariable(const std::vector<ResidualVariable>& variables,
@@ -820,7 +940,7 @@ nlohmann::json toJson(const ResidualCheck& c) {
   for (const ResidualTest& t : c.tests) {
     nlohmann::json j = {
         {"name", t.name}, {"statistic", t.statistic}, {"p", t.p}, {"dof", t.dof}, {"rejected", t.rejected}};
-    if (t.name == "ljung_box")
+    if (t.name == "ljung_box" || t.name == "block")
       j["order"] = t.against;
     else {
       j["against"] = t.against;
@@ -845,14 +965,24 @@ nlohmann::json toJson(const ResidualCheck& c) {
     j["id"] = o.id ? nlohmann::json(*o.id) : nlohmann::json(nullptr);
     outliers.push_back(std::move(j));
   }
-  return {{"white", c.white},
-          {"level", c.level},
-          {"tests", tests},
-          {"structure", structure},
-          {"outliers", outliers},
-          {"outlier_threshold", c.outlierThreshold},
-          {"observations", c.observations},
-          {"summary", c.summary}};
+  nlohmann::json blocks = nlohmann::json::array();
+  for (const ResidualBlock& b : c.blocks)
+    blocks.push_back({{"order", b.order},
+                      {"component", b.component},
+                      {"rows", b.rows},
+                      {"length", b.units.size()},
+                      {"mean_robust_z", b.meanZ},
+                      {"p", b.p}});
+  nlohmann::json j = {{"white", c.white},
+                      {"level", c.level},
+                      {"tests", tests},
+                      {"structure", structure},
+                      {"outliers", outliers},
+                      {"outlier_threshold", c.outlierThreshold},
+                      {"observations", c.observations},
+                      {"summary", c.summary}};
+  if (!blocks.empty()) j["blocks"] = std::move(blocks);
+  return j;
 }
 
 }  // namespace metrofit::diagnose

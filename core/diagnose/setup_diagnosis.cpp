@@ -275,6 +275,15 @@ LoopRun runSetup(const setup::Model& model, const setup::Measurements& measureme
       for (const auto& d : defs_) names.push_back(d.name);
       return openNamedEffects(names, used_, excluded);
     }
+    // The variable of tool_wear:T and drift:T (loop.h, "a generic effect of the same variable
+    // explains clearly more"): datum:T, the part number weighted by the datum's gains (both are that
+    // datum's gain times a linear function of the part number or of time).
+    std::vector<std::string> namedVariables(const Candidate& c) const override {
+      for (const CandidateDef& d : defs_)
+        if (d.name == c.name) return {"datum:" + d.name.substr(d.name.find(':') + 1)};
+      return {};
+    }
+    double clearMargin() const override { return o_.acceptance.bicThreshold; }
     ResidualCheck roundCheck() override {
       return checkResidual(setupCheckInput(current_.residual, X_, Zacc_, vars_));
     }

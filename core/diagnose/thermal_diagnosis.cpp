@@ -1558,7 +1558,9 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
     }
 
     // "A named effect must explain what it was chosen for": a passing named effect is rejected when a
-    // passing generic effect of the same variable validates better by the acceptance margin
+    // generic effect of the same variable validates better by the acceptance margin (loop.h: the
+    // thermal form of "a generic effect of the same variable explains clearly more"; the generic one
+    // need not pass: then neither is taken and the final check reports the structure)
     // (minHeldoutGain; a tie, e.g. drift and a linear function of time, keeps the name); named
     // effects are preferred to generic ones otherwise (the generic one is kept for what no name
     // explains). The choice is repeated while the chosen name fails to explain what it was chosen for.
@@ -1578,7 +1580,8 @@ Diagnosis diagnoseThermal(const ThermalLog& log, const ThermalDiagnosisOptions& 
               const auto alt = std::find(names.begin(), names.end(), "unexplained:" + var);
               if (!var.empty() && alt != names.end()) {
                 const auto j = static_cast<std::size_t>(alt - names.begin());
-                if (j < fits.size() && passed[j] && fits[j].cv < (1.0 - o.minHeldoutGain) * fits[i].cv) {
+                if (j < fits.size() && fits[j].ok && fits[j].cvOk &&
+                    fits[j].cv < (1.0 - o.minHeldoutGain) * fits[i].cv) {
                   passed[i] = false;
                   trials[i].candidate.addEvidence(
                       {Phrase("; rejected: the generic %1 validates better (%2 against %3%4)",

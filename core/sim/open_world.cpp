@@ -62,6 +62,9 @@ struct Draft {
   Eigen::VectorXd shape;     // n observations (zero for clean data)
   Eigen::MatrixXd declared;  // n x p
   OpenWorldTruth truth;
+  /// > 0: the amplitude is this * ratio * sigma (a block of points: its size, not its visible rms,
+  /// is what the case states), else sized by the visible rms.
+  double sigmasPerRatio = 0.0;
 };
 
 Draft startDraft(OpenWorldDomain domain, const std::string& name, double ratio, const OpenWorldOptions& o,
@@ -98,7 +101,9 @@ Eigen::VectorXd offColumns(const Eigen::MatrixXd& D, const Eigen::VectorXd& v) {
 Eigen::VectorXd finish(Draft& d, std::uint64_t seed, const OpenWorldOptions& o) {
   OpenWorldTruth& t = d.truth;
   const double sigma = t.noiseSigma;
-  if (t.kind == OpenCaseKind::Effect) {
+  if (t.kind == OpenCaseKind::Effect && d.sigmasPerRatio > 0.0) {
+    t.amplitude = d.sigmasPerRatio * t.ratio * sigma;
+  } else if (t.kind == OpenCaseKind::Effect) {
     const double visibleShape = rms(offColumns(d.declared, d.shape));
     if (!(visibleShape > 1e-12 * std::max(1.0, rms(d.shape))))
       fail("case", "the effect of case '" + t.caseName + "' is absorbed by the declared model");
@@ -179,24 +184,26 @@ std::vector<OpenWorldCaseInfo> openWorldCases(OpenWorldDomain domain) {
       c = {{"sensor_rezero", K::Effect, "step"},
            {"coolant_cycle", K::Effect, "periodic"},
            {"quadratic_T2", K::Effect, "smooth"},
+           {"centrifugal_rpm", K::Effect, "smooth"},
            {"outlier_spike", K::Outlier, "spike"}};
       break;
     case OpenWorldDomain::Kinematic:
-      c = {{"thermal_drift", K::Effect, "smooth"},
-           {"reversal_spike", K::Effect, "smooth"},
-           {"straightness_bow", K::Effect, "smooth"},
-           {"outlier_point", K::Outlier, "spike"}};
+      c = {{"thermal_drift", K::Effect, "smooth"},    {"reversal_spike", K::Effect, "smooth"},
+           {"straightness_bow", K::Effect, "smooth"}, {"scale_damage", K::Effect, "block"},
+           {"local_bump", K::Effect, "smooth"},       {"outlier_point", K::Outlier, "spike"}};
       break;
     case OpenWorldDomain::Setup:
       c = {{"reclamp_step", K::Effect, "step"},
            {"fixture_alternation", K::Effect, "level"},
            {"dimension_wear", K::Effect, "smooth"},
+           {"tool_runin", K::Effect, "smooth"},
            {"outlier_row", K::Outlier, "spike"}};
       break;
     case OpenWorldDomain::Matching:
       c = {{"surface_bow", K::Effect, "smooth"},
            {"plate_bending", K::Effect, "smooth"},
            {"probe_lobing", K::Effect, "periodic"},
+           {"surface_tilt", K::Effect, "smooth"},
            {"outlier_point", K::Outlier, "spike"}};
       break;
   }
@@ -211,6 +218,13 @@ OpenThermalCase openWorldThermal(const std::string& name, double ratio, std::uin
   ThermalEffectsOptions base;  // the declared model exact, no effect, no noise
   base.seed = seed;
   base.noiseUm = 0.0;
+  // centrifugal_rpm: a stepped speed programme (seven speeds, each in both halves of the log), so
+  // that a function of the speed has a shape and not just two levels.
+  if (name == "centrifugal_rpm")
+    base.sensors.programme = {{0.0, 0.0},      {10.0, 1500.0},  {40.0, 3000.0},  {70.0, 4500.0},
+                              {100.0, 6000.0}, {130.0, 7500.0}, {160.0, 9000.0}, {190.0, 4500.0},
+                              {220.0, 7500.0}, {250.0, 3000.0}, {280.0, 6000.0}, {310.0, 1500.0},
+                              {340.0, 9000.0}, {370.0, 0.0},    {420.0, 4500.0}};
   OpenThermalCase out;
   out.log = simulateThermalEffects(base);
   out.target = base.target;
@@ -252,6 +266,17 @@ OpenThermalCase openWorldThermal(const std::string& name, double ratio, std::uin
     }
     tr.against = {"T2"};
     tr.description = fmt("%+.0f ((T2 - T2_0) / %.2f K)^2", sign, range);
+  } else if (name == "centrifugal_rpm") {
+    const std::vector<double>& x = out.log.channel("spindle_rpm").values;
+    double top = 0.0;
+    for (double v : x) top = std::max(top, std::abs(v));
+    const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double u = x[k] / top;
+      d.shape(static_cast<Eigen::Index>(k)) = sign * u * u;
+    }
+    tr.against = {"spindle_rpm"};
+    tr.description = fmt("centrifugal growth %+.0f (rpm / %.0f)^2", sign, top);
   } else if (name == "outlier_spike") {
     const std::size_t k = static_cast<std::size_t>(rng.below(n));
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
@@ -328,6 +353,40 @@ OpenKinematicCase openWorldKinematic(const std::string& name, double ratio, std:
     }
     tr.against = {"x", "y", "angle"};
     tr.description = fmt("X guideway bow: y %+.0f ((x - cx) / R)^2", sign);
+  } else if (name == "scale_damage") {
+    // A damaged stretch of the X scale: the X reading is off by A while the head is over it. The
+    // stretch is the x range of ten consecutive points of the first loop's upper half (path points
+    // k0 .. k0 + 9, one point per 360 / n deg), so every pass over it, upper and lower half of both
+    // loops, has ten consecutive points off.
+    const double step = 360.0 / static_cast<double>(c.pointsPerLoop);
+    const auto k0 = static_cast<long>(20.0 / step) +
+                    static_cast<long>(rng.below(static_cast<std::uint64_t>(std::max(1.0, 130.0 / step))));
+    const double a0 = (c.startAngleDeg + (static_cast<double>(k0) - 0.5) * step) * kPi / 180.0;
+    const double a1 = (c.startAngleDeg + (static_cast<double>(k0) + 9.5) * step) * kPi / 180.0;
+    const double xHi = c.centreMm.x() + c.radiusMm * std::cos(a0);
+    const double xLo = c.centreMm.x() + c.radiusMm * std::cos(a1);
+    const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
+    for (std::size_t k = 0; k < n; ++k)
+      if (cmd[k].x() > xLo && cmd[k].x() < xHi) {
+        set(k, Eigen::Vector2d(sign, 0.0));
+        tr.blockUnits.push_back(k);
+        tr.blockRows.push_back(static_cast<long>(k) + 1);
+      }
+    d.sigmasPerRatio = 24.0 / 5.0;  // 24 sigma at the default ratio 5
+    tr.against = {"x", "angle", "row"};
+    tr.description = fmt("damaged X scale over x %.2f .. %.2f mm, sign %+.0f", xLo, xHi, sign) +
+                     fmt(", %.0f points", static_cast<double>(tr.blockUnits.size()));
+  } else if (name == "local_bump") {
+    // A worn spot of the X ball screw: the X error rises and falls over a short stretch of x, a bump
+    // exp(-((x - x0) / w)^2 / 2) with w = 8 % of R at x0 uniform within +-0.6 R of the centre.
+    const double x0 = c.centreMm.x() + c.radiusMm * rng.uniform(-0.6, 0.6), w = 0.08 * c.radiusMm;
+    const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double u = (cmd[k].x() - x0) / w;
+      set(k, Eigen::Vector2d(sign * std::exp(-0.5 * u * u), 0.0));
+    }
+    tr.against = {"x", "angle"};
+    tr.description = fmt("X error bump at x = %.1f mm, width %.1f mm, sign %+.0f", x0, w, sign);
   } else if (name == "outlier_point") {
     const std::size_t k = static_cast<std::size_t>(rng.below(n));
     const double theta = rng.uniform(0.0, 2.0 * kPi);
@@ -431,6 +490,24 @@ OpenSetupCase openWorldSetup(const setup::Model& model, const std::string& name,
     tr.against = {"dimension:" + model.dimensions[q].id, "part", "time", "row"};
     tr.description =
         "dimension " + model.dimensions[q].id + fmt(" wears as %+.0f ((p - 1) / (P - 1))^2", sign);
+  } else if (name == "tool_runin") {
+    // A new tool runs in: its effective length changes fast over the first parts and then settles,
+    // 1 - exp(-(p - 1) / p0) with p0 uniform in [1.5, 3] parts (tool_wear is a constant rate).
+    std::vector<Eigen::Index> tools;
+    for (Eigen::Index i = 0; i < G.cols(); ++i)
+      if (model.setup[static_cast<std::size_t>(i)].kind == setup::DatumKind::Tool &&
+          G.col(i).cwiseAbs().maxCoeff() > 0.0)
+        tools.push_back(i);
+    const Eigen::Index i = tools.empty() ? pickDatum(rng, false) : tools[rng.below(tools.size())];
+    const double p0 = rng.uniform(1.5, 3.0);
+    const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
+    for (std::size_t r = 0; r < n; ++r)
+      d.shape(static_cast<Eigen::Index>(r)) = sign * G(static_cast<Eigen::Index>(m.rows[r].dimension), i) *
+                                              (1.0 - std::exp(-static_cast<double>(partNo[r] - 1) / p0));
+    const std::string id = model.setup[static_cast<std::size_t>(i)].id;
+    tr.against = {"datum:" + id, "part", "time", "row"};
+    for (auto& s2 : reaches(i)) tr.against.push_back(s2);
+    tr.description = "tool " + id + fmt(" runs in as %+.0f (1 - exp(-(p - 1) / %.2f))", sign, p0);
   } else if (name == "outlier_row") {
     const std::size_t r = static_cast<std::size_t>(rng.below(n));
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
@@ -521,6 +598,31 @@ OpenMatchingCase openWorldMatching(const std::string& name, double ratio, std::u
     }
     tr.against = {"normal", "direction", "nx", "ny"};
     tr.description = fmt("three-lobed probe pre-travel, lobe at %.0f deg", phi0 * 180.0 / kPi);
+  } else if (name == "surface_tilt") {
+    // One surface is machined tilted (a worn fixture face): its deviation along the normal grows
+    // linearly along its longest extent, A u with u in [-1, 1] and zero mean on the surface (its
+    // offset is the catalogue's surface_offset; the tilt is what no entry models).
+    const char* surfaces[3] = {"ruled+", "ruled-", "plane"};
+    const std::string s2 = surfaces[rng.below(3)];
+    std::vector<std::size_t> on;
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+    for (std::size_t i = 0; i < n; ++i)
+      if (pts[i].surface == s2) {
+        on.push_back(i);
+        lo = lo.cwiseMin(pts[i].nominal);
+        hi = hi.cwiseMax(pts[i].nominal);
+      }
+    Eigen::Index axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    const double mid = 0.5 * (lo(axis) + hi(axis)), half = 0.5 * (hi(axis) - lo(axis));
+    const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
+    double mean = 0.0;
+    for (std::size_t i : on) mean += (pts[i].nominal(axis) - mid) / half / static_cast<double>(on.size());
+    for (std::size_t i : on)
+      d.shape(static_cast<Eigen::Index>(i)) = sign * ((pts[i].nominal(axis) - mid) / half - mean);
+    tr.against = {"surface:" + s2};
+    tr.description =
+        "tilt of surface " + s2 + " along " + std::string(1, "xyz"[axis]) + fmt(", sign %+.0f", sign);
   } else if (name == "outlier_point") {
     const std::size_t i = static_cast<std::size_t>(rng.below(n));
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;

@@ -41,6 +41,10 @@
 //                   [30, 60] min, phi uniform; no logged column sees it (form periodic; time, row);
 //   quadratic_T2    a non-linear thermal expansion (a gap closing as the housing warms):
 //                   + A ((T2 - T2_0) / max |T2 - T2_0|)^2 (form smooth; against T2);
+//   centrifugal_rpm the spindle nose grows with the centrifugal force: + A (rpm / rpm_max)^2, on a
+//                   stepped speed programme (0, 1500 .. 9000 rpm, each speed in both halves of the
+//                   log); the nearest catalogue name is input:spindle_rpm, linear (form smooth;
+//                   against spindle_rpm);
 //   outlier_spike   one row (uniform in the rows) + or - the gross error (a spike of the gauge);
 // KINEMATIC: the circular test of circular_sim.h (R 100 mm, 360 points per loop, CCW then CW,
 // default actuator errors), per coordinate noise; sigma 0.5 um. Rows k = 0..n-1 are in time order
@@ -57,6 +61,14 @@
 //   straightness_bow the X guideway is bowed: y += A ((x_cmd - c_x) / R)^2, sign random; the
 //                   linear part is squareness (declared) (smooth; against x, and y and angle: on a
 //                   circle (x / R)^2 = 1 - (y / R)^2, a second harmonic of the path angle);
+//   scale_damage    a damaged stretch of the X scale: the X reading is off by A (sign random) over
+//                   the x range of ten consecutive points of the first loop's upper half (start
+//                   uniform in 20 .. 150 deg), so every pass over it (both halves of both loops: 4 x
+//                   10 points) is a block of ten consecutive points; A = 4.8 r sigma (24 sigma at
+//                   r = 5), not sized by its visible rms (form block; against x, angle, row; the
+//                   points hit in OpenWorldTruth::blockUnits / blockRows);
+//   local_bump      a worn spot of the X ball screw: the X error + A exp(-((x_cmd - x0) / w)^2 / 2),
+//                   w = 0.08 R, x0 uniform within +-0.6 R of the centre (smooth; against x, angle);
 //   outlier_point   one point (uniform) displaced by the gross error in a uniform direction;
 // SETUP: the CMM report series of effects_setup.h on the given model without effects, rounding or
 // noise (w1 = 0.03 mm setup errors drawn from the seed, parts 1..P (default 20), 12 min per part with
@@ -72,6 +84,10 @@
 //   dimension_wear  one dimension q* (uniform) wears non-linearly (a form tool that wears faster as
 //                   it dulls): + A ((p - 1) / (P - 1))^2 on q* only (smooth; dimension:<q*>, part,
 //                   time, row);
+//   tool_runin      a new tool runs in: its datum (uniform among the tool data that reach a
+//                   dimension) changes as A (1 - exp(-(p - 1) / p0)), p0 uniform in [1.5, 3] parts,
+//                   + G[q][i] times that; the nearest catalogue name is tool_wear:<tool>, a constant
+//                   rate (smooth; against datum:<tool>, part, time, row and every dimension:<d>);
 //   outlier_row     one report row (uniform) off by the gross error (a CMM probing a chip);
 // MATCHING: the S-piece of probe_sim.h (sPieceDefaults posture, 40 points with normals), deviations
 // along the (rotated) nominal normal; sigma 0.006 mm.
@@ -85,6 +101,9 @@
 //                   direction, deviation -A sqrt(n_x^2 + n_y^2) cos(3 (phi_n - phi0)), phi_n the
 //                   azimuth of the nominal normal, phi0 uniform (periodic; against normal,
 //                   direction, and the normal's components nx, ny);
+//   surface_tilt    one surface (uniform among ruled+, ruled-, plane) is tilted: A (u - mean u)
+//                   along its longest extent u in [-1, 1] (zero mean: no surface offset) (smooth;
+//                   against surface:<s>);
 //   outlier_point   one point (uniform) off along its normal by the gross error;
 // CLEAN (every domain): clean_gauss, clean_laplace, clean_t5: the clean data with that noise.
 //
@@ -120,7 +139,7 @@ struct OpenWorldCaseInfo {
   std::string name;
   OpenCaseKind kind = OpenCaseKind::Effect;
   std::string form;  ///< form of the structure (docs/file-formats.md#residual_check), "spike" for a gross
-                     ///< error, "" clean
+                     ///< error, "block" for a block of points off the rest, "" clean
 };
 
 /// The cases of a domain, effects first, then the gross error, then the clean data.
@@ -154,6 +173,10 @@ struct OpenWorldTruth {
   /// Steps and gross errors: where in the data order they sit, 0 (first row / part) to 1 (last);
   /// e.g. a thermal step at 0.6 lies in the held-out rows of a fit on the first half.
   std::optional<double> position;
+  /// A block of points off the rest (kinematic scale_damage): the units hit (0-based) and their
+  /// 1-based data rows.
+  std::vector<std::size_t> blockUnits;
+  std::vector<long> blockRows;
   std::string description;  ///< the drawn parameters in words
 };
 

@@ -22,6 +22,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <stdexcept>
 
 #include "core/diagnose/kinematic_diagnosis.h"
@@ -90,6 +91,8 @@ struct Trial {
   double amplitude = 0.0;       // the simulated effect's amplitude (data units)
   double position = -1.0;       // a step's or gross error's place in the data order (0..1), else -1
   bool grossCase = false;       // the case is a gross error
+  bool blockCase = false;       // the case is a block of points off the rest (truth.blockRows)
+  bool blockReported = false;   // >= 90 % of the block's rows are among the outliers or blocks
   std::vector<std::string> catalogueNames;
   std::string strongest;  // against of the strongest structure (or of the generic effect)
 };
@@ -107,6 +110,8 @@ Trial judge(const Result& r) {
   t.amplitude = r.truth.amplitude;
   t.position = r.truth.position.value_or(-1.0);
   t.grossCase = r.truth.kind == OpenCaseKind::Outlier;
+  t.blockCase = !r.truth.blockRows.empty();
+  std::set<long> reportedRows;  // rows of the outliers and blocks the checks report
   for (const auto* c : d.accepted()) {
     if (c->generic || c->name.rfind("unexplained:", 0) == 0) {
       t.generic = true;
@@ -132,6 +137,8 @@ Trial judge(const Result& r) {
       t.rightVariable |= inTruth(r.truth, rc.structure.front().against);
     }
     t.outliers += rc.outliers.size();
+    for (const auto& o : rc.outliers) reportedRows.insert(o.row.value_or(static_cast<long>(o.unit) + 1));
+    for (const auto& b : rc.blocks) reportedRows.insert(b.rows.begin(), b.rows.end());
     const OpenWorldTruth& w = r.truth;
     for (const auto& o : rc.outliers) {
       if (!w.outlierUnit) break;
@@ -143,6 +150,11 @@ Trial judge(const Result& r) {
       t.outlierListed |= rowOrUnit || id || partDim;
     }
   }
+  if (t.blockCase) {
+    std::size_t hit = 0;
+    for (long row : r.truth.blockRows) hit += reportedRows.count(row);
+    t.blockReported = 10 * hit >= 9 * r.truth.blockRows.size();
+  }
   return t;
 }
 
@@ -150,6 +162,7 @@ struct Tally {
   int runs = 0, errors = 0, noCheck = 0;
   int detected = 0, generic = 0, flaggedOnly = 0, catalogue = 0, rightVariable = 0;
   int falseFlag = 0, outliersListed = 0, truthListed = 0, notWhite = 0, anyAccepted = 0;
+  int blockRuns = 0, blockReported = 0;
   std::map<std::string, int> catalogueNames, strongest;
   std::vector<double> finalOverSigma, amplitude;
   // Steps and gross errors by their place in the data: [0] first half, [1] second half (a thermal
@@ -182,6 +195,8 @@ struct Tally {
     anyAccepted += accepted;
     outliersListed += t.outliers > 0;
     truthListed += t.outlierListed;
+    blockRuns += t.blockCase;
+    blockReported += t.blockReported;
     for (const auto& n : t.catalogueNames) ++catalogueNames[n];
     if (!t.strongest.empty()) ++strongest[t.strongest];
   }
@@ -227,6 +242,8 @@ nlohmann::json tallyJson(const Tally& t) {
           {"any_accepted", t.anyAccepted},
           {"outliers_listed", t.outliersListed},
           {"gross_error_listed", t.truthListed},
+          {"block_runs", t.blockRuns},
+          {"block_reported", t.blockReported},
           {"catalogue_names", t.catalogueNames},
           {"strongest_against", t.strongest},
           {"final_rmse_over_sigma_median", median(t.finalOverSigma)},
@@ -234,6 +251,17 @@ nlohmann::json tallyJson(const Tally& t) {
           {"first_half", {{"runs", t.halfRuns[0]}, {"hits", t.halfHits[0]}}},
           {"second_half", {{"runs", t.halfRuns[1]}, {"hits", t.halfHits[1]}}},
           {"seconds", t.seconds}};
+}
+
+/// The cases added for the loop's two misses (issue 32 item 5) and their own targets: found (not
+/// white, or an effect accepted, or the block's rows reported) >= 95 %; a catalogue name accepted
+/// (the false effect: the nearest name for a shape no entry models, or a name for a block of points)
+/// <= 2 %; and for a block, its rows reported (>= 90 % of them among the outliers or blocks of the
+/// check) >= 95 %.
+const std::set<std::string>& issue32Cases() {
+  static const std::set<std::string> names{"centrifugal_rpm", "scale_damage", "local_bump", "tool_runin",
+                                           "surface_tilt"};
+  return names;
 }
 
 }  // namespace
@@ -252,6 +280,7 @@ nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& o) {
   for (OpenWorldDomain domain : domains) {
     const Runner run = runnerFor(domain, o.sourceDir);
     Tally effects, open, clean, gross;
+    std::vector<std::pair<std::string, Tally>> added;  // issue32Cases of the domain
     nlohmann::json cases = nlohmann::json::object();
     for (const OpenWorldCaseInfo& info : openWorldCases(domain)) {
       Tally t;
@@ -277,6 +306,7 @@ nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& o) {
       if (info.kind == OpenCaseKind::Clean) note("false flags " + fixed1(pct(t.falseFlag, t.runs)) + " %");
       if (info.kind == OpenCaseKind::Outlier)
         note("gross error listed " + fixed1(pct(t.truthListed, t.runs)) + " %");
+      if (t.blockRuns) note("block rows reported " + fixed1(pct(t.blockReported, t.blockRuns)) + " %");
       if (info.kind != OpenCaseKind::Clean && !t.amplitude.empty()) {
         char buf[64];
         std::snprintf(buf, sizeof buf, "A %.3g %s", median(t.amplitude),
@@ -317,6 +347,7 @@ nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& o) {
                                                        : "effect";
       j["form"] = info.form;
       if (!firstError.empty()) j["first_error"] = firstError;
+      if (issue32Cases().count(info.name)) added.emplace_back(info.name, t);
       cases[info.name] = std::move(j);
     }
     const double a = pct(effects.detected, effects.runs), b = pct(open.catalogue, open.runs),
@@ -339,6 +370,15 @@ nlohmann::json benchDiagnoseOpen(const OpenBenchOptions& o) {
                 effects.noCheck + clean.noCheck + gross.noCheck
                     ? "   [results without residual_check counted as white]"
                     : "");
+    for (const auto& [name, t] : added) {
+      std::printf(
+          "diagnose-open  %-9s (e) %s: found %.1f %% (target >= 95 %%), catalogue name %.1f %% (target <= 2 "
+          "%%)",
+          toString(domain), name.c_str(), pct(t.detected, t.runs), pct(t.catalogue, t.runs));
+      if (t.blockRuns)
+        std::printf(", block rows reported %.1f %% (target >= 95 %%)", pct(t.blockReported, t.blockRuns));
+      std::printf("\n");
+    }
     out["domains"][toString(domain)] = {
         {"cases", std::move(cases)},
         {"structure_flagged_or_explained_rate", a / 100.0},

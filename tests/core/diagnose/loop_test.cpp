@@ -22,6 +22,14 @@ class Scripted final : public LoopDomain {
   bool xTaken = false;
   std::vector<std::string> acceptedNames;
   int finished = 0;
+  std::map<std::string, std::vector<std::string>> variablesOf;  ///< named effect -> its variables
+  double margin = 10.0;
+
+  std::vector<std::string> namedVariables(const Candidate& c) const override {
+    const auto it = variablesOf.find(c.name);
+    return it == variablesOf.end() ? std::vector<std::string>{} : it->second;
+  }
+  double clearMargin() const override { return margin; }
 
   std::vector<std::string> namedCandidates(const std::set<std::string>& excluded) override {
     std::vector<std::string> out;
@@ -97,6 +105,52 @@ TEST(SharedLoop, NamedBeforeGenericThenBestScoreUntilNonePasses) {
   EXPECT_DOUBLE_EQ(r.bic, 100.0 + 3 * 2.0);
   EXPECT_EQ(s.finished, 1);
   EXPECT_FALSE(r.stopped);
+}
+
+// Issue 32 item 5 (a): a named effect is not accepted in a round where a generic effect of the
+// same variable explains clearly more (its score lower by more than the domain's margin).
+TEST(SharedLoop, AGenericOfTheSameVariableThatExplainsClearlyMoreIsTakenBeforeTheName) {
+  Scripted s;
+  s.named = {{"n", -20.0}, {"m", -15.0}};
+  s.variablesOf = {{"n", {"x"}}};  // "m" is of another variable
+  s.genericScore = -100.0;         // 80 below "n": clearly more than the margin 10
+  LoopStyle style;
+  style.listEveryRound = true;
+  style.markAccepted = true;
+  const LoopRun r = runLoop(s, style, {}, nullptr, Diagnosis{});
+  // Round 0: "n" is not taken, "m" (no generic of its variable) is; the generic of x in round 1.
+  ASSERT_GE(s.acceptedNames.size(), 2u);
+  EXPECT_EQ(s.acceptedNames[0], "m");
+  EXPECT_EQ(s.acceptedNames[1], "unexplained:x");
+  const Candidate& n0 = r.diagnosis.effects[1];
+  ASSERT_EQ(n0.name, "n");
+  EXPECT_FALSE(n0.accepted);
+  EXPECT_NE(
+      n0.evidence.find("not taken: the generic unexplained:x of the same variable explains clearly more"),
+      std::string::npos)
+      << n0.evidence;
+  // Without "m": the generic is accepted in the first round, and "n" may pass afterwards.
+  Scripted t;
+  t.named = {{"n", -20.0}};
+  t.variablesOf = {{"n", {"x"}}};
+  t.genericScore = -100.0;
+  runLoop(t, LoopStyle{}, {}, nullptr, Diagnosis{});
+  EXPECT_EQ(t.acceptedNames, (std::vector<std::string>{"unexplained:x", "n"}));
+}
+
+TEST(SharedLoop, AGenericWithinTheMarginLeavesTheNameFirst) {
+  Scripted s;
+  s.named = {{"n", -20.0}};
+  s.variablesOf = {{"n", {"x"}}};
+  s.genericScore = -29.0;  // 9 below: not clearly more with the margin 10
+  runLoop(s, LoopStyle{}, {}, nullptr, Diagnosis{});
+  EXPECT_EQ(s.acceptedNames, (std::vector<std::string>{"n", "unexplained:x"}));
+  Scripted o;  // a generic of another variable never displaces a name
+  o.named = {{"n", -20.0}};
+  o.variablesOf = {{"n", {"y"}}};
+  o.genericScore = -100.0;
+  runLoop(o, LoopStyle{}, {}, nullptr, Diagnosis{});
+  EXPECT_EQ(o.acceptedNames, (std::vector<std::string>{"n", "unexplained:x"}));
 }
 
 TEST(SharedLoop, EveryRoundListedAndMarked) {
