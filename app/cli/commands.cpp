@@ -6,7 +6,9 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLibraryInfo>
 #include <QLocale>
+#include <QTranslator>
 #include <clocale>
 #include <cstdio>
 #include <functional>
@@ -113,11 +115,32 @@ int runDemo(const DemoArgs& a) {
 struct ReportArgs {
   std::string project;
   std::string out;
+  std::string lang = "en";
 };
+
+/// The report's sentences in LANGUAGE ("en" needs nothing). Its numbers keep the decimal point in
+/// every language, as the NC blocks and CMM protocols it quotes do.
+void useReportLanguage(QApplication& app, const std::string& language) {
+  if (language == "en") return;
+  const QString code = QString::fromStdString(language);
+  auto* qt = new QTranslator(&app);
+  if (qt->load(QStringLiteral("qtbase_") + code, QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+    QCoreApplication::installTranslator(qt);
+  else
+    delete qt;
+  auto* own = new QTranslator(&app);
+  if (!own->load(QStringLiteral(":/i18n/metrofit_") + code)) {
+    delete own;
+    throw ValidationError(ErrorContext{{}, 0, 0, "--lang"},
+                          "no translation for '" + language + "' is built in");
+  }
+  QCoreApplication::installTranslator(own);
+}
 
 int runReport(const ReportArgs& a) {
   const Project project = loadProject(a.project);
   auto app = makeQtApp();
+  useReportLanguage(*app, a.lang);
   ReportOptions options;
   options.projectPath = QString::fromStdString(a.project);
   const ReportSummary s = writeReport(project, QString::fromStdString(a.out), options);
@@ -294,6 +317,10 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
     auto* sub = app.add_subcommand("report", "Write the PDF report of a saved project");
     existingFile(sub->add_option("--project", a->project, "Project file (.metrofit)")->required());
     sub->add_option("--out", a->out, "PDF file to write")->required();
+    sub->add_option("--lang", a->lang,
+                    "Language of the report's text: en, de or pl (numbers keep the decimal point)")
+        ->check(CLI::IsMember({"en", "de", "pl"}))
+        ->capture_default_str();
     sub->callback([a] { g_selected = [a]() -> int { return runReport(*a); }; });
   }
   registerSetupCommand(app);

@@ -32,8 +32,22 @@ QString effectiveLanguage(const QString& choice) {
   return QStringLiteral("en");
 }
 
+namespace {
+QString& installedLanguage() {
+  static QString language = QStringLiteral("en");
+  return language;
+}
+}  // namespace
+
+QString currentLanguage() {
+  return installedLanguage();
+}
+
 bool installTranslators(QCoreApplication& app, const QString& language) {
-  if (language == QLatin1String("en")) return true;
+  if (language == QLatin1String("en")) {
+    installedLanguage() = language;
+    return true;
+  }
   auto* qt = new QTranslator(&app);
   if (qt->load(QStringLiteral("qtbase_") + language, QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
     QCoreApplication::installTranslator(qt);
@@ -46,6 +60,7 @@ bool installTranslators(QCoreApplication& app, const QString& language) {
     return false;
   }
   QCoreApplication::installTranslator(own);
+  installedLanguage() = language;
   return true;
 }
 

@@ -30,5 +30,8 @@ bool useLanguage(QCoreApplication& app, const QString& language);
 /// `metrofit --lang CODE`: for this run only, the language "en", "de" or "pl" (its translators and
 /// its locale for the numbers shown). An unknown code is reported on stderr and returns false.
 bool applyLanguageOption(QCoreApplication& app, const QString& code);
+/// The language whose translators useLanguage() or applyLanguageOption() installed last ("en" before
+/// either ran): Export report writes the PDF in it (`metrofit-cli report --lang`).
+QString currentLanguage();
 
 }  // namespace metrofit

@@ -1,5 +1,7 @@
 #include "app/gui/reportexporter.h"
 
+#include "app/gui/language.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -62,8 +64,9 @@ bool ReportExporter::start(const ProjectDocument& document, const QString& pdfPa
   env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));  // the report needs no display
   process_->setProcessEnvironment(env);
   process_->setProgram(cliPath_);
+  // The report speaks the language the window does (numbers keep the decimal point in every one).
   process_->setArguments({QStringLiteral("report"), QStringLiteral("--project"), projectFile,
-                          QStringLiteral("--out"), pdfPath_});
+                          QStringLiteral("--out"), pdfPath_, QStringLiteral("--lang"), currentLanguage()});
   connect(process_, &QProcess::finished, this, &ReportExporter::onProcessFinished);
   connect(process_, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
     if (error == QProcess::FailedToStart) {

@@ -105,6 +105,36 @@ TEST(AppliedReportCli, StudiesOnOtherDatasetsKeepTheDeclaredModel) {
   }
 }
 
+TEST(AppliedReportCli, ReportSpeaksTheLanguageAskedFor) {
+  // The GUI's Export report passes its own language (--lang); the numbers keep the decimal point.
+  const TempDir tmp;
+  writeProject(tmp, kWear, kScale);
+  for (const auto& [lang, heading] :
+       {std::pair<std::string, std::string>{"de", "Was an der Maschine zu ändern ist"},
+        {"pl", "Co zmienić na maszynie"},
+        {"en", "What to change on the machine"}}) {
+    SCOPED_TRACE(lang);
+    const CliRun r = cli("report --project p.metrofit --out r_" + lang + ".pdf --lang " + lang, tmp);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string cmd =
+        "pdftotext -layout '" + tmp.file("r_" + lang + ".pdf") + "' '" + tmp.file("r_" + lang + ".txt") + "'";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << "pdftotext (poppler-utils) is a test dependency";
+    const std::string text = readText(tmp.file("r_" + lang + ".txt"));
+    EXPECT_NE(text.find(heading), std::string::npos);
+    if (lang != "en") {
+      EXPECT_EQ(text.find("What to change on the machine"), std::string::npos);
+      EXPECT_EQ(text.find("Includes applied effects"), std::string::npos);
+    }
+    EXPECT_NE(text.find("0.0021 mm"), std::string::npos) << "numbers keep the decimal point";
+    EXPECT_EQ(text.find("0,0021"), std::string::npos);
+  }
+  const CliRun bad = cli("report --project p.metrofit --out r_fr.pdf --lang fr", tmp);
+  EXPECT_EQ(bad.code, 2) << bad.err;
+  EXPECT_EQ(lines(bad.err), 1) << bad.err;
+  EXPECT_NE(bad.err.find("--lang"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("r_fr.pdf")));
+}
+
 TEST(AppliedReportCli, BadSetupEntryNamesTheField) {
   const TempDir tmp;
   writeProject(tmp, {{{"name", "tool_wear:T99"}, {"parameters", {{"mm_per_part", 0.0021}}}}}, kScale);
