@@ -139,8 +139,13 @@ bool OverviewPage::eventFilter(QObject* watched, QEvent* event) {
 
 void OverviewPage::refresh() {
   updating_ = true;
-  const QString name = document_->value(ProjectField::name());
+  // A project nobody has named carries core's "Untitled": the field stays empty and shows the name in
+  // the UI language ("Unbenannt") as its placeholder, so a German window never shows the English word.
+  const QString stored = document_->value(ProjectField::name());
+  const bool unnamed = stored.trimmed().isEmpty() || stored == QString::fromStdString(Project{}.name);
+  const QString name = unnamed && !name_->hasFocus() ? QString() : stored;
   if (name_->text() != name) name_->setText(name);
+  name_->setPlaceholderText(unnamed ? document_->displayName() : tr("Project name"));
   const QString description = document_->value(ProjectField::description());
   if (description_->toPlainText() != description) description_->setPlainText(description);
   updating_ = false;

@@ -76,6 +76,24 @@ TEST_F(UndoCoverageTest, OverviewNameAndDescription) {
   EXPECT_EQ(name->text().toStdString(), before_["name"].get<std::string>()) << "the field follows undo";
 }
 
+TEST(OverviewName, AnUnnamedProjectShowsNoEnglishDefault) {
+  // File › New: core names the project "Untitled"; the field is empty with the UI language's word
+  // as its placeholder, and typing a name writes it.
+  ProjectDocument document;
+  OverviewPage page(&document);
+  auto* name = page.findChild<QLineEdit*>(QStringLiteral("projectName"));
+  ASSERT_TRUE(name);
+  EXPECT_EQ(document.project().name, "Untitled");
+  EXPECT_TRUE(name->text().isEmpty());
+  EXPECT_EQ(name->placeholderText(), document.displayName());
+  QTest::keyClicks(name, QStringLiteral("Zelle 3"));
+  EXPECT_EQ(document.project().name, "Zelle 3");
+  EXPECT_EQ(name->text(), QStringLiteral("Zelle 3"));
+  EXPECT_EQ(name->placeholderText(), OverviewPage::tr("Project name"));
+  document.undoStack()->undo();
+  EXPECT_TRUE(name->text().isEmpty()) << "undo gives the unnamed project back";
+}
+
 TEST_F(UndoCoverageTest, StudyNotes) {
   NotesEdit notes(&document_, QStringLiteral("kinematics"));
   QTest::keyClicks(&notes, QStringLiteral("ballbar on Monday"));
