@@ -16,6 +16,7 @@
 #include <QDir>
 #include <QFile>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -38,6 +39,7 @@
 #include "samples/pcdmis_reports.h"
 #include "table_cells.h"
 #include "testsupport.h"
+#include "widgets/data/datasettablemodel.h"
 #include "widgets/document/projectdocument.h"
 #include "widgets/importer/importdialog.h"
 #include "widgets/setup/reportmodeldialog.h"
@@ -419,6 +421,50 @@ TEST_F(SetupReportModelTest, QifResultsToModelRunsLikeCoreAndOffersItsParts) {
   ASSERT_TRUE(dialog.canImport()) << dialog.problem().toStdString();
   EXPECT_EQ(dialog.qifParts().size(), 6);
   EXPECT_EQ(dialog.qifPart(), 0) << "a qif dataset is every part";
+  {
+    // The preview is the feature table the studies read, not the XML (README fact 5: profile
+    // W1RISMRA09V of part 1 is 0.224164, zone 0.5 -> limits ±0.25; fact 2: position W1RXXMRA19P of
+    // part 1 is 1.076016, zone 1.25 -> limits 0 and 1.25).
+    auto* preview = dialog.findChild<QTableWidget*>(QStringLiteral("importPreview"));
+    ASSERT_TRUE(preview);
+    QStringList headers;
+    for (int c = 0; c < preview->columnCount(); ++c) headers << preview->horizontalHeaderItem(c)->text();
+    const int characteristic = headers.indexOf(DatasetTableModel::tr("Feature"));  // the QIF item's name
+    const auto column = [&headers](const QString& name) {
+      for (int c = 0; c < headers.size(); ++c)
+        if (headers[c].startsWith(name)) return c;  // "Actual [mm]"
+      return -1;
+    };
+    const int actual = column(DatasetTableModel::tr("Actual"));
+    const int upper = column(DatasetTableModel::tr("Upper tol."));
+    ASSERT_GE(characteristic, 0) << headers.join(QLatin1Char('|')).toStdString();
+    ASSERT_GE(actual, 0) << headers.join(QLatin1Char('|')).toStdString();
+    ASSERT_GE(upper, 0) << headers.join(QLatin1Char('|')).toStdString();
+    EXPECT_EQ(preview->rowCount(), ImportDialog::kPreviewRows);
+    int found = 0;
+    for (int r = 0; r < preview->rowCount(); ++r) {
+      if (!preview->item(r, characteristic)->text().contains(QStringLiteral("W1RISMRA09V"))) continue;
+      ++found;
+      bool ok = false;
+      EXPECT_NEAR(QLocale().toDouble(preview->item(r, actual)->text(), &ok), 0.224164, 5e-7);
+      EXPECT_TRUE(ok) << preview->item(r, actual)->text().toStdString();
+      EXPECT_NEAR(QLocale().toDouble(preview->item(r, upper)->text(), &ok), 0.25, 1e-12);
+    }
+    for (int r = 0; r < preview->rowCount(); ++r) {
+      if (preview->item(r, characteristic)->text() != QStringLiteral("W1RXXMRA19P")) continue;
+      ++found;
+      EXPECT_NEAR(QLocale().toDouble(preview->item(r, actual)->text()), 1.076016, 5e-7);
+      EXPECT_NEAR(QLocale().toDouble(preview->item(r, upper)->text()), 1.25, 1e-12);
+    }
+    QStringList shown;
+    for (int r = 0; r < preview->rowCount(); ++r) {
+      QStringList cells;
+      for (int c = 0; c < preview->columnCount(); ++c) cells << preview->item(r, c)->text();
+      shown << cells.join(QLatin1Char('|'));
+    }
+    EXPECT_EQ(found, 2) << "the first part's rows come first:\n" << shown.join(QLatin1Char('\n')).toStdString();
+    EXPECT_FALSE(preview->item(0, 0)->text().startsWith(QLatin1Char('<'))) << "not the XML lines";
+  }
   const DatasetRef qif = dialog.dataset();
   EXPECT_EQ(qif.kind, dataset_kind::kQif);
   // As probe points: one part, chosen in the dialog (1 unless chosen), named by number and serial.

@@ -1,5 +1,6 @@
 #include "widgets/importer/importdialog.h"
 
+#include <QBrush>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -12,6 +13,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QIcon>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -34,6 +36,7 @@
 #include "core/io/mtconnect.h"
 #include "core/io/qif.h"
 #include "core/matching/hole_table.h"
+#include "core/project/dataset_content.h"
 #include "core/project/datasets.h"
 #include "core/project/import_guess.h"
 #include "core/project/nominals.h"
@@ -41,6 +44,7 @@
 #include "core/setup/report.h"
 #include "core/study/setup_study.h"
 #include "core/thermal/thermal_log.h"
+#include "widgets/data/datasettablemodel.h"
 #include "widgets/document/studyinfo.h"
 
 namespace metrofit {
@@ -902,6 +906,42 @@ void ImportDialog::previewMtconnect() {
   }
 }
 
+void ImportDialog::previewContent(const std::string& file) {
+  try {
+    auto content = std::make_shared<const DatasetContent>(readDatasetContentFile(file, dataset_));
+    DatasetTableModel model;
+    model.setContent(content);
+    const int rows = std::min(model.rowCount(), kPreviewRows);
+    const int columns = model.columnCount();
+    preview_->clear();
+    preview_->setColumnCount(columns);
+    preview_->setRowCount(rows);
+    QStringList labels;
+    for (int c = 0; c < columns; ++c) labels << model.headerData(c, Qt::Horizontal).toString();
+    preview_->setHorizontalHeaderLabels(labels);
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < columns; ++c) {
+        const QModelIndex index = model.index(r, c);
+        auto* item = new QTableWidgetItem(model.data(index).toString());
+        const QVariant background = model.data(index, Qt::BackgroundRole);
+        if (background.isValid()) item->setBackground(background.value<QBrush>());
+        const QVariant icon = model.data(index, Qt::DecorationRole);
+        if (icon.isValid()) item->setIcon(icon.value<QIcon>());
+        preview_->setItem(r, c, item);
+      }
+    }
+    preview_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    const QString shape = content->shape == DatasetContent::Shape::Features
+                              ? tr("%n feature row(s)", nullptr, model.rowCount())
+                              : tr("%n row(s)", nullptr, model.rowCount());
+    detected_->setText(
+        tr("%1: read as %2, %3.")
+            .arg(QString::fromStdString(content->format), datasetKindTitle(projectKind(kind())), shape));
+  } catch (const std::exception&) {
+    // The raw lines stay; the dataset check has accepted the file, so the studies will say more.
+  }
+}
+
 void ImportDialog::revalidate() {
   if (updating_) return;
   updating_ = true;
@@ -1005,6 +1045,9 @@ void ImportDialog::revalidate() {
         for (const QString& more : seriesFiles_)
           request.moreFiles.push_back(QFile::encodeName(more).toStdString());
       dataset_ = addDataset(scratch, QFile::encodeName(projectPath_).toStdString(), request);
+      // A file that is no CSV (QIF, DFQ, Calypso, an OGP or PC-DMIS report, a setup model) is previewed
+      // as the studies will read it: a feature table or the points, not its raw lines.
+      if (!csv && !isDmisFile() && !isMtconnectLog()) previewContent(request.file);
       if (dataset_.nominals.from == "cad") {
         // addDataset read the points onto the part already; say which part.
         nominalsSummary_ = tr("Nominals: the closest points of the CAD part “%1”; the matching moves the "

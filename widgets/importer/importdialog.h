@@ -158,6 +158,8 @@ class ImportDialog : public QDialog {
   void previewDmis();
   /// The resampled table of an MTConnect log as the preview; its summary in the detection line.
   void previewMtconnect();
+  /// The preview of a file that is no CSV, read as the dataset (DatasetContent: features or rows).
+  void previewContent(const std::string& file);
   void importNow();
   void buildNominalsBox();
   /// Shows the element / reference controls that apply to the chosen source.
