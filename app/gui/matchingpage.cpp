@@ -44,6 +44,7 @@
 #include "core/io/file_io.h"
 #include "core/matching/cad_match.h"
 #include "core/matching/evaluation.h"
+#include "core/matching/fit_input.h"
 #include "core/matching/hole_table.h"
 #include "core/project/nominals.h"
 #include "core/project/stored_results.h"
@@ -598,7 +599,14 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
   layout->addLayout(top);
   layout->addLayout(controls);
   layout->addWidget(info_);
-  layout->addWidget(status_);
+  lockMissing_ = new QPushButton(this);
+  lockMissing_->setObjectName(QStringLiteral("matchingLockMissing"));
+  lockMissing_->setVisible(false);
+  connect(lockMissing_, &QPushButton::clicked, this, &MatchingPage::lockMissingAndRun);
+  auto* statusRow = new QHBoxLayout;
+  statusRow->addWidget(status_, 1);
+  statusRow->addWidget(lockMissing_, 0, Qt::AlignTop);
+  layout->addLayout(statusRow);
   layout->addWidget(stack_, 1);
   layout->addWidget(notes);
 
@@ -708,6 +716,7 @@ MatchingPage::MatchingPage(ProjectDocument* document, QWidget* parent)
     setRunning(false);
     error_ = message;
     status_->setText(tr("Matching failed: %1").arg(error_));
+    offerMissingLocks();
     emit finished();
   });
   connect(document_, &ProjectDocument::changed, this, &MatchingPage::refresh);
@@ -1021,8 +1030,54 @@ bool MatchingPage::runNow() {
   } catch (const std::exception& e) {
     error_ = QString::fromUtf8(e.what());
     status_->setText(tr("Matching failed: %1").arg(error_));
+    offerMissingLocks();
     return false;
   }
+}
+
+void MatchingPage::offerMissingLocks() {
+  lockMissing_->setVisible(false);
+  missingLocks_ = {};
+  if (!set_) return;
+  try {
+    const matching::MatchingStudyOptions o = currentOptions();
+    // Every method of the study must be able to run: the minimax fit along the normals is the strictest,
+    // the least-squares fits need the positions to fix the rest.
+    std::optional<matching::DofLocks> locks =
+        matching::locksToDetermine(*set_, o.locks, o.allowScale, matching::FitKind::Minimax);
+    if (locks)
+      locks = matching::locksToDetermine(*set_, *locks, o.allowScale, matching::FitKind::LeastSquares);
+    if (!locks) return;
+    QStringList names;
+    for (int d = 0; d < matching::kDofCount; ++d) {
+      missingLocks_[static_cast<std::size_t>(d)] = locks->locked[d] && !o.locks.locked[d];
+      if (missingLocks_[static_cast<std::size_t>(d)]) names << QString::fromLatin1(matching::dofName(d));
+    }
+    if (names.isEmpty()) return;
+    lockMissing_->setText(tr("Lock %1 and run").arg(names.join(QStringLiteral(", "))));
+    lockMissing_->setToolTip(
+        tr("The points cannot determine %1 (a sphere fixes no rotation, parallel normals "
+           "fix no rotation about them): hold them at 0 and run again. Undo gives the "
+           "locks back.")
+            .arg(names.join(QStringLiteral(", "))));
+    lockMissing_->setVisible(true);
+  } catch (const std::exception&) {
+    // The settings themselves are refused: the status says so already.
+  }
+}
+
+void MatchingPage::lockMissingAndRun() {
+  lockMissing_->setVisible(false);
+  QStringList names;
+  for (int d = 0; d < matching::kDofCount; ++d)
+    if (missingLocks_[static_cast<std::size_t>(d)]) names << QString::fromLatin1(matching::dofName(d));
+  if (names.isEmpty()) return;
+  document_->undoStack()->beginMacro(tr("Lock %1").arg(names.join(QStringLiteral(", "))));
+  for (int d = 0; d < matching::kDofCount; ++d)
+    if (missingLocks_[static_cast<std::size_t>(d)]) locks_[static_cast<std::size_t>(d)]->setChecked(true);
+  document_->undoStack()->endMacro();
+  missingLocks_ = {};
+  startRun();
 }
 
 void MatchingPage::startRun() {
@@ -1037,8 +1092,10 @@ void MatchingPage::startRun() {
   } catch (const std::exception& e) {
     error_ = QString::fromUtf8(e.what());
     status_->setText(tr("Matching failed: %1").arg(error_));
+    offerMissingLocks();
     return;
   }
+  lockMissing_->setVisible(false);
   declareStudyDataset();
   setRunning(true);
   status_->setText(tr("Matching …"));
@@ -1294,9 +1351,22 @@ void MatchingPage::fillMethodsTable() {
   };
   for (std::size_t i = 0; i < res.runs.size(); ++i) {
     const matching::MatchResult& r = res.runs[i];
-    if (r.rough && r.roughEvaluation && r.method == MatchMethod::Sade)
+    if (r.rough && r.roughEvaluation && r.method == MatchMethod::Sade) {
       addRow(tr("Rough"), tr("Rough matching: 3-point local frames, Eq. 3–7"), r.rough->posture, r.before,
              *r.roughEvaluation, -1.0, false);
+      // Three points span a whole rigid frame: the rough stage cannot hold a lock. Its value of a locked
+      // parameter is only the start the fine stage moves to the lock value; greyed and said so.
+      const int row = methodsTable_->rowCount() - 1;
+      for (int d = 0; d < matching::kDofCount; ++d) {
+        if (!r.locks.isLocked(static_cast<matching::Dof>(d))) continue;
+        QTableWidgetItem* cell = methodsTable_->item(row, 1 + d);
+        cell->setForeground(palette().color(QPalette::Disabled, QPalette::Text));
+        cell->setToolTip(tr("%1 is locked at %2: the rough stage's three-point frames cannot hold a lock, "
+                            "the fine stage (SADE) holds it.")
+                             .arg(QString::fromLatin1(matching::dofName(d)))
+                             .arg(QLocale().toString(r.locks.value[d], 'f', 4)));
+      }
+    }
     addRow(methodShort(r.method), methodTitle(r.method), r.pose, r.before, r.after, res.seconds[i],
            r.method == res.primary);
   }

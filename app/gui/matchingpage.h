@@ -110,6 +110,8 @@ class MatchingPage : public QWidget {
   void setTolerance(double toleranceMm);
   /// Lock a degree of freedom: 0..5 = rx, ry, rz, x, y, z.
   void setLocked(int dof, bool locked);
+  /// The "Lock … and run" button offered after a refusal for undetermined parameters (hidden otherwise).
+  QPushButton* lockMissingButton() const { return lockMissing_; }
 
   /// Runs the study synchronously (tests, screenshots); returns false with errorMessage() set on
   /// bad input.
@@ -128,6 +130,9 @@ class MatchingPage : public QWidget {
  private:
   void refresh();
   void showPoints(int comboIndex);
+  /// After a refusal: the locks that would make every method determinable, offered on lockMissing_.
+  void offerMissingLocks();
+  void lockMissingAndRun();
   void settingsChanged();
   /// The status line's text for settingsError_.
   QString settingsErrorText() const;
@@ -176,6 +181,9 @@ class MatchingPage : public QWidget {
   QProgressBar* progress_;
   QLabel* info_;
   QLabel* status_;
+  /// After a run refused for undetermined parameters: locks them (one undo step) and runs again.
+  QPushButton* lockMissing_ = nullptr;
+  std::array<bool, 6> missingLocks_{};
   QStackedWidget* stack_;
   QSplitter* content_;
   PointSetView* beforeView_;

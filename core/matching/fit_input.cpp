@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -146,19 +147,30 @@ void requireDeterminable(const ProbePointSet& set, const DofLocks& locks, bool a
   }
   if (undetermined >= 0) {
     const std::string param = names[static_cast<std::size_t>(undetermined)];
+    // The parameter as a Dof index (6: the scale), for locksToDetermine.
+    int dof = kDofCount;
+    for (int j = 0; j < kDofCount; ++j)
+      if (param == dofName(j)) dof = j;
     if (collinear && rotationFree && !set.planar) {
-      throw ValidationError(ctx, "the nominal points are collinear (all on one line): the " + method +
-                                     " cannot determine the rotation about that line; probe at least one "
-                                     "point off the line or lock that rotation");
+      throw UndeterminedParameterError(
+          ctx,
+          "the nominal points are collinear (all on one line): the " + method +
+              " cannot determine the rotation about that line; probe at least one "
+              "point off the line or lock that rotation",
+          dof);
     }
     if (alongNormals) {
-      throw ValidationError(ctx, "the normals leave " + param + " undetermined in the " + method +
-                                     " (deviations are measured along the normals, e.g. all normals "
-                                     "parallel); probe surfaces facing other directions or lock " +
-                                     param);
+      throw UndeterminedParameterError(ctx,
+                                       "the normals leave " + param + " undetermined in the " + method +
+                                           " (deviations are measured along the normals, e.g. all normals "
+                                           "parallel); probe surfaces facing other directions or lock " +
+                                           param,
+                                       dof);
     }
-    throw ValidationError(ctx, "the probe points leave " + param + " undetermined in the " + method +
-                                   "; add points that constrain it or lock " + param);
+    throw UndeterminedParameterError(ctx,
+                                     "the probe points leave " + param + " undetermined in the " + method +
+                                         "; add points that constrain it or lock " + param,
+                                     dof);
   }
 
   // The measured points must carry the rotation too (a fit to collinear measurements is arbitrary).
@@ -174,6 +186,58 @@ void requireDeterminable(const ProbePointSet& set, const DofLocks& locks, bool a
                                 method + " cannot determine the rotation; check the measurement");
     }
   }
+}
+
+namespace {
+bool determinable(const ProbePointSet& set, const DofLocks& locks, bool allowScale, FitKind kind) {
+  try {
+    requireDeterminable(set, effectiveLocks(set, locks), allowScale, kind, "fit");
+    return true;
+  } catch (const ValidationError&) {
+    return false;
+  }
+}
+}  // namespace
+
+std::optional<DofLocks> locksToDetermine(const ProbePointSet& set, const DofLocks& locks, bool allowScale,
+                                         FitKind kind) {
+  // How many locks are missing: lock the parameter each refusal names until the fit is determinable.
+  // The null direction often mixes a rotation with translations (a sphere cap rotated about its centre,
+  // not about the centroid), so the named parameter may be a translation.
+  DofLocks greedy = locks;
+  int missing = 0;
+  for (;;) {
+    try {
+      requireDeterminable(set, effectiveLocks(set, greedy), allowScale, kind, "fit");
+      break;
+    } catch (const UndeterminedParameterError& e) {
+      if (e.parameter() >= kDofCount || greedy.locked[e.parameter()]) return std::nullopt;
+      greedy.lock(static_cast<Dof>(e.parameter()), 0.0);
+      ++missing;
+    } catch (const ValidationError&) {
+      return std::nullopt;  // too few points, measured points collinear: no lock helps
+    }
+  }
+  if (missing == 0) return locks;
+  // As many locks on rotations instead, when some choice of them is enough: a shop holds the part's
+  // orientation from its fixture and measures its position.
+  std::vector<int> freeRotations;
+  for (int j = 0; j < 3; ++j)
+    if (!effectiveLocks(set, locks).locked[j]) freeRotations.push_back(j);
+  if (missing <= static_cast<int>(freeRotations.size())) {
+    const int n = static_cast<int>(freeRotations.size());
+    for (int mask = 0; mask < (1 << n); ++mask) {
+      DofLocks candidate = locks;
+      int chosen = 0;
+      for (int b = 0; b < n; ++b) {
+        if ((mask & (1 << b)) == 0) continue;
+        candidate.lock(static_cast<Dof>(freeRotations[static_cast<std::size_t>(b)]), 0.0);
+        ++chosen;
+      }
+      if (chosen == missing && determinable(set, candidate, allowScale, kind)) return candidate;
+    }
+  }
+  return greedy;
 }
 
 CentredPoints centredPoints(const ProbePointSet& set) {

@@ -11,10 +11,13 @@
 // have full column rank, judged on unit-normalised columns (smallest / largest singular value
 // > 1e-9). When it has not, the error names the cause a person can fix: too few points, coincident or
 // collinear points, normals that leave a parameter undetermined (e.g. all normals parallel).
+#include <optional>
 #include <string>
+#include <utility>
 
 #include <Eigen/Core>
 
+#include "core/common/error.h"
 #include "core/matching/pose.h"
 #include "core/matching/probe_points.h"
 
@@ -36,6 +39,25 @@ DofLocks effectiveLocks(const ProbePointSet& set, const DofLocks& userLocks);
 /// of the fit (see above); `method` names the fit in the message ("closed-form fit", ...).
 void requireDeterminable(const ProbePointSet& set, const DofLocks& locks, bool allowScale, FitKind kind,
                          const std::string& method);
+
+/// requireDeterminable's error for a parameter the points leave undetermined, with that parameter:
+/// a Dof index 0-5, or kDofCount for the scale.
+class UndeterminedParameterError : public ValidationError {
+ public:
+  UndeterminedParameterError(ErrorContext context, std::string what, int parameter)
+      : ValidationError(std::move(context), std::move(what)), parameter_(parameter) {}
+  int parameter() const noexcept { return parameter_; }
+
+ private:
+  int parameter_;
+};
+
+/// The user locks `locks` plus the ones (at 0) that make the fit determinable: each parameter
+/// requireDeterminable finds undetermined is locked in turn (a sphere's points lock rx, ry, rz).
+/// `locks` itself when nothing is missing; nullopt when no lock helps (too few points, an undetermined
+/// scale, collinear measured points): requireDeterminable's error says why.
+std::optional<DofLocks> locksToDetermine(const ProbePointSet& set, const DofLocks& locks, bool allowScale,
+                                         FitKind kind);
 
 /// Centred coordinates: qc_i = q_i - mean(q), pc_i = p_i - mean(p) (two passes, no cancellation of
 /// large coordinates) and the moments the fits use.

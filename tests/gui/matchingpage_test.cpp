@@ -162,6 +162,74 @@ TEST_F(MatchingPageTest, RunFillsEveryTableWithTheCoreResults) {
   EXPECT_NE(methods->item(1, 11)->text(), QStringLiteral("0 / 40"));
 }
 
+TEST_F(MatchingPageTest, RoughRowMarksTheLockedParametersItCannotHold) {
+  // rx locked: the rough three-point frames still give an rx (a whole rigid frame), the SADE row holds
+  // rx at 0. The rough row's rx cell is greyed and says why; its free cells are not.
+  page_->setLocked(0, true);
+  ASSERT_TRUE(page_->runNow()) << page_->errorMessage().toStdString();
+  const matching::MatchResult& sade = *page_->result()->of(matching::MatchMethod::Sade);
+  ASSERT_TRUE(sade.rough.has_value());
+  QTableWidget* methods = page_->methodsTable();
+  ASSERT_EQ(methods->item(0, 0)->text(), MatchingPage::tr("Rough"));
+  EXPECT_NEAR(cellNumber(methods->item(0, 1)), sade.rough->posture.anglesDeg().x(), 1e-4);
+  EXPECT_NEAR(cellNumber(methods->item(1, 1)), 0.0, 1e-9) << "SADE holds the lock";
+  EXPECT_TRUE(methods->item(0, 1)->toolTip().contains(QStringLiteral("rx"))) << "names the lock";
+  EXPECT_EQ(methods->item(0, 1)->foreground().color(),
+            page_->palette().color(QPalette::Disabled, QPalette::Text));
+  EXPECT_TRUE(methods->item(0, 2)->toolTip().isEmpty()) << "ry is free";
+}
+
+TEST_F(MatchingPageTest, ASphereIsRefusedWithAButtonThatLocksTheRotations) {
+  // Points probed on a ball, shifted by (0.02, -0.01, 0.03) mm: no rotation is determined. The page says
+  // why and offers "Lock rx, ry, rz and run": one undo step, then the run succeeds with the shift found.
+  std::string csv = "id,qx,qy,qz,nx,ny,nz,px,py,pz\n";
+  const Eigen::Vector3d shift(0.02, -0.01, 0.03);
+  int id = 0;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 6; ++j) {
+      const double polar = 0.3 + 0.3 * i, azimuth = 1.05 * j + 0.4 * i;
+      const Eigen::Vector3d n(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+                              std::cos(polar));
+      const Eigen::Vector3d q = 12.5 * n, p = q + shift;
+      csv += "S" + std::to_string(++id) + "," + num::shortest(q.x()) + "," + num::shortest(q.y()) + "," +
+             num::shortest(q.z()) + "," + num::shortest(n.x()) + "," + num::shortest(n.y()) + "," +
+             num::shortest(n.z()) + "," + num::shortest(p.x()) + "," + num::shortest(p.y()) + "," +
+             num::shortest(p.z()) + "\n";
+    }
+  }
+  test::writeText(dir_.filePath(QStringLiteral("ball.csv")).toStdString(), csv);
+  Project p;
+  p.name = "ball";
+  p.datasets.push_back({"ball", dataset_kind::kProbePoints, "ball.csv", "", "", {}});
+  p.studies["matching"] = {{"dataset", "ball"}, {"tolerance_mm", 0.035}};
+  const QString path = dir_.filePath(QStringLiteral("ball.metrofit"));
+  saveProject(p, path.toStdString());
+  ProjectDocument document;
+  document.load(path);
+  MatchingPage page(&document);
+  EXPECT_FALSE(page.runNow());
+  EXPECT_NE(page.errorMessage().indexOf(QStringLiteral("undetermined")), -1)
+      << page.errorMessage().toStdString();
+  QPushButton* lock = page.lockMissingButton();
+  ASSERT_TRUE(lock);
+  EXPECT_FALSE(lock->isHidden());
+  EXPECT_EQ(lock->text(), MatchingPage::tr("Lock %1 and run").arg(QStringLiteral("rx, ry, rz")));
+  QSignalSpy finished(&page, &MatchingPage::finished);
+  lock->click();
+  EXPECT_EQ(document.project().studies["matching"]["locks"], "rx,ry,rz");
+  EXPECT_EQ(document.undoStack()->count(), 1) << "one undo step for the three locks";
+  ASSERT_TRUE(finished.wait(60000));
+  ASSERT_TRUE(page.result().has_value()) << page.errorMessage().toStdString();
+  EXPECT_TRUE(lock->isHidden());
+  const matching::MatchResult& r = page.result()->primaryRun();
+  // The pose maps the nominal points onto the measured ones: its translation is the shift.
+  EXPECT_NEAR(r.pose.translation.x(), shift.x(), 1e-6);
+  EXPECT_NEAR(r.pose.translation.y(), shift.y(), 1e-6);
+  EXPECT_NEAR(r.pose.translation.z(), shift.z(), 1e-6);
+  document.undoStack()->undo();
+  EXPECT_TRUE(document.project().studies["matching"].value("locks", nlohmann::json()).is_null());
+}
+
 TEST_F(MatchingPageTest, SettingsEditsAreWrittenToTheStudyAndUndone) {
   auto* tolerance = page_->findChild<QDoubleSpinBox*>(QStringLiteral("matchingTolerance"));
   auto* method = page_->findChild<QComboBox*>(QStringLiteral("matchingMethod"));

@@ -147,5 +147,40 @@ TEST(FitInput, OptimalTranslationAndScaleAreTheLeastSquaresOnes) {
   }
 }
 
+// Points on a sphere with radial normals (the Wenzel lens points, a probed ball): the deviations along
+// the normals do not change under any rotation about the centre, so the minimax fit needs rx, ry, rz
+// locked; the positions alone fix them for least squares. locksToDetermine finds exactly those three.
+TEST(FitInput, LocksToDetermineLocksTheRotationsASphereCannotFix) {
+  std::vector<Eigen::Vector3d> points, normals;
+  const Eigen::Vector3d centre(40.0, -12.0, 7.0);
+  for (int i = 0; i < 5; ++i) {
+    for (int j = 0; j < 6; ++j) {
+      const double polar = 0.2 + 0.25 * i, azimuth = 1.05 * j + 0.3 * i;
+      const Eigen::Vector3d n(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+                              std::cos(polar));
+      points.push_back(centre + 12.5 * n);
+      normals.push_back(n);
+    }
+  }
+  const ProbePointSet sphere = test::setFrom(points, kPose, normals);
+  EXPECT_NE(errorOf(sphere, {}, false, FitKind::Minimax).find("undetermined"), std::string::npos);
+  const std::optional<DofLocks> locks = locksToDetermine(sphere, {}, false, FitKind::Minimax);
+  ASSERT_TRUE(locks.has_value());
+  EXPECT_EQ(locks->toString(), "rx,ry,rz");
+  EXPECT_EQ(errorOf(sphere, *locks, false, FitKind::Minimax), "");
+  EXPECT_EQ(locksToDetermine(sphere, {}, false, FitKind::LeastSquares)->toString(), "")
+      << "positions fix the rotation";
+  // A user lock is kept at its value. With z locked a rotation about the centre must keep the centre's
+  // z: only rotations about axes through the centre parallel to the xy plane... are left, two of them,
+  // so two rotation locks are enough (rx and ry would leave the rotation about z through the centre).
+  DofLocks z;
+  z.lock(Dof::Z, 0.5);
+  EXPECT_EQ(locksToDetermine(sphere, z, false, FitKind::Minimax)->toString(), "rx,rz,z");
+  EXPECT_EQ(locksToDetermine(sphere, z, false, FitKind::Minimax)->value[5], 0.5);
+  // No lock helps two points: nullopt, requireDeterminable's error stands.
+  EXPECT_FALSE(
+      locksToDetermine(test::setFrom({{0, 0, 0}, {10, 0, 0}}, kPose), {}, false, FitKind::LeastSquares));
+}
+
 }  // namespace
 }  // namespace metrofit::matching
