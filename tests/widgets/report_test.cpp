@@ -566,6 +566,39 @@ TEST_F(ReportTest, OnlyDeclaredStudiesHaveSections) {
   EXPECT_TRUE(text.contains(QStringLiteral("second_run")));  // in the appendix
 }
 
+// A shop charting a part series on the kinematics study without any circular test: the report has the
+// section with the SPC charts and the indices (the walk's project had none: issue 28). The series is
+// written here: 50 diameters, subgroups of 5, every subgroup mean 20.000 + 0.001 * (k mod 3) mm.
+TEST_F(ReportTest, APartSeriesWithoutACircularTestHasItsSpcPages) {
+  std::ostringstream csv;
+  csv << "part,diameter_mm\n";
+  const double within[5] = {-0.002, -0.001, 0.0, 0.001, 0.002};
+  for (int k = 0; k < 10; ++k)
+    for (int j = 0; j < 5; ++j) csv << k * 5 + j + 1 << ',' << 20.0 + 0.001 * (k % 3) + within[j] << '\n';
+  writeText(dir_.filePath(QStringLiteral("data/diameters.csv")), csv.str());
+  Project p = project_;
+  p.studies.erase("thermal");
+  p.studies.erase("matching");
+  p.datasets.push_back({"diameters", dataset_kind::kFeatureSeries, "data/diameters.csv", "", "", {}});
+  p.studies["kinematics"] = {{"spc",
+                              {{"dataset", "diameters"},
+                               {"column", "diameter_mm"},
+                               {"subgroup", 5},
+                               {"lsl", 19.99},
+                               {"usl", 20.01}}}};
+  const QString pdf = dir_.filePath(QStringLiteral("spc_only.pdf"));
+  const ReportSummary summary = writeReport(p, pdf, options());
+  ASSERT_EQ(summary.sections.size(), 1) << summary.sections.join(QLatin1Char('|')).toStdString();
+  const QString text =
+      run(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")}).out;
+  EXPECT_TRUE(text.contains(QStringLiteral("Statistical process control of “diameter_mm” (diameters)")));
+  EXPECT_TRUE(text.contains(QStringLiteral("The project has no circular test")));
+  // X-bar CL: the grand mean 20 + 0.001 * (4 * 0 + 3 * 1 + 3 * 2) / 10 = 20.0009 mm.
+  EXPECT_TRUE(text.contains(QStringLiteral("20.0009"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("SPC of diameter_mm: in control.")));
+  EXPECT_FALSE(text.contains(QStringLiteral("Cannot analyse the circular test")));
+}
+
 // A probe-point dataset whose nominals are a CAD part (a box written as STL): the report's matching
 // section runs the study on the part, says so, and draws the part coloured under the points; the page
 // with the views has the part's light grey and coloured faces (rendered with pdftoppm, kept for a look).

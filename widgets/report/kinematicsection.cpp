@@ -198,7 +198,8 @@ CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyDa
   return c;
 }
 
-void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
+/// The SPC charts and indices; `ownPage`: from the top of a new page (after the circular test).
+void writeSpc(ReportPainter& out, const KinematicStudyData& s, bool ownPage = true) {
   if (!s.spc) {
     if (!s.spcError.empty()) {
       out.subheading(ReportText::tr("Statistical process control"));
@@ -211,7 +212,7 @@ void writeSpc(ReportPainter& out, const KinematicStudyData& s) {
   const SpcResult& r = k.result;
   const QString unit = QString::fromStdString(k.unit);
   const QString u = unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
-  out.newPage();
+  if (ownPage) out.newPage();
   out.subheading(ReportText::tr("Statistical process control of “%1” (%2)")
                      .arg(QString::fromStdString(k.column), QString::fromStdString(k.dataset.id)),
                  out.mm(60.0));
@@ -476,6 +477,47 @@ void writeRadialTest(ReportPainter& out, const ReportContext& context, const Rad
 
 }  // namespace
 
+namespace {
+
+/// The section of a project whose kinematics study charts a part series and has no circular test: the
+/// SPC charts, indices and decision, and their conclusion.
+void writeSpcOnly(ReportPainter& out, const ReportContext& context,
+                  const std::function<std::string(const DatasetRef&)>& resolve) {
+  const KinematicStudySettings settings = kinematicStudySettings(*context.project);
+  KinematicStudyData s;
+  s.settings = settings;
+  SectionFinding f;
+  f.study = kinematicSectionTitle();
+  if (settings.spc) s.spc = chartKinematicSpc(*context.project, *settings.spc, resolve, &s.spcError);
+  out.paragraph(
+      ReportText::tr("The project has no circular test: the study charts its part series only; "
+                     "no actuator errors are identified and no compensation is computed."));
+  writeSpc(out, s, false);
+  if (!s.spc) {
+    f.conclusion = s.spcError.empty() ? ReportText::tr("No SPC series is chosen.")
+                                      : ReportText::tr("The SPC series could not be charted: %1")
+                                            .arg(QString::fromStdString(s.spcError));
+    f.recommendation = ReportText::tr("Choose the series and its column on the Kinematics page, SPC tab.");
+    concludeSection(out, context, f);
+    return;
+  }
+  const SpcResult& r = s.spc->result;
+  f.found = ReportText::tr("SPC of %1: %2.")
+                .arg(QString::fromStdString(s.spc->column),
+                     r.chart.inControl() ? ReportText::tr("in control") : ReportText::tr("out of control"));
+  if (r.capability.cpk)
+    f.found += QLatin1Char(' ') + ReportText::tr("Cpk %1.").arg(*r.capability.cpk, 0, 'f', 2);
+  f.conclusion = ReportText::tr("SPC-gated compensation: %1").arg(readerText(r.decision.reason));
+  f.recommendation = r.chart.inControl()
+                         ? ReportText::tr("Keep charting the series; act when a point leaves the limits.")
+                         : ReportText::tr(
+                               "Find the assignable cause of the out-of-control points before "
+                               "compensating.");
+  concludeSection(out, context, f);
+}
+
+}  // namespace
+
 QString kinematicSectionTitle() {
   return ReportText::tr("Kinematic compensation and SPC");
 }
@@ -488,6 +530,11 @@ void writeKinematicSection(ReportPainter& out, const ReportContext& context) {
     }
     return ref.path;
   };
+  // A part series without a circular test (a shop charting its parts): the SPC charts alone.
+  if (circularTestDatasets(project).empty()) {
+    writeSpcOnly(out, context, resolve);
+    return;
+  }
   // A radial-only test (a ballbar export) cannot be identified: its ISO 230-4 results and polar plot.
   if (const std::optional<RadialStudyTest> radial = radialStudyTest(project, resolve)) {
     writeRadialTest(out, context, *radial);

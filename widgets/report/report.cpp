@@ -68,7 +68,9 @@ const SectionEntry kSections[] = {
     {&matchingSectionTitle, &hasMatchingStudy, &writeMatchingSection},
     {&kinematicSectionTitle,
      [](const ReportContext& c) {
-       return declares(c, study::kKinematics) && !c.ofKind(dataset_kind::kCircularTest).empty();
+       // A circular test, or a part series charted on its own (studies.kinematics.spc).
+       return declares(c, study::kKinematics) && (!c.ofKind(dataset_kind::kCircularTest).empty() ||
+                                                  c.project->studies.at(study::kKinematics).contains("spc"));
      },
      &writeKinematicSection},
     {&diagnosisSectionTitle, &hasDiagnosisStudy, &writeDiagnosisSection},
