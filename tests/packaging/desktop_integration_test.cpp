@@ -91,6 +91,10 @@ TEST(Metainfo, ShowsTheReadmeScreenshotsAndNamesTheProjectType) {
   const std::string xml = test::readText(packagingFile("io.github.metrofit.Metrofit.metainfo.xml").string());
   EXPECT_EQ(allMatches(xml, "<mediatype>([^<]*)</mediatype>"), std::vector<std::string>{kMimeType});
   EXPECT_EQ(allMatches(xml, "<screenshot (type=\"default\")>").size(), 1u) << "one default screenshot";
+  // Addresses of the project (the app id's GitHub organisation), not a placeholder domain.
+  EXPECT_EQ(xml.find(".invalid"), std::string::npos);
+  EXPECT_EQ(allMatches(xml, "<url type=\"homepage\">([^<]*)</url>"),
+            std::vector<std::string>{"https://github.com/metrofit/metrofit"});
   const std::regex image(
       R"re(<image type="source" width="(\d+)" height="(\d+)">(https://[^<]*/docs/screenshots/([^/<]+\.png))</image>)re");
   std::set<std::string> shown;
