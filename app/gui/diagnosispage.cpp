@@ -286,6 +286,11 @@ DiagnosisPage::DiagnosisPage(ProjectDocument* document, QWidget* parent)
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setSectionResizeMode(ColEvidence, QHeaderView::Stretch);
   table_->horizontalHeader()->setSectionResizeMode(ColParameters, QHeaderView::Interactive);
+  // The stretched evidence column narrows when the window does: its rows grow again (once per change).
+  connect(table_->horizontalHeader(), &QHeaderView::sectionResized, this, [this](int column) {
+    if (column == ColEvidence || column == ColParameters)
+      QMetaObject::invokeMethod(table_, &QTableWidget::resizeRowsToContents, Qt::QueuedConnection);
+  });
   table_->setToolTip(
       tr("Every candidate effect tried, in the order tried (Ctrl+C copies the selected rows)"));
   auto* copy = new QAction(tr("&Copy"), table_);
