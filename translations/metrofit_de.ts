@@ -805,12 +805,12 @@ Spannweite: %2%3</translation>
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location line="+648"/>
+        <location line="+653"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Diagnostizierte Effekte übernehmen (%1)</translation>
     </message>
     <message>
-        <location line="-544"/>
+        <location line="-549"/>
         <source>&amp;Run</source>
         <translation>A&amp;usführen</translation>
     </message>
@@ -846,12 +846,12 @@ Spannweite: %2%3</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+336"/>
+        <location line="+341"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Die übernommenen Effekte dem Modell der Studie im Projekt hinzufügen (rückgängig machbar, Strg+Umschalt+A)</translation>
     </message>
     <message>
-        <location line="-322"/>
+        <location line="-327"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Das deklarierte Modell, wie es vor dem Hinzufügen eines Effekts angepasst wurde</translation>
     </message>
@@ -901,7 +901,7 @@ Spannweite: %2%3</translation>
         <translation>Übernommen</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+18"/>
         <source>Every candidate effect tried, in the order tried (Ctrl+C copies the selected rows)</source>
         <translation>Alle getesteten Kandidateneffekte in der Reihenfolge des Tests (Strg+C kopiert die ausgewählten Zeilen)</translation>
     </message>
@@ -1144,7 +1144,7 @@ Spannweite: %2%3</translation>
         <translation>Aus dem gespeicherten Projekt (berechnet %1 mit diesen Einstellungen auf diesen Daten): %2 Ausführen (Strg+R) für die Diagramme, die Kandidatentabelle und die Residuenprüfung.</translation>
     </message>
     <message>
-        <location line="-1029"/>
+        <location line="-1034"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -1169,7 +1169,7 @@ Spannweite: %2%3</translation>
         <translation>. Übernommen: %1 (%2 Kandidaten getestet).</translation>
     </message>
     <message>
-        <location line="+285"/>
+        <location line="+290"/>
         <source>Diagnosis, %1: the settings are invalid; nothing runs until they are corrected (above, Undo, or the project file under studies.diagnosis.%2):
 %3</source>
         <translation>Diagnose, %1: die Einstellungen sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (oben, Rückgängig oder die Projektdatei unter studies.diagnosis.%2):
@@ -1320,7 +1320,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+65"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+69"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>Komma ( , )</translation>
@@ -1757,12 +1757,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+575"/>
+        <location line="+611"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
     <message>
-        <location line="-511"/>
+        <location line="-547"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
     </message>
@@ -1850,8 +1850,29 @@ Anzahl: %4</translation>
         <source>MTConnect log resampled every %1 s (zero-order hold: the last value at or before each time): %2 rows, %3 sample columns; %4 data items are not columns (events, conditions, no numbers).</source>
         <translation>MTConnect-Protokoll, alle %1 s neu abgetastet (Halteglied nullter Ordnung: der letzte Wert zu oder vor jeder Zeit): %2 Zeilen, %3 Messwertspalten; %4 Datenelemente sind keine Spalten (Ereignisse, Zustände, keine Zahlen).</translation>
     </message>
+    <message numerus="yes">
+        <location line="+39"/>
+        <source>%n feature row(s)</source>
+        <translation>
+            <numerusform>%n Merkmalszeile</numerusform>
+            <numerusform>%n Merkmalszeilen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n row(s)</source>
+        <translation>
+            <numerusform>%n Zeile</numerusform>
+            <numerusform>%n Zeilen</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+37"/>
+        <location line="+2"/>
+        <source>%1: read as %2, %3.</source>
+        <translation>%1: gelesen als %2, %3.</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>Choose a file to import.</source>
         <translation>Wählen Sie eine Datei zum Importieren.</translation>
     </message>
@@ -1886,7 +1907,7 @@ Anzahl: %4</translation>
         <translation>Trennzeichen %1 · Dezimalzeichen %2 · Kopfzeile in Zeile %3 (%4 Spalten) · Kommentarzeilen: %5 · Datenzeilen: %6</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+34"/>
         <source>Nominals: the closest points of the CAD part “%1”; the matching moves the points onto it at each posture (closed form or minimum zone).</source>
         <translation>Sollpunkte: die nächsten Punkte des CAD-Teils „%1“; das Einpassen projiziert die Punkte bei jeder Lage neu darauf (geschlossene Lösung oder Minimumzone).</translation>
     </message>
@@ -2299,7 +2320,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+178"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+179"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -2340,12 +2361,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+126"/>
+        <location line="+127"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-127"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -2385,12 +2406,12 @@ Anzahl: %4</translation>
         <translation>&lt;b&gt;Kompensation&lt;/b&gt; des Nennkreises</translation>
     </message>
     <message>
-        <location line="+206"/>
+        <location line="+207"/>
         <source>cause</source>
         <translation>Ursache</translation>
     </message>
     <message>
-        <location line="-188"/>
+        <location line="-189"/>
         <source>&amp;Path</source>
         <translation>Bah&amp;n</translation>
     </message>
@@ -2465,12 +2486,12 @@ Anzahl: %4</translation>
         <translation>SPC-Untergruppengröße ändern</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>Export Q-DAS &amp;DFQ…</source>
         <translation>Q-DAS-&amp;DFQ exportieren…</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>S&amp;PC</source>
         <translation>S&amp;PC</translation>
     </message>
@@ -2636,12 +2657,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+26"/>
-        <location line="+105"/>
+        <location line="+100"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-90"/>
         <source>%1 (not a dataset id)</source>
         <translation>%1 (keine Datensatz-ID)</translation>
     </message>
@@ -2651,12 +2672,12 @@ Anzahl: %4</translation>
         <translation>%1 (nicht im Projekt)</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+146"/>
         <source>Remove the SPC series</source>
         <translation>SPC-Reihe entfernen</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+25"/>
         <source>“%1” has no column of numbers to chart.</source>
         <translation>„%1“ hat keine Zahlenspalte zum Darstellen.</translation>
     </message>
@@ -2886,12 +2907,12 @@ Anzahl: %4</translation>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="-701"/>
+        <location line="-693"/>
         <source>USL:</source>
         <translation>OGW:</translation>
     </message>
     <message>
-        <location line="+510"/>
+        <location line="+502"/>
         <source>The kinematics study&apos;s settings are invalid; nothing is run until they are corrected (Undo, or the project file):
 %1</source>
         <translation>Die Einstellungen der Kinematik-Studie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (Rückgängig oder die Projektdatei):
@@ -3771,7 +3792,7 @@ Anzahl: %4</translation>
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+126"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+127"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (grob + fein, Originalparameter)</translation>
     </message>
@@ -4107,7 +4128,7 @@ Anzahl: %4</translation>
         <translation>%1 auf 0 halten (ein beschränktes Optimum über die übrigen Parameter)</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+37"/>
         <source>Change the matching method</source>
         <translation>Ausrichtungsmethode ändern</translation>
     </message>
@@ -4138,13 +4159,13 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+63"/>
-        <location line="+313"/>
-        <location line="+16"/>
+        <location line="+314"/>
+        <location line="+62"/>
         <source>Matching failed: %1</source>
         <translation>Die Ausrichtung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+485"/>
+        <location line="+500"/>
         <source>No posture yet: press Run (Ctrl+R).</source>
         <translation>Noch keine Lage: Ausführen drücken (Strg+R).</translation>
     </message>
@@ -4245,7 +4266,7 @@ Anzahl: %4</translation>
         <translation>Der Frame kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location line="-776"/>
+        <location line="-837"/>
         <source>The effects applied to the matching model are invalid:
 %1</source>
         <translation>Die ins Ausrichtungsmodell übernommenen Effekte sind ungültig:
@@ -4273,12 +4294,12 @@ Anzahl: %4</translation>
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
     <message>
-        <location line="-907"/>
+        <location line="-915"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: %1 mm kann auf der Seite nicht eingestellt werden (sie nimmt %2 bis %3 mm in Schritten von %4 mm)</translation>
     </message>
     <message>
-        <location line="+751"/>
+        <location line="+759"/>
         <source>This project has no probe points. Import them with File › Import data… (Ctrl+I): probe points with their nominals, a hole table or a CMM report, or raw measured points whose nominals come from a fitted element or a second measurement.</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Importieren Sie sie mit Datei › Daten importieren… (Strg+I): Antastpunkte mit ihren Sollpunkten, eine Bohrungstabelle oder ein KMG-Protokoll, oder rohe Messpunkte, deren Sollpunkte aus einem angepassten Element oder einer zweiten Messung kommen.</translation>
     </message>
@@ -4288,7 +4309,22 @@ Anzahl: %4</translation>
         <translation>Die Einstellungen der Ausrichtungsstudie sind ungültig; nichts wird ausgeführt, bis sie korrigiert sind (Rückgängig oder die Projektdatei): %1</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+58"/>
+        <source>Lock %1 and run</source>
+        <translation>%1 sperren und ausführen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The points cannot determine %1 (a sphere fixes no rotation, parallel normals fix no rotation about them): hold them at 0 and run again. Undo gives the locks back.</source>
+        <translation>Die Punkte bestimmen %1 nicht (eine Kugel legt keine Drehung fest, parallele Normalen keine Drehung um sie): bei 0 halten und erneut ausführen. Rückgängig nimmt die Sperren zurück.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Lock %1</source>
+        <translation>%1 sperren</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>Matching …</source>
         <translation>Ausrichtung läuft …</translation>
     </message>
@@ -4369,7 +4405,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Grobausrichtung: lokale 3-Punkt-Koordinatensysteme, Gl. 3–7</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+9"/>
+        <source>%1 is locked at %2: the rough stage&apos;s three-point frames cannot hold a lock, the fine stage (SADE) holds it.</source>
+        <translation>%1 ist bei %2 gesperrt: Die Dreipunkt-Koordinatensysteme der Grobausrichtung können keine Sperre halten, die Feinausrichtung (SADE) hält sie.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>head-head, Eq. 12–13</source>
         <translation>Kopf-Kopf, Gl. 12–13</translation>
     </message>
@@ -4498,7 +4539,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>in Toleranz: keine Einstellung</translation>
     </message>
     <message>
-        <location line="-593"/>
+        <location line="-654"/>
         <source>with normals</source>
         <translation>mit Normalen</translation>
     </message>
@@ -4549,11 +4590,12 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
     </message>
     <message>
         <location line="+7"/>
+        <location line="+110"/>
         <source>Project name</source>
         <translation>Projektname</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-108"/>
         <source>What is measured, on which machine, and why</source>
         <translation>Was wird gemessen, auf welcher Maschine und warum</translation>
     </message>
@@ -4608,7 +4650,7 @@ noch nicht ausgeführt: Ausführen drücken (Strg+R)</translation>
         <translation>Fügt eine Datei als Datensatz zum Projekt hinzu (Datei › Daten importieren…, Strg+I, oder Dateien auf das Fenster ziehen); Rechtsklick auf einen Datensatz: umbenennen, neu verknüpfen oder entfernen</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+45"/>
         <source>not saved yet</source>
         <translation>noch nicht gespeichert</translation>
     </message>
@@ -4961,15 +5003,15 @@ Abweichung: %3 µm</translation>
     <message>
         <location line="+14"/>
         <location filename="../widgets/report/kinematicsection.cpp" line="+119"/>
-        <location line="+137"/>
+        <location line="+138"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-418"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-137"/>
-        <location line="+137"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-138"/>
+        <location line="+138"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
@@ -5085,13 +5127,13 @@ Abweichung: %3 µm</translation>
         <translation>Für jede Studie wird das deklarierte Modell angepasst und sein Residuum berechnet; Kandidateneffekte, die dem Modell fehlen, werden einzeln getestet und jeweils mit ihren Parametern und deren Standardfehlern geschätzt. Ein Effekt wird nur bei ausreichender Evidenz übernommen (Verbesserung auf den Testdaten bei Thermik, sonst ein Informationskriterium mit konservativer Schwelle) und wenn er den Fehler praktisch relevant verringert; das Modell wird mit ihm neu angepasst und die Suche wiederholt, bis nichts mehr gefunden wird.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-213"/>
-        <location line="+266"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-214"/>
+        <location line="+267"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="-266"/>
+        <location line="-267"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
@@ -5107,36 +5149,36 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+269"/>
+        <location line="+270"/>
         <source>origin x (µm)</source>
         <translation>Ursprung x (µm)</translation>
     </message>
     <message>
-        <location line="-267"/>
-        <location line="+269"/>
+        <location line="-268"/>
+        <location line="+270"/>
         <source>origin y (µm)</source>
         <translation>Ursprung y (µm)</translation>
     </message>
     <message>
-        <location line="-267"/>
-        <location line="+268"/>
+        <location line="-268"/>
+        <location line="+269"/>
         <source>X axis angle a (deg)</source>
         <translation>Winkel der X-Achse a (Grad)</translation>
     </message>
     <message>
-        <location line="-266"/>
-        <location line="+268"/>
+        <location line="-267"/>
+        <location line="+269"/>
         <source>Y axis angle b (deg)</source>
         <translation>Winkel der Y-Achse b (Grad)</translation>
     </message>
     <message>
-        <location line="-266"/>
-        <location line="+268"/>
+        <location line="-267"/>
+        <location line="+269"/>
         <source>squareness b − a (deg)</source>
         <translation>Rechtwinkligkeit b − a (Grad)</translation>
     </message>
     <message>
-        <location line="-266"/>
+        <location line="-267"/>
         <source>RMS residual (µm)</source>
         <translation>RMS-Residuum (µm)</translation>
     </message>
@@ -5247,12 +5289,12 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location line="+312"/>
+        <location line="+313"/>
         <source>Circular test “%1”</source>
         <translation>Kreisformtest „%1“</translation>
     </message>
     <message>
-        <location line="-304"/>
+        <location line="-305"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 Punkte; Nennkreis R %2 mm um (%3; %4) mm; %5 Umläufe (gegen, dann mit dem Uhrzeigersinn). Die Antriebsfehler der kartesischen Maschine (%8, Gl. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wurden mit Levenberg-Marquardt bestimmt (%6, Iterationen: %7); Standardfehler aus den Residuen.</translation>
     </message>
@@ -5273,12 +5315,12 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+287"/>
+        <location line="+288"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Radiale Abweichung (polar, vergrößert)</translation>
     </message>
     <message>
-        <location line="-271"/>
+        <location line="-272"/>
         <source>Compensation</source>
         <translation>Kompensation</translation>
     </message>
@@ -5323,17 +5365,18 @@ Abweichung: %3 µm</translation>
         <translation>größte Korrektur |Sollwert − Nennwert|</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Statistical process control</source>
         <translation>Statistische Prozessregelung</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+291"/>
         <source>The SPC series could not be charted: %1</source>
         <translation>Die SPC-Reihe konnte nicht dargestellt werden: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-282"/>
         <source>Statistical process control of “%1” (%2)</source>
         <translation>Statistische Prozessregelung von „%1“ (%2)</translation>
     </message>
@@ -5377,11 +5420,12 @@ Abweichung: %3 µm</translation>
     <message>
         <location line="+6"/>
         <location line="+151"/>
+        <location line="+99"/>
         <source>in control</source>
         <translation>beherrscht</translation>
     </message>
     <message>
-        <location line="-150"/>
+        <location line="-249"/>
         <source>Nelson rules (subgroups)</source>
         <translation>Nelson-Regeln (Stichproben)</translation>
     </message>
@@ -5438,11 +5482,12 @@ Abweichung: %3 µm</translation>
     <message>
         <location line="+4"/>
         <location line="+128"/>
+        <location line="+97"/>
         <source>SPC-gated compensation: %1</source>
         <translation>SPC-gesteuerte Kompensation: %1</translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-218"/>
         <source>From the SPC offset angle to actuator errors</source>
         <translation>Vom SPC-Versatzwinkel zu den Antriebsfehlern</translation>
     </message>
@@ -5585,21 +5630,24 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+99"/>
         <source>SPC of %1: %2.</source>
         <translation>SPC von %1: %2.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-96"/>
+        <location line="+98"/>
         <source>out of control</source>
         <translation>außer Kontrolle</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-96"/>
+        <location line="+98"/>
         <source>Cpk %1.</source>
         <translation>Cpk %1.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-91"/>
         <source>From the SPC offset angles: origin (%1, %2) µm, squareness %3°.</source>
         <translation>Aus den SPC-Versatzwinkeln: Ursprung (%1; %2) µm, Rechtwinkligkeit %3°.</translation>
     </message>
@@ -5634,12 +5682,37 @@ Abweichung: %3 µm</translation>
         <translation>Um die Antriebsfehler zu identifizieren und zu kompensieren, den Kreisformtest mit Soll- und Ist-Koordinaten x/y aufzeichnen.</translation>
     </message>
     <message>
+        <location line="+21"/>
+        <source>The project has no circular test: the study charts its part series only; no actuator errors are identified and no compensation is computed.</source>
+        <translation>Das Projekt hat keinen Kreisformtest: Die Studie zeigt nur ihre Teileserie; es werden keine Antriebsfehler identifiziert und keine Kompensation berechnet.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No SPC series is chosen.</source>
+        <translation>Es ist keine SPC-Reihe gewählt.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Choose the series and its column on the Kinematics page, SPC tab.</source>
+        <translation>Wählen Sie die Reihe und ihre Spalte auf der Seite Kinematik, Registerkarte SPC.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Keep charting the series; act when a point leaves the limits.</source>
+        <translation>Die Reihe weiter aufzeichnen; eingreifen, wenn ein Punkt die Grenzen verlässt.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Find the assignable cause of the out-of-control points before compensating.</source>
+        <translation>Vor dem Kompensieren die zuordenbare Ursache der Punkte außerhalb der Regelgrenzen finden.</translation>
+    </message>
+    <message>
         <location line="+9"/>
         <source>Kinematic compensation and SPC</source>
         <translation>Kinematische Kompensation und SPC</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+32"/>
         <source>Cannot analyse the circular test: %1</source>
         <translation>Der Kreisformtest kann nicht ausgewertet werden: %1</translation>
     </message>
@@ -6414,7 +6487,7 @@ Abweichung: %3 µm</translation>
         <translation>Das Projekt verweist auf keine Datensätze.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/report.cpp" line="+126"/>
+        <location filename="../widgets/report/report.cpp" line="+128"/>
         <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
@@ -7203,7 +7276,7 @@ Abweichung: %3 µm</translation>
 <context>
     <name>metrofit::ReportExporter</name>
     <message>
-        <location filename="../app/gui/reportexporter.cpp" line="+37"/>
+        <location filename="../app/gui/reportexporter.cpp" line="+39"/>
         <source>the unsaved project</source>
         <translation>das ungespeicherte Projekt</translation>
     </message>
@@ -7213,7 +7286,7 @@ Abweichung: %3 µm</translation>
         <translation>Der Bericht kann nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>Cannot run %1: %2</source>
         <translation>%1 kann nicht ausgeführt werden: %2</translation>
     </message>
@@ -8163,7 +8236,7 @@ Abweichung: %3 µm</translation>
 <context>
     <name>metrofit::SetupGraphEditor</name>
     <message>
-        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+102"/>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+94"/>
         <source>Add node…</source>
         <translation>Knoten hinzufügen…</translation>
     </message>

@@ -806,12 +806,12 @@ rozstęp: %2%3</translation>
         <translation>Dopasowanie</translation>
     </message>
     <message>
-        <location line="+648"/>
+        <location line="+653"/>
         <source>Apply diagnosed effects (%1)</source>
         <translation>Zastosuj zdiagnozowane efekty (%1)</translation>
     </message>
     <message>
-        <location line="-544"/>
+        <location line="-549"/>
         <source>&amp;Run</source>
         <translation>&amp;Uruchom</translation>
     </message>
@@ -847,12 +847,12 @@ rozstęp: %2%3</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+336"/>
+        <location line="+341"/>
         <source>Add the accepted effects to the study&apos;s model in the project (undoable, Ctrl+Shift+A)</source>
         <translation>Dodaj przyjęte efekty do modelu studium w projekcie (można cofnąć, Ctrl+Shift+A)</translation>
     </message>
     <message>
-        <location line="-322"/>
+        <location line="-327"/>
         <source>The declared model as fitted before any effect was added</source>
         <translation>Zadeklarowany model dopasowany przed dodaniem jakiegokolwiek efektu</translation>
     </message>
@@ -902,7 +902,7 @@ rozstęp: %2%3</translation>
         <translation>Przyjęty</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+18"/>
         <source>Every candidate effect tried, in the order tried (Ctrl+C copies the selected rows)</source>
         <translation>Wszystkie wypróbowane efekty kandydujące w kolejności prób (Ctrl+C kopiuje zaznaczone wiersze)</translation>
     </message>
@@ -1146,7 +1146,7 @@ rozstęp: %2%3</translation>
         <translation>Z zapisanego projektu (obliczono %1 z tymi ustawieniami dla tych danych): %2 Uruchom (Ctrl+R), aby zobaczyć wykresy, tabelę kandydatów i sprawdzenie residuów.</translation>
     </message>
     <message>
-        <location line="-1029"/>
+        <location line="-1034"/>
         <source>rmse %1 → %2 %3</source>
         <translation>rmse %1 → %2 %3</translation>
     </message>
@@ -1171,7 +1171,7 @@ rozstęp: %2%3</translation>
         <translation>. Przyjęto: %1 (wypróbowano kandydatów: %2).</translation>
     </message>
     <message>
-        <location line="+285"/>
+        <location line="+290"/>
         <source>Diagnosis, %1: the settings are invalid; nothing runs until they are corrected (above, Undo, or the project file under studies.diagnosis.%2):
 %3</source>
         <translation>Diagnoza, %1: ustawienia są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (powyżej, Cofnij lub plik projektu w studies.diagnosis.%2):
@@ -1322,7 +1322,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::ImportDialog</name>
     <message>
-        <location filename="../widgets/importer/importdialog.cpp" line="+65"/>
+        <location filename="../widgets/importer/importdialog.cpp" line="+69"/>
         <location line="+15"/>
         <source>comma ( , )</source>
         <translation>przecinek ( , )</translation>
@@ -1762,12 +1762,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+575"/>
+        <location line="+611"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
     <message>
-        <location line="-511"/>
+        <location line="-547"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
     </message>
@@ -1856,8 +1856,31 @@ liczba: %4</translation>
         <source>MTConnect log resampled every %1 s (zero-order hold: the last value at or before each time): %2 rows, %3 sample columns; %4 data items are not columns (events, conditions, no numbers).</source>
         <translation>Dziennik MTConnect próbkowany co %1 s (ekstrapolator zerowego rzędu: ostatnia wartość w chwili lub przed każdą chwilą): %2 wierszy, %3 kolumn próbek; %4 elementów danych nie jest kolumnami (zdarzenia, stany, brak liczb).</translation>
     </message>
+    <message numerus="yes">
+        <location line="+39"/>
+        <source>%n feature row(s)</source>
+        <translation>
+            <numerusform>%n wiersz cech</numerusform>
+            <numerusform>%n wiersze cech</numerusform>
+            <numerusform>%n wierszy cech</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n row(s)</source>
+        <translation>
+            <numerusform>%n wiersz</numerusform>
+            <numerusform>%n wiersze</numerusform>
+            <numerusform>%n wierszy</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+37"/>
+        <location line="+2"/>
+        <source>%1: read as %2, %3.</source>
+        <translation>%1: odczytano jako %2, %3.</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>Choose a file to import.</source>
         <translation>Wybierz plik do importu.</translation>
     </message>
@@ -1892,7 +1915,7 @@ liczba: %4</translation>
         <translation>separator %1 · znak dziesiętny %2 · nagłówek w wierszu %3 (%4 kolumn) · wiersze komentarza: %5 · wiersze danych: %6</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+34"/>
         <source>Nominals: the closest points of the CAD part “%1”; the matching moves the points onto it at each posture (closed form or minimum zone).</source>
         <translation>Punkty nominalne: najbliższe punkty części CAD „%1”; dopasowanie rzutuje punkty na nią przy każdym położeniu (rozwiązanie zamknięte lub strefa minimalna).</translation>
     </message>
@@ -2307,7 +2330,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::KinematicsPage</name>
     <message>
-        <location filename="../app/gui/kinematicspage.cpp" line="+178"/>
+        <location filename="../app/gui/kinematicspage.cpp" line="+179"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identyfikuj</translation>
     </message>
@@ -2348,12 +2371,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+126"/>
+        <location line="+127"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-127"/>
         <source>identified</source>
         <translation>wyznaczony</translation>
     </message>
@@ -2393,12 +2416,12 @@ liczba: %4</translation>
         <translation>&lt;b&gt;Kompensacja&lt;/b&gt; okręgu nominalnego</translation>
     </message>
     <message>
-        <location line="+206"/>
+        <location line="+207"/>
         <source>cause</source>
         <translation>przyczyna</translation>
     </message>
     <message>
-        <location line="-188"/>
+        <location line="-189"/>
         <source>&amp;Path</source>
         <translation>&amp;Tor</translation>
     </message>
@@ -2473,12 +2496,12 @@ liczba: %4</translation>
         <translation>Zmień wielkość podgrupy SPC</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>Export Q-DAS &amp;DFQ…</source>
         <translation>Eksportuj Q-DAS &amp;DFQ…</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>S&amp;PC</source>
         <translation>S&amp;PC</translation>
     </message>
@@ -2644,12 +2667,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+26"/>
-        <location line="+105"/>
+        <location line="+100"/>
         <source>(none)</source>
         <translation>(brak)</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-90"/>
         <source>%1 (not a dataset id)</source>
         <translation>%1 (to nie jest identyfikator zbioru danych)</translation>
     </message>
@@ -2659,12 +2682,12 @@ liczba: %4</translation>
         <translation>%1 (nie ma w projekcie)</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+146"/>
         <source>Remove the SPC series</source>
         <translation>Usuń serię SPC</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+25"/>
         <source>“%1” has no column of numbers to chart.</source>
         <translation>„%1” nie ma kolumny liczb do przedstawienia.</translation>
     </message>
@@ -2895,12 +2918,12 @@ liczba: %4</translation>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="-701"/>
+        <location line="-693"/>
         <source>USL:</source>
         <translation>GGT:</translation>
     </message>
     <message>
-        <location line="+510"/>
+        <location line="+502"/>
         <source>The kinematics study&apos;s settings are invalid; nothing is run until they are corrected (Undo, or the project file):
 %1</source>
         <translation>Ustawienia badania kinematyki są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (Cofnij lub plik projektu):
@@ -3781,7 +3804,7 @@ liczba: %4</translation>
 <context>
     <name>metrofit::MatchingPage</name>
     <message>
-        <location filename="../app/gui/matchingpage.cpp" line="+126"/>
+        <location filename="../app/gui/matchingpage.cpp" line="+127"/>
         <source>SADE (rough + fine, paper settings)</source>
         <translation>SADE (zgrubne + dokładne, parametry z publikacji)</translation>
     </message>
@@ -4117,7 +4140,7 @@ liczba: %4</translation>
         <translation>Utrzymaj %1 na 0 (optimum z ograniczeniem po pozostałych parametrach)</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+37"/>
         <source>Change the matching method</source>
         <translation>Zmiana metody dopasowania</translation>
     </message>
@@ -4148,13 +4171,13 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+63"/>
-        <location line="+313"/>
-        <location line="+16"/>
+        <location line="+314"/>
+        <location line="+62"/>
         <source>Matching failed: %1</source>
         <translation>Dopasowanie nie powiodło się: %1</translation>
     </message>
     <message>
-        <location line="+485"/>
+        <location line="+500"/>
         <source>No posture yet: press Run (Ctrl+R).</source>
         <translation>Brak położenia: naciśnij Uruchom (Ctrl+R).</translation>
     </message>
@@ -4255,7 +4278,7 @@ liczba: %4</translation>
         <translation>Nie można zapisać frame’u</translation>
     </message>
     <message>
-        <location line="-776"/>
+        <location line="-837"/>
         <source>The effects applied to the matching model are invalid:
 %1</source>
         <translation>Efekty zastosowane do modelu dopasowania są nieprawidłowe:
@@ -4283,12 +4306,12 @@ liczba: %4</translation>
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
     <message>
-        <location line="-907"/>
+        <location line="-915"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: nie można ustawić %1 mm na stronie (przyjmuje od %2 do %3 mm w krokach co %4 mm)</translation>
     </message>
     <message>
-        <location line="+751"/>
+        <location line="+759"/>
         <source>This project has no probe points. Import them with File › Import data… (Ctrl+I): probe points with their nominals, a hole table or a CMM report, or raw measured points whose nominals come from a fitted element or a second measurement.</source>
         <translation>Ten projekt nie ma punktów pomiarowych. Zaimportuj je przez Plik › Importuj dane… (Ctrl+I): punkty z ich wartościami nominalnymi, tabelę otworów lub raport CMM albo surowe punkty pomiarowe, których punkty nominalne pochodzą z dopasowanego elementu lub z drugiego pomiaru.</translation>
     </message>
@@ -4298,7 +4321,22 @@ liczba: %4</translation>
         <translation>Ustawienia badania dopasowania są nieprawidłowe; nic nie zostanie uruchomione, dopóki nie zostaną poprawione (Cofnij lub plik projektu): %1</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+58"/>
+        <source>Lock %1 and run</source>
+        <translation>Zablokuj %1 i uruchom</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The points cannot determine %1 (a sphere fixes no rotation, parallel normals fix no rotation about them): hold them at 0 and run again. Undo gives the locks back.</source>
+        <translation>Punkty nie wyznaczają %1 (kula nie ustala żadnego obrotu, równoległe normalne nie ustalają obrotu wokół nich): utrzymaj je na 0 i uruchom ponownie. Cofnij przywraca blokady.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Lock %1</source>
+        <translation>Zablokuj %1</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>Matching …</source>
         <translation>Dopasowywanie …</translation>
     </message>
@@ -4379,7 +4417,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dopasowanie zgrubne: lokalne układy 3-punktowe, równ. 3–7</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+9"/>
+        <source>%1 is locked at %2: the rough stage&apos;s three-point frames cannot hold a lock, the fine stage (SADE) holds it.</source>
+        <translation>%1 jest zablokowany na %2: trzypunktowe układy etapu zgrubnego nie mogą utrzymać blokady, utrzymuje ją etap dokładny (SADE).</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>head-head, Eq. 12–13</source>
         <translation>głowica-głowica, równ. 12–13</translation>
     </message>
@@ -4509,7 +4552,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>w tolerancji: bez korekty</translation>
     </message>
     <message>
-        <location line="-593"/>
+        <location line="-654"/>
         <source>with normals</source>
         <translation>z normalnymi</translation>
     </message>
@@ -4560,11 +4603,12 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
     </message>
     <message>
         <location line="+7"/>
+        <location line="+110"/>
         <source>Project name</source>
         <translation>Nazwa projektu</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-108"/>
         <source>What is measured, on which machine, and why</source>
         <translation>Co jest mierzone, na jakiej maszynie i dlaczego</translation>
     </message>
@@ -4619,7 +4663,7 @@ jeszcze nie uruchomiono: naciśnij Uruchom (Ctrl+R)</translation>
         <translation>Dodaje plik do projektu jako zbiór danych (Plik › Importuj dane…, Ctrl+I lub przeciągnij pliki na okno); prawy przycisk myszy na zbiorze danych: zmiana nazwy, ponowne połączenie lub usunięcie</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+45"/>
         <source>not saved yet</source>
         <translation>jeszcze nie zapisano</translation>
     </message>
@@ -4972,15 +5016,15 @@ odchyłka: %3 µm</translation>
     <message>
         <location line="+14"/>
         <location filename="../widgets/report/kinematicsection.cpp" line="+119"/>
-        <location line="+137"/>
+        <location line="+138"/>
         <location filename="../widgets/report/thermalsection.cpp" line="-418"/>
         <source>yes</source>
         <translation>tak</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-137"/>
-        <location line="+137"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-138"/>
+        <location line="+138"/>
         <source>no</source>
         <translation>nie</translation>
     </message>
@@ -5096,13 +5140,13 @@ odchyłka: %3 µm</translation>
         <translation>Dla każdego studium dopasowywany jest zadeklarowany model i obliczane jego residuum; brakujące w modelu efekty kandydujące są sprawdzane kolejno, każdy estymowany wraz z parametrami i ich błędami standardowymi. Efekt jest przyjmowany tylko na podstawie dowodów (poprawa na danych testowych dla termiki, w pozostałych przypadkach kryterium informacyjne z ostrożnym progiem) i gdy zmniejsza błąd o praktycznie istotną wartość; model jest ponownie dopasowywany z tym efektem, a wyszukiwanie powtarzane, dopóki nic więcej nie zostanie znalezione.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/kinematicsection.cpp" line="-213"/>
-        <location line="+266"/>
+        <location filename="../widgets/report/kinematicsection.cpp" line="-214"/>
+        <location line="+267"/>
         <source>error</source>
         <translation>błąd</translation>
     </message>
     <message>
-        <location line="-266"/>
+        <location line="-267"/>
         <source>identified</source>
         <translation>zidentyfikowany</translation>
     </message>
@@ -5118,36 +5162,36 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+269"/>
+        <location line="+270"/>
         <source>origin x (µm)</source>
         <translation>początek x (µm)</translation>
     </message>
     <message>
-        <location line="-267"/>
-        <location line="+269"/>
+        <location line="-268"/>
+        <location line="+270"/>
         <source>origin y (µm)</source>
         <translation>początek y (µm)</translation>
     </message>
     <message>
-        <location line="-267"/>
-        <location line="+268"/>
+        <location line="-268"/>
+        <location line="+269"/>
         <source>X axis angle a (deg)</source>
         <translation>kąt osi X a (stopnie)</translation>
     </message>
     <message>
-        <location line="-266"/>
-        <location line="+268"/>
+        <location line="-267"/>
+        <location line="+269"/>
         <source>Y axis angle b (deg)</source>
         <translation>kąt osi Y b (stopnie)</translation>
     </message>
     <message>
-        <location line="-266"/>
-        <location line="+268"/>
+        <location line="-267"/>
+        <location line="+269"/>
         <source>squareness b − a (deg)</source>
         <translation>prostopadłość b − a (stopnie)</translation>
     </message>
     <message>
-        <location line="-266"/>
+        <location line="-267"/>
         <source>RMS residual (µm)</source>
         <translation>residuum RMS (µm)</translation>
     </message>
@@ -5258,12 +5302,12 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location line="+312"/>
+        <location line="+313"/>
         <source>Circular test “%1”</source>
         <translation>Test kołowy „%1”</translation>
     </message>
     <message>
-        <location line="-304"/>
+        <location line="-305"/>
         <source>%1 points; nominal circle R %2 mm about (%3, %4) mm; %5 loops (CCW, then CW). The actuator errors of the Cartesian machine (%8, Eq. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) were identified by Levenberg-Marquardt (%6, iterations: %7); standard errors from the residuals.</source>
         <translation>%1 punktów; okrąg nominalny R %2 mm wokół (%3; %4) mm; %5 pętli (przeciwnie, potem zgodnie z ruchem wskazówek zegara). Błędy napędów maszyny kartezjańskiej (%8, równ. 9: P = o + ir·x + jr·y, ir = (cos a, sin a), jr = (−sin b, cos b)) wyznaczono metodą Levenberga-Marquardta (%6, iteracje: %7); błędy standardowe z residuów.</translation>
     </message>
@@ -5284,12 +5328,12 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+287"/>
+        <location line="+288"/>
         <source>Radial deviation (polar, magnified)</source>
         <translation>Odchyłka promieniowa (biegunowo, powiększona)</translation>
     </message>
     <message>
-        <location line="-271"/>
+        <location line="-272"/>
         <source>Compensation</source>
         <translation>Kompensacja</translation>
     </message>
@@ -5334,17 +5378,18 @@ odchyłka: %3 µm</translation>
         <translation>największa korekcja |wartość zadana − nominalna|</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Statistical process control</source>
         <translation>Statystyczne sterowanie procesem</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+291"/>
         <source>The SPC series could not be charted: %1</source>
         <translation>Nie można było wykreślić serii SPC: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-282"/>
         <source>Statistical process control of “%1” (%2)</source>
         <translation>Statystyczne sterowanie procesem: „%1” (%2)</translation>
     </message>
@@ -5388,11 +5433,12 @@ odchyłka: %3 µm</translation>
     <message>
         <location line="+6"/>
         <location line="+151"/>
+        <location line="+99"/>
         <source>in control</source>
         <translation>pod kontrolą</translation>
     </message>
     <message>
-        <location line="-150"/>
+        <location line="-249"/>
         <source>Nelson rules (subgroups)</source>
         <translation>Reguły Nelsona (podgrupy)</translation>
     </message>
@@ -5449,11 +5495,12 @@ odchyłka: %3 µm</translation>
     <message>
         <location line="+4"/>
         <location line="+128"/>
+        <location line="+97"/>
         <source>SPC-gated compensation: %1</source>
         <translation>Kompensacja warunkowana SPC: %1</translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-218"/>
         <source>From the SPC offset angle to actuator errors</source>
         <translation>Od kąta przesunięcia SPC do błędów napędów</translation>
     </message>
@@ -5596,21 +5643,24 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+99"/>
         <source>SPC of %1: %2.</source>
         <translation>SPC dla %1: %2.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-96"/>
+        <location line="+98"/>
         <source>out of control</source>
         <translation>poza kontrolą</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-96"/>
+        <location line="+98"/>
         <source>Cpk %1.</source>
         <translation>Cpk %1.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-91"/>
         <source>From the SPC offset angles: origin (%1, %2) µm, squareness %3°.</source>
         <translation>Z kątów przesunięcia SPC: początek (%1; %2) µm, prostopadłość %3°.</translation>
     </message>
@@ -5645,12 +5695,37 @@ odchyłka: %3 µm</translation>
         <translation>Aby zidentyfikować i skompensować błędy napędów, zarejestruj test okrągłości z zadanymi i zmierzonymi współrzędnymi x/y.</translation>
     </message>
     <message>
+        <location line="+21"/>
+        <source>The project has no circular test: the study charts its part series only; no actuator errors are identified and no compensation is computed.</source>
+        <translation>Projekt nie ma testu kołowego: badanie pokazuje tylko serię części; błędy napędów nie są identyfikowane, a kompensacja nie jest obliczana.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No SPC series is chosen.</source>
+        <translation>Nie wybrano serii SPC.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Choose the series and its column on the Kinematics page, SPC tab.</source>
+        <translation>Wybierz serię i jej kolumnę na stronie Kinematyka, karta SPC.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Keep charting the series; act when a point leaves the limits.</source>
+        <translation>Prowadź dalej kartę serii; reaguj, gdy punkt wyjdzie poza granice.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Find the assignable cause of the out-of-control points before compensating.</source>
+        <translation>Przed kompensacją znajdź przyczynę specjalną punktów poza granicami kontrolnymi.</translation>
+    </message>
+    <message>
         <location line="+9"/>
         <source>Kinematic compensation and SPC</source>
         <translation>Kompensacja kinematyczna i SPC</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+32"/>
         <source>Cannot analyse the circular test: %1</source>
         <translation>Nie można przeanalizować testu okrągłości: %1</translation>
     </message>
@@ -6426,7 +6501,7 @@ odchyłka: %3 µm</translation>
         <translation>Projekt nie odwołuje się do żadnych zbiorów danych.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/report.cpp" line="+126"/>
+        <location filename="../widgets/report/report.cpp" line="+128"/>
         <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
@@ -7220,7 +7295,7 @@ odchyłka: %3 µm</translation>
 <context>
     <name>metrofit::ReportExporter</name>
     <message>
-        <location filename="../app/gui/reportexporter.cpp" line="+37"/>
+        <location filename="../app/gui/reportexporter.cpp" line="+39"/>
         <source>the unsaved project</source>
         <translation>niezapisany projekt</translation>
     </message>
@@ -7230,7 +7305,7 @@ odchyłka: %3 µm</translation>
         <translation>Nie można przygotować raportu: %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>Cannot run %1: %2</source>
         <translation>Nie można uruchomić %1: %2</translation>
     </message>
@@ -8187,7 +8262,7 @@ odchyłka: %3 µm</translation>
 <context>
     <name>metrofit::SetupGraphEditor</name>
     <message>
-        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+102"/>
+        <location filename="../widgets/setup/setupgrapheditor.cpp" line="+94"/>
         <source>Add node…</source>
         <translation>Dodaj węzeł…</translation>
     </message>
