@@ -462,7 +462,8 @@ TEST_F(SetupReportModelTest, QifResultsToModelRunsLikeCoreAndOffersItsParts) {
       for (int c = 0; c < preview->columnCount(); ++c) cells << preview->item(r, c)->text();
       shown << cells.join(QLatin1Char('|'));
     }
-    EXPECT_EQ(found, 2) << "the first part's rows come first:\n" << shown.join(QLatin1Char('\n')).toStdString();
+    EXPECT_EQ(found, 2) << "the first part's rows come first:\n"
+                        << shown.join(QLatin1Char('\n')).toStdString();
     EXPECT_FALSE(preview->item(0, 0)->text().startsWith(QLatin1Char('<'))) << "not the XML lines";
   }
   const DatasetRef qif = dialog.dataset();
