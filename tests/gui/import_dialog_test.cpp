@@ -24,8 +24,10 @@
 #include <QEventLoop>
 #include <QFile>
 #include <QFileInfo>
+#include <QGroupBox>
 #include <QInputDialog>
 #include <QLabel>
+#include <QLocale>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
@@ -421,10 +423,17 @@ TEST_F(ImportDialogTest, FilesThatAreNotCsvAreImportedWithoutDialectOrMapping) {
   EXPECT_FALSE(dialog.findChild<QTableWidget*>(QStringLiteral("importMapping"))->isEnabled());
   EXPECT_EQ(dialog.dataset().kind, dataset_kind::kHoleTable);
   EXPECT_EQ(dialog.dataset().csv, CsvReadOptions{});
-  // The preview shows the file's lines as they are.
+  // The preview shows the holes as the studies read them (the dataset's Show data table), not the
+  // file's lines: the first hole's nominal X 11.650 and measured X 11.610 (the file's first data line).
   auto* preview = dialog.findChild<QTableWidget*>(QStringLiteral("importPreview"));
-  EXPECT_EQ(preview->columnCount(), 1);
-  EXPECT_EQ(preview->item(0, 0)->text(), QStringLiteral("Plug Plate: 9001"));
+  EXPECT_GT(preview->columnCount(), 1);
+  QStringList firstRow;
+  for (int c = 0; c < preview->columnCount(); ++c) firstRow << preview->item(0, c)->text();
+  const QString shown = firstRow.join(QLatin1Char('|'));
+  EXPECT_FALSE(shown.contains(QStringLiteral("Plug Plate"))) << shown.toStdString();
+  EXPECT_TRUE(shown.contains(QLocale().toString(11.65)) && shown.contains(QLocale().toString(11.61)))
+      << shown.toStdString();
+  EXPECT_TRUE(dialog.findChild<QGroupBox*>(QStringLiteral("importMappingBox"))->isHidden());
 
   dialog.setFile(source + QStringLiteral("/fuzz/corpus/dmis/part_17.dmo"));
   EXPECT_EQ(dialog.kind(), QStringLiteral("dmis"));  // by its content: DMISMN

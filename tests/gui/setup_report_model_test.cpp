@@ -15,6 +15,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
+#include <QGroupBox>
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
@@ -465,6 +466,8 @@ TEST_F(SetupReportModelTest, QifResultsToModelRunsLikeCoreAndOffersItsParts) {
     EXPECT_EQ(found, 2) << "the first part's rows come first:\n"
                         << shown.join(QLatin1Char('\n')).toStdString();
     EXPECT_FALSE(preview->item(0, 0)->text().startsWith(QLatin1Char('<'))) << "not the XML lines";
+    EXPECT_TRUE(dialog.findChild<QGroupBox*>(QStringLiteral("importMappingBox"))->isHidden())
+        << "no columns to map: the preview has the width";
   }
   const DatasetRef qif = dialog.dataset();
   EXPECT_EQ(qif.kind, dataset_kind::kQif);

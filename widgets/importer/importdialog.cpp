@@ -341,6 +341,7 @@ ImportDialog::ImportDialog(const Project& project, const QString& projectPath, Q
   preview_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
 
   auto* mappingBox = new QGroupBox(tr("Columns"), this);
+  mappingBox->setObjectName(QStringLiteral("importMappingBox"));
   auto* mappingLayout = new QVBoxLayout(mappingBox);
   auto* mappingHint = new QLabel(
       tr("Give a column the name the readers look for (time_s, disp_z_um, qx, x_cmd_mm, …); empty: "
@@ -957,6 +958,8 @@ void ImportDialog::revalidate() {
   comment_->setEnabled(csv);
   skipBadRows_->setEnabled(csv);
   mapping_->setEnabled(csv);
+  // A file that is no CSV has no columns to map: the preview takes the whole width.
+  findChild<QGroupBox*>(QStringLiteral("importMappingBox"))->setVisible(csv || file_.isEmpty());
   rowProblems_->clear();
   dmisBox_->setVisible(!file_.isEmpty() && readError_.isEmpty() && isDmisFile());
   nominalsBox_->setVisible(needsNominals());
