@@ -1591,12 +1591,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+258"/>
+        <location line="+259"/>
         <source>Import data</source>
         <translation>Daten importieren</translation>
     </message>
     <message>
-        <location line="-245"/>
+        <location line="-246"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Zeilen vor den Spaltennamen, unabhängig vom Inhalt übersprungen (Vorspann eines Messgeräts)</translation>
     </message>
@@ -1746,7 +1746,7 @@ Anzahl: %4</translation>
         <translation>Spalten</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Give a column the name the readers look for (time_s, disp_z_um, qx, x_cmd_mm, …); empty: the name in the file. The project stores this mapping, not a converted copy.</source>
         <translation>Geben Sie einer Spalte den Namen, den die Leser erwarten (time_s, disp_z_um, qx, x_cmd_mm, …); leer: der Name in der Datei. Das Projekt speichert diese Zuordnung, keine umgewandelte Kopie.</translation>
     </message>
@@ -1757,12 +1757,12 @@ Anzahl: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+611"/>
+        <location line="+613"/>
         <source>Rows that cannot be read:</source>
         <translation>Nicht lesbare Zeilen:</translation>
     </message>
     <message>
-        <location line="-547"/>
+        <location line="-549"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Die Datei als &lt;id&gt;.&lt;Endung&gt; in den Ordner data des Projekts kopieren und auf die Kopie verweisen; der Import überschreibt dort nie eine Datei</translation>
     </message>
@@ -1872,7 +1872,7 @@ Anzahl: %4</translation>
         <translation>%1: gelesen als %2, %3.</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+33"/>
         <source>Choose a file to import.</source>
         <translation>Wählen Sie eine Datei zum Importieren.</translation>
     </message>
@@ -3822,7 +3822,7 @@ Anzahl: %4</translation>
         <translation>Minimax</translation>
     </message>
     <message>
-        <location line="+199"/>
+        <location line="+201"/>
         <source>Allow &amp;scale</source>
         <translation>&amp;Skalierung</translation>
     </message>
@@ -4294,12 +4294,12 @@ Anzahl: %4</translation>
         <translation>Einstellungen geändert: Ausführen (Strg+R) drücken, um erneut auszurichten.</translation>
     </message>
     <message>
-        <location line="-915"/>
+        <location line="-917"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: %1 mm kann auf der Seite nicht eingestellt werden (sie nimmt %2 bis %3 mm in Schritten von %4 mm)</translation>
     </message>
     <message>
-        <location line="+759"/>
+        <location line="+761"/>
         <source>This project has no probe points. Import them with File › Import data… (Ctrl+I): probe points with their nominals, a hole table or a CMM report, or raw measured points whose nominals come from a fitted element or a second measurement.</source>
         <translation>Dieses Projekt hat keine Antastpunkte. Importieren Sie sie mit Datei › Daten importieren… (Strg+I): Antastpunkte mit ihren Sollpunkten, eine Bohrungstabelle oder ein KMG-Protokoll, oder rohe Messpunkte, deren Sollpunkte aus einem angepassten Element oder einer zweiten Messung kommen.</translation>
     </message>
@@ -5392,7 +5392,7 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+428"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+437"/>
         <location filename="../widgets/report/summarysection.cpp" line="+157"/>
         <source>value</source>
         <translation>Wert</translation>
@@ -5727,7 +5727,7 @@ Abweichung: %3 µm</translation>
         <translation>Wiederholen Sie den Kreisformtest und prüfen Sie seine Datei.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-381"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="-390"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (Originalparameter)</translation>
     </message>
@@ -5939,6 +5939,11 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+7"/>
+        <source>Locked: %1. The rough stage&apos;s three-point frames cannot hold a lock; its angles are only the start the fine stage moves to the lock values.</source>
+        <translation>Gesperrt: %1. Die Dreipunkt-Koordinatensysteme der Grobausrichtung können keine Sperre halten; ihre Winkel sind nur der Start, den die Feinausrichtung auf die Sperrwerte bringt.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>axis</source>
         <translation>Achse</translation>
     </message>
@@ -5949,12 +5954,12 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+105"/>
+        <location line="+127"/>
         <source>frame rotation</source>
         <translation>Drehung des Koordinatensystems</translation>
     </message>
     <message>
-        <location line="-104"/>
+        <location line="-126"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Maschineneinstellwerte (%1%2)</translation>
     </message>
@@ -6027,6 +6032,34 @@ Abweichung: %3 µm</translation>
         <location line="+5"/>
         <source>Remeasure loop (simulated machine and CMM)</source>
         <translation>Nachmessschleife (simulierte Maschine und KMG)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>Every point within tolerance after %n adjustment(s).</source>
+        <translation>
+            <numerusform>Jeder Punkt nach %n Korrektur innerhalb der Toleranz.</numerusform>
+            <numerusform>Jeder Punkt nach %n Korrekturen innerhalb der Toleranz.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>FAILED: the best fit leaves points out of tolerance (form error larger than the tolerance); no WCS adjustment can bring them in.</source>
+        <translation>FEHLGESCHLAGEN: Die beste Einpassung lässt Punkte außerhalb der Toleranz (Formfehler größer als die Toleranz); keine Verschiebung des Werkstückkoordinatensystems bringt sie hinein.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>FAILED: the adjustment is beyond the machine&apos;s travel; the WCS was not moved.</source>
+        <translation>FEHLGESCHLAGEN: Die Korrektur liegt außerhalb des Verfahrwegs der Maschine; das Werkstückkoordinatensystem wurde nicht verschoben.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>FAILED: still out of tolerance after the last adjustment.</source>
+        <translation>FEHLGESCHLAGEN: Nach der letzten Korrektur noch außerhalb der Toleranz.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stopped before the end.</source>
+        <translation>Vor dem Ende angehalten.</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -6488,9 +6521,14 @@ Abweichung: %3 µm</translation>
     </message>
     <message>
         <location filename="../widgets/report/report.cpp" line="+128"/>
-        <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
+        <location filename="../widgets/report/reportpainter.cpp" line="+108"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
+    </message>
+    <message>
+        <location line="+113"/>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
     </message>
     <message>
         <location filename="../widgets/report/reportpainter.cpp" line="+22"/>

@@ -1596,12 +1596,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+258"/>
+        <location line="+259"/>
         <source>Import data</source>
         <translation>Import danych</translation>
     </message>
     <message>
-        <location line="-245"/>
+        <location line="-246"/>
         <source>Lines before the column names, skipped whatever they hold (an instrument&apos;s preamble)</source>
         <translation>Wiersze przed nazwami kolumn, pomijane bez względu na treść (nagłówek przyrządu)</translation>
     </message>
@@ -1751,7 +1751,7 @@ liczba: %4</translation>
         <translation>Kolumny</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Give a column the name the readers look for (time_s, disp_z_um, qx, x_cmd_mm, …); empty: the name in the file. The project stores this mapping, not a converted copy.</source>
         <translation>Nadaj kolumnie nazwę, której szukają czytniki (time_s, disp_z_um, qx, x_cmd_mm, …); puste: nazwa z pliku. Projekt zapisuje to przyporządkowanie, a nie przekonwertowaną kopię.</translation>
     </message>
@@ -1762,12 +1762,12 @@ liczba: %4</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+611"/>
+        <location line="+613"/>
         <source>Rows that cannot be read:</source>
         <translation>Wiersze, których nie można odczytać:</translation>
     </message>
     <message>
-        <location line="-547"/>
+        <location line="-549"/>
         <source>Copy the file to the project&apos;s data folder as &lt;id&gt;.&lt;extension&gt; and refer to the copy; the import never overwrites a file there</source>
         <translation>Skopiuj plik do folderu data projektu jako &lt;id&gt;.&lt;rozszerzenie&gt; i odwołuj się do kopii; import nigdy nie nadpisuje tam pliku</translation>
     </message>
@@ -1880,7 +1880,7 @@ liczba: %4</translation>
         <translation>%1: odczytano jako %2, %3.</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+33"/>
         <source>Choose a file to import.</source>
         <translation>Wybierz plik do importu.</translation>
     </message>
@@ -3834,7 +3834,7 @@ liczba: %4</translation>
         <translation>minimaks</translation>
     </message>
     <message>
-        <location line="+199"/>
+        <location line="+201"/>
         <source>Allow &amp;scale</source>
         <translation>&amp;Skala</translation>
     </message>
@@ -4306,12 +4306,12 @@ liczba: %4</translation>
         <translation>Zmieniono ustawienia: naciśnij Uruchom (Ctrl+R), aby ponownie dopasować.</translation>
     </message>
     <message>
-        <location line="-915"/>
+        <location line="-917"/>
         <source>studies.matching.tolerance_mm: %1 mm cannot be set on the page (it takes %2 to %3 mm in steps of %4 mm)</source>
         <translation>studies.matching.tolerance_mm: nie można ustawić %1 mm na stronie (przyjmuje od %2 do %3 mm w krokach co %4 mm)</translation>
     </message>
     <message>
-        <location line="+759"/>
+        <location line="+761"/>
         <source>This project has no probe points. Import them with File › Import data… (Ctrl+I): probe points with their nominals, a hole table or a CMM report, or raw measured points whose nominals come from a fitted element or a second measurement.</source>
         <translation>Ten projekt nie ma punktów pomiarowych. Zaimportuj je przez Plik › Importuj dane… (Ctrl+I): punkty z ich wartościami nominalnymi, tabelę otworów lub raport CMM albo surowe punkty pomiarowe, których punkty nominalne pochodzą z dopasowanego elementu lub z drugiego pomiaru.</translation>
     </message>
@@ -5405,7 +5405,7 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../widgets/report/matchingsection.cpp" line="+428"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="+437"/>
         <location filename="../widgets/report/summarysection.cpp" line="+157"/>
         <source>value</source>
         <translation>wartość</translation>
@@ -5740,7 +5740,7 @@ odchyłka: %3 µm</translation>
         <translation>Powtórz test okrągłości i sprawdź jego plik.</translation>
     </message>
     <message>
-        <location filename="../widgets/report/matchingsection.cpp" line="-381"/>
+        <location filename="../widgets/report/matchingsection.cpp" line="-390"/>
         <source>SADE (paper settings)</source>
         <translation>SADE (parametry z publikacji)</translation>
     </message>
@@ -5952,6 +5952,11 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+7"/>
+        <source>Locked: %1. The rough stage&apos;s three-point frames cannot hold a lock; its angles are only the start the fine stage moves to the lock values.</source>
+        <translation>Zablokowane: %1. Trzypunktowe układy etapu zgrubnego nie mogą utrzymać blokady; ich kąty są tylko punktem startowym, który etap dokładny przesuwa do wartości blokad.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>axis</source>
         <translation>oś</translation>
     </message>
@@ -5962,12 +5967,12 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+105"/>
+        <location line="+127"/>
         <source>frame rotation</source>
         <translation>obrót układu współrzędnych</translation>
     </message>
     <message>
-        <location line="-104"/>
+        <location line="-126"/>
         <source>Machine adjustment values (%1%2)</source>
         <translation>Wartości nastawienia maszyny (%1%2)</translation>
     </message>
@@ -6040,6 +6045,35 @@ odchyłka: %3 µm</translation>
         <location line="+5"/>
         <source>Remeasure loop (simulated machine and CMM)</source>
         <translation>Pętla ponownego pomiaru (maszyna symulowana i WMP)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>Every point within tolerance after %n adjustment(s).</source>
+        <translation>
+            <numerusform>Każdy punkt w tolerancji po %n korekcie.</numerusform>
+            <numerusform>Każdy punkt w tolerancji po %n korektach.</numerusform>
+            <numerusform>Każdy punkt w tolerancji po %n korektach.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>FAILED: the best fit leaves points out of tolerance (form error larger than the tolerance); no WCS adjustment can bring them in.</source>
+        <translation>NIEPOWODZENIE: najlepsze dopasowanie pozostawia punkty poza tolerancją (błąd kształtu większy niż tolerancja); żadne przesunięcie układu przedmiotu ich nie wprowadzi.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>FAILED: the adjustment is beyond the machine&apos;s travel; the WCS was not moved.</source>
+        <translation>NIEPOWODZENIE: korekta wykracza poza zakres ruchu maszyny; układ przedmiotu nie został przesunięty.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>FAILED: still out of tolerance after the last adjustment.</source>
+        <translation>NIEPOWODZENIE: nadal poza tolerancją po ostatniej korekcie.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stopped before the end.</source>
+        <translation>Zatrzymano przed końcem.</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -6502,9 +6536,14 @@ odchyłka: %3 µm</translation>
     </message>
     <message>
         <location filename="../widgets/report/report.cpp" line="+128"/>
-        <location filename="../widgets/report/reportpainter.cpp" line="+107"/>
+        <location filename="../widgets/report/reportpainter.cpp" line="+108"/>
         <source>Metrofit %1</source>
         <translation>Metrofit %1</translation>
+    </message>
+    <message>
+        <location line="+113"/>
+        <source>Untitled</source>
+        <translation>Bez nazwy</translation>
     </message>
     <message>
         <location filename="../widgets/report/reportpainter.cpp" line="+22"/>

@@ -323,7 +323,9 @@ QTableWidgetItem* textItem(const QString& s) {
 }
 
 QTableWidgetItem* numberItem(double v, int decimals) {
-  auto* item = new QTableWidgetItem(QLocale().toString(v, 'f', decimals));
+  // A value that rounds to zero is shown as 0 (not "-0,0000", which reads as a sign to act on).
+  const double shown = std::abs(v) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : v;
+  auto* item = new QTableWidgetItem(QLocale().toString(shown, 'f', decimals));
   item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
   return item;
 }

@@ -125,9 +125,28 @@ TEST(AppliedReportCli, ReportSpeaksTheLanguageAskedFor) {
       EXPECT_EQ(text.find("What to change on the machine"), std::string::npos);
       EXPECT_EQ(text.find("Includes applied effects"), std::string::npos);
     }
+    if (lang == "de") {
+      // Table columns are at least as wide as their longest word: German study names are not broken
+      // inside ("Lageausrichtun" / "g" in the summary tables).
+      EXPECT_TRUE(std::regex_search(text, std::regex("Lageausrichtung")));
+      EXPECT_FALSE(std::regex_search(text, std::regex("Lageausrichtun(?!g)"))) << text;
+      EXPECT_FALSE(std::regex_search(text, std::regex("Einrichtdatenkorrek(?!tur)"))) << text;
+    }
     EXPECT_NE(text.find("0.0021 mm"), std::string::npos) << "numbers keep the decimal point";
     EXPECT_EQ(text.find("0,0021"), std::string::npos);
   }
+  // A project nobody named: core's "Untitled" is written in the report's language.
+  nlohmann::json unnamed = nlohmann::json::parse(readText(tmp.file("p.metrofit")));
+  unnamed.erase("name");
+  writeText(tmp.file("unnamed.metrofit"), unnamed.dump(2));
+  const CliRun u = cli("report --project unnamed.metrofit --out u.pdf --lang de", tmp);
+  ASSERT_EQ(u.code, 0) << u.err;
+  ASSERT_EQ(
+      std::system(("pdftotext -layout '" + tmp.file("u.pdf") + "' '" + tmp.file("u.txt") + "'").c_str()), 0);
+  const std::string unnamedText = readText(tmp.file("u.txt"));
+  EXPECT_NE(unnamedText.find("Projekt „Unbenannt“"), std::string::npos);
+  EXPECT_EQ(unnamedText.find("Untitled"), std::string::npos);
+
   const CliRun bad = cli("report --project p.metrofit --out r_fr.pdf --lang fr", tmp);
   EXPECT_EQ(bad.code, 2) << bad.err;
   EXPECT_EQ(lines(bad.err), 1) << bad.err;

@@ -420,6 +420,15 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
   }
   out.subheading(ReportText::tr("Methods (RMSE and max |d| in mm)"), out.mm(30.0));
   out.table(methods);
+  // The rough frames are a whole rigid frame: with rotation locks their angles are only SADE's start.
+  if (primary.locks.anyRotation() &&
+      std::any_of(res.runs.begin(), res.runs.end(), [](const matching::MatchResult& r) {
+        return r.rough.has_value() && r.method == MatchMethod::Sade;
+      }))
+    out.paragraph(ReportText::tr("Locked: %1. The rough stage's three-point frames cannot hold a lock; its "
+                                 "angles are only the start the fine stage moves to the lock values.")
+                      .arg(QString::fromStdString(primary.locks.toString())),
+                  ReportPainter::Font::Small);
 
   // Machine adjustment values.
   const machine::Adjustment& adj = res.adjustment;
@@ -501,7 +510,29 @@ void writeStudy(ReportPainter& out, const ReportContext& context, const ReportDa
     }
     out.subheading(ReportText::tr("Remeasure loop (simulated machine and CMM)"), out.mm(30.0));
     out.table(loop);
-    QString outcome = QString::fromStdString(res.remeasure->run.message);
+    // The loop's outcome in the report's language (core's run.message is English).
+    const int adjustments = std::max(0, static_cast<int>(res.remeasure->rounds.size()) - 1);
+    QString outcome;
+    switch (res.remeasure->outcome) {
+      case matching::RemeasureOutcome::InTolerance:
+        outcome = ReportText::tr("Every point within tolerance after %n adjustment(s).", "", adjustments);
+        break;
+      case matching::RemeasureOutcome::FormError:
+        outcome = ReportText::tr(
+            "FAILED: the best fit leaves points out of tolerance (form error larger than "
+            "the tolerance); no WCS adjustment can bring them in.");
+        break;
+      case matching::RemeasureOutcome::BeyondTravel:
+        outcome =
+            ReportText::tr("FAILED: the adjustment is beyond the machine's travel; the WCS was not moved.");
+        break;
+      case matching::RemeasureOutcome::NotConverged:
+        outcome = ReportText::tr("FAILED: still out of tolerance after the last adjustment.");
+        break;
+      case matching::RemeasureOutcome::Cancelled:
+        outcome = ReportText::tr("Stopped before the end.");
+        break;
+    }
     if (const matching::ToleranceEvaluation* t = res.remeasure->trueRemaining())
       outcome += QLatin1Char(' ') + ReportText::tr(
                                         "True remaining error of the simulated part: %1 mm at most, "

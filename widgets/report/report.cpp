@@ -182,7 +182,7 @@ ReportSummary writeReport(const Project& project, const QString& pdfPath, const 
   validateStudies(project, source);
   ReportContext context;
   context.project = &project;
-  context.title = options.title.isEmpty() ? QString::fromStdString(project.name) : options.title;
+  context.title = options.title.isEmpty() ? reportProjectName(project) : options.title;
   context.date = QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"));
   context.datasets = readDatasets(project, options.projectPath);
   validateStudies(project, source, [&context](const std::string& id) -> const std::vector<std::string>* {
@@ -234,6 +234,11 @@ ReportSummary writeReport(const Project& project, const QString& pdfPath, const 
     summary.sections << s->title();
   }
   return summary;
+}
+
+QString reportProjectName(const Project& project) {
+  const QString name = QString::fromStdString(project.name).trimmed();
+  return name.isEmpty() || project.name == Project{}.name ? ReportText::tr("Untitled") : name;
 }
 
 }  // namespace metrofit

@@ -9,6 +9,7 @@
 #include <QGraphicsScene>
 #include <QPainter>
 #include <QPdfWriter>
+#include <QRegularExpression>
 #include <QTextOption>
 
 #include <algorithm>
@@ -220,6 +221,32 @@ void ReportPainter::table(const ReportTable& table) {
   QList<double> columnWidths;
   for (int c = 0; c < columns; ++c)
     columnWidths << tableWidth * widths[c] / (totalWeight > 0 ? totalWeight : 1.0);
+  // A column narrower than its longest word ("Lageausrichtung", "Einrichtdatenkorrektur" in German)
+  // takes the room from columns that have more than their own longest word needs, so words break
+  // inside only when the table cannot hold them at all.
+  {
+    const QFontMetricsF bodyMetrics(body, &writer_), boldMetrics(bold, &writer_);
+    QList<double> need(columns, 0.0);
+    const auto measure = [&](const QStringList& cells, const QFontMetricsF& metrics) {
+      for (int c = 0; c < columns && c < cells.size(); ++c)
+        for (const QString& word :
+             cells[c].split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts))
+          need[c] = std::max(need[c], metrics.horizontalAdvance(word) + 2 * pad + mm(0.5));
+    };
+    measure(table.header, boldMetrics);
+    for (const QStringList& row : table.rows) measure(row, bodyMetrics);
+    double deficit = 0.0, slack = 0.0;
+    for (int c = 0; c < columns; ++c) {
+      deficit += std::max(0.0, need[c] - columnWidths[c]);
+      slack += std::max(0.0, columnWidths[c] - need[c]);
+    }
+    if (deficit > 0.0 && slack >= deficit) {
+      const double share = deficit / slack;
+      for (int c = 0; c < columns; ++c)
+        columnWidths[c] =
+            columnWidths[c] < need[c] ? need[c] : columnWidths[c] - (columnWidths[c] - need[c]) * share;
+    }
+  }
   // Cells wrap (at word boundaries, inside a word only when it is wider than its column): a table
   // never elides or clips what it says.
   QTextOption wrap;

@@ -118,6 +118,8 @@ QString citation(int seed);
 /// come from the previous layout pass (empty in the first).
 void writeSummary(ReportPainter& out, const ReportContext& context, const QStringList& sectionTitles,
                   const std::vector<SectionFinding>& findings, const QList<int>& sectionPages);
+/// The project's name; core's default "Untitled" (a project nobody named) in the report's language.
+QString reportProjectName(const Project& project);
 QString referencesTitle();
 /// "References": the papers cited as [n].
 void writeReferences(ReportPainter& out, const ReportContext& context);

@@ -135,7 +135,7 @@ void writeSummary(ReportPainter& out, const ReportContext& context, const QStrin
   out.paragraph(
       ReportText::tr("Project “%1”, report made %2 by Metrofit version %3. The project's description "
                      "and every dataset's origin are in the appendix.")
-          .arg(QString::fromStdString(project.name), context.date, QString::fromUtf8(kVersion)),
+          .arg(reportProjectName(project), context.date, QString::fromUtf8(kVersion)),
       ReportPainter::Font::Small);
 
   const QString dash = QStringLiteral("—");
