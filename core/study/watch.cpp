@@ -543,8 +543,9 @@ std::size_t WatchSession::run(const std::function<void(const WatchEvent&)>& onEv
     const std::vector<std::string> names = poll();
     for (std::size_t i = 0; i < names.size(); ++i) {
       ++sinceDiagnosis;
-      const bool diag =
-          sinceDiagnosis >= static_cast<std::size_t>(options_.diagnoseEvery) || i + 1 == names.size();
+      // Every N-th file, and at the last file when the folder is quiet (nothing else settling).
+      const bool diag = sinceDiagnosis >= static_cast<std::size_t>(options_.diagnoseEvery) ||
+                        (i + 1 == names.size() && seen_.empty());
       WatchEvent e = process(names[i], diag);
       if (diag) sinceDiagnosis = 0;
       if (e.file.empty()) continue;  // same content journaled already

@@ -45,8 +45,9 @@
 //     keeps its last released content) and `gate` says why. The gate holds or releases the whole
 //     correction rather than dropping single dimensions: the exact optimum couples every dimension
 //     through the shared work and tool offsets, and what is released must equal the batch run;
-//   * diagnosis: diagnoseSetup on the series (every `diagnoseEvery`-th file and at the last file
-//     of a poll); residual_white = its residual check's `white` (null while the series is too short).
+//   * diagnosis: diagnoseSetup on the series (every `diagnoseEvery`-th file, and at the last file
+//     of a poll when no other file is settling); residual_white = its residual check's `white` (null while
+//     the series is too short).
 // The offsets file: <out>/offsets.<ext> for the control (setup::exportCorrections, default export
 // options: wear registers, program number as `setup --export`), written atomically
 // (writeFileAtomic). fanuc .nc, heidenhain .h, siemens .spf, csv .csv.
@@ -72,7 +73,7 @@ struct WatchOptions {
   std::string outFolder;    ///< where offsets.<ext> goes; empty: "<project folder>/offsets"
   setup::ControllerFormat control = setup::ControllerFormat::Csv;
   int pollMs = 200;           ///< polling interval, ms (10..60000)
-  int diagnoseEvery = 1;      ///< run the diagnosis every N-th file (>= 1; always at a poll's last file)
+  int diagnoseEvery = 1;      ///< diagnosis every N-th file (>= 1) and at the last file of a quiet folder
   double coverageFactor = 2;  ///< k of the SPC gate's interval (> 0)
 
   bool isValid(std::string* why) const;
