@@ -100,7 +100,7 @@ void registerWatchCommand(CLI::App& app) {
       ->check(CLI::Range(10, 60000))
       ->capture_default_str();
   sub->add_option("--diagnose-every", a->diagnoseEvery,
-                  "Run the diagnosis's residual check every N-th file (and when the folder is quiet)")
+                  "Run the diagnosis's residual check every N-th file (it is the slow step)")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   sub->add_flag("--once", a->once, "Process the files that are there (once complete) and exit");

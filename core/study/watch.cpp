@@ -247,7 +247,7 @@ void WatchSession::loadJournal() {
       d.mtimeNs = j.at("mtime_ns").get<std::int64_t>();
       d.hash = j.at("hash").get<std::string>();
       d.rejected = j.at("status").get<std::string>() == "rejected";
-      if (!d.rejected) series_.push_back(measurementsFromJson(j.at("measurements"), model_));
+      if (!d.rejected) append(measurementsFromJson(j.at("measurements"), model_));
       done_.emplace(j.at("file").get<std::string>(), std::move(d));
     } catch (const std::exception& e) {
       throw ValidationError(ErrorContext{journalPath_, lineNo, 0, {}},
@@ -255,10 +255,44 @@ void WatchSession::loadJournal() {
                                 "); was it written for another setup model?");
     }
   }
-  if (!series_.empty()) {
-    const setup::Measurements merged = setup::mergeMeasurements(series_, model_);
-    lastCorrection_ = setup::solveExact(setup::SetupInstance(model_, merged)).x;
+  if (seriesFiles_ > 0 &&
+      std::all_of(series_.samples.begin(), series_.samples.end(), [](int n) { return n > 0; }))
+    lastCorrection_ = setup::solveExact(setup::SetupInstance(model_, series_.deviationMm)).x;
+}
+
+void WatchSession::checkNew(const setup::Measurements& m) const {
+  for (const auto& r : m.rows) {
+    const auto it = measured_.find(std::make_pair(r.part, r.dimension));
+    if (it == measured_.end()) continue;
+    throw ValidationError(ErrorContext{r.source, r.line, 0, "part"},
+                          "part '" + r.part + "', dimension '" + model_.dimensions[r.dimension].id +
+                              "' is measured twice (first in " + it->second.first + " line " +
+                              std::to_string(it->second.second) + ")");
   }
+}
+
+void WatchSession::append(setup::Measurements m) {
+  const std::size_t n = model_.dimensions.size();
+  if (sumMm_.empty()) {
+    sumMm_.assign(n, 0.0);
+    chartValues_.assign(n, {});
+    series_.samples.assign(n, 0);
+    series_.deviationMm.assign(n, 0.0);
+  }
+  for (auto& s : m.sources) series_.sources.push_back(std::move(s));
+  for (const auto& p : m.parts)
+    if (std::find(series_.parts.begin(), series_.parts.end(), p) == series_.parts.end())
+      series_.parts.push_back(p);
+  for (auto& r : m.rows) {
+    measured_.emplace(std::make_pair(r.part, r.dimension), std::make_pair(r.source, r.line));
+    sumMm_[r.dimension] += r.deviationMm;
+    ++series_.samples[r.dimension];
+    chartValues_[r.dimension].push_back(r.deviationMm);
+    series_.rows.push_back(std::move(r));
+  }
+  for (std::size_t q = 0; q < n; ++q)
+    series_.deviationMm[q] = series_.samples[q] > 0 ? sumMm_[q] / series_.samples[q] : 0.0;
+  ++seriesFiles_;
 }
 
 void WatchSession::appendJournal(const std::string& line) {
@@ -343,8 +377,7 @@ std::vector<std::string> WatchSession::poll() {
 WatchEvent WatchSession::reject(WatchEvent e, const std::string& name, std::uintmax_t size,
                                 std::int64_t mtime, const std::string& hash, const std::string& error) {
   e.error = oneLine(error);
-  e.seriesParts = 0;
-  for (const auto& m : series_) e.seriesParts += m.parts.size();
+  e.seriesParts = series_.parts.size();
   const fs::path dir = fs::path(options_.folder) / "rejected";
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -408,43 +441,40 @@ WatchEvent WatchSession::process(const std::string& name, bool runDiagnosis) {
     return e;
   }
 
-  std::vector<setup::Measurements> sets = series_;
-  sets.push_back(m);
-  setup::Measurements merged;
   try {
-    merged = setup::mergeMeasurements(sets, model_);
+    checkNew(m);
   } catch (const std::exception& ex) {
     e = reject(std::move(e), name, size, mtime, hash, ex.what());
     e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return e;
   }
   e.parts = m.parts;
+  const nlohmann::json measurementsJson = measurementsToJson(m);
+  append(std::move(m));  // nothing below rejects the file
+  const setup::Measurements& merged = series_;
   e.seriesParts = merged.parts.size();
 
-  // The correction: the exact optimum on the series (as `setup --method exact`).
-  const setup::SetupInstance inst(model_, merged);
-  const setup::ExactResult exact = setup::solveExact(inst);
-  for (std::size_t i = 0; i < exact.x.size(); ++i) {
-    e.correction.emplace_back(inst.datumIds()[i], exact.x[i]);
-    if (lastCorrection_.size() != exact.x.size() || std::abs(lastCorrection_[i] - exact.x[i]) > 1e-12)
-      e.changed.push_back(inst.datumIds()[i]);
-  }
-  e.f1BeforeMm = inst.f1Before();
-  e.f1Mm = exact.score.f1;
-
-  // SPC per dimension: individuals of the deviation part by part.
-  std::map<std::string, std::size_t> partIndex;
-  for (std::size_t p = 0; p < merged.parts.size(); ++p) partIndex[merged.parts[p]] = p;
-  std::vector<std::vector<double>> perDim(model_.dimensions.size());
-  {
-    std::vector<std::vector<std::pair<std::size_t, double>>> byPart(model_.dimensions.size());
-    for (const auto& r : merged.rows) byPart[r.dimension].emplace_back(partIndex[r.part], r.deviationMm);
-    for (std::size_t q = 0; q < byPart.size(); ++q) {
-      std::stable_sort(byPart[q].begin(), byPart[q].end(),
-                       [](const auto& a, const auto& b) { return a.first < b.first; });
-      for (const auto& pv : byPart[q]) perDim[q].push_back(pv.second);
+  // The correction: the exact optimum on the series (as `setup --method exact`), once every
+  // dimension has a measurement (a DMIS series of a multi-part fixture may take several files).
+  std::string unmeasured;
+  for (std::size_t q = 0; q < merged.samples.size() && unmeasured.empty(); ++q)
+    if (merged.samples[q] == 0) unmeasured = model_.dimensions[q].id;
+  std::vector<double> x;
+  if (unmeasured.empty()) {
+    const setup::SetupInstance inst(model_, merged.deviationMm);
+    const setup::ExactResult exact = setup::solveExact(inst);
+    x = exact.x;
+    for (std::size_t i = 0; i < exact.x.size(); ++i) {
+      e.correction.emplace_back(inst.datumIds()[i], exact.x[i]);
+      if (lastCorrection_.size() != exact.x.size() || std::abs(lastCorrection_[i] - exact.x[i]) > 1e-12)
+        e.changed.push_back(inst.datumIds()[i]);
     }
+    e.f1BeforeMm = inst.f1Before();
+    e.f1Mm = exact.score.f1;
   }
+
+  // SPC per dimension: individuals of the deviation in arrival order.
+  const std::vector<std::vector<double>>& perDim = chartValues_;
   bool allCharted = true, allIn = true;
   for (std::size_t q = 0; q < model_.dimensions.size(); ++q) {
     const setup::Dimension& d = model_.dimensions[q];
@@ -472,7 +502,9 @@ WatchEvent WatchSession::process(const std::string& name, bool runDiagnosis) {
     e.inControl = true;
 
   // The gate.
-  if (e.inControl == false) {
+  if (!unmeasured.empty()) {
+    e.gate = "held: dimension " + unmeasured + " has no measurement yet";
+  } else if (e.inControl == false) {
     e.gate = "held: out of control (" + std::to_string(e.outOfControl.size()) + " dimension(s), first " +
              e.outOfControl.front() + "): special causes first";
   } else if (!e.inControl) {
@@ -485,8 +517,7 @@ WatchEvent WatchSession::process(const std::string& name, bool runDiagnosis) {
              " dimension(s) with a significant systematic deviation";
   }
   if (e.released) {
-    const std::string textOut =
-        setup::exportCorrections(model_, exact.x, options_.control, setup::ExportOptions{});
+    const std::string textOut = setup::exportCorrections(model_, x, options_.control, setup::ExportOptions{});
     writeFileAtomic(offsetsPath_, textOut);
     e.offsetsFile = offsetsPath_;
   }
@@ -518,11 +549,10 @@ WatchEvent WatchSession::process(const std::string& name, bool runDiagnosis) {
                    {"parts", e.parts},
                    {"time", utcNow()},
                    {"released", e.released},
-                   {"measurements", measurementsToJson(m)}};
+                   {"measurements", measurementsJson}};
   appendJournal(j.dump());
   done_.emplace(name, Done{size, mtime, hash, false});
-  series_.push_back(std::move(m));
-  lastCorrection_ = exact.x;
+  if (!x.empty()) lastCorrection_ = x;
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return e;
 }
@@ -543,9 +573,8 @@ std::size_t WatchSession::run(const std::function<void(const WatchEvent&)>& onEv
     const std::vector<std::string> names = poll();
     for (std::size_t i = 0; i < names.size(); ++i) {
       ++sinceDiagnosis;
-      // Every N-th file, and at the last file when the folder is quiet (nothing else settling).
-      const bool diag = sinceDiagnosis >= static_cast<std::size_t>(options_.diagnoseEvery) ||
-                        (i + 1 == names.size() && seen_.empty());
+      // Every N-th file (the diagnosis is the slow step: about 0.1-1 s at 100 parts).
+      const bool diag = sinceDiagnosis >= static_cast<std::size_t>(options_.diagnoseEvery);
       WatchEvent e = process(names[i], diag);
       if (diag) sinceDiagnosis = 0;
       if (e.file.empty()) continue;  // same content journaled already
@@ -553,7 +582,7 @@ std::size_t WatchSession::run(const std::function<void(const WatchEvent&)>& onEv
       if (onEvent) onEvent(e);
       if (stop()) return processed;
     }
-    // --once: done when two polls in a row find nothing new and nothing is still settling.
+    // --once: done at the first poll that finds nothing new and nothing still settling.
     if (once) {
       if (names.empty() && seen_.empty()) {
         if (++quiet >= 1) break;

@@ -33,11 +33,12 @@
 //
 // After each accepted file, on the whole series:
 //   * correction: the exact optimum (setup::solveExact with default options) on the mean deviations
-//     of the series (report.h) -- the same numbers as `metrofit-cli setup --method exact --data F1
-//     F2 ...` on the same files in the same order, so the offsets files are byte-identical;
+//     of the series (report.h), kept as running sums in row order -- the same numbers as `metrofit-cli setup
+//     --method exact --data F1 F2 ...` on the same files in the same order, so the offsets files are
+//     byte-identical;
 //   * SPC per dimension: an individuals / moving-range chart (spc.h, n = 1) of the deviation
-//     (measured - nominal) part by part, nominal 0, the tolerance limits as specification, minimum
-//     correction the model's step; in_control = every chart in control (null until every dimension
+//     (measured - nominal) in arrival order (part by part), nominal 0, the tolerance limits as specification,
+//     minimum correction the model's step; in_control = every chart in control (null until every dimension
 //     has 2 values with a non-zero moving range);
 //   * the gate: the correction is RELEASED (the offsets file is written) only when in_control is
 //     true and at least one dimension's systematic deviation is significant (spc.h: |E| beyond
@@ -45,8 +46,8 @@
 //     keeps its last released content) and `gate` says why. The gate holds or releases the whole
 //     correction rather than dropping single dimensions: the exact optimum couples every dimension
 //     through the shared work and tool offsets, and what is released must equal the batch run;
-//   * diagnosis: diagnoseSetup on the series (every `diagnoseEvery`-th file, and at the last file
-//     of a poll when no other file is settling); residual_white = its residual check's `white` (null while
+//   * diagnosis: diagnoseSetup on the series (every `diagnoseEvery`-th file); residual_white = its residual
+//   check's `white` (null while
 //     the series is too short).
 // The offsets file: <out>/offsets.<ext> for the control (setup::exportCorrections, default export
 // options: wear registers, program number as `setup --export`), written atomically
@@ -73,7 +74,7 @@ struct WatchOptions {
   std::string outFolder;    ///< where offsets.<ext> goes; empty: "<project folder>/offsets"
   setup::ControllerFormat control = setup::ControllerFormat::Csv;
   int pollMs = 200;           ///< polling interval, ms (10..60000)
-  int diagnoseEvery = 1;      ///< diagnosis every N-th file (>= 1) and at the last file of a quiet folder
+  int diagnoseEvery = 1;      ///< diagnosis every N-th file (>= 1)
   double coverageFactor = 2;  ///< k of the SPC gate's interval (> 0)
 
   bool isValid(std::string* why) const;
@@ -126,12 +127,12 @@ class WatchSession {
 
   /// Polls and processes until the observer says stop (it is asked after every file and about every
   /// 20 ms while waiting; IterationSummary: iteration = files processed, evaluations = polls) or, with
-  /// `once`, until two consecutive polls find nothing new. Returns the number of files processed.
+  /// `once`, until a poll finds nothing new and nothing settling. Returns the number of files processed.
   std::size_t run(const std::function<void(const WatchEvent&)>& onEvent, Observer* observer, bool once);
 
   const std::string& journalPath() const { return journalPath_; }
   const std::string& offsetsPath() const { return offsetsPath_; }
-  std::size_t seriesFiles() const { return series_.size(); }
+  std::size_t seriesFiles() const { return seriesFiles_; }
 
   /// The journal file of a project: "<folder>/<stem>.watch.jsonl".
   static std::string journalPathFor(const std::string& projectPath);
@@ -155,12 +156,22 @@ class WatchSession {
   WatchEvent reject(WatchEvent e, const std::string& name, std::uintmax_t size, std::int64_t mtimeNs,
                     const std::string& hash, const std::string& error);
 
+  /// ValidationError when a (part, dimension) of `m` is in the series already (mergeMeasurements's).
+  void checkNew(const setup::Measurements& m) const;
+  /// Appends an accepted file to the series: rows, parts, running sums in row order (so the means
+  /// are bit for bit those of mergeMeasurements / `setup --data F1 F2 ...`), the charts' values.
+  void append(setup::Measurements m);
+
   WatchOptions options_;
   setup::Model model_;
   std::string journalPath_, offsetsPath_;
-  std::vector<setup::Measurements> series_;  ///< accepted files, in arrival order
-  std::multimap<std::string, Done> done_;    ///< journal entries by file name
-  std::map<std::string, Seen> seen_;         ///< last poll's candidates
+  setup::Measurements series_;  ///< the accepted files merged, in arrival order
+  std::size_t seriesFiles_ = 0;
+  std::vector<double> sumMm_;                     ///< per dimension, sum of deviations in row order
+  std::vector<std::vector<double>> chartValues_;  ///< per dimension, deviations in arrival order
+  std::map<std::pair<std::string, std::size_t>, std::pair<std::string, long>> measured_;  ///< -> source, line
+  std::multimap<std::string, Done> done_;  ///< journal entries by file name
+  std::map<std::string, Seen> seen_;       ///< last poll's candidates
   std::vector<double> lastCorrection_;
   long polls_ = 0;
 };

@@ -310,7 +310,7 @@ void killAndRestart(int reports, int kills, int gapMs) {
   makeProject(tmp);
   const auto dims = paperDims();
   const std::string out = tmp.file("watch.out");
-  const std::string args = "watch in --project P.metrofit --poll-ms 20 --diagnose-every 10";
+  const std::string args = "watch in --project P.metrofit --poll-ms 20 --diagnose-every 25";
   pid_t pid = startCli(tmp, args, out);
   int killed = 0;
   const auto t0 = std::chrono::steady_clock::now();
@@ -329,8 +329,11 @@ void killAndRestart(int reports, int kills, int gapMs) {
   ::kill(pid, SIGTERM);
   EXPECT_EQ(waitExit(pid), 0) << test::readText(out + ".err");
   const double dropSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const CliRun rest = cli("watch in --project P.metrofit --once --poll-ms 20", tmp);
+  const double stopSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const CliRun rest = cli("watch in --project P.metrofit --once --poll-ms 20 --diagnose-every 25", tmp);
   ASSERT_EQ(rest.code, 0) << rest.err;
+  const double totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::size_t caughtUpLater = jsonLines(rest.out).size();
 
   std::map<std::string, int> counts;
   const auto files = journalFiles(tmp, &counts);
@@ -348,8 +351,14 @@ void killAndRestart(int reports, int kills, int gapMs) {
   ::testing::Test::RecordProperty("reports", reports);
   ::testing::Test::RecordProperty("kills", kills);
   ::testing::Test::RecordProperty("drop_seconds", std::to_string(dropSeconds));
-  std::fprintf(stderr, "watch soak: %d reports every %d ms, %d kills, %.1f s\n", reports, gapMs, kills,
-               dropSeconds);
+  double maxSeconds = 0.0;
+  for (const auto& j : jsonLines(test::readText(out)))
+    maxSeconds = std::max(maxSeconds, j.value("seconds", 0.0));
+  std::fprintf(
+      stderr,
+      "watch soak: %d reports every %d ms, %d kills: dropped in %.1f s, SIGTERM done at %.1f s, all in "
+      "the journal at %.1f s (%zu left for the final --once); slowest file %.3f s\n",
+      reports, gapMs, kills, dropSeconds, stopSeconds, totalSeconds, caughtUpLater, maxSeconds);
 }
 
 TEST(WatchCli, KilledMidWayLosesNothingAndReadsNothingTwice) {
