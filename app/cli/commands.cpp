@@ -331,6 +331,7 @@ void registerCommands(CLI::App& app, int argc, char** argv) {
   registerDiagnoseCommands(app);
   registerProjectCommands(app);
   registerFitElementCommand(app);
+  registerWatchCommand(app);
   {
     auto* sim = app.add_subcommand("simulate", "Make test data with the built-in simulator");
     sim->require_subcommand(1);

@@ -97,5 +97,7 @@ void registerDiagnoseCommands(CLI::App& app);
 void registerProjectCommands(CLI::App& app);
 /// `fit-element` (in cmd_fit.cpp).
 void registerFitElementCommand(CLI::App& app);
+/// `watch` (in cmd_watch.cpp): the live loop.
+void registerWatchCommand(CLI::App& app);
 
 }  // namespace metrofit::cli
