@@ -38,6 +38,7 @@
 #include "bench_kinematic.h"
 #include "bench_kinematic_chain.h"
 #include "bench_matching.h"
+#include "bench_watch.h"
 #ifdef METROFIT_HAVE_CERES
 #include "bench_nist.h"
 #endif
@@ -141,6 +142,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> openCase;   // --open-case DOMAIN CASE SEED
   bool setupBench = false;             // --setup (bench_setup.cpp)
   std::vector<std::size_t> scaleRows;  // --diagnose-scale (bench_diagnose_scale.cpp)
+  std::size_t watchFiles = 0;          // --watch [N] (bench_watch.cpp)
   metrofit::bench::DiagnoseBenchOptions diagnoseOptions;
   metrofit::bench::OptimBenchOptions optimOptions;
   int repeat = 5;
@@ -181,6 +183,9 @@ int main(int argc, char** argv) {
         std::stringstream list(argv[++i]);
         for (std::string item; std::getline(list, item, ',');) scaleRows.push_back(std::stoul(item));
       }
+    } else if (a == "--watch") {  // [N]: reports dropped one at a time (default 500)
+      watchFiles = 500;
+      if (i + 1 < argc && argv[i + 1][0] != '-') watchFiles = std::stoul(argv[++i]);
     } else if (a == "--real-diagnose")
       realDiagnose = true;
     else if (a == "--open")
@@ -235,7 +240,8 @@ int main(int argc, char** argv) {
           "[--thermal] [--real-thermal] [--kinematic] [--kinematic-chain [--seeds N]] [--nist] [--setup] "
           "[--diagnose "
           "[--quick]] [--diagnose --open "
-          "[--seeds N] [--quick] [--domains LIST]] [--real-diagnose] [--diagnose-scale [ROWS,...]] "
+          "[--seeds N] [--quick] [--domains LIST]] [--real-diagnose] [--diagnose-scale [ROWS,...]] [--watch "
+          "[N]] "
           "[--repeat N] "
           "[--json OUT] "
           "[--source-dir DIR]\n");
@@ -246,7 +252,8 @@ int main(int argc, char** argv) {
     }
   }
   if (!io && !rng && !optimizers && !matching && !realMatching && !thermal && !realThermal && !kinematic &&
-      !kinematicChain && !nist && !cad && !diagnose && !realDiagnose && !setupBench && scaleRows.empty())
+      !kinematicChain && !nist && !cad && !diagnose && !realDiagnose && !setupBench && scaleRows.empty() &&
+      watchFiles == 0)
     io = rng = optimizers = true;
   if (explicitSeeds > 0) openOptions.seeds = explicitSeeds;
   if (!openCase.empty()) {
@@ -316,6 +323,7 @@ int main(int argc, char** argv) {
           metrofit::bench::benchRealDiagnoseSdss(sourceDir + "/../shared/data/real/cmm-plugplate-sdss");
     }
     if (!scaleRows.empty()) result["diagnose_scale"] = metrofit::bench::benchDiagnoseScale(scaleRows);
+    if (watchFiles > 0) result["watch"] = metrofit::bench::benchWatch(watchFiles, sourceDir);
     if (!jsonOut.empty()) metrofit::writeFileAtomic(jsonOut, metrofit::dumpJson(result));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "metrofit-bench: %s\n", e.what());
