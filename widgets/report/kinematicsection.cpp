@@ -199,16 +199,17 @@ CompensationPreview writeCircularTest(ReportPainter& out, const KinematicStudyDa
 }
 
 /// The SPC charts and indices; `ownPage`: from the top of a new page (after the circular test).
-void writeSpc(ReportPainter& out, const KinematicStudyData& s, bool ownPage = true) {
-  if (!s.spc) {
-    if (!s.spcError.empty()) {
+void writeSpc(ReportPainter& out, const std::optional<KinematicSpcSeries>& spc, const std::string& spcError,
+              bool ownPage = true) {
+  if (!spc) {
+    if (!spcError.empty()) {
       out.subheading(ReportText::tr("Statistical process control"));
       out.paragraph(
-          ReportText::tr("The SPC series could not be charted: %1").arg(QString::fromStdString(s.spcError)));
+          ReportText::tr("The SPC series could not be charted: %1").arg(QString::fromStdString(spcError)));
     }
     return;
   }
-  const KinematicSpcSeries& k = *s.spc;
+  const KinematicSpcSeries& k = *spc;
   const SpcResult& r = k.result;
   const QString unit = QString::fromStdString(k.unit);
   const QString u = unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
@@ -374,6 +375,18 @@ void writeActuators(ReportPainter& out, const KinematicStudyData& s) {
   }
 }
 
+/// What the SPC of the part series found, in the section's finding: "SPC of <column>: in control. Cpk x."
+QString spcFound(const KinematicSpcSeries& spc) {
+  const SpcResult& r = spc.result;
+  QString found =
+      ReportText::tr("SPC of %1: %2.")
+          .arg(QString::fromStdString(spc.column),
+               r.chart.inControl() ? ReportText::tr("in control") : ReportText::tr("out of control"));
+  if (r.capability.cpk)
+    found += QLatin1Char(' ') + ReportText::tr("Cpk %1.").arg(*r.capability.cpk, 0, 'f', 2);
+  return found;
+}
+
 /// The section's conclusion: the identified errors, the compensation and the SPC decision.
 void concludeKinematics(ReportPainter& out, const ReportContext& context, const KinematicStudyData& s,
                         const CompensationPreview& c) {
@@ -403,12 +416,7 @@ void concludeKinematics(ReportPainter& out, const ReportContext& context, const 
           : ReportText::tr("Do not compensate: the references would not reduce the deviation.");
   if (s.spc) {
     const SpcResult& r = s.spc->result;
-    f.found += QLatin1Char(' ') + ReportText::tr("SPC of %1: %2.")
-                                      .arg(QString::fromStdString(s.spc->column),
-                                           r.chart.inControl() ? ReportText::tr("in control")
-                                                               : ReportText::tr("out of control"));
-    if (r.capability.cpk)
-      f.found += QLatin1Char(' ') + ReportText::tr("Cpk %1.").arg(*r.capability.cpk, 0, 'f', 2);
+    f.found += QLatin1Char(' ') + spcFound(*s.spc);
     f.conclusion +=
         QLatin1Char(' ') + ReportText::tr("SPC-gated compensation: %1").arg(readerText(r.decision.reason));
   }
@@ -484,29 +492,26 @@ namespace {
 void writeSpcOnly(ReportPainter& out, const ReportContext& context,
                   const std::function<std::string(const DatasetRef&)>& resolve) {
   const KinematicStudySettings settings = kinematicStudySettings(*context.project);
-  KinematicStudyData s;
-  s.settings = settings;
-  SectionFinding f;
-  f.study = kinematicSectionTitle();
-  if (settings.spc) s.spc = chartKinematicSpc(*context.project, *settings.spc, resolve, &s.spcError);
+  std::string error;
+  const std::optional<KinematicSpcSeries> spc =
+      settings.spc ? chartKinematicSpc(*context.project, *settings.spc, resolve, &error) : std::nullopt;
   out.paragraph(
       ReportText::tr("The project has no circular test: the study charts its part series only; "
                      "no actuator errors are identified and no compensation is computed."));
-  writeSpc(out, s, false);
-  if (!s.spc) {
-    f.conclusion = s.spcError.empty() ? ReportText::tr("No SPC series is chosen.")
-                                      : ReportText::tr("The SPC series could not be charted: %1")
-                                            .arg(QString::fromStdString(s.spcError));
+  writeSpc(out, spc, error, false);
+  SectionFinding f;
+  f.study = kinematicSectionTitle();
+  if (!spc) {
+    f.conclusion =
+        error.empty()
+            ? ReportText::tr("No SPC series is chosen.")
+            : ReportText::tr("The SPC series could not be charted: %1").arg(QString::fromStdString(error));
     f.recommendation = ReportText::tr("Choose the series and its column on the Kinematics page, SPC tab.");
     concludeSection(out, context, f);
     return;
   }
-  const SpcResult& r = s.spc->result;
-  f.found = ReportText::tr("SPC of %1: %2.")
-                .arg(QString::fromStdString(s.spc->column),
-                     r.chart.inControl() ? ReportText::tr("in control") : ReportText::tr("out of control"));
-  if (r.capability.cpk)
-    f.found += QLatin1Char(' ') + ReportText::tr("Cpk %1.").arg(*r.capability.cpk, 0, 'f', 2);
+  const SpcResult& r = spc->result;
+  f.found = spcFound(*spc);
   f.conclusion = ReportText::tr("SPC-gated compensation: %1").arg(readerText(r.decision.reason));
   f.recommendation = r.chart.inControl()
                          ? ReportText::tr("Keep charting the series; act when a point leaves the limits.")
@@ -544,7 +549,7 @@ void writeKinematicSection(ReportPainter& out, const ReportContext& context) {
   try {
     const KinematicStudyData s = loadKinematicStudy(project, resolve);
     const CompensationPreview c = writeCircularTest(out, s);
-    writeSpc(out, s);
+    writeSpc(out, s.spc, s.spcError);
     writeActuators(out, s);
     concludeKinematics(out, context, s, c);
   } catch (const InputError&) {

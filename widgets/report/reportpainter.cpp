@@ -225,12 +225,12 @@ void ReportPainter::table(const ReportTable& table) {
   // takes the room from columns that have more than their own longest word needs, so words break
   // inside only when the table cannot hold them at all.
   {
+    static const QRegularExpression kSpace(QStringLiteral("\\s+"));
     const QFontMetricsF bodyMetrics(body, &writer_), boldMetrics(bold, &writer_);
     QList<double> need(columns, 0.0);
     const auto measure = [&](const QStringList& cells, const QFontMetricsF& metrics) {
       for (int c = 0; c < columns && c < cells.size(); ++c)
-        for (const QString& word :
-             cells[c].split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts))
+        for (const QString& word : cells[c].split(kSpace, Qt::SkipEmptyParts))
           need[c] = std::max(need[c], metrics.horizontalAdvance(word) + 2 * pad + mm(0.5));
     };
     measure(table.header, boldMetrics);
