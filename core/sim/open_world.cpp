@@ -98,6 +98,33 @@ Eigen::VectorXd offColumns(const Eigen::MatrixXd& D, const Eigen::VectorXd& v) {
 }
 
 /// Sizes the effect, draws the noise and returns what is added to the clean observations.
+/// One of the S-piece's surfaces drawn at random, its points and its longest extent: the position
+/// along it is u = (q_axis - mid) / half in [-1, 1] (surface_bow, surface_tilt).
+struct SurfaceSpan {
+  std::string name;
+  std::vector<std::size_t> points;
+  Eigen::Index axis = 0;
+  double mid = 0.0, half = 1.0;
+  double u(const ProbePoint& p) const { return (p.nominal(axis) - mid) / half; }
+};
+
+SurfaceSpan pickSurface(Rng& rng, const std::vector<ProbePoint>& pts) {
+  const char* surfaces[3] = {"ruled+", "ruled-", "plane"};
+  SurfaceSpan s;
+  s.name = surfaces[rng.below(3)];
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (pts[i].surface == s.name) {
+      s.points.push_back(i);
+      lo = lo.cwiseMin(pts[i].nominal);
+      hi = hi.cwiseMax(pts[i].nominal);
+    }
+  (hi - lo).maxCoeff(&s.axis);
+  s.mid = 0.5 * (lo(s.axis) + hi(s.axis));
+  s.half = 0.5 * (hi(s.axis) - lo(s.axis));
+  return s;
+}
+
 Eigen::VectorXd finish(Draft& d, std::uint64_t seed, const OpenWorldOptions& o) {
   OpenWorldTruth& t = d.truth;
   const double sigma = t.noiseSigma;
@@ -555,31 +582,19 @@ OpenMatchingCase openWorldMatching(const std::string& name, double ratio, std::u
   Rng rng(seed ^ kEffectStream);
   OpenWorldTruth& tr = d.truth;
   if (name == "surface_bow") {
-    const char* surfaces[3] = {"ruled+", "ruled-", "plane"};
-    const std::string s = surfaces[rng.below(3)];
-    std::vector<std::size_t> on;
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-    for (std::size_t i = 0; i < n; ++i)
-      if (pts[i].surface == s) {
-        on.push_back(i);
-        lo = lo.cwiseMin(pts[i].nominal);
-        hi = hi.cwiseMax(pts[i].nominal);
-      }
-    Eigen::Index axis = 0;
-    (hi - lo).maxCoeff(&axis);
-    const double mid = 0.5 * (lo(axis) + hi(axis)), half = 0.5 * (hi(axis) - lo(axis));
+    const SurfaceSpan span = pickSurface(rng, pts);
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
     double mean = 0.0;
-    for (std::size_t i : on) {
-      const double u = (pts[i].nominal(axis) - mid) / half;
+    for (std::size_t i : span.points) {
+      const double u = span.u(pts[i]);
       d.shape(static_cast<Eigen::Index>(i)) = u * u;
-      mean += u * u / static_cast<double>(on.size());
+      mean += u * u / static_cast<double>(span.points.size());
     }
-    for (std::size_t i : on)
+    for (std::size_t i : span.points)
       d.shape(static_cast<Eigen::Index>(i)) = sign * (d.shape(static_cast<Eigen::Index>(i)) - mean);
-    tr.against = {"surface:" + s};
-    tr.description =
-        "bow of surface " + s + " along " + std::string(1, "xyz"[axis]) + fmt(", sign %+.0f", sign);
+    tr.against = {"surface:" + span.name};
+    tr.description = "bow of surface " + span.name + " along " + std::string(1, "xyz"[span.axis]) +
+                     fmt(", sign %+.0f", sign);
   } else if (name == "plate_bending") {
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -602,27 +617,14 @@ OpenMatchingCase openWorldMatching(const std::string& name, double ratio, std::u
     // One surface is machined tilted (a worn fixture face): its deviation along the normal grows
     // linearly along its longest extent, A u with u in [-1, 1] and zero mean on the surface (its
     // offset is the catalogue's surface_offset; the tilt is what no entry models).
-    const char* surfaces[3] = {"ruled+", "ruled-", "plane"};
-    const std::string s2 = surfaces[rng.below(3)];
-    std::vector<std::size_t> on;
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-    for (std::size_t i = 0; i < n; ++i)
-      if (pts[i].surface == s2) {
-        on.push_back(i);
-        lo = lo.cwiseMin(pts[i].nominal);
-        hi = hi.cwiseMax(pts[i].nominal);
-      }
-    Eigen::Index axis = 0;
-    (hi - lo).maxCoeff(&axis);
-    const double mid = 0.5 * (lo(axis) + hi(axis)), half = 0.5 * (hi(axis) - lo(axis));
+    const SurfaceSpan span = pickSurface(rng, pts);
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
     double mean = 0.0;
-    for (std::size_t i : on) mean += (pts[i].nominal(axis) - mid) / half / static_cast<double>(on.size());
-    for (std::size_t i : on)
-      d.shape(static_cast<Eigen::Index>(i)) = sign * ((pts[i].nominal(axis) - mid) / half - mean);
-    tr.against = {"surface:" + s2};
-    tr.description =
-        "tilt of surface " + s2 + " along " + std::string(1, "xyz"[axis]) + fmt(", sign %+.0f", sign);
+    for (std::size_t i : span.points) mean += span.u(pts[i]) / static_cast<double>(span.points.size());
+    for (std::size_t i : span.points) d.shape(static_cast<Eigen::Index>(i)) = sign * (span.u(pts[i]) - mean);
+    tr.against = {"surface:" + span.name};
+    tr.description = "tilt of surface " + span.name + " along " + std::string(1, "xyz"[span.axis]) +
+                     fmt(", sign %+.0f", sign);
   } else if (name == "outlier_point") {
     const std::size_t i = static_cast<std::size_t>(rng.below(n));
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0;
